@@ -1,0 +1,100 @@
+"""Frozen plan objects: what the draftsman has on the sheet after a construction.
+
+A plan (velocity, acceleration, force polygon, lever) is a set of labelled
+points in *plan millimetres* (pole at the origin, x right, y up), segments
+between them that mean something (v_BA, a_BA^n, ...), the construction lines
+drawn thin, and the protocol of steps that produced them.  ``scale`` is μ in
+mm per SI unit (mm/(m/s), mm/(m/s²), mm/N).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+#: Segment kinds, as the textbook distinguishes them.
+SEGMENT_KINDS = ("absolute", "relative", "normal", "tangential", "coriolis", "sliding", "force", "closing")
+
+
+@dataclass(frozen=True, slots=True)
+class PlanPoint:
+    name: str  # textbook label: "p_v", "a", "b", "s2", "a3", "n_BA", "k_A2A3"
+    xy: tuple[float, float]  # plan mm
+    coincides_with: str | None = None  # drawn on top of another point (e.g. b on the pole)
+
+
+@dataclass(frozen=True, slots=True)
+class Segment:
+    """A vector drawn on the plan from ``start`` to ``end`` (point names)."""
+
+    start: str
+    end: str
+    kind: str  # one of SEGMENT_KINDS
+    label: str  # "v_B", "v_BA", "a_BA^n", "a^k_A3A2", "F_12"
+    length_mm: float
+    value: float  # the SI magnitude it stands for at the plan's scale (length_mm / scale)
+
+
+@dataclass(frozen=True, slots=True)
+class ConstructionLine:
+    """A thin line through ``point`` along unit ``direction`` (plan mm)."""
+
+    point: tuple[float, float]
+    direction: tuple[float, float]
+    label: str  # "⟂ AB", "∥ guide of B"
+
+
+@dataclass(frozen=True, slots=True)
+class Step:
+    """One draftsman's step: operation, inputs, output, and a sentence for the protocol."""
+
+    op: str  # "lay off", "parallel", "perpendicular", "intersect", "similarity", "coincide"
+    inputs: tuple[str, ...]
+    output: str
+    text: str
+
+
+@dataclass(frozen=True, slots=True)
+class Plan:
+    kind: str  # "velocity" | "acceleration"
+    phi_deg: float
+    scale: float  # mm per SI unit
+    pole: str
+    points: tuple[PlanPoint, ...]
+    segments: tuple[Segment, ...]
+    lines: tuple[ConstructionLine, ...]
+    steps: tuple[Step, ...]
+    degenerate: tuple[str, ...] = ()  # notes on dead centres / parallel lines met
+
+    def xy(self, name: str) -> tuple[float, float]:
+        for p in self.points:
+            if p.name == name:
+                return p.xy
+        raise KeyError(name)
+
+    def has(self, name: str) -> bool:
+        return any(p.name == name for p in self.points)
+
+    def segment(self, label: str) -> Segment:
+        for s in self.segments:
+            if s.label == label:
+                return s
+        raise KeyError(label)
+
+    @property
+    def extent(self) -> float:
+        """Largest distance of a plan point from the pole (mm)."""
+        return max((abs(complex(*p.xy)) for p in self.points), default=0.0)
+
+    def protocol(self) -> str:
+        return "\n".join(f"{k + 1:2d}. {s.text}" for k, s in enumerate(self.steps))
+
+    def to_json(self) -> dict:
+        return {
+            "scale": self.scale,
+            "pole": self.pole,
+            "points": {p.name: [p.xy[0], p.xy[1]] for p in self.points},
+            "coincident": {p.name: p.coincides_with for p in self.points if p.coincides_with},
+            "segments": [{"label": s.label, "from": s.start, "to": s.end, "kind": s.kind,
+                          "length_mm": s.length_mm, "value": s.value} for s in self.segments],
+            "degenerate": list(self.degenerate),
+        }

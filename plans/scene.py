@@ -1,0 +1,481 @@
+"""Scene files: a planar linkage, what drives it and what the user wants from it.
+
+A scene is TOML (``format = 1``).  Links carry their points in *local*
+coordinates: the origin is the link's first axis point, the x axis points to
+its second axis point (or, for a one-point slider, along its guide).  The frame
+is the link whose local coordinates are the global ones.  Everything is
+converted to SI here; nothing downstream sees millimetres.
+"""
+
+from __future__ import annotations
+
+import cmath
+import math
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from .errors import InputError
+from .units import LENGTH_UNITS, parse_length, rpm_to_rad_s
+
+#: What a scene may ask for, and what each one needs first.
+OUTPUTS: dict[str, tuple[str, ...]] = {
+    "positions": (),
+    "velocity_plan": ("positions",),
+    "acceleration_plan": ("velocity_plan",),
+    "force_polygons": ("acceleration_plan",),
+    "lever": ("acceleration_plan",),
+}
+
+#: F_ij conventions: seed 003 (force on link i from link j) or seed 000 (of link i on link j).
+FIJ_CONVENTIONS = ("on_i_from_j", "of_i_on_j")
+
+
+@dataclass(frozen=True, slots=True)
+class Guide:
+    """A straight line fixed to link ``link``: through local point ``origin``, at local angle ``angle``."""
+
+    link: int
+    origin: complex
+    angle: float
+
+    @property
+    def direction(self) -> complex:
+        return cmath.exp(1j * self.angle)
+
+
+@dataclass(frozen=True, slots=True)
+class Joint:
+    """A lower pair.  ``R``: links share ``point``.  ``P``: ``point`` of the slider link
+    moves along ``guide`` (carried by the other link), and the two links keep their
+    relative angle."""
+
+    kind: str
+    links: tuple[int, int]
+    point: str
+    guide: Guide | None = None
+    slider_angle: float = 0.0  # direction of sliding in the slider's own local frame
+
+    @property
+    def name(self) -> str:
+        return f"{self.kind}{self.links[0]}{self.links[1]}:{self.point}"
+
+    def other(self, link: int) -> int:
+        return self.links[1] if self.links[0] == link else self.links[0]
+
+    @property
+    def slider(self) -> int:
+        assert self.guide is not None
+        return self.other(self.guide.link)
+
+
+@dataclass(frozen=True, slots=True)
+class Link:
+    id: int
+    name: str
+    axis: tuple[str, ...]
+    length: float | None
+    points: dict[str, complex]  # local coordinates (m), axis points included
+    mass: float = 0.0
+    inertia: float = 0.0  # I_S about the centre of mass, kg m²
+    centre: str | None = None  # name of the centre of mass point (S2, ...)
+
+
+@dataclass(frozen=True, slots=True)
+class Driver:
+    """The initial link: θ1 = φ_ref + sense·φ, ω1 = sense·|ω|, ε1 = sense·ε."""
+
+    link: int
+    pivot: str
+    omega: float  # signed, counter-clockwise positive
+    eps: float
+    phi_ref: float
+    sense: int
+    phis_deg: tuple[float, ...]
+
+    def theta(self, phi_deg: Any) -> Any:
+        import numpy as np
+
+        return self.phi_ref + self.sense * np.radians(phi_deg)
+
+
+@dataclass(frozen=True, slots=True)
+class Scene:
+    path: str
+    title: str
+    frame: int
+    frame_points: dict[str, complex]
+    links: dict[int, Link]
+    joints: tuple[Joint, ...]
+    driver: Driver
+    branches: dict[str, int]
+    outputs: frozenset[str]
+    scales: dict[str, float]  # "length", "velocity", "acceleration", "force": mm per SI unit
+    scale_style: str  # "mu" (mm per unit) or "K" (unit per mm)
+    fij: str
+    raw: dict[str, Any] = field(repr=False, default_factory=dict)
+
+    def wants(self, output: str) -> bool:
+        return output in self.outputs
+
+    def point_links(self, name: str) -> list[int]:
+        """The links that carry point ``name`` (the frame included)."""
+        out = [lid for lid, link in self.links.items() if name in link.points]
+        if name in self.frame_points:
+            out.append(self.frame)
+        return out
+
+
+# --------------------------------------------------------------------------- parsing
+
+
+class _Reader:
+    """Field access that turns every problem into one InputError line."""
+
+    def __init__(self, path: str) -> None:
+        self.path = path
+
+    def fail(self, field: str, expected: str) -> InputError:
+        return InputError(expected, file=self.path, field=field)
+
+    def table(self, data: dict[str, Any], key: str, where: str, required: bool = True) -> dict[str, Any]:
+        if key not in data:
+            if required:
+                raise self.fail(f"{where}{key}", "missing table")
+            return {}
+        value = data[key]
+        if not isinstance(value, dict):
+            raise self.fail(f"{where}{key}", "expected a table")
+        return value
+
+    def number(self, data: dict[str, Any], key: str, where: str, *, default: float | None = None,
+               positive: bool = False, nonneg: bool = False) -> float:
+        if key not in data:
+            if default is None:
+                raise self.fail(f"{where}{key}", "missing number")
+            return default
+        value = data[key]
+        if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
+            raise self.fail(f"{where}{key}", f"expected a number, got {value!r}")
+        if positive and value <= 0:
+            raise self.fail(f"{where}{key}", f"expected a positive number, got {value!r}")
+        if nonneg and value < 0:
+            raise self.fail(f"{where}{key}", f"expected a number >= 0, got {value!r}")
+        return float(value)
+
+    def length(self, value: Any, field: str, unit: str, *, positive: bool = False) -> float:
+        try:
+            out = parse_length(value, unit)
+        except ValueError as exc:
+            raise self.fail(field, str(exc)) from None
+        if positive and out <= 0:
+            raise self.fail(field, f"expected a positive length, got {value!r}")
+        return out
+
+
+def load_scene(path: str | Path) -> Scene:
+    """Read and validate a scene file."""
+    p = Path(path)
+    try:
+        text = p.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise InputError(f"cannot read file ({exc.strerror})", file=str(path)) from None
+    return parse_scene(text, str(path))
+
+
+def parse_scene(text: str, path: str = "<scene>") -> Scene:
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(f"malformed TOML: {exc}", file=path) from None
+    return scene_from_dict(data, path)
+
+
+def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
+    r = _Reader(path)
+    if data.get("format") != 1:
+        raise r.fail("format", "expected format = 1")
+    unit = data.get("unit", "mm")
+    if unit not in LENGTH_UNITS:
+        raise r.fail("unit", f"expected one of {sorted(LENGTH_UNITS)}, got {unit!r}")
+    title = data.get("title", Path(path).stem)
+    if not isinstance(title, str):
+        raise r.fail("title", "expected a string")
+    frame = data.get("frame")
+    if isinstance(frame, bool) or not isinstance(frame, int) or frame <= 0:
+        raise r.fail("frame", "expected the frame's link number (a positive integer)")
+
+    frame_points = _frame_points(r, data, unit)
+    links_raw = r.table(data, "links", "")
+    links = {}
+    for key, body in links_raw.items():
+        lid = _link_id(r, key)
+        if lid == frame:
+            raise r.fail(f"links.{key}", f"link {lid} is the frame; put frame points in [points]")
+        if not isinstance(body, dict):
+            raise r.fail(f"links.{key}", "expected a table")
+        links[lid] = _link(r, lid, body, unit)
+    if not links:
+        raise r.fail("links", "expected at least the driving link")
+
+    joints = _joints(r, data, unit, frame, frame_points, links)
+    links = _orient_sliders(r, links, joints)
+    driver = _driver(r, data, frame, frame_points, links)
+    branches = _branches(r, data)
+    outputs = _outputs(r, data)
+    scales, style = _scales(r, data)
+    fij = data.get("fij", "on_i_from_j")
+    if fij not in FIJ_CONVENTIONS:
+        raise r.fail("fij", f"expected one of {list(FIJ_CONVENTIONS)}, got {fij!r}")
+    return Scene(path=path, title=title, frame=frame, frame_points=frame_points, links=links,
+                 joints=joints, driver=driver, branches=branches, outputs=outputs,
+                 scales=scales, scale_style=style, fij=fij, raw=data)
+
+
+def _link_id(r: _Reader, key: str) -> int:
+    try:
+        lid = int(key)
+    except ValueError:
+        raise r.fail(f"links.{key}", "expected links numbered as the textbook does: [links.1], [links.2], ...") from None
+    if lid <= 0:
+        raise r.fail(f"links.{key}", "expected a positive link number")
+    return lid
+
+
+def _xy(r: _Reader, value: Any, field: str, unit: str) -> complex:
+    if not (isinstance(value, list) and len(value) == 2):
+        raise r.fail(field, "expected a point [x, y]")
+    return complex(r.length(value[0], f"{field}[0]", unit), r.length(value[1], f"{field}[1]", unit))
+
+
+def _frame_points(r: _Reader, data: dict[str, Any], unit: str) -> dict[str, complex]:
+    pts = r.table(data, "points", "")
+    return {name: _xy(r, value, f"points.{name}", unit) for name, value in pts.items()}
+
+
+def _link(r: _Reader, lid: int, body: dict[str, Any], unit: str) -> Link:
+    where = f"links.{lid}."
+    known = {"name", "axis", "length", "points", "mass", "inertia", "centre"}
+    for key in body:
+        if key not in known:
+            raise r.fail(f"{where}{key}", f"unknown key; expected one of {sorted(known)}")
+    axis = body.get("axis")
+    if not (isinstance(axis, list) and 1 <= len(axis) <= 2 and all(isinstance(a, str) for a in axis)):
+        raise r.fail(f"{where}axis", "expected one or two point names, e.g. axis = [\"A\", \"B\"]")
+    if len(axis) == 2 and axis[0] == axis[1]:
+        raise r.fail(f"{where}axis", "expected two different points")
+    length = None
+    points: dict[str, complex] = {axis[0]: 0j}
+    if len(axis) == 2:
+        if "length" not in body:
+            raise r.fail(f"{where}length", f"missing length {axis[0]}{axis[1]}")
+        length = r.length(body["length"], f"{where}length", unit, positive=True)
+        points[axis[1]] = complex(length, 0.0)
+    elif "length" in body:
+        raise r.fail(f"{where}length", "a one-point link (slider) has no length")
+    extra = body.get("points", {})
+    if not isinstance(extra, dict):
+        raise r.fail(f"{where}points", "expected a table of named points")
+    for name, spec in extra.items():
+        f = f"{where}points.{name}"
+        if name in points:
+            raise r.fail(f, "point already defined by the axis")
+        if not isinstance(spec, dict):
+            raise r.fail(f, "expected { ratio = r } or { along = a, across = c }")
+        if "ratio" in spec:
+            if length is None:
+                raise r.fail(f, "ratio needs a two-point axis")
+            ratio = r.number(spec, "ratio", f + ".")
+            points[name] = complex(ratio * length, 0.0)
+        else:
+            along = r.length(spec.get("along", 0), f + ".along", unit)
+            across = r.length(spec.get("across", 0), f + ".across", unit)
+            points[name] = complex(along, across)
+    mass = r.number(body, "mass", where, default=0.0, nonneg=True)
+    inertia = r.number(body, "inertia", where, default=0.0, nonneg=True)
+    centre = body.get("centre")
+    if centre is not None and centre not in points:
+        raise r.fail(f"{where}centre", f"unknown point {centre!r} on link {lid}")
+    name = body.get("name", f"link {lid}")
+    return Link(id=lid, name=str(name), axis=tuple(axis), length=length, points=points,
+                mass=mass, inertia=inertia, centre=centre)
+
+
+def _joints(r: _Reader, data: dict[str, Any], unit: str, frame: int,
+            frame_points: dict[str, complex], links: dict[int, Link]) -> tuple[Joint, ...]:
+    raw = data.get("joints")
+    if not isinstance(raw, list) or not raw:
+        raise r.fail("joints", "expected an array of tables [[joints]]")
+    known_links = set(links) | {frame}
+    out = []
+    for k, body in enumerate(raw):
+        where = f"joints[{k}]."
+        if not isinstance(body, dict):
+            raise r.fail(f"joints[{k}]", "expected a table")
+        kind = body.get("kind")
+        if kind not in ("R", "P"):
+            raise r.fail(f"{where}kind", f"expected \"R\" or \"P\", got {kind!r}")
+        pair = body.get("links")
+        if not (isinstance(pair, list) and len(pair) == 2 and all(isinstance(x, int) for x in pair)):
+            raise r.fail(f"{where}links", "expected two link numbers, e.g. links = [1, 2]")
+        for lid in pair:
+            if lid not in known_links:
+                raise r.fail(f"{where}links", f"unknown link {lid}")
+        if pair[0] == pair[1]:
+            raise r.fail(f"{where}links", "a joint needs two different links")
+        point = body.get("point")
+        if not isinstance(point, str):
+            raise r.fail(f"{where}point", "expected a point name")
+        a, b = pair
+
+        def carries(lid: int, name: str) -> bool:
+            return name in (frame_points if lid == frame else links[lid].points)
+
+        if kind == "R":
+            for lid in pair:
+                if not carries(lid, point):
+                    raise r.fail(f"{where}point", f"point {point!r} is not on link {lid}")
+            out.append(Joint("R", (a, b), point))
+            continue
+        g = body.get("guide")
+        if not isinstance(g, dict):
+            raise r.fail(f"{where}guide", "a P joint needs guide = { link = N, through = ..., angle_deg = ... }")
+        carrier = g.get("link")
+        if carrier not in pair:
+            raise r.fail(f"{where}guide.link", f"expected one of the joint's links {pair}")
+        slider = b if carrier == a else a
+        if not carries(slider, point):
+            raise r.fail(f"{where}point", f"point {point!r} is not on the sliding link {slider}")
+        through = g.get("through")
+        if isinstance(through, str):
+            if not carries(carrier, through):
+                raise r.fail(f"{where}guide.through", f"point {through!r} is not on link {carrier}")
+            origin = frame_points[through] if carrier == frame else links[carrier].points[through]
+        elif isinstance(through, list):
+            origin = _xy(r, through, f"{where}guide.through", unit)
+        else:
+            raise r.fail(f"{where}guide.through", "expected a point name or [x, y]")
+        if "toward" in g:
+            tw = g["toward"]
+            if not (isinstance(tw, str) and carries(carrier, tw)):
+                raise r.fail(f"{where}guide.toward", f"expected a point on link {carrier}")
+            target = frame_points[tw] if carrier == frame else links[carrier].points[tw]
+            if abs(target - origin) == 0:
+                raise r.fail(f"{where}guide.toward", "coincides with 'through'")
+            angle = cmath.phase(target - origin)
+        else:
+            angle = math.radians(r.number(g, "angle_deg", f"{where}guide.", default=0.0))
+        offset = r.length(g.get("offset", 0), f"{where}guide.offset", unit)
+        origin = origin + offset * 1j * cmath.exp(1j * angle)  # offset to the left of the direction
+        slider_angle = math.radians(r.number(body, "slider_angle_deg", where, default=0.0))
+        out.append(Joint("P", (a, b), point, Guide(carrier, origin, angle), slider_angle))
+    return tuple(out)
+
+
+def _orient_sliders(r: _Reader, links: dict[int, Link], joints: tuple[Joint, ...]) -> dict[int, Link]:
+    """One-point links need a local x axis: the guide they slide on or carry."""
+    for lid, link in links.items():
+        if len(link.axis) == 2:
+            continue
+        as_slider = [j for j in joints if j.kind == "P" and j.slider == lid]
+        as_carrier = [j for j in joints if j.kind == "P" and j.guide is not None and j.guide.link == lid]
+        if not as_slider and not as_carrier:
+            raise r.fail(f"links.{lid}.axis", "a one-point link must slide on a guide or carry one")
+        for j in as_slider:
+            if j.point != link.axis[0]:
+                raise r.fail(f"links.{lid}.axis", f"a slider's axis point must be its pin on the guide ({j.point})")
+    return links
+
+
+def _driver(r: _Reader, data: dict[str, Any], frame: int, frame_points: dict[str, complex],
+            links: dict[int, Link]) -> Driver:
+    d = r.table(data, "driver", "")
+    lid = d.get("link")
+    if lid not in links:
+        raise r.fail("driver.link", f"expected a moving link number, got {lid!r}")
+    link = links[lid]
+    if len(link.axis) != 2 or link.axis[0] not in frame_points:
+        raise r.fail("driver.link", "the driving link needs axis = [pivot on the frame, crank pin]")
+    if "omega_rpm" in d:
+        omega = rpm_to_rad_s(r.number(d, "omega_rpm", "driver.", nonneg=True))
+    else:
+        omega = r.number(d, "omega", "driver.", nonneg=True)
+    sense_txt = d.get("sense", "ccw")
+    if sense_txt not in ("ccw", "cw"):
+        raise r.fail("driver.sense", f"expected \"ccw\" or \"cw\", got {sense_txt!r}")
+    sense = 1 if sense_txt == "ccw" else -1
+    eps = r.number(d, "eps", "driver.", default=0.0)
+    phi_ref = math.radians(r.number(d, "phi_ref_deg", "driver.", default=0.0))
+    if "phi_deg" in d and "positions" in d:
+        raise r.fail("driver.phi_deg", "give phi_deg or positions, not both")
+    if "positions" in d:
+        n = d["positions"]
+        if isinstance(n, bool) or not isinstance(n, int) or n <= 0:
+            raise r.fail("driver.positions", f"expected a positive whole number, got {n!r}")
+        phi0 = r.number(d, "phi0_deg", "driver.", default=0.0)
+        phis = tuple(phi0 + 360.0 * k / n for k in range(n))
+    else:
+        raw = d.get("phi_deg")
+        if raw is None:
+            raise r.fail("driver.phi_deg", "missing crank angle(s): phi_deg = 45, a list, or positions = N")
+        values = raw if isinstance(raw, list) else [raw]
+        if not values:
+            raise r.fail("driver.phi_deg", "expected at least one angle")
+        for v in values:
+            if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
+                raise r.fail("driver.phi_deg", f"expected a number of degrees, got {v!r}")
+        phis = tuple(float(v) for v in values)
+    return Driver(link=lid, pivot=link.axis[0], omega=sense * omega, eps=sense * eps,
+                  phi_ref=phi_ref, sense=sense, phis_deg=phis)
+
+
+def _branches(r: _Reader, data: dict[str, Any]) -> dict[str, int]:
+    raw = r.table(data, "branches", "", required=False)
+    out = {}
+    for key, value in raw.items():
+        if value not in (1, -1):
+            raise r.fail(f"branches.{key}", "expected +1 or -1")
+        out[key] = int(value)
+    return out
+
+
+def _outputs(r: _Reader, data: dict[str, Any]) -> frozenset[str]:
+    raw = data.get("outputs", ["positions", "velocity_plan", "acceleration_plan"])
+    if not isinstance(raw, list) or not all(isinstance(x, str) for x in raw):
+        raise r.fail("outputs", "expected a list of names")
+    wanted: set[str] = set()
+
+    def add(name: str) -> None:
+        if name not in OUTPUTS:
+            raise r.fail("outputs", f"unknown output {name!r}; expected some of {list(OUTPUTS)}")
+        if name not in wanted:
+            wanted.add(name)
+            for dep in OUTPUTS[name]:
+                add(dep)
+
+    for name in raw:
+        add(name)
+    return frozenset(wanted)
+
+
+_SCALE_UNITS = {"length": "mm/m", "velocity": "mm/(m/s)", "acceleration": "mm/(m/s^2)", "force": "mm/N"}
+
+
+def _scales(r: _Reader, data: dict[str, Any]) -> tuple[dict[str, float], str]:
+    raw = r.table(data, "scales", "", required=False)
+    style = raw.get("style", "mu")
+    if style not in ("mu", "K"):
+        raise r.fail("scales.style", "expected \"mu\" (mm per unit) or \"K\" (unit per mm)")
+    out = {}
+    for key, value in raw.items():
+        if key == "style":
+            continue
+        if key not in _SCALE_UNITS:
+            raise r.fail(f"scales.{key}", f"unknown scale; expected some of {list(_SCALE_UNITS)}")
+        if not isinstance(value, dict) or len(value) != 1 or not ({"mu", "K"} & set(value)):
+            raise r.fail(f"scales.{key}", "expected { mu = mm per unit } or { K = unit per mm }")
+        kind = "mu" if "mu" in value else "K"
+        x = r.number(value, kind, f"scales.{key}.", positive=True)
+        out[key] = x if kind == "mu" else 1.0 / x
+    return out, style

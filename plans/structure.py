@@ -1,0 +1,144 @@
+"""Structural analysis: Chebyshev mobility and the decomposition into the
+initial link and class-II Assur groups (dyads), in attachment order.
+
+A dyad is two links i, j with three pairs: J1 joins i to an already known link
+p, J2 joins i to j, J3 joins j to a known link q.  Its kind is the letters of
+(J1, J2, J3): RRR, RRP, RPR, PRP, RPP (mirror images PRR, PPR are turned round).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .errors import InputError
+from .scene import Joint, Scene
+
+KINDS = ("RRR", "RRP", "RPR", "PRP", "RPP")
+
+
+@dataclass(frozen=True, slots=True)
+class Group:
+    """One Assur group of class II, ready to solve: ``links = (i, j)``,
+    ``joints = (J1, J2, J3)``, ``known = (p, q)``."""
+
+    kind: str
+    links: tuple[int, int]
+    joints: tuple[Joint, Joint, Joint]
+    known: tuple[int, int]
+    branch: int
+
+    @property
+    def name(self) -> str:
+        a, b = sorted(self.links)
+        return f"{a}-{b}"
+
+    @property
+    def point(self) -> str:
+        """The point the group's construction finds (the inner joint, or A on the slotted link)."""
+        return self.joints[1].point
+
+
+@dataclass(frozen=True, slots=True)
+class Structure:
+    n: int  # moving links
+    p5: int  # lower pairs
+    p4: int  # higher pairs
+    initial: tuple[int, int]  # (driving link, frame)
+    groups: tuple[Group, ...]
+
+    @property
+    def mobility(self) -> int:
+        """W = 3n − 2p5 − p4 (Chebyshev)."""
+        return 3 * self.n - 2 * self.p5 - self.p4
+
+    def formula(self) -> str:
+        return (f"W = 3n - 2p5 - p4 = 3*{self.n} - 2*{self.p5} - {self.p4} = {self.mobility}; "
+                f"initial link {self.initial[0]}-{self.initial[1]}"
+                + "".join(f" + {g.kind} group {g.name}" for g in self.groups))
+
+    def to_json(self) -> dict:
+        return {
+            "n": self.n, "p5": self.p5, "p4": self.p4, "W": self.mobility,
+            "initial_link": list(self.initial),
+            "groups": [{"name": g.name, "kind": g.kind, "links": list(g.links),
+                        "attached_to": list(g.known), "point": g.point, "branch": g.branch}
+                       for g in self.groups],
+        }
+
+
+def analyse(scene: Scene) -> Structure:
+    """Mobility and Assur groups derived from links and joints alone."""
+    fail = _failer(scene.path)
+    n = len(scene.links)
+    p5 = len(scene.joints)
+    w = 3 * n - 2 * p5
+    if w != 1:
+        raise fail("joints", f"mobility W = 3*{n} - 2*{p5} = {w}; expected W = 1 (one driving link)")
+    drv = scene.driver.link
+    frame = scene.frame
+    base = [j for j in scene.joints if set(j.links) == {drv, frame}]
+    if len(base) != 1 or base[0].kind != "R" or base[0].point != scene.driver.pivot:
+        raise fail("driver.link", f"link {drv} must be joined to the frame {frame} by one R joint at its pivot "
+                                  f"{scene.driver.pivot}")
+    known = {drv, frame}
+    groups: list[Group] = []
+    remaining = sorted(set(scene.links) - known)
+    while remaining:
+        found = _next_group(scene, known, remaining)
+        if found is None:
+            raise fail("joints", f"links {remaining} do not form class-II Assur groups attached to "
+                                 f"links {sorted(known)}")
+        groups.append(found)
+        known |= set(found.links)
+        remaining = [x for x in remaining if x not in found.links]
+    return Structure(n=n, p5=p5, p4=0, initial=(drv, frame), groups=tuple(groups))
+
+
+def _failer(path: str):
+    def fail(field: str, msg: str) -> InputError:
+        return InputError(msg, file=path, field=field)
+    return fail
+
+
+def _next_group(scene: Scene, known: set[int], remaining: list[int]) -> Group | None:
+    for i in remaining:
+        for j in remaining:
+            if j <= i:
+                continue
+            inner = [x for x in scene.joints if set(x.links) == {i, j}]
+            outer_i = [x for x in scene.joints if i in x.links and x.other(i) in known]
+            outer_j = [x for x in scene.joints if j in x.links and x.other(j) in known]
+            if len(inner) == 1 and len(outer_i) == 1 and len(outer_j) == 1:
+                return _orient(scene, i, j, outer_i[0], inner[0], outer_j[0])
+    return None
+
+
+def _orient(scene: Scene, i: int, j: int, j1: Joint, j2: Joint, j3: Joint) -> Group:
+    """Turn the group so its kind is one of KINDS and check the variant is one we solve."""
+    fail = _failer(scene.path)
+    kind = j1.kind + j2.kind + j3.kind
+    if kind in ("PRR", "PPR") or (kind == "RPR" and j2.guide is not None and j2.guide.link == i):
+        i, j, j1, j3 = j, i, j3, j1
+        kind = kind[::-1]
+    name = f"{min(i, j)}-{max(i, j)}"
+    where = f"joints ({kind} group {name})"
+    if kind == "PPP":
+        raise fail(where, "three prismatic pairs do not form an Assur group")
+    p, q = j1.other(i), j3.other(j)
+    if kind == "RRP":
+        if j3.guide is None or j3.guide.link != q or j3.point != j2.point:
+            raise fail(where, f"the slider {j} must carry the pin {j2.point} along a guide on link {q}")
+    elif kind == "RPR":
+        if j2.guide is None or j2.guide.link != j or j2.point != j1.point:
+            raise fail(where, f"the block {i} pinned at {j1.point} must slide in a slot carried by link {j}")
+    elif kind == "PRP":
+        for jt, carrier in ((j1, p), (j3, q)):
+            if jt.guide is None or jt.guide.link != carrier or jt.point != j2.point:
+                raise fail(where, f"both sliders must carry the pin {j2.point} along guides on the known links")
+    elif kind == "RPP":
+        if j2.guide is None or j2.guide.link != j or j2.point != j1.point:
+            raise fail(where, f"the block {i} pinned at {j1.point} must slide in a slot carried by link {j}")
+        if j3.guide is None or j3.guide.link != q:
+            raise fail(where, f"link {j} must slide on a guide carried by link {q}")
+    branch = scene.branches.get(name, scene.branches.get(j2.point, 1))
+    return Group(kind=kind, links=(i, j), joints=(j1, j2, j3), known=(p, q), branch=branch)

@@ -1,0 +1,17 @@
+"""Scale-aware tolerances, in one place.
+
+Every comparison in the engine is relative to the size of what is compared
+(a link length, a plan's extent), never an absolute literal.
+"""
+
+#: |sin| of the angle between two construction lines below which they count as parallel.
+LOCK_SIN = 1e-12
+#: Relative slack for "just reaches" in assembly (tangent circle/line, straight toggle).
+ASSEMBLY_REL = 1e-12
+#: A plan point closer than this fraction of the plan's extent to another coincides with it.
+COINCIDE_REL = 1e-9
+
+
+def coincide_tol(extent: float) -> float:
+    """Distance under which two plan points are drawn as one (mm on the plan)."""
+    return COINCIDE_REL * max(extent, 1e-300)
