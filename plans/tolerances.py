@@ -6,6 +6,9 @@ Every comparison in the engine is relative to the size of what is compared
 
 #: |sin| of the angle between two construction lines below which they count as parallel.
 LOCK_SIN = 1e-12
+#: Construction lines closer to parallel than this are not intersected: the draftsman
+#: takes the exact point (no pencil resolves 1e-6 rad).
+NEAR_PARALLEL_SIN = 1e-6
 #: Relative slack for "just reaches" in assembly (tangent circle/line, straight toggle).
 ASSEMBLY_REL = 1e-12
 #: A plan point closer than this fraction of the plan's extent to another coincides with it.

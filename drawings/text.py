@@ -1,0 +1,121 @@
+"""Labels with subscripts and superscripts, laid out into positioned runs.
+
+Notation (the one plan objects use): ``v_BA``, ``a_BA^n``, ``a^k_A3A2``, ``p_v``,
+``F_12``, ``μ_v``; a script runs over letters and digits, or over ``{...}``.
+A subscript and a superscript after the same base are stacked, as the textbook
+writes a^n_BA.  Layout is done here, once, with measured widths: every run gets
+its own x, y, so no renderer has to understand baseline shifts.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from .fonts import metrics
+
+SCRIPT_SIZE = 0.7
+SUB_SHIFT = 0.28  # of the base size, downwards on paper
+SUP_SHIFT = -0.42
+
+
+@dataclass(frozen=True, slots=True)
+class TextRun:
+    x: float  # paper mm, left end of the run's baseline
+    y: float  # baseline
+    text: str
+    size: float  # font size, mm
+
+
+@dataclass(frozen=True, slots=True)
+class Label:
+    runs: tuple[TextRun, ...]
+    box: tuple[float, float, float, float]  # x0, y0, x1, y1 (paper mm, y down)
+    plain: str  # the text without markup, for search and tests
+
+
+_POINT = re.compile(r"^([A-Za-z]+)(\d+)$")
+
+
+def point_label(name: str) -> str:
+    """``S2`` -> ``S_2``, ``a3`` -> ``a_3``; names with markup pass through."""
+    m = _POINT.match(name)
+    return f"{m.group(1)}_{m.group(2)}" if m else name
+
+
+def parse(label: str) -> list[tuple[str, str]]:
+    """Split markup into (text, role) pieces, role in base/sub/sup."""
+    out: list[tuple[str, str]] = []
+    i, n = 0, len(label)
+    base = []
+    while i < n:
+        ch = label[i]
+        if ch in "_^" and i + 1 < n:
+            if base:
+                out.append(("".join(base), "base"))
+                base = []
+            role = "sub" if ch == "_" else "sup"
+            if label[i + 1] == "{":
+                j = label.find("}", i + 2)
+                j = n if j < 0 else j
+                out.append((label[i + 2:j], role))
+                i = j + 1
+            else:
+                j = i + 1
+                while j < n and (label[j].isalnum()):
+                    j += 1
+                out.append((label[i + 1:j], role))
+                i = j
+            continue
+        base.append(ch)
+        i += 1
+    if base:
+        out.append(("".join(base), "base"))
+    return [p for p in out if p[0]]
+
+
+def plain(label: str) -> str:
+    return "".join(t for t, _ in parse(label))
+
+
+def layout(label: str, x: float, y: float, size: float, anchor: str = "start",
+           valign: str = "baseline") -> Label:
+    """Runs of ``label`` with the anchor point at (x, y).
+
+    anchor: start | middle | end; valign: baseline | middle (of the capitals) | top | bottom.
+    """
+    m = metrics()
+    pieces = parse(label)
+    runs: list[tuple[float, float, str, float]] = []  # dx, dy, text, size
+    cx = 0.0
+    script_x = None  # x where the current script cluster began
+    script_end = 0.0
+    top, bottom = -m.ascent * size, m.descent * size
+    for text, role in pieces:
+        if role == "base":
+            if script_x is not None:
+                cx = script_end
+                script_x = None
+            w = m.width(text, size)
+            runs.append((cx, 0.0, text, size))
+            cx += w
+            continue
+        s = size * SCRIPT_SIZE
+        if script_x is None:
+            script_x = cx
+            script_end = cx
+        dy = SUB_SHIFT * size if role == "sub" else SUP_SHIFT * size
+        w = m.width(text, s)
+        runs.append((script_x, dy, text, s))
+        script_end = max(script_end, script_x + w)
+        top = min(top, dy - m.ascent * s)
+        bottom = max(bottom, dy + m.descent * s)
+    if script_x is not None:
+        cx = script_end
+    width = cx
+    ox = {"start": 0.0, "middle": -width / 2, "end": -width}[anchor]
+    cap = 0.73 * size
+    oy = {"baseline": 0.0, "middle": cap / 2, "top": -top, "bottom": -bottom}[valign]
+    bx, by = x + ox, y + oy
+    out = tuple(TextRun(bx + dx, by + dy, t, s) for dx, dy, t, s in runs)
+    return Label(out, (bx, by + top, bx + width, by + bottom), "".join(p[0] for p in pieces))
