@@ -103,7 +103,7 @@ class _Snapshot:
         self.k = k
         self.phi = float(kin.phi_deg[k])
         self.r0 = {lid: complex(m.r0[k]) for lid, m in kin.motion.items()}
-        self.rot = {lid: cmath.exp(1j * float(m.theta[k])) for lid, m in kin.motion.items()}
+        self.rot = {lid: complex(m.rot[k]) for lid, m in kin.motion.items()}
         self.w = {lid: float(m.omega[k]) for lid, m in kin.motion.items() if m.omega is not None}
         self.e = {lid: float(m.eps[k]) for lid, m in kin.motion.items() if m.eps is not None}
         self.v0 = {lid: complex(m.v0[k]) for lid, m in kin.motion.items() if m.v0 is not None}

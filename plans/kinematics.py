@@ -33,12 +33,16 @@ def cross(a, b):
 
 @dataclass(slots=True)
 class _Motion:
-    theta: R
+    rot: C  # e^{iθ}: kept as a unit complex, so no angle is ever taken in the solvers
     r0: C
     omega: R | None = None
     v0: C | None = None
     eps: R | None = None
     a0: C | None = None
+
+    @property
+    def theta(self) -> R:
+        return np.angle(self.rot)
 
 
 @dataclass(frozen=True)
@@ -72,7 +76,7 @@ class Kinematics:
     def point_on(self, link: int, z: complex) -> tuple[C, C | None, C | None]:
         """r, v, a of the point with local coordinates z on ``link``."""
         m = self.motion[link]
-        rel = np.exp(1j * m.theta) * z
+        rel = m.rot * z
         r = m.r0 + rel
         v = None if m.omega is None else m.v0 + 1j * m.omega * rel
         a = None if m.eps is None else m.a0 + (1j * m.eps - m.omega**2) * rel
@@ -123,12 +127,12 @@ def solve(scene: Scene, phi_deg=None, order: int | None = None,
     motion: dict[int, _Motion] = {}
     zeros = np.zeros(n)
     czeros = np.zeros(n, dtype=complex)
-    motion[scene.frame] = _Motion(zeros, czeros, zeros, czeros, zeros, czeros)
+    motion[scene.frame] = _Motion(np.ones(n, dtype=complex), czeros, zeros, czeros, zeros, czeros)
     d = scene.driver
     crank = scene.links[d.link]
-    theta1 = d.theta(phis)
+    rot1 = np.exp(1j * d.theta(phis))
     pivot = scene.frame_points[d.pivot]
-    m1 = _Motion(theta1, pivot - np.exp(1j * theta1) * crank.points[d.pivot])
+    m1 = _Motion(rot1, pivot - rot1 * crank.points[d.pivot])
     if order >= 1:
         m1.omega = np.full(n, d.omega)
         m1.v0 = 1j * m1.omega * (m1.r0 - pivot)
@@ -154,14 +158,17 @@ def _guide_line(kin: Kinematics, jt: Joint) -> tuple[C, C]:
     """Global origin and unit direction of a joint's guide."""
     assert jt.guide is not None
     m = kin.motion[jt.guide.link]
-    rot = np.exp(1j * m.theta)
-    return m.r0 + rot * jt.guide.origin, rot * jt.guide.direction
+    return m.r0 + m.rot * jt.guide.origin, m.rot * jt.guide.direction
 
 
-def _place(kin: Kinematics, link: int, theta: R, anchor: C, anchor_name: str) -> _Motion:
-    """A link placed by its angle and one of its points."""
+def _unit(z: C) -> C:
+    return z / np.abs(z)
+
+
+def _place(kin: Kinematics, link: int, rot: C, anchor: C, anchor_name: str) -> _Motion:
+    """A link placed by its rotation e^{iθ} and one of its points."""
     z = kin.scene.links[link].points[anchor_name]
-    m = _Motion(theta, anchor - np.exp(1j * theta) * z)
+    m = _Motion(rot, anchor - rot * z)
     kin.motion[link] = m
     return m
 
@@ -224,10 +231,8 @@ def _rrr(kin: Kinematics, g: Group, order: int) -> None:
                      f"{j1.point}{j2.point} = {l1:.6g} m and {j3.point}{j2.point} = {l3:.6g} m cannot "
                      f"reach across {j1.point}{j3.point}")
     B = P1 + (a + 1j * g.branch * h) * d / D
-    ti = np.angle(B - P1) - np.angle(zi)
-    tj = np.angle(B - P3) - np.angle(zj)
-    _place(kin, i, ti, P1, j1.point)
-    _place(kin, j, tj, P3, j3.point)
+    _place(kin, i, _unit(B - P1) * (zi.conjugate() / l1), P1, j1.point)
+    _place(kin, j, _unit(B - P3) * (zj.conjugate() / l3), P3, j3.point)
     if order < 1:
         return
     r1, r3 = B - P1, B - P3
@@ -257,14 +262,13 @@ def _rrp(kin: Kinematics, g: Group, order: int) -> None:
                         f"{j1.point} to the guide of {j2.point}")
     B = G0 + (t0 + g.branch * root) * u
     zi = Li.points[j2.point] - Li.points[j1.point]
-    _place(kin, i, np.angle(B - P1) - np.angle(zi), P1, j1.point)
+    _place(kin, i, _unit(B - P1) * (zi.conjugate() / l1), P1, j1.point)
     mq = kin.motion[q]
-    tj = mq.theta + j3.guide.angle - j3.slider_angle  # type: ignore[union-attr]
-    _place(kin, j, tj, B, j2.point)
+    _place(kin, j, mq.rot * _turn(j3), B, j2.point)
     if order < 1:
         return
     r1 = B - P1
-    _, vBq, aBq = kin.point_on(q, _local_of(kin, q, B))
+    vBq, aBq = _carried(kin, q, B)
     c1, c2 = 1j * r1, -u
     _check_lock(kin, g, c1, c2, j2.point)
     wi, sd = _solve2(c1, c2, vBq - vP1)
@@ -299,12 +303,11 @@ def _rpr(kin: Kinematics, g: Group, order: int) -> None:
                     f"the slot of link {j} (offset {abs(ecc):.6g} m from {j3.point}) cannot pass through "
                     f"{j1.point}")
     tj = _rpr_angle(np.angle(d), guide.angle, ecc, D, g.branch)
-    mj = _place(kin, j, tj, Cq, j3.point)
-    ti = tj + guide.angle - j2.slider_angle
-    _place(kin, i, ti, A, j1.point)
+    mj = _place(kin, j, np.exp(1j * tj), Cq, j3.point)
+    _place(kin, i, mj.rot * _turn(j2), A, j1.point)
     if order < 1:
         return
-    u = np.exp(1j * (mj.theta + guide.angle))
+    u = mj.rot * guide.direction
     r = A - Cq
     c1, c2 = 1j * r, u
     _check_lock(kin, g, c1, c2, j2.point)
@@ -341,12 +344,12 @@ def _prp(kin: Kinematics, g: Group, order: int) -> None:
     s1, _ = _solve2(c1, c2, G3 - G1)
     B = G1 + s1 * u1
     mp, mq = kin.motion[p], kin.motion[q]
-    _place(kin, i, mp.theta + j1.guide.angle - j1.slider_angle, B, j2.point)  # type: ignore[union-attr]
-    _place(kin, j, mq.theta + j3.guide.angle - j3.slider_angle, B, j2.point)  # type: ignore[union-attr]
+    _place(kin, i, mp.rot * _turn(j1), B, j2.point)
+    _place(kin, j, mq.rot * _turn(j3), B, j2.point)
     if order < 1:
         return
-    _, vBp, aBp = kin.point_on(p, _local_of(kin, p, B))
-    _, vBq, aBq = kin.point_on(q, _local_of(kin, q, B))
+    vBp, aBp = _carried(kin, p, B)
+    vBq, aBq = _carried(kin, q, B)
     sd1, sd3 = _solve2(c1, c2, vBq - vBp)
     vB = vBp + sd1 * u1
     sdd1 = sdd3 = aB = None
@@ -369,8 +372,7 @@ def _rpp(kin: Kinematics, g: Group, order: int) -> None:
     G3, u3 = _guide_line(kin, j3)
     mq = kin.motion[q]
     Lj = kin.scene.links[j]
-    tj = mq.theta + j3.guide.angle - j3.slider_angle  # type: ignore[union-attr]
-    rot = np.exp(1j * tj)
+    rot = mq.rot * _turn(j3)
     guide = j2.guide
     assert guide is not None
     u2 = rot * guide.direction
@@ -384,12 +386,11 @@ def _rpp(kin: Kinematics, g: Group, order: int) -> None:
     # r0_j = G3 + t u3 − rot zK ; A on slot: cross(u2, A − G3 − t u3 + rot (zK − g2)) = 0
     t = cross(u2, A - G3 + rot * (zK - guide.origin)) / cross(u2, u3)
     r0 = G3 + t * u3 - rot * zK
-    kin.motion[j] = _Motion(tj, r0)
-    ti = tj + guide.angle - j2.slider_angle
-    _place(kin, i, ti, A, j1.point)
+    kin.motion[j] = _Motion(rot, r0)
+    _place(kin, i, rot * _turn(j2), A, j1.point)
     if order < 1:
         return
-    _, vAq, aAq = kin.point_on(q, _local_of(kin, q, A))
+    vAq, aAq = _carried(kin, q, A)
     sd2, sd3 = _solve2(c1, c2, vA - vAq)
     vAj = vAq + sd3 * u3
     sdd2 = sdd3 = aAj = None
@@ -404,11 +405,21 @@ def _rpp(kin: Kinematics, g: Group, order: int) -> None:
     kin.slides[j3.name] = (sd3, sdd3)
 
 
-def _local_of(kin: Kinematics, link: int, X: C) -> C:
-    """Local coordinates on ``link`` of the global points X (a point fixed to the link
-    that coincides with X now)."""
+def _turn(jt: Joint) -> complex:
+    """e^{i(α − α_s)}: a slider's rotation relative to the link carrying its guide."""
+    assert jt.guide is not None
+    return complex(np.exp(1j * (jt.guide.angle - jt.slider_angle)))
+
+
+def _carried(kin: Kinematics, link: int, X: C) -> tuple[C, C | None]:
+    """v and a of the point fixed to ``link`` that coincides with X now (zero on the frame)."""
     m = kin.motion[link]
-    return (X - m.r0) * np.exp(-1j * m.theta)
+    if link == kin.scene.frame:
+        return m.v0, m.a0
+    rel = X - m.r0
+    v = m.v0 + 1j * m.omega * rel
+    a = None if m.eps is None else m.a0 + (1j * m.eps - m.omega**2) * rel
+    return v, a
 
 
 _SOLVERS = {"RRR": _rrr, "RRP": _rrp, "RPR": _rpr, "PRP": _prp, "RPP": _rpp}

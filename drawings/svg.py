@@ -1,0 +1,132 @@
+"""The svgwrite backend: true millimetres, fixed number formatting, stable ids.
+
+Every coordinate is written with :func:`num` (at most 3 decimals, no ``-0``), ids
+come from the caller (never generated), no timestamps: the same sheet gives the
+same bytes.  Arrowheads are filled polygons, scripts are positioned ``tspan``s
+(PDF converters are weak with markers and baseline shifts).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+import svgwrite
+
+from .backend import Pt, Style, hatch_segments
+from .fonts import FONT_FAMILY
+from .text import Label
+
+
+def num(v: float) -> str:
+    """Fixed formatting: 3 decimals, trailing zeros dropped, never ``-0``."""
+    s = f"{v:.3f}".rstrip("0").rstrip(".")
+    return "0" if s in ("-0", "") else s
+
+
+def _pts(pts: Sequence[Pt]) -> str:
+    return " ".join(f"{num(x)},{num(y)}" for x, y in pts)
+
+
+class SvgBackend:
+    """Draws onto an svgwrite Drawing of ``width`` × ``height`` mm."""
+
+    def __init__(self, width: float, height: float, *, debug: bool = False, title: str = "") -> None:
+        self.dwg = svgwrite.Drawing(size=(f"{num(width)}mm", f"{num(height)}mm"), profile="full",
+                                    debug=debug)
+        self.dwg.viewbox(0, 0, width, height)
+        if title:
+            self.dwg.set_desc(title=title)
+        self.dwg.add(self.dwg.rect((0, 0), (num(width), num(height)), fill="#fff", id="paper"))
+        self.stack = [self.dwg]
+        root = self.dwg.g(font_family=FONT_FAMILY, stroke_linecap="butt", stroke_linejoin="round")
+        self.dwg.add(root)
+        self.stack = [root]
+
+    # ---- helpers
+
+    def _add(self, el, eid: str, cls: str = "") -> None:
+        if eid:
+            el["id"] = eid
+        if cls:
+            el["class"] = cls
+        self.stack[-1].add(el)
+
+    @staticmethod
+    def _style(el, style: Style, *, fill_default: str = "none") -> None:
+        el["fill"] = style.fill or fill_default
+        if style.stroke:
+            el["stroke"] = style.stroke
+            el["stroke-width"] = num(style.width)
+            if style.dash:
+                el["stroke-dasharray"] = " ".join(num(d) for d in style.dash)
+        else:
+            el["stroke"] = "none"
+
+    # ---- Backend
+
+    def begin(self, gid: str, cls: str = "") -> None:
+        g = self.dwg.g()
+        self._add(g, gid, cls)
+        self.stack.append(g)
+
+    def end(self) -> None:
+        self.stack.pop()
+
+    def line(self, p0: Pt, p1: Pt, style: Style, eid: str = "") -> None:
+        el = self.dwg.line((num(p0[0]), num(p0[1])), (num(p1[0]), num(p1[1])))
+        self._style(el, style)
+        del el.attribs["fill"]
+        self._add(el, eid, style.cls)
+
+    def polyline(self, pts: Sequence[Pt], style: Style, eid: str = "") -> None:
+        el = self.dwg.polyline()
+        el["points"] = _pts(pts)
+        self._style(el, style)
+        self._add(el, eid, style.cls)
+
+    def polygon(self, pts: Sequence[Pt], style: Style, eid: str = "") -> None:
+        el = self.dwg.polygon()
+        el["points"] = _pts(pts)
+        self._style(el, style)
+        self._add(el, eid, style.cls)
+
+    def circle(self, c: Pt, r: float, style: Style, eid: str = "") -> None:
+        el = self.dwg.circle((num(c[0]), num(c[1])), num(r))
+        self._style(el, style)
+        self._add(el, eid, style.cls)
+
+    def arc(self, c: Pt, r: float, a0: float, a1: float, style: Style, eid: str = "") -> None:
+        x0, y0 = c[0] + r * math.cos(a0), c[1] + r * math.sin(a0)
+        x1, y1 = c[0] + r * math.cos(a1), c[1] + r * math.sin(a1)
+        large = 1 if abs(a1 - a0) > math.pi else 0
+        sweep = 1 if a1 > a0 else 0  # increasing paper angle = clockwise on the sheet = SVG sweep 1
+        d = f"M{num(x0)},{num(y0)} A{num(r)},{num(r)} 0 {large} {sweep} {num(x1)},{num(y1)}"
+        el = self.dwg.path(d=d)
+        self._style(el, style)
+        self._add(el, eid, style.cls)
+
+    def text(self, label: Label, cls: str = "", eid: str = "", fill: str = "#000") -> None:
+        if not label.runs:
+            return
+        first = label.runs[0]
+        el = self.dwg.text("", font_size=num(first.size))
+        if fill != "#000":
+            el["fill"] = fill
+        for run in label.runs:
+            ts = self.dwg.tspan(run.text, x=[num(run.x)], y=[num(run.y)])
+            if run.size != first.size:
+                ts["font-size"] = num(run.size)
+            el.add(ts)
+        self._add(el, eid, cls)
+
+    def hatch(self, p0: Pt, p1: Pt, side: int, style: Style, step: float = 2.5,
+              length: float = 2.5, eid: str = "") -> None:
+        segs = hatch_segments(p0, p1, side, step, length)
+        d = " ".join(f"M{num(a[0])},{num(a[1])} L{num(b[0])},{num(b[1])}" for a, b in segs)
+        el = self.dwg.path(d=d or "M0,0")
+        self._style(el, style)
+        self._add(el, eid, style.cls or "hatch")
+
+    def tostring(self) -> str:
+        return self.dwg.tostring()

@@ -1,0 +1,73 @@
+"""The ``plans`` command: solve, check, bench (``draw`` is added by drawings.cli,
+since this package never imports the renderer)."""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+from collections.abc import Sequence
+
+from .errors import PlansError
+from .io import atomic_write, dumps
+from .results import solve_scene, table, to_json
+from .scene import load_scene
+
+#: Pure commands living in their own modules, each with ``register(subparsers)``.
+_COMMAND_MODULES = ("plans.check", "plans.bench")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="plans",
+        description="Velocity and acceleration plans, force polygons and the Zhukovsky lever "
+                    "of planar linkages, built as a draftsman builds them and checked exactly.")
+    sub = parser.add_subparsers(dest="command", required=True)
+    s = sub.add_parser("solve", help="solve a scene: table per position, JSON")
+    s.add_argument("scene", help="scene file (TOML)")
+    s.add_argument("--json", metavar="PATH", help="write results as JSON ('-' for stdout)")
+    s.add_argument("--protocol", action="store_true", help="print the construction protocol")
+    s.add_argument("--quiet", action="store_true", help="no table on stdout")
+    s.set_defaults(func=_solve)
+    for mod in _COMMAND_MODULES:
+        try:
+            module = importlib.import_module(mod)
+        except ModuleNotFoundError as exc:  # a command whose module is absent is simply not offered
+            if exc.name != mod:
+                raise
+            continue
+        module.register(sub)
+    return parser
+
+
+def _solve(args: argparse.Namespace) -> int:
+    sol = solve_scene(load_scene(args.scene))
+    if args.json == "-":
+        sys.stdout.write(dumps(to_json(sol)))
+        return 0
+    if args.json:
+        atomic_write(args.json, dumps(to_json(sol)))
+    if not args.quiet:
+        print(table(sol, protocol=args.protocol))
+    return 0
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run a parsed command; user errors become one line on stderr and status 2."""
+    try:
+        return int(args.func(args))
+    except PlansError as exc:
+        print(f"plans: error: {exc}", file=sys.stderr)
+        return 2
+    except OSError as exc:
+        print(f"plans: error: {exc.filename or ''}: {exc.strerror}", file=sys.stderr)
+        return 2
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    args = build_parser().parse_args(argv)
+    return run(args)
+
+
+if __name__ == "__main__":  # pragma: no cover
+    raise SystemExit(main())

@@ -1,0 +1,561 @@
+"""Loads of the force analysis: what acts on the links besides the reactions.
+
+Masses, moments of inertia and centres of mass live in ``[links.N]``
+(``mass`` kg, ``inertia`` kg·m² about the centre, ``centre = "S2"``); one-point
+links (sliders) default to their axis point as centre.  Everything else is in
+``[loads]``.  Forces are in N, moments in N·m (counter-clockwise positive),
+lengths in the file's ``unit`` (or strings such as ``"82 mm"``).
+
+.. code-block:: toml
+
+    [loads]
+    gravity = false            # default true: G = m g, g = 9.81 m/s² along -y;
+                               # or gravity = { g = 9.81, direction_deg = -90 }
+    inertia = "force_and_moment"  # or "offset_force": (Φ, M_Φ) replaced by one force Φ
+                               # offset from S by h = M_Φ/Φ (moment kept where Φ = 0)
+    lever_turn = "ccw"         # the Zhukovsky lever is the velocity plan turned 90° ccw (or "cw")
+
+    [loads.balancing]          # default: a force at the crank pin ⟂ the crank
+    kind = "force"             # or "moment" (a couple on the driving link)
+    point = "A"                # a point of the driving link (not its pivot)
+
+    [loads.mass_rule]          # optional, the coursework's rule m = k·F_p·1e-3 kg (F_p in cm²)
+    diameter = 82              # piston diameter (file unit) giving F_p = π d²/4
+    g_per_cm2 = { 3 = 13, 5 = 13, 2 = 16, 4 = 16 }   # k per link; such links must not set mass
+    rod_inertia = [2, 4]       # I_S = m l² (1/3 − (l_AS/l)²) for these links (coursework formula)
+
+    [[loads.gas]]              # gas force on a piston, along its guide
+    link = 3                   # the piston: a link sliding on a guide
+    diameter = 82              # or area = 52.8 (in area_unit, default "cm2")
+    pressure = 50              # constant pressure, in pressure_unit
+    pressure_unit = "N/cm2"    # Pa, kPa, MPa, bar, N/cm2, N/mm2 (default MPa)
+    strokes = ["down"]         # act only while the piston moves toward the crank pivot
+                               # ("down") or away from it ("up"); default both
+    direction = "toward_pivot" # default; or "away_from_pivot"
+    # indicator diagram instead of `pressure`: pressure over piston travel s measured
+    # from the outer dead centre (file unit), one table per stroke; must cover 0..H
+    # diagram = { down = [[0, 50], [35, 20], [70, 2]], up = [[0, 8], [70, 0]] }
+
+    [[loads.force]]            # an external force at a named point of a link
+    link = 3
+    point = "B"
+    vector = [-1000, 0]        # N, global axes; or magnitude = 1000 with angle_deg = 180;
+                               # or resisting = 1000: opposite the point's velocity
+                               #   (along = deg: only the velocity's sign along that axis counts;
+                               #    stroke = "positive" | "negative": act only on that stroke)
+    name = "F_c"               # label on the polygons and the lever (default F_ext<k>)
+
+    [[loads.moment]]           # an external moment on a link
+    link = 4
+    value = -20                # N·m ccw+; or resisting = 20 (opposite ω of the link)
+    name = "M_c"
+
+Sign of the balancing force in the results: positive along the velocity of
+its point (it drives the crank); the balancing moment is counter-clockwise
+positive.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .errors import InputError
+from .scene import Scene
+from .units import LENGTH_UNITS, parse_length
+
+C = NDArray[np.complex128]
+R = NDArray[np.float64]
+
+PRESSURE_UNITS = {"Pa": 1.0, "kPa": 1e3, "MPa": 1e6, "bar": 1e5, "N/cm2": 1e4, "N/mm2": 1e6, "N/m2": 1.0}
+AREA_UNITS = {"m2": 1.0, "cm2": 1e-4, "mm2": 1e-6}
+G_STANDARD = 9.81  # the textbooks' g
+
+
+@dataclass(frozen=True, slots=True)
+class GasLoad:
+    link: int
+    joint: str  # the prismatic joint the piston slides in
+    area: float  # m²
+    pressure: float | None  # Pa (constant) or None with a diagram
+    diagram: dict[str, tuple[R, R]]  # "down"/"up" -> (travel m, pressure Pa)
+    strokes: tuple[str, ...]
+    toward_pivot: bool
+    name: str
+    outer: float = 0.0  # travel coordinate of the outer dead centre (diagram only), m
+    stroke: float = 0.0  # H, m (diagram only)
+
+
+@dataclass(frozen=True, slots=True)
+class ForceLoad:
+    link: int
+    point: str
+    vector: complex | None  # N, fixed
+    resisting: float | None  # magnitude opposite the velocity
+    along: float | None  # rad, axis for the resisting force's sign
+    stroke: str  # "both" | "positive" | "negative"
+    name: str
+
+
+@dataclass(frozen=True, slots=True)
+class MomentLoad:
+    link: int
+    value: float | None
+    resisting: float | None
+    name: str
+
+
+@dataclass(frozen=True, slots=True)
+class Balancing:
+    kind: str  # "force" | "moment"
+    point: str  # on the driving link
+
+
+@dataclass(frozen=True, slots=True)
+class Loads:
+    """Everything the force analysis needs that is not geometry."""
+
+    masses: dict[int, float]
+    inertias: dict[int, float]
+    centres: dict[int, str]  # link -> centre point name (links with mass or inertia)
+    g: complex  # gravity vector, m/s² (0 when off)
+    offset_inertia: bool
+    lever_turn: int  # +1 ccw, -1 cw
+    balancing: Balancing
+    gas: tuple[GasLoad, ...]
+    forces: tuple[ForceLoad, ...]
+    moments: tuple[MomentLoad, ...]
+
+
+_LOAD_KEYS = {"gravity", "inertia", "lever_turn", "balancing", "mass_rule", "gas", "force", "moment"}
+
+
+def parse_loads(scene: Scene) -> Loads:
+    """Read ``[loads]`` (and the links' masses) into a :class:`Loads`; InputError on anything wrong."""
+    path = scene.path
+    raw = scene.raw.get("loads", {})
+    unit = scene.raw.get("unit", "mm")
+
+    def fail(field: str, msg: str) -> InputError:
+        return InputError(msg, file=path, field=field)
+
+    if not isinstance(raw, dict):
+        raise fail("loads", "expected a table [loads]")
+    for key in raw:
+        if key not in _LOAD_KEYS:
+            raise fail(f"loads.{key}", f"unknown key; expected some of {sorted(_LOAD_KEYS)}")
+
+    def number(body: dict[str, Any], key: str, where: str, *, nonneg: bool = False,
+               positive: bool = False) -> float:
+        v = body[key]
+        if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
+            raise fail(f"{where}{key}", f"expected a number, got {v!r}")
+        if nonneg and v < 0:
+            raise fail(f"{where}{key}", f"expected a number >= 0, got {v!r}")
+        if positive and v <= 0:
+            raise fail(f"{where}{key}", f"expected a positive number, got {v!r}")
+        return float(v)
+
+    def length(v: Any, field: str, positive: bool = True) -> float:
+        try:
+            x = parse_length(v, unit if unit in LENGTH_UNITS else "mm")
+        except ValueError as exc:
+            raise fail(field, str(exc)) from None
+        if positive and x <= 0:
+            raise fail(field, f"expected a positive length, got {v!r}")
+        return x
+
+    def moving_link(body: dict[str, Any], where: str) -> int:
+        lid = body.get("link")
+        if lid == scene.frame:
+            raise fail(f"{where}link", f"link {lid} is the frame: loads on the frame do not enter the analysis")
+        if isinstance(lid, bool) or lid not in scene.links:
+            raise fail(f"{where}link", f"unknown link {lid!r}; expected one of {sorted(scene.links)}")
+        return int(lid)
+
+    # ---- masses, inertias, centres
+    masses = {lid: link.mass for lid, link in scene.links.items()}
+    inertias = {lid: link.inertia for lid, link in scene.links.items()}
+    links_raw = scene.raw.get("links", {})
+    rule = raw.get("mass_rule")
+    if rule is not None:
+        if not isinstance(rule, dict):
+            raise fail("loads.mass_rule", "expected a table { diameter = ..., g_per_cm2 = { link = k } }")
+        if "diameter" not in rule:
+            raise fail("loads.mass_rule.diameter", "missing piston diameter")
+        d = length(rule["diameter"], "loads.mass_rule.diameter")
+        area_cm2 = math.pi * d**2 / 4 / 1e-4
+        ks = rule.get("g_per_cm2", {})
+        if not isinstance(ks, dict):
+            raise fail("loads.mass_rule.g_per_cm2", "expected a table { link = k }")
+        for key in ks:
+            where = f"loads.mass_rule.g_per_cm2.{key}"
+            try:
+                lid = int(key)
+            except ValueError:
+                raise fail(where, "expected a link number") from None
+            if lid not in scene.links:
+                raise fail(where, f"unknown link {lid}")
+            if "mass" in links_raw.get(str(lid), {}):
+                raise fail(where, f"link {lid} sets mass in [links.{lid}] too; give one or the other")
+            masses[lid] = number(ks, key, "loads.mass_rule.g_per_cm2.", nonneg=True) * area_cm2 * 1e-3
+        rods = rule.get("rod_inertia", [])
+        if not isinstance(rods, list):
+            raise fail("loads.mass_rule.rod_inertia", "expected a list of link numbers")
+        for lid in rods:
+            where = "loads.mass_rule.rod_inertia"
+            if lid not in scene.links:
+                raise fail(where, f"unknown link {lid!r}")
+            link = scene.links[lid]
+            if link.length is None or link.centre is None:
+                raise fail(where, f"link {lid} needs a two-point axis and a centre for the rod formula")
+            if "inertia" in links_raw.get(str(lid), {}):
+                raise fail(where, f"link {lid} sets inertia in [links.{lid}] too; give one or the other")
+            ratio = abs(link.points[link.centre]) / link.length
+            inertias[lid] = masses[lid] * link.length**2 * (1 / 3 - ratio**2)
+    centres: dict[int, str] = {}
+    for lid, link in scene.links.items():
+        if link.centre is not None:
+            centres[lid] = link.centre
+        elif masses[lid] > 0 or inertias[lid] > 0:
+            if len(link.axis) == 1:
+                centres[lid] = link.axis[0]
+            else:
+                raise fail(f"links.{lid}.centre", f"link {lid} has mass or inertia but no centre of mass point")
+
+    # ---- gravity
+    grav = raw.get("gravity", True)
+    if isinstance(grav, bool):
+        g = complex(0, -G_STANDARD) if grav else 0j
+    elif isinstance(grav, dict):
+        gval = number(grav, "g", "loads.gravity.", nonneg=True) if "g" in grav else G_STANDARD
+        ang = number(grav, "direction_deg", "loads.gravity.") if "direction_deg" in grav else -90.0
+        g = gval * complex(math.cos(math.radians(ang)), math.sin(math.radians(ang)))
+    else:
+        raise fail("loads.gravity", "expected true, false or { g = 9.81, direction_deg = -90 }")
+
+    inertia_mode = raw.get("inertia", "force_and_moment")
+    if inertia_mode not in ("force_and_moment", "offset_force"):
+        raise fail("loads.inertia", f"expected \"force_and_moment\" or \"offset_force\", got {inertia_mode!r}")
+    turn = raw.get("lever_turn", "ccw")
+    if turn not in ("ccw", "cw"):
+        raise fail("loads.lever_turn", f"expected \"ccw\" or \"cw\", got {turn!r}")
+
+    # ---- balancing load
+    crank = scene.links[scene.driver.link]
+    bal = raw.get("balancing", {})
+    if not isinstance(bal, dict):
+        raise fail("loads.balancing", "expected a table { kind = \"force\", point = \"A\" }")
+    kind = bal.get("kind", "force")
+    if kind not in ("force", "moment"):
+        raise fail("loads.balancing.kind", f"expected \"force\" or \"moment\", got {kind!r}")
+    bpoint = bal.get("point", crank.axis[1])
+    if not isinstance(bpoint, str):
+        raise fail("loads.balancing.point", "expected a point name")
+    if bpoint not in crank.points:
+        if bpoint in scene.frame_points:
+            raise fail("loads.balancing.point", f"point {bpoint!r} is on the frame; the balancing force acts on "
+                                                f"the driving link {crank.id}")
+        raise fail("loads.balancing.point", f"point {bpoint!r} is not on the driving link {crank.id}")
+    if abs(crank.points[bpoint] - crank.points[scene.driver.pivot]) == 0:
+        raise fail("loads.balancing.point", f"point {bpoint!r} is the pivot: a force there has no moment")
+
+    # ---- gas forces
+    gas_raw = raw.get("gas", [])
+    if not isinstance(gas_raw, list):
+        raise fail("loads.gas", "expected an array of tables [[loads.gas]]")
+    gas = []
+    for k, body in enumerate(gas_raw):
+        where = f"loads.gas[{k}]."
+        if not isinstance(body, dict):
+            raise fail(f"loads.gas[{k}]", "expected a table")
+        lid = moving_link(body, where)
+        pj = [j for j in scene.joints if j.kind == "P" and j.guide is not None and j.slider == lid]
+        if len(pj) != 1:
+            raise fail(f"{where}link", f"link {lid} is not a piston: it must slide on exactly one guide")
+        if "diameter" in body:
+            area = math.pi * length(body["diameter"], f"{where}diameter") ** 2 / 4
+        elif "area" in body:
+            au = body.get("area_unit", "cm2")
+            if au not in AREA_UNITS:
+                raise fail(f"{where}area_unit", f"expected one of {list(AREA_UNITS)}, got {au!r}")
+            area = number(body, "area", where, positive=True) * AREA_UNITS[au]
+        else:
+            raise fail(f"{where}diameter", "missing piston diameter (or area)")
+        pu = body.get("pressure_unit", "MPa")
+        if pu not in PRESSURE_UNITS:
+            raise fail(f"{where}pressure_unit", f"expected one of {list(PRESSURE_UNITS)}, got {pu!r}")
+        scale = PRESSURE_UNITS[pu]
+        strokes = body.get("strokes", ["down", "up"])
+        if not (isinstance(strokes, list) and strokes and all(s in ("down", "up") for s in strokes)):
+            raise fail(f"{where}strokes", "expected a list of \"down\" (toward the crank) and/or \"up\"")
+        direction = body.get("direction", "toward_pivot")
+        if direction not in ("toward_pivot", "away_from_pivot"):
+            raise fail(f"{where}direction", f"expected \"toward_pivot\" or \"away_from_pivot\", got {direction!r}")
+        pressure = None
+        outer = stroke_len = 0.0
+        diagram: dict[str, tuple[R, R]] = {}
+        if "pressure" in body and "diagram" in body:
+            raise fail(f"{where}diagram", "give pressure or diagram, not both")
+        if "pressure" in body:
+            pressure = number(body, "pressure", where) * scale
+        elif "diagram" in body:
+            diag = body["diagram"]
+            if not isinstance(diag, dict) or not diag or not set(diag) <= {"down", "up"}:
+                raise fail(f"{where}diagram", "expected { down = [[s, p], ...], up = [[s, p], ...] }")
+            outer, stroke_len = _stroke(scene, pj[0].name, lid)
+            for side, table in diag.items():
+                f = f"{where}diagram.{side}"
+                if not (isinstance(table, list) and len(table) >= 2
+                        and all(isinstance(row, list) and len(row) == 2 for row in table)):
+                    raise fail(f, "expected at least two rows [travel, pressure]")
+                s = np.array([length(row[0], f, positive=False) for row in table])
+                p = np.array([number({"p": row[1]}, "p", f + ".") for row in table]) * scale
+                if np.any(np.diff(s) <= 0):
+                    raise fail(f, "expected travel increasing from row to row")
+                tol = 1e-6 * stroke_len
+                if s[0] > tol or s[-1] < stroke_len - tol:
+                    raise fail(f, f"the table covers travel {s[0] * 1e3:.6g}..{s[-1] * 1e3:.6g} mm but the "
+                                  f"stroke is 0..{stroke_len * 1e3:.6g} mm")
+                diagram[side] = (s, p)
+            missing = [s for s in strokes if s not in diagram]
+            if missing:
+                raise fail(f"{where}diagram", f"no table for the {missing[0]!r} stroke listed in strokes")
+        else:
+            raise fail(f"{where}pressure", "missing pressure (or an indicator diagram)")
+        gas.append(GasLoad(link=lid, joint=pj[0].name, area=area, pressure=pressure, diagram=diagram,
+                           strokes=tuple(strokes), toward_pivot=direction == "toward_pivot",
+                           name=str(body.get("name", f"P{lid}")), outer=outer, stroke=stroke_len))
+
+    # ---- external forces and moments
+    forces = []
+    f_raw = raw.get("force", [])
+    if not isinstance(f_raw, list):
+        raise fail("loads.force", "expected an array of tables [[loads.force]]")
+    for k, body in enumerate(f_raw):
+        where = f"loads.force[{k}]."
+        if not isinstance(body, dict):
+            raise fail(f"loads.force[{k}]", "expected a table")
+        lid = moving_link(body, where)
+        pt = body.get("point")
+        if not isinstance(pt, str) or pt not in scene.links[lid].points:
+            raise fail(f"{where}point", f"unknown point {pt!r} on link {lid}; expected one of "
+                                        f"{sorted(scene.links[lid].points)}")
+        vec = res = along = None
+        stroke = body.get("stroke", "both")
+        if stroke not in ("both", "positive", "negative"):
+            raise fail(f"{where}stroke", f"expected \"both\", \"positive\" or \"negative\", got {stroke!r}")
+        if "vector" in body:
+            v = body["vector"]
+            if not (isinstance(v, list) and len(v) == 2):
+                raise fail(f"{where}vector", "expected [Fx, Fy] in N")
+            vv = {"x": v[0], "y": v[1]}
+            vec = complex(number(vv, "x", f"{where}vector."), number(vv, "y", f"{where}vector."))
+        elif "magnitude" in body:
+            mag = number(body, "magnitude", where)
+            ang = number(body, "angle_deg", where) if "angle_deg" in body else 0.0
+            vec = mag * complex(math.cos(math.radians(ang)), math.sin(math.radians(ang)))
+        elif "resisting" in body:
+            res = number(body, "resisting", where, nonneg=True)
+            if "along" in body:
+                along = math.radians(number(body, "along", where))
+        else:
+            raise fail(f"{where}vector", "expected vector = [Fx, Fy], magnitude (+ angle_deg) or resisting")
+        if stroke != "both" and along is None:
+            raise fail(f"{where}stroke", "a stroke needs an axis: along = angle in degrees")
+        forces.append(ForceLoad(link=lid, point=pt, vector=vec, resisting=res, along=along, stroke=stroke,
+                                name=str(body.get("name", f"F_ext{k + 1}"))))
+    moments = []
+    m_raw = raw.get("moment", [])
+    if not isinstance(m_raw, list):
+        raise fail("loads.moment", "expected an array of tables [[loads.moment]]")
+    for k, body in enumerate(m_raw):
+        where = f"loads.moment[{k}]."
+        if not isinstance(body, dict):
+            raise fail(f"loads.moment[{k}]", "expected a table")
+        lid = moving_link(body, where)
+        if "value" in body:
+            moments.append(MomentLoad(lid, number(body, "value", where), None, str(body.get("name", f"M{lid}"))))
+        elif "resisting" in body:
+            moments.append(MomentLoad(lid, None, number(body, "resisting", where, nonneg=True),
+                                      str(body.get("name", f"M_c{lid}"))))
+        else:
+            raise fail(f"{where}value", "expected value = N·m (ccw+) or resisting = N·m")
+
+    return Loads(masses=masses, inertias=inertias, centres=centres, g=g,
+                 offset_inertia=inertia_mode == "offset_force", lever_turn=1 if turn == "ccw" else -1,
+                 balancing=Balancing(kind, bpoint), gas=tuple(gas), forces=tuple(forces),
+                 moments=tuple(moments))
+
+
+def _stroke(scene: Scene, joint_name: str, link: int) -> tuple[float, float]:
+    """The piston's outer dead centre (travel coordinate) and stroke H over one crank
+    revolution, by dense sampling of the exact positions (relative error ~1e-7)."""
+    from .kinematics import solve  # late import: only indicator diagrams need it
+
+    kin = solve(scene, np.linspace(0.0, 360.0, 3601), order=0)
+    travel = _travel(scene, kin, joint_name, link)
+    return float(travel.min()), float(travel.max() - travel.min())
+
+
+def _travel(scene: Scene, kin: Any, joint_name: str, link: int) -> R:
+    """Signed position of the piston along its guide, increasing toward the crank pivot."""
+    joint = next(j for j in scene.joints if j.name == joint_name)
+    assert joint.guide is not None
+    carrier = kin.motion[joint.guide.link]
+    rot = np.exp(1j * carrier.theta)
+    origin = carrier.r0 + rot * joint.guide.origin
+    u = rot * joint.guide.direction
+    B = kin.point(joint.point, link)[0]
+    pivot = scene.frame_points[scene.driver.pivot]
+    toward = np.sign(((pivot - origin) * np.conj(u)).real)  # +1 if the pivot lies ahead along u
+    toward = np.where(toward == 0, 1.0, toward)
+    return toward * ((B - origin) * np.conj(u)).real
+
+
+# --------------------------------------------------------------------------- loads at positions
+
+
+@dataclass(frozen=True, slots=True)
+class AppliedForce:
+    """A force bound to a point of a link (a sympy-style bound vector), over positions."""
+
+    label: str  # "G2", "Phi2", "P3", "F_c"
+    link: int
+    point: str  # the point's name ("S2", "B"); "S2*" for an offset inertia force
+    r: C  # global position of the point of application, m
+    local: C  # its local coordinates on the link (for the lever's similarity)
+    F: C  # N
+    kind: str  # "gravity" | "inertia" | "gas" | "external"
+
+
+@dataclass(frozen=True, slots=True)
+class AppliedMoment:
+    label: str  # "M_Phi2", "M_c4"
+    link: int
+    M: R  # N·m, ccw+
+    kind: str  # "inertia" | "external"
+
+
+@dataclass(frozen=True, slots=True)
+class AppliedLoads:
+    forces: tuple[AppliedForce, ...]
+    moments: tuple[AppliedMoment, ...]
+
+    def on(self, link: int) -> tuple[list[AppliedForce], list[AppliedMoment]]:
+        return ([f for f in self.forces if f.link == link], [m for m in self.moments if m.link == link])
+
+    @property
+    def largest(self) -> R:
+        """The largest load magnitude at each position (N, N·m/m are not mixed: forces only)."""
+        if not self.forces:
+            return np.zeros(0)
+        return np.max(np.abs(np.stack([f.F for f in self.forces])), axis=0)
+
+
+def apply_loads(scene: Scene, loads: Loads, kin: Any) -> AppliedLoads:
+    """Gravity, inertia (Φ = −m a_S at S, M_Φ = −I_S ε), gas, external loads at every position."""
+    n = kin.n
+    forces: list[AppliedForce] = []
+    moments: list[AppliedMoment] = []
+    for lid in sorted(scene.links):
+        m, inert = loads.masses[lid], loads.inertias[lid]
+        if lid not in loads.centres:
+            continue
+        s_name = loads.centres[lid]
+        z = scene.links[lid].points[s_name]
+        r, _, a = kin.point_on(lid, z)
+        if m > 0 and loads.g != 0:
+            forces.append(AppliedForce(f"G{lid}", lid, s_name, r, np.full(n, z), np.full(n, m * loads.g),
+                                       "gravity"))
+        phi = -m * a if m > 0 else np.zeros(n, complex)
+        m_phi = -inert * kin.eps(lid) if inert > 0 else np.zeros(n)
+        if loads.offset_inertia and m > 0:
+            # one force Φ offset from S so that its moment about S is M_Φ: d = −iΦ M_Φ/|Φ|²;
+            # where Φ vanishes the couple stays a couple (the offset would be infinite)
+            mag2 = np.abs(phi) ** 2
+            ok = mag2 > 0
+            d = np.where(ok, -1j * phi * m_phi / np.where(ok, mag2, 1.0), 0)
+            local = z + d * np.exp(-1j * kin.theta(lid))
+            forces.append(AppliedForce(f"Phi{lid}", lid, f"{s_name}*", r + d, local, phi, "inertia"))
+            rest = np.where(ok, 0.0, m_phi)
+            if inert > 0:
+                moments.append(AppliedMoment(f"M_Phi{lid}", lid, rest, "inertia"))
+        else:
+            if m > 0:
+                forces.append(AppliedForce(f"Phi{lid}", lid, s_name, r, np.full(n, z), phi, "inertia"))
+            if inert > 0:
+                moments.append(AppliedMoment(f"M_Phi{lid}", lid, m_phi, "inertia"))
+    for gl in loads.gas:
+        forces.append(_gas_force(scene, kin, gl))
+    for fl in loads.forces:
+        z = scene.links[fl.link].points[fl.point]
+        r, v, _ = kin.point_on(fl.link, z)
+        if fl.vector is not None:
+            F = np.full(n, fl.vector, dtype=complex)
+        else:
+            assert fl.resisting is not None and v is not None
+            if fl.along is None:
+                speed = np.abs(v)
+                F = np.where(speed > 0, -fl.resisting * v / np.where(speed > 0, speed, 1.0), 0)
+            else:
+                e = complex(math.cos(fl.along), math.sin(fl.along))
+                sv = np.sign((v * np.conj(e)).real)
+                if fl.stroke == "positive":
+                    sv = np.where(sv > 0, sv, 0.0)
+                elif fl.stroke == "negative":
+                    sv = np.where(sv < 0, sv, 0.0)
+                F = -fl.resisting * sv * e
+        forces.append(AppliedForce(fl.name, fl.link, fl.point, r, np.full(n, z), F.astype(complex), "external"))
+    for ml in loads.moments:
+        if ml.value is not None:
+            M = np.full(n, ml.value)
+        else:
+            assert ml.resisting is not None
+            M = -ml.resisting * np.sign(kin.omega(ml.link))
+        moments.append(AppliedMoment(ml.name, ml.link, M, "external"))
+    return AppliedLoads(tuple(forces), tuple(moments))
+
+
+def _gas_force(scene: Scene, kin: Any, gl: GasLoad) -> AppliedForce:
+    joint = next(j for j in scene.joints if j.name == gl.joint)
+    assert joint.guide is not None
+    z = scene.links[gl.link].points[joint.point]
+    r, v, a = kin.point_on(gl.link, z)
+    carrier = kin.motion[joint.guide.link]
+    rot = np.exp(1j * carrier.theta)
+    u = rot * joint.guide.direction
+    pivot = scene.frame_points[scene.driver.pivot]
+    origin = carrier.r0 + rot * joint.guide.origin
+    sgn = np.sign(((pivot - origin) * np.conj(u)).real)
+    e_down = np.where(sgn == 0, 1.0, sgn) * u  # unit along the guide toward the crank pivot
+    # stroke: the sign of the piston's velocity toward the pivot; at a dead centre (v = 0)
+    # the acceleration says which stroke begins
+    vd = (v * np.conj(e_down)).real
+    ad = (a * np.conj(e_down)).real if a is not None else np.zeros_like(vd)
+    scale_v = np.max(np.abs(vd)) if vd.size else 0.0
+    moving = np.abs(vd) > 1e-12 * max(scale_v, 1e-300)
+    down = np.where(moving, vd > 0, ad >= 0)
+    if gl.pressure is not None:
+        p = np.full(kin.n, gl.pressure)
+    else:
+        # travel from the outer dead centre (the extreme position away from the pivot)
+        s = np.clip(_travel(scene, kin, gl.joint, gl.link) - gl.outer, 0.0, gl.stroke)
+        p = np.zeros(kin.n)
+        for side, mask in (("down", down), ("up", ~down)):
+            if side in gl.diagram:
+                ts, ps = gl.diagram[side]
+                p = np.where(mask, np.interp(s, ts, ps), p)
+    active = np.zeros(kin.n, dtype=bool)
+    if "down" in gl.strokes:
+        active |= down
+    if "up" in gl.strokes:
+        active |= ~down
+    direction = e_down if gl.toward_pivot else -e_down
+    F = np.where(active, p * gl.area, 0.0) * direction
+    return AppliedForce(gl.name, gl.link, joint.point, r, np.full(kin.n, z), F, "gas")
+

@@ -1,0 +1,145 @@
+"""The solved scene as data (JSON) and as readable tables.
+
+JSON contract (README documents it): ``positions[i].phi_deg``;
+``positions[i].points[NAME]`` with ``r``, ``v``, ``a`` as ``[x, y]`` in SI;
+``positions[i].links["N"]`` with ``theta``, ``omega``, ``eps`` (rad, rad/s,
+rad/s², counter-clockwise positive); ``positions[i].plans.velocity`` /
+``.acceleration`` with ``scale`` (mm per SI unit) and labelled ``points`` in
+plan mm; ``positions[i].readings`` (value read off the plan next to the exact
+value).  Keys appear only for what the scene asked for.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from .construction import PositionPlans, build_all
+from .kinematics import Kinematics, solve
+from .scene import Scene
+from .structure import Structure, analyse
+
+
+@dataclass(frozen=True)
+class Solution:
+    """Everything computed for a scene: only what its outputs ask for."""
+
+    scene: Scene
+    structure: Structure
+    kinematics: Kinematics
+    plans: tuple[PositionPlans, ...]
+    forces: tuple[Any, ...] = ()  # per position, from plans.forces when asked
+
+
+def solve_scene(scene: Scene) -> Solution:
+    st = analyse(scene)
+    kin = solve(scene, structure=st)
+    plans = tuple(build_all(kin)) if scene.wants("velocity_plan") else ()
+    forces: tuple[Any, ...] = ()
+    if scene.wants("force_polygons") or scene.wants("lever"):
+        from . import forces as _forces  # the force analysis is only loaded when asked for
+
+        forces = tuple(_forces.analyse(kin, plans))
+    return Solution(scene, st, kin, plans, forces)
+
+
+def _xy(z: complex) -> list[float]:
+    return [float(z.real), float(z.imag)]
+
+
+def to_json(sol: Solution) -> dict[str, Any]:
+    kin, scene = sol.kinematics, sol.scene
+    out: dict[str, Any] = {
+        "title": scene.title,
+        "scene": scene.path,
+        "units": {"length": "m", "velocity": "m/s", "acceleration": "m/s^2", "force": "N",
+                  "plan": "mm", "angles": "rad, counter-clockwise positive; phi_deg in degrees"},
+        "fij": scene.fij,
+        "outputs": sorted(scene.outputs),
+        "structure": sol.structure.to_json(),
+        "positions": [],
+    }
+    names = kin.point_names()
+    for k in range(kin.n):
+        pos: dict[str, Any] = {"phi_deg": float(kin.phi_deg[k]), "points": {}, "links": {}}
+        for nm in names:
+            r, v, a = kin.point(nm)
+            entry = {"r": _xy(r[k])}
+            if v is not None:
+                entry["v"] = _xy(v[k])
+            if a is not None:
+                entry["a"] = _xy(a[k])
+            pos["points"][nm] = entry
+        for lid in sorted(scene.links):
+            m = kin.motion[lid]
+            le: dict[str, float] = {"theta": float(m.theta[k])}
+            if m.omega is not None:
+                le["omega"] = float(m.omega[k])
+            if m.eps is not None:
+                le["eps"] = float(m.eps[k])
+            pos["links"][str(lid)] = le
+        if sol.plans:
+            pp = sol.plans[k]
+            pos["plans"] = {}
+            if pp.velocity is not None:
+                pos["plans"]["velocity"] = pp.velocity.to_json()
+            if pp.acceleration is not None:
+                pos["plans"]["acceleration"] = pp.acceleration.to_json()
+            pos["readings"] = [r.to_json() for r in pp.readings]
+        if sol.forces:
+            pos.update(sol.forces[k].to_json())
+        out["positions"].append(pos)
+    return out
+
+
+def _fmt(x: float | None, width: int = 12) -> str:
+    if x is None:
+        return " " * (width - 1) + "-"
+    return f"{x:{width}.6g}"
+
+
+def table(sol: Solution, protocol: bool = False) -> str:
+    """Per position: quantity, segment on the plan (mm), value read, exact value, difference."""
+    kin, scene = sol.kinematics, sol.scene
+    lines = [scene.title, sol.structure.formula(), ""]
+    for k in range(kin.n):
+        lines.append(f"phi = {kin.phi_deg[k]:g} deg")
+        if not sol.plans:
+            for nm in kin.point_names():
+                r = kin.point(nm)[0][k]
+                lines.append(f"  {nm:6s} x = {r.real:.6g} m  y = {r.imag:.6g} m")
+            lines.append("")
+            continue
+        pp = sol.plans[k]
+        for plan in (pp.velocity, pp.acceleration):
+            if plan is None:
+                continue
+            unit = "mm/(m/s)" if plan.kind == "velocity" else "mm/(m/s^2)"
+            style = scene.scale_style
+            sc = f"mu = {plan.scale:.6g} {unit}" if style == "mu" else \
+                f"K = {1 / plan.scale:.6g} {unit.split('/', 1)[1].strip('()')}/mm"
+            lines.append(f"  {plan.kind} plan, {sc}")
+            if plan.degenerate:
+                lines += [f"    note: {d}" for d in plan.degenerate]
+        lines.append(f"  {'quantity':14s} {'segment':>10s} {'mm':>10s} {'read':>12s} {'exact':>12s} "
+                     f"{'difference':>12s}  unit")
+        for r in pp.readings:
+            seg = r.segment or ""
+            mm = f"{r.length_mm:10.3f}" if r.length_mm is not None else " " * 9 + "-"
+            lines.append(f"  {r.quantity:14s} {seg:>10s} {mm} {_fmt(r.value)} {_fmt(r.exact)} "
+                         f"{r.difference:12.2e}  {r.unit}")
+        if sol.forces:
+            lines += sol.forces[k].table_lines()
+        if protocol:
+            for plan in (pp.velocity, pp.acceleration):
+                if plan is not None:
+                    lines.append(f"  construction of the {plan.kind} plan:")
+                    lines += ["   " + s for s in plan.protocol().splitlines()]
+        lines.append("")
+    return "\n".join(lines)
+
+
+def load_and_solve(path: str) -> Solution:
+    from .scene import load_scene
+
+    return solve_scene(load_scene(path))
