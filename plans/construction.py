@@ -17,7 +17,6 @@ f = (image of Y − image of X)/(Y − X): μv·iω on the velocity plan,
 
 from __future__ import annotations
 
-import cmath
 import math
 from dataclasses import dataclass
 

@@ -13,17 +13,19 @@ For a point X of link k (origin r0, angle θ, rates ω, ε):
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
-from numpy.typing import NDArray
 
 from .errors import Locked, NotAssemblable
 from .scene import Joint, Scene
 from .structure import Group, Structure, analyse
-from .tolerances import LOCK_SIN, ASSEMBLY_REL
+from .tolerances import ASSEMBLY_REL, LOCK_SIN
 
-C = NDArray[np.complex128]
-R = NDArray[np.float64]
+# numpy arrays over positions; typed loosely because numpy's operator stubs do not
+# follow Optional fields that the order of analysis fills in.
+C = Any  # complex128 array, shape (N,)
+R = Any  # float64 array, shape (N,)
 
 
 def cross(a, b):
@@ -35,10 +37,10 @@ def cross(a, b):
 class _Motion:
     rot: C  # e^{iθ}: kept as a unit complex, so no angle is ever taken in the solvers
     r0: C
-    omega: R | None = None
-    v0: C | None = None
-    eps: R | None = None
-    a0: C | None = None
+    omega: R = None
+    v0: C = None
+    eps: R = None
+    a0: C = None
 
     @property
     def theta(self) -> R:
@@ -54,7 +56,7 @@ class Kinematics:
     phi_deg: R
     order: int  # 0 positions, 1 + velocities, 2 + accelerations
     motion: dict[int, _Motion] = field(repr=False)
-    slides: dict[str, tuple[R, R | None]] = field(repr=False)  # P joint name -> (ṡ, s̈)
+    slides: dict[str, tuple[R, R]] = field(repr=False)  # P joint name -> (ṡ, s̈)
 
     @property
     def n(self) -> int:
@@ -73,7 +75,7 @@ class Kinematics:
             return self.scene.frame_points[name]
         return self.scene.links[link].points[name]
 
-    def point_on(self, link: int, z: complex) -> tuple[C, C | None, C | None]:
+    def point_on(self, link: int, z: complex) -> tuple[C, C, C]:
         """r, v, a of the point with local coordinates z on ``link``."""
         m = self.motion[link]
         rel = m.rot * z
@@ -82,7 +84,7 @@ class Kinematics:
         a = None if m.eps is None else m.a0 + (1j * m.eps - m.omega**2) * rel
         return r, v, a
 
-    def point(self, name: str, link: int | None = None) -> tuple[C, C | None, C | None]:
+    def point(self, name: str, link: int | None = None) -> tuple[C, C, C]:
         k = self.home(name) if link is None else link
         return self.point_on(k, self.local(k, name))
 
@@ -173,7 +175,7 @@ def _place(kin: Kinematics, link: int, rot: C, anchor: C, anchor_name: str) -> _
     return m
 
 
-def _set_rates(kin: Kinematics, link: int, anchor: C, v: C, a: C | None, omega: R, eps: R | None) -> None:
+def _set_rates(kin: Kinematics, link: int, anchor: C, v: C, a: C, omega: R, eps: R) -> None:
     """Rates of a placed link from one point's v, a and the link's ω, ε."""
     m = kin.motion[link]
     rel = m.r0 - anchor
@@ -411,7 +413,7 @@ def _turn(jt: Joint) -> complex:
     return complex(np.exp(1j * (jt.guide.angle - jt.slider_angle)))
 
 
-def _carried(kin: Kinematics, link: int, X: C) -> tuple[C, C | None]:
+def _carried(kin: Kinematics, link: int, X: C) -> tuple[C, C]:
     """v and a of the point fixed to ``link`` that coincides with X now (zero on the frame)."""
     m = kin.motion[link]
     if link == kin.scene.frame:

@@ -342,7 +342,7 @@ def _joints(r: _Reader, data: dict[str, Any], unit: str, frame: int,
         if not isinstance(g, dict):
             raise r.fail(f"{where}guide", "a P joint needs guide = { link = N, through = ..., angle_deg = ... }")
         carrier = g.get("link")
-        if carrier not in pair:
+        if not isinstance(carrier, int) or carrier not in pair:
             raise r.fail(f"{where}guide.link", f"expected one of the joint's links {pair}")
         slider = b if carrier == a else a
         if not carries(slider, point):
