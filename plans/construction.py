@@ -189,6 +189,11 @@ class _Builder:
         d = self.pts[end] - self.pts[start]
         length = abs(d)
         value = length / self.mu
+        # rounding dust at a dead centre (1e-15 of the plan) is read as zero, as on paper
+        if length <= COINCIDE_REL * max(self.ref * self.mu, 1e-300):
+            length = value = 0.0
+        if abs(exact) <= 1e-12 * self.ref:
+            exact = 0.0
         self.segments.append(Segment(start, end, kind, label, length, value))
         self.readings.append(Reading(label, f"{start} {end}", length, self.mu, value, exact, self.unit,
                                      self.ref))
@@ -351,7 +356,10 @@ def _omegas(b: _Builder) -> None:
             value, exact, q, unit = f.imag / b.mu, snap.e[lid], f"eps_{lid}", "rad/s^2"
         link = snap.scene.links[lid]
         size = abs(link.length) if link.length else _crank_length(snap)
-        b.readings.append(Reading(q, None, None, None, value, exact, unit, b.ref / size))
+        ref = b.ref / size
+        value = 0.0 if abs(value) <= 1e-12 * ref else value
+        exact = 0.0 if abs(exact) <= 1e-12 * ref else exact
+        b.readings.append(Reading(q, None, None, None, value, exact, unit, ref))
 
 
 def _crank_length(snap: _Snapshot) -> float:

@@ -57,6 +57,9 @@ class Kinematics:
     order: int  # 0 positions, 1 + velocities, 2 + accelerations
     motion: dict[int, _Motion] = field(repr=False)
     slides: dict[str, tuple[R, R]] = field(repr=False)  # P joint name -> (ṡ, s̈)
+    #: group name -> condition number of its velocity/acceleration system per position:
+    #: |c1||c2| / |c1 × c2| = 1 / sin(angle between the two construction lines)
+    conditions: dict[str, R] = field(repr=False, default_factory=dict)
 
     @property
     def n(self) -> int:
@@ -194,7 +197,9 @@ def _solve2(c1: C, c2: C, rhs: C) -> tuple[R, R]:
 
 def _check_lock(kin: Kinematics, g: Group, c1: C, c2: C, point: str) -> None:
     det = np.abs(cross(c1, c2))
-    bad = det <= LOCK_SIN * np.abs(c1) * np.abs(c2)
+    size = np.abs(c1) * np.abs(c2)
+    bad = det <= LOCK_SIN * size
+    kin.conditions[g.name] = size / np.where(bad, 1.0, det)
     if bad.any():
         raise _fail(Locked, kin, g, bad, point,
                     "the construction lines are parallel and do not coincide: the group locks here "
@@ -343,6 +348,7 @@ def _prp(kin: Kinematics, g: Group, order: int) -> None:
     bad = np.abs(det) <= LOCK_SIN
     if bad.any():
         raise _fail(NotAssemblable, kin, g, bad, j2.point, "the two guides are parallel: they have no common point")
+    kin.conditions[g.name] = 1.0 / np.abs(det)
     s1, _ = _solve2(c1, c2, G3 - G1)
     B = G1 + s1 * u1
     mp, mq = kin.motion[p], kin.motion[q]
@@ -385,6 +391,7 @@ def _rpp(kin: Kinematics, g: Group, order: int) -> None:
     if bad.any():
         raise _fail(NotAssemblable, kin, g, bad, j2.point,
                     f"the slot of link {j} is parallel to its guide: {j2.point} cannot be reached")
+    kin.conditions[g.name] = 1.0 / np.abs(det)
     # r0_j = G3 + t u3 − rot zK ; A on slot: cross(u2, A − G3 − t u3 + rot (zK − g2)) = 0
     t = cross(u2, A - G3 + rot * (zK - guide.origin)) / cross(u2, u3)
     r0 = G3 + t * u3 - rot * zK

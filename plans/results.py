@@ -18,6 +18,7 @@ from .construction import PositionPlans, build_all
 from .kinematics import Kinematics, solve
 from .scene import Scene
 from .structure import Structure, analyse
+from .tolerances import ILL_CONDITIONED
 
 
 @dataclass(frozen=True)
@@ -28,18 +29,18 @@ class Solution:
     structure: Structure
     kinematics: Kinematics
     plans: tuple[PositionPlans, ...]
-    forces: tuple[Any, ...] = ()  # per position, from plans.forces when asked
+    forces: Any = None  # (ForceAnalysis, LeverAnalysis) from plans.forces when asked
 
 
 def solve_scene(scene: Scene) -> Solution:
     st = analyse(scene)
     kin = solve(scene, structure=st)
     plans = tuple(build_all(kin)) if scene.wants("velocity_plan") else ()
-    forces: tuple[Any, ...] = ()
+    forces: Any = None
     if scene.wants("force_polygons") or scene.wants("lever"):
         from . import forces as _forces  # the force analysis is only loaded when asked for
 
-        forces = tuple(_forces.analyse(kin, plans))
+        forces = _forces.kinetostatics(scene, kin)
     return Solution(scene, st, kin, plans, forces)
 
 
@@ -78,6 +79,8 @@ def to_json(sol: Solution) -> dict[str, Any]:
             if m.eps is not None:
                 le["eps"] = float(m.eps[k])
             pos["links"][str(lid)] = le
+        if kin.conditions:
+            pos["conditioning"] = {g: float(c[k]) for g, c in kin.conditions.items()}
         if sol.plans:
             pp = sol.plans[k]
             pos["plans"] = {}
@@ -86,9 +89,12 @@ def to_json(sol: Solution) -> dict[str, Any]:
             if pp.acceleration is not None:
                 pos["plans"]["acceleration"] = pp.acceleration.to_json()
             pos["readings"] = [r.to_json() for r in pp.readings]
-        if sol.forces:
-            pos.update(sol.forces[k].to_json())
         out["positions"].append(pos)
+    if sol.forces is not None:
+        from .lever import force_json
+
+        for pos, extra in zip(out["positions"], force_json(sol.forces[1]), strict=True):
+            pos.update(extra)
     return out
 
 
@@ -111,6 +117,10 @@ def table(sol: Solution, protocol: bool = False) -> str:
             lines.append("")
             continue
         pp = sol.plans[k]
+        for g, c in kin.conditions.items():
+            if c[k] > ILL_CONDITIONED:
+                lines.append(f"  warning: group {g} is ill-conditioned here (condition number {c[k]:.1e}: "
+                             f"its construction lines meet at {1 / c[k]:.1e} rad)")
         for plan in (pp.velocity, pp.acceleration):
             if plan is None:
                 continue
@@ -128,8 +138,11 @@ def table(sol: Solution, protocol: bool = False) -> str:
             mm = f"{r.length_mm:10.3f}" if r.length_mm is not None else " " * 9 + "-"
             lines.append(f"  {r.quantity:14s} {seg:>10s} {mm} {_fmt(r.value)} {_fmt(r.exact)} "
                          f"{r.difference:12.2e}  {r.unit}")
-        if sol.forces:
-            lines += sol.forces[k].table_lines()
+        if sol.forces is not None:
+            from . import lever as _lever
+
+            if hasattr(_lever, "table_lines"):
+                lines += _lever.table_lines(sol.forces[0], sol.forces[1], k)
         if protocol:
             for plan in (pp.velocity, pp.acceleration):
                 if plan is not None:

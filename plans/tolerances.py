@@ -18,3 +18,6 @@ COINCIDE_REL = 1e-9
 def coincide_tol(extent: float) -> float:
     """Distance under which two plan points are drawn as one (mm on the plan)."""
     return COINCIDE_REL * max(extent, 1e-300)
+
+#: A group whose construction lines meet at less than ~1e-6 rad is reported as ill-conditioned.
+ILL_CONDITIONED = 1e6
