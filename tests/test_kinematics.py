@@ -140,3 +140,58 @@ def test_random_four_bars_match_derivatives(a, b, c, d, phi, branch):
     assume(s + lmax <= others - 20)
     scene = scene_from_dict(four_bar_scene(a, b, c, d, phi_deg=[phi], branch=branch, omega=5.0, eps=2.0))
     _fd_check(scene, np.array([phi]), rtol_v=2e-6, rtol_a=5e-4)
+
+
+def _shaper_dict(oc, r, rocker, rod, ram_y, phi, ram_kind):
+    """Crank OA on a slotted rocker CD (RPR), then the ram: by a rod (RRP) or a block
+    on the rocker (PRP)."""
+    d = {
+        "format": 1, "unit": "mm", "frame": 6,
+        "outputs": ["positions", "velocity_plan", "acceleration_plan"],
+        "points": {"C": [0, 0], "O": [0, oc]},
+        "links": {
+            "1": {"axis": ["O", "A"], "length": r},
+            "2": {"axis": ["A"]},
+            "3": {"axis": ["C", "D"], "length": rocker, "points": {"S3": {"ratio": 0.5}}},
+        },
+        "joints": [
+            {"kind": "R", "links": [6, 1], "point": "O"},
+            {"kind": "R", "links": [1, 2], "point": "A"},
+            {"kind": "P", "links": [2, 3], "point": "A", "guide": {"link": 3, "through": "C", "toward": "D"}},
+            {"kind": "R", "links": [3, 6], "point": "C"},
+        ],
+        "driver": {"link": 1, "omega": 7.0, "eps": 3.0, "sense": "cw", "phi_ref_deg": 0, "phi_deg": [phi]},
+    }
+    if ram_kind == "RRP":
+        d["links"]["4"] = {"axis": ["D", "E"], "length": rod}
+        d["links"]["5"] = {"axis": ["E"]}
+        d["joints"] += [
+            {"kind": "R", "links": [3, 4], "point": "D"},
+            {"kind": "R", "links": [4, 5], "point": "E"},
+            {"kind": "P", "links": [5, 6], "point": "E", "guide": {"link": 6, "through": [0, ram_y], "angle_deg": 0}},
+        ]
+    else:
+        d["links"]["4"] = {"axis": ["E"]}
+        d["links"]["5"] = {"axis": ["E"]}
+        d["joints"] += [
+            {"kind": "P", "links": [4, 3], "point": "E", "guide": {"link": 3, "through": "C", "toward": "D"}},
+            {"kind": "R", "links": [4, 5], "point": "E"},
+            {"kind": "P", "links": [5, 6], "point": "E", "guide": {"link": 6, "through": [0, ram_y], "angle_deg": 0}},
+        ]
+    return d
+
+
+@settings(max_examples=40, deadline=None)
+@given(oc=st.floats(200, 400), ratio=st.floats(0.2, 0.7), phi=st.floats(0, 360),
+       ram=st.sampled_from(["RRP", "PRP"]))
+def test_random_chained_groups_match_derivatives_and_construction(oc, ratio, phi, ram):
+    """RPR followed by RRP or PRP: exact analysis vs derivatives, construction vs exact."""
+    from plans.construction import build
+
+    r = oc * ratio
+    rocker = 1.8 * (oc + r)
+    ram_y = 1.5 * (oc + r)
+    scene = scene_from_dict(_shaper_dict(oc, r, rocker, 0.5 * oc, ram_y, phi, ram))
+    _fd_check(scene, np.array([phi]), rtol_v=2e-6, rtol_a=5e-4)
+    pp = build(solve(scene), 0)
+    assert max(rd.relative for rd in pp.readings) < 1e-9
