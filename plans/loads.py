@@ -64,7 +64,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from .errors import InputError
+from .errors import ConstructionError, InputError
 from .scene import Scene
 from .units import LENGTH_UNITS, parse_length
 
@@ -397,9 +397,20 @@ def _stroke(scene: Scene, joint_name: str, link: int) -> tuple[float, float]:
     revolution, by dense sampling of the exact positions (relative error ~1e-7)."""
     from .kinematics import solve  # late import: only indicator diagrams need it
 
-    kin = solve(scene, np.linspace(0.0, 360.0, 3601), order=0)
+    try:
+        kin = solve(scene, np.linspace(0.0, 360.0, 3601), order=0)
+    except ConstructionError as exc:
+        raise InputError(f"an indicator diagram needs the crank to turn a full revolution ({exc})",
+                         file=scene.path, field="loads.gas") from None
     travel = _travel(scene, kin, joint_name, link)
     return float(travel.min()), float(travel.max() - travel.min())
+
+
+def _toward_pivot(scene: Scene, B: C, u: C) -> C:
+    """The guide's unit direction that points from the piston toward the crank pivot."""
+    pivot = scene.frame_points[scene.driver.pivot]
+    sgn = np.sign(((pivot - B) * np.conj(u)).real)
+    return np.where(sgn < 0, -1.0, 1.0) * u
 
 
 def _travel(scene: Scene, kin: Any, joint_name: str, link: int) -> R:
@@ -407,14 +418,11 @@ def _travel(scene: Scene, kin: Any, joint_name: str, link: int) -> R:
     joint = next(j for j in scene.joints if j.name == joint_name)
     assert joint.guide is not None
     carrier = kin.motion[joint.guide.link]
-    rot = np.exp(1j * carrier.theta)
+    rot = carrier.rot
     origin = carrier.r0 + rot * joint.guide.origin
     u = rot * joint.guide.direction
     B = kin.point(joint.point, link)[0]
-    pivot = scene.frame_points[scene.driver.pivot]
-    toward = np.sign(((pivot - origin) * np.conj(u)).real)  # +1 if the pivot lies ahead along u
-    toward = np.where(toward == 0, 1.0, toward)
-    return toward * ((B - origin) * np.conj(u)).real
+    return ((B - origin) * np.conj(_toward_pivot(scene, B, u))).real
 
 
 # --------------------------------------------------------------------------- loads at positions
@@ -480,7 +488,7 @@ def apply_loads(scene: Scene, loads: Loads, kin: Any) -> AppliedLoads:
             mag2 = np.abs(phi) ** 2
             ok = mag2 > 0
             d = np.where(ok, -1j * phi * m_phi / np.where(ok, mag2, 1.0), 0)
-            local = z + d * np.exp(-1j * kin.theta(lid))
+            local = z + d * np.conj(kin.motion[lid].rot)
             forces.append(AppliedForce(f"Phi{lid}", lid, f"{s_name}*", r + d, local, phi, "inertia"))
             rest = np.where(ok, 0.0, m_phi)
             if inert > 0:
@@ -527,12 +535,9 @@ def _gas_force(scene: Scene, kin: Any, gl: GasLoad) -> AppliedForce:
     z = scene.links[gl.link].points[joint.point]
     r, v, a = kin.point_on(gl.link, z)
     carrier = kin.motion[joint.guide.link]
-    rot = np.exp(1j * carrier.theta)
+    rot = carrier.rot
     u = rot * joint.guide.direction
-    pivot = scene.frame_points[scene.driver.pivot]
-    origin = carrier.r0 + rot * joint.guide.origin
-    sgn = np.sign(((pivot - origin) * np.conj(u)).real)
-    e_down = np.where(sgn == 0, 1.0, sgn) * u  # unit along the guide toward the crank pivot
+    e_down = _toward_pivot(scene, r, u)
     # stroke: the sign of the piston's velocity toward the pivot; at a dead centre (v = 0)
     # the acceleration says which stroke begins
     vd = (v * np.conj(e_down)).real

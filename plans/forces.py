@@ -1,0 +1,663 @@
+"""Kinetostatics by Assur groups (Bruevich's method, seed 003), exact and at drawing scale.
+
+d'Alembert: each link carries its inertia force Φ = −m a_S at S and inertia
+moment M_Φ = −I_S ε besides gravity, gas and external loads; then every group
+is in equilibrium and is solved by statics, the group farthest from the crank
+first, so that the reactions it sends to earlier links are known loads there.
+
+For each dyad (links i, j; J1 = i–p, J2 = i–j, J3 = j–q):
+
+* RRR: F_ip = F_ip^τ + F_ip^n at A, F_jq = F_jq^τ + F_jq^n at C.  ΣM_B(i) = 0 gives
+  F_ip^τ = M_i(B)/l_AB, ΣM_B(j) = 0 gives F_jq^τ; the group's polygon closes with the
+  two n components (directions ∥ AB and ∥ CB intersected); F_ij closes link i's polygon.
+* RRP: F_ip^τ from ΣM_B(i); the polygon closes with F_ip^n ∥ AB and the guide's
+  reaction N ⟂ guide; F_ij closes link i; ΣM_B(j) places N along the guide.
+* RPR: block i at A slides in j's slot.  ΣM_A(i) gives the slot's couple (zero for a
+  block without moments); ΣM_C(j) gives the slot reaction ⟂ slot; F_jq closes j's polygon,
+  F_ip the block's.
+* PRP: both guide reactions ⟂ their guides from the group's polygon (two directions
+  intersected); F_ij closes link i; each link's ΣM_B places its guide reaction.
+* RPP: block i at A in j's slot, j on q's guide.  ΣM_A(i) gives the slot's couple; j's
+  polygon closes with the slot reaction ⟂ slot and the guide reaction ⟂ guide (two
+  directions); ΣM(j) places the guide reaction; F_ip closes the block's polygon.
+
+Initial link: ΣM_O gives the balancing force ⟂ the crank at its point (or the balancing
+moment); the frame reaction closes the crank's polygon.
+
+Reactions are stored as "force on link ``on`` from link ``frm``" (seed 003); the
+scene's ``fij`` only decides how they are named.  A prismatic pair's reaction is
+a force N ⟂ guide at the slider's pin plus a couple M; its point of application
+lies on the guide at offset x = M/N from the pin (undefined where N = 0).
+
+Plane vectors are complex numbers, ``cross(a, b) = Im(conj(a)·b)``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+import numpy as np
+import shapely
+from numpy.typing import NDArray
+
+from .errors import Locked
+from .kinematics import Kinematics, cross
+from .loads import AppliedForce, AppliedLoads, AppliedMoment, Loads, apply_loads, parse_loads
+from .plan import ConstructionLine, Plan, PlanPoint, Segment, Step
+from .scene import Joint, Scene
+from .structure import Group
+
+if TYPE_CHECKING:
+    from .lever import LeverAnalysis
+
+C = NDArray[np.complex128]
+R = NDArray[np.float64]
+
+#: What a draftsman reads off a ruler, mm (readings are rounded to this).
+RULER_MM = 0.5
+#: Nice values of K = 1/μ (unit per mm), times powers of ten: consecutive ratios ≤ 1.25,
+#: so the longest vector always lands between 80 and 100 mm.
+_NICE = (1.0, 1.2, 1.25, 1.5, 1.6, 2.0, 2.5, 3.0, 3.5, 4.0, 5.0, 6.0, 7.0, 8.0, 10.0)
+
+
+def nice_scale(longest: float, target_mm: float = 100.0) -> float:
+    """μ (mm per unit) with K = 1/μ a round number and the longest vector in 80..100 mm."""
+    if not (longest > 0 and math.isfinite(longest)):
+        return 1.0
+    k_min = longest / target_mm
+    exp = math.floor(math.log10(k_min))
+    for base in _NICE:
+        k = base * 10.0**exp
+        if k >= k_min * (1 - 1e-12):
+            return 1.0 / k
+    return 1.0 / (10.0 ** (exp + 1))
+
+
+def _unit(z: C) -> C:
+    mag = np.abs(z)
+    return np.where(mag > 0, z / np.where(mag > 0, mag, 1.0), 1.0 + 0j)
+
+
+def _safe_div(a: R, b: R) -> R:
+    return np.where(b != 0, a / np.where(b != 0, b, 1.0), 0.0)
+
+
+# --------------------------------------------------------------------------- results
+
+
+@dataclass(frozen=True, slots=True)
+class Reaction:
+    """The reaction of one joint: force on link ``on`` from link ``frm``, over positions.
+
+    R joint: F at the pin ``r``.  P joint: F ⟂ ``guide`` at the slider's pin ``r`` plus the
+    couple ``M``; the resultant acts on the guide at ``offset`` = M/N from ``r``."""
+
+    joint: Joint
+    on: int
+    frm: int
+    r: C
+    F: C
+    M: R
+    guide: C | None = None  # unit direction of the guide (P joints)
+    tau: R | None = None  # F^τ along e_tau (outer revolute of a dyad)
+    n: R | None = None  # F^n along e_n
+    e_tau: C | None = None
+    e_n: C | None = None
+
+    @property
+    def point(self) -> str:
+        return self.joint.point
+
+    def name(self, fij: str) -> str:
+        """F_ij in the scene's convention: on_i_from_j → F{on}{frm}, of_i_on_j → F{frm}{on}."""
+        return f"F{self.on}{self.frm}" if fij == "on_i_from_j" else f"F{self.frm}{self.on}"
+
+    @property
+    def N(self) -> R:
+        """Signed normal force ⟂ guide (along i·guide), P joints."""
+        assert self.guide is not None
+        return cross(self.guide, self.F)
+
+    @property
+    def offset(self) -> R:
+        """x along the guide from the pin to the resultant (m); 0 where N = 0 (pure couple)."""
+        if self.guide is None:
+            return np.zeros(len(self.M))
+        return _safe_div(self.M, self.N)
+
+
+@dataclass(frozen=True, slots=True)
+class GroupForces:
+    group: Group
+    loads_i: tuple[AppliedForce, ...]  # known forces on i (reactions from farther groups included)
+    loads_j: tuple[AppliedForce, ...]
+    moments_i: tuple[AppliedMoment, ...]
+    moments_j: tuple[AppliedMoment, ...]
+    reactions: tuple[Reaction, Reaction, Reaction]  # J1 (on i from p), J2 (on i from j), J3 (on j from q)
+    #: lever arms h (m) of the moment equations: (equation, label) -> |arm| over positions
+    arms: dict[tuple[str, str], R] = field(default_factory=dict)
+
+
+@dataclass(frozen=True, slots=True)
+class CrankForces:
+    link: int
+    loads: tuple[AppliedForce, ...]  # everything on the crank except the balancing load and the frame
+    moments: tuple[AppliedMoment, ...]
+    kind: str  # "force" | "moment"
+    point: str
+    r_point: C
+    e_bal: C  # unit ⟂ crank, counter-clockwise
+    F_bal: R  # along e_bal (force mode), N; 0 in moment mode
+    M_bal: R  # balancing moment about the pivot, N·m ccw+ (F_bal·l in force mode)
+    frame: Reaction  # on the crank from the frame
+    arms: dict[str, R] = field(default_factory=dict)
+
+
+@dataclass(frozen=True, slots=True)
+class ForceAnalysis:
+    scene: Scene
+    kin: Kinematics
+    loads: Loads
+    applied: AppliedLoads
+    groups: tuple[GroupForces, ...]  # in solving order: farthest first
+    crank: CrankForces
+
+    @property
+    def n(self) -> int:
+        return self.kin.n
+
+    def reactions(self) -> list[Reaction]:
+        """Every joint's reaction once, crank–frame first, then groups in attachment order."""
+        out = [self.crank.frame]
+        for gf in reversed(self.groups):
+            out.extend(gf.reactions)
+        return out
+
+    def reaction(self, name: str) -> tuple[C, Reaction]:
+        """A reaction by its F_ij name in the scene's convention, either order (F_ij = −F_ji)."""
+        for rc in self.reactions():
+            if rc.name(self.scene.fij) == name:
+                return rc.F, rc
+            rev = rc.name("of_i_on_j" if self.scene.fij == "on_i_from_j" else "on_i_from_j")
+            if rev == name:
+                return -rc.F, rc
+        raise KeyError(name)
+
+    @property
+    def sense(self) -> R:
+        """+1 where the balancing point moves counter-clockwise about the pivot."""
+        w = self.kin.omega(self.scene.driver.link)
+        return np.where(w < 0, -1.0, 1.0)
+
+    @property
+    def balancing(self) -> R:
+        """The balancing load, positive along the motion of its point (N, or N·m for a moment)."""
+        c = self.crank
+        return self.sense * (c.F_bal if c.kind == "force" else c.M_bal)
+
+
+# --------------------------------------------------------------------------- analysis
+
+
+def kinetostatics(scene: Scene, kin: Kinematics) -> tuple[ForceAnalysis, LeverAnalysis] | None:
+    """Force analysis and Zhukovsky lever if the scene asks for them, else None (nothing computed)."""
+    if not (scene.wants("force_polygons") or scene.wants("lever")):
+        return None
+    from .lever import zhukovsky_lever
+
+    loads = parse_loads(scene)
+    fa = analyse_forces(scene, kin, loads)
+    return fa, zhukovsky_lever(fa)
+
+
+def analyse_forces(scene: Scene, kin: Kinematics, loads: Loads | None = None) -> ForceAnalysis:
+    """All reactions and the balancing load, exact, vectorised over the positions of ``kin``."""
+    if kin.order < 2:
+        raise ValueError("force analysis needs accelerations: solve(scene, order=2)")
+    loads = parse_loads(scene) if loads is None else loads
+    applied = apply_loads(scene, loads, kin)
+    forces: dict[int, list[AppliedForce]] = {k: [] for k in scene.links}
+    moments: dict[int, list[AppliedMoment]] = {k: [] for k in scene.links}
+    for f in applied.forces:
+        forces[f.link].append(f)
+    for m in applied.moments:
+        moments[m.link].append(m)
+    solved: list[GroupForces] = []
+    for g in reversed(kin.structure.groups):
+        gf = _SOLVERS[g.kind](kin, g, forces, moments)
+        solved.append(gf)
+        # what the group sends back to the known links p and q (F_pi = −F_ip)
+        for rc in (gf.reactions[0], gf.reactions[2]):
+            if rc.frm == scene.frame:
+                continue
+            forces[rc.frm].append(_bound(kin, rc.frm, rc.r, -rc.F, _fname(scene, rc.frm, rc.on), rc.point))
+            if rc.guide is not None:
+                moments[rc.frm].append(AppliedMoment(f"M{_fname(scene, rc.frm, rc.on)[1:]}", rc.frm,
+                                                     -rc.M, "reaction"))
+    crank = _crank(scene, kin, loads, forces, moments)
+    return ForceAnalysis(scene, kin, loads, applied, tuple(solved), crank)
+
+
+def _fname(scene: Scene, on: int, frm: int) -> str:
+    return f"F{on}{frm}" if scene.fij == "on_i_from_j" else f"F{frm}{on}"
+
+
+def _bound(kin: Kinematics, link: int, r: C, F: C, label: str, point: str) -> AppliedForce:
+    m = kin.motion[link]
+    return AppliedForce(label, link, point, r, (r - m.r0) * np.conj(m.rot), F, "reaction")
+
+
+def _sum(fs: list[AppliedForce] | tuple[AppliedForce, ...], n: int) -> C:
+    out = np.zeros(n, complex)
+    for f in fs:
+        out = out + f.F
+    return out
+
+
+def _moment(fs, ms, P: C, n: int) -> R:
+    """ΣM about P of the forces (cross(r − P, F)) and couples, ccw+."""
+    out = np.zeros(n)
+    for f in fs:
+        out = out + cross(f.r - P, f.F)
+    for m in ms:
+        out = out + m.M
+    return out
+
+
+def _arms(eq: str, fs, P: C) -> dict[tuple[str, str], R]:
+    """Lever arms h = |cross(r − P, F)|/|F| of each force about P (0 for a zero force)."""
+    out = {}
+    for f in fs:
+        mag = np.abs(f.F)
+        out[(eq, f.label)] = _safe_div(np.abs(cross(f.r - P, f.F)), mag)
+    return out
+
+
+def _guide(kin: Kinematics, jt: Joint) -> C:
+    assert jt.guide is not None
+    return kin.motion[jt.guide.link].rot * jt.guide.direction
+
+
+def _check(kin: Kinematics, g: Group, det: R, scale: R, point: str) -> None:
+    bad = np.abs(det) <= 1e-12 * scale
+    if bad.any():
+        k = int(np.flatnonzero(bad)[0])
+        raise Locked("the two unknown reaction directions are parallel: the group locks here",
+                     group=f"{g.kind} {g.name}", point=point, phi_deg=float(kin.phi_deg[k]))
+
+
+def _solve2(c1: C, c2: C, rhs: C) -> tuple[R, R]:
+    det = cross(c1, c2)
+    return cross(rhs, c2) / det, cross(c1, rhs) / det
+
+
+def _rrr(kin: Kinematics, g: Group, forces, moments) -> GroupForces:
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    p, q = g.known
+    n = kin.n
+    A = kin.point(j1.point, i)[0]
+    B = kin.point(j2.point, i)[0]
+    Cc = kin.point(j3.point, j)[0]
+    fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
+    ui, uj = _unit(B - A), _unit(B - Cc)
+    li, lj = np.abs(B - A), np.abs(B - Cc)
+    ei, ej = 1j * ui, 1j * uj
+    t_i = _moment(fi, mi, B, n) / li  # ΣM_B(i): −l·F^τ + M_i(B) = 0
+    t_j = _moment(fj, mj, B, n) / lj
+    rest = _sum(fi, n) + _sum(fj, n) + t_i * ei + t_j * ej
+    _check(kin, g, cross(ui, uj), np.ones(n), j2.point)
+    n_i, n_j = _solve2(ui, uj, -rest)
+    F_ip = t_i * ei + n_i * ui
+    F_jq = t_j * ej + n_j * uj
+    F_ij = -_sum(fi, n) - F_ip
+    zero = np.zeros(n)
+    arms = _arms(f"M_{j2.point}({i})", fi, B) | _arms(f"M_{j2.point}({j})", fj, B)
+    return GroupForces(g, tuple(fi), tuple(fj), tuple(mi), tuple(mj), (
+        Reaction(j1, i, p, A, F_ip, zero, tau=t_i, n=n_i, e_tau=ei, e_n=ui),
+        Reaction(j2, i, j, B, F_ij, zero),
+        Reaction(j3, j, q, Cc, F_jq, zero, tau=t_j, n=n_j, e_tau=ej, e_n=uj),
+    ), arms)
+
+
+def _rrp(kin: Kinematics, g: Group, forces, moments) -> GroupForces:
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    p, q = g.known
+    n = kin.n
+    A = kin.point(j1.point, i)[0]
+    B = kin.point(j2.point, i)[0]
+    fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
+    ui, li = _unit(B - A), np.abs(B - A)
+    ei = 1j * ui
+    u3 = _guide(kin, j3)
+    n3 = 1j * u3
+    t_i = _moment(fi, mi, B, n) / li
+    rest = _sum(fi, n) + _sum(fj, n) + t_i * ei
+    _check(kin, g, cross(ui, n3), np.ones(n), j2.point)
+    n_i, N = _solve2(ui, n3, -rest)
+    F_ip = t_i * ei + n_i * ui
+    F_ij = -_sum(fi, n) - F_ip
+    M_jq = -_moment(fj, mj, B, n)  # ΣM_B(j): the guide's couple; F_ji and N pass through B
+    zero = np.zeros(n)
+    arms = _arms(f"M_{j2.point}({i})", fi, B)
+    return GroupForces(g, tuple(fi), tuple(fj), tuple(mi), tuple(mj), (
+        Reaction(j1, i, p, A, F_ip, zero, tau=t_i, n=n_i, e_tau=ei, e_n=ui),
+        Reaction(j2, i, j, B, F_ij, zero),
+        Reaction(j3, j, q, B, N * n3, M_jq, guide=u3),
+    ), arms)
+
+
+def _rpr(kin: Kinematics, g: Group, forces, moments) -> GroupForces:
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    p, q = g.known
+    n = kin.n
+    A = kin.point(j1.point, i)[0]
+    Cc = kin.point(j3.point, j)[0]
+    fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
+    us = _guide(kin, j2)
+    ns = 1j * us
+    M_ij = -_moment(fi, mi, A, n)  # ΣM_A(block): the slot's couple on the block
+    arm = cross(A - Cc, ns)  # ΣM_C(j): M_j(C) − N·arm − M_ij = 0 (F_ji = −N n_s at A)
+    _check(kin, g, arm, np.abs(A - Cc), j2.point)
+    N = (_moment(fj, mj, Cc, n) - M_ij) / arm
+    F_ij = N * ns
+    F_jq = -_sum(fj, n) + F_ij
+    F_ip = -_sum(fi, n) - F_ij
+    zero = np.zeros(n)
+    arms = _arms(f"M_{j3.point}({j})", fj, Cc)
+    arms[(f"M_{j3.point}({j})", _fname(kin.scene, j, i))] = np.abs(arm)
+    return GroupForces(g, tuple(fi), tuple(fj), tuple(mi), tuple(mj), (
+        Reaction(j1, i, p, A, F_ip, zero),
+        Reaction(j2, i, j, A, F_ij, M_ij, guide=us),
+        Reaction(j3, j, q, Cc, F_jq, zero),
+    ), arms)
+
+
+def _prp(kin: Kinematics, g: Group, forces, moments) -> GroupForces:
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    p, q = g.known
+    n = kin.n
+    B = kin.point(j2.point, i)[0]
+    fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
+    u1, u3 = _guide(kin, j1), _guide(kin, j3)
+    n1, n3 = 1j * u1, 1j * u3
+    _check(kin, g, cross(n1, n3), np.ones(n), j2.point)
+    N1, N3 = _solve2(n1, n3, -(_sum(fi, n) + _sum(fj, n)))
+    F_ij = -_sum(fi, n) - N1 * n1
+    M1 = -_moment(fi, mi, B, n)
+    M3 = -_moment(fj, mj, B, n)
+    zero = np.zeros(n)
+    return GroupForces(g, tuple(fi), tuple(fj), tuple(mi), tuple(mj), (
+        Reaction(j1, i, p, B, N1 * n1, M1, guide=u1),
+        Reaction(j2, i, j, B, F_ij, zero),
+        Reaction(j3, j, q, B, N3 * n3, M3, guide=u3),
+    ), {})
+
+
+def _rpp(kin: Kinematics, g: Group, forces, moments) -> GroupForces:
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    p, q = g.known
+    n = kin.n
+    A = kin.point(j1.point, i)[0]
+    K = kin.point(j3.point, j)[0]
+    fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
+    u2, u3 = _guide(kin, j2), _guide(kin, j3)
+    n2, n3 = 1j * u2, 1j * u3
+    M_ij = -_moment(fi, mi, A, n)  # ΣM_A(block)
+    # j's polygon: F_j − N2 n2 + N3 n3 = 0 (the slot's reaction on j is −F_ij)
+    _check(kin, g, cross(n2, n3), np.ones(n), j2.point)
+    N2m, N3 = _solve2(-n2, n3, -_sum(fj, n))
+    F_ij = N2m * n2
+    # ΣM_K(j): M_j(K) + cross(A − K, −F_ij) − M_ij + M_jq = 0
+    M_jq = -(_moment(fj, mj, K, n) + cross(A - K, -F_ij) - M_ij)
+    F_ip = -_sum(fi, n) - F_ij
+    zero = np.zeros(n)
+    return GroupForces(g, tuple(fi), tuple(fj), tuple(mi), tuple(mj), (
+        Reaction(j1, i, p, A, F_ip, zero),
+        Reaction(j2, i, j, A, F_ij, M_ij, guide=u2),
+        Reaction(j3, j, q, K, N3 * n3, M_jq, guide=u3),
+    ), {})
+
+
+_SOLVERS = {"RRR": _rrr, "RRP": _rrp, "RPR": _rpr, "PRP": _prp, "RPP": _rpp}
+
+
+def _crank(scene: Scene, kin: Kinematics, loads: Loads, forces, moments) -> CrankForces:
+    d = scene.driver
+    link = d.link
+    n = kin.n
+    O = kin.point(d.pivot, link)[0]
+    P = kin.point(loads.balancing.point, link)[0]
+    f1, m1 = forces[link], moments[link]
+    l = np.abs(P - O)
+    e = 1j * _unit(P - O)
+    M_O = _moment(f1, m1, O, n)
+    if loads.balancing.kind == "force":
+        F_bal = -M_O / l  # ΣM_O: F_bal·l + M_1(O) = 0
+        M_bal = F_bal * l
+        F_frame = -(_sum(f1, n) + F_bal * e)
+    else:
+        F_bal = np.zeros(n)
+        M_bal = -M_O
+        F_frame = -_sum(f1, n)
+    joint = next(jt for jt in scene.joints if set(jt.links) == {link, scene.frame})
+    frame = Reaction(joint, link, scene.frame, O, F_frame, np.zeros(n))
+    arms = {f.label: _safe_div(np.abs(cross(f.r - O, f.F)), np.abs(f.F)) for f in f1}
+    arms["F_bal"] = l
+    return CrankForces(link, tuple(f1), tuple(m1), loads.balancing.kind, loads.balancing.point, P, e,
+                       F_bal, M_bal, frame, arms)
+
+
+# --------------------------------------------------------------------------- force polygons (drawing)
+
+
+@dataclass(frozen=True, slots=True)
+class ForcePolygon:
+    """The closed force polygon of one group (or of the crank) at one position.
+
+    ``plan`` holds the vertices (plan mm, start "o"), the vectors head to tail in
+    drawing order (kind "force" for known ones, "closing" for the ones found), the two
+    construction lines whose intersection closes it, and the protocol."""
+
+    group: str  # "2-3", or "1" for the initial link
+    kind: str  # "RRR", ..., or "crank"
+    plan: Plan
+
+    @property
+    def scale(self) -> float:
+        return self.plan.scale
+
+    def reading(self, label: str) -> float:
+        """What a draftsman reads: the vector's length to the ruler's precision, over μF (N)."""
+        return round(self.plan.segment(label).length_mm / RULER_MM) * RULER_MM / self.plan.scale
+
+
+class _Poly:
+    """Head-to-tail construction at one position, in plan mm."""
+
+    def __init__(self, mu: float) -> None:
+        self.mu = mu
+        self.pts: dict[str, complex] = {"o": 0j}
+        self.order = ["o"]
+        self.cur = "o"
+        self.segs: list[Segment] = []
+        self.lines: list[ConstructionLine] = []
+        self.steps: list[Step] = []
+        self.ends: dict[str, tuple[str, str]] = {}
+        self.notes: list[str] = []
+
+    def _new(self, z: complex) -> str:
+        k = len(self.order)
+        name = "abcdefghijklmnqrstuvwxyz"[k - 1] if k <= 24 else f"v{k}"
+        self.pts[name] = z
+        self.order.append(name)
+        return name
+
+    def _seg(self, a: str, b: str, kind: str, label: str) -> None:
+        length = abs(self.pts[b] - self.pts[a])
+        self.segs.append(Segment(a, b, kind, label, length, length / self.mu))
+        self.ends[label] = (a, b)
+
+    def lay(self, label: str, F: complex) -> None:
+        if F == 0:
+            return
+        start = self.cur
+        end = self._new(self.pts[start] + F * self.mu)
+        self._seg(start, end, "force", label)
+        self.steps.append(Step("lay off", (start,), end, f"From {start} lay off {label} = {abs(F):.6g} N "
+                                                         f"as {start}{end} = {abs(F) * self.mu:.1f} mm."))
+        self.cur = end
+
+    def intersect(self, label_end: str, d_end: complex, label_start: str, d_start: complex,
+                  start: str = "o") -> str:
+        """Close with two known directions: through the current end along d_end, through
+        ``start`` along d_start; shapely intersects the two construction lines."""
+        e, s = self.pts[self.cur], self.pts[start]
+        reach = 10.0 * (max(abs(z) for z in self.pts.values()) + 100.0)
+        le = shapely.LineString([((e - reach * d_end).real, (e - reach * d_end).imag),
+                                 ((e + reach * d_end).real, (e + reach * d_end).imag)])
+        ls = shapely.LineString([((s - reach * d_start).real, (s - reach * d_start).imag),
+                                 ((s + reach * d_start).real, (s + reach * d_start).imag)])
+        hit = le.intersection(ls)
+        if isinstance(hit, shapely.Point) and not hit.is_empty:
+            x = complex(hit.x, hit.y)
+        else:  # coincident lines: the exact analysis already refused locked groups, so the
+            x = s  # closing vectors vanish here (the known ones sum to zero along the line)
+            self.notes.append(f"{label_end} and {label_start} lie on one line")
+        self.lines.append(ConstructionLine((e.real, e.imag), (d_end.real, d_end.imag), f"line of {label_end}"))
+        self.lines.append(ConstructionLine((s.real, s.imag), (d_start.real, d_start.imag),
+                                           f"line of {label_start}"))
+        end = self.cur
+        xn = self._new(x)
+        self._seg(end, xn, "closing", label_end)
+        self._seg(xn, start, "closing", label_start)
+        self.steps.append(Step("intersect", (end, start), xn,
+                               f"Through {end} draw the line of {label_end}, through {start} the line of "
+                               f"{label_start}; they meet at {xn}: {label_end} = {end}{xn}, "
+                               f"{label_start} = {xn}{start}."))
+        self.cur = xn
+        return xn
+
+    def close(self, label: str, to: str = "o") -> None:
+        a = self.cur
+        if abs(self.pts[a] - self.pts[to]) == 0:
+            self.notes.append(f"{label} = 0")
+        self._seg(a, to, "closing", label)
+        self.steps.append(Step("closing", (a, to), label, f"{label} = {a}{to} closes the polygon."))
+        self.cur = to
+
+    def join(self, label: str, a: str, b: str, why: str) -> None:
+        self._seg(a, b, "closing", label)
+        self.steps.append(Step("closing", (a, b), label, f"{label} = {a}{b} ({why})."))
+
+    def end_of(self, labels: list[str], default: str) -> str:
+        for lab in reversed(labels):
+            if lab in self.ends:
+                return self.ends[lab][1]
+        return default
+
+    def plan(self, phi: float) -> Plan:
+        pts = []
+        seen: dict[tuple[float, float], str] = {}
+        for nm in self.order:
+            z = self.pts[nm]
+            key = (round(z.real, 9), round(z.imag, 9))
+            pts.append(PlanPoint(nm, (z.real, z.imag), seen.get(key)))
+            seen.setdefault(key, nm)
+        return Plan("force", phi, self.mu, "o", tuple(pts), tuple(self.segs), tuple(self.lines),
+                    tuple(self.steps), tuple(self.notes))
+
+
+def _mu_force(fa: ForceAnalysis, values: list[complex]) -> float:
+    given = fa.scene.scales.get("force")
+    if given:
+        return given
+    return nice_scale(max((abs(v) for v in values), default=0.0))
+
+
+def force_polygons(fa: ForceAnalysis, k: int) -> tuple[ForcePolygon, ...]:
+    """The force polygons of position k: groups farthest first, then the crank."""
+    scene = fa.scene
+    phi = float(fa.kin.phi_deg[k])
+    out = []
+    for gf in fa.groups:
+        g = gf.group
+        i, j = g.links
+        r1, r2, r3 = gf.reactions
+        n1, n2, n3 = (rc.name(scene.fij) for rc in gf.reactions)
+        li = [(f.label, complex(f.F[k])) for f in gf.loads_i]
+        lj = [(f.label, complex(f.F[k])) for f in gf.loads_j]
+        everything = [v for _, v in li + lj] + [complex(rc.F[k]) for rc in gf.reactions]
+        poly = _Poly(_mu_force(fa, everything))
+        if g.kind in ("RRR", "RRP"):
+            assert r1.tau is not None and r1.e_tau is not None and r1.e_n is not None
+            tau1 = f"{n1}^τ"
+            poly.lay(tau1, complex(r1.tau[k] * r1.e_tau[k]))
+            for lab, v in li:
+                poly.lay(lab, v)
+            end_i = poly.end_of([tau1] + [lab for lab, _ in li], "o")
+            for lab, v in lj:
+                poly.lay(lab, v)
+            if g.kind == "RRR":
+                assert r3.tau is not None and r3.e_tau is not None and r3.e_n is not None
+                tau3 = f"{n3}^τ"
+                poly.lay(tau3, complex(r3.tau[k] * r3.e_tau[k]))
+                start3 = poly.ends[tau3][0] if tau3 in poly.ends else poly.cur
+                x = poly.intersect(f"{n3}^n", complex(r3.e_n[k]), f"{n1}^n", complex(r1.e_n[k]))
+                poly.join(n3, start3, x, f"{n3}^τ + {n3}^n")
+            else:
+                assert r3.guide is not None
+                x = poly.intersect(n3, complex(1j * r3.guide[k]), f"{n1}^n", complex(r1.e_n[k]))
+            poly.join(n1, x, poly.end_of([tau1], "o"), f"{n1}^n + {n1}^τ")
+            poly.join(n2, end_i, x, f"closes the polygon of link {i}")
+        elif g.kind == "PRP":
+            assert r1.guide is not None and r3.guide is not None
+            for lab, v in li:
+                poly.lay(lab, v)
+            end_i = poly.cur
+            for lab, v in lj:
+                poly.lay(lab, v)
+            x = poly.intersect(n3, complex(1j * r3.guide[k]), n1, complex(1j * r1.guide[k]))
+            poly.join(n2, end_i, x, f"closes the polygon of link {i}")
+        elif g.kind == "RPP":
+            assert r2.guide is not None and r3.guide is not None
+            n_ji = _fname(scene, j, i)
+            for lab, v in lj:
+                poly.lay(lab, v)
+            x = poly.intersect(n3, complex(1j * r3.guide[k]), n_ji, complex(1j * r2.guide[k]))
+            poly.join(n2, "o", x, f"= −{n_ji}")
+            poly.cur = x
+            for lab, v in li:
+                poly.lay(lab, v)
+            poly.close(n1, "o")
+        else:  # RPR
+            n_ji = _fname(scene, j, i)
+            for lab, v in lj:
+                poly.lay(lab, v)
+            b = poly.cur
+            poly.lay(n_ji, complex(-r2.F[k]))
+            e = poly.cur
+            poly.close(n3, "o")
+            poly.join(n2, e, b, f"= −{n_ji}")
+            poly.cur = b
+            for lab, v in li:
+                poly.lay(lab, v)
+            poly.close(n1, e)
+        out.append(ForcePolygon(g.name, g.kind, poly.plan(phi)))
+    c = fa.crank
+    loads = [(f.label, complex(f.F[k])) for f in c.loads]
+    bal = complex(c.F_bal[k] * c.e_bal[k])
+    poly = _Poly(_mu_force(fa, [v for _, v in loads] + [bal, complex(c.frame.F[k])]))
+    for lab, v in loads:
+        poly.lay(lab, v)
+    if c.kind == "force":
+        poly.lay("F_bal", bal)
+    poly.close(c.frame.name(scene.fij), "o")
+    out.append(ForcePolygon(str(c.link), "crank", poly.plan(phi)))
+    return tuple(out)

@@ -1,0 +1,383 @@
+"""Zhukovsky's lever and the power balance: the balancing load without any reaction.
+
+Turn the velocity plan 90° about its pole (sense from ``[loads] lever_turn``):
+the image of point X is w_X = ±i·μv·v_X.  A force F applied at X, moved parallel
+to itself to w_X, has the moment cross(w_X, F) = ∓μv (F·v_X) about the pole, so
+the lever's moment equation Σ cross(w, F) = 0 *is* the power balance
+Σ F·v + Σ M·ω + F_bal·v_A = 0 (d'Alembert + virtual work).  Inertia moments
+become couples M/l ⟂ the link at the images of its two joints.  The balancing
+force ⟂ crank at its point follows from the moment sum about the pole.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .forces import RULER_MM, ForceAnalysis, _mu_force, _safe_div, _unit, force_polygons, nice_scale
+from .kinematics import cross
+from .loads import AppliedMoment
+from .plan import ConstructionLine, Plan, PlanPoint, Segment, Step
+
+C = NDArray[np.complex128]
+R = NDArray[np.float64]
+
+
+@dataclass(frozen=True, slots=True)
+class LeverForce:
+    """A force on the lever: ``F`` (N) at the image ``w`` (plan mm) of its point."""
+
+    label: str  # "Phi2", "P3", "M_Phi2'" (one force of a couple)
+    link: int
+    point: str  # image name on the plan ("s2", "b", ...)
+    w: C  # plan mm
+    F: C  # N
+    moment: R  # cross(w, F), N·mm about the pole
+    arm: R  # |moment| / |F|, mm (0 for a zero force)
+
+
+@dataclass(frozen=True, slots=True)
+class LeverAnalysis:
+    fa: ForceAnalysis
+    scale: float  # μv of the plan, mm per m/s
+    turn: int  # +1: velocity plan turned 90° ccw, −1: cw
+    forces: tuple[LeverForce, ...]
+    bal_point: str  # image of the balancing point ("a")
+    w_bal: C  # plan mm
+    unit_moment: R  # lever moment of a unit balancing load (F_bal = 1 N along e_bal, or M = 1 N·m)
+    arm_bal: R  # mm (force mode)
+    by_lever: R  # balancing load, along e_bal (N) or ccw (N·m), from the lever
+    by_power: R  # same, from Σ F·v + Σ M·ω + F_bal·v_A = 0
+    valid: NDArray[np.bool_]  # False where the crank stands still (ω1 = 0): no lever, no power
+
+    def signed(self, x: R) -> R:
+        """Along the motion of the balancing point (the convention of the JSON)."""
+        return self.fa.sense * x
+
+
+def _image_name(point: str) -> str:
+    return point.lower()
+
+
+def zhukovsky_lever(fa: ForceAnalysis, scale: float | None = None) -> LeverAnalysis:
+    """The lever of every position of ``fa`` (vectorised), balancing load two more ways."""
+    scene, kin, loads = fa.scene, fa.kin, fa.loads
+    n = kin.n
+    turn = loads.lever_turn
+    if scale is None:
+        scale = scene.scales.get("velocity") or _auto_scale(fa)
+    rot = turn * 1j * scale
+
+    items: list[LeverForce] = []
+    power = np.zeros(n)
+
+    def add(label: str, link: int, point: str, local: Any, F: C) -> C:  # local: complex or per position
+        _, v, _ = kin.point_on(link, local)
+        assert v is not None
+        w = rot * v
+        mom = cross(w, F)
+        items.append(LeverForce(label, link, point, w, F, mom, _safe_div(np.abs(mom), np.abs(F))))
+        return v
+
+    for f in fa.applied.forces:
+        v = add(f.label, f.link, _image_name(f.point), f.local, f.F)
+        power = power + (f.F.conjugate() * v).real  # F·v
+    for m in fa.applied.moments:
+        for label, link, pt, local, F in _couple(fa, m):
+            add(label, link, pt, local, F)
+        power = power + m.M * kin.omega(m.link)  # M·ω, not through the couple's forces
+
+    crank = fa.crank
+    link1 = scene.driver.link
+    z_bal = scene.links[link1].points[crank.point]
+    _, v_bal, _ = kin.point_on(link1, z_bal)
+    assert v_bal is not None
+    w_bal = rot * v_bal
+    total = np.zeros(n)
+    for it in items:
+        total = total + it.moment
+    omega1 = kin.omega(link1)
+    valid = omega1 != 0
+    arm_bal = np.abs(cross(w_bal, crank.e_bal))  # a moment is drawn as ±M/l at o and at this point
+    if crank.kind == "force":
+        unit = cross(w_bal, crank.e_bal)
+        unit_power = (crank.e_bal.conjugate() * v_bal).real
+    else:
+        # a unit couple on the crank: its lever moment is ∓μv ω1, its power ω1
+        unit = -turn * scale * omega1
+        unit_power = omega1
+    by_lever = _safe_div(-total, unit)
+    by_power = _safe_div(-power, unit_power)
+    return LeverAnalysis(fa, float(scale), turn, tuple(items), _image_name(crank.point), w_bal,
+                         unit, arm_bal, by_lever, by_power, valid)
+
+
+def _auto_scale(fa: ForceAnalysis) -> float:
+    """μv of the velocity plan (the lever is that plan turned), or, without the construction
+    module, the fastest point's image 80–100 mm long."""
+    kin = fa.kin
+    try:
+        from .construction import default_scales
+    except ImportError:  # pragma: no cover - the construction module is optional here
+        pass
+    else:
+        return float(default_scales(kin)[0])
+    fastest = 0.0
+    for lid, link in fa.scene.links.items():
+        for z in link.points.values():
+            _, v, _ = kin.point_on(lid, z)
+            assert v is not None
+            fastest = max(fastest, float(np.max(np.abs(v))))
+    return nice_scale(fastest)
+
+
+def _couple(fa: ForceAnalysis, m: AppliedMoment):
+    """M on a link as two forces ±M/l ⟂ the link at its two joints (textbook form)."""
+    scene, kin = fa.scene, fa.kin
+    link = scene.links[m.link]
+    if len(link.axis) == 2:
+        zX, zY = link.points[link.axis[0]], link.points[link.axis[1]]
+        nX, nY = link.axis
+    else:  # a slider: a unit arm along its local x axis, from its pin
+        zX, zY = link.points[link.axis[0]], link.points[link.axis[0]] + 1.0
+        nX, nY = link.axis[0], link.axis[0] + "'"
+    X = kin.point_on(m.link, zX)[0]
+    Y = kin.point_on(m.link, zY)[0]
+    l = np.abs(Y - X)
+    f = m.M / l * 1j * _unit(Y - X)  # cross(Y − X, f) = M
+    return ((f"{m.label}'", m.link, _image_name(nY), zY, f),
+            (f"{m.label}''", m.link, _image_name(nX), zX, -f))
+
+
+# --------------------------------------------------------------------------- drawing
+
+
+def lever_plan(lv: LeverAnalysis, k: int) -> Plan:
+    """The lever of position k as a plan: rotated images, forces at them, arms, protocol."""
+    fa = lv.fa
+    kin = fa.kin
+    pts: dict[str, tuple[float, float]] = {"p": (0.0, 0.0)}
+    segs: list[Segment] = []
+    lines: list[ConstructionLine] = []
+    steps: list[Step] = [Step("lay off", (), "p", f"Turn the velocity plan 90° {'ccw' if lv.turn > 0 else 'cw'} "
+                                                  f"about the pole p (μv = {lv.scale:g} mm/(m/s)).")]
+    # force vectors drawn at a common force scale, only for the picture
+    fmax = max([float(np.abs(it.F[k])) for it in lv.forces] + [abs(float(lv.by_lever[k]))], default=0.0)
+    mu_f = 30.0 / fmax if fmax > 0 else 1.0
+    for it in lv.forces:
+        w = complex(it.w[k])
+        pts.setdefault(it.point, (w.real, w.imag))
+        F = complex(it.F[k])
+        if F == 0:
+            continue
+        tip = f"{it.label}>"
+        end = w + F * mu_f
+        pts[tip] = (end.real, end.imag)
+        segs.append(Segment(it.point, tip, "force", it.label, abs(F) * mu_f, abs(F)))
+        u = F / abs(F)
+        lines.append(ConstructionLine((w.real, w.imag), (u.real, u.imag), f"line of {it.label}"))
+        steps.append(Step("parallel", (it.point,), tip,
+                          f"Apply {it.label} = {abs(F):.4g} N at {it.point} parallel to itself; "
+                          f"arm h = {float(it.arm[k]):.2f} mm from p."))
+    wb = complex(lv.w_bal[k])
+    pts.setdefault(lv.bal_point, (wb.real, wb.imag))
+    steps.append(Step("intersect", (), "F_bal",
+                      f"ΣM_p = 0 gives F_bal = {float(lv.signed(lv.by_lever)[k]):.6g} "
+                      f"{'N' if fa.crank.kind == 'force' else 'N·m'} at {lv.bal_point}."))
+    points = tuple(PlanPoint(nm, xy, "p" if nm != "p" and xy == (0.0, 0.0) else None) for nm, xy in pts.items())
+    return Plan("lever", float(kin.phi_deg[k]), lv.scale, "p", points, tuple(segs), tuple(lines), tuple(steps),
+                () if bool(lv.valid[k]) else ("the crank stands still: no lever",))
+
+
+
+
+# --------------------------------------------------------------------------- JSON and readings
+
+
+def _xy(z: complex) -> list[float]:
+    return [float(z.real) + 0.0, float(z.imag) + 0.0]  # + 0.0 turns −0.0 into 0.0
+
+
+def _num(x: float, ok: bool = True) -> float | None:
+    x = float(x)
+    return x if ok and np.isfinite(x) else None
+
+
+def force_json(lv: LeverAnalysis) -> list[dict]:
+    """Per position, the pieces to merge into ``positions[i]`` of ``plans solve --json``.
+
+    ``reactions``: {"F21": [x, y], "F12": [−x, −y], ...} N, both orders (F_ij = −F_ji) named in
+    the scene's convention; ``reaction_points``: for prismatic pairs, where the resultant acts
+    ({"at": [x, y] m, "offset": m along the guide from the pin or null, "couple": N·m about the pin});
+    ``balancing``: {"kind", "force": {"point", "vector"} (null for a moment), "moment" N·m ccw+,
+    "by_kinetostatics", "by_lever", "by_power" (N, or N·m for a moment; positive along the motion
+    of the balancing point), "difference_percent" (drawing readings, coursework formula),
+    "exact_difference_percent"}; ``inertia``: {"2": {"force": [x, y], "moment": M}}; ``loads``:
+    every applied force by label."""
+    fa = lv.fa
+    scene = fa.scene
+    fij = scene.fij
+    other = "of_i_on_j" if fij == "on_i_from_j" else "on_i_from_j"
+    kin_bal = fa.balancing
+    lev, powr = lv.signed(lv.by_lever), lv.signed(lv.by_power)
+    out = []
+    for k in range(fa.n):
+        reactions: dict[str, list[float]] = {}
+        points: dict[str, dict] = {}
+        for rc in fa.reactions():
+            F = complex(rc.F[k])
+            reactions[rc.name(fij)] = _xy(F)
+            reactions.setdefault(rc.name(other), _xy(-F))
+            if rc.guide is not None:
+                off = float(rc.offset[k])
+                has = abs(float(rc.N[k])) > 1e-12 * max(abs(F), 1.0) or float(rc.M[k]) == 0.0
+                at = complex(rc.r[k] + off * rc.guide[k])
+                points[rc.name(fij)] = {"pin": rc.point, "at": _xy(at) if has else None,
+                                        "offset": off if has else None, "couple": float(rc.M[k])}
+        c = fa.crank
+        ok = bool(lv.valid[k])
+        bal = {
+            "kind": c.kind,
+            "force": ({"point": c.point, "vector": _xy(complex(c.F_bal[k] * c.e_bal[k]))}
+                      if c.kind == "force" else None),
+            "moment": float(c.M_bal[k]),
+            "by_kinetostatics": float(kin_bal[k]),
+            "by_lever": _num(lev[k], ok),
+            "by_power": _num(powr[k], ok),
+            "exact_difference_percent": _num(_pct(float(lev[k]), float(kin_bal[k])), ok),
+            "difference_percent": _num(_pct(*_drawn_balancing(lv, k)), ok),
+        }
+        inertia: dict[str, dict] = {}
+        for f in fa.applied.forces:
+            if f.kind == "inertia":
+                inertia.setdefault(str(f.link), {"force": [0.0, 0.0], "moment": 0.0})["force"] = _xy(complex(f.F[k]))
+        for m in fa.applied.moments:
+            if m.kind == "inertia":
+                inertia.setdefault(str(m.link), {"force": [0.0, 0.0], "moment": 0.0})["moment"] = float(m.M[k])
+        loads = {f.label: _xy(complex(f.F[k])) for f in fa.applied.forces}
+        out.append({"reactions": reactions, "reaction_points": points, "balancing": bal,
+                    "inertia": inertia, "loads": loads})
+    return out
+
+
+#: Arms shorter than this (mm on the sheet) are rounding noise of a zero arm: not listed.
+NOISE_MM = 1e-6
+
+
+def _pct(x: float, ref: float) -> float:
+    """The coursework's δ = 100 (F_lever − F_kin)/F_kin, %; 0 when both vanish."""
+    if ref == 0:
+        return 0.0 if x == 0 else float("nan")
+    return 100.0 * (x - ref) / ref
+
+
+def _ruler(mm: float) -> float:
+    return round(mm / RULER_MM) * RULER_MM
+
+
+def _drawn_balancing(lv: LeverAnalysis, k: int) -> tuple[float, float]:
+    """(lever, kinetostatics) balancing loads as read off the drawings: the crank polygon's
+    F_bal vector to the ruler, and the lever's arms h to the ruler (forces are computed)."""
+    fa = lv.fa
+    s = float(fa.sense[k])
+    if fa.crank.kind == "force":
+        c = fa.crank
+        mu = _mu_force(fa, [complex(f.F[k]) for f in c.loads]
+                       + [complex(c.F_bal[k] * c.e_bal[k]), complex(c.frame.F[k])])
+        kin_read = _ruler(abs(float(c.F_bal[k])) * mu) / mu * float(np.sign(c.F_bal[k])) * s
+        arm_m = 1.0  # the lever gives the force itself
+    else:
+        kin_read = float(fa.balancing[k])  # the moment equation of the crank, no polygon
+        arm_m = float(np.abs(fa.crank.r_point[k] - fa.kin.point(fa.scene.driver.pivot, fa.crank.link)[0][k]))
+    # the lever: F' ⟂ crank at the image of the balancing point, arms read to the ruler
+    h_bal = _ruler(float(lv.arm_bal[k]))
+    unit_sign = float(np.sign(lv.unit_moment[k]))
+    total = 0.0
+    for it in lv.forces:
+        F = abs(complex(it.F[k]))
+        total += float(np.sign(it.moment[k])) * F * _ruler(float(it.arm[k]))
+    lev = -total / (unit_sign * h_bal) * s * arm_m if h_bal and unit_sign else 0.0
+    return lev, kin_read
+
+
+@dataclass(frozen=True, slots=True)
+class Reading:
+    """One row of the report: a quantity as read on the drawing next to its exact value."""
+
+    quantity: str
+    drawing: float | None
+    exact: float
+    unit: str
+    compare: bool = True  # False for a row that is itself a difference
+
+    @property
+    def difference(self) -> float | None:
+        """(drawing − exact)/exact, %."""
+        if not self.compare or self.drawing is None or self.exact == 0:
+            return None
+        return 100.0 * (self.drawing - self.exact) / self.exact
+
+    def cells(self) -> tuple[str, str, str, str]:
+        d = self.difference
+        return (self.quantity, "" if self.drawing is None else f"{self.drawing + 0.0:.4g} {self.unit}",
+                f"{self.exact + 0.0:.6g} {self.unit}", "" if d is None else f"{d:+.2f} %")
+
+
+def force_rows(lv: LeverAnalysis, k: int) -> list[Reading]:
+    """Readable rows of position k: every polygon vector (read at μF to the ruler), the lever's
+    arms, and the balancing load three ways with the coursework's % difference."""
+    fa = lv.fa
+    rows: list[Reading] = []
+    big = max([abs(complex(f.F[k])) for f in fa.applied.forces]
+              + [abs(complex(rc.F[k])) for rc in fa.reactions()] + [1e-300])
+    for fp in force_polygons(fa, k):
+        for sg in fp.plan.segments:
+            exact = sg.value if sg.value > 1e-12 * big else 0.0  # rounding noise of a vanishing force
+            rows.append(Reading(f"{sg.label} (polygon {fp.group}, μF = {fp.scale:g} mm/N)",
+                                fp.reading(sg.label), exact, "N"))
+    mu_l = fa.scene.scales.get("length", 1000.0)  # the mechanism's drawing, 1:1 unless the scene says
+    arms = [(eq, lab, h) for gf in fa.groups for (eq, lab), h in gf.arms.items()]
+    arms += [(f"M_{fa.scene.driver.pivot}({fa.crank.link})", lab, h) for lab, h in fa.crank.arms.items()]
+    for eq, lab, h in arms:
+        mm = float(h[k]) * mu_l
+        if mm > NOISE_MM:
+            rows.append(Reading(f"h_{lab} in {eq} = 0 (μl = {mu_l:g} mm/m)", _ruler(mm), mm, "mm"))
+    for it in lv.forces:
+        a = float(it.arm[k])
+        if a > NOISE_MM:
+            rows.append(Reading(f"h_{it.label} on the lever (μv = {lv.scale:g})", _ruler(a), a, "mm"))
+    unit = "N" if fa.crank.kind == "force" else "N·m"
+    exact = float(fa.balancing[k])
+    lev_read, kin_read = _drawn_balancing(lv, k)
+    rows.append(Reading("F_bal by kinetostatics", kin_read, exact, unit))
+    ok = bool(lv.valid[k])
+    rows.append(Reading("F_bal by Zhukovsky's lever", lev_read if ok else None,
+                        float(lv.signed(lv.by_lever)[k]), unit))
+    rows.append(Reading("F_bal by power balance", None, float(lv.signed(lv.by_power)[k]), unit))
+    pct = _pct(lev_read, kin_read) if ok else None
+    rows.append(Reading("δ = (F_lever − F_kin)/F_kin (coursework, from the drawings)",
+                        pct if pct is not None and np.isfinite(pct) else None,
+                        _pct(float(lv.signed(lv.by_lever)[k]), exact) if exact else 0.0, "%", False))
+    return rows
+
+
+def table_lines(fa: ForceAnalysis, lv: LeverAnalysis, k: int) -> list[str]:
+    """The force analysis of position k as text lines for ``plans solve`` (indented two spaces)."""
+    unit = "N" if fa.crank.kind == "force" else "N·m"
+    lines = [f"  force analysis (F_ij = force {'on link i from link j' if fa.scene.fij == 'on_i_from_j' else 'of link i on link j'}), "
+             f"lever turned 90° {'ccw' if lv.turn > 0 else 'cw'}, μv = {lv.scale:g} mm/(m/s)"]
+    for fp in force_polygons(fa, k):
+        for note in fp.plan.degenerate:
+            lines.append(f"    note (polygon {fp.group}): {note}")
+    lines.append(f"  {'quantity':58s} {'drawing':>14s} {'exact':>16s} {'difference':>11s}")
+    for r in force_rows(lv, k):
+        q, d, e, diff = r.cells()
+        lines.append(f"  {q:58s} {d:>14s} {e:>16s} {diff:>11s}")
+    b = lv.signed(lv.by_lever)[k] if lv.valid[k] else None
+    lines.append(f"  balancing {fa.crank.kind}: by kinetostatics {float(fa.balancing[k]):.6g} {unit}, "
+                 f"by lever {'-' if b is None else f'{float(b):.6g}'} {unit} (positive along the motion of "
+                 f"{fa.crank.point})")
+    return lines
