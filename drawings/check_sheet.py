@@ -1,0 +1,268 @@
+"""Sheets for checking a hand-drawn sheet (see :mod:`plans.check`).
+
+* The **marked sheet**: the exact velocity and acceleration plans drawn at the
+  student's own scales (plan mm = sheet mm), each measured figure marked where the
+  student's reading puts it (a ring on the exact direction at the student's length:
+  green when it passes, red when it fails), the tolerance drawn as a circle around
+  the exact point, the error written next to it; then a panel listing the failed
+  figures and the findings of the consistency checks.
+* The **overlay sheet**: the same exact plans at 1:1 on the student's sheet size
+  (``sheet = "A1"`` in the check file), thin lines, poles marked with a cross, and the
+  tolerance circles: printed on tracing paper and laid over the drawing with the
+  pole on the student's pole and the known vector (p a) along the student's, every
+  point of the student's plan should fall inside its circle.
+
+Use :func:`marked_sheets` / :func:`overlay_sheets` for :class:`~drawings.sheet.Sheet`
+objects, or :func:`save_check_sheets` to write ``<stem>-marked.svg`` and
+``<stem>-overlay.svg`` (and PDF/PNG).  :func:`add_sheet_options` adds ``--sheet DIR``
+to the ``plans check`` parser (the command-line wrapper in :mod:`drawings.cli` calls it).
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import re
+import sys
+from collections.abc import Sequence
+from pathlib import Path
+
+from plans.check import Finding, Item, Report, check_file
+from plans.errors import PlansError
+from plans.plan import Plan
+
+from .backend import Prim, Pt, Recording, Style
+from .common import Placer, fmt, ident, label_boxes, phi_tag
+from .export import save
+from .panels import PAD, SMALL_SIZE, TITLE_SIZE, Panel, plan_panel
+from .sheet import FORMATS, Sheet, SheetSpec, compose
+from .text import layout
+
+PASS = "#1d7a34"
+FAIL = "#c0261d"
+MARK_R = 1.2  # mm, the ring marking the student's point
+TEXT_SIZE = 2.8
+LIST_WIDTH = 260.0  # mm, the findings panel
+
+
+def _pole_paper(panel: Panel, plan: Plan) -> Pt:
+    """Where the plan's pole ended up on the panel (its dot is drawn there)."""
+    eid = f"{panel.pid}-pt-{ident(plan.pole)}"
+    for p in panel.prims:
+        if p.op == "circle" and p.eid == eid:
+            return p.pts[0]
+    raise KeyError(eid)  # pragma: no cover - plan_panel always draws the pole
+
+
+def _repack(pid: str, kind: str, phi: float | None, prims: Sequence[Prim], title: str,
+            quantity: str | None = None, scale: float | None = None) -> Panel:
+    rec = Recording(list(prims))
+    x0, y0, x1, y1 = rec.bbox()
+    moved = rec.moved(PAD - x0, PAD - y0)
+    return Panel(pid, kind, phi, tuple(moved.prims), x1 - x0 + 2 * PAD, y1 - y0 + 2 * PAD, title, quantity, scale)
+
+
+def _items_on(report: Report, plan: Plan) -> list[Item]:
+    return [i for i in report.items if i.phi_deg == plan.phi_deg and i.plan == plan.kind and i.segment
+            and i.figure != "value" and i.student_mm is not None]
+
+
+def _marks(report: Report, plan: Plan, pole: Pt, lang: str, *, annotate: bool,
+           taken: Sequence[Prim] = ()) -> Recording:
+    """Rings at the student's points, tolerance circles at the exact ones, errors written
+    (placed clear of the plan's own labels and vectors)."""
+    rec = Recording()
+    placer = Placer()
+    for box in label_boxes(taken):
+        placer.add_box(box)
+    for p in taken:
+        if p.op == "line" and len(p.pts) == 2:
+            placer.add_line(list(p.pts))
+
+    def paper(xy: tuple[float, float]) -> Pt:
+        return (pole[0] + xy[0], pole[1] - xy[1])
+
+    seen: set[tuple[str, str]] = set()
+    for it in _items_on(report, plan):
+        assert it.segment is not None and it.student_mm is not None
+        a, b = it.segment
+        if not (plan.has(a) and plan.has(b)) or it.segment in seen:
+            continue
+        seen.add(it.segment)
+        pa, pb = paper(plan.xy(a)), paper(plan.xy(b))
+        L = math.dist(pa, pb)
+        color = PASS if it.verdict == "pass" else FAIL
+        key = f"check-{plan.kind}-{phi_tag(plan.phi_deg)}-{ident(it.quantity)}"
+        rec.begin(key, f"check-mark {it.verdict}")
+        if it.tolerance_mm:
+            rec.circle(pb, it.tolerance_mm, Style(width=0.18, stroke=color, dash=(1.0, 0.8)), f"{key}-tol")
+        if L > 1e-9:
+            ux, uy = (pb[0] - pa[0]) / L, (pb[1] - pa[1]) / L
+            sp = (pa[0] + ux * it.student_mm, pa[1] + uy * it.student_mm)
+        else:  # a vector that vanishes exactly: the student's end drawn off along x
+            ux, uy = 1.0, 0.0
+            sp = (pa[0] + it.student_mm, pa[1])
+        if not annotate:  # tracing paper: only the tolerance circles, the student's points are below
+            rec.end()
+            continue
+        rec.circle(sp, MARK_R, Style(width=0.3, stroke=color), f"{key}-student")
+        if annotate:
+            err = "" if it.error_mm is None else f"{it.error_mm:+.1f} mm".replace(".", "," if lang == "ru" else ".")
+            pct = "" if it.error_pct is None else f" ({fmt(it.error_pct, 2, lang)} %)"
+            text = f"{it.quantity}: {fmt(it.student_mm, 3, lang)} mm, {err}{pct}"
+            # beside the ring, preferably across the vector
+            lab = placer.place(text, sp, SMALL_SIZE, prefer=(-uy, ux), gap=MARK_R + 0.6)
+            rec.text(lab, f"check-note {it.verdict}", f"{key}-note", fill=color)
+        rec.end()
+    return rec
+
+
+def plan_with_marks(report: Report, plan: Plan, lang: str = "ru", *, overlay: bool = False) -> Panel:
+    """One exact plan at the student's scale with the student's figures marked."""
+    base = plan_panel(plan, lang, "mu", pid=f"{'overlay' if overlay else 'check'}-{plan.kind}-"
+                                             f"{phi_tag(plan.phi_deg)}")
+    pole = _pole_paper(base, plan)
+    prims = list(base.prims)
+    if overlay:  # a cross on the pole to align the tracing paper
+        c = Style(width=0.18, stroke="#000")
+        rec = Recording()
+        rec.line((pole[0] - 8, pole[1]), (pole[0] + 8, pole[1]), c, f"{base.pid}-cross-h")
+        rec.line((pole[0], pole[1] - 8), (pole[0], pole[1] + 8), c, f"{base.pid}-cross-v")
+        prims += rec.prims
+    prims += _marks(report, plan, pole, lang, annotate=not overlay, taken=base.prims).prims
+    return _repack(base.pid, plan.kind, plan.phi_deg, prims, base.title, base.quantity, base.scale)
+
+
+def _wrap(text: str, width: float, size: float) -> list[str]:
+    words = text.split()
+    lines: list[str] = []
+    cur = ""
+    for w in words:
+        trial = f"{cur} {w}".strip()
+        if cur and layout(trial, 0, 0, size).box[2] > width:
+            lines.append(cur)
+            cur = w
+        else:
+            cur = trial
+    if cur:
+        lines.append(cur)
+    return lines
+
+
+_NAME = re.compile(r"\b([A-Za-z]+)_([A-Za-z0-9_]+)")
+
+
+def _markup(text: str) -> str:
+    """Quantity names of the report as sheet markup: ``F_bal_lever`` -> ``F_{bal_lever}``."""
+    return _NAME.sub(lambda m: f"{m.group(1)}_{{{m.group(2)}}}", text)
+
+
+def findings_panel(report: Report, lang: str = "ru") -> Panel:
+    """The failed figures and the consistency findings, as text."""
+    rec = Recording()
+    y = 0.0
+    title = "Замечания" if lang == "ru" else "Findings"
+    rec.text(layout(f"{title}: {report.check.student}", 0, y, TITLE_SIZE, "start", "top"), "title", "check-list-title")
+    y += TITLE_SIZE + 3
+    fails: list[Item] = [i for i in report.items if i.verdict == "fail"]
+    head = (f"{len(report.items)} figures: {report.passed} pass, {report.failed} fail; "
+            f"{len(report.findings)} findings")
+    rec.text(layout(head, 0, y, TEXT_SIZE, "start", "top"), "note", "check-list-summary")
+    y += TEXT_SIZE + 3
+    lines: list[tuple[str, str]] = []
+    for it in fails:
+        pct = "" if it.error_pct is None else f", {it.error_pct:+.1f} %"
+        mm = "" if it.error_mm is None else f", {it.error_mm:+.1f} mm"
+        where = f" ({it.where})" if it.where else ""
+        lines.append((f"φ = {it.phi_deg:g}°  {it.quantity} = {it.student:.4g}, exact {it.exact:.4g} {it.unit}"
+                      f"{pct}{mm}{where}", FAIL))
+    f: Finding
+    for f in report.findings:
+        lines.append((f"[{f.kind}] {f.message}", "#000"))
+    for k, (text, color) in enumerate(lines):
+        for part in _wrap(_markup(text), LIST_WIDTH, TEXT_SIZE):
+            rec.text(layout(part, 0, y, TEXT_SIZE, "start", "top"), "check-line", f"check-list-{k}", fill=color)
+            y += TEXT_SIZE * 1.45
+    return _repack("check-findings", "table", None, rec.prims, title)
+
+
+def _spec(report: Report, lang: str, title: str, fmt_name: str | None) -> SheetSpec:
+    sheet = fmt_name or report.check.sheet or "A1"
+    if sheet not in FORMATS:
+        sheet = "A1"
+    return SheetSpec(format=sheet, language=lang, title=title, author=report.check.student,
+                     subtitle=report.check.scene.title)
+
+
+def _plans(report: Report) -> list[Plan]:
+    out = []
+    for pos in report.check.positions:
+        pp = report.context.plans[pos.index]
+        for plan in (pp.velocity, pp.acceleration):
+            if plan is not None:
+                out.append(plan)
+    return out
+
+
+def marked_sheets(report: Report, *, language: str = "ru", format: str | None = None) -> list[Sheet]:
+    """Exact plans at the student's scales with the student's figures marked, then the findings."""
+    panels = [plan_with_marks(report, p, language) for p in _plans(report)]
+    panels.append(findings_panel(report, language))
+    title = "Проверка листа" if language == "ru" else "Sheet check"
+    return compose(panels, _spec(report, language, title, format), "", report.check.path)
+
+
+def overlay_sheets(report: Report, *, language: str = "ru") -> list[Sheet]:
+    """The exact plans at 1:1 on the student's sheet size, with tolerance circles, for tracing paper."""
+    panels = [plan_with_marks(report, p, language, overlay=True) for p in _plans(report)]
+    title = "Калька для проверки" if language == "ru" else "Overlay"
+    return compose(panels, _spec(report, language, title, None), "1:1", report.check.path)
+
+
+def save_check_sheets(report: Report | str | Path, outdir: str | Path, stem: str | None = None,
+                      formats: Sequence[str] = ("svg",), *, language: str = "ru", dpi: float = 150.0) -> list[Path]:
+    """Write ``<stem>-marked.*`` and ``<stem>-overlay.*``; returns the files written."""
+    rep = report if isinstance(report, Report) else check_file(report)
+    name = stem or Path(rep.check.path).stem
+    written = save(marked_sheets(rep, language=language), outdir, f"{name}-marked", formats, dpi)
+    written += save(overlay_sheets(rep, language=language), outdir, f"{name}-overlay", formats, dpi)
+    return written
+
+
+# --------------------------------------------------------------------------- command line
+
+
+def add_sheet_options(check_parser: argparse.ArgumentParser) -> argparse.ArgumentParser:
+    """Give ``plans check`` (the parser from :func:`plans.check.register`) the options
+    ``--sheet DIR`` and ``--sheet-format svg,pdf,png``: after the report, the marked and
+    overlay sheets of every file checked are written to DIR (a bad file has none)."""
+    check_parser.add_argument("--sheet", metavar="DIR",
+                              help="also write the marked sheet and the 1:1 overlay of each file here")
+    check_parser.add_argument("--sheet-format", default="svg", metavar="svg,pdf,png",
+                              help="formats of the sheets (default svg)")
+    check_parser.add_argument("--sheet-language", choices=("ru", "en"), default="ru")
+    inner = check_parser.get_default("func")
+
+    def run_with_sheets(args: argparse.Namespace) -> int:
+        rc = int(inner(args))
+        if not getattr(args, "sheet", None):
+            return rc
+        formats = [f.strip().lower() for f in str(args.sheet_format).split(",") if f.strip()]
+        target = Path(args.path)
+        files = sorted(target.glob("*.toml")) if target.is_dir() else [target]
+        for f in files:
+            try:
+                rep = check_file(f)
+            except PlansError:
+                continue  # already reported by the check itself
+            try:
+                for path in save_check_sheets(rep, args.sheet, f.stem, formats, language=args.sheet_language):
+                    if not getattr(args, "quiet", False):
+                        print(path)
+            except PlansError as exc:
+                print(f"plans check: error: {exc}", file=sys.stderr)
+                rc = 2
+        return rc
+
+    check_parser.set_defaults(func=run_with_sheets)
+    return check_parser

@@ -1,0 +1,381 @@
+"""Check files: what a student wrote on a hand-drawn sheet, typed in by a teacher.
+
+A check file is TOML, ``format = 1``::
+
+    format = 1
+    student = "Ivanov I. I., group 06Ad-31"
+    scene = "../v_engine.toml"       # path relative to this file, or an inline [scene] table
+    sheet = "A1"                     # the student's sheet (for the 1:1 overlay); optional
+
+    [scales]                         # the student's scales: mu = mm per SI unit, K = unit per mm
+    length = { mu = 1000 }           # 1:1
+    velocity = { mu = 6.58 }         # mm per m/s
+    acceleration = { K = 54.05 }     # m/s² per mm (mu = 0.0185)
+    force = { mu = 0.02 }            # mm per N
+
+    [tolerance]
+    model = "draftsman"              # or "rule": every item within rule_pct
+    segment_mm = 0.5                 # a measured or laid-off segment is good to ±0.5 mm
+    direction_deg = 0.5              # a drawn direction is good to ±0.5°
+    rule_pct = 5                     # course rule; also for items with no drawing model
+    arithmetic_pct = 0.2             # slack of the student's own arithmetic beyond rounding
+    balance_base = "lever"           # % difference of the balancing forces relative to the
+                                     # Zhukovsky lever's value ("lever") or "kinetostatics"
+
+    [[positions]]
+    phi_deg = 45
+
+    [positions.measured]             # segments measured on the student's plans, mm
+    v_B = 70                         # the segment that stands for v_B (p_v b)
+    a_BA^τ = { mm = 56.5, where = "3.2.2" }
+
+    [positions.values]               # what the student derived, SI units
+    v_B = 10.6
+    omega_2 = 75.5
+    a_A = [ { value = 4433.27, where = "3.2.1" }, { value = 3868.7, where = "3.2.2" } ]
+    h_1 = "65 mm"                    # lengths need their unit
+    F_bal_diff_pct = 6.18            # the student's own % difference
+
+A value may be a number, ``{ value = x, where = "section" }`` or an array of those
+(the same quantity written more than once).  Quantity names follow the plans:
+``v_B``, ``v_BA``, ``omega_2``, ``a_BA^n``, ``a_BA^τ`` (``^t`` accepted), ``eps_2``,
+``Phi_2``, ``M_Phi_2``, ``m_2``, ``I_2``, ``G_2``, ``P_3``, ``F_12`` (``F12``),
+``F_12^τ``, ``F_bal``, ``F_bal_lever``, ``F_bal_diff_pct``, ``l_AB``, ``h_<name>``.
+Greek letters (ω2, ε2, Φ2, MΦ2) are accepted.  Whether the scene has a quantity
+is checked against the exact analysis (:func:`plans.check.check`).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from .errors import InputError
+from .scene import Scene, load_scene, scene_from_dict
+from .units import LENGTH_UNITS
+
+SCALE_KINDS = ("length", "velocity", "acceleration", "force")
+TOLERANCE_MODELS = ("draftsman", "rule")
+BALANCE_BASES = ("lever", "kinetostatics")
+
+
+@dataclass(frozen=True, slots=True)
+class Written:
+    """One figure the student wrote."""
+
+    quantity: str  # canonical name
+    value: float  # mm for measured segments, SI for values
+    kind: str  # "measured" | "value"
+    where: str  # section of the student's work ("3.2.2"), "" when not given
+    field: str  # where in the check file: positions[0].values.a_A[1]
+    half_ulp: float  # half a unit of the last digit typed (the student's rounding)
+
+
+@dataclass(frozen=True, slots=True)
+class StudentPosition:
+    phi_deg: float
+    index: int  # index of the position in the scene
+    measured: tuple[Written, ...]
+    values: tuple[Written, ...]
+    field: str
+
+    def written(self, quantity: str, kind: str | None = None) -> list[Written]:
+        return [w for w in self.measured + self.values
+                if w.quantity == quantity and (kind is None or w.kind == kind)]
+
+
+@dataclass(frozen=True, slots=True)
+class Tolerance:
+    model: str = "draftsman"
+    segment_mm: float = 0.5
+    direction_deg: float = 0.5
+    rule_pct: float = 5.0
+    arithmetic_pct: float = 0.2
+    balance_base: str = "lever"
+
+
+@dataclass(frozen=True, slots=True)
+class CheckFile:
+    path: str
+    student: str
+    scene: Scene
+    scales: dict[str, float]  # mm per SI unit
+    tolerance: Tolerance
+    positions: tuple[StudentPosition, ...]
+    sheet: str | None = None
+
+
+# --------------------------------------------------------------------------- names
+
+_GREEK = (("ω", "omega_"), ("ε", "eps_"), ("МΦ", "M_Phi_"), ("MΦ", "M_Phi_"), ("Φ", "Phi_"),
+          ("φ", "Phi_"))
+_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*(\^(n|τ|k|r))?$")
+
+
+def canonical(name: str) -> str:
+    """The canonical spelling of a quantity name (see the module docstring)."""
+    q = name.strip().replace(" ", "")
+    for g, latin in _GREEK:
+        if q.startswith(g):
+            q = latin + q[len(g):]
+    q = q.replace("__", "_")
+    q = re.sub(r"\^t$", "^τ", q)
+    q = re.sub(r"^(a_[A-Z]\w*?)_(n|t|τ)$", lambda m: m.group(1) + "^" + ("τ" if m.group(2) != "n" else "n"), q)
+    m = re.fullmatch(r"(omega|eps|Phi|M_Phi|m|I|G|P)_?S?(\d+)", q)
+    if m:
+        return f"{m.group(1)}_{m.group(2)}"
+    m = re.fullmatch(r"F_?(\d)(\d)(\^?(n|t|τ))?", q)
+    if m:
+        tail = "" if not m.group(4) else ("^n" if m.group(4) == "n" else "^τ")
+        return f"F_{m.group(1)}{m.group(2)}{tail}"
+    return q
+
+
+LENGTH_QUANTITY = re.compile(r"^(h_\w+|l_[A-Z]\w*)$")
+
+
+# --------------------------------------------------------------------------- parsing
+
+
+def load_check(path: str | Path) -> CheckFile:
+    """Read and validate a check file (and the scene it names)."""
+    p = Path(path)
+    try:
+        text = p.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise InputError(f"cannot read file ({exc.strerror})", file=str(path)) from None
+    return parse_check(text, str(path))
+
+
+def parse_check(text: str, path: str = "<check>") -> CheckFile:
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(f"malformed TOML: {exc}", file=path) from None
+    return check_from_dict(data, path)
+
+
+def _fail(path: str, field: str, msg: str) -> InputError:
+    return InputError(msg, file=path, field=field)
+
+
+_TOP = {"format", "student", "scene", "sheet", "scales", "tolerance", "positions", "title"}
+
+
+def check_from_dict(data: dict[str, Any], path: str = "<check>") -> CheckFile:
+    if data.get("format") != 1:
+        raise _fail(path, "format", "expected format = 1")
+    for key in data:
+        if key not in _TOP:
+            raise _fail(path, key, f"unknown key; expected some of {sorted(_TOP)}")
+    student = data.get("student", Path(path).stem)
+    if not isinstance(student, str):
+        raise _fail(path, "student", "expected a string (the student's name)")
+    scene = _scene(path, data.get("scene"))
+    sheet = data.get("sheet")
+    if sheet is not None and not (isinstance(sheet, str) and sheet in SHEETS):
+        raise _fail(path, "sheet", f"expected one of {sorted(SHEETS)}, got {sheet!r}")
+    scales = _scales(path, data.get("scales"))
+    tol = _tolerance(path, data.get("tolerance", {}))
+    raw = data.get("positions")
+    if not isinstance(raw, list) or not raw:
+        raise _fail(path, "positions", "expected at least one [[positions]] with phi_deg")
+    positions = tuple(_position(path, k, body, scene) for k, body in enumerate(raw))
+    seen: set[float] = set()
+    for pos in positions:
+        if pos.phi_deg in seen:
+            raise _fail(path, f"{pos.field}.phi_deg", f"position phi_deg = {pos.phi_deg:g} given twice")
+        seen.add(pos.phi_deg)
+    return CheckFile(path=path, student=student, scene=scene, scales=scales, tolerance=tol,
+                     positions=positions, sheet=sheet)
+
+
+#: Sheet sizes (landscape, mm) for the overlay.
+SHEETS = {"A1": (841.0, 594.0), "A2": (594.0, 420.0), "A3": (420.0, 297.0), "A4": (297.0, 210.0)}
+
+
+def _scene(path: str, raw: Any) -> Scene:
+    if raw is None:
+        raise _fail(path, "scene", "missing: a scene file path or an inline [scene] table")
+    if isinstance(raw, str):
+        target = Path(raw)
+        if not target.is_absolute():
+            target = Path(path).parent / target
+        if not target.is_file():
+            raise _fail(path, "scene", f"scene file {raw!r} not found (looked at {target})")
+        return load_scene(target)
+    if isinstance(raw, dict):
+        return scene_from_dict(raw, f"{path} [scene]")
+    raise _fail(path, "scene", "expected a path (string) or an inline [scene] table")
+
+
+def _positive(path: str, field: str, value: Any) -> float:
+    if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
+        raise _fail(path, field, f"expected a positive number, got {value!r}")
+    if value <= 0:
+        raise _fail(path, field, f"expected a positive scale, got {value!r} (a scale of zero draws nothing)")
+    return float(value)
+
+
+def _scales(path: str, raw: Any) -> dict[str, float]:
+    if not isinstance(raw, dict):
+        raise _fail(path, "scales", "missing table [scales] with the student's μv, μa (and μl, μF)")
+    style = raw.get("style", "mu")
+    if style not in ("mu", "K"):
+        raise _fail(path, "scales.style", f"expected \"mu\" (mm per unit) or \"K\" (unit per mm), got {style!r}")
+    out: dict[str, float] = {}
+    for key, value in raw.items():
+        if key == "style":
+            continue
+        if key not in SCALE_KINDS:
+            raise _fail(path, f"scales.{key}", f"unknown scale; expected some of {list(SCALE_KINDS)}")
+        if isinstance(value, dict):
+            if len(value) != 1 or not ({"mu", "K"} & set(value)):
+                raise _fail(path, f"scales.{key}", "expected { mu = mm per unit } or { K = unit per mm }")
+            kind = "mu" if "mu" in value else "K"
+            x = _positive(path, f"scales.{key}.{kind}", value[kind])
+        else:
+            kind = style
+            x = _positive(path, f"scales.{key}", value)
+        out[key] = x if kind == "mu" else 1.0 / x
+    if "length" not in out:
+        out["length"] = 1000.0  # 1:1, as an A1 sheet of an engine is usually drawn
+    return out
+
+
+def _tolerance(path: str, raw: Any) -> Tolerance:
+    if not isinstance(raw, dict):
+        raise _fail(path, "tolerance", "expected a table [tolerance]")
+    known = {"model", "segment_mm", "direction_deg", "rule_pct", "arithmetic_pct", "balance_base"}
+    for key in raw:
+        if key not in known:
+            raise _fail(path, f"tolerance.{key}", f"unknown key; expected some of {sorted(known)}")
+    model = raw.get("model", "draftsman")
+    if model not in TOLERANCE_MODELS:
+        raise _fail(path, "tolerance.model", f"expected one of {list(TOLERANCE_MODELS)}, got {model!r}")
+    base = raw.get("balance_base", "lever")
+    if base not in BALANCE_BASES:
+        raise _fail(path, "tolerance.balance_base", f"expected one of {list(BALANCE_BASES)}, got {base!r}")
+    nums = {}
+    for key, default in (("segment_mm", 0.5), ("direction_deg", 0.5), ("rule_pct", 5.0),
+                         ("arithmetic_pct", 0.2)):
+        v = raw.get(key, default)
+        nums[key] = _positive(path, f"tolerance.{key}", v)
+    return Tolerance(model=model, balance_base=base, **nums)
+
+
+def half_ulp(x: float | int) -> float:
+    """Half a unit of the last digit of a number as typed (TOML keeps ints apart)."""
+    if isinstance(x, int):
+        return 0.5
+    s = repr(float(x))
+    if "e" in s or "E" in s:
+        mant, exp = s.lower().split("e")
+        dec = len(mant.split(".")[1]) if "." in mant else 0
+        return 0.5 * 10.0 ** (int(exp) - dec)
+    dec = len(s.split(".")[1]) if "." in s else 0
+    if s.endswith(".0"):
+        dec = 0
+    return 0.5 * 10.0 ** (-dec)
+
+
+def _position(path: str, k: int, body: Any, scene: Scene) -> StudentPosition:
+    where = f"positions[{k}]"
+    if not isinstance(body, dict):
+        raise _fail(path, where, "expected a table")
+    for key in body:
+        if key not in ("phi_deg", "measured", "values", "where"):
+            raise _fail(path, f"{where}.{key}", "unknown key; expected phi_deg, measured, values")
+    phi = body.get("phi_deg")
+    if isinstance(phi, bool) or not isinstance(phi, int | float) or not math.isfinite(phi):
+        raise _fail(path, f"{where}.phi_deg", f"expected the crank angle in degrees, got {phi!r}")
+    phis = scene.driver.phis_deg
+    idx = next((i for i, p in enumerate(phis) if abs(p - phi) < 1e-9), None)
+    if idx is None:
+        raise _fail(path, f"{where}.phi_deg",
+                    f"position {phi:g}° is not in the scene (it has {', '.join(f'{p:g}°' for p in phis)})")
+    default_where = body.get("where", "")
+    if not isinstance(default_where, str):
+        raise _fail(path, f"{where}.where", "expected a string")
+    measured = _entries(path, f"{where}.measured", body.get("measured", {}), "measured", default_where)
+    values = _entries(path, f"{where}.values", body.get("values", {}), "value", default_where)
+    if not measured and not values:
+        raise _fail(path, where, "nothing written: expected [positions.measured] and/or [positions.values]")
+    return StudentPosition(float(phi), idx, tuple(measured), tuple(values), where)
+
+
+def _entries(path: str, where: str, raw: Any, kind: str, default_where: str) -> list[Written]:
+    if not isinstance(raw, dict):
+        raise _fail(path, where, "expected a table of quantity = figure")
+    out = []
+    for name, spec in raw.items():
+        q = canonical(name)
+        if not _NAME.match(q.replace("^τ", "^τ")):
+            raise _fail(path, f"{where}.{name}", "not a quantity name (e.g. v_B, omega_2, a_BA^τ, F_12)")
+        items = spec if isinstance(spec, list) else [spec]
+        if not items:
+            raise _fail(path, f"{where}.{name}", "expected at least one figure")
+        for j, item in enumerate(items):
+            f = f"{where}.{name}" + (f"[{j}]" if isinstance(spec, list) else "")
+            out.append(_one(path, f, q, item, kind, default_where))
+    return out
+
+
+def _one(path: str, field: str, q: str, item: Any, kind: str, default_where: str) -> Written:
+    loc = default_where
+    key = "mm" if kind == "measured" else "value"
+    if isinstance(item, dict):
+        extra = set(item) - {key, "where", "length"}
+        if extra:
+            raise _fail(path, field, f"unknown key(s) {sorted(extra)}; expected {key} and where")
+        loc = item.get("where", default_where)
+        if not isinstance(loc, str):
+            raise _fail(path, f"{field}.where", "expected a string (the section of the student's work)")
+        if "length" in item and kind == "value":
+            item = item["length"]
+        elif key not in item:
+            raise _fail(path, field, f"missing {key}")
+        else:
+            item = item[key]
+    if kind == "measured":
+        mm, hu = _length_mm(path, field, item, need_unit=False)
+        if mm < 0:
+            raise _fail(path, field, f"a measured segment cannot be negative, got {item!r}")
+        return Written(q, mm, kind, loc, field, hu)
+    if LENGTH_QUANTITY.match(q):
+        mm, hu = _length_mm(path, field, item, need_unit=True)
+        return Written(q, mm * 1e-3, kind, loc, field, hu * 1e-3)
+    if isinstance(item, bool) or not isinstance(item, int | float) or not math.isfinite(item):
+        raise _fail(path, field, f"expected a number in SI units, got {item!r}")
+    return Written(q, float(item), kind, loc, field, half_ulp(item))
+
+
+_LEN = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([a-zA-Z]*)\s*$")
+
+
+def _length_mm(path: str, field: str, item: Any, *, need_unit: bool) -> tuple[float, float]:
+    """A length in mm and half its last typed digit (mm)."""
+    if isinstance(item, bool):
+        raise _fail(path, field, f"expected a length, got {item!r}")
+    if isinstance(item, int | float):
+        if need_unit:
+            raise _fail(path, field, f"a length needs its unit: write '{item} mm' or '{item} m'")
+        if not math.isfinite(item):
+            raise _fail(path, field, "expected a finite length")
+        return float(item), half_ulp(item)
+    if isinstance(item, str):
+        m = _LEN.match(item)
+        if m:
+            unit = m.group(2) or ("" if need_unit else "mm")
+            if unit in LENGTH_UNITS:
+                number = m.group(1)
+                hu = half_ulp(float(number)) if "." in number else 0.5
+                factor = LENGTH_UNITS[unit] / 1e-3
+                return float(number) * factor, hu * factor
+            if need_unit and not unit:
+                raise _fail(path, field, f"a length needs its unit: write '{item} mm' or '{item} m'")
+    raise _fail(path, field, f"expected a length such as '65 mm' or '0.065 m', got {item!r}")
