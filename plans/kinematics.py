@@ -135,7 +135,7 @@ def solve(scene: Scene, phi_deg=None, order: int | None = None,
     motion[scene.frame] = _Motion(np.ones(n, dtype=complex), czeros, zeros, czeros, zeros, czeros)
     d = scene.driver
     crank = scene.links[d.link]
-    rot1 = np.exp(1j * d.theta(phis))
+    rot1 = d.rotation(phis)
     pivot = scene.frame_points[d.pivot]
     m1 = _Motion(rot1, pivot - rot1 * crank.points[d.pivot])
     if order >= 1:

@@ -99,6 +99,17 @@ class Driver:
 
         return self.phi_ref + self.sense * np.radians(phi_deg)
 
+    def rotation(self, phi_deg: Any) -> Any:
+        """e^{iθ1}, with θ1 reduced in degrees by whole quarter turns first, so that the
+        crank angle near a dead centre (90°, 180°, ...) keeps its small offset exactly."""
+        import numpy as np
+
+        t = math.degrees(self.phi_ref) + self.sense * np.asarray(phi_deg, dtype=float)
+        q = np.round(t / 90.0)
+        r = t - 90.0 * q
+        quarter = np.array([1, 1j, -1, -1j])[q.astype(int) % 4]
+        return quarter * np.exp(1j * np.radians(r))
+
 
 @dataclass(frozen=True, slots=True)
 class Scene:

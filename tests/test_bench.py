@@ -1,0 +1,134 @@
+"""The benchmark command runs at small size, writes its report, and its parts make sense."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from plans import bench, kinematics, reference
+
+
+@pytest.fixture(scope="module")
+def small_run(tmp_path_factory):
+    out = tmp_path_factory.mktemp("bench")
+    parser = argparse.ArgumentParser(prog="plans")
+    sub = parser.add_subparsers(dest="command", required=True)
+    bench.register(sub)
+    args = parser.parse_args(["bench", "--quick", "--out", str(out), "--sizes", "1,12",
+                              "--chain", "1,3", "--mc", "60"])
+    assert args.func is bench.run
+    assert args.func(args) == 0
+    return out
+
+
+def test_bench_writes_markdown_json_and_svg(small_run):
+    for name in ("bench.md", "bench.json", "bench.svg"):
+        assert (small_run / name).stat().st_size > 0
+    md = (small_run / "bench.md").read_text(encoding="utf-8")
+    assert "## Summary" in md and "## Stability" in md and "## Hand drawing" in md
+    assert "Issue 2 targets" in md
+    svg = (small_run / "bench.svg").read_text(encoding="utf-8")
+    assert svg.startswith("<svg") and svg.rstrip().endswith("</svg>")
+
+
+def test_bench_json_records(small_run):
+    data = json.loads((small_run / "bench.json").read_text(encoding="utf-8"))
+    recs = data["records"]
+    methods = {r["method"] for r in recs}
+    assert {"exact", "construction", "newton", "newton tol sweep", "finite differences",
+            "draftsman A1", "draftsman A4", "pylinkage", "mechanism"} <= methods
+    for r in recs:
+        assert {"method", "error", "time"} <= set(r)
+    newton_recs = [r for r in recs if r["method"].startswith("newton")]
+    assert newton_recs and all(r["cond"] is not None and r["cond"] >= 1 for r in newton_recs)
+    for peer in ("pylinkage", "mechanism"):
+        rec = next(r for r in recs if r["method"] == peer)
+        assert rec["note"].startswith("skipped") or rec["error"] is not None
+    # errors against the 50-digit reference: the exact analysis at the floating-point floor
+    exact = [r for r in recs if r["method"] == "exact" and r["oracle"] == "mpmath 50 digits"]
+    assert exact and max(r["error"] for r in exact) < 1e-13
+    chains = {r["dyads"] for r in recs if r["scene"].startswith("chain")}
+    assert chains == {1, 3}
+    assert data["stability"] and all("case" in row for row in data["stability"])
+
+
+def test_exact_is_fastest_per_position_in_the_same_run(small_run):
+    """Ratios within one run, not absolute times: exact (vectorised) beats every other solver."""
+    recs = json.loads((small_run / "bench.json").read_text(encoding="utf-8"))["records"]
+    for scene in ("slider-crank (offset)", "four-bar"):
+        exact = min(r["time_per_position"] for r in recs if r["scene"] == scene and r["method"] == "exact")
+        for r in recs:
+            if r["scene"] == scene and r["method"] in ("construction", "newton") and r["positions"] == 12:
+                assert r["time_per_position"] > exact
+
+
+def test_svg_is_deterministic():
+    recs = [bench.Record("exact", "x", 360, 1e-15, 1e-4, 3e-7), bench.Record("newton", "x", 12, 1e-9, 1e-2, 1e-3)]
+    assert bench.svg_plot(recs, {"hand A1": 1e-2}) == bench.svg_plot(list(recs), {"hand A1": 1e-2})
+
+
+def test_draftsman_error_shrinks_from_a4_to_a1():
+    sc = reference.slider_crank_scene(0.05, 0.2, 0.015, 157.0)
+    a4 = bench.draftsman_errors(sc, 45.0, "A4", samples=800, seed=3)
+    a1 = bench.draftsman_errors(sc, 45.0, "A1", samples=800, seed=3)
+    assert set(a4) == set(a1) >= {"v_B", "omega_2", "a_B", "eps_2", "v_S2", "a_S2"}
+    for q in a1:
+        assert a1[q].p95_rel < a4[q].p95_rel, q
+        assert 1e-4 < a1[q].p95_rel < 0.05, q  # a careful drawing is good to a few per cent
+    # no bias larger than the spread
+    for q in a1:
+        assert abs(a1[q].mean) < 3 * a1[q].std + 1e-12
+
+
+def test_expected_errors_for_the_checker():
+    sc = reference.four_bar_scene(0.05, 0.2, 0.15, 0.18, 100.0)
+    tol = bench.expected_errors(sc, 30.0, "A1", samples=300)
+    rel, absolute = tol["v_B"]
+    v_B = abs(kinematics.solve(sc, [30.0], order=1).point("B")[1][0])
+    assert 0 < rel < 0.1 and 0 < absolute < v_B
+    assert tol == bench.expected_errors(sc, 30.0, "A1", samples=300)  # seeded: reproducible
+
+
+def test_draftsman_model_scales_with_pencil():
+    sc = reference.slider_crank_scene(0.05, 0.2, 0.0, 100.0)
+    fine = bench.draftsman_errors(sc, 60.0, "A1", bench.DraftsmanModel(0.05, 0.05), samples=500)
+    coarse = bench.draftsman_errors(sc, 60.0, "A1", bench.DraftsmanModel(0.5, 0.5), samples=500)
+    assert fine["v_B"].p95_abs < coarse["v_B"].p95_abs / 3
+
+
+def test_finite_differences_converge_then_cancel():
+    """Central differences: error falls as h² and then grows as ε/h (the step sweep's V)."""
+    sc = reference.slider_crank_scene(0.05, 0.2, 0.015, 100.0)
+    phis = np.linspace(0, 360, 36, endpoint=False) + 2.0
+    oracle = bench.oracle_from_reference(reference.slider_crank(0.05, 0.2, 0.015, 100.0, phis))
+    errs = {}
+    for h in (1.0, 1e-2, 1e-7):
+        point, omega, eps = bench._finite_differences(sc, phis, h, oracle)
+        errs[h] = bench.solver_errors(sc, oracle, point, omega, eps)["v"]
+    assert errs[1e-2] < errs[1.0] / 100
+    assert errs[1e-7] > errs[1e-2]
+
+
+def test_chain_scene_is_well_conditioned():
+    sc = bench.chain_scene(10)
+    kin = kinematics.solve(sc, np.linspace(0, 360, 36), order=2)
+    w = np.concatenate([kin.omega(k) for k in sc.links])
+    assert np.all(np.isfinite(w)) and np.max(np.abs(w)) < 50 * abs(sc.driver.omega)
+
+
+def test_peers_skip_cleanly():
+    recs = bench.bench_peers(bench.reference_cases())
+    assert {r.method for r in recs} == {"pylinkage", "mechanism"}
+    for r in recs:
+        assert r.note.startswith("skipped") or math.isfinite(r.error)
+
+
+def test_plans_does_not_import_renderers():
+    src = Path(bench.__file__).read_text(encoding="utf-8")
+    for name in ("svgwrite", "cairosvg", "drawings"):
+        assert f"import {name}" not in src and f"from {name}" not in src
