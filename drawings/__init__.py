@@ -1,0 +1,48 @@
+"""Sheets of a planar-linkage analysis: A1–A4 plates in SVG, PDF and PNG.
+
+``drawings`` reads the frozen objects of :mod:`plans` (scene, kinematics, plans,
+forces, lever) and never the reverse.  Typical use::
+
+    from drawings import draw, save
+    d = draw("samples/v_engine.toml")            # a Drawing: .sheets, .panels
+    save(d.sheets, "out", "v_engine", ("svg", "pdf", "png"), dpi=150)
+
+In Jupyter a :class:`Drawing`, a :class:`Sheet`, a :class:`Panel` and
+``show_plan(plan)`` display inline (``_repr_svg_``).
+"""
+
+from __future__ import annotations
+
+from .draw import Drawing, build_panels, draw
+from .export import atomic_write, pdf_bytes, png_bytes, save
+from .panels import Panel, plan_panel
+from .sheet import Sheet, SheetSpec, compose, sheet_spec
+
+
+class PlanView:
+    """A plan (velocity, acceleration, force polygon) alone, for Jupyter."""
+
+    def __init__(self, plan, language: str = "en", scale_style: str = "mu") -> None:
+        if plan.kind in ("velocity", "acceleration"):
+            self.panel = plan_panel(plan, language, scale_style)
+        else:
+            from .forces_panels import polygon_panel
+
+            self.panel = polygon_panel(plan, language, scale_style, f"{plan.kind}-plan", plan.kind)
+
+    def _repr_svg_(self) -> str:
+        return self.panel.svg()
+
+
+def show_plan(plan, language: str = "en", scale_style: str = "mu") -> PlanView:
+    """``show_plan(plans.velocity)`` in a notebook cell draws it at true size."""
+    return PlanView(plan, language, scale_style)
+
+
+def panel_svg(panel: Panel, debug: bool = False) -> str:
+    """One panel as a standalone SVG document in true millimetres."""
+    return panel.svg(debug)
+
+
+__all__ = ["Drawing", "Panel", "PlanView", "Sheet", "SheetSpec", "atomic_write", "build_panels", "compose",
+           "draw", "panel_svg", "pdf_bytes", "plan_panel", "png_bytes", "save", "sheet_spec", "show_plan"]

@@ -10,10 +10,10 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from typing import Protocol
 
-from .text import Label
+from .text import Label, TextRun
 
 Pt = tuple[float, float]
 
@@ -96,11 +96,10 @@ class Prim:
         pts = tuple((x + dx, y + dy) for x, y in self.pts)
         lab = self.label
         if lab is not None:
-            from .text import Label as _L, TextRun
-
-            lab = _L(tuple(TextRun(t.x + dx, t.y + dy, t.text, t.size) for t in lab.runs),
+            lab = Label(tuple(TextRun(t.x + dx, t.y + dy, t.text, t.size) for t in lab.runs),
                      (lab.box[0] + dx, lab.box[1] + dy, lab.box[2] + dx, lab.box[3] + dy), lab.plain)
-        return replace(self, pts=pts, label=lab)
+        return Prim(self.op, pts, self.style, self.r, self.a0, self.a1, lab, self.eid, self.cls, self.side,
+                    self.step, self.length, self.fill)
 
     def box(self) -> tuple[float, float, float, float] | None:
         """Paper bounding box including half the stroke width (None for group marks)."""

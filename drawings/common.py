@@ -7,6 +7,7 @@ import re
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
+import numpy as np
 import shapely
 
 from .backend import FILLED, Backend, Prim, Pt, Recording, Style
@@ -33,6 +34,8 @@ def phi_tag(phi: float) -> str:
 
 def fmt(v: float, sig: int = 4, lang: str = "en") -> str:
     """A number as written on the sheet: ``sig`` significant digits, decimal comma in Russian."""
+    if abs(v) < 1e-9:
+        v = 0.0
     if v == 0 or not math.isfinite(v):
         s = "0" if v == 0 else str(v)
     else:
@@ -78,64 +81,133 @@ def box_poly(box: tuple[float, float, float, float], pad: float = 0.0) -> shapel
 
 @dataclass(slots=True)
 class Placer:
-    """Greedy label placement: candidates around an anchor, scored by what they cover."""
+    """Greedy label placement: candidates around an anchor on growing rings, scored by the
+    length of lines they cover and the symbols they touch; placed labels are never covered.
 
-    obstacles: list[shapely.Geometry] = field(default_factory=list)  # lines, symbols (soft)
-    labels: list[shapely.Geometry] = field(default_factory=list)  # placed label boxes (hard)
+    Plain numpy on boxes and segments (no geometry objects per candidate): a sheet places
+    a few hundred labels in a few milliseconds."""
+
+    segments: list[tuple[float, float, float, float]] = field(default_factory=list)
+    discs: list[tuple[float, float, float]] = field(default_factory=list)
+    polys: list[list[Pt]] = field(default_factory=list)
+    boxes: list[tuple[float, float, float, float]] = field(default_factory=list)  # placed labels
     bounds: tuple[float, float, float, float] | None = None  # keep labels inside (soft)
 
     def add_line(self, pts: Sequence[Pt]) -> None:
-        if len(pts) >= 2 and any(pts[i] != pts[0] for i in range(1, len(pts))):
-            self.obstacles.append(shapely.LineString(pts))
+        for p, q in zip(pts[:-1], pts[1:], strict=False):
+            if p != q:
+                self.segments.append((p[0], p[1], q[0], q[1]))
+
+    def add_poly(self, pts: Sequence[Pt]) -> None:
+        """An area labels should stay out of (a slider block, a hatched band)."""
+        self.add_line(list(pts) + [pts[0]])
+        self.polys.append(list(pts))
 
     def add_disc(self, c: Pt, r: float) -> None:
-        self.obstacles.append(shapely.Point(c).buffer(r, 8))
+        self.discs.append((c[0], c[1], r))
 
     def add_box(self, box: tuple[float, float, float, float]) -> None:
-        self.labels.append(box_poly(box))
+        self.boxes.append(box)
+
+    @property
+    def labels(self) -> list[tuple[float, float, float, float]]:
+        return self.boxes
+
+    def _costs(self, bx: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(soft cost, clash with a placed label) of candidate boxes bx (k×4)."""
+        k = len(bx)
+        cost = np.zeros(k)
+        clash: np.ndarray = np.zeros(k, dtype=bool)
+        x0, y0, x1, y1 = (bx[:, i:i + 1] for i in range(4))
+        if self.boxes:
+            L = np.asarray(self.boxes)
+            clash = np.asarray(((x0 < L[:, 2]) & (L[:, 0] < x1) & (y0 < L[:, 3]) & (L[:, 1] < y1)).any(axis=1))
+        S = np.asarray(self.segments) if self.segments else np.zeros((0, 4))
+        if len(S):
+            # only the segments whose boxes meet the candidates' region
+            lo_x, lo_y, hi_x, hi_y = bx[:, 0].min(), bx[:, 1].min(), bx[:, 2].max(), bx[:, 3].max()
+            near = ((np.minimum(S[:, 0], S[:, 2]) <= hi_x) & (np.maximum(S[:, 0], S[:, 2]) >= lo_x)
+                    & (np.minimum(S[:, 1], S[:, 3]) <= hi_y) & (np.maximum(S[:, 1], S[:, 3]) >= lo_y))
+            S = S[near]
+        if len(S):
+            sx, sy = S[:, 0], S[:, 1]
+            dx, dy = S[:, 2] - sx, S[:, 3] - sy
+            t0 = np.zeros((k, len(S)))
+            t1 = np.ones((k, len(S)))
+            ok = np.ones((k, len(S)), dtype=bool)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                for p, q in ((-dx, sx - x0), (dx, x1 - sx), (-dy, sy - y0), (dy, y1 - sy)):
+                    p = np.broadcast_to(p, t0.shape)
+                    r = q / p
+                    ok &= ~((p == 0) & (q < 0))
+                    t0 = np.where(p < 0, np.maximum(t0, r), t0)
+                    t1 = np.where(p > 0, np.minimum(t1, r), t1)
+            inside = ok & (t1 > t0)
+            length = np.where(inside, (t1 - t0) * np.hypot(dx, dy), 0.0)
+            cost += (inside * 3.0 + length).sum(axis=1)
+        if self.discs:
+            D = np.asarray(self.discs)
+            cx = np.clip(D[:, 0], x0, x1)
+            cy = np.clip(D[:, 1], y0, y1)
+            hit = np.hypot(cx - D[:, 0], cy - D[:, 1]) < D[:, 2]
+            cost += hit.sum(axis=1) * 8.0
+        mx, my = (bx[:, 0] + bx[:, 2]) / 2, (bx[:, 1] + bx[:, 3]) / 2
+        for poly in self.polys:
+            px = [p[0] for p in poly]
+            py = [p[1] for p in poly]
+            if min(px) <= mx.max() and max(px) >= mx.min() and min(py) <= my.max() and max(py) >= my.min():
+                cost += _inside(poly, mx, my) * 20.0
+        if self.bounds is not None:
+            b = self.bounds
+            out = (bx[:, 0] < b[0]) | (bx[:, 1] < b[1]) | (bx[:, 2] > b[2]) | (bx[:, 3] > b[3])
+            cost += out * 50.0
+        return cost, clash
 
     def place(self, text: str, anchor: Pt, size: float, prefer: tuple[float, float] | None = None,
               gap: float = 1.0, hard_only: bool = False) -> Label:
-        """Best of 16 positions around ``anchor``; ``prefer`` is a paper direction to favour."""
-        best: tuple[float, Label] | None = None
+        """Best of 16 positions around ``anchor`` on rings moving outwards; ``prefer`` is a
+        paper direction to favour.  Labels never overlap labels already placed (the rings
+        keep growing until a free spot is found)."""
         lab0 = layout(text, 0.0, 0.0, size, "middle", "middle")
-        w = lab0.box[2] - lab0.box[0]
-        h = lab0.box[3] - lab0.box[1]
-        lab_tree = shapely.STRtree(self.labels) if self.labels else None
-        obs_tree = shapely.STRtree(self.obstacles) if self.obstacles else None
-        for ring, dist in enumerate((gap, gap + 2.0, gap + 5.0)):
-            for k in range(16):
-                ang = 2 * math.pi * k / 16
-                cx, cy = math.cos(ang), math.sin(ang)
-                # centre the box so that its nearest edge is ``dist`` from the anchor
-                rx = dist + w / 2 * abs(cx) ** 0.5
-                ry = dist + h / 2 * abs(cy) ** 0.5
-                x = anchor[0] + cx * rx
-                y = anchor[1] + cy * ry
-                lab = layout(text, x, y, size, "middle", "middle")
-                poly = box_poly(lab.box, 0.3)
-                cost = ring * 4.0
-                if lab_tree is not None:
-                    hits = lab_tree.query(poly, predicate="intersects")
-                    cost += 1000.0 * len(hits)
-                if obs_tree is not None and not hard_only:
-                    for i in obs_tree.query(poly, predicate="intersects"):
-                        g = self.obstacles[int(i)]
-                        inter = g.intersection(poly)
-                        cost += 3.0 + (inter.length if g.geom_type == "LineString" else 5.0 * inter.area)
-                if prefer is not None:
-                    cost += 1.5 * (1.0 - (cx * prefer[0] + cy * prefer[1]))
-                if self.bounds is not None:
-                    bx = self.bounds
-                    if lab.box[0] < bx[0] or lab.box[1] < bx[1] or lab.box[2] > bx[2] or lab.box[3] > bx[3]:
-                        cost += 50.0
-                if best is None or cost < best[0] - 1e-9:
-                    best = (cost, lab)
-            if best is not None and best[0] < 1.0 + ring * 4.0:
+        bx0, by0, bx1, by1 = lab0.box
+        w, h = bx1 - bx0, by1 - by0
+        ang = 2 * np.pi * np.arange(16) / 16
+        cx, cy = np.cos(ang), np.sin(ang)
+        pref = 0.0 if prefer is None else 1.5 * (1.0 - (cx * prefer[0] + cy * prefer[1]))
+        best = None
+        rings = (0.0, 2.0, 5.0, 9.0, 14.0, 20.0, 28.0, 40.0, 60.0)
+        for ring, extra in enumerate(rings):
+            dist = gap + extra
+            x = anchor[0] + cx * (dist + w / 2 * np.sqrt(np.abs(cx)))
+            y = anchor[1] + cy * (dist + h / 2 * np.sqrt(np.abs(cy)))
+            boxes = np.stack([x + bx0 - 0.3, y + by0 - 0.3, x + bx1 + 0.3, y + by1 + 0.3], axis=1)
+            soft, clash = self._costs(boxes)
+            if hard_only:
+                soft = np.zeros_like(soft)
+            cost = soft + pref + (min(ring, 3) * 4.0 + max(0, ring - 3) * 10.0) + clash * 1000.0
+            i = int(np.argmin(cost))
+            if best is None or cost[i] < best[0] - 1e-9:
+                best = (float(cost[i]), bool(clash[i]), float(x[i]), float(y[i]))
+            if not best[1] and (best[0] < 1.0 + ring * 4.0 or ring >= 3):
                 break
         assert best is not None
-        self.labels.append(box_poly(best[1].box))
-        return best[1]
+        lab = layout(text, best[2], best[3], size, "middle", "middle")
+        self.boxes.append(lab.box)
+        return lab
+
+
+def _inside(poly: Sequence[Pt], x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """Points (x, y) inside a polygon (even–odd rule)."""
+    res = np.zeros(len(x), dtype=bool)
+    n = len(poly)
+    for i in range(n):
+        (ax, ay), (bx, by) = poly[i], poly[(i + 1) % n]
+        if ay == by:
+            continue
+        cond = (ay > y) != (by > y)
+        xi = ax + (y - ay) * (bx - ax) / (by - ay)
+        res ^= cond & (x < xi)
+    return res
 
 
 def label_boxes(prims: Sequence[Prim]) -> list[tuple[float, float, float, float]]:

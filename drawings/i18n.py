@@ -7,6 +7,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "velocity": ("План скоростей", "Velocity plan"),
     "acceleration": ("План ускорений", "Acceleration plan"),
     "table": ("Результаты", "Results"),
+    "forces_table": ("Силы по планам сил", "Forces read off the polygons"),
     "group": ("Группа", "Group"),
     "group_polygon": ("План сил группы", "Force polygon of group"),
     "crank": ("Начальное звено", "Initial link"),

@@ -24,8 +24,10 @@ def num(v: float) -> str:
     return "0" if s in ("-0", "") else s
 
 
-def _pts(pts: Sequence[Pt]) -> str:
-    return " ".join(f"{num(x)},{num(y)}" for x, y in pts)
+def _path(pts: Sequence[Pt], closed: bool) -> str:
+    """Path data of a polyline; the first point is the ``M`` (an arrowhead's tip)."""
+    d = "M" + " L".join(f"{num(x)},{num(y)}" for x, y in pts)
+    return d + " Z" if closed else d
 
 
 class SvgBackend:
@@ -80,14 +82,13 @@ class SvgBackend:
         self._add(el, eid, style.cls)
 
     def polyline(self, pts: Sequence[Pt], style: Style, eid: str = "") -> None:
-        el = self.dwg.polyline()
-        el["points"] = _pts(pts)
+        el = self.dwg.path(d=_path(pts, closed=False))
         self._style(el, style)
         self._add(el, eid, style.cls)
 
     def polygon(self, pts: Sequence[Pt], style: Style, eid: str = "") -> None:
-        el = self.dwg.polygon()
-        el["points"] = _pts(pts)
+        """A closed path (``M … L … Z``): arrowheads are these, filled."""
+        el = self.dwg.path(d=_path(pts, closed=True))
         self._style(el, style)
         self._add(el, eid, style.cls)
 
@@ -107,17 +108,21 @@ class SvgBackend:
         self._add(el, eid, style.cls)
 
     def text(self, label: Label, cls: str = "", eid: str = "", fill: str = "#000") -> None:
+        """One ``text``; a label with scripts gets one positioned ``tspan`` per run."""
         if not label.runs:
             return
         first = label.runs[0]
-        el = self.dwg.text("", font_size=num(first.size))
+        if len(label.runs) == 1:
+            el = self.dwg.text(first.text, insert=(num(first.x), num(first.y)), font_size=num(first.size))
+        else:
+            el = self.dwg.text("", font_size=num(first.size))
+            for run in label.runs:
+                ts = self.dwg.tspan(run.text, x=[num(run.x)], y=[num(run.y)])
+                if run.size != first.size:
+                    ts["font-size"] = num(run.size)
+                el.add(ts)
         if fill != "#000":
             el["fill"] = fill
-        for run in label.runs:
-            ts = self.dwg.tspan(run.text, x=[num(run.x)], y=[num(run.y)])
-            if run.size != first.size:
-                ts["font-size"] = num(run.size)
-            el.add(ts)
         self._add(el, eid, cls)
 
     def hatch(self, p0: Pt, p1: Pt, side: int, style: Style, step: float = 2.5,

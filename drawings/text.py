@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
+from functools import lru_cache
 
 from .fonts import metrics
 
@@ -34,6 +35,9 @@ class Label:
     plain: str  # the text without markup, for search and tests
 
 
+#: Characters DejaVu Sans lacks, drawn with the nearest glyph it has.
+GLYPH_FALLBACK = str.maketrans({"⟂": "⊥"})
+
 _POINT = re.compile(r"^([A-Za-z]+)(\d+)$")
 
 
@@ -45,9 +49,10 @@ def point_label(name: str) -> str:
 
 def parse(label: str) -> list[tuple[str, str]]:
     """Split markup into (text, role) pieces, role in base/sub/sup."""
+    label = label.translate(GLYPH_FALLBACK)
     out: list[tuple[str, str]] = []
     i, n = 0, len(label)
-    base = []
+    base: list[str] = []
     while i < n:
         ch = label[i]
         if ch in "_^" and i + 1 < n:
@@ -84,6 +89,17 @@ def layout(label: str, x: float, y: float, size: float, anchor: str = "start",
 
     anchor: start | middle | end; valign: baseline | middle (of the capitals) | top | bottom.
     """
+    lab = _layout0(label, size, anchor, valign)
+    if x == 0.0 and y == 0.0:
+        return lab
+    return Label(tuple(TextRun(r.x + x, r.y + y, r.text, r.size) for r in lab.runs),
+                 (lab.box[0] + x, lab.box[1] + y, lab.box[2] + x, lab.box[3] + y), lab.plain)
+
+
+@lru_cache(maxsize=4096)
+def _layout0(label: str, size: float, anchor: str, valign: str) -> Label:
+    """The layout at the origin (cached: labels repeat across panels and positions)."""
+    x = y = 0.0
     m = metrics()
     pieces = parse(label)
     runs: list[tuple[float, float, str, float]] = []  # dx, dy, text, size

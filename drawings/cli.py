@@ -1,0 +1,95 @@
+"""The ``plans`` console command with ``draw``: the parser of :mod:`plans.cli` plus one
+subcommand that needs the renderer (``plans`` itself never imports ``drawings``)."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections.abc import Sequence
+from pathlib import Path
+
+from plans.errors import InputError, PlansError
+
+from .export import FORMATS
+
+
+def _formats(text: str) -> list[str]:
+    out = [f.strip().lower() for f in text.split(",") if f.strip()]
+    bad = [f for f in out if f not in FORMATS]
+    if bad or not out:
+        raise argparse.ArgumentTypeError(f"expected some of {','.join(FORMATS)}, got {text!r}")
+    return out
+
+
+def add_draw(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = sub.add_parser("draw", help="draw the scene's sheets (A1..A4) as SVG, PDF, PNG")
+    p.add_argument("scene", help="scene file (TOML)")
+    p.add_argument("-o", "--output", required=True, metavar="DIR", help="output folder")
+    p.add_argument("--format", type=_formats, default=["svg"], metavar="svg,pdf,png",
+                   help="comma-separated output formats (default svg)")
+    p.add_argument("--sheet", metavar="A1", help="sheet format A1..A4 (overrides [sheet] format)")
+    p.add_argument("--orientation", choices=("landscape", "portrait"), help="overrides [sheet] orientation")
+    p.add_argument("--language", choices=("ru", "en"), help="overrides [sheet] language")
+    p.add_argument("--dpi", type=float, default=150.0, help="PNG resolution (default 150)")
+    p.set_defaults(func=draw_command)
+    return p
+
+
+def draw_command(args: argparse.Namespace) -> int:
+    """``plans draw``: build the sheets, write them atomically, list what was written."""
+    from .draw import draw
+    from .export import save
+
+    if args.dpi <= 0 or args.dpi > 1200:
+        raise InputError(f"--dpi {args.dpi:g} is out of range; expected 1..1200")
+    drawing = draw(args.scene, format=args.sheet, orientation=args.orientation, language=args.language)
+    written = save(drawing.sheets, args.output, Path(args.scene).stem, args.format, args.dpi)
+    for p in written:
+        print(p)
+    return 0
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The engine's parser (solve, check, bench) with ``draw`` added."""
+    try:
+        from plans.cli import build_parser as base
+    except ImportError:  # pragma: no cover - the engine's CLI not written yet
+        parser = argparse.ArgumentParser(prog="plans")
+        sub = parser.add_subparsers(dest="command", required=True)
+        add_draw(sub)
+        return parser
+    parser = base()
+    sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+    add_draw(sub)
+    if "check" in sub.choices:  # ``plans check --sheet DIR``: the marked and overlay sheets
+        try:
+            from .check_sheet import add_sheet_options
+        except ImportError:  # pragma: no cover - checking sheets not installed
+            pass
+        else:
+            add_sheet_options(sub.choices["check"])
+    return parser
+
+
+def _run(args: argparse.Namespace) -> int:
+    if args.func is not draw_command:
+        from plans.cli import run
+
+        return int(run(args))
+    try:
+        return int(args.func(args))
+    except PlansError as exc:
+        print(f"plans: error: {exc}", file=sys.stderr)
+        return 2
+    except OSError as exc:
+        print(f"plans: error: {exc.filename or ''}: {exc.strerror}", file=sys.stderr)
+        return 2
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    args = build_parser().parse_args(argv)
+    return _run(args)
+
+
+if __name__ == "__main__":  # pragma: no cover
+    raise SystemExit(main())

@@ -1,0 +1,122 @@
+"""From a scene to sheets: which panels the scene asks for, built and laid out."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from plans.errors import InputError
+from plans.kinematics import Kinematics, solve
+from plans.scene import Scene, load_scene
+
+from .fonts import metrics
+from .panels import (
+    Panel,
+    auto_length_scale,
+    cycle_size,
+    plan_panel,
+    ratio_text,
+    scheme_panel,
+    strokes_over_cycle,
+    table_panel,
+)
+from .sheet import Sheet, SheetSpec, compose, sheet_spec
+
+
+@dataclass(frozen=True)
+class Drawing:
+    """Everything drawn for one scene: the sheets and the panels on them."""
+
+    scene: Scene
+    spec: SheetSpec
+    panels: tuple[Panel, ...]
+    sheets: tuple[Sheet, ...]
+    mu_l: float
+
+    def _repr_svg_(self) -> str:
+        return self.sheets[0].svg()
+
+
+def _positions(scene: Scene, kin: Kinematics, spec: SheetSpec) -> list[int]:
+    if spec.positions is None:
+        return list(range(kin.n))
+    out = []
+    for phi in spec.positions:
+        hits = [k for k in range(kin.n) if abs(float(kin.phi_deg[k]) - phi) < 1e-9]
+        if not hits:
+            raise InputError(f"crank angle {phi:g}° is not among the scene's positions "
+                             f"{[float(x) for x in kin.phi_deg]}", file=scene.path, field="sheet.positions")
+        out.append(hits[0])
+    return out
+
+
+def _wants(spec: SheetSpec, kind: str) -> bool:
+    return spec.panels is None or kind in spec.panels
+
+
+def build_panels(scene: Scene, spec: SheetSpec) -> tuple[list[Panel], float]:
+    """Every panel the scene asks for, in the order they go on the sheet."""
+    metrics()  # fail early, with the font's name, if it is missing
+    lang, style = spec.language, scene.scale_style
+    kin = solve(scene)
+    ks = _positions(scene, kin, spec)
+    mu_l = scene.scales.get("length") or auto_length_scale(cycle_size(scene))
+    strokes = strokes_over_cycle(scene)
+    plans_at: dict[int, Any] = {}
+    if scene.wants("velocity_plan"):
+        from plans.construction import build_all
+
+        plans_at = dict(enumerate(build_all(kin)))
+    forces = _force_panels(scene, kin, spec, ks, plans_at, mu_l) if (
+        scene.wants("force_polygons") or scene.wants("lever")) else {}
+    panels: list[Panel] = []
+    for k in ks:
+        if scene.wants("positions") and _wants(spec, "scheme"):
+            panels.append(scheme_panel(scene, kin, k, mu_l, lang, strokes))
+        pp = plans_at.get(k)
+        if pp is not None:
+            if pp.velocity is not None and _wants(spec, "velocity"):
+                panels.append(plan_panel(pp.velocity, lang, style))
+            if pp.acceleration is not None and _wants(spec, "acceleration"):
+                panels.append(plan_panel(pp.acceleration, lang, style))
+        panels.extend(forces.get(k, []))
+        if pp is not None and pp.readings and _wants(spec, "table"):
+            extra = forces.get(("table", k), [])
+            panels.append(table_panel(_rows(scene, pp.readings), lang, style, float(kin.phi_deg[k]),
+                                      extra=extra))
+    return panels, mu_l
+
+
+def _rows(scene: Scene, readings) -> list:
+    """Readings worth a row: not the rates of links that only slide on the frame."""
+    fixed_sliders = {jt.slider for jt in scene.joints
+                     if jt.kind == "P" and jt.guide is not None and jt.guide.link == scene.frame
+                     and len(scene.links[jt.slider].axis) == 1}
+    out = []
+    for r in readings:
+        head, _, rest = r.quantity.partition("_")
+        if head in ("omega", "eps") and rest.isdigit() and int(rest) in fixed_sliders:
+            continue
+        out.append(r)
+    return out
+
+
+def _force_panels(scene: Scene, kin: Kinematics, spec: SheetSpec, ks: list[int], plans_at,
+                  mu_l: float) -> dict:
+    """Force panels (group free bodies and polygons, crank, lever) when plans.forces exists."""
+    try:
+        from . import forces_panels
+    except ImportError:  # pragma: no cover - the force panels are optional
+        return {}
+    return forces_panels.build(scene, kin, spec, ks, plans_at, mu_l)
+
+
+def draw(scene: Scene | str | Path, *, format: str | None = None, orientation: str | None = None,
+         language: str | None = None) -> Drawing:
+    """Build the sheets of a scene (a Scene or a path to its TOML file)."""
+    sc = scene if isinstance(scene, Scene) else load_scene(scene)
+    spec = sheet_spec(sc.raw, sc.path, sc.title, format=format, orientation=orientation, language=language)
+    panels, mu_l = build_panels(sc, spec)
+    sheets = compose(panels, spec, ratio_text(mu_l), sc.path)
+    return Drawing(sc, spec, tuple(panels), tuple(sheets), mu_l)

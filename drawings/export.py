@@ -1,0 +1,106 @@
+"""Writing sheets: SVG (svgwrite), PDF and PNG (cairosvg), each file atomically."""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from collections.abc import Sequence
+from pathlib import Path
+
+from plans.errors import PlansError
+
+from .sheet import Sheet
+
+FORMATS = ("svg", "pdf", "png")
+
+
+class OutputError(PlansError):
+    """The output cannot be written."""
+
+
+def atomic_write(path: Path, data: bytes) -> None:
+    """Write to a temporary file in the same folder, then rename over ``path``."""
+    folder = path.parent
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=folder)
+    except OSError as exc:
+        raise OutputError(f"cannot write to {folder}: {exc.strerror}") from None
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            fh.write(data)
+        os.chmod(tmp, 0o644)
+        os.replace(tmp, path)
+    except OSError as exc:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise OutputError(f"cannot write {path}: {exc.strerror}") from None
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise
+
+
+def svg_bytes(sheet: Sheet) -> bytes:
+    return sheet.svg().encode("utf-8")
+
+
+#: A fixed creation date: the same sheet gives the same PDF bytes.
+PDF_DATE = "2000-01-01T00:00:00Z"
+
+
+def pdf_bytes(svg: bytes, title: str = "") -> bytes:
+    """SVG -> PDF at 1:1 (the page is the sheet in points), with fixed metadata."""
+    import io
+
+    import cairocffi
+    from cairosvg.surface import PDFSurface
+
+    class _Pdf(PDFSurface):
+        def _create_surface(self, width, height):
+            surface, w, h = super()._create_surface(width, height)
+            surface.set_metadata(cairocffi.PDF_METADATA_CREATE_DATE, PDF_DATE)
+            surface.set_metadata(cairocffi.PDF_METADATA_CREATOR, "plans (drawings)")
+            if title:
+                surface.set_metadata(cairocffi.PDF_METADATA_TITLE, title)
+            return surface, w, h
+
+    out = io.BytesIO()
+    _Pdf.convert(bytestring=svg, write_to=out)
+    return out.getvalue()
+
+
+def png_bytes(svg: bytes, dpi: float) -> bytes:
+    import cairosvg
+
+    return cairosvg.svg2png(bytestring=svg, dpi=dpi)
+
+
+def save(sheets: Sequence[Sheet], outdir: str | Path, stem: str, formats: Sequence[str] = ("svg",),
+         dpi: float = 150.0) -> list[Path]:
+    """Write every sheet in every format: ``stem.svg`` (one sheet) or ``stem-2.svg`` ..."""
+    out = Path(outdir)
+    for f in formats:
+        if f not in FORMATS:
+            raise OutputError(f"unknown output format {f!r}; expected some of {', '.join(FORMATS)}")
+    if not (dpi > 0 and dpi <= 1200):
+        raise OutputError(f"dpi {dpi:g} is out of range; expected 1..1200")
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise OutputError(f"cannot create the output folder {out}: {exc.strerror}") from None
+    if not os.access(out, os.W_OK):
+        raise OutputError(f"cannot write to {out}: permission denied")
+    written = []
+    for sh in sheets:
+        name = stem if len(sheets) == 1 else f"{stem}-{sh.number}"
+        svg = svg_bytes(sh)
+        for f in formats:
+            p = out / f"{name}.{f}"
+            data = svg if f == "svg" else pdf_bytes(svg) if f == "pdf" else png_bytes(svg, dpi)
+            atomic_write(p, data)
+            written.append(p)
+    return written

@@ -1,0 +1,474 @@
+"""Force panels: each Assur group cut free with its loads and reactions, its force
+polygon, the initial link with the balancing load and its polygon, the Zhukovsky
+lever, and a table of the forces read off the polygons.
+
+Reads the frozen results of :mod:`plans.forces` and :mod:`plans.lever`.
+"""
+
+from __future__ import annotations
+
+import cmath
+import math
+import re
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+
+from plans.forces import force_polygons, kinetostatics, nice_scale
+from plans.lever import force_rows, lever_plan
+from plans.plan import Plan
+
+from .backend import THICK, Recording, Style, Transform
+from .common import Placer, arrow, dot, fmt, ident, phi_tag
+from .i18n import tr
+from .panels import (
+    JOINT_R,
+    LABEL_SIZE,
+    SMALL_SIZE,
+    VECTOR_STYLES,
+    Panel,
+    _clip,
+    finish,
+    link_shape,
+    scale_text,
+    table_panel,
+)
+from .text import point_label
+
+LOAD = Style(width=0.45, stroke="#000")
+REACTION = Style(width=0.45, stroke="#b3261e")
+ARM = Style(width=0.18, stroke="#555", dash=(1.5, 1.0))
+FBD_ARROW_MM = 32.0
+
+_NAME = re.compile(r"^(Phi|M_Phi|[A-Z])(\d+)(.*)$")
+
+
+def force_label(label: str, lang: str = "en") -> str:
+    """``F21^τ`` -> ``F_21^τ``, ``Phi2`` -> ``Φ_2``, ``M_Phi2'`` -> ``M_Φ2'``, ``F_bal`` -> ``F_ур`` (ru)."""
+    if label == "F_bal":
+        return "F_ур" if lang == "ru" else "F_bal"
+    if label.startswith("M_Phi"):
+        return "M_{Φ" + label[5:].rstrip("'") + "}" + "'" * (len(label) - len(label.rstrip("'")))
+    m = _NAME.match(label)
+    if m:
+        head = "Φ" if m.group(1) == "Phi" else m.group(1)
+        return f"{head}_{m.group(2)}{m.group(3)}"
+    return label.replace("Phi", "Φ")
+
+
+def build(scene, kin, spec, ks: Sequence[int], plans_at: dict[int, Any], mu_l: float) -> dict:
+    """Panels per position k, and ("table", k) -> extra rows for the results table."""
+    res = kinetostatics(scene, kin)
+    if res is None:
+        return {}
+    fa, lv = res
+    lang, style = spec.language, scene.scale_style
+
+    def want(kind: str) -> bool:
+        return spec.panels is None or kind in spec.panels
+
+    out: dict[Any, Any] = {}
+    for k in ks:
+        phi = float(kin.phi_deg[k])
+        panels: list[Panel] = []
+        polys = force_polygons(fa, k) if scene.wants("force_polygons") else ()
+        by_group = {fp.group: fp for fp in polys}
+        if scene.wants("force_polygons"):
+            for gf in reversed(fa.groups):  # attachment order: nearest the crank first
+                if want("group"):
+                    panels.append(group_panel(scene, kin, gf, k, mu_l, lang, style))
+                    fp = by_group.get(gf.group.name)
+                    if fp is not None:
+                        panels.append(polygon_panel(fp.plan, lang, style,
+                                                    f"polygon-{ident(gf.group.name)}-{phi_tag(phi)}",
+                                                    f"{tr('group_polygon', lang)} {gf.group.name}"))
+            if want("crank"):
+                panels.append(crank_panel(scene, kin, fa, k, mu_l, lang, style))
+                fp = by_group.get(str(fa.crank.link))
+                if fp is not None:
+                    panels.append(polygon_panel(fp.plan, lang, style, f"polygon-crank-{phi_tag(phi)}",
+                                                tr("crank_polygon", lang)))
+        if scene.wants("lever") and want("lever") and bool(lv.valid[k]):
+            vplan = plans_at[k].velocity if k in plans_at else None
+            panels.append(lever_panel(lv, k, vplan, lang, style))
+        if want("table") and polys:
+            panels.append(forces_table(polys, lang, style, phi))
+        out[k] = panels
+        out[("table", k)] = balancing_rows(lv, k, lang)
+    return out
+
+
+# --------------------------------------------------------------------------- free bodies
+
+
+def _fbd_scale(values: Sequence[complex]) -> float:
+    return nice_scale(max((abs(v) for v in values), default=0.0), FBD_ARROW_MM)
+
+
+def _moment_arc(rec: Recording, placer: Placer, c: tuple[float, float], M: float, label: str,
+                eid: str, r: float = 6.0) -> None:
+    """A couple as an arc with a filled head, counter-clockwise for M > 0."""
+    if M == 0:
+        return
+    sense = 1 if M > 0 else -1
+    a0, a1 = math.radians(200), math.radians(200 - sense * 110)  # paper angles (y down: ccw is −)
+    rec.arc(c, r, a0, a1, Style(width=0.35, stroke="#1f4e9c", cls="moment"), eid)
+    end = (c[0] + r * math.cos(a1), c[1] + r * math.sin(a1))
+    t = -sense
+    tx, ty = -math.sin(a1) * t, math.cos(a1) * t
+    tip = (end[0] + tx * 3.0, end[1] + ty * 3.0)
+    rec.polygon([tip, (end[0] - ty * 0.8, end[1] + tx * 0.8), (end[0] + ty * 0.8, end[1] - tx * 0.8)],
+                Style(stroke=None, width=0, fill="#1f4e9c", cls="head"))
+    mid = (a0 + a1) / 2
+    lab = placer.place(label, (c[0] + (r + 1) * math.cos(mid), c[1] + (r + 1) * math.sin(mid)), SMALL_SIZE + 0.5,
+                       prefer=(math.cos(mid), math.sin(mid)))
+    rec.text(lab, "label", f"{eid}-label", fill="#1f4e9c")
+
+
+def _force_at(rec: Recording, placer: Placer, T: Transform, r: complex, F: complex, mu_f: float,
+              label: str, style: Style, eid: str) -> None:
+    """A force drawn from its point of application, labelled at its head."""
+    if F == 0:
+        return
+    p0 = T.z(r)
+    d = F * mu_f
+    p1 = (p0[0] + d.real, p0[1] - d.imag)
+    arrow(rec, p0, p1, style, eid, "force " + ("reaction" if style is REACTION else "load"))
+    placer.add_line([p0, p1])
+    L = math.dist(p0, p1) or 1.0
+    lab = placer.place(label, p1, SMALL_SIZE + 0.5, prefer=((p1[0] - p0[0]) / L, (p1[1] - p0[1]) / L), gap=0.8)
+    rec.text(lab, "label", f"{eid}-label", fill=style.stroke or "#000")
+
+
+def _draw_links(rec: Recording, placer: Placer, scene, kin, k: int, links: Sequence[int], T: Transform,
+                pid: str) -> dict[str, complex]:
+    """Links (thick), slider blocks, joint circles and point labels; returns the points drawn."""
+    pts: dict[str, complex] = {}
+    for lid in links:
+        link = scene.links[lid]
+        for n, z in link.points.items():
+            pts.setdefault(n, complex(kin.point_on(lid, z)[0][k]))
+        kind, names = link_shape(scene, lid)
+        shape = [T.z(pts[n]) for n in names]
+        if kind == "line":
+            rec.line(shape[0], shape[1], THICK, f"{pid}-link-{lid}")
+            placer.add_line(shape)
+        elif kind == "polygon":
+            rec.polygon(shape, Style(width=0.7, fill="#eeeeee", cls="link"), f"{pid}-link-{lid}")
+            placer.add_line(shape + [shape[0]])
+    for jt in scene.joints:
+        if not (set(jt.links) & set(links)) or jt.point not in pts:
+            continue
+        c = T.z(pts[jt.point])
+        if jt.kind == "P" and jt.guide is not None and jt.slider in links:
+            g = jt.guide
+            th = 0.0 if g.link == scene.frame else float(kin.theta(g.link)[k])
+            ang = -(th + g.angle)
+            ux, uy = math.cos(ang), math.sin(ang)
+            corners = [(c[0] + sx * 6 * ux - sy * 3.5 * uy, c[1] + sx * 6 * uy + sy * 3.5 * ux)
+                       for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+            rec.polygon(corners, Style(width=0.5, fill="#fff", cls="slider"), f"{pid}-slider-{ident(jt.point)}")
+            placer.add_poly(corners)
+            # the guide the group is cut from: a thin dash-dot line
+            a0 = (c[0] - 14 * ux, c[1] - 14 * uy)
+            a1 = (c[0] + 14 * ux, c[1] + 14 * uy)
+            rec.line(a0, a1, Style(width=0.18, stroke="#333", dash=(6.0, 1.0, 1.0, 1.0), cls="axis"))
+    done: set[str] = set()
+    for jt in scene.joints:
+        if jt.kind == "R" and (set(jt.links) & set(links)) and jt.point in pts and jt.point not in done:
+            done.add(jt.point)
+            c = T.z(pts[jt.point])
+            rec.circle(c, JOINT_R, Style(width=0.35, fill="#fff", cls="joint"), f"{pid}-joint-{ident(jt.point)}")
+            placer.add_disc(c, JOINT_R + 0.3)
+    return pts
+
+
+def _label_points(rec: Recording, placer: Placer, pts: dict[str, complex], T: Transform, pid: str) -> None:
+    cx = sum(pts.values()) / max(len(pts), 1)
+    for n, z in pts.items():
+        c = T.z(z)
+        away = z - cx
+        L = abs(away) or 1.0
+        if n.startswith("S"):
+            rec.circle(c, 1.0, Style(width=0.25, fill="#fff", cls="centre"))
+            dot(rec, c, 0.4)
+        lab = placer.place(point_label(n), c, LABEL_SIZE, prefer=(away.real / L, -away.imag / L), gap=1.8)
+        rec.text(lab, "label", f"{pid}-label-{ident(n)}")
+
+
+def group_panel(scene, kin, gf, k: int, mu_l: float, lang: str, style: str) -> Panel:
+    """The group cut free (appendices 4–5): loads at their points, the unknown reactions
+    at the outer pairs (τ and n components at a revolute), arms h of the moment equations."""
+    g = gf.group
+    phi = float(kin.phi_deg[k])
+    pid = f"group-{ident(g.name)}-{phi_tag(phi)}"
+    T = Transform(mu_l)
+    rec = Recording()
+    placer = Placer()
+    pts = _draw_links(rec, placer, scene, kin, k, g.links, T, pid)
+    loads = list(gf.loads_i) + list(gf.loads_j)
+    reacts = []
+    couples: list[tuple[str, float, str]] = []
+    for rc in (gf.reactions[0], gf.reactions[2]):
+        name = rc.name(scene.fij)
+        if rc.tau is not None and rc.e_tau is not None and rc.n is not None and rc.e_n is not None:
+            reacts.append((complex(rc.r[k]), complex(rc.tau[k] * rc.e_tau[k]), f"{name}^τ"))
+            reacts.append((complex(rc.r[k]), complex(rc.n[k] * rc.e_n[k]), f"{name}^n"))
+        else:
+            at = complex(rc.r[k])
+            if rc.guide is not None and float(rc.N[k]) != 0:
+                off = float(rc.offset[k])
+                if abs(off) * mu_l <= 40.0:  # the resultant's point, when it lies by the slider
+                    at = at + off * complex(rc.guide[k])
+                elif float(rc.M[k]) != 0:  # else N at the pin plus the pair's couple
+                    couples.append((rc.point, float(rc.M[k]), "M" + name[1:]))
+            reacts.append((at, complex(rc.F[k]), name))
+    values = [complex(f.F[k]) for f in loads] + [v for _, v, _ in reacts]
+    mu_f = _fbd_scale(values)
+    # arms of the moment equations
+    for (eq, label), arm in gf.arms.items():
+        h = float(arm[k])
+        f = next((x for x in loads if x.label == label), None)
+        m = re.match(r"M_(\w+)\(", eq)
+        if f is None or m is None or m.group(1) not in pts or h * mu_l < 1.0:
+            continue
+        P = pts[m.group(1)]
+        F = complex(f.F[k])
+        if F == 0:
+            continue
+        u = F / abs(F)
+        r = complex(f.r[k])
+        foot = r + ((P - r) * u.conjugate()).real * u
+        rec.line(T.z(P), T.z(foot), ARM, f"{pid}-arm-{ident(label)}")
+        rec.line(T.z(r), T.z(foot), Style(width=0.18, stroke="#777", dash=(4.0, 1.0, 1.0, 1.0)))
+        mid = T.z((P + foot) / 2)
+        lab = placer.place(f"h_{{{force_label(label, lang)}}}".replace("_{", "_{", 1), mid, SMALL_SIZE, gap=0.6)
+        rec.text(lab, "label arm", f"{pid}-arm-{ident(label)}-label", fill="#555")
+    for f in loads:
+        _force_at(rec, placer, T, complex(f.r[k]), complex(f.F[k]), mu_f, force_label(f.label, lang), LOAD,
+                  f"{pid}-{ident(f.label)}")
+    for at, F, name in reacts:
+        _force_at(rec, placer, T, at, F, mu_f, force_label(name, lang), REACTION, f"{pid}-{ident(name)}")
+    for m in list(gf.moments_i) + list(gf.moments_j):
+        link = scene.links[m.link]
+        centre = link.centre or next((n for n in link.points if n.startswith("S")), link.axis[0])
+        _moment_arc(rec, placer, T.z(pts[centre]), float(m.M[k]), force_label(m.label, lang),
+                    f"{pid}-{ident(m.label)}")
+    for point, M, name in couples:
+        _moment_arc(rec, placer, T.z(pts[point]), M, force_label(name, lang), f"{pid}-{ident(name)}", r=8.0)
+    _label_points(rec, placer, pts, T, pid)
+    title = f"{tr('group', lang)} {g.name} ({g.kind}), φ = {fmt(phi, 4, lang)}°"
+    sc = f"{scale_text('length', mu_l, style, lang)};  {scale_text('force', mu_f, style, lang)}"
+    return finish(pid, "group", phi, rec, title, sc, quantity="length", scale=mu_l)
+
+
+def crank_panel(scene, kin, fa, k: int, mu_l: float, lang: str, style: str) -> Panel:
+    """The initial link with the reactions of the groups, its own loads, the balancing
+    load and the frame's reaction (appendix 6)."""
+    c = fa.crank
+    phi = float(kin.phi_deg[k])
+    pid = f"crank-{phi_tag(phi)}"
+    T = Transform(mu_l)
+    rec = Recording()
+    placer = Placer()
+    pts = _draw_links(rec, placer, scene, kin, k, [c.link], T, pid)
+    bal = complex(c.F_bal[k] * c.e_bal[k]) if c.kind == "force" else 0j
+    values = [complex(f.F[k]) for f in c.loads] + [bal, complex(c.frame.F[k])]
+    mu_f = _fbd_scale(values)
+    for f in c.loads:
+        _force_at(rec, placer, T, complex(f.r[k]), complex(f.F[k]), mu_f, force_label(f.label, lang), LOAD,
+                  f"{pid}-{ident(f.label)}")
+    if c.kind == "force":
+        _force_at(rec, placer, T, complex(c.r_point[k]), bal, mu_f, force_label("F_bal", lang), REACTION,
+                  f"{pid}-F_bal")
+    else:
+        _moment_arc(rec, placer, T.z(pts[scene.driver.pivot]), float(c.M_bal[k]),
+                    "M_ур" if lang == "ru" else "M_bal", f"{pid}-M_bal", r=8.0)
+    for m in c.moments:
+        _moment_arc(rec, placer, T.z(pts[c.point]), float(m.M[k]), force_label(m.label, lang),
+                    f"{pid}-{ident(m.label)}")
+    name = c.frame.name(scene.fij)
+    _force_at(rec, placer, T, complex(c.frame.r[k]), complex(c.frame.F[k]), mu_f, force_label(name, lang),
+              REACTION, f"{pid}-{ident(name)}")
+    _label_points(rec, placer, pts, T, pid)
+    title = f"{tr('crank', lang)} {c.link}, φ = {fmt(phi, 4, lang)}°"
+    sc = f"{scale_text('length', mu_l, style, lang)};  {scale_text('force', mu_f, style, lang)}"
+    return finish(pid, "crank", phi, rec, title, sc, quantity="length", scale=mu_l)
+
+
+# --------------------------------------------------------------------------- polygons and lever
+
+
+def polygon_panel(plan: Plan, lang: str, style: str, pid: str, title: str) -> Panel:
+    """A force polygon head to tail (plan mm, true size): known forces black, the closing
+    reactions red, the two construction lines that closed it thin; every vector labelled."""
+    T = Transform(1.0)
+    rec = Recording()
+    placer = Placer()
+    xy = {p.name: T(*p.xy) for p in plan.points}
+    xs = [p[0] for p in xy.values()]
+    ys = [p[1] for p in xy.values()]
+    box = (min(xs) - 8, min(ys) - 8, max(xs) + 8, max(ys) + 8)
+    for i, cl in enumerate(plan.lines):
+        seg = _clip(T(*cl.point), T.direction(*cl.direction), box)
+        if seg is not None:
+            rec.line(seg[0], seg[1], Style(width=0.18, stroke="#666", cls="construction"), f"{pid}-line-{i}")
+            placer.add_line(list(seg))
+    geoms = []
+    used: dict[str, int] = {}
+    for s in plan.segments:
+        a, b = xy[s.start], xy[s.end]
+        st = VECTOR_STYLES["closing" if s.kind == "closing" else "force"]
+        eid = f"{pid}-{ident(s.label)}"
+        used[eid] = used.get(eid, 0) + 1
+        if used[eid] > 1:
+            eid = f"{eid}-{used[eid]}"
+        arrow(rec, a, b, st, eid, f"vector {s.kind}")
+        placer.add_line([a, b])
+        geoms.append((s, a, b, eid))
+    for p in plan.points:
+        if p.coincides_with is None:
+            dot(rec, xy[p.name], 0.45)
+            placer.add_disc(xy[p.name], 0.6)
+    for s, a, b, eid in geoms:
+        if s.length_mm < 1e-6:
+            continue
+        mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+        L = math.dist(a, b)
+        nx, ny = -(b[1] - a[1]) / L, (b[0] - a[0]) / L
+        st = VECTOR_STYLES["closing" if s.kind == "closing" else "force"]
+        lab = placer.place(force_label(s.label, lang), mid, SMALL_SIZE + 0.5, prefer=(nx, ny), gap=0.8)
+        rec.text(lab, "vector-label", f"{eid}-label", fill=st.stroke or "#000")
+    return finish(pid, "polygon", plan.phi_deg, rec, f"{title}, φ = {fmt(plan.phi_deg, 4, lang)}°",
+                  scale_text("force", plan.scale, style, lang), quantity="force", scale=plan.scale)
+
+
+def lever_panel(lv, k: int, vplan: Plan | None, lang: str, style: str) -> Panel:
+    """The velocity plan turned 90° as a rigid lever about the pole, every force at the image of
+    its point parallel to itself, the arms h from the pole, and the balancing force."""
+    plan = lever_plan(lv, k)
+    phi = plan.phi_deg
+    pid = f"lever-{phi_tag(phi)}"
+    T = Transform(1.0)
+    rec = Recording()
+    placer = Placer()
+    xy = {p.name: T(*p.xy) for p in plan.points}
+    images = [p.name for p in plan.points if not p.name.endswith(">")]  # ordered: stable output
+    # the lever itself: the plan's vectors turned
+    if vplan is not None:
+        for vs in vplan.segments:
+            na = "p" if vs.start == vplan.pole else vs.start
+            nb = "p" if vs.end == vplan.pole else vs.end
+            if na in xy and nb in xy and vs.kind in ("absolute", "relative") and xy[na] != xy[nb]:
+                rec.line(xy[na], xy[nb], Style(width=0.5, stroke="#000", cls="lever"),
+                         f"{pid}-bar-{ident(na)}-{ident(nb)}")
+                placer.add_line([xy[na], xy[nb]])
+    segs = [s for s in plan.segments if s.kind == "force"]
+    mu_f = (segs[0].length_mm / segs[0].value) if segs and segs[0].value else 1.0
+    c = lv.fa.crank
+    bal_vec = None
+    if c.kind == "force":
+        F = complex(lv.by_lever[k]) * complex(c.e_bal[k])
+        wb = complex(lv.w_bal[k])
+        bal_vec = (T(wb.real, wb.imag), T((wb + F * mu_f).real, (wb + F * mu_f).imag))
+    pole = xy["p"]
+    for i, cl in enumerate(plan.lines):
+        p0 = complex(*cl.point)
+        u = complex(*cl.direction)
+        foot = p0 + ((0j - p0) * u.conjugate()).real * u
+        if abs(foot) > 1.0:
+            f = T(foot.real, foot.imag)
+            rec.line(pole, f, ARM, f"{pid}-arm-{i}")
+            rec.line(T(*cl.point), f, Style(width=0.18, stroke="#888", dash=(4.0, 1.0, 1.0, 1.0)))
+    for s in segs:
+        a, b = xy[s.start], xy[s.end]
+        eid = f"{pid}-{ident(s.label)}"
+        arrow(rec, a, b, LOAD, eid, "vector force")
+        placer.add_line([a, b])
+    if bal_vec is not None:
+        arrow(rec, bal_vec[0], bal_vec[1], REACTION, f"{pid}-F_bal", "vector closing")
+        placer.add_line(list(bal_vec))
+    for n in images:
+        dot(rec, xy[n], 0.5)
+        placer.add_disc(xy[n], 0.6)
+    seen: set[tuple[float, float]] = set()
+    for n in sorted(images, key=lambda x: (x != "p", x)):
+        key = (round(xy[n][0], 6), round(xy[n][1], 6))
+        if key in seen:
+            continue
+        same = [m for m in sorted(images) if (round(xy[m][0], 6), round(xy[m][1], 6)) == key]
+        seen.add(key)
+        lab = placer.place(", ".join(point_label(m) for m in same), xy[n], LABEL_SIZE, gap=0.8)
+        rec.text(lab, "label", f"{pid}-label-{ident(n)}")
+    for s in segs:
+        a, b = xy[s.start], xy[s.end]
+        L = math.dist(a, b) or 1.0
+        lab = placer.place(force_label(s.label, lang), b, SMALL_SIZE + 0.5,
+                           prefer=((b[0] - a[0]) / L, (b[1] - a[1]) / L), gap=0.6)
+        rec.text(lab, "vector-label", f"{pid}-{ident(s.label)}-label")
+    if bal_vec is not None:
+        a, b = bal_vec
+        L = math.dist(a, b) or 1.0
+        lab = placer.place(force_label("F_bal", lang), b, SMALL_SIZE + 0.5,
+                           prefer=((b[0] - a[0]) / L, (b[1] - a[1]) / L), gap=0.6)
+        rec.text(lab, "vector-label", f"{pid}-F_bal-label", fill=REACTION.stroke or "#000")
+    turn = ("90° " + ("против часовой" if lv.turn > 0 else "по часовой")) if lang == "ru" else (
+        "turned 90° " + ("ccw" if lv.turn > 0 else "cw"))
+    title = f"{tr('lever', lang)}, φ = {fmt(phi, 4, lang)}° ({turn})"
+    sc = f"{scale_text('velocity', lv.scale, style, lang)};  {scale_text('force', mu_f, style, lang)}"
+    return finish(pid, "lever", phi, rec, title, sc, quantity="velocity", scale=lv.scale)
+
+
+# --------------------------------------------------------------------------- tables
+
+
+class _Row:
+    """A reading-like row for :func:`table_panel`."""
+
+    __slots__ = ("quantity", "segment", "length_mm", "scale", "value", "exact", "unit", "ref", "relative")
+
+    def __init__(self, quantity: str, segment: str | None, length_mm: float | None, scale: float | None,
+                 value: float, exact: float, unit: str, ref: float) -> None:
+        self.quantity, self.segment, self.length_mm, self.scale = quantity, segment, length_mm, scale
+        self.value, self.exact, self.unit, self.ref = value, exact, unit, ref
+        den = max(abs(exact), ref)
+        self.relative = abs(value - exact) / den if den > 0 else 0.0
+
+
+def forces_table(polys, lang: str, style: str, phi: float) -> Panel:
+    """Every polygon vector: segment, mm, μF, value read to the ruler, exact, difference."""
+    rows = []
+    for fp in polys:
+        ref = max((s.value for s in fp.plan.segments), default=0.0)
+        for s in fp.plan.segments:
+            rows.append(_Row(force_label(s.label, lang), f"{s.start} {s.end}", s.length_mm, fp.scale,
+                             fp.reading(s.label), s.value, "N", ref))
+    title_pid = f"forces-table-{phi_tag(phi)}"
+    p = table_panel(rows, lang, style, phi, pid=title_pid, title_key="forces_table")
+    return p
+
+
+def balancing_rows(lv, k: int, lang: str) -> list[tuple[str, ...]]:
+    """The balancing load three ways (kinetostatics, lever, power) and δ, as table rows."""
+    rows = force_rows(lv, k)[-4:]
+    keys = ("by_groups", "by_lever", "by_power")
+    name = "F_ур" if lang == "ru" else "F_bal"
+    out: list[tuple[str, ...]] = []
+    for key, r in zip(keys, rows[:3], strict=False):
+        unit = "Н" if (lang == "ru" and r.unit == "N") else ("Н·м" if lang == "ru" and r.unit == "N·m" else r.unit)
+        read = "—" if r.drawing is None else fmt(r.drawing, 5, lang)
+        d = r.difference
+        diff = "—" if d is None else f"{abs(d):.2f}"
+        if lang == "ru":
+            diff = diff.replace(".", ",")
+        out.append((f"{name} ({tr(key, lang)})", "—", "—", "—", read, fmt(r.exact, 5, lang), unit, diff))
+    delta = rows[3]
+    if delta.drawing is not None and np.isfinite(delta.drawing):
+        out.append(("δ = (F_lev − F_kin)/F_kin, %" if lang == "en" else "δ = (F_рыч − F_кин)/F_кин, %",
+                    "—", "—", "—", fmt(delta.drawing, 3, lang), fmt(delta.exact, 3, lang), "%", "—"))
+    return out
+
+
+__all__ = ["build", "group_panel", "crank_panel", "polygon_panel", "lever_panel", "forces_table",
+           "balancing_rows", "force_label", "cmath"]

@@ -1,0 +1,507 @@
+"""Sheets: format, GOST 2.104 frame and title block, automatic layout of panels.
+
+A sheet is paper millimetres, y down, the origin at the top-left corner of the
+paper.  The frame leaves 20 mm for binding on the left and 5 mm elsewhere; the
+title block (185 × 55, form 1) sits in the bottom-right corner of the frame.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+from plans.errors import InputError
+
+from .backend import Prim, Recording, Style, replay
+from .i18n import tr
+from .panels import Panel
+from .svg import SvgBackend
+from .text import layout
+
+FORMATS: dict[str, tuple[float, float]] = {  # landscape width × height, mm (GOST 2.301)
+    "A0": (1189.0, 841.0),
+    "A1": (841.0, 594.0),
+    "A2": (594.0, 420.0),
+    "A3": (420.0, 297.0),
+    "A4": (297.0, 210.0),
+}
+MARGIN_LEFT = 20.0
+MARGIN = 5.0
+TB_W, TB_H = 185.0, 55.0
+GAP = 6.0  # between panels, and between panels and the frame
+SHEET_FORMATS = ("A1", "A2", "A3", "A4")
+
+
+@dataclass(frozen=True, slots=True)
+class Pin:
+    panel: str  # panel id: "velocity-45"
+    sheet: int  # 1-based
+    x: float  # top-left of the panel box, mm from the paper's top-left corner
+    y: float
+
+
+@dataclass(frozen=True, slots=True)
+class SheetSpec:
+    """The ``[sheet]`` table of a scene (every key optional)::
+
+        [sheet]
+        format = "A1"                 # A1 | A2 | A3 | A4  (CLI --sheet overrides)
+        orientation = "landscape"     # or "portrait"
+        language = "ru"               # or "en"
+        title = "Механизм V-образного двигателя"   # name field (default: the scene's title)
+        designation = "ТММ.КП.07.00.00"
+        subtitle = "Кинематический и силовой анализ"
+        author = "Иванов И.И."
+        checked_by = "Петров П.П."
+        approved_by = ""
+        group = "гр. МТ-31"
+        organization = "МГТУ"
+        date = "21.11.26"             # written as given (no clock: same scene, same bytes)
+        first_sheet = 1               # number of this drawing's first sheet
+        total_sheets = 4              # "Sheets" cell (default: first_sheet - 1 + sheets drawn)
+        panels = ["scheme", "velocity", "acceleration", "table", "group", "crank", "lever"]
+        positions = [45, 0]           # crank angles to draw (default: all of the scene's)
+        [[sheet.pins]]                # fix a panel: top-left corner in mm from the paper's corner
+        panel = "velocity-45"
+        sheet = 1
+        x = 300
+        y = 20
+    """
+
+    format: str = "A1"
+    orientation: str = "landscape"
+    language: str = "ru"
+    title: str = ""
+    designation: str = ""
+    subtitle: str = ""
+    author: str = ""
+    checked_by: str = ""
+    approved_by: str = ""
+    group: str = ""
+    organization: str = ""
+    date: str = ""
+    first_sheet: int = 1
+    total_sheets: int | None = None
+    panels: tuple[str, ...] | None = None  # kinds to draw (subset of what the scene asks)
+    positions: tuple[float, ...] | None = None  # crank angles to draw (subset of the scene's)
+    pins: tuple[Pin, ...] = ()
+
+    @property
+    def size(self) -> tuple[float, float]:
+        w, h = FORMATS[self.format]
+        return (w, h) if self.orientation == "landscape" else (h, w)
+
+
+PANEL_KINDS = ("scheme", "velocity", "acceleration", "table", "group", "crank", "lever")
+_KEYS = {"format", "orientation", "language", "title", "designation", "subtitle", "author",
+         "checked_by", "approved_by", "group", "organization", "date", "first_sheet", "total_sheets",
+         "panels", "positions", "pins"}
+
+
+def sheet_spec(raw: dict[str, Any], path: str, default_title: str = "", **override: Any) -> SheetSpec:
+    """Validate ``[sheet]`` (one-line InputError per problem); CLI options override it."""
+    data = raw.get("sheet", {})
+    if not isinstance(data, dict):
+        raise InputError("expected a table [sheet]", file=path, field="sheet")
+    for key in data:
+        if key not in _KEYS:
+            raise InputError(f"unknown key; expected one of {sorted(_KEYS)}", file=path, field=f"sheet.{key}")
+    out: dict[str, Any] = {}
+
+    def string(key: str) -> None:
+        if key in data:
+            if not isinstance(data[key], str):
+                raise InputError("expected a string", file=path, field=f"sheet.{key}")
+            out[key] = data[key]
+
+    for key in ("title", "designation", "subtitle", "author", "checked_by", "approved_by", "group",
+                "organization", "date"):
+        string(key)
+    fmt = str(override.get("format") or data.get("format", "A1"))
+    if fmt.upper() not in SHEET_FORMATS:
+        raise InputError(f"unknown sheet format {fmt!r}; expected one of {', '.join(SHEET_FORMATS)}",
+                         file=path, field="sheet.format")
+    out["format"] = fmt.upper()
+    ori = override.get("orientation") or data.get("orientation", "landscape")
+    if ori not in ("landscape", "portrait"):
+        raise InputError(f"expected \"landscape\" or \"portrait\", got {ori!r}", file=path,
+                         field="sheet.orientation")
+    out["orientation"] = ori
+    lang = override.get("language") or data.get("language", "ru")
+    if lang not in ("ru", "en"):
+        raise InputError(f"expected \"ru\" or \"en\", got {lang!r}", file=path, field="sheet.language")
+    out["language"] = lang
+    for key in ("first_sheet", "total_sheets"):
+        if key in data:
+            v = data[key]
+            if isinstance(v, bool) or not isinstance(v, int) or v < 1:
+                raise InputError(f"expected a whole number >= 1, got {v!r}", file=path, field=f"sheet.{key}")
+            out[key] = v
+    if "panels" in data:
+        v = data["panels"]
+        if not isinstance(v, list) or not all(isinstance(x, str) and x in PANEL_KINDS for x in v):
+            raise InputError(f"expected a list of panel kinds from {list(PANEL_KINDS)}", file=path,
+                             field="sheet.panels")
+        out["panels"] = tuple(v)
+    if "positions" in data:
+        v = data["positions"]
+        v = v if isinstance(v, list) else [v]
+        if not v or not all(isinstance(x, int | float) and not isinstance(x, bool) for x in v):
+            raise InputError("expected crank angles in degrees, e.g. positions = [45, 0]", file=path,
+                             field="sheet.positions")
+        out["positions"] = tuple(float(x) for x in v)
+    if "pins" in data:
+        pins = []
+        v = data["pins"]
+        if not isinstance(v, list):
+            raise InputError("expected an array of tables [[sheet.pins]]", file=path, field="sheet.pins")
+        for i, p in enumerate(v):
+            f = f"sheet.pins[{i}]"
+            if not isinstance(p, dict) or not isinstance(p.get("panel"), str):
+                raise InputError("expected { panel = \"velocity-45\", x = mm, y = mm, sheet = 1 }", file=path,
+                                 field=f)
+            for key in ("x", "y"):
+                if not isinstance(p.get(key), int | float) or isinstance(p.get(key), bool):
+                    raise InputError(f"expected {key} in mm from the sheet's top-left corner", file=path,
+                                     field=f"{f}.{key}")
+            sh = p.get("sheet", 1)
+            if isinstance(sh, bool) or not isinstance(sh, int) or sh < 1:
+                raise InputError("expected a sheet number >= 1", file=path, field=f"{f}.sheet")
+            pins.append(Pin(p["panel"], sh, float(p["x"]), float(p["y"])))
+        out["pins"] = tuple(pins)
+    out.setdefault("title", default_title)
+    return SheetSpec(**out)
+
+
+# --------------------------------------------------------------------------- the sheet
+
+
+@dataclass(slots=True)
+class Sheet:
+    """One plate: paper size, the placed panels, the frame and the title block."""
+
+    spec: SheetSpec
+    number: int  # 1-based within this drawing
+    count: int
+    width: float
+    height: float
+    placed: list[tuple[Panel, float, float]] = field(default_factory=list)
+    scale_text: str = ""  # for the title block's "Scale" cell
+    prims: list[Prim] = field(default_factory=list)
+
+    @property
+    def frame_box(self) -> tuple[float, float, float, float]:
+        return (MARGIN_LEFT, MARGIN, self.width - MARGIN, self.height - MARGIN)
+
+    @property
+    def title_box(self) -> tuple[float, float, float, float]:
+        x1, y1 = self.width - MARGIN, self.height - MARGIN
+        return (x1 - TB_W, y1 - TB_H, x1, y1)
+
+    def panel_boxes(self) -> dict[str, tuple[float, float, float, float]]:
+        return {p.pid: (x, y, x + p.width, y + p.height) for p, x, y in self.placed}
+
+    def render(self) -> list[Prim]:
+        """Frame, title block and placed panels as paper primitives."""
+        rec = Recording()
+        _frame(rec, self)
+        _title_block(rec, self)
+        prims = list(rec.prims)
+        for panel, x, y in self.placed:
+            prims.extend(panel.at(x, y))
+        self.prims = prims
+        return prims
+
+    def svg(self, debug: bool = False) -> str:
+        be = SvgBackend(self.width, self.height, debug=debug)
+        replay(self.prims or self.render(), be)
+        return be.tostring()
+
+    def _repr_svg_(self) -> str:
+        return self.svg()
+
+
+def _frame(rec: Recording, sh: Sheet) -> None:
+    x0, y0, x1, y1 = sh.frame_box
+    rec.begin("frame", "frame")
+    rec.polygon([(x0, y0), (x1, y0), (x1, y1), (x0, y1)], Style(width=0.7, cls="frame"), "frame-border")
+    rec.end()
+
+
+def _fit(text: str, x: float, y: float, w: float, size: float, anchor: str = "start"):
+    """A label no wider than ``w`` (the size shrinks, never below 1.8 mm)."""
+    lab = layout(text, x, y, size, anchor, "middle")
+    width = lab.box[2] - lab.box[0]
+    if width > w and width > 0:
+        size = max(1.8, size * w / width)
+        lab = layout(text, x, y, size, anchor, "middle")
+    return lab
+
+
+def _title_block(rec: Recording, sh: Sheet) -> None:
+    """GOST 2.104 form 1: change log and signatures on the left, designation, name,
+    literal/mass/scale, sheet N of M, organisation."""
+    lang = sh.spec.language
+    X0, Y0, X1, Y1 = sh.title_box
+    thick = Style(width=0.7, cls="tb")
+    thin = Style(width=0.25, cls="tb")
+    rec.begin("title-block", "title-block")
+    rec.polygon([(X0, Y0), (X1, Y0), (X1, Y1), (X0, Y1)], Style(width=0.7, fill="#fff", cls="tb"),
+                "title-block-border")
+    for i in range(1, 11):  # rows of 5 mm in the left part
+        y = Y0 + 5 * i
+        rec.line((X0, y), (X0 + 65, y), thick if i in (5, 6) else thin)
+    rec.line((X0 + 7, Y0), (X0 + 7, Y0 + 30), thick)  # "Rev." column: change log rows only
+    for c in (17.0, 40.0, 55.0, 65.0):
+        rec.line((X0 + c, Y0), (X0 + c, Y1), thick)
+    # right part
+    rec.line((X0 + 65, Y0 + 15), (X1, Y0 + 15), thick)
+    rec.line((X0 + 65, Y0 + 40), (X1, Y0 + 40), thick)
+    rec.line((X0 + 135, Y0 + 15), (X0 + 135, Y1), thick)
+    rec.line((X0 + 135, Y0 + 20), (X1, Y0 + 20), thick)
+    rec.line((X0 + 135, Y0 + 35), (X1, Y0 + 35), thick)
+    for c in (150.0, 167.0):
+        rec.line((X0 + c, Y0 + 15), (X0 + c, Y0 + 35), thick)
+    for c in (140.0, 145.0):
+        rec.line((X0 + c, Y0 + 20), (X0 + c, Y0 + 35), thin)
+    rec.line((X0 + 155, Y0 + 35), (X0 + 155, Y0 + 40), thick)
+
+    def cell(text: str, x: float, y: float, w: float, size: float, eid: str, anchor: str = "start") -> None:
+        if not text:
+            return
+        xx = x + 1.0 if anchor == "start" else x + w / 2
+        rec.text(_fit(text, xx, y, w - 2.0, size, anchor), "tb-text", eid)
+
+    heads = [("izm", 0, 7), ("list", 7, 10), ("ndoc", 17, 23), ("sign", 40, 15), ("date", 55, 10)]
+    for key, x, w in heads:
+        cell(tr(key, lang), X0 + x, Y0 + 27.5, w, 2.5, f"tb-h-{key}", "middle")
+    sig = [("author", sh.spec.author), ("checked", sh.spec.checked_by), ("tcontr", ""), ("ncontr", ""),
+           ("approved", sh.spec.approved_by)]
+    for i, (key, name) in enumerate(sig):
+        y = Y0 + 32.5 + 5 * i
+        cell(tr(key, lang), X0, y, 17, 2.5, f"tb-{key}")
+        cell(name, X0 + 17, y, 23, 2.5, f"tb-{key}-name")
+        if key == "author" and sh.spec.date:
+            cell(sh.spec.date, X0 + 55, y, 10, 2.2, "tb-date", "middle")
+    cell(sh.spec.designation, X0 + 65, Y0 + 7.5, 120, 5.0, "tb-designation", "middle")
+    # name field: the title over up to three lines
+    lines = _wrap(sh.spec.title, 66.0, 4.0)
+    y = Y0 + 27.5 - (len(lines) - 1) * 3.0
+    for i, ln in enumerate(lines):
+        cell(ln, X0 + 65, y + 6.0 * i, 70, 4.0, f"tb-title-{i}", "middle")
+    cell(sh.spec.subtitle, X0 + 65, Y0 + 47.5, 70, 3.5, "tb-subtitle", "middle")
+    cell(tr("lit", lang), X0 + 135, Y0 + 17.5, 15, 2.5, "tb-h-lit", "middle")
+    cell(tr("mass", lang), X0 + 150, Y0 + 17.5, 17, 2.5, "tb-h-mass", "middle")
+    cell(tr("mscale", lang), X0 + 167, Y0 + 17.5, 18, 2.5, "tb-h-scale", "middle")
+    cell(sh.scale_text, X0 + 167, Y0 + 27.5, 18, 3.5, "tb-scale", "middle")
+    n = sh.spec.first_sheet + sh.number - 1
+    m = sh.spec.total_sheets or (sh.spec.first_sheet - 1 + sh.count)
+    cell(f"{tr('sheet', lang)} {n}", X0 + 135, Y0 + 37.5, 20, 2.5, "tb-sheet")
+    cell(f"{tr('sheets', lang)} {m}", X0 + 155, Y0 + 37.5, 30, 2.5, "tb-sheets")
+    org = [t for t in (sh.spec.organization, sh.spec.group) if t]
+    for i, t in enumerate(org):
+        cell(t, X0 + 135, Y0 + 47.5 + (i - (len(org) - 1) / 2) * 5.0, 50, 3.5, f"tb-org-{i}", "middle")
+    rec.end()
+
+
+def _wrap(text: str, width: float, size: float) -> list[str]:
+    words = text.split()
+    lines: list[str] = []
+    cur = ""
+    for w in words:
+        trial = f"{cur} {w}".strip()
+        lab = layout(trial, 0, 0, size)
+        if cur and lab.box[2] - lab.box[0] > width:
+            lines.append(cur)
+            cur = w
+        else:
+            cur = trial
+    if cur:
+        lines.append(cur)
+    if len(lines) > 3:
+        lines = lines[:2] + [" ".join(lines[2:])]
+    return lines or [""]
+
+
+# --------------------------------------------------------------------------- layout
+
+
+def usable(width: float, height: float) -> tuple[float, float, float, float]:
+    """Where panels may go: inside the frame, GAP from it."""
+    return (MARGIN_LEFT + GAP, MARGIN + GAP, width - MARGIN - GAP, height - MARGIN - GAP)
+
+
+def _overlaps(a: Sequence[float], b: Sequence[float]) -> bool:
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+
+def _grow(b: Sequence[float], g: float) -> tuple[float, float, float, float]:
+    return (b[0] - g, b[1] - g, b[2] + g, b[3] + g)
+
+
+def _try_place(panel: Panel, area: tuple[float, float, float, float],
+               taken: list[tuple[float, float, float, float]]) -> tuple[float, float] | None:
+    """Top-left-most free spot for ``panel`` (candidates at the area's and boxes' edges)."""
+    xs = sorted({area[0]} | {b[2] + GAP for b in taken})
+    ys = sorted({area[1]} | {b[3] + GAP for b in taken})
+    best = None
+    for y in ys:
+        for x in xs:
+            box = (x, y, x + panel.width, y + panel.height)
+            if box[2] > area[2] + 1e-9 or box[3] > area[3] + 1e-9:
+                continue
+            if any(_overlaps(box, _grow(t, GAP - 1e-9)) for t in taken):
+                continue
+            key = (y, x)
+            if best is None or key < best[0]:
+                best = (key, (x, y))
+        if best is not None:
+            break
+    return None if best is None else best[1]
+
+
+def _pack_band(blk: Sequence[Panel], area: tuple[float, float, float, float],
+               taken: list[tuple[float, float, float, float]], placed: list[tuple[Panel, float, float]],
+               ) -> tuple[list[tuple[Panel, float, float]], list[Panel]] | None:
+    """Pack ``blk`` below everything already on the sheet; returns (placed, left over)."""
+    top = max((y + q.height + GAP for q, _, y in placed), default=area[1])
+    band = list(taken) + ([(area[0], area[1], area[2], top - GAP)] if placed else [])
+    out: list[tuple[Panel, float, float]] = []
+    rest: list[Panel] = []
+    for p in blk:
+        if rest:
+            rest.append(p)
+            continue
+        spot = _try_place(p, area, band)
+        if spot is None:
+            rest.append(p)
+            continue
+        out.append((p, spot[0], spot[1]))
+        band.append((spot[0], spot[1], spot[0] + p.width, spot[1] + p.height))
+    return out, rest
+
+
+def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str = "",
+            path: str = "<scene>") -> list[Sheet]:
+    """Place panels on as many sheets of ``spec.format`` as they need (pins first)."""
+    W, H = spec.size
+    area = usable(W, H)
+    tb = (W - MARGIN - TB_W, H - MARGIN - TB_H, W - MARGIN, H - MARGIN)
+    by_id = {p.pid: p for p in panels}
+    for pin in spec.pins:
+        if pin.panel not in by_id:
+            raise InputError(f"no panel {pin.panel!r} on this drawing; panels are {', '.join(by_id)}",
+                             file=path, field="sheet.pins")
+    for p in panels:
+        _check_fits(p, spec, path)
+    sheets: list[list[tuple[Panel, float, float]]] = []
+    taken: list[list[tuple[float, float, float, float]]] = []
+
+    def new_sheet() -> None:
+        sheets.append([])
+        taken.append([_grow(tb, 0.0)])
+
+    new_sheet()
+    pinned = {pin.panel for pin in spec.pins}
+    for pin in spec.pins:
+        p = by_id[pin.panel]
+        while len(sheets) < pin.sheet:
+            new_sheet()
+        box = (pin.x, pin.y, pin.x + p.width, pin.y + p.height)
+        if box[0] < area[0] - GAP or box[1] < area[1] - GAP or box[2] > area[2] + GAP or box[3] > area[3] + GAP:
+            raise InputError(f"panel {pin.panel} ({p.width:.0f}×{p.height:.0f} mm) at x = {pin.x:g}, "
+                             f"y = {pin.y:g} leaves the frame of the {spec.format} sheet", file=path,
+                             field="sheet.pins")
+        if any(_overlaps(box, t) for t in taken[pin.sheet - 1]):
+            raise InputError(f"pinned panel {pin.panel} overlaps another pinned panel or the title block",
+                             file=path, field="sheet.pins")
+        sheets[pin.sheet - 1].append((p, pin.x, pin.y))
+        taken[pin.sheet - 1].append(box)
+    # Panels of one crank angle form a band across the sheet, read left to right and top
+    # to bottom; a band that does not fit under the previous one starts a new sheet, and a
+    # band taller than a sheet continues on the next.
+    blocks: list[list[Panel]] = []
+    for p in panels:
+        if p.pid in pinned:
+            continue
+        if not blocks or blocks[-1][0].phi != p.phi:
+            blocks.append([])
+        blocks[-1].append(p)
+    for blk in blocks:
+        s0 = len(sheets) - 1
+        trial = _pack_band(blk, area, taken[s0], sheets[s0])
+        if trial is None or (trial[1] and sheets[s0]):
+            if sheets[s0]:
+                new_sheet()
+            s0 = len(sheets) - 1
+            trial = _pack_band(blk, area, taken[s0], sheets[s0])
+        assert trial is not None
+        placed_now, rest = trial
+        sheets[s0].extend(placed_now)
+        taken[s0].extend((x, y, x + q.width, y + q.height) for q, x, y in placed_now)
+        while rest:
+            new_sheet()
+            s0 = len(sheets) - 1
+            trial = _pack_band(rest, area, taken[s0], sheets[s0])
+            assert trial is not None
+            placed_now, rest2 = trial
+            if not placed_now:  # pragma: no cover - _check_fits guards this
+                raise InputError(f"panel {rest[0].pid} does not fit", file=path, field="sheet.format")
+            sheets[s0].extend(placed_now)
+            taken[s0].extend((x, y, x + q.width, y + q.height) for q, x, y in placed_now)
+            rest = rest2
+    out = []
+    for i, placed in enumerate(sheets):
+        order = {p.pid: k for k, p in enumerate(panels)}
+        placed.sort(key=lambda t: order[t[0].pid])
+        sh = Sheet(spec, i + 1, len(sheets), W, H, placed, scale_text)
+        sh.render()
+        out.append(sh)
+    return out
+
+
+def _check_fits(p: Panel, spec: SheetSpec, path: str) -> None:
+    """A panel too big for an empty sheet: one line saying what would fit."""
+    if _fits_empty(p, spec.format, spec.orientation):
+        return
+    bigger = [f for f in SHEET_FORMATS if _fits_empty(p, f, spec.orientation)]
+    if bigger:
+        raise InputError(f"panel {p.pid} ({p.width:.0f}×{p.height:.0f} mm) does not fit on an empty "
+                         f"{spec.format} {spec.orientation} sheet; use --sheet {bigger[0]} or a smaller scale",
+                         file=path, field="sheet.format")
+    w, h = FORMATS["A1"]
+    a = usable(w, h)
+    aw, ah = a[2] - a[0], a[3] - a[1] - TB_H - GAP
+    factor = min(aw / p.width, ah / p.height)
+    what = p.quantity or "length"
+    if p.scale:
+        hint = f"e.g. [scales] {what} = {{ mu = {_round_down(p.scale * factor * 0.9):g} }}"
+    else:
+        hint = f"a scale about {factor:.2g} times smaller"
+    raise InputError(f"panel {p.pid} ({p.width:.0f}×{p.height:.0f} mm) does not fit even on an empty A1 "
+                     f"({aw:.0f}×{ah:.0f} mm free); choose a smaller scale, {hint}", file=path,
+                     field=f"scales.{what}")
+
+
+def _round_down(x: float) -> float:
+    """A round number (1, 2, 2.5, 4, 5 × 10^k) not above x."""
+    e = math.floor(math.log10(x))
+    for m in (10.0, 5.0, 4.0, 2.5, 2.0, 1.0):
+        if m * 10.0**e <= x:
+            return m * 10.0**e
+    return 10.0**e
+
+
+def _fits_empty(p: Panel, fmt: str, orientation: str) -> bool:
+    w, h = FORMATS[fmt]
+    W, H = (w, h) if orientation == "landscape" else (h, w)
+    a = usable(W, H)
+    if p.width > a[2] - a[0] or p.height > a[3] - a[1]:
+        return False
+    return p.height <= a[3] - a[1] - TB_H - GAP or p.width <= a[2] - a[0] - TB_W - GAP
+
+
+def sheet_size_ok(sheet: Sheet) -> bool:  # pragma: no cover - convenience
+    return math.isfinite(sheet.width) and math.isfinite(sheet.height)

@@ -1,0 +1,124 @@
+"""Every sample draws in every format; a structural golden file per sample."""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import xml.etree.ElementTree as ET
+from collections import Counter
+from io import BytesIO
+from pathlib import Path
+
+import pytest
+
+from drawings.draw import draw
+from drawings.export import save
+
+ROOT = Path(__file__).resolve().parents[1]
+SAMPLES = sorted((ROOT / "samples").glob("*.toml"))
+GOLDEN = Path(__file__).resolve().parent / "golden" / "drawings"
+SVG = "{http://www.w3.org/2000/svg}"
+PT_PER_MM = 72.0 / 25.4
+DPI = 12  # tiny PNGs: the size is what is checked
+
+
+@pytest.fixture(scope="module", params=SAMPLES, ids=[p.stem for p in SAMPLES])
+def drawn(request, tmp_path_factory):
+    out = tmp_path_factory.mktemp(request.param.stem)
+    d = draw(request.param)
+    files = save(d.sheets, out, request.param.stem, ("svg", "pdf", "png"), dpi=DPI)
+    return request.param, d, files
+
+
+def _structure(d) -> dict:
+    """What the golden file pins: sheets, panels on each, element counts per panel."""
+    sheets = []
+    for sh in d.sheets:
+        root = ET.fromstring(sh.svg())
+        panels = {}
+        for g in root.iter(f"{SVG}g"):
+            cls = g.get("class", "").split()
+            if cls[:1] != ["panel"]:
+                continue
+            counts = Counter(el.tag.replace(SVG, "") for el in g.iter())
+            vectors = sorted(x.get("id") for x in g.iter(f"{SVG}g") if x.get("class", "").split()[:1] == ["vector"])
+            panels[g.get("id")] = {"kind": cls[1], "elements": dict(sorted(counts.items())), "vectors": vectors}
+        sheets.append({"format": f"{sh.width:g}x{sh.height:g}", "panels": panels})
+    return {"sheets": sheets}
+
+
+def test_every_format_written(drawn):
+    path, d, files = drawn
+    names = sorted(p.name for p in files)
+    n = len(d.sheets)
+    stems = [path.stem] if n == 1 else [f"{path.stem}-{i}" for i in range(1, n + 1)]
+    assert names == sorted(f"{s}.{e}" for s in stems for e in ("svg", "pdf", "png"))
+    assert not [p for p in files[0].parent.iterdir() if p.name.startswith(".")]  # no temporary files left
+
+
+def test_pdf_page_is_the_sheet_in_points(drawn):
+    _, d, files = drawn
+    for p in files:
+        if p.suffix != ".pdf":
+            continue
+        data = p.read_bytes()
+        assert data.startswith(b"%PDF")
+        m = re.search(rb"/MediaBox\s*\[\s*0 0 ([\d.]+) ([\d.]+)\s*\]", data)
+        assert m, p
+        sh = d.sheets[0]
+        assert float(m.group(1)) == pytest.approx(sh.width * PT_PER_MM, abs=0.01)
+        assert float(m.group(2)) == pytest.approx(sh.height * PT_PER_MM, abs=0.01)
+
+
+def test_png_pixel_size(drawn):
+    from PIL import Image
+
+    _, d, files = drawn
+    sh = d.sheets[0]
+    for p in files:
+        if p.suffix == ".png":
+            w, h = Image.open(BytesIO(p.read_bytes())).size
+            assert abs(w - sh.width / 25.4 * DPI) <= 1 and abs(h - sh.height / 25.4 * DPI) <= 1
+
+
+def test_svg_well_formed_and_valid(drawn):
+    _, d, files = drawn
+    for p in files:
+        if p.suffix == ".svg":
+            root = ET.fromstring(p.read_bytes())
+            assert root.tag == f"{SVG}svg" and root.get("width").endswith("mm")
+    d.sheets[0].svg(debug=True)  # svgwrite's validator
+
+
+def test_no_overlaps_in_any_sample(drawn):
+    import itertools
+
+    import shapely
+
+    _, d, _ = drawn
+    for sh in d.sheets:
+        boxes = [shapely.box(*b) for b in sh.panel_boxes().values()]
+        for a, b in itertools.combinations(boxes, 2):
+            assert not a.intersects(b)
+        frame = shapely.box(*sh.frame_box)
+        assert all(frame.contains(b) for b in boxes)
+    for panel in d.panels:
+        texts = [shapely.box(*b) for b in panel.text_boxes()]
+        bad = [(i, j) for (i, a), (j, b) in itertools.combinations(enumerate(texts), 2)
+               if a.intersection(b).area > 0.01]
+        assert not bad, panel.pid
+
+
+def test_structure_matches_golden(drawn):
+    path, d, _ = drawn
+    got = _structure(d)
+    golden = GOLDEN / f"{path.stem}.json"
+    if os.environ.get("PLANS_UPDATE_GOLDEN") or not golden.exists():
+        if not os.environ.get("PLANS_UPDATE_GOLDEN"):
+            pytest.fail(f"no golden file {golden}; run with PLANS_UPDATE_GOLDEN=1 to write it")
+        golden.parent.mkdir(parents=True, exist_ok=True)
+        golden.write_text(json.dumps(got, indent=1, ensure_ascii=False) + "\n", encoding="utf-8")
+    want = json.loads(golden.read_text(encoding="utf-8"))
+    assert [len(s["panels"]) for s in got["sheets"]] == [len(s["panels"]) for s in want["sheets"]]
+    assert got == want
