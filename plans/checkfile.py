@@ -49,12 +49,12 @@ from __future__ import annotations
 
 import math
 import re
-import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from .errors import InputError
+from .io import loads_toml, read_toml
 from .scene import Scene, load_scene, scene_from_dict
 from .units import LENGTH_UNITS
 
@@ -143,20 +143,11 @@ LENGTH_QUANTITY = re.compile(r"^(h_\w+|l_[A-Z]\w*)$")
 
 def load_check(path: str | Path) -> CheckFile:
     """Read and validate a check file (and the scene it names)."""
-    p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise InputError(f"cannot read file ({exc.strerror})", file=str(path)) from None
-    return parse_check(text, str(path))
+    return check_from_dict(read_toml(path), str(path))
 
 
 def parse_check(text: str, path: str = "<check>") -> CheckFile:
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"malformed TOML: {exc}", file=path) from None
-    return check_from_dict(data, path)
+    return check_from_dict(loads_toml(text, path), path)
 
 
 def _fail(path: str, field: str, msg: str) -> InputError:

@@ -33,14 +33,14 @@ from .tolerances import COINCIDE_REL, LOCK_SIN, NEAR_PARALLEL_SIN
 _NICE = (1.0, 1.2, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0)
 
 
-def nice_scale(longest: float, target_mm: float = 100.0) -> float:
+def nice_scale(longest: float, target_mm: float = 100.0, mantissas: tuple[float, ...] = _NICE) -> float:
     """μ (mm per unit) with K = 1/μ a round number, so that ``longest`` is drawn as
     the longest vector not above ``target_mm`` (75–100 mm): how a draftsman picks it."""
     if not (longest > 0 and math.isfinite(longest)):
         return 1.0
     k_min = longest / target_mm  # K may not be smaller than this
     e = math.floor(math.log10(k_min))
-    for m in _NICE + (10.0,):
+    for m in mantissas + (10.0,):
         K = m * 10.0**e
         if K >= k_min * (1 - 1e-12):
             return 1.0 / K

@@ -34,7 +34,6 @@ Plane vectors are complex numbers, ``cross(a, b) = Im(conj(a)·b)``.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
@@ -42,6 +41,7 @@ import numpy as np
 import shapely
 from numpy.typing import NDArray
 
+from . import construction
 from .errors import Locked
 from .kinematics import Kinematics, cross
 from .loads import AppliedForce, AppliedLoads, AppliedMoment, Loads, apply_loads, parse_loads
@@ -59,20 +59,12 @@ R = NDArray[np.float64]
 RULER_MM = 0.5
 #: Nice values of K = 1/μ (unit per mm), times powers of ten: consecutive ratios ≤ 1.25,
 #: so the longest vector always lands between 80 and 100 mm.
-_NICE = (1.0, 1.2, 1.25, 1.5, 1.6, 2.0, 2.5, 3.0, 3.5, 4.0, 5.0, 6.0, 7.0, 8.0, 10.0)
+_NICE = (1.0, 1.2, 1.25, 1.5, 1.6, 2.0, 2.5, 3.0, 3.5, 4.0, 5.0, 6.0, 7.0, 8.0)
 
 
 def nice_scale(longest: float, target_mm: float = 100.0) -> float:
-    """μ (mm per unit) with K = 1/μ a round number and the longest vector in 80..100 mm."""
-    if not (longest > 0 and math.isfinite(longest)):
-        return 1.0
-    k_min = longest / target_mm
-    exp = math.floor(math.log10(k_min))
-    for base in _NICE:
-        k = base * 10.0**exp
-        if k >= k_min * (1 - 1e-12):
-            return 1.0 / k
-    return 1.0 / (10.0 ** (exp + 1))
+    """μF (mm per N): K a round number from a denser set, the longest vector 80..100 mm."""
+    return construction.nice_scale(longest, target_mm, _NICE)
 
 
 def _unit(z: C) -> C:

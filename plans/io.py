@@ -6,8 +6,11 @@ from __future__ import annotations
 import json
 import os
 import tempfile
+import tomllib
 from pathlib import Path
 from typing import Any
+
+from .errors import InputError
 
 
 def atomic_write(path: str | Path, data: bytes | str) -> None:
@@ -29,3 +32,19 @@ def atomic_write(path: str | Path, data: bytes | str) -> None:
 def dumps(data: Any) -> str:
     """Deterministic JSON; refuses NaN and inf (they must never reach an output)."""
     return json.dumps(data, ensure_ascii=False, indent=2, allow_nan=False) + "\n"
+
+
+def read_toml(path: str | Path) -> dict[str, Any]:
+    """A TOML file as a dict; an unreadable or malformed file is one InputError line."""
+    try:
+        text = Path(path).read_text(encoding="utf-8")
+    except OSError as exc:
+        raise InputError(f"cannot read file ({exc.strerror})", file=str(path)) from None
+    return loads_toml(text, str(path))
+
+
+def loads_toml(text: str, path: str) -> dict[str, Any]:
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(f"malformed TOML: {exc}", file=path) from None

@@ -11,12 +11,12 @@ from __future__ import annotations
 
 import cmath
 import math
-import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from .errors import InputError
+from .io import loads_toml, read_toml
 from .units import LENGTH_UNITS, parse_length, rpm_to_rad_s
 
 #: What a scene may ask for, and what each one needs first.
@@ -187,20 +187,11 @@ class _Reader:
 
 def load_scene(path: str | Path) -> Scene:
     """Read and validate a scene file."""
-    p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise InputError(f"cannot read file ({exc.strerror})", file=str(path)) from None
-    return parse_scene(text, str(path))
+    return scene_from_dict(read_toml(path), str(path))
 
 
 def parse_scene(text: str, path: str = "<scene>") -> Scene:
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"malformed TOML: {exc}", file=path) from None
-    return scene_from_dict(data, path)
+    return scene_from_dict(loads_toml(text, path), path)
 
 
 def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
