@@ -20,7 +20,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import numpy as np
 import shapely
 
 from .errors import Locked
@@ -822,4 +821,4 @@ def build_all(kin: Kinematics) -> list[PositionPlans]:
     return [build(kin, k, velocity_scale=mv, acceleration_scale=ma) for k in range(kin.n)]
 
 
-__all__ = ["Reading", "PositionPlans", "build", "build_all", "default_scales", "nice_scale", "np"]
+__all__ = ["Reading", "PositionPlans", "build", "build_all", "default_scales", "nice_scale"]

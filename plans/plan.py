@@ -55,7 +55,7 @@ class Step:
 
 @dataclass(frozen=True, slots=True)
 class Plan:
-    kind: str  # "velocity" | "acceleration"
+    kind: str  # "velocity" | "acceleration" | "force" | "lever"
     phi_deg: float
     scale: float  # mm per SI unit
     pole: str
