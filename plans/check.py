@@ -8,7 +8,10 @@ a verdict against a tolerance:
   drawn direction to ±``direction_deg``; these errors are propagated through the
   construction of the plan drawn at the student's scale (the plan's protocol replayed
   with each error in turn, first order, worst-case sum) and the reading adds one more
-  ±``segment_mm``.  A short vector found by intersecting nearly parallel lines gets a
+  ±``segment_mm``.  A normal or Coriolis component, computed from figures read off the
+  velocity plan and then laid off, carries their tolerance into its length; a point found
+  by similarity from a coincident image (the shaper's d from a3) moves with that image.
+  A short vector found by intersecting nearly parallel lines gets a
   wide tolerance, a long vector laid off from the pole a narrow one.  Figures that
   are computed rather than drawn (masses, reactions without the student's μF, ...)
   fall back to the course rule.
@@ -116,8 +119,45 @@ class Context:
             if plan is None:
                 return None
             tol = self.cf.tolerance
-            self._prop[key] = _Propagation(plan, self.kin, k, tol.segment_mm, math.radians(tol.direction_deg))
+            extra = self._carried(k, plan) if kind == "acceleration" else {}
+            self._prop[key] = _Propagation(plan, self.kin, k, tol.segment_mm, math.radians(tol.direction_deg),
+                                           extra)
         return self._prop[key]
+
+    def _carried(self, k: int, plan: Plan) -> dict[str, float]:
+        """Normal and Coriolis components are computed from figures read off the velocity plan
+        (a^n = v²/l, a^k = 2ωv_r) and then laid off: the tolerance of those readings carries
+        into their length (mm on the acceleration plan), keyed by the point laid off."""
+        out: dict[str, float] = {}
+        crank = self.scene.links[self.scene.driver.link]
+        for sg in plan.segments:
+            if sg.kind not in ("normal", "coriolis") or sg.length_mm <= 0:
+                continue
+            body = re.fullmatch(r"a(?:\^k)?_([A-Za-z0-9]+)(?:\^n)?", sg.label)
+            if body is None or set(_points(body.group(1))) <= set(crank.points):
+                continue  # the crank's components come from the data (ω1, ε1, l_OA), not the plan
+            if sg.kind == "normal":
+                m = re.fullmatch(r"a_([A-Za-z0-9]+)\^n", sg.label)
+                v = _plan_segment(self, k, f"v_{m.group(1)}") if m else None
+                if v is None or not v.tol_mm or not v.mm_per_unit or v.value <= 0:
+                    continue
+                out[sg.end] = sg.length_mm * 2 * v.tol_mm / (v.value * v.mm_per_unit)
+            else:
+                m = re.fullmatch(r"a\^k_([A-Za-z0-9]+)", sg.label)
+                pts = _points(m.group(1)) if m else []
+                if len(pts) != 2:
+                    continue
+                v = _plan_segment(self, k, f"v_{pts[0]}{pts[1]}")
+                links = [int(x.group(1)) for x in (re.fullmatch(r"[A-Z][a-z]*(\d+)", t) for t in pts) if x]
+                links = sorted((lk for lk in links if lk in self.scene.links),
+                               key=lambda lk: (len(self.scene.links[lk].axis) != 2, lk))
+                w = _angular(self, k, f"omega_{links[0]}") if links else None
+                rels = [x.tol_mm / (x.value * x.mm_per_unit) for x in (v, w)
+                        if x is not None and x.tol_mm and x.mm_per_unit and x.value > 0]
+                # two separate readings (each already a worst case over the velocity plan's
+                # steps, sharing most of them): combined in quadrature, not added once more
+                out[sg.end] = sg.length_mm * math.hypot(*rels) if rels else 0.0
+        return out
 
     def tol_mm(self, k: int, kind: str, a: str, b: str) -> float | None:
         if self.cf.tolerance.model != "draftsman":
@@ -189,7 +229,16 @@ def _label(ctx: Context, plan: Plan, point: str) -> str | None:
     if point in ctx.scene.frame_points:
         return plan.pole
     lab = point.lower()
-    return lab if plan.has(lab) else None
+    if plan.has(lab):
+        return lab
+    # A2 written for the block's own point A: its image is labelled a (a2 only when it differs)
+    m = re.fullmatch(r"([A-Z][a-z]*)(\d+)", point)
+    if m:
+        link = ctx.scene.links.get(int(m.group(2)))
+        base = m.group(1)
+        if link is not None and base in link.points and plan.has(base.lower()):
+            return base.lower()
+    return None
 
 
 _POINT = re.compile(r"[A-Z][a-z0-9]*")
@@ -212,6 +261,15 @@ def _plan_segment(ctx: Context, k: int, q: str) -> Exact | None:
         s = plan.segment(q)
         seg = (s.start, s.end)
     except KeyError:
+        mk = re.fullmatch(r"a\^([kr])_([A-Za-z0-9]+)", q)
+        if mk:  # a^k_A2A3 written for a^k_A3A2: the same segment
+            pts = _points(mk.group(2))
+            if len(pts) == 2:
+                try:
+                    s = plan.segment(f"a^{mk.group(1)}_{pts[1]}{pts[0]}")
+                    seg = (s.start, s.end)
+                except KeyError:
+                    pass
         m = re.fullmatch(r"([va])_([A-Za-z0-9]+)(\^[nτ])?", q)
         if m and not m.group(3):
             pts = _points(m.group(2))
@@ -271,10 +329,48 @@ def _angular(ctx: Context, k: int, q: str) -> Exact | None:
                 break
             except KeyError:
                 continue
+        if seg is None:  # a^τ of another pair of the link's points: a_A3C^τ on a slotted lever
+            found = _tangential_on(ctx, k, plan, lid)
+            if found is not None:
+                seg, length = found
+                mu = plan.scale * length
     tol = ctx.tol_mm(k, kind, *seg) if seg else (ctx.cf.tolerance.segment_mm
                                                    if ctx.cf.tolerance.model == "draftsman" else None)
     ref = (abs(complex(*plan.xy("a"))) / plan.scale / length) if plan.has("a") else 0.0
     return Exact(q, value, unit, mu, tol, "kinematics", kind, seg, ref)
+
+
+def _tangential_on(ctx: Context, k: int, plan: Plan, lid: int) -> tuple[tuple[str, str], float] | None:
+    """A tangential segment a_XY^τ of the acceleration plan whose points X, Y both belong to
+    link ``lid`` (a point written with the link's number, A3, or one of its own points), and
+    the distance XY at position k: ε = a^τ / l_XY."""
+    link = ctx.scene.links[lid]
+    for sg in plan.segments:
+        m = re.fullmatch(r"a_(\w+)\^τ", sg.label)
+        if sg.kind != "tangential" or not m:
+            continue
+        toks = re.findall(r"[A-Z][a-z]*\d*", m.group(1))
+        if len(toks) != 2 or "".join(toks) != m.group(1):
+            continue
+        names = []
+        for t in toks:
+            if t in link.points:
+                names.append(t)
+                continue
+            mm = re.fullmatch(r"([A-Z][a-z]*)(\d+)", t)
+            if mm and int(mm.group(2)) == lid and ctx.scene.point_links(mm.group(1)):
+                names.append(mm.group(1))
+            else:
+                break
+        if len(names) != 2:
+            continue
+        try:
+            length = abs(ctx.pos(k, names[0]) - ctx.pos(k, names[1]))
+        except KeyError:
+            continue
+        if length > 0:
+            return (sg.start, sg.end), length
+    return None
 
 
 def _length(ctx: Context, k: int, q: str) -> Exact | None:
@@ -451,15 +547,18 @@ def known_quantities(ctx: Context, k: int) -> list[str]:
 class _Propagation:
     """Replays a plan's protocol with one draftsman's error at a time.
 
-    Parameters: each laid-off vector's length (±seg) and direction (±dir), each
+    Parameters: each laid-off vector's length (±seg, plus for a normal or Coriolis
+    component the tolerance of the velocity-plan figures it is computed from) and direction (±dir), each
     construction line's direction (±dir), each point found by similarity (±seg along
     the link's image).  Sensitivities are first order (small steps) and add up in the
     worst case (a stack-up of limits: a figure fails only if no combination of
     step errors within the limits explains it), plus ±seg for reading the segment."""
 
-    def __init__(self, plan: Plan, kin: Kinematics, k: int, seg_mm: float, dir_rad: float) -> None:
+    def __init__(self, plan: Plan, kin: Kinematics, k: int, seg_mm: float, dir_rad: float,
+                 carried: dict[str, float] | None = None) -> None:
         self.plan = plan
         self.seg = seg_mm
+        self.carried = carried or {}  # laid-off point -> extra length tolerance (mm) from the velocity plan
         self.base = {p.name: complex(*p.xy) for p in plan.points}
         self.coincide = {p.name: p.coincides_with for p in plan.points if p.coincides_with}
         self.ops: list[tuple] = []
@@ -468,28 +567,39 @@ class _Propagation:
         degenerate = {d.split(":")[0] for d in plan.degenerate}
         lines = list(plan.lines)
         li = 0
+        self._done: set[str] = {plan.pole}  # points drawn so far, in the protocol's order
         for st in plan.steps:
-            if st.op == "lay off" and st.inputs and st.inputs[0] in self.base and st.output in self.base:
-                vec = self.base[st.output] - self.base[st.inputs[0]]
-                self.ops.append(("lay", st.output, st.inputs[0], vec, self._param(seg_mm), self._param(dir_rad)))
-            elif st.op == "intersect" and li + 1 < len(lines) and len(st.inputs) == 2:
-                l1, l2 = lines[li], lines[li + 1]
-                li += 2
-                p1, p2 = complex(*l1.point), complex(*l2.point)
-                i1, i2 = st.inputs
-                ok = (i1 in self.base and i2 in self.base and abs(self.base[i1] - p1) < 1e-6 * (1 + abs(p1))
-                      and abs(self.base[i2] - p2) < 1e-6 * (1 + abs(p2)))
-                if not ok or st.output in degenerate:
-                    self.ops.append(("keep", st.output))
-                    continue
-                self.ops.append(("cut", st.output, i1, complex(*l1.direction), i2, complex(*l2.direction),
-                                 self._param(dir_rad), self._param(dir_rad)))
-            elif st.op == "similarity":
-                op = self._similarity(st.text, st.output, scene, kin, k)
-                if op is not None:
-                    self.ops.append(op)
+            self._step(st, lines, li, degenerate, seg_mm, dir_rad, scene, kin, k)
+            li = self._li
+            self._done.add(st.output)
         self._base_state = self._run(np.zeros(len(self.sizes)))
         self._cache: dict[tuple[str, str], float] = {}
+
+    def _step(self, st: Any, lines: list, li: int, degenerate: set[str], seg_mm: float, dir_rad: float,
+              scene: Any, kin: Kinematics, k: int) -> None:
+        """One protocol step as an operation to replay (``self._li``: the next construction line)."""
+        self._li = li
+        if st.op == "lay off" and st.inputs and st.inputs[0] in self.base and st.output in self.base:
+            vec = self.base[st.output] - self.base[st.inputs[0]]
+            self.ops.append(("lay", st.output, st.inputs[0], vec, self._param(seg_mm + self.carried.get(st.output, 0.0)),
+                             self._param(dir_rad)))
+        elif st.op == "intersect" and li + 1 < len(lines) and len(st.inputs) == 2:
+            l1, l2 = lines[li], lines[li + 1]
+            li += 2
+            self._li = li
+            p1, p2 = complex(*l1.point), complex(*l2.point)
+            i1, i2 = st.inputs
+            ok = (i1 in self.base and i2 in self.base and abs(self.base[i1] - p1) < 1e-6 * (1 + abs(p1))
+                  and abs(self.base[i2] - p2) < 1e-6 * (1 + abs(p2)))
+            if not ok or st.output in degenerate:
+                self.ops.append(("keep", st.output))
+                return
+            self.ops.append(("cut", st.output, i1, complex(*l1.direction), i2, complex(*l2.direction),
+                             self._param(dir_rad), self._param(dir_rad)))
+        elif st.op == "similarity":
+            op = self._similarity(st.text, st.output, scene, kin, k)
+            if op is not None:
+                self.ops.append(op)
 
     def _param(self, size: float) -> int:
         self.sizes.append(size)
@@ -509,9 +619,19 @@ class _Propagation:
         known = []
         for pname in link.points:
             lab = self.plan.pole if pname in scene.frame_points else pname.lower()
-            if lab == out or lab not in self.base:
+            if lab == out or lab not in self.base or lab not in self._done:
                 continue
             known.append((lab, complex(kin.point_on(lid, link.points[pname])[0][k])))
+        # images of other links' points under this link, already drawn (a3: A of the rocker 3
+        # under the block, found by intersection; it anchors the rocker's image)
+        for lab in self._done:
+            m = re.fullmatch(r"([a-z][a-z0-9]*?)(\d+)", lab)
+            if not m or int(m.group(2)) != lid or lab == out or lab not in self.base:
+                continue
+            pname = m.group(1).upper()
+            if pname in link.points or not scene.point_links(pname):
+                continue
+            known.append((lab, complex(kin.point(pname)[0][k])))
         if len(known) < 2:
             return ("keep", out)
         (la, Pa), (lb, Pb) = max(itertools.combinations(known, 2), key=lambda c: abs(c[0][1] - c[1][1]))
@@ -847,6 +967,20 @@ def _duplicates(cf: CheckFile, pos: StudentPosition) -> list[Finding]:
 _POSITION_FREE = re.compile(r"^(m|I|G)_\d+$|^l_\w+$")
 
 
+def _position_free(scene: Any, q: str) -> bool:
+    """A mass, an inertia, or the length between two points of one rigid link; not the
+    distance of a block from its rocker's pivot (l_CA of a shaper changes with the angle)."""
+    if not _POSITION_FREE.match(q):
+        return False
+    if not q.startswith("l_"):
+        return True
+    pts = _points(q[2:])
+    if len(pts) != 2:
+        return True
+    return any(set(pts) <= set(link.points) for link in scene.links.values()) \
+        or set(pts) <= set(scene.frame_points)
+
+
 def _across_positions(cf: CheckFile) -> list[Finding]:
     """Masses, inertias, lengths do not depend on the crank angle."""
     out = []
@@ -854,7 +988,7 @@ def _across_positions(cf: CheckFile) -> list[Finding]:
     seen: dict[str, list[tuple[float, Written]]] = {}
     for pos in cf.positions:
         for w in pos.values:
-            if _POSITION_FREE.match(w.quantity):
+            if _position_free(cf.scene, w.quantity):
                 seen.setdefault(w.quantity, []).append((pos.phi_deg, w))
     for q, ws in seen.items():
         phis = {p for p, _ in ws}
@@ -877,19 +1011,34 @@ class _Input:
     half: float = 0.0  # the rounding of the figure as written, in the value's unit
 
 
+def _aliases(q: str) -> list[str]:
+    """q and the names of the same magnitude with the two points swapped (v_A2A3 = v_A3A2,
+    a^k_A3A2 = a^k_A2A3)."""
+    m = re.fullmatch(r"(v_|a\^[kr]_)([A-Za-z0-9]+)", q)
+    if m:
+        pts = _points(m.group(2))
+        if len(pts) == 2:
+            return [q, f"{m.group(1)}{pts[1]}{pts[0]}"]
+    return [q]
+
+
+def _written_any(pos: StudentPosition, q: str, kind: str) -> list[Written]:
+    return [w for name in _aliases(q) for w in pos.written(name, kind)]
+
+
 def _candidates(ctx: Context, pos: StudentPosition, q: str) -> list[_Input]:
     """What the student has for q at this position: measured/μ first, then values; the exact
     value (marked) when the student wrote nothing for it."""
     out = []
     k = pos.index
     ex = exact_value(ctx, k, q)
-    for w in pos.written(q, "measured"):
+    for w in _written_any(pos, q, "measured"):
         if ex is not None and ex.mm_per_unit:
             out.append(_Input(w.value / ex.mm_per_unit, f"{_typed(w)} mm{_at(w)} / {ex.mm_per_unit:g}", True,
                               w.half_ulp / ex.mm_per_unit))
-    for w in pos.written(q, "value"):
+    for w in _written_any(pos, q, "value"):
         out.append(_Input(w.value, f"{_typed(w)}{_at(w)}", True, w.half_ulp))
-    if not out and _POSITION_FREE.match(q):  # a length or a mass written at another position
+    if not out and _position_free(ctx.scene, q):  # a length or a mass written at another position
         for other in ctx.cf.positions:
             for w in other.written(q, "value"):
                 out.append(_Input(w.value, f"{_typed(w)}{_at(w)}", True, w.half_ulp))
@@ -935,6 +1084,7 @@ def relations(ctx: Context) -> list[Relation]:
             for sym in ("v", "a"):
                 rel.append(Relation(f"{sym}_{name}{P}", (f"{sym}_{Q}{P}",), lambda x, r=ratio: r * x,
                                     f"({_fmt(ratio)})·{sym}_{Q}{P} (similarity: l_{P}{name}/l_{P}{Q})"))
+    rel += _coriolis_relations(ctx)
     got = ctx.forces()
     if got is not None:
         loads, _ = got
@@ -952,6 +1102,35 @@ def relations(ctx: Context) -> list[Relation]:
         rel.append(Relation("F_bal_diff_pct", ("F_bal_lever", "F_bal"), lambda lv, kn: 100 * abs(lv - kn) / kn,
                             "100·|F_bal_lever − F_bal|/F_bal"))
     return rel
+
+
+def _coriolis_relations(ctx: Context) -> list[Relation]:
+    """a^k = 2·ω·v_r for every Coriolis segment of the plans: ω of the link carrying the guide
+    (the block turns with it), v_r the sliding segment of the velocity plan (either order)."""
+    out: list[Relation] = []
+    scene = ctx.scene
+    seen: set[str] = set()
+    for pp in ctx.plans.values():
+        if pp.velocity is None or pp.acceleration is None:
+            continue
+        sliding = {s.label for s in pp.velocity.segments if s.kind == "sliding"}
+        for sg in pp.acceleration.segments:
+            m = re.fullmatch(r"a\^k_(\w+)", sg.label)
+            if sg.kind != "coriolis" or not m or sg.label in seen:
+                continue
+            toks = re.findall(r"[A-Z][a-z]*\d*", m.group(1))
+            if len(toks) != 2:
+                continue
+            v_lab = next((f"v_{a}{b}" for a, b in (toks, toks[::-1]) if f"v_{a}{b}" in sliding), None)
+            nums = [re.fullmatch(r"[A-Z][a-z]*(\d+)", x) for x in toks]
+            links = [int(n.group(1)) for n in nums if n and int(n.group(1)) in scene.links]
+            if v_lab is None or not links:
+                continue
+            links.sort(key=lambda lid: (len(scene.links[lid].axis) != 2, lid))  # the rocker first
+            seen.add(sg.label)
+            out.append(Relation(sg.label, (f"omega_{links[0]}", v_lab), lambda w, v: 2 * abs(w) * abs(v),
+                                f"2·ω{links[0]}·{v_lab} (Coriolis)"))
+    return out
 
 
 def _relations(ctx: Context, pos: StudentPosition) -> list[Finding]:
@@ -976,7 +1155,7 @@ def _relations(ctx: Context, pos: StudentPosition) -> list[Finding]:
                            f"{ex.unit} gives {_fmt(want)} {ex.unit}",
                            pos.phi_deg, (w.quantity,), (w.where, m.where), (w.field, m.field)))
     for r in relations(ctx):
-        targets = pos.written(r.target, "value") or pos.written(r.target, "measured")
+        targets = _written_any(pos, r.target, "value") or _written_any(pos, r.target, "measured")
         if not targets:
             continue
         cands = [_candidates(ctx, pos, q) for q in r.inputs]

@@ -38,7 +38,11 @@ A check file is TOML, ``format = 1``::
 
 A value may be a number, ``{ value = x, where = "section" }`` or an array of those
 (the same quantity written more than once).  Quantity names follow the plans:
-``v_B``, ``v_BA``, ``omega_2``, ``a_BA^n``, ``a_BA^τ`` (``^t`` accepted), ``eps_2``,
+``v_B``, ``v_BA``, ``omega_2``, ``a_BA^n``, ``a_BA^τ`` (``^t`` accepted), ``eps_2``;
+a point of a link that slides on another is the point's name and the link's number
+(``v_A3``: A of the rocker 3 under the block 2; ``v_A2A3``: the block's sliding velocity
+along the slot); Coriolis and sliding components are ``a^k_A3A2`` and ``a^r_A3A2`` (also
+``a_A3A2^k``; either order of the two points);
 ``Phi_2``, ``M_Phi_2``, ``m_2``, ``I_2``, ``G_2``, ``P_3``, ``F_12`` (``F12``),
 ``F_12^τ``, ``F_bal``, ``F_bal_lever``, ``F_bal_diff_pct``, ``l_AB``, ``h_<name>``.
 Greek letters (ω2, ε2, Φ2, MΦ2) are accepted.  Whether the scene has a quantity
@@ -113,7 +117,7 @@ class CheckFile:
 
 _GREEK = (("ω", "omega_"), ("ε", "eps_"), ("МΦ", "M_Phi_"), ("MΦ", "M_Phi_"), ("Φ", "Phi_"),
           ("φ", "Phi_"))
-_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*(\^(n|τ|k|r))?$")
+_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*(\^(n|τ|k|r))?$|^a\^(k|r)_[A-Z][A-Za-z0-9]*$")
 
 
 def canonical(name: str) -> str:
@@ -124,6 +128,9 @@ def canonical(name: str) -> str:
             q = latin + q[len(g):]
     q = q.replace("__", "_")
     q = re.sub(r"\^t$", "^τ", q)
+    # Coriolis and sliding components: a^k_A3A2 (also written a_A3A2^k, a_k_A3A2)
+    q = re.sub(r"^a_([A-Z][A-Za-z0-9]*)\^(k|r)$", r"a^\2_\1", q)
+    q = re.sub(r"^a_(k|r)_([A-Z][A-Za-z0-9]*)$", r"a^\1_\2", q)
     q = re.sub(r"^(a_[A-Z]\w*?)_(n|t|τ)$", lambda m: m.group(1) + "^" + ("τ" if m.group(2) != "n" else "n"), q)
     m = re.fullmatch(r"(omega|eps|Phi|M_Phi|m|I|G|P)_?S?(\d+)", q)
     if m:

@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -132,3 +133,66 @@ def test_plans_does_not_import_renderers():
     src = Path(bench.__file__).read_text(encoding="utf-8")
     for name in ("svgwrite", "cairosvg", "drawings"):
         assert f"import {name}" not in src and f"from {name}" not in src
+
+
+SAMPLE_FILES = sorted((Path(__file__).resolve().parent.parent / "samples").glob("*.toml"))
+
+
+@pytest.mark.parametrize("path", SAMPLE_FILES, ids=lambda p: p.stem)
+def test_draftsman_without_error_draws_the_exact_plans(path):
+    """With a perfect pencil and protractor the Monte Carlo's construction (every dyad kind,
+    Coriolis terms laid off from ω and v_r read off the drawn velocity plan) reads the exact
+    analysis at every position: a wrong sense of a^k or a wrong line would show here."""
+    from plans.scene import load_scene
+
+    sc = load_scene(path)
+    kin = kinematics.solve(sc, order=2)
+    perfect = bench.DraftsmanModel(0.0, 0.0)
+    for k, phi in enumerate(sc.driver.phis_deg):
+        res = bench.draftsman_errors(sc, phi, "A1", perfect, samples=2, seed=0)
+        for q, e in res.items():
+            ref = abs(sc.driver.omega) * 0.01 if q[0] == "v" else sc.driver.omega**2 * 0.01
+            if q.startswith(("omega_", "eps_")):
+                lid = int(q.split("_")[1])
+                want = float((kin.omega(lid) if q[0] == "o" else kin.eps(lid))[k])
+                assert e.exact == pytest.approx(want, rel=1e-12, abs=1e-12 * abs(sc.driver.omega) ** 2)
+                ref = abs(want) + 1e-6 * sc.driver.omega**2
+            elif re.fullmatch(r"[va]_[A-Z][a-z]?\d?", q) and q[2:] in kin.point_names():
+                r, v, a = kin.point(q[2:])
+                assert e.exact == pytest.approx(abs(complex((v if q[0] == "v" else a)[k])), rel=1e-12, abs=1e-12)
+            assert abs(e.mean) <= 1e-9 * max(abs(e.exact), ref), (path.stem, phi, q, e.exact, e.mean)
+            assert e.max_abs <= 1e-9 * max(abs(e.exact), ref)
+
+
+@pytest.mark.parametrize("name", ["shaper", "six_bar", "scotch_yoke"])
+def test_draftsman_covers_coriolis_samples(name):
+    from plans.scene import load_scene
+
+    sc = load_scene(Path(__file__).resolve().parent.parent / "samples" / f"{name}.toml")
+    a1 = bench.draftsman_errors(sc, 45.0, "A1", samples=1500, seed=5)
+    a4 = bench.draftsman_errors(sc, 45.0, "A4", samples=1500, seed=5)
+    assert set(a1) == set(a4)
+    assert any(q.startswith("a^r_") for q in a1) and any(re.fullmatch(r"v_[A-Z]\d[A-Z]\d", q) for q in a1)
+    if name != "scotch_yoke":  # the yoke translates: no Coriolis term
+        assert any(q.startswith("a^k_") for q in a1)
+    for q in a1:
+        assert 1e-4 < a1[q].p95_rel < 0.05, (q, a1[q].p95_rel)
+        assert a1[q].p95_rel < a4[q].p95_rel, q
+        assert abs(a1[q].mean) < 3 * a1[q].std + 1e-12, q
+    tol = bench.expected_errors(sc, 45.0, "A1", samples=300)
+    assert set(tol) == set(a1)
+
+
+def test_coriolis_error_carries_the_velocity_plan_error():
+    """a^k = 2 ω v_r is laid off from figures read off the drawn velocity plan: a pencil error
+    alone (no protractor) still spreads it, and more than the pencil's width on the plan."""
+    from plans.scene import load_scene
+
+    sc = load_scene(Path(__file__).resolve().parent.parent / "samples" / "shaper.toml")
+    pencil = bench.draftsman_errors(sc, 45.0, "A1", bench.DraftsmanModel(0.25, 0.0), samples=1500, seed=2)
+    protractor = bench.draftsman_errors(sc, 45.0, "A1", bench.DraftsmanModel(0.0, 0.25), samples=1500, seed=2)
+    ak = "a^k_A3A2"
+    assert pencil[ak].p95_mm > 0.25  # laid off ±0.25 plus ω and v_r read with error
+    assert protractor[ak].p95_abs > 0  # the velocity plan's lines are drawn with the protractor
+    # the sense of a^k decides where a3 lands: the direction error moves a_A3
+    assert protractor["a_A3"].p95_mm > 0.05
