@@ -156,12 +156,14 @@ class _Builder:
         self.anchor: dict[int, tuple[str, complex]] = {snap.scene.frame: (self.pole, 0j)}
         self.labels: dict[tuple[int, str], str] = {}
         self.ref = 0.0  # the known vector's value: set when it is laid off
+        self.size = 0.0  # the plan's extent so far (mm from the pole)
 
     # -- points and images
     def add(self, label: str, xy: complex) -> None:
         if label not in self.pts:
             self.order.append(label)
         self.pts[label] = xy
+        self.size = max(self.size, abs(xy))
 
     def image(self, link: int, name: str) -> complex:
         """Image of point ``name`` of ``link`` by the similarity theorem."""
@@ -211,7 +213,7 @@ class _Builder:
         (the exact point) where they are parallel or nearly so."""
         (p1, d1), (p2, d2) = l1, l2
         s = cross(d1, d2)
-        extent = max(abs(p1), abs(p2), max((abs(z) for z in self.pts.values()), default=0.0), 1e-300)
+        extent = max(abs(p1), abs(p2), self.size, 1e-300)
         if abs(s) <= NEAR_PARALLEL_SIN:
             gap = abs(cross(d1, p2 - p1))
             if abs(s) <= LOCK_SIN and gap > COINCIDE_REL * extent:
@@ -222,10 +224,8 @@ class _Builder:
                                    f"the exact point is taken")
             return exact_xy
         reach = 2.0 * (abs(p1 - p2) + extent) / abs(s) + extent
-        a = shapely.linestrings([[(p1 - reach * d1).real, (p1 - reach * d1).imag],
-                                 [(p1 + reach * d1).real, (p1 + reach * d1).imag]])
-        b = shapely.linestrings([[(p2 - reach * d2).real, (p2 - reach * d2).imag],
-                                 [(p2 + reach * d2).real, (p2 + reach * d2).imag]])
+        ends = [(p1 - reach * d1, p1 + reach * d1), (p2 - reach * d2, p2 + reach * d2)]
+        a, b = shapely.linestrings([[(z.real, z.imag) for z in pair] for pair in ends])
         x = shapely.intersection(a, b)
         if x.is_empty or x.geom_type != "Point":  # pragma: no cover - guarded by the test above
             self.degenerate.append(f"{out}: no single intersection; the exact point is taken")
