@@ -11,6 +11,7 @@ from plans.kinematics import Kinematics, solve
 from plans.scene import Scene, load_scene
 
 from .fonts import metrics
+from .overview import legend_kinds, legend_panel, positions_panel
 from .panels import (
     Panel,
     auto_length_scale,
@@ -71,8 +72,14 @@ def build_panels(scene: Scene, spec: SheetSpec) -> tuple[list[Panel], float]:
     forces = _force_panels(scene, kin, spec, ks, plans_at, mu_l) if (
         scene.wants("force_polygons") or scene.wants("lever")) else {}
     panels: list[Panel] = []
+    # Many positions: one plan of positions (all of them overlaid) and schemes of its own
+    # only for the positions studied in detail (listed, or the first two).
+    overlay = kin.n > 1 and scene.wants("positions") and _wants(spec, "positions")
+    schemes = set(ks if spec.positions is not None or not overlay else ks[:2])
+    if overlay:
+        panels.append(positions_panel(scene, kin, mu_l, lang, sorted(schemes), strokes, spec.trace))
     for k in ks:
-        if scene.wants("positions") and _wants(spec, "scheme"):
+        if scene.wants("positions") and _wants(spec, "scheme") and k in schemes:
             panels.append(scheme_panel(scene, kin, k, mu_l, lang, strokes))
         pp = plans_at.get(k)
         if pp is not None:
@@ -85,6 +92,9 @@ def build_panels(scene: Scene, spec: SheetSpec) -> tuple[list[Panel], float]:
             extra = forces.get(("table", k), [])
             panels.append(table_panel(_rows(scene, pp.readings), lang, style, float(kin.phi_deg[k]),
                                       extra=extra))
+    kinds = legend_kinds(panels)
+    if _wants(spec, "legend") and any(k not in ("trace",) for k in kinds):
+        panels.append(legend_panel(kinds, lang))
     return panels, mu_l
 
 

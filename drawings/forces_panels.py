@@ -243,7 +243,8 @@ def group_panel(scene, kin, gf, k: int, mu_l: float, lang: str, style: str) -> P
         rec.line(T.z(P), T.z(foot), ARM, f"{pid}-arm-{ident(label)}")
         rec.line(T.z(r), T.z(foot), Style(width=0.18, stroke="#777", dash=(4.0, 1.0, 1.0, 1.0)))
         mid = T.z((P + foot) / 2)
-        lab = placer.place(f"h_{{{force_label(label, lang)}}}".replace("_{", "_{", 1), mid, SMALL_SIZE, gap=0.6)
+        sub = re.sub(r"[_^{}]", "", force_label(label, lang))  # one level of script: h_{Φ2}, not h_{Φ_2}
+        lab = placer.place(f"h_{{{sub}}}", mid, SMALL_SIZE, gap=0.6)
         rec.text(lab, "label arm", f"{pid}-arm-{ident(label)}-label", fill="#555")
     for f in loads:
         _force_at(rec, placer, T, complex(f.r[k]), complex(f.F[k]), mu_f, force_label(f.label, lang), LOAD,

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 WORDS: dict[str, tuple[str, str]] = {
     "scheme": ("Кинематическая схема", "Kinematic scheme"),
+    "positions": ("План положений механизма", "Plan of positions"),
     "velocity": ("План скоростей", "Velocity plan"),
     "acceleration": ("План ускорений", "Acceleration plan"),
     "table": ("Результаты", "Results"),

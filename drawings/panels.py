@@ -32,7 +32,7 @@ class Panel:
     """A finished figure: ``prims`` in panel mm with the box at (0, 0)–(width, height)."""
 
     pid: str  # "scheme-45", "velocity-45", ...
-    kind: str  # scheme | velocity | acceleration | table | group | group_polygon | crank | lever
+    kind: str  # positions | scheme | velocity | acceleration | table | group | polygon | crank | lever | legend
     phi: float | None
     prims: tuple[Prim, ...]
     width: float

@@ -12,6 +12,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
+import numpy as np
+
 from plans.errors import InputError
 
 from .backend import Prim, Recording, Style, replay
@@ -32,6 +34,7 @@ MARGIN = 5.0
 TB_W, TB_H = 185.0, 55.0
 GAP = 6.0  # between panels, and between panels and the frame
 SHEET_FORMATS = ("A1", "A2", "A3", "A4")
+Box = tuple[float, float, float, float]
 
 
 @dataclass(frozen=True, slots=True)
@@ -61,8 +64,13 @@ class SheetSpec:
         date = "21.11.26"             # written as given (no clock: same scene, same bytes)
         first_sheet = 1               # number of this drawing's first sheet
         total_sheets = 4              # "Sheets" cell (default: first_sheet - 1 + sheets drawn)
-        panels = ["scheme", "velocity", "acceleration", "table", "group", "crank", "lever"]
-        positions = [45, 0]           # crank angles to draw (default: all of the scene's)
+        panels = ["positions", "scheme", "velocity", "acceleration", "table", "group", "crank", "lever",
+                  "legend"]           # kinds to draw (default: all the scene's outputs ask for)
+        positions = [45, 0]           # crank angles studied in detail: their schemes, plans, forces
+                                      # and tables (default: plans etc. at every position of the
+                                      # scene, schemes at the first two)
+        trace = ["S2"]                # points whose trajectory the plan of positions traces
+                                      # (default: the centres of mass of the connecting rods)
         [[sheet.pins]]                # fix a panel: top-left corner in mm from the paper's corner
         panel = "velocity-45"
         sheet = 1
@@ -86,6 +94,7 @@ class SheetSpec:
     total_sheets: int | None = None
     panels: tuple[str, ...] | None = None  # kinds to draw (subset of what the scene asks)
     positions: tuple[float, ...] | None = None  # crank angles to draw (subset of the scene's)
+    trace: tuple[str, ...] | None = None  # trajectories on the plan of positions
     pins: tuple[Pin, ...] = ()
 
     @property
@@ -94,10 +103,10 @@ class SheetSpec:
         return (w, h) if self.orientation == "landscape" else (h, w)
 
 
-PANEL_KINDS = ("scheme", "velocity", "acceleration", "table", "group", "crank", "lever")
+PANEL_KINDS = ("positions", "scheme", "velocity", "acceleration", "table", "group", "crank", "lever", "legend")
 _KEYS = {"format", "orientation", "language", "title", "designation", "subtitle", "author",
          "checked_by", "approved_by", "group", "organization", "date", "first_sheet", "total_sheets",
-         "panels", "positions", "pins"}
+         "panels", "positions", "trace", "pins"}
 
 
 def sheet_spec(raw: dict[str, Any], path: str, default_title: str = "", **override: Any) -> SheetSpec:
@@ -152,6 +161,13 @@ def sheet_spec(raw: dict[str, Any], path: str, default_title: str = "", **overri
             raise InputError("expected crank angles in degrees, e.g. positions = [45, 0]", file=path,
                              field="sheet.positions")
         out["positions"] = tuple(float(x) for x in v)
+    if "trace" in data:
+        v = data["trace"]
+        v = v if isinstance(v, list) else [v]
+        if not all(isinstance(x, str) and x for x in v):
+            raise InputError("expected point names, e.g. trace = [\"S2\"] (or [] for none)", file=path,
+                             field="sheet.trace")
+        out["trace"] = tuple(v)
     if "pins" in data:
         pins = []
         v = data["pins"]
@@ -341,51 +357,69 @@ def _grow(b: Sequence[float], g: float) -> tuple[float, float, float, float]:
     return (b[0] - g, b[1] - g, b[2] + g, b[3] + g)
 
 
-def _try_place(panel: Panel, area: tuple[float, float, float, float],
-               taken: list[tuple[float, float, float, float]]) -> tuple[float, float] | None:
-    """Top-left-most free spot for ``panel`` (candidates at the area's and boxes' edges)."""
-    xs = sorted({area[0]} | {b[2] + GAP for b in taken})
-    ys = sorted({area[1]} | {b[3] + GAP for b in taken})
-    best = None
-    for y in ys:
-        for x in xs:
-            box = (x, y, x + panel.width, y + panel.height)
-            if box[2] > area[2] + 1e-9 or box[3] > area[3] + 1e-9:
-                continue
-            if any(_overlaps(box, _grow(t, GAP - 1e-9)) for t in taken):
-                continue
-            key = (y, x)
-            if best is None or key < best[0]:
-                best = (key, (x, y))
-        if best is not None:
-            break
-    return None if best is None else best[1]
+def _free_spots(w: float, h: float, area: tuple[float, float, float, float],
+                taken: Sequence[tuple[float, float, float, float]]) -> np.ndarray:
+    """Every free top-left corner for a w × h box (k×2, may be empty): candidates where the
+    box touches the area's edges or sits GAP from a box already there, on both sides."""
+    T = np.asarray(taken, dtype=float).reshape(-1, 4)
+    xs = np.unique(np.concatenate([[area[0], area[2] - w], T[:, 2] + GAP, T[:, 0] - GAP - w]))
+    ys = np.unique(np.concatenate([[area[1], area[3] - h], T[:, 3] + GAP, T[:, 1] - GAP - h]))
+    xs = xs[(xs >= area[0] - 1e-9) & (xs + w <= area[2] + 1e-9)]
+    ys = ys[(ys >= area[1] - 1e-9) & (ys + h <= area[3] + 1e-9)]
+    if not len(xs) or not len(ys):
+        return np.zeros((0, 2))
+    X, Y = (a.ravel() for a in np.meshgrid(xs, ys))
+    if len(T):
+        g = GAP - 1e-9
+        hit = ((X[:, None] < T[None, :, 2] + g) & (T[None, :, 0] - g < X[:, None] + w)
+               & (Y[:, None] < T[None, :, 3] + g) & (T[None, :, 1] - g < Y[:, None] + h)).any(axis=1)
+        X, Y = X[~hit], Y[~hit]
+    return np.stack([X, Y], axis=1)
 
 
-def _pack_band(blk: Sequence[Panel], area: tuple[float, float, float, float],
-               taken: list[tuple[float, float, float, float]], placed: list[tuple[Panel, float, float]],
-               ) -> tuple[list[tuple[Panel, float, float]], list[Panel]] | None:
-    """Pack ``blk`` below everything already on the sheet; returns (placed, left over)."""
-    top = max((y + q.height + GAP for q, _, y in placed), default=area[1])
-    band = list(taken) + ([(area[0], area[1], area[2], top - GAP)] if placed else [])
-    out: list[tuple[Panel, float, float]] = []
-    rest: list[Panel] = []
-    for p in blk:
-        if rest:
-            rest.append(p)
-            continue
-        spot = _try_place(p, area, band)
-        if spot is None:
-            rest.append(p)
-            continue
-        out.append((p, spot[0], spot[1]))
-        band.append((spot[0], spot[1], spot[0] + p.width, spot[1] + p.height))
-    return out, rest
+def _best_spot(panel: Panel, area: tuple[float, float, float, float],
+               taken: Sequence[tuple[float, float, float, float]],
+               near: Sequence[tuple[float, float, float, float]] = (),
+               min_y: float = -math.inf) -> tuple[float, float] | None:
+    """Where ``panel`` goes on a sheet: the free spot with the lowest bottom edge (a skyline
+    kept low), then the leftmost; a spot next to ``near`` (the panels of the same crank
+    angle) counts as lower by the panel's height (at most 60 mm), so one position stays
+    together where it fits; no spot above ``min_y`` (the top of the previous position's
+    panels), so the positions still read top to bottom."""
+    spots = _free_spots(panel.width, panel.height, area, taken)
+    spots = spots[spots[:, 1] >= min_y - 1e-9]
+    if not len(spots):
+        return None
+    X, Y = spots[:, 0], spots[:, 1]
+    bottom = Y + panel.height
+    cost = bottom + 0.05 * X
+    if near:
+        N = np.asarray(near, dtype=float)
+        cx, cy = X + panel.width / 2, Y + panel.height / 2
+        dx = np.maximum(0.0, np.maximum(N[None, :, 0] - (cx[:, None] + panel.width / 2),
+                                        (cx[:, None] - panel.width / 2) - N[None, :, 2]))
+        dy = np.maximum(0.0, np.maximum(N[None, :, 1] - (cy[:, None] + panel.height / 2),
+                                        (cy[:, None] - panel.height / 2) - N[None, :, 3]))
+        touching = (np.hypot(dx, dy) <= 2 * GAP).any(axis=1)
+        cost = cost - touching * min(panel.height, 60.0)
+    i = int(np.lexsort((X, Y, cost))[0])
+    return float(X[i]), float(Y[i])
 
 
 def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str = "",
             path: str = "<scene>") -> list[Sheet]:
-    """Place panels on as many sheets of ``spec.format`` as they need (pins first)."""
+    """Place panels on as few sheets of ``spec.format`` as they need (pins first).
+
+    Panels come ordered by crank angle; within one angle the biggest go first.  Each goes
+    to the free spot of the current sheet that keeps the skyline lowest (next to its own
+    position's panels when that costs little, never above the previous position), so the
+    next position fills what the previous one left; a panel that does not fit waits while
+    the rest of its position is tried, and opens the next sheet when its position is done.
+    The same is tried with every position that does not fit whole starting a fresh sheet,
+    and with the panels of a position in reading order instead of biggest first; the first
+    of the fewest sheets wins (whole positions, reading order).  The legend sits above the
+    title block of sheet 1; spare height is shared out between the rows (:func:`_spread`).
+    """
     W, H = spec.size
     area = usable(W, H)
     tb = (W - MARGIN - TB_W, H - MARGIN - TB_H, W - MARGIN, H - MARGIN)
@@ -403,6 +437,10 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str = "",
         sheets.append([])
         taken.append([_grow(tb, 0.0)])
 
+    def put(s: int, p: Panel, x: float, y: float) -> None:
+        sheets[s].append((p, x, y))
+        taken[s].append((x, y, x + p.width, y + p.height))
+
     new_sheet()
     pinned = {pin.panel for pin in spec.pins}
     for pin in spec.pins:
@@ -417,49 +455,116 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str = "",
         if any(_overlaps(box, t) for t in taken[pin.sheet - 1]):
             raise InputError(f"pinned panel {pin.panel} overlaps another pinned panel or the title block",
                              file=path, field="sheet.pins")
-        sheets[pin.sheet - 1].append((p, pin.x, pin.y))
-        taken[pin.sheet - 1].append(box)
-    # Panels of one crank angle form a band across the sheet, read left to right and top
-    # to bottom; a band that does not fit under the previous one starts a new sheet, and a
-    # band taller than a sheet continues on the next.
-    blocks: list[list[Panel]] = []
-    for p in panels:
-        if p.pid in pinned:
-            continue
-        if not blocks or blocks[-1][0].phi != p.phi:
+        put(pin.sheet - 1, p, pin.x, pin.y)
+    queue = [p for p in panels if p.pid not in pinned]
+    legend = next((p for p in queue if p.kind == "legend"), None)
+    if legend is not None:  # notes go above the title block
+        x, y = area[2] - legend.width, tb[1] - GAP - legend.height
+        box = (x, y, x + legend.width, y + legend.height)
+        if y >= area[1] and not any(_overlaps(box, _grow(t, GAP - 1e-9)) for t in taken[0]):
+            put(0, legend, x, y)
+            queue.remove(legend)
+    blocks: list[list[Panel]] = []  # one per crank angle (drawing-wide panels alone)
+    for p in queue:
+        if not blocks or p.kind in _SINGLE or blocks[-1][0].kind in _SINGLE or blocks[-1][0].phi != p.phi:
             blocks.append([])
         blocks[-1].append(p)
-    for blk in blocks:
-        s0 = len(sheets) - 1
-        trial = _pack_band(blk, area, taken[s0], sheets[s0])
-        if trial is None or (trial[1] and sheets[s0]):
-            if sheets[s0]:
-                new_sheet()
-            s0 = len(sheets) - 1
-            trial = _pack_band(blk, area, taken[s0], sheets[s0])
-        assert trial is not None
-        placed_now, rest = trial
-        sheets[s0].extend(placed_now)
-        taken[s0].extend((x, y, x + q.width, y + q.height) for q, x, y in placed_now)
-        while rest:
-            new_sheet()
-            s0 = len(sheets) - 1
-            trial = _pack_band(rest, area, taken[s0], sheets[s0])
-            assert trial is not None
-            placed_now, rest2 = trial
-            if not placed_now:  # pragma: no cover - _check_fits guards this
-                raise InputError(f"panel {rest[0].pid} does not fit", file=path, field="sheet.format")
-            sheets[s0].extend(placed_now)
-            taken[s0].extend((x, y, x + q.width, y + q.height) for q, x, y in placed_now)
-            rest = rest2
+
+    def pack(whole: bool, biggest: bool) -> list[list[tuple[Panel, float, float]]]:
+        """Greedy fill; ``whole``: a position that does not fit on the current sheet in full
+        starts on a fresh one (so each position stays on one sheet where it can);
+        ``biggest``: the biggest panels of a position first, else in the reading order
+        (scheme, plans, groups, crank, lever, tables)."""
+        shs = [list(s) for s in sheets]
+        tks = [list(t) for t in taken]
+        cur = 0
+        prev_top: dict[int, float] = {}  # sheet -> top of the last position placed on it
+
+        def fresh() -> None:
+            shs.append([])
+            tks.append([_grow(tb, 0.0)])
+
+        def fill(block: list[Panel], s: int, commit: bool) -> list[Panel]:
+            tk = tks[s] if commit else list(tks[s])
+            mine: list[Box] = []
+            waiting: list[Panel] = []
+            floor = prev_top.get(s, -math.inf)
+            for p in block:
+                spot = _best_spot(p, area, tk, mine, floor)
+                if spot is None:
+                    waiting.append(p)
+                    continue
+                box = (spot[0], spot[1], spot[0] + p.width, spot[1] + p.height)
+                tk.append(box)
+                mine.append(box)
+                if commit:
+                    shs[s].append((p, spot[0], spot[1]))
+            if commit and mine and block[0].phi is not None:
+                prev_top[s] = min(b[1] for b in mine)
+            return waiting
+
+        for block in blocks:
+            if biggest:
+                block = sorted(block, key=lambda p: -p.width * p.height)  # stable: kinds keep their order
+            if whole and shs[cur] and block[0].phi is not None and fill(block, cur, False):
+                cur += 1
+                if cur == len(shs):
+                    fresh()
+            while block:
+                waiting = fill(block, cur, True)
+                if waiting and len(waiting) == len(block) and not shs[cur]:  # pragma: no cover
+                    raise InputError(f"panel {waiting[0].pid} does not fit", file=path, field="sheet.format")
+                if waiting:
+                    cur += 1
+                    if cur == len(shs):
+                        fresh()
+                block = waiting
+        return shs
+
+    # the fewest sheets; among as few, positions whole and panels in reading order first
+    tries = [pack(whole, biggest) for whole, biggest in ((True, False), (True, True), (False, False), (False, True))]
+    sheets = min(tries, key=len)
+    fixed = pinned | ({legend.pid} if legend is not None and legend not in queue else set())
+    sheets = [_spread(placed, fixed, area, tb) for placed in sheets]
     out = []
-    for i, placed in enumerate(sheets):
-        order = {p.pid: k for k, p in enumerate(panels)}
+    order = {p.pid: k for k, p in enumerate(panels)}
+    for n, placed in enumerate(sheets):
         placed.sort(key=lambda t: order[t[0].pid])
-        sh = Sheet(spec, i + 1, len(sheets), W, H, placed, scale_text)
+        sh = Sheet(spec, n + 1, len(sheets), W, H, placed, scale_text)
         sh.render()
         out.append(sh)
     return out
+
+
+def _spread(placed: list[tuple[Panel, float, float]], fixed: set[str], area: Box, tb: Box,
+            most: float = 1.5) -> list[tuple[Panel, float, float]]:
+    """Share a sheet's spare height out between its rows: every free panel's top moves away
+    from the top of the area by one factor f (1 ≤ f ≤ ``most``).  Panels one above the
+    other only move apart, side by side ones keep their x, so nothing new overlaps; f stops
+    where a panel would reach the frame, the title block or a pinned panel."""
+    free = [(p, x, y) for p, x, y in placed if p.pid not in fixed and y > area[1] + 1e-9]
+    if not free:
+        return placed
+    stays = [(x, y, x + p.width, y + p.height) for p, x, y in placed if p.pid in fixed] + [tb]
+    top = area[1]
+
+    def ok(f: float) -> bool:
+        for p, x, y in free:
+            y2 = top + (y - top) * f
+            box = (x, y2, x + p.width, y2 + p.height)
+            if box[3] > area[3] + 1e-9 or any(_overlaps(box, _grow(s, GAP - 1e-9)) for s in stays):
+                return False
+        return True
+
+    f = most
+    while f > 1.0 and not ok(f):
+        f = max(1.0, f - 0.02)
+    if f <= 1.0 + 1e-9:
+        return placed
+    return [(p, x, y) if p.pid in fixed else (p, x, top + (y - top) * f) for p, x, y in placed]
+
+
+_SINGLE = ("positions", "legend")  # drawing-wide panels: a block of their own
 
 
 def _check_fits(p: Panel, spec: SheetSpec, path: str) -> None:

@@ -277,7 +277,10 @@ def test_panels_only_when_asked(tmp_path):
     p.write_text(text, encoding="utf-8")
     d = draw(p)
     kinds = {panel.kind for panel in d.panels}
-    assert kinds == {"scheme", "velocity", "table"}
+    assert kinds == {"positions", "scheme", "velocity", "table", "legend"}
+    legend = next(p for p in d.panels if p.kind == "legend")
+    shown = {p.eid[len("legend-"):-len("-text")] for p in legend.prims if p.op == "text" and p.eid.endswith("-text")}
+    assert shown == {"absolute", "relative", "construction", "trace"}  # only the styles drawn
 
 
 # --------------------------------------------------------------------------- bad input

@@ -1,0 +1,395 @@
+"""Drawing-wide panels: the plan of positions (the mechanism at every crank angle of the
+scene overlaid, positions numbered, a point's trajectory traced) and the legend of line
+styles.
+"""
+
+from __future__ import annotations
+
+import cmath
+import math
+from collections.abc import Iterable, Sequence
+
+import numpy as np
+
+from plans.errors import InputError, PlansError
+
+from .backend import Recording, Style, Transform
+from .common import Placer, arrow, dot, fmt, ident
+from .i18n import tr
+from .panels import (
+    BLOCK_H,
+    BLOCK_L,
+    JOINT_R,
+    LABEL_SIZE,
+    SMALL_SIZE,
+    VECTOR_STYLES,
+    Panel,
+    _support,
+    finish,
+    link_shape,
+    ratio_text,
+    scale_text,
+)
+from .text import layout, point_label
+
+POS_THIN = Style(width=0.25, stroke="#000", cls="position")
+POS_BOLD = Style(width=0.6, stroke="#000", cls="position bold")
+TRACE = Style(width=0.3, stroke="#a35200", dash=(4.0, 1.0, 1.0, 1.0, 1.0, 1.0), cls="trace")  # dash-dot-dot
+NUMBER_SIZE = SMALL_SIZE + 0.3
+
+
+def _points_at(scene, kin, k: int) -> dict[str, complex]:
+    """Every named point of the mechanism at position k (world m)."""
+    out: dict[str, complex] = dict(scene.frame_points)
+    for lid in sorted(scene.links):
+        for name, z in scene.links[lid].points.items():
+            out.setdefault(name, complex(kin.point_on(lid, z)[0][k]))
+    return out
+
+
+def _edges(scene, kin, k: int, pts: dict[str, complex]) -> tuple[list[tuple[str, str]], dict[str, complex]]:
+    """The mechanism at position k as a graph: link outlines, and the stretch of every moving
+    guide (a slot) from the carrier's points to the slider's pin."""
+    edges: list[tuple[str, str]] = []
+    extra: dict[str, complex] = {}
+    for lid in sorted(scene.links):
+        kind, names = link_shape(scene, lid)
+        if kind == "line":
+            edges.append((names[0], names[1]))
+        elif kind == "polygon":
+            edges.extend((names[i], names[(i + 1) % len(names)]) for i in range(len(names)))
+    for jt in scene.joints:
+        if jt.kind != "P" or jt.guide is None or jt.guide.link == scene.frame:
+            continue
+        g = jt.guide
+        u = cmath.exp(1j * (float(kin.theta(g.link)[k]) + g.angle))
+        G = complex(kin.point_on(g.link, g.origin)[0][k])
+        on_line: list[tuple[float, str]] = [(((pts[jt.point] - G) * u.conjugate()).real, jt.point)]
+        for n in scene.links[g.link].points:
+            if n.startswith("S") and n != scene.links[g.link].axis[0]:
+                continue
+            s = ((pts[n] - G) * u.conjugate()).real
+            foot = G + s * u
+            if abs(foot - pts[n]) > 1e-9 * max(abs(pts[n]), 1.0):
+                fid = f"{n}>{jt.point}"
+                extra[fid] = foot
+                edges.append((n, fid))
+                on_line.append((s, fid))
+            else:
+                on_line.append((s, n))
+        on_line.sort()
+        edges.extend((a[1], b[1]) for a, b in zip(on_line[:-1], on_line[1:], strict=False) if a[1] != b[1])
+    return edges, extra
+
+
+def _walks(edges: Iterable[tuple[str, str]]) -> list[list[str]]:
+    """One walk per connected part that draws every edge (a tree's edges twice: there and
+    back), deterministic: neighbours in sorted order."""
+    adj: dict[str, list[str]] = {}
+    for a, b in edges:
+        if a == b:
+            continue
+        adj.setdefault(a, []).append(b)
+        adj.setdefault(b, []).append(a)
+    for v in adj.values():
+        v.sort()
+    used: set[frozenset[str]] = set()
+    seen: set[str] = set()
+    out: list[list[str]] = []
+    for start in sorted(adj):
+        if start in seen:
+            continue
+        path: list[str] = [start]
+        stack = [(start, iter(adj[start]))]
+        seen.add(start)
+        while stack:
+            node, it = stack[-1]
+            nxt = next((v for v in it if frozenset((node, v)) not in used), None)
+            if nxt is None:
+                stack.pop()
+                if stack:
+                    path.append(stack[-1][0])
+                continue
+            used.add(frozenset((node, nxt)))
+            seen.add(nxt)
+            path.append(nxt)
+            stack.append((nxt, iter(adj[nxt])))
+        while len(path) > 2 and path[-1] == path[-3]:  # no need to walk back home
+            path.pop()
+        out.append(path)
+    return out
+
+
+def numbered_points(scene) -> list[str]:
+    """Where positions get their numbers: the crank pin, the pins between moving links and
+    the sliders' pins on fixed guides."""
+    d = scene.driver
+    out = [scene.links[d.link].axis[1]]
+    for jt in scene.joints:
+        moving = all(lid != scene.frame for lid in jt.links)
+        slider = jt.kind == "P" and jt.guide is not None and jt.guide.link == scene.frame
+        if (moving or slider) and jt.point not in out and jt.point not in scene.frame_points:
+            out.append(jt.point)
+    return out
+
+
+def default_trace(scene) -> list[str]:
+    """Centres of mass of the links hinged to the crank pin (the connecting rods), else the
+    first centre of mass of a moving link other than the crank."""
+    d = scene.driver
+    pin = scene.links[d.link].axis[1]
+
+    def centre(lid: int) -> str | None:
+        link = scene.links[lid]
+        return link.centre if link.centre and link.centre.startswith("S") else next(
+            (n for n in link.points if n.startswith("S")), None)
+
+    rods = [lid for lid in sorted(scene.links) if lid != d.link and pin in scene.links[lid].points]
+    out = [c for c in (centre(lid) for lid in rods) if c]
+    if not out:
+        out = [c for c in (centre(lid) for lid in sorted(scene.links) if lid != d.link) if c][:1]
+    return out
+
+
+def _trajectories(scene, names: Sequence[str], n: int = 145) -> dict[str, list[complex]]:
+    """World paths of ``names`` over one revolution (empty where the mechanism locks)."""
+    from plans.kinematics import solve
+
+    try:
+        kin = solve(scene, phi_deg=np.linspace(0.0, 360.0, n), order=0)
+    except PlansError:
+        return {}
+    out = {}
+    for name in names:
+        for lid in sorted(scene.links):
+            if name in scene.links[lid].points:
+                out[name] = [complex(z) for z in np.asarray(kin.point_on(lid, scene.links[lid].points[name])[0])]
+                break
+    return out
+
+
+def positions_panel(scene, kin, mu_l: float, lang: str, bold: Sequence[int], strokes: dict[str, tuple[float, float]],
+                    trace: Sequence[str] | None = None) -> Panel:
+    """The plan of positions: the mechanism at every crank angle of the scene, thin, the
+    positions in ``bold`` thick; positions numbered 0, 1, … at the crank pin and the other
+    moving pins; the trajectory of the ``trace`` points (default: the rods' centres of mass)
+    through them; the guides' axes and the fixed pivots once."""
+    pid = "positions"
+    T = Transform(mu_l)
+    rec = Recording()
+    placer = Placer()
+    frame = scene.frame
+    n = kin.n
+    names_all = {nm for lid in scene.links for nm in scene.links[lid].points}
+    trace = default_trace(scene) if trace is None else list(trace)
+    for t in trace:
+        if t not in names_all:
+            raise InputError(f"no point {t!r} on a moving link; points are {sorted(names_all)}", file=scene.path,
+                             field="sheet.trace")
+    at = [_points_at(scene, kin, k) for k in range(n)]
+    everything = [z for pts in at for z in pts.values()]
+    centre_world = sum(everything) / max(len(everything), 1)
+
+    # once: the axes of the fixed guides over the stroke, the crank pin's circle, the pivots
+    rec.begin(f"{pid}-frame", "frame")
+    for jt in scene.joints:
+        if jt.kind != "P" or jt.guide is None or jt.guide.link != frame:
+            continue
+        g = jt.guide
+        u = cmath.exp(1j * g.angle)
+        ss = [((pts[jt.point] - g.origin) * u.conjugate()).real for pts in at]
+        lo, hi = strokes.get(jt.name, (min(ss), max(ss)))
+        lo, hi = min(lo, *ss) - 10 / mu_l, max(hi, *ss) + 10 / mu_l
+        a0, a1 = T.z(g.origin + lo * u), T.z(g.origin + hi * u)
+        rec.line(a0, a1, Style(stroke="#333", width=0.18, dash=(6.0, 1.0, 1.0, 1.0), cls="axis"),
+                 f"{pid}-axis-{ident(jt.point)}")
+        placer.add_line([a0, a1])
+    d = scene.driver
+    crank = scene.links[d.link]
+    O = scene.frame_points.get(d.pivot, at[0][d.pivot])
+    pin = crank.axis[1]
+    r_pin = abs(at[0][pin] - O) * mu_l
+    c = T.z(O)
+    rec.circle(c, r_pin, Style(width=0.18, stroke="#555", cls="crank-circle"), f"{pid}-crank-circle")
+    placer.add_line([(c[0] + r_pin * math.cos(a), c[1] + r_pin * math.sin(a))
+                     for a in np.linspace(0.0, 2 * math.pi, 49)])
+    for jt in scene.joints:
+        if jt.kind == "R" and frame in jt.links and jt.point in scene.frame_points:
+            p = T.z(scene.frame_points[jt.point])
+            _support(rec, p, f"{pid}-support-{ident(jt.point)}")
+            placer.add_disc((p[0], p[1] + 4.0), 4.0)
+            placer.add_disc(p, JOINT_R + 0.3)
+    rec.end()
+
+    # trajectories
+    paths = _trajectories(scene, trace)
+    rec.begin(f"{pid}-traces", "traces")
+    for name in trace:
+        path = paths.get(name)
+        if not path:
+            continue
+        curve = [T.z(z) for z in path]
+        rec.polyline(curve, TRACE, f"{pid}-trace-{ident(name)}")
+        placer.add_line(curve)
+    rec.end()
+
+    # the mechanism at each position: one walk (polyline) per connected part
+    bold_set = set(bold)
+    for k in range(n):
+        pts = at[k]
+        edges, extra = _edges(scene, kin, k, pts)
+        where = {**pts, **extra}
+        st = POS_BOLD if k in bold_set else POS_THIN
+        rec.begin(f"{pid}-pos-{k}", "position bold" if k in bold_set else "position")
+        for w, walk in enumerate(_walks(edges)):
+            line = [T.z(where[v]) for v in walk]
+            rec.polyline(line, st, f"{pid}-pos-{k}" + (f"-{w}" if w else ""))
+            placer.add_line(line)
+        if k in bold_set:  # a position with its own scheme: slider blocks, as the scheme draws them
+            for jt in scene.joints:
+                if jt.kind != "P" or jt.guide is None:
+                    continue
+                th = 0.0 if jt.guide.link == frame else float(kin.theta(jt.guide.link)[k])
+                ang = -(th + jt.guide.angle)
+                c0 = T.z(pts[jt.point])
+                ux, uy = math.cos(ang), math.sin(ang)
+                hl, hh = BLOCK_L / 2, BLOCK_H / 2
+                corners = [(c0[0] + sx * hl * ux - sy * hh * uy, c0[1] + sx * hl * uy + sy * hh * ux)
+                           for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+                rec.polygon(corners, Style(width=0.5, cls="slider"), f"{pid}-slider-{ident(jt.point)}-{k}")
+                placer.add_poly(corners)
+        for name in trace:
+            if name in pts:
+                dot(rec, T.z(pts[name]), 0.45)
+                placer.add_disc(T.z(pts[name]), 0.6)
+        rec.end()
+    c = T.z(O)
+    rec.circle(c, JOINT_R, Style(width=0.35, fill="#fff", cls="joint"), f"{pid}-joint-{ident(d.pivot)}")
+
+    # the numbers: coincident positions of a point share one label ("1, 11")
+    rec.begin(f"{pid}-numbers", "numbers")
+    marks = numbered_points(scene)
+    for name in marks:
+        groups: dict[tuple[float, float], list[int]] = {}
+        for k in range(n):
+            p = T.z(at[k][name])
+            key = (round(p[0] / 0.3) * 0.3, round(p[1] / 0.3) * 0.3)
+            groups.setdefault(key, []).append(k)
+        for ks in groups.values():
+            p = T.z(at[ks[0]][name])
+            r = 0.7 if any(k in bold_set for k in ks) else 0.5
+            rec.circle(p, r, Style(width=0.2, fill="#fff", cls="mark"))
+            placer.add_disc(p, r + 0.2)
+    for name in marks:
+        groups = {}
+        for k in range(n):
+            p = T.z(at[k][name])
+            key = (round(p[0] / 0.3) * 0.3, round(p[1] / 0.3) * 0.3)
+            groups.setdefault(key, []).append(k)
+        for ks in groups.values():
+            p = T.z(at[ks[0]][name])
+            away = at[ks[0]][name] - (O if name == pin else centre_world)
+            L = abs(away) or 1.0
+            nums = [str(k) for k in ks]
+            if ks[0] == 0:  # the letter once, at position 0: A_0, B_0
+                nums[0] = f"{name}_0" if name.isalpha() else f"{point_label(name)} (0)"
+            text = ", ".join(nums)
+            lab = placer.place(text, p, NUMBER_SIZE, prefer=(away.real / L, -away.imag / L), gap=0.8)
+            rec.text(lab, "number", f"{pid}-n-{ident(name)}-{ks[0]}")
+    # the letters of the fixed pivots, the name of each traced point by its curve
+    for name in list(scene.frame_points) + [t for t in trace if t in paths]:
+        if name in scene.frame_points:
+            z = scene.frame_points[name]
+        else:
+            path = paths[name]
+            z = path[int(np.argmax([w.imag for w in path]))]
+        away = z - centre_world
+        L = abs(away) or 1.0
+        lab = placer.place(point_label(name), T.z(z), LABEL_SIZE, prefer=(away.real / L, -away.imag / L), gap=2.0)
+        rec.text(lab, "label" + (" trace" if name in trace else ""), f"{pid}-label-{ident(name)}",
+                 fill=(TRACE.stroke or "#000") if name in trace else "#000")
+    rec.end()
+
+    phis = [float(x) for x in kin.phi_deg]
+    steps = {round(b - a, 9) for a, b in zip(phis[:-1], phis[1:], strict=False)}
+    if len(steps) == 1 and n > 2:
+        when = f"φ_0 = {fmt(phis[0], 4, lang)}°, Δφ = {fmt(steps.pop(), 4, lang)}°"
+    else:
+        when = ", ".join(f"φ_{i} = {fmt(p, 4, lang)}°" for i, p in enumerate(phis))
+    bold_txt = ", ".join(str(k) for k in sorted(bold_set))
+    if lang == "ru":
+        note = f"{when}; жирно: {bold_txt}" if bold_set else when
+    else:
+        note = f"{when}; bold: {bold_txt}" if bold_set else when
+    title = tr("positions", lang)
+    return finish(pid, "positions", None, rec, title,
+                  f"{scale_text('length', mu_l, scene.scale_style, lang)}  (M {ratio_text(mu_l)})", note,
+                  "length", mu_l)
+
+
+# --------------------------------------------------------------------------- legend
+
+LEGEND_ORDER = ("absolute", "relative", "normal", "tangential", "coriolis", "sliding", "construction", "force",
+                "closing", "arm", "trace")
+_LEGEND_WORDS: dict[str, tuple[str, str]] = {
+    "absolute": ("абсолютный вектор (из полюса)", "absolute vector (from the pole)"),
+    "relative": ("относительный вектор (v_BA, a_BA)", "relative vector (v_BA, a_BA)"),
+    "normal": ("нормальная составляющая a^n", "normal component a^n"),
+    "tangential": ("касательная составляющая a^τ", "tangential component a^τ"),
+    "coriolis": ("ускорение Кориолиса a^k", "Coriolis acceleration a^k"),
+    "sliding": ("относительное движение (скольжение) v^r, a^r", "relative (sliding) motion v^r, a^r"),
+    "construction": ("линия построения (∥, ⊥)", "construction line (∥, ⊥)"),
+    "force": ("известная сила", "known force"),
+    "closing": ("замыкающая (искомая) реакция", "closing (unknown) reaction"),
+    "arm": ("плечо силы h", "arm h of a force"),
+    "trace": ("траектория точки", "trajectory of a point"),
+}
+
+
+def legend_kinds(panels: Iterable[Panel]) -> list[str]:
+    """The line styles the drawn panels use, in legend order."""
+    found: set[str] = set()
+    for panel in panels:
+        for p in panel.prims:
+            cls = (p.cls if p.op in ("begin", "text") else (p.style.cls if p.style else "")).split()
+            if p.op == "begin" and cls[:1] == ["vector"] and len(cls) > 1:
+                found.add(cls[1])
+            elif p.op == "begin" and cls[:2] == ["force", "reaction"]:
+                found.add("closing")
+            elif p.op == "begin" and cls[:2] == ["force", "load"]:
+                found.add("force")
+            elif p.op in ("line", "polyline") and cls[:1] in (["construction"], ["trace"]):
+                found.add(cls[0])
+            elif p.op == "line" and "-arm-" in p.eid:
+                found.add("arm")
+    return [k for k in LEGEND_ORDER if k in found]
+
+
+def legend_panel(kinds: Sequence[str], lang: str) -> Panel:
+    """One row per line style: a short sample of the line (arrow for vectors) and its meaning."""
+    from .forces_panels import ARM
+
+    pid = "legend"
+    rec = Recording()
+    row = 5.5
+    x0, x1 = 0.0, 16.0
+    for i, kind in enumerate(kinds):
+        y = i * row
+        eid = f"{pid}-{kind}"
+        if kind == "construction":
+            rec.line((x0, y), (x1, y), Style(width=0.18, stroke="#666", cls="construction"), eid)
+        elif kind == "trace":
+            rec.line((x0, y), (x1, y), TRACE, eid)
+        elif kind == "arm":
+            rec.line((x0, y), (x1, y), ARM, eid)
+        else:
+            st = VECTOR_STYLES[kind]
+            arrow(rec, (x0, y), (x1, y), st, eid, f"legend-sample {kind}")
+        text = _LEGEND_WORDS[kind][0 if lang == "ru" else 1]
+        lab = layout(text, x1 + 3.0, y, SMALL_SIZE + 0.5, "start", "middle")
+        rec.text(lab, "legend-text", f"{eid}-text")
+    title = "Условные обозначения" if lang == "ru" else "Legend"
+    return finish(pid, "legend", None, rec, title)
+
+
+__all__ = ["positions_panel", "legend_panel", "legend_kinds", "numbered_points", "default_trace"]

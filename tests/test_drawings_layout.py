@@ -1,0 +1,263 @@
+"""Sheets of many positions: packing panels of different crank angles together, the plan of
+positions (all positions overlaid), and the legend of line styles."""
+
+from __future__ import annotations
+
+import itertools
+import math
+import random
+from pathlib import Path
+
+import pytest
+import shapely
+
+from drawings.backend import THIN, Recording
+from drawings.draw import draw
+from drawings.overview import positions_panel
+from drawings.panels import Panel, finish, strokes_over_cycle
+from drawings.sheet import GAP, compose, sheet_spec, usable
+from plans.errors import InputError
+from plans.kinematics import solve
+from plans.scene import load_scene
+
+ROOT = Path(__file__).resolve().parents[1]
+SAMPLES = ROOT / "samples"
+TWELVE = ["slider_crank", "offset_slider_crank", "four_bar", "scotch_yoke", "shaper", "six_bar"]
+# sheet counts of the one-band-per-position layout this packing replaced (A1 and A3)
+BAND_A1 = {"slider_crank": 6, "offset_slider_crank": 6, "four_bar": 7, "scotch_yoke": 6, "shaper": 12, "six_bar": 12}
+BAND_A3 = {"slider_crank": 25, "offset_slider_crank": 24, "four_bar": 34, "scotch_yoke": 24}
+
+
+@pytest.fixture(scope="module")
+def drawings():
+    return {name: draw(SAMPLES / f"{name}.toml") for name in TWELVE}
+
+
+def _scene_with(tmp_path: Path, name: str, extra: str) -> Path:
+    p = tmp_path / f"{name}.toml"
+    p.write_text((SAMPLES / f"{name}.toml").read_text(encoding="utf-8") + extra, encoding="utf-8")
+    return p
+
+
+# --------------------------------------------------------------------------- packing
+
+
+@pytest.mark.parametrize("name", TWELVE)
+def test_positions_share_sheets(drawings, name):
+    d = drawings[name]
+    n = len({p.phi for p in d.panels if p.phi is not None})
+    assert n == 12
+    assert len(d.sheets) < BAND_A1[name] <= n  # fewer sheets than the band layout, so than positions
+    phis_per_sheet = [{p.phi for p, _, _ in sh.placed if p.phi is not None} for sh in d.sheets]
+    assert any(len(s) > 2 for s in phis_per_sheet)  # several positions mixed on a sheet
+
+
+@pytest.mark.parametrize("name", sorted(BAND_A3))
+def test_fewer_a3_sheets_than_the_band_layout(name):
+    d = draw(SAMPLES / f"{name}.toml", format="A3")
+    assert len(d.sheets) <= 0.8 * BAND_A3[name]
+
+
+def _check_sheet(sh) -> None:
+    area = shapely.box(*usable(sh.width, sh.height))
+    tb = shapely.box(*sh.title_box)
+    boxes = {pid: shapely.box(*b) for pid, b in sh.panel_boxes().items()}
+    for (a, ga), (b, gb) in itertools.combinations(boxes.items(), 2):
+        assert ga.distance(gb) >= GAP - 1e-6, (a, b)
+    for pid, g in boxes.items():
+        assert area.buffer(1e-6).contains(g), pid
+        assert g.distance(tb) >= GAP - 1e-6, pid
+    for panel, px, py in sh.placed:  # labels included: every primitive inside its panel's box
+        box = shapely.box(px - 1e-6, py - 1e-6, px + panel.width + 1e-6, py + panel.height + 1e-6)
+        for p in panel.at(px, py):
+            b = p.box()
+            if b is not None:
+                assert box.contains(shapely.box(*b)), (panel.pid, p.eid)
+
+
+@pytest.mark.parametrize("name", TWELVE)
+def test_packed_sheets_have_no_overlaps_and_stay_in_the_frame(drawings, name):
+    for sh in drawings[name].sheets:
+        _check_sheet(sh)
+
+
+@pytest.mark.parametrize("name", TWELVE)
+def test_positions_read_top_to_bottom_on_each_sheet(drawings, name):
+    """A later crank angle never starts above an earlier one on the same sheet; the panels
+    of one angle run over at most two consecutive sheets."""
+    d = drawings[name]
+    order = sorted({p.phi for p in d.panels if p.phi is not None})
+    where: dict[float, list[int]] = {}
+    for i, sh in enumerate(d.sheets):
+        tops: dict[float, float] = {}
+        for p, _x, y in sh.placed:
+            if p.phi is not None:
+                tops[p.phi] = min(tops.get(p.phi, math.inf), y)
+                where.setdefault(p.phi, []).append(i)
+        seq = [tops[phi] for phi in order if phi in tops]
+        assert all(b >= a - 1e-9 for a, b in zip(seq, seq[1:], strict=False)), (i, seq)
+    for phi, sheets in where.items():
+        assert max(sheets) - min(sheets) <= 1, phi
+
+
+def test_packing_is_deterministic():
+    a = [s.svg() for s in draw(SAMPLES / "slider_crank.toml").sheets]
+    b = [s.svg() for s in draw(SAMPLES / "slider_crank.toml").sheets]
+    assert a == b
+
+
+def _fake(pid: str, phi: float, w: float, h: float) -> Panel:
+    rec = Recording()
+    rec.polygon([(0, 0), (w, 0), (w, h), (0, h)], THIN)
+    return finish(pid, "velocity", phi, rec, pid)
+
+
+@pytest.mark.parametrize("seed", range(6))
+@pytest.mark.parametrize("fmt", ["A1", "A3"])
+def test_random_panels_pack_without_overlap(seed, fmt):
+    """Random panel sizes (up to a third of the sheet): no overlap, inside the frame, off the
+    title block, same input → same layout, and the sheets are reasonably full."""
+    rnd = random.Random(seed)
+    spec = sheet_spec({"sheet": {"format": fmt}}, "x.toml")
+    W, H = spec.size
+    a = usable(W, H)
+    panels = [_fake(f"p{i}", float(i // 5), rnd.uniform(15, (a[2] - a[0]) / 3), rnd.uniform(12, (a[3] - a[1]) / 3))
+              for i in range(40)]
+    sheets = compose(panels, spec)
+    for sh in sheets:
+        _check_sheet(sh)
+    assert sorted(p.pid for sh in sheets for p, _, _ in sh.placed) == sorted(p.pid for p in panels)
+    again = compose(panels, spec)
+    assert [sh.panel_boxes() for sh in sheets] == [sh.panel_boxes() for sh in again]
+    used = sum(p.width * p.height for p in panels)
+    free = (a[2] - a[0]) * (a[3] - a[1])
+    assert used / (len(sheets) * free) > 0.4
+
+
+def test_legend_sits_above_the_title_block(drawings):
+    sh = drawings["slider_crank"].sheets[0]
+    box = sh.panel_boxes()["legend"]
+    tb = sh.title_box
+    assert box[3] <= tb[1] and box[2] >= tb[0]  # over the title block, right-aligned to the frame
+
+
+# --------------------------------------------------------------------------- the plan of positions
+
+
+@pytest.fixture(scope="module")
+def slider_positions():
+    scene = load_scene(SAMPLES / "slider_crank.toml")
+    kin = solve(scene)
+    mu_l = 400.0
+    return scene, kin, mu_l, positions_panel(scene, kin, mu_l, "ru", [0, 1], strokes_over_cycle(scene))
+
+
+def test_positions_panel_one_polyline_per_position(slider_positions):
+    _scene, kin, _mu, panel = slider_positions
+    lines = [p for p in panel.prims if p.op == "polyline" and p.eid.startswith("positions-pos-")]
+    assert sorted(p.eid for p in lines) == sorted(f"positions-pos-{k}" for k in range(kin.n))
+    widths = {int(p.eid.rsplit("-", 1)[1]): p.style.width for p in lines}
+    assert widths[0] == widths[1] > widths[2]  # the positions with plans are bold
+    assert len({widths[k] for k in range(2, kin.n)}) == 1
+
+
+def test_positions_panel_points_are_where_the_closed_form_puts_them(slider_positions):
+    """The polyline of position k passes through A_k and B_k of x_B = r cos φ + √(l² − r² sin² φ)."""
+    scene, kin, mu_l, panel = slider_positions
+    r = abs(scene.links[1].points["A"] - scene.links[1].points["O"])
+    l_ = abs(scene.links[2].points["B"] - scene.links[2].points["A"])
+    pivot = next(p for p in panel.prims if p.eid == "positions-joint-O").pts[0]
+    for k in range(kin.n):
+        phi = math.radians(float(kin.phi_deg[k]))  # phi_ref = 0, the line of stroke along x
+        A = (pivot[0] + mu_l * r * math.cos(phi), pivot[1] - mu_l * r * math.sin(phi))
+        B = (pivot[0] + mu_l * (r * math.cos(phi) + math.sqrt(l_**2 - (r * math.sin(phi)) ** 2)), pivot[1])
+        line = next(p for p in panel.prims if p.op == "polyline" and p.eid == f"positions-pos-{k}")
+        for q in (pivot, A, B):
+            assert min(math.dist(q, v) for v in line.pts) < 1e-6, (k, q)
+
+
+def test_positions_panel_numbers_every_position(slider_positions):
+    _scene, kin, _mu, panel = slider_positions
+    texts = [p for p in panel.prims if p.op == "text" and p.eid.startswith("positions-n-")]
+
+    def numbers(point: str) -> list[list[str]]:
+        return [p.label.plain.replace(point, "").split(", ") for p in texts if p.eid.startswith(f"positions-n-{point}-")]
+
+    a, b = numbers("A"), numbers("B")
+    assert sorted(int(x) for g in a for x in g) == list(range(kin.n))
+    assert len(a) == kin.n  # the crank pin never repeats a place
+    assert sorted(int(x) for g in b for x in g) == list(range(kin.n))
+    assert len(b) == kin.n // 2 + 1  # a centred slider-crank: B_k = B_{12-k}
+    assert ["1", "11"] in b and ["0"] in b
+    plain = {p.label.plain for p in texts}
+    assert "A0" in plain and "B0" in plain  # the letter once, at position 0
+    boxes = [shapely.box(*p.label.box) for p in panel.prims if p.op == "text"]
+    assert not [(i, j) for (i, x), (j, y) in itertools.combinations(enumerate(boxes), 2)
+                if x.intersection(y).area > 0.01]
+
+
+def test_positions_panel_traces_the_centre_of_mass(slider_positions):
+    scene, kin, mu_l, panel = slider_positions
+    curve = next(p for p in panel.prims if p.op == "polyline" and p.eid == "positions-trace-S2")
+    pivot = next(p for p in panel.prims if p.eid == "positions-joint-O").pts[0]
+    seg = shapely.LineString(curve.pts)
+    for k in range(kin.n):
+        s = complex(kin.point("S2")[0][k])
+        q = shapely.Point(pivot[0] + mu_l * s.real, pivot[1] - mu_l * s.imag)
+        assert seg.distance(q) < 0.05, k  # S2 at every position lies on its traced path (mm)
+
+
+def test_schemes_only_for_the_first_two_positions_by_default(drawings):
+    d = drawings["slider_crank"]
+    kinds = [p.kind for p in d.panels]
+    assert kinds.count("positions") == 1 and kinds.count("legend") == 1
+    assert [p.phi for p in d.panels if p.kind == "scheme"] == [0.0, 30.0]
+    assert len({p.phi for p in d.panels if p.kind == "velocity"}) == 12  # plans still at every position
+
+
+def test_listed_positions_get_schemes_plans_and_bold_lines(tmp_path):
+    p = _scene_with(tmp_path, "slider_crank", '\n[sheet]\nformat = "A1"\npositions = [90, 210]\ntrace = ["S2", "B"]\n')
+    d = draw(p)
+    assert [q.phi for q in d.panels if q.kind == "scheme"] == [90.0, 210.0]
+    assert {q.phi for q in d.panels if q.kind not in ("positions", "legend")} == {90.0, 210.0}
+    pos = next(q for q in d.panels if q.kind == "positions")
+    bold = sorted(int(q.eid.rsplit("-", 1)[1]) for q in pos.prims if q.op == "polyline"
+                  and q.eid.startswith("positions-pos-") and q.style.width > 0.5)
+    assert bold == [3, 7]
+    assert {q.eid for q in pos.prims if q.eid.startswith("positions-trace-")} == {"positions-trace-S2",
+                                                                                 "positions-trace-B"}
+    assert len(d.sheets) == 1
+
+
+def test_no_plan_of_positions_for_a_single_position(tmp_path):
+    p = tmp_path / "one.toml"
+    p.write_text((SAMPLES / "v_engine.toml").read_text(encoding="utf-8").replace("phi_deg = [45, 0]", "phi_deg = [45]"),
+                 encoding="utf-8")
+    kinds = {q.kind for q in draw(p).panels}
+    assert "positions" not in kinds and "scheme" in kinds
+
+
+def test_plan_of_positions_can_be_left_out(tmp_path):
+    p = _scene_with(tmp_path, "slider_crank", '\n[sheet]\npanels = ["scheme", "velocity"]\n')
+    d = draw(p)
+    assert {q.kind for q in d.panels} == {"scheme", "velocity"}
+    assert len([q for q in d.panels if q.kind == "scheme"]) == 12  # no overlay: a scheme at every position
+
+
+def test_unknown_trace_point(tmp_path):
+    p = _scene_with(tmp_path, "slider_crank", '\n[sheet]\ntrace = ["S9"]\n')
+    with pytest.raises(InputError, match=r"sheet.trace: no point 'S9'"):
+        draw(p)
+
+
+def test_legend_in_the_sheets_language(tmp_path):
+    ru = next(q for q in draw(SAMPLES / "shaper.toml").panels if q.kind == "legend")
+    en = next(q for q in draw(SAMPLES / "shaper.toml", language="en").panels if q.kind == "legend")
+    t_ru = {q.label.plain for q in ru.prims if q.op == "text"}
+    t_en = {q.label.plain for q in en.prims if q.op == "text"}
+    assert "Условные обозначения" in t_ru and "Legend" in t_en
+    assert any("Кориолиса" in t for t in t_ru) and any("Coriolis" in t for t in t_en)  # the shaper's RPR
+    assert any("замыкающая" in t for t in t_ru) and any("closing" in t for t in t_en)
+    assert not any("Coriolis" in q.label.plain for q in next(
+        x for x in draw(SAMPLES / "slider_crank.toml", language="en").panels if x.kind == "legend").prims
+        if q.op == "text")
