@@ -4,11 +4,11 @@ subcommand that needs the renderer (``plans`` itself never imports ``drawings``)
 from __future__ import annotations
 
 import argparse
-import sys
 from collections.abc import Sequence
 from pathlib import Path
 
-from plans.errors import InputError, PlansError
+from plans.cli import run
+from plans.errors import InputError
 
 from .export import FORMATS
 
@@ -72,18 +72,8 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def _run(args: argparse.Namespace) -> int:
-    if args.func is not draw_command:
-        from plans.cli import run
-
-        return int(run(args))
-    try:
-        return int(args.func(args))
-    except PlansError as exc:
-        print(f"plans: error: {exc}", file=sys.stderr)
-        return 2
-    except OSError as exc:
-        print(f"plans: error: {exc.filename or ''}: {exc.strerror}", file=sys.stderr)
-        return 2
+    """Every command, draw included, runs through the engine's runner (one-line errors, exit 2)."""
+    return run(args)
 
 
 def main(argv: Sequence[str] | None = None) -> int:
