@@ -84,7 +84,7 @@ class Link:
 
 @dataclass(frozen=True, slots=True)
 class Driver:
-    """The initial link: θ1 = φ_ref + sense·φ, ω1 = sense·|ω|, ε1 = sense·ε."""
+    """The initial link: θ1 = φ_ref + sense·φ (see :meth:`rotation`), ω1 = sense·|ω|, ε1 = sense·ε."""
 
     link: int
     pivot: str
@@ -93,11 +93,6 @@ class Driver:
     phi_ref: float
     sense: int
     phis_deg: tuple[float, ...]
-
-    def theta(self, phi_deg: Any) -> Any:
-        import numpy as np
-
-        return self.phi_ref + self.sense * np.radians(phi_deg)
 
     def rotation(self, phi_deg: Any) -> Any:
         """e^{iθ1}, with θ1 reduced in degrees by whole quarter turns first, so that the

@@ -14,10 +14,5 @@ ASSEMBLY_REL = 1e-12
 #: A plan point closer than this fraction of the plan's extent to another coincides with it.
 COINCIDE_REL = 1e-9
 
-
-def coincide_tol(extent: float) -> float:
-    """Distance under which two plan points are drawn as one (mm on the plan)."""
-    return COINCIDE_REL * max(extent, 1e-300)
-
 #: A group whose construction lines meet at less than ~1e-6 rad is reported as ill-conditioned.
 ILL_CONDITIONED = 1e6
