@@ -30,6 +30,10 @@ class InputError(PlansError):
         super().__init__(f"{where}: {message}")
 
 
+class OutputError(PlansError):
+    """An output file or folder that cannot be written."""
+
+
 class ConstructionError(PlansError):
     """A construction that has no answer (not assemblable, locked)."""
 

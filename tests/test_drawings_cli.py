@@ -75,7 +75,7 @@ def test_atomic_write_leaves_nothing_on_failure(tmp_path):
     target = tmp_path / "a.svg"
     target.write_bytes(b"old")
     with pytest.raises(TypeError):
-        atomic_write(target, "not bytes")  # type: ignore[arg-type]
+        atomic_write(target, 12345)  # type: ignore[arg-type]  # fails mid-write
     assert target.read_bytes() == b"old"
     assert [p.name for p in tmp_path.iterdir()] == ["a.svg"]
     with pytest.raises(OutputError, match="cannot write to"):
