@@ -36,7 +36,7 @@ from .common import Placer, fmt, ident, label_boxes, phi_tag
 from .export import save
 from .panels import PAD, SMALL_SIZE, TITLE_SIZE, Panel, plan_panel
 from .sheet import FORMATS, Sheet, SheetSpec, compose
-from .text import layout
+from .text import layout, wrap
 
 PASS = "#1d7a34"
 FAIL = "#c0261d"
@@ -133,22 +133,6 @@ def plan_with_marks(report: Report, plan: Plan, lang: str = "ru", *, overlay: bo
     return _repack(base.pid, plan.kind, plan.phi_deg, prims, base.title, base.quantity, base.scale)
 
 
-def _wrap(text: str, width: float, size: float) -> list[str]:
-    words = text.split()
-    lines: list[str] = []
-    cur = ""
-    for w in words:
-        trial = f"{cur} {w}".strip()
-        if cur and layout(trial, 0, 0, size).box[2] > width:
-            lines.append(cur)
-            cur = w
-        else:
-            cur = trial
-    if cur:
-        lines.append(cur)
-    return lines
-
-
 _NAME = re.compile(r"\b([A-Za-z]+)_([A-Za-z0-9_]+)")
 
 
@@ -180,7 +164,7 @@ def findings_panel(report: Report, lang: str = "ru") -> Panel:
     for f in report.findings:
         lines.append((f"[{f.kind}] {f.message}", "#000"))
     for k, (text, color) in enumerate(lines):
-        for part in _wrap(_markup(text), LIST_WIDTH, TEXT_SIZE):
+        for part in wrap(_markup(text), LIST_WIDTH, TEXT_SIZE):
             rec.text(layout(part, 0, y, TEXT_SIZE, "start", "top"), "check-line", f"check-list-{k}", fill=color)
             y += TEXT_SIZE * 1.45
     return _repack("check-findings", "table", None, rec.prims, title)

@@ -19,7 +19,7 @@ from plans.forces import force_polygons, kinetostatics, nice_scale
 from plans.lever import force_rows, lever_plan
 from plans.plan import Plan
 
-from .backend import THICK, Recording, Style, Transform
+from .backend import Recording, Style, Transform
 from .common import Placer, arrow, dot, fmt, ident, phi_tag
 from .i18n import tr
 from .panels import (
@@ -30,6 +30,7 @@ from .panels import (
     Panel,
     _clip,
     finish,
+    link_outline,
     link_shape,
     scale_text,
     table_panel,
@@ -150,13 +151,7 @@ def _draw_links(rec: Recording, placer: Placer, scene, kin, k: int, links: Seque
         for n, z in link.points.items():
             pts.setdefault(n, complex(kin.point_on(lid, z)[0][k]))
         kind, names = link_shape(scene, lid)
-        shape = [T.z(pts[n]) for n in names]
-        if kind == "line":
-            rec.line(shape[0], shape[1], THICK, f"{pid}-link-{lid}")
-            placer.add_line(shape)
-        elif kind == "polygon":
-            rec.polygon(shape, Style(width=0.7, fill="#eeeeee", cls="link"), f"{pid}-link-{lid}")
-            placer.add_line(shape + [shape[0]])
+        link_outline(rec, placer, kind, [T.z(pts[n]) for n in names], f"{pid}-link-{lid}")
     for jt in scene.joints:
         if not (set(jt.links) & set(links)) or jt.point not in pts:
             continue

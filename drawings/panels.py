@@ -209,13 +209,7 @@ def scheme_panel(scene, kin, k: int, mu_l: float, lang: str, strokes: dict[str, 
     rec.begin(f"{pid}-links", "links")
     for lid in sorted(scene.links):
         kind, names = link_shape(scene, lid)
-        pts = [T.z(glob_of(P, lid, n)) for n in names]
-        if kind == "line":
-            rec.line(pts[0], pts[1], THICK, f"{pid}-link-{lid}")
-            placer.add_line(pts)
-        elif kind == "polygon":
-            rec.polygon(pts, Style(width=0.7, fill="#eeeeee", cls="link"), f"{pid}-link-{lid}")
-            placer.add_line(pts + [pts[0]])
+        link_outline(rec, placer, kind, [T.z(glob_of(P, lid, n)) for n in names], f"{pid}-link-{lid}")
     rec.end()
 
     rec.begin(f"{pid}-sliders", "sliders")
@@ -317,6 +311,17 @@ def scheme_panel(scene, kin, k: int, mu_l: float, lang: str, strokes: dict[str, 
     return finish(pid, "scheme", phi, rec, title,
                   f"{scale_text('length', mu_l, scene.scale_style, lang)}  (M {ratio_text(mu_l)})", note,
                   "length", mu_l)
+
+
+def link_outline(rec: Recording, placer: Placer, kind: str, pts: list[Pt], eid: str) -> None:
+    """A link as the textbook draws it: a thick bar, or a shaded plate for three or more
+    points; its outline is kept clear of labels."""
+    if kind == "line":
+        rec.line(pts[0], pts[1], THICK, eid)
+        placer.add_line(pts)
+    elif kind == "polygon":
+        rec.polygon(pts, Style(width=0.7, fill="#eeeeee", cls="link"), eid)
+        placer.add_line(pts + [pts[0]])
 
 
 def link_shape(scene, lid: int) -> tuple[str, list[str]]:

@@ -20,7 +20,7 @@ from .backend import Prim, Recording, Style, replay
 from .i18n import tr
 from .panels import Panel
 from .svg import SvgBackend
-from .text import layout
+from .text import layout, wrap
 
 FORMATS: dict[str, tuple[float, float]] = {  # landscape width × height, mm (GOST 2.301)
     "A0": (1189.0, 841.0),
@@ -323,19 +323,8 @@ def _title_block(rec: Recording, sh: Sheet) -> None:
 
 
 def _wrap(text: str, width: float, size: float) -> list[str]:
-    words = text.split()
-    lines: list[str] = []
-    cur = ""
-    for w in words:
-        trial = f"{cur} {w}".strip()
-        lab = layout(trial, 0, 0, size)
-        if cur and lab.box[2] - lab.box[0] > width:
-            lines.append(cur)
-            cur = w
-        else:
-            cur = trial
-    if cur:
-        lines.append(cur)
+    """A title block cell holds three lines at most: the rest runs on in the third."""
+    lines = wrap(text, width, size)
     if len(lines) > 3:
         lines = lines[:2] + [" ".join(lines[2:])]
     return lines or [""]

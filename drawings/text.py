@@ -135,3 +135,20 @@ def _layout0(label: str, size: float, anchor: str, valign: str) -> Label:
     bx, by = x + ox, y + oy
     out = tuple(TextRun(bx + dx, by + dy, t, s) for dx, dy, t, s in runs)
     return Label(out, (bx, by + top, bx + width, by + bottom), "".join(p[0] for p in pieces))
+
+
+def wrap(text: str, width: float, size: float) -> list[str]:
+    """Words of ``text`` in greedy lines no wider than ``width`` mm, measured as drawn."""
+    lines: list[str] = []
+    cur = ""
+    for w in text.split():
+        trial = f"{cur} {w}".strip()
+        lab = layout(trial, 0, 0, size)
+        if cur and lab.box[2] - lab.box[0] > width:
+            lines.append(cur)
+            cur = w
+        else:
+            cur = trial
+    if cur:
+        lines.append(cur)
+    return lines
