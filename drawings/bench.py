@@ -10,7 +10,7 @@ import time
 from collections.abc import Callable
 from typing import Any
 
-from plans.scene import load_scene
+from plans.scene.model import load_scene
 
 from .draw import build_panels, draw
 from .export import pdf_bytes

@@ -27,9 +27,9 @@ import sys
 from collections.abc import Sequence
 from pathlib import Path
 
-from plans.check import Finding, Item, Report, check_file
+from plans.check.report import Finding, Item, Report, check_file
 from plans.errors import PlansError
-from plans.plan import Plan
+from plans.kinematics.plan import Plan
 
 from .backend import Prim, Pt, Recording, Style
 from .common import Placer, fmt, ident, label_boxes, phi_tag

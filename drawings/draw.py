@@ -7,8 +7,8 @@ from pathlib import Path
 from typing import Any
 
 from plans.errors import InputError
-from plans.kinematics import Kinematics, solve
-from plans.scene import Scene, load_scene
+from plans.kinematics.exact import Kinematics, solve
+from plans.scene.model import Scene, load_scene
 
 from .fonts import metrics
 from .overview import legend_kinds, legend_panel, positions_panel
@@ -66,7 +66,7 @@ def build_panels(scene: Scene, spec: SheetSpec) -> tuple[list[Panel], float]:
     strokes = strokes_over_cycle(scene)
     plans_at: dict[int, Any] = {}
     if scene.wants("velocity_plan"):
-        from plans.construction import build_all
+        from plans.kinematics.construction import build_all
 
         plans_at = dict(enumerate(build_all(kin)))
     forces = _force_panels(scene, kin, spec, ks, plans_at, mu_l) if (

@@ -15,9 +15,9 @@ from typing import Any
 
 import numpy as np
 
-from plans.forces import force_polygons, kinetostatics, nice_scale
-from plans.lever import force_rows, lever_plan
-from plans.plan import Plan
+from plans.forces.lever import force_rows, lever_plan
+from plans.forces.polygons import force_polygons, kinetostatics, nice_scale
+from plans.kinematics.plan import Plan
 
 from .backend import Recording, Style, Transform
 from .common import Placer, arrow, dot, fmt, ident, phi_tag

@@ -153,7 +153,7 @@ def default_trace(scene) -> list[str]:
 
 def _trajectories(scene, names: Sequence[str], n: int = 145) -> dict[str, list[complex]]:
     """World paths of ``names`` over one revolution (empty where the mechanism locks)."""
-    from plans.kinematics import solve
+    from plans.kinematics.exact import solve
 
     try:
         kin = solve(scene, phi_deg=np.linspace(0.0, 360.0, n), order=0)

@@ -13,7 +13,7 @@ import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from plans.plan import Plan
+from plans.kinematics.plan import Plan
 
 from .backend import FILLED, HAIR, MAIN, THICK, THIN, Prim, Pt, Recording, Style, Transform
 from .common import Placer, arrow, dot, fmt, ident, phi_tag
@@ -397,7 +397,7 @@ def strokes_over_cycle(scene) -> dict[str, tuple[float, float]]:
     import numpy as np
 
     from plans.errors import PlansError
-    from plans.kinematics import solve
+    from plans.kinematics.exact import solve
 
     try:
         kin = solve(scene, phi_deg=np.linspace(0.0, 360.0, 73), order=0)
@@ -417,7 +417,7 @@ def cycle_size(scene) -> float:
     import numpy as np
 
     from plans.errors import PlansError
-    from plans.kinematics import solve
+    from plans.kinematics.exact import solve
 
     phis = np.linspace(0.0, 360.0, 37)
     try:

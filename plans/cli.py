@@ -8,13 +8,13 @@ import importlib
 import sys
 from collections.abc import Sequence
 
-from .errors import PlansError
-from .io import atomic_write, dumps
-from .results import solve_scene, table, to_json
-from .scene import load_scene
+from plans.errors import PlansError
+from plans.io import atomic_write, dumps
+from plans.results import solve_scene, table, to_json
+from plans.scene.model import load_scene
 
 #: Pure commands living in their own modules, each with ``register(subparsers)``.
-_COMMAND_MODULES = ("plans.check", "plans.bench")
+_COMMAND_MODULES = ("plans.check.report", "plans.accuracy.bench")
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -10,7 +10,7 @@ import tomllib
 from pathlib import Path
 from typing import Any
 
-from .errors import InputError, OutputError
+from plans.errors import InputError, OutputError
 
 
 def atomic_write(path: str | Path, data: bytes | str) -> None:

@@ -14,11 +14,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-from .construction import PositionPlans, build_all
-from .kinematics import Kinematics, solve
-from .scene import Scene
-from .structure import Structure, analyse
-from .tolerances import ILL_CONDITIONED
+from plans.kinematics.construction import PositionPlans, build_all
+from plans.kinematics.exact import Kinematics, solve
+from plans.kinematics.structure import Structure, analyse
+from plans.scene.model import Scene
+from plans.tolerances import ILL_CONDITIONED
 
 
 @dataclass(frozen=True)
@@ -38,7 +38,7 @@ def solve_scene(scene: Scene) -> Solution:
     plans = tuple(build_all(kin)) if scene.wants("velocity_plan") else ()
     forces: Any = None
     if scene.wants("force_polygons") or scene.wants("lever"):
-        from . import forces as _forces  # the force analysis is only loaded when asked for
+        from plans.forces import polygons as _forces  # loaded only when asked for
 
         forces = _forces.kinetostatics(scene, kin)
     return Solution(scene, st, kin, plans, forces)
@@ -91,7 +91,7 @@ def to_json(sol: Solution) -> dict[str, Any]:
             pos["readings"] = [r.to_json() for r in pp.readings]
         out["positions"].append(pos)
     if sol.forces is not None:
-        from .lever import force_json
+        from plans.forces.lever import force_json
 
         for pos, extra in zip(out["positions"], force_json(sol.forces[1]), strict=True):
             pos.update(extra)
@@ -139,7 +139,7 @@ def table(sol: Solution, protocol: bool = False) -> str:
             lines.append(f"  {r.quantity:14s} {seg:>10s} {mm} {_fmt(r.value)} {_fmt(r.exact)} "
                          f"{r.difference:12.2e}  {r.unit}")
         if sol.forces is not None:
-            from . import lever as _lever
+            from plans.forces import lever as _lever
 
             if hasattr(_lever, "table_lines"):
                 lines += _lever.table_lines(sol.forces[0], sol.forces[1], k)
@@ -153,6 +153,6 @@ def table(sol: Solution, protocol: bool = False) -> str:
 
 
 def load_and_solve(path: str) -> Solution:
-    from .scene import load_scene
+    from plans.scene.model import load_scene
 
     return solve_scene(load_scene(path))

@@ -17,8 +17,8 @@ from pathlib import Path
 
 import pytest
 
-from plans.check import check, check_file, table
-from plans.checkfile import check_from_dict, parse_check
+from plans.check.checkfile import check_from_dict, parse_check
+from plans.check.report import check, check_file, table
 from plans.cli import main
 from plans.errors import InputError
 
@@ -363,9 +363,9 @@ def test_measured_segment_of_a_computed_quantity_is_refused(tmp_path):
 
 
 def test_force_polygon_readings_get_the_draftsman_tolerance():
-    from plans.forces import analyse_forces, force_polygons
-    from plans.kinematics import solve
-    from plans.scene import load_scene
+    from plans.forces.polygons import analyse_forces, force_polygons
+    from plans.kinematics.exact import solve
+    from plans.scene.model import load_scene
 
     mu_f = 0.02  # mm/N, the student's
     scene = load_scene(SCENE)

@@ -17,11 +17,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from plans import construction
-from plans.check import check
-from plans.checkfile import check_from_dict
-from plans.kinematics import solve
-from plans.scene import load_scene
+from plans.check.checkfile import check_from_dict
+from plans.check.report import check
+from plans.kinematics import construction
+from plans.kinematics.exact import solve
+from plans.scene.model import load_scene
 
 ROOT = Path(__file__).resolve().parent.parent
 SAMPLES = sorted((ROOT / "samples").glob("*.toml"))
@@ -353,7 +353,7 @@ def test_checker_tolerance_agrees_with_the_monte_carlo(name):
     included; Coriolis components carry the velocity plan's reading error in both).  The
     stack-up adds worst cases, so it is the wider one far down a construction (up to ≈3.1×
     at the shaper's ram); it must never be much narrower than what good drawings reach."""
-    from plans import bench
+    from plans.accuracy import bench
 
     path = ROOT / "samples" / f"{name}.toml"
     data = student(path, 0)

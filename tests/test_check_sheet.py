@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from drawings.check_sheet import marked_sheets, overlay_sheets, plan_with_marks, save_check_sheets
-from plans.check import check_file
+from plans.check.report import check_file
 
 ROOT = Path(__file__).resolve().parent.parent
 COURSEWORK = ROOT / "samples" / "checks" / "v_engine_coursework.toml"

@@ -8,12 +8,12 @@ import math
 import numpy as np
 import pytest
 
-from plans.construction import build, build_all, nice_scale
 from plans.errors import ConstructionError, Locked, NotAssemblable
 from plans.io import dumps
-from plans.kinematics import solve
+from plans.kinematics.construction import build, build_all, nice_scale
+from plans.kinematics.exact import solve
 from plans.results import solve_scene, to_json
-from plans.scene import load_scene, scene_from_dict
+from plans.scene.model import load_scene, scene_from_dict
 
 from .conftest import four_bar_scene, slider_crank_scene
 
@@ -121,7 +121,7 @@ def test_velocity_only_scene_computes_no_acceleration():
 
 
 def test_positions_only_scene_builds_no_plan(monkeypatch):
-    import plans.construction as construction
+    import plans.kinematics.construction as construction
 
     def boom(*a, **k):
         raise AssertionError("a plan was built for a positions-only scene")

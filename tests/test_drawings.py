@@ -25,9 +25,9 @@ from drawings.sheet import FORMATS, compose, sheet_spec
 from drawings.svg import SvgBackend, num
 from drawings.text import layout, parse, point_label
 from plans.errors import InputError
-from plans.kinematics import solve
-from plans.plan import ConstructionLine, Plan, PlanPoint, Segment
-from plans.scene import load_scene
+from plans.kinematics.exact import solve
+from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment
+from plans.scene.model import load_scene
 
 ROOT = Path(__file__).resolve().parents[1]
 V_ENGINE = ROOT / "samples" / "v_engine.toml"
@@ -446,7 +446,7 @@ def test_jupyter_views(v_engine):
 
 def test_force_polygon_vectors_measured_on_the_sheet(v_engine, v_svgs):
     """Polygon vectors / written μF against the exact kinetostatics (loads and reactions)."""
-    from plans.forces import kinetostatics
+    from plans.forces.polygons import kinetostatics
 
     scene = v_engine.scene
     kin = solve(scene)

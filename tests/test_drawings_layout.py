@@ -17,8 +17,8 @@ from drawings.overview import positions_panel
 from drawings.panels import Panel, finish, strokes_over_cycle
 from drawings.sheet import GAP, compose, sheet_spec, usable
 from plans.errors import InputError
-from plans.kinematics import solve
-from plans.scene import load_scene
+from plans.kinematics.exact import solve
+from plans.scene.model import load_scene
 
 ROOT = Path(__file__).resolve().parents[1]
 SAMPLES = ROOT / "samples"

@@ -15,11 +15,11 @@ import math
 import numpy as np
 import pytest
 
-from plans.forces import analyse_forces, force_polygons, kinetostatics, nice_scale
-from plans.kinematics import solve
-from plans.lever import force_json, force_rows, lever_plan, zhukovsky_lever
-from plans.loads import parse_loads
-from plans.scene import load_scene, scene_from_dict
+from plans.forces.lever import force_json, force_rows, lever_plan, zhukovsky_lever
+from plans.forces.loads import parse_loads
+from plans.forces.polygons import analyse_forces, force_polygons, kinetostatics, nice_scale
+from plans.kinematics.exact import solve
+from plans.scene.model import load_scene, scene_from_dict
 
 from .conftest import SAMPLES, slider_crank_scene
 
@@ -400,8 +400,8 @@ def test_json_names_follow_the_scene_convention():
 
 
 def test_kinematics_only_scene_runs_no_force_analysis(monkeypatch):
-    import plans.forces as forces
-    import plans.lever as lever
+    import plans.forces.lever as lever
+    import plans.forces.polygons as forces
 
     def boom(*a, **k):
         raise AssertionError("force analysis ran")

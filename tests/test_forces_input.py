@@ -5,8 +5,8 @@ from __future__ import annotations
 import pytest
 
 from plans.errors import InputError
-from plans.loads import parse_loads
-from plans.scene import scene_from_dict
+from plans.forces.loads import parse_loads
+from plans.scene.model import scene_from_dict
 
 from .conftest import four_bar_scene, slider_crank_scene
 
@@ -89,8 +89,8 @@ def test_the_documented_example_parses():
     """The TOML block of plans.loads' docstring (copied into the README) is valid input."""
     import tomllib
 
-    import plans.loads as loads_mod
-    from plans.scene import load_scene
+    import plans.forces.loads as loads_mod
+    from plans.scene.model import load_scene
 
     from .conftest import SAMPLES
 

@@ -10,8 +10,8 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from plans.kinematics import solve
-from plans.scene import load_scene, scene_from_dict
+from plans.kinematics.exact import solve
+from plans.scene.model import load_scene, scene_from_dict
 
 from .conftest import four_bar_scene, slider_crank_scene
 
@@ -186,7 +186,7 @@ def _shaper_dict(oc, r, rocker, rod, ram_y, phi, ram_kind):
        ram=st.sampled_from(["RRP", "PRP"]))
 def test_random_chained_groups_match_derivatives_and_construction(oc, ratio, phi, ram):
     """RPR followed by RRP or PRP: exact analysis vs derivatives, construction vs exact."""
-    from plans.construction import build
+    from plans.kinematics.construction import build
 
     r = oc * ratio
     rocker = 1.8 * (oc + r)

@@ -5,11 +5,11 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from plans.forces import analyse_forces
-from plans.kinematics import solve
-from plans.lever import force_rows, lever_plan, table_lines, zhukovsky_lever
-from plans.loads import parse_loads
-from plans.scene import load_scene, scene_from_dict
+from plans.forces.lever import force_rows, lever_plan, table_lines, zhukovsky_lever
+from plans.forces.loads import parse_loads
+from plans.forces.polygons import analyse_forces
+from plans.kinematics.exact import solve
+from plans.scene.model import load_scene, scene_from_dict
 
 from .conftest import SAMPLES
 

@@ -8,10 +8,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from plans import kinematics, newton, reference
-from plans.bench import oracle_from_kinematics, oracle_from_reference, solver_errors
+from plans.accuracy import newton, reference
+from plans.accuracy.bench import oracle_from_kinematics, oracle_from_reference, solver_errors
 from plans.errors import ConstructionError, Locked, NotAssemblable
-from plans.scene import load_scene
+from plans.kinematics import exact as kinematics
+from plans.scene.model import load_scene
 
 SAMPLES = Path(__file__).resolve().parent.parent / "samples"
 CYCLE = np.linspace(0.0, 360.0, 72, endpoint=False) + 2.5

@@ -14,9 +14,11 @@ import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
-from plans import construction, kinematics, newton, reference
-from plans.bench import _construction_errors, _total, oracle_from_reference, solver_errors
+from plans.accuracy import newton, reference
+from plans.accuracy.bench import _construction_errors, _total, oracle_from_reference, solver_errors
 from plans.errors import Locked, NotAssemblable
+from plans.kinematics import construction
+from plans.kinematics import exact as kinematics
 
 
 def _all_methods(sc, ref, phis):
@@ -309,7 +311,7 @@ def test_stiff_loads_three_balancing_loads_agree():
     largest balancing load."""
     from pathlib import Path
 
-    from plans.bench import stiff_load_records
+    from plans.accuracy.bench import stiff_load_records
 
     samples = Path(__file__).resolve().parent.parent / "samples"
     if not (samples / "v_engine.toml").exists():

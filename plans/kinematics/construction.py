@@ -22,12 +22,12 @@ from dataclasses import dataclass
 
 import shapely
 
-from .errors import Locked
-from .kinematics import Kinematics
-from .plan import ConstructionLine, Plan, PlanPoint, Segment, Step
-from .scene import Joint
-from .structure import Group
-from .tolerances import COINCIDE_REL, LOCK_SIN, NEAR_PARALLEL_SIN
+from plans.errors import Locked
+from plans.kinematics.exact import Kinematics
+from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step
+from plans.kinematics.structure import Group
+from plans.scene.model import Joint
+from plans.tolerances import COINCIDE_REL, LOCK_SIN, NEAR_PARALLEL_SIN
 
 _NICE = (1.0, 1.2, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0)
 

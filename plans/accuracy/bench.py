@@ -43,14 +43,16 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from . import construction, kinematics, newton
-from .construction import nice_scale
-from .errors import ConstructionError, PlansError
-from .scene import Scene, load_scene, scene_from_dict
-from .structure import analyse
+from plans.accuracy import newton
+from plans.errors import ConstructionError, PlansError
+from plans.kinematics import construction
+from plans.kinematics import exact as kinematics
+from plans.kinematics.construction import nice_scale
+from plans.kinematics.structure import analyse
+from plans.scene.model import Scene, load_scene, scene_from_dict
 
 if TYPE_CHECKING:  # mpmath is an optional dependency (the ``bench`` extra): imported where used
-    from . import reference
+    from plans.accuracy import reference
 
 SIZES = (1, 12, 360, 3600)
 QUICK_SIZES = (1, 12, 360)
@@ -171,7 +173,7 @@ class Case:
 
 
 def reference_cases() -> list[Case]:
-    from . import reference
+    from plans.accuracy import reference
 
     sc_args = dict(r=0.05, l=0.2, e=0.015, omega=2 * math.pi * 25)
     fb_args = dict(a=0.05, b=0.2, c=0.15, d=0.18, omega=2 * math.pi * 25)
@@ -971,7 +973,7 @@ def bench_forces(cases: list[Case], sizes: Sequence[int], budget: float) -> list
     kinetostatics with the lever vectorised over positions, and the force polygons drawn
     per position; error = disagreement of the three balancing loads."""
     try:
-        from . import forces
+        from plans.forces import polygons as forces
     except ImportError:  # pragma: no cover - the module is another engineer's
         return [Record("forces", "-", 0, math.nan, math.nan, math.nan, note="skipped: plans.forces absent")]
     recs = []
@@ -1013,7 +1015,7 @@ def stiff_load_records(samples: Path) -> list[dict]:
     if not f.exists():
         return []
     try:
-        from . import forces
+        from plans.forces import polygons as forces
     except ImportError:  # pragma: no cover
         return []
     base = load_scene(f)
@@ -1050,7 +1052,7 @@ def stiff_load_records(samples: Path) -> list[dict]:
 
 def stability_records() -> list[dict]:
     """The stiff and extreme cases of the stability suite, with each method's error."""
-    from . import reference
+    from plans.accuracy import reference
 
     out: list[dict] = []
 
@@ -1379,7 +1381,7 @@ def run_bench(quick: bool = False, samples: Path | None = None, progress: Callab
     def log(msg: str) -> None:
         _log(f"[{time.perf_counter() - t_start:6.1f} s] {msg}")
 
-    samples = samples or Path(__file__).resolve().parent.parent / "samples"
+    samples = samples or Path(__file__).resolve().parents[2] / "samples"
     budget = budget if budget is not None else (0.02 if quick else 0.2)
     sizes = tuple(sizes or (QUICK_SIZES if quick else SIZES))
     records: list[Record] = []

@@ -44,8 +44,8 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import NDArray
 
-from .errors import Locked, NotAssemblable
-from .scene import Scene
+from plans.errors import Locked, NotAssemblable
+from plans.scene.model import Scene
 
 C = NDArray[np.complex128]
 R = NDArray[np.float64]

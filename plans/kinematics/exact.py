@@ -17,10 +17,10 @@ from typing import Any
 
 import numpy as np
 
-from .errors import Locked, NotAssemblable
-from .scene import Joint, Scene
-from .structure import Group, Structure, analyse
-from .tolerances import ASSEMBLY_REL, LOCK_SIN
+from plans.errors import Locked, NotAssemblable
+from plans.kinematics.structure import Group, Structure, analyse
+from plans.scene.model import Joint, Scene
+from plans.tolerances import ASSEMBLY_REL, LOCK_SIN
 
 # numpy arrays over positions; typed loosely because numpy's operator stubs do not
 # follow Optional fields that the order of analysis fills in.

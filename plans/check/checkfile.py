@@ -57,10 +57,10 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from .errors import InputError
-from .io import loads_toml, read_toml
-from .scene import Scene, load_scene, scene_from_dict
-from .units import LENGTH_UNITS
+from plans.errors import InputError
+from plans.io import loads_toml, read_toml
+from plans.scene.model import Scene, load_scene, scene_from_dict
+from plans.units import LENGTH_UNITS
 
 SCALE_KINDS = ("length", "velocity", "acceleration", "force")
 TOLERANCE_MODELS = ("draftsman", "rule")

@@ -41,16 +41,23 @@ import numpy as np
 import shapely
 from numpy.typing import NDArray
 
-from . import construction
-from .errors import Locked
-from .kinematics import Kinematics, cross
-from .loads import AppliedForce, AppliedLoads, AppliedMoment, Loads, apply_loads, parse_loads
-from .plan import ConstructionLine, Plan, PlanPoint, Segment, Step
-from .scene import Joint, Scene
-from .structure import Group
+from plans.errors import Locked
+from plans.forces.loads import (
+    AppliedForce,
+    AppliedLoads,
+    AppliedMoment,
+    Loads,
+    apply_loads,
+    parse_loads,
+)
+from plans.kinematics import construction
+from plans.kinematics.exact import Kinematics, cross
+from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step
+from plans.kinematics.structure import Group
+from plans.scene.model import Joint, Scene
 
 if TYPE_CHECKING:
-    from .lever import LeverAnalysis
+    from plans.forces.lever import LeverAnalysis
 
 C = NDArray[np.complex128]
 R = NDArray[np.float64]
@@ -197,7 +204,7 @@ def kinetostatics(scene: Scene, kin: Kinematics) -> tuple[ForceAnalysis, LeverAn
     """Force analysis and Zhukovsky lever if the scene asks for them, else None (nothing computed)."""
     if not (scene.wants("force_polygons") or scene.wants("lever")):
         return None
-    from .lever import zhukovsky_lever
+    from plans.forces.lever import zhukovsky_lever
 
     loads = parse_loads(scene)
     fa = analyse_forces(scene, kin, loads)

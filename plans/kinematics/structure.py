@@ -10,8 +10,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .errors import InputError
-from .scene import Joint, Scene
+from plans.errors import InputError
+from plans.scene.model import Joint, Scene
 
 KINDS = ("RRR", "RRP", "RPR", "PRP", "RPP")
 

@@ -64,9 +64,9 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from .errors import ConstructionError, InputError
-from .scene import Scene
-from .units import LENGTH_UNITS, parse_length
+from plans.errors import ConstructionError, InputError
+from plans.scene.model import Scene
+from plans.units import LENGTH_UNITS, parse_length
 
 C = NDArray[np.complex128]
 R = NDArray[np.float64]
@@ -395,7 +395,7 @@ def parse_loads(scene: Scene) -> Loads:
 def _stroke(scene: Scene, joint_name: str, link: int) -> tuple[float, float]:
     """The piston's outer dead centre (travel coordinate) and stroke H over one crank
     revolution, by dense sampling of the exact positions (relative error ~1e-7)."""
-    from .kinematics import solve  # late import: only indicator diagrams need it
+    from plans.kinematics.exact import solve  # late import: only indicator diagrams need it
 
     try:
         kin = solve(scene, np.linspace(0.0, 360.0, 3601), order=0)

@@ -15,9 +15,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from .errors import InputError
-from .io import loads_toml, read_toml
-from .units import LENGTH_UNITS, parse_length, rpm_to_rad_s
+from plans.errors import InputError
+from plans.io import loads_toml, read_toml
+from plans.units import LENGTH_UNITS, parse_length, rpm_to_rad_s
 
 #: What a scene may ask for, and what each one needs first.
 OUTPUTS: dict[str, tuple[str, ...]] = {

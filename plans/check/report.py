@@ -57,12 +57,12 @@ from typing import Any
 
 import numpy as np
 
-from .checkfile import CheckFile, StudentPosition, Written, load_check
-from .construction import PositionPlans, build
-from .errors import InputError, PlansError
-from .io import atomic_write, dumps
-from .kinematics import Kinematics, solve
-from .plan import Plan
+from plans.check.checkfile import CheckFile, StudentPosition, Written, load_check
+from plans.errors import InputError, PlansError
+from plans.io import atomic_write, dumps
+from plans.kinematics.construction import PositionPlans, build
+from plans.kinematics.exact import Kinematics, solve
+from plans.kinematics.plan import Plan
 
 G_STANDARD = 9.81
 #: An exact value below this fraction of its plan's size is zero (a point on the pole).
@@ -172,8 +172,8 @@ class Context:
         if not self._loaded:
             self._loaded = True
             try:
-                from . import forces as _forces
-                from . import loads as _loads
+                from plans.forces import loads as _loads
+                from plans.forces import polygons as _forces
 
                 loads = _loads.parse_loads(self.scene)
                 self._forces = (loads, _forces.analyse_forces(self.scene, self.kin, loads))
@@ -190,7 +190,7 @@ class Context:
             got = self.forces()
             out: tuple[Plan, ...] = ()
             if mu_f and got is not None:
-                from . import forces as _forces
+                from plans.forces import polygons as _forces
 
                 loads, _ = got
                 scene = replace(self.scene, scales={**self.scene.scales, "force": mu_f})

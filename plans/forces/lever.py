@@ -17,10 +17,18 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from .forces import RULER_MM, ForceAnalysis, _mu_force, _safe_div, _unit, force_polygons, nice_scale
-from .kinematics import cross
-from .loads import AppliedMoment
-from .plan import ConstructionLine, Plan, PlanPoint, Segment, Step
+from plans.forces.loads import AppliedMoment
+from plans.forces.polygons import (
+    RULER_MM,
+    ForceAnalysis,
+    _mu_force,
+    _safe_div,
+    _unit,
+    force_polygons,
+    nice_scale,
+)
+from plans.kinematics.exact import cross
+from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step
 
 C = NDArray[np.complex128]
 R = NDArray[np.float64]
@@ -120,7 +128,7 @@ def _auto_scale(fa: ForceAnalysis) -> float:
     module, the fastest point's image 80–100 mm long."""
     kin = fa.kin
     try:
-        from .construction import default_scales
+        from plans.kinematics.construction import default_scales
     except ImportError:  # pragma: no cover - the construction module is optional here
         pass
     else:

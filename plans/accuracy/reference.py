@@ -28,7 +28,7 @@ from dataclasses import dataclass
 import mpmath
 import numpy as np
 
-from .scene import Scene, scene_from_dict
+from plans.scene.model import Scene, scene_from_dict
 
 #: Crank angles in degrees: one number, a sequence or an array.
 Angles = Sequence[float] | float | np.ndarray

@@ -1,0 +1,9 @@
+"""Forces: the loads a scene applies (gravity, gas pressure, indicator diagrams, inertia,
+external and resisting forces), the force polygon of each Assur group by the Bruevich
+method, the crank and its balancing force or moment, and the Zhukovsky lever with the
+power balance.
+
+Owns: :mod:`.loads`, :mod:`.polygons`, :mod:`.lever`.  May import :mod:`plans.kinematics`
+and :mod:`plans.scene`.  The lever depends on the polygons, never the reverse.  Read
+first: :func:`plans.forces.polygons.analyse_forces`.
+"""

@@ -1,0 +1,20 @@
+"""Scene files: the mechanism as the file describes it (links, joints, guides, driver,
+positions, scales, outputs), read and validated into SI units.
+
+Owns: :mod:`plans.scene.model` (the frozen :class:`Scene` and its reader).  May import
+only the shared modules (:mod:`plans.errors`, :mod:`plans.io`, :mod:`plans.units`).
+Read first: :func:`load_scene`.
+"""
+
+from plans.scene.model import (
+    Driver,
+    Guide,
+    Joint,
+    Link,
+    Scene,
+    load_scene,
+    parse_scene,
+    scene_from_dict,
+)
+
+__all__ = ["Driver", "Guide", "Joint", "Link", "Scene", "load_scene", "parse_scene", "scene_from_dict"]
