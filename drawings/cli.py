@@ -4,10 +4,11 @@ subcommand that needs the renderer (``plans`` itself never imports ``drawings``)
 from __future__ import annotations
 
 import argparse
+import importlib
 from collections.abc import Sequence
 from pathlib import Path
 
-from plans.cli import run
+from plans.cli import register_commands, run
 from plans.errors import InputError
 
 from .export import FORMATS
@@ -36,21 +37,39 @@ def add_draw(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
 
 
 def draw_command(args: argparse.Namespace) -> int:
-    """``plans draw``: build the sheets, write them atomically, list what was written."""
-    from .draw import draw
+    """``plans draw``: build the sheets of any file of the family (linkage scene, engine,
+    gears, cam: dispatched on its ``kind``), write them atomically, list what was written."""
+
+    from plans.kinds import KINDS, read_kind
+
     from .export import save
 
     if args.dpi <= 0 or args.dpi > 1200:
         raise InputError(f"--dpi {args.dpi:g} is out of range; expected 1..1200")
-    drawing = draw(args.scene, format=args.sheet, orientation=args.orientation, language=args.language)
+    kind, _ = read_kind(args.scene)
+    try:
+        module = importlib.import_module(KINDS[kind][1])
+    except ModuleNotFoundError as exc:
+        if exc.name is None or not KINDS[kind][1].startswith(exc.name):
+            raise
+        raise InputError(f"drawing {kind!r} files is not available in this installation",
+                         file=args.scene, field="kind") from None
+    drawing = module.draw(args.scene, format=args.sheet, orientation=args.orientation,
+                          language=args.language)
     written = save(drawing.sheets, args.output, Path(args.scene).stem, args.format, args.dpi)
     for p in written:
         print(p)
     return 0
 
 
+#: Commands that need the renderer, each module with ``register(subparsers)``; a module
+#: that is absent is simply not offered.
+_DRAWING_COMMANDS = ("drawings.demo",)
+
+
 def build_parser() -> argparse.ArgumentParser:
-    """The engine's parser (solve, check, bench) with ``draw`` added."""
+    """The engine's parser (solve, check, bench, ...) with ``draw`` and the other
+    commands that need the renderer added."""
     try:
         from plans.cli import build_parser as base
     except ImportError:  # pragma: no cover - the engine's CLI not written yet
@@ -61,6 +80,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser = base()
     sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
     add_draw(sub)
+    register_commands(sub, _DRAWING_COMMANDS)
     if "check" in sub.choices:  # ``plans check --sheet DIR``: the marked and overlay sheets
         try:
             from .check_sheet import add_sheet_options

@@ -13,8 +13,10 @@ from plans.io import atomic_write, dumps
 from plans.results import solve_scene, table, to_json
 from plans.scene.model import load_scene
 
-#: Pure commands living in their own modules, each with ``register(subparsers)``.
-_COMMAND_MODULES = ("plans.check.report", "plans.accuracy.bench")
+#: Pure commands living in their own modules, each with ``register(subparsers)``; a module
+#: that is absent is simply not offered.
+_COMMAND_MODULES = ("plans.check.report", "plans.accuracy.bench", "plans.balancing.cli",
+                    "plans.gears.cli", "plans.cams.cli")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -29,15 +31,20 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--protocol", action="store_true", help="print the construction protocol")
     s.add_argument("--quiet", action="store_true", help="no table on stdout")
     s.set_defaults(func=_solve)
-    for mod in _COMMAND_MODULES:
+    register_commands(sub, _COMMAND_MODULES)
+    return parser
+
+
+def register_commands(sub: argparse._SubParsersAction, modules: Sequence[str]) -> None:
+    """Let each module add its subcommand (``register(sub)``); an absent module is skipped."""
+    for mod in modules:
         try:
             module = importlib.import_module(mod)
-        except ModuleNotFoundError as exc:  # a command whose module is absent is simply not offered
-            if exc.name != mod:
+        except ModuleNotFoundError as exc:
+            if exc.name is None or not (mod == exc.name or mod.startswith(exc.name + ".")):
                 raise
             continue
         module.register(sub)
-    return parser
 
 
 def _solve(args: argparse.Namespace) -> int:

@@ -193,6 +193,12 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
     r = _Reader(path)
     if data.get("format") != 1:
         raise r.fail("format", "expected format = 1")
+    kind = data.get("kind", "linkage")
+    if kind != "linkage":
+        from plans.kinds import command_for
+
+        raise r.fail("kind", f"this is a {kind!r} file, not a linkage scene; "
+                             f"{command_for(kind)}expected kind = \"linkage\" or no kind")
     unit = data.get("unit", "mm")
     if unit not in LENGTH_UNITS:
         raise r.fail("unit", f"expected one of {sorted(LENGTH_UNITS)}, got {unit!r}")
