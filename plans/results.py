@@ -95,6 +95,13 @@ def to_json(sol: Solution) -> dict[str, Any]:
 
         for pos, extra in zip(out["positions"], force_json(sol.forces[1]), strict=True):
             pos.update(extra)
+    if sol.plans or sol.forces is not None:
+        from plans.forces.protocol import force_steps, steps_json
+
+        for k, pos in enumerate(out["positions"]):
+            plans = (sol.plans[k].velocity, sol.plans[k].acceleration) if sol.plans else ()
+            forces = force_steps(sol.forces[0], sol.forces[1], k) if sol.forces is not None else ()
+            pos["steps"] = steps_json(plans, forces)
     return out
 
 
@@ -148,6 +155,11 @@ def table(sol: Solution, protocol: bool = False) -> str:
                 if plan is not None:
                     lines.append(f"  construction of the {plan.kind} plan:")
                     lines += ["   " + s for s in plan.protocol().splitlines()]
+            if sol.forces is not None:
+                from plans.forces import protocol as _protocol
+
+                fa, lv = sol.forces
+                lines += _protocol.protocol_lines(_protocol.force_steps(fa, lv, k))
         lines.append("")
     return "\n".join(lines)
 

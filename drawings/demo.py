@@ -1,0 +1,204 @@
+"""The demonstration page: one self-contained HTML file (inline SVG, CSS and a small script,
+no network) that replays the construction of a position step by step, runs the mechanism
+over the cycle with its plans following, and shows what classic mistakes do.
+
+The page solves nothing: every number and coordinate comes from :func:`plans.demo.lesson`,
+embedded as JSON; the script only draws and interpolates.  ``plans demo SCENE -o page.html``
+writes it; in Jupyter a :class:`Demo` displays inline.
+"""
+
+from __future__ import annotations
+
+import argparse
+import html
+import json
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+from plans.demo import FRAMES, lesson
+from plans.errors import InputError
+from plans.io import atomic_write
+from plans.scene.model import Scene, load_scene
+
+WORDS = {
+    "en": {
+        "steps": "Step by step", "cycle": "The cycle", "back": "◀ Back", "next": "Next ▶", "play": "▶ Play",
+        "pause": "❚❚ Pause", "mistakes_title": "Typical mistakes", "scheme": "Scheme",
+        "velocity_plan": "Velocity plan", "acceleration_plan": "Acceleration plan", "chart": "Balancing load",
+        "keys": "Keys: ← → step, Home / End; in the cycle ← → turn the crank, space plays.",
+        "panel_titles": {"velocity": "velocity plan", "acceleration": "acceleration plan",
+                         "force": "force polygon", "lever": "Zhukovsky lever",
+                         "crank": "initial link"},
+        "mistakes": {"coriolis": "Coriolis vector reversed", "normal": "normal component from the wrong point",
+                     "couple": "inertia couple with the wrong sign", "pi": "π = 3.14"},
+        "position": "position",
+    },
+    "ru": {
+        "steps": "По шагам", "cycle": "Цикл", "back": "◀ Назад", "next": "Далее ▶", "play": "▶ Пуск",
+        "pause": "❚❚ Пауза", "mistakes_title": "Типичные ошибки", "scheme": "Схема",
+        "velocity_plan": "План скоростей", "acceleration_plan": "План ускорений", "chart": "Уравновешивающая нагрузка",
+        "keys": "Клавиши: ← → шаг, Home / End; в цикле ← → поворот кривошипа, пробел — пуск.",
+        "panel_titles": {"velocity": "план скоростей", "acceleration": "план ускорений",
+                         "force": "план сил", "lever": "рычаг Жуковского",
+                         "crank": "начальное звено"},
+        "mistakes": {"coriolis": "кориолисово ускорение в обратную сторону",
+                     "normal": "нормальная составляющая не от той точки",
+                     "couple": "момент сил инерции с неверным знаком", "pi": "π = 3,14"},
+        "position": "положение",
+    },
+}
+
+_CSS = """
+:root { --ink: #1b1b1b; --hi: #c0392b; --bad: #d35400; --thin: #7f8c8d; --bg: #fdfdfb; }
+* { box-sizing: border-box; }
+body { margin: 0; font: clamp(14px, 1.6vw, 22px)/1.35 "DejaVu Sans", Arial, sans-serif; color: var(--ink);
+       background: var(--bg); }
+header { display: flex; align-items: center; gap: 1em; padding: .4em .8em; border-bottom: 1px solid #ccc; }
+header h1 { font-size: 1.1em; margin: 0; flex: 1; }
+header button.on, .tab.on { background: var(--ink); color: #fff; }
+button { font: inherit; padding: .25em .7em; border: 1px solid #888; background: #fff; border-radius: 4px;
+         cursor: pointer; }
+button:disabled { opacity: .4; cursor: default; }
+main { padding: .4em .8em; }
+.stage { display: grid; grid-template-columns: 1fr 1fr; gap: .6em; }
+.cycle .stage { grid-template-columns: 1.3fr 1fr 1fr; }
+figure { margin: 0; border: 1px solid #ddd; background: #fff; }
+figcaption { font-size: .8em; padding: .1em .4em; border-bottom: 1px solid #eee; }
+svg { width: 100%; height: auto; max-height: 58vh; display: block; }
+#cyc-chart { max-height: 24vh; }
+.controls { display: flex; align-items: center; gap: .6em; margin: .4em 0; flex-wrap: wrap; }
+#tabs { display: flex; gap: .3em; flex-wrap: wrap; margin: .3em 0; }
+.tab { font-size: .75em; }
+#step-text { font-size: 1.05em; min-height: 2.8em; margin: .3em 0; padding: .3em .5em; background: #f4f4ef;
+             border-left: 4px solid var(--hi); }
+#mistakes { font-size: .85em; display: flex; gap: 1.2em; flex-wrap: wrap; }
+#mistake-text { color: var(--bad); font-size: .9em; }
+.keys { color: var(--thin); font-size: .7em; }
+input[type=range] { flex: 1; min-width: 12em; }
+.link { stroke: var(--ink); fill: rgba(0,0,0,.03); stroke-linejoin: round; }
+.link.hi, .slider.hi { stroke: var(--hi); }
+.slider { fill: #fff; stroke: var(--ink); }
+.guide { stroke: var(--thin); stroke-dasharray: 3 2; }
+.ground { fill: none; stroke: var(--ink); }
+.joint { fill: #fff; stroke: var(--ink); }
+.joint.hi, .pt.hi { fill: var(--hi); stroke: var(--hi); }
+.pt { fill: var(--ink); }
+.label { fill: var(--ink); font-family: "DejaVu Sans", Arial, sans-serif; }
+.label.hi { fill: var(--hi); font-weight: bold; }
+.label.bad { fill: var(--bad); }
+.seglabel { fill: #555; font-style: italic; }
+.cline { stroke: var(--thin); stroke-dasharray: 2 1.5; }
+.cline.hi { stroke: var(--hi); }
+.seg { stroke: var(--ink); }
+.seg.rel, .seg.nrm, .seg.tan, .seg.cor, .seg.sld { stroke: #2c3e50; stroke-dasharray: 4 1.5; }
+.seg.cor { stroke: #8e44ad; }
+.seg.cls { stroke: #16a085; }
+.seg.hi { stroke: var(--hi); stroke-dasharray: none; }
+.seg.bad, .wrong { stroke: var(--bad); }
+.wrongpt { fill: none; stroke: var(--bad); }
+.arrow { fill: var(--ink); } .arrow.hi { fill: var(--hi); } .arrow.bad { fill: var(--bad); }
+.axis { stroke: var(--thin); } .curve { stroke: #2c3e50; } .cursor { stroke: var(--hi); }
+@media (max-width: 900px) { .stage, .cycle .stage { grid-template-columns: 1fr; } }
+@media print {
+  header nav, .controls, #tabs, #mistakes, .keys, #cycle-view { display: none !important; }
+  body { background: #fff; font-size: 11pt; }
+  svg { max-height: none; }
+}
+"""
+
+_BODY = """<header><h1>{title}</h1><nav><button id="mode-steps" class="on">{steps}</button>
+<button id="mode-cycle">{cycle}</button></nav></header>
+<main>
+<section id="steps-view">
+<div class="stage"><figure><figcaption>{scheme}, φ = {phi}°</figcaption><svg id="scheme" role="img"></svg></figure>
+<figure><figcaption id="panel-title"></figcaption><svg id="panel" role="img"></svg></figure></div>
+<div class="controls"><button id="back">{back}</button><span id="counter"></span><button id="next">{next}</button></div>
+<div id="tabs"></div>
+<p id="step-text"></p>
+<fieldset id="mistakes"><legend>{mistakes_title}</legend></fieldset>
+<p id="mistake-text"></p>
+<p class="keys">{keys}</p>
+</section>
+<section id="cycle-view" class="cycle" hidden>
+<div class="stage"><figure><figcaption>{scheme}</figcaption><svg id="cyc-scheme" role="img"></svg></figure>
+<figure><figcaption>{velocity_plan}</figcaption><svg id="cyc-vel" role="img"></svg></figure>
+<figure><figcaption>{acceleration_plan}</figcaption><svg id="cyc-acc" role="img"></svg></figure></div>
+<div class="controls"><button id="play">{play}</button><input id="phi" type="range" min="0" step="0.01" value="0">
+<output id="phi-out"></output></div>
+<figure><figcaption>{chart}</figcaption><svg id="cyc-chart" role="img"></svg></figure>
+</section>
+</main>"""
+
+
+def _script_json(data: Any) -> str:
+    """JSON safe inside <script>: no '</script>' or '<!--' can close or confuse the element."""
+    text = json.dumps(data, ensure_ascii=False, separators=(",", ":"), allow_nan=False)
+    return text.replace("<", "\\u003c").replace(">", "\\u003e").replace("&", "\\u0026")
+
+
+def _language(scene: Scene, language: str | None) -> str:
+    if language is not None:
+        if language not in WORDS:
+            raise InputError(f"expected one of {', '.join(WORDS)}, got {language!r}", field="--language")
+        return language
+    sheet = scene.raw.get("sheet", {})
+    lang = sheet.get("language", "ru") if isinstance(sheet, dict) else "ru"
+    return lang if lang in WORDS else "ru"
+
+
+def page(scene: Scene | str | Path, *, language: str | None = None, frames: int = FRAMES,
+         phi_deg: float | None = None) -> str:
+    """The whole page as text."""
+    sc = scene if isinstance(scene, Scene) else load_scene(scene)
+    lang = _language(sc, language)
+    data = lesson(sc, phi_deg=phi_deg, frames=frames)
+    words = WORDS[lang]
+    esc = {k: html.escape(v) for k, v in words.items() if isinstance(v, str)}
+    body = _BODY.format(title=html.escape(data["title"]), phi=f"{data['phi_deg']:g}", **esc)
+    script = resources.files("drawings").joinpath("demo_page.js").read_text(encoding="utf-8")
+    return (f'<!DOCTYPE html>\n<html lang="{lang}"><head><meta charset="utf-8">'
+            f'<meta name="viewport" content="width=device-width, initial-scale=1">'
+            f'<meta http-equiv="Content-Security-Policy" content="default-src \'none\'; '
+            f'style-src \'unsafe-inline\'; script-src \'unsafe-inline\'; img-src data:">'
+            f"<title>{html.escape(data['title'])}</title><style>{_CSS}</style></head>\n<body>\n{body}\n"
+            f'<script id="lesson" type="application/json">{_script_json(data)}</script>\n'
+            f'<script id="words" type="application/json">{_script_json(words)}</script>\n'
+            f"<script>{script}</script>\n</body></html>\n")
+
+
+class Demo:
+    """A demonstration page for Jupyter: ``Demo("samples/v_engine.toml")`` in a cell shows it."""
+
+    def __init__(self, scene: Scene | str | Path, *, language: str | None = None, frames: int = FRAMES,
+                 phi_deg: float | None = None, height: int = 720) -> None:
+        self.html = page(scene, language=language, frames=frames, phi_deg=phi_deg)
+        self.height = height
+
+    def _repr_html_(self) -> str:
+        return (f'<iframe srcdoc="{html.escape(self.html, quote=True)}" style="width:100%;height:{self.height}px;'
+                f'border:0" sandbox="allow-scripts"></iframe>')
+
+    def save(self, path: str | Path) -> Path:
+        atomic_write(path, self.html)
+        return Path(path)
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("demo", help="a self-contained HTML page: the plans step by step, the cycle, mistakes")
+    p.add_argument("scene", help="scene file (TOML)")
+    p.add_argument("-o", "--output", required=True, metavar="PAGE.html", help="the page to write")
+    p.add_argument("--language", choices=tuple(WORDS), help="overrides [sheet] language")
+    p.add_argument("--frames", type=int, default=FRAMES, help=f"positions per turn in the cycle (default {FRAMES})")
+    p.add_argument("--phi", type=float, metavar="DEG", help="the position built step by step (default the first)")
+    p.set_defaults(func=_command)
+
+
+def _command(args: argparse.Namespace) -> int:
+    text = page(args.scene, language=args.language, frames=args.frames, phi_deg=args.phi)
+    atomic_write(args.output, text)
+    print(args.output)
+    return 0
+
+
+__all__ = ["Demo", "WORDS", "page", "register"]

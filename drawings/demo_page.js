@@ -1,0 +1,322 @@
+"use strict";
+(function () {
+  const L = JSON.parse(document.getElementById("lesson").textContent);
+  const T = JSON.parse(document.getElementById("words").textContent);
+  const NS = "http://www.w3.org/2000/svg";
+  const $ = (id) => document.getElementById(id);
+  const KIND = {absolute: "abs", relative: "rel", normal: "nrm", tangential: "tan", coriolis: "cor",
+    sliding: "sld", force: "frc", closing: "cls"};
+
+  function el(parent, tag, attrs, text) {
+    const e = document.createElementNS(NS, tag);
+    for (const k in attrs) e.setAttribute(k, attrs[k]);
+    if (text !== undefined) e.textContent = text;
+    parent.appendChild(e);
+    return e;
+  }
+  const f3 = (x) => (Math.round(x * 1000) / 1000).toString();
+  function fit(svg, boxes, pad) {
+    let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+    for (const [x, y] of boxes) { x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, -y); y1 = Math.max(y1, -y); }
+    if (!isFinite(x0)) { x0 = -10; x1 = 10; y0 = -10; y1 = 10; }
+    const w = Math.max(x1 - x0, 20), h = Math.max(y1 - y0, 20);
+    const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+    svg.setAttribute("viewBox", [cx - w / 2 - pad, cy - h / 2 - pad, w + 2 * pad, h + 2 * pad].map(f3).join(" "));
+    return Math.max(w, h) + 2 * pad;
+  }
+  function clear(svg) { while (svg.lastChild) svg.removeChild(svg.lastChild); }
+  function defs(svg) {
+    const d = el(svg, "defs", {});
+    for (const [id, cls] of [["arr", "arrow"], ["arr-hi", "arrow hi"], ["arr-bad", "arrow bad"]]) {
+      const m = el(d, "marker", {id: svg.id + "-" + id, viewBox: "0 0 10 10", refX: "10", refY: "5",
+        markerWidth: "6", markerHeight: "6", orient: "auto-start-reverse", markerUnits: "strokeWidth"});
+      el(m, "path", {d: "M0,1 L10,5 L0,9 z", class: cls});
+    }
+  }
+
+  // ---------------------------------------------------------------- the scheme
+  function lerp(a, b, f) { return [a[0] + (b[0] - a[0]) * f, a[1] + (b[1] - a[1]) * f]; }
+  function at(track, t) {
+    const n = track.length;
+    if (n === 1) return track[0];
+    const i = Math.floor(t) % n, f = t - Math.floor(t);
+    return lerp(track[i], track[(i + 1) % n], f);
+  }
+  function angleAt(track, t) {
+    const n = track.length;
+    if (n === 1) return track[0];
+    const i = Math.floor(t) % n, f = t - Math.floor(t);
+    let a = track[i], b = track[(i + 1) % n];
+    while (b - a > 180) b -= 360;
+    while (a - b > 180) b += 360;
+    return a + (b - a) * f;
+  }
+  function drawScheme(svg, S, t, marks, links, size) {
+    clear(svg);
+    defs(svg);
+    const u = size / 100;
+    const P = (nm) => at(S.points[nm], t);
+    for (const g of S.guides) {
+      el(svg, "line", {x1: f3(g.from[0]), y1: f3(-g.from[1]), x2: f3(g.to[0]), y2: f3(-g.to[1]), class: "guide",
+        "stroke-width": f3(0.3 * u)});
+    }
+    for (const lk of S.links) {
+      const pts = lk.points.map(P);
+      if (pts.length < 2) continue;
+      const hi = links.indexOf(lk.id) >= 0;
+      const d = pts.map((p, k) => (k ? "L" : "M") + f3(p[0]) + "," + f3(-p[1])).join(" ") + (pts.length > 2 ? " Z" : "");
+      el(svg, "path", {d: d, class: "link" + (hi ? " hi" : ""), "stroke-width": f3((hi ? 1.1 : 0.7) * u),
+        "data-link": lk.id});
+    }
+    for (const s of S.sliders) {
+      const p = P(s.point), a = angleAt(s.angle_deg, t);
+      const hi = links.indexOf(s.link) >= 0;
+      el(svg, "rect", {x: f3(p[0] - 5 * u), y: f3(-p[1] - 3 * u), width: f3(10 * u), height: f3(6 * u),
+        class: "slider" + (hi ? " hi" : ""), "stroke-width": f3(0.6 * u),
+        transform: "rotate(" + f3(-a) + " " + f3(p[0]) + " " + f3(-p[1]) + ")"});
+    }
+    for (const nm of S.frame_points) {
+      const p = P(nm);
+      el(svg, "path", {d: "M" + f3(p[0]) + "," + f3(-p[1]) + " l" + f3(-3 * u) + "," + f3(5 * u) + " h" + f3(6 * u) + " z",
+        class: "ground", "stroke-width": f3(0.4 * u)});
+    }
+    for (const nm in S.points) {
+      const p = P(nm), hi = marks.indexOf(nm) >= 0;
+      el(svg, "circle", {id: svg.id + "-joint-" + nm, cx: f3(p[0]), cy: f3(-p[1]), r: f3((hi ? 1.8 : 1.1) * u),
+        class: "joint" + (hi ? " hi" : ""), "stroke-width": f3(0.35 * u)});
+      el(svg, "text", {x: f3(p[0] + 2 * u), y: f3(-p[1] - 2 * u), "font-size": f3(4 * u), class: "label" + (hi ? " hi" : "")}, nm);
+    }
+  }
+  function schemeBox(S) {
+    const pts = [];
+    for (const nm in S.points) for (const p of S.points[nm]) pts.push(p);
+    for (const g of S.guides) pts.push(g.from, g.to);
+    return pts;
+  }
+
+  // ---------------------------------------------------------------- a plan, step by step
+  function drawPanel(svg, panel, upto, fresh, mistake) {
+    clear(svg);
+    defs(svg);
+    const pts = Object.values(panel.points);
+    if (mistake) for (const k in mistake.moved) pts.push(mistake.moved[k]);
+    const size = fit(svg, pts, 12);
+    const u = size / 100;
+    const shown = upto.points, segs = upto.segments, lines = upto.lines;
+    for (const k of lines) {
+      const ln = panel.lines[k], R = size * 1.5;
+      const hi = fresh.lines.indexOf(k) >= 0;
+      el(svg, "line", {x1: f3(ln.point[0] - R * ln.dir[0]), y1: f3(-(ln.point[1] - R * ln.dir[1])),
+        x2: f3(ln.point[0] + R * ln.dir[0]), y2: f3(-(ln.point[1] + R * ln.dir[1])),
+        class: "cline" + (hi ? " hi" : ""), "stroke-width": f3(0.25 * u), "data-line": k});
+    }
+    for (const k of segs) {
+      const s = panel.segments[k], a = panel.points[s.from], b = panel.points[s.to];
+      const hi = fresh.segments.indexOf(k) >= 0;
+      const bad = mistake && mistake.highlight && mistake.highlight.indexOf(s.label) >= 0;
+      if (Math.hypot(b[0] - a[0], b[1] - a[1]) < 1e-6) continue;
+      el(svg, "line", {x1: f3(a[0]), y1: f3(-a[1]), x2: f3(b[0]), y2: f3(-b[1]),
+        class: "seg " + (KIND[s.kind] || "abs") + (hi ? " hi" : "") + (bad ? " bad" : ""),
+        "stroke-width": f3((hi ? 0.9 : 0.6) * u), "marker-end": "url(#" + svg.id + (bad ? "-arr-bad" : hi ? "-arr-hi" : "-arr") + ")",
+        "data-seg": s.label});
+      const m = [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
+      el(svg, "text", {x: f3(m[0] + 1.5 * u), y: f3(-m[1] - 1.5 * u), "font-size": f3(3.2 * u), class: "seglabel"}, s.label);
+    }
+    for (const nm of shown) {
+      const p = panel.points[nm], hi = fresh.points.indexOf(nm) >= 0;
+      el(svg, "circle", {cx: f3(p[0]), cy: f3(-p[1]), r: f3((hi ? 1.4 : 0.9) * u), class: "pt" + (hi ? " hi" : ""),
+        "data-point": nm});
+      el(svg, "text", {x: f3(p[0] + 1.8 * u), y: f3(-p[1] + 4.2 * u), "font-size": f3(4 * u), class: "label" + (hi ? " hi" : "")}, nm);
+    }
+    if (mistake) {
+      for (const nm in mistake.moved) {
+        const w = mistake.moved[nm], r = mistake.right[nm] || w;
+        el(svg, "line", {x1: f3(r[0]), y1: f3(-r[1]), x2: f3(w[0]), y2: f3(-w[1]), class: "wrong",
+          "stroke-width": f3(0.5 * u), "marker-end": "url(#" + svg.id + "-arr-bad)"});
+        el(svg, "circle", {cx: f3(w[0]), cy: f3(-w[1]), r: f3(1.6 * u), class: "wrongpt", "stroke-width": f3(0.4 * u),
+          "data-wrong": nm});
+        el(svg, "text", {x: f3(w[0] + 2 * u), y: f3(-w[1] - 2 * u), "font-size": f3(4 * u), class: "label bad"}, nm + "′");
+      }
+    }
+  }
+
+  // ---------------------------------------------------------------- step-by-step state
+  let cur = 0;
+  const steps = L.steps;
+  const panelsById = {};
+  for (const p of L.panels) panelsById[p.id] = p;
+  const schemeSize = fit($("scheme"), schemeBox(L.scheme), 12);
+  let mistakeOn = null;
+
+  function revealed(n) {
+    const pid = steps[n].panel, acc = {points: [panelsById[pid].pole], segments: [], lines: []};
+    for (let k = 0; k <= n; k++) {
+      if (steps[k].panel !== pid) continue;
+      acc.points.push(...steps[k].points);
+      acc.segments.push(...steps[k].segments);
+      acc.lines.push(...steps[k].lines);
+    }
+    return acc;
+  }
+  function panelTitle(p) {
+    if (p.id === "crank") return T.panel_titles.crank;
+    return (T.panel_titles[p.kind] || p.title) + (p.id.startsWith("group") ? " " + p.id.slice(6) : "");
+  }
+  function tabs() {
+    const bar = $("tabs");
+    bar.textContent = "";
+    for (const p of L.panels) {
+      const first = steps.findIndex((s) => s.panel === p.id);
+      const b = document.createElement("button");
+      b.textContent = panelTitle(p);
+      b.className = steps[cur].panel === p.id ? "tab on" : "tab";
+      b.onclick = () => go(first);
+      bar.appendChild(b);
+    }
+  }
+  function go(n) {
+    cur = Math.max(0, Math.min(steps.length - 1, n));
+    const s = steps[cur], panel = panelsById[s.panel];
+    const m = mistakeOn && mistakeOn.panel === s.panel ? mistakeOn : null;
+    drawPanel($("panel"), panel, revealed(cur), s, m);
+    drawScheme($("scheme"), L.scheme, 0, s.scheme, s.links, schemeSize);
+    $("counter").textContent = (cur + 1) + " / " + steps.length;
+    $("step-text").textContent = s.text;
+    $("panel-title").textContent = panelTitle(panel) + ", μ = " + panel.scale.toPrecision(4) + " " + panel.unit;
+    $("back").disabled = cur === 0;
+    $("next").disabled = cur === steps.length - 1;
+    document.body.dataset.step = String(cur);
+    tabs();
+  }
+  function mistakesBox() {
+    const box = $("mistakes");
+    if (!L.mistakes.length) { box.hidden = true; return; }
+    for (const m of L.mistakes) {
+      const lab = document.createElement("label");
+      const cb = document.createElement("input");
+      cb.type = "checkbox";
+      cb.id = "mistake-" + m.id;
+      cb.onchange = () => {
+        for (const o of box.querySelectorAll("input")) if (o !== cb) o.checked = false;
+        mistakeOn = cb.checked ? m : null;
+        $("mistake-text").textContent = cb.checked ? m.text : "";
+        if (cb.checked) {
+          let last = -1;
+          steps.forEach((s, k) => { if (s.panel === m.panel) last = k; });
+          go(last);
+        } else go(cur);
+      };
+      lab.appendChild(cb);
+      lab.appendChild(document.createTextNode(" " + (T.mistakes[m.id] || m.title)));
+      box.appendChild(lab);
+    }
+  }
+
+  // ---------------------------------------------------------------- the cycle
+  const C = L.cycle, N = C.phi_deg.length;
+  let t = 0, playing = false, last = 0;
+  const cycSize = fit($("cyc-scheme"), schemeBox(C.scheme), 10);
+  $("cyc-scheme").dataset.muL = String(C.scheme.mu_l);
+  function planBox(images) {
+    const pts = [[0, 0]];
+    for (const nm in images) for (const p of images[nm]) pts.push(p);
+    return pts;
+  }
+  const velSize = C.velocity ? fit($("cyc-vel"), planBox(C.velocity), 8) : 0;
+  const accSize = C.acceleration ? fit($("cyc-acc"), planBox(C.acceleration), 8) : 0;
+  function drawCyclePlan(svg, images, size, pole) {
+    clear(svg);
+    defs(svg);
+    const u = size / 100;
+    for (const lk of C.scheme.links) {
+      const pts = lk.points.map((nm) => images[nm.toLowerCase()]).filter((x) => x).map((tr) => at(tr, t));
+      if (pts.length < 2) continue;
+      const d = pts.map((p, k) => (k ? "L" : "M") + f3(p[0]) + "," + f3(-p[1])).join(" ") + (pts.length > 2 ? " Z" : "");
+      el(svg, "path", {d: d, class: "seg rel", "stroke-width": f3(0.4 * u), fill: "none"});
+    }
+    for (const nm in images) {
+      const p = at(images[nm], t);
+      if (Math.hypot(p[0], p[1]) > 1e-6) {
+        el(svg, "line", {x1: "0", y1: "0", x2: f3(p[0]), y2: f3(-p[1]), class: "seg abs", "stroke-width": f3(0.5 * u),
+          "marker-end": "url(#" + svg.id + "-arr)"});
+      }
+      el(svg, "text", {x: f3(p[0] + 1.5 * u), y: f3(-p[1] - 1.5 * u), "font-size": f3(4.5 * u), class: "label"}, nm);
+    }
+    el(svg, "circle", {cx: "0", cy: "0", r: f3(1.2 * u), class: "pt"});
+    el(svg, "text", {x: f3(-6 * u), y: f3(5 * u), "font-size": f3(4.5 * u), class: "label"}, pole);
+  }
+  function drawChart() {
+    const svg = $("cyc-chart");
+    clear(svg);
+    const ch = C.chart;
+    if (!ch) { svg.style.display = "none"; return; }
+    const W = 200, H = 80, vals = ch.values;
+    let lo = Math.min(0, ...vals), hi = Math.max(0, ...vals);
+    if (hi - lo < 1e-12) { hi = lo + 1; }
+    svg.setAttribute("viewBox", "-14 -6 " + (W + 20) + " " + (H + 18));
+    const X = (k) => (k / N) * W, Y = (v) => H - ((v - lo) / (hi - lo)) * H;
+    el(svg, "line", {x1: "0", y1: f3(Y(0)), x2: String(W), y2: f3(Y(0)), class: "axis", "stroke-width": "0.3"});
+    el(svg, "line", {x1: "0", y1: "0", x2: "0", y2: String(H), class: "axis", "stroke-width": "0.3"});
+    const d = vals.concat([vals[0]]).map((v, k) => (k ? "L" : "M") + f3(X(k)) + "," + f3(Y(v))).join(" ");
+    el(svg, "path", {d: d, class: "curve", "stroke-width": "0.6", fill: "none"});
+    const v = at(vals.map((x) => [x, 0]), t)[0];
+    el(svg, "line", {id: "cursor", x1: f3(X(t)), y1: "0", x2: f3(X(t)), y2: String(H), class: "cursor", "stroke-width": "0.5"});
+    el(svg, "text", {x: "2", y: "-1", "font-size": "5", class: "label"}, ch.label + "(φ) = " + v.toPrecision(5) + " " + ch.unit);
+    el(svg, "text", {x: String(W - 20), y: String(H + 8), "font-size": "5", class: "label"}, "φ, °");
+  }
+  function drawCycle() {
+    drawScheme($("cyc-scheme"), C.scheme, t, [], [], cycSize);
+    if (C.velocity) drawCyclePlan($("cyc-vel"), C.velocity, velSize, "p_v");
+    if (C.acceleration) drawCyclePlan($("cyc-acc"), C.acceleration, accSize, "p_a");
+    drawChart();
+    const phi = ((Math.floor(t) % N) + (t - Math.floor(t))) * (360 / N);
+    $("phi-out").textContent = "φ = " + phi.toFixed(1) + "°";
+    $("phi").value = String(t);
+  }
+  function frame(now) {
+    if (!playing) return;
+    const dt = Math.min(0.1, (now - last) / 1000);
+    last = now;
+    t = (t + dt * N / 6) % N;  // one turn in six seconds
+    drawCycle();
+    requestAnimationFrame(frame);
+  }
+  function play(on) {
+    playing = on;
+    $("play").textContent = on ? T.pause : T.play;
+    if (on) { last = performance.now(); requestAnimationFrame(frame); }
+  }
+
+  // ---------------------------------------------------------------- wiring
+  function mode(which) {
+    $("steps-view").hidden = which !== "steps";
+    $("cycle-view").hidden = which !== "cycle";
+    $("mode-steps").className = which === "steps" ? "on" : "";
+    $("mode-cycle").className = which === "cycle" ? "on" : "";
+    if (which === "cycle") drawCycle(); else play(false);
+  }
+  $("next").onclick = () => go(cur + 1);
+  $("back").onclick = () => go(cur - 1);
+  $("mode-steps").onclick = () => mode("steps");
+  $("mode-cycle").onclick = () => mode("cycle");
+  $("phi").max = String(N);
+  $("phi").oninput = () => { t = Math.min(parseFloat($("phi").value), N - 1e-9); drawCycle(); };
+  $("play").onclick = () => play(!playing);
+  document.addEventListener("keydown", (e) => {
+    if (e.target && e.target.tagName === "INPUT" && e.target.type === "range") return;
+    if (!$("steps-view").hidden) {
+      if (e.key === "ArrowRight" || e.key === "PageDown" || e.key === " ") { go(cur + 1); e.preventDefault(); }
+      if (e.key === "ArrowLeft" || e.key === "PageUp") { go(cur - 1); e.preventDefault(); }
+      if (e.key === "Home") go(0);
+      if (e.key === "End") go(steps.length - 1);
+    } else {
+      if (e.key === "ArrowRight") { t = (t + 1) % N; drawCycle(); }
+      if (e.key === "ArrowLeft") { t = (t - 1 + N) % N; drawCycle(); }
+      if (e.key === " ") { play(!playing); e.preventDefault(); }
+    }
+  });
+  mistakesBox();
+  go(0);
+  window.plansDemo = {go: go, step: () => cur, steps: steps.length, setPhi: (x) => { t = x; drawCycle(); }, mode: mode};
+  document.body.dataset.ready = "1";
+})();

@@ -1,0 +1,292 @@
+"""A lesson: everything a demonstration shows of one scene, as plain data.
+
+- the construction of one position, step by step in the textbook's order (velocity plan,
+  acceleration plan, each group's force polygon with its moment equations, the crank,
+  the lever), each step naming what it draws and what it highlights on the scheme;
+- the cycle: the scheme and the plans at ``frames`` equally spaced crank angles, from the
+  exact analysis (the page only interpolates, it solves nothing);
+- the classic mistakes and how far each one moves the result (:mod:`plans.demo.mistakes`).
+
+Coordinates are millimetres on the page (scheme at μl, plans at their μ), y up.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from plans.demo.mistakes import mistakes
+from plans.errors import InputError, PlansError
+from plans.kinematics.exact import Kinematics, solve
+from plans.kinematics.plan import Plan, Step
+from plans.results import Solution, solve_scene
+from plans.scene.model import Scene
+
+#: How many crank positions the cycle of a page holds by default (every 5°).
+FRAMES = 72
+#: Largest number of frames a page may hold (the page stays small and quick to open).
+MAX_FRAMES = 720
+
+
+def _r(x: float) -> float:
+    """Page coordinates to 1 µm: small pages, and no −0.0 or round-off dust."""
+    v = round(float(x), 3)
+    return v + 0.0
+
+
+def _xy(z: complex) -> list[float]:
+    return [_r(z.real), _r(z.imag)]
+
+
+def _nice_length_scale(extent_m: float, target_mm: float = 120.0) -> float:
+    """μl (mm per m) from the standard ratios, the largest that keeps the scheme within target."""
+    ratios = [10.0, 5.0, 4.0, 2.5, 2.0, 1.0, 0.5, 0.4, 0.25, 0.2, 0.1, 0.05, 0.04, 0.025, 0.02, 0.01]
+    if extent_m <= 0:
+        return 1000.0
+    for r in ratios:
+        if extent_m * 1000.0 * r <= target_mm:
+            return 1000.0 * r
+    k = math.floor(math.log10(target_mm / (extent_m * 1000.0)))
+    return 1000.0 * 10.0**k
+
+
+# --------------------------------------------------------------------------- the scheme
+
+
+def _scheme(scene: Scene, kin: Kinematics, mu_l: float) -> dict[str, Any]:
+    """The mechanism's drawing over the frames: joints, links as bars, sliders, guides."""
+    names = kin.point_names()
+    points = {nm: [_xy(z * mu_l) for z in kin.point(nm)[0]] for nm in names}
+    links = []
+    for lid in sorted(scene.links):
+        link = scene.links[lid]
+        pts = [p for p in link.points if p in points]
+        links.append({"id": lid, "name": link.name, "points": pts, "axis": [p for p in link.axis if p in points]})
+    sliders = []
+    guides = []
+    for jt in scene.joints:
+        if jt.kind != "P" or jt.guide is None:
+            continue
+        g = jt.guide
+        if g.link == scene.frame:
+            ang = np.full(kin.n, g.angle)
+        else:
+            ang = kin.theta(g.link) + g.angle
+        sliders.append({"point": jt.point, "link": jt.slider,
+                        "angle_deg": [_r(math.degrees(a)) for a in ang]})
+        if g.link == scene.frame:
+            pin = kin.point(jt.point)[0]
+            d = complex(math.cos(g.angle), math.sin(g.angle))
+            s = ((pin - g.origin) * d.conjugate()).real
+            lo, hi = float(np.min(s)), float(np.max(s))
+            pad = 0.15 * (hi - lo) + 0.02 * (abs(lo) + abs(hi)) + 1e-9
+            a, b = g.origin + (lo - pad) * d, g.origin + (hi + pad) * d
+            guides.append({"from": _xy(a * mu_l), "to": _xy(b * mu_l), "point": jt.point})
+    return {"mu_l": mu_l, "points": points, "frame_points": sorted(scene.frame_points),
+            "links": links, "sliders": sliders, "guides": guides, "frame": scene.frame}
+
+
+def _plan_images(kin: Kinematics, names: list[str], order: int, mu: float) -> dict[str, list[list[float]]]:
+    """Images of the moving points on a plan (the frame's points sit on the pole)."""
+    out = {}
+    for nm in names:
+        if nm in kin.scene.frame_points:
+            continue
+        z = kin.point(nm)[order]
+        if z is None:
+            continue
+        out[nm.lower()] = [_xy(w * mu) for w in z]
+    return out
+
+
+# --------------------------------------------------------------------------- steps
+
+
+def _panel(pid: str, title: str, plan: Plan, unit: str) -> dict[str, Any]:
+    return {
+        "id": pid, "title": title, "kind": plan.kind, "scale": plan.scale, "unit": unit, "pole": plan.pole,
+        "points": {p.name: _xy(complex(*p.xy)) for p in plan.points},
+        "segments": [{"from": s.start, "to": s.end, "kind": s.kind, "label": s.label} for s in plan.segments],
+        "lines": [{"point": _xy(complex(*ln.point)), "dir": [round(ln.direction[0], 9) + 0.0, round(ln.direction[1], 9) + 0.0],
+                   "label": ln.label} for ln in plan.lines],
+    }
+
+
+def _on_line(xy: tuple[float, float], ln: dict[str, Any], tol: float) -> bool:
+    px, py = ln["point"]
+    dx, dy = ln["dir"]
+    return abs((xy[0] - px) * dy - (xy[1] - py) * dx) <= tol
+
+
+def _reveal(panel: dict[str, Any], steps: list[Step]) -> list[dict[str, Any]]:
+    """Which points, segments and construction lines each step of a plan draws.
+
+    A point appears with the step that makes it; a segment when both its ends are there
+    (a closing vector only with the step that names it); a construction line with the
+    first step whose new point lies on it."""
+    pts = panel["points"]
+    closing = {s.output for s in steps if s.op == "closing"}
+    shown: set[str] = {panel["pole"]}
+    seg_done: set[int] = set()
+    line_done: set[int] = set()
+    tol = max(2e-3, 1e-6 * max([1.0] + [math.hypot(*xy) for xy in pts.values()]))  # kept to 1 µm
+    out: list[dict[str, list]] = []
+    for s in steps:
+        new_pts: list[str] = []
+        for nm in (*s.inputs, s.output):  # the lever's forces start at images no step made
+            if nm in pts and nm not in shown and nm not in new_pts:
+                new_pts.append(nm)
+        shown.update(new_pts)
+        named = s.output if s.op == "closing" else None
+        segs = []
+        for k, sg in enumerate(panel["segments"]):
+            if k in seg_done or sg["from"] not in shown or sg["to"] not in shown:
+                continue
+            if sg["label"] in closing and sg["label"] != named and s.op != "intersect":
+                continue
+            segs.append(k)
+        seg_done.update(segs)
+        lines = []
+        if s.output in pts:
+            for k, ln in enumerate(panel["lines"]):
+                at_anchor = math.hypot(pts[s.output][0] - ln["point"][0], pts[s.output][1] - ln["point"][1]) <= tol
+                if k not in line_done and not at_anchor and _on_line(tuple(pts[s.output]), ln, tol):
+                    lines.append(k)
+        line_done.update(lines)
+        out.append({"points": new_pts, "segments": segs, "lines": lines})
+    if out:  # anything a step did not claim is drawn with the last one
+        out[-1]["segments"] += [k for k in range(len(panel["segments"])) if k not in seg_done]
+        out[-1]["lines"] += [k for k in range(len(panel["lines"])) if k not in line_done]
+    return out
+
+
+def _scheme_marks(scene: Scene, step: Step, plan: str) -> list[str]:
+    """Scheme points a step is about: the plan's lower-case images name them."""
+    names = {nm.lower(): nm for lid in scene.links for nm in scene.links[lid].points}
+    names.update({nm.lower(): nm for nm in scene.frame_points})
+    out = []
+    for word in (step.output, *step.inputs):
+        if word in names and names[word] not in out:
+            out.append(names[word])
+    return out
+
+
+def _group_links(label: str) -> list[int]:
+    """Links of a drawing named "group 2-3" or "crank" (the scheme highlights them)."""
+    if label.startswith("group "):
+        return [int(x) for x in label[6:].split("-") if x.isdigit()]
+    return []
+
+
+def _steps(sol: Solution, k: int) -> tuple[list[dict], list[dict]]:
+    scene = sol.scene
+    panels: list[dict] = []
+    steps: list[dict] = []
+    pp = sol.plans[k] if sol.plans else None
+
+    def add(panel: dict, plan_steps: list[Step], texts: list[str] | None = None, links: list[int] | None = None):
+        panel["found"] = [s.output for s in plan_steps if s.op == "intersect" and s.output in panel["points"]]
+        panels.append(panel)
+        reveal = _reveal(panel, plan_steps) if panel is not None else []
+        for n, s in enumerate(plan_steps):
+            steps.append({"panel": panel["id"], "text": (texts[n] if texts else s.text),
+                          "op": s.op, **reveal[n],
+                          "scheme": _scheme_marks(scene, s, panel["kind"]), "links": links or []})
+
+    if pp is not None and pp.velocity is not None:
+        add(_panel("velocity", "velocity plan", pp.velocity, "mm/(m/s)"), list(pp.velocity.steps))
+    if pp is not None and pp.acceleration is not None:
+        add(_panel("acceleration", "acceleration plan", pp.acceleration, "mm/(m/s²)"), list(pp.acceleration.steps))
+    if sol.forces is not None:
+        from plans.forces.lever import lever_plan
+        from plans.forces.polygons import force_polygons
+        from plans.forces.protocol import force_steps
+
+        fa, lv = sol.forces
+        polys = {("crank" if p.kind == "crank" else f"group {p.group}"): p for p in force_polygons(fa, k)}
+        fsteps = force_steps(fa, lv, k)
+        by_plan: dict[str, list[Step]] = {}
+        for f in fsteps:
+            by_plan.setdefault(f.plan, []).append(f.step)
+        for name, st in by_plan.items():
+            if name == "lever":
+                plan = lever_plan(lv, k)
+                panel = _panel("lever", "Zhukovsky lever", plan, "mm/(m/s)")
+            else:
+                plan = polys[name].plan
+                panel = _panel(name.replace(" ", "-"), f"force polygon, {name}", plan, "mm/N")
+            links = _group_links(name) or ([scene.driver.link] if name == "crank" else [])
+            add(panel, st, None, links)
+    return panels, steps
+
+
+# --------------------------------------------------------------------------- the lesson
+
+
+def _position_index(sol: Solution, phi_deg: float | None) -> int:
+    phis = [float(x) for x in sol.kinematics.phi_deg]
+    if phi_deg is None:
+        return 0
+    for k, p in enumerate(phis):
+        if abs(p - phi_deg) < 1e-9:
+            return k
+    raise InputError(f"crank angle {phi_deg:g}° is not among the scene's positions {phis}", field="--phi")
+
+
+def lesson(scene: Scene, *, phi_deg: float | None = None, frames: int = FRAMES) -> dict[str, Any]:
+    """The lesson of a scene (a JSON-able dict): steps at one position, the cycle, mistakes."""
+    if not (isinstance(frames, int) and 2 <= frames <= MAX_FRAMES):
+        raise InputError(f"expected a whole number of frames from 2 to {MAX_FRAMES}, got {frames!r}",
+                         field="--frames")
+    sol = solve_scene(scene)
+    k = _position_index(sol, phi_deg)
+    phis = np.arange(frames) * (360.0 / frames)
+    order = 2 if scene.wants("acceleration_plan") else 1 if scene.wants("velocity_plan") else 0
+    cyc = solve(scene, phis, order=order, structure=sol.structure)
+    extent = max(abs(z) for nm in cyc.point_names() for z in cyc.point(nm)[0])
+    mu_l = scene.scales.get("length") or _nice_length_scale(2.0 * float(extent))
+    names = cyc.point_names()
+    cycle: dict[str, Any] = {"phi_deg": [_r(p) for p in phis], "scheme": _scheme(scene, cyc, mu_l)}
+    if order >= 1:
+        vmax = max(float(np.max(np.abs(cyc.point(nm)[1]))) for nm in names)
+        cycle["mu_v"] = _nice_length_scale(vmax / 1000.0, 60.0) / 1000.0 if vmax > 0 else 1.0
+        cycle["velocity"] = _plan_images(cyc, names, 1, cycle["mu_v"])
+    if order >= 2:
+        amax = max(float(np.max(np.abs(cyc.point(nm)[2]))) for nm in names)
+        cycle["mu_a"] = _nice_length_scale(amax / 1000.0, 60.0) / 1000.0 if amax > 0 else 1.0
+        cycle["acceleration"] = _plan_images(cyc, names, 2, cycle["mu_a"])
+    if sol.forces is not None:
+        cycle["chart"] = _balancing_chart(scene, phis)
+    panels, steps = _steps(sol, k)
+    at = solve(scene, [float(sol.kinematics.phi_deg[k])], order=order, structure=sol.structure)
+    scheme = _scheme(scene, at, mu_l)
+    scheme["guides"] = cycle["scheme"]["guides"]  # a guide is drawn over the whole stroke
+    return {
+        "title": scene.title,
+        "phi_deg": float(sol.kinematics.phi_deg[k]),
+        "scheme": scheme,
+        "panels": panels,
+        "steps": steps,
+        "cycle": cycle,
+        "mistakes": mistakes(sol, k, panels),
+        "links": {str(lid): scene.links[lid].name for lid in scene.links},
+    }
+
+
+def _balancing_chart(scene: Scene, phis: np.ndarray) -> dict[str, Any] | None:
+    """F_bal(φ) over the cycle, exact (the page moves a cursor along it); None where the
+    turn passes a position the force analysis cannot take (a locked group)."""
+    from plans.forces.polygons import analyse_forces
+
+    try:
+        fa = analyse_forces(scene, solve(scene, phis, order=2))
+    except PlansError:
+        return None
+    kind = fa.crank.kind
+    return {"label": "F_bal" if kind == "force" else "M_bal", "unit": "N" if kind == "force" else "N·m",
+            "values": [_r(v) for v in fa.balancing]}
+
+
+__all__ = ["FRAMES", "MAX_FRAMES", "lesson"]

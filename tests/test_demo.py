@@ -1,0 +1,343 @@
+"""The demonstration: the lesson's data, the force protocol, the mistakes, and the page
+driven in real headless Chromium (Debian's ``chromium`` through Playwright)."""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import re
+import shutil
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from drawings.cli import main
+from drawings.demo import Demo, page
+from plans.demo import lesson
+from plans.forces.lever import zhukovsky_lever
+from plans.forces.polygons import analyse_forces
+from plans.kinematics.exact import solve
+from plans.results import solve_scene, to_json
+from plans.scene import load_scene
+
+SAMPLES = Path(__file__).resolve().parent.parent / "samples"
+SCENES = sorted(SAMPLES.glob("*.toml"))
+
+
+@pytest.fixture(scope="module")
+def lessons():
+    return {p.stem: lesson(load_scene(p), frames=24) for p in SCENES}
+
+
+# --------------------------------------------------------------------------- the lesson as data
+
+
+def test_every_step_of_every_drawing_is_in_the_lesson(lessons):
+    for p in SCENES:
+        scene = load_scene(p)
+        sol = solve_scene(scene)
+        L = lessons[p.stem]
+        pp = sol.plans[0]
+        want = len(pp.velocity.steps) + len(pp.acceleration.steps)
+        if sol.forces is not None:
+            from plans.forces.protocol import force_steps
+
+            want += len(force_steps(*sol.forces, 0))
+        assert len(L["steps"]) == want, p.stem
+
+
+def test_each_segment_and_line_is_drawn_by_exactly_one_step(lessons):
+    for name, L in lessons.items():
+        for panel in L["panels"]:
+            steps = [s for s in L["steps"] if s["panel"] == panel["id"]]
+            segs = [k for s in steps for k in s["segments"]]
+            lines = [k for s in steps for k in s["lines"]]
+            assert sorted(segs) == list(range(len(panel["segments"]))), (name, panel["id"])
+            assert sorted(lines) == list(range(len(panel["lines"]))), (name, panel["id"])
+            # a segment is drawn only once both its ends are on the drawing
+            shown = {panel["pole"]}
+            for s in steps:
+                shown.update(s["points"])
+                for k in s["segments"]:
+                    sg = panel["segments"][k]
+                    assert sg["from"] in shown and sg["to"] in shown, (name, panel["id"], sg["label"])
+
+
+def test_cycle_frames_are_the_exact_positions(lessons):
+    scene = load_scene(SAMPLES / "v_engine.toml")
+    L = lessons["v_engine"]
+    cyc = L["cycle"]
+    kin = solve(scene, cyc["phi_deg"], order=2)
+    mu_l = cyc["scheme"]["mu_l"]
+    for nm, track in cyc["scheme"]["points"].items():
+        want = kin.point(nm)[0] * mu_l
+        got = np.array([complex(x, y) for x, y in track])
+        assert np.max(np.abs(got - want)) <= 1e-3, nm  # page coordinates to 1 µm
+    mu_v = cyc["mu_v"]
+    got = np.array([complex(x, y) for x, y in cyc["velocity"]["b"]])
+    assert np.max(np.abs(got - kin.point("B")[1] * mu_v)) <= 1e-3
+
+
+def test_lesson_is_deterministic_json():
+    a = json.dumps(lesson(load_scene(SAMPLES / "shaper.toml"), frames=12), allow_nan=False)
+    b = json.dumps(lesson(load_scene(SAMPLES / "shaper.toml"), frames=12), allow_nan=False)
+    assert a == b
+
+
+# --------------------------------------------------------------------------- the force protocol
+
+
+_TERM = re.compile(r"([+−])[^\s(]+ \(([-\d.e+]+) N × ([\d.]+) mm = ([-\d.e+]+) m\)")
+
+
+def test_printed_moment_equations_balance():
+    """Each printed ΣM equation, re-added from its printed forces and arms, gives the printed
+    tangential component: the protocol is an equation a student can check by hand."""
+    for name in ("slider_crank", "v_engine", "four_bar"):
+        scene = load_scene(SAMPLES / f"{name}.toml")
+        sol = solve_scene(scene)
+        from plans.forces.protocol import force_steps
+
+        for k in range(sol.kinematics.n):
+            for fs in force_steps(*sol.forces, k):
+                text = fs.step.text
+                m = re.search(r"· l_\w+ \(([\d.e+-]+) m\) balances them: (\S+) = ([-\d.e+]+) N", text)
+                if not m or "ΣM_" not in text:
+                    continue
+                moment = 0.0
+                for sign, F, _mm, h in _TERM.findall(text.split(";")[0]):
+                    moment += (1 if sign == "+" else -1) * float(F) * float(h)
+                for sign, M in re.findall(r"([+−])M_\w+ \(([\d.e+-]+) N·m\)", text.split(";")[0]):
+                    moment += (1 if sign == "+" else -1) * float(M)
+                l, tau = float(m.group(1)), float(m.group(3))
+                # ΣM_B(i) = −l·F^τ + Σ moments = 0 (F^τ along i·(B − A))
+                assert tau * l == pytest.approx(moment, rel=2e-4, abs=1e-6 * max(1.0, abs(moment))), text
+
+
+def test_solve_protocol_prints_force_steps_and_json_has_steps(capsys):
+    assert main(["solve", str(SAMPLES / "v_engine.toml"), "--protocol"]) == 0
+    out = capsys.readouterr().out
+    for words in ("force analysis, group 2-3:", "ΣM_B(2) = 0", "force analysis, crank:", "ΣM_O(1) = 0",
+                  "force analysis, lever:", "ΣM_p = 0 on the lever"):
+        assert words in out
+    data = to_json(solve_scene(load_scene(SAMPLES / "v_engine.toml")))
+    plans = {s["plan"] for s in data["positions"][0]["steps"]}
+    assert {"velocity", "acceleration", "group 2-3", "group 4-5", "crank", "lever"} <= plans
+    assert all(s["text"] for s in data["positions"][0]["steps"])
+
+
+# --------------------------------------------------------------------------- the mistakes
+
+
+def _mistake(L, mid):
+    return next(m for m in L["mistakes"] if m["id"] == mid)
+
+
+def test_reversed_coriolis_moves_the_point_along_its_partner_line():
+    L = lesson(load_scene(SAMPLES / "six_bar.toml"), frames=12, phi_deg=60)
+    m = _mistake(L, "coriolis")
+    acc = next(p for p in L["panels"] if p["id"] == "acceleration")
+    cor = next(s for s in acc["segments"] if s["kind"] == "coriolis")
+    c = complex(*acc["points"][cor["to"]]) - complex(*acc["points"][cor["from"]])
+    (name, wrong), = m["moved"].items()
+    right = complex(*acc["points"][name])
+    wrong = complex(*wrong)
+    k_line = next(ln for ln in acc["lines"] if abs(complex(*ln["point"]) - complex(*acc["points"][cor["to"]])) < 1e-2)
+    d = complex(*k_line["dir"])
+    # the wrong point lies on the line laid off from k − 2·a^k, parallel to the right one
+    dist_wrong = ((wrong - (complex(*k_line["point"]) - 2 * c)).conjugate() * d).imag
+    assert abs(dist_wrong) < 5e-3
+    # and it moved along the partner line through the right point
+    partner = [ln for ln in acc["lines"] if ln is not k_line
+               and abs(((right - complex(*ln["point"])).conjugate() * complex(*ln["dir"])).imag) < 5e-3]
+    assert any(abs(((wrong - right).conjugate() * complex(*ln["dir"])).imag) < 5e-3 for ln in partner)
+
+
+def test_pi_mistake_scales_every_velocity_by_314_over_pi():
+    L = lesson(load_scene(SAMPLES / "slider_crank.toml"), frames=12, phi_deg=30)
+    m = _mistake(L, "pi")
+    for nm, wrong in m["moved"].items():
+        right = complex(*m["right"][nm])
+        assert abs(complex(*wrong) - right * 3.14 / math.pi) < 2e-3, nm
+
+
+def test_wrong_couple_sign_changes_the_balancing_force_by_twice_its_power():
+    scene = load_scene(SAMPLES / "v_engine.toml")
+    L = lesson(scene, frames=12)
+    m = _mistake(L, "couple")
+    label = m["highlight"][0].rstrip("'")
+    wrong, right = m["values"]["wrong"], m["values"]["right"]
+    assert f"{wrong:.5g}" in m["text"] and f"{right:.5g}" in m["text"]
+    kin = solve(scene, [L["phi_deg"]], order=2)
+    fa = analyse_forces(scene, kin)
+    mom = next(x for x in fa.applied.moments if x.label == label)
+    # power balance: flipping M changes Σ M·ω by 2 M ω_link, so F_bal·v_A changes by as much
+    crank = scene.links[scene.driver.link]
+    v_a = abs(scene.driver.omega) * abs(crank.points[crank.axis[1]])
+    expected = abs(2 * float(mom.M[0]) * float(kin.omega(mom.link)[0])) / v_a
+    assert abs(wrong - right) == pytest.approx(expected, rel=2e-4)
+    assert zhukovsky_lever(fa).valid[0]
+
+
+# --------------------------------------------------------------------------- the page
+
+
+def test_page_builds_for_every_sample_and_is_self_contained(tmp_path):
+    for p in SCENES:
+        out = tmp_path / f"{p.stem}.html"
+        assert main(["demo", str(p), "-o", str(out), "--frames", "24"]) == 0
+        text = out.read_text(encoding="utf-8")
+        assert "<script" in text and "http://" not in text.replace("http://www.w3.org/2000/svg", "")
+        assert "https://" not in text
+    assert page(SAMPLES / "v_engine.toml", frames=24) == page(SAMPLES / "v_engine.toml", frames=24)
+
+
+def test_markup_in_a_title_cannot_break_out_of_the_page(tmp_path):
+    src = (SAMPLES / "slider_crank.toml").read_text(encoding="utf-8")
+    src = re.sub(r'^title = .*$', 'title = "</script><script>alert(1)</script><b>"', src, count=1, flags=re.M)
+    f = tmp_path / "evil.toml"
+    f.write_text(src, encoding="utf-8")
+    text = page(f, frames=12)
+    assert "<script>alert(1)" not in text
+    assert text.count("</script>") == 3
+
+
+def test_bad_demo_arguments_are_one_line(tmp_path, capsys):
+    out = tmp_path / "p.html"
+    assert main(["demo", str(SAMPLES / "slider_crank.toml"), "-o", str(out), "--frames", "1"]) == 2
+    assert main(["demo", str(SAMPLES / "slider_crank.toml"), "-o", str(out), "--phi", "7"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 2 and all(line.startswith("plans: error:") for line in err)
+    assert not out.exists()
+
+
+def test_jupyter_demo_displays_inline():
+    d = Demo(SAMPLES / "slider_crank.toml", frames=12)
+    html_text = d._repr_html_()
+    assert html_text.startswith("<iframe srcdoc=") and "plansDemo" in html_text
+
+
+# --------------------------------------------------------------------------- in a real browser
+
+
+def _chromium() -> str | None:
+    for name in ("chromium", "chromium-browser", "google-chrome"):
+        path = shutil.which(name)
+        if path:
+            return path
+    return None
+
+
+@pytest.fixture(scope="module")
+def browser():
+    exe = _chromium()
+    try:
+        from playwright.sync_api import sync_playwright
+    except ImportError:
+        sync_playwright = None
+    if exe is None or sync_playwright is None:
+        if os.environ.get("CI"):
+            pytest.fail("CI needs Chromium and Playwright for the page tests (.ci/run installs them)")
+        pytest.skip("Chromium or Playwright not installed")
+    with sync_playwright() as pw:
+        b = pw.chromium.launch(executable_path=exe, args=["--no-sandbox"])
+        yield b
+        b.close()
+
+
+def _open(browser, path: Path, size=(1024, 768)):
+    pg = browser.new_page(viewport={"width": size[0], "height": size[1]})
+    errors: list[str] = []
+    requests: list[str] = []
+    pg.on("console", lambda m: errors.append(m.text) if m.type == "error" else None)
+    pg.on("pageerror", lambda e: errors.append(str(e)))
+    pg.on("request", lambda r: requests.append(r.url))
+    pg.goto(path.as_uri())
+    pg.wait_for_selector("body[data-ready='1']")
+    return pg, errors, requests
+
+
+def test_page_steps_through_to_the_end_with_buttons_and_keys(browser, tmp_path):
+    f = tmp_path / "v.html"
+    f.write_text(page(SAMPLES / "v_engine.toml", frames=24, language="en"), encoding="utf-8")
+    pg, errors, requests = _open(browser, f)
+    n = pg.evaluate("plansDemo.steps")
+    texts = [pg.inner_text("#step-text")]
+    assert pg.inner_text("#counter") == f"1 / {n}"
+    assert pg.is_disabled("#back")
+    for _ in range(n - 1):
+        pg.click("#next")
+        texts.append(pg.inner_text("#step-text"))
+    assert pg.inner_text("#counter") == f"{n} / {n}"
+    assert pg.is_disabled("#next")
+    assert len(set(texts)) >= n - 2  # every step says something of its own
+    # the last step has drawn every segment of the lever
+    assert pg.locator("#panel [data-seg]").count() > 0
+    pg.keyboard.press("Home")
+    assert pg.inner_text("#counter") == f"1 / {n}"
+    pg.keyboard.press("ArrowRight")
+    pg.keyboard.press("ArrowRight")
+    assert pg.inner_text("#counter") == f"3 / {n}"
+    pg.keyboard.press("ArrowLeft")
+    assert pg.inner_text("#counter") == f"2 / {n}"
+    # the scheme highlights what the step is about (the crank pin A at the first step)
+    pg.keyboard.press("Home")
+    assert "hi" in pg.get_attribute("#scheme-joint-A", "class")
+    assert errors == []
+    assert requests == [f.as_uri()]
+
+
+def test_slider_moves_the_mechanism_as_the_exact_positions_say(browser, tmp_path):
+    scene = load_scene(SAMPLES / "slider_crank.toml")
+    f = tmp_path / "s.html"
+    L = lesson(scene, frames=36)
+    f.write_text(page(scene, frames=36, language="ru"), encoding="utf-8")
+    pg, errors, _ = _open(browser, f)
+    pg.click("#mode-cycle")
+    mu_l = float(pg.get_attribute("#cyc-scheme", "data-mu-l"))
+    assert mu_l == L["cycle"]["scheme"]["mu_l"]
+    kin = solve(scene, L["cycle"]["phi_deg"], order=0)
+    seen = set()
+    for k in (0, 5, 9, 17, 30):
+        pg.fill("#phi", str(k))
+        pg.dispatch_event("#phi", "input")
+        cx = float(pg.get_attribute("#cyc-scheme-joint-B", "cx"))
+        cy = float(pg.get_attribute("#cyc-scheme-joint-B", "cy"))
+        z = complex(kin.point("B")[0][k]) * mu_l
+        assert abs(cx - z.real) <= 0.1 and abs(-cy - z.imag) <= 0.1, k
+        seen.add((round(cx, 1), round(cy, 1)))
+    assert len(seen) >= 4  # it really moved
+    pg.click("#cyc-scheme")  # away from the slider, whose own keys move it by its step
+    pg.keyboard.press("ArrowRight")  # the keyboard turns the crank one frame on
+    cx = float(pg.get_attribute("#cyc-scheme-joint-B", "cx"))
+    assert abs(cx - complex(kin.point("B")[0][31]).real * mu_l) <= 0.1
+    pg.click("#play")
+    pg.wait_for_timeout(300)
+    pg.click("#play")
+    assert errors == []
+
+
+def test_mistake_toggle_draws_the_wrong_point(browser, tmp_path):
+    f = tmp_path / "m.html"
+    f.write_text(page(SAMPLES / "six_bar.toml", frames=12, phi_deg=60, language="en"), encoding="utf-8")
+    pg, errors, _ = _open(browser, f)
+    pg.check("#mistake-coriolis")
+    assert pg.locator("#panel [data-wrong]").count() == 1
+    assert "Coriolis" in pg.inner_text("#mistake-text")
+    pg.uncheck("#mistake-coriolis")
+    assert pg.locator("#panel [data-wrong]").count() == 0
+    assert errors == []
+
+
+def test_every_sample_page_opens_without_errors(browser, tmp_path):
+    for p in SCENES:
+        f = tmp_path / f"{p.stem}.html"
+        f.write_text(page(p, frames=12), encoding="utf-8")
+        pg, errors, requests = _open(browser, f)
+        pg.keyboard.press("End")
+        pg.click("#mode-cycle")
+        pg.close()
+        assert errors == [], p.stem
+        assert requests == [f.as_uri()], p.stem
