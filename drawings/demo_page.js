@@ -318,5 +318,6 @@
   mistakesBox();
   go(0);
   window.plansDemo = {go: go, step: () => cur, steps: steps.length, setPhi: (x) => { t = x; drawCycle(); }, mode: mode};
+  document.body.dataset.readyMs = String(Math.round(performance.now()));  // since navigation began
   document.body.dataset.ready = "1";
 })();
