@@ -222,6 +222,9 @@
     for (const nm in images) for (const p of images[nm]) pts.push(p);
     return pts;
   }
+  $("cyc-vel").parentNode.hidden = !C.velocity;
+  $("cyc-acc").parentNode.hidden = !C.acceleration;
+  $("cyc-chart").parentNode.hidden = !C.chart;
   const velSize = C.velocity ? fit($("cyc-vel"), planBox(C.velocity), 8) : 0;
   const accSize = C.acceleration ? fit($("cyc-acc"), planBox(C.acceleration), 8) : 0;
   function drawCyclePlan(svg, images, size, pole) {
@@ -316,7 +319,8 @@
     }
   });
   mistakesBox();
-  go(0);
+  if (steps.length) go(0);
+  else { $("mode-steps").disabled = true; mode("cycle"); }  // a scene that asks for positions only
   window.plansDemo = {go: go, step: () => cur, steps: steps.length, setPhi: (x) => { t = x; drawCycle(); }, mode: mode};
   document.body.dataset.readyMs = String(Math.round(performance.now()));  // since navigation began
   document.body.dataset.ready = "1";
