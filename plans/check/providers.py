@@ -19,7 +19,7 @@ from typing import Any
 from plans.check.checkfile import CheckFile
 from plans.check.tolerance import Propagation
 from plans.errors import PlansError
-from plans.kinematics.construction import PositionPlans, build
+from plans.kinematics.construction import PositionPlans, build_many
 from plans.kinematics.exact import Kinematics, solve
 from plans.kinematics.plan import Plan
 
@@ -58,8 +58,9 @@ class Context:
         mv = cf.scales.get("velocity")
         ma = cf.scales.get("acceleration")
         self.plans: dict[int, PositionPlans] = {}
-        for pos in cf.positions:
-            self.plans[pos.index] = build(self.kin, pos.index, velocity_scale=mv, acceleration_scale=ma)
+        ks = [pos.index for pos in cf.positions]
+        for k, pp in zip(ks, build_many(self.kin, ks, velocity_scale=mv, acceleration_scale=ma), strict=True):
+            self.plans[k] = pp
         self._prop: dict[tuple[int, str], Propagation] = {}
         self._polygons: dict[int, tuple[Plan, ...]] = {}
         self._forces: Any = None
