@@ -182,6 +182,11 @@ def goals_section(goals: list[dict[str, Any]]) -> list[str]:
             out.append(f"| {g['goal']} | ≥ {g['limit']:g}× | {g['value']:.1f}× | {'yes' if g['met'] else 'no'} |")
     out.append("")
     for g in goals:
+        if "together_s" in g:
+            out += [f"Built together: {fmt(g['together_s'], 's')} for 360 positions; one position at a time: "
+                    f"{fmt(g['one_by_one_s'], 's')}; the readings of the two differ by at most "
+                    f"{g['readings_apart']:.1e} of the plan.", ""]
+    for g in goals:
         if "profile" in g:
             out += [f"Where the time goes ({g['goal']}, own time per run):", "",
                     "| function | calls | own µs | cum µs |", "|---|---:|---:|---:|"]
