@@ -17,6 +17,7 @@ from plans.kinematics.dyads import (
     ensure,
     lab,
     link_points,
+    meet,
     read_rates,
 )
 from plans.kinematics.structure import Group
@@ -123,9 +124,7 @@ def _a_rrr(b: Builder, g: Group, vr: _VelReader) -> None:
     L1 = b.line(y1, 1j * (B - P1), np.abs(B - P1), f"⟂ {j1.point}{j2.point}")
     L3 = b.line(y3, 1j * (B - P3), np.abs(B - P3), f"⟂ {j3.point}{j2.point}")
     out = lab(j2.point)
-    xb = b.intersect(L1, L3, out, b.mu * snap.a(i, B), g, j2.point)
-    b.add(out, xb)
-    b.labels[(i, j2.point)] = b.labels[(j, j2.point)] = out
+    xb = meet(b, g, L1, L3, out, b.mu * snap.a(i, B), j2.point, (i, j))
     b.step("intersect", (m1, m3), out, lambda: (
         f"a_{j2.point}{j1.point}^τ ⟂ {j1.point}{j2.point} through {m1} and a_{j2.point}{j3.point}^τ ⟂ "
         f"{j3.point}{j2.point} through {m3} meet at {out}"))
@@ -157,9 +156,7 @@ def _a_rrp(b: Builder, g: Group, vr: _VelReader) -> None:
     L1 = b.line(y1, 1j * (B - P1), np.abs(B - P1), f"⟂ {j1.point}{j2.point}")
     L3 = b.line(start_xy, u, span, f"∥ guide of {j2.point}")
     out = lab(j2.point)
-    xb = b.intersect(L1, L3, out, b.mu * snap.a(i, B), g, j2.point)
-    b.add(out, xb)
-    b.labels[(i, j2.point)] = b.labels[(j, j2.point)] = out
+    xb = meet(b, g, L1, L3, out, b.mu * snap.a(i, B), j2.point, (i, j))
     b.step("intersect", (m1, start), out, lambda: (
         f"line through {m1} ⟂ {j1.point}{j2.point} (a_{j2.point}{j1.point}^τ) and line through {start} "
         f"∥ guide meet at {out}"))
@@ -192,8 +189,7 @@ def _a_rpr(b: Builder, g: Group, vr: _VelReader) -> None:
     L1 = b.line(yc, 1j * (A - Cq), np.abs(A - Cq), f"⟂ {j3.point}{j1.point}")
     L2 = b.line(yk, u, span, f"∥ slot of link {j}")
     out = f"{lab(j1.point)}{j}"
-    x3 = b.intersect(L1, L2, out, b.mu * snap.a(j, A), g, j1.point)
-    b.add(out, x3)
+    x3 = meet(b, g, L1, L2, out, b.mu * snap.a(j, A), j1.point, ())
     b.step("intersect", (mc, mk), out, lambda: (
         f"a_{An}{j3.point}^τ ⟂ {j3.point}{j1.point} through {mc} and a^r ∥ slot through {mk} meet at {out}"))
     f = (x3 - xc) / (A - Cq)
@@ -226,9 +222,7 @@ def _a_prp(b: Builder, g: Group, vr: _VelReader) -> None:
         ends.append((nm, xy))
     L1 = b.line(ends[0][1], u1, s1, f"∥ guide of link {i}")
     L3 = b.line(ends[1][1], u3, s3, f"∥ guide of link {j}")
-    xb = b.intersect(L1, L3, out, b.mu * snap.a(i, B), g, j2.point)
-    b.add(out, xb)
-    b.labels[(i, j2.point)] = b.labels[(j, j2.point)] = out
+    meet(b, g, L1, L3, out, b.mu * snap.a(i, B), j2.point, (i, j))
     b.step("intersect", (ends[0][0], ends[1][0]), out, lambda: (
         f"line through {ends[0][0]} ∥ guide of link {i} and line through {ends[1][0]} ∥ guide of link {j} "
         f"meet at {out}"))
@@ -267,8 +261,7 @@ def _a_rpp(b: Builder, g: Group, vr: _VelReader) -> None:
         s2, y2 = _coriolis(b, vr, j, v_rel2, na, xa, f"{j1.point}{j}{j1.point}{i}", np.abs(2 * snap.w[j] * sd2))
     L3 = b.line(y3, u3, sp3, f"∥ guide of link {j}")
     L2 = b.line(y2, u2, sp2, f"∥ slot of link {j}")
-    xj = b.intersect(L3, L2, out, b.mu * snap.a(j, A), g, j1.point)
-    b.add(out, xj)
+    meet(b, g, L3, L2, out, b.mu * snap.a(j, A), j1.point, ())
     b.step("intersect", (s3, s2), out, lambda: (
         f"line through {s3} ∥ guide of link {j} and line through {s2} ∥ slot meet at {out}"))
     b.set_link(j, out, A, b.factor[q])

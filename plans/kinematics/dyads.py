@@ -251,6 +251,16 @@ def lab(name: str) -> str:
 # --------------------------------------------------------------------------- shared steps
 
 
+def meet(b: Builder, g: Group, l1: Line, l2: Line, out: str, exact_xy: C, point: str,
+         links: tuple[int, ...]) -> C:
+    """The point ``out`` where two construction lines meet, labelled as ``point`` of ``links``."""
+    xy = b.intersect(l1, l2, out, exact_xy, g, point)
+    b.add(out, xy)
+    for lk in links:
+        b.labels[(lk, point)] = out
+    return xy
+
+
 def link_points(b: Builder, link: int) -> None:
     """Similarity theorem: images of the link's other named points."""
     snap = b.snap

@@ -16,6 +16,7 @@ from plans.kinematics.dyads import (
     ensure,
     lab,
     link_points,
+    meet,
     read_rates,
     rel_seg,
 )
@@ -66,9 +67,7 @@ def _v_rrr(b: Builder, g: Group) -> None:
     L1 = b.line(x1, 1j * (B - P1), np.abs(B - P1), f"⟂ {j1.point}{j2.point}")
     L3 = b.line(x3, 1j * (B - P3), np.abs(B - P3), f"⟂ {j3.point}{j2.point}")
     out = lab(j2.point)
-    xb = b.intersect(L1, L3, out, _exact_v(b, i, B), g, j2.point)
-    b.add(out, xb)
-    b.labels[(i, j2.point)] = b.labels[(j, j2.point)] = out
+    xb = meet(b, g, L1, L3, out, _exact_v(b, i, B), j2.point, (i, j))
     b.step("intersect", (n1, n3), out, lambda: (
         f"v_{j2.point} = v_{j1.point} + v_{j2.point}{j1.point} = v_{j3.point} + v_{j2.point}{j3.point}: "
         f"line through {n1} ⟂ {j1.point}{j2.point}, line through {n3} ⟂ {j3.point}{j2.point}; "
@@ -94,9 +93,7 @@ def _v_rrp(b: Builder, g: Group) -> None:
     L1 = b.line(x1, 1j * (B - P1), np.abs(B - P1), f"⟂ {j1.point}{j2.point}")
     L3 = b.line(xq, u, span, f"∥ guide of {j2.point}")
     out = lab(j2.point)
-    xb = b.intersect(L1, L3, out, _exact_v(b, i, B), g, j2.point)
-    b.add(out, xb)
-    b.labels[(i, j2.point)] = b.labels[(j, j2.point)] = out
+    xb = meet(b, g, L1, L3, out, _exact_v(b, i, B), j2.point, (i, j))
     b.step("intersect", (n1, nq), out, lambda: (
         f"v_{j2.point} = v_{j1.point} + v_{j2.point}{j1.point}, v_{j2.point}{j1.point} ⟂ {j1.point}{j2.point}, "
         f"v_{j2.point} ∥ guide: line through {n1} ⟂ {j1.point}{j2.point}, line through {nq} ∥ guide; "
@@ -124,8 +121,7 @@ def _v_rpr(b: Builder, g: Group) -> None:
     L1 = b.line(xc, 1j * (A - Cq), np.abs(A - Cq), f"⟂ {j3.point}{j1.point}")
     L2 = b.line(xa, u, span, f"∥ slot of link {j}")
     out = f"{lab(j1.point)}{j}"
-    x3 = b.intersect(L1, L2, out, _exact_v(b, j, A), g, j1.point)
-    b.add(out, x3)
+    x3 = meet(b, g, L1, L2, out, _exact_v(b, j, A), j1.point, ())
     b.step("intersect", (nc, na), out, lambda: (
         f"v_{j1.point}{j} = v_{j3.point} + v_{j1.point}{j}{j3.point} (⟂ {j3.point}{j1.point}) = "
         f"v_{j1.point}{i} + v_{j1.point}{j}{j1.point}{i} (∥ slot): they meet at {out}"))
@@ -153,9 +149,7 @@ def _v_prp(b: Builder, g: Group) -> None:
     L1 = b.line(x1, u1, s1, f"∥ guide of link {i}")
     L3 = b.line(x3, u3, s3, f"∥ guide of link {j}")
     out = lab(j2.point)
-    xb = b.intersect(L1, L3, out, _exact_v(b, i, B), g, j2.point)
-    b.add(out, xb)
-    b.labels[(i, j2.point)] = b.labels[(j, j2.point)] = out
+    meet(b, g, L1, L3, out, _exact_v(b, i, B), j2.point, (i, j))
     b.step("intersect", (n1, n3), out, lambda: (
         f"v_{j2.point} = v_{j2.point}{p} + v_rel ∥ guide of {i} = v_{j2.point}{q} + v_rel ∥ guide of {j}: "
         f"they meet at {out}"))
@@ -185,8 +179,7 @@ def _v_rpp(b: Builder, g: Group) -> None:
     L3 = b.line(xq, u3, s3, f"∥ guide of link {j}")
     L2 = b.line(xa, u2, s2, f"∥ slot of link {j}")
     out = f"{lab(j1.point)}{j}"
-    xj = b.intersect(L3, L2, out, _exact_v(b, j, A), g, j1.point)
-    b.add(out, xj)
+    meet(b, g, L3, L2, out, _exact_v(b, j, A), j1.point, ())
     b.step("intersect", (nq, na), out, lambda: (
         f"v_{j1.point}{j} = v_{j1.point}{q} + v_rel ∥ guide = v_{j1.point}{i} + v_rel ∥ slot: "
         f"they meet at {out}"))
