@@ -93,3 +93,25 @@ def test_monte_carlo_runs_the_construction_with_a_noisy_pencil():
                     spread[(pencil_mm, q)] = err.std()
     qs = {q for _, q in spread}
     assert all(spread[(0.4, q)] > 2 * spread[(0.1, q)] for q in qs)
+
+
+def test_linearised_pencil_is_first_order():
+    """The checker's pencil: the same construction drawn once per error; the stack-up above
+    the reading's ±seg scales with the limits and does not depend on the step."""
+    from plans.check.tolerance import Linearised
+
+    kin = solve(load_scene(SAMPLES[0].parent / "shaper.toml"), order=2)
+    mv, ma = _scales(kin)
+    k = 2
+    pp = construction.build(kin, k, velocity_scale=mv, acceleration_scale=ma)
+    pairs = [(s.start, s.end) for s in pp.acceleration.segments if s.length_mm > 1.0]
+    one = Linearised(kin, k, "acceleration", mv, ma, 0.5, np.radians(0.5))
+    two = Linearised(kin, k, "acceleration", mv, ma, 1.0, np.radians(1.0))
+    assert len(pairs) >= 8
+    for a, b in pairs:
+        t1, t2 = one.tolerance(a, b), two.tolerance(a, b)
+        assert t1 > 0.5 and (t2 - 1.0) == pytest.approx(2 * (t1 - 0.5), rel=1e-3), (a, b)
+    coarse = Linearised(kin, k, "velocity", mv, ma, 0.5, np.radians(0.5))
+    fine = Linearised(kin, k, "velocity", mv, ma, 0.5, np.radians(0.5), h=1e-6)
+    for s in pp.velocity.segments:
+        assert fine.tolerance(s.start, s.end) == pytest.approx(coarse.tolerance(s.start, s.end), rel=1e-3)

@@ -65,7 +65,9 @@ class NoisyPencil:
     def u(self, half: float) -> np.ndarray:
         return self.rng.uniform(-half, half, self.M)
 
-    def mark(self, z: Any) -> np.ndarray:
+    def mark(self, z: Any, along: Any = None, joint: bool = False) -> np.ndarray:
+        if joint:  # a joint found by similarity is where its link's image puts it
+            return z
         p = self.model.pencil_mm
         return z + self.u(p) + 1j * self.u(p)
 
@@ -80,7 +82,7 @@ class NoisyPencil:
             ang = ang + np.where(span > 0, (self.u(p) - self.u(p)) / (np.where(span > 0, span, 1.0) * self.mul), 0.0)
         return unit(direction) * np.exp(1j * ang)
 
-    def vector(self, length: Any, direction: Any, span: Any) -> np.ndarray:
+    def vector(self, length: Any, direction: Any, span: Any, out: str) -> np.ndarray:
         return self.read(length) * self.line(direction, span)
 
     def cut(self, b: Builder, l1: Any, l2: Any, out: str, exact_xy: Any, group: Any, point: str) -> np.ndarray:

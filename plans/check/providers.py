@@ -17,7 +17,7 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 from plans.check.checkfile import CheckFile
-from plans.check.tolerance import Propagation
+from plans.check.tolerance import Linearised, Propagation
 from plans.errors import PlansError
 from plans.kinematics.construction import PositionPlans, build_many
 from plans.kinematics.exact import Kinematics, solve
@@ -61,7 +61,8 @@ class Context:
         ks = [pos.index for pos in cf.positions]
         for k, pp in zip(ks, build_many(self.kin, ks, velocity_scale=mv, acceleration_scale=ma), strict=True):
             self.plans[k] = pp
-        self._prop: dict[tuple[int, str], Propagation] = {}
+        self._prop: dict[tuple[int, str], Propagation] = {}  # force polygons: their protocol replayed
+        self._lin: dict[tuple[int, str], Linearised] = {}
         self._polygons: dict[int, tuple[Plan, ...]] = {}
         self._forces: Any = None
         self._forces_error: str | None = None
@@ -72,17 +73,21 @@ class Context:
         pp = self.plans[k]
         return pp.velocity if kind == "velocity" else pp.acceleration
 
-    def propagation(self, k: int, kind: str) -> Propagation | None:
+    def propagation(self, k: int, kind: str) -> Linearised | None:
+        """The plan's construction drawn with the checker's linearised pencil."""
         key = (k, kind)
-        if key not in self._prop:
+        if key not in self._lin:
             plan = self.plan(k, kind)
             if plan is None:
                 return None
             tol = self.cf.tolerance
             extra = self._carried(k, plan) if kind == "acceleration" else {}
-            self._prop[key] = Propagation(plan, self.kin, k, tol.segment_mm, math.radians(tol.direction_deg),
-                                           extra)
-        return self._prop[key]
+            pp = self.plans[k]
+            assert pp.velocity is not None
+            ma = pp.acceleration.scale if pp.acceleration is not None else None
+            self._lin[key] = Linearised(self.kin, k, kind, pp.velocity.scale, ma, tol.segment_mm,
+                                        math.radians(tol.direction_deg), extra)
+        return self._lin[key]
 
     def _carried(self, k: int, plan: Plan) -> dict[str, float]:
         """Normal and Coriolis components are computed from figures read off the velocity plan
@@ -174,8 +179,7 @@ class Context:
         key = (k, f"force-{i}")
         if key not in self._prop:
             tol = self.cf.tolerance
-            self._prop[key] = Propagation(self.polygons(k)[i], self.kin, k, tol.segment_mm,
-                                           math.radians(tol.direction_deg))
+            self._prop[key] = Propagation(self.polygons(k)[i], tol.segment_mm, math.radians(tol.direction_deg))
         return self._prop[key].tolerance(a, b)
 
     def pos(self, k: int, name: str) -> complex:

@@ -1,117 +1,66 @@
-"""The draftsman's tolerance model: a drawn figure's error propagated through its construction."""
+"""The draftsman's tolerance model: a drawn figure's error propagated through its construction.
+
+The velocity and acceleration plans are drawn again, by the same construction as the plans
+(:mod:`plans.kinematics.dyads`), with a linearised pencil (:class:`Linearised`); a force
+polygon's protocol is replayed step by step (:class:`Propagation`)."""
 
 from __future__ import annotations
 
 import cmath
-import itertools
-import re
 from typing import Any
 
 import numpy as np
 
+from plans.kinematics.accelerations import acceleration_plan
+from plans.kinematics.dyads import PerfectPencil, Scheme, unit
 from plans.kinematics.exact import Kinematics
 from plans.kinematics.plan import Plan
+from plans.kinematics.velocities import velocity_plan
 
 
 class Propagation:
-    """Replays a plan's protocol with one draftsman's error at a time.
+    """A force polygon's tolerance: its protocol replayed with one draftsman's error at a time.
 
-    Parameters: each laid-off vector's length (±seg, plus for a normal or Coriolis
-    component the tolerance of the velocity-plan figures it is computed from) and direction (±dir), each
-    construction line's direction (±dir), each point found by similarity (±seg along
-    the link's image).  Sensitivities are first order (small steps) and add up in the
-    worst case (a stack-up of limits: a figure fails only if no combination of
-    step errors within the limits explains it), plus ±seg for reading the segment."""
+    Errors: each laid-off vector's length (±seg) and direction (±dir), each construction
+    line's direction (±dir).  Sensitivities are first order (small steps) and add up in the
+    worst case (a stack-up of limits: a figure fails only if no combination of step errors
+    within the limits explains it), plus ±seg for reading the segment.  (The velocity and
+    acceleration plans are drawn again with the :class:`LinearisedPencil` instead.)"""
 
-    def __init__(self, plan: Plan, kin: Kinematics, k: int, seg_mm: float, dir_rad: float,
-                 carried: dict[str, float] | None = None) -> None:
-        self.plan = plan
+    def __init__(self, plan: Plan, seg_mm: float, dir_rad: float) -> None:
         self.seg = seg_mm
-        self.carried = carried or {}  # laid-off point -> extra length tolerance (mm) from the velocity plan
         self.base = {p.name: complex(*p.xy) for p in plan.points}
         self.coincide = {p.name: p.coincides_with for p in plan.points if p.coincides_with}
         self.ops: list[tuple] = []
         self.sizes: list[float] = []
-        scene = kin.scene
         degenerate = {d.split(":")[0] for d in plan.degenerate}
         lines = list(plan.lines)
         li = 0
-        self._done: set[str] = {plan.pole}  # points drawn so far, in the protocol's order
         for st in plan.steps:
-            self._step(st, lines, li, degenerate, seg_mm, dir_rad, scene, kin, k)
-            li = self._li
-            self._done.add(st.output)
+            if st.op == "lay off" and st.inputs and st.inputs[0] in self.base and st.output in self.base:
+                vec = self.base[st.output] - self.base[st.inputs[0]]
+                self.ops.append(("lay", st.output, st.inputs[0], vec, self._param(seg_mm), self._param(dir_rad)))
+            elif st.op == "intersect" and li + 1 < len(lines) and len(st.inputs) == 2:
+                l1, l2 = lines[li], lines[li + 1]
+                li += 2
+                p1, p2 = complex(*l1.point), complex(*l2.point)
+                i1, i2 = st.inputs
+                ok = (i1 in self.base and i2 in self.base and abs(self.base[i1] - p1) < 1e-6 * (1 + abs(p1))
+                      and abs(self.base[i2] - p2) < 1e-6 * (1 + abs(p2)))
+                if not ok or st.output in degenerate:
+                    self.ops.append(("keep", st.output))
+                else:
+                    self.ops.append(("cut", st.output, i1, complex(*l1.direction), i2, complex(*l2.direction),
+                                     self._param(dir_rad), self._param(dir_rad)))
         self._base_state = self._run(np.zeros(len(self.sizes)))
         self._cache: dict[tuple[str, str], float] = {}
-
-    def _step(self, st: Any, lines: list, li: int, degenerate: set[str], seg_mm: float, dir_rad: float,
-              scene: Any, kin: Kinematics, k: int) -> None:
-        """One protocol step as an operation to replay (``self._li``: the next construction line)."""
-        self._li = li
-        if st.op == "lay off" and st.inputs and st.inputs[0] in self.base and st.output in self.base:
-            vec = self.base[st.output] - self.base[st.inputs[0]]
-            self.ops.append(("lay", st.output, st.inputs[0], vec, self._param(seg_mm + self.carried.get(st.output, 0.0)),
-                             self._param(dir_rad)))
-        elif st.op == "intersect" and li + 1 < len(lines) and len(st.inputs) == 2:
-            l1, l2 = lines[li], lines[li + 1]
-            li += 2
-            self._li = li
-            p1, p2 = complex(*l1.point), complex(*l2.point)
-            i1, i2 = st.inputs
-            ok = (i1 in self.base and i2 in self.base and abs(self.base[i1] - p1) < 1e-6 * (1 + abs(p1))
-                  and abs(self.base[i2] - p2) < 1e-6 * (1 + abs(p2)))
-            if not ok or st.output in degenerate:
-                self.ops.append(("keep", st.output))
-                return
-            self.ops.append(("cut", st.output, i1, complex(*l1.direction), i2, complex(*l2.direction),
-                             self._param(dir_rad), self._param(dir_rad)))
-        elif st.op == "similarity":
-            op = self._similarity(st.text, st.output, scene, kin, k)
-            if op is not None:
-                self.ops.append(op)
 
     def _param(self, size: float) -> int:
         self.sizes.append(size)
         return len(self.sizes) - 1
 
-    def _similarity(self, text: str, out: str, scene: Any, kin: Kinematics, k: int) -> tuple | None:
-        m = re.search(r"on link (\d+) \((\S+) of link", text) or re.search(r"point of link (\d+) under (\S+) ", text)
-        if not m:
-            return None
-        lid, name = int(m.group(1)), m.group(2)
-        if lid == scene.frame or lid not in scene.links:
-            return ("keep", out)
-        X = complex(kin.point(name)[0][k]) if scene.point_links(name) else None
-        if X is None:
-            return None
-        link = scene.links[lid]
-        known = []
-        for pname in link.points:
-            lab = self.plan.pole if pname in scene.frame_points else pname.lower()
-            if lab == out or lab not in self.base or lab not in self._done:
-                continue
-            known.append((lab, complex(kin.point_on(lid, link.points[pname])[0][k])))
-        # images of other links' points under this link, already drawn (a3: A of the rocker 3
-        # under the block, found by intersection; it anchors the rocker's image)
-        for lab in self._done:
-            m = re.fullmatch(r"([a-z][a-z0-9]*?)(\d+)", lab)
-            if not m or int(m.group(2)) != lid or lab == out or lab not in self.base:
-                continue
-            pname = m.group(1).upper()
-            if pname in link.points or not scene.point_links(pname):
-                continue
-            known.append((lab, complex(kin.point(pname)[0][k])))
-        if len(known) < 2:
-            return ("keep", out)
-        (la, Pa), (lb, Pb) = max(itertools.combinations(known, 2), key=lambda c: abs(c[0][1] - c[1][1]))
-        if abs(Pb - Pa) == 0:
-            return ("keep", out)
-        ratio = (X - Pa) / (Pb - Pa)
-        return ("sim", out, la, lb, ratio, self._param(self.seg))
-
     def _run(self, d: np.ndarray) -> dict[str, complex]:
         st = dict(self.base)
-        moved: dict[str, complex] = {}
         for op in self.ops:
             kind = op[0]
             if kind == "lay":
@@ -127,16 +76,10 @@ class Propagation:
                     continue
                 t = ((st[i2] - st[i1]).conjugate() * e2).imag / s
                 st[out] = st[i1] + t * e1
-            elif kind == "sim":
-                _, out, la, lb, ratio, pa = op
-                span = st[lb] - st[la]
-                u = span / abs(span) if abs(span) > 0 else 1.0 + 0j
-                st[out] = st[la] + span * ratio + d[pa] * u
             elif kind == "keep":
                 partner = self.coincide.get(op[1])
                 if partner is not None and partner in st:
                     st[op[1]] = st[partner]
-            moved[op[1]] = st[op[1]]
         return st
 
     def tolerance(self, a: str, b: str) -> float:
@@ -164,3 +107,82 @@ class Propagation:
 
 # --------------------------------------------------------------------------- report objects
 
+
+class LinearisedPencil:
+    """The checker's pencil for :mod:`plans.kinematics.dyads`: the construction drawn once
+    without error (case 0) and once per drawing error, each error alone and small (cases
+    1…P, first order).  Errors: each laid-off vector's length (±seg, plus ``carried`` for a
+    component computed from velocity-plan figures) and direction (±dir), each construction
+    line's direction (±dir), each point found by similarity (±seg along its link's image).
+    A first pass with one case counts the errors (:attr:`sizes`)."""
+
+    exact = True
+
+    def __init__(self, seg_mm: float, dir_rad: float, carried: dict[str, float], cases: int = 1,
+                 h: float = 1e-3) -> None:
+        self.seg, self.dir, self.carried, self.cases, self.h = seg_mm, dir_rad, carried, cases, h
+        self.sizes: list[float] = []
+
+    def _d(self, size: float) -> np.ndarray:
+        d = np.zeros(self.cases)
+        if len(self.sizes) + 1 < self.cases:
+            d[len(self.sizes) + 1] = self.h * size
+        self.sizes.append(size)
+        return d
+
+    def vector(self, length: Any, direction: Any, span: Any, out: str) -> np.ndarray:
+        dl = self._d(self.seg + self.carried.get(out, 0.0))
+        return (length + dl) * unit(direction) * np.exp(1j * self._d(self.dir))
+
+    def line(self, direction: Any, span: Any) -> np.ndarray:
+        return unit(direction) * np.exp(1j * self._d(self.dir))
+
+    def mark(self, z: Any, along: Any = None, joint: bool = False) -> np.ndarray:
+        return z + self._d(self.seg) * (1.0 if along is None else unit(along))
+
+    def read(self, length: Any) -> Any:
+        return length
+
+    cut = PerfectPencil.cut
+
+
+class Linearised:
+    """A plan's draftsman tolerances from the same construction drawn with the
+    :class:`LinearisedPencil`: a segment's worst case is the sum of its first-order changes
+    under each error at its limit (a stack-up), plus ±seg for reading it."""
+
+    def __init__(self, kin: Kinematics, k: int, kind: str, mv: float, ma: float | None, seg_mm: float, dir_rad: float,
+                 carried: dict[str, float] | None = None, h: float = 1e-3) -> None:
+        self.seg = seg_mm
+        carried = carried or {}
+
+        def draw(pencil: LinearisedPencil) -> dict[str, np.ndarray]:
+            snap = Scheme(kin, [k])
+            if kind == "velocity":
+                return velocity_plan(snap, mv, pencil).pts
+            assert ma is not None
+            vb = velocity_plan(snap, mv, PerfectPencil())
+            return acceleration_plan(snap, ma, vb, pencil).pts
+
+        count = LinearisedPencil(seg_mm, dir_rad, carried)
+        draw(count)
+        pencil = LinearisedPencil(seg_mm, dir_rad, carried, cases=len(count.sizes) + 1, h=h)
+        self.pts = draw(pencil)
+        self.h = pencil.h
+        self._cache: dict[tuple[str, str], float] = {}
+
+    def tolerance(self, a: str, b: str) -> float:
+        if (a, b) not in self._cache:
+            if a not in self.pts or b not in self.pts:
+                return self.seg
+            vec = np.ravel(self.pts[b] - self.pts[a])
+            if vec.size < 2:
+                self._cache[(a, b)] = self.seg
+                return self.seg
+            L = np.abs(vec)
+            if L[0] < 1e-9:  # a vanishing vector: how far its end moves
+                d = np.abs(vec[1:] - vec[0]) / self.h
+            else:
+                d = np.abs(L[1:] - L[0]) / self.h
+            self._cache[(a, b)] = self.seg + float(np.sum(d))
+        return self._cache[(a, b)]

@@ -46,9 +46,9 @@ def acceleration_plan(snap: Scheme, mu: float, vb: Builder, pencil: Pencil, prot
     Opos, Apos = snap.pos(d.link, O), snap.pos(d.link, A_name)
     w1, e1 = d.omega, d.eps
     l1 = np.abs(Apos - Opos)
-    an = pencil.vector(mu * w1**2 * l1, Opos - Apos, l1)
-    at = pencil.vector(mu * abs(e1) * l1, 1j * np.sign(e1) * (Apos - Opos), l1) if e1 != 0.0 else 0 * an
     a_lab = lab(A_name)
+    an = pencil.vector(mu * w1**2 * l1, Opos - Apos, l1, f"n_{A_name}{O}" if e1 != 0.0 else a_lab)
+    at = pencil.vector(mu * abs(e1) * l1, 1j * np.sign(e1) * (Apos - Opos), l1, a_lab) if e1 != 0.0 else 0 * an
     if e1 != 0.0:
         b.add(f"n_{A_name}{O}", an)
         b.step("lay off", (b.pole,), f"n_{A_name}{O}", lambda: (
@@ -83,8 +83,8 @@ def _normal(b: Builder, vr: _VelReader, link: int, frm: str, frm_xy: np.ndarray,
     """Lay off a_XP^n = ω²·l toward P from the image of P; ω read off the velocity plan."""
     w = vr.omega(link)
     ln = np.abs(P - X)
-    vec = b.pencil.vector(b.mu * w * w * ln, P - X, ln)
     lb = f"n_{Xn}{Pn}"
+    vec = b.pencil.vector(b.mu * w * w * ln, P - X, ln, lb)
     b.add(lb, frm_xy + vec)
     b.step("lay off", (frm,), lb, lambda: (
         f"a_{Xn}{Pn}^n = v_{Xn}{Pn}²/l_{Pn}{Xn} = {b.s(w * w * ln):.6g} m/s²: {abs(b.s(vec)):.3f} mm from {frm} "
@@ -100,8 +100,8 @@ def _coriolis(b: Builder, vr: _VelReader, guide_link: int, v_rel: np.ndarray, fr
     w = vr.omega(guide_link)
     muv = vr.vb.mu
     v_read = b.pencil.read(np.abs(v_rel) * muv) / muv
-    vec = b.pencil.vector(b.mu * 2 * np.abs(w) * v_read, 1j * np.sign(w) * v_rel, 0.0)
     lb = f"k_{label}"
+    vec = b.pencil.vector(b.mu * 2 * np.abs(w) * v_read, 1j * np.sign(w) * v_rel, 0.0, lb)
     b.add(lb, frm_xy + vec)
     b.step("lay off", (frm,), lb, lambda: (
         f"a^k_{label} = 2·ω{guide_link}·v_r = {abs(b.s(2 * w * v_rel)):.6g} m/s²: {abs(b.s(vec)):.3f} mm, "

@@ -10,6 +10,8 @@ a :class:`Pencil`:
   they are parallel and apart.  These are the plans (:mod:`plans.kinematics.construction`).
 * a noisy pencil (:class:`plans.accuracy.draftsman.NoisyPencil`) marks, lays off, rules and
   reads with a pencil's and a protractor's error: the hand-drawing Monte Carlo.
+* a linearised pencil (:class:`plans.check.tolerance.LinearisedPencil`) makes each drawing
+  error alone and small, one case per error: the checker's tolerance propagation.
 
 Angular velocities, normal and Coriolis components are read off the plan already drawn,
 never taken from the exact analysis; the exact analysis gives only each reading's exact
@@ -110,9 +112,10 @@ class Pencil(Protocol):
 
     exact: bool
 
-    def vector(self, length: Any, direction: Any, span: Any) -> C: ...  # a vector laid off
+    def vector(self, length: Any, direction: Any, span: Any, out: str) -> C: ...  # a vector laid off to ``out``
     def line(self, direction: Any, span: Any) -> C: ...  # unit direction of a drawn line
-    def mark(self, z: C) -> C: ...  # a point marked (similarity, a coincident point)
+    # a point found by similarity and marked; ``along``: the image of the link it divides
+    def mark(self, z: C, along: Any = None, joint: bool = False) -> C: ...
     def read(self, length: Any) -> Any: ...  # a length measured with the ruler
 
     def cut(self, b: Builder, l1: Line, l2: Line, out: str, exact_xy: C, group: Group,
@@ -124,13 +127,13 @@ class PerfectPencil:
 
     exact = True
 
-    def vector(self, length: Any, direction: Any, span: Any) -> C:
+    def vector(self, length: Any, direction: Any, span: Any, out: str) -> C:
         return length * unit(direction)
 
     def line(self, direction: Any, span: Any) -> C:
         return unit(direction)
 
-    def mark(self, z: C) -> C:
+    def mark(self, z: C, along: Any = None, joint: bool = False) -> C:
         return z
 
     def read(self, length: Any) -> Any:
@@ -261,6 +264,21 @@ def meet(b: Builder, g: Group, l1: Line, l2: Line, out: str, exact_xy: C, point:
     return xy
 
 
+def image_span(b: Builder, link: int) -> C:
+    """The link's image between the two of its points drawn so far that lie farthest apart
+    on the scheme (a point found by similarity divides it)."""
+    snap = b.snap
+    drawn = [snap.pos(link, name) for name in snap.scene.links[link].points
+             if b.labels.get((link, name)) not in (None, b.pole) or name in snap.scene.frame_points]
+    if link in b.ref_pos:  # the point the link's image is anchored at (a3 on the rocker)
+        drawn.append(b.ref_pos[link])
+    if len(drawn) < 2:
+        return b.factor[link]
+    ends = max(((x, y) for ix, x in enumerate(drawn) for y in drawn[ix + 1:]),
+               key=lambda xy: float(np.abs(np.ravel(xy[1] - xy[0])[0])))
+    return b.factor[link] * (ends[1] - ends[0])
+
+
 def link_points(b: Builder, link: int) -> None:
     """Similarity theorem: images of the link's other named points."""
     snap = b.snap
@@ -277,7 +295,7 @@ def link_points(b: Builder, link: int) -> None:
             continue
         X = snap.pos(link, name)
         xy = b.image(link, name)
-        b.add(lb, xy if name in joints else b.pencil.mark(xy))  # a similarity point is marked by dividing
+        b.add(lb, b.pencil.mark(xy, image_span(b, link), joint=name in joints))
         b.labels[(link, name)] = lb
         ref = b.anchor[link][0]
         text = f"{lb}: similarity theorem on link {link} ({name} of link {link} from {ref})" if b.protocol else ""
@@ -356,7 +374,7 @@ def coincident(b: Builder, link: int, name: str, X: C) -> tuple[str, C]:
     if link == b.snap.scene.frame:
         return b.pole, b.zero
     lb = f"{lab(name)}{link}"
-    xy = b.pencil.mark(b.image_at(link, X))
+    xy = b.pencil.mark(b.image_at(link, X), image_span(b, link))
     b.add(lb, xy)
     b.step("similarity", (b.anchor[link][0],), lb,
            lambda: f"{lb}: image of the point of link {link} under {name} (similarity theorem)")

@@ -31,7 +31,7 @@ def velocity_plan(snap: Scheme, mu: float, pencil: Pencil, protocol: bool = Fals
     Opos, Apos = snap.pos(d.link, O), snap.pos(d.link, A_name)
     w1 = d.omega
     l1 = np.abs(Apos - Opos)
-    a_xy = pencil.vector(mu * abs(w1) * l1, 1j * np.sign(w1) * (Apos - Opos), l1)
+    a_xy = pencil.vector(mu * abs(w1) * l1, 1j * np.sign(w1) * (Apos - Opos), l1, lab(A_name))
     b.add(lab(A_name), a_xy)
     b.ref = np.abs(a_xy) / mu
     b.labels[(d.link, A_name)] = lab(A_name)
