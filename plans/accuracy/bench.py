@@ -3,14 +3,15 @@
 Methods, each timed per position and over 1, 12, 360 and 3600 positions:
 
 * ``exact``        closed-form positions and 2×2 linear systems (:mod:`plans.kinematics`), vectorised;
-* ``construction`` the draftsman's construction in floating point (:mod:`plans.construction`, shapely);
-* ``newton``       Newton–Raphson on the loop equations (:mod:`plans.newton`), tolerance 1e-2 … 1e-14;
+* ``construction`` the draftsman's construction in floating point (:mod:`plans.kinematics.construction`,
+                   closed-form intersections), the positions built together;
+* ``newton``       Newton–Raphson on the loop equations (:mod:`plans.accuracy.newton`), tolerance 1e-2 … 1e-14;
 * ``fd``           central finite differences of exact positions (step sweep) for v and a;
 * ``draftsman``    Monte Carlo of the construction drawn at sheet scale with pencil and protractor
                    error (:func:`draftsman_errors`, :func:`expected_errors`), A4 against A1;
 * ``pylinkage`` / ``mechanism``: open peers, when importable (skipped cleanly otherwise).
 
-Errors are against the mpmath reference (:mod:`plans.reference`, 50 digits) for the
+Errors are against the mpmath reference (:mod:`plans.accuracy.reference`, 50 digits) for the
 slider-crank and the four-bar, against the exact analysis elsewhere.  An error is
 the largest over positions and quantities of |x − x_ref| / N, with N the size of
 the known vector of the quantity's kind: l1 for positions, |ω1| l1 for velocities,
@@ -18,8 +19,9 @@ the known vector of the quantity's kind: l1 for positions, |ω1| l1 for velociti
 at a dead centre, is judged against the plan's size, as a draftsman's reading is).
 
 Writes ``bench.md``, ``bench.json`` (``records``: one per method, scene and size,
-with ``method``, ``error``, ``time``, ``time_per_position``, ``cond``) and
-``bench.svg`` (log-log error against run time per position) to ``--out``.
+with ``method``, ``error``, ``time``, ``time_per_position``, ``cond``) and, when the renderer
+is installed (``plans bench`` from :mod:`drawings.cli`), ``bench.svg`` (log-log error against
+run time per position, :mod:`drawings.bench_plot`) to ``--out``.
 """
 
 from __future__ import annotations
@@ -100,14 +102,13 @@ def bench_case(case: Case, sizes: Sequence[int], budget: float, quick: bool,
         recs.append(Record("exact", case.name, n, total_error(errs), t, t / n, dyads=case.dyads,
                            oracle=oracle.name, errors=errs,
                            note="" if case.reference else "is the oracle"))
-        # construction (per position, plans of both kinds, shapely)
+        # construction (plans of both kinds, the positions built together)
         if n <= (360 if quick else 3600):
             kin = oracle_kin
             mv, ma = construction.default_scales(kin)
 
             def build_all(kin=kin, n=n, mv=mv, ma=ma) -> list:
-                return [construction.build(kin, k, velocity_scale=mv, acceleration_scale=ma)
-                        for k in range(n)]
+                return construction.build_many(kin, range(n), velocity_scale=mv, acceleration_scale=ma)
             t = timeit(build_all, budget if n < 360 else 0.0)
             plans = build_all()
             errs = construction_errors(sc, oracle, plans)

@@ -114,24 +114,7 @@ def markdown(result: dict[str, Any]) -> str:
         out.append(f"| {n} | {fmt(d['exact'].time_per_position, 's')} | {fmt(d['construction'].time, 's')} | "
                    f"{fmt(d['newton'].time_per_position, 's')} | {fmt(d['newton'].error)} | "
                    f"{fmt(d['construction'].error)} | {fmt(d['newton'].cond)} |")
-    dm = result.get("draftsman", {})
-    if dm:
-        out += ["", "## Hand drawing (Monte Carlo)", "",
-                f"Pencil ±{dm['model']['pencil_mm']} mm, protractor ±{dm['model']['protractor_deg']}°, "
-                f"{dm['samples']} drawings per sheet; the 95th percentile of each reading's error.", ""]
-        for sc_name, sheets in dm["scenes"].items():
-            names = sorted(next(iter(sheets.values())).keys(), key=_qorder)
-            heads = list(sheets)
-            out += [f"### {sc_name}, φ = {dm['phi_deg']}°", "",
-                    "| quantity | exact | " + " | ".join(f"{h}: p95 rel. | {h}: p95 abs. | {h}: p95 mm"
-                                                        for h in heads) + " |",
-                    "|---|---:|" + "---:|---:|---:|" * len(heads)]
-            for q in names:
-                e0 = sheets[heads[0]][q]
-                cells = " | ".join(f"{sheets[h][q]['p95_rel'] * 100:.2f} % | {sheets[h][q]['p95_abs']:.3g} "
-                                   f"{sheets[h][q]['unit']} | {sheets[h][q]['p95_mm']:.2f}" for h in heads)
-                out.append(f"| {q} | {e0['exact']:.5g} {e0['unit']} | {cells} |")
-            out.append("")
+    out += hand_drawing_section(result.get("draftsman", {}))
     st = result.get("stability", [])
     if st:
         out += ["## Stability", "", "| case | exact | construction | newton | Newton cond | error raised |",
@@ -193,4 +176,28 @@ def goals_section(goals: list[dict[str, Any]]) -> list[str]:
             out += [f"| `{p['function']}` | {p['calls_per_run']:.0f} | {p['own_us_per_run']:.1f} | "
                     f"{p['cum_us_per_run']:.1f} |" for p in g["profile"]]
             out.append("")
+    return out
+
+
+def hand_drawing_section(dm: dict[str, Any]) -> list[str]:
+    """The Monte Carlo's 95th percentiles per reading, sheet by sheet."""
+    if not dm:
+        return []
+    out: list[str] = []
+    out += ["", "## Hand drawing (Monte Carlo)", "",
+            f"Pencil ±{dm['model']['pencil_mm']} mm, protractor ±{dm['model']['protractor_deg']}°, "
+            f"{dm['samples']} drawings per sheet; the 95th percentile of each reading's error.", ""]
+    for sc_name, sheets in dm["scenes"].items():
+        names = sorted(next(iter(sheets.values())).keys(), key=_qorder)
+        heads = list(sheets)
+        out += [f"### {sc_name}, φ = {dm['phi_deg']}°", "",
+                "| quantity | exact | " + " | ".join(f"{h}: p95 rel. | {h}: p95 abs. | {h}: p95 mm"
+                                                    for h in heads) + " |",
+                "|---|---:|" + "---:|---:|---:|" * len(heads)]
+        for q in names:
+            e0 = sheets[heads[0]][q]
+            cells = " | ".join(f"{sheets[h][q]['p95_rel'] * 100:.2f} % | {sheets[h][q]['p95_abs']:.3g} "
+                               f"{sheets[h][q]['unit']} | {sheets[h][q]['p95_mm']:.2f}" for h in heads)
+            out.append(f"| {q} | {e0['exact']:.5g} {e0['unit']} | {cells} |")
+        out.append("")
     return out

@@ -102,7 +102,7 @@ class Scheme:
 
     def slide(self, jt: Joint) -> tuple[R, R]:
         sd, sdd = self.kin.slides[jt.name]
-        sdd = np.zeros(len(np.asarray(sd))) if sdd is None else sdd
+        sdd = np.zeros(np.shape(sd)) if sdd is None else sdd
         return np.asarray(sd)[self.ks], np.asarray(sdd)[self.ks]
 
 
@@ -170,7 +170,7 @@ class Builder:
         self.sym = "v" if kind == "velocity" else "a"
         self.unit = "m/s" if kind == "velocity" else "m/s^2"
         self.pole = "p_v" if kind == "velocity" else "p_a"
-        n = len(snap.phi)
+        n = np.size(snap.phi)
         self.zero = np.zeros(n, complex)
         self.pts: dict[str, C] = {self.pole: self.zero}
         self.order: list[str] = [self.pole]
@@ -309,7 +309,7 @@ def read_rates(b: Builder) -> None:
     at μ, with the sense the plan shows; a block turns with its guide; the crank's is given."""
     snap = b.snap
     d = snap.scene.driver
-    n = len(snap.phi)
+    n = np.size(snap.phi)
     b.rates[snap.scene.frame] = np.zeros(n)
 
     def rate(lid: int) -> R:
