@@ -138,7 +138,7 @@ class LinearisedPencil:
         return unit(direction) * np.exp(1j * self._d(self.dir))
 
     def mark(self, z: Any, along: Any = None, joint: bool = False) -> np.ndarray:
-        return z + self._d(self.seg) * (1.0 if along is None else unit(along))
+        return z + self._d(self.seg) * (1.0 if along is None else unit(along()))
 
     def read(self, length: Any) -> Any:
         return length

@@ -51,6 +51,8 @@ def cross(a: Any, b: Any) -> Any:
 def unit(z: Any) -> Any:
     """z / |z|, and 1 where z = 0."""
     mag = np.abs(z)
+    if np.all(mag > 0):
+        return z / mag
     return np.where(mag > 0, z / np.where(mag > 0, mag, 1.0), 1.0 + 0j)
 
 
@@ -114,7 +116,7 @@ class Pencil(Protocol):
 
     def vector(self, length: Any, direction: Any, span: Any, out: str) -> C: ...  # a vector laid off to ``out``
     def line(self, direction: Any, span: Any) -> C: ...  # unit direction of a drawn line
-    # a point found by similarity and marked; ``along``: the image of the link it divides
+    # a point found by similarity and marked; ``along()``: the image of the link it divides
     def mark(self, z: C, along: Any = None, joint: bool = False) -> C: ...
     def read(self, length: Any) -> Any: ...  # a length measured with the ruler
 
@@ -153,6 +155,8 @@ class PerfectPencil:
                              f"{b.kind} plan are parallel and apart",
                              group=f"{group.kind} {group.name}", point=point, phi_deg=float(b.snap.phi[k]))
             b.degenerate.append((out, near, np.abs(s)))
+        if not near.any():
+            return p1 + cross(p2 - p1, d2) / s * d1
         t = cross(p2 - p1, d2) / np.where(near, 1.0, s)
         return np.where(near, exact_xy, p1 + t * d1)
 
@@ -190,6 +194,7 @@ class Builder:
         self.rates: dict[int, R] = {}  # ω (ε) of each link as read off this plan
         self.ref: Any = 0.0  # the known vector's value: set when it is laid off
         self.size: Any = np.zeros(n)  # the plan's extent so far (mm from the pole)
+        self._dust: tuple[Any, Any] | None = None
 
     @staticmethod
     def s(x: Any) -> Any:
@@ -222,7 +227,9 @@ class Builder:
     def seg(self, start: str, end: str, kind: str, label: str, exact: Any) -> None:
         length = self.pencil.read(np.abs(self.pts[end] - self.pts[start]))
         # rounding dust at a dead centre (1e-15 of the plan) is read as zero, as on paper
-        dust = length <= COINCIDE_REL * np.maximum(self.ref * self.mu, 1e-300)
+        if self._dust is None or self._dust[0] is not self.ref:
+            self._dust = (self.ref, COINCIDE_REL * np.maximum(self.ref * self.mu, 1e-300))
+        dust = length <= self._dust[1]
         if dust.any():
             length = np.where(dust, 0.0, length)
         exact = np.abs(exact)
@@ -295,7 +302,7 @@ def link_points(b: Builder, link: int) -> None:
             continue
         X = snap.pos(link, name)
         xy = b.image(link, name)
-        b.add(lb, b.pencil.mark(xy, image_span(b, link), joint=name in joints))
+        b.add(lb, b.pencil.mark(xy, lambda link=link: image_span(b, link), joint=name in joints))
         b.labels[(link, name)] = lb
         ref = b.anchor[link][0]
         text = f"{lb}: similarity theorem on link {link} ({name} of link {link} from {ref})" if b.protocol else ""
@@ -335,9 +342,14 @@ def read_rates(b: Builder) -> None:
         link = snap.scene.links[lid]
         size = abs(link.length) if link.length else crank_length(snap)
         ref = b.ref / size
-        value = np.where(np.abs(value) <= 1e-12 * ref, 0.0, value)
-        exact = np.where(np.abs(exact) <= 1e-12 * ref, 0.0, exact)
+        value, exact = _dust(value, 1e-12 * ref), _dust(exact, 1e-12 * ref)
         b.readings.append((q, None, None, None, value, exact, unit_, ref, drawn))
+
+
+def _dust(x: Any, floor: Any) -> Any:
+    """x with what is not above ``floor`` read as zero."""
+    small = np.abs(x) <= floor
+    return np.where(small, 0.0, x) if small.any() else x
 
 
 def crank_length(snap: Scheme) -> float:
@@ -374,7 +386,7 @@ def coincident(b: Builder, link: int, name: str, X: C) -> tuple[str, C]:
     if link == b.snap.scene.frame:
         return b.pole, b.zero
     lb = f"{lab(name)}{link}"
-    xy = b.pencil.mark(b.image_at(link, X), image_span(b, link))
+    xy = b.pencil.mark(b.image_at(link, X), lambda: image_span(b, link))
     b.add(lb, xy)
     b.step("similarity", (b.anchor[link][0],), lb,
            lambda: f"{lb}: image of the point of link {link} under {name} (similarity theorem)")
