@@ -66,7 +66,9 @@ main { padding: .4em .8em; }
 figure { margin: 0; border: 1px solid #ddd; background: #fff; }
 figcaption { font-size: .8em; padding: .1em .4em; border-bottom: 1px solid #eee; }
 svg { width: 100%; height: auto; max-height: 58vh; display: block; }
-#cyc-chart { max-height: 24vh; }
+.charts { display: grid; grid-template-columns: repeat(auto-fit, minmax(18em, 1fr)); gap: .6em; }
+svg.chart { max-height: 22vh; }
+.node { fill: #fff; stroke: #2c3e50; stroke-width: .4; }
 .controls { display: flex; align-items: center; gap: .6em; margin: .4em 0; flex-wrap: wrap; }
 #tabs { display: flex; gap: .3em; flex-wrap: wrap; margin: .3em 0; }
 .tab { font-size: .75em; }
@@ -126,7 +128,7 @@ _BODY = """<header><h1>{title}</h1><nav><button id="mode-steps" class="on">{step
 <figure><figcaption>{acceleration_plan}</figcaption><svg id="cyc-acc" role="img"></svg></figure></div>
 <div class="controls"><button id="play">{play}</button><input id="phi" type="range" min="0" step="0.01" value="0">
 <output id="phi-out"></output></div>
-<figure><figcaption>{chart}</figcaption><svg id="cyc-chart" role="img"></svg></figure>
+<div id="cyc-charts" class="charts"></div>
 </section>
 </main>"""
 

@@ -224,7 +224,7 @@
   }
   $("cyc-vel").parentNode.hidden = !C.velocity;
   $("cyc-acc").parentNode.hidden = !C.acceleration;
-  $("cyc-chart").parentNode.hidden = !C.chart;
+  makeCharts();
   const velSize = C.velocity ? fit($("cyc-vel"), planBox(C.velocity), 8) : 0;
   const accSize = C.acceleration ? fit($("cyc-acc"), planBox(C.acceleration), 8) : 0;
   function drawCyclePlan(svg, images, size, pole) {
@@ -248,30 +248,62 @@
     el(svg, "circle", {cx: "0", cy: "0", r: f3(1.2 * u), class: "pt"});
     el(svg, "text", {x: f3(-6 * u), y: f3(5 * u), "font-size": f3(4.5 * u), class: "label"}, pole);
   }
-  function drawChart() {
-    const svg = $("cyc-chart");
-    clear(svg);
-    const ch = C.chart;
-    if (!ch) { svg.style.display = "none"; return; }
-    const W = 200, H = 80, vals = ch.values;
-    let lo = Math.min(0, ...vals), hi = Math.max(0, ...vals);
-    if (hi - lo < 1e-12) { hi = lo + 1; }
-    svg.setAttribute("viewBox", "-14 -6 " + (W + 20) + " " + (H + 18));
-    const X = (k) => (k / N) * W, Y = (v) => H - ((v - lo) / (hi - lo)) * H;
-    el(svg, "line", {x1: "0", y1: f3(Y(0)), x2: String(W), y2: f3(Y(0)), class: "axis", "stroke-width": "0.3"});
-    el(svg, "line", {x1: "0", y1: "0", x2: "0", y2: String(H), class: "axis", "stroke-width": "0.3"});
-    const d = vals.concat([vals[0]]).map((v, k) => (k ? "L" : "M") + f3(X(k)) + "," + f3(Y(v))).join(" ");
-    el(svg, "path", {d: d, class: "curve", "stroke-width": "0.6", fill: "none"});
-    const v = at(vals.map((x) => [x, 0]), t)[0];
-    el(svg, "line", {id: "cursor", x1: f3(X(t)), y1: "0", x2: f3(X(t)), y2: String(H), class: "cursor", "stroke-width": "0.5"});
-    el(svg, "text", {x: "2", y: "-1", "font-size": "5", class: "label"}, ch.label + "(φ) = " + v.toPrecision(5) + " " + ch.unit);
-    el(svg, "text", {x: String(W - 20), y: String(H + 8), "font-size": "5", class: "label"}, "φ, °");
+  function interp(xs, ys, x) {
+    const n = xs.length;
+    if (x <= xs[0]) return ys[0];
+    if (x >= xs[n - 1]) return ys[n - 1];
+    let lo = 0, hi = n - 1;
+    while (hi - lo > 1) { const m = (lo + hi) >> 1; if (xs[m] <= x) lo = m; else hi = m; }
+    const f = (x - xs[lo]) / (xs[hi] - xs[lo] || 1);
+    return ys[lo] + (ys[hi] - ys[lo]) * f;
+  }
+  function makeCharts() {
+    const box = $("cyc-charts");
+    (C.charts || []).forEach((ch, k) => {
+      const fig = document.createElement("figure");
+      const cap = document.createElement("figcaption");
+      cap.textContent = ch.label + ", " + ch.unit;
+      fig.appendChild(cap);
+      const svg = document.createElementNS(NS, "svg");
+      svg.id = "chart-" + k;
+      svg.setAttribute("class", "chart");
+      fig.appendChild(svg);
+      box.appendChild(fig);
+    });
+  }
+  function drawCharts() {
+    const phi = (((t % N) + N) % N) * (360 / N);
+    (C.charts || []).forEach((ch, k) => {
+      const svg = $("chart-" + k);
+      clear(svg);
+      const W = 200, H = 60, xs = ch.phi_deg, ys = ch.values, x0 = xs[0];
+      let lo = Math.min(0, ...ys), hi = Math.max(0, ...ys);
+      if (ch.nodes) { lo = Math.min(lo, ...ch.nodes); hi = Math.max(hi, ...ch.nodes); }
+      if (hi - lo < 1e-12 * Math.max(1, Math.abs(hi))) hi = lo + 1;
+      svg.setAttribute("viewBox", "-4 -9 " + (W + 8) + " " + (H + 14));
+      const X = (p) => ((p - x0) / 360) * W, Y = (v) => H - ((v - lo) / (hi - lo)) * H;
+      el(svg, "line", {x1: "0", y1: f3(Y(0)), x2: String(W), y2: f3(Y(0)), class: "axis", "stroke-width": "0.3"});
+      el(svg, "path", {d: ys.map((v, i) => (i ? "L" : "M") + f3(X(xs[i])) + "," + f3(Y(v))).join(" "),
+        class: "curve", "stroke-width": "0.6", fill: "none"});
+      if (ch.nodes) ch.nodes.forEach((v, i) => {
+        el(svg, "circle", {cx: f3(X(ch.nodes_deg[i])), cy: f3(Y(v)), r: "1.1", class: "node"});
+      });
+      let p = phi;
+      while (p < x0) p += 360;
+      while (p >= x0 + 360) p -= 360;
+      const v = interp(xs, ys, p);
+      el(svg, "line", {id: "cursor-" + k, x1: f3(X(p)), y1: "0", x2: f3(X(p)), y2: String(H), class: "cursor",
+        "stroke-width": "0.6"});
+      el(svg, "circle", {cx: f3(X(p)), cy: f3(Y(v)), r: "1.4", class: "pt hi"});
+      el(svg, "text", {x: "1", y: "-3", "font-size": "5.5", class: "label", "data-value": String(v)},
+        ch.label + "(" + p.toFixed(1) + "°) = " + v.toPrecision(5) + " " + ch.unit);
+    });
   }
   function drawCycle() {
     drawScheme($("cyc-scheme"), C.scheme, t, [], [], cycSize);
     if (C.velocity) drawCyclePlan($("cyc-vel"), C.velocity, velSize, "p_v");
     if (C.acceleration) drawCyclePlan($("cyc-acc"), C.acceleration, accSize, "p_a");
-    drawChart();
+    drawCharts();
     const phi = ((Math.floor(t) % N) + (t - Math.floor(t))) * (360 / N);
     $("phi-out").textContent = "φ = " + phi.toFixed(1) + "°";
     $("phi").value = String(t);

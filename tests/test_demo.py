@@ -313,6 +313,10 @@ def test_slider_moves_the_mechanism_as_the_exact_positions_say(browser, tmp_path
     pg.keyboard.press("ArrowRight")  # the keyboard turns the crank one frame on
     cx = float(pg.get_attribute("#cyc-scheme-joint-B", "cx"))
     assert abs(cx - complex(kin.point("B")[0][31]).real * mu_l) <= 0.1
+    # the cursor on the balancing force reads the exact value at this crank angle
+    fa = analyse_forces(scene, solve(scene, [L["cycle"]["phi_deg"][31]], order=2))
+    shown = float(pg.get_attribute("#chart-0 text[data-value]", "data-value"))
+    assert shown == pytest.approx(float(fa.balancing[0]), rel=1e-5, abs=1e-6)
     pg.click("#play")
     pg.wait_for_timeout(300)
     pg.click("#play")

@@ -257,8 +257,8 @@ def lesson(scene: Scene, *, phi_deg: float | None = None, frames: int = FRAMES) 
         amax = max(float(np.max(np.abs(cyc.point(nm)[2]))) for nm in names)
         cycle["mu_a"] = _nice_length_scale(amax / 1000.0, 60.0) / 1000.0 if amax > 0 else 1.0
         cycle["acceleration"] = _plan_images(cyc, names, 2, cycle["mu_a"])
-    if sol.forces is not None:
-        cycle["chart"] = _balancing_chart(scene, phis)
+    charts = [c for c in ([_balancing_chart(scene, phis)] if sol.forces is not None else []) if c]
+    cycle["charts"] = charts + _cycle_charts(scene)
     panels, steps = _steps(sol, k)
     at = solve(scene, [float(sol.kinematics.phi_deg[k])], order=order, structure=sol.structure)
     scheme = _scheme(scene, at, mu_l)
@@ -275,9 +275,28 @@ def lesson(scene: Scene, *, phi_deg: float | None = None, frames: int = FRAMES) 
     }
 
 
+#: Most samples of one curve on the page (a smooth curve at the page's size).
+CHART_SAMPLES = 361
+
+
+def _chart(label: str, unit: str, phi_deg: Any, values: Any, nodes: tuple[Any, Any] | None = None) -> dict:
+    """A curve over the crank angle for the page's cursor: exact values, and where a
+    graphical method drew it, its values at the nodes."""
+    phi = np.asarray(phi_deg, float)
+    y = np.asarray(values, float)
+    step = max(1, int(np.ceil(len(phi) / CHART_SAMPLES)))
+    keep = np.unique(np.append(np.arange(0, len(phi), step), len(phi) - 1))
+    out: dict[str, Any] = {"label": label, "unit": unit, "phi_deg": [_r(x) for x in phi[keep]],
+                           "values": [float(f"{v:.6g}") + 0.0 for v in y[keep]]}
+    if nodes is not None:
+        out["nodes_deg"] = [_r(x) for x in np.asarray(nodes[0], float)]
+        out["nodes"] = [float(f"{v:.6g}") + 0.0 for v in np.asarray(nodes[1], float)]
+    return out
+
+
 def _balancing_chart(scene: Scene, phis: np.ndarray) -> dict[str, Any] | None:
-    """F_bal(φ) over the cycle, exact (the page moves a cursor along it); None where the
-    turn passes a position the force analysis cannot take (a locked group)."""
+    """F_bal(φ) over the cycle, exact; None where the turn passes a position the force
+    analysis cannot take (a locked group)."""
     from plans.forces.polygons import analyse_forces
 
     try:
@@ -285,8 +304,29 @@ def _balancing_chart(scene: Scene, phis: np.ndarray) -> dict[str, Any] | None:
     except PlansError:
         return None
     kind = fa.crank.kind
-    return {"label": "F_bal" if kind == "force" else "M_bal", "unit": "N" if kind == "force" else "N·m",
-            "values": [_r(v) for v in fa.balancing]}
+    closed = np.append(phis, phis[0] + 360.0), np.append(fa.balancing, fa.balancing[0])  # the turn closes
+    return _chart("F_bal" if kind == "force" else "M_bal", "N" if kind == "force" else "N·m", *closed)
+
+
+def _cycle_charts(scene: Scene) -> list[dict[str, Any]]:
+    """The kinematic diagrams (exact curve, graphical values at the nodes) and the dynamics
+    (M_pr, I_pr, ΔT, ω) of a scene that asks for them."""
+    out: list[dict[str, Any]] = []
+    if scene.wants("diagrams"):
+        from plans.cycle.diagrams import diagrams
+
+        for d in diagrams(scene).diagrams:
+            out.append(_chart(d.name, d.unit, d.exact_phi_deg, d.exact, (d.phi_deg, d.values)))
+    if scene.wants("dynamics"):
+        from plans.cycle.dynamics import dynamics
+
+        dyn = dynamics(scene)
+        ex, tab = dyn.exact, dyn.table
+        out.append(_chart("M_pr", "N·m", ex.phi_deg, ex.M_pr, (tab.phi_deg, tab.M_pr)))
+        out.append(_chart("I_pr", "kg·m²", ex.phi_deg, ex.I_pr, (tab.phi_deg, tab.I_pr)))
+        out.append(_chart("ΔT", "J", ex.phi_deg, dyn.dT_exact, (tab.phi_deg, dyn.dT)))
+        out.append(_chart("ω1", "rad/s", ex.phi_deg, dyn.omega))
+    return out
 
 
 __all__ = ["FRAMES", "MAX_FRAMES", "lesson"]
