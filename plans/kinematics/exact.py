@@ -214,7 +214,8 @@ _SCA = _Sca()
 class _Ctx:
     """What the group solvers read and fill: motions, slides, conditions."""
 
-    __slots__ = ("scene", "xp", "phis", "n", "order", "motion", "slides", "conditions", "frame")
+    __slots__ = ("scene", "xp", "phis", "n", "order", "motion", "slides", "conditions", "frame",
+                 "crank", "pivot", "zpivot", "W", "E")
 
     def __init__(self, scene: Scene, xp: Any, phis: Any, order: int) -> None:
         self.scene = scene
@@ -226,21 +227,32 @@ class _Ctx:
         self.slides: dict[str, tuple[Any, Any]] = {}
         self.conditions: dict[str, Any] = {}
         self.frame = scene.frame
+        d = scene.driver
+        # the crank turns at constant ω1, ε1 about its pivot: its points in four operations
+        self.crank = d.link
+        self.pivot = scene.frame_points[d.pivot]
+        self.zpivot = scene.links[d.link].points[d.pivot]
+        self.W = 1j * d.omega
+        self.E = complex(-d.omega * d.omega, d.eps)
 
 
 def _drive(ctx: _Ctx, rot1, omega, eps) -> None:
-    d = ctx.scene.driver
-    z = ctx.scene.links[d.link].points[d.pivot]
-    pivot = ctx.scene.frame_points[d.pivot]
-    m1 = _Motion(rot1, pivot - rot1 * z if z else pivot + 0 * rot1)
-    if ctx.order >= 1:
-        rel = m1.r0 - pivot
-        m1.omega = omega
-        m1.v0 = 1j * d.omega * rel
-        if ctx.order >= 2:
-            m1.eps = eps
-            m1.a0 = complex(-d.omega**2, d.eps) * rel
-    ctx.motion[d.link] = m1
+    z = ctx.zpivot
+    if z:
+        rel = -rot1 * z  # the crank's origin from its pivot
+        m1 = _Motion(rot1, ctx.pivot + rel)
+        if ctx.order >= 1:
+            m1.omega, m1.v0 = omega, ctx.W * rel
+            if ctx.order >= 2:
+                m1.eps, m1.a0 = eps, ctx.E * rel
+    else:  # the usual crank: its origin is the pivot
+        m0 = ctx.motion[ctx.frame]
+        m1 = _Motion(rot1, m0.r0 + ctx.pivot if ctx.pivot else m0.r0)
+        if ctx.order >= 1:
+            m1.omega, m1.v0 = omega, m0.v0
+            if ctx.order >= 2:
+                m1.eps, m1.a0 = eps, m0.a0
+    ctx.motion[ctx.crank] = m1
 
 
 def _rotation1(d: Any, phi: float) -> complex:
@@ -263,6 +275,10 @@ def _solve_scalar(scene: Scene, st: Structure, program: list, phis: Any, order: 
         for fn, g, k in program:
             fn(ctx, g, k)
         runs.append(ctx)
+    return _stack(scene, st, phis, order, runs)
+
+
+def _stack(scene: Scene, st: Structure, phis: Any, order: int, runs: list) -> Kinematics:
     first = runs[0]
     cf = ("rot", "r0", "v0", "a0")[:2 + min(order, 2)]
     ff = ("omega", "eps")[:min(order, 2)]
@@ -285,6 +301,10 @@ def _solve_scalar(scene: Scene, st: Structure, program: list, phis: Any, order: 
         for f in ff:
             setattr(m, f, fcols[fi])
             fi += 1
+    if order < 2:  # the frame's rates are known (zero) whatever is asked
+        fm = motion[scene.frame]
+        n = len(runs)
+        fm.omega, fm.v0, fm.eps, fm.a0 = np.zeros(n), np.zeros(n, complex), np.zeros(n), np.zeros(n, complex)
     out_slides = {}
     for nm in slides:
         out_slides[nm] = (fcols[fi], fcols[fi + 1] if order >= 2 else None)
@@ -321,6 +341,9 @@ def _at(ctx: _Ctx, link: int, z: complex) -> tuple[Any, Any, Any]:
     m = ctx.motion[link]
     if link == ctx.frame:
         return m.r0 + z, m.v0, m.a0
+    if link == ctx.crank and z != ctx.zpivot:
+        rel = m.rot * (z - ctx.zpivot)
+        return ctx.pivot + rel, ctx.W * rel, ctx.E * rel
     if not z:
         return m.r0, m.v0, m.a0
     rel = m.rot * z
@@ -386,7 +409,7 @@ class _System:
     def __call__(self, rhs: C) -> tuple[R, R]:
         if self.k1 is None:
             inv = 1.0 / self.det
-            self.k1 = self.c2.conjugate() * -inv  # x1 = cross(rhs, c2)/det = −Im(rhs·conj(c2))/det
+            self.k1 = (-self.c2).conjugate() * inv  # x1 = cross(rhs, c2)/det = −Im(rhs·conj(c2))/det
             self.k2 = self.cc1 * inv  # x2 = cross(c1, rhs)/det = Im(conj(c1)·rhs)/det
         return (rhs * self.k1).imag, (rhs * self.k2).imag
 
