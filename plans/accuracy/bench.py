@@ -43,7 +43,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from plans.accuracy import newton
+from plans.accuracy import goals, newton
 from plans.errors import ConstructionError, PlansError
 from plans.kinematics import construction
 from plans.kinematics import exact as kinematics
@@ -64,7 +64,7 @@ QUICK_CHAIN_SIZES = (1, 5, 20)  # the full run goes to 50; dense Newton solves d
 SHEETS = {"A1": 1.0, "A2": 2**-0.5, "A3": 0.5, "A4": 2**-1.5}
 #: Samples whose hand-drawing Monte Carlo the report always shows (Coriolis, moving guides).
 CORIOLIS_SAMPLES = ("shaper", "six_bar", "scotch_yoke")
-#: Issue 2's targets on this class of machine (seconds).
+#: Bounds for the V-engine on this class of machine (seconds).
 TARGET_EXACT_360 = 0.3e-3
 TARGET_CONSTRUCTION_1 = 0.5e-3
 
@@ -909,47 +909,15 @@ def bench_chain(sizes: Sequence[int], budget: float, log: Callable[[str], None])
     return recs
 
 
-def bench_peers(cases: list[Case]) -> list[Record]:
-    """pylinkage and `mechanism`, when importable; a record saying 'skipped' otherwise."""
-    recs = []
-    for peer in ("pylinkage", "mechanism"):
-        if importlib.util.find_spec(peer) is None:
-            recs.append(Record(peer, "-", 0, math.nan, math.nan, math.nan, note="skipped: not installed"))
-            continue
-        try:
-            recs += _run_peer(peer, cases)
-        except Exception as exc:  # a peer's API drift must not break the benchmark
-            recs.append(Record(peer, "-", 0, math.nan, math.nan, math.nan,
-                               note=f"skipped: {type(exc).__name__}: {exc}"))
-    return recs
-
-
-def _run_peer(peer: str, cases: list[Case]) -> list[Record]:  # pragma: no cover - not installed here
-    if peer != "pylinkage":
-        raise RuntimeError("no adapter written for this peer yet")
-    import pylinkage as pl  # type: ignore[import-not-found]
-
+def bench_peers(perf: dict[str, Any]) -> list[Record]:
+    """The peers' runs (:mod:`plans.accuracy.peers`, measured with the goals) as records;
+    error: their largest disagreement with the exact analysis over r, v, a."""
     out = []
-    for case in cases:
-        if case.name != "four-bar":
-            continue
-        n = 360
-        ref = case.reference(_phis(n)) if case.reference else None
-        step = 2 * math.pi / n
-        frame = pl.Static(0, 0, name="O")
-        crank = pl.Crank(0.05, 0, joint0=frame, angle=step, distance=0.05, name="A")
-        rocker = pl.Revolute(0.1, 0.15, joint0=crank, joint1=(0.18, 0), distance0=0.2, distance1=0.15,
-                             name="B")
-        linkage = pl.Linkage(joints=(frame, crank, rocker), order=(frame, crank, rocker))
-        t0 = time.perf_counter()
-        locus = list(linkage.step(iterations=n))
-        t = time.perf_counter() - t0
-        err = math.nan
-        if ref is not None:
-            B = np.array([complex(*pos[2]) for pos in locus])
-            err = float(np.max(np.abs(np.abs(B) - np.abs(ref.get_point("B")[0])))) / 0.05
-        out.append(Record("pylinkage", case.name, n, err, t, t / n, oracle="mpmath 50 digits",
-                          note="positions only; |B| compared (its angle origin differs)"))
+    for r in perf.get("peers", []):
+        errs = r.get("errors") or {}
+        t = r["time_per_position"]
+        out.append(Record(r["peer"], r["mechanism"], r["positions"], max(errs.values(), default=math.nan),
+                          t * r["positions"], t, oracle="exact analysis", errors=errs, note=r["note"]))
     return out
 
 
@@ -1101,7 +1069,7 @@ def stability_records() -> list[dict]:
 # --------------------------------------------------------------------------- targets and profile
 
 
-def issue2_targets(samples: Path, budget: float) -> dict[str, Any]:
+def v_engine_bounds(samples: Path, budget: float) -> dict[str, Any]:
     """360 positions of exact V-engine kinematics (≤ 0.3 ms) and one position's full
     construction of both plans (≤ 0.5 ms); a profile of each when missed."""
     f = samples / "v_engine.toml"
@@ -1217,7 +1185,7 @@ def markdown(result: dict[str, Any]) -> str:
            ratio_table(recs), ""]
     t = result.get("targets", {})
     if "exact_360_s" in t:
-        out += ["## Issue 2 targets (V-engine)", "",
+        out += ["## V-engine: exact kinematics and one construction", "",
                 "| measure | time | target | met |", "|---|---:|---:|---|",
                 f"| exact kinematics, 360 positions (v and a) | {_fmt(t['exact_360_s'], 's')} | "
                 f"{_fmt(t['exact_360_target_s'], 's')} | {'yes' if t['exact_360_ok'] else 'NO'} |",
@@ -1252,9 +1220,11 @@ def markdown(result: dict[str, Any]) -> str:
                 "| method | sample | positions | error | per position | cond |", "|---|---|---:|---:|---:|---:|"]
         out += [f"| {r.method} | {r.scene} | {r.positions} | {_fmt(r.error)} | {_fmt(r.time_per_position, 's')} | "
                 f"{_fmt(r.cond)} |" for r in others]
-    peers = [r for r in recs if r.method in ("pylinkage", "mechanism")]
-    if peers:
-        out += ["", "## Open peers", ""] + [f"- {r.method}: {r.note or _fmt(r.error)}" for r in peers]
+    if result.get("performance"):
+        out += ["", "## Performance goals and open peers", "",
+                "Each goal measured in this run, side by side with what it is compared to; ratio: "
+                "measured over the goal's bound (at most 1 when met).", "",
+                goals.markdown(result["performance"])]
     out += ["", "## Cost against mechanism size (chain of N RRR dyads)", "",
             "| N | exact, per position (360) | construction, 1 position | Newton, per position (12) | "
             "Newton error | construction error | Newton cond |", "|---:|---:|---:|---:|---:|---:|---:|"]
@@ -1392,7 +1362,9 @@ def run_bench(quick: bool = False, samples: Path | None = None, progress: Callab
         records += bench_case(case, sizes, budget, quick, log)
     log("chain ...")
     records += bench_chain(tuple(chain_sizes or (QUICK_CHAIN_SIZES if quick else CHAIN_SIZES)), budget, log)
-    records += bench_peers(cases)
+    log("performance goals and peers ...")
+    perf = goals.measure(samples, log)
+    records += bench_peers(perf)
     log("forces ...")
     records += bench_forces(cases + vcases, sizes, budget)
     log("draftsman Monte Carlo ...")
@@ -1429,7 +1401,7 @@ def run_bench(quick: bool = False, samples: Path | None = None, progress: Callab
     stability = stability_records()
     stiff = stiff_load_records(samples)
     log("targets ...")
-    targets = issue2_targets(samples, budget)
+    targets = v_engine_bounds(samples, budget)
     warnings = [f"{r.method} on {r.scene} ({r.positions} positions, {r.param}): condition number "
                 f"{r.cond:.3g} > {newton.COND_WARN:.0e}" for r in records
                 if r.cond is not None and math.isfinite(r.cond) and r.cond > newton.COND_WARN]
@@ -1438,14 +1410,14 @@ def run_bench(quick: bool = False, samples: Path | None = None, progress: Callab
     for key, ok in (("exact_360_ok", "exact kinematics of 360 V-engine positions"),
                     ("construction_1_ok", "construction of both plans at one position")):
         if key in targets and not targets[key]:
-            warnings.append(f"issue 2 target missed: {ok} (see the profile)")
+            warnings.append(f"goal not met: {ok} (see the profile)")
     meta = {"quick": quick, "python": platform.python_version(), "numpy": np.__version__,
             "shapely": shapely.__version__, "machine": f"{platform.machine()}, {_cpus()} CPUs",
             "wall_s": time.perf_counter() - t_start, "sizes": list(sizes),
             "OPENBLAS_NUM_THREADS": os.environ.get("OPENBLAS_NUM_THREADS")}
     return {"meta": meta, "records": [r.to_json() for r in records], "targets": targets,
             "draftsman": dm, "draftsman_lines": draft_lines, "stability": stability, "stiff_loads": stiff,
-            "warnings": warnings}
+            "warnings": warnings, "performance": perf}
 
 
 def _cpus() -> int:
@@ -1530,12 +1502,8 @@ def run(args: argparse.Namespace) -> int:
     if not quiet:
         recs = [Record.from_json(r) for r in result["records"]]
         print(summary_table(recs))
-        t = result["targets"]
-        if "exact_360_s" in t:
-            print(f"\nissue 2: exact 360 V-engine positions {_fmt(t['exact_360_s'], 's')} (target 300 µs, "
-                  f"{'met' if t['exact_360_ok'] else 'MISSED'}); construction of both plans "
-                  f"{_fmt(t['construction_1_s'], 's')} (target 500 µs, "
-                  f"{'met' if t['construction_1_ok'] else 'MISSED'})")
+        print("\nPerformance goals (measured side by side in this run; [measured / bound]):")
+        print("\n".join(goals.lines(result.get("performance", {}))))
         for w in result["warnings"]:
             print(f"warning: {w}", file=err)
         print("wrote " + ", ".join(str(p) for p in written))

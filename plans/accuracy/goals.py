@@ -185,13 +185,13 @@ def forces_goal(cases: list[tuple[str, Scene]]) -> list[Goal]:
 
 def start_up_goals(samples: Path) -> list[Goal]:
     """``plans --help`` and ``plans solve`` in a fresh interpreter (the interpreter's own
-    start included), median of 5."""
+    start included), median of 3."""
     root = Path(__file__).resolve().parents[2]
     out = []
     for what, args in (("plans --help", ["--help"]),
                        ("plans solve", ["solve", str(samples / "four_bar.toml"), "--quiet"])):
         ts = []
-        for _ in range(5):
+        for _ in range(3):
             t0 = time.perf_counter()
             p = subprocess.run([sys.executable, "-m", "plans", *args], cwd=root, capture_output=True)
             ts.append(time.perf_counter() - t0)
