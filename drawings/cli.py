@@ -5,13 +5,17 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import sys
 from collections.abc import Sequence
 from pathlib import Path
 
-from plans.cli import register_commands, run
+from plans.cli import command_of, register_commands, run
 from plans.errors import InputError
 
 from .export import FORMATS
+
+#: Commands that need the renderer, listed without importing them (see plans.cli).
+_DRAWING_NAMES = {"drawings.demo": ("demo", "a step-by-step demonstration page of a scene's analysis")}
 
 
 def _formats(text: str) -> list[str]:
@@ -67,9 +71,10 @@ def draw_command(args: argparse.Namespace) -> int:
 _DRAWING_COMMANDS = ("drawings.demo",)
 
 
-def build_parser() -> argparse.ArgumentParser:
+def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     """The engine's parser (solve, check, bench, ...) with ``draw`` and the other
-    commands that need the renderer added."""
+    commands that need the renderer added (with ``argv``: only the command asked for
+    imported, see :func:`plans.cli.build_parser`)."""
     try:
         from plans.cli import build_parser as base
     except ImportError:  # pragma: no cover - the engine's CLI not written yet
@@ -77,11 +82,11 @@ def build_parser() -> argparse.ArgumentParser:
         sub = parser.add_subparsers(dest="command", required=True)
         add_draw(sub)
         return parser
-    parser = base()
+    parser = base(argv)
     sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
     add_draw(sub)
-    register_commands(sub, _DRAWING_COMMANDS)
-    if "check" in sub.choices:  # ``plans check --sheet DIR``: the marked and overlay sheets
+    register_commands(sub, _DRAWING_COMMANDS, argv, _DRAWING_NAMES)
+    if "check" in sub.choices and (argv is None or command_of(argv) == "check"):  # ``plans check --sheet DIR``: the marked and overlay sheets
         try:
             from .check_sheet import add_sheet_options
         except ImportError:  # pragma: no cover - checking sheets not installed
@@ -97,7 +102,8 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    args = build_parser().parse_args(argv)
+    argv = sys.argv[1:] if argv is None else list(argv)
+    args = build_parser(argv).parse_args(argv)
     return _run(args)
 
 

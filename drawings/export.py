@@ -5,11 +5,13 @@ from __future__ import annotations
 import os
 from collections.abc import Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from plans.errors import OutputError
 from plans.io import atomic_write
 
-from .sheet import Sheet
+if TYPE_CHECKING:  # the sheet's modules (svgwrite, numpy) load only when a sheet is drawn
+    from .sheet import Sheet
 
 FORMATS = ("svg", "pdf", "png")
 
