@@ -36,6 +36,7 @@ def add_draw(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--orientation", choices=("landscape", "portrait"), help="overrides [sheet] orientation")
     p.add_argument("--language", choices=("ru", "en"), help="overrides [sheet] language")
     p.add_argument("--dpi", type=float, default=150.0, help="PNG resolution (default 150)")
+    p.add_argument("--quiet", action="store_true", help="no progress lines on a terminal")
     p.set_defaults(func=draw_command)
     return p
 
@@ -45,8 +46,11 @@ def draw_command(args: argparse.Namespace) -> int:
     gears, cam: dispatched on its ``kind``), write them atomically, list what was written."""
 
     from plans.kinds import KINDS, read_kind
+    from plans.progress import Progress
 
     from .export import save
+
+    progress = Progress(getattr(args, "quiet", False))
 
     if args.dpi <= 0 or args.dpi > 1200:
         raise InputError(f"--dpi {args.dpi:g} is out of range; expected 1..1200")
@@ -58,9 +62,11 @@ def draw_command(args: argparse.Namespace) -> int:
             raise
         raise InputError(f"drawing {kind!r} files is not available in this installation",
                          file=args.scene, field="kind") from None
+    progress(f"drawing {args.scene} ...")
     drawing = module.draw(args.scene, format=args.sheet, orientation=args.orientation,
                           language=args.language)
-    written = save(drawing.sheets, args.output, Path(args.scene).stem, args.format, args.dpi)
+    written = save(drawing.sheets, args.output, Path(args.scene).stem, args.format, args.dpi,
+                   progress=progress)
     for p in written:
         print(p)
     return 0

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import os
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -52,7 +52,7 @@ def png_bytes(svg: bytes, dpi: float) -> bytes:
 
 
 def save(sheets: Sequence[Sheet], outdir: str | Path, stem: str, formats: Sequence[str] = ("svg",),
-         dpi: float = 150.0) -> list[Path]:
+         dpi: float = 150.0, progress: Callable[[str], None] | None = None) -> list[Path]:
     """Write every sheet in every format: ``stem.svg`` (one sheet) or ``stem-2.svg`` ..."""
     out = Path(outdir)
     for f in formats:
@@ -75,4 +75,6 @@ def save(sheets: Sequence[Sheet], outdir: str | Path, stem: str, formats: Sequen
             data = svg if f == "svg" else pdf_bytes(svg) if f == "pdf" else png_bytes(svg, dpi)
             atomic_write(p, data)
             written.append(p)
+        if progress is not None:
+            progress(f"sheet {sh.number} of {len(sheets)} written ({', '.join(formats)})")
     return written

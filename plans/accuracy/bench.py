@@ -1469,6 +1469,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--chain", type=_ints, metavar="N,N,...", help="chain lengths in dyads (default 1,2,5,10,20,50)")
     p.add_argument("--pencil-mm", type=float, default=0.25, help="pencil error, ± mm (default 0.25)")
     p.add_argument("--protractor-deg", type=float, default=0.25, help="protractor error, ± degrees (default 0.25)")
+    p.add_argument("--quiet", action="store_true", help="no progress lines and no summary on the terminal")
     p.set_defaults(func=run)
     return p
 
@@ -1484,15 +1485,17 @@ def _ints(text: str) -> tuple[int, ...]:
 
 
 def run(args: argparse.Namespace) -> int:
-    quiet = getattr(args, "json", None) == "-"
+    from plans.progress import Progress
+
+    quiet = getattr(args, "json", None) == "-" or getattr(args, "quiet", False)
+    progress = Progress(quiet)
     err = sys.stderr
     if importlib.util.find_spec("mpmath") is None:
         print("plans bench: error: the 50-digit reference needs mpmath: pip install -e '.[bench]'", file=err)
         return 2
 
     def log(s: str) -> None:
-        if not quiet:
-            print(s, file=err, flush=True)
+        progress(s.split("] ", 1)[-1])
 
     model = DraftsmanModel(getattr(args, "pencil_mm", 0.25), getattr(args, "protractor_deg", 0.25))
     result = run_bench(quick=bool(args.quick), samples=Path(args.samples) if getattr(args, "samples", None) else None,
