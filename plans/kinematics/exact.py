@@ -279,41 +279,64 @@ def _solve_scalar(scene: Scene, st: Structure, program: list, phis: Any, order: 
 
 
 def _stack(scene: Scene, st: Structure, phis: Any, order: int, runs: list) -> Kinematics:
+    """The runs' numbers as arrays over positions; a motion's arrays are made when first
+    read (each array costs about as much as a group's whole solution in Python numbers)."""
     first = runs[0]
-    cf = ("rot", "r0", "v0", "a0")[:2 + min(order, 2)]
-    ff = ("omega", "eps")[:min(order, 2)]
-    links = list(first.motion)
-    slides = [nm for nm, (sd, _) in first.slides.items() if sd is not None]
-    conds = list(first.conditions)
-    cols = np.array([[getattr(r.motion[lid], f) for lid in links for f in cf] for r in runs],
-                    dtype=complex).T.copy()
-    fcols = np.array([[getattr(r.motion[lid], f) for lid in links for f in ff]
-                      + [x for nm in slides for x in r.slides[nm][:order]]
-                      + [r.conditions[g] for g in conds] for r in runs], dtype=float).T.copy()
-    motion = {}
-    ci = fi = 0
-    for lid in links:
-        m = motion[lid] = _Motion(cols[ci], cols[ci + 1])
-        ci += 2
-        for f in cf[2:]:
-            setattr(m, f, cols[ci])
-            ci += 1
-        for f in ff:
-            setattr(m, f, fcols[fi])
-            fi += 1
-    if order < 2:  # the frame's rates are known (zero) whatever is asked
+    k = min(order, 2)
+    fields = _FIELDS_BY_ORDER[k]
+    motion: dict[int, _Motion] = {}
+    if len(runs) == 1:
+        for lid, m in first.motion.items():
+            motion[lid] = _Stacked({"rot": [m.rot], "r0": [m.r0], "omega": [m.omega], "v0": [m.v0],
+                                    "eps": [m.eps], "a0": [m.a0]} if k == 2 else
+                                   {f: [getattr(m, f)] for f in fields})
+    else:
+        for lid in first.motion:
+            ms = [r.motion[lid] for r in runs]
+            motion[lid] = _Stacked({f: [getattr(m, f) for m in ms] for f in fields})
+    if k < 2:  # the frame's rates are known (zero) whatever is asked
         fm = motion[scene.frame]
         n = len(runs)
         fm.omega, fm.v0, fm.eps, fm.a0 = np.zeros(n), np.zeros(n, complex), np.zeros(n), np.zeros(n, complex)
-    out_slides = {}
-    for nm in slides:
-        out_slides[nm] = (fcols[fi], fcols[fi + 1] if order >= 2 else None)
-        fi += min(order, 2)
-    conditions = {}
-    for g in conds:
-        conditions[g] = fcols[fi]
-        fi += 1
-    return Kinematics(scene, st, phis, order, motion, out_slides, conditions)
+    slides = {}
+    for nm, (sd, _) in first.slides.items():
+        if sd is not None:
+            slides[nm] = (np.array([r.slides[nm][0] for r in runs], dtype=float),
+                          np.array([r.slides[nm][1] for r in runs], dtype=float) if k == 2 else None)
+    conditions = {g: np.array([r.conditions[g] for r in runs], dtype=float) for g in first.conditions}
+    return Kinematics(scene, st, phis, order, motion, slides, conditions)
+
+
+_FIELDS_BY_ORDER = (("rot", "r0"), ("rot", "r0", "omega", "v0"), ("rot", "r0", "omega", "v0", "eps", "a0"))
+_COMPLEX = frozenset(("rot", "r0", "v0", "a0"))
+
+
+class _Stacked(_Motion):
+    """A motion solved position by position: each quantity a list of numbers until read."""
+
+    __slots__ = ("_cols",)
+
+    def __init__(self, cols: dict[str, Any]) -> None:  # noqa: D107 - fields live in _cols
+        self._cols = cols
+
+    def _get(self, f: str) -> Any:
+        v = self._cols.get(f)
+        if isinstance(v, list):
+            v = self._cols[f] = np.array(v, dtype=complex if f in _COMPLEX else float)
+        return v
+
+
+def _stacked_field(f: str) -> property:
+    def get(self: _Stacked) -> Any:
+        return self._get(f)
+
+    def put(self: _Stacked, value: Any) -> None:
+        self._cols[f] = value
+    return property(get, put)
+
+
+for _f in ("rot", "r0", "omega", "v0", "eps", "a0"):
+    setattr(_Stacked, _f, _stacked_field(_f))
 
 
 _FIELDS = ("rot", "r0", "omega", "v0", "eps", "a0")
