@@ -70,6 +70,9 @@ class Kinematics:
     #: group name -> condition number of its velocity/acceleration system per position:
     #: |c1||c2| / |c1 × c2| = 1 / sin(angle between the two construction lines)
     conditions: dict[str, R] = field(repr=False, default_factory=dict)
+    #: (link, local point) -> (r, v, a), filled as points are read (forces and the lever read
+    #: the same points many times)
+    _points: dict[tuple[int, complex], tuple[C, C, C]] = field(repr=False, compare=False, default_factory=dict)
 
     @property
     def n(self) -> int:
@@ -89,13 +92,19 @@ class Kinematics:
         return self.scene.links[link].points[name]
 
     def point_on(self, link: int, z: complex) -> tuple[C, C, C]:
-        """r, v, a of the point with local coordinates z on ``link``."""
-        m = self.motion[link]
-        rel = m.rot * z
-        r = m.r0 + rel
-        v = None if m.omega is None else m.v0 + 1j * m.omega * rel
-        a = None if m.eps is None else m.a0 + (1j * m.eps - m.omega**2) * rel
-        return r, v, a
+        """r, v, a of the point with local coordinates z on ``link`` (computed once)."""
+        key = (link, z) if isinstance(z, complex | float | int) else None  # arrays: a point moving on the link
+        done = None if key is None else self._points.get(key)
+        if done is None:
+            m = self.motion[link]
+            rel = m.rot * z
+            r = m.r0 + rel
+            v = None if m.omega is None else m.v0 + 1j * m.omega * rel
+            a = None if m.eps is None else m.a0 + (1j * m.eps - m.omega**2) * rel
+            done = (r, v, a)
+            if key is not None:
+                self._points[key] = done
+        return done
 
     def point(self, name: str, link: int | None = None) -> tuple[C, C, C]:
         k = self.home(name) if link is None else link
