@@ -8,6 +8,7 @@ needs a missing peer says "skipped" and why.
 
 from __future__ import annotations
 
+import functools
 import math
 import subprocess
 import sys
@@ -109,7 +110,7 @@ def kinematics_goals(cases: list[tuple[str, Scene]], peer_runs: list[peers.PeerR
             return exact.solve(sc, phis, order=2)
         t_ours = median_time(ours)
         if fl is not None:
-            t_ours, t_floor, r = paired(ours, lambda fl=fl: fl(phis))
+            t_ours, t_floor, r = paired(ours, functools.partial(fl, phis))
             out.append(Goal(f"exact kinematics, 360 positions, {name}: within {FLOOR_RATIO}× of the numpy floor",
                             f"{_us(t_ours / 360)} per position, floor {_us(t_floor / 360)}, {r:.2f}×",
                             r / FLOOR_RATIO, r <= FLOOR_RATIO))
@@ -131,7 +132,7 @@ def kinematics_goals(cases: list[tuple[str, Scene]], peer_runs: list[peers.PeerR
             out.append(Goal(f"exact kinematics, 360 positions, {name}: ≥ {PEER_SPEEDUP:g}× ahead of pylinkage + numba",
                             why, math.nan, None))
         bound = ONE_POSITION.get(name)
-        t1 = median_time(lambda sc=sc: exact.solve(sc, [45.0], order=2))
+        t1 = median_time(functools.partial(exact.solve, sc, [45.0], order=2))
         step = by.get(("pylinkage step", name))
         extra = ""
         ahead = True
@@ -176,10 +177,11 @@ def forces_goal(cases: list[tuple[str, Scene]]) -> list[Goal]:
         if not (sc.wants("force_polygons") or sc.wants("lever")):
             continue
         # a fresh analysis each time (points read once are kept by it): forces = both − solve
-        both, alone, _ = paired(lambda sc=sc: polygons.kinetostatics(sc, exact.solve(sc, phis, order=2)),
-                                lambda sc=sc: exact.solve(sc, phis, order=2))
+        def both_fn(sc: Scene = sc) -> Any:
+            return polygons.kinetostatics(sc, exact.solve(sc, phis, order=2))
+        both, alone, _ = paired(both_fn, functools.partial(exact.solve, sc, phis, order=2))
         t = max(both - alone, 0.0)
-        tl = median_time(lambda sc=sc: parse_loads(sc))
+        tl = median_time(functools.partial(parse_loads, sc))
         out.append(Goal(f"forces and lever, 360 positions, {name}: ≤ {_us(FORCES_360)}",
                         f"{_us(t)} (loads read in {_us(tl)})", t / FORCES_360, t <= FORCES_360))
     return out

@@ -119,6 +119,7 @@ def _pylinkage(scene: Scene, sh: _Shape, phis: np.ndarray) -> tuple[Any, Any, li
     names = ["O", sh.pin]
     for kind, name, l1, x, y in sh.dyads:
         B0 = complex(before.point(name)[0][0])
+        dy: Any
         if kind == "RRR":
             C = pl.Ground(y.real, y.imag, name=f"{name}_C")
             dy = pl.RRRDyad(crank.output, C, distance1=l1, distance2=x, x=B0.real, y=B0.imag, name=name)

@@ -123,7 +123,7 @@ class Scene:
     raw: dict[str, Any] = field(repr=False, default_factory=dict)
     #: what is derived once per scene (its structure, the solver's constants); not copied by
     #: dataclasses.replace, so a changed scene derives its own
-    memo: dict[str, Any] = field(init=False, repr=False, compare=False, default_factory=dict)
+    memo: dict[Any, Any] = field(init=False, repr=False, compare=False, default_factory=dict)
 
     def wants(self, output: str) -> bool:
         return output in self.outputs
