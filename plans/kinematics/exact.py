@@ -155,7 +155,7 @@ def solve(scene: Scene, phi_deg=None, order: int | None = None,
     zeros = np.zeros(n)
     czeros = np.zeros(n, dtype=complex)
     ctx.motion[scene.frame] = _Motion(np.ones(n, dtype=complex), czeros, zeros, czeros, zeros, czeros)
-    _drive(ctx, scene.driver.rotation(phis), np.full(n, scene.driver.omega), np.full(n, scene.driver.eps))
+    _drive(ctx, _rotation(scene.driver, phis), np.full(n, scene.driver.omega), np.full(n, scene.driver.eps))
     for fn, g, k in program:
         fn(ctx, g, k)
     return Kinematics(scene, st, phis, order, ctx.motion, ctx.slides, ctx.conditions)
@@ -224,7 +224,7 @@ class _Ctx:
     """What the group solvers read and fill: motions, slides, conditions."""
 
     __slots__ = ("scene", "xp", "phis", "n", "order", "motion", "slides", "conditions", "frame",
-                 "crank", "pivot", "zpivot", "W", "E")
+                 "crank", "pivot", "zpivot", "W", "E", "pins")
 
     def __init__(self, scene: Scene, xp: Any, phis: Any, order: int) -> None:
         self.scene = scene
@@ -243,6 +243,7 @@ class _Ctx:
         self.zpivot = scene.links[d.link].points[d.pivot]
         self.W = 1j * d.omega
         self.E = complex(-d.omega * d.omega, d.eps)
+        self.pins: dict[complex, tuple] = {}
 
 
 def _drive(ctx: _Ctx, rot1, omega, eps) -> None:
@@ -262,6 +263,19 @@ def _drive(ctx: _Ctx, rot1, omega, eps) -> None:
             if ctx.order >= 2:
                 m1.eps, m1.a0 = eps, m0.a0
     ctx.motion[ctx.crank] = m1
+
+
+_QUARTER = np.array([1, 1j, -1, -1j])
+
+
+def _rotation(d: Any, phis: Any) -> C:
+    """e^{iθ1} over positions, reduced by quarter turns like :meth:`Driver.rotation`
+    (the same numbers, fewer numpy calls)."""
+    ref = math.degrees(d.phi_ref)
+    t = phis if d.sense == 1 and ref == 0 else ref + d.sense * phis
+    q = np.rint(t / 90.0)
+    r = t - 90.0 * q
+    return _QUARTER[q.astype(np.intp) & 3] * np.exp(r * (1j * math.pi / 180.0))
 
 
 def _rotation1(d: Any, phi: float) -> complex:
@@ -374,8 +388,11 @@ def _at(ctx: _Ctx, link: int, z: complex) -> tuple[Any, Any, Any]:
     if link == ctx.frame:
         return m.r0 + z, m.v0, m.a0
     if link == ctx.crank and z != ctx.zpivot:
-        rel = m.rot * (z - ctx.zpivot)
-        return ctx.pivot + rel, ctx.W * rel, ctx.E * rel
+        done = ctx.pins.get(z)  # the crank pin carries several groups (V-engine)
+        if done is None:
+            rel = m.rot * (z - ctx.zpivot)
+            done = ctx.pins[z] = (ctx.pivot + rel, ctx.W * rel, ctx.E * rel)
+        return done
     if not z:
         return m.r0, m.v0, m.a0
     rel = m.rot * z
@@ -449,7 +466,7 @@ class _System:
 def _lock(ctx: _Ctx, g: Group, det: R, size: Any, point: str) -> None:
     """Condition number |c1||c2| / |c1 × c2|; parallel construction lines lock the group."""
     adet = abs(det)
-    if ctx.xp.low(adet / size) <= LOCK_SIN:
+    if (ctx.xp.low(adet) <= LOCK_SIN * size) if isinstance(size, float) else (ctx.xp.low(adet / size) <= LOCK_SIN):
         raise _fail(Locked, ctx, g, adet <= LOCK_SIN * size, point,
                     "the construction lines are parallel and do not coincide: the group locks here "
                     "(velocities are unbounded)")
