@@ -246,3 +246,70 @@ def markdown(result: dict[str, Any]) -> str:
                        + " | ".join(f"{e[k]:.2g}" if k in e else "" for k in ("r", "v", "a"))
                        + f" | {r['note']} |")
     return "\n".join(out)
+
+
+# --------------------------------------------------------------------------- docs/accuracy.md
+
+_BEGIN, _END = "<!-- from plans bench: begin -->", "<!-- from plans bench: end -->"
+
+
+def results_table(result: dict[str, Any]) -> str:
+    """The accuracy table of docs/accuracy.md from a run's records (1 and 360 positions)."""
+    recs = result["records"]
+
+    def get(method: str, scene: str, n: int, param: str = "") -> dict | None:
+        return next((r for r in recs if r["method"] == method and r["scene"] == scene and r["positions"] == n
+                     and (not param or r.get("param") == param)), None)
+
+    def fmt(x: float | None, unit: bool = False) -> str:
+        if x is None or not math.isfinite(x):
+            return "–"
+        return _us(x) if unit else f"{x:.2g}"
+
+    rows = ["| method | mechanism | positions | error | time per position |", "|---|---|---:|---:|---:|"]
+    for scene, label in (("slider-crank (offset)", "slider-crank"), ("four-bar", "four-bar")):
+        for method, name, param in (("exact", "exact (closed form)", ""), ("construction", "construction", ""),
+                                    ("newton", "Newton–Raphson, tol 1e-12", "")):
+            a, b = get(method, scene, 1, param), get(method, scene, 360, param)
+            if a and b:
+                rows.append(f"| {name} | {label} | 1 / 360 | {fmt(a['error'])} / {fmt(b['error'])} | "
+                            f"{fmt(a['time_per_position'], True)} / {fmt(b['time_per_position'], True)} |")
+        fd = get("finite differences", scene, 360, "h=1e-02 deg")
+        if fd:
+            rows.append(f"| finite differences, h = 0.01° | {label} | 360 | {fmt(fd['error'])} | "
+                        f"{fmt(fd['time_per_position'], True)} |")
+    for sheet in ("A1", "A4"):
+        d = get(f"draftsman {sheet}", "slider-crank (offset)", 1)
+        if d:
+            rows.append(f"| hand drawing, {sheet} (95 % of drawings) | slider-crank | – | {fmt(d['error'])} | – |")
+    return "\n".join(rows)
+
+
+def update_doc(result: dict[str, Any], path: Path) -> None:
+    """Rewrite the part of ``path`` between the bench markers from ``result``."""
+    from plans.io import atomic_write
+
+    text = path.read_text(encoding="utf-8")
+    m = result.get("meta", {})
+    body = "\n".join([
+        _BEGIN, "",
+        f"`plans bench{' --quick' if m.get('quick') else ''}`, Python {m.get('python')}, numpy {m.get('numpy')}, "
+        f"{m.get('machine')}, OPENBLAS_NUM_THREADS={m.get('OPENBLAS_NUM_THREADS') or 'unset'} "
+        "(a shared machine: times drift, the ratios are measured side by side).", "",
+        results_table(result), "",
+        "### Performance goals", "",
+        "Each goal measured in the same run as what it is compared to; ratio: measured over the "
+        "goal's bound (met when at most 1).", "",
+        markdown(result.get("performance", {})), "", _END])
+    if _BEGIN in text and _END in text:
+        head, rest = text.split(_BEGIN, 1)
+        text = head + body + rest.split(_END, 1)[1]
+    else:
+        text = text.rstrip("\n") + "\n\n" + body + "\n"
+    atomic_write(path, text)
+
+
+if __name__ == "__main__":  # pragma: no cover - python -m plans.accuracy.goals bench.json docs/accuracy.md
+    import json
+
+    update_doc(json.loads(Path(sys.argv[1]).read_text(encoding="utf-8")), Path(sys.argv[2]))
