@@ -39,3 +39,23 @@ def test_translucent_ink_is_unpremultiplied_as_cairo_does():
            b'<rect x="2" y="2" width="30" height="10" fill="#3a7fd0" fill-opacity="0.37"/>'
            b'<circle cx="20" cy="10" r="7.3" fill="none" stroke="#c02020" stroke-width="1.3"/></svg>')
     assert _pixels(png_bytes(svg, 96)) == _pixels(cairosvg.svg2png(bytestring=svg, dpi=96))
+
+
+def test_svg_is_written_as_svgwrite_writes_it():
+    import svgwrite
+
+    from drawings import draw
+    from drawings.svg import SvgBackend, serialize
+
+    sheet = draw(str(ROOT / "samples" / "shaper.toml")).sheets[0]
+    be = SvgBackend(100, 50, title='a "quoted" <title> & more')
+    be.dwg.defs.add(be.dwg.style(".link{stroke-width:0.7}"))
+    t = be.dwg.text("", insert=(1, 2))
+    t.add(be.dwg.tspan("v_B < 1 & a > 2", dy=["1"]))
+    be.dwg.add(t)
+    be.dwg.add(be.dwg.line((0, 0), (1, 1), stroke="#000", id="x\ny\t\"z\""))
+    be.dwg.add(be.dwg.use("#x", insert=(0, 0)))
+    be.dwg.add(be.dwg.g())
+    for dwg in (be.dwg, svgwrite.Drawing(size=("10mm", "10mm"))):
+        assert serialize(dwg) == dwg.tostring()
+    assert sheet.svg().startswith("<svg ")
