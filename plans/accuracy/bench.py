@@ -590,7 +590,8 @@ class _Drawing:
 
     def _eps(self, lid: int, tang: np.ndarray, length: float) -> None:
         ex = float(self.kin.eps(lid)[self.k])
-        self.read(f"eps_{lid}", np.sign(ex) * self.sh.rule(np.abs(tang)) / (self.sh.mua * length), ex,
+        sense = float(np.sign(ex)) or 1.0  # ε = 0 exactly (a dead centre): the drawing still reads |a^τ|
+        self.read(f"eps_{lid}", sense * self.sh.rule(np.abs(tang)) / (self.sh.mua * length), ex,
                   "rad/s^2", 0.0)
 
     def _sliding_a(self, q: str, vec: np.ndarray, jt: Any) -> None:
