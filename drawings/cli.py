@@ -92,6 +92,10 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
     add_draw(sub)
     register_commands(sub, _DRAWING_COMMANDS, argv, _DRAWING_NAMES)
+    if "bench" in sub.choices and (argv is None or command_of(argv) == "bench"):
+        from .bench_plot import add_plot  # ``plans bench`` draws bench.svg with the sheets' backend
+
+        add_plot(sub.choices["bench"])
     if "check" in sub.choices and (argv is None or command_of(argv) == "check"):  # ``plans check --sheet DIR``: the marked and overlay sheets
         try:
             from .check_sheet import add_sheet_options

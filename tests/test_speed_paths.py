@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from plans.accuracy import floor, peers, reference
-from plans.accuracy.bench import chain_scene
+from plans.accuracy.oracles import chain_scene
 from plans.errors import ConstructionError
 from plans.kinematics import exact
 from plans.kinematics.structure import _orient, analyse
