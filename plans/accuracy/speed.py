@@ -169,7 +169,7 @@ def structure_goal() -> list[Goal]:
 
 
 def forces_goal(cases: list[tuple[str, Scene]]) -> list[Goal]:
-    from plans.forces import polygons
+    from plans.forces import analysis as polygons
     from plans.forces.loads import parse_loads
 
     out = []
