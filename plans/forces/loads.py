@@ -135,7 +135,15 @@ _LOAD_KEYS = {"gravity", "inertia", "lever_turn", "balancing", "mass_rule", "gas
 
 
 def parse_loads(scene: Scene) -> Loads:
-    """Read ``[loads]`` (and the links' masses) into a :class:`Loads`; InputError on anything wrong."""
+    """Read ``[loads]`` (and the links' masses) into a :class:`Loads`; InputError on anything
+    wrong.  Read once per scene (a Loads is frozen)."""
+    done = scene.memo.get("loads")
+    if done is None:
+        done = scene.memo["loads"] = _parse_loads(scene)
+    return done
+
+
+def _parse_loads(scene: Scene) -> Loads:
     path = scene.path
     raw = scene.raw.get("loads", {})
     unit = scene.raw.get("unit", "mm")
