@@ -93,7 +93,7 @@ def bounds(cam: Cam, phi: np.ndarray | None = None, exact: bool = True) -> Bound
                 ph = cam.phases[int(motion(cam, np.array([phi[i]])).phase[0])]
                 lo, hi = ph.start, ph.start + ph.angle
 
-                def f(p: float, sgn: int = sgn, lo: float = lo, hi: float = hi) -> float:
+                def f(p: float, sgn: int = sgn, lo: float = lo, hi: float = hi, tan_a: float = tan_a) -> float:
                     p = min(max(p, lo), hi - 1e-12)
                     x, y, _ = diagram_points(cam, np.array([p]))
                     return float(sgn * x[0] - y[0] * tan_a)

@@ -248,7 +248,7 @@ def _phases(data: dict[str, Any], path: str, unit: str, osc: bool) -> tuple[Phas
             else:
                 stroke = _length(ph, lift_key, unit, path, where, positive=True)
             if stroke > lift * (1 + _TOL) + 1e-15 or lift <= 0:
-                raise InputError(f"the return is longer than the lift reached so far", file=path,
+                raise InputError("the return is longer than the lift reached so far", file=path,
                                  field=f"{where}{lift_key}")
             stroke = -min(stroke, lift)
         name = _choice(ph, "law", LAW_NAMES, path, where)
@@ -256,7 +256,7 @@ def _phases(data: dict[str, Any], path: str, unit: str, osc: bool) -> tuple[Phas
             law = _table(ph, path, where, abs(stroke), angle_deg, unit, osc)
         else:
             if "table" in ph:
-                raise InputError(f"a table is read only with law = \"table\"", file=path, field=f"{where}table")
+                raise InputError("a table is read only with law = \"table\"", file=path, field=f"{where}table")
             law = LAWS[name]
         out.append(Phase(kind, start, angle, lift, stroke, name, law))
         start += angle

@@ -1,0 +1,334 @@
+"""The cam sheet: motion diagrams by graphical integration, the ds/dφ–s diagram with the
+pressure-angle rays and the region of allowed centres, the profile by inversion."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from plans.cams.analysis import Profile, grid, oscillating_rest, profile
+from plans.cams.base_radius import BaseRadius, division_points, min_base_radius
+from plans.cams.graphical import Integration, integral_scale, integrate_cam
+from plans.cams.model import Cam, load_cam
+
+from .backend import HAIR, MAIN, THICK, THIN, Pt, Recording, Style
+from .common import arrow, dot, fmt
+from .panels import Panel, finish, ratio_text
+from .sheet import Sheet, SheetSpec, compose, sheet_spec
+from .text import layout
+
+EXACT = Style(width=0.25, stroke="#1f5fbf", dash=(2.0, 1.0))
+AXIS = Style(width=0.18, stroke="#333", dash=(6.0, 1.0, 1.0, 1.0), cls="axis")
+REGION = Style(stroke=None, width=0.0, fill="#cfe3cf")
+WARN = Style(width=0.7, stroke="#c00000")
+SMALL = 2.5
+LABEL = 3.5
+PHI_LENGTH = 240.0  # mm for the whole turn on the motion diagrams
+
+WORDS = {
+    "motion": ("Диаграммы движения толкателя (графическое интегрирование)",
+               "Follower motion diagrams (graphical integration)"),
+    "diagram": ("Диаграмма ds/dφ – s: углы давления, область центров",
+                "The ds/dφ – s diagram: pressure angles, region of centres"),
+    "profile": ("Профиль кулачка (метод обращения)", "Cam profile by inversion"),
+    "results": ("Результаты", "Results"),
+}
+
+
+def _w(key: str, lang: str) -> str:
+    ru, en = WORDS[key]
+    return ru if lang == "ru" else en
+
+
+@dataclass(frozen=True)
+class Drawing:
+    cam: Cam
+    spec: SheetSpec
+    panels: tuple[Panel, ...]
+    sheets: tuple[Sheet, ...]
+
+
+def nice(x: float) -> float:
+    """The largest 1, 2, 2.5, 5 × 10ⁿ not above x (x > 0)."""
+    e = math.floor(math.log10(x))
+    for m in (5.0, 2.5, 2.0, 1.0):
+        if m * 10**e <= x * (1 + 1e-12):
+            return m * 10**e
+    return 10 ** (e - 1) * 5
+
+
+def _lift(cam: Cam) -> tuple[float, str]:
+    """Factor from SI lift to the drawn unit, and its name."""
+    if cam.follower == "oscillating":
+        return 180 / math.pi, "°"
+    return 1 / cam.scale, cam.unit
+
+
+def _text(rec: Recording, s: str, x: float, y: float, size: float = SMALL, anchor: str = "start",
+          valign: str = "middle", eid: str = "") -> None:
+    rec.text(layout(s, x, y, size, anchor, valign), "label", eid)
+
+
+def motion_panel(cam: Cam, lang: str) -> Panel:
+    """s, ds/dφ and d²s/dφ² against φ: a(φ) exact, integrated twice by mid-ordinates and a
+    pole (the chains, thick), the exact curves beside them (dashed)."""
+    f, unit = _lift(cam)
+    ig: Integration = integrate_cam(cam)
+    fine = grid(cam, 0.5)
+    from plans.cams.analysis import motion
+
+    mo = motion(cam, np.append(fine, 2 * np.pi))
+    x_of = PHI_LENGTH / (2 * math.pi)  # k_φ, mm per rad
+    a_max = float(np.max(np.abs(mo.s2))) * f or 1.0
+    v_max = float(np.max(np.abs(mo.s1))) * f or 1.0
+    s_max = float(np.max(mo.s)) * f or 1.0
+    k_a = nice(22.0 / a_max)
+    H1 = max(5.0, nice(k_a * x_of * v_max / 22.0))
+    k_v = integral_scale(k_a, x_of, H1)
+    H2 = max(5.0, nice(k_v * x_of * s_max / 40.0))
+    k_s = integral_scale(k_v, x_of, H2)
+    rec = Recording()
+    rows = [("s", k_s, mo.s * f, ig.s_nodes * f, None, 0.0),
+            ("ds/dφ", k_v, mo.s1 * f, ig.v_nodes * f, None, 60.0),
+            ("d²s/dφ²", k_a, mo.s2 * f, None, ig.a_mid * f, 120.0)]
+    X = np.append(fine, 2 * np.pi) * x_of
+    nodes_x = ig.nodes * x_of
+    for name, k, exact, chain, mid, y0 in rows:
+        rec.line((-4, y0), (PHI_LENGTH + 6, y0), THIN, f"axis-{name}")
+        top = y0 - (k * float(np.max(exact)) if name == "s" else 26.0)
+        rec.line((0, y0 + (0 if name == "s" else 26.0)), (0, min(top, y0 - 26.0)), THIN)
+        _text(rec, name, 1.5, min(top, y0 - 26.0), LABEL, "start", "top")
+        _text(rec, "φ", PHI_LENGTH + 7, y0, LABEL)
+        for xn in nodes_x:
+            rec.line((xn, y0 - 0.8), (xn, y0 + 0.8), HAIR)
+        pts = [(float(x), y0 - k * float(v)) for x, v in zip(X, exact, strict=True)]
+        if chain is not None:
+            rec.polyline(pts, EXACT, f"exact-{name}")
+            rec.polyline([(float(x), y0 - k * float(v)) for x, v in zip(nodes_x, chain, strict=True)], MAIN,
+                         f"graphical-{name}")
+        else:
+            rec.polyline(pts, MAIN, f"exact-{name}")
+            steps: list[Pt] = []
+            for i, m in enumerate(mid):
+                steps += [(float(nodes_x[i]), y0 - k * float(m)), (float(nodes_x[i + 1]), y0 - k * float(m))]
+            rec.polyline(steps, HAIR, "mid-ordinates")
+        scale = f"k = {fmt(k, 4, lang)} mm/({unit}" + ("" if name == "s" else "/rad" if name == "ds/dφ"
+                                                       else "/rad²") + ")"
+        _text(rec, scale, PHI_LENGTH + 7, y0 - 6, SMALL)
+    # the poles and their rays: integrand's mid-ordinate projected on the axis, ray from P
+    for (k, mids, y0, H, tag) in ((k_a, ig.a_mid * f, 120.0, H1, "1"), (k_v, ig.v_mid * f, 60.0, H2, "2")):
+        P = (-H, y0)
+        dot(rec, P, 0.6, f"pole-{tag}")
+        _text(rec, f"P{tag}", P[0] - 1, P[1] + 2.5, SMALL, "end")
+        _text(rec, f"H{tag} = {fmt(H, 3, lang)}", P[0], P[1] - 3, SMALL)
+        for m in mids:
+            rec.line(P, (0.0, y0 - k * float(m)), Style(width=0.13, stroke="#888"))
+    # the phase boundaries and their angles
+    for ph in cam.phases:
+        xb = ph.start * x_of
+        rec.line((xb, -2), (xb, 146), Style(width=0.13, stroke="#888", dash=(1.0, 1.0)))
+        _text(rec, f"{math.degrees(ph.angle):g}°", xb + ph.angle * x_of / 2, 150, SMALL, "middle")
+    err = float(np.max(np.abs(ig.s_nodes - motion(cam, ig.nodes % (2 * np.pi)).s))) * f
+    note = (f"k_φ = {fmt(x_of * math.pi / 180, 4, lang)} mm/°; k′ = k·k_φ/H; "
+            f"graphical s within {fmt(err, 3, lang)} {unit} of exact; dashed: exact")
+    return finish("motion", "cam-motion", None, rec, _w("motion", lang), note=note)
+
+
+def diagram_panel(cam: Cam, br: BaseRadius, lang: str) -> Panel:
+    """D = (−k·ds/dφ, s) from B0 at one length scale, the rays at [α] tangent to the curve,
+    the allowed region below them, the centres: minimum at the file's offset, the best, the
+    file's own."""
+    assert br.bounds is not None
+    phi = np.append(grid(cam, 0.5), 2 * np.pi)
+    from plans.cams.analysis import motion
+
+    mo = motion(cam, phi)
+    Xd, Yd = -cam.sense * mo.s1, mo.s
+    s0 = math.sqrt(cam.base_radius**2 - cam.offset**2)
+    O_file = (-cam.offset, -s0)
+    pts = np.vstack([np.c_[Xd, Yd], [O_file, br.centre, br.best_centre]])
+    span = float(np.max(np.ptp(pts, axis=0)))
+    mu = nice(150.0 / span)  # paper mm per m
+    rec = Recording()
+
+    def P(x: float, y: float) -> Pt:
+        return (mu * x, -mu * y)
+
+    xmin, xmax = float(pts[:, 0].min()) - 0.1 * span, float(pts[:, 0].max()) + 0.1 * span
+    ymin = float(pts[:, 1].min()) - 0.15 * span
+    # allowed region: clip the half-planes to the box
+    region = _clip_region(br, xmin, xmax, ymin, float(np.max(Yd)))
+    if len(region) >= 3:
+        rec.polygon([P(*q) for q in region], REGION, "allowed-region")
+    rec.line(P(0, ymin), P(0, float(np.max(Yd)) * 1.1), AXIS, "follower-line")
+    rec.line(P(xmin, 0), P(xmax, 0), THIN, "ds-axis")
+    rec.polyline([P(float(x), float(y)) for x, y in zip(Xd, Yd, strict=True)], MAIN, "ds-s-curve")
+    for q in division_points(cam):
+        x, y = -cam.sense * motion(cam, np.array([q])).s1[0], motion(cam, np.array([q])).s[0]
+        dot(rec, P(float(x), float(y)), 0.4)
+    for i, (t, _c1, _c2) in enumerate(br.bounds.lines):
+        for j, sgn in enumerate((1, -1)):
+            D = br.bounds.tangent[2 * i + j]
+            # ray through D leaning by α: direction down-left (c1) or down-right (c2)
+            d = np.array([-sgn * t, -1.0])
+            L = (D[1] - ymin) / 1.0
+            E = (D[0] + d[0] * L, D[1] + d[1] * L)
+            rec.line(P(*D), P(*E), Style(width=0.35, stroke="#1f5fbf"), f"ray-{i}-{j}")
+        ang = math.degrees(math.atan(t))
+        _text(rec, f"[α] = {fmt(ang, 3, lang)}°", *P(xmax, ymin + (0.08 + 0.06 * i) * span), SMALL, "end")
+    for name, c, st in (("O_min", br.centre, "#c00000"), ("O_best", br.best_centre, "#1f7f1f"),
+                        ("O", O_file, "#000")):
+        q = P(*c)
+        rec.circle(q, 0.8, Style(stroke=None, width=0, fill=st), f"centre-{name}")
+        _text(rec, name, q[0] + 1.5, q[1] + 1.5, LABEL, "start", "top")
+    _text(rec, "B0", *P(0, 0), LABEL, "end", "bottom")
+    _text(rec, "s", *P(0, float(np.max(Yd)) * 1.1), LABEL, "start", "bottom")
+    _text(rec, "ds/dφ", *P(xmax, 0), SMALL, "end", "bottom")
+    note = f"μ_l = {fmt(mu / 1000 * cam.scale * 1000, 4, lang)} mm/{cam.unit} ({ratio_text(mu)})"
+    return finish("ds-s", "cam-diagram", None, rec, _w("diagram", lang), note=note)
+
+
+def _clip_region(br: BaseRadius, x0: float, x1: float, y0: float, y1: float) -> list[tuple[float, float]]:
+    """The allowed region within a box, by clipping the box polygon with each half-plane."""
+    assert br.bounds is not None
+    poly = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+    for t, c1, c2 in br.bounds.lines:
+        for a, b, c in ((-1.0, t, -c1), (1.0, t, c2)):  # a·x + b·y ≤ c
+            out: list[tuple[float, float]] = []
+            for i in range(len(poly)):
+                p, q = poly[i], poly[(i + 1) % len(poly)]
+                fp, fq = a * p[0] + b * p[1] - c, a * q[0] + b * q[1] - c
+                if fp <= 0:
+                    out.append(p)
+                if fp * fq < 0:
+                    r = fp / (fp - fq)
+                    out.append((p[0] + r * (q[0] - p[0]), p[1] + r * (q[1] - p[1])))
+            poly = out
+            if not poly:
+                return []
+    return poly
+
+
+def profile_panel(cam: Cam, lang: str) -> Panel:
+    """Inversion: the follower's positions at the division points turned by −φ, the
+    theoretical profile through the roller centres, the roller circles and their envelope."""
+    phi = np.append(grid(cam, 0.5), 2 * np.pi)
+    pr: Profile = profile(cam, phi)
+    q = division_points(cam)
+    pq = profile(cam, q)
+    reach = float(np.max(np.hypot(*pr.theoretical.T))) + cam.roller
+    if cam.follower == "oscillating":
+        reach = max(reach, cam.pivot + 0.15 * cam.arm)
+    mu = nice(140.0 / reach)  # paper mm per m
+    rec = Recording()
+
+    def P(v: np.ndarray | tuple[float, float]) -> Pt:
+        return (mu * float(v[0]), -mu * float(v[1]))
+
+    k = cam.sense
+    r0 = cam.base_radius
+    rec.circle((0, 0), mu * r0, Style(width=0.18, stroke="#333", dash=(6.0, 1.0, 1.0, 1.0)), "base-circle")
+    if cam.roller > 0:
+        rec.circle((0, 0), mu * (r0 - cam.roller), HAIR, "actual-base-circle")
+    for i, ph_ in enumerate(q):
+        c, s = math.cos(-k * ph_), math.sin(-k * ph_)
+
+        def R(v: np.ndarray, c: float = c, s: float = s) -> np.ndarray:
+            return np.array([c * v[0] - s * v[1], s * v[0] + c * v[1]])
+
+        B = pq.theoretical[i]
+        if cam.follower == "translating":
+            s0 = math.sqrt(r0**2 - cam.offset**2)
+            foot = R(np.array([cam.offset, 0.0]))
+            top = R(np.array([cam.offset, s0 + cam.h * 1.0 + 0.25 * r0]))
+            rec.line(P(foot), P(top), Style(width=0.13, stroke="#777"), f"follower-{i}")
+        else:
+            A = R(np.array([cam.pivot, 0.0]))
+            rec.line(P(A), P(B), Style(width=0.25, stroke="#555"), f"arm-{i}")
+            dot(rec, P(A), 0.35)
+        if cam.roller > 0:
+            rec.circle(P(B), mu * cam.roller, Style(width=0.18, stroke="#555"), f"roller-{i}")
+        dot(rec, P(B), 0.35)
+        lab = np.asarray(B) * (1 + 0.06 * 35 / max(mu * math.hypot(*B), 1.0) * 1.0) + 0.0
+        _text(rec, str(i), *P(lab * 1.0 + np.asarray(B) * 0.12), SMALL, "middle")
+    if cam.follower == "oscillating":
+        rec.circle((0, 0), mu * cam.pivot, Style(width=0.13, stroke="#777", dash=(3.0, 1.5)), "pivot-circle")
+    rec.polyline([P(p) for p in pr.theoretical], Style(width=0.35, stroke="#1f5fbf", dash=(6.0, 1.0, 1.0, 1.0)),
+                 "theoretical-profile")
+    if cam.roller > 0 or cam.flat:
+        rec.polyline([P(p) for p in pr.actual], THICK, "actual-profile")
+    bad = (pr.curvature <= 0) if cam.flat else (pr.curvature * cam.roller >= 1.0) if cam.roller > 0 else \
+        np.zeros_like(pr.curvature, bool)
+    if np.any(bad):
+        for j in np.flatnonzero(bad):
+            rec.circle(P(pr.actual[j]), 0.5, Style(stroke=None, width=0, fill="#c00000"), f"undercut-{j}")
+    dot(rec, (0, 0), 0.7, "cam-centre")
+    _text(rec, "O", 1.5, 2.0, LABEL, "start", "top")
+    # the sense of rotation
+    rr = mu * r0 * 0.35
+    a0, a1 = (0.3, 1.3) if k > 0 else (1.3, 0.3)
+    p0 = (rr * math.cos(a0), -rr * math.sin(a0))
+    p1 = (rr * math.cos(a1), -rr * math.sin(a1))
+    rec.arc((0, 0), rr, -max(a0, a1), -min(a0, a1), THIN)
+    arrow(rec, (p1[0] + (p1[1]) * 0.15 * k, p1[1] - p1[0] * 0.15 * k), p1, THIN, "omega", "omega")
+    _text(rec, "ω", p0[0] + 1.5, p0[1], LABEL)
+    _ = p0
+    note = (f"{ratio_text(mu)}; {len(q)} positions turned by −φ against ω; dash-dot: theoretical "
+            "profile, thick: actual profile (envelope of the roller circles)")
+    return finish("profile", "cam-profile", None, rec, _w("profile", lang), note=note)
+
+
+def results_panel(cam: Cam, br: BaseRadius, drawn: BaseRadius | None, lang: str) -> Panel:
+    from plans.cams.analysis import findings
+
+    fi = findings(cam)
+    L = cam.scale
+    u = cam.unit
+    lines = [
+        f"r0 = {fmt(cam.base_radius / L, 4, lang)} {u}, e = {fmt(cam.offset / L, 4, lang)} {u}, "
+        f"r_roller = {fmt(cam.roller / L, 4, lang)} {u}",
+        f"α max: rise {fmt(math.degrees(fi.max_pressure_rise), 4, lang)}° ([α] = "
+        f"{fmt(math.degrees(cam.alpha_rise), 3, lang)}°), return {fmt(math.degrees(fi.max_pressure_return), 4, lang)}°"
+        f" ([α] = {fmt(math.degrees(cam.alpha_return), 3, lang)}°)",
+        f"r0 min = {fmt(br.min_base_radius / L, 5, lang)} {u} (exact)"
+        + ("" if drawn is None else f", {fmt(drawn.min_base_radius / L, 5, lang)} {u} (diagram)"),
+    ]
+    if br.best_offset is not None and cam.follower == "translating" and not cam.flat:
+        lines.append(f"best: r0 = {fmt(br.best_base_radius / L, 5, lang)} {u} at e = "
+                     f"{fmt(br.best_offset / L, 4, lang)} {u}")
+    lines.append(f"ρ min (convex, theoretical) = {fmt(fi.min_curvature_radius / L, 4, lang)} {u}")
+    if fi.undercut:
+        for c in fi.undercut:
+            lines.append(f"UNDERCUT φ = {fmt(c.start_deg, 4, lang)}…{fmt(c.end_deg, 4, lang)}°: "
+                         f"ρ = {fmt(c.min_radius / L, 4, lang)} {u} < r_roller")
+    else:
+        lines.append("no undercut" if lang == "en" else "подреза нет")
+    rec = Recording()
+    for i, t in enumerate(lines):
+        rec.text(layout(t, 0, i * 5.5, LABEL, "start", "top"), "label", f"result-{i}",
+                 fill="#c00000" if t.startswith("UNDERCUT") else "#000")
+    return finish("results", "cam-results", None, rec, _w("results", lang))
+
+
+def build_panels(cam: Cam, spec: SheetSpec) -> list[Panel]:
+    lang = spec.language
+    br = min_base_radius(cam, True)
+    drawn = min_base_radius(cam, False) if br.bounds is not None else None
+    panels = [profile_panel(cam, lang), motion_panel(cam, lang)]
+    if br.bounds is not None:
+        panels.append(diagram_panel(cam, br, lang))
+    panels.append(results_panel(cam, br, drawn, lang))
+    return panels
+
+
+def draw(path: str | Path, *, format: str | None = None, orientation: str | None = None,
+         language: str | None = None) -> Drawing:
+    """The cam's sheets (a path to its TOML file)."""
+    cam = load_cam(path)
+    spec = sheet_spec(cam.raw, cam.path, cam.title, format=format, orientation=orientation, language=language)
+    panels = build_panels(cam, spec)
+    sheets = compose(panels, spec, "", cam.path)
+    return Drawing(cam, spec, tuple(panels), tuple(sheets))
