@@ -9,7 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
-from plans.cams.analysis import Profile, grid, oscillating_rest, profile
+from plans.cams.analysis import Profile, grid, profile
 from plans.cams.base_radius import BaseRadius, division_points, min_base_radius
 from plans.cams.graphical import Integration, integral_scale, integrate_cam
 from plans.cams.model import Cam, load_cam
@@ -112,6 +112,7 @@ def motion_panel(cam: Cam, lang: str) -> Panel:
         else:
             rec.polyline(pts, MAIN, f"exact-{name}")
             steps: list[Pt] = []
+            assert mid is not None
             for i, m in enumerate(mid):
                 steps += [(float(nodes_x[i]), y0 - k * float(m)), (float(nodes_x[i + 1]), y0 - k * float(m))]
             rec.polyline(steps, HAIR, "mid-ordinates")
