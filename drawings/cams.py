@@ -16,7 +16,7 @@ from plans.cams.model import Cam, load_cam
 
 from .backend import HAIR, MAIN, THICK, THIN, Pt, Recording, Style
 from .common import arrow, dot, fmt
-from .panels import Panel, finish, ratio_text
+from .panels import STANDARD_RATIOS, Panel, finish, ratio_text
 from .sheet import Sheet, SheetSpec, compose, sheet_spec
 from .text import layout
 
@@ -26,7 +26,7 @@ REGION = Style(stroke=None, width=0.0, fill="#cfe3cf")
 WARN = Style(width=0.7, stroke="#c00000")
 SMALL = 2.5
 LABEL = 3.5
-PHI_LENGTH = 240.0  # mm for the whole turn on the motion diagrams
+PHI_LENGTH = 360.0  # mm for the whole turn on the motion diagrams of an A1 sheet (1 mm per degree)
 
 WORDS = {
     "motion": ("Диаграммы движения толкателя (графическое интегрирование)",
@@ -60,6 +60,32 @@ def nice(x: float) -> float:
     return 10 ** (e - 1) * 5
 
 
+def drawing_scale(size_m: float, target_mm: float) -> float:
+    """The largest standard drawing scale (GOST 2.302), paper mm per m, drawing ``size_m``
+    within ``target_mm``."""
+    for r in STANDARD_RATIOS:
+        if r * 1000.0 * size_m <= target_mm:
+            return r * 1000.0
+    return STANDARD_RATIOS[-1] * 1000.0
+
+
+def nice_up(x: float) -> float:
+    """The smallest 1, 2, 2.5, 5 × 10ⁿ not below x (x > 0)."""
+    e = math.floor(math.log10(x))
+    for m in (1.0, 2.0, 2.5, 5.0, 10.0):
+        if m * 10**e >= x * (1 - 1e-12):
+            return m * 10**e
+    return 10.0 ** (e + 1)
+
+
+def pole_distance(x: float) -> float:
+    """The shortest pole distance of the usual ones, not below x."""
+    for h in (10.0, 12.0, 15.0, 20.0, 25.0, 30.0, 40.0, 50.0, 60.0, 80.0, 100.0):
+        if h >= x:
+            return h
+    return nice_up(x)
+
+
 def _lift(cam: Cam) -> tuple[float, str]:
     """Factor from SI lift to the drawn unit, and its name."""
     if cam.follower == "oscillating":
@@ -72,7 +98,7 @@ def _text(rec: Recording, s: str, x: float, y: float, size: float = SMALL, ancho
     rec.text(layout(s, x, y, size, anchor, valign), "label", eid)
 
 
-def motion_panel(cam: Cam, lang: str) -> Panel:
+def motion_panel(cam: Cam, lang: str, g: float = 1.0) -> Panel:
     """s, ds/dφ and d²s/dφ² against φ: a(φ) exact, integrated twice by mid-ordinates and a
     pole (the chains, thick), the exact curves beside them (dashed)."""
     f, unit = _lift(cam)
@@ -81,27 +107,31 @@ def motion_panel(cam: Cam, lang: str) -> Panel:
     from plans.cams.analysis import motion
 
     mo = motion(cam, np.append(fine, 2 * np.pi))
-    x_of = PHI_LENGTH / (2 * math.pi)  # k_φ, mm per rad
+    length = PHI_LENGTH * g
+    x_of = length / (2 * math.pi)  # k_φ, mm per rad
     a_max = float(np.max(np.abs(mo.s2))) * f or 1.0
     v_max = float(np.max(np.abs(mo.s1))) * f or 1.0
     s_max = float(np.max(mo.s)) * f or 1.0
-    k_a = nice(22.0 / a_max)
-    H1 = max(5.0, nice(k_a * x_of * v_max / 22.0))
+    k_a = nice(32.0 * g / a_max)
+    # poles: the shortest usual H (10 mm at least) that keeps ds/dφ within 26 mm, s within 40 mm
+    H1 = pole_distance(k_a * x_of * v_max / (30.0 * g))
     k_v = integral_scale(k_a, x_of, H1)
-    H2 = max(5.0, nice(k_v * x_of * s_max / 40.0))
+    H2 = pole_distance(k_v * x_of * s_max / (50.0 * g))
     k_s = integral_scale(k_v, x_of, H2)
     rec = Recording()
+    y_v, y_a = 70.0 * g + 10, 145.0 * g + 20
     rows = [("s", k_s, mo.s * f, ig.s_nodes * f, None, 0.0),
-            ("ds/dφ", k_v, mo.s1 * f, ig.v_nodes * f, None, 60.0),
-            ("d²s/dφ²", k_a, mo.s2 * f, None, ig.a_mid * f, 120.0)]
+            ("ds/dφ", k_v, mo.s1 * f, ig.v_nodes * f, None, y_v),
+            ("d²s/dφ²", k_a, mo.s2 * f, None, ig.a_mid * f, y_a)]
     X = np.append(fine, 2 * np.pi) * x_of
     nodes_x = ig.nodes * x_of
     for name, k, exact, chain, mid, y0 in rows:
-        rec.line((-4, y0), (PHI_LENGTH + 6, y0), THIN, f"axis-{name}")
-        top = y0 - (k * float(np.max(exact)) if name == "s" else 26.0)
-        rec.line((0, y0 + (0 if name == "s" else 26.0)), (0, min(top, y0 - 26.0)), THIN)
-        _text(rec, name, 1.5, min(top, y0 - 26.0), LABEL, "start", "top")
-        _text(rec, "φ", PHI_LENGTH + 7, y0, LABEL)
+        rec.line((-4, y0), (length + 6, y0), THIN, f"axis-{name}")
+        half = 34.0 * g if name != "s" else 0.0
+        top = min(y0 - k * float(np.max(exact)) - 2, y0 - 34.0 * g)
+        rec.line((0, y0 + half), (0, top), THIN)
+        _text(rec, name, 1.5, top, LABEL, "start", "top")
+        _text(rec, "φ", length + 7, y0, LABEL)
         for xn in nodes_x:
             rec.line((xn, y0 - 0.8), (xn, y0 + 0.8), HAIR)
         pts = [(float(x), y0 - k * float(v)) for x, v in zip(X, exact, strict=True)]
@@ -116,29 +146,34 @@ def motion_panel(cam: Cam, lang: str) -> Panel:
             for i, m in enumerate(mid):
                 steps += [(float(nodes_x[i]), y0 - k * float(m)), (float(nodes_x[i + 1]), y0 - k * float(m))]
             rec.polyline(steps, HAIR, "mid-ordinates")
-        scale = f"k = {fmt(k, 4, lang)} mm/({unit}" + ("" if name == "s" else "/rad" if name == "ds/dφ"
-                                                       else "/rad²") + ")"
-        _text(rec, scale, PHI_LENGTH + 7, y0 - 6, SMALL)
+        sub, per, phys = {"s": ("s", unit, None), "ds/dφ": ("v", f"{unit}/rad", ("v", f"{unit}/s", 1)),
+                          "d²s/dφ²": ("a", f"{unit}/rad²", ("a", f"{unit}/s²", 2))}[name]
+        _text(rec, f"μ_{sub}′ = {fmt(k, 4, lang)} mm/({per})" if name != "s" else
+              f"μ_s = {fmt(k, 4, lang)} mm/{per}", length + 7, y0 - 7, SMALL)
+        if phys is not None:
+            # v = ω·ds/dφ, a = ω²·d²s/dφ²: the same curve read at μ′/ω and μ″/ω²
+            _text(rec, f"μ_{phys[0]} = {fmt(k / cam.omega ** phys[2], 4, lang)} mm/({phys[1]})",
+                  length + 7, y0 - 3.5, SMALL)
     # the poles and their rays: integrand's mid-ordinate projected on the axis, ray from P
-    for (k, mids, y0, H, tag) in ((k_a, ig.a_mid * f, 120.0, H1, "1"), (k_v, ig.v_mid * f, 60.0, H2, "2")):
+    for (k, mids, y0, H, tag) in ((k_a, ig.a_mid * f, y_a, H1, "1"), (k_v, ig.v_mid * f, y_v, H2, "2")):
         P = (-H, y0)
         dot(rec, P, 0.6, f"pole-{tag}")
-        _text(rec, f"P{tag}", P[0] - 1, P[1] + 2.5, SMALL, "end")
-        _text(rec, f"H{tag} = {fmt(H, 3, lang)}", P[0], P[1] - 3, SMALL)
+        _text(rec, f"P{tag}", P[0] - 1, P[1], SMALL, "end")
+        _text(rec, f"H{tag} = {fmt(H, 3, lang)} mm", P[0] - 1, P[1] + 3.5, SMALL, "end")
         for m in mids:
             rec.line(P, (0.0, y0 - k * float(m)), Style(width=0.13, stroke="#888"))
     # the phase boundaries and their angles
     for ph in cam.phases:
         xb = ph.start * x_of
-        rec.line((xb, -2), (xb, 146), Style(width=0.13, stroke="#888", dash=(1.0, 1.0)))
-        _text(rec, f"{math.degrees(ph.angle):g}°", xb + ph.angle * x_of / 2, 150, SMALL, "middle")
+        rec.line((xb, -2), (xb, y_a + 34 * g + 2), Style(width=0.13, stroke="#888", dash=(1.0, 1.0)))
+        _text(rec, f"{math.degrees(ph.angle):g}°", xb + ph.angle * x_of / 2, y_a + 34 * g + 5, SMALL, "middle")
     err = float(np.max(np.abs(ig.s_nodes - motion(cam, ig.nodes % (2 * np.pi)).s))) * f
     note = (f"k_φ = {fmt(x_of * math.pi / 180, 4, lang)} mm/°; k′ = k·k_φ/H; "
             f"graphical s within {fmt(err, 3, lang)} {unit} of exact; dashed: exact")
     return finish("motion", "cam-motion", None, rec, _w("motion", lang), note=note)
 
 
-def diagram_panel(cam: Cam, br: BaseRadius, lang: str) -> Panel:
+def diagram_panel(cam: Cam, br: BaseRadius, lang: str, g: float = 1.0) -> Panel:
     """D = (−k·ds/dφ, s) from B0 at one length scale, the rays at [α] tangent to the curve,
     the allowed region below them, the centres: minimum at the file's offset, the best, the
     file's own."""
@@ -152,7 +187,7 @@ def diagram_panel(cam: Cam, br: BaseRadius, lang: str) -> Panel:
     O_file = (-cam.offset, -s0)
     pts = np.vstack([np.c_[Xd, Yd], [O_file, br.centre, br.best_centre]])
     span = float(np.max(np.ptp(pts, axis=0)))
-    mu = nice(150.0 / span)  # paper mm per m
+    mu = drawing_scale(span, 200.0 * g)  # paper mm per m
     rec = Recording()
 
     def P(x: float, y: float) -> Pt:
@@ -174,12 +209,13 @@ def diagram_panel(cam: Cam, br: BaseRadius, lang: str) -> Panel:
         for j, sgn in enumerate((1, -1)):
             D = br.bounds.tangent[2 * i + j]
             # ray through D leaning by α: direction down-left (c1) or down-right (c2)
-            d = np.array([-sgn * t, -1.0])
-            L = (D[1] - ymin) / 1.0
+            d = (-sgn * t, -1.0)
+            L = min(D[1] - ymin, ((D[0] - xmin) if d[0] < 0 else (xmax - D[0])) / max(abs(d[0]), 1e-12))
             E = (D[0] + d[0] * L, D[1] + d[1] * L)
             rec.line(P(*D), P(*E), Style(width=0.35, stroke="#1f5fbf"), f"ray-{i}-{j}")
-        ang = math.degrees(math.atan(t))
-        _text(rec, f"[α] = {fmt(ang, 3, lang)}°", *P(xmax, ymin + (0.08 + 0.06 * i) * span), SMALL, "end")
+            dot(rec, P(*D), 0.5)
+            if j == 0:
+                _text(rec, f"{fmt(math.degrees(math.atan(t)), 3, lang)}°", *P(*E), SMALL, "start", "top")
     for name, c, st in (("O_min", br.centre, "#c00000"), ("O_best", br.best_centre, "#1f7f1f"),
                         ("O", O_file, "#000")):
         q = P(*c)
@@ -213,7 +249,7 @@ def _clip_region(br: BaseRadius, x0: float, x1: float, y0: float, y1: float) -> 
     return poly
 
 
-def profile_panel(cam: Cam, lang: str) -> Panel:
+def profile_panel(cam: Cam, lang: str, g: float = 1.0) -> Panel:
     """Inversion: the follower's positions at the division points turned by −φ, the
     theoretical profile through the roller centres, the roller circles and their envelope."""
     phi = np.append(grid(cam, 0.5), 2 * np.pi)
@@ -223,7 +259,7 @@ def profile_panel(cam: Cam, lang: str) -> Panel:
     reach = float(np.max(np.hypot(*pr.theoretical.T))) + cam.roller
     if cam.follower == "oscillating":
         reach = max(reach, cam.pivot + 0.15 * cam.arm)
-    mu = nice(140.0 / reach)  # paper mm per m
+    mu = drawing_scale(reach, 180.0 * g)  # paper mm per m
     rec = Recording()
 
     def P(v: np.ndarray | tuple[float, float]) -> Pt:
@@ -243,8 +279,8 @@ def profile_panel(cam: Cam, lang: str) -> Panel:
         B = pq.theoretical[i]
         if cam.follower == "translating":
             s0 = math.sqrt(r0**2 - cam.offset**2)
-            foot = R(np.array([cam.offset, 0.0]))
-            top = R(np.array([cam.offset, s0 + cam.h * 1.0 + 0.25 * r0]))
+            foot = R(np.array([cam.offset, s0 - 0.1 * r0]))
+            top = R(np.array([cam.offset, s0 + cam.h + cam.roller + 0.25 * r0]))
             rec.line(P(foot), P(top), Style(width=0.13, stroke="#777"), f"follower-{i}")
         else:
             A = R(np.array([cam.pivot, 0.0]))
@@ -253,8 +289,11 @@ def profile_panel(cam: Cam, lang: str) -> Panel:
         if cam.roller > 0:
             rec.circle(P(B), mu * cam.roller, Style(width=0.18, stroke="#555"), f"roller-{i}")
         dot(rec, P(B), 0.35)
-        lab = np.asarray(B) * (1 + 0.06 * 35 / max(mu * math.hypot(*B), 1.0) * 1.0) + 0.0
-        _text(rec, str(i), *P(lab * 1.0 + np.asarray(B) * 0.12), SMALL, "middle")
+        rb = math.hypot(*B)
+        lab = np.asarray(B) * (rb + cam.roller + 2.5 / mu) / rb  # just outside the roller circle
+        _text(rec, str(i), *P(lab), SMALL, "middle")
+    if cam.follower == "translating" and abs(cam.offset) > 0:
+        rec.circle((0, 0), mu * abs(cam.offset), HAIR, "offset-circle")
     if cam.follower == "oscillating":
         rec.circle((0, 0), mu * cam.pivot, Style(width=0.13, stroke="#777", dash=(3.0, 1.5)), "pivot-circle")
     rec.polyline([P(p) for p in pr.theoretical], Style(width=0.35, stroke="#1f5fbf", dash=(6.0, 1.0, 1.0, 1.0)),
@@ -266,6 +305,16 @@ def profile_panel(cam: Cam, lang: str) -> Panel:
     if np.any(bad):
         for j in np.flatnonzero(bad):
             rec.circle(P(pr.actual[j]), 0.5, Style(stroke=None, width=0, fill="#c00000"), f"undercut-{j}")
+    # the phase angles, laid off from the start of the rise against ω as the follower turns
+    outer = float(np.max(np.hypot(*pr.theoretical.T))) + cam.roller + 6.0 / mu
+    a0 = math.atan2(float(pr.theoretical[0, 1]), float(pr.theoretical[0, 0]))
+    for i, ph in enumerate(cam.phases):
+        a = a0 - k * ph.start
+        rec.line((0, 0), P((outer * math.cos(a), outer * math.sin(a))),
+                 Style(width=0.13, stroke="#888", dash=(1.0, 1.0)), f"phase-{i}")
+        m = a0 - k * (ph.start + ph.angle / 2)
+        _text(rec, f"{math.degrees(ph.angle):g}°", *P((outer * math.cos(m), outer * math.sin(m))), SMALL,
+              "middle")
     dot(rec, (0, 0), 0.7, "cam-centre")
     _text(rec, "O", 1.5, 2.0, LABEL, "start", "top")
     # the sense of rotation
@@ -288,9 +337,11 @@ def results_panel(cam: Cam, br: BaseRadius, drawn: BaseRadius | None, lang: str)
     fi = findings(cam)
     L = cam.scale
     u = cam.unit
+    where = (f"arm = {fmt(cam.arm / L, 4, lang)} {u}, pivot at {fmt(cam.pivot / L, 4, lang)} {u}"
+             if cam.follower == "oscillating" else f"e = {fmt(cam.offset / L, 4, lang)} {u}")
+    tip = "flat face" if cam.flat else f"r_roller = {fmt(cam.roller / L, 4, lang)} {u}"
     lines = [
-        f"r0 = {fmt(cam.base_radius / L, 4, lang)} {u}, e = {fmt(cam.offset / L, 4, lang)} {u}, "
-        f"r_roller = {fmt(cam.roller / L, 4, lang)} {u}",
+        f"r0 = {fmt(cam.base_radius / L, 4, lang)} {u}, {where}, {tip}",
         f"α max: rise {fmt(math.degrees(fi.max_pressure_rise), 4, lang)}° ([α] = "
         f"{fmt(math.degrees(cam.alpha_rise), 3, lang)}°), return {fmt(math.degrees(fi.max_pressure_return), 4, lang)}°"
         f" ([α] = {fmt(math.degrees(cam.alpha_return), 3, lang)}°)",
@@ -316,11 +367,13 @@ def results_panel(cam: Cam, br: BaseRadius, drawn: BaseRadius | None, lang: str)
 
 def build_panels(cam: Cam, spec: SheetSpec) -> list[Panel]:
     lang = spec.language
+    W, H = spec.size
+    g = min(W / 841.0, H / 594.0)
     br = min_base_radius(cam, True)
     drawn = min_base_radius(cam, False) if br.bounds is not None else None
-    panels = [profile_panel(cam, lang), motion_panel(cam, lang)]
+    panels = [profile_panel(cam, lang, g), motion_panel(cam, lang, g)]
     if br.bounds is not None:
-        panels.append(diagram_panel(cam, br, lang))
+        panels.append(diagram_panel(cam, br, lang, g))
     panels.append(results_panel(cam, br, drawn, lang))
     return panels
 

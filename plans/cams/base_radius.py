@@ -24,8 +24,10 @@ import numpy as np
 from .analysis import FINE_STEP_DEG, grid, motion, profile
 from .model import Cam
 
-#: Division points per phase in the drawn diagram (the graphical construction).
+#: Equal parts of a phase in the drawn diagrams (the graphical constructions): 8, or 12 for a
+#: phase longer than 90°.
 DIVISIONS = 8
+DIVISIONS_LONG = 12
 
 
 @dataclass(frozen=True, slots=True)
@@ -143,7 +145,7 @@ def nearest_centre(b: Bounds) -> tuple[float, float]:
 
 def min_base_radius(cam: Cam, exact: bool = True) -> BaseRadius:
     """Exact (each ray's tangent point refined on the law) or graphical (the curve only at
-    the division points, ``DIVISIONS`` per phase, as drawn)."""
+    the division points, as drawn)."""
     if cam.follower == "oscillating":
         r = _oscillating(cam)
         return BaseRadius(r, (0.0, 0.0), r, None, (0.0, 0.0), None)
@@ -162,10 +164,10 @@ def min_base_radius(cam: Cam, exact: bool = True) -> BaseRadius:
 
 def division_points(cam: Cam) -> np.ndarray:
     """The draftsman's points: every phase that moves the follower divided into
-    ``DIVISIONS`` equal parts, ends included."""
+    ``DIVISIONS`` equal parts (``DIVISIONS_LONG`` beyond 90°), ends included."""
     pts: list[float] = []
     for ph in cam.phases:
-        n = DIVISIONS if ph.kind != "dwell" else 1
+        n = 1 if ph.kind == "dwell" else DIVISIONS if ph.angle <= math.pi / 2 + 1e-12 else DIVISIONS_LONG
         pts.extend(ph.start + ph.angle * np.arange(n + 1) / n)
     arr = np.unique(np.round(np.array(pts), 12))
     return arr[arr < 2 * math.pi - 1e-12]

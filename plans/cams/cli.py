@@ -42,6 +42,7 @@ def results(cam: Cam) -> dict[str, Any]:
     L = cam.scale
     osc = cam.follower == "oscillating"
     lift = (180 / math.pi) if osc else 1 / L  # s in degrees or in the file's unit
+    rate = 1.0 if osc else 1 / L  # the arm's ω and ε in rad/s, rad/s²
     fi = findings(cam)
     exact = min_base_radius(cam, True)
     drawn = min_base_radius(cam, False) if exact.bounds is not None else None
@@ -50,8 +51,8 @@ def results(cam: Cam) -> dict[str, Any]:
         "s": _arr(mo.s * lift),
         "ds_dphi": _arr(mo.s1 * lift),
         "d2s_dphi2": _arr(mo.s2 * lift),
-        "v": _arr(mo.s1 * lift * cam.omega),
-        "a": _arr(mo.s2 * lift * cam.omega**2),
+        "v": _arr(mo.s1 * rate * cam.omega),
+        "a": _arr(mo.s2 * rate * cam.omega**2),
         "pressure_angle_deg": _arr(np.degrees(pr.pressure_angle)),
         "curvature": _arr(pr.curvature * L),
         "profile": {"theoretical": [[_r(x / L), _r(y / L)] for x, y in pr.theoretical],
