@@ -34,6 +34,8 @@ WORDS = {
     "diagram": ("Диаграмма ds/dφ – s: углы давления, область центров",
                 "The ds/dφ – s diagram: pressure angles, region of centres"),
     "profile": ("Профиль кулачка (метод обращения)", "Cam profile by inversion"),
+    "rocker": ("Область центров кулачка по углам давления (коромысло)",
+               "Region of cam centres from the pressure angles (rocker)"),
     "results": ("Результаты", "Results"),
 }
 
@@ -228,6 +230,50 @@ def diagram_panel(cam: Cam, br: BaseRadius, lang: str, g: float = 1.0) -> Panel:
     return finish("ds-s", "cam-diagram", None, rec, _w("diagram", lang), note=note)
 
 
+def rocker_panel(cam: Cam, br: BaseRadius, lang: str, g: float = 1.0) -> Panel:
+    """The oscillating follower's diagram: pivot A, the arm positions A–B at the division
+    points, D on each arm at (1 − r)·AB, the wedges' region of allowed centres, the circle of
+    the file's pivot distance and the centres on it."""
+    from plans.cams.rocker import diagram, region
+
+    q = division_points(cam)
+    d = diagram(cam, q)
+    fine = diagram(cam, grid(cam, 0.5))
+    pts = np.vstack([d.B, fine.D, [d.A, (0.0, 0.0), br.centre, br.best_centre]])
+    x0, y0 = pts.min(axis=0)
+    x1, y1 = pts.max(axis=0)
+    span = max(x1 - x0, y1 - y0)
+    box = (x0 - 0.3 * span, y0 - 0.3 * span, x1 + 0.1 * span, y1 + 0.1 * span)
+    mu = drawing_scale(span * 1.4, 200.0 * g)
+    rec = Recording()
+
+    def P(v) -> Pt:
+        return (mu * float(v[0]), -mu * float(v[1]))
+
+    poly = region(cam, grid(cam, 0.5), box)
+    if len(poly) >= 3:
+        rec.polygon([P(v) for v in poly], REGION, "allowed-region")
+    # the arc of the file's pivot distance about A, where O may sit
+    a_o = math.atan2(-d.A[1], -d.A[0])
+    arc = [P((d.A[0] + cam.pivot * math.cos(a_o + t), d.A[1] + cam.pivot * math.sin(a_o + t)))
+           for t in np.linspace(-0.6, 0.6, 121)]
+    rec.polyline(arc, Style(width=0.18, stroke="#333", dash=(3.0, 1.5)), "pivot-arc")
+    for i in range(len(q)):
+        rec.line(P(d.A), P(d.B[i]), Style(width=0.18, stroke="#555"), f"arm-{i}")
+        rec.line(P(d.B[i]), P(d.D[i]), Style(width=0.35, stroke="#1f5fbf"), f"BD-{i}")
+        dot(rec, P(d.B[i]), 0.35)
+    rec.polyline([P(v) for v in fine.D], MAIN, "D-curve")
+    dot(rec, P(d.A), 0.7, "pivot")
+    _text(rec, "A", *P(d.A), LABEL, "start", "top")
+    _text(rec, "B0", *P(d.B[0]), LABEL, "end", "bottom")
+    for name, c, st in (("O_min", br.centre, "#c00000"), ("O_best", br.best_centre, "#1f7f1f"),
+                        ("O", (0.0, 0.0), "#000")):
+        rec.circle(P(c), 0.8, Style(stroke=None, width=0, fill=st), f"centre-{name}")
+        _text(rec, name, P(c)[0] + 1.5, P(c)[1] + 1.5, LABEL, "start", "top")
+    note = f"{ratio_text(mu)}; AD = (1 − r)·AB, r = ω_arm/ω_cam; ∠(OD, ⟂AB) = α"
+    return finish("rocker", "cam-diagram", None, rec, _w("rocker", lang), note=note)
+
+
 def _clip_region(br: BaseRadius, x0: float, x1: float, y0: float, y1: float) -> list[tuple[float, float]]:
     """The allowed region within a box, by clipping the box polygon with each half-plane."""
     assert br.bounds is not None
@@ -351,6 +397,9 @@ def results_panel(cam: Cam, br: BaseRadius, drawn: BaseRadius | None, lang: str)
     if br.best_offset is not None and cam.follower == "translating" and not cam.flat:
         lines.append(f"best: r0 = {fmt(br.best_base_radius / L, 5, lang)} {u} at e = "
                      f"{fmt(br.best_offset / L, 4, lang)} {u}")
+    if br.best_pivot is not None:
+        lines.append(f"best: r0 = {fmt(br.best_base_radius / L, 5, lang)} {u} with the pivot at "
+                     f"{fmt(br.best_pivot / L, 4, lang)} {u}")
     lines.append(f"ρ min (convex, theoretical) = {fmt(fi.min_curvature_radius / L, 4, lang)} {u}")
     if fi.undercut:
         for c in fi.undercut:
@@ -370,10 +419,12 @@ def build_panels(cam: Cam, spec: SheetSpec) -> list[Panel]:
     W, H = spec.size
     g = min(W / 841.0, H / 594.0)
     br = min_base_radius(cam, True)
-    drawn = min_base_radius(cam, False) if br.bounds is not None else None
+    drawn = None if cam.flat else min_base_radius(cam, False)
     panels = [profile_panel(cam, lang, g), motion_panel(cam, lang, g)]
     if br.bounds is not None:
         panels.append(diagram_panel(cam, br, lang, g))
+    elif cam.follower == "oscillating":
+        panels.append(rocker_panel(cam, br, lang, g))
     panels.append(results_panel(cam, br, drawn, lang))
     return panels
 

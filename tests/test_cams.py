@@ -364,3 +364,32 @@ def test_flat_face_translating():
     # and it is the envelope: every face line supports the whole profile (no line cuts it)
     support = pr.theoretical @ n.T  # support[i, j]: point i projected on face j's normal
     assert np.all(support <= (cam.base_radius + pr.motion.s)[None, :] + 1e-12)
+
+
+def test_rocker_diagram_reads_the_pressure_angle_and_the_base_radius():
+    """D = A + (1 − r)(B − A): the angle of OD with the arm's normal is the pressure angle found
+    from the profile's tangent; the centres' region on the pivot circle gives the base radius
+    the bisection on the largest pressure angle finds."""
+    from plans.cams.rocker import diagram, points
+
+    cam = load_cam(OSC)
+    phi = grid(cam, 1.0)
+    _, D, n, _ = points(cam, phi)
+    u = np.stack([n[:, 1], -n[:, 0]], 1)
+    od = -D  # O at the origin
+    ang = np.arctan2(np.abs(np.sum(od * u, 1)), np.sum(od * n, 1))
+    assert np.allclose(ang, profile(cam, phi).pressure_angle, atol=1e-12)
+    d = diagram(cam, grid(cam, 0.25))
+    assert d.min_base_radius == pytest.approx(min_base_radius(cam).min_base_radius, rel=1e-5)
+    best = replace(cam, base_radius=d.best_base_radius, pivot=d.best_pivot)
+    fb = findings(best)
+    worst = max(math.degrees(fb.max_pressure_rise) - 45, math.degrees(fb.max_pressure_return) - 70)
+    assert worst == pytest.approx(0.0, abs=0.05)
+
+
+def test_cli_json_to_stdout(capsys):
+    code, cap = _cli(["cam", str(OSC), "--json", "-"], capsys)
+    assert code == 0
+    d = json.loads(cap.out)
+    assert d["follower"] == "oscillating" and max(d["s"]) == pytest.approx(20.0)
+    assert max(d["v"]) == pytest.approx(4.18879, abs=1e-4)  # 2·ψ/Φ·ω of the cycloid, rad/s

@@ -51,6 +51,7 @@ class BaseRadius:
     best_offset: float | None
     best_centre: tuple[float, float]
     bounds: Bounds | None
+    best_pivot: float | None = None  # oscillating: the pivot distance of the best centre
 
 
 def diagram_points(cam: Cam, phi: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -147,8 +148,15 @@ def min_base_radius(cam: Cam, exact: bool = True) -> BaseRadius:
     """Exact (each ray's tangent point refined on the law) or graphical (the curve only at
     the division points, as drawn)."""
     if cam.follower == "oscillating":
-        r = _oscillating(cam)
-        return BaseRadius(r, (0.0, 0.0), r, None, (0.0, 0.0), None)
+        from .rocker import diagram
+
+        if exact:
+            d = diagram(cam, grid(cam, 0.5))
+            r = _oscillating(cam)
+        else:
+            d = diagram(cam, division_points(cam))
+            r = d.min_base_radius
+        return BaseRadius(r, d.centre, d.best_base_radius, None, d.best_centre, None, d.best_pivot)
     if cam.flat:
         # A flat face keeps the pressure angle at 0; the base radius is bound by convexity:
         # ρ = r0 + s + s″ > 0.

@@ -45,7 +45,7 @@ def results(cam: Cam) -> dict[str, Any]:
     rate = 1.0 if osc else 1 / L  # the arm's ω and ε in rad/s, rad/s²
     fi = findings(cam)
     exact = min_base_radius(cam, True)
-    drawn = min_base_radius(cam, False) if exact.bounds is not None else None
+    drawn = None if cam.flat else min_base_radius(cam, False)
     out: dict[str, Any] = {
         "phi_deg": _arr(np.degrees(phi), 6),
         "s": _arr(mo.s * lift),
@@ -61,6 +61,7 @@ def results(cam: Cam) -> dict[str, Any]:
         "min_base_radius_graphical": None if drawn is None else _r(drawn.min_base_radius / L),
         "best_base_radius": _r(exact.best_base_radius / L),
         "best_offset": None if exact.best_offset is None else _r(exact.best_offset / L),
+        "best_pivot": None if exact.best_pivot is None else _r(exact.best_pivot / L),
         "min_curvature_radius": _r(fi.min_curvature_radius / L),
         "max_pressure_angle_rise_deg": _r(math.degrees(fi.max_pressure_rise)),
         "max_pressure_angle_return_deg": _r(math.degrees(fi.max_pressure_return)),
@@ -96,6 +97,9 @@ def summary(cam: Cam, res: dict[str, Any]) -> str:
         if res["best_offset"] is not None:
             lines.append(f"  with the offset chosen: base radius {res['best_base_radius']:.4f} {u} "
                          f"at offset {res['best_offset']:.4f} {u}")
+        if res["best_pivot"] is not None:
+            lines.append(f"  with the pivot moved: base radius {res['best_base_radius']:.4f} {u} "
+                         f"at pivot distance {res['best_pivot']:.4f} {u}")
     lines.append(f"  smallest convex radius of curvature: {res['min_curvature_radius']:.4f} {u}")
     if res["undercut"]:
         for c in res["undercut"]:
