@@ -187,6 +187,7 @@ def diagram_panel(cam: Cam, br: BaseRadius, lang: str, g: float = 1.0) -> Panel:
     Xd, Yd = -cam.sense * mo.s1, mo.s
     s0 = math.sqrt(cam.base_radius**2 - cam.offset**2)
     O_file = (-cam.offset, -s0)
+    assert br.centre is not None  # a translating follower always has one
     pts = np.vstack([np.c_[Xd, Yd], [O_file, br.centre, br.best_centre]])
     span = float(np.max(np.ptp(pts, axis=0)))
     mu = drawing_scale(span, 200.0 * g)  # paper mm per m
@@ -239,7 +240,8 @@ def rocker_panel(cam: Cam, br: BaseRadius, lang: str, g: float = 1.0) -> Panel:
     q = division_points(cam)
     d = diagram(cam, q)
     fine = diagram(cam, grid(cam, 0.5))
-    pts = np.vstack([d.B, fine.D, [d.A, (0.0, 0.0), br.centre, br.best_centre]])
+    centres = [(0.0, 0.0), br.best_centre] + ([br.centre] if br.centre is not None else [])
+    pts = np.vstack([d.B, fine.D, [d.A, *centres]])
     x0, y0 = pts.min(axis=0)
     x1, y1 = pts.max(axis=0)
     span = max(x1 - x0, y1 - y0)
@@ -268,6 +270,8 @@ def rocker_panel(cam: Cam, br: BaseRadius, lang: str, g: float = 1.0) -> Panel:
     _text(rec, "B0", *P(d.B[0]), LABEL, "end", "bottom")
     for name, c, st in (("O_min", br.centre, "#c00000"), ("O_best", br.best_centre, "#1f7f1f"),
                         ("O", (0.0, 0.0), "#000")):
+        if c is None:
+            continue
         rec.circle(P(c), 0.8, Style(stroke=None, width=0, fill=st), f"centre-{name}")
         _text(rec, name, P(c)[0] + 1.5, P(c)[1] + 1.5, LABEL, "start", "top")
     note = f"{ratio_text(mu)}; AD = (1 − r)·AB, r = ω_arm/ω_cam; ∠(OD, ⟂AB) = α"
@@ -391,8 +395,10 @@ def results_panel(cam: Cam, br: BaseRadius, drawn: BaseRadius | None, lang: str)
         f"α max: rise {fmt(math.degrees(fi.max_pressure_rise), 4, lang)}° ([α] = "
         f"{fmt(math.degrees(cam.alpha_rise), 3, lang)}°), return {fmt(math.degrees(fi.max_pressure_return), 4, lang)}°"
         f" ([α] = {fmt(math.degrees(cam.alpha_return), 3, lang)}°)",
-        f"r0 min = {fmt(br.min_base_radius / L, 5, lang)} {u} (exact)"
-        + ("" if drawn is None else f", {fmt(drawn.min_base_radius / L, 5, lang)} {u} (diagram)"),
+        ("r0 min: none with this arm and pivot" if br.min_base_radius is None else
+         f"r0 min = {fmt(br.min_base_radius / L, 5, lang)} {u} (exact)"
+         + ("" if drawn is None or drawn.min_base_radius is None
+            else f", {fmt(drawn.min_base_radius / L, 5, lang)} {u} (diagram)")),
     ]
     if br.best_offset is not None and cam.follower == "translating" and not cam.flat:
         lines.append(f"best: r0 = {fmt(br.best_base_radius / L, 5, lang)} {u} at e = "

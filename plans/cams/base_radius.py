@@ -43,10 +43,12 @@ class Bounds:
 @dataclass(frozen=True, slots=True)
 class BaseRadius:
     """Minimum base radius (m) at the file's offset; the best pair (r0, e) of any offset;
-    the cam centre O for each in the diagram's frame (B0 at origin)."""
+    the cam centre O for each in the diagram's frame (B0 at origin; an oscillating follower:
+    the fixed frame).  ``min_base_radius`` is None when no base radius keeps the pressure
+    angle within the permissible (an oscillating follower with this arm and pivot)."""
 
-    min_base_radius: float
-    centre: tuple[float, float]
+    min_base_radius: float | None
+    centre: tuple[float, float] | None
     best_base_radius: float
     best_offset: float | None
     best_centre: tuple[float, float]
@@ -189,29 +191,24 @@ def _max_alpha_excess(cam: Cam, r0: float, phi: np.ndarray) -> float:
     return float(np.max(pr.pressure_angle - lim))
 
 
-def _oscillating(cam: Cam) -> float:
+def _oscillating(cam: Cam) -> float | None:
     """Smallest r0 (pivot and arm kept) with every pressure angle within the permissible:
-    scan r0 across the range where the roller reaches the base circle, then bisect."""
+    scan r0 across the range where the roller reaches the base circle (on a 1° grid of φ),
+    then bisect on the fine grid; None when no r0 of the range will do."""
     a, l = cam.pivot, cam.arm
     lo_lim, hi_lim = abs(a - l) * (1 + 1e-9) + 1e-12, (a + l) * (1 - 1e-9)
-    phi = grid(cam, 0.25)
-    rs = np.linspace(lo_lim, hi_lim, 200)[1:-1]
-    prev = None
-    for r in rs:
-        try:
-            ok = _max_alpha_excess(cam, float(r), phi) <= 0
-        except (ValueError, FloatingPointError):
-            ok = False
-        if ok:
-            if prev is None:
-                return float(r)
+    coarse, fine = grid(cam, 1.0), grid(cam, FINE_STEP_DEG)
+    rs = np.linspace(lo_lim, hi_lim, 201)
+    prev = lo_lim
+    for r in rs[1:-1]:
+        if _max_alpha_excess(cam, float(r), coarse) <= 0 and _max_alpha_excess(cam, float(r), fine) <= 0:
             lo, hi = prev, float(r)
-            for _ in range(60):
+            for _ in range(50):
                 mid = (lo + hi) / 2
-                if _max_alpha_excess(cam, mid, phi) <= 0:
+                if _max_alpha_excess(cam, mid, fine) <= 0:
                     hi = mid
                 else:
                     lo = mid
             return hi
         prev = float(r)
-    return cam.base_radius
+    return None

@@ -29,6 +29,10 @@ def _r(v: float, nd: int = 9) -> float:
     return 0.0 if x == 0 else x
 
 
+def _opt(v: float | None, L: float) -> float | None:
+    return None if v is None else _r(v / L)
+
+
 def _arr(a: np.ndarray, nd: int = 9) -> list[float]:
     return [_r(x, nd) for x in a]
 
@@ -57,8 +61,8 @@ def results(cam: Cam) -> dict[str, Any]:
         "curvature": _arr(pr.curvature * L),
         "profile": {"theoretical": [[_r(x / L), _r(y / L)] for x, y in pr.theoretical],
                     "actual": [[_r(x / L), _r(y / L)] for x, y in pr.actual]},
-        "min_base_radius": _r(exact.min_base_radius / L),
-        "min_base_radius_graphical": None if drawn is None else _r(drawn.min_base_radius / L),
+        "min_base_radius": _opt(exact.min_base_radius, L),
+        "min_base_radius_graphical": None if drawn is None else _opt(drawn.min_base_radius, L),
         "best_base_radius": _r(exact.best_base_radius / L),
         "best_offset": None if exact.best_offset is None else _r(exact.best_offset / L),
         "best_pivot": None if exact.best_pivot is None else _r(exact.best_pivot / L),
@@ -90,7 +94,11 @@ def summary(cam: Cam, res: dict[str, Any]) -> str:
         lines.append(f"  minimum base radius (convex profile): {res['min_base_radius']:.4f} {u}")
     else:
         where = "" if osc else f" at offset {cam.offset / cam.scale:g} {u}"
-        line = f"  minimum base radius{where}: {res['min_base_radius']:.4f} {u} exactly"
+        if res["min_base_radius"] is None:
+            line = (f"  NO BASE RADIUS keeps the pressure angle within the permissible with this arm "
+                    f"and pivot")
+        else:
+            line = f"  minimum base radius{where}: {res['min_base_radius']:.4f} {u} exactly"
         if res["min_base_radius_graphical"] is not None:
             line += f", {res['min_base_radius_graphical']:.4f} {u} from the diagram's division points"
         lines.append(line)
@@ -109,8 +117,9 @@ def summary(cam: Cam, res: dict[str, Any]) -> str:
             lines.append(f"  UNDERCUT at phi {c['from_deg']:g}..{c['to_deg']:g} deg: {what}")
     else:
         lines.append("  no undercut")
-    if res["max_pressure_angle_rise_deg"] > math.degrees(cam.alpha_rise) + 1e-9 or \
-            res["max_pressure_angle_return_deg"] > math.degrees(cam.alpha_return) + 1e-9:
+    if res["min_base_radius"] is not None and (
+            res["max_pressure_angle_rise_deg"] > math.degrees(cam.alpha_rise) + 1e-9
+            or res["max_pressure_angle_return_deg"] > math.degrees(cam.alpha_return) + 1e-9):
         lines.append("  PRESSURE ANGLE above the permissible: raise the base radius to at least "
                      f"{res['min_base_radius']:.4f} {u}")
     return "\n".join(lines)

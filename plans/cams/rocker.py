@@ -33,8 +33,8 @@ class RockerDiagram:
     B: np.ndarray
     D: np.ndarray
     region: list[tuple[float, float]]
-    min_base_radius: float
-    centre: tuple[float, float]
+    min_base_radius: float | None  # None: the pivot circle misses the region
+    centre: tuple[float, float] | None
     best_base_radius: float
     best_pivot: float
     best_centre: tuple[float, float]
@@ -97,12 +97,12 @@ def diagram(cam: Cam, phi: np.ndarray) -> RockerDiagram:
     poly = region(cam, phi, box)
     B0 = shapely.Point(*B[0])
     if len(poly) < 3:
-        return RockerDiagram(A, B, D, [], 0.0, (0.0, 0.0), 0.0, 0.0, (0.0, 0.0))
+        return RockerDiagram(A, B, D, [], None, None, 0.0, 0.0, (0.0, 0.0))
     shape = shapely.Polygon(poly)
     circle = shapely.Point(*A).buffer(cam.pivot, quad_segs=2048).exterior
     on = shape.intersection(circle)
-    centre = (0.0, 0.0)
-    r_min = 0.0
+    centre: tuple[float, float] | None = None
+    r_min: float | None = None
     if not on.is_empty:
         near = nearest_points(on, B0)[0]
         centre = (near.x, near.y)
