@@ -95,8 +95,8 @@ def summary(cam: Cam, res: dict[str, Any]) -> str:
     else:
         where = "" if osc else f" at offset {cam.offset / cam.scale:g} {u}"
         if res["min_base_radius"] is None:
-            line = (f"  NO BASE RADIUS keeps the pressure angle within the permissible with this arm "
-                    f"and pivot")
+            line = ("  NO BASE RADIUS keeps the pressure angle within the permissible with this arm "
+                    "and pivot")
         else:
             line = f"  minimum base radius{where}: {res['min_base_radius']:.4f} {u} exactly"
         if res["min_base_radius_graphical"] is not None:
