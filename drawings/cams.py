@@ -88,6 +88,10 @@ def pole_distance(x: float) -> float:
     return nice_up(x)
 
 
+def _unit(unit: str, lang: str) -> str:
+    return {"mm": "мм", "cm": "см", "m": "м"}.get(unit, unit) if lang == "ru" else unit
+
+
 def _lift(cam: Cam) -> tuple[float, str]:
     """Factor from SI lift to the drawn unit, and its name."""
     if cam.follower == "oscillating":
@@ -148,20 +152,22 @@ def motion_panel(cam: Cam, lang: str, g: float = 1.0) -> Panel:
             for i, m in enumerate(mid):
                 steps += [(float(nodes_x[i]), y0 - k * float(m)), (float(nodes_x[i + 1]), y0 - k * float(m))]
             rec.polyline(steps, HAIR, "mid-ordinates")
-        sub, per, phys = {"s": ("s", unit, None), "ds/dφ": ("v", f"{unit}/rad", ("v", f"{unit}/s", 1)),
-                          "d²s/dφ²": ("a", f"{unit}/rad²", ("a", f"{unit}/s²", 2))}[name]
-        _text(rec, f"μ_{sub}′ = {fmt(k, 4, lang)} mm/({per})" if name != "s" else
-              f"μ_s = {fmt(k, 4, lang)} mm/{per}", length + 7, y0 - 7, SMALL)
+        U, mm = _unit(unit, lang), _unit("mm", lang)
+        rad, sec = ("рад", "с") if lang == "ru" else ("rad", "s")
+        sub, per, phys = {"s": ("s", U, None), "ds/dφ": ("v", f"{U}/{rad}", ("v", f"{U}/{sec}", 1)),
+                          "d²s/dφ²": ("a", f"{U}/{rad}²", ("a", f"{U}/{sec}²", 2))}[name]
+        _text(rec, f"μ_{sub}′ = {fmt(k, 4, lang)} {mm}/({per})" if name != "s" else
+              f"μ_s = {fmt(k, 4, lang)} {mm}/{per}", length + 7, y0 - 7, SMALL)
         if phys is not None:
             # v = ω·ds/dφ, a = ω²·d²s/dφ²: the same curve read at μ′/ω and μ″/ω²
-            _text(rec, f"μ_{phys[0]} = {fmt(k / cam.omega ** phys[2], 4, lang)} mm/({phys[1]})",
+            _text(rec, f"μ_{phys[0]} = {fmt(k / cam.omega ** phys[2], 4, lang)} {mm}/({phys[1]})",
                   length + 7, y0 - 3.5, SMALL)
     # the poles and their rays: integrand's mid-ordinate projected on the axis, ray from P
     for (k, mids, y0, H, tag) in ((k_a, ig.a_mid * f, y_a, H1, "1"), (k_v, ig.v_mid * f, y_v, H2, "2")):
         P = (-H, y0)
         dot(rec, P, 0.6, f"pole-{tag}")
         _text(rec, f"P{tag}", P[0] - 1, P[1], SMALL, "end")
-        _text(rec, f"H{tag} = {fmt(H, 3, lang)} mm", P[0] - 1, P[1] + 3.5, SMALL, "end")
+        _text(rec, f"H{tag} = {fmt(H, 3, lang)} {_unit('mm', lang)}", P[0] - 1, P[1] + 3.5, SMALL, "end")
         for m in mids:
             rec.line(P, (0.0, y0 - k * float(m)), Style(width=0.13, stroke="#888"))
     # the phase boundaries and their angles
@@ -170,8 +176,12 @@ def motion_panel(cam: Cam, lang: str, g: float = 1.0) -> Panel:
         rec.line((xb, -2), (xb, y_a + 34 * g + 2), Style(width=0.13, stroke="#888", dash=(1.0, 1.0)))
         _text(rec, f"{math.degrees(ph.angle):g}°", xb + ph.angle * x_of / 2, y_a + 34 * g + 5, SMALL, "middle")
     err = float(np.max(np.abs(ig.s_nodes - motion(cam, ig.nodes % (2 * np.pi)).s))) * f
-    note = (f"k_φ = {fmt(x_of * math.pi / 180, 4, lang)} mm/°; k′ = k·k_φ/H; "
-            f"graphical s within {fmt(err, 3, lang)} {unit} of exact; dashed: exact")
+    if lang == "ru":
+        note = (f"μ_φ = {fmt(x_of * math.pi / 180, 4, lang)} мм/°; μ′ = μ·μ_φ/H; графическое s отличается "
+                f"от точного не более чем на {fmt(err, 3, lang)} {_unit(unit, lang)}; штрих: точные кривые")
+    else:
+        note = (f"μ_φ = {fmt(x_of * math.pi / 180, 4, lang)} mm/°; μ′ = μ·μ_φ/H; graphical s within "
+                f"{fmt(err, 3, lang)} {unit} of exact; dashed: exact")
     return finish("motion", "cam-motion", None, rec, _w("motion", lang), note=note)
 
 
@@ -227,7 +237,7 @@ def diagram_panel(cam: Cam, br: BaseRadius, lang: str, g: float = 1.0) -> Panel:
     _text(rec, "B0", *P(0, 0), LABEL, "end", "bottom")
     _text(rec, "s", *P(0, float(np.max(Yd)) * 1.1), LABEL, "start", "bottom")
     _text(rec, "ds/dφ", *P(xmax, 0), SMALL, "end", "bottom")
-    note = f"μ_l = {fmt(mu / 1000 * cam.scale * 1000, 4, lang)} mm/{cam.unit} ({ratio_text(mu)})"
+    note = f"μ_l = {fmt(mu * cam.scale, 4, lang)} {_unit('mm', lang)}/{_unit(cam.unit, lang)} ({ratio_text(mu)})"
     return finish("ds-s", "cam-diagram", None, rec, _w("diagram", lang), note=note)
 
 
@@ -376,47 +386,68 @@ def profile_panel(cam: Cam, lang: str, g: float = 1.0) -> Panel:
     arrow(rec, (p1[0] + (p1[1]) * 0.15 * k, p1[1] - p1[0] * 0.15 * k), p1, THIN, "omega", "omega")
     _text(rec, "ω", p0[0] + 1.5, p0[1], LABEL)
     _ = p0
-    note = (f"{ratio_text(mu)}; {len(q)} positions turned by −φ against ω; dash-dot: theoretical "
-            "profile, thick: actual profile (envelope of the roller circles)")
-    return finish("profile", "cam-profile", None, rec, _w("profile", lang), note=note)
+    if lang == "ru":
+        note = (f"{ratio_text(mu)}; {len(q)} положений толкателя, повёрнутых на −φ против ω; штрихпунктир: "
+                "теоретический профиль, основная линия: действительный (огибающая роликов)")
+    else:
+        note = (f"{ratio_text(mu)}; {len(q)} positions turned by −φ against ω; dash-dot: theoretical "
+                "profile, thick: actual profile (envelope of the roller circles)")
+    return finish("profile", "cam-profile", None, rec, _w("profile", lang), note=note, quantity="length",
+                  scale=mu)
 
 
 def results_panel(cam: Cam, br: BaseRadius, drawn: BaseRadius | None, lang: str) -> Panel:
     from plans.cams.analysis import findings
 
+    ru = lang == "ru"
+
+    def T(en: str, rus: str) -> str:
+        return rus if ru else en
+
     fi = findings(cam)
     L = cam.scale
-    u = cam.unit
-    where = (f"arm = {fmt(cam.arm / L, 4, lang)} {u}, pivot at {fmt(cam.pivot / L, 4, lang)} {u}"
-             if cam.follower == "oscillating" else f"e = {fmt(cam.offset / L, 4, lang)} {u}")
-    tip = "flat face" if cam.flat else f"r_roller = {fmt(cam.roller / L, 4, lang)} {u}"
+    u = _unit(cam.unit, lang)
+
+    def n(v: float, sig: int = 4) -> str:
+        return fmt(v, sig, lang)
+
+    where = (T(f"arm = {n(cam.arm / L)} {u}, pivot at {n(cam.pivot / L)} {u}",
+               f"коромысло {n(cam.arm / L)} {u}, ось на {n(cam.pivot / L)} {u}")
+             if cam.follower == "oscillating" else f"e = {n(cam.offset / L)} {u}")
+    tip = T("flat face", "плоский толкатель") if cam.flat else f"r_ролика = {n(cam.roller / L)} {u}" if ru \
+        else f"r_roller = {n(cam.roller / L)} {u}"
+    a_r, a_b = math.degrees(fi.max_pressure_rise), math.degrees(fi.max_pressure_return)
     lines = [
-        f"r0 = {fmt(cam.base_radius / L, 4, lang)} {u}, {where}, {tip}",
-        f"α max: rise {fmt(math.degrees(fi.max_pressure_rise), 4, lang)}° ([α] = "
-        f"{fmt(math.degrees(cam.alpha_rise), 3, lang)}°), return {fmt(math.degrees(fi.max_pressure_return), 4, lang)}°"
-        f" ([α] = {fmt(math.degrees(cam.alpha_return), 3, lang)}°)",
-        ("r0 min: none with this arm and pivot" if br.min_base_radius is None else
-         f"r0 min = {fmt(br.min_base_radius / L, 5, lang)} {u} (exact)"
-         + ("" if drawn is None or drawn.min_base_radius is None
-            else f", {fmt(drawn.min_base_radius / L, 5, lang)} {u} (diagram)")),
+        f"r0 = {n(cam.base_radius / L)} {u}, {where}, {tip}",
+        T(f"α max: rise {n(a_r)}° ([α] = {n(math.degrees(cam.alpha_rise), 3)}°), return {n(a_b)}° "
+          f"([α] = {n(math.degrees(cam.alpha_return), 3)}°)",
+          f"α max: подъём {n(a_r)}° ([α] = {n(math.degrees(cam.alpha_rise), 3)}°), опускание {n(a_b)}° "
+          f"([α] = {n(math.degrees(cam.alpha_return), 3)}°)"),
     ]
-    if br.best_offset is not None and cam.follower == "translating" and not cam.flat:
-        lines.append(f"best: r0 = {fmt(br.best_base_radius / L, 5, lang)} {u} at e = "
-                     f"{fmt(br.best_offset / L, 4, lang)} {u}")
-    if br.best_pivot is not None:
-        lines.append(f"best: r0 = {fmt(br.best_base_radius / L, 5, lang)} {u} with the pivot at "
-                     f"{fmt(br.best_pivot / L, 4, lang)} {u}")
-    lines.append(f"ρ min (convex, theoretical) = {fmt(fi.min_curvature_radius / L, 4, lang)} {u}")
-    if fi.undercut:
-        for c in fi.undercut:
-            lines.append(f"UNDERCUT φ = {fmt(c.start_deg, 4, lang)}…{fmt(c.end_deg, 4, lang)}°: "
-                         f"ρ = {fmt(c.min_radius / L, 4, lang)} {u} < r_roller")
+    if br.min_base_radius is None:
+        lines.append(T("r0 min: none with this arm and pivot", "r0 min: нет при этих коромысле и оси"))
     else:
-        lines.append("no undercut" if lang == "en" else "подреза нет")
+        line = f"r0 min = {n(br.min_base_radius / L, 5)} {u} ({T('exact', 'точно')})"
+        if drawn is not None and drawn.min_base_radius is not None:
+            line += f", {n(drawn.min_base_radius / L, 5)} {u} ({T('diagram', 'по диаграмме')})"
+        lines.append(line)
+    if br.best_offset is not None and cam.follower == "translating" and not cam.flat:
+        lines.append(T("best", "наименьший") + f": r0 = {n(br.best_base_radius / L, 5)} {u}, "
+                     f"e = {n(br.best_offset / L)} {u}")
+    if br.best_pivot is not None:
+        lines.append(T("best", "наименьший") + f": r0 = {n(br.best_base_radius / L, 5)} {u}, "
+                     + T("pivot at", "ось на") + f" {n(br.best_pivot / L)} {u}")
+    lines.append(T("ρ min (convex, theoretical)", "ρ min (выпуклый, теоретический)")
+                 + f" = {n(fi.min_curvature_radius / L)} {u}")
+    for c in fi.undercut:
+        lines.append(T("UNDERCUT", "ПОДРЕЗ") + f" φ = {n(c.start_deg)}…{n(c.end_deg)}°: "
+                     f"ρ = {n(c.min_radius / L)} {u} < r")
+    if not fi.undercut:
+        lines.append(T("no undercut", "подреза нет"))
     rec = Recording()
     for i, t in enumerate(lines):
         rec.text(layout(t, 0, i * 5.5, LABEL, "start", "top"), "label", f"result-{i}",
-                 fill="#c00000" if t.startswith("UNDERCUT") else "#000")
+                 fill="#c00000" if t.startswith(("UNDERCUT", "ПОДРЕЗ")) else "#000")
     return finish("results", "cam-results", None, rec, _w("results", lang))
 
 
@@ -441,5 +472,5 @@ def draw(path: str | Path, *, format: str | None = None, orientation: str | None
     cam = load_cam(path)
     spec = sheet_spec(cam.raw, cam.path, cam.title, format=format, orientation=orientation, language=language)
     panels = build_panels(cam, spec)
-    sheets = compose(panels, spec, "", cam.path)
+    sheets = compose(panels, spec, ratio_text(panels[0].scale or 1000.0), cam.path)
     return Drawing(cam, spec, tuple(panels), tuple(sheets))
