@@ -132,7 +132,8 @@ def motion_panel(cam: Cam, lang: str, g: float = 1.0) -> Panel:
     X = np.append(fine, 2 * np.pi) * x_of
     nodes_x = ig.nodes * x_of
     for name, k, exact, chain, mid, y0 in rows:
-        rec.line((-4, y0), (length + 6, y0), THIN, f"axis-{name}")
+        tag = {"s": "s", "ds/dφ": "ds", "d²s/dφ²": "d2s"}[name]  # ids: plain ASCII
+        rec.line((-4, y0), (length + 6, y0), THIN, f"axis-{tag}")
         half = 34.0 * g if name != "s" else 0.0
         top = min(y0 - k * float(np.max(exact)) - 2, y0 - 34.0 * g)
         rec.line((0, y0 + half), (0, top), THIN)
@@ -142,11 +143,11 @@ def motion_panel(cam: Cam, lang: str, g: float = 1.0) -> Panel:
             rec.line((xn, y0 - 0.8), (xn, y0 + 0.8), HAIR)
         pts = [(float(x), y0 - k * float(v)) for x, v in zip(X, exact, strict=True)]
         if chain is not None:
-            rec.polyline(pts, EXACT, f"exact-{name}")
+            rec.polyline(pts, EXACT, f"exact-{tag}")
             rec.polyline([(float(x), y0 - k * float(v)) for x, v in zip(nodes_x, chain, strict=True)], MAIN,
-                         f"graphical-{name}")
+                         f"graphical-{tag}")
         else:
-            rec.polyline(pts, MAIN, f"exact-{name}")
+            rec.polyline(pts, MAIN, f"exact-{tag}")
             steps: list[Pt] = []
             assert mid is not None
             for i, m in enumerate(mid):
@@ -342,6 +343,11 @@ def profile_panel(cam: Cam, lang: str, g: float = 1.0) -> Panel:
             foot = R(np.array([cam.offset, s0 - 0.1 * r0]))
             top = R(np.array([cam.offset, s0 + cam.h + cam.roller + 0.25 * r0]))
             rec.line(P(foot), P(top), Style(width=0.13, stroke="#777"), f"follower-{i}")
+            if cam.flat:  # the face at r0 + s, perpendicular to the follower, touching at B
+                lift = cam.base_radius + float(pq.motion.s[i])
+                w = float(np.max(np.abs(pr.motion.s1))) + 0.15 * r0
+                rec.line(P(R(np.array([-w, lift]))), P(R(np.array([w, lift]))),
+                         Style(width=0.25, stroke="#555"), f"face-{i}")
         else:
             A = R(np.array([cam.pivot, 0.0]))
             rec.line(P(A), P(B), Style(width=0.25, stroke="#555"), f"arm-{i}")
@@ -356,8 +362,9 @@ def profile_panel(cam: Cam, lang: str, g: float = 1.0) -> Panel:
         rec.circle((0, 0), mu * abs(cam.offset), HAIR, "offset-circle")
     if cam.follower == "oscillating":
         rec.circle((0, 0), mu * cam.pivot, Style(width=0.13, stroke="#777", dash=(3.0, 1.5)), "pivot-circle")
-    rec.polyline([P(p) for p in pr.theoretical], Style(width=0.35, stroke="#1f5fbf", dash=(6.0, 1.0, 1.0, 1.0)),
-                 "theoretical-profile")
+    if not cam.flat:  # a flat face touches the cam itself: one profile
+        rec.polyline([P(p) for p in pr.theoretical], Style(width=0.35, stroke="#1f5fbf",
+                                                           dash=(6.0, 1.0, 1.0, 1.0)), "theoretical-profile")
     if cam.roller > 0 or cam.flat:
         rec.polyline([P(p) for p in pr.actual], THICK, "actual-profile")
     bad = (pr.curvature <= 0) if cam.flat else (pr.curvature * cam.roller >= 1.0) if cam.roller > 0 else \
@@ -386,7 +393,12 @@ def profile_panel(cam: Cam, lang: str, g: float = 1.0) -> Panel:
     arrow(rec, (p1[0] + (p1[1]) * 0.15 * k, p1[1] - p1[0] * 0.15 * k), p1, THIN, "omega", "omega")
     _text(rec, "ω", p0[0] + 1.5, p0[1], LABEL)
     _ = p0
-    if lang == "ru":
+    if cam.flat:
+        note = (f"{ratio_text(mu)}; {len(q)} положений тарелки толкателя, повёрнутых на −φ против ω; "
+                "профиль — их огибающая" if lang == "ru" else
+                f"{ratio_text(mu)}; {len(q)} positions of the face turned by −φ against ω; the profile "
+                "is their envelope")
+    elif lang == "ru":
         note = (f"{ratio_text(mu)}; {len(q)} положений толкателя, повёрнутых на −φ против ω; штрихпунктир: "
                 "теоретический профиль, основная линия: действительный (огибающая роликов)")
     else:

@@ -266,6 +266,7 @@ def test_cli_json_names(tmp_path, capsys):
                 "min_curvature_radius"):
         assert key in d
     assert len(d["phi_deg"]) == 360 and len(d["profile"]["actual"]) == 360
+    assert all(len(d[k]) == 360 for k in ("s", "ds_dphi", "d2s_dphi2", "v", "a", "pressure_angle_deg"))
     assert set(d["profile"]) == {"theoretical", "actual"}
     assert d["s"][65] == pytest.approx(10.0) and d["s"][150] == 0.0
     code, _ = _cli(["cam", str(SEED), "--json", str(tmp_path / "b.json")], capsys)
@@ -281,8 +282,11 @@ def test_every_cam_sample_solves_and_draws(path, tmp_path, capsys):
     drawing = draw(path)
     assert drawing.sheets
     svg = drawing.sheets[0].svg()
-    for eid in ("actual-profile", "theoretical-profile", "graphical-s", "exact-s"):
-        assert f'id="{eid}"' in svg
+    for eid in ("actual-profile", "graphical-s", "exact-s", "graphical-ds", "exact-d2s", "mid-ordinates"):
+        assert f'id="{eid}"' in "".join(sh.svg() for sh in drawing.sheets)
+    cam = load_cam(path)
+    if not cam.flat:
+        assert 'id="theoretical-profile"' in svg
     assert "nan" not in svg.lower().replace("nanosecond", "")
 
 
@@ -385,6 +389,15 @@ def test_rocker_diagram_reads_the_pressure_angle_and_the_base_radius():
     fb = findings(best)
     worst = max(math.degrees(fb.max_pressure_rise) - 45, math.degrees(fb.max_pressure_return) - 70)
     assert worst == pytest.approx(0.0, abs=0.05)
+
+
+def test_step_deg_sets_the_arrays(capsys):
+    flat = ROOT / "samples" / "cams" / "flat_face_poly345.toml"
+    code, cap = _cli(["cam", str(flat), "--json", "-"], capsys)
+    d = json.loads(cap.out)
+    assert code == 0 and len(d["phi_deg"]) == 180 and d["phi_deg"][1] == 2.0
+    assert max(d["pressure_angle_deg"]) == 0.0
+    assert d["profile"]["theoretical"] == d["profile"]["actual"]
 
 
 def test_cli_json_to_stdout(capsys):
