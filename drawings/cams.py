@@ -4,8 +4,10 @@ pressure-angle rays and the region of allowed centres, the profile by inversion.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -326,11 +328,56 @@ def profile_panel(cam: Cam, lang: str, g: float = 1.0) -> Panel:
     def P(v: np.ndarray | tuple[float, float]) -> Pt:
         return (mu * float(v[0]), -mu * float(v[1]))
 
-    k = cam.sense
     r0 = cam.base_radius
     rec.circle((0, 0), mu * r0, Style(width=0.18, stroke="#333", dash=(6.0, 1.0, 1.0, 1.0)), "base-circle")
     if cam.roller > 0:
         rec.circle((0, 0), mu * (r0 - cam.roller), HAIR, "actual-base-circle")
+    _follower_positions(rec, cam, pr, pq, q, mu)
+    if cam.follower == "translating" and abs(cam.offset) > 0:
+        rec.circle((0, 0), mu * abs(cam.offset), HAIR, "offset-circle")
+    if cam.follower == "oscillating":
+        rec.circle((0, 0), mu * cam.pivot, Style(width=0.13, stroke="#777", dash=(3.0, 1.5)), "pivot-circle")
+    if not cam.flat:  # a flat face touches the cam itself: one profile
+        rec.polyline([P(p) for p in pr.theoretical], Style(width=0.35, stroke="#1f5fbf",
+                                                           dash=(6.0, 1.0, 1.0, 1.0)), "theoretical-profile")
+    if cam.roller > 0 or cam.flat:
+        rec.polyline([P(p) for p in pr.actual], THICK, "actual-profile")
+    bad = (pr.curvature <= 0) if cam.flat else (pr.curvature * cam.roller >= 1.0) if cam.roller > 0 else \
+        np.zeros_like(pr.curvature, bool)
+    if np.any(bad):
+        for j in np.flatnonzero(bad):
+            rec.circle(P(pr.actual[j]), 0.5, Style(stroke=None, width=0, fill="#c00000"), f"undercut-{j}")
+    _phases_and_omega(rec, cam, pr, mu)
+    if cam.flat:
+        note = (f"{ratio_text(mu)}; {len(q)} положений тарелки толкателя, повёрнутых на −φ против ω; "
+                "профиль — их огибающая" if lang == "ru" else
+                f"{ratio_text(mu)}; {len(q)} positions of the face turned by −φ against ω; the profile "
+                "is their envelope")
+    elif lang == "ru":
+        note = (f"{ratio_text(mu)}; {len(q)} положений толкателя, повёрнутых на −φ против ω; штрихпунктир: "
+                "теоретический профиль, основная линия: действительный (огибающая роликов)")
+    else:
+        note = (f"{ratio_text(mu)}; {len(q)} positions turned by −φ against ω; dash-dot: theoretical "
+                "profile, thick: actual profile (envelope of the roller circles)")
+    return finish("profile", "cam-profile", None, rec, _w("profile", lang), note=note, quantity="length",
+                  scale=mu)
+
+
+def _P(mu: float) -> Callable[[Any], Pt]:
+    """World metres (y up) to the panel's paper mm at μ mm per m."""
+
+    def P(v: Any) -> Pt:
+        return (mu * float(v[0]), -mu * float(v[1]))
+
+    return P
+
+
+def _follower_positions(rec: Recording, cam: Cam, pr: Profile, pq: Profile, q: np.ndarray, mu: float) -> None:
+    """At each division point: the follower (its line and flat face, or its arm) turned by
+    −φ, the roller circle about the roller centre, the number of the position."""
+    P = _P(mu)
+    k = cam.sense
+    r0 = cam.base_radius
     for i, ph_ in enumerate(q):
         c, s = math.cos(-k * ph_), math.sin(-k * ph_)
 
@@ -358,20 +405,12 @@ def profile_panel(cam: Cam, lang: str, g: float = 1.0) -> Panel:
         rb = math.hypot(*B)
         lab = np.asarray(B) * (rb + cam.roller + 2.5 / mu) / rb  # just outside the roller circle
         _text(rec, str(i), *P(lab), SMALL, "middle")
-    if cam.follower == "translating" and abs(cam.offset) > 0:
-        rec.circle((0, 0), mu * abs(cam.offset), HAIR, "offset-circle")
-    if cam.follower == "oscillating":
-        rec.circle((0, 0), mu * cam.pivot, Style(width=0.13, stroke="#777", dash=(3.0, 1.5)), "pivot-circle")
-    if not cam.flat:  # a flat face touches the cam itself: one profile
-        rec.polyline([P(p) for p in pr.theoretical], Style(width=0.35, stroke="#1f5fbf",
-                                                           dash=(6.0, 1.0, 1.0, 1.0)), "theoretical-profile")
-    if cam.roller > 0 or cam.flat:
-        rec.polyline([P(p) for p in pr.actual], THICK, "actual-profile")
-    bad = (pr.curvature <= 0) if cam.flat else (pr.curvature * cam.roller >= 1.0) if cam.roller > 0 else \
-        np.zeros_like(pr.curvature, bool)
-    if np.any(bad):
-        for j in np.flatnonzero(bad):
-            rec.circle(P(pr.actual[j]), 0.5, Style(stroke=None, width=0, fill="#c00000"), f"undercut-{j}")
+
+
+def _phases_and_omega(rec: Recording, cam: Cam, pr: Profile, mu: float) -> None:
+    P = _P(mu)
+    k = cam.sense
+    r0 = cam.base_radius
     # the phase angles, laid off from the start of the rise against ω as the follower turns
     outer = float(np.max(np.hypot(*pr.theoretical.T))) + cam.roller + 6.0 / mu
     a0 = math.atan2(float(pr.theoretical[0, 1]), float(pr.theoretical[0, 0]))
@@ -392,20 +431,6 @@ def profile_panel(cam: Cam, lang: str, g: float = 1.0) -> Panel:
     rec.arc((0, 0), rr, -max(a0, a1), -min(a0, a1), THIN)
     arrow(rec, (p1[0] + (p1[1]) * 0.15 * k, p1[1] - p1[0] * 0.15 * k), p1, THIN, "omega", "omega")
     _text(rec, "ω", p0[0] + 1.5, p0[1], LABEL)
-    _ = p0
-    if cam.flat:
-        note = (f"{ratio_text(mu)}; {len(q)} положений тарелки толкателя, повёрнутых на −φ против ω; "
-                "профиль — их огибающая" if lang == "ru" else
-                f"{ratio_text(mu)}; {len(q)} positions of the face turned by −φ against ω; the profile "
-                "is their envelope")
-    elif lang == "ru":
-        note = (f"{ratio_text(mu)}; {len(q)} положений толкателя, повёрнутых на −φ против ω; штрихпунктир: "
-                "теоретический профиль, основная линия: действительный (огибающая роликов)")
-    else:
-        note = (f"{ratio_text(mu)}; {len(q)} positions turned by −φ against ω; dash-dot: theoretical "
-                "profile, thick: actual profile (envelope of the roller circles)")
-    return finish("profile", "cam-profile", None, rec, _w("profile", lang), note=note, quantity="length",
-                  scale=mu)
 
 
 def results_panel(cam: Cam, br: BaseRadius, drawn: BaseRadius | None, lang: str) -> Panel:
