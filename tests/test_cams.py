@@ -332,6 +332,11 @@ def test_bad_base_radius(tmp_path, capsys, r0):
     assert "base_radius" in err and "positive" in err
 
 
+def test_roller_bigger_than_base_circle(tmp_path, capsys):
+    err = _bad(tmp_path, capsys, lambda d: d.update(roller=40))
+    assert "roller" in err and "smaller than the base radius" in err
+
+
 def test_unknown_key_named(tmp_path, capsys):
     err = _bad(tmp_path, capsys, lambda d: d.update(rollr=5))
     assert "rollr" in err and "roller" in err

@@ -179,6 +179,9 @@ def cam_from_dict(data: dict[str, Any], path: str) -> Cam:
         roller = 0.0
     else:
         roller = _length(data, "roller", unit, path, default=0.0, at_least=0.0)
+        if roller >= r0:
+            raise InputError(f"the roller must be smaller than the base radius ({data['roller']!r} vs "
+                             f"{data['base_radius']!r})", file=path, field="roller")
     offset = _length(data, "offset", unit, path, default=0.0)
     if not osc and abs(offset) >= r0:
         raise InputError(f"the offset must be smaller than the base radius ({data.get('offset')!r} "
