@@ -19,7 +19,7 @@ from plans.cams.model import Cam, load_cam
 from .backend import HAIR, MAIN, THICK, THIN, Pt, Recording, Style
 from .common import arrow, dot, fmt
 from .panels import STANDARD_RATIOS, Panel, finish, ratio_text
-from .sheet import Sheet, SheetSpec, compose, sheet_spec
+from .sheet import GAP, TB_H, Sheet, SheetSpec, compose, sheet_spec, usable
 from .text import layout
 
 EXACT = Style(width=0.25, stroke="#1f5fbf", dash=(2.0, 1.0))
@@ -179,12 +179,9 @@ def motion_panel(cam: Cam, lang: str, g: float = 1.0) -> Panel:
         rec.line((xb, -2), (xb, y_a + 34 * g + 2), Style(width=0.13, stroke="#888", dash=(1.0, 1.0)))
         _text(rec, f"{math.degrees(ph.angle):g}°", xb + ph.angle * x_of / 2, y_a + 34 * g + 5, SMALL, "middle")
     err = float(np.max(np.abs(ig.s_nodes - motion(cam, ig.nodes % (2 * np.pi)).s))) * f
-    if lang == "ru":
-        note = (f"μ_φ = {fmt(x_of * math.pi / 180, 4, lang)} мм/°; μ′ = μ·μ_φ/H; графическое s отличается "
-                f"от точного не более чем на {fmt(err, 3, lang)} {_unit(unit, lang)}; штрих: точные кривые")
-    else:
-        note = (f"μ_φ = {fmt(x_of * math.pi / 180, 4, lang)} mm/°; μ′ = μ·μ_φ/H; graphical s within "
-                f"{fmt(err, 3, lang)} {unit} of exact; dashed: exact")
+    mm = _unit("mm", lang)
+    note = (f"μ_φ = {fmt(x_of * math.pi / 180, 4, lang)} {mm}/°; μ′ = μ·μ_φ/H; "
+            f"|Δs| ≤ {fmt(err, 3, lang)} {_unit(unit, lang)}; " + ("штрих — точно" if lang == "ru" else "dashed: exact"))
     return finish("motion", "cam-motion", None, rec, _w("motion", lang), note=note)
 
 
@@ -312,17 +309,17 @@ def _clip_region(br: BaseRadius, x0: float, x1: float, y0: float, y1: float) -> 
     return poly
 
 
-def profile_panel(cam: Cam, lang: str, g: float = 1.0) -> Panel:
+def profile_panel(cam: Cam, lang: str, target: float = 180.0) -> Panel:
     """Inversion: the follower's positions at the division points turned by −φ, the
     theoretical profile through the roller centres, the roller circles and their envelope."""
     phi = np.append(grid(cam, 0.5), 2 * np.pi)
     pr: Profile = profile(cam, phi)
     q = division_points(cam)
     pq = profile(cam, q)
-    reach = float(np.max(np.hypot(*pr.theoretical.T))) + cam.roller
+    reach = float(np.max(np.hypot(*pr.theoretical.T))) + cam.roller + 0.15 * cam.base_radius
     if cam.follower == "oscillating":
         reach = max(reach, cam.pivot + 0.15 * cam.arm)
-    mu = drawing_scale(reach, 180.0 * g)  # paper mm per m
+    mu = drawing_scale(reach, target)  # paper mm per m
     rec = Recording()
 
     def P(v: np.ndarray | tuple[float, float]) -> Pt:
@@ -348,17 +345,8 @@ def profile_panel(cam: Cam, lang: str, g: float = 1.0) -> Panel:
         for j in np.flatnonzero(bad):
             rec.circle(P(pr.actual[j]), 0.5, Style(stroke=None, width=0, fill="#c00000"), f"undercut-{j}")
     _phases_and_omega(rec, cam, pr, mu)
-    if cam.flat:
-        note = (f"{ratio_text(mu)}; {len(q)} положений тарелки толкателя, повёрнутых на −φ против ω; "
-                "профиль — их огибающая" if lang == "ru" else
-                f"{ratio_text(mu)}; {len(q)} positions of the face turned by −φ against ω; the profile "
-                "is their envelope")
-    elif lang == "ru":
-        note = (f"{ratio_text(mu)}; {len(q)} положений толкателя, повёрнутых на −φ против ω; штрихпунктир: "
-                "теоретический профиль, основная линия: действительный (огибающая роликов)")
-    else:
-        note = (f"{ratio_text(mu)}; {len(q)} positions turned by −φ against ω; dash-dot: theoretical "
-                "profile, thick: actual profile (envelope of the roller circles)")
+    note = (f"{ratio_text(mu)}; {len(q)} положений, повёрнутых на −φ" if lang == "ru" else
+            f"{ratio_text(mu)}; {len(q)} positions turned by −φ")
     return finish("profile", "cam-profile", None, rec, _w("profile", lang), note=note, quantity="length",
                   scale=mu)
 
@@ -388,7 +376,7 @@ def _follower_positions(rec: Recording, cam: Cam, pr: Profile, pq: Profile, q: n
         if cam.follower == "translating":
             s0 = math.sqrt(r0**2 - cam.offset**2)
             foot = R(np.array([cam.offset, s0 - 0.1 * r0]))
-            top = R(np.array([cam.offset, s0 + cam.h + cam.roller + 0.25 * r0]))
+            top = R(np.array([cam.offset, s0 + cam.h + cam.roller + 0.12 * r0]))
             rec.line(P(foot), P(top), Style(width=0.13, stroke="#777"), f"follower-{i}")
             if cam.flat:  # the face at r0 + s, perpendicular to the follower, touching at B
                 lift = cam.base_radius + float(pq.motion.s[i])
@@ -492,9 +480,13 @@ def build_panels(cam: Cam, spec: SheetSpec) -> list[Panel]:
     lang = spec.language
     W, H = spec.size
     g = min(W / 841.0, H / 594.0)
+    # the profile: as big as A1 allows beside the rest, and never taller than the sheet beside
+    # its title block (about 2.3 × the reach with the follower's lines and labels)
+    x0, y0, x1, y1 = usable(W, H)
+    target = min(180.0 * g, (y1 - y0 - TB_H - GAP - 20.0) / 2.3)
     br = min_base_radius(cam, True)
     drawn = None if cam.flat else min_base_radius(cam, False)
-    panels = [profile_panel(cam, lang, g), motion_panel(cam, lang, g)]
+    panels = [profile_panel(cam, lang, target), motion_panel(cam, lang, g)]
     if br.bounds is not None:
         panels.append(diagram_panel(cam, br, lang, g))
     elif cam.follower == "oscillating":
