@@ -287,6 +287,8 @@ def test_every_cam_sample_solves_and_draws(path, tmp_path, capsys):
     cam = load_cam(path)
     if not cam.flat:
         assert 'id="theoretical-profile"' in svg
+    small = draw(path, format="A4", language="ru")  # every panel fits the smallest sheet
+    assert all(sh.width == 297 for sh in small.sheets)
     assert "nan" not in svg.lower().replace("nanosecond", "")
 
 
