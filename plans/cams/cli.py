@@ -6,15 +6,12 @@ from __future__ import annotations
 import argparse
 import math
 import sys
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import numpy as np
+if TYPE_CHECKING:  # the analysis is imported when the command runs: ``plans`` starts fast
+    import numpy as np
 
-from plans.io import atomic_write, dumps
-
-from .analysis import findings, grid, profile
-from .base_radius import min_base_radius
-from .model import Cam, load_cam
+    from .model import Cam
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -40,6 +37,10 @@ def _arr(a: np.ndarray, nd: int = 9) -> list[float]:
 def results(cam: Cam) -> dict[str, Any]:
     """The JSON document: arrays aligned with phi_deg (lengths in the file's unit;
     an oscillating follower's s in degrees of swing)."""
+    import numpy as np
+
+    from .analysis import findings, grid, profile
+    from .base_radius import min_base_radius
     phi = grid(cam)
     pr = profile(cam, phi)
     mo = pr.motion
@@ -126,6 +127,10 @@ def summary(cam: Cam, res: dict[str, Any]) -> str:
 
 
 def _run(args: argparse.Namespace) -> int:
+    from plans.io import atomic_write, dumps
+
+    from .model import load_cam
+
     cam = load_cam(args.cam)
     res = results(cam)
     if args.json == "-":
