@@ -133,13 +133,19 @@ def _outline(w: Wheel, m: float, alpha: float, k: float, centre: complex, axis: 
     flank, space_half = _flank(w, m, alpha, k)
     rf = w.root * 1e3 * k
     flank = _filleted(flank, rf, space_half, 0.38 * m * 1e3 * k)
-    mirror = np.conj(flank[::-1])  # the clockwise flank, tip first
-    tooth = np.concatenate([mirror, flank])
-    pts: list[complex] = []
+    ra = w.tip * 1e3 * k
+    a_tip = float(np.angle(flank[-1]))
+    tip = ra * np.exp(1j * np.linspace(-a_tip, a_tip, 9)[1:-1])  # the tip land, an arc
+    tooth = np.concatenate([np.conj(flank), tip, flank[::-1]])  # cw flank up, tip, ccw flank down
     step = 2 * math.pi / w.z
+    a_foot = float(np.angle(flank[0]))
+    root = rf * np.exp(1j * np.linspace(a_foot, step - a_foot, 9)[1:-1])  # the root arc to the next tooth
+    pts: list[complex] = []
     for j in range(-teeth, teeth + 1):
         rot = np.exp(1j * (axis + j * step))
         pts.extend((centre + tooth * rot).tolist())
+        if j < teeth:
+            pts.extend((centre + root * rot).tolist())
     return tuple(pts)
 
 

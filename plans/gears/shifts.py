@@ -7,7 +7,7 @@
 - ``equal_sliding``: for a pair of "auto" gears, a height-modified pair x1 = −x2 (the centre
   distance stays a) with the greatest specific sliding the same on both wheels, each wheel at
   or above its undercut limit (when z1 + z2 < 2 z_min no such pair exists and each wheel gets
-  its undercut limit); other "auto" gears get their no-undercut shift.
+  its undercut limit, and both tips at least 0.4 m thick); other "auto" gears get their no-undercut shift.
 
 An internal (ring) gear chosen "auto" is not shifted.
 """
@@ -16,7 +16,9 @@ from __future__ import annotations
 
 import math
 
-from .geometry import pair
+from plans.errors import InputError
+
+from .geometry import GOOD_TIP_THICKNESS, pair
 
 
 def z_min(alpha: float, ha: float) -> float:
@@ -53,9 +55,16 @@ def equal_sliding(names: tuple[str, str], z: tuple[int, int], m: float, alpha: f
     total = 0.0
 
     def diff(x1: float) -> float:
-        p = pair(names, z, (x1, total - x1), False, m, alpha, ha, c, (0.0, 0.0))
-        d = p.delta_y
-        p = pair(names, z, (x1, total - x1), False, m, alpha, ha, c, (d, d))
+        # a tooth thinner at the tip than the course accepts counts as too much shift there
+        try:
+            p = pair(names, z, (x1, total - x1), False, m, alpha, ha, c, (0.0, 0.0))
+        except InputError:
+            return -1.0 if x1 > 0 else 1.0
+        w1, w2 = p.wheels
+        if w1.tip_thickness < GOOD_TIP_THICKNESS * m:
+            return -1.0
+        if w2.tip_thickness < GOOD_TIP_THICKNESS * m:
+            return 1.0
         return p.sliding[0] - p.sliding[1]
 
     a, b = lo1, total - lo2

@@ -103,7 +103,7 @@ def solve_gears(gf: GearFile) -> GearSolution:
     return GearSolution(gf, x, tuple(pairs), omega, plan, synth)
 
 
-def _plan_scale(size_m: float, target_mm: float = 160.0) -> float:
+def _plan_scale(size_m: float, target_mm: float = 320.0) -> float:
     """A round scale (mm per m) drawing the unfolded train within ``target_mm``."""
     for r in (5.0, 4.0, 2.5, 2.0, 1.0, 0.5, 0.4, 0.25, 0.2, 0.1, 0.05, 0.04, 0.025, 0.02, 0.01):
         if size_m * 1000.0 * r <= target_mm:

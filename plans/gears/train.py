@@ -161,13 +161,22 @@ def layout(shafts: dict, meshes: list[TrainMesh], file: str | None) -> tuple[dic
     return axes, pitch
 
 
+def _round_length(x: float) -> float:
+    """A round length (1, 2, 2.5, 4, 5 × 10^k mm) not above x."""
+    e = math.floor(math.log10(x))
+    for m in (10.0, 5.0, 4.0, 2.5, 2.0, 1.0):
+        if m * 10.0**e <= x:
+            return m * 10.0**e
+    return 10.0**e
+
+
 def _at(p0: Pt, p1: Pt, y: float) -> float:
     """x of the line p0p1 at height y (the lines of a plan are never horizontal)."""
     return p0[0] + (y - p0[1]) * (p1[0] - p0[0]) / (p1[1] - p0[1])
 
 
 def velocity_plan(shafts: dict, meshes: list[TrainMesh], file: str | None, *, mu_l: float,
-                  v_len: float = 60.0, h: float = 60.0) -> VelocityPlan:
+                  v_len: float = 100.0, h: float = 0.0) -> VelocityPlan:
     """Build the plan line by line from the given speeds, then read ω off the ray diagram."""
     axes, pitch = layout(shafts, meshes, file)
     Y = {n: y * mu_l for n, y in axes.items()}
@@ -235,6 +244,9 @@ def velocity_plan(shafts: dict, meshes: list[TrainMesh], file: str | None, *, mu
             missing = [n for n in shafts if n not in lines]
             raise InputError(f"the velocity plan cannot be built: shafts {', '.join(missing)} have no "
                              "known speed; expected speed_rpm on more shafts", file=file, field="shafts")
+    if h <= 0.0:  # the pole distance: a round length putting the fastest ray about 100 mm out
+        steep = max(abs((q[0] - p[0]) / (q[1] - p[1])) for p, q, _ in lines.values())
+        h = _round_length(100.0 / steep) if steep > 0 else 100.0
     out: dict[str, ShaftLine] = {}
     for n, (p0, p1, pts) in lines.items():
         dx, dy = p1[0] - p0[0], p1[1] - p0[1]
