@@ -127,7 +127,7 @@ def meshing_panel(mg: Meshing, lang: str) -> Panel:
     rec.line(_pt(mg.N1 - 12 * u), _pt(mg.N2 + 12 * u), MAIN, "N1N2")
     rec.line(_pt(mg.B1), _pt(mg.B2), ACTIVE, "B1B2")
     nrm = 1j * u
-    (d1a, d1b), (sa, sb), (d2a, d2b) = mg.zones()
+    (d1a, d1b), (sa, sb), (d2a, d2b) = mg.zones()  # complex points on N1N2
     for i, (a, b) in enumerate(((d1a, d1b), (d2a, d2b))):
         for off in (3.0, 4.4):
             rec.line(_pt(a + off * nrm), _pt(b + off * nrm), THIN, f"zone-double-{i}-{off:g}")
@@ -163,9 +163,9 @@ def meshing_panel(mg: Meshing, lang: str) -> Panel:
            f"ε = {fmt(p.contact_ratio, 5, lang)} ({tr('exact', lang)})")
     rec.text(layout(eps, -W, W + 6.0, LABEL, "start", "middle"), "note", "contact-ratio")
     rec.polygon([(-W, -W), (W, -W), (W, W), (-W, W)], Style(stroke="#999", width=0.18, cls="field"), "field")
-    a, b = p.gears
-    title = f"{tr('meshing', lang)} {a}–{b}"
-    return finish(f"meshing-{a}-{b}", "meshing", None, rec, title, f"M {ratio_text(mg.k * 1000.0)}")
+    g1, g2 = p.gears
+    title = f"{tr('meshing', lang)} {g1}–{g2}"
+    return finish(f"meshing-{g1}-{g2}", "meshing", None, rec, title, f"M {ratio_text(mg.k * 1000.0)}")
 
 
 def _grid(rows: Sequence[Sequence[str]], pid: str) -> Recording:
@@ -260,15 +260,16 @@ def scheme_panel(sol: GearSolution, lang: str) -> Panel:
         r = radii[name]
         rec.line((cx, -(y - r)), (cx, -(y + r)), THICK, f"gear-{name}")
         if g.internal:
-            for s in (-1, 1):
-                rec.line((cx, -(y + s * r)), (cx - 4.0, -(y + s * r)), THICK, f"gear-{name}-ring{s}")
+            for side in (-1, 1):
+                rec.line((cx, -(y + side * r)), (cx - 4.0, -(y + side * r)), THICK,
+                         f"gear-{name}-ring{side}")
         rec.line((cx - 3.0, -y), (cx + 3.0, -y), MAIN, f"axis-{name}")
         rec.text(layout(name, cx + 1.5, -(y + r) - 2.0, LABEL, "start", "bottom"), "label", f"label-gear-{name}")
     for n, s in gf.shafts.items():
         y = plan.axes[n] * 1e3 * mu
         if s.carrier is None:
             rec.line((-8.0, -y), (x + 2.0, -y), AXIS, f"shaft-{n}")
-    for n, s in gf.shafts.items():  # carriers: a bracket from the central axis to each planet axis
+    for n in gf.shafts:  # carriers: a bracket from the central axis to each planet axis
         planets = [q for q, t in gf.shafts.items() if t.carrier == n]
         if planets:
             y0 = plan.axes[n] * 1e3 * mu

@@ -13,7 +13,6 @@ import numpy as np
 
 from plans.errors import InputError
 
-
 _SERIES = (1 / 3, 2 / 15, 17 / 315, 62 / 2835, 1382 / 155925, 21844 / 6081075)
 
 

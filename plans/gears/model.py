@@ -250,7 +250,7 @@ def parse_gears(data: dict[str, Any], path: str) -> GearFile:
         spv = None if sp is None else _num(sp, path, f + "speed_rpm", "a speed in rpm")
         car = None if t.get("carrier") is None else _name(t["carrier"], path, f + "carrier")
         shafts[name] = Shaft(name, spv, car)
-    for i, s in enumerate(list(shafts.values())):
+    for s in list(shafts.values()):
         if s.carrier is not None:
             if s.carrier == s.name:
                 raise InputError(f"shaft {s.name!r} cannot carry itself", file=path, field="shafts")

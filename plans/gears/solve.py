@@ -209,8 +209,8 @@ def table(sol: GearSolution) -> str:
     for n, v in ratios(sol).items():
         lines.append(f"i_{n} = {v:.6f}")
     if sol.omega is not None and sol.plan is not None:
-        for n, w in sol.omega.items():
-            lines.append(f"n_{n} = {w * 30 / math.pi:.6f} rpm (Willis), "
+        for n, om in sol.omega.items():
+            lines.append(f"n_{n} = {om * 30 / math.pi:.6f} rpm (Willis), "
                          f"{sol.plan.lines[n].omega * 30 / math.pi:.6f} rpm (velocity plan)")
     if sol.synthesis is not None:
         t = sol.synthesis

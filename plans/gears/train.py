@@ -147,7 +147,7 @@ def layout(shafts: dict, meshes: list[TrainMesh], file: str | None) -> tuple[dic
             progress = True
         if not progress:
             raise InputError("the meshes do not join into one train", file=file, field="meshes")
-    for n, s in shafts.items():  # carriers sit on the axis of the central wheels they turn about
+    for n in shafts:  # carriers sit on the axis of the central wheels they turn about
         if n in axes:
             continue
         centrals = set()
@@ -248,7 +248,7 @@ def velocity_plan(shafts: dict, meshes: list[TrainMesh], file: str | None, *, mu
         steep = max(abs((q[0] - p[0]) / (q[1] - p[1])) for p, q, _ in lines.values())
         h = _round_length(100.0 / steep) if steep > 0 else 100.0
     out: dict[str, ShaftLine] = {}
-    for n, (p0, p1, pts) in lines.items():
+    for n, (p0, p1, _) in lines.items():
         dx, dy = p1[0] - p0[0], p1[1] - p0[1]
         x = h * dx / dy  # the ray from the pole parallel to the line meets the reference line
         full = known_points(n)
