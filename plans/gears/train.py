@@ -161,15 +161,6 @@ def layout(shafts: dict, meshes: list[TrainMesh], file: str | None) -> tuple[dic
     return axes, pitch
 
 
-def _round_length(x: float) -> float:
-    """A round length (1, 2, 2.5, 4, 5 × 10^k mm) not above x."""
-    e = math.floor(math.log10(x))
-    for m in (10.0, 5.0, 4.0, 2.5, 2.0, 1.0):
-        if m * 10.0**e <= x:
-            return m * 10.0**e
-    return 10.0**e
-
-
 def _at(p0: Pt, p1: Pt, y: float) -> float:
     """x of the line p0p1 at height y (the lines of a plan are never horizontal)."""
     return p0[0] + (y - p0[1]) * (p1[0] - p0[0]) / (p1[1] - p0[1])
@@ -244,9 +235,9 @@ def velocity_plan(shafts: dict, meshes: list[TrainMesh], file: str | None, *, mu
             missing = [n for n in shafts if n not in lines]
             raise InputError(f"the velocity plan cannot be built: shafts {', '.join(missing)} have no "
                              "known speed; expected speed_rpm on more shafts", file=file, field="shafts")
-    if h <= 0.0:  # the pole distance: a round length putting the fastest ray about 100 mm out
+    if h <= 0.0:  # the pole distance: 50 mm, or a multiple of 5 mm keeping rays within 150 mm
         steep = max(abs((q[0] - p[0]) / (q[1] - p[1])) for p, q, _ in lines.values())
-        h = _round_length(100.0 / steep) if steep > 0 else 100.0
+        h = 50.0 if steep * 50.0 <= 150.0 else max(5.0, 5.0 * math.floor(150.0 / steep / 5.0))
     out: dict[str, ShaftLine] = {}
     for n, (p0, p1, _) in lines.items():
         dx, dy = p1[0] - p0[0], p1[1] - p0[1]
