@@ -89,7 +89,9 @@ def _circle(O: complex, r: float, n: int = 720) -> list[complex]:
 
 
 def meshing_panel(mg: Meshing, lang: str) -> Panel:
-    """The pair at its enlargement, clipped to a square field about P."""
+    """The pair at its enlargement, clipped to a square field about P (one figure drawn in
+    the order a draftsman draws it: circles, teeth, centres, line of action, zones,
+    construction, readings; hence its length)."""
     W = mg.window
     box = shapely.box(-W, -W, W, W)
     rec = Recording()
@@ -143,10 +145,10 @@ def meshing_panel(mg: Meshing, lang: str) -> Panel:
     for name, z, pref in (("N_1", mg.N1, (-1.0, 0.0)), ("N_2", mg.N2, (1.0, 0.0)), ("B_1", mg.B1, (-1.0, 0.3)),
                           ("B_2", mg.B2, (1.0, -0.3)), ("P", 0j, (1.0, 0.4))):
         rec.text(placer.place(name, _pt(z), LABEL, pref), "label", f"label-{name.replace('_', '')}")
-    mid_d = (d1a + d1b) / 2 - 9 * nrm
+    mid_d = (d1a + d1b) / 2 - 14 * nrm
     rec.text(layout(tr("double", lang), *_pt(mid_d), SMALL, "middle", "middle"), "note", "zone-double-label")
     if abs(sb - sa) > 1e-6:
-        mid_s = (sa + sb) / 2 - 9 * nrm
+        mid_s = (sa + sb) / 2 - 14 * nrm
         rec.text(layout(tr("single", lang), *_pt(mid_s), SMALL, "middle", "middle"), "note", "zone-single-label")
     # the draftsman's construction of gear 1's flank through P
     rec.begin("involute-construction", "construction")

@@ -327,3 +327,56 @@ def test_json_names():
     assert set(m["radii"]["1"]) >= {"pitch", "base", "tip", "root"}
     assert m["radii"]["2"]["tip"] == pytest.approx(28 + (1 + 3 / 17 - m["delta_y"]) * 4, rel=1e-12)
     assert "ratios" in data and data["meshes"][1]["contact_ratio_drawn"] is None
+
+
+@settings(max_examples=80, derandomize=True, deadline=None)
+@given(st.integers(5, 120), st.integers(5, 200), st.floats(-0.6, 1.2), st.floats(-0.6, 1.2),
+       st.booleans())
+def test_any_pair_is_exact_or_one_input_error(z1, z2, x1, x2, internal):
+    """Random pairs: either an InputError, or finite figures meeting the course's identities."""
+    if internal:
+        z2 = z1 + 8 + z2 % 100
+    try:
+        p = pair(("1", "2"), (z1, z2), (x1, x2), internal, M, A20, 1.0, 0.25, (0.0, 0.0))
+    except InputError as exc:
+        assert "\n" not in str(exc)
+        return
+    S, Z = (x2 - x1, z2 - z1) if internal else (x1 + x2, z1 + z2)
+    assert inv(p.alpha_w) == pytest.approx(inv(A20) + 2 * math.tan(A20) * S / Z, rel=1e-12, abs=1e-15)
+    assert p.a_w * math.cos(p.alpha_w) == pytest.approx(p.a * math.cos(A20), rel=1e-13)
+    if not internal:
+        assert p.delta_y >= -1e-12  # Σx ≥ y always: the pair needs its tips shortened, never grown
+    assert p.contact_ratio == pytest.approx(_course_eps(p), rel=1e-12)
+    for v in (p.alpha_w, p.a_w, p.y, p.delta_y, p.contact_ratio, *(w.tip_thickness for w in p.wheels)):
+        assert math.isfinite(v)
+
+
+def test_drawn_involute_is_laid_off_as_unrolled_arcs():
+    mg = meshing(seed_solution().pairs[0])
+    O1, rb = mg.wheels[0].centre, mg.wheels[0].radii["base"]
+    for T, q in mg.construction:
+        assert abs(T - O1) == pytest.approx(rb, rel=1e-12)  # T on the base circle
+        assert abs(((q - T) * np.conj(T - O1)).real) < 1e-9 * rb * rb  # on its tangent
+    # consecutive laid-off lengths grow by the arcs between consecutive tangent points
+    for (T1, q1), (T2, q2) in zip(mg.construction, mg.construction[1:], strict=False):
+        arc = rb * abs(np.angle((T2 - O1) / (T1 - O1)))
+        assert abs(q2 - T2) - abs(q1 - T1) == pytest.approx(arc, rel=1e-9)
+
+
+@settings(max_examples=8, derandomize=True, deadline=None)
+@given(st.integers(12, 70), st.integers(12, 90), st.floats(0.0, 0.6), st.floats(-0.3, 0.6))
+def test_meshing_drawing_of_any_pair(z1, z2, x1, x2):
+    """Any sound pair: the drawn profiles never cut into each other and ε reads right (with
+    interference B1 lies beyond N1, off the drawn line of action, and there is no reading)."""
+    try:
+        p = pair(("1", "2"), (z1, z2), (x1, x2), False, M, A20, 1.0, 0.25, (0.0, 0.0))
+        p = pair(("1", "2"), (z1, z2), (x1, x2), False, M, A20, 1.0, 0.25, (p.delta_y, p.delta_y))
+    except InputError:
+        return
+    if not p.checks()["no_interference"]:
+        return
+    mg = meshing(p)
+    polys = [shapely.Polygon([(z.real, z.imag) for z in dw.outline] + [(dw.centre.real, dw.centre.imag)]).buffer(0)
+             for dw in mg.wheels]
+    assert polys[0].intersection(polys[1]).area < 1e-2
+    assert mg.contact_ratio_drawn == pytest.approx(p.contact_ratio, abs=3e-3)

@@ -11,7 +11,7 @@ tip circle is inside, r_a2 = r2 − (h_a* − x2) m, r_f2 = r2 + (h_a* + c* + x2
 is shortened (the clearances of an internal pair grow by Δy m instead of shrinking).
 
 The line of action is measured from N1, where it touches the base circle of gear 1: the
-active part B1B2 runs from the point where gear 2's tip cuts it to where gear 1's does;
+active part B1B2 runs from B1, where gear 2's tip circle cuts it, to B2, where gear 1's does;
 ε = B1B2 / p_b with p_b = π m cos α (the course's ε = Σ ±z (tan α_a − tan α_w)/2π is the
 same number, used as an oracle in the tests).
 """
@@ -66,8 +66,8 @@ class Pair:
     backlash: float  # circumferential, on the working circles (0 unless a_w is given larger)
     wheels: tuple[Wheel, Wheel]
     g: float  # N1N2
-    rho_start: float  # distance N1 -> B2 (first contact, gear 2's tip)
-    rho_end: float  # distance N1 -> B1 (last contact, gear 1's tip)
+    rho_start: float  # distance N1 -> B1, where gear 2's tip circle cuts N1N2
+    rho_end: float  # distance N1 -> B2, where gear 1's tip circle cuts N1N2
     p_b: float
     contact_ratio: float
     sliding: tuple[float, float]  # greatest specific sliding on gear 1 and on gear 2

@@ -177,64 +177,10 @@ def parse_gears(data: dict[str, Any], path: str) -> GearFile:
     title = data.get("title", "")
     if not isinstance(title, str):
         raise InputError("expected a string", file=path, field="title")
-    gears: dict[str, Gear] = {}
-    for i, g in enumerate(_tables(data, "gears", path)):
-        f = f"gears[{i}]."
-        check_keys(g, _GEAR_KEYS, f, path)
-        if "name" not in g:
-            raise InputError("missing; expected a name such as \"1\"", file=path, field=f + "name")
-        name = _name(g["name"], path, f + "name")
-        if name in gears:
-            raise InputError(f"gear {name!r} named twice", file=path, field=f + "name")
-        z = g.get("z")
-        if isinstance(z, bool) or not isinstance(z, int) or z < 1:
-            raise InputError(f"expected a whole number of teeth z >= 1, got {z!r}", file=path, field=f + "z")
-        xv = g.get("x", 0)
-        x: float | None
-        if xv == "auto":
-            x = None
-        else:
-            if isinstance(xv, bool) or not isinstance(xv, int | float) or not math.isfinite(xv) or abs(xv) > 5:
-                raise InputError(f"expected a shift coefficient (a number, |x| <= 5) or \"auto\", got {xv!r}",
-                                 file=path, field=f + "x")
-            x = float(xv)
-        internal = g.get("internal", False)
-        if not isinstance(internal, bool):
-            raise InputError("expected true or false", file=path, field=f + "internal")
-        shaft = _name(g.get("shaft", name), path, f + "shaft")
-        gm = _num(g["module"], path, f + "module", "a module m > 0", lo=0.0) * k if "module" in g else m
-        gears[name] = Gear(name, z, x, internal, shaft, gm)
+    gears = _gears(data, path, m, k)
     if not gears:
         raise InputError("expected at least one [[gears]] table", file=path, field="gears")
-    meshes = []
-    seen: set[frozenset[str]] = set()
-    for i, t in enumerate(_tables(data, "meshes", path)):
-        f = f"meshes[{i}]."
-        check_keys(t, _MESH_KEYS, f, path)
-        pair = t.get("gears")
-        if not isinstance(pair, list) or len(pair) != 2:
-            raise InputError("expected two gear names, e.g. gears = [\"1\", \"2\"]", file=path, field=f + "gears")
-        a, b = (_name(v, path, f + "gears") for v in pair)
-        for n in (a, b):
-            if n not in gears:
-                raise InputError(f"no gear named {n!r}; expected one of {', '.join(gears)}", file=path,
-                                 field=f + "gears")
-        if a == b or frozenset((a, b)) in seen:
-            raise InputError(f"the pair {a}-{b} is not a new pair of two gears", file=path, field=f + "gears")
-        seen.add(frozenset((a, b)))
-        ga, gb = gears[a], gears[b]
-        if ga.internal and gb.internal:
-            raise InputError(f"two internal gears {a} and {b} cannot mesh", file=path, field=f + "gears")
-        if abs(ga.module - gb.module) > 1e-12 * ga.module:
-            raise InputError(f"gears {a} and {b} have different modules", file=path, field=f + "gears")
-        if ga.shaft == gb.shaft:
-            raise InputError(f"gears {a} and {b} are on one shaft and cannot mesh", file=path, field=f + "gears")
-        aw = t.get("centre_distance")
-        awv = None if aw is None else _num(aw, path, f + "centre_distance", "a centre distance > 0", lo=0.0) * k
-        draw = t.get("draw", False)
-        if not isinstance(draw, bool):
-            raise InputError("expected true or false", file=path, field=f + "draw")
-        meshes.append(Mesh((a, b), awv, draw))
+    meshes = _meshes(data, path, gears, k)
     shafts = {g.shaft: Shaft(g.shaft, None, None) for g in gears.values()}
     given: set[str] = set()
     for i, t in enumerate(_tables(data, "shafts", path)):
@@ -286,3 +232,67 @@ def _synthesis(t: Any, path: str) -> SynthesisSpec | None:
     if isinstance(zmin, bool) or not isinstance(zmin, int) or zmin < 4:
         raise InputError("expected a whole number >= 4", file=path, field="synthesis.z_min")
     return SynthesisSpec(ratio, tuple(ks), tol, zmin)
+
+
+def _gears(data: dict[str, Any], path: str, m: float, k: float) -> dict[str, Gear]:
+    gears: dict[str, Gear] = {}
+    for i, g in enumerate(_tables(data, "gears", path)):
+        f = f"gears[{i}]."
+        check_keys(g, _GEAR_KEYS, f, path)
+        if "name" not in g:
+            raise InputError("missing; expected a name such as \"1\"", file=path, field=f + "name")
+        name = _name(g["name"], path, f + "name")
+        if name in gears:
+            raise InputError(f"gear {name!r} named twice", file=path, field=f + "name")
+        z = g.get("z")
+        if isinstance(z, bool) or not isinstance(z, int) or z < 1:
+            raise InputError(f"expected a whole number of teeth z >= 1, got {z!r}", file=path, field=f + "z")
+        xv = g.get("x", 0)
+        x: float | None
+        if xv == "auto":
+            x = None
+        else:
+            if isinstance(xv, bool) or not isinstance(xv, int | float) or not math.isfinite(xv) or abs(xv) > 5:
+                raise InputError(f"expected a shift coefficient (a number, |x| <= 5) or \"auto\", got {xv!r}",
+                                 file=path, field=f + "x")
+            x = float(xv)
+        internal = g.get("internal", False)
+        if not isinstance(internal, bool):
+            raise InputError("expected true or false", file=path, field=f + "internal")
+        shaft = _name(g.get("shaft", name), path, f + "shaft")
+        gm = _num(g["module"], path, f + "module", "a module m > 0", lo=0.0) * k if "module" in g else m
+        gears[name] = Gear(name, z, x, internal, shaft, gm)
+    return gears
+
+
+def _meshes(data: dict[str, Any], path: str, gears: dict[str, Gear], k: float) -> list[Mesh]:
+    meshes = []
+    seen: set[frozenset[str]] = set()
+    for i, t in enumerate(_tables(data, "meshes", path)):
+        f = f"meshes[{i}]."
+        check_keys(t, _MESH_KEYS, f, path)
+        pair = t.get("gears")
+        if not isinstance(pair, list) or len(pair) != 2:
+            raise InputError("expected two gear names, e.g. gears = [\"1\", \"2\"]", file=path, field=f + "gears")
+        a, b = (_name(v, path, f + "gears") for v in pair)
+        for n in (a, b):
+            if n not in gears:
+                raise InputError(f"no gear named {n!r}; expected one of {', '.join(gears)}", file=path,
+                                 field=f + "gears")
+        if a == b or frozenset((a, b)) in seen:
+            raise InputError(f"the pair {a}-{b} is not a new pair of two gears", file=path, field=f + "gears")
+        seen.add(frozenset((a, b)))
+        ga, gb = gears[a], gears[b]
+        if ga.internal and gb.internal:
+            raise InputError(f"two internal gears {a} and {b} cannot mesh", file=path, field=f + "gears")
+        if abs(ga.module - gb.module) > 1e-12 * ga.module:
+            raise InputError(f"gears {a} and {b} have different modules", file=path, field=f + "gears")
+        if ga.shaft == gb.shaft:
+            raise InputError(f"gears {a} and {b} are on one shaft and cannot mesh", file=path, field=f + "gears")
+        aw = t.get("centre_distance")
+        awv = None if aw is None else _num(aw, path, f + "centre_distance", "a centre distance > 0", lo=0.0) * k
+        draw = t.get("draw", False)
+        if not isinstance(draw, bool):
+            raise InputError("expected true or false", file=path, field=f + "draw")
+        meshes.append(Mesh((a, b), awv, draw))
+    return meshes

@@ -168,7 +168,10 @@ def _at(p0: Pt, p1: Pt, y: float) -> float:
 
 def velocity_plan(shafts: dict, meshes: list[TrainMesh], file: str | None, *, mu_l: float,
                   v_len: float = 100.0, h: float = 0.0) -> VelocityPlan:
-    """Build the plan line by line from the given speeds, then read ω off the ray diagram."""
+    """Build the plan line by line from the given speeds, then read ω off the ray diagram.
+
+    One construction read top to bottom as it is drawn (scales, lines, rays, the closing
+    check), hence its length."""
     axes, pitch = layout(shafts, meshes, file)
     Y = {n: y * mu_l for n, y in axes.items()}
     lines: dict[str, tuple[Pt, Pt, list[tuple[str, Pt]]]] = {}
