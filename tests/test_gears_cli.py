@@ -10,8 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from drawings.gears import draw
 from drawings.cli import main
+from drawings.gears import draw
 
 ROOT = Path(__file__).resolve().parent.parent
 GEAR_SAMPLES = sorted((ROOT / "samples" / "gears").glob("*.toml"))
