@@ -108,11 +108,13 @@ def meshing_panel(mg: Meshing, lang: str) -> Panel:
         rec.end()
     # centre line O1O2 and the centres
     rec.begin("centres", "centres")
-    lo = max(mg.wheels[0].centre.imag - 8, -W)
-    hi = min(mg.wheels[1].centre.imag + 8, W)
+    ys = [dw.centre.imag for dw in mg.wheels]
+    lo = max(min(ys) - 8, -W)
+    hi = min(max(ys + [30.0]) + 8, W)
     rec.line((0.0, -lo), (0.0, -hi), AXIS, "centre-line")
-    for dw, sign in ((mg.wheels[0], -1), (mg.wheels[1], 1)):
+    for i, dw in enumerate(mg.wheels):
         O = dw.centre
+        sign = -1 if O.imag < 0 else 1
         name = f"O_{dw.name}"
         if abs(O.imag) <= W:
             dot(rec, _pt(O), 0.9, f"centre-{dw.name}")
@@ -121,12 +123,14 @@ def meshing_panel(mg: Meshing, lang: str) -> Panel:
             y = sign * W
             arrow(rec, (0.0, -(y - sign * 12)), (0.0, -y), THIN, f"to-O{dw.name}", "pointer")
             txt = f"{name}: {fmt(abs(O.imag), 4, lang)} мм" if lang == "ru" else f"{name}: {fmt(abs(O.imag), 4)} mm"
-            rec.text(layout(txt, 3.0, -(y - sign * 6), SMALL, "start", "middle"), "label", f"label-O{dw.name}")
+            rec.text(layout(txt, 3.0, -(y - sign * (6 + 5 * i)), SMALL, "start", "middle"), "label",
+                     f"label-O{dw.name}")
     rec.end()
     # line of action, the active part, the zones
     rec.begin("line-of-action", "line-of-action")
     u = (mg.N2 - mg.N1) / abs(mg.N2 - mg.N1)
-    rec.line(_pt(mg.N1 - 12 * u), _pt(mg.N2 + 12 * u), MAIN, "N1N2")
+    along = [((z - mg.N1) * u.conjugate()).real for z in (mg.N1, mg.N2, mg.B1, mg.B2)]
+    rec.line(_pt(mg.N1 + (min(along) - 12) * u), _pt(mg.N1 + (max(along) + 12) * u), MAIN, "N1N2")
     rec.line(_pt(mg.B1), _pt(mg.B2), ACTIVE, "B1B2")
     nrm = 1j * u
     (d1a, d1b), (sa, sb), (d2a, d2b) = mg.zones()  # complex points on N1N2
@@ -371,10 +375,11 @@ def draw(path: str | Path, *, format: str | None = None, orientation: str | None
                       format=format, orientation=orientation, language=language)
     lang = spec.language
     groups: list[tuple[list[Panel], str]] = []
-    drawn = sol.drawn_pair()
-    mg = meshing(drawn) if drawn is not None and not drawn.internal else None
-    if mg is not None:
-        groups.append(([meshing_panel(mg, lang), results_panel(sol, lang)], ratio_text(mg.k * 1000.0)))
+    drawings = [meshing(p) for p in sol.drawn_pairs()]
+    for i, one in enumerate(drawings):
+        panels = [meshing_panel(one, lang)] + ([results_panel(sol, lang)] if i == 0 else [])
+        groups.append((panels, ratio_text(one.k * 1000.0)))
+    mg = drawings[0] if drawings else None
     train: list[Panel] = []
     if sol.plan is not None:
         train += [scheme_panel(sol, lang), velocity_panel(sol, lang), rays_panel(sol, lang), speeds_panel(sol, lang)]

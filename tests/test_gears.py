@@ -214,15 +214,21 @@ def test_contact_ratio_by_turning_two_profiles():
 
 
 def test_meshing_drawing_profiles_touch_and_read_the_contact_ratio():
-    for path in (SEED, PLANETARY):
-        p = solve_gears(load_gears(path)).drawn_pair()
+    pairs = solve_gears(load_gears(SEED)).drawn_pairs() + solve_gears(load_gears(PLANETARY)).drawn_pairs()
+    assert [p.internal for p in pairs] == [False, False, True]
+    for p in pairs:
         mg = meshing(p)
         tooth = max(w.tip - w.root for w in p.wheels) * 1e3 * mg.k
         assert 40.0 <= tooth <= 60.0
         polys = []
         for dw in mg.wheels:
-            ring = [(z.real, z.imag) for z in dw.outline] + [(dw.centre.real, dw.centre.imag)]
-            polys.append(shapely.Polygon(ring).buffer(0))
+            wedge = shapely.Polygon([(z.real, z.imag) for z in dw.outline] + [(dw.centre.real, dw.centre.imag)])
+            if p.internal and dw is mg.wheels[1]:  # the ring's body: a wider wedge less its hole
+                a0, a1 = (np.angle(z - dw.centre) for z in (dw.outline[0], dw.outline[-1]))
+                far = [dw.centre + 2 * dw.radii["root"] * np.exp(1j * a) for a in np.linspace(a0, a1, 50)]
+                big = shapely.Polygon([(dw.centre.real, dw.centre.imag)] + [(z.real, z.imag) for z in far])
+                wedge = big.buffer(0).difference(wedge.buffer(0))
+            polys.append(wedge.buffer(0))
         assert polys[0].intersection(polys[1]).area < 1e-3  # mm²: the profiles never cut into each other
         assert polys[0].distance(polys[1]) < 0.01  # and they touch (at P)
         # line of action: tangent to both base circles, through P
@@ -265,7 +271,7 @@ def test_seed_train_plan_agrees_with_willis_to_1e12():
 
 
 def test_differential_needs_two_speeds_and_then_agrees():
-    base = open(PLANETARY, encoding="utf-8").read().split("[synthesis]")[0]
+    base = open(PLANETARY, encoding="utf-8").read().split("\n[synthesis]")[0]
     import tomllib
 
     free = base.replace('name = "3"\nspeed_rpm = 0', 'name = "3"')

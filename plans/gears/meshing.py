@@ -127,12 +127,24 @@ def _filleted(flank: np.ndarray, rf: float, space_half: float, rho: float) -> np
     return np.concatenate([arc, rest])
 
 
+def _as_spaces(w: Wheel, m: float) -> Wheel:
+    """A ring gear seen from its spaces: each space is bounded like an external tooth of
+    thickness e = πm − s, from the ring's tip circle (inside) to its root circle (outside)."""
+    return Wheel(w.name, w.z, w.x, False, w.pitch, w.base, w.root, w.tip, w.working, w.tip_angle,
+                 math.pi * m - w.thickness, 0.0, 0.0)
+
+
 def _outline(w: Wheel, m: float, alpha: float, k: float, centre: complex, axis: float,
              teeth: int) -> tuple[complex, ...]:
-    """The teeth j = −teeth..teeth about the tooth centred on ``axis`` (paper angle, y up)."""
+    """The teeth j = −teeth..teeth about the tooth centred on ``axis`` (paper angle, y up);
+    for a ring, its spaces about the space centred on ``axis`` (no fillet drawn there)."""
+    ring = w.internal
+    if ring:
+        w = _as_spaces(w, m)
     flank, space_half = _flank(w, m, alpha, k)
     rf = w.root * 1e3 * k
-    flank = _filleted(flank, rf, space_half, 0.38 * m * 1e3 * k)
+    if not ring:
+        flank = _filleted(flank, rf, space_half, 0.38 * m * 1e3 * k)
     ra = w.tip * 1e3 * k
     a_tip = float(np.angle(flank[-1]))
     tip = ra * np.exp(1j * np.linspace(-a_tip, a_tip, 9)[1:-1])  # the tip land, an arc
@@ -150,17 +162,23 @@ def _outline(w: Wheel, m: float, alpha: float, k: float, centre: complex, axis: 
 
 
 def meshing(p: Pair, teeth: int = 3) -> Meshing:
-    """The construction of an external pair."""
+    """The construction of a pair: external (O2 above P) or internal (the ring's centre O2
+    below P, beyond O1; the flank through P is then a flank of a ring space)."""
     w1, w2 = p.wheels
-    tooth = max(w.tip - w.root for w in p.wheels) * 1e3
+    tooth = max(abs(w.tip - w.root) for w in p.wheels) * 1e3
     k = enlargement(tooth)
     m, alpha = p.m, p.alpha
     O1 = complex(0.0, -w1.working * 1e3 * k)
-    O2 = complex(0.0, w2.working * 1e3 * k)
+    O2 = complex(0.0, (-1.0 if p.internal else 1.0) * w2.working * 1e3 * k)
     psi1 = half_angle(w1.working, w1.thickness, w1.pitch, alpha, w1.base)
-    psi2 = half_angle(w2.working, w2.thickness, w2.pitch, alpha, w2.base)
     ax1 = math.pi / 2 - psi1  # gear 1's tooth whose ccw flank passes through P
-    ax2 = -math.pi / 2 - psi2  # gear 2's tooth whose ccw flank touches it at P
+    if p.internal:  # the ring's space holding that tooth: its ccw side through P
+        e2 = math.pi * m - w2.thickness
+        ax2 = math.pi / 2 - half_angle(w2.working, e2, w2.pitch, alpha, w2.base)
+        s2 = e2 / (2 * w2.pitch) + inv(alpha)
+    else:
+        ax2 = -math.pi / 2 - half_angle(w2.working, w2.thickness, w2.pitch, alpha, w2.base)
+        s2 = w2.thickness / (2 * w2.pitch) + inv(alpha)
     drawn = []
     for w, O, ax in ((w1, O1, ax1), (w2, O2, ax2)):
         radii = {key: getattr(w, key) * 1e3 * k for key in ("pitch", "base", "tip", "root", "working")}
@@ -168,11 +186,14 @@ def meshing(p: Pair, teeth: int = 3) -> Meshing:
     # N1, N2: where the flanks through P were unrolled from (their tangent points)
     tw = math.tan(p.alpha_w)
     s1 = w1.thickness / (2 * w1.pitch) + inv(alpha)
-    s2 = w2.thickness / (2 * w2.pitch) + inv(alpha)
     N1 = O1 + w1.base * 1e3 * k * np.exp(1j * (ax1 + s1 - tw))
     N2 = O2 + w2.base * 1e3 * k * np.exp(1j * (ax2 + s2 - tw))
-    # B1, B2 read on the drawing: N1N2 against the tip circles as drawn (polygons)
-    line = shapely.LineString([(N1.real, N1.imag), (N2.real, N2.imag)])
+    # B1, B2 read on the drawing: the line of action against the tip circles as drawn
+    # (polygons); an internal pair's line runs on past P, beyond N1 from N2
+    u = (N2 - N1) / abs(N2 - N1)
+    end = N2 if not p.internal else N1 - u * (p.rho_end * 1e3 * k + 20.0)
+    line = shapely.LineString([(N1.real, N1.imag), (end.real, end.imag)] if not p.internal
+                              else [(N2.real, N2.imag), (end.real, end.imag)])
 
     def cut(O: complex, r: float, near: complex) -> complex:
         ang = np.linspace(0, 2 * math.pi, CIRCLE_SEGMENTS + 1)
@@ -181,8 +202,9 @@ def meshing(p: Pair, teeth: int = 3) -> Meshing:
         pts = [complex(g.x, g.y) for g in getattr(hit, "geoms", [hit]) if not g.is_empty]
         return min(pts, key=lambda z: abs(z - near)) if pts else near
 
-    B1 = cut(O2, drawn[1].radii["tip"], N1)
-    B2 = cut(O1, drawn[0].radii["tip"], N2)
+    ahead = -u if p.internal else u  # from N1 towards P
+    B1 = cut(O2, drawn[1].radii["tip"], N1 + ahead * p.rho_start * 1e3 * k)
+    B2 = cut(O1, drawn[0].radii["tip"], N1 + ahead * p.rho_end * 1e3 * k)
     pb = p.p_b * 1e3 * k
     # the draftsman's construction of gear 1's flank through P: tangents and laid-off arcs
     rb1 = w1.base * 1e3 * k
@@ -195,8 +217,5 @@ def meshing(p: Pair, teeth: int = 3) -> Meshing:
 
 
 def drawn_contact_ratios(sol) -> dict[tuple[str, str], float]:
-    """ε read off the meshing drawing for the pair the sheet draws (external pairs only)."""
-    p = sol.drawn_pair()
-    if p is None or p.internal:
-        return {}
-    return {p.gears: meshing(p).contact_ratio_drawn}
+    """ε read off the meshing drawings, for the pairs the sheets draw."""
+    return {p.gears: meshing(p).contact_ratio_drawn for p in sol.drawn_pairs()}

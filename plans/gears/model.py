@@ -153,11 +153,15 @@ def load_gears(path: str | Path) -> GearFile:
 
 
 def parse_gears(data: dict[str, Any], path: str) -> GearFile:
-    check_keys(data, _TOP_KEYS, "", path)
+    from plans.kinds import command_for, kind_of
+
+    kind = kind_of(data, path)
+    if kind != "gears":
+        raise InputError(f"this is a {kind!r} file, not a gear file; {command_for(kind)}expected "
+                         "kind = \"gears\"", file=path, field="kind")
     if data.get("format") != 1:
         raise InputError(f"expected format = 1, got {data.get('format')!r}", file=path, field="format")
-    if data.get("kind") != "gears":
-        raise InputError(f"expected kind = \"gears\", got {data.get('kind')!r}", file=path, field="kind")
+    check_keys(data, _TOP_KEYS, "", path)
     unit = data.get("unit", "mm")
     if unit not in LENGTH_UNITS:
         raise InputError(f"expected one of {', '.join(LENGTH_UNITS)}, got {unit!r}", file=path, field="unit")

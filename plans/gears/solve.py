@@ -25,12 +25,14 @@ class GearSolution:
     plan: VelocityPlan | None
     synthesis: TeethSet | None
 
-    def drawn_pair(self) -> Pair | None:
-        """The pair the meshing sheet draws: the one marked ``draw``, else the first external."""
-        for me, p in zip(self.file.meshes, self.pairs, strict=True):
-            if me.draw:
-                return p
-        return next((p for p in self.pairs if not p.internal), None)
+    def drawn_pairs(self) -> list[Pair]:
+        """The pairs the meshing sheets draw: those marked ``draw``, else the first external
+        one (else the first)."""
+        marked = [p for me, p in zip(self.file.meshes, self.pairs, strict=True) if me.draw]
+        if marked:
+            return marked
+        first = next((p for p in self.pairs if not p.internal), self.pairs[0] if self.pairs else None)
+        return [first] if first is not None else []
 
 
 def _ordered(gf: GearFile, names: tuple[str, str]) -> tuple[str, str]:
