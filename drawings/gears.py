@@ -13,6 +13,7 @@ from pathlib import Path
 import numpy as np
 import shapely
 
+from plans.errors import InputError
 from plans.gears.meshing import Meshing, meshing
 from plans.gears.model import GearFile, load_gears
 from plans.gears.solve import GearSolution, solve_gears
@@ -389,6 +390,9 @@ def draw(path: str | Path, *, format: str | None = None, orientation: str | None
         train.append(results_panel(sol, lang))
     if train:
         groups.append((train, ratio_text(sol.plan.mu_l) if sol.plan is not None else ""))
+    if not groups:
+        raise InputError("nothing to draw: expected [[meshes]] or [[shafts]] with speeds",
+                         file=gf.path, field="meshes")
     sheets: list[Sheet] = []
     for panels, scale in groups:
         sheets.extend(compose(panels, spec, scale, gf.path))

@@ -97,3 +97,21 @@ def test_bad_input_from_the_console_has_no_traceback(tmp_path):
                        capture_output=True, text=True, cwd=ROOT)
     assert r.returncode == 2 and "Traceback" not in r.stderr
     assert len(r.stderr.strip().splitlines()) == 1
+
+
+def test_a_file_with_nothing_to_solve_is_refused(tmp_path, capsys):
+    f = tmp_path / "one.toml"
+    f.write_text('format = 1\nkind = "gears"\nmodule = 2\n[[gears]]\nname = "1"\nz = 20\n', encoding="utf-8")
+    assert main(["gears", str(f)]) == 2
+    assert "meshes" in capsys.readouterr().err
+
+
+def test_synthesis_alone_is_solved_and_drawn(tmp_path, capsys):
+    f = tmp_path / "s.toml"
+    f.write_text('format = 1\nkind = "gears"\nmodule = 2\n[[gears]]\nname = "1"\nz = 20\n'
+                 '[synthesis]\nratio = 6\nplanets = 3\n', encoding="utf-8")
+    assert main(["gears", str(f), "--json", "-"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    s = data["synthesis"]
+    assert s["z1"] + 2 * s["z2"] == s["z3"] and all(s["conditions"].values())
+    assert [p.kind for p in draw(f).panels] == ["table"]

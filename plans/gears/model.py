@@ -210,6 +210,9 @@ def parse_gears(data: dict[str, Any], path: str) -> GearFile:
                 raise InputError(f"carrier {s.carrier!r} rides on another carrier; expected a carrier "
                                  "on a fixed axis", file=path, field="shafts")
     synth = _synthesis(data.get("synthesis"), path)
+    if not meshes and synth is None:
+        raise InputError("expected at least one [[meshes]] table (or a [synthesis] request)", file=path,
+                         field="meshes")
     return GearFile(path, title, unit, math.radians(alpha_deg), ha, c, rule, gears, tuple(meshes),
                     shafts, synth, data)
 
