@@ -124,8 +124,9 @@ def train_meshes(gf: GearFile, pairs: list[Pair] | tuple[Pair, ...]) -> list[Tra
 
 
 def _r(v: float) -> float:
-    """Numbers in the JSON: round-trippable, and no -0.0."""
-    return 0.0 if v == 0 else float(v)
+    """Numbers in the JSON: 13 significant digits (the metre/mm round trip's last bits
+    dropped, 52.00000000000001 is 52.0), and no -0.0."""
+    return 0.0 if v == 0 else float(f"{v:.13g}")
 
 
 def to_json(sol: GearSolution, contact_ratio_drawn: dict[tuple[str, str], float] | None = None
@@ -160,7 +161,7 @@ def to_json(sol: GearSolution, contact_ratio_drawn: dict[tuple[str, str], float]
                                  for w, s in zip(p.wheels, p.sliding, strict=True)},
             "checks": p.checks(),
         })
-    out: dict[str, Any] = {"unit": gf.unit, "x": {n: _r(v) for n, v in sol.x.items()}, "meshes": meshes}
+    out: dict[str, Any] = {"unit": gf.unit, "x": {n: _r(sol.x[n]) for n in gf.gears}, "meshes": meshes}
     out["ratios"] = ratios(sol)
     if sol.omega is not None and sol.plan is not None:
         out["speeds_rpm"] = {n: _r(w * 30.0 / math.pi) for n, w in sol.omega.items()}
