@@ -94,7 +94,11 @@ def meshing_panel(mg: Meshing, lang: str) -> Panel:
     the order a draftsman draws it: circles, teeth, centres, line of action, zones,
     construction, readings; hence its length)."""
     W = mg.window
-    box = shapely.box(-W, -W, W, W)
+    # the field: W either side of P, and in height only as far as the teeth go (plus 12 mm)
+    near = [z for dw in mg.wheels for z in dw.outline if abs(z.real) <= W]
+    ylo = max(-W, min(min(z.imag for z in near) - 12.0, -12.0))
+    yhi = min(W, max(max(z.imag for z in near) + 12.0, 12.0))
+    box = shapely.box(-W, ylo, W, yhi)
     rec = Recording()
     placer = Placer()
     p = mg.pair
@@ -110,18 +114,18 @@ def meshing_panel(mg: Meshing, lang: str) -> Panel:
     # centre line O1O2 and the centres
     rec.begin("centres", "centres")
     ys = [dw.centre.imag for dw in mg.wheels]
-    lo = max(min(ys) - 8, -W)
-    hi = min(max(ys + [30.0]) + 8, W)
+    lo = max(min(ys) - 8, ylo)
+    hi = min(max(ys + [30.0]) + 8, yhi)
     rec.line((0.0, -lo), (0.0, -hi), AXIS, "centre-line")
     for i, dw in enumerate(mg.wheels):
         O = dw.centre
         sign = -1 if O.imag < 0 else 1
         name = f"O_{dw.name}"
-        if abs(O.imag) <= W:
+        if ylo <= O.imag <= yhi:
             dot(rec, _pt(O), 0.9, f"centre-{dw.name}")
             rec.text(placer.place(name, _pt(O), LABEL, (1.0, 0.0)), "label", f"label-O{dw.name}")
         else:  # the centre is off the field: say where it is
-            y = sign * W
+            y = ylo if sign < 0 else yhi
             arrow(rec, (0.0, -(y - sign * 12)), (0.0, -y), THIN, f"to-O{dw.name}", "pointer")
             txt = f"{name}: {fmt(abs(O.imag), 4, lang)} мм" if lang == "ru" else f"{name}: {fmt(abs(O.imag), 4)} mm"
             rec.text(layout(txt, 3.0, -(y - sign * (6 + 5 * i)), SMALL, "start", "middle"), "label",
@@ -163,13 +167,13 @@ def meshing_panel(mg: Meshing, lang: str) -> Panel:
         dot(rec, _pt(q), 0.45, f"laid-off-{i}")
     rec.end()
     # the pressure angle at P
-    rec.text(layout(f"α_w = {fmt(math.degrees(p.alpha_w), 5, lang)}°", -W + 4.0, -W + 8.0, LABEL, "start", "middle"),
+    rec.text(layout(f"α_w = {fmt(math.degrees(p.alpha_w), 5, lang)}°", -W + 4.0, -yhi + 8.0, LABEL, "start", "middle"),
              "note", "alpha-w")
     eps = (f"ε = B_{{1}}B_{{2}}/p_{{b}} = {fmt(mg.b1b2, 4, lang)}/{fmt(mg.p_b, 4, lang)} = "
            f"{fmt(mg.contact_ratio_drawn, 3, lang)} ({tr('drawn', lang)}); "
            f"ε = {fmt(p.contact_ratio, 5, lang)} ({tr('exact', lang)})")
-    rec.text(layout(eps, -W, W + 6.0, LABEL, "start", "middle"), "note", "contact-ratio")
-    rec.polygon([(-W, -W), (W, -W), (W, W), (-W, W)], Style(stroke="#999", width=0.18, cls="field"), "field")
+    rec.text(layout(eps, -W, -ylo + 6.0, LABEL, "start", "middle"), "note", "contact-ratio")
+    rec.polygon([(-W, -yhi), (W, -yhi), (W, -ylo), (-W, -ylo)], Style(stroke="#999", width=0.18, cls="field"), "field")
     g1, g2 = p.gears
     title = f"{tr('meshing', lang)} {g1}–{g2}"
     return finish(f"meshing-{g1}-{g2}", "meshing", None, rec, title, f"M {ratio_text(mg.k * 1000.0)}")
@@ -377,9 +381,10 @@ def draw(path: str | Path, *, format: str | None = None, orientation: str | None
     lang = spec.language
     groups: list[tuple[list[Panel], str]] = []
     drawings = [meshing(p) for p in sol.drawn_pairs()]
-    for i, one in enumerate(drawings):
-        panels = [meshing_panel(one, lang)] + ([results_panel(sol, lang)] if i == 0 else [])
-        groups.append((panels, ratio_text(one.k * 1000.0)))
+    if drawings:  # the meshings and the table of the pairs share sheets as they fit
+        scales = list(dict.fromkeys(ratio_text(one.k * 1000.0) for one in drawings))
+        groups.append(([meshing_panel(one, lang) for one in drawings] + [results_panel(sol, lang)],
+                       "; ".join(scales)))
     mg = drawings[0] if drawings else None
     train: list[Panel] = []
     if sol.plan is not None:
