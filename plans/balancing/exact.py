@@ -1,0 +1,109 @@
+"""The harmonic analysis checked against exact physics.
+
+An engine whose cylinders all sit on one crank throw (a single cylinder, a V-twin) is a
+planar linkage: the crank carries the rotating masses at its pin, each cylinder is an
+RRP dyad (a massless rod, a piston carrying the reciprocating mass on a guide along the
+bank's axis).  The kinetostatics of :mod:`plans.forces` solves it group by group, with no
+gravity and the driving load a couple (which sends no force to the frame); the shaking
+force is then the sum of the forces the links put on the frame,
+−Σ F(on link from frame), an independent route to Σ Φ.  Against it, the rotating +
+first + second order force of the balancing analysis: their difference is the
+truncation of the harmonic series, m_j r ω² (λ³/4)(cos 2θ − cos 4θ) + O(λ⁵) for each
+cylinder, so it shrinks as λ³.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from plans.balancing.analysis import balance
+from plans.balancing.engine import Engine
+from plans.errors import InputError
+
+
+@dataclass(frozen=True, slots=True)
+class ExactCheck:
+    """The shaking force over a turn, exact and harmonic (engine plane, N)."""
+
+    alpha: np.ndarray  # crank angle of crank 1 from the vertical, rad
+    exact: np.ndarray  # complex: real along the vertical, imaginary along the rotation
+    harmonic: np.ndarray
+
+    @property
+    def max_error(self) -> float:
+        return float(np.max(np.abs(self.exact - self.harmonic)))
+
+    @property
+    def max_exact(self) -> float:
+        return float(np.max(np.abs(self.exact)))
+
+    def to_json(self) -> dict[str, Any]:
+        return {"positions": len(self.alpha), "max_shaking_force": self.max_exact,
+                "max_truncation_error": self.max_error,
+                "relative_truncation_error": self.max_error / self.max_exact if self.max_exact > 0 else 0.0}
+
+
+def scene_dict(engine: Engine, positions: int = 360) -> dict[str, Any]:
+    """The engine as a linkage scene (SI units), crank 1 at top dead centre at φ = 0."""
+    if not engine.is_planar:
+        raise InputError("the engine has more than one crank throw: it is not a planar linkage",
+                         file=engine.path, field="cylinders")
+    if engine.lam <= 0:
+        raise InputError("lambda = 0 (an infinitely long rod) has no linkage to compare with",
+                         file=engine.path, field="lambda")
+    n = engine.n
+    frame = 2 * n + 2
+    links: dict[str, Any] = {"1": {"name": "crank", "axis": ["O", "A"], "length": engine.r,
+                                   "mass": sum(c.m_rot for c in engine.cylinders), "centre": "A"}}
+    joints: list[dict[str, Any]] = [{"kind": "R", "links": [frame, 1], "point": "O"}]
+    for k, c in enumerate(engine.cylinders):
+        rod, piston, B = 2 * k + 2, 2 * k + 3, f"B{k + 1}"
+        links[str(rod)] = {"name": f"rod {c.name}", "axis": ["A", B], "length": engine.l}
+        links[str(piston)] = {"name": f"piston {c.name}", "axis": [B], "mass": c.m_rec}
+        joints += [{"kind": "R", "links": [1, rod], "point": "A"},
+                   {"kind": "R", "links": [rod, piston], "point": B},
+                   {"kind": "P", "links": [piston, frame], "point": B,
+                    # the bank's axis, measured from the vertical in the direction of rotation (ccw)
+                    "guide": {"link": frame, "through": "O", "angle_deg": 90.0 + c.bank_deg}}]
+    return {"format": 1, "title": engine.title, "unit": "m", "frame": frame,
+            "points": {"O": [0.0, 0.0]}, "links": links, "joints": joints,
+            "driver": {"link": 1, "omega": engine.omega, "sense": "ccw", "phi_ref_deg": 90.0,
+                       "positions": positions},
+            "outputs": ["positions", "velocity_plan", "acceleration_plan", "force_polygons"],
+            "loads": {"gravity": False, "balancing": {"kind": "moment"}}}
+
+
+def exact_check(engine: Engine, positions: int = 360) -> ExactCheck:
+    """Shaking force from the kinetostatics against the harmonic approximation."""
+    from plans.forces.polygons import analyse_forces
+    from plans.kinematics.exact import solve
+    from plans.scene.model import scene_from_dict
+
+    scene = scene_from_dict(scene_dict(engine, positions), engine.path)
+    kin = solve(scene, order=2)
+    fa = analyse_forces(scene, kin)
+    world = np.zeros(kin.n, complex)
+    for rc in fa.reactions():
+        if rc.frm == scene.frame:
+            world = world - rc.F  # the link pushes the frame with −F(on link from frame)
+    alpha = np.radians(np.asarray(kin.phi_deg, dtype=float))
+    exact = world / 1j  # world (x right, y up) -> engine plane (vertical real, ccw imaginary)
+    harmonic = balance(engine).shaking_force(alpha)
+    return ExactCheck(alpha, exact, np.asarray(harmonic))
+
+
+def truncation_table(engine: Engine, lambdas: tuple[float, ...] = (0.05, 0.1, 0.2, 0.3),
+                     positions: int = 360) -> list[tuple[float, float, float]]:
+    """(λ, max error N, error / (m_j r ω² λ³)) for the same engine at other λ."""
+    from dataclasses import replace
+
+    unit = sum(c.m_rec for c in engine.cylinders) * engine.r * engine.omega**2
+    out = []
+    for lam in lambdas:
+        err = exact_check(replace(engine, lam=lam), positions).max_error
+        out.append((lam, err, err / (unit * lam**3) if unit > 0 else math.nan))
+    return out
