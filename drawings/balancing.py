@@ -17,7 +17,7 @@ from pathlib import Path
 from plans.balancing.analysis import KINDS, Balance, Polygon, Resultant, balance
 from plans.balancing.engine import Engine, load_engine
 
-from .backend import HAIR, MAIN, THIN, Pt, Recording, Style
+from .backend import HAIR, MAIN, Pt, Recording, Style
 from .common import Placer, arrow, dot, fmt
 from .fonts import metrics
 from .panels import LABEL_SIZE, SMALL_SIZE, VECTOR_STYLES, Panel, finish
@@ -119,7 +119,7 @@ def draw(path: str | Path | Engine, *, format: str | None = None, orientation: s
 def build_panels(b: Balance, lang: str) -> list[Panel]:
     e = b.engine
     panels = [shaft_panel(e, lang), phase_panel(e, 1, lang), phase_panel(e, 2, lang)]
-    for quantity, res in (("force", b.forces), ("moment", b.moments)):
+    for _quantity, res in (("force", b.forces), ("moment", b.moments)):
         for kind in KINDS:
             R = res[kind]
             panels.append(polygon_panel(R, lang))

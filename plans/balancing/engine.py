@@ -105,7 +105,7 @@ class Engine:
         return len(self.cylinders)
 
     @property
-    def l(self) -> float:
+    def rod_length(self) -> float:
         """Connecting-rod length (m); infinite for λ = 0."""
         return self.r / self.lam if self.lam > 0 else math.inf
 

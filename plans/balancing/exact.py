@@ -62,7 +62,7 @@ def scene_dict(engine: Engine, positions: int = 360) -> dict[str, Any]:
     joints: list[dict[str, Any]] = [{"kind": "R", "links": [frame, 1], "point": "O"}]
     for k, c in enumerate(engine.cylinders):
         rod, piston, B = 2 * k + 2, 2 * k + 3, f"B{k + 1}"
-        links[str(rod)] = {"name": f"rod {c.name}", "axis": ["A", B], "length": engine.l}
+        links[str(rod)] = {"name": f"rod {c.name}", "axis": ["A", B], "length": engine.rod_length}
         links[str(piston)] = {"name": f"piston {c.name}", "axis": [B], "mass": c.m_rec}
         joints += [{"kind": "R", "links": [1, rod], "point": "A"},
                    {"kind": "R", "links": [rod, piston], "point": B},
