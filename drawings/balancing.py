@@ -68,8 +68,8 @@ _ABS = {("force", "rotating"): "R_r", ("force", "first_order"): "R_I", ("force",
         ("moment", "rotating"): "M_r", ("moment", "first_order"): "M_I", ("moment", "second_order"): "M_{II}"}
 CLOSING = VECTOR_STYLES["closing"]
 AXIS = Style(width=0.18, stroke="#333", dash=(6.0, 1.0, 1.0, 1.0), cls="axis")
-POLY_MM = 80.0  # the largest polygon extent on the sheet, mm
-STAR_R = 35.0  # radius of a phase diagram, mm
+POLY_MM = 100.0  # the largest polygon extent on the sheet, mm
+STAR_R = 40.0  # radius of a phase diagram, mm
 
 
 def _deg(a: float) -> float:
@@ -149,14 +149,22 @@ def shaft_panel(e: Engine, lang: str) -> Panel:
         y = -s_r * e.r * math.cos(c.crank)
         rec.polyline([(xc - 3, 0.0), (xc - 3, y), (xc + 3, y), (xc + 3, 0.0)], MAIN, f"shaft-crank-{c.number}")
         dot(rec, (xc, y), 0.8)
-        lab = layout(f"{c.name}: {fmt(math.degrees(c.crank) % 360, 4, lang)}°", xc, -s_r * e.r - 4.0,
-                     SMALL_SIZE + 0.5, "middle", "bottom")
-        rec.text(lab, "label", f"shaft-label-{c.number}")
+    names: dict[float, list[str]] = {}  # cylinders in one plane (a V engine) share a label
+    for c, xc in zip(e.cylinders, x, strict=True):
+        names.setdefault(round(xc, 6), []).append(f"{c.name}: {fmt(_deg(c.crank), 4, lang)}°")
+    for xc, texts in names.items():
+        lab = layout(", ".join(texts), xc, -s_r * e.r - 4.0, SMALL_SIZE + 0.5, "middle", "bottom")
+        rec.text(lab, "label", f"shaft-label-{xc:g}")
     xr = sign * (e.reference_z - z0) * s_z
     rec.line((xr, -s_r * e.r - 2), (xr, s_r * e.r + 6), Style(width=0.25, stroke="#1f4e9c", dash=(3, 1.5)),
              "shaft-ref")
     rec.text(layout(_t("ref", lang), xr + 1.0, s_r * e.r + 6, SMALL_SIZE, "start", "top"), "note", "shaft-ref-label")
+    arms: dict[float, list[int]] = {}
     for c, xc in zip(e.cylinders, x, strict=True):
+        arms.setdefault(round(xc, 6), []).append(c.number)
+    for c, xc in zip(e.cylinders, x, strict=True):
+        if arms[round(xc, 6)][0] != c.number:
+            continue
         l_dim = (c.z - e.reference_z) / e.arm_unit
         rec.text(layout(f"l_{c.number} = {fmt(l_dim, 3, lang)}", xc, s_r * e.r + 2.0, SMALL_SIZE, "middle", "top"),
                  "note", f"shaft-arm-{c.number}")
@@ -179,6 +187,9 @@ def phase_panel(e: Engine, order: int, lang: str) -> Panel:
             a, b = _P(cmath.exp(1j * g), R + 8), _P(-cmath.exp(1j * g), 8.0)
             rec.line(b, a, Style(width=0.25, stroke="#6a3d9a", dash=(4, 1.5)), f"{pid}-bank-{math.degrees(g):g}")
             placer.add_line([b, a])
+            who = ", ".join(c.name for c in e.cylinders if abs(c.bank - g) < 1e-9)
+            lab = placer.place(who, a, SMALL_SIZE + 0.3, prefer=(a[0] / (R + 8), a[1] / (R + 8)), gap=0.8)
+            rec.text(lab, "label", f"{pid}-bank-label-{math.degrees(g):g}", fill="#6a3d9a")
     rec.circle((0.0, 0.0), R, HAIR, f"{pid}-circle")
     tips: dict[int, list[str]] = {}
     for c in e.cylinders:
@@ -200,8 +211,9 @@ def phase_panel(e: Engine, order: int, lang: str) -> Panel:
     tx, ty = math.sin(a1), -math.cos(a1)
     rec.polygon([(end[0] - tx * 2.4, end[1] - ty * 2.4), (end[0] - ty * 0.7, end[1] + tx * 0.7),
                  (end[0] + ty * 0.7, end[1] - tx * 0.7)], Style(stroke=None, width=0, fill="#000"))
-    rec.text(layout("ω" if order == 1 else "2ω", -R * 0.62, -R * 0.62, SMALL_SIZE + 0.5, "middle", "middle"),
-             "label", f"{pid}-omega-label")
+    lab = placer.place("ω" if order == 1 else "2ω", (-R * 0.45 * 0.94, -R * 0.45 * 0.94), SMALL_SIZE + 0.5,
+                       prefer=(-0.7, -0.7), gap=1.0)
+    rec.text(lab, "label", f"{pid}-omega-label")
     return finish(pid, "phase", None, rec, _t(f"phase{order}", lang))
 
 
@@ -304,7 +316,7 @@ def grid_panel(pid: str, title: str, header: Sequence[str], rows: Sequence[Seque
 def grid_recording(pid: str, header: Sequence[str], rows: Sequence[Sequence[str]], left: int = 1,
                    caption: str | None = None) -> Recording:
     """A ruled table: header row, body rows; the first ``left`` columns left-aligned."""
-    size = 3.2
+    size = 3.5
     widths = [0.0] * len(header)
     for cells in [list(header)] + [list(r) for r in rows]:
         for i, t in enumerate(cells):
