@@ -61,12 +61,18 @@ _W: dict[str, tuple[str, str]] = {
     "N": ("Н", "N"),
     "N*m": ("Н·м", "N·m"),
     "err": ("ошибка ряда", "truncation error"),
+    "actual": ("действительный", "actual"),
+    "cw_first": ("силы и моменты ПДМ I порядка противовесом не уравновешиваются (балансирные валы)",
+                 "first-order reciprocating forces and moments: not by a counterweight (balancing shafts)"),
+    "cw_second": ("силы и моменты ПДМ II порядка противовесом не уравновешиваются (валы с 2ω)",
+                  "second-order reciprocating forces and moments: not by a counterweight (shafts at 2ω)"),
 }
 _SYM = {("force", "rotating"): "r_r", ("force", "first_order"): "r_I", ("force", "second_order"): "r_{II}",
         ("moment", "rotating"): "m_r", ("moment", "first_order"): "m_I", ("moment", "second_order"): "m_{II}"}
 _ABS = {("force", "rotating"): "R_r", ("force", "first_order"): "R_I", ("force", "second_order"): "R_{II}",
         ("moment", "rotating"): "M_r", ("moment", "first_order"): "M_I", ("moment", "second_order"): "M_{II}"}
 CLOSING = VECTOR_STYLES["closing"]
+ACTUAL = Style(width=0.35, stroke="#b3261e", dash=(2.5, 1.2))
 AXIS = Style(width=0.18, stroke="#333", dash=(6.0, 1.0, 1.0, 1.0), cls="axis")
 POLY_MM = 100.0  # the largest polygon extent on the sheet, mm
 STAR_R = 40.0  # radius of a phase diagram, mm
@@ -281,6 +287,13 @@ def polygon_panel(R: Resultant, lang: str) -> Panel:
             text = f"{sym}{sub} = {fmt(abs(z), 4, lang)}, {fmt(_deg(math.atan2(z.imag, z.real)), 4, lang)}°"
         lab = placer.place(text, ((o[0] + end[0]) / 2, (o[1] + end[1]) / 2), SMALL_SIZE + 0.6, gap=1.5)
         rec.text(lab, "closing-label", f"{tag}-closing-label", fill=CLOSING.stroke or "#000")
+        if R.quantity == "moment" and not poly.closed:
+            # the seed's last step: the turned closing vector turned back 90° clockwise is the moment
+            act = _P(pts[-1] * -1j, s, o)
+            arrow(rec, o, act, ACTUAL, f"{tag}-actual", "vector actual")
+            placer.add_line([o, act])
+            lab = placer.place(f"{sym}{sub} ({_t('actual', lang)})", act, SMALL_SIZE + 0.3, gap=1.0)
+            rec.text(lab, "note", f"{tag}-actual-label", fill=ACTUAL.stroke or "#000")
         if poly.branch:
             lab = layout(_t(poly.branch, lang), o[0], -s * 0 + 6.0 + max(_P(z, s, o)[1] for z in pts),
                          SMALL_SIZE, "start", "top")
@@ -404,5 +417,36 @@ def counterweights_panel(b: Balance, lang: str) -> Panel:
     rows = [[_t(c.of, lang), fmt(c.plane_z, 4, lang), fmt(c.mass_radius, 4, lang), fmt(c.mass, 4, lang),
              fmt(c.radius, 4, lang), fmt(_deg(c.angle), 4, lang)] for c in b.counterweights]
     if not rows:
-        rows = [[_t("none", lang), "—", "—", "—", "—", "—"]]
-    return grid_panel("counterweights", _t("cw", lang), head, rows)
+        return grid_panel("counterweights", _t("cw", lang), head, [[_t("none", lang), "—", "—", "—", "—", "—"]],
+                          _cw_note(b, lang))
+    # an end view: crank 1 up, each counterweight's m·r as a vector at its angle
+    rec = Recording()
+    placer = Placer()
+    Rr = 22.0
+    rec.circle((0.0, 0.0), Rr, HAIR, "cw-circle")
+    rec.line((0.0, 0.0), (0.0, -Rr), Style(width=0.7), "cw-crank1")
+    placer.add_line([(0.0, 0.0), (0.0, -Rr)])
+    rec.text(placer.place("1", (0.0, -Rr), LABEL_SIZE, prefer=(0.0, -1.0), gap=0.8), "label", "cw-crank1-label")
+    big = max(c.mass_radius for c in b.counterweights)
+    for k, c in enumerate(b.counterweights):
+        tip = _P(cmath.exp(1j * c.angle) * (Rr * c.mass_radius / big), 1.0)
+        style = CLOSING if c.of == "rotating" else Style(width=0.5, stroke="#1f4e9c")
+        arrow(rec, (0.0, 0.0), tip, style, f"cw-{k}", "vector counterweight")
+        placer.add_line([(0.0, 0.0), tip])
+        lab = placer.place(f"{_t(c.of, lang)}, z = {fmt(c.plane_z, 4, lang)}", tip, SMALL_SIZE + 0.3, gap=1.0)
+        rec.text(lab, "label", f"cw-{k}-label", fill=style.stroke or "#000")
+    tab = grid_recording("cw-table", head, rows)
+    x0 = rec.bbox()[2] + 10.0
+    y0 = rec.bbox()[1]
+    bx = tab.bbox()
+    rec.prims.extend(tab.moved(x0 - bx[0], y0 - bx[1]).prims)
+    return finish("counterweights", "table", None, rec, _t("cw", lang), _cw_note(b, lang))
+
+
+def _cw_note(b: Balance, lang: str) -> str | None:
+    """What a counterweight cannot take, in the sheet's language."""
+    out = []
+    for t in b.notes:
+        key = "cw_first" if t.startswith("first-order") else "cw_second" if t.startswith("second-order") else ""
+        out.append(_t(key, lang) if key else t)
+    return "; ".join(out) or None

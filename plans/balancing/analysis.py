@@ -293,6 +293,9 @@ def _counterweights(engine: Engine, forces: dict[str, Resultant], moments: dict[
         if note:
             notes.append(f"{kind.replace('_', '-')}: {note}")
         out += [Counterweight(kind, z, abs(U), engine.cw_radius, math.atan2(U.imag, U.real)) for z, U in ws]
+    if forces["second_order"].amplitude > 0 or moments["second_order"].amplitude > 0:
+        notes.append("second-order reciprocating force or moment turns at twice the crank speed: no "
+                     "counterweight on the crankshaft takes it (balancing shafts at 2 omega can)")
     return tuple(out), tuple(notes)
 
 
