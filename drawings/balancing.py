@@ -401,13 +401,14 @@ def results_panel(b: Balance, lang: str) -> Panel:
                          _t(unit, lang), fmt(_deg(R.phase), 4, lang) if R.amplitude > 0 else "—"])
     note = None
     e = b.engine
-    if e.is_planar and e.lam > 0:
+    if e.lam > 0:
         from plans.balancing.exact import exact_check
 
         chk = exact_check(e)
         note = (f"{_t('exact', lang)}: max |R| = {fmt(chk.max_exact, 5, lang)} {_t('N', lang)}, "
-                f"{_t('err', lang)} {fmt(chk.max_error, 3, lang)} {_t('N', lang)} "
-                f"({fmt(100 * chk.max_error / chk.max_exact, 2, lang)} %)")
+                f"{_t('err', lang)} {fmt(chk.max_error, 3, lang)} {_t('N', lang)}; "
+                f"max |M| = {fmt(chk.max_moment, 5, lang)} {_t('N*m', lang)}, "
+                f"{_t('err', lang)} {fmt(chk.max_moment_error, 3, lang)} {_t('N*m', lang)}")
     return grid_panel("results", _t("results", lang), head, rows, note)
 
 

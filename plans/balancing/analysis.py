@@ -178,6 +178,10 @@ class Balance:
         """Rotating + first + second order force at crank angle α (engine plane, N)."""
         return sum(self.forces[k].at(alpha) for k in KINDS)
 
+    def turned_moment(self, alpha: Any) -> Any:
+        """Rotating + first + second order turned moment at crank angle α (N·m)."""
+        return sum(self.moments[k].at(alpha) for k in KINDS)
+
     def to_json(self) -> dict[str, Any]:
         e = self.engine
         return {

@@ -24,14 +24,15 @@ def _balance(args: argparse.Namespace) -> int:
     b = balance(engine)
     data = b.to_json()
     text = report(b)
-    if engine.is_planar and engine.lam > 0:
+    if engine.lam > 0:
         from plans.balancing.exact import exact_check
 
         chk = exact_check(engine)
         data["exact_check"] = chk.to_json()
-        text += (f"\nexact check (kinetostatics, {len(chk.alpha)} positions): largest shaking force "
-                 f"{chk.max_exact:.6g} N, harmonic truncation error {chk.max_error:.6g} N "
-                 f"({100 * chk.max_error / chk.max_exact if chk.max_exact else 0.0:.3g} %)")
+        how = "the engine as one linkage" if chk.linkages == 1 else f"{chk.linkages} linkages, one per cylinder"
+        text += (f"\nexact check (kinetostatics of {how}, {len(chk.alpha)} positions): largest shaking force "
+                 f"{chk.max_exact:.6g} N, harmonic truncation error {chk.max_error:.6g} N; largest shaking "
+                 f"moment {chk.max_moment:.6g} N*m, truncation error {chk.max_moment_error:.6g} N*m")
     if args.json == "-":
         sys.stdout.write(dumps(data))
         return 0

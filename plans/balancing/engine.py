@@ -179,7 +179,11 @@ def engine_from_dict(data: dict[str, Any], path: str = "<engine>") -> Engine:
     if data.get("format") != 1:
         raise rd.fail("format", "expected format = 1")
     if data.get("kind") != "engine":
-        raise rd.fail("kind", f"expected kind = \"engine\", got {data.get('kind')!r}")
+        from plans.kinds import command_for
+
+        kind = data.get("kind", "linkage")
+        hint = command_for(kind) if isinstance(kind, str) else ""
+        raise rd.fail("kind", f"this is a {kind!r} file, not an engine; {hint}expected kind = \"engine\"")
     check_keys(data, TOP_KEYS, file=path, where="")
     unit = data.get("unit", "mm")
     if unit not in LENGTH_UNITS:
