@@ -10,6 +10,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from plans.balancing.analysis import balance
 from plans.balancing.engine import engine_from_dict, load_engine
@@ -347,3 +349,25 @@ def test_every_engine_sample_solves_and_draws(path, tmp_path):
     assert "nan" not in svg.lower().replace("nanometer", "")
     assert plans_main(["draw", str(path), "-o", str(tmp_path / "out")]) == 0
     assert list((tmp_path / "out").glob("*.svg"))
+
+
+@settings(max_examples=25, derandomize=True, deadline=None)
+@given(st.lists(st.tuples(st.floats(0, 360), st.floats(0.1, 5.0), st.floats(0.1, 5.0)), min_size=1, max_size=6),
+       st.floats(-200, 400))
+def test_counterweights_balance_the_rotating_masses(cyls, ref):
+    """Any inline engine: after the counterweights the rotating force and moment are gone."""
+    data = {"format": 1, "kind": "engine", "r": 50, "lambda": 0.25, "omega": 100, "reference_z": ref,
+            "cylinders": [{"crank_deg": a, "z": 80.0 * k, "m_rot": mr, "m_rec": mj}
+                          for k, (a, mr, mj) in enumerate(cyls)]}
+    e = engine_from_dict(data, "random")
+    b = balance(e)
+    S = sum(c.m_rot * e.r * np.exp(1j * c.crank) for c in e.cylinders)
+    T = sum(c.m_rot * e.r * (c.z - e.reference_z) * np.exp(1j * c.crank) for c in e.cylinders)
+    cws = [w for w in b.counterweights if w.of == "rotating"]
+    S += sum(w.mass_radius * np.exp(1j * w.angle) for w in cws)
+    T += sum(w.mass_radius * (w.plane_z - e.reference_z) * np.exp(1j * w.angle) for w in cws)
+    scale = sum(c.m_rot for c in e.cylinders) * e.r
+    assert abs(S) < 1e-9 * scale
+    if len(cyls) > 1:
+        assert abs(T) < 1e-9 * scale
+    assert len(cws) <= (2 if len(cyls) > 1 else 1)
