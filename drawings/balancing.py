@@ -74,8 +74,8 @@ _ABS = {("force", "rotating"): "R_r", ("force", "first_order"): "R_I", ("force",
 CLOSING = VECTOR_STYLES["closing"]
 ACTUAL = Style(width=0.35, stroke="#b3261e", dash=(2.5, 1.2))
 AXIS = Style(width=0.18, stroke="#333", dash=(6.0, 1.0, 1.0, 1.0), cls="axis")
-POLY_MM = 100.0  # the largest polygon extent on the sheet, mm
-STAR_R = 40.0  # radius of a phase diagram, mm
+POLY_MM = 130.0  # the largest polygon extent on the sheet, mm
+STAR_R = 50.0  # radius of a phase diagram, mm
 
 
 def _deg(a: float) -> float:
@@ -142,8 +142,8 @@ def shaft_panel(e: Engine, lang: str) -> Panel:
     plane at its z, the cylinder numbers, the reference plane and the arms l_i."""
     zs = [c.z for c in e.cylinders] + [e.reference_z]
     span = max(max(zs) - min(zs), e.r)
-    s_z = 200.0 / span  # mm per m along the shaft
-    s_r = 25.0 / e.r  # mm per m of crank radius
+    s_z = 260.0 / span  # mm per m along the shaft
+    s_r = 30.0 / e.r  # mm per m of crank radius
     # cylinder 1 on the left, whichever way z runs
     sign = 1.0 if e.cylinders[0].z <= e.cylinders[-1].z else -1.0
     z0 = min(zs) if sign > 0 else max(zs)
