@@ -369,11 +369,14 @@ def grid_recording(pid: str, header: Sequence[str], rows: Sequence[Sequence[str]
 
 def table_recording(R: Resultant, poly: Polygon, lang: str) -> Recording:
     """The seed's analytic table beside its polygon: β_i, cos β_i, sin β_i, p_i, (l_i,)
-    p_i l_i cos β_i, p_i l_i sin β_i and the sums (the closing vector's projections)."""
+    p_i l_i cos β_i, p_i l_i sin β_i and the sums (the closing vector's projections), and
+    each vector in N (N·m) with the closing vector's length in the last row."""
     moment = R.quantity == "moment"
     b = "β" if poly.order == 1 else "2β"
     head = ["№", f"{b}_i, °", f"cos {b}_i", f"sin {b}_i", "p_i"]
     head += ["l_i", f"p_i l_i cos {b}_i", f"p_i l_i sin {b}_i"] if moment else [f"p_i cos {b}_i", f"p_i sin {b}_i"]
+    unit = _t("N*m" if moment else "N", lang)
+    head.append(f"{'M_i' if moment else 'P_i'}, {unit}")
     rows = []
     for r in poly.rows:
         c, s = math.cos(r.angle), math.sin(r.angle)
@@ -381,10 +384,11 @@ def table_recording(R: Resultant, poly: Polygon, lang: str) -> Recording:
                  fmt(r.p, 3, lang)]
         if moment:
             cells.append(fmt(r.l, 3, lang))
-        cells += [fmt(r.p * r.l * c, 3, lang), fmt(r.p * r.l * s, 3, lang)]
+        cells += [fmt(r.p * r.l * c, 3, lang), fmt(r.p * r.l * s, 3, lang), fmt(r.p * r.l * poly.unit, 5, lang)]
         rows.append(cells)
     z = poly.closing
-    rows.append(["Σ"] + [""] * (len(head) - 3) + [fmt(z.real, 3, lang), fmt(z.imag, 3, lang)])
+    total = 0.0 if poly.closed else abs(z) * poly.unit
+    rows.append(["Σ"] + [""] * (len(head) - 4) + [fmt(z.real, 3, lang), fmt(z.imag, 3, lang), fmt(total, 5, lang)])
     tag = f"-{poly.branch}" if poly.branch else ""
     caption = None if not poly.branch else _t(poly.branch, lang)
     return grid_recording(f"table-{R.quantity}-{R.kind}{tag}", head, rows, caption=caption)

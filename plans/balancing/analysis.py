@@ -329,9 +329,9 @@ def _solve_planes(engine: Engine, S: complex, T: complex, ref: float
 # --------------------------------------------------------------------------- text
 
 
-def _n(x: float, width: int = 9) -> str:
+def _n(x: float, width: int = 9, digits: int = 4) -> str:
     x = 0.0 if abs(x) < 5e-13 else x
-    return f"{x:{width}.4g}"
+    return f"{x:{width}.{digits}g}"
 
 
 def table_lines(poly: Polygon) -> list[str]:
@@ -340,16 +340,18 @@ def table_lines(poly: Polygon) -> list[str]:
     angle = "beta_i" if poly.order == 1 else "2beta_i"
     head = f"  {'No':>3} {angle:>9} {'cos':>9} {'sin':>9} {'p_i':>9}"
     head += f" {'l_i':>9} {'p l cos':>9} {'p l sin':>9}" if moment else f" {'p cos':>9} {'p sin':>9}"
+    head += f" {'N*m' if moment else 'N':>11}"
     lines = [head]
     for r in poly.rows:
         c, s = math.cos(r.angle), math.sin(r.angle)
         line = f"  {r.cylinder:>3} {_n(_deg(r.angle))} {_n(c)} {_n(s)} {_n(r.p)}"
         line += f" {_n(r.l)}" if moment else ""
-        line += f" {_n(r.p * r.l * c)} {_n(r.p * r.l * s)}"
+        line += f" {_n(r.p * r.l * c)} {_n(r.p * r.l * s)} {_n(r.p * r.l * poly.unit, 11, 7)}"
         lines.append(line)
     z = poly.closing
     pad = 10 * (5 if moment else 4)
-    lines.append(f"  {'sum':>3}{' ' * (pad - 3)} {_n(z.real)} {_n(z.imag)}")
+    total = 0.0 if poly.closed else abs(z) * poly.unit
+    lines.append(f"  {'sum':>3}{' ' * (pad - 3)} {_n(z.real)} {_n(z.imag)} {_n(total, 11, 7)}")
     return lines
 
 
