@@ -4,11 +4,12 @@ found as a draftsman finds them, by phase diagrams and vector polygons.
 Owns: :mod:`.engine` (the engine file, ``kind = "engine"``), :mod:`.analysis` (phase
 diagrams of first and second order, polygons of the rotating and reciprocating inertia
 forces and of their moments, closing vectors, analytic tables, counterweights),
-:mod:`.exact` (the check against exact physics: the shaking force of the same engine
-built as a planar linkage and solved by the kinetostatics of :mod:`plans.forces`), and
+:mod:`.exact` (the check against exact physics: the shaking force and moment of the same
+engine built as planar linkages, one per crank throw, and solved by the kinetostatics of
+:mod:`plans.forces`), and
 :mod:`.cli` (``plans balance``).
 
-May import :mod:`plans.errors`, :mod:`plans.io`, :mod:`plans.units` and, in
+May import :mod:`plans.errors`, :mod:`plans.io`, :mod:`plans.units`, :mod:`plans.kinds` and, in
 :mod:`.exact` only, :mod:`plans.scene`, :mod:`plans.kinematics` and :mod:`plans.forces`.
 Never imports ``drawings``.  Read first: :func:`plans.balancing.analysis.balance`.
 
