@@ -41,28 +41,35 @@ class ExactCheck:
     moment_exact: np.ndarray
     moment_harmonic: np.ndarray
     linkages: int  # planar linkages solved (1: the engine is one; else one per cylinder)
+    force_ref: float = 0.0  # Σ m r ω² (N): below 1e-9 of it a force is round-off
+    moment_ref: float = 0.0  # the same times the longest arm (N·m)
 
     @property
     def max_error(self) -> float:
-        return float(np.max(np.abs(self.exact - self.harmonic)))
+        return _clean(float(np.max(np.abs(self.exact - self.harmonic))), self.force_ref)
 
     @property
     def max_exact(self) -> float:
-        return float(np.max(np.abs(self.exact)))
+        return _clean(float(np.max(np.abs(self.exact))), self.force_ref)
 
     @property
     def max_moment_error(self) -> float:
-        return float(np.max(np.abs(self.moment_exact - self.moment_harmonic)))
+        return _clean(float(np.max(np.abs(self.moment_exact - self.moment_harmonic))), self.moment_ref)
 
     @property
     def max_moment(self) -> float:
-        return float(np.max(np.abs(self.moment_exact)))
+        return _clean(float(np.max(np.abs(self.moment_exact))), self.moment_ref)
 
     def to_json(self) -> dict[str, Any]:
         return {"positions": len(self.alpha), "linkages": self.linkages,
                 "max_shaking_force": self.max_exact, "max_truncation_error": self.max_error,
                 "relative_truncation_error": self.max_error / self.max_exact if self.max_exact > 0 else 0.0,
                 "max_shaking_moment": self.max_moment, "max_moment_truncation_error": self.max_moment_error}
+
+
+def _clean(x: float, ref: float) -> float:
+    """Round-off of a vanishing quantity shown as 0."""
+    return 0.0 if x <= 1e-9 * ref else x
 
 
 def scene_dict(engine: Engine, positions: int = 360, crank_deg: float = 0.0) -> dict[str, Any]:
@@ -133,8 +140,10 @@ def exact_check(engine: Engine, positions: int = 360) -> ExactCheck:
             force += f
             moment += (c.z - engine.reference_z) * f
         count = engine.n
+    fref = sum(c.m_rot + c.m_rec for c in engine.cylinders) * engine.r * engine.omega**2
+    arm = max([abs(c.z - engine.reference_z) for c in engine.cylinders] + [engine.r])
     return ExactCheck(alpha, force, np.asarray(b.shaking_force(alpha)), moment,
-                      np.asarray(b.turned_moment(alpha)), count)
+                      np.asarray(b.turned_moment(alpha)), count, fref, fref * arm)
 
 
 def _single(engine: Engine, c: Cylinder) -> Engine:
