@@ -241,4 +241,10 @@ def _command(args: argparse.Namespace) -> int:
     return 0
 
 
-__all__ = ["Demo", "WORDS", "page", "register"]
+__all__ = ["Demo", "WORDS", "page", "page_figures", "register"]
+
+
+if __name__ == "__main__":  # ``python -m drawings.demo SCENE``: the page's figures as JSON (for the bench)
+    import sys
+
+    print(json.dumps(page_figures(sys.argv[1] if len(sys.argv) > 1 else "samples/v_engine.toml")))

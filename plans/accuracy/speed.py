@@ -10,6 +10,7 @@ needs a missing peer says "skipped" and why.
 from __future__ import annotations
 
 import functools
+import json
 import math
 import subprocess
 import sys
@@ -209,6 +210,34 @@ def start_up_goals(samples: Path) -> list[Goal]:
     return out
 
 
+#: The demonstration page of the V-engine, 72 positions a turn.
+PAGE_BYTES, PAGE_BUILD, PAGE_FIRST_STEP = 1.5e6, 2.0, 1.0
+
+
+def page_goals(samples: Path) -> list[Goal]:
+    """The demonstration page's size, build time and first step in headless Chromium, measured
+    by the renderer in a fresh interpreter (the engine never imports it)."""
+    root = Path(__file__).resolve().parents[2]
+    p = subprocess.run([sys.executable, "-m", "drawings.demo", str(samples / "v_engine.toml")], cwd=root,
+                       capture_output=True, text=True)
+    if p.returncode != 0:
+        why = (p.stderr.strip().splitlines() or [f"exit status {p.returncode}"])[-1]
+        return [Goal("demonstration page", f"skipped: {why}", math.nan, None)]
+    fig = json.loads(p.stdout)
+    out = [Goal(f"V-engine demonstration page, 72 positions: ≤ {PAGE_BYTES / 1e6:g} MB", f"{fig['bytes'] / 1e6:.3f} MB",
+                fig["bytes"] / PAGE_BYTES, fig["bytes"] <= PAGE_BYTES),
+           Goal(f"the page built in ≤ {PAGE_BUILD:g} s", f"{fig['build_s']:.3f} s", fig["build_s"] / PAGE_BUILD,
+                fig["build_s"] <= PAGE_BUILD)]
+    first = fig.get("first_step_s")
+    if first is None:
+        out.append(Goal(f"first step visible in headless Chromium in ≤ {PAGE_FIRST_STEP:g} s",
+                        "skipped: Chromium or Playwright not installed", math.nan, None))
+    else:
+        out.append(Goal(f"first step visible in headless Chromium in ≤ {PAGE_FIRST_STEP:g} s", f"{first:.3f} s",
+                        first / PAGE_FIRST_STEP, first <= PAGE_FIRST_STEP))
+    return out
+
+
 def measure(samples: Path, log: Callable[[str], None] | None = None, with_peers: bool = True) -> dict[str, Any]:
     """Every goal, and the peers' runs behind them (JSON-ready)."""
     log = log or (lambda s: None)
@@ -220,6 +249,8 @@ def measure(samples: Path, log: Callable[[str], None] | None = None, with_peers:
     goals += structure_goal()
     goals += forces_goal(cases)
     goals += start_up_goals(samples)
+    log("goals: demonstration page ...")
+    goals += page_goals(samples)
     return {"goals": [asdict(g) for g in goals],
             "peers": [{k: v for k, v in asdict(r).items() if k != "runner"} for r in runs]}
 
