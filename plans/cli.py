@@ -28,6 +28,7 @@ def build_parser() -> argparse.ArgumentParser:
     s = sub.add_parser("solve", help="solve a scene: table per position, JSON")
     s.add_argument("scene", help="scene file (TOML)")
     s.add_argument("--json", metavar="PATH", help="write results as JSON ('-' for stdout)")
+    s.add_argument("--csv", metavar="PATH", help="write the tables over the positions as CSV ('-' for stdout)")
     s.add_argument("--protocol", action="store_true", help="print the construction protocol")
     s.add_argument("--quiet", action="store_true", help="no table on stdout")
     s.set_defaults(func=_solve)
@@ -49,6 +50,14 @@ def register_commands(sub: argparse._SubParsersAction, modules: Sequence[str]) -
 
 def _solve(args: argparse.Namespace) -> int:
     sol = solve_scene(load_scene(args.scene))
+    if getattr(args, "csv", None):
+        from plans.cycle.results import cycle_csv
+
+        text = cycle_csv(sol.cycle) if sol.cycle is not None else ""
+        if args.csv == "-":
+            sys.stdout.write(text)
+            return 0
+        atomic_write(args.csv, text)
     if args.json == "-":
         sys.stdout.write(dumps(to_json(sol)))
         return 0

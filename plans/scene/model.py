@@ -26,6 +26,8 @@ OUTPUTS: dict[str, tuple[str, ...]] = {
     "acceleration_plan": ("velocity_plan",),
     "force_polygons": ("acceleration_plan",),
     "lever": ("acceleration_plan",),
+    "diagrams": ("positions",),  # kinematic diagrams over the cycle ([diagrams], plans.cycle)
+    "dynamics": ("positions",),  # machine dynamics and the flywheel ([dynamics], plans.cycle)
 }
 
 #: F_ij conventions: seed 003 (force on link i from link j) or seed 000 (of link i on link j).
