@@ -129,4 +129,8 @@ def draw(scene: Scene | str | Path, *, format: str | None = None, orientation: s
     spec = sheet_spec(sc.raw, sc.path, sc.title, format=format, orientation=orientation, language=language)
     panels, mu_l = build_panels(sc, spec)
     sheets = compose(panels, spec, ratio_text(mu_l), sc.path)
+    if sc.wants("diagrams") or sc.wants("dynamics"):  # the cycle's sheets follow
+        from .cycle import extend
+
+        sheets = extend(sc, spec, sheets, ratio_text(mu_l))
     return Drawing(sc, spec, tuple(panels), tuple(sheets), mu_l)

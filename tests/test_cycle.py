@@ -255,3 +255,52 @@ def test_a_flywheel_of_a_scene_with_no_loads(tmp_path, capsys):
     assert main(["solve", str(bad)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "loads" in err[0]
+
+
+def test_cycle_check_of_the_seed_tables(tmp_path):
+    from plans.cycle.check import check_cycle
+
+    rep = check_cycle(ROOT / "samples" / "checks" / "dynamics_seed004.toml")
+    assert len(rep.items) == 14 * 20 - 56  # every figure of tables 1.1–1.4
+    assert rep.passed > 0.85 * len(rep.items)
+    by = {(i.quantity, i.phi_deg): i for i in rep.items}
+    assert by[("pc", 181.851)].verdict == "fail"  # position 7 drawn off the dead centre
+    assert by[("M_pr", 270.0)].verdict == "pass" and by[("I_pr", 90.0)].verdict == "pass"
+    out = tmp_path / "r.json"
+    assert main(["check", str(ROOT / "samples" / "checks" / "dynamics_seed004.toml"), "--json", str(out),
+                 "--quiet"]) == 0
+    assert json.loads(out.read_text())["summary"]["items"] == len(rep.items)
+
+
+def test_cycle_check_passes_a_student_who_wrote_exact_figures(tmp_path):
+    """Figures from finite differences of exact positions (not from the code under test)."""
+    from plans.cycle.check import check_cycle
+
+    scene = load_scene(SEED)
+    phis = np.array([15.0, 100.0, 250.0])
+    dr, _ = _fd_velocity(scene, phis)
+    w = abs(scene.driver.omega)
+    vC = np.abs(dr(3, 0j)) * w
+    vB = np.abs(dr(1, scene.links[1].points["B"])) * w
+    mu = 125.0
+    def arr(a):
+        return json.dumps([float(x) for x in a])
+
+    text = (f'format = 1\nstudent = "synthetic"\nscene = "{SEED}"\n[cycle]\nphi_deg = {arr(phis)}\n'
+            f'velocity_scale = {{ mu = {mu} }}\n[cycle.measured]\npc = {arr(vC * mu)}\npb = {arr(vB * mu)}\n'
+            f'[cycle.values]\nv_C = {arr(vC)}\n')
+    f = tmp_path / "c.toml"
+    f.write_text(text)
+    rep = check_cycle(f)
+    assert len(rep.items) == 9 and rep.failed == 0
+    assert max(i.error_pct for i in rep.items) < 1e-4
+
+
+def test_cycle_check_bad_row_names_the_key(tmp_path):
+    from plans.cycle.check import check_cycle
+
+    f = tmp_path / "c.toml"
+    f.write_text(f'format = 1\nscene = "{SEED}"\n[cycle]\nphi_deg = [0, 30]\n[cycle.values]\nI_pr = [1]\n')
+    with pytest.raises(InputError) as exc:
+        check_cycle(f)
+    assert exc.value.field == "cycle.values.I_pr"

@@ -1491,6 +1491,10 @@ def run(args: argparse.Namespace) -> int:
         if not target.exists():
             _err(f"{target}: no such file or folder")
             return 2
+        from plans.cycle import check as cycle_check  # cycle tables (a dynamics sheet)
+
+        if cycle_check.is_cycle_check(target):
+            return cycle_check.run_file(target, args)
         report = check_file(target)
         if args.json == "-":
             sys.stdout.write(dumps(report.to_json()))

@@ -63,7 +63,8 @@ class Diagrams:
     spec: DiagramsSpec
     omega: float  # |ω1|, rad/s
     mu_phi: float  # mm per rad
-    pole_mm: float
+    pole_mm: float  # H_1, of the differentiation of s into v
+    pole2_mm: float  # H_2, of v into a
     nodes_deg: R  # the positions, closing one included
     diagrams: tuple[Diagram, ...]
 
@@ -106,7 +107,7 @@ def _motion(scene: Scene, kin: Kinematics, subject: str, is_link: bool, w: float
     return s, speed, tang, "m"
 
 
-def _pole(mu_y: float, mu_phi: float, w: float, top: float, target: float = 40.0) -> float:
+def _pole(mu_y: float, mu_phi: float, w: float, top: float, target: float = 45.0) -> float:
     """The H that draws the derivative's largest ordinate near ``target`` mm."""
     if top <= 0:
         return 40.0
@@ -140,13 +141,17 @@ def diagrams(scene: Scene, spec: DiagramsSpec | None = None) -> Diagrams:
     mu_phi = spec.length_mm / (2 * math.pi)
     subjects = [(p, False) for p in spec.points] + [(str(k), True) for k in spec.links]
     motions = [_motion(scene, kin, s, is_link, w) for s, is_link in subjects]
-    H = spec.pole_mm
-    if H is None:  # one pole for the sheet: the one the fastest subject needs
-        Hs = []
-        for (s_e, v_e, _, _) in motions:
+    # one pole per differentiation for the sheet (H1 for v, H2 for a): what the fastest subject needs
+    H1, H2 = spec.pole_mm, spec.pole_mm
+    if H1 is None or H2 is None:
+        h1s, h2s = [], []
+        for (s_e, v_e, a_e, _) in motions:
             mu_s = nice_scale(float(np.ptp(s_e)) or 1.0, 50.0)
-            Hs.append(_pole(mu_s, mu_phi, w, float(np.max(np.abs(v_e)))))
-        H = min(Hs)
+            h1 = _pole(mu_s, mu_phi, w, float(np.max(np.abs(v_e))))
+            mu_v = mu_s * h1 / (mu_phi * w)
+            h1s.append(h1)
+            h2s.append(_pole(mu_v, mu_phi, w, float(np.max(np.abs(a_e)))))
+        H1, H2 = min(h1s), min(h2s)
     out: list[Diagram] = []
     step = EXACT_PER_STEP
     for (subject, is_link), (s_e, v_e, a_e, unit) in zip(subjects, motions, strict=True):
@@ -158,7 +163,7 @@ def diagrams(scene: Scene, spec: DiagramsSpec | None = None) -> Diagrams:
         units = (unit, "rad/s", "rad/s^2") if is_link else ("m", "m/s", "m/s^2")
         phi_v, dv = _differentiate(rad, s_nodes, spec.method, total)
         v_g = w * dv
-        mu_v = mu_s * H / (mu_phi * w)
+        mu_v = mu_s * H1 / (mu_phi * w)
         if spec.method == "chords":
             # chords of v(φ), whose values sit at the middles: the middles of the middles are the
             # nodes 1..n, the first node is the last again
@@ -168,7 +173,7 @@ def diagrams(scene: Scene, spec: DiagramsSpec | None = None) -> Diagrams:
         else:
             phi_a, da = _differentiate(rad, v_g, "tangents", 0.0)
         a_g = w * da
-        mu_a = mu_v * H / (mu_phi * w)
+        mu_a = mu_v * H2 / (mu_phi * w)
         deg = np.degrees
         v_int = v_e[0] + np.append(0.0, np.cumsum(0.5 * (a_e[::step][1:] + a_e[::step][:-1]) * np.diff(rad))) / w
         s_int = s_nodes[0] + np.append(0.0, np.cumsum(0.5 * (v_int[1:] + v_int[:-1]) * np.diff(rad))) / w
@@ -177,9 +182,9 @@ def diagrams(scene: Scene, spec: DiagramsSpec | None = None) -> Diagrams:
                 ("s", names[0], units[0], nodes, s_nodes, s_e, mu_s, f"μ_{names[0]} = {mu_s:.4g} mm/{units[0]}",
                  None, s_int),
                 ("v", names[1], units[1], phi0 + deg(phi_v), v_g, v_e, mu_v,
-                 f"μ_{names[1]} = μ_{names[0]}·H/(μ_φ·ω_1) = {mu_v:.4g} mm/({units[1]})", H, v_int),
+                 f"μ_{names[1]} = μ_{names[0]}·H_1/(μ_φ·ω_1) = {mu_v:.4g} mm/({units[1]})", H1, v_int),
                 ("a", names[2], units[2], phi0 + deg(phi_a), a_g, a_e, mu_a,
-                 f"μ_{names[2]} = μ_{names[1]}·H/(μ_φ·ω_1) = {mu_a:.4g} mm/({units[2]})", H, None)):
+                 f"μ_{names[2]} = μ_{names[1]}·H_2/(μ_φ·ω_1) = {mu_a:.4g} mm/({units[2]})", H2, None)):
             if q not in spec.quantities:
                 continue
             e_max, e_rms = _errors(ph, val, ex_phi, ex)
@@ -188,4 +193,4 @@ def diagrams(scene: Scene, spec: DiagramsSpec | None = None) -> Diagrams:
                 ie = _errors(nodes, integ, ex_phi, ex)[0]
             out.append(Diagram(subject, q, f"{nm}_{subject}", un, np.asarray(ph, float), np.asarray(val, float),
                                ex_phi, np.asarray(ex, float), mu, formula, pole, e_max, e_rms, integ, ie))
-    return Diagrams(spec, w, mu_phi, float(H), nodes, tuple(out))
+    return Diagrams(spec, w, mu_phi, float(H1), float(H2), nodes, tuple(out))

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import Any, cast
 
 import numpy as np
 from numpy.typing import NDArray
@@ -172,7 +173,7 @@ def reduce(scene: Scene, loads: Loads, kin: Kinematics, rotor: float) -> Reduced
     for f in applied.forces:
         if f.kind == "inertia":
             continue
-        v = kin.point_on(f.link, f.local)[1]
+        v = kin.point_on(f.link, cast(Any, f.local))[1]  # local coordinates per position
         load_rows.append(Row(f.label, f.label, "N*m", (f.F * np.conj(v)).real / w, f.link))
     for mo in applied.moments:
         if mo.kind == "inertia":
@@ -325,7 +326,7 @@ def dynamics(scene: Scene, spec: DynamicsSpec | None = None, structure: Structur
     rad = np.radians(nodes - phi0)
     # the draftsman's smooth curve through the points: the mean ordinate of each interval is
     # the curve's, and the tangents of the energy–mass diagram touch the curve
-    A_c = np.append(0.0, np.cumsum(spline.interval_integrals(rad, tab.M_pr, spline.moments(rad, tab.M_pr))))
+    A_c = np.append(0.0, np.cumsum(spline.interval_integrals(rad, tab.M_pr, spline.slopes(rad, tab.M_pr))))
     rad_e = np.radians(grid - phi0)
     A_c_e = cumulative(rad_e, ex.M_pr)
     M_d_e = _driving(scene, spec, float(A_c_e[-1]), float(np.max(np.abs(ex.M_pr))))
@@ -335,8 +336,8 @@ def dynamics(scene: Scene, spec: DynamicsSpec | None = None, structure: Structur
     A_d = M_d * rad
     dT = A_c + A_d
     per = max(1, 240 // len(rad))
-    _, I_curve = spline.sample(rad, tab.I_pr, spline.moments(rad, tab.I_pr), per)
-    _, T_curve = spline.sample(rad, dT, spline.moments(rad, dT), per)
+    _, I_curve = spline.sample(rad, tab.I_pr, spline.slopes(rad, tab.I_pr), per)
+    _, T_curve = spline.sample(rad, dT, spline.slopes(rad, dT), per)
     wit, I_graph = wittenbauer(I_curve, T_curve, omega_m, delta)
     I_ex = exact_flywheel(ex.I_pr, dT_e, omega_m, delta)
     I_mer = merkalov(I_curve, tab.constant_inertia, T_curve, omega_m, delta)

@@ -60,6 +60,7 @@ def diagrams_json(d: Diagrams) -> dict[str, Any]:
                     "integral": None if g.integral is None else _l(g.integral),
                     "integral_error_max_pct": g.integral_error_max_pct})
     return {"method": d.spec.method, "omega": d.omega, "mu_phi": d.mu_phi, "pole_mm": d.pole_mm,
+            "pole2_mm": d.pole2_mm,
             "nodes_deg": _l(d.nodes_deg), "diagrams": out}
 
 
@@ -81,7 +82,8 @@ def cycle_text(cr: CycleResult) -> str:
     parts = [text(t) for t in cr.tables]
     if cr.diagrams is not None:
         d = cr.diagrams
-        lines = [f"Kinematic diagrams ({d.spec.method}, H = {d.pole_mm:g} mm, μφ = {d.mu_phi:.4g} mm/rad); "
+        lines = [f"Kinematic diagrams ({d.spec.method}, H1 = {d.pole_mm:g} mm, H2 = {d.pole2_mm:g} mm, "
+                 f"μφ = {d.mu_phi:.4g} mm/rad); "
                  f"error of the graphical method in % of each diagram's range"]
         for g in d.diagrams:
             integ = "" if g.integral_error_max_pct is None else \

@@ -20,7 +20,7 @@
     positions = 12           # equal steps over the revolution
     method = "chords"        # or "tangents"
     pole_mm = 30             # H of the differentiation (default: chosen for ~50 mm ordinates)
-    length_mm = 180          # the φ axis of one revolution
+    length_mm = 240          # the φ axis of one revolution
 """
 
 from __future__ import annotations
@@ -181,7 +181,7 @@ def diagrams_spec(scene: Scene) -> DiagramsSpec:
         pole = _number(scene, raw, "pole_mm", "diagrams")
         if pole <= 0:
             raise _fail(scene, "diagrams.pole_mm", f"expected a positive pole distance in mm, got {pole:g}")
-    length = _number(scene, raw, "length_mm", "diagrams") if "length_mm" in raw else 180.0
+    length = _number(scene, raw, "length_mm", "diagrams") if "length_mm" in raw else 240.0
     if not 60.0 <= length <= 700.0:
         raise _fail(scene, "diagrams.length_mm", f"expected a φ axis from 60 to 700 mm long, got {length:g}")
     if scene.driver.omega == 0:

@@ -1,7 +1,9 @@
 """The draftsman's smooth curve through the points of a closed (periodic) diagram.
 
-A periodic cubic spline: what the French curve does when a course joins the plotted
-points of a diagram over the cycle before integrating it or drawing tangents to it.
+A periodic shape-preserving cubic (Fritsch–Carlson/Butland slopes, as PCHIP): what the
+French curve does when a course joins the plotted points of a diagram over the cycle
+before integrating it or drawing tangents to it.  It never overshoots between points,
+even where a dead centre puts two positions a degree apart.
 """
 
 from __future__ import annotations
@@ -12,38 +14,30 @@ from numpy.typing import NDArray
 R = NDArray[np.float64]
 
 
-def moments(x: R, y: R) -> R:
-    """Second derivatives at the nodes of the periodic cubic spline through (x, y); ``x``
-    increasing with the closing node last (``y[-1]`` equal to ``y[0]``)."""
+def slopes(x: R, y: R) -> R:
+    """Slopes at the nodes of the periodic curve through (x, y); ``x`` increasing with the
+    closing node last (``y[-1]`` equal to ``y[0]``)."""
     h = np.diff(x)
-    n = len(h)
-    if n < 3:
-        return np.zeros(n + 1)
-    A = np.zeros((n, n))
-    rhs = np.zeros(n)
-    for i in range(n):  # equation at node i (periodic: node 0 joins intervals n-1 and 0)
-        hp, hn = h[i - 1], h[i]
-        A[i, (i - 1) % n] += hp / 6
-        A[i, i] += (hp + hn) / 3
-        A[i, (i + 1) % n] += hn / 6
-        yp, y0, yn = y[i - 1] if i else y[n - 1], y[i], y[i + 1]
-        rhs[i] = (yn - y0) / hn - (y0 - yp) / hp
-    m = np.linalg.solve(A, rhs)
-    return np.append(m, m[0])
+    dl = np.diff(y) / h  # chord slopes of the intervals
+    prev_d, prev_h = np.roll(dl, 1), np.roll(h, 1)  # the interval before each node (periodic)
+    w1, w2 = 2 * h + prev_h, h + 2 * prev_h
+    same = prev_d * dl > 0
+    den = np.where(same, w1 / np.where(same, prev_d, 1.0) + w2 / np.where(same, dl, 1.0), 1.0)
+    d = np.where(same, (w1 + w2) / den, 0.0)
+    return np.append(d, d[0])
 
 
-def interval_integrals(x: R, y: R, m: R) -> R:
-    """∫ of the spline over each interval."""
+def interval_integrals(x: R, y: R, d: R) -> R:
+    """∫ of the curve over each interval (Hermite cubic: h(y0 + y1)/2 + h²(d0 − d1)/12)."""
     h = np.diff(x)
-    return h * (y[1:] + y[:-1]) / 2 - h**3 * (m[1:] + m[:-1]) / 24
+    return h * (y[1:] + y[:-1]) / 2 + h**2 * (d[:-1] - d[1:]) / 12
 
 
-def sample(x: R, y: R, m: R, per: int) -> tuple[R, R]:
-    """The spline at ``per`` points per interval (the closing node included)."""
-    h = np.diff(x)
+def sample(x: R, y: R, d: R, per: int) -> tuple[R, R]:
+    """The curve at ``per`` points per interval (the closing node included)."""
+    h = np.diff(x)[:, None]
     t = np.arange(per) / per
-    a = 1 - t
-    xs = (x[:-1, None] + h[:, None] * t).ravel()
-    ys = (a * y[:-1, None] + t * y[1:, None]
-          + ((a**3 - a) * m[:-1, None] + (t**3 - t) * m[1:, None]) * h[:, None] ** 2 / 6).ravel()
+    h00, h10, h01, h11 = 2 * t**3 - 3 * t**2 + 1, t**3 - 2 * t**2 + t, -2 * t**3 + 3 * t**2, t**3 - t**2
+    ys = (h00 * y[:-1, None] + h10 * h * d[:-1, None] + h01 * y[1:, None] + h11 * h * d[1:, None]).ravel()
+    xs = (x[:-1, None] + h * t).ravel()
     return np.append(xs, x[-1]), np.append(ys, y[-1])
