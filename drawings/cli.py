@@ -81,6 +81,10 @@ def build_parser() -> argparse.ArgumentParser:
     sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
     add_draw(sub)
     register_commands(sub, _DRAWING_COMMANDS)
+    if "bench" in sub.choices:  # ``plans bench`` times the cycle's sheet too (a lazy reference)
+        from plans.accuracy import cycle_bench
+
+        cycle_bench.SHEET_TIMERS.setdefault("cycle diagrams sheet", "drawings.cycle:diagrams_sheet_seconds")
     if "check" in sub.choices:  # ``plans check --sheet DIR``: the marked and overlay sheets
         try:
             from .check_sheet import add_sheet_options

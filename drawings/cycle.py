@@ -11,6 +11,7 @@ from __future__ import annotations
 import dataclasses
 import math
 from collections.abc import Sequence
+from pathlib import Path
 
 import numpy as np
 
@@ -65,6 +66,11 @@ WORDS: dict[str, tuple[str, str]] = {
 }
 
 
+_UNITS = {"N*m": ("Н·м", "N·m"), "kg*m^2": ("кг·м²", "kg·m²"), "m": ("м", "m"), "mm": ("мм", "mm"),
+          "J": ("Дж", "J"), "N": ("Н", "N"), "m/s": ("м/с", "m/s"), "m/s^2": ("м/с²", "m/s²"),
+          "rad/s": ("рад/с", "rad/s"), "rad/s^2": ("рад/с²", "rad/s²"), "deg": ("°", "°")}
+
+
 def tr(key: str, lang: str) -> str:
     ru, en = WORDS[key]
     return ru if lang == "ru" else en
@@ -78,6 +84,7 @@ def diagram_panels(dg: Diagrams, lang: str) -> list[Panel]:
     out: list[Panel] = []
     L = dg.spec.length_mm
     phi0 = float(dg.nodes_deg[0])
+    subjects = list(dict.fromkeys(g.subject for g in dg.diagrams))
     for g in dg.diagrams:
         rec = Recording()
         ax = Axes(rec, f"diagram-{g.name}", dg.mu_phi, phi0, lang)
@@ -85,19 +92,26 @@ def diagram_panels(dg: Diagrams, lang: str) -> list[Panel]:
         ye = g.exact * g.scale
         ax.frame(L, float(min(ys.min(), ye.min())), float(max(ys.max(), ye.max())), g.name.replace("_", "_"))
         ax.positions(dg.nodes_deg[:-1])
-        ax.curve(ax.x(g.exact_phi_deg), ye, EXACT, f"diagram-{g.name}-exact")
+        step = max(1, len(ye) // 240)  # a thin curve needs no more than a point per mm
+        ax.curve(ax.x(g.exact_phi_deg[::step]), ye[::step], EXACT, f"diagram-{g.name}-exact")
         xs = ax.x(g.phi_deg)
         if g.quantity != "s":
             ax.pole(float(g.pole_mm or dg.pole_mm), ys, "P", "H_1" if g.quantity == "v" else "H_2")
-        ax.curve(*_closed(xs, ys, L), GRAPH, f"diagram-{g.name}-graphical")
+        cx, cy = _closed(xs, ys, L)
+        if g.quantity != "s":  # the draftsman's smooth curve through the found points
+            cx, cy = spline.sample(cx, cy, spline.slopes(cx, cy), 6)
+        ax.curve(cx, cy, GRAPH, f"diagram-{g.name}-graphical")
         ax.dots(xs, ys)
         how = tr(dg.spec.method, lang) if g.quantity != "s" else ""
         err = (f"{tr('error', lang)}: max {fmt(g.error_max_pct, 2, lang)} %, rms {fmt(g.error_rms_pct, 2, lang)} %"
                if g.quantity != "s" else tr("exact_thin", lang))
         note = "; ".join(x for x in (how, err) if x)
-        scale = f"{g.scale_formula.replace('.', ',') if lang == 'ru' else g.scale_formula}; " \
-                f"μ_φ = {fmt(dg.mu_phi, 4, lang)} mm/rad"
-        out.append(plot_panel(f"diagram-{g.name}", "diagram", f"{tr(g.quantity, lang)} {g.name}", rec, scale, note))
+        formula = g.scale_formula.replace(".", ",") if lang == "ru" else g.scale_formula
+        scale = f"{formula}; μ_φ = {fmt(dg.mu_phi, 4, lang)} mm/rad"
+        panel = plot_panel(f"diagram-{g.name}", "diagram", f"{tr(g.quantity, lang)} {g.name}", rec, scale, note,
+                           lang=lang)
+        # a subject's s, v, a form one block of the layout (the layout groups panels by "phi")
+        out.append(dataclasses.replace(panel, phi=float(subjects.index(g.subject))))
     rows = [[g.name, number(g.error_max_pct, lang, 3), number(g.error_rms_pct, lang, 3),
              "—" if g.integral_error_max_pct is None else number(g.integral_error_max_pct, lang, 3)]
             for g in dg.diagrams]
@@ -143,7 +157,7 @@ def _m_panel(d: Dynamics, lang: str) -> Panel:
     ax.hline(-d.M_driving * s.M, 0.0, L, Style(width=0.35, dash=(4, 1.5)), f"−M_д = {fmt(-d.M_driving, 4, lang)}"
              if lang == "ru" else f"−M_d = {fmt(-d.M_driving, 4, lang)}")
     scale = f"μ_M = {fmt(s.M, 4, lang)} mm/(N·m); μ_φ = {fmt(s.phi, 4, lang)} mm/rad; H = {fmt(s.H, 3, lang)} mm"
-    return plot_panel("dyn-M", "dynamics", tr("M", lang), rec, scale, tr("sign", lang))
+    return plot_panel("dyn-M", "dynamics", tr("M", lang), rec, scale, tr("sign", lang), lang=lang)
 
 
 def _a_panel(d: Dynamics, lang: str) -> Panel:
@@ -166,7 +180,7 @@ def _a_panel(d: Dynamics, lang: str) -> Panel:
     rec.text(layout(end_c, L + 1.5, -d.A_c[-1] * s.A, 2.5, "start", "middle"), "note")
     rec.text(layout("A_д" if lang == "ru" else "A_d", L + 1.5, -d.A_d[-1] * s.A, 2.5, "start", "middle"), "note")
     scale = f"μ_A = μ_M·μ_φ/H = {fmt(s.A, 4, lang)} mm/J"
-    return plot_panel("dyn-A", "dynamics", tr("A", lang), rec, scale, tr("exact_thin", lang))
+    return plot_panel("dyn-A", "dynamics", tr("A", lang), rec, scale, tr("exact_thin", lang), lang=lang)
 
 
 def _t_panel(d: Dynamics, lang: str) -> Panel:
@@ -185,7 +199,7 @@ def _t_panel(d: Dynamics, lang: str) -> Panel:
     ax.dots(ax.x(t.phi_deg), d.dT * s.A)
     scale = f"μ_T = μ_A = {fmt(s.A, 4, lang)} mm/J; ΔT = A_c + A_d" if lang != "ru" else \
         f"μ_T = μ_A = {fmt(s.A, 4, lang)} мм/Дж; ΔT = A_с + A_д"
-    return plot_panel("dyn-T", "dynamics", tr("T", lang), rec, scale)
+    return plot_panel("dyn-T", "dynamics", tr("T", lang), rec, scale, lang=lang)
 
 
 def _i_panel(d: Dynamics, lang: str) -> Panel:
@@ -203,7 +217,7 @@ def _i_panel(d: Dynamics, lang: str) -> Panel:
     ax.curve(xs * s.phi, ys * s.I, GRAPH, "dyn-I-graphical")
     ax.dots(ax.x(t.phi_deg), t.I_pr * s.I)
     scale = f"μ_I = {fmt(s.I, 4, lang)} mm/(kg·m²)"
-    return plot_panel("dyn-I", "dynamics", tr("I", lang), rec, scale)
+    return plot_panel("dyn-I", "dynamics", tr("I", lang), rec, scale, lang=lang)
 
 
 def _w_panel(d: Dynamics, lang: str) -> Panel:
@@ -237,10 +251,10 @@ def _w_panel(d: Dynamics, lang: str) -> Panel:
     kl = (w.k - w.l) * s.A
     fw = d.flywheel
     scale = (f"μ_T = {fmt(s.A, 4, lang)} mm/J; μ_I = {fmt(s.I, 4, lang)} mm/(kg·m²); "
-             f"tg ψ = (μ_T/μ_I)·ω_m²(1 ± δ)/2")
-    note = (f"kl = {fmt(kl, 4, lang)} mm; I_fw = kl/(μ_T·ω_m²·δ) = {fmt(fw.inertia_graphical, 4, lang)} kg·m²; "
+             f"tg ψ = (μ_T/μ_I)·ω_{{m}}²(1 ± δ)/2")
+    note = (f"kl = {fmt(kl, 4, lang)} mm; I_fw = kl/(μ_T·ω_{{m}}²·δ) = {fmt(fw.inertia_graphical, 4, lang)} kg·m²; "
             f"ω_m = {fmt(fw.omega_mean, 4, lang)} rad/s, δ = {fmt(fw.delta, 4, lang)}")
-    return plot_panel("dyn-W", "dynamics", tr("W", lang), rec, scale, note)
+    return plot_panel("dyn-W", "dynamics", tr("W", lang), rec, scale, note, lang=lang)
 
 
 def _omega_panel(d: Dynamics, lang: str) -> Panel:
@@ -265,7 +279,7 @@ def _omega_panel(d: Dynamics, lang: str) -> Panel:
     note = (f"{tr('with_graphical', lang)}: δ = {fmt(fw.delta_achieved, 4, lang)}; "
             f"{tr('with_exact', lang)} ({tr('exact_thin', lang).split(' — ')[0]}): δ = "
             f"{fmt(fw.delta_achieved_exact, 4, lang)}")
-    return plot_panel("dyn-w", "dynamics", tr("w", lang), rec, scale, note)
+    return plot_panel("dyn-w", "dynamics", tr("w", lang), rec, scale, note, lang=lang)
 
 
 def _fly_table(d: Dynamics, lang: str) -> Panel:
@@ -302,7 +316,8 @@ def table_panels(tables: Sequence[CycleTable], lang: str, prefix: str,
                 # a dead centre's 1e-8 is a zero on paper
                 cells = [None if r.values[k] is None else (0.0 if abs(r.values[k] or 0.0) <= 1e-5 * big
                                                           else r.values[k]) for k in ks]
-                unit = f", {r.unit}" if r.unit and r.unit != "1" else ""
+                u = _UNITS.get(r.unit, (r.unit, r.unit))[0 if lang == "ru" else 1]
+                unit = f", {u}" if u and u != "1" else ""
                 rows.append([f"{r.label}{unit}"] + [number(c, lang, 4) for c in cells])
             out.append(wide_table(f"{prefix}-table-{i + 1}-{j + 1}", title, head, rows, lang))
     return out
@@ -347,3 +362,24 @@ def _kin(scene: Scene):
     from plans.kinematics.exact import solve
 
     return solve(scene, order=0)
+
+
+def diagrams_sheet_seconds(path: str | Path, repeat: int = 5) -> float:
+    """Best time of the diagrams sheet of a scene to SVG text: engine, panels, layout, SVG."""
+    import time
+
+    from plans.cycle.diagrams import diagrams
+    from plans.scene.model import load_scene
+
+    from .sheet import sheet_spec
+
+    scene = load_scene(path)
+    spec = dataclasses.replace(sheet_spec(scene.raw, scene.path, scene.title), pins=())
+    best = float("inf")
+    for _ in range(max(1, repeat)):
+        t = time.perf_counter()
+        sheets = compose(diagram_panels(diagrams(scene), spec.language), spec, "", scene.path)
+        for sh in sheets:
+            sh.svg()
+        best = min(best, time.perf_counter() - t)
+    return best

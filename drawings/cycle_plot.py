@@ -85,8 +85,25 @@ class Axes:
         self.rec.end()
 
 
-def plot_panel(pid: str, kind: str, title: str, rec: Recording, scale_line: str, note: str | None = None) -> Panel:
-    return finish(pid, kind, None, rec, title, scale_line, note)
+#: Units and symbols of the scale lines in Russian (longest first).
+_RU = (("mm/(m/s^2)", "мм/(м/с²)"), ("mm/(rad/s^2)", "мм/(рад/с²)"), ("mm/(m/s)", "мм/(м/с)"),
+       ("mm/(rad/s)", "мм/(рад/с)"), ("mm/(N·m)", "мм/(Н·м)"), ("mm/(kg·m²)", "мм/(кг·м²)"), ("mm/rad", "мм/рад"),
+       ("mm/J", "мм/Дж"), ("mm/m", "мм/м"), ("kg·m²", "кг·м²"), ("rad/s", "рад/с"), ("N·m", "Н·м"),
+       (" mm", " мм"), ("I_fw", "I_м"), ("A_d", "A_д"), ("A_c", "A_с"), ("M_d", "M_д"), ("(exact", "(точно"))
+
+
+def loc(text: str | None, lang: str) -> str | None:
+    """A scale line or note in the sheet's language (numbers are already written for it)."""
+    if text is None or lang != "ru":
+        return text
+    for en, ru in _RU:
+        text = text.replace(en, ru)
+    return text
+
+
+def plot_panel(pid: str, kind: str, title: str, rec: Recording, scale_line: str, note: str | None = None,
+               lang: str = "en") -> Panel:
+    return finish(pid, kind, None, rec, title, loc(scale_line, lang), loc(note, lang))
 
 
 def wide_table(pid: str, title: str, header: Sequence[str], rows: Sequence[Sequence[str]], lang: str,
@@ -121,7 +138,7 @@ def wide_table(pid: str, title: str, header: Sequence[str], rows: Sequence[Seque
             else:
                 rec.text(layout(t, edges[i + 1] - 1.5, yc, size, "end", "middle"), "th" if j == 0 else "td")
     rec.end()
-    return finish(pid, "cycle-table", None, rec, title, None, note)
+    return finish(pid, "cycle-table", None, rec, loc(title, lang) or title, None, loc(note, lang))
 
 
 def number(v: float | None, lang: str, sig: int = 4) -> str:
