@@ -18,7 +18,7 @@ import numpy as np
 from plans.cycle import spline
 from plans.cycle.diagrams import Diagrams
 from plans.cycle.dynamics import Dynamics
-from plans.cycle.table import CycleTable
+from plans.cycle.table import CycleTable, TableRow
 from plans.scene.model import Scene
 
 from .backend import HAIR, MAIN, THIN, Recording, Style
@@ -60,6 +60,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "Ipr": ("Приведённый момент инерции, кг·м²", "Reduced moment of inertia, kg·m²"),
     "Mpr": ("Приведённый момент сил, Н·м", "Reduced moment of forces, N·m"),
     "plans": ("Планы по положениям", "Plans over the positions"),
+    "ordinates": ("Ординаты диаграмм по положениям:", "Ordinates of the diagrams over the positions:"),
     "energy": ("Работы и кинетическая энергия, Дж", "Work and kinetic energy, J"),
     "with_graphical": ("с маховиком по Виттенбауэру", "with the Wittenbauer flywheel"),
     "with_exact": ("с точным маховиком", "with the exact flywheel"),
@@ -112,12 +113,31 @@ def diagram_panels(dg: Diagrams, lang: str) -> list[Panel]:
                            lang=lang)
         # a subject's s, v, a form one block of the layout (the layout groups panels by "phi")
         out.append(dataclasses.replace(panel, phi=float(subjects.index(g.subject))))
+    out += _ordinates_table(dg, lang)
     rows = [[g.name, number(g.error_max_pct, lang, 3), number(g.error_rms_pct, lang, 3),
              "—" if g.integral_error_max_pct is None else number(g.integral_error_max_pct, lang, 3)]
             for g in dg.diagrams]
     head = ["", "max", "rms", "∫ max"]
     out.append(wide_table("diagram-errors", tr("errors", lang), head, rows, lang))
     return out
+
+
+def _ordinates_table(dg: Diagrams, lang: str) -> list[Panel]:
+    """The diagrams over the positions: ordinate (mm) and value at each position, as the
+    course tabulates them (the chord method's values sit between the positions)."""
+    tables = []
+    for subject in dict.fromkeys(g.subject for g in dg.diagrams):
+        rows = []
+        for g in dg.diagrams:
+            if g.subject != subject:
+                continue
+            at = np.interp(dg.nodes_deg[:-1], g.phi_deg, g.values, period=360.0)
+            u = _UNITS.get(g.unit, (g.unit, g.unit))[0 if lang == "ru" else 1]
+            rows.append(TableRow(f"{g.name}:mm", f"y({g.name})", "mm", tuple(float(x) for x in at * g.scale)))
+            rows.append(TableRow(g.name, g.name, u, tuple(float(x) for x in at)))
+        tables.append(CycleTable(f"{tr('ordinates', lang)} {subject}", tuple(float(x) for x in dg.nodes_deg[:-1]),
+                                 tuple(rows)))
+    return table_panels(tables, lang, "diagram")
 
 
 def _closed(xs: np.ndarray, ys: np.ndarray, L: float) -> tuple[np.ndarray, np.ndarray]:

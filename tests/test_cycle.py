@@ -304,3 +304,27 @@ def test_cycle_check_bad_row_names_the_key(tmp_path):
     with pytest.raises(InputError) as exc:
         check_cycle(f)
     assert exc.value.field == "cycle.values.I_pr"
+
+
+def test_diagram_objects_are_frozen_data(veng):
+    d = diagrams(load_scene(VENG))
+    g = d.get("v_B")
+    assert g.phi_deg.shape == g.values.shape and g.scale > 0 and g.pole_mm == d.pole_mm
+    with pytest.raises(ValueError):
+        g.values[0] = 1.0
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        g.scale = 2.0  # type: ignore[misc]
+    with pytest.raises(ValueError):
+        veng[1].table.I_pr[0] = 0.0
+
+
+def test_drawing_adds_the_cycle_sheets_numbered_on():
+    from drawings.draw import draw
+
+    d = draw(VENG)
+    kinds = [{p.kind for p, _, _ in sh.placed} for sh in d.sheets]
+    assert any("diagram" in k for k in kinds) and any("dynamics" in k for k in kinds)
+    assert [sh.number for sh in d.sheets] == list(range(1, len(d.sheets) + 1))
+    assert all(sh.count == len(d.sheets) for sh in d.sheets)
+    again = draw(VENG)
+    assert [s.svg() for s in again.sheets] == [s.svg() for s in d.sheets]  # same input, same bytes

@@ -29,6 +29,7 @@ from plans.kinematics.construction import nice_scale
 from plans.kinematics.exact import Kinematics, solve
 from plans.scene.model import Scene
 
+from . import spline
 from .spec import DiagramsSpec, diagrams_spec
 
 R = NDArray[np.float64]
@@ -193,4 +194,6 @@ def diagrams(scene: Scene, spec: DiagramsSpec | None = None) -> Diagrams:
                 ie = _errors(nodes, integ, ex_phi, ex)[0]
             out.append(Diagram(subject, q, f"{nm}_{subject}", un, np.asarray(ph, float), np.asarray(val, float),
                                ex_phi, np.asarray(ex, float), mu, formula, pole, e_max, e_rms, integ, ie))
-    return Diagrams(spec, w, mu_phi, float(H1), float(H2), nodes, tuple(out))
+    result = Diagrams(spec, w, mu_phi, float(H1), float(H2), nodes, tuple(out))
+    spline.freeze(result)
+    return result

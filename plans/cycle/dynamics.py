@@ -356,8 +356,10 @@ def dynamics(scene: Scene, spec: DynamicsSpec | None = None, structure: Structur
     mu_I = nice_scale(float(np.max(tab.I_pr)), 120.0)
     crank = scene.links[scene.driver.link]
     mu_an = nice_scale(crank.length or 1.0, 70.0)
-    return Dynamics(scene, spec, tab, ex, M_d, M_d_e, A_c, A_d, dT, A_c_e, dT_e, wit, fw, om_g, om_e,
-                    Scales(mu_phi, mu_M, H, mu_A, mu_I, mu_an), tuple(notes))
+    out = Dynamics(scene, spec, tab, ex, M_d, M_d_e, A_c, A_d, dT, A_c_e, dT_e, wit, fw, om_g, om_e,
+                   Scales(mu_phi, mu_M, H, mu_A, mu_I, mu_an), tuple(notes))
+    spline.freeze(out)
+    return out
 
 
 def _split(red: Reduced, sl: slice) -> Reduced:

@@ -41,3 +41,27 @@ def sample(x: R, y: R, d: R, per: int) -> tuple[R, R]:
     ys = (h00 * y[:-1, None] + h10 * h * d[:-1, None] + h01 * y[1:, None] + h11 * h * d[1:, None]).ravel()
     xs = (x[:-1, None] + h * t).ravel()
     return np.append(xs, x[-1]), np.append(ys, y[-1])
+
+
+def freeze(obj: object) -> None:
+    """Make every array reachable through an object's dataclass fields read-only, so that a
+    page or a test reading a diagram cannot change what the sheet was drawn from."""
+    import dataclasses
+
+    seen: set[int] = set()
+
+    def walk(x: object) -> None:
+        if id(x) in seen:
+            return
+        seen.add(id(x))
+        if isinstance(x, np.ndarray):
+            x.flags.writeable = False
+        elif dataclasses.is_dataclass(x) and not isinstance(x, type):
+            for f in dataclasses.fields(x):
+                if f.name != "scene":
+                    walk(getattr(x, f.name))
+        elif isinstance(x, tuple | list):
+            for y in x:
+                walk(y)
+
+    walk(obj)
