@@ -276,6 +276,22 @@ def text(rep: CycleReport) -> str:
     return "\n".join(lines)
 
 
+def csv_text(rep: CycleReport) -> str:
+    """One line per figure checked."""
+    import csv
+    import io
+
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(["quantity", "phi_deg", "student", "exact", "unit", "error_pct", "error_mm", "tolerance", "verdict",
+                "field"])
+    for i in rep.items:
+        w.writerow([i.quantity, "" if i.phi_deg is None else repr(i.phi_deg), repr(i.student), repr(i.exact), i.unit,
+                    f"{i.error_pct:.4f}", "" if i.error_mm is None else f"{i.error_mm:.4f}", i.tolerance, i.verdict,
+                    i.field])
+    return buf.getvalue()
+
+
 def run_file(target: Path, args: argparse.Namespace) -> int:
     """``plans check`` on a cycle check file (same options as for a sheet's check file)."""
     import sys
@@ -285,6 +301,8 @@ def run_file(target: Path, args: argparse.Namespace) -> int:
         sys.stdout.write(dumps(rep.to_json()))
     elif args.json:
         atomic_write(args.json, dumps(rep.to_json()))
+    if getattr(args, "csv", None):
+        atomic_write(args.csv, csv_text(rep))
     if getattr(args, "out", None):
         out = Path(args.out)
         out.mkdir(parents=True, exist_ok=True)
