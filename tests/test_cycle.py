@@ -328,3 +328,18 @@ def test_drawing_adds_the_cycle_sheets_numbered_on():
     assert all(sh.count == len(d.sheets) for sh in d.sheets)
     again = draw(VENG)
     assert [s.svg() for s in again.sheets] == [s.svg() for s in d.sheets]  # same input, same bytes
+
+
+def test_cycle_table_columns_are_the_positions_readings(tmp_path):
+    """The table over the positions carries, column by column, what each position's plans read."""
+    out = tmp_path / "s.json"
+    assert main(["solve", str(ROOT / "samples" / "six_bar.toml"), "--json", str(out), "--quiet"]) == 0
+    data = json.loads(out.read_text())
+    table = data["cycle"]["tables"][0]
+    assert table["phi_deg"] == [p["phi_deg"] for p in data["positions"]]
+    rows = {r["key"]: r["values"] for r in table["rows"]}
+    for k, pos in enumerate(data["positions"]):
+        for r in pos["readings"]:
+            assert rows[r["quantity"]][k] == pytest.approx(r["value"], abs=1e-12)
+            if r["length_mm"] is not None:
+                assert rows[r["quantity"] + ":mm"][k] == pytest.approx(r["length_mm"], abs=1e-12)
