@@ -11,8 +11,9 @@ The machine is reduced to the crank (the link of reduction, angle φ):
 * the constant driving moment M_d = −(1/2π) ∮ M_pr dφ (the cycle's work balances);
   A_c(φ) = ∫ M_pr dφ, A_d(φ) = M_d (φ − φ0), ΔT = A_c + A_d;
 * the flywheel: the Wittenbauer energy–mass diagram (ΔT against I_pr) with tangents at
-  tan ψ = ω_m²(1 ± δ)/2, I_fw = kl/(ω_m² δ) (graphical: chords over the table's
-  positions); Merkalov's method; and the exact one.
+  tan ψ = ω_m²(1 ± δ)/2, I_fw = kl/(ω_m² δ) (graphical: over the table's positions,
+  the curves joined through the points as a French curve joins them, :mod:`.spline`);
+  Merkalov's method; and the exact one.
 
 Exact flywheel.  With ω_max,min = ω_m (1 ± δ/2), ω(φ) ≤ ω_max everywhere and = somewhere
 means 2E0 = ω_max² I_fw + min_φ (ω_max² I_pr − 2ΔT), and likewise for ω_min with the max:
@@ -58,7 +59,6 @@ class Row:
     unit: str
     values: R
     link: int | None = None
-    mm: R | None = None  # segment on the plan (mm), when the row is read off one
 
 
 @dataclass(frozen=True, slots=True)
@@ -226,7 +226,7 @@ def _driving(scene: Scene, spec: DynamicsSpec, A_end: float, scale: float) -> fl
     return given
 
 
-def _extreme(y: R, k: int, h: float) -> float:
+def _extreme(y: R, k: int) -> float:
     """The extreme of a smooth sampled function near node k (parabola through k−1, k, k+1)."""
     n = len(y)
     if n < 3:
@@ -247,8 +247,8 @@ def exact_flywheel(I_pr: R, dT: R, omega_m: float, delta: float) -> float:
     wmin2 = (omega_m * (1 - delta / 2)) ** 2
     g_hi = (wmin2 * I_pr - 2 * dT)[:-1]
     g_lo = (wmax2 * I_pr - 2 * dT)[:-1]
-    hi = _extreme(g_hi, int(np.argmax(g_hi)), 1.0)
-    lo = _extreme(g_lo, int(np.argmin(g_lo)), 1.0)
+    hi = _extreme(g_hi, int(np.argmax(g_hi)))
+    lo = _extreme(g_lo, int(np.argmin(g_lo)))
     return (hi - lo) / (wmax2 - wmin2)
 
 
@@ -261,7 +261,7 @@ def motion(I_pr: R, dT: R, I_fw: float, omega_m: float) -> tuple[R, float]:
     for _ in range(60):
         x = 2 * (E0 + T) / J
         kmax, kmin = int(np.argmax(x)), int(np.argmin(x))
-        xmax, xmin = _extreme(x, kmax, 1.0), _extreme(x, kmin, 1.0)
+        xmax, xmin = _extreme(x, kmax), _extreme(x, kmin)
         f = 0.5 * (math.sqrt(max(xmax, 0.0)) + math.sqrt(max(xmin, 0.0))) - omega_m
         df = 0.5 * (1 / (J[kmax] * math.sqrt(max(xmax, 1e-300))) + 1 / (J[kmin] * math.sqrt(max(xmin, 1e-300))))
         new = E0 - f / df
@@ -270,7 +270,7 @@ def motion(I_pr: R, dT: R, I_fw: float, omega_m: float) -> tuple[R, float]:
             break
     x = 2 * (E0 + T) / J
     om = np.sqrt(np.maximum(x, 0.0))
-    xmax, xmin = _extreme(x, int(np.argmax(x)), 1.0), _extreme(x, int(np.argmin(x)), 1.0)
+    xmax, xmin = _extreme(x, int(np.argmax(x))), _extreme(x, int(np.argmin(x)))
     delta = (math.sqrt(max(xmax, 0.0)) - math.sqrt(max(xmin, 0.0))) / omega_m
     return np.append(om, om[0]), delta
 
