@@ -343,3 +343,17 @@ def test_cycle_table_columns_are_the_positions_readings(tmp_path):
             assert rows[r["quantity"]][k] == pytest.approx(r["value"], abs=1e-12)
             if r["length_mm"] is not None:
                 assert rows[r["quantity"] + ":mm"][k] == pytest.approx(r["length_mm"], abs=1e-12)
+
+
+def test_a_machine_without_inertia_is_one_line():
+    data = _seed_dict()
+    for lid in ("2", "3"):
+        data["links"][lid].pop("mass", None)
+        data["links"][lid].pop("inertia", None)
+    data["links"]["2"].pop("centre", None)
+    data["dynamics"]["rotor_inertia"] = 0.0
+    data["loads"] = {"gravity": False, "moment": [{"link": 1, "value": 0.0}],
+                     "force": [{"link": 2, "point": "S2", "vector": [0, -100]}]}
+    with pytest.raises(InputError) as exc:
+        dynamics(scene_from_dict(data, "bare.toml"))
+    assert exc.value.field == "dynamics.rotor_inertia"

@@ -321,6 +321,9 @@ def dynamics(scene: Scene, spec: DynamicsSpec | None = None, structure: Structur
     if not np.any(ex.M_pr != 0):
         raise InputError("the scene applies no load to the machine (no gravity, gas or external force): "
                          "there is no fluctuation for a flywheel to smooth", file=scene.path, field="loads")
+    if not np.all(ex.I_pr > 0):
+        raise InputError("the machine has no inertia at the crank (no masses, no rotor): give the links' masses "
+                         "or the rotor's own inertia", file=scene.path, field="dynamics.rotor_inertia")
     omega_m = abs(scene.driver.omega)
     delta = spec.delta
     rad = np.radians(nodes - phi0)

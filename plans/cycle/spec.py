@@ -35,6 +35,8 @@ from plans.scene.model import Scene
 #: The widest step between the positions of a cycle (the graphical integration needs the
 #: whole revolution, drawn by chords no longer than this).
 MAX_STEP_DEG = 90.0
+#: The most positions of a cycle (one every 0.1°).
+MAX_POSITIONS = 3600
 
 
 @dataclass(frozen=True, slots=True)
@@ -93,9 +95,9 @@ def _positions(scene: Scene, raw: dict[str, Any], where: str, *, equal: bool) ->
         raise _fail(scene, f"{where}.phi_deg", "give positions or phi_deg, not both")
     if "phi_deg" in raw:
         vals = raw["phi_deg"]
-        if not (isinstance(vals, list) and len(vals) >= 4 and all(
+        if not (isinstance(vals, list) and 4 <= len(vals) <= MAX_POSITIONS and all(
                 not isinstance(v, bool) and isinstance(v, int | float) and math.isfinite(v) for v in vals)):
-            raise _fail(scene, f"{where}.phi_deg", "expected at least 4 crank angles in degrees")
+            raise _fail(scene, f"{where}.phi_deg", f"expected 4 to {MAX_POSITIONS} crank angles in degrees")
         phis = [float(v) for v in vals]
         if any(b <= a for a, b in zip(phis, phis[1:], strict=False)):
             raise _fail(scene, f"{where}.phi_deg", "expected crank angles increasing from position to position")
@@ -117,8 +119,9 @@ def _positions(scene: Scene, raw: dict[str, Any], where: str, *, equal: bool) ->
                             "needs equal steps over the whole revolution (use positions = N)")
         return tuple(phis)
     n = raw.get("positions", 12)
-    if isinstance(n, bool) or not isinstance(n, int) or n < 4 or n > 100000:
-        raise _fail(scene, f"{where}.positions", f"expected a whole number of positions from 4 up, got {n!r}")
+    if isinstance(n, bool) or not isinstance(n, int) or n < 4 or n > MAX_POSITIONS:
+        raise _fail(scene, f"{where}.positions", f"expected a whole number of positions from 4 to {MAX_POSITIONS}, "
+                                                 f"got {n!r}")
     return tuple(phi0 + 360.0 * k / n for k in range(n))
 
 
