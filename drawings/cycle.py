@@ -343,11 +343,31 @@ def table_panels(tables: Sequence[CycleTable], lang: str, prefix: str,
     return out
 
 
+def analogue_plans(d: Dynamics, lang: str) -> list[Panel]:
+    """Plans of velocity analogues at the table's positions: velocity plans drawn at
+    μ_v = μ/|ω1|, so that every segment is the analogue v/ω1 at μ (mm per m), the pole p."""
+    from plans.kinematics.construction import build
+    from plans.kinematics.exact import solve
+
+    from .panels import plan_panel
+
+    scene = dataclasses.replace(d.scene, outputs=d.scene.outputs | {"velocity_plan"})
+    kin = solve(scene, np.asarray(d.spec.phi_deg, float), order=1)
+    mu_v = d.scales.analogue / abs(d.scene.driver.omega)
+    out = []
+    for k in range(kin.n):
+        pp = build(kin, k, velocity_scale=mu_v)
+        if pp.velocity is not None:
+            out.append(plan_panel(pp.velocity, lang, d.scene.scale_style, pid=f"analogue-{k + 1}"))
+    return out
+
+
 def dynamics_panels(d: Dynamics, tables: Sequence[CycleTable], lang: str) -> list[Panel]:
     titles = [f"{tr('analogues', lang)}, μ = {fmt(d.scales.analogue, 4, lang)} mm/m (ω_1 = 1)",
               tr("Ipr", lang), f"{tr('Mpr', lang)}; {tr('sign', lang)}", tr("energy", lang)]
+    plans = [] if d.scene.wants("velocity_plan") else analogue_plans(d, lang)  # else on the first sheet
     return ([_m_panel(d, lang), _a_panel(d, lang), _t_panel(d, lang), _i_panel(d, lang), _w_panel(d, lang),
-             _omega_panel(d, lang), _fly_table(d, lang)] + table_panels(tables, lang, "dyn", titles))
+             _omega_panel(d, lang), _fly_table(d, lang)] + table_panels(tables, lang, "dyn", titles) + plans)
 
 
 # --------------------------------------------------------------------------- the hook
