@@ -85,7 +85,6 @@ def diagram_panels(dg: Diagrams, lang: str) -> list[Panel]:
     out: list[Panel] = []
     L = dg.spec.length_mm
     phi0 = float(dg.nodes_deg[0])
-    subjects = list(dict.fromkeys(g.subject for g in dg.diagrams))
     for g in dg.diagrams:
         rec = Recording()
         ax = Axes(rec, f"diagram-{g.name}", dg.mu_phi, phi0, lang)
@@ -109,10 +108,8 @@ def diagram_panels(dg: Diagrams, lang: str) -> list[Panel]:
         note = "; ".join(x for x in (how, err) if x)
         formula = g.scale_formula.replace(".", ",") if lang == "ru" else g.scale_formula
         scale = f"{formula}; μ_φ = {fmt(dg.mu_phi, 4, lang)} mm/rad"
-        panel = plot_panel(f"diagram-{g.name}", "diagram", f"{tr(g.quantity, lang)} {g.name}", rec, scale, note,
-                           lang=lang)
-        # a subject's s, v, a form one block of the layout (the layout groups panels by "phi")
-        out.append(dataclasses.replace(panel, phi=float(subjects.index(g.subject))))
+        out.append(plot_panel(f"diagram-{g.name}", "diagram", f"{tr(g.quantity, lang)} {g.name}", rec, scale,
+                              note, lang=lang))
     out += _ordinates_table(dg, lang)
     rows = [[g.name, number(g.error_max_pct, lang, 3), number(g.error_rms_pct, lang, 3),
              "—" if g.integral_error_max_pct is None else number(g.integral_error_max_pct, lang, 3)]
