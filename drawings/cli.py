@@ -81,9 +81,12 @@ def build_parser() -> argparse.ArgumentParser:
     sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
     add_draw(sub)
     register_commands(sub, _DRAWING_COMMANDS)
-    if "bench" in sub.choices:  # ``plans bench`` times the cycle's sheet too (a lazy reference)
-        from plans.accuracy import cycle_bench
+    if "bench" in sub.choices:  # ``plans bench`` draws bench.svg with the sheets' backend and times the
+        from plans.accuracy import cycle_bench  # cycle's sheet (a lazy reference to the renderer)
 
+        from .bench_plot import add_plot
+
+        add_plot(sub.choices["bench"])
         cycle_bench.SHEET_TIMERS.setdefault("cycle diagrams sheet", "drawings.cycle:diagrams_sheet_seconds")
     if "check" in sub.choices:  # ``plans check --sheet DIR``: the marked and overlay sheets
         try:

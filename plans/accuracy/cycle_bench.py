@@ -32,7 +32,7 @@ def _best(f: Callable[[], Any], n: int) -> float:
 
 def records(samples: Path, quick: bool = False) -> list[Any]:
     """Bench records (:class:`plans.accuracy.bench.Record`) of the cycle."""
-    from plans.accuracy.bench import Record
+    from plans.accuracy.oracles import Record
     from plans.cycle.dynamics import dynamics
     from plans.cycle.spec import dynamics_spec
     from plans.scene.model import load_scene
