@@ -128,5 +128,6 @@ def draw(scene: Scene | str | Path, *, format: str | None = None, orientation: s
     sc = scene if isinstance(scene, Scene) else load_scene(scene)
     spec = sheet_spec(sc.raw, sc.path, sc.title, format=format, orientation=orientation, language=language)
     panels, mu_l = build_panels(sc, spec)
-    sheets = compose(panels, spec, ratio_text(mu_l), sc.path)
+    numbers = {float(phi): k for k, phi in enumerate(sc.driver.phis_deg)}
+    sheets = compose(panels, spec, ratio_text(mu_l), sc.path, numbers)
     return Drawing(sc, spec, tuple(panels), tuple(sheets), mu_l)

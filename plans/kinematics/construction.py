@@ -29,7 +29,7 @@ from plans.kinematics.structure import Group
 from plans.scene.model import Joint
 from plans.tolerances import COINCIDE_REL, LOCK_SIN, NEAR_PARALLEL_SIN
 
-_NICE = (1.0, 1.2, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0)
+_NICE = (1.0, 2.0, 2.5, 4.0, 5.0)  # round both ways: μ and K = 1/μ
 
 
 def nice_scale(longest: float, target_mm: float = 100.0, mantissas: tuple[float, ...] = _NICE) -> float:
@@ -281,12 +281,10 @@ def build(kin: Kinematics, k: int, *, velocity_scale: float | None = None,
 
 def default_scales(kin: Kinematics) -> tuple[float, float]:
     """μv and μa as the course picks them: the crank pin's vector (the known one)
-    drawn 75–100 mm, the same scale at every position."""
-    d = kin.scene.driver
-    l1 = abs(kin.scene.links[d.link].points[kin.scene.links[d.link].axis[1]])
-    va = abs(d.omega) * l1
-    aa = l1 * math.hypot(d.omega**2, d.eps)
-    return nice_scale(va), nice_scale(aa)
+    drawn 50–100 mm at a round scale (or as ``[scales]`` says), the same at every position."""
+    from plans.kinematics.scales import common_scales
+
+    return common_scales(kin)
 
 
 def _velocity(snap: _Snapshot, mu: float) -> _Builder:
@@ -814,11 +812,12 @@ _ACC = {"RRR": _a_rrr, "RRP": _a_rrp, "RPR": _a_rpr, "PRP": _a_prp, "RPP": _a_rp
 
 
 def build_all(kin: Kinematics) -> list[PositionPlans]:
-    """Plans at every position of the scene, with one scale for all (as on one sheet)."""
+    """Plans at every position of the scene: one round scale for all, a round one of its own
+    for a position whose plan would run too long."""
+    from plans.kinematics.scales import fitted
+
     mv, ma = default_scales(kin)
-    mv = kin.scene.scales.get("velocity", mv)
-    ma = kin.scene.scales.get("acceleration", ma)
-    return [build(kin, k, velocity_scale=mv, acceleration_scale=ma) for k in range(kin.n)]
+    return [fitted(kin, k, mv, ma, build) for k in range(kin.n)]
 
 
 __all__ = ["Reading", "PositionPlans", "build", "build_all", "default_scales", "nice_scale"]

@@ -476,8 +476,14 @@ def _scales(r: _Reader, data: dict[str, Any]) -> tuple[dict[str, float], str]:
             continue
         if key not in _SCALE_UNITS:
             raise r.fail(f"scales.{key}", f"unknown scale; expected some of {list(_SCALE_UNITS)}")
+        if isinstance(value, dict) and set(value) == {"known_mm"} and key in ("velocity", "acceleration"):
+            # the course habit: the known vector (crank pin) drawn this long, e.g. pa = 100 mm
+            out[f"{key}_known_mm"] = r.number(value, "known_mm", f"scales.{key}.", positive=True)
+            continue
         if not isinstance(value, dict) or len(value) != 1 or not ({"mu", "K"} & set(value)):
-            raise r.fail(f"scales.{key}", "expected { mu = mm per unit } or { K = unit per mm }")
+            raise r.fail(f"scales.{key}", "expected { mu = mm per unit }, { K = unit per mm }"
+                         + (" or { known_mm = length of the known vector }"
+                            if key in ("velocity", "acceleration") else ""))
         kind = "mu" if "mu" in value else "K"
         x = r.number(value, kind, f"scales.{key}.", positive=True)
         out[key] = x if kind == "mu" else 1.0 / x
