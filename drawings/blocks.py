@@ -91,14 +91,14 @@ def pack_block(panels: Sequence[Panel], width: float, height: float, gap: float,
 
 def place_block(block: Block, area: Box, taken: Sequence[Box], prev: Box | None, free_spots,
                 gap: float) -> tuple[float, float] | None:
-    """Where a block goes on a sheet: never above the previous block, never left of it in
-    its own band (reading order), then the spot that keeps the skyline lowest."""
+    """Where a block goes on a sheet: never above the previous block, nor left of it while
+    wholly beside it (reading order), then the spot that keeps the skyline lowest."""
     spots = free_spots(block.width, block.height, area, taken)
     if not len(spots):
         return None
     X, Y = spots[:, 0], spots[:, 1]
     if prev is not None:
-        ok = (Y >= prev[1] - 1e-9) & ((Y >= prev[3] + gap - 1e-9) | (X >= prev[2] + gap - 1e-9))
+        ok = (Y >= prev[1] - 1e-9) & ((Y + block.height > prev[3] + 1e-9) | (X >= prev[2] + gap - 1e-9))
         X, Y = X[ok], Y[ok]
         if not len(X):
             return None
@@ -136,11 +136,11 @@ def spread(blocks: list[tuple[Block, float, float]], area: Box, stays: Sequence[
 
 
 def widths(area_w: float, panels: Sequence[Panel]) -> list[float]:
-    """Block widths worth trying: the whole sheet, a half, a third (never narrower than the
-    widest panel of the block)."""
+    """Block widths worth trying, widest first: fractions of the sheet's width, never
+    narrower than the widest panel of the block."""
     widest = max((p.width for p in panels), default=0.0) + 2 * INSET
-    out = []
-    for f in (1.0, 0.5, 1 / 3):
+    out: list[float] = []
+    for f in (1.0, 0.75, 2 / 3, 0.6, 0.5, 0.4, 1 / 3, 0.25):
         w = max(widest, area_w * f)
         if w <= area_w + 1e-9 and all(abs(w - o) > 1.0 for o in out):
             out.append(w)

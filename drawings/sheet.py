@@ -422,8 +422,8 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str = "",
     angle to its position number).  Inside a block the panels go in reading order where they
     keep the block's skyline lowest; a block goes below or right of the previous one, on the
     same sheet while it fits, else on the next (sheet order = angle order).  A block that
-    cannot fit one sheet is split into parts ("continued").  Block widths of a whole, a half
-    and a third of the sheet are tried; the fewest sheets win.  The legend sits above the
+    cannot fit one sheet is split into parts ("continued").  Each block is packed in several
+    widths; the shape that keeps the sheet's skyline lowest is taken.  The legend sits above the
     title block of sheet 1; spare height is shared out between the bands of blocks.
     """
     W, H = spec.size
@@ -471,9 +471,7 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str = "",
         if not groups or p.kind in _SINGLE or groups[-1][0].kind in _SINGLE or groups[-1][0].phi != p.phi:
             groups.append([])
         groups[-1].append(p)
-    tries = [_place_blocks(_blocks(groups, i, area, spec.language, numbers or {}), taken, area, path)
-             for i in range(3)]
-    best = min(tries, key=len)
+    best = _place_blocks(_blocks(groups, area, spec.language, numbers or {}), taken, area, path)
     out = []
     order = {p.pid: k for k, p in enumerate(panels)}
     for n, bl in enumerate(best):
@@ -492,64 +490,65 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str = "",
     return out
 
 
-def _blocks(groups: list[list[Panel]], which: int, area: Box, lang: str,
-            numbers: dict[float, int]) -> list[Block]:
-    """Each group as a block (or several parts where it cannot fit one sheet); ``which``
-    picks the block width tried (whole, half, third of the sheet)."""
+def _blocks(groups: list[list[Panel]], area: Box, lang: str, numbers: dict[float, int]) -> list[list[Block]]:
+    """Each group as a block, in every shape worth trying (packed into widths from a quarter
+    to the whole sheet); a group that cannot fit one sheet is split into parts."""
     aw, ah = area[2] - area[0], area[3] - area[1]
 
     def limit(w: float) -> float:  # a block beside the title block may run the full height
         return ah if w <= aw - TB_W - GAP + 1e-9 else ah - TB_H - GAP
 
-    out: list[Block] = []
+    out: list[list[Block]] = []
     for grp in groups:
         phi = grp[0].phi
         if grp[0].kind in _SINGLE or phi is None:
-            out.extend(Block([(p, 0.0, 0.0)], p.width, p.height, p.phi) for p in grp)
+            out.extend([Block([(p, 0.0, 0.0)], p.width, p.height, p.phi)] for p in grp)
             continue
-        ws = widths(aw, grp)
         rest, part = list(grp), 0
         while rest:
             title = heading(phi, numbers.get(phi), lang, part)
-            best: tuple[Block, list[Panel]] | None = None
-            for w in (ws[min(which, len(ws) - 1)], aw, aw - TB_W - GAP):
-                got = pack_block(rest, w, limit(w), GAP, _free_spots, title)
-                if best is None or len(got[1]) < len(best[1]):
-                    best = got
-                if not got[1]:
-                    break
-            assert best is not None
-            blk, left = best
+            tried = [pack_block(rest, w, limit(w), GAP, _free_spots, title) for w in widths(aw, rest)]
+            fewest = min(len(t[1]) for t in tried)
+            if fewest == 0:
+                out.append([t[0] for t in tried if not t[1]])
+                break
+            blk, left = next(t for t in tried if len(t[1]) == fewest)
             if not blk.panels:  # too big for a framed block: the panel alone, unframed
                 p = rest[0]
-                out.append(Block([(p, 0.0, 0.0)], p.width, p.height, p.phi))
-                left = rest[1:]
-            else:
-                out.append(blk)
+                blk, left = Block([(p, 0.0, 0.0)], p.width, p.height, p.phi), rest[1:]
+            out.append([blk])
             rest, part = left, part + 1
     return out
 
 
-def _place_blocks(blks: list[Block], taken: list[list[Box]], area: Box,
+def _place_blocks(blks: list[list[Block]], taken: list[list[Box]], area: Box,
                   path: str) -> list[list[tuple[Block, float, float]]]:
-    """Blocks one after another on the sheets (pinned panels already there)."""
+    """Blocks one after another on the sheets (pinned panels already there): each in the
+    shape and spot that keep the current sheet's skyline lowest, else on the next sheet."""
     tks = [list(t) for t in taken]
     out: list[list[tuple[Block, float, float]]] = [[] for _ in tks]
     tb = tks[0][0]
     cur = 0
     prev: Box | None = None
-    for b in blks:
+    for shapes in blks:
         while True:
-            spot = place_block(b, area, tks[cur], prev, _free_spots, GAP)
-            if spot is not None:
+            best = None
+            for b in shapes:
+                spot = place_block(b, area, tks[cur], prev, _free_spots, GAP)
+                if spot is not None:
+                    cost = (spot[1] + b.height + 0.05 * spot[0], spot[1], spot[0])
+                    if best is None or cost < best[0]:
+                        best = (cost, b, spot)
+            if best is not None:
                 break
             if not out[cur] and len(tks[cur]) == 1:  # pragma: no cover - blocks fit an empty sheet
-                raise InputError(f"a block of {b.width:.0f}×{b.height:.0f} mm does not fit", file=path,
-                                 field="sheet.format")
+                raise InputError(f"a block of {shapes[0].width:.0f}×{shapes[0].height:.0f} mm does not fit",
+                                 file=path, field="sheet.format")
             cur, prev = cur + 1, None
             if cur == len(tks):
                 tks.append([tb])
                 out.append([])
+        _, b, spot = best
         box = (spot[0], spot[1], spot[0] + b.width, spot[1] + b.height)
         tks[cur].append(box)
         out[cur].append((b, spot[0], spot[1]))
