@@ -449,19 +449,22 @@ def balancing_rows(lv, k: int, lang: str) -> list[tuple[str, ...]]:
     """The balancing load three ways (kinetostatics, lever, power) and δ, as table rows."""
     rows = force_rows(lv, k)[-4:]
     keys = ("by_groups", "by_lever", "by_power")
-    name = "F_ур" if lang == "ru" else "F_bal"
+    force = lv.fa.crank.kind == "force"
+    letter = "F" if force else "M"
+    name = f"{letter}_ур" if lang == "ru" else f"{letter}_bal"
     out: list[tuple[str, ...]] = []
     for key, r in zip(keys, rows[:3], strict=False):
         unit = "Н" if (lang == "ru" and r.unit == "N") else ("Н·м" if lang == "ru" and r.unit == "N·m" else r.unit)
         read = "—" if r.drawing is None else fmt(r.drawing, 5, lang)
         d = r.difference
-        diff = "—" if d is None else f"{abs(d):.2f}"
+        diff = "—" if d is None else f"{d:+.2f}".replace("+0.00", "0.00").replace("-0.00", "0.00")
         if lang == "ru":
             diff = diff.replace(".", ",")
         out.append((f"{name} ({tr(key, lang)})", "—", "—", "—", read, fmt(r.exact, 5, lang), unit, diff))
     delta = rows[3]
     if delta.drawing is not None and np.isfinite(delta.drawing):
-        out.append(("δ = (F_lev − F_kin)/F_kin, %" if lang == "en" else "δ = (F_рыч − F_кин)/F_кин, %",
+        out.append((f"δ = ({letter}_lev − {letter}_kin)/{letter}_kin, %" if lang == "en"
+                    else f"δ = ({letter}_рыч − {letter}_кин)/{letter}_кин, %",
                     "—", "—", "—", fmt(delta.drawing, 3, lang), fmt(delta.exact, 3, lang), "%", "—"))
     return out
 

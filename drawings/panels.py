@@ -605,8 +605,7 @@ def table_panel(rows: Sequence, lang: str, scale_style: str, phi: float, pid: st
             sc = fmt(r.scale, 4, lang)
         unit = tr(_UNITS.get(r.unit, r.unit), lang) if _UNITS.get(r.unit, r.unit) in _UNIT_KEYS else r.unit
         cells: tuple[str, ...] = (quantity_text(r.quantity), seg, mm, sc, fmt(_clean(r.value, r.ref), 5, lang),
-                 fmt(_clean(r.exact, r.ref), 5, lang), unit, f"{100.0 * r.relative:.2f}".replace(
-                     ".", "," if lang == "ru" else "."))
+                 fmt(_clean(r.exact, r.ref), 5, lang), unit, _diff_cell(r, unit, lang))
         body.append((ident(r.quantity), cells))
     for cells in extra:
         body.append((ident(cells[0]), tuple(cells)))
@@ -657,6 +656,18 @@ def table_panel(rows: Sequence, lang: str, scale_style: str, phi: float, pid: st
 
 
 _UNIT_KEYS = {"m/s", "m/s^2", "rad/s", "rad/s^2", "N", "N*m"}
+
+
+def _diff_cell(r, unit: str, lang: str) -> str:
+    """Δ as ``solve`` and the check report define it (:func:`plans.units.percent`), %; the
+    absolute difference with its unit where the exact value is zero."""
+    from plans.units import clean, percent
+
+    pct = percent(r.value, r.exact, r.ref)
+    if pct is None:
+        return f"{fmt(clean(r.value - r.exact, r.ref), 3, lang)} {unit}"
+    return f"{pct:+.2f}".replace(".", "," if lang == "ru" else ".").replace("+0,00", "0,00").replace(
+        "+0.00", "0.00").replace("-0,00", "0,00").replace("-0.00", "0.00")
 
 
 def _clean(v: float, ref: float) -> float:

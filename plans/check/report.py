@@ -63,6 +63,9 @@ from plans.io import atomic_write, dumps
 from plans.kinematics.construction import PositionPlans, build
 from plans.kinematics.exact import Kinematics, solve
 from plans.kinematics.plan import Plan
+from plans.units import DUST, percent
+
+_SCALE_UNIT = {"length": "mm/m", "velocity": "mm/(m/s)", "acceleration": "mm/(m/s²)", "force": "mm/N"}
 
 G_STANDARD = 9.81
 #: An exact value below this fraction of its plan's size is zero (a point on the pole).
@@ -720,6 +723,8 @@ class Item:
 
     @property
     def tolerance_pct(self) -> float | None:
+        if self.error_pct is None and self.student is not None:  # no % against a zero exact value
+            return None
         return 100.0 * self.tolerance / abs(self.exact) if self.exact else None
 
     def to_json(self) -> dict:
@@ -896,9 +901,8 @@ def _items(cf: CheckFile, pos: StudentPosition, q: str, ex: Exact) -> list[Item]
         assert w is not None
         where = ", ".join(dict.fromkeys(x.where for x in (m, v) if x is not None and x.where))
         diff = judged - ex.value
-        err_pct = None if ex.value == 0 else 100.0 * diff / abs(ex.value)
-        if ex.value == 0 and abs(diff) <= 1e-12:
-            err_pct = 0.0
+        # one definition with solve and the sheet; none against an exact value that vanishes
+        err_pct = percent(judged, ex.value) if abs(ex.value) > DUST * ex.ref else None
         err_mm = None if not mu or student_mm is None or exact_mm is None else student_mm - exact_mm
         if t.model == "draftsman" and ex.tol_mm is not None and mu:
             tol = ex.tol_mm / mu
@@ -1397,7 +1401,7 @@ def table(report: Report) -> str:
              f"propagated; else course rule ±{t.rule_pct:g} %" if t.model == "draftsman"
              else f"course rule ±{t.rule_pct:g} %")
     lines = [f"Check of {cf.student} — {cf.scene.title}",
-             f"  file {cf.path}; scales " + ", ".join(f"{k} {v:.4g} mm/unit" for k, v in cf.scales.items()),
+             f"  file {cf.path}; scales " + ", ".join(f"{k} {v:.4g} {_SCALE_UNIT.get(k, 'mm/unit')}" for k, v in cf.scales.items()),
              f"  tolerance: {model}"]
     head = f"  {'quantity':<16}{'student':>14}{'exact':>14}{'error':>10}{'err mm':>9}{'tol mm':>8}{'tol %':>8}  verdict  where"
     for pos in cf.positions:

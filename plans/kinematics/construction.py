@@ -28,6 +28,7 @@ from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, St
 from plans.kinematics.structure import Group
 from plans.scene.model import Joint
 from plans.tolerances import COINCIDE_REL, LOCK_SIN, NEAR_PARALLEL_SIN
+from plans.units import clean, percent
 
 _NICE = (1.0, 2.0, 2.5, 4.0, 5.0)  # round both ways: μ and K = 1/μ
 
@@ -65,7 +66,12 @@ class Reading:
 
     @property
     def difference(self) -> float:
-        return self.value - self.exact
+        return clean(self.value - self.exact, max(abs(self.exact), self.ref))
+
+    @property
+    def percent(self) -> float | None:
+        """Signed difference, % of max(|exact|, ref); None where the exact value is zero."""
+        return percent(self.value, self.exact, self.ref)
 
     @property
     def relative(self) -> float:
@@ -622,7 +628,7 @@ def _normal(b: _Builder, vr: _VelReader, link: int, frm: str, frm_xy: complex, P
     b.add(lab, frm_xy + vec)
     l = abs(P - X)
     b.step("lay off", (frm,), lab,
-           f"a_{Xn}{Pn}^n = v_{Xn}{Pn}²/l_{Pn}{Xn} = {w * w * l:.6g} m/s²: {abs(vec):.3f} mm from {frm} "
+           f"a_{Xn}{Pn}^n = v_{Xn}{Pn}²/l_{Pn}{Xn} = {clean(w * w * l, b.ref):.6g} m/s²: {abs(vec):.3f} mm from {frm} "
            f"parallel to {Xn}{Pn}, from {Xn} toward {Pn}")
     b.seg(frm, lab, "normal", f"a_{Xn}{Pn}^n", b.snap.w[link] ** 2 * l)
     return lab, frm_xy + vec
@@ -636,7 +642,7 @@ def _coriolis(b: _Builder, vr: _VelReader, guide_link: int, v_rel: complex, frm:
     lab = f"k_{label}"
     b.add(lab, frm_xy + vec)
     b.step("lay off", (frm,), lab,
-           f"a^k_{label} = 2·ω{guide_link}·v_r = {abs(2 * w * v_rel):.6g} m/s²: {abs(vec):.3f} mm, "
+           f"a^k_{label} = 2·ω{guide_link}·v_r = {clean(abs(2 * w * v_rel), b.ref):.6g} m/s²: {abs(vec):.3f} mm, "
            f"v_r turned 90° in the sense of ω{guide_link}")
     b.seg(frm, lab, "coriolis", f"a^k_{label}", exact)
     return lab, frm_xy + vec
