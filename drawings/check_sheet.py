@@ -175,7 +175,7 @@ def _spec(report: Report, lang: str, title: str, fmt_name: str | None) -> SheetS
     if sheet not in FORMATS:
         sheet = "A1"
     return SheetSpec(format=sheet, language=lang, title=title, author=report.check.student,
-                     subtitle=report.check.scene.title)
+                     subtitle=report.check.scene.title_in(lang))
 
 
 def _plans(report: Report) -> list[Plan]:

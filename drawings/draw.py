@@ -126,7 +126,9 @@ def draw(scene: Scene | str | Path, *, format: str | None = None, orientation: s
          language: str | None = None) -> Drawing:
     """Build the sheets of a scene (a Scene or a path to its TOML file)."""
     sc = scene if isinstance(scene, Scene) else load_scene(scene)
-    spec = sheet_spec(sc.raw, sc.path, sc.title, format=format, orientation=orientation, language=language)
+    lang = language or (sc.raw.get("sheet", {}).get("language") if isinstance(sc.raw.get("sheet"), dict) else None)
+    spec = sheet_spec(sc.raw, sc.path, sc.title_in(lang if lang in ("ru", "en") else "ru"), format=format,
+                      orientation=orientation, language=language)
     panels, mu_l = build_panels(sc, spec)
     numbers = {float(phi): k for k, phi in enumerate(sc.driver.phis_deg)}
     sheets = compose(panels, spec, ratio_text(mu_l), sc.path, numbers)

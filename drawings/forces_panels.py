@@ -19,7 +19,7 @@ from plans.forces.lever import force_rows, lever_plan
 from plans.forces.polygons import force_polygons, kinetostatics, nice_scale
 from plans.kinematics.plan import Plan
 
-from .backend import Recording, Style, Transform
+from .backend import Pt, Recording, Style, Transform
 from .common import Placer, arrow, dot, fmt, ident, phi_tag
 from .i18n import tr
 from .panels import (
@@ -340,6 +340,9 @@ def polygon_panel(plan: Plan, lang: str, style: str, pid: str, title: str) -> Pa
                   scale_text("force", plan.scale, style, lang), quantity="force", scale=plan.scale)
 
 
+MIN_ARROW_MM = 4.0  # a force drawn shorter than this on the lever is lengthened and marked
+
+
 def lever_panel(lv, k: int, vplan: Plan | None, lang: str, style: str) -> Panel:
     """The velocity plan turned 90° as a rigid lever about the pole, every force at the image of
     its point parallel to itself, the arms h from the pole, and the balancing force."""
@@ -351,6 +354,13 @@ def lever_panel(lv, k: int, vplan: Plan | None, lang: str, style: str) -> Panel:
     placer = Placer()
     xy = {p.name: T(*p.xy) for p in plan.points}
     images = [p.name for p in plan.points if not p.name.endswith(">")]  # ordered: stable output
+    if vplan is not None:  # every point's image, loaded or not: the plan turned, at the lever's μv
+        rot = lv.turn * 1j * lv.scale / vplan.scale
+        for vp in vplan.points:
+            if vp.name != vplan.pole and vp.name not in xy:
+                w = rot * complex(*vp.xy)
+                xy[vp.name] = T(w.real, w.imag)
+                images.append(vp.name)
     # the lever itself: the plan's vectors turned
     if vplan is not None:
         for vs in vplan.segments:
@@ -363,11 +373,36 @@ def lever_panel(lv, k: int, vplan: Plan | None, lang: str, style: str) -> Panel:
     segs = [s for s in plan.segments if s.kind == "force"]
     mu_f = (segs[0].length_mm / segs[0].value) if segs and segs[0].value else 1.0
     c = lv.fa.crank
-    bal_vec = None
+    bal_vecs: list[tuple[str, tuple[Pt, Pt]]] = []
     if c.kind == "force":
         F = complex(lv.by_lever[k]) * complex(c.e_bal[k])
         wb = complex(lv.w_bal[k])
-        bal_vec = (T(wb.real, wb.imag), T((wb + F * mu_f).real, (wb + F * mu_f).imag))
+        bal_vecs.append((force_label("F_bal", lang), (T(wb.real, wb.imag), T((wb + F * mu_f).real,
+                                                                             (wb + F * mu_f).imag))))
+    elif bool(lv.valid[k]):  # a balancing moment as its force pair: F = M/l_OA ⟂ OA at a, −F at p
+        rA = complex(c.r_point[k])
+        rO = complex(lv.fa.kin.point(lv.fa.scene.driver.pivot, c.link)[0][k])
+        M = float(c.M_bal[k])
+        if abs(rA - rO) > 0 and M != 0:
+            F = 1j * (rA - rO) * M / abs(rA - rO) ** 2
+            wb = complex(lv.w_bal[k])
+            name = "M_ур" if lang == "ru" else "M_bal"
+            for lab, at, f in ((f"{name}'", wb, F), (f"{name}''", 0j, -F)):
+                bal_vecs.append((lab, (T(at.real, at.imag), T((at + f * mu_f).real, (at + f * mu_f).imag))))
+    short = False
+    arrows: list[tuple[str, str, Pt, Pt, Style, str]] = []
+    for s in segs:
+        arrows.append((f"{pid}-{ident(s.label)}", force_label(s.label, lang), xy[s.start], xy[s.end], LOAD,
+                       "vector force"))
+    for i, (lab, (a, b)) in enumerate(bal_vecs):
+        arrows.append((f"{pid}-F_bal" if i == 0 else f"{pid}-F_bal-{i}", lab, a, b, REACTION, "vector closing"))
+    drawn: list[tuple[str, str, Pt, Pt, Style, str]] = []
+    for eid, lab, a, b, st, cls in arrows:  # too short to see at μF: a minimum length, marked *
+        L = math.dist(a, b)
+        if 0 < L < MIN_ARROW_MM:
+            b = (a[0] + (b[0] - a[0]) * MIN_ARROW_MM / L, a[1] + (b[1] - a[1]) * MIN_ARROW_MM / L)
+            lab, short = lab + "*", True
+        drawn.append((eid, lab, a, b, st, cls))
     pole = xy["p"]
     for i, cl in enumerate(plan.lines):
         p0 = complex(*cl.point)
@@ -377,14 +412,10 @@ def lever_panel(lv, k: int, vplan: Plan | None, lang: str, style: str) -> Panel:
             f = T(foot.real, foot.imag)
             rec.line(pole, f, ARM, f"{pid}-arm-{i}")
             rec.line(T(*cl.point), f, Style(width=0.18, stroke="#888", dash=(4.0, 1.0, 1.0, 1.0)))
-    for s in segs:
-        a, b = xy[s.start], xy[s.end]
-        eid = f"{pid}-{ident(s.label)}"
-        arrow(rec, a, b, LOAD, eid, "vector force")
-        placer.add_line([a, b])
-    if bal_vec is not None:
-        arrow(rec, bal_vec[0], bal_vec[1], REACTION, f"{pid}-F_bal", "vector closing")
-        placer.add_line(list(bal_vec))
+    for eid, _lab, a, b, st, cls in drawn:
+        if a != b:
+            arrow(rec, a, b, st, eid, cls)
+            placer.add_line([a, b])
     for n in images:
         dot(rec, xy[n], 0.5)
         placer.add_disc(xy[n], 0.6)
@@ -397,23 +428,21 @@ def lever_panel(lv, k: int, vplan: Plan | None, lang: str, style: str) -> Panel:
         seen.add(key)
         lab = placer.place(", ".join(point_label(m) for m in same), xy[n], LABEL_SIZE, gap=0.8)
         rec.text(lab, "label", f"{pid}-label-{ident(n)}")
-    for s in segs:
-        a, b = xy[s.start], xy[s.end]
+    for eid, text, a, b, st, _cls in drawn:
+        if a == b:
+            continue
         L = math.dist(a, b) or 1.0
-        lab = placer.place(force_label(s.label, lang), b, SMALL_SIZE + 0.5,
-                           prefer=((b[0] - a[0]) / L, (b[1] - a[1]) / L), gap=0.6)
-        rec.text(lab, "vector-label", f"{pid}-{ident(s.label)}-label")
-    if bal_vec is not None:
-        a, b = bal_vec
-        L = math.dist(a, b) or 1.0
-        lab = placer.place(force_label("F_bal", lang), b, SMALL_SIZE + 0.5,
-                           prefer=((b[0] - a[0]) / L, (b[1] - a[1]) / L), gap=0.6)
-        rec.text(lab, "vector-label", f"{pid}-F_bal-label", fill=REACTION.stroke or "#000")
+        lab = placer.place(text, b, SMALL_SIZE + 0.5, prefer=((b[0] - a[0]) / L, (b[1] - a[1]) / L), gap=0.6)
+        rec.text(lab, "vector-label", f"{eid}-label", fill=st.stroke if st is REACTION and st.stroke else "#000")
     turn = ("90° " + ("против часовой" if lv.turn > 0 else "по часовой")) if lang == "ru" else (
         "turned 90° " + ("ccw" if lv.turn > 0 else "cw"))
     title = f"{tr('lever', lang)}, φ = {fmt(phi, 4, lang)}° ({turn})"
     sc = f"{scale_text('velocity', lv.scale, style, lang)};  {scale_text('force', mu_f, style, lang)}"
-    return finish(pid, "lever", phi, rec, title, sc, quantity="velocity", scale=lv.scale)
+    note = None
+    if short:
+        note = (f"* короче {MIN_ARROW_MM:g} мм в масштабе μF: показаны не в масштабе" if lang == "ru"
+                else f"* shorter than {MIN_ARROW_MM:g} mm at μF: drawn not to scale")
+    return finish(pid, "lever", phi, rec, title, sc, note=note, quantity="velocity", scale=lv.scale)
 
 
 # --------------------------------------------------------------------------- tables

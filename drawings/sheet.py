@@ -54,7 +54,8 @@ class SheetSpec:
         format = "A1"                 # A1 | A2 | A3 | A4  (CLI --sheet overrides)
         orientation = "landscape"     # or "portrait"
         language = "ru"               # or "en"
-        title = "Механизм V-образного двигателя"   # name field (default: the scene's title)
+        title = "Механизм V-образного двигателя"   # name field (default: the scene's title);
+                                      # or one per language: { ru = "...", en = "..." }
         designation = "ТММ.КП.07.00.00"
         subtitle = "Кинематический и силовой анализ"
         author = "Иванов И.И."
@@ -126,7 +127,7 @@ def sheet_spec(raw: dict[str, Any], path: str, default_title: str = "", **overri
                 raise InputError("expected a string", file=path, field=f"sheet.{key}")
             out[key] = data[key]
 
-    for key in ("title", "designation", "subtitle", "author", "checked_by", "approved_by", "group",
+    for key in ("designation", "subtitle", "author", "checked_by", "approved_by", "group",
                 "organization", "date"):
         string(key)
     fmt = str(override.get("format") or data.get("format", "A1"))
@@ -143,6 +144,13 @@ def sheet_spec(raw: dict[str, Any], path: str, default_title: str = "", **overri
     if lang not in ("ru", "en"):
         raise InputError(f"expected \"ru\" or \"en\", got {lang!r}", file=path, field="sheet.language")
     out["language"] = lang
+    if "title" in data:  # a string, or one per language: { ru = "...", en = "..." }
+        t = data["title"]
+        if isinstance(t, dict) and t and all(k in ("ru", "en") and isinstance(v, str) for k, v in t.items()):
+            t = t.get(lang, t.get("en", t.get("ru")))
+        if not isinstance(t, str):
+            raise InputError("expected a string or { ru = \"...\", en = \"...\" }", file=path, field="sheet.title")
+        out["title"] = t
     for key in ("first_sheet", "total_sheets"):
         if key in data:
             v = data[key]

@@ -29,6 +29,7 @@ from plans.forces.polygons import (
 )
 from plans.kinematics.exact import cross
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step
+from plans.kinematics.scales import round_scale
 from plans.units import clean, percent
 
 C = NDArray[np.complex128]
@@ -175,7 +176,7 @@ def lever_plan(lv: LeverAnalysis, k: int) -> Plan:
                                                   f"about the pole p (μv = {lv.scale:g} mm/(m/s)).")]
     # force vectors drawn at a common force scale, only for the picture
     fmax = max([float(np.abs(it.F[k])) for it in lv.forces] + [abs(float(lv.by_lever[k]))], default=0.0)
-    mu_f = 30.0 / fmax if fmax > 0 else 1.0
+    mu_f = round_scale(fmax, 30.0) if fmax > 0 else 1.0  # a round μF, the largest ≤ 30 mm
     for it in lv.forces:
         w = complex(it.w[k])
         pts.setdefault(it.point, (w.real, w.imag))

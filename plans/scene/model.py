@@ -121,6 +121,11 @@ class Scene:
     scale_style: str  # "mu" (mm per unit) or "K" (unit per mm)
     fij: str
     raw: dict[str, Any] = field(repr=False, default_factory=dict)
+    titles: dict[str, str] = field(default_factory=dict)  # per sheet language: {"ru": ..., "en": ...}
+
+    def title_in(self, lang: str) -> str:
+        """The title in a sheet's language (the plain title where none is given for it)."""
+        return self.titles.get(lang, self.title)
 
     def wants(self, output: str) -> bool:
         return output in self.outputs
@@ -202,9 +207,7 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
     unit = data.get("unit", "mm")
     if unit not in LENGTH_UNITS:
         raise r.fail("unit", f"expected one of {sorted(LENGTH_UNITS)}, got {unit!r}")
-    title = data.get("title", Path(path).stem)
-    if not isinstance(title, str):
-        raise r.fail("title", "expected a string")
+    title, titles = _title(r, data.get("title", Path(path).stem))
     frame = data.get("frame")
     if isinstance(frame, bool) or not isinstance(frame, int) or frame <= 0:
         raise r.fail("frame", "expected the frame's link number (a positive integer)")
@@ -233,7 +236,7 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
         raise r.fail("fij", f"expected one of {list(FIJ_CONVENTIONS)}, got {fij!r}")
     return Scene(path=path, title=title, frame=frame, frame_points=frame_points, links=links,
                  joints=joints, driver=driver, branches=branches, outputs=outputs,
-                 scales=scales, scale_style=style, fij=fij, raw=data)
+                 scales=scales, scale_style=style, fij=fij, raw=data, titles=titles)
 
 
 def _link_id(r: _Reader, key: str) -> int:
@@ -460,6 +463,16 @@ def _outputs(r: _Reader, data: dict[str, Any]) -> frozenset[str]:
     for name in raw:
         add(name)
     return frozenset(wanted)
+
+
+def _title(r: _Reader, value: Any) -> tuple[str, dict[str, str]]:
+    """``title = "..."`` or ``title = { ru = "...", en = "..." }`` (one per sheet language)."""
+    if isinstance(value, str):
+        return value, {}
+    if isinstance(value, dict) and value and all(k in ("ru", "en") and isinstance(v, str)
+                                                 for k, v in value.items()):
+        return value.get("en", value.get("ru", "")), dict(value)
+    raise r.fail("title", "expected a string or { ru = \"...\", en = \"...\" }")
 
 
 _SCALE_UNITS = {"length": "mm/m", "velocity": "mm/(m/s)", "acceleration": "mm/(m/s^2)", "force": "mm/N"}
