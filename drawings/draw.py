@@ -62,7 +62,8 @@ def build_panels(scene: Scene, spec: SheetSpec) -> tuple[list[Panel], float]:
     lang, style = spec.language, scene.scale_style
     kin = solve(scene)
     ks = _positions(scene, kin, spec)
-    mu_l = scene.scales.get("length") or auto_length_scale(cycle_size(scene))
+    size = cycle_size(scene)
+    mu_l = scene.scales.get("length") or auto_length_scale(size)
     strokes = strokes_over_cycle(scene)
     plans_at: dict[int, Any] = {}
     if scene.wants("velocity_plan"):
@@ -76,8 +77,10 @@ def build_panels(scene: Scene, spec: SheetSpec) -> tuple[list[Panel], float]:
     # only for the positions studied in detail (listed, or the first two).
     overlay = kin.n > 1 and scene.wants("positions") and _wants(spec, "positions")
     schemes = set(ks if spec.positions is not None or not overlay else ks[:2])
-    if overlay:
-        panels.append(positions_panel(scene, kin, mu_l, lang, sorted(schemes), strokes, spec.trace))
+    if overlay:  # the plan of positions at the largest standard scale that fits 2/5 of the sheet
+        w, _h = spec.size
+        mu_pos = scene.scales.get("length") or auto_length_scale(size, 0.4 * (w - 37.0))
+        panels.append(positions_panel(scene, kin, mu_pos, lang, sorted(schemes), strokes, spec.trace))
     for k in ks:
         if scene.wants("positions") and _wants(spec, "scheme") and k in schemes:
             panels.append(scheme_panel(scene, kin, k, mu_l, lang, strokes))

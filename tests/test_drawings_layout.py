@@ -225,8 +225,24 @@ def test_positions_panel_points_are_where_the_closed_form_puts_them(slider_posit
         A = (pivot[0] + mu_l * r * math.cos(phi), pivot[1] - mu_l * r * math.sin(phi))
         B = (pivot[0] + mu_l * (r * math.cos(phi) + math.sqrt(l_**2 - (r * math.sin(phi)) ** 2)), pivot[1])
         line = next(p for p in panel.prims if p.op == "polyline" and p.eid == f"positions-pos-{k}")
-        for q in (pivot, A, B):
+        for q in (pivot, A, B) if k in (0, 1) else (pivot, A):  # links only where bold
             assert min(math.dist(q, v) for v in line.pts) < 1e-6, (k, q)
+        if k not in (0, 1):
+            assert len(line.pts) == 2  # the crank alone
+        marks = [
+            p.pts[0] for p in panel.prims if p.op == "circle" and p.style is not None and p.style.cls == "mark"]
+        assert min(math.dist(B, m) for m in marks) < 1e-6, k  # B_k still marked on its axis
+
+
+def test_plan_of_positions_links_only_at_bold_positions():
+    """four_bar: the coupler triangle at the bold positions only; B and E on trajectories."""
+    scene = load_scene(SAMPLES / "four_bar.toml")
+    kin = solve(scene)
+    panel = positions_panel(scene, kin, 500.0, "ru", [0], strokes_over_cycle(scene))
+    lines = {p.eid: p for p in panel.prims if p.op == "polyline" and p.eid.startswith("positions-pos-")}
+    assert len(lines["positions-pos-0"].pts) > 2
+    assert all(len(lines[f"positions-pos-{k}"].pts) == 2 for k in range(1, kin.n))
+    assert "positions-path-B" in {p.eid for p in panel.prims}
 
 
 def test_positions_panel_numbers_every_position(slider_positions):
