@@ -313,8 +313,15 @@ def polygon_panel(plan: Plan, lang: str, style: str, pid: str, title: str) -> Pa
             placer.add_line(list(seg))
     geoms = []
     used: dict[str, int] = {}
+    laid: list[tuple[Pt, Pt]] = []
     for s in plan.segments:
         a, b = xy[s.start], xy[s.end]
+        k = sum(_collinear_overlap(a, b, c, d) for c, d in laid)
+        laid.append((a, b))
+        if k and s.length_mm > 1e-6:  # on a line already drawn: beside it, so each one shows
+            L = math.dist(a, b)
+            nx, ny = -(b[1] - a[1]) / L * SIDE_MM * k, (b[0] - a[0]) / L * SIDE_MM * k
+            a, b = (a[0] + nx, a[1] + ny), (b[0] + nx, b[1] + ny)
         st = VECTOR_STYLES["closing" if s.kind == "closing" else "force"]
         eid = f"{pid}-{ident(s.label)}"
         used[eid] = used.get(eid, 0) + 1
@@ -327,6 +334,17 @@ def polygon_panel(plan: Plan, lang: str, style: str, pid: str, title: str) -> Pa
         if p.coincides_with is None:
             dot(rec, xy[p.name], 0.45)
             placer.add_disc(xy[p.name], 0.6)
+    centre = (sum(xs) / len(xs), sum(ys) / len(ys)) if xs else (0.0, 0.0)
+    for p in plan.points:  # the vertices lettered as the tables cite them ("o a", "a b")
+        if p.coincides_with is not None or p.name.endswith(">"):
+            continue
+        v = xy[p.name]
+        names = [q.name for q in plan.points if q.name == p.name or q.coincides_with == p.name]
+        away = (v[0] - centre[0], v[1] - centre[1])
+        L = math.hypot(*away) or 1.0
+        lab = placer.place(", ".join(point_label(n) for n in names), v, LABEL_SIZE - 0.5,
+                           prefer=(away[0] / L, away[1] / L), gap=0.8)
+        rec.text(lab, "label", f"{pid}-label-{ident(p.name)}")
     for s, a, b, eid in geoms:
         if s.length_mm < 1e-6:
             continue
@@ -338,6 +356,22 @@ def polygon_panel(plan: Plan, lang: str, style: str, pid: str, title: str) -> Pa
         rec.text(lab, "vector-label", f"{eid}-label", fill=st.stroke or "#000")
     return finish(pid, "polygon", plan.phi_deg, rec, f"{title}, φ = {fmt(plan.phi_deg, 4, lang)}°",
                   scale_text("force", plan.scale, style, lang), quantity="force", scale=plan.scale)
+
+
+SIDE_MM = 1.2  # offset of a force drawn on a line another force already covers
+
+
+def _collinear_overlap(a: Pt, b: Pt, c: Pt, d: Pt) -> bool:
+    """Segments ab and cd on one line (within 0.3 mm) sharing more than 0.5 mm of it."""
+    L = math.dist(a, b)
+    if L < 1e-6 or math.dist(c, d) < 1e-6:
+        return False
+    ux, uy = (b[0] - a[0]) / L, (b[1] - a[1]) / L
+    off = [abs((q[0] - a[0]) * uy - (q[1] - a[1]) * ux) for q in (c, d)]
+    if max(off) > 0.3:
+        return False
+    t = sorted(((q[0] - a[0]) * ux + (q[1] - a[1]) * uy) for q in (c, d))
+    return min(L, t[1]) - max(0.0, t[0]) > 0.5
 
 
 MIN_ARROW_MM = 4.0  # a force drawn shorter than this on the lever is lengthened and marked
