@@ -335,6 +335,12 @@ def link_shape(scene, lid: int) -> tuple[str, list[str]]:
         if n not in names:
             names.insert(0, n)
     if len(names) < 2:
+        # a one-pin link that carries a guide (a yoke): its body runs out to its centre of
+        # mass, so S sits on the link it belongs to
+        carrier = any(jt.guide is not None and jt.guide.link == lid for jt in scene.joints)
+        far = [n for n in link.points if n not in names and names and abs(link.points[n] - link.points[names[0]]) > 0]
+        if carrier and names and far:
+            return "line", [names[0], max(far, key=lambda n: abs(link.points[n] - link.points[names[0]]))]
         return "none", []
     z = {n: link.points[n] for n in names}
     base = z[names[1]] - z[names[0]] if len(names) > 1 else 1.0
