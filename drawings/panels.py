@@ -63,7 +63,12 @@ class Panel:
 def finish(pid: str, kind: str, phi: float | None, body: Recording, title: str,
            scale_line: str | None = None, note: str | None = None, quantity: str | None = None,
            scale: float | None = None) -> Panel:
-    """Title (and scale) above the body, everything shifted to start at (0, 0)."""
+    """Title (and scale) above the body, everything shifted to start at (0, 0); labels that a
+    line of the finished figure crosses are moved clear of it (:func:`declutter`)."""
+    if kind not in ("table", "legend"):
+        from .declutter import declutter
+
+        body = Recording(declutter(body.prims))
     x0, y0, x1, y1 = body.bbox()
     head = Recording()
     y = y0 - 2.5

@@ -273,11 +273,12 @@ def _frames(rec: Recording, sh: Sheet) -> None:
 
 
 def _fit(text: str, x: float, y: float, w: float, size: float, anchor: str = "start"):
-    """A label no wider than ``w`` (the size shrinks, never below 1.8 mm)."""
+    """A label no wider than ``w``: the size shrinks (a text that does not wrap inside its
+    cell at 1.8 mm goes smaller still rather than run over the cell's lines)."""
     lab = layout(text, x, y, size, anchor, "middle")
     width = lab.box[2] - lab.box[0]
     if width > w and width > 0:
-        size = max(1.8, size * w / width)
+        size = size * w / width
         lab = layout(text, x, y, size, anchor, "middle")
     return lab
 
@@ -310,11 +311,19 @@ def _title_block(rec: Recording, sh: Sheet) -> None:
         rec.line((X0 + c, Y0 + 20), (X0 + c, Y0 + 35), thin)
     rec.line((X0 + 155, Y0 + 35), (X0 + 155, Y0 + 40), thick)
 
-    def cell(text: str, x: float, y: float, w: float, size: float, eid: str, anchor: str = "start") -> None:
+    def cell(text: str, x: float, y: float, w: float, size: float, eid: str, anchor: str = "start",
+             h: float = 5.0) -> None:
         if not text:
             return
         xx = x + 1.0 if anchor == "start" else x + w / 2
-        rec.text(_fit(text, xx, y, w - 2.0, size, anchor), "tb-text", eid)
+        lines = _cell_lines(text, w - 2.0, h, size)
+        if len(lines) == 1:
+            rec.text(_fit(text, xx, y, w - 2.0, size, anchor), "tb-text", eid)
+            return
+        sz = lines[0][1]
+        for i, (ln, _) in enumerate(lines):  # wrapped inside the cell, centred on its middle
+            yy = y + (i - (len(lines) - 1) / 2) * sz * 1.2
+            rec.text(_fit(ln, xx, yy, w - 2.0, sz, anchor), "tb-text", eid if i == 0 else f"{eid}-{i}")
 
     heads = [("izm", 0, 7), ("list", 7, 10), ("ndoc", 17, 23), ("sign", 40, 15), ("date", 55, 10)]
     for key, x, w in heads:
@@ -324,16 +333,20 @@ def _title_block(rec: Recording, sh: Sheet) -> None:
     for i, (key, name) in enumerate(sig):
         y = Y0 + 32.5 + 5 * i
         cell(tr(key, lang), X0, y, 17, 2.5, f"tb-{key}")
-        cell(name, X0 + 17, y, 23, 2.5, f"tb-{key}-name")
+        cell(name, X0 + 17, y, 23, 2.5, f"tb-{key}-name", h=5.0)
         if key == "author" and sh.spec.date:
             cell(sh.spec.date, X0 + 55, y, 10, 2.2, "tb-date", "middle")
     cell(sh.spec.designation, X0 + 65, Y0 + 7.5, 120, 5.0, "tb-designation", "middle")
     # name field: the title over up to three lines
     lines = _wrap(sh.spec.title, 66.0, 4.0)
-    y = Y0 + 27.5 - (len(lines) - 1) * 3.0
-    for i, ln in enumerate(lines):
-        cell(ln, X0 + 65, y + 6.0 * i, 70, 4.0, f"tb-title-{i}", "middle")
-    cell(sh.spec.subtitle, X0 + 65, Y0 + 47.5, 70, 3.5, "tb-subtitle", "middle")
+    if len(lines) <= 3 and len(lines[-1]) == len(" ".join(wrap(lines[-1], 66.0, 4.0))) and \
+            len(wrap(lines[-1], 66.0, 4.0)) == 1:
+        y = Y0 + 27.5 - (len(lines) - 1) * 3.0
+        for i, ln in enumerate(lines):
+            cell(ln, X0 + 65, y + 6.0 * i, 70, 4.0, f"tb-title-{i}", "middle")
+    else:  # too long for three lines at 4 mm: smaller, wrapped inside the cell
+        cell(sh.spec.title, X0 + 65, Y0 + 27.5, 70, 4.0, "tb-title-0", "middle", h=25.0)
+    cell(sh.spec.subtitle, X0 + 65, Y0 + 47.5, 70, 3.5, "tb-subtitle", "middle", h=15.0)
     cell(tr("lit", lang), X0 + 135, Y0 + 17.5, 15, 2.5, "tb-h-lit", "middle")
     cell(tr("mass", lang), X0 + 150, Y0 + 17.5, 17, 2.5, "tb-h-mass", "middle")
     cell(tr("mscale", lang), X0 + 167, Y0 + 17.5, 18, 2.5, "tb-h-scale", "middle")
@@ -344,8 +357,26 @@ def _title_block(rec: Recording, sh: Sheet) -> None:
     cell(f"{tr('sheets', lang)} {m}", X0 + 155, Y0 + 37.5, 30, 2.5, "tb-sheets")
     org = [t for t in (sh.spec.organization, sh.spec.group) if t]
     for i, t in enumerate(org):
-        cell(t, X0 + 135, Y0 + 47.5 + (i - (len(org) - 1) / 2) * 5.0, 50, 3.5, f"tb-org-{i}", "middle")
+        cell(t, X0 + 135, Y0 + 47.5 + (i - (len(org) - 1) / 2) * 15.0 / len(org), 50, 3.5, f"tb-org-{i}",
+             "middle", h=15.0 / len(org))
     rec.end()
+
+
+def _cell_lines(text: str, width: float, height: float, size: float) -> list[tuple[str, float]]:
+    """``text`` as it fits a title-block cell: one line at ``size`` if it fits, else the
+    largest size (down to 1.8 mm) at which its words wrap into lines that fit the cell."""
+    lab = layout(text, 0, 0, size)
+    if lab.box[2] - lab.box[0] <= width:
+        return [(text, size)]
+    sz = size
+    words = text.replace("-", "- ")  # a double-barrelled name may break after its hyphen
+    while sz >= 1.8 - 1e-9:
+        lines = [ln.replace("- ", "-") for ln in wrap(words, width, sz)]
+        if len(lines) * sz * 1.2 <= height - 0.6 and all(
+                layout(ln, 0, 0, sz).box[2] - layout(ln, 0, 0, sz).box[0] <= width for ln in lines):
+            return [(ln, sz) for ln in lines]
+        sz = round(sz - 0.1, 2)
+    return [(text, size)]  # one line, shrunk by _fit
 
 
 def _wrap(text: str, width: float, size: float) -> list[str]:
