@@ -362,13 +362,13 @@ SIDE_MM = 1.2  # offset of a force drawn on a line another force already covers
 
 
 def _collinear_overlap(a: Pt, b: Pt, c: Pt, d: Pt) -> bool:
-    """Segments ab and cd on one line (within 0.3 mm) sharing more than 0.5 mm of it."""
+    """Segments ab and cd on one line (within 1 mm) sharing more than 0.5 mm of it."""
     L = math.dist(a, b)
     if L < 1e-6 or math.dist(c, d) < 1e-6:
         return False
     ux, uy = (b[0] - a[0]) / L, (b[1] - a[1]) / L
     off = [abs((q[0] - a[0]) * uy - (q[1] - a[1]) * ux) for q in (c, d)]
-    if max(off) > 0.3:
+    if max(off) > 1.0:
         return False
     t = sorted(((q[0] - a[0]) * ux + (q[1] - a[1]) * uy) for q in (c, d))
     return min(L, t[1]) - max(0.0, t[0]) > 0.5

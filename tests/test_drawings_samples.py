@@ -162,3 +162,17 @@ def test_structure_matches_golden(drawn):
     want = json.loads(golden.read_text(encoding="utf-8"))
     assert [len(s["panels"]) for s in got["sheets"]] == [len(s["panels"]) for s in want["sheets"]]
     assert got == want
+
+
+def test_no_numerical_dust_on_the_sheets(drawn):
+    """Values zero up to round-off are written 0 on the sheets: no number in e-notation below
+    1e-12 (1e-9 of the smallest scale of these samples), and no scale derived from a zero vector."""
+    _, d, _ = drawn
+    dust = re.compile(r"\d(?:[.,]\d+)?[eE]-(?:1[2-9]|[2-9]\d)")
+    for sh in d.sheets:
+        for p in sh.prims:
+            if p.op == "text" and p.label is not None:
+                assert not dust.search(p.label.plain), (p.eid, p.label.plain)
+    for panel in d.panels:
+        if panel.scale is not None:
+            assert 1e-6 < panel.scale < 1e6, (panel.pid, panel.scale)
