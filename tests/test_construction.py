@@ -203,3 +203,15 @@ def test_json_contract():
     assert "acceleration" in p0["plans"]
     assert data["structure"]["W"] == 1
     assert [g["kind"] for g in data["structure"]["groups"]] == ["RRP", "RRP"]
+
+
+def test_known_vector_given_length_keeps_the_course_habit(tmp_path):
+    """[scales] velocity = { known_mm = 100 }: p_v a is drawn 100 mm (pa = 100 mm), and πa 80 mm."""
+    src = (ROOT / "samples" / "slider_crank.toml").read_text(encoding="utf-8")
+    p = tmp_path / "k.toml"
+    p.write_text(src + "\n[scales]\nvelocity = { known_mm = 100 }\nacceleration = { known_mm = 80 }\n",
+                 encoding="utf-8")
+    kin = solve(load_scene(p))
+    for pp in build_all(kin):
+        assert pp.velocity.segment("v_A").length_mm == pytest.approx(100.0, rel=1e-9)
+        assert pp.acceleration.segment("a_A").length_mm == pytest.approx(80.0, rel=1e-9)

@@ -66,15 +66,19 @@ def common_scales(kin: Kinematics) -> tuple[float, float]:
     return out[0], out[1]
 
 
+def _given(sc: dict[str, float], key: str) -> bool:
+    return key in sc or f"{key}_known_mm" in sc
+
+
 def fitted(kin: Kinematics, k: int, mv: float, ma: float, build):
     """Plans at position ``k`` at the common scales, rebuilt at a round scale of their own
     where a plan's longest vector would exceed ``LONGEST_MM`` (a scale the scene gives is kept)."""
     pp = build(kin, k, velocity_scale=mv, acceleration_scale=ma)
     sc = kin.scene.scales
     mv2, ma2 = mv, ma
-    if pp.velocity is not None and "velocity" not in sc and pp.velocity.extent > LONGEST_MM:
+    if pp.velocity is not None and not _given(sc, "velocity") and pp.velocity.extent > LONGEST_MM:
         mv2 = round_scale(pp.velocity.extent / mv, LONGEST_MM)
-    if pp.acceleration is not None and "acceleration" not in sc and pp.acceleration.extent > LONGEST_MM:
+    if pp.acceleration is not None and not _given(sc, "acceleration") and pp.acceleration.extent > LONGEST_MM:
         ma2 = round_scale(pp.acceleration.extent / ma, LONGEST_MM)
     if (mv2, ma2) != (mv, ma):
         pp = build(kin, k, velocity_scale=mv2, acceleration_scale=ma2)
