@@ -864,6 +864,8 @@ def _consistent(w: Written, m: Written, mm_per_unit: float, rel: float) -> bool:
 
 def _items(cf: CheckFile, pos: StudentPosition, q: str, ex: Exact) -> list[Item]:
     """One item per figure written; a value that is its measured segment over μ joins it."""
+    if ex.value != 0 and abs(ex.value) <= DUST * ex.ref:  # zero up to round-off: exactly 0
+        ex = replace(ex, value=0.0)
     values = pos.written(q, "value")
     measured = pos.written(q, "measured")
     mu = ex.mm_per_unit
