@@ -569,15 +569,21 @@ def _place_blocks(blks: list[list[Block]], taken: list[list[Box]], area: Box,
     tb = tks[0][0]
     cur = 0
     prev: Box | None = None
-    for shapes in blks:
+    for n, shapes in enumerate(blks):
+        after = blks[n + 1] if n + 1 < len(blks) else []
         while True:
             best = None
             for b in shapes:
                 spot = place_block(b, area, tks[cur], prev, _free_spots, GAP)
-                if spot is not None:
-                    cost = (spot[1] + b.height + 0.05 * spot[0], spot[1], spot[0])
-                    if best is None or cost < best[0]:
-                        best = (cost, b, spot)
+                if spot is None:
+                    continue
+                box = (spot[0], spot[1], spot[0] + b.width, spot[1] + b.height)
+                # one step ahead: a shape that leaves room for the next block on this sheet wins
+                room = any(place_block(c, area, tks[cur] + [box], box, _free_spots, GAP) is not None
+                           for c in after)
+                cost = (not room, spot[1] + b.height + 0.05 * spot[0], spot[1], spot[0])
+                if best is None or cost < best[0]:
+                    best = (cost, b, spot)
             if best is not None:
                 break
             if not out[cur] and len(tks[cur]) == 1:  # pragma: no cover - blocks fit an empty sheet
