@@ -85,7 +85,7 @@ def declutter(prims: list[Prim]) -> list[Prim]:
     if not idx:
         return prims
     out = list(prims)
-    boxes = np.asarray([prims[i].label.box for i in idx], dtype=float)  # type: ignore[union-attr]
+    boxes = np.array([list(p.label.box) for p in (prims[i] for i in idx) if p.label is not None], dtype=float)
     ang = 2 * np.pi * np.arange(16) / 16
     cx, cy = np.cos(ang), np.sin(ang)
     g = SHRINK

@@ -15,8 +15,10 @@ from typing import Any
 
 import numpy as np
 
+from plans.forces.analysis import kinetostatics
 from plans.forces.lever import force_rows, lever_plan
-from plans.forces.polygons import force_polygons, kinetostatics, nice_scale
+from plans.forces.polygons import force_polygons
+from plans.forces.shared import nice_scale
 from plans.kinematics.plan import Plan
 
 from .backend import Pt, Recording, Style, Transform
@@ -430,35 +432,35 @@ def lever_panel(lv, k: int, vplan: Plan | None, lang: str, style: str) -> Panel:
             F = 1j * (rA - rO) * M / abs(rA - rO) ** 2
             wb = complex(lv.w_bal[k])
             name = "M_ур" if lang == "ru" else "M_bal"
-            for lab, at, f in ((f"{name}'", wb, F), (f"{name}''", 0j, -F)):
-                bal_vecs.append((lab, (T(at.real, at.imag), T((at + f * mu_f).real, (at + f * mu_f).imag))))
+            for pair, at, fv in ((f"{name}'", wb, F), (f"{name}''", 0j, -F)):
+                bal_vecs.append((pair, (T(at.real, at.imag), T((at + fv * mu_f).real, (at + fv * mu_f).imag))))
     short = False
     arrows: list[tuple[str, str, Pt, Pt, Style, str]] = []
     for s in segs:
         arrows.append((f"{pid}-{ident(s.label)}", force_label(s.label, lang), xy[s.start], xy[s.end], LOAD,
                        "vector force"))
-    for i, (lab, (a, b)) in enumerate(bal_vecs):
-        arrows.append((f"{pid}-F_bal" if i == 0 else f"{pid}-F_bal-{i}", lab, a, b, REACTION, "vector closing"))
+    for i, (pair, (p0, p1)) in enumerate(bal_vecs):
+        arrows.append((f"{pid}-F_bal" if i == 0 else f"{pid}-F_bal-{i}", pair, p0, p1, REACTION, "vector closing"))
     drawn: list[tuple[str, str, Pt, Pt, Style, str]] = []
-    for eid, lab, a, b, st, cls in arrows:  # too short to see at μF: a minimum length, marked *
-        L = math.dist(a, b)
+    for eid, text, p0, p1, st, cls in arrows:  # too short to see at μF: a minimum length, marked *
+        L = math.dist(p0, p1)
         if 0 < L < MIN_ARROW_MM:
-            b = (a[0] + (b[0] - a[0]) * MIN_ARROW_MM / L, a[1] + (b[1] - a[1]) * MIN_ARROW_MM / L)
-            lab, short = lab + "*", True
-        drawn.append((eid, lab, a, b, st, cls))
+            p1 = (p0[0] + (p1[0] - p0[0]) * MIN_ARROW_MM / L, p0[1] + (p1[1] - p0[1]) * MIN_ARROW_MM / L)
+            text, short = text + "*", True
+        drawn.append((eid, text, p0, p1, st, cls))
     pole = xy["p"]
     for i, cl in enumerate(plan.lines):
-        p0 = complex(*cl.point)
+        z0 = complex(*cl.point)
         u = complex(*cl.direction)
-        foot = p0 + ((0j - p0) * u.conjugate()).real * u
+        foot = z0 + ((0j - z0) * u.conjugate()).real * u
         if abs(foot) > 1.0:
-            f = T(foot.real, foot.imag)
-            rec.line(pole, f, ARM, f"{pid}-arm-{i}")
-            rec.line(T(*cl.point), f, Style(width=0.18, stroke="#888", dash=(4.0, 1.0, 1.0, 1.0)))
-    for eid, _lab, a, b, st, cls in drawn:
-        if a != b:
-            arrow(rec, a, b, st, eid, cls)
-            placer.add_line([a, b])
+            ft = T(foot.real, foot.imag)
+            rec.line(pole, ft, ARM, f"{pid}-arm-{i}")
+            rec.line(T(*cl.point), ft, Style(width=0.18, stroke="#888", dash=(4.0, 1.0, 1.0, 1.0)))
+    for eid, _text, p0, p1, st, cls in drawn:
+        if p0 != p1:
+            arrow(rec, p0, p1, st, eid, cls)
+            placer.add_line([p0, p1])
     for n in images:
         dot(rec, xy[n], 0.5)
         placer.add_disc(xy[n], 0.6)
@@ -471,12 +473,12 @@ def lever_panel(lv, k: int, vplan: Plan | None, lang: str, style: str) -> Panel:
         seen.add(key)
         lab = placer.place(", ".join(point_label(m) for m in same), xy[n], LABEL_SIZE, gap=0.8)
         rec.text(lab, "label", f"{pid}-label-{ident(n)}")
-    for eid, text, a, b, st, _cls in drawn:
-        if a == b:
+    for eid, text, p0, p1, st, _cls in drawn:
+        if p0 == p1:
             continue
-        L = math.dist(a, b) or 1.0
-        lab = placer.place(text, b, SMALL_SIZE + 0.5, prefer=((b[0] - a[0]) / L, (b[1] - a[1]) / L), gap=0.6)
-        rec.text(lab, "vector-label", f"{eid}-label", fill=st.stroke if st is REACTION and st.stroke else "#000")
+        L = math.dist(p0, p1) or 1.0
+        vl = placer.place(text, p1, SMALL_SIZE + 0.5, prefer=((p1[0] - p0[0]) / L, (p1[1] - p0[1]) / L), gap=0.6)
+        rec.text(vl, "vector-label", f"{eid}-label", fill=st.stroke if st is REACTION and st.stroke else "#000")
     turn = ("90° " + ("против часовой" if lv.turn > 0 else "по часовой")) if lang == "ru" else (
         "turned 90° " + ("ccw" if lv.turn > 0 else "cw"))
     title = f"{tr('lever', lang)}, φ = {fmt(phi, 4, lang)}° ({turn})"

@@ -66,6 +66,25 @@ def common_scales(kin: Kinematics) -> tuple[float, float]:
     return out[0], out[1]
 
 
+def refit(kin: Kinematics, plans: list, build) -> list:
+    """``plans`` built at the common scales, each position whose plan would run past
+    ``LONGEST_MM`` rebuilt at a round scale of its own (a scale the scene gives is kept)."""
+    sc = kin.scene.scales
+    out = list(plans)
+    for k, pp in enumerate(plans):
+        v, a = pp.velocity, pp.acceleration
+        mv = v.scale if v is not None else None
+        ma = a.scale if a is not None else None
+        mv2, ma2 = mv, ma
+        if v is not None and mv and not _given(sc, "velocity") and v.extent > LONGEST_MM:
+            mv2 = round_scale(v.extent / mv, LONGEST_MM)
+        if a is not None and ma and not _given(sc, "acceleration") and a.extent > LONGEST_MM:
+            ma2 = round_scale(a.extent / ma, LONGEST_MM)
+        if (mv2, ma2) != (mv, ma):
+            out[k] = build(kin, k, velocity_scale=mv2, acceleration_scale=ma2)
+    return out
+
+
 def _given(sc: dict[str, float], key: str) -> bool:
     return key in sc or f"{key}_known_mm" in sc
 
@@ -85,4 +104,4 @@ def fitted(kin: Kinematics, k: int, mv: float, ma: float, build):
     return pp
 
 
-__all__ = ["ROUND", "round_scale", "is_round", "common_scales", "fitted", "known_vectors"]
+__all__ = ["ROUND", "round_scale", "is_round", "common_scales", "fitted", "refit", "known_vectors"]

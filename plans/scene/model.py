@@ -471,7 +471,7 @@ def _title(r: _Reader, value: Any) -> tuple[str, dict[str, str]]:
         return value, {}
     if isinstance(value, dict) and value and all(k in ("ru", "en") and isinstance(v, str)
                                                  for k, v in value.items()):
-        return value.get("en", value.get("ru", "")), dict(value)
+        return str(value.get("en") or value.get("ru") or ""), {str(k): str(v) for k, v in value.items()}
     raise r.fail("title", "expected a string or { ru = \"...\", en = \"...\" }")
 
 

@@ -1,0 +1,52 @@
+"""What the force polygons and the lever both draw with: the force scale μF, the ruler a
+draftsman reads, and two small vector helpers (over positions)."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import numpy as np
+from numpy.typing import NDArray
+
+from plans.kinematics import construction
+
+if TYPE_CHECKING:
+    from plans.forces.polygons import ForceAnalysis
+
+C = NDArray[np.complex128]
+R = NDArray[np.float64]
+
+#: What a draftsman reads off a ruler, mm (readings are rounded to this).
+RULER_MM = 0.5
+#: Round values of K = 1/μ (unit per mm), times powers of ten; the longest vector lands
+#: between 50 and 100 mm.
+_NICE = (1.0, 2.0, 2.5, 4.0, 5.0)  # round both ways: μ and K = 1/μ
+
+
+def nice_scale(longest: float, target_mm: float = 100.0) -> float:
+    """μF (mm per N): K a round number, the longest vector 50..100 mm."""
+    return construction.nice_scale(longest, target_mm, _NICE)
+
+
+def mu_force(fa: ForceAnalysis, values: list[complex]) -> float:
+    """The scene's μF when it gives one, else a round scale for the longest of ``values``;
+    never from forces that are zero up to round-off (then the cycle's largest sets it)."""
+    given = fa.scene.scales.get("force")
+    if given:
+        return given
+    longest = max((abs(v) for v in values), default=0.0)
+    cycle = max((float(np.max(np.abs(rc.F))) for rc in fa.reactions()), default=0.0)
+    if longest <= 1e-9 * cycle:  # zero up to round-off: a point, at the cycle's scale
+        longest = cycle
+    return nice_scale(longest)
+
+
+def unit_vector(z: C) -> C:
+    """z / |z|, and 1 where z = 0."""
+    mag = np.abs(z)
+    return np.where(mag > 0, z / np.where(mag > 0, mag, 1.0), 1.0 + 0j)
+
+
+def safe_div(a: R, b: R) -> R:
+    """a / b, and 0 where b = 0."""
+    return np.where(b != 0, a / np.where(b != 0, b, 1.0), 0.0)
