@@ -63,7 +63,8 @@ def build_panels(scene: Scene, spec: SheetSpec) -> tuple[list[Panel], float]:
     kin = solve(scene)
     ks = _positions(scene, kin, spec)
     size = cycle_size(scene)
-    mu_l = scene.scales.get("length") or auto_length_scale(size)
+    w, _h = spec.size  # schemes about 230 mm across on A1, proportionally less on smaller sheets
+    mu_l = scene.scales.get("length") or auto_length_scale(size, 230.0 * min(1.0, max(w, _h) / 841.0))
     strokes = strokes_over_cycle(scene)
     plans_at: dict[int, Any] = {}
     if scene.wants("velocity_plan"):
@@ -78,7 +79,6 @@ def build_panels(scene: Scene, spec: SheetSpec) -> tuple[list[Panel], float]:
     overlay = kin.n > 1 and scene.wants("positions") and _wants(spec, "positions")
     schemes = set(ks if spec.positions is not None or not overlay else ks[:2])
     if overlay:  # the plan of positions at the largest standard scale that fits 2/5 of the sheet
-        w, _h = spec.size
         mu_pos = scene.scales.get("length") or auto_length_scale(size, 0.4 * (w - 37.0))
         panels.append(positions_panel(scene, kin, mu_pos, lang, sorted(schemes), strokes, spec.trace))
     for k in ks:
