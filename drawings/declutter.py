@@ -95,12 +95,13 @@ def declutter(prims: list[Prim]) -> list[Prim]:
         others = np.delete(boxes, j, axis=0)
         if b[2] - b[0] <= 2 * g or b[3] - b[1] <= 2 * g:
             continue
-        if not _crossed(S, inner)[0] and not _clash(others, inner)[0]:
+        if not _crossed(S, inner)[0] and not _clash(others, b[None, :])[0]:
             continue
         for r in RINGS:
             dx, dy = r * cx, r * cy
             cand = np.stack([b[0] + g + dx, b[1] + g + dy, b[2] - g + dx, b[3] - g + dy], axis=1)
-            free = ~_crossed(S, cand) & ~_clash(others, cand)
+            full = np.stack([b[0] + dx, b[1] + dy, b[2] + dx, b[3] + dy], axis=1)
+            free = ~_crossed(S, cand) & ~_clash(others, full)
             if free.any():
                 m = int(np.argmax(free))
                 out[i] = _moved(prims[i], float(dx[m]), float(dy[m]))
