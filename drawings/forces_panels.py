@@ -442,11 +442,11 @@ def lever_panel(lv, k: int, vplan: Plan | None, lang: str, style: str) -> Panel:
     for i, (pair, (p0, p1)) in enumerate(bal_vecs):
         arrows.append((f"{pid}-F_bal" if i == 0 else f"{pid}-F_bal-{i}", pair, p0, p1, REACTION, "vector closing"))
     drawn: list[tuple[str, str, Pt, Pt, Style, str]] = []
-    for eid, text, p0, p1, st, cls in arrows:  # too short to see at μF: a minimum length, marked *
+    for eid, text, p0, p1, st, cls in arrows:  # too short to see at μF: a minimum length, marked †
         L = math.dist(p0, p1)
         if 0 < L < MIN_ARROW_MM:
             p1 = (p0[0] + (p1[0] - p0[0]) * MIN_ARROW_MM / L, p0[1] + (p1[1] - p0[1]) * MIN_ARROW_MM / L)
-            text, short = text + "*", True
+            text, short = text + "†", True
         drawn.append((eid, text, p0, p1, st, cls))
     pole = xy["p"]
     for i, cl in enumerate(plan.lines):
@@ -485,8 +485,8 @@ def lever_panel(lv, k: int, vplan: Plan | None, lang: str, style: str) -> Panel:
     sc = f"{scale_text('velocity', lv.scale, style, lang)};  {scale_text('force', mu_f, style, lang)}"
     note = None
     if short:
-        note = (f"* короче {MIN_ARROW_MM:g} мм в масштабе μF: показаны не в масштабе" if lang == "ru"
-                else f"* shorter than {MIN_ARROW_MM:g} mm at μF: drawn not to scale")
+        note = (f"† короче {MIN_ARROW_MM:g} мм в масштабе μF: показаны не в масштабе" if lang == "ru"
+                else f"† shorter than {MIN_ARROW_MM:g} mm at μF: drawn not to scale")
     return finish(pid, "lever", phi, rec, title, sc, note=note, quantity="velocity", scale=lv.scale)
 
 
