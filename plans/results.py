@@ -30,6 +30,7 @@ class Solution:
     kinematics: Kinematics
     plans: tuple[PositionPlans, ...]
     forces: Any = None  # (ForceAnalysis, LeverAnalysis) from plans.forces when asked
+    cycle: Any = None  # plans.cycle.results.CycleResult: tables over the positions, dynamics, diagrams
 
 
 def solve_scene(scene: Scene) -> Solution:
@@ -41,7 +42,9 @@ def solve_scene(scene: Scene) -> Solution:
         from plans.forces import analysis as _forces  # loaded only when asked for
 
         forces = _forces.kinetostatics(scene, kin)
-    return Solution(scene, st, kin, plans, forces)
+    from plans.cycle.results import solve_cycle
+
+    return Solution(scene, st, kin, plans, forces, solve_cycle(scene, kin, plans))
 
 
 def _xy(z: complex) -> list[float]:
@@ -102,6 +105,10 @@ def to_json(sol: Solution) -> dict[str, Any]:
             plans = (sol.plans[k].velocity, sol.plans[k].acceleration) if sol.plans else ()
             forces = force_steps(sol.forces[0], sol.forces[1], k) if sol.forces is not None else ()
             pos["steps"] = steps_json(plans, forces)
+    if sol.cycle is not None:
+        from plans.cycle.results import cycle_json
+
+        out.update(cycle_json(sol.cycle))
     return out
 
 
@@ -161,6 +168,10 @@ def table(sol: Solution, protocol: bool = False) -> str:
                 fa, lv = sol.forces
                 lines += _protocol.protocol_lines(_protocol.force_steps(fa, lv, k))
         lines.append("")
+    if sol.cycle is not None:
+        from plans.cycle.results import cycle_text
+
+        lines.append(cycle_text(sol.cycle))
     return "\n".join(lines)
 
 
