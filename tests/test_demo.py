@@ -345,3 +345,19 @@ def test_every_sample_page_opens_without_errors(browser, tmp_path):
         pg.close()
         assert errors == [], p.stem
         assert requests == [f.as_uri()], p.stem
+
+
+def test_cycle_page_carries_the_diagrams_and_dynamics_with_the_graphical_nodes():
+    from plans.cycle.diagrams import diagrams
+    from plans.cycle.dynamics import dynamics
+
+    scene = load_scene(SAMPLES / "v_engine_cycle.toml")
+    charts = {c["label"]: c for c in lesson(scene, frames=12)["cycle"]["charts"]}
+    names = [d.name for d in diagrams(scene).diagrams]
+    assert set(names) | {"M_pr", "I_pr", "ΔT", "ω1"} <= set(charts)
+    dyn = dynamics(scene)
+    # the graphical nodes are the table's values; the exact curve passes within the graphical error
+    mpr = charts["M_pr"]
+    assert mpr["nodes"] == pytest.approx([float(x) for x in dyn.table.M_pr], rel=1e-5)
+    exact_at_nodes = np.interp(mpr["nodes_deg"], mpr["phi_deg"], mpr["values"])
+    assert np.max(np.abs(exact_at_nodes - np.array(mpr["nodes"]))) <= 1e-3 * np.max(np.abs(mpr["values"]))
