@@ -7,7 +7,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from plans.errors import OutputError
-from plans.io import atomic_write
+from plans.io import atomic_write  # noqa: F401  (re-exported by drawings)
 
 from .sheet import Sheet
 
@@ -49,28 +49,43 @@ def png_bytes(svg: bytes, dpi: float) -> bytes:
     return cairosvg.svg2png(bytestring=svg, dpi=dpi)
 
 
-def save(sheets: Sequence[Sheet], outdir: str | Path, stem: str, formats: Sequence[str] = ("svg",),
-         dpi: float = 150.0) -> list[Path]:
-    """Write every sheet in every format: ``stem.svg`` (one sheet) or ``stem-2.svg`` ..."""
+def render(sheets: Sequence[Sheet], outdir: str | Path, stem: str, formats: Sequence[str] = ("svg",),
+           dpi: float = 150.0) -> dict[Path, bytes]:
+    """Every sheet in every format as bytes, by target path: ``stem.svg`` (one sheet) or
+    ``stem-2.svg`` ...; nothing is written."""
     out = Path(outdir)
     for f in formats:
         if f not in FORMATS:
             raise OutputError(f"unknown output format {f!r}; expected some of {', '.join(FORMATS)}")
     if not (dpi > 0 and dpi <= 1200):
         raise OutputError(f"dpi {dpi:g} is out of range; expected 1..1200")
+    files: dict[Path, bytes] = {}
+    for sh in sheets:
+        name = stem if len(sheets) == 1 else f"{stem}-{sh.number}"
+        svg = svg_bytes(sh)
+        for f in formats:
+            p = out / f"{name}.{f}"
+            files[p] = svg if f == "svg" else pdf_bytes(svg) if f == "pdf" else png_bytes(svg, dpi)
+    return files
+
+
+def write(files: dict[Path, bytes], outdir: str | Path, *, source: str | Path | None = None) -> list[Path]:
+    """Write rendered files as one (an error leaves none of them); with ``source`` the
+    folder's manifest removes that input's old sheets the new set lacks and refuses to
+    overwrite another input's sheets (:mod:`drawings.manifest`)."""
+    from .manifest import write_sheets
+
+    out = Path(outdir)
     try:
         out.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
         raise OutputError(f"cannot create the output folder {out}: {exc.strerror}") from None
     if not os.access(out, os.W_OK):
         raise OutputError(f"cannot write to {out}: permission denied")
-    written = []
-    for sh in sheets:
-        name = stem if len(sheets) == 1 else f"{stem}-{sh.number}"
-        svg = svg_bytes(sh)
-        for f in formats:
-            p = out / f"{name}.{f}"
-            data = svg if f == "svg" else pdf_bytes(svg) if f == "pdf" else png_bytes(svg, dpi)
-            atomic_write(p, data)
-            written.append(p)
-    return written
+    return write_sheets(out, files, source)
+
+
+def save(sheets: Sequence[Sheet], outdir: str | Path, stem: str, formats: Sequence[str] = ("svg",),
+         dpi: float = 150.0, *, source: str | Path | None = None) -> list[Path]:
+    """Render every sheet in every format, then write them all as one (see :func:`write`)."""
+    return write(render(sheets, outdir, stem, formats, dpi), outdir, source=source)

@@ -5,11 +5,13 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import os
 import sys
 from collections.abc import Sequence
+from typing import NoReturn
 
 from plans.errors import PlansError
-from plans.io import atomic_write, dumps
+from plans.io import atomic_write, dumps, refuse_input
 from plans.results import solve_scene, table, to_json
 from plans.scene.model import load_scene
 
@@ -19,8 +21,16 @@ _COMMAND_MODULES = ("plans.check.report", "plans.accuracy.bench", "plans.balanci
                     "plans.gears.cli", "plans.cams.cli")
 
 
+class Parser(argparse.ArgumentParser):
+    """argparse with every usage error as one line, like every other error of ``plans``."""
+
+    def error(self, message: str) -> NoReturn:
+        self.exit(2, f"plans: error: {self.prog.split(' ', 1)[-1] + ': ' if ' ' in self.prog else ''}"
+                     f"{' '.join(message.split())} (see plans -h)\n")
+
+
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
+    parser = Parser(
         prog="plans",
         description="Velocity and acceleration plans, force polygons and the Zhukovsky lever "
                     "of planar linkages, built as a draftsman builds them and checked exactly.")
@@ -48,6 +58,7 @@ def register_commands(sub: argparse._SubParsersAction, modules: Sequence[str]) -
 
 
 def _solve(args: argparse.Namespace) -> int:
+    refuse_input(args.json, args.scene)
     sol = solve_scene(load_scene(args.scene))
     if args.json == "-":
         sys.stdout.write(dumps(to_json(sol)))
@@ -59,20 +70,43 @@ def _solve(args: argparse.Namespace) -> int:
     return 0
 
 
+def _one_line(text: str) -> str:
+    return " ".join(str(text).split())
+
+
 def run(args: argparse.Namespace) -> int:
-    """Run a parsed command; user errors become one line on stderr and status 2."""
+    """Run a parsed command; user errors become one line on stderr and status 2; Ctrl-C
+    stops quietly with 130; a closed pipe (``plans solve ... | head``) ends with 0."""
     try:
         return int(args.func(args))
     except PlansError as exc:
-        print(f"plans: error: {exc}", file=sys.stderr)
+        print(f"plans: error: {_one_line(str(exc))}", file=sys.stderr)
         return 2
+    except BrokenPipeError:
+        return _closed_pipe()
     except OSError as exc:
-        print(f"plans: error: {exc.filename or ''}: {exc.strerror}", file=sys.stderr)
+        print(f"plans: error: {exc.filename or ''}: {_one_line(exc.strerror or str(exc))}", file=sys.stderr)
         return 2
+    except KeyboardInterrupt:
+        return 130
+
+
+def _closed_pipe() -> int:
+    """The reader of our output has gone (``| head``): that is not an error.  Point stdout
+    at /dev/null so the interpreter's final flush does not complain either."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError):
+        pass
+    return 0
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    args = build_parser().parse_args(argv)
+    try:
+        args = build_parser().parse_args(argv)
+    except KeyboardInterrupt:
+        return 130
     return run(args)
 
 
