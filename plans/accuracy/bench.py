@@ -43,7 +43,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from plans.accuracy import newton
+from plans.accuracy import fuzz, newton
 from plans.errors import ConstructionError, PlansError
 from plans.kinematics import construction
 from plans.kinematics import exact as kinematics
@@ -1497,6 +1497,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--chain", type=_ints, metavar="N,N,...", help="chain lengths in dyads (default 1,2,5,10,20,50)")
     p.add_argument("--pencil-mm", type=float, default=0.25, help="pencil error, ± mm (default 0.25)")
     p.add_argument("--protractor-deg", type=float, default=0.25, help="protractor error, ± degrees (default 0.25)")
+    fuzz.add_arguments(p)
     p.set_defaults(func=run)
     return p
 
@@ -1512,6 +1513,8 @@ def _ints(text: str) -> tuple[int, ...]:
 
 
 def run(args: argparse.Namespace) -> int:
+    if getattr(args, "fuzz", None) is not None:
+        return fuzz.run(args)
     quiet = getattr(args, "json", None) == "-"
     err = sys.stderr
     if importlib.util.find_spec("mpmath") is None:

@@ -1479,7 +1479,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 
 
 def _err(msg: str) -> None:
-    print(f"plans check: error: {msg}", file=sys.stderr)
+    print(f"plans: error: {' '.join(msg.split())}", file=sys.stderr)
 
 
 def _extra(args: argparse.Namespace, report: Report, target: Path) -> dict[Path, Any]:
