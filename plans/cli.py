@@ -10,7 +10,7 @@ import sys
 from collections.abc import Sequence
 from typing import NoReturn
 
-from plans.errors import PlansError
+from plans.errors import InputError, PlansError, one_line
 from plans.io import atomic_write, dumps, refuse_input
 from plans.results import solve_scene, table, to_json
 from plans.scene.model import load_scene
@@ -80,7 +80,9 @@ def run(args: argparse.Namespace) -> int:
     try:
         return int(args.func(args))
     except PlansError as exc:
-        print(f"plans: error: {_one_line(str(exc))}", file=sys.stderr)
+        if exc.source is None and not isinstance(exc, InputError):
+            exc.source = getattr(args, "scene", None) or getattr(args, "path", None)
+        print(f"plans: error: {one_line(exc)}", file=sys.stderr)
         return 2
     except BrokenPipeError:
         return _closed_pipe()

@@ -40,7 +40,8 @@ TEXT_LIMIT = 2000
 def did_you_mean(word: str, choices: Iterable[str]) -> str:
     """``"; did you mean 'omega_rpm'?"`` when a choice is close to ``word``, else ``""``."""
     options = [c for c in choices if isinstance(c, str)]
-    match = difflib.get_close_matches(str(word), options, n=1, cutoff=0.6)
+    cutoff = 0.5 if len(str(word)) <= 3 else 0.6  # "S3" for "S2"
+    match = difflib.get_close_matches(str(word), options, n=1, cutoff=cutoff)
     if not match:
         low = {c.lower(): c for c in options}
         match = [low[str(word).lower()]] if str(word).lower() in low else []
@@ -223,9 +224,10 @@ class Reader:
         finite, at most 10 km, and 0 or at least 1 µm."""
         try:
             out = parse_length(value, unit)
-        except (ValueError, OverflowError) as exc:
-            raise self.fail(field, str(exc) if isinstance(exc, ValueError) else
-                            "expected a finite length") from None
+        except ValueError as exc:
+            raise self.fail(field, str(exc)) from None
+        except OverflowError:
+            raise self.fail(field, f"expected a length of at most {LENGTH_LIMIT:g} m, got {_show(value)}") from None
         if not math.isfinite(out):
             raise self.fail(field, f"expected a finite length, got {_show(value)}")
         if abs(out) > LENGTH_LIMIT:

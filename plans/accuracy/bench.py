@@ -1453,35 +1453,41 @@ def _cpus() -> int:
 
 
 def write_outputs(result: dict[str, Any], out_dir: Path, json_path: str | None = None) -> list[Path]:
-    """Write bench.md, bench.json, bench.svg (each complete or not at all)."""
-    out_dir.mkdir(parents=True, exist_ok=True)
+    """Write bench.md, bench.json, bench.svg: all of them or none."""
+    from plans.io import write_all
+
     recs = [Record.from_json(r) for r in result["records"]]
-    files = {out_dir / "bench.md": markdown(result),
-             out_dir / "bench.svg": svg_plot(recs, result.get("draftsman_lines"))}
+    files: dict[Path, str] = {out_dir / "bench.md": markdown(result),
+                              out_dir / "bench.svg": svg_plot(recs, result.get("draftsman_lines"))}
     text = json.dumps(result, indent=1, sort_keys=True, default=_jsonable)
-    written = []
-    for path, body in files.items():
-        _atomic(path, body)
-        written.append(path)
+    if json_path != "-":
+        files[Path(json_path) if json_path else out_dir / "bench.json"] = text + "\n"
+    out_dir.mkdir(parents=True, exist_ok=True)
+    written = write_all(files)
     if json_path == "-":
         sys.stdout.write(text + "\n")
-    else:
-        jp = Path(json_path) if json_path else out_dir / "bench.json"
-        _atomic(jp, text + "\n")
-        written.append(jp)
     return written
+
+
+def check_outputs(out_dir: Path, json_path: str | None) -> None:
+    """Refuse output paths that cannot be written before the bench runs for minutes."""
+    from plans.errors import OutputError
+
+    targets = [out_dir] + ([Path(json_path).parent] if json_path and json_path != "-" else [])
+    for folder in targets:
+        probe = folder
+        while not probe.exists() and probe != probe.parent:
+            probe = probe.parent
+        if not probe.is_dir() or not os.access(probe, os.W_OK):
+            raise OutputError(f"{folder}: cannot write there (expected a writable folder)")
+        if folder != out_dir and not folder.is_dir():
+            raise OutputError(f"{folder}: no such folder (for --json {json_path})")
 
 
 def _jsonable(x: Any) -> Any:
     if isinstance(x, np.generic):
         return x.item()
     return str(x)
-
-
-def _atomic(path: Path, text: str) -> None:
-    tmp = path.with_name(path.name + ".tmp")
-    tmp.write_text(text, encoding="utf-8")
-    tmp.replace(path)
 
 
 def register(subparsers: Any) -> argparse.ArgumentParser:
@@ -1525,6 +1531,7 @@ def run(args: argparse.Namespace) -> int:
         if not quiet:
             print(s, file=err, flush=True)
 
+    check_outputs(Path(args.out), getattr(args, "json", None))
     model = DraftsmanModel(getattr(args, "pencil_mm", 0.25), getattr(args, "protractor_deg", 0.25))
     result = run_bench(quick=bool(args.quick), samples=Path(args.samples) if getattr(args, "samples", None) else None,
                        progress=log, mc_samples=getattr(args, "mc", None), sizes=getattr(args, "sizes", None),

@@ -58,7 +58,7 @@ from typing import Any
 import numpy as np
 
 from plans.check.checkfile import CheckFile, StudentPosition, Written, load_check
-from plans.errors import InputError, OutputError, PlansError
+from plans.errors import InputError, OutputError, PlansError, one_line
 from plans.io import atomic_write, dumps, refuse_input, write_all
 from plans.kinematics.construction import PositionPlans, build
 from plans.kinematics.exact import Kinematics, solve
@@ -1457,7 +1457,12 @@ def csv_text(rows: list[dict[str, Any]]) -> str:
 
 
 def check_file(path: str | Path) -> Report:
-    return check(load_check(path))
+    cf = load_check(path)
+    try:
+        return check(cf)
+    except PlansError as exc:
+        exc.source = exc.source or str(path)
+        raise
 
 
 # --------------------------------------------------------------------------- command line
@@ -1513,6 +1518,9 @@ def run(args: argparse.Namespace) -> int:
             out = Path(args.out)
             files[out / f"{target.stem}.json"] = dumps(report.to_json())
             files[out / f"{target.stem}.txt"] = table(report) + "\n"
+        for out_path in (args.json, args.csv):
+            if out_path and out_path != "-" and not Path(out_path).parent.is_dir():
+                raise OutputError(f"{out_path}: no such folder {Path(out_path).parent}")
         files.update(_extra(args, report, target))
         for folder in sorted({p.parent for p in files}):
             _make_folder(folder)
@@ -1526,7 +1534,7 @@ def run(args: argparse.Namespace) -> int:
                     print(p)
         return 0
     except PlansError as exc:
-        _err(" ".join(str(exc).split()))
+        _err(one_line(exc))
         return 2
     except OSError as exc:
         _err(f"{exc.filename or ''}: {exc.strerror}")
@@ -1557,7 +1565,7 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
             report = check_file(f)
         except PlansError as exc:
             bad += 1
-            _err(str(exc))
+            _err(one_line(exc))
             rows.append(summary_row(str(f), None, str(exc)))
             continue
         try:
@@ -1566,7 +1574,7 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
             write_all(files)
         except PlansError as exc:
             bad += 1
-            _err(" ".join(str(exc).split()))
+            _err(one_line(exc))
             rows.append(summary_row(str(f), None, str(exc)))
             continue
         rows.append(summary_row(str(f), report))

@@ -206,13 +206,20 @@ def _check_lock(kin: Kinematics, g: Group, c1: C, c2: C, point: str) -> None:
                     "(velocities are unbounded)")
 
 
-def _sqrt_nonneg(kin: Kinematics, g: Group, x: R, y: R, scale: R, point: str, why: str) -> R:
-    """sqrt(x·y) with x·y >= 0 up to rounding; negative beyond that is not assemblable."""
+def _sqrt_nonneg(kin: Kinematics, g: Group, x: R, y: R, scale: R, point: str, why) -> R:
+    """sqrt(x·y) with x·y >= 0 up to rounding; negative beyond that is not assemblable
+    (``why(k)`` says why at the first such position ``k``)."""
     prod = x * y
     bad = prod < -ASSEMBLY_REL * scale**2
     if bad.any():
-        raise _fail(NotAssemblable, kin, g, bad, point, why)
+        raise _fail(NotAssemblable, kin, g, bad, point, why(int(np.flatnonzero(bad)[0])))
     return np.sqrt(np.maximum(prod, 0.0))
+
+
+def _branch_hint(g: Group) -> str:
+    """Which ``[branches]`` entry picks the group's other assembly (where there are two)."""
+    return (f"; the group has no assembly here on either branch ([branches] \"{g.name}\" = "
+            f"{-g.branch:+d} selects the other of two assemblies only where two exist)")
 
 
 # --------------------------------------------------------------------------- the five dyads
@@ -235,8 +242,10 @@ def _rrr(kin: Kinematics, g: Group, order: int) -> None:
                     f"{j1.point} and {j3.point} coincide: the position of {j2.point} is undefined")
     a = (l1**2 - l3**2 + D**2) / (2 * D)
     h = _sqrt_nonneg(kin, g, l1 - a, l1 + a, l1 + l3 + D, j2.point,
-                     f"{j1.point}{j2.point} = {l1:.6g} m and {j3.point}{j2.point} = {l3:.6g} m cannot "
-                     f"reach across {j1.point}{j3.point}")
+                     lambda k: f"{j1.point}{j2.point} = {l1 * 1e3:.6g} mm and {j3.point}{j2.point} = "
+                               f"{l3 * 1e3:.6g} mm cannot span {j1.point}{j3.point} = {D[k] * 1e3:.6g} mm "
+                               f"(they span {abs(l1 - l3) * 1e3:.6g} to {(l1 + l3) * 1e3:.6g} mm)"
+                               + _branch_hint(g))
     B = P1 + (a + 1j * g.branch * h) * d / D
     _place(kin, i, _unit(B - P1) * (zi.conjugate() / l1), P1, j1.point)
     _place(kin, j, _unit(B - P3) * (zj.conjugate() / l3), P3, j3.point)
@@ -265,8 +274,9 @@ def _rrp(kin: Kinematics, g: Group, order: int) -> None:
     t0 = (w * u.conjugate()).real
     e = cross(u, w)
     root = _sqrt_nonneg(kin, g, l1 - e, l1 + e, np.full_like(e, l1), j2.point,
-                        f"{j1.point}{j2.point} = {l1:.6g} m is shorter than the distance from "
-                        f"{j1.point} to the guide of {j2.point}")
+                        lambda k: f"{j1.point}{j2.point} = {l1 * 1e3:.6g} mm is shorter than the distance "
+                                  f"{abs(e[k]) * 1e3:.6g} mm from {j1.point} to the guide of {j2.point}"
+                                  + _branch_hint(g))
     B = G0 + (t0 + g.branch * root) * u
     zi = Li.points[j2.point] - Li.points[j1.point]
     _place(kin, i, _unit(B - P1) * (zi.conjugate() / l1), P1, j1.point)
@@ -306,9 +316,10 @@ def _rpr(kin: Kinematics, g: Group, order: int) -> None:
     sin_ = ecc / np.where(D > 0, D, 1.0)
     bad = (D == 0) | (np.abs(sin_) > 1 + ASSEMBLY_REL)
     if bad.any():
+        k = int(np.flatnonzero(bad)[0])
         raise _fail(NotAssemblable, kin, g, bad, j2.point,
-                    f"the slot of link {j} (offset {abs(ecc):.6g} m from {j3.point}) cannot pass through "
-                    f"{j1.point}")
+                    f"the slot of link {j} (offset {abs(ecc) * 1e3:.6g} mm from {j3.point}) cannot pass through "
+                    f"{j1.point}, {D[k] * 1e3:.6g} mm from {j3.point}" + _branch_hint(g))
     tj = _rpr_angle(np.angle(d), guide.angle, ecc, D, g.branch)
     mj = _place(kin, j, np.exp(1j * tj), Cq, j3.point)
     _place(kin, i, mj.rot * _turn(j2), A, j1.point)

@@ -184,7 +184,7 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
         raise r.fail("title", "expected a string")
     r.string(title, "title", limit=2000)
     frame = data.get("frame")
-    if isinstance(frame, bool) or not isinstance(frame, int) or frame <= 0:
+    if isinstance(frame, bool) or not isinstance(frame, int) or not 0 < frame < 1_000_000:
         raise r.fail("frame", "expected the frame's link number (a positive integer)")
 
     frame_points = _frame_points(r, data, unit)
