@@ -7,6 +7,7 @@ import json
 import os
 import tempfile
 import tomllib
+from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
@@ -38,7 +39,7 @@ def atomic_write(path: str | Path, data: bytes | str) -> None:
         raise
 
 
-def write_all(files: dict[Path, bytes | str]) -> list[Path]:
+def write_all(files: Mapping[Path, bytes | str]) -> list[Path]:
     """Write several files as one: every temporary first, then the renames, so an error
     (or Ctrl-C) before the renames leaves none of them and none of the old ones changed."""
     staged: list[tuple[str, Path]] = []

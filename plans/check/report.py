@@ -1572,9 +1572,10 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
             rows.append(summary_row(str(f), None, str(exc)))
             continue
         try:
-            files = {out / f"{f.stem}.json": dumps(report.to_json()), out / f"{f.stem}.txt": table(report) + "\n"}
-            files.update(_extra(args, report, f))
-            write_all(files)
+            outputs: dict[Path, Any] = {out / f"{f.stem}.json": dumps(report.to_json()),
+                                        out / f"{f.stem}.txt": table(report) + "\n"}
+            outputs.update(_extra(args, report, f))
+            write_all(outputs)
         except PlansError as exc:
             bad += 1
             _err(one_line(exc))

@@ -427,6 +427,9 @@ def _driver(r: Reader, data: dict[str, Any], frame: int, frame_points: dict[str,
             raise r.fail("driver.phi_deg", "expected at least one angle")
         if len(values) > MAX_POSITIONS:
             raise r.fail("driver.phi_deg", f"{len(values)} angles; expected at most {MAX_POSITIONS}")
+        for v in values:
+            if isinstance(v, bool) or not isinstance(v, int | float):
+                raise r.fail("driver.phi_deg", f"expected a number of degrees, got {v!r}")
         phis = tuple(r.value(v, "driver.phi_deg", limit=1e300, floor=0.0) for v in values)
     return Driver(link=lid, pivot=link.axis[0], omega=sense * omega, eps=sense * eps,
                   phi_ref=phi_ref, sense=sense, phis_deg=phis)
