@@ -245,10 +245,16 @@ def test_solve_into_head_ends_quietly():
 
 def test_ctrl_c_stops_quietly_with_130(tmp_path):
     scene = _write(tmp_path / "x.toml", SCENE.replace("phi_deg = [30, 120]", "positions = 3600"))
-    proc = _plans("solve", str(scene), "--json", str(tmp_path / "r.json"))
-    time.sleep(4.0)  # past the imports: Ctrl-C while solving
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    code = ("import sys, drawings.cli\nprint('ready', flush=True)\n"
+            f"sys.exit(drawings.cli.main(['solve', {str(scene)!r}, '--json', {str(tmp_path / 'r.json')!r}]))")
+    proc = subprocess.Popen([sys.executable, "-c", code], cwd=ROOT, env=env, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE)
+    assert proc.stdout is not None
+    assert proc.stdout.readline() == b"ready\n"  # imports done: Ctrl-C while solving
+    time.sleep(0.5)
     proc.send_signal(signal.SIGINT)
-    out, err = proc.communicate(timeout=60)
+    out, err = proc.communicate(timeout=120)
     if proc.returncode == 0:  # finished before the signal: nothing to assert about Ctrl-C
         pytest.skip("the solve finished before Ctrl-C")
     assert proc.returncode == 130

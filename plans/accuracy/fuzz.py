@@ -238,6 +238,7 @@ class Sample:
     data: dict[str, Any]
     argv: Callable[[str, str | None], list[str]]  # (input file, JSON output or None) -> the command line
     rel: str
+    json: bool = True  # the command takes --json PATH
 
 
 def _kind_argv(kind: str, is_check: bool) -> Callable[[str, str | None], list[str]]:
@@ -283,10 +284,13 @@ def load_samples(root: Path = SAMPLES) -> list[Sample]:
         is_check = "checks" in p.relative_to(root).parts or ("student" in data and "positions" in data)
         sample = Sample(p, _few_positions(_absolute_paths(data, p.parent)), _kind_argv(kind, is_check),
                         str(p.relative_to(root)))
-        with tempfile.TemporaryDirectory() as tmp:
-            res = run_case(sample, to_toml(sample.data).encode("utf-8"), Path(tmp))
-        if res.ok and res.status == 0:
-            out.append(sample)
+        for with_json in (True, False):  # a command of another kind may have no --json
+            sample.json = with_json
+            with tempfile.TemporaryDirectory() as tmp:
+                res = run_case(sample, to_toml(sample.data).encode("utf-8"), Path(tmp))
+            if res.ok and res.status == 0:
+                out.append(sample)
+                break
     return out
 
 
@@ -345,7 +349,7 @@ def run_case(sample: Sample, raw: bytes, tmp: Path, draw: bool = False, json_out
     out_json = tmp / "out" / "result.json"
     out_json.parent.mkdir(exist_ok=True)
     before = _snapshot(tmp)
-    argv = sample.argv(str(src), str(out_json) if json_out else None)
+    argv = sample.argv(str(src), str(out_json) if json_out and sample.json else None)
     stdout, stderr = io.StringIO(), io.StringIO()
     with warnings.catch_warnings(record=True) as caught, contextlib.redirect_stdout(stdout), \
             contextlib.redirect_stderr(stderr):

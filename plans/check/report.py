@@ -1539,6 +1539,8 @@ def run(args: argparse.Namespace) -> int:
     except PlansError as exc:
         _err(one_line(exc))
         return 2
+    except BrokenPipeError:
+        raise  # the runner ends quietly: the reader of the table has gone
     except OSError as exc:
         _err(f"{exc.filename or ''}: {exc.strerror}")
         return 2
