@@ -173,7 +173,11 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
     check_format(r, data)
     kind = data.get("kind", "linkage")
     if kind != "linkage":
-        from plans.kinds import command_for
+        from plans.kinds import KINDS, command_for
+
+        if not isinstance(kind, str) or kind not in KINDS:
+            hint = did_you_mean(kind, KINDS) if isinstance(kind, str) else ""
+            raise r.fail("kind", f"expected one of {', '.join(repr(k) for k in KINDS)}, got {kind!r}{hint}")
 
         raise r.fail("kind", f"this is a {kind!r} file, not a linkage scene; "
                              f"{command_for(kind)}expected kind = \"linkage\" or no kind")
