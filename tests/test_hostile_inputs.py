@@ -307,6 +307,16 @@ scene("sheet-orientation", sub('format = "A3"', 'format = "A3"\norientation = "u
 scene("sheet-author-list", sub('format = "A3"', 'format = "A3"\nauthor = [1]'), "sheet.author", argv=DRAW)
 scene("sheet-author-control", sub('format = "A3"', 'format = "A3"\nauthor = "A\\u0000"'), "sheet.author",
       argv=DRAW)
+scene("sheet-typo", sub('format = "A3"', 'format = "A3"\norientaton = "portrait"'), "sheet.orientaton",
+      "did you mean 'orientation'", argv=DRAW)
+scene("sheet-positions-huge", sub('format = "A3"', 'format = "A3"\npositions = [1' + "0" * 400 + "]"),
+      "sheet.positions", argv=DRAW)
+scene("sheet-pin-unknown", add('[[sheet.pins]]\npanel = "velocity-30"\nx = 10\ny = 10\nsheets = 1'),
+      "sheet.pins[0].sheets", "did you mean 'sheet'", argv=DRAW)
+scene("sheet-pin-far", add('[[sheet.pins]]\npanel = "velocity-30"\nx = 1e300\ny = 10'), "sheet.pins[0].x",
+      argv=DRAW)
+scene("sheet-total-huge", sub('format = "A3"', 'format = "A3"\ntotal_sheets = 1' + "0" * 30), "sheet.total_sheets",
+      argv=DRAW)
 scene("draw-bad-scene", sub("length = 300", "length = -1"), "links.2.length", argv=DRAW)
 scene("draw-not-assemblable", sub("length = 300", "length = 10"), "scene.toml", "is shorter than", "mm", argv=DRAW)
 
