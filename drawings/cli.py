@@ -84,6 +84,10 @@ def build_parser() -> argparse.ArgumentParser:
     sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
     add_draw(sub)
     register_commands(sub, _DRAWING_COMMANDS)
+    if "bench" in sub.choices:  # ``plans bench`` draws bench.svg with the sheets' backend
+        from .bench_plot import add_plot
+
+        add_plot(sub.choices["bench"])
     if "check" in sub.choices:  # ``plans check --sheet DIR``: the marked and overlay sheets
         try:
             from .check_sheet import add_sheet_options

@@ -15,8 +15,10 @@ from typing import Any
 
 import numpy as np
 
+from plans.forces.analysis import kinetostatics
 from plans.forces.lever import force_rows, lever_plan
-from plans.forces.polygons import force_polygons, kinetostatics, nice_scale
+from plans.forces.polygons import force_polygons
+from plans.forces.shared import nice_scale
 from plans.kinematics.plan import Plan
 
 from .backend import Recording, Style, Transform

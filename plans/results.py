@@ -48,7 +48,7 @@ def _solve_scene(scene: Scene) -> Solution:
     plans = tuple(build_all(kin)) if scene.wants("velocity_plan") else ()
     forces: Any = None
     if scene.wants("force_polygons") or scene.wants("lever"):
-        from plans.forces import polygons as _forces  # loaded only when asked for
+        from plans.forces import analysis as _forces  # loaded only when asked for
 
         forces = _forces.kinetostatics(scene, kin)
     return Solution(scene, st, kin, plans, forces)

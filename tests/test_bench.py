@@ -11,7 +11,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from plans.accuracy import bench, reference
+from drawings.bench_plot import add_plot, svg_plot
+from plans.accuracy import bench, draftsman, oracles, reference
 from plans.kinematics import exact as kinematics
 
 
@@ -21,6 +22,7 @@ def small_run(tmp_path_factory):
     parser = argparse.ArgumentParser(prog="plans")
     sub = parser.add_subparsers(dest="command", required=True)
     bench.register(sub)
+    add_plot(sub.choices["bench"])  # the renderer hands the command its plot (bench.svg)
     args = parser.parse_args(["bench", "--quick", "--out", str(out), "--sizes", "1,12",
                               "--chain", "1,3", "--mc", "60"])
     assert args.func is bench.run
@@ -33,7 +35,7 @@ def test_bench_writes_markdown_json_and_svg(small_run):
         assert (small_run / name).stat().st_size > 0
     md = (small_run / "bench.md").read_text(encoding="utf-8")
     assert "## Summary" in md and "## Stability" in md and "## Hand drawing" in md
-    assert "Issue 2 targets" in md
+    assert "## Performance goals" in md and "360 V-engine positions" in md
     svg = (small_run / "bench.svg").read_text(encoding="utf-8")
     assert svg.startswith("<svg") and svg.rstrip().endswith("</svg>")
 
@@ -70,14 +72,14 @@ def test_exact_is_fastest_per_position_in_the_same_run(small_run):
 
 
 def test_svg_is_deterministic():
-    recs = [bench.Record("exact", "x", 360, 1e-15, 1e-4, 3e-7), bench.Record("newton", "x", 12, 1e-9, 1e-2, 1e-3)]
-    assert bench.svg_plot(recs, {"hand A1": 1e-2}) == bench.svg_plot(list(recs), {"hand A1": 1e-2})
+    recs = [oracles.Record("exact", "x", 360, 1e-15, 1e-4, 3e-7), oracles.Record("newton", "x", 12, 1e-9, 1e-2, 1e-3)]
+    assert svg_plot(recs, {"hand A1": 1e-2}) == svg_plot(list(recs), {"hand A1": 1e-2})
 
 
 def test_draftsman_error_shrinks_from_a4_to_a1():
     sc = reference.slider_crank_scene(0.05, 0.2, 0.015, 157.0)
-    a4 = bench.draftsman_errors(sc, 45.0, "A4", samples=800, seed=3)
-    a1 = bench.draftsman_errors(sc, 45.0, "A1", samples=800, seed=3)
+    a4 = draftsman.draftsman_errors(sc, 45.0, "A4", samples=800, seed=3)
+    a1 = draftsman.draftsman_errors(sc, 45.0, "A1", samples=800, seed=3)
     assert set(a4) == set(a1) >= {"v_B", "omega_2", "a_B", "eps_2", "v_S2", "a_S2"}
     for q in a1:
         assert a1[q].p95_rel < a4[q].p95_rel, q
@@ -89,17 +91,17 @@ def test_draftsman_error_shrinks_from_a4_to_a1():
 
 def test_expected_errors_for_the_checker():
     sc = reference.four_bar_scene(0.05, 0.2, 0.15, 0.18, 100.0)
-    tol = bench.expected_errors(sc, 30.0, "A1", samples=300)
+    tol = draftsman.expected_errors(sc, 30.0, "A1", samples=300)
     rel, absolute = tol["v_B"]
     v_B = abs(kinematics.solve(sc, [30.0], order=1).point("B")[1][0])
     assert 0 < rel < 0.1 and 0 < absolute < v_B
-    assert tol == bench.expected_errors(sc, 30.0, "A1", samples=300)  # seeded: reproducible
+    assert tol == draftsman.expected_errors(sc, 30.0, "A1", samples=300)  # seeded: reproducible
 
 
 def test_draftsman_model_scales_with_pencil():
     sc = reference.slider_crank_scene(0.05, 0.2, 0.0, 100.0)
-    fine = bench.draftsman_errors(sc, 60.0, "A1", bench.DraftsmanModel(0.05, 0.05), samples=500)
-    coarse = bench.draftsman_errors(sc, 60.0, "A1", bench.DraftsmanModel(0.5, 0.5), samples=500)
+    fine = draftsman.draftsman_errors(sc, 60.0, "A1", draftsman.DraftsmanModel(0.05, 0.05), samples=500)
+    coarse = draftsman.draftsman_errors(sc, 60.0, "A1", draftsman.DraftsmanModel(0.5, 0.5), samples=500)
     assert fine["v_B"].p95_abs < coarse["v_B"].p95_abs / 3
 
 
@@ -107,24 +109,24 @@ def test_finite_differences_converge_then_cancel():
     """Central differences: error falls as h² and then grows as ε/h (the step sweep's V)."""
     sc = reference.slider_crank_scene(0.05, 0.2, 0.015, 100.0)
     phis = np.linspace(0, 360, 36, endpoint=False) + 2.0
-    oracle = bench.oracle_from_reference(reference.slider_crank(0.05, 0.2, 0.015, 100.0, phis))
+    oracle = oracles.oracle_from_reference(reference.slider_crank(0.05, 0.2, 0.015, 100.0, phis))
     errs = {}
     for h in (1.0, 1e-2, 1e-7):
         point, omega, eps = bench._finite_differences(sc, phis, h, oracle)
-        errs[h] = bench.solver_errors(sc, oracle, point, omega, eps)["v"]
+        errs[h] = oracles.solver_errors(sc, oracle, point, omega, eps)["v"]
     assert errs[1e-2] < errs[1.0] / 100
     assert errs[1e-7] > errs[1e-2]
 
 
 def test_chain_scene_is_well_conditioned():
-    sc = bench.chain_scene(10)
+    sc = oracles.chain_scene(10)
     kin = kinematics.solve(sc, np.linspace(0, 360, 36), order=2)
     w = np.concatenate([kin.omega(k) for k in sc.links])
     assert np.all(np.isfinite(w)) and np.max(np.abs(w)) < 50 * abs(sc.driver.omega)
 
 
 def test_peers_skip_cleanly():
-    recs = bench.bench_peers(bench.reference_cases())
+    recs = bench.bench_peers(oracles.reference_cases())
     assert {r.method for r in recs} == {"pylinkage", "mechanism"}
     for r in recs:
         assert r.note.startswith("skipped") or math.isfinite(r.error)
@@ -148,9 +150,9 @@ def test_draftsman_without_error_draws_the_exact_plans(path):
 
     sc = load_scene(path)
     kin = kinematics.solve(sc, order=2)
-    perfect = bench.DraftsmanModel(0.0, 0.0)
+    perfect = draftsman.DraftsmanModel(0.0, 0.0)
     for k, phi in enumerate(sc.driver.phis_deg):
-        res = bench.draftsman_errors(sc, phi, "A1", perfect, samples=2, seed=0)
+        res = draftsman.draftsman_errors(sc, phi, "A1", perfect, samples=2, seed=0)
         for q, e in res.items():
             ref = abs(sc.driver.omega) * 0.01 if q[0] == "v" else sc.driver.omega**2 * 0.01
             if q.startswith(("omega_", "eps_")):
@@ -170,8 +172,8 @@ def test_draftsman_covers_coriolis_samples(name):
     from plans.scene.model import load_scene
 
     sc = load_scene(Path(__file__).resolve().parent.parent / "samples" / f"{name}.toml")
-    a1 = bench.draftsman_errors(sc, 45.0, "A1", samples=1500, seed=5)
-    a4 = bench.draftsman_errors(sc, 45.0, "A4", samples=1500, seed=5)
+    a1 = draftsman.draftsman_errors(sc, 45.0, "A1", samples=1500, seed=5)
+    a4 = draftsman.draftsman_errors(sc, 45.0, "A4", samples=1500, seed=5)
     assert set(a1) == set(a4)
     assert any(q.startswith("a^r_") for q in a1) and any(re.fullmatch(r"v_[A-Z]\d[A-Z]\d", q) for q in a1)
     if name != "scotch_yoke":  # the yoke translates: no Coriolis term
@@ -180,7 +182,7 @@ def test_draftsman_covers_coriolis_samples(name):
         assert 1e-4 < a1[q].p95_rel < 0.05, (q, a1[q].p95_rel)
         assert a1[q].p95_rel < a4[q].p95_rel, q
         assert abs(a1[q].mean) < 3 * a1[q].std + 1e-12, q
-    tol = bench.expected_errors(sc, 45.0, "A1", samples=300)
+    tol = draftsman.expected_errors(sc, 45.0, "A1", samples=300)
     assert set(tol) == set(a1)
 
 
@@ -190,8 +192,8 @@ def test_coriolis_error_carries_the_velocity_plan_error():
     from plans.scene.model import load_scene
 
     sc = load_scene(Path(__file__).resolve().parent.parent / "samples" / "shaper.toml")
-    pencil = bench.draftsman_errors(sc, 45.0, "A1", bench.DraftsmanModel(0.25, 0.0), samples=1500, seed=2)
-    protractor = bench.draftsman_errors(sc, 45.0, "A1", bench.DraftsmanModel(0.0, 0.25), samples=1500, seed=2)
+    pencil = draftsman.draftsman_errors(sc, 45.0, "A1", draftsman.DraftsmanModel(0.25, 0.0), samples=1500, seed=2)
+    protractor = draftsman.draftsman_errors(sc, 45.0, "A1", draftsman.DraftsmanModel(0.0, 0.25), samples=1500, seed=2)
     ak = "a^k_A3A2"
     assert pencil[ak].p95_mm > 0.25  # laid off ±0.25 plus ω and v_r read with error
     assert protractor[ak].p95_abs > 0  # the velocity plan's lines are drawn with the protractor

@@ -353,7 +353,7 @@ def test_checker_tolerance_agrees_with_the_monte_carlo(name):
     included; Coriolis components carry the velocity plan's reading error in both).  The
     stack-up adds worst cases, so it is the wider one far down a construction (up to ≈3.1×
     at the shaper's ram); it must never be much narrower than what good drawings reach."""
-    from plans.accuracy import bench
+    from plans.accuracy import draftsman
 
     path = ROOT / "samples" / f"{name}.toml"
     data = student(path, 0)
@@ -362,7 +362,7 @@ def test_checker_tolerance_agrees_with_the_monte_carlo(name):
     scales = (1000.0, data["scales"]["velocity"]["mu"], data["scales"]["acceleration"]["mu"])
     compared = 0
     for pos in data["positions"]:
-        mc = bench.draftsman_errors(scene, pos["phi_deg"], model=bench.DraftsmanModel(0.5, 0.5),
+        mc = draftsman.draftsman_errors(scene, pos["phi_deg"], model=draftsman.DraftsmanModel(0.5, 0.5),
                                     samples=3000, seed=7, scales=scales)
         for it in rep.items:
             if it.phi_deg != pos["phi_deg"] or it.quantity not in mc or it.tolerance_model != "draftsman":

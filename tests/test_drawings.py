@@ -446,7 +446,7 @@ def test_jupyter_views(v_engine):
 
 def test_force_polygon_vectors_measured_on_the_sheet(v_engine, v_svgs):
     """Polygon vectors / written μF against the exact kinetostatics (loads and reactions)."""
-    from plans.forces.polygons import kinetostatics
+    from plans.forces.analysis import kinetostatics
 
     scene = v_engine.scene
     kin = solve(scene)

@@ -15,9 +15,11 @@ import math
 import numpy as np
 import pytest
 
+from plans.forces.analysis import kinetostatics
 from plans.forces.lever import force_json, force_rows, lever_plan, zhukovsky_lever
 from plans.forces.loads import parse_loads
-from plans.forces.polygons import analyse_forces, force_polygons, kinetostatics, nice_scale
+from plans.forces.polygons import analyse_forces, force_polygons
+from plans.forces.shared import nice_scale
 from plans.kinematics.exact import solve
 from plans.scene.model import load_scene, scene_from_dict
 
@@ -400,15 +402,14 @@ def test_json_names_follow_the_scene_convention():
 
 
 def test_kinematics_only_scene_runs_no_force_analysis(monkeypatch):
-    import plans.forces.lever as lever
-    import plans.forces.polygons as forces
+    import plans.forces.analysis as forces
 
     def boom(*a, **k):
         raise AssertionError("force analysis ran")
 
     monkeypatch.setattr(forces, "analyse_forces", boom)
     monkeypatch.setattr(forces, "parse_loads", boom)
-    monkeypatch.setattr(lever, "zhukovsky_lever", boom)
+    monkeypatch.setattr(forces, "zhukovsky_lever", boom)
     scene = scene_from_dict(slider_crank_scene())
     assert kinetostatics(scene, solve(scene)) is None
     wants = scene_from_dict(slider_crank_scene(outputs=("lever",)))

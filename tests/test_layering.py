@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import ast
+import subprocess
+import sys
 from pathlib import Path
 
 FORBIDDEN = {"drawings", "svgwrite", "cairosvg", "cairocffi"}
@@ -22,3 +24,60 @@ def test_plans_never_imports_drawings_or_renderers():
                 names = [a.value for a in node.args if isinstance(a, ast.Constant) and isinstance(a.value, str)]
             for n in names:
                 assert n.split(".")[0] not in FORBIDDEN, f"{path.name} imports {n}"
+
+
+def _run(code: str) -> subprocess.CompletedProcess:
+    root = Path(__file__).resolve().parent.parent
+    return subprocess.run([sys.executable, "-c", code], cwd=root, capture_output=True, text=True, timeout=120)
+
+
+def test_import_plans_loads_no_renderer_and_no_shapely():
+    got = _run("import sys, plans; print(sorted(m for m in ('svgwrite', 'cairosvg', 'shapely', 'drawings') "
+               "if m in sys.modules))")
+    assert got.returncode == 0, got.stderr
+    assert got.stdout.strip() == "[]"
+
+
+def test_solve_runs_without_the_renderer():
+    """``python -m plans solve``: the plans, the forces and the lever, and nothing of the
+    renderer loaded."""
+    got = _run("import runpy, sys\n"
+               "sys.argv = ['plans', 'solve', 'samples/slider_crank.toml']\n"
+               "try:\n    runpy.run_module('plans', run_name='__main__')\n"
+               "except SystemExit as exc:\n    assert not exc.code, exc.code\n"
+               "print('loaded:', sorted(m for m in ('svgwrite', 'cairosvg', 'drawings') if m in sys.modules))")
+    assert got.returncode == 0, got.stderr
+    assert got.stdout.rstrip().endswith("loaded: []"), got.stdout[-300:]
+    assert "p_v" in got.stdout or "v_" in got.stdout
+
+
+def test_plans_of_every_position_need_no_shapely():
+    got = _run("import sys\n"
+               "from plans.scene.model import load_scene\n"
+               "from plans.kinematics.exact import solve\n"
+               "from plans.kinematics.construction import build_all\n"
+               "plans = build_all(solve(load_scene('samples/shaper.toml'), order=2))\n"
+               "assert plans[0].velocity.protocol() and plans[-1].readings\n"
+               "print('shapely' in sys.modules)")
+    assert got.returncode == 0, got.stderr
+    assert got.stdout.strip() == "False"
+
+
+def test_kinematics_never_imports_shapely():
+    """The construction intersects in closed form; shapely stays where it earns its place."""
+    root = Path(__file__).resolve().parent.parent / "plans" / "kinematics"
+    for path in root.rglob("*.py"):
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Import):
+                assert all(a.name.split(".")[0] != "shapely" for a in node.names), path.name
+            elif isinstance(node, ast.ImportFrom) and node.module:
+                assert node.module.split(".")[0] != "shapely", path.name
+
+
+def test_lever_depends_on_polygons_never_the_reverse():
+    src = (Path(__file__).resolve().parent.parent / "plans" / "forces" / "polygons.py").read_text(encoding="utf-8")
+    tree = ast.parse(src)
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom) and node.module:
+            assert node.module not in ("plans.forces.lever", "plans.forces.analysis"), node.module

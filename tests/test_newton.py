@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from plans.accuracy import newton, reference
-from plans.accuracy.bench import oracle_from_kinematics, oracle_from_reference, solver_errors
+from plans.accuracy.oracles import oracle_from_kinematics, oracle_from_reference, solver_errors
 from plans.errors import ConstructionError, Locked, NotAssemblable
 from plans.kinematics import exact as kinematics
 from plans.scene.model import load_scene

@@ -15,7 +15,12 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from plans.accuracy import newton, reference
-from plans.accuracy.bench import _construction_errors, _total, oracle_from_reference, solver_errors
+from plans.accuracy.oracles import (
+    construction_errors,
+    oracle_from_reference,
+    solver_errors,
+    total_error,
+)
 from plans.errors import Locked, NotAssemblable
 from plans.kinematics import construction
 from plans.kinematics import exact as kinematics
@@ -27,10 +32,10 @@ def _all_methods(sc, ref, phis):
     oracle = oracle_from_reference(ref)
     exact = solver_errors(sc, oracle, kin.point, kin.omega, kin.eps)
     plans = [construction.build(kin, k) for k in range(len(phis))]
-    cons = _construction_errors(sc, oracle, plans)
+    cons = construction_errors(sc, oracle, plans)
     nr = newton.solve(sc, phis, seed=newton.seed_from(kin, 0, perturb=1e-4))
     newt = solver_errors(sc, oracle, nr.point, nr.omega, nr.eps)
-    return _total(exact), _total(cons), _total(newt), plans
+    return total_error(exact), total_error(cons), total_error(newt), plans
 
 
 def _position_error(sc, ref, phis, size):
@@ -150,7 +155,7 @@ def test_nearly_parallel_slot_and_guide(alpha, tol_exact, tol_newton):
     nr = newton.solve(sc, phis, seed=newton.seed_from(kin, 0, perturb=1e-6))
     assert max(solver_errors(sc, ref, nr.point, nr.omega, nr.eps).values()) < tol_newton
     plans = [construction.build(kin, k) for k in range(len(phis))]
-    assert max(_construction_errors(sc, ref, plans).values()) < tol_exact
+    assert max(construction_errors(sc, ref, plans).values()) < tol_exact
 
 
 def test_parallel_slot_and_guide_is_a_clear_error():
@@ -311,7 +316,7 @@ def test_stiff_loads_three_balancing_loads_agree():
     largest balancing load."""
     from pathlib import Path
 
-    from plans.accuracy.bench import stiff_load_records
+    from plans.accuracy.stability import stiff_load_records
 
     samples = Path(__file__).resolve().parent.parent / "samples"
     if not (samples / "v_engine.toml").exists():

@@ -3,7 +3,8 @@ external and resisting forces), the force polygon of each Assur group by the Bru
 method, the crank and its balancing force or moment, and the Zhukovsky lever with the
 power balance.
 
-Owns: :mod:`.loads`, :mod:`.polygons`, :mod:`.lever`.  May import :mod:`plans.kinematics`
+Owns: :mod:`.loads`, :mod:`.polygons`, :mod:`.lever`, :mod:`.shared` (μF, the ruler, small vector
+helpers both import), :mod:`.analysis` (runs the polygons then the lever).  May import :mod:`plans.kinematics`
 and :mod:`plans.scene`.  The lever depends on the polygons, never the reverse.  Read
-first: :func:`plans.forces.polygons.analyse_forces`.
+first: :func:`plans.forces.analysis.kinetostatics`, then :func:`plans.forces.polygons.analyse_forces`.
 """

@@ -18,15 +18,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from plans.forces.loads import AppliedMoment
-from plans.forces.polygons import (
-    RULER_MM,
-    ForceAnalysis,
-    _mu_force,
-    _safe_div,
-    _unit,
-    force_polygons,
-    nice_scale,
-)
+from plans.forces.polygons import ForceAnalysis, force_polygons
+from plans.forces.shared import RULER_MM, mu_force, nice_scale, safe_div, unit_vector
 from plans.kinematics.exact import cross
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step
 
@@ -87,7 +80,7 @@ def zhukovsky_lever(fa: ForceAnalysis, scale: float | None = None) -> LeverAnaly
         assert v is not None
         w = rot * v
         mom = cross(w, F)
-        items.append(LeverForce(label, link, point, w, F, mom, _safe_div(np.abs(mom), np.abs(F))))
+        items.append(LeverForce(label, link, point, w, F, mom, safe_div(np.abs(mom), np.abs(F))))
         return v
 
     for f in fa.applied.forces:
@@ -117,8 +110,8 @@ def zhukovsky_lever(fa: ForceAnalysis, scale: float | None = None) -> LeverAnaly
         # a unit couple on the crank: its lever moment is ∓μv ω1, its power ω1
         unit = -turn * scale * omega1
         unit_power = omega1
-    by_lever = _safe_div(-total, unit)
-    by_power = _safe_div(-power, unit_power)
+    by_lever = safe_div(-total, unit)
+    by_power = safe_div(-power, unit_power)
     return LeverAnalysis(fa, float(scale), turn, tuple(items), _image_name(crank.point), w_bal,
                          unit, arm_bal, by_lever, by_power, valid)
 
@@ -155,7 +148,7 @@ def _couple(fa: ForceAnalysis, m: AppliedMoment):
     X = kin.point_on(m.link, zX)[0]
     Y = kin.point_on(m.link, zY)[0]
     l = np.abs(Y - X)
-    f = m.M / l * 1j * _unit(Y - X)  # cross(Y − X, f) = M
+    f = m.M / l * 1j * unit_vector(Y - X)  # cross(Y − X, f) = M
     return ((f"{m.label}'", m.link, _image_name(nY), zY, f),
             (f"{m.label}''", m.link, _image_name(nX), zX, -f))
 
@@ -293,7 +286,7 @@ def _drawn_balancing(lv: LeverAnalysis, k: int) -> tuple[float, float]:
     s = float(fa.sense[k])
     if fa.crank.kind == "force":
         c = fa.crank
-        mu = _mu_force(fa, [complex(f.F[k]) for f in c.loads]
+        mu = mu_force(fa, [complex(f.F[k]) for f in c.loads]
                        + [complex(c.F_bal[k] * c.e_bal[k]), complex(c.frame.F[k])])
         kin_read = _ruler(abs(float(c.F_bal[k])) * mu) / mu * float(np.sign(c.F_bal[k])) * s
         arm_m = 1.0  # the lever gives the force itself

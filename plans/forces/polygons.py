@@ -35,7 +35,6 @@ Plane vectors are complex numbers, ``cross(a, b) = Im(conj(a)·b)``.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
 
 import numpy as np
 import shapely
@@ -50,38 +49,14 @@ from plans.forces.loads import (
     apply_loads,
     parse_loads,
 )
-from plans.kinematics import construction
+from plans.forces.shared import RULER_MM, mu_force, safe_div, unit_vector
 from plans.kinematics.exact import Kinematics, cross
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step
 from plans.kinematics.structure import Group
 from plans.scene.model import Joint, Scene
 
-if TYPE_CHECKING:
-    from plans.forces.lever import LeverAnalysis
-
 C = NDArray[np.complex128]
 R = NDArray[np.float64]
-
-#: What a draftsman reads off a ruler, mm (readings are rounded to this).
-RULER_MM = 0.5
-#: Nice values of K = 1/μ (unit per mm), times powers of ten: consecutive ratios ≤ 1.25,
-#: so the longest vector always lands between 80 and 100 mm.
-_NICE = (1.0, 1.2, 1.25, 1.5, 1.6, 2.0, 2.5, 3.0, 3.5, 4.0, 5.0, 6.0, 7.0, 8.0)
-
-
-def nice_scale(longest: float, target_mm: float = 100.0) -> float:
-    """μF (mm per N): K a round number from a denser set, the longest vector 80..100 mm."""
-    return construction.nice_scale(longest, target_mm, _NICE)
-
-
-def _unit(z: C) -> C:
-    mag = np.abs(z)
-    return np.where(mag > 0, z / np.where(mag > 0, mag, 1.0), 1.0 + 0j)
-
-
-def _safe_div(a: R, b: R) -> R:
-    return np.where(b != 0, a / np.where(b != 0, b, 1.0), 0.0)
-
 
 # --------------------------------------------------------------------------- results
 
@@ -124,7 +99,7 @@ class Reaction:
         """x along the guide from the pin to the resultant (m); 0 where N = 0 (pure couple)."""
         if self.guide is None:
             return np.zeros(len(self.M))
-        return _safe_div(self.M, self.N)
+        return safe_div(self.M, self.N)
 
 
 @dataclass(frozen=True, slots=True)
@@ -200,17 +175,6 @@ class ForceAnalysis:
 # --------------------------------------------------------------------------- analysis
 
 
-def kinetostatics(scene: Scene, kin: Kinematics) -> tuple[ForceAnalysis, LeverAnalysis] | None:
-    """Force analysis and Zhukovsky lever if the scene asks for them, else None (nothing computed)."""
-    if not (scene.wants("force_polygons") or scene.wants("lever")):
-        return None
-    from plans.forces.lever import zhukovsky_lever
-
-    loads = parse_loads(scene)
-    fa = analyse_forces(scene, kin, loads)
-    return fa, zhukovsky_lever(fa)
-
-
 def analyse_forces(scene: Scene, kin: Kinematics, loads: Loads | None = None) -> ForceAnalysis:
     """All reactions and the balancing load, exact, vectorised over the positions of ``kin``."""
     if kin.order < 2:
@@ -270,7 +234,7 @@ def _arms(eq: str, fs, P: C) -> dict[tuple[str, str], R]:
     out = {}
     for f in fs:
         mag = np.abs(f.F)
-        out[(eq, f.label)] = _safe_div(np.abs(cross(f.r - P, f.F)), mag)
+        out[(eq, f.label)] = safe_div(np.abs(cross(f.r - P, f.F)), mag)
     return out
 
 
@@ -301,7 +265,7 @@ def _rrr(kin: Kinematics, g: Group, forces, moments) -> GroupForces:
     B = kin.point(j2.point, i)[0]
     Cc = kin.point(j3.point, j)[0]
     fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
-    ui, uj = _unit(B - A), _unit(B - Cc)
+    ui, uj = unit_vector(B - A), unit_vector(B - Cc)
     li, lj = np.abs(B - A), np.abs(B - Cc)
     ei, ej = 1j * ui, 1j * uj
     t_i = _moment(fi, mi, B, n) / li  # ΣM_B(i): −l·F^τ + M_i(B) = 0
@@ -329,7 +293,7 @@ def _rrp(kin: Kinematics, g: Group, forces, moments) -> GroupForces:
     A = kin.point(j1.point, i)[0]
     B = kin.point(j2.point, i)[0]
     fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
-    ui, li = _unit(B - A), np.abs(B - A)
+    ui, li = unit_vector(B - A), np.abs(B - A)
     ei = 1j * ui
     u3 = _guide(kin, j3)
     n3 = 1j * u3
@@ -435,7 +399,7 @@ def _crank(scene: Scene, kin: Kinematics, loads: Loads, forces, moments) -> Cran
     P = kin.point(loads.balancing.point, link)[0]
     f1, m1 = forces[link], moments[link]
     l = np.abs(P - O)
-    e = 1j * _unit(P - O)
+    e = 1j * unit_vector(P - O)
     M_O = _moment(f1, m1, O, n)
     if loads.balancing.kind == "force":
         F_bal = -M_O / l  # ΣM_O: F_bal·l + M_1(O) = 0
@@ -447,7 +411,7 @@ def _crank(scene: Scene, kin: Kinematics, loads: Loads, forces, moments) -> Cran
         F_frame = -_sum(f1, n)
     joint = next(jt for jt in scene.joints if set(jt.links) == {link, scene.frame})
     frame = Reaction(joint, link, scene.frame, O, F_frame, np.zeros(n))
-    arms = {f.label: _safe_div(np.abs(cross(f.r - O, f.F)), np.abs(f.F)) for f in f1}
+    arms = {f.label: safe_div(np.abs(cross(f.r - O, f.F)), np.abs(f.F)) for f in f1}
     arms["F_bal"] = l
     return CrankForces(link, tuple(f1), tuple(m1), loads.balancing.kind, loads.balancing.point, P, e,
                        F_bal, M_bal, frame, arms)
@@ -573,13 +537,6 @@ class _Poly:
                     tuple(self.steps), tuple(self.notes))
 
 
-def _mu_force(fa: ForceAnalysis, values: list[complex]) -> float:
-    given = fa.scene.scales.get("force")
-    if given:
-        return given
-    return nice_scale(max((abs(v) for v in values), default=0.0))
-
-
 def force_polygons(fa: ForceAnalysis, k: int) -> tuple[ForcePolygon, ...]:
     """The force polygons of position k: groups farthest first, then the crank."""
     scene = fa.scene
@@ -593,7 +550,7 @@ def force_polygons(fa: ForceAnalysis, k: int) -> tuple[ForcePolygon, ...]:
         li = [(f.label, complex(f.F[k])) for f in gf.loads_i]
         lj = [(f.label, complex(f.F[k])) for f in gf.loads_j]
         everything = [v for _, v in li + lj] + [complex(rc.F[k]) for rc in gf.reactions]
-        poly = _Poly(_mu_force(fa, everything))
+        poly = _Poly(mu_force(fa, everything))
         if g.kind in ("RRR", "RRP"):
             assert r1.tau is not None and r1.e_tau is not None and r1.e_n is not None
             tau1 = f"{n1}^τ"
@@ -652,7 +609,7 @@ def force_polygons(fa: ForceAnalysis, k: int) -> tuple[ForcePolygon, ...]:
     c = fa.crank
     loads = [(f.label, complex(f.F[k])) for f in c.loads]
     bal = complex(c.F_bal[k] * c.e_bal[k])
-    poly = _Poly(_mu_force(fa, [v for _, v in loads] + [bal, complex(c.frame.F[k])]))
+    poly = _Poly(mu_force(fa, [v for _, v in loads] + [bal, complex(c.frame.F[k])]))
     for lab, v in loads:
         poly.lay(lab, v)
     if c.kind == "force":

@@ -9,6 +9,7 @@ mm per SI unit (mm/(m/s), mm/(m/s²), mm/N).
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 #: Segment kinds, as the textbook distinguishes them.
@@ -62,7 +63,7 @@ class Plan:
     points: tuple[PlanPoint, ...]
     segments: tuple[Segment, ...]
     lines: tuple[ConstructionLine, ...]
-    steps: tuple[Step, ...]
+    steps: Sequence[Step]  # a tuple, or written when first read
     degenerate: tuple[str, ...] = ()  # notes on dead centres / parallel lines met
 
     def xy(self, name: str) -> tuple[float, float]:

@@ -1,0 +1,348 @@
+"""What a report is made of (items, findings) and the findings about the student's own work:
+the same figure written twice, figures symmetry makes equal, π = 3.14, a wrong scale,
+swapped segments."""
+
+from __future__ import annotations
+
+import itertools
+import math
+import re
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from plans.check.checkfile import CheckFile, StudentPosition, Written
+from plans.check.providers import Context, points_of
+
+PI_314 = 3.14
+
+@dataclass(frozen=True, slots=True)
+class Item:
+    quantity: str
+    phi_deg: float
+    student: float  # SI
+    student_mm: float | None
+    exact: float
+    exact_mm: float | None
+    unit: str
+    error_pct: float | None
+    error_mm: float | None
+    tolerance: float  # SI
+    tolerance_mm: float | None
+    tolerance_model: str  # "draftsman" | "rule"
+    verdict: str  # "pass" | "fail"
+    where: str
+    field: str
+    source: str
+    figure: str = "value"  # "measured" (a segment, mm), "value", "both" (a value and its segment)
+    plan: str | None = None
+    segment: tuple[str, str] | None = None
+
+    @property
+    def tolerance_pct(self) -> float | None:
+        return 100.0 * self.tolerance / abs(self.exact) if self.exact else None
+
+    def to_json(self) -> dict:
+        return {"quantity": self.quantity, "phi_deg": self.phi_deg, "student": self.student,
+                "student_mm": self.student_mm, "exact": self.exact, "exact_mm": self.exact_mm,
+                "unit": self.unit, "error_pct": self.error_pct, "error_mm": self.error_mm,
+                "tolerance": self.tolerance, "tolerance_mm": self.tolerance_mm,
+                "tolerance_pct": self.tolerance_pct, "tolerance_model": self.tolerance_model,
+                "verdict": self.verdict, "where": self.where, "field": self.field, "source": self.source,
+                "figure": self.figure, "plan": self.plan, "segment": list(self.segment) if self.segment else None}
+
+
+@dataclass(frozen=True, slots=True)
+class Finding:
+    kind: str  # duplicate arithmetic relation symmetry pi scale swapped percent
+    message: str
+    phi_deg: float | None = None
+    quantities: tuple[str, ...] = ()
+    where: tuple[str, ...] = ()
+    fields: tuple[str, ...] = ()
+
+    def to_json(self) -> dict:
+        return {"kind": self.kind, "message": self.message, "phi_deg": self.phi_deg,
+                "quantities": list(self.quantities), "where": list(self.where), "fields": list(self.fields)}
+
+
+@dataclass(frozen=True, slots=True)
+class Unchecked:
+    quantity: str
+    phi_deg: float
+    student: float
+    reason: str
+    where: str
+
+    def to_json(self) -> dict:
+        return {"quantity": self.quantity, "phi_deg": self.phi_deg, "student": self.student,
+                "reason": self.reason, "where": self.where}
+
+
+def consistent(w: Written, m: Written, mm_per_unit: float, rel: float) -> bool:
+    """A value that is its measured segment over the scale, to the student's rounding."""
+    want = m.value / mm_per_unit
+    return abs(w.value - want) <= w.half_ulp + m.half_ulp / mm_per_unit + rel * abs(want) + 1e-12
+
+
+# --------------------------------------------------------------------------- consistency
+
+
+def fmt(x: float) -> str:
+    """A computed number, four significant digits (whole numbers above 10 000)."""
+    if x == 0:
+        return "0"
+    if abs(x) >= 1e4:
+        return f"{x:.0f}"
+    return f"{x:.4g}"
+
+
+def as_written(w: Written) -> str:
+    """A figure as the student wrote it."""
+    x = w.value
+    if w.half_ulp >= 0.5 and float(x).is_integer():
+        return str(int(x))
+    s = repr(float(x))
+    return s[:-2] if s.endswith(".0") else s
+
+
+def where_note(w: Written) -> str:
+    return f" ({w.where})" if w.where else ""
+
+
+def _same(a: Written, b: Written, rel: float) -> bool:
+    slack = a.half_ulp + b.half_ulp + rel * max(abs(a.value), abs(b.value))
+    return abs(a.value - b.value) <= slack
+
+
+def duplicate_findings(cf: CheckFile, pos: StudentPosition) -> list[Finding]:
+    out = []
+    rel = cf.tolerance.arithmetic_pct / 100.0
+    for kind in ("value", "measured"):
+        groups: dict[str, list[Written]] = {}
+        for w in (pos.values if kind == "value" else pos.measured):
+            groups.setdefault(w.quantity, []).append(w)
+        for q, ws in groups.items():
+            if len(ws) < 2:
+                continue
+            if all(_same(ws[0], w, rel) for w in ws[1:]):
+                continue
+            unit = "mm" if kind == "measured" else ""
+            shown = " and ".join(f"{as_written(w)}{(' ' + unit) if unit else ''}{where_note(w)}" for w in ws)
+            what = f"the segment for {q}" if kind == "measured" else q
+            out.append(Finding("duplicate", f"φ = {pos.phi_deg:g}°: {what} is written as {shown}",
+                               pos.phi_deg, (q,), tuple(w.where for w in ws), tuple(w.field for w in ws)))
+    return out
+
+
+_POSITION_FREE = re.compile(r"^(m|I|G)_\d+$|^l_\w+$")
+
+
+def position_free(scene: Any, q: str) -> bool:
+    """A mass, an inertia, or the length between two points of one rigid link; not the
+    distance of a block from its rocker's pivot (l_CA of a shaper changes with the angle)."""
+    if not _POSITION_FREE.match(q):
+        return False
+    if not q.startswith("l_"):
+        return True
+    pts = points_of(q[2:])
+    if len(pts) != 2:
+        return True
+    return any(set(pts) <= set(link.points) for link in scene.links.values()) \
+        or set(pts) <= set(scene.frame_points)
+
+
+def across_positions_findings(cf: CheckFile) -> list[Finding]:
+    """Masses, inertias, lengths do not depend on the crank angle."""
+    out = []
+    rel = cf.tolerance.arithmetic_pct / 100.0
+    seen: dict[str, list[tuple[float, Written]]] = {}
+    for pos in cf.positions:
+        for w in pos.values:
+            if position_free(cf.scene, w.quantity):
+                seen.setdefault(w.quantity, []).append((pos.phi_deg, w))
+    for q, ws in seen.items():
+        phis = {p for p, _ in ws}
+        if len(phis) < 2:
+            continue
+        first = ws[0][1]
+        bad = [(p, w) for p, w in ws if not _same(first, w, rel) and p != ws[0][0]]
+        if bad:
+            shown = " and ".join(f"{as_written(w)} at {p:g}°{where_note(w)}" for p, w in ws)
+            out.append(Finding("duplicate", f"{q} does not depend on the crank angle but is written as {shown}",
+                               None, (q,), tuple(w.where for _, w in ws), tuple(w.field for _, w in ws)))
+    return out
+
+
+
+
+def symmetry_findings(cf: CheckFile, pos: StudentPosition, items: list[Item]) -> list[Finding]:
+    """Figures whose exact values are equal (a symmetric position) must be equal on the sheet."""
+    out = []
+    seg_mm = cf.tolerance.segment_mm
+    rel = cf.tolerance.arithmetic_pct / 100.0
+    firsts: dict[str, Item] = {}
+    for it in items:
+        firsts.setdefault(it.quantity, it)
+    qs = list(firsts)
+    for a, b in itertools.combinations(qs, 2):
+        ia, ib = firsts[a], firsts[b]
+        if ia.unit != ib.unit or ia.exact == 0 or ia.source != ib.source:
+            continue
+        if a[:2] != b[:2] or ("^" in a) != ("^" in b) or (a.startswith("F_bal") and b.startswith("F_bal")):
+            continue  # (F_bal by two methods is the percent check's business)
+        if abs(ia.exact - ib.exact) > 1e-9 * abs(ia.exact):
+            continue
+        gap = abs(ia.student - ib.student)
+        # the student should write the same figure twice: allow the reading of two segments
+        # (±seg each) or the rounding of two values
+        allow = _half_ulp_of(ia.student) + _half_ulp_of(ib.student) + rel * abs(ia.exact)
+        if ia.exact_mm and ib.exact_mm:  # read off the drawing (directly or through a segment)
+            allow += 2 * seg_mm / (ia.exact_mm / ia.exact)
+        if gap > allow * (1 + 1e-9):
+            mm = ""
+            if ia.figure != "value" and ib.figure != "value" and ia.student_mm is not None \
+                    and ib.student_mm is not None:
+                mm = f" ({fmt(ia.student_mm)} mm and {fmt(ib.student_mm)} mm)"
+            out.append(Finding("symmetry",
+                               f"φ = {pos.phi_deg:g}°: {a} and {b} are exactly equal at this position (both "
+                               f"{fmt(ia.exact)} {ia.unit}: symmetry), but the student has {fmt(ia.student)}{_at_item(ia)} "
+                               f"and {fmt(ib.student)}{_at_item(ib)} {ia.unit}{mm}",
+                               pos.phi_deg, (a, b), (ia.where, ib.where), (ia.field, ib.field)))
+    return out
+
+
+def _at_item(it: Item) -> str:
+    return f" ({it.where})" if it.where else ""
+
+
+def swapped_findings(ctx: Context, pos: StudentPosition, items: list[Item]) -> list[Finding]:
+    """A failed plan segment whose length is that of another segment of the same plan:
+    two segments swapped (each has the other's length) or the wrong segment measured."""
+    out = []
+    k = pos.index
+    rows = [i for i in items if i.source == "plan" and i.figure != "value" and i.student_mm is not None
+            and i.exact_mm is not None and i.plan in ("velocity", "acceleration")]
+    done: set[frozenset[str]] = set()
+    for it in rows:
+        if it.verdict != "fail":
+            continue
+        assert it.student_mm is not None and it.exact_mm is not None and it.plan is not None
+        plan = ctx.plan(k, it.plan)
+        if plan is None:
+            continue
+        own_tol = it.tolerance_mm or ctx.cf.tolerance.segment_mm
+        for s in plan.segments:
+            if s.label == it.quantity or abs(s.length_mm - it.exact_mm) <= 2 * own_tol:
+                continue
+            if abs(s.length_mm - it.student_mm) > own_tol:
+                continue
+            pair = frozenset((it.quantity, s.label))
+            if pair in done:
+                break
+            partner = next((o for o in rows if o.quantity == s.label), None)
+            if partner is not None and partner.student_mm is not None and \
+                    abs(partner.student_mm - it.exact_mm) <= (partner.tolerance_mm or own_tol):
+                done.add(pair)
+                out.append(Finding("swapped",
+                                   f"φ = {pos.phi_deg:g}°: {it.quantity} = {fmt(it.student_mm)} mm and {s.label} = "
+                                   f"{fmt(partner.student_mm)} mm are swapped: on the {it.plan} plan at the "
+                                   f"student's scale {it.quantity} is {fmt(it.exact_mm)} mm and {s.label} "
+                                   f"{fmt(s.length_mm)} mm",
+                                   pos.phi_deg, (it.quantity, s.label), (it.where, partner.where),
+                                   (it.field, partner.field)))
+            elif abs(it.student_mm - it.exact_mm) > 3 * own_tol:
+                out.append(Finding("swapped",
+                                   f"φ = {pos.phi_deg:g}°: {it.quantity} = {fmt(it.student_mm)} mm{_at_item(it)} is "
+                                   f"close to the length of {s.label} ({fmt(s.length_mm)} mm), not of {it.quantity} "
+                                   f"({fmt(it.exact_mm)} mm): was the wrong segment measured?",
+                                   pos.phi_deg, (it.quantity, s.label), (it.where,), (it.field,)))
+            break
+    return out
+
+
+def pi_findings(cf: CheckFile, items: list[Item]) -> list[Finding]:
+    """Values computed from the data (ω1 = πn/30, v_A, a_A, masses, gas forces), not read
+    off a drawing, that are the exact ones times (3.14/π)^n, where the student's
+    rounding is fine enough to tell."""
+    out = []
+    measured = {(p.phi_deg, w.quantity) for p in cf.positions for w in p.measured}
+    d = cf.scene.driver
+    crank = cf.scene.links[d.link]
+    computed = {f"omega_{d.link}", f"v_{crank.axis[1]}", f"a_{crank.axis[1]}"}
+    for it in items:
+        if it.figure != "value" or (it.phi_deg, it.quantity) in measured or it.exact == 0:
+            continue
+        if it.quantity not in computed and not re.match(r"^(m|I|G|P)_\d+$", it.quantity):
+            continue  # read off a drawing: the drawing's error hides π
+        hu = _half_ulp_of(it.student)
+        if abs(it.student - it.exact) <= hu:
+            continue
+        for n in (1, 2):
+            f = (PI_314 / math.pi) ** n
+            if hu > 0.5 * abs(1 - f) * abs(it.exact):
+                continue  # the rounding hides the effect of π
+            if abs(it.student - it.exact * f) <= hu:
+                out.append(Finding("pi", f"φ = {it.phi_deg:g}°: {it.quantity} = {fmt(it.student)}{_at_item(it)} "
+                                         f"is computed with π = 3.14: with π it is {fmt(it.exact)} {it.unit} "
+                                         f"({100 * (it.student / it.exact - 1):+.3f} %), and everything computed "
+                                         f"from it inherits the error",
+                                   it.phi_deg, (it.quantity,), (it.where,), (it.field,)))
+                break
+    return out
+
+
+def _half_ulp_of(x: float) -> float:
+    s = repr(float(x))
+    if "e" in s:
+        mant, exp = s.split("e")
+        dec = len(mant.split(".")[1]) if "." in mant else 0
+        return 0.5 * 10.0 ** (int(exp) - dec)
+    dec = len(s.split(".")[1]) if "." in s and not s.endswith(".0") else 0
+    return 0.5 * 10.0 ** (-dec)
+
+
+def scale_findings(cf: CheckFile, items: list[Item]) -> list[Finding]:
+    """A plan whose figures are all off by one factor: values divided by another μ than the
+    sheet's, or segments drawn at another μ."""
+    out = []
+    for plan in ("velocity", "acceleration"):
+        mu = cf.scales.get(plan)
+        if mu is None:
+            continue
+        sym = "μv" if plan == "velocity" else "μa"
+        prefix = "v_" if plan == "velocity" else "a_"
+        ratios: list[float] = []
+        names: list[str] = []
+        for pos in cf.positions:
+            for w in pos.values:
+                if not w.quantity.startswith(prefix) or w.value == 0:
+                    continue
+                ms = pos.written(w.quantity, "measured")
+                if ms and ms[0].value > 0:
+                    ratios.append(w.value * mu / ms[0].value)
+                    names.append(w.quantity)
+        if len(ratios) >= 2:
+            r = float(np.median(ratios))
+            members = [n for n, x in zip(names, ratios, strict=True) if abs(x / r - 1) < 0.005]
+            if abs(r - 1) > 0.01 and len(members) >= max(2, 2 * len(ratios) // 3):
+                out.append(Finding("scale", f"the {plan} values are their measured segments divided by "
+                                            f"{mu / r:.3g} mm per unit, but the sheet's {sym} is {fmt(mu)}: "
+                                            f"the student divided by the wrong scale, the values are "
+                                            f"{100 * (r - 1):+.1f} % off",
+                                   None, tuple(dict.fromkeys(members))))
+        rows = [i for i in items if i.plan == plan and i.source == "plan" and i.figure != "value"
+                and i.exact_mm and i.exact_mm > 5 and i.student_mm]
+        ratios = [(i.student_mm or 0.0) / (i.exact_mm or 1.0) for i in rows]
+        if len(ratios) >= 3:
+            r = float(np.median(ratios))
+            if abs(r - 1) > 0.02 and max(abs(x / r - 1) for x in ratios) < 0.02:
+                out.append(Finding("scale", f"every measured segment of the {plan} plans is {r:.3f}× its exact "
+                                            f"length at {sym} = {fmt(mu)}: the plans look drawn at {sym} = "
+                                            f"{mu * r:.3g}, not at the scale written on the sheet",
+                                   None, tuple(dict.fromkeys(i.quantity for i in rows))))
+    return out
+
+
+# --------------------------------------------------------------------------- text and CSV

@@ -1,0 +1,22 @@
+"""The force analysis a scene asks for: loads, Bruevich polygons, then the Zhukovsky lever.
+
+The one place that runs the polygons and the lever together (the lever depends on the
+polygons' analysis, the polygons never on the lever).
+"""
+
+from __future__ import annotations
+
+from plans.forces.lever import LeverAnalysis, zhukovsky_lever
+from plans.forces.loads import parse_loads
+from plans.forces.polygons import ForceAnalysis, analyse_forces
+from plans.kinematics.exact import Kinematics
+from plans.scene.model import Scene
+
+
+def kinetostatics(scene: Scene, kin: Kinematics) -> tuple[ForceAnalysis, LeverAnalysis] | None:
+    """Force analysis and Zhukovsky lever if the scene asks for them, else None (nothing computed)."""
+    if not (scene.wants("force_polygons") or scene.wants("lever")):
+        return None
+    loads = parse_loads(scene)
+    fa = analyse_forces(scene, kin, loads)
+    return fa, zhukovsky_lever(fa)
