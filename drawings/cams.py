@@ -1,0 +1,505 @@
+"""The cam sheet: motion diagrams by graphical integration, the ds/dφ–s diagram with the
+pressure-angle rays and the region of allowed centres, the profile by inversion."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from plans.cams.analysis import Profile, grid, profile
+from plans.cams.base_radius import BaseRadius, division_points, min_base_radius
+from plans.cams.graphical import Integration, integral_scale, integrate_cam
+from plans.cams.model import Cam, load_cam
+
+from .backend import HAIR, MAIN, THICK, THIN, Pt, Recording, Style
+from .common import arrow, dot, fmt
+from .panels import STANDARD_RATIOS, Panel, finish, ratio_text
+from .sheet import GAP, TB_H, Sheet, SheetSpec, compose, sheet_spec, usable
+from .text import layout
+
+EXACT = Style(width=0.25, stroke="#1f5fbf", dash=(2.0, 1.0))
+AXIS = Style(width=0.18, stroke="#333", dash=(6.0, 1.0, 1.0, 1.0), cls="axis")
+REGION = Style(stroke=None, width=0.0, fill="#cfe3cf")
+WARN = Style(width=0.7, stroke="#c00000")
+SMALL = 2.5
+LABEL = 3.5
+PHI_LENGTH = 360.0  # mm for the whole turn on the motion diagrams of an A1 sheet (1 mm per degree)
+
+WORDS = {
+    "motion": ("Диаграммы движения толкателя (графическое интегрирование)",
+               "Follower motion diagrams (graphical integration)"),
+    "diagram": ("Диаграмма ds/dφ – s: углы давления, область центров",
+                "The ds/dφ – s diagram: pressure angles, region of centres"),
+    "profile": ("Профиль кулачка (метод обращения)", "Cam profile by inversion"),
+    "rocker": ("Область центров кулачка по углам давления (коромысло)",
+               "Region of cam centres from the pressure angles (rocker)"),
+    "results": ("Результаты", "Results"),
+}
+
+
+def _w(key: str, lang: str) -> str:
+    ru, en = WORDS[key]
+    return ru if lang == "ru" else en
+
+
+@dataclass(frozen=True)
+class Drawing:
+    cam: Cam
+    spec: SheetSpec
+    panels: tuple[Panel, ...]
+    sheets: tuple[Sheet, ...]
+
+
+def nice(x: float) -> float:
+    """The largest 1, 2, 2.5, 5 × 10ⁿ not above x (x > 0)."""
+    e = math.floor(math.log10(x))
+    for m in (5.0, 2.5, 2.0, 1.0):
+        if m * 10**e <= x * (1 + 1e-12):
+            return m * 10**e
+    return 10 ** (e - 1) * 5
+
+
+def drawing_scale(size_m: float, target_mm: float) -> float:
+    """The largest standard drawing scale (GOST 2.302), paper mm per m, drawing ``size_m``
+    within ``target_mm``."""
+    for r in STANDARD_RATIOS:
+        if r * 1000.0 * size_m <= target_mm:
+            return r * 1000.0
+    return STANDARD_RATIOS[-1] * 1000.0
+
+
+def nice_up(x: float) -> float:
+    """The smallest 1, 2, 2.5, 5 × 10ⁿ not below x (x > 0)."""
+    e = math.floor(math.log10(x))
+    for m in (1.0, 2.0, 2.5, 5.0, 10.0):
+        if m * 10**e >= x * (1 - 1e-12):
+            return m * 10**e
+    return 10.0 ** (e + 1)
+
+
+def pole_distance(x: float) -> float:
+    """The shortest pole distance of the usual ones, not below x."""
+    for h in (10.0, 12.0, 15.0, 20.0, 25.0, 30.0, 40.0, 50.0, 60.0, 80.0, 100.0):
+        if h >= x:
+            return h
+    return nice_up(x)
+
+
+def _unit(unit: str, lang: str) -> str:
+    return {"mm": "мм", "cm": "см", "m": "м"}.get(unit, unit) if lang == "ru" else unit
+
+
+def _lift(cam: Cam) -> tuple[float, str]:
+    """Factor from SI lift to the drawn unit, and its name."""
+    if cam.follower == "oscillating":
+        return 180 / math.pi, "°"
+    return 1 / cam.scale, cam.unit
+
+
+def _text(rec: Recording, s: str, x: float, y: float, size: float = SMALL, anchor: str = "start",
+          valign: str = "middle", eid: str = "") -> None:
+    rec.text(layout(s, x, y, size, anchor, valign), "label", eid)
+
+
+def motion_panel(cam: Cam, lang: str, g: float = 1.0) -> Panel:
+    """s, ds/dφ and d²s/dφ² against φ: a(φ) exact, integrated twice by mid-ordinates and a
+    pole (the chains, thick), the exact curves beside them (dashed)."""
+    f, unit = _lift(cam)
+    ig: Integration = integrate_cam(cam)
+    fine = grid(cam, 0.5)
+    from plans.cams.analysis import motion
+
+    mo = motion(cam, np.append(fine, 2 * np.pi))
+    length = PHI_LENGTH * g
+    x_of = length / (2 * math.pi)  # k_φ, mm per rad
+    a_max = float(np.max(np.abs(mo.s2))) * f or 1.0
+    v_max = float(np.max(np.abs(mo.s1))) * f or 1.0
+    s_max = float(np.max(mo.s)) * f or 1.0
+    k_a = nice(32.0 * g / a_max)
+    # poles: the shortest usual H (10 mm at least) that keeps ds/dφ within 26 mm, s within 40 mm
+    H1 = pole_distance(k_a * x_of * v_max / (30.0 * g))
+    k_v = integral_scale(k_a, x_of, H1)
+    H2 = pole_distance(k_v * x_of * s_max / (50.0 * g))
+    k_s = integral_scale(k_v, x_of, H2)
+    rec = Recording()
+    y_v, y_a = 70.0 * g + 10, 145.0 * g + 20
+    rows = [("s", k_s, mo.s * f, ig.s_nodes * f, None, 0.0),
+            ("ds/dφ", k_v, mo.s1 * f, ig.v_nodes * f, None, y_v),
+            ("d²s/dφ²", k_a, mo.s2 * f, None, ig.a_mid * f, y_a)]
+    X = np.append(fine, 2 * np.pi) * x_of
+    nodes_x = ig.nodes * x_of
+    for name, k, exact, chain, mid, y0 in rows:
+        tag = {"s": "s", "ds/dφ": "ds", "d²s/dφ²": "d2s"}[name]  # ids: plain ASCII
+        rec.line((-4, y0), (length + 6, y0), THIN, f"axis-{tag}")
+        half = 34.0 * g if name != "s" else 0.0
+        top = min(y0 - k * float(np.max(exact)) - 2, y0 - 34.0 * g)
+        rec.line((0, y0 + half), (0, top), THIN)
+        _text(rec, name, 1.5, top, LABEL, "start", "top")
+        _text(rec, "φ", length + 7, y0, LABEL)
+        for xn in nodes_x:
+            rec.line((xn, y0 - 0.8), (xn, y0 + 0.8), HAIR)
+        pts = [(float(x), y0 - k * float(v)) for x, v in zip(X, exact, strict=True)]
+        if chain is not None:
+            rec.polyline(pts, EXACT, f"exact-{tag}")
+            rec.polyline([(float(x), y0 - k * float(v)) for x, v in zip(nodes_x, chain, strict=True)], MAIN,
+                         f"graphical-{tag}")
+        else:
+            rec.polyline(pts, MAIN, f"exact-{tag}")
+            steps: list[Pt] = []
+            assert mid is not None
+            for i, m in enumerate(mid):
+                steps += [(float(nodes_x[i]), y0 - k * float(m)), (float(nodes_x[i + 1]), y0 - k * float(m))]
+            rec.polyline(steps, HAIR, "mid-ordinates")
+        U, mm = _unit(unit, lang), _unit("mm", lang)
+        rad, sec = ("рад", "с") if lang == "ru" else ("rad", "s")
+        sub, per, phys = {"s": ("s", U, None), "ds/dφ": ("v", f"{U}/{rad}", ("v", f"{U}/{sec}", 1)),
+                          "d²s/dφ²": ("a", f"{U}/{rad}²", ("a", f"{U}/{sec}²", 2))}[name]
+        _text(rec, f"μ_{sub}′ = {fmt(k, 4, lang)} {mm}/({per})" if name != "s" else
+              f"μ_s = {fmt(k, 4, lang)} {mm}/{per}", length + 7, y0 - 7, SMALL)
+        if phys is not None:
+            # v = ω·ds/dφ, a = ω²·d²s/dφ²: the same curve read at μ′/ω and μ″/ω²
+            _text(rec, f"μ_{phys[0]} = {fmt(k / cam.omega ** phys[2], 4, lang)} {mm}/({phys[1]})",
+                  length + 7, y0 - 3.5, SMALL)
+    # the poles and their rays: integrand's mid-ordinate projected on the axis, ray from P
+    for (k, mids, y0, H, tag) in ((k_a, ig.a_mid * f, y_a, H1, "1"), (k_v, ig.v_mid * f, y_v, H2, "2")):
+        P = (-H, y0)
+        dot(rec, P, 0.6, f"pole-{tag}")
+        _text(rec, f"P{tag}", P[0] - 1, P[1], SMALL, "end")
+        _text(rec, f"H{tag} = {fmt(H, 3, lang)} {_unit('mm', lang)}", P[0] - 1, P[1] + 3.5, SMALL, "end")
+        for m in mids:
+            rec.line(P, (0.0, y0 - k * float(m)), Style(width=0.13, stroke="#888"))
+    # the phase boundaries and their angles
+    for ph in cam.phases:
+        xb = ph.start * x_of
+        rec.line((xb, -2), (xb, y_a + 34 * g + 2), Style(width=0.13, stroke="#888", dash=(1.0, 1.0)))
+        _text(rec, f"{math.degrees(ph.angle):g}°", xb + ph.angle * x_of / 2, y_a + 34 * g + 5, SMALL, "middle")
+    err = float(np.max(np.abs(ig.s_nodes - motion(cam, ig.nodes % (2 * np.pi)).s))) * f
+    mm = _unit("mm", lang)
+    note = (f"μ_φ = {fmt(x_of * math.pi / 180, 4, lang)} {mm}/°; μ′ = μ·μ_φ/H; "
+            f"|Δs| ≤ {fmt(err, 3, lang)} {_unit(unit, lang)}; " + ("штрих — точно" if lang == "ru" else "dashed: exact"))
+    return finish("motion", "cam-motion", None, rec, _w("motion", lang), note=note)
+
+
+def diagram_panel(cam: Cam, br: BaseRadius, lang: str, g: float = 1.0) -> Panel:
+    """D = (−k·ds/dφ, s) from B0 at one length scale, the rays at [α] tangent to the curve,
+    the allowed region below them, the centres: minimum at the file's offset, the best, the
+    file's own."""
+    assert br.bounds is not None
+    phi = np.append(grid(cam, 0.5), 2 * np.pi)
+    from plans.cams.analysis import motion
+
+    mo = motion(cam, phi)
+    Xd, Yd = -cam.sense * mo.s1, mo.s
+    s0 = math.sqrt(cam.base_radius**2 - cam.offset**2)
+    O_file = (-cam.offset, -s0)
+    assert br.centre is not None  # a translating follower always has one
+    pts = np.vstack([np.c_[Xd, Yd], [O_file, br.centre, br.best_centre]])
+    span = float(np.max(np.ptp(pts, axis=0)))
+    mu = drawing_scale(span, 200.0 * g)  # paper mm per m
+    rec = Recording()
+
+    def P(x: float, y: float) -> Pt:
+        return (mu * x, -mu * y)
+
+    xmin, xmax = float(pts[:, 0].min()) - 0.1 * span, float(pts[:, 0].max()) + 0.1 * span
+    ymin = float(pts[:, 1].min()) - 0.15 * span
+    # allowed region: clip the half-planes to the box
+    region = _clip_region(br, xmin, xmax, ymin, float(np.max(Yd)))
+    if len(region) >= 3:
+        rec.polygon([P(*q) for q in region], REGION, "allowed-region")
+    rec.line(P(0, ymin), P(0, float(np.max(Yd)) * 1.1), AXIS, "follower-line")
+    rec.line(P(xmin, 0), P(xmax, 0), THIN, "ds-axis")
+    rec.polyline([P(float(x), float(y)) for x, y in zip(Xd, Yd, strict=True)], MAIN, "ds-s-curve")
+    for q in division_points(cam):
+        x, y = -cam.sense * motion(cam, np.array([q])).s1[0], motion(cam, np.array([q])).s[0]
+        dot(rec, P(float(x), float(y)), 0.4)
+    for i, (t, _c1, _c2) in enumerate(br.bounds.lines):
+        for j, sgn in enumerate((1, -1)):
+            D = br.bounds.tangent[2 * i + j]
+            # ray through D leaning by α: direction down-left (c1) or down-right (c2)
+            d = (-sgn * t, -1.0)
+            L = min(D[1] - ymin, ((D[0] - xmin) if d[0] < 0 else (xmax - D[0])) / max(abs(d[0]), 1e-12))
+            E = (D[0] + d[0] * L, D[1] + d[1] * L)
+            rec.line(P(*D), P(*E), Style(width=0.35, stroke="#1f5fbf"), f"ray-{i}-{j}")
+            dot(rec, P(*D), 0.5)
+            if j == 0:
+                _text(rec, f"{fmt(math.degrees(math.atan(t)), 3, lang)}°", *P(*E), SMALL, "start", "top")
+    for name, c, st in (("O_min", br.centre, "#c00000"), ("O_best", br.best_centre, "#1f7f1f"),
+                        ("O", O_file, "#000")):
+        q = P(*c)
+        rec.circle(q, 0.8, Style(stroke=None, width=0, fill=st), f"centre-{name}")
+        _text(rec, name, q[0] + 1.5, q[1] + 1.5, LABEL, "start", "top")
+    _text(rec, "B0", *P(0, 0), LABEL, "end", "bottom")
+    _text(rec, "s", *P(0, float(np.max(Yd)) * 1.1), LABEL, "start", "bottom")
+    _text(rec, "ds/dφ", *P(xmax, 0), SMALL, "end", "bottom")
+    note = f"μ_l = {fmt(mu * cam.scale, 4, lang)} {_unit('mm', lang)}/{_unit(cam.unit, lang)} ({ratio_text(mu)})"
+    return finish("ds-s", "cam-diagram", None, rec, _w("diagram", lang), note=note)
+
+
+def rocker_panel(cam: Cam, br: BaseRadius, lang: str, g: float = 1.0) -> Panel:
+    """The oscillating follower's diagram: pivot A, the arm positions A–B at the division
+    points, D on each arm at (1 − r)·AB, the wedges' region of allowed centres, the circle of
+    the file's pivot distance and the centres on it."""
+    from plans.cams.rocker import diagram, region
+
+    q = division_points(cam)
+    d = diagram(cam, q)
+    fine = diagram(cam, grid(cam, 0.5))
+    centres = [(0.0, 0.0), br.best_centre] + ([br.centre] if br.centre is not None else [])
+    pts = np.vstack([d.B, fine.D, [d.A, *centres]])
+    x0, y0 = pts.min(axis=0)
+    x1, y1 = pts.max(axis=0)
+    span = max(x1 - x0, y1 - y0)
+    box = (x0 - 0.3 * span, y0 - 0.3 * span, x1 + 0.1 * span, y1 + 0.1 * span)
+    mu = drawing_scale(span * 1.4, 200.0 * g)
+    rec = Recording()
+
+    def P(v) -> Pt:
+        return (mu * float(v[0]), -mu * float(v[1]))
+
+    poly = region(cam, grid(cam, 0.5), box)
+    if len(poly) >= 3:
+        rec.polygon([P(v) for v in poly], REGION, "allowed-region")
+    # the arc of the file's pivot distance about A, where O may sit
+    a_o = math.atan2(-d.A[1], -d.A[0])
+    arc = [P((d.A[0] + cam.pivot * math.cos(a_o + t), d.A[1] + cam.pivot * math.sin(a_o + t)))
+           for t in np.linspace(-0.6, 0.6, 121)]
+    rec.polyline(arc, Style(width=0.18, stroke="#333", dash=(3.0, 1.5)), "pivot-arc")
+    for i in range(len(q)):
+        rec.line(P(d.A), P(d.B[i]), Style(width=0.18, stroke="#555"), f"arm-{i}")
+        rec.line(P(d.B[i]), P(d.D[i]), Style(width=0.35, stroke="#1f5fbf"), f"BD-{i}")
+        dot(rec, P(d.B[i]), 0.35)
+    rec.polyline([P(v) for v in fine.D], MAIN, "D-curve")
+    dot(rec, P(d.A), 0.7, "pivot")
+    _text(rec, "A", *P(d.A), LABEL, "start", "top")
+    _text(rec, "B0", *P(d.B[0]), LABEL, "end", "bottom")
+    for name, c, st in (("O_min", br.centre, "#c00000"), ("O_best", br.best_centre, "#1f7f1f"),
+                        ("O", (0.0, 0.0), "#000")):
+        if c is None:
+            continue
+        rec.circle(P(c), 0.8, Style(stroke=None, width=0, fill=st), f"centre-{name}")
+        _text(rec, name, P(c)[0] + 1.5, P(c)[1] + 1.5, LABEL, "start", "top")
+    note = f"{ratio_text(mu)}; AD = (1 − r)·AB, r = ω_arm/ω_cam; ∠(OD, ⟂AB) = α"
+    return finish("rocker", "cam-diagram", None, rec, _w("rocker", lang), note=note)
+
+
+def _clip_region(br: BaseRadius, x0: float, x1: float, y0: float, y1: float) -> list[tuple[float, float]]:
+    """The allowed region within a box, by clipping the box polygon with each half-plane."""
+    assert br.bounds is not None
+    poly = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+    for t, c1, c2 in br.bounds.lines:
+        for a, b, c in ((-1.0, t, -c1), (1.0, t, c2)):  # a·x + b·y ≤ c
+            out: list[tuple[float, float]] = []
+            for i in range(len(poly)):
+                p, q = poly[i], poly[(i + 1) % len(poly)]
+                fp, fq = a * p[0] + b * p[1] - c, a * q[0] + b * q[1] - c
+                if fp <= 0:
+                    out.append(p)
+                if fp * fq < 0:
+                    r = fp / (fp - fq)
+                    out.append((p[0] + r * (q[0] - p[0]), p[1] + r * (q[1] - p[1])))
+            poly = out
+            if not poly:
+                return []
+    return poly
+
+
+def profile_panel(cam: Cam, lang: str, target: float = 180.0) -> Panel:
+    """Inversion: the follower's positions at the division points turned by −φ, the
+    theoretical profile through the roller centres, the roller circles and their envelope."""
+    phi = np.append(grid(cam, 0.5), 2 * np.pi)
+    pr: Profile = profile(cam, phi)
+    q = division_points(cam)
+    pq = profile(cam, q)
+    reach = float(np.max(np.hypot(*pr.theoretical.T))) + cam.roller + 0.15 * cam.base_radius
+    if cam.follower == "oscillating":
+        reach = max(reach, cam.pivot + 0.15 * cam.arm)
+    mu = drawing_scale(reach, target)  # paper mm per m
+    rec = Recording()
+
+    def P(v: np.ndarray | tuple[float, float]) -> Pt:
+        return (mu * float(v[0]), -mu * float(v[1]))
+
+    r0 = cam.base_radius
+    rec.circle((0, 0), mu * r0, Style(width=0.18, stroke="#333", dash=(6.0, 1.0, 1.0, 1.0)), "base-circle")
+    if cam.roller > 0:
+        rec.circle((0, 0), mu * (r0 - cam.roller), HAIR, "actual-base-circle")
+    _follower_positions(rec, cam, pr, pq, q, mu)
+    if cam.follower == "translating" and abs(cam.offset) > 0:
+        rec.circle((0, 0), mu * abs(cam.offset), HAIR, "offset-circle")
+    if cam.follower == "oscillating":
+        rec.circle((0, 0), mu * cam.pivot, Style(width=0.13, stroke="#777", dash=(3.0, 1.5)), "pivot-circle")
+    if not cam.flat:  # a flat face touches the cam itself: one profile
+        rec.polyline([P(p) for p in pr.theoretical], Style(width=0.35, stroke="#1f5fbf",
+                                                           dash=(6.0, 1.0, 1.0, 1.0)), "theoretical-profile")
+    if cam.roller > 0 or cam.flat:
+        rec.polyline([P(p) for p in pr.actual], THICK, "actual-profile")
+    bad = (pr.curvature <= 0) if cam.flat else (pr.curvature * cam.roller >= 1.0) if cam.roller > 0 else \
+        np.zeros_like(pr.curvature, bool)
+    if np.any(bad):
+        for j in np.flatnonzero(bad):
+            rec.circle(P(pr.actual[j]), 0.5, Style(stroke=None, width=0, fill="#c00000"), f"undercut-{j}")
+    _phases_and_omega(rec, cam, pr, mu)
+    note = (f"{ratio_text(mu)}; {len(q)} положений, повёрнутых на −φ" if lang == "ru" else
+            f"{ratio_text(mu)}; {len(q)} positions turned by −φ")
+    return finish("profile", "cam-profile", None, rec, _w("profile", lang), note=note, quantity="length",
+                  scale=mu)
+
+
+def _P(mu: float) -> Callable[[Any], Pt]:
+    """World metres (y up) to the panel's paper mm at μ mm per m."""
+
+    def P(v: Any) -> Pt:
+        return (mu * float(v[0]), -mu * float(v[1]))
+
+    return P
+
+
+def _follower_positions(rec: Recording, cam: Cam, pr: Profile, pq: Profile, q: np.ndarray, mu: float) -> None:
+    """At each division point: the follower (its line and flat face, or its arm) turned by
+    −φ, the roller circle about the roller centre, the number of the position."""
+    P = _P(mu)
+    k = cam.sense
+    r0 = cam.base_radius
+    for i, ph_ in enumerate(q):
+        c, s = math.cos(-k * ph_), math.sin(-k * ph_)
+
+        def R(v: np.ndarray, c: float = c, s: float = s) -> np.ndarray:
+            return np.array([c * v[0] - s * v[1], s * v[0] + c * v[1]])
+
+        B = pq.theoretical[i]
+        if cam.follower == "translating":
+            s0 = math.sqrt(r0**2 - cam.offset**2)
+            foot = R(np.array([cam.offset, s0 - 0.1 * r0]))
+            top = R(np.array([cam.offset, s0 + cam.h + cam.roller + 0.12 * r0]))
+            rec.line(P(foot), P(top), Style(width=0.13, stroke="#777"), f"follower-{i}")
+            if cam.flat:  # the face at r0 + s, perpendicular to the follower, touching at B
+                lift = cam.base_radius + float(pq.motion.s[i])
+                w = float(np.max(np.abs(pr.motion.s1))) + 0.15 * r0
+                rec.line(P(R(np.array([-w, lift]))), P(R(np.array([w, lift]))),
+                         Style(width=0.25, stroke="#555"), f"face-{i}")
+        else:
+            A = R(np.array([cam.pivot, 0.0]))
+            rec.line(P(A), P(B), Style(width=0.25, stroke="#555"), f"arm-{i}")
+            dot(rec, P(A), 0.35)
+        if cam.roller > 0:
+            rec.circle(P(B), mu * cam.roller, Style(width=0.18, stroke="#555"), f"roller-{i}")
+        dot(rec, P(B), 0.35)
+        rb = math.hypot(*B)
+        lab = np.asarray(B) * (rb + cam.roller + 2.5 / mu) / rb  # just outside the roller circle
+        _text(rec, str(i), *P(lab), SMALL, "middle")
+
+
+def _phases_and_omega(rec: Recording, cam: Cam, pr: Profile, mu: float) -> None:
+    P = _P(mu)
+    k = cam.sense
+    r0 = cam.base_radius
+    # the phase angles, laid off from the start of the rise against ω as the follower turns
+    outer = float(np.max(np.hypot(*pr.theoretical.T))) + cam.roller + 6.0 / mu
+    a0 = math.atan2(float(pr.theoretical[0, 1]), float(pr.theoretical[0, 0]))
+    for i, ph in enumerate(cam.phases):
+        a = a0 - k * ph.start
+        rec.line((0, 0), P((outer * math.cos(a), outer * math.sin(a))),
+                 Style(width=0.13, stroke="#888", dash=(1.0, 1.0)), f"phase-{i}")
+        m = a0 - k * (ph.start + ph.angle / 2)
+        _text(rec, f"{math.degrees(ph.angle):g}°", *P((outer * math.cos(m), outer * math.sin(m))), SMALL,
+              "middle")
+    dot(rec, (0, 0), 0.7, "cam-centre")
+    _text(rec, "O", 1.5, 2.0, LABEL, "start", "top")
+    # the sense of rotation
+    rr = mu * r0 * 0.35
+    a0, a1 = (0.3, 1.3) if k > 0 else (1.3, 0.3)
+    p0 = (rr * math.cos(a0), -rr * math.sin(a0))
+    p1 = (rr * math.cos(a1), -rr * math.sin(a1))
+    rec.arc((0, 0), rr, -max(a0, a1), -min(a0, a1), THIN)
+    arrow(rec, (p1[0] + (p1[1]) * 0.15 * k, p1[1] - p1[0] * 0.15 * k), p1, THIN, "omega", "omega")
+    _text(rec, "ω", p0[0] + 1.5, p0[1], LABEL)
+
+
+def results_panel(cam: Cam, br: BaseRadius, drawn: BaseRadius | None, lang: str) -> Panel:
+    from plans.cams.analysis import findings
+
+    ru = lang == "ru"
+
+    def T(en: str, rus: str) -> str:
+        return rus if ru else en
+
+    fi = findings(cam)
+    L = cam.scale
+    u = _unit(cam.unit, lang)
+
+    def n(v: float, sig: int = 4) -> str:
+        return fmt(v, sig, lang)
+
+    where = (T(f"arm = {n(cam.arm / L)} {u}, pivot at {n(cam.pivot / L)} {u}",
+               f"коромысло {n(cam.arm / L)} {u}, ось на {n(cam.pivot / L)} {u}")
+             if cam.follower == "oscillating" else f"e = {n(cam.offset / L)} {u}")
+    tip = T("flat face", "плоский толкатель") if cam.flat else f"r_ролика = {n(cam.roller / L)} {u}" if ru \
+        else f"r_roller = {n(cam.roller / L)} {u}"
+    a_r, a_b = math.degrees(fi.max_pressure_rise), math.degrees(fi.max_pressure_return)
+    lines = [
+        f"r0 = {n(cam.base_radius / L)} {u}, {where}, {tip}",
+        T(f"α max: rise {n(a_r)}° ([α] = {n(math.degrees(cam.alpha_rise), 3)}°), return {n(a_b)}° "
+          f"([α] = {n(math.degrees(cam.alpha_return), 3)}°)",
+          f"α max: подъём {n(a_r)}° ([α] = {n(math.degrees(cam.alpha_rise), 3)}°), опускание {n(a_b)}° "
+          f"([α] = {n(math.degrees(cam.alpha_return), 3)}°)"),
+    ]
+    if br.min_base_radius is None:
+        lines.append(T("r0 min: none with this arm and pivot", "r0 min: нет при этих коромысле и оси"))
+    else:
+        line = f"r0 min = {n(br.min_base_radius / L, 5)} {u} ({T('exact', 'точно')})"
+        if drawn is not None and drawn.min_base_radius is not None:
+            line += f", {n(drawn.min_base_radius / L, 5)} {u} ({T('diagram', 'по диаграмме')})"
+        lines.append(line)
+    if br.best_offset is not None and cam.follower == "translating" and not cam.flat:
+        lines.append(T("best", "наименьший") + f": r0 = {n(br.best_base_radius / L, 5)} {u}, "
+                     f"e = {n(br.best_offset / L)} {u}")
+    if br.best_pivot is not None:
+        lines.append(T("best", "наименьший") + f": r0 = {n(br.best_base_radius / L, 5)} {u}, "
+                     + T("pivot at", "ось на") + f" {n(br.best_pivot / L)} {u}")
+    lines.append(T("ρ min (convex, theoretical)", "ρ min (выпуклый, теоретический)")
+                 + f" = {n(fi.min_curvature_radius / L)} {u}")
+    for c in fi.undercut:
+        lines.append(T("UNDERCUT", "ПОДРЕЗ") + f" φ = {n(c.start_deg)}…{n(c.end_deg)}°: "
+                     f"ρ = {n(c.min_radius / L)} {u} < r")
+    if not fi.undercut:
+        lines.append(T("no undercut", "подреза нет"))
+    rec = Recording()
+    for i, t in enumerate(lines):
+        rec.text(layout(t, 0, i * 5.5, LABEL, "start", "top"), "label", f"result-{i}",
+                 fill="#c00000" if t.startswith(("UNDERCUT", "ПОДРЕЗ")) else "#000")
+    return finish("results", "cam-results", None, rec, _w("results", lang))
+
+
+def build_panels(cam: Cam, spec: SheetSpec) -> list[Panel]:
+    lang = spec.language
+    W, H = spec.size
+    g = min(W / 841.0, H / 594.0)
+    # the profile: as big as A1 allows beside the rest, and never taller than the sheet beside
+    # its title block (about 2.3 × the reach with the follower's lines and labels)
+    x0, y0, x1, y1 = usable(W, H)
+    target = min(180.0 * g, (y1 - y0 - TB_H - GAP - 20.0) / 2.3)
+    br = min_base_radius(cam, True)
+    drawn = None if cam.flat else min_base_radius(cam, False)
+    panels = [profile_panel(cam, lang, target), motion_panel(cam, lang, g)]
+    if br.bounds is not None:
+        panels.append(diagram_panel(cam, br, lang, g))
+    elif cam.follower == "oscillating":
+        panels.append(rocker_panel(cam, br, lang, g))
+    panels.append(results_panel(cam, br, drawn, lang))
+    return panels
+
+
+def draw(path: str | Path, *, format: str | None = None, orientation: str | None = None,
+         language: str | None = None) -> Drawing:
+    """The cam's sheets (a path to its TOML file)."""
+    cam = load_cam(path)
+    spec = sheet_spec(cam.raw, cam.path, cam.title, format=format, orientation=orientation, language=language)
+    panels = build_panels(cam, spec)
+    sheets = compose(panels, spec, ratio_text(panels[0].scale or 1000.0), cam.path)
+    return Drawing(cam, spec, tuple(panels), tuple(sheets))

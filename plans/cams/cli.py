@@ -1,0 +1,142 @@
+"""``plans cam FILE [--json PATH]``: the cam's motion, profile, pressure angle, curvature,
+undercut and the minimum base radius, as a summary and as JSON."""
+
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:  # the analysis is imported when the command runs: ``plans`` starts fast
+    import numpy as np
+
+    from .model import Cam
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("cam", help="a cam: motion laws, base radius, profile by inversion (JSON)")
+    p.add_argument("cam", help="cam file (TOML, kind = \"cam\")")
+    p.add_argument("--json", metavar="PATH", help="write the results as JSON ('-' for stdout)")
+    p.set_defaults(func=_run)
+
+
+def _r(v: float, nd: int = 9) -> float:
+    x = round(float(v), nd)
+    return 0.0 if x == 0 else x
+
+
+def _opt(v: float | None, L: float) -> float | None:
+    return None if v is None else _r(v / L)
+
+
+def _arr(a: np.ndarray, nd: int = 9) -> list[float]:
+    return [_r(x, nd) for x in a]
+
+
+def results(cam: Cam) -> dict[str, Any]:
+    """The JSON document: arrays aligned with phi_deg (lengths in the file's unit;
+    an oscillating follower's s in degrees of swing)."""
+    import numpy as np
+
+    from .analysis import findings, grid, profile
+    from .base_radius import min_base_radius
+    phi = grid(cam)
+    pr = profile(cam, phi)
+    mo = pr.motion
+    L = cam.scale
+    osc = cam.follower == "oscillating"
+    lift = (180 / math.pi) if osc else 1 / L  # s in degrees or in the file's unit
+    rate = 1.0 if osc else 1 / L  # the arm's ω and ε in rad/s, rad/s²
+    fi = findings(cam)
+    exact = min_base_radius(cam, True)
+    drawn = None if cam.flat else min_base_radius(cam, False)
+    out: dict[str, Any] = {
+        "phi_deg": _arr(np.degrees(phi), 6),
+        "s": _arr(mo.s * lift),
+        "ds_dphi": _arr(mo.s1 * lift),
+        "d2s_dphi2": _arr(mo.s2 * lift),
+        "v": _arr(mo.s1 * rate * cam.omega),
+        "a": _arr(mo.s2 * rate * cam.omega**2),
+        "pressure_angle_deg": _arr(np.degrees(pr.pressure_angle)),
+        "curvature": _arr(pr.curvature * L),
+        "profile": {"theoretical": [[_r(x / L), _r(y / L)] for x, y in pr.theoretical],
+                    "actual": [[_r(x / L), _r(y / L)] for x, y in pr.actual]},
+        "min_base_radius": _opt(exact.min_base_radius, L),
+        "min_base_radius_graphical": None if drawn is None else _opt(drawn.min_base_radius, L),
+        "best_base_radius": _r(exact.best_base_radius / L),
+        "best_offset": None if exact.best_offset is None else _r(exact.best_offset / L),
+        "best_pivot": None if exact.best_pivot is None else _r(exact.best_pivot / L),
+        "min_curvature_radius": _r(fi.min_curvature_radius / L),
+        "max_pressure_angle_rise_deg": _r(math.degrees(fi.max_pressure_rise)),
+        "max_pressure_angle_return_deg": _r(math.degrees(fi.max_pressure_return)),
+        "undercut": [{"from_deg": _r(u.start_deg, 6), "to_deg": _r(u.end_deg, 6),
+                      "min_curvature_radius": _r(u.min_radius / L)} for u in fi.undercut],
+        "unit": cam.unit,
+        "follower": cam.follower,
+    }
+    return out
+
+
+def summary(cam: Cam, res: dict[str, Any]) -> str:
+    u = cam.unit
+    osc = cam.follower == "oscillating"
+    lines = [f"{cam.title}: {cam.follower} follower, "
+             + ("flat face" if cam.flat else f"roller {cam.roller / cam.scale:g} {u}")
+             + f", base radius {cam.base_radius / cam.scale:g} {u}, {'ccw' if cam.sense > 0 else 'cw'}"]
+    h = max(res["s"])
+    lines.append(f"  lift {h:.4g} {'deg' if osc else u}; max |v| {max(map(abs, res['v'])):.4g} "
+                 f"{'rad/s' if osc else u + '/s'}; max |a| {max(map(abs, res['a'])):.4g} "
+                 f"{'rad/s^2' if osc else u + '/s^2'}")
+    lines.append(f"  pressure angle: rise max {res['max_pressure_angle_rise_deg']:.3f} deg "
+                 f"(permissible {math.degrees(cam.alpha_rise):g}), return max "
+                 f"{res['max_pressure_angle_return_deg']:.3f} deg (permissible {math.degrees(cam.alpha_return):g})")
+    if cam.flat:
+        lines.append(f"  minimum base radius (convex profile): {res['min_base_radius']:.4f} {u}")
+    else:
+        where = "" if osc else f" at offset {cam.offset / cam.scale:g} {u}"
+        if res["min_base_radius"] is None:
+            line = ("  NO BASE RADIUS keeps the pressure angle within the permissible with this arm "
+                    "and pivot")
+        else:
+            line = f"  minimum base radius{where}: {res['min_base_radius']:.4f} {u} exactly"
+        if res["min_base_radius_graphical"] is not None:
+            line += f", {res['min_base_radius_graphical']:.4f} {u} from the diagram's division points"
+        lines.append(line)
+        if res["best_offset"] is not None:
+            lines.append(f"  with the offset chosen: base radius {res['best_base_radius']:.4f} {u} "
+                         f"at offset {res['best_offset']:.4f} {u}")
+        if res["best_pivot"] is not None:
+            lines.append(f"  with the pivot moved: base radius {res['best_base_radius']:.4f} {u} "
+                         f"at pivot distance {res['best_pivot']:.4f} {u}")
+    lines.append(f"  smallest convex radius of curvature: {res['min_curvature_radius']:.4f} {u}")
+    if res["undercut"]:
+        for c in res["undercut"]:
+            what = ("the flat face cannot follow: r0 + s + s'' <= 0" if cam.flat else
+                    f"the roller ({cam.roller / cam.scale:g} {u}) is bigger than the profile's radius "
+                    f"{c['min_curvature_radius']:.4f} {u}: the actual profile undercuts")
+            lines.append(f"  UNDERCUT at phi {c['from_deg']:g}..{c['to_deg']:g} deg: {what}")
+    else:
+        lines.append("  no undercut")
+    if res["min_base_radius"] is not None and (
+            res["max_pressure_angle_rise_deg"] > math.degrees(cam.alpha_rise) + 1e-9
+            or res["max_pressure_angle_return_deg"] > math.degrees(cam.alpha_return) + 1e-9):
+        lines.append("  PRESSURE ANGLE above the permissible: raise the base radius to at least "
+                     f"{res['min_base_radius']:.4f} {u}")
+    return "\n".join(lines)
+
+
+def _run(args: argparse.Namespace) -> int:
+    from plans.io import atomic_write, dumps
+
+    from .model import load_cam
+
+    cam = load_cam(args.cam)
+    res = results(cam)
+    if args.json == "-":
+        sys.stdout.write(dumps(res))
+        return 0
+    if args.json:
+        atomic_write(args.json, dumps(res))
+    print(summary(cam, res))
+    return 0
