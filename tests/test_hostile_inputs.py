@@ -364,6 +364,7 @@ check("check-measured-unknown-key", sub("v_B = 60", "v_B = { mm = 60, foo = 1 }"
 check("check-measured-empty-list", sub("v_B = 60", "v_B = []"), "positions[0].measured.v_B")
 check("check-value-string", sub("omega_2 = 5.0", 'omega_2 = "5"'), "positions[0].values.omega_2")
 check("check-value-huge-int", sub("omega_2 = 5.0", "omega_2 = 1" + "0" * 400), "positions[0].values.omega_2")
+check("check-value-subnormal", sub("omega_2 = 5.0", "omega_2 = 5e-324"), "positions[0].values.omega_2", "at least")
 check("check-value-nan", sub("omega_2 = 5.0", "omega_2 = nan"), "positions[0].values.omega_2")
 check("check-length-no-unit", sub("omega_2 = 5.0", "h_1 = 65"), "positions[0].values.h_1", "unit")
 check("check-name-control", sub("omega_2 = 5.0", '"v\\u0001" = 5.0'), "control character")

@@ -59,7 +59,7 @@ from typing import Any
 
 from plans.errors import InputError
 from plans.io import loads_toml, read_toml
-from plans.reader import NUMBER_LIMIT, Reader, bad_character, check_keys, did_you_mean
+from plans.reader import NUMBER_FLOOR, NUMBER_LIMIT, Reader, bad_character, check_keys, did_you_mean
 from plans.scene.model import Scene, check_format, load_scene, scene_from_dict
 from plans.units import LENGTH_UNITS
 
@@ -347,6 +347,8 @@ def _one(path: str, field: str, q: str, item: Any, kind: str, default_where: str
             (isinstance(item, float) and not math.isfinite(item)) or abs(item) > NUMBER_LIMIT:
         raise _fail(path, field, f"expected a number in SI units (magnitude at most {NUMBER_LIMIT:g}), "
                                  f"got {item if isinstance(item, float) else type(item).__name__}")
+    if item != 0 and abs(item) < NUMBER_FLOOR:
+        raise _fail(path, field, f"expected 0 or a magnitude of at least {NUMBER_FLOOR:g}, got {item!r}")
     return Written(q, float(item), kind, loc, field, half_ulp(item))
 
 
