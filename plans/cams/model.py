@@ -32,7 +32,7 @@ from typing import Any
 from plans.errors import InputError
 from plans.io import read_toml
 from plans.reader import Reader
-from plans.units import LENGTH_UNITS, parse_length, rpm_to_rad_s
+from plans.units import LENGTH_UNITS, rpm_to_rad_s
 
 from .laws import LAWS, Law, table_law
 
@@ -128,10 +128,7 @@ def _length(data: dict[str, Any], key: str, unit: str, path: str, where: str = "
         if default is None:
             raise InputError("missing; expected a length", file=path, field=f"{where}{key}")
         return default
-    try:
-        v = parse_length(data[key], unit)
-    except ValueError as exc:
-        raise InputError(str(exc), file=path, field=f"{where}{key}") from None
+    v = Reader(path).length(data[key], f"{where}{key}", unit)  # finite, 1 µm .. 10 km (or 0)
     if positive and v <= 0:
         raise InputError(f"expected a positive length, got {data[key]!r}", file=path, field=f"{where}{key}")
     if at_least is not None and v < at_least:
