@@ -13,16 +13,36 @@ In Jupyter a :class:`Drawing`, a :class:`Sheet`, a :class:`Panel` and
 
 from __future__ import annotations
 
-from .draw import Drawing, build_panels, draw
-from .export import atomic_write, pdf_bytes, png_bytes, save
-from .panels import Panel, plan_panel
-from .sheet import Sheet, SheetSpec, compose, sheet_spec
+import importlib
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from .draw import Drawing, build_panels, draw
+    from .export import atomic_write, pdf_bytes, png_bytes, save
+    from .panels import Panel, plan_panel
+    from .sheet import Sheet, SheetSpec, compose, sheet_spec
+
+#: Loaded on first use (PEP 562): ``plans --help`` does not pay for svgwrite and numpy.
+_LAZY = {"Drawing": "draw", "build_panels": "draw", "draw": "draw", "atomic_write": "export",
+         "pdf_bytes": "export", "png_bytes": "export", "save": "export", "Panel": "panels",
+         "plan_panel": "panels", "Sheet": "sheet", "SheetSpec": "sheet", "compose": "sheet",
+         "sheet_spec": "sheet"}
+
+
+def __getattr__(name: str) -> Any:
+    if name in _LAZY:
+        value = getattr(importlib.import_module(f".{_LAZY[name]}", __name__), name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 class PlanView:
     """A plan (velocity, acceleration, force polygon) alone, for Jupyter."""
 
     def __init__(self, plan, language: str = "en", scale_style: str = "mu") -> None:
+        from .panels import plan_panel
+
         if plan.kind in ("velocity", "acceleration"):
             self.panel = plan_panel(plan, language, scale_style)
         else:

@@ -5,13 +5,17 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import sys
 from collections.abc import Sequence
 from pathlib import Path
 
-from plans.cli import register_commands, run
+from plans.cli import command_of, register_commands, run
 from plans.errors import InputError
 
 from .export import FORMATS
+
+#: Commands that need the renderer, listed without importing them (see plans.cli).
+_DRAWING_NAMES = {"drawings.demo": ("demo", "a step-by-step demonstration page of a scene's analysis")}
 
 
 def _formats(text: str) -> list[str]:
@@ -32,6 +36,7 @@ def add_draw(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--orientation", choices=("landscape", "portrait"), help="overrides [sheet] orientation")
     p.add_argument("--language", choices=("ru", "en"), help="overrides [sheet] language")
     p.add_argument("--dpi", type=float, default=150.0, help="PNG resolution (default 150)")
+    p.add_argument("--quiet", action="store_true", help="no progress lines on a terminal")
     p.set_defaults(func=draw_command)
     return p
 
@@ -41,8 +46,11 @@ def draw_command(args: argparse.Namespace) -> int:
     gears, cam: dispatched on its ``kind``), write them atomically, list what was written."""
 
     from plans.kinds import KINDS, read_kind
+    from plans.progress import Progress
 
     from .export import save
+
+    progress = Progress(getattr(args, "quiet", False))
 
     if not (0 < args.dpi <= 1200):
         raise InputError(f"{args.dpi:g} is out of range; expected 1..1200", file=args.scene, field="--dpi")
@@ -57,9 +65,11 @@ def draw_command(args: argparse.Namespace) -> int:
             raise
         raise InputError(f"drawing {kind!r} files is not available in this installation",
                          file=args.scene, field="kind") from None
+    progress(f"drawing {args.scene} ...")
     drawing = module.draw(args.scene, format=args.sheet, orientation=args.orientation,
                           language=args.language)
-    written = save(drawing.sheets, args.output, Path(args.scene).stem, args.format, args.dpi, source=args.scene)
+    written = save(drawing.sheets, args.output, Path(args.scene).stem, args.format, args.dpi,
+                   progress=progress, source=args.scene)
     for p in written:
         print(p)
     return 0
@@ -70,9 +80,10 @@ def draw_command(args: argparse.Namespace) -> int:
 _DRAWING_COMMANDS = ("drawings.demo",)
 
 
-def build_parser() -> argparse.ArgumentParser:
+def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     """The engine's parser (solve, check, bench, ...) with ``draw`` and the other
-    commands that need the renderer added."""
+    commands that need the renderer added (with ``argv``: only the command asked for
+    imported, see :func:`plans.cli.build_parser`)."""
     try:
         from plans.cli import build_parser as base
     except ImportError:  # pragma: no cover - the engine's CLI not written yet
@@ -80,15 +91,15 @@ def build_parser() -> argparse.ArgumentParser:
         sub = parser.add_subparsers(dest="command", required=True)
         add_draw(sub)
         return parser
-    parser = base()
+    parser = base(argv)
     sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
     add_draw(sub)
-    register_commands(sub, _DRAWING_COMMANDS)
-    if "bench" in sub.choices:  # ``plans bench`` draws bench.svg with the sheets' backend
-        from .bench_plot import add_plot
+    register_commands(sub, _DRAWING_COMMANDS, argv, _DRAWING_NAMES)
+    if "bench" in sub.choices and (argv is None or command_of(argv) == "bench"):
+        from .bench_plot import add_plot  # ``plans bench`` draws bench.svg with the sheets' backend
 
         add_plot(sub.choices["bench"])
-    if "check" in sub.choices:  # ``plans check --sheet DIR``: the marked and overlay sheets
+    if "check" in sub.choices and (argv is None or command_of(argv) == "check"):  # ``plans check --sheet DIR``: the marked and overlay sheets
         try:
             from .check_sheet import add_sheet_options
         except ImportError:  # pragma: no cover - checking sheets not installed
@@ -104,8 +115,9 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else list(argv)
     try:
-        args = build_parser().parse_args(argv)
+        args = build_parser(argv).parse_args(argv)
     except KeyboardInterrupt:
         return 130
     return _run(args)

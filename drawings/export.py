@@ -3,13 +3,15 @@
 from __future__ import annotations
 
 import os
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from plans.errors import OutputError
 from plans.io import atomic_write  # noqa: F401  (re-exported by drawings)
 
-from .sheet import Sheet
+if TYPE_CHECKING:  # the sheet's modules (svgwrite, numpy) load only when a sheet is drawn
+    from .sheet import Sheet
 
 FORMATS = ("svg", "pdf", "png")
 
@@ -44,13 +46,57 @@ def pdf_bytes(svg: bytes, title: str = "") -> bytes:
 
 
 def png_bytes(svg: bytes, dpi: float) -> bytes:
-    import cairosvg
+    """SVG -> PNG: cairosvg draws the page, the pixels are written here (cairo's own PNG
+    writer, with libpng's adaptive filters, took as long as drawing an A1 sheet)."""
+    import io
 
-    return cairosvg.svg2png(bytestring=svg, dpi=dpi)
+    from cairosvg.surface import PNGSurface, Surface
+
+    class _Png(PNGSurface):
+        def finish(self):
+            self.cairo.flush()
+            if self.output is not None:
+                self.output.write(encode_png(self.cairo))
+            return Surface.finish(self)
+
+    out = io.BytesIO()
+    _Png.convert(bytestring=svg, write_to=out, dpi=dpi)
+    return out.getvalue()
+
+
+def encode_png(surface) -> bytes:
+    """An ARGB32 cairo image surface as an RGBA PNG: the pixels cairo's writer stores
+    (un-premultiplied as cairo does it), rows unfiltered, fast deflate."""
+    import struct
+    import zlib
+
+    import numpy as np
+
+    w, h, stride = surface.get_width(), surface.get_height(), surface.get_stride()
+    px = np.frombuffer(surface.get_data(), np.uint8).reshape(h, stride)[:, :4 * w].reshape(h, w, 4)
+    raw = np.zeros((h, 1 + 4 * w), np.uint8)  # a 0 (no filter) before every row
+    rgba = raw[:, 1:].reshape(h, w, 4)
+    # cairo keeps premultiplied B, G, R, A in a little-endian word: bytes B G R A
+    for dst, src in ((0, 2), (1, 1), (2, 0), (3, 3)):
+        rgba[..., dst] = px[..., src]
+    alpha = px[..., 3]
+    part = (alpha > 0) & (alpha < 255)
+    if part.any():  # cairo's unpremultiply: (c·255 + a/2) / a, integer
+        a = alpha[part].astype(np.uint32)
+        for dst in range(3):
+            c = rgba[..., dst][part].astype(np.uint32)
+            rgba[..., dst][part] = ((c * 255 + a // 2) // a).astype(np.uint8)
+    rgba[alpha == 0] = 0
+
+    def chunk(kind: bytes, data: bytes) -> bytes:
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 6, 0, 0, 0))
+            + chunk(b"IDAT", zlib.compress(raw.tobytes(), 3)) + chunk(b"IEND", b""))
 
 
 def render(sheets: Sequence[Sheet], outdir: str | Path, stem: str, formats: Sequence[str] = ("svg",),
-           dpi: float = 150.0) -> dict[Path, bytes]:
+           dpi: float = 150.0, progress: Callable[[str], None] | None = None) -> dict[Path, bytes]:
     """Every sheet in every format as bytes, by target path: ``stem.svg`` (one sheet) or
     ``stem-2.svg`` ...; nothing is written."""
     out = Path(outdir)
@@ -66,6 +112,8 @@ def render(sheets: Sequence[Sheet], outdir: str | Path, stem: str, formats: Sequ
         for f in formats:
             p = out / f"{name}.{f}"
             files[p] = svg if f == "svg" else pdf_bytes(svg) if f == "pdf" else png_bytes(svg, dpi)
+        if progress is not None:
+            progress(f"sheet {sh.number} of {len(sheets)} drawn ({', '.join(formats)})")
     return files
 
 
@@ -86,6 +134,7 @@ def write(files: dict[Path, bytes], outdir: str | Path, *, source: str | Path | 
 
 
 def save(sheets: Sequence[Sheet], outdir: str | Path, stem: str, formats: Sequence[str] = ("svg",),
-         dpi: float = 150.0, *, source: str | Path | None = None) -> list[Path]:
+         dpi: float = 150.0, progress: Callable[[str], None] | None = None, *,
+         source: str | Path | None = None) -> list[Path]:
     """Render every sheet in every format, then write them all as one (see :func:`write`)."""
-    return write(render(sheets, outdir, stem, formats, dpi), outdir, source=source)
+    return write(render(sheets, outdir, stem, formats, dpi, progress), outdir, source=source)

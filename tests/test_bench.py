@@ -45,13 +45,14 @@ def test_bench_json_records(small_run):
     recs = data["records"]
     methods = {r["method"] for r in recs}
     assert {"exact", "construction", "newton", "newton tol sweep", "finite differences",
-            "draftsman A1", "draftsman A4", "pylinkage", "mechanism"} <= methods
+            "draftsman A1", "draftsman A4", "mechanism"} <= methods
+    assert {"pylinkage", "pylinkage + numba"} & methods
     for r in recs:
         assert {"method", "error", "time"} <= set(r)
     newton_recs = [r for r in recs if r["method"].startswith("newton")]
     assert newton_recs and all(r["cond"] is not None and r["cond"] >= 1 for r in newton_recs)
     for peer in ("pylinkage", "mechanism"):
-        rec = next(r for r in recs if r["method"] == peer)
+        rec = next(r for r in recs if r["method"].split()[0] == peer)
         assert rec["note"].startswith("skipped") or rec["error"] is not None
     # errors against the 50-digit reference: the exact analysis at the floating-point floor
     exact = [r for r in recs if r["method"] == "exact" and r["oracle"] == "mpmath 50 digits"]
@@ -126,10 +127,16 @@ def test_chain_scene_is_well_conditioned():
 
 
 def test_peers_skip_cleanly():
-    recs = bench.bench_peers(oracles.reference_cases())
-    assert {r.method for r in recs} == {"pylinkage", "mechanism"}
-    for r in recs:
-        assert r.note.startswith("skipped") or math.isfinite(r.error)
+    from dataclasses import asdict
+
+    from plans.accuracy import peers
+
+    runs = peers.run_peers([(c.name, c.scene) for c in oracles.reference_cases()], positions=36,
+                           mechanism_positions=4)
+    recs = bench.bench_peers({"peers": [{k: v for k, v in asdict(r).items() if k != "runner"} for r in runs]})
+    assert {r.method.split()[0] for r in recs} == {"pylinkage", "mechanism"}
+    for r in recs:  # a pure-Python step is timed only (its positions are those of the numba run)
+        assert r.note.startswith("skipped") or r.method == "pylinkage step" or math.isfinite(r.error)
 
 
 def test_plans_does_not_import_renderers():

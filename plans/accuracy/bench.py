@@ -42,7 +42,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from plans.accuracy import fuzz, newton
+from plans.accuracy import fuzz, newton, speed
 from plans.accuracy.draftsman import DraftsmanModel, draftsman_errors
 from plans.accuracy.goals import performance_goals
 from plans.accuracy.markdown import goal_line, markdown, summary_table
@@ -222,47 +222,15 @@ def bench_chain(sizes: Sequence[int], budget: float, log: Callable[[str], None])
     return recs
 
 
-def bench_peers(cases: list[Case]) -> list[Record]:
-    """pylinkage and `mechanism`, when importable; a record saying 'skipped' otherwise."""
-    recs = []
-    for peer in ("pylinkage", "mechanism"):
-        if importlib.util.find_spec(peer) is None:
-            recs.append(Record(peer, "-", 0, math.nan, math.nan, math.nan, note="skipped: not installed"))
-            continue
-        try:
-            recs += _run_peer(peer, cases)
-        except Exception as exc:  # a peer's API drift must not break the benchmark
-            recs.append(Record(peer, "-", 0, math.nan, math.nan, math.nan,
-                               note=f"skipped: {type(exc).__name__}: {exc}"))
-    return recs
-
-
-def _run_peer(peer: str, cases: list[Case]) -> list[Record]:  # pragma: no cover - not installed here
-    if peer != "pylinkage":
-        raise RuntimeError("no adapter written for this peer yet")
-    import pylinkage as pl  # type: ignore[import-not-found]
-
+def bench_peers(perf: dict[str, Any]) -> list[Record]:
+    """The peers' runs (:mod:`plans.accuracy.peers`, measured with the speed goals) as
+    records; error: their largest disagreement with the exact analysis over r, v, a."""
     out = []
-    for case in cases:
-        if case.name != "four-bar":
-            continue
-        n = 360
-        ref = case.reference(_phis(n)) if case.reference else None
-        step = 2 * math.pi / n
-        frame = pl.Static(0, 0, name="O")
-        crank = pl.Crank(0.05, 0, joint0=frame, angle=step, distance=0.05, name="A")
-        rocker = pl.Revolute(0.1, 0.15, joint0=crank, joint1=(0.18, 0), distance0=0.2, distance1=0.15,
-                             name="B")
-        linkage = pl.Linkage(joints=(frame, crank, rocker), order=(frame, crank, rocker))
-        t0 = time.perf_counter()
-        locus = list(linkage.step(iterations=n))
-        t = time.perf_counter() - t0
-        err = math.nan
-        if ref is not None:
-            B = np.array([complex(*pos[2]) for pos in locus])
-            err = float(np.max(np.abs(np.abs(B) - np.abs(ref.get_point("B")[0])))) / 0.05
-        out.append(Record("pylinkage", case.name, n, err, t, t / n, oracle="mpmath 50 digits",
-                          note="positions only; |B| compared (its angle origin differs)"))
+    for r in perf.get("peers", []):
+        errs = r.get("errors") or {}
+        t = r["time_per_position"]
+        out.append(Record(r["peer"], r["mechanism"], r["positions"], max(errs.values(), default=math.nan),
+                          t * r["positions"], t, oracle="exact analysis", errors=errs, note=r["note"]))
     return out
 
 
@@ -338,7 +306,9 @@ def run_bench(quick: bool = False, samples: Path | None = None, progress: Callab
         records += bench_case(case, sizes, budget, quick, log)
     log("chain ...")
     records += bench_chain(tuple(chain_sizes or (QUICK_CHAIN_SIZES if quick else CHAIN_SIZES)), budget, log)
-    records += bench_peers(cases)
+    log("speed goals and peers ...")
+    perf = speed.measure(samples, log)
+    records += bench_peers(perf)
     log("forces ...")
     records += bench_forces(cases + vcases, sizes, budget)
     log("draftsman Monte Carlo ...")
@@ -389,7 +359,7 @@ def run_bench(quick: bool = False, samples: Path | None = None, progress: Callab
             "OPENBLAS_NUM_THREADS": os.environ.get("OPENBLAS_NUM_THREADS")}
     return {"meta": meta, "records": [r.to_json() for r in records], "goals": goals,
             "draftsman": dm, "draftsman_lines": draft_lines, "stability": stability, "stiff_loads": stiff,
-            "warnings": warnings}
+            "warnings": warnings, "performance": perf}
 
 
 def _cpus() -> int:
@@ -447,6 +417,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--chain", type=_ints, metavar="N,N,...", help="chain lengths in dyads (default 1,2,5,10,20,50)")
     p.add_argument("--pencil-mm", type=float, default=0.25, help="pencil error, ± mm (default 0.25)")
     p.add_argument("--protractor-deg", type=float, default=0.25, help="protractor error, ± degrees (default 0.25)")
+    p.add_argument("--quiet", action="store_true", help="no progress lines and no summary on the terminal")
     fuzz.add_arguments(p)
     p.set_defaults(func=run)
     return p
@@ -465,15 +436,17 @@ def _ints(text: str) -> tuple[int, ...]:
 def run(args: argparse.Namespace) -> int:
     if getattr(args, "fuzz", None) is not None:
         return fuzz.run(args)
-    quiet = getattr(args, "json", None) == "-"
+    from plans.progress import Progress
+
+    quiet = getattr(args, "json", None) == "-" or getattr(args, "quiet", False)
+    progress = Progress(quiet)
     err = sys.stderr
     if importlib.util.find_spec("mpmath") is None:
         print("plans bench: error: the 50-digit reference needs mpmath: pip install -e '.[bench]'", file=err)
         return 2
 
     def log(s: str) -> None:
-        if not quiet:
-            print(s, file=err, flush=True)
+        progress(s.split("] ", 1)[-1])
 
     check_outputs(Path(args.out), getattr(args, "json", None))
     model = DraftsmanModel(getattr(args, "pencil_mm", 0.25), getattr(args, "protractor_deg", 0.25))
@@ -486,6 +459,8 @@ def run(args: argparse.Namespace) -> int:
         print(summary_table(recs))
         for g in result["goals"]:
             print(goal_line(g))
+        print("\nSpeed goals, measured side by side in this run ([measured / bound]):")
+        print("\n".join(speed.lines(result.get("performance", {}))))
         for w in result["warnings"]:
             print(f"warning: {w}", file=err)
         print("wrote " + ", ".join(str(p) for p in written))

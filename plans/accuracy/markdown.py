@@ -99,9 +99,13 @@ def markdown(result: dict[str, Any]) -> str:
                 "| method | sample | positions | error | per position | cond |", "|---|---|---:|---:|---:|---:|"]
         out += [f"| {r.method} | {r.scene} | {r.positions} | {fmt(r.error)} | {fmt(r.time_per_position, 's')} | "
                 f"{fmt(r.cond)} |" for r in others]
-    peers = [r for r in recs if r.method in ("pylinkage", "mechanism")]
-    if peers:
-        out += ["", "## Open peers", ""] + [f"- {r.method}: {r.note or fmt(r.error)}" for r in peers]
+    if result.get("performance"):
+        from plans.accuracy import speed
+
+        out += ["", "## Speed goals and open peers", "",
+                "Each goal measured in this run, side by side with what it is compared to; ratio: "
+                "measured over the goal's bound (at most 1 when met).", "",
+                speed.markdown(result["performance"])]
     out += ["", "## Cost against mechanism size (chain of N RRR dyads)", "",
             "| N | exact, per position (360) | construction, 1 position | Newton, per position (12) | "
             "Newton error | construction error | Newton cond |", "|---:|---:|---:|---:|---:|---:|---:|"]

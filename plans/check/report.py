@@ -404,7 +404,11 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
     _make_folder(out)
     rows = []
     bad = 0
-    for f in files:
+    from plans.progress import Progress
+
+    progress = Progress(args.quiet)
+    for k, f in enumerate(files, 1):
+        progress(f"{k}/{len(files)} {f.name}")
         try:
             report = check_file(f)
         except PlansError as exc:

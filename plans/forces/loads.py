@@ -136,7 +136,15 @@ _LOAD_KEYS = {"gravity", "inertia", "lever_turn", "balancing", "mass_rule", "gas
 
 
 def parse_loads(scene: Scene) -> Loads:
-    """Read ``[loads]`` (and the links' masses) into a :class:`Loads`; InputError on anything wrong."""
+    """Read ``[loads]`` (and the links' masses) into a :class:`Loads`; InputError on anything
+    wrong.  Read once per scene (a Loads is frozen)."""
+    done = scene.memo.get("loads")
+    if done is None:
+        done = scene.memo["loads"] = _parse_loads(scene)
+    return done
+
+
+def _parse_loads(scene: Scene) -> Loads:
     path = scene.path
     raw = scene.raw.get("loads", {})
     unit = scene.raw.get("unit", "mm")
@@ -396,13 +404,32 @@ def _stroke(scene: Scene, joint_name: str, link: int) -> tuple[float, float]:
     revolution, by dense sampling of the exact positions (relative error ~1e-7)."""
     from plans.kinematics.exact import solve  # late import: only indicator diagrams need it
 
+    key = ("stroke", joint_name, link)
+    if key in scene.memo:
+        return scene.memo[key]
+    grid = np.linspace(0.0, 360.0, 3601)  # the extremes are those of this 0.1° grid
     try:
-        kin = solve(scene, np.linspace(0.0, 360.0, 3601), order=0)
+        # every tenth grid angle first, then the grid around the coarse extremes only
+        coarse = np.arange(0, 3601, 10)
+        t = _travel(scene, solve(scene, grid[coarse], order=0), joint_name, link)
+        near = np.unique(np.concatenate([(coarse[k] + np.arange(-10, 11)) % 3600 for k in
+                                         _extreme_indices(t)] + [np.array([0, 3600])]))
+        kin = solve(scene, grid[near], order=0)
     except ConstructionError as exc:
         raise InputError(f"an indicator diagram needs the crank to turn a full revolution ({exc})",
                          file=scene.path, field="loads.gas") from None
     travel = _travel(scene, kin, joint_name, link)
-    return float(travel.min()), float(travel.max() - travel.min())
+    out = scene.memo[key] = (float(travel.min()), float(travel.max() - travel.min()))
+    return out
+
+
+def _extreme_indices(t: R) -> list[int]:
+    """The coarse samples near which a finer sample may beat the coarse extremes: between
+    two samples a smooth travel rises at most (largest second difference)/8 above them;
+    every sample within the whole second difference of an extreme is kept (a flat dwell
+    keeps many)."""
+    slack = float(np.max(np.abs(t[2:] - 2 * t[1:-1] + t[:-2])))
+    return [int(k) for k in np.flatnonzero((t <= t.min() + slack) | (t >= t.max() - slack))]
 
 
 def _toward_pivot(scene: Scene, B: C, u: C) -> C:

@@ -37,7 +37,6 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-import shapely
 from numpy.typing import NDArray
 
 from plans.errors import Locked
@@ -481,6 +480,8 @@ class _Poly:
                   start: str = "o") -> str:
         """Close with two known directions: through the current end along d_end, through
         ``start`` along d_start; shapely intersects the two construction lines."""
+        import shapely  # only when a polygon is closed: ``plans solve`` starts without it
+
         e, s = self.pts[self.cur], self.pts[start]
         reach = 10.0 * (max(abs(z) for z in self.pts.values()) + 100.0)
         le = shapely.LineString([((e - reach * d_end).real, (e - reach * d_end).imag),

@@ -8,10 +8,17 @@ vectors are complex numbers: ``1j * z`` is z turned 90° counter-clockwise
 
 For a point X of link k (origin r0, angle θ, rates ω, ε):
     r_X = r0 + e^{iθ} z_X,   v_X = v0 + iω (r_X − r0),   a_X = a0 + (iε − ω²)(r_X − r0).
+
+The group solvers are written once and run two ways: on numpy arrays over all positions
+at once, and, for a handful of positions (what a demonstration or a GUI asks for), on plain
+Python numbers position by position, where numpy's per-call cost would dominate
+(:data:`SCALAR_MAX`).  Both give the same numbers to rounding.
 """
 
 from __future__ import annotations
 
+import cmath
+import math
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -26,6 +33,9 @@ from plans.tolerances import ASSEMBLY_REL, LOCK_SIN
 # follow Optional fields that the order of analysis fills in.
 C = Any  # complex128 array, shape (N,)
 R = Any  # float64 array, shape (N,)
+
+#: Up to this many positions are solved one by one in plain Python numbers.
+SCALAR_MAX = 4
 
 
 def cross(a, b):
@@ -60,6 +70,9 @@ class Kinematics:
     #: group name -> condition number of its velocity/acceleration system per position:
     #: |c1||c2| / |c1 × c2| = 1 / sin(angle between the two construction lines)
     conditions: dict[str, R] = field(repr=False, default_factory=dict)
+    #: (link, local point) -> (r, v, a), filled as points are read (forces and the lever read
+    #: the same points many times)
+    _points: dict[tuple[int, complex], tuple[C, C, C]] = field(repr=False, compare=False, default_factory=dict)
 
     @property
     def n(self) -> int:
@@ -79,13 +92,19 @@ class Kinematics:
         return self.scene.links[link].points[name]
 
     def point_on(self, link: int, z: complex) -> tuple[C, C, C]:
-        """r, v, a of the point with local coordinates z on ``link``."""
-        m = self.motion[link]
-        rel = m.rot * z
-        r = m.r0 + rel
-        v = None if m.omega is None else m.v0 + 1j * m.omega * rel
-        a = None if m.eps is None else m.a0 + (1j * m.eps - m.omega**2) * rel
-        return r, v, a
+        """r, v, a of the point with local coordinates z on ``link`` (computed once)."""
+        key = (link, z) if isinstance(z, complex | float | int) else None  # arrays: a point moving on the link
+        done = None if key is None else self._points.get(key)
+        if done is None:
+            m = self.motion[link]
+            rel = m.rot * z
+            r = m.r0 + rel
+            v = None if m.omega is None else m.v0 + 1j * m.omega * rel
+            a = None if m.eps is None else m.a0 + (1j * m.eps - m.omega**2) * rel
+            done = (r, v, a)
+            if key is not None:
+                self._points[key] = done
+        return done
 
     def point(self, name: str, link: int | None = None) -> tuple[C, C, C]:
         k = self.home(name) if link is None else link
@@ -128,92 +147,350 @@ def solve(scene: Scene, phi_deg=None, order: int | None = None,
         if scene.wants("acceleration_plan"):
             order = 2
     phis = np.atleast_1d(np.asarray(scene.driver.phis_deg if phi_deg is None else phi_deg, dtype=float))
+    program = _program(scene, st)
+    if len(phis) <= SCALAR_MAX:
+        return _solve_scalar(scene, st, program, phis, order)
+    ctx = _Ctx(scene, _VEC, phis, order)
     n = len(phis)
-    motion: dict[int, _Motion] = {}
     zeros = np.zeros(n)
     czeros = np.zeros(n, dtype=complex)
-    motion[scene.frame] = _Motion(np.ones(n, dtype=complex), czeros, zeros, czeros, zeros, czeros)
+    ctx.motion[scene.frame] = _Motion(np.ones(n, dtype=complex), czeros, zeros, czeros, zeros, czeros)
+    _drive(ctx, _rotation(scene.driver, phis), np.full(n, scene.driver.omega), np.full(n, scene.driver.eps))
+    for fn, g, k in program:
+        fn(ctx, g, k)
+    return Kinematics(scene, st, phis, order, ctx.motion, ctx.slides, ctx.conditions)
+
+
+# --------------------------------------------------------------------------- two ways to run
+
+
+class _Vec:
+    """numpy over all positions."""
+
+    sqrt = staticmethod(np.sqrt)
+    maximum = staticmethod(np.maximum)
+    exp = staticmethod(np.exp)
+    angle = staticmethod(np.angle)
+    arcsin = staticmethod(np.arcsin)
+
+    @staticmethod
+    def low(x):
+        return x.min()
+
+    @staticmethod
+    def high(x):
+        return x.max()
+
+    @staticmethod
+    def clip(x, lo, hi):
+        return np.clip(x, lo, hi)
+
+    @staticmethod
+    def full(n, v):
+        return np.full(n, v)
+
+
+class _Sca:
+    """Plain Python numbers, one position."""
+
+    sqrt = staticmethod(math.sqrt)
+    maximum = staticmethod(max)
+    exp = staticmethod(cmath.exp)
+    angle = staticmethod(cmath.phase)
+    arcsin = staticmethod(math.asin)
+
+    @staticmethod
+    def low(x):
+        return x
+
+    @staticmethod
+    def high(x):
+        return x
+
+    @staticmethod
+    def clip(x, lo, hi):
+        return min(max(x, lo), hi)
+
+    @staticmethod
+    def full(n, v):
+        return v
+
+
+_VEC = _Vec()
+_SCA = _Sca()
+
+
+class _Ctx:
+    """What the group solvers read and fill: motions, slides, conditions."""
+
+    __slots__ = ("scene", "xp", "phis", "n", "order", "motion", "slides", "conditions", "frame",
+                 "crank", "pivot", "zpivot", "W", "E", "pins")
+
+    def __init__(self, scene: Scene, xp: Any, phis: Any, order: int) -> None:
+        self.scene = scene
+        self.n = len(phis)
+        self.xp = xp
+        self.phis = phis
+        self.order = order
+        self.motion: dict[int, _Motion] = {}
+        self.slides: dict[str, tuple[Any, Any]] = {}
+        self.conditions: dict[str, Any] = {}
+        self.frame = scene.frame
+        d = scene.driver
+        # the crank turns at constant ω1, ε1 about its pivot: its points in four operations
+        self.crank = d.link
+        self.pivot = scene.frame_points[d.pivot]
+        self.zpivot = scene.links[d.link].points[d.pivot]
+        self.W = 1j * d.omega
+        self.E = complex(-d.omega * d.omega, d.eps)
+        self.pins: dict[complex, tuple] = {}
+
+
+def _drive(ctx: _Ctx, rot1, omega, eps) -> None:
+    z = ctx.zpivot
+    if z:
+        rel = -rot1 * z  # the crank's origin from its pivot
+        m1 = _Motion(rot1, ctx.pivot + rel)
+        if ctx.order >= 1:
+            m1.omega, m1.v0 = omega, ctx.W * rel
+            if ctx.order >= 2:
+                m1.eps, m1.a0 = eps, ctx.E * rel
+    else:  # the usual crank: its origin is the pivot
+        m0 = ctx.motion[ctx.frame]
+        m1 = _Motion(rot1, m0.r0 + ctx.pivot if ctx.pivot else m0.r0)
+        if ctx.order >= 1:
+            m1.omega, m1.v0 = omega, m0.v0
+            if ctx.order >= 2:
+                m1.eps, m1.a0 = eps, m0.a0
+    ctx.motion[ctx.crank] = m1
+
+
+_QUARTER = np.array([1, 1j, -1, -1j])
+
+
+def _rotation(d: Any, phis: Any) -> C:
+    """e^{iθ1} over positions, reduced by quarter turns like :meth:`Driver.rotation`
+    (the same numbers, fewer numpy calls)."""
+    ref = math.degrees(d.phi_ref)
+    t = phis if d.sense == 1 and ref == 0 else ref + d.sense * phis
+    q = np.rint(t / 90.0)
+    r = t - 90.0 * q
+    return _QUARTER[q.astype(np.intp) & 3] * np.exp(r * (1j * math.pi / 180.0))
+
+
+def _rotation1(d: Any, phi: float) -> complex:
+    """e^{iθ1} of one position, reduced by quarter turns like :meth:`Driver.rotation`."""
+    t = math.degrees(d.phi_ref) + d.sense * phi
+    q = round(t / 90.0)
+    r = t - 90.0 * q
+    return (1, 1j, -1, -1j)[int(q) % 4] * cmath.exp(1j * math.radians(r))
+
+
+def _solve_scalar(scene: Scene, st: Structure, program: list, phis: Any, order: int) -> Kinematics:
+    """Position by position in Python numbers; the motions stacked into arrays at the end
+    (two numpy calls: numpy's per-call cost is what this path avoids)."""
     d = scene.driver
-    crank = scene.links[d.link]
-    rot1 = d.rotation(phis)
-    pivot = scene.frame_points[d.pivot]
-    m1 = _Motion(rot1, pivot - rot1 * crank.points[d.pivot])
-    if order >= 1:
-        m1.omega = np.full(n, d.omega)
-        m1.v0 = 1j * m1.omega * (m1.r0 - pivot)
-    if order >= 2:
-        m1.eps = np.full(n, d.eps)
-        m1.a0 = (1j * m1.eps - m1.omega**2) * (m1.r0 - pivot)
-    motion[d.link] = m1
-    kin = Kinematics(scene, st, phis, order, motion, {})
-    for g in st.groups:
-        _SOLVERS[g.kind](kin, g, order)
-    return kin
+    runs = []
+    for phi in phis.tolist():
+        ctx = _Ctx(scene, _SCA, [phi], order)
+        ctx.motion[scene.frame] = _Motion(1 + 0j, 0j, 0.0, 0j, 0.0, 0j)
+        _drive(ctx, _rotation1(d, phi), d.omega, d.eps)
+        for fn, g, k in program:
+            fn(ctx, g, k)
+        runs.append(ctx)
+    return _stack(scene, st, phis, order, runs)
+
+
+def _stack(scene: Scene, st: Structure, phis: Any, order: int, runs: list) -> Kinematics:
+    """The runs' numbers as arrays over positions; a motion's arrays are made when first
+    read (each array costs about as much as a group's whole solution in Python numbers)."""
+    first = runs[0]
+    k = min(order, 2)
+    fields = _FIELDS_BY_ORDER[k]
+    motion: dict[int, _Motion] = {}
+    if len(runs) == 1:
+        for lid, m in first.motion.items():
+            motion[lid] = _Stacked({"rot": [m.rot], "r0": [m.r0], "omega": [m.omega], "v0": [m.v0],
+                                    "eps": [m.eps], "a0": [m.a0]} if k == 2 else
+                                   {f: [getattr(m, f)] for f in fields})
+    else:
+        for lid in first.motion:
+            ms = [r.motion[lid] for r in runs]
+            motion[lid] = _Stacked({f: [getattr(m, f) for m in ms] for f in fields})
+    if k < 2:  # the frame's rates are known (zero) whatever is asked
+        fm = motion[scene.frame]
+        n = len(runs)
+        fm.omega, fm.v0, fm.eps, fm.a0 = np.zeros(n), np.zeros(n, complex), np.zeros(n), np.zeros(n, complex)
+    slides = {}
+    for nm, (sd, _) in first.slides.items():
+        if sd is not None:
+            slides[nm] = (np.array([r.slides[nm][0] for r in runs], dtype=float),
+                          np.array([r.slides[nm][1] for r in runs], dtype=float) if k == 2 else None)
+    conditions = {g: np.array([r.conditions[g] for r in runs], dtype=float) for g in first.conditions}
+    return Kinematics(scene, st, phis, order, motion, slides, conditions)
+
+
+_FIELDS_BY_ORDER = (("rot", "r0"), ("rot", "r0", "omega", "v0"), ("rot", "r0", "omega", "v0", "eps", "a0"))
+_COMPLEX = frozenset(("rot", "r0", "v0", "a0"))
+
+
+class _Stacked(_Motion):
+    """A motion solved position by position: each quantity a list of numbers until read."""
+
+    __slots__ = ("_cols",)
+
+    def __init__(self, cols: dict[str, Any]) -> None:  # noqa: D107 - fields live in _cols
+        self._cols = cols
+
+    def _get(self, f: str) -> Any:
+        v = self._cols.get(f)
+        if isinstance(v, list):
+            v = self._cols[f] = np.array(v, dtype=complex if f in _COMPLEX else float)
+        return v
+
+
+def _stacked_field(f: str) -> property:
+    def get(self: _Stacked) -> Any:
+        return self._get(f)
+
+    def put(self: _Stacked, value: Any) -> None:
+        self._cols[f] = value
+    return property(get, put)
+
+
+for _f in ("rot", "r0", "omega", "v0", "eps", "a0"):
+    setattr(_Stacked, _f, _stacked_field(_f))
+
+
+_FIELDS = ("rot", "r0", "omega", "v0", "eps", "a0")
 
 
 # --------------------------------------------------------------------------- helpers
 
 
-def _fail(cls, kin: Kinematics, g: Group, mask, point: str, why: str):
-    k = int(np.flatnonzero(mask)[0])
-    return cls(why, group=f"{g.kind} {g.name}", point=point, phi_deg=float(kin.phi_deg[k]))
+def _program(scene: Scene, st: Structure) -> list:
+    """(solver, group, constants) per group, derived once per scene and structure."""
+    done = scene.memo.get("exact")
+    if done is None or done[0] is not st:
+        done = scene.memo["exact"] = (st, [(_SOLVERS[g.kind], g, _CONSTANTS[g.kind](scene, g))
+                                           for g in st.groups])
+    return done[1]
 
 
-def _guide_line(kin: Kinematics, jt: Joint) -> tuple[C, C]:
-    """Global origin and unit direction of a joint's guide."""
+def _fail(cls, ctx: _Ctx, g: Group, mask, point: str, why: str):
+    k = int(np.flatnonzero(np.atleast_1d(mask))[0])
+    return cls(why, group=f"{g.kind} {g.name}", point=point, phi_deg=float(ctx.phis[k]))
+
+
+def _at(ctx: _Ctx, link: int, z: complex) -> tuple[Any, Any, Any]:
+    """r, v, a of the point with local coordinates z on a known link (v, a only as ordered)."""
+    m = ctx.motion[link]
+    if link == ctx.frame:
+        return m.r0 + z, m.v0, m.a0
+    if link == ctx.crank and z != ctx.zpivot:
+        done = ctx.pins.get(z)  # the crank pin carries several groups (V-engine)
+        if done is None:
+            rel = m.rot * (z - ctx.zpivot)
+            done = ctx.pins[z] = (ctx.pivot + rel, ctx.W * rel, ctx.E * rel)
+        return done
+    if not z:
+        return m.r0, m.v0, m.a0
+    rel = m.rot * z
+    v = a = None
+    if ctx.order >= 1:
+        w = 1j * m.omega
+        v = m.v0 + w * rel
+        if ctx.order >= 2:
+            a = m.a0 + (1j * m.eps - m.omega * m.omega) * rel
+    return m.r0 + rel, v, a
+
+
+def _carried(ctx: _Ctx, link: int, X: C) -> tuple[C, C]:
+    """v and a of the point fixed to ``link`` that coincides with X now (zero on the frame)."""
+    m = ctx.motion[link]
+    if link == ctx.frame:
+        return m.v0, m.a0
+    rel = X - m.r0
+    v = m.v0 + 1j * m.omega * rel
+    a = None if m.eps is None else m.a0 + (1j * m.eps - m.omega * m.omega) * rel
+    return v, a
+
+
+def _guide_line(ctx: _Ctx, jt: Joint, constants: bool = False) -> tuple[C, C]:
+    """Global origin and unit direction of a joint's guide (with ``constants``: plain numbers
+    for a guide on the frame)."""
     assert jt.guide is not None
-    m = kin.motion[jt.guide.link]
+    if constants and jt.guide.link == ctx.frame:
+        return jt.guide.origin, jt.guide.direction
+    m = ctx.motion[jt.guide.link]
     return m.r0 + m.rot * jt.guide.origin, m.rot * jt.guide.direction
 
 
-def _unit(z: C) -> C:
-    return z / np.abs(z)
-
-
-def _place(kin: Kinematics, link: int, rot: C, anchor: C, anchor_name: str) -> _Motion:
-    """A link placed by its rotation e^{iθ} and one of its points."""
-    z = kin.scene.links[link].points[anchor_name]
-    m = _Motion(rot, anchor - rot * z)
-    kin.motion[link] = m
+def _place(ctx: _Ctx, link: int, rot: C, anchor: C, z: complex) -> _Motion:
+    """A link placed by its rotation e^{iθ} and one of its points (local z)."""
+    m = _Motion(rot, anchor - rot * z if z else anchor)
+    ctx.motion[link] = m
     return m
 
 
-def _set_rates(kin: Kinematics, link: int, anchor: C, v: C, a: C, omega: R, eps: R) -> None:
+def _rates(ctx: _Ctx, m: _Motion, anchor: C, v: C, a: C, omega: R, eps: R) -> None:
     """Rates of a placed link from one point's v, a and the link's ω, ε."""
-    m = kin.motion[link]
-    rel = m.r0 - anchor
+    rel = m.r0 - anchor if m.r0 is not anchor else None
     m.omega = omega
-    m.v0 = v + 1j * omega * rel
-    if a is not None and eps is not None:
+    m.v0 = v if rel is None else v + 1j * omega * rel
+    if ctx.order >= 2:
         m.eps = eps
-        m.a0 = a + (1j * eps - omega**2) * rel
+        m.a0 = a if rel is None else a + (1j * eps - omega * omega) * rel
 
 
-def _solve2(c1: C, c2: C, rhs: C) -> tuple[R, R]:
-    """x1, x2 with x1·c1 + x2·c2 = rhs."""
-    det = cross(c1, c2)
-    return cross(rhs, c2) / det, cross(c1, rhs) / det
+class _System:
+    """x1·c1 + x2·c2 = rhs for several right-hand sides with the same c1, c2 (Cramer);
+    ``det`` = c1 × c2 is read before solving (to check for a lock)."""
+
+    __slots__ = ("cc1", "c2", "det", "k1", "k2")
+
+    def __init__(self, c1: C, c2: C) -> None:
+        self.cc1 = c1.conjugate()
+        self.c2 = c2
+        self.det = (self.cc1 * c2).imag
+        self.k1 = None
+
+    def __call__(self, rhs: C) -> tuple[R, R]:
+        if self.k1 is None:
+            inv = 1.0 / self.det
+            self.k1 = (-self.c2).conjugate() * inv  # x1 = cross(rhs, c2)/det = −Im(rhs·conj(c2))/det
+            self.k2 = self.cc1 * inv  # x2 = cross(c1, rhs)/det = Im(conj(c1)·rhs)/det
+        return (rhs * self.k1).imag, (rhs * self.k2).imag
 
 
-def _check_lock(kin: Kinematics, g: Group, c1: C, c2: C, point: str) -> None:
-    det = np.abs(cross(c1, c2))
-    size = np.abs(c1) * np.abs(c2)
-    bad = det <= LOCK_SIN * size
-    kin.conditions[g.name] = size / np.where(bad, 1.0, det)
-    if bad.any():
-        raise _fail(Locked, kin, g, bad, point,
+def _lock(ctx: _Ctx, g: Group, det: R, size: Any, point: str) -> None:
+    """Condition number |c1||c2| / |c1 × c2|; parallel construction lines lock the group."""
+    adet = abs(det)
+    if (ctx.xp.low(adet) <= LOCK_SIN * size) if isinstance(size, float) else (ctx.xp.low(adet / size) <= LOCK_SIN):
+        raise _fail(Locked, ctx, g, adet <= LOCK_SIN * size, point,
                     "the construction lines are parallel and do not coincide: the group locks here "
                     "(velocities are unbounded)")
+    ctx.conditions[g.name] = size / adet
 
 
-def _sqrt_nonneg(kin: Kinematics, g: Group, x: R, y: R, scale: R, point: str, why) -> R:
-    """sqrt(x·y) with x·y >= 0 up to rounding; negative beyond that is not assemblable
-    (``why(k)`` says why at the first such position ``k``)."""
-    prod = x * y
-    bad = prod < -ASSEMBLY_REL * scale**2
-    if bad.any():
-        raise _fail(NotAssemblable, kin, g, bad, point, why(int(np.flatnonzero(bad)[0])))
-    return np.sqrt(np.maximum(prod, 0.0))
+def _root(ctx: _Ctx, g: Group, x: R, y: R, scale: Any, point: str, why: Any) -> R:
+    """sqrt(x·y) with x·y >= 0 up to rounding (relative to scale()²); below that not
+    assemblable (``why()`` says why)."""
+    xp = ctx.xp
+    x = x * y
+    if xp.low(x) < 0:
+        size = scale()
+        bad = x < -ASSEMBLY_REL * size * size
+        if (bad.any() if hasattr(bad, "any") else bad):
+            raise _fail(NotAssemblable, ctx, g, bad, point, why())
+        x = xp.maximum(x, 0.0)
+    return xp.sqrt(x)
+
+
+def _worst(D: Any, low: float, high: float) -> float:
+    """The distance farthest outside [low, high] (the one a group could not span)."""
+    d = np.atleast_1d(np.asarray(D, dtype=float))
+    return float(d.max()) if d.max() > high else float(d.min())
 
 
 def _branch_hint(g: Group) -> str:
@@ -222,224 +499,285 @@ def _branch_hint(g: Group) -> str:
             f"{-g.branch:+d} selects the other of two assemblies only where two exist)")
 
 
-# --------------------------------------------------------------------------- the five dyads
+_NAMES: dict[Joint, str] = {}
 
 
-def _rrr(kin: Kinematics, g: Group, order: int) -> None:
-    i, j = g.links
-    j1, j2, j3 = g.joints
-    p, q = g.known
-    P1, vP1, aP1 = kin.point(j1.point, p)
-    P3, vP3, aP3 = kin.point(j3.point, q)
-    Li, Lj = kin.scene.links[i], kin.scene.links[j]
-    zi = Li.points[j2.point] - Li.points[j1.point]
-    zj = Lj.points[j2.point] - Lj.points[j3.point]
-    l1, l3 = abs(zi), abs(zj)
-    d = P3 - P1
-    D = np.abs(d)
-    if (D <= ASSEMBLY_REL * (l1 + l3)).any():
-        raise _fail(NotAssemblable, kin, g, D <= ASSEMBLY_REL * (l1 + l3), j2.point,
-                    f"{j1.point} and {j3.point} coincide: the position of {j2.point} is undefined")
-    a = (l1**2 - l3**2 + D**2) / (2 * D)
-    h = _sqrt_nonneg(kin, g, l1 - a, l1 + a, l1 + l3 + D, j2.point,
-                     lambda k: f"{j1.point}{j2.point} = {l1 * 1e3:.6g} mm and {j3.point}{j2.point} = "
-                               f"{l3 * 1e3:.6g} mm cannot span {j1.point}{j3.point} = {D[k] * 1e3:.6g} mm "
-                               f"(they span {abs(l1 - l3) * 1e3:.6g} to {(l1 + l3) * 1e3:.6g} mm)"
-                               + _branch_hint(g))
-    B = P1 + (a + 1j * g.branch * h) * d / D
-    _place(kin, i, _unit(B - P1) * (zi.conjugate() / l1), P1, j1.point)
-    _place(kin, j, _unit(B - P3) * (zj.conjugate() / l3), P3, j3.point)
-    if order < 1:
-        return
-    r1, r3 = B - P1, B - P3
-    c1, c2 = 1j * r1, -1j * r3
-    _check_lock(kin, g, c1, c2, j2.point)
-    wi, wj = _solve2(c1, c2, vP3 - vP1)
-    ei = ej = None
-    if order >= 2:
-        ei, ej = _solve2(c1, c2, aP3 - aP1 + wi**2 * r1 - wj**2 * r3)
-    _set_rates(kin, i, P1, vP1, aP1, wi, ei)
-    _set_rates(kin, j, P3, vP3, aP3, wj, ej)
-
-
-def _rrp(kin: Kinematics, g: Group, order: int) -> None:
-    i, j = g.links
-    j1, j2, j3 = g.joints
-    p, q = g.known
-    P1, vP1, aP1 = kin.point(j1.point, p)
-    G0, u = _guide_line(kin, j3)
-    Li = kin.scene.links[i]
-    l1 = abs(Li.points[j2.point] - Li.points[j1.point])
-    w = P1 - G0
-    t0 = (w * u.conjugate()).real
-    e = cross(u, w)
-    root = _sqrt_nonneg(kin, g, l1 - e, l1 + e, np.full_like(e, l1), j2.point,
-                        lambda k: f"{j1.point}{j2.point} = {l1 * 1e3:.6g} mm is shorter than the distance "
-                                  f"{abs(e[k]) * 1e3:.6g} mm from {j1.point} to the guide of {j2.point}"
-                                  + _branch_hint(g))
-    B = G0 + (t0 + g.branch * root) * u
-    zi = Li.points[j2.point] - Li.points[j1.point]
-    _place(kin, i, _unit(B - P1) * (zi.conjugate() / l1), P1, j1.point)
-    mq = kin.motion[q]
-    _place(kin, j, mq.rot * _turn(j3), B, j2.point)
-    if order < 1:
-        return
-    r1 = B - P1
-    vBq, aBq = _carried(kin, q, B)
-    c1, c2 = 1j * r1, -u
-    _check_lock(kin, g, c1, c2, j2.point)
-    wi, sd = _solve2(c1, c2, vBq - vP1)
-    vB = vBq + sd * u
-    ei = sdd = aB = None
-    if order >= 2:
-        cor = 2 * mq.omega * sd * 1j * u
-        ei, sdd = _solve2(c1, c2, aBq + cor - aP1 + wi**2 * r1)
-        aB = aBq + cor + sdd * u
-    _set_rates(kin, i, P1, vP1, aP1, wi, ei)
-    _set_rates(kin, j, B, vB, aB, mq.omega, mq.eps)
-    kin.slides[j3.name] = (sd, sdd)
-
-
-def _rpr(kin: Kinematics, g: Group, order: int) -> None:
-    i, j = g.links
-    j1, j2, j3 = g.joints
-    p, q = g.known
-    A, vA, aA = kin.point(j1.point, p)
-    Cq, vC, aC = kin.point(j3.point, q)
-    Lj = kin.scene.links[j]
-    guide = j2.guide
-    assert guide is not None
-    c0 = guide.origin - Lj.points[j3.point]
-    ecc = cross(guide.direction, c0)  # signed offset of the slot from C, in j's frame
-    d = A - Cq
-    D = np.abs(d)
-    sin_ = ecc / np.where(D > 0, D, 1.0)
-    bad = (D == 0) | (np.abs(sin_) > 1 + ASSEMBLY_REL)
-    if bad.any():
-        k = int(np.flatnonzero(bad)[0])
-        raise _fail(NotAssemblable, kin, g, bad, j2.point,
-                    f"the slot of link {j} (offset {abs(ecc) * 1e3:.6g} mm from {j3.point}) cannot pass through "
-                    f"{j1.point}, {D[k] * 1e3:.6g} mm from {j3.point}" + _branch_hint(g))
-    tj = _rpr_angle(np.angle(d), guide.angle, ecc, D, g.branch)
-    mj = _place(kin, j, np.exp(1j * tj), Cq, j3.point)
-    _place(kin, i, mj.rot * _turn(j2), A, j1.point)
-    if order < 1:
-        return
-    u = mj.rot * guide.direction
-    r = A - Cq
-    c1, c2 = 1j * r, u
-    _check_lock(kin, g, c1, c2, j2.point)
-    wj, sd = _solve2(c1, c2, vA - vC)
-    ej = sdd = None
-    if order >= 2:
-        cor = 2 * wj * sd * 1j * u
-        ej, sdd = _solve2(c1, c2, aA - aC + wj**2 * r - cor)
-    _set_rates(kin, j, Cq, vC, aC, wj, ej)
-    _set_rates(kin, i, A, vA, aA, wj, ej)
-    kin.slides[j2.name] = (sd, sdd)
-
-
-def _rpr_angle(psi, alpha, ecc, D, branch):
-    """θ_j of a slotted link: the slot through C + e^{iθ}c0 along e^{i(θ+α)} holds A iff
-    cross(u, A − C) = ecc ⇔ D sin(ψ − θ − α) = ecc; branch +1 puts A ahead along the slot."""
-    s = np.arcsin(np.clip(ecc / D, -1.0, 1.0))
-    if branch > 0:
-        return psi - alpha - s  # A ahead along the slot direction
-    return psi - alpha - np.pi + s
-
-
-def _prp(kin: Kinematics, g: Group, order: int) -> None:
-    i, j = g.links
-    j1, j2, j3 = g.joints
-    p, q = g.known
-    G1, u1 = _guide_line(kin, j1)
-    G3, u3 = _guide_line(kin, j3)
-    c1, c2 = u1, -u3
-    det = cross(c1, c2)
-    bad = np.abs(det) <= LOCK_SIN
-    if bad.any():
-        raise _fail(NotAssemblable, kin, g, bad, j2.point, "the two guides are parallel: they have no common point")
-    kin.conditions[g.name] = 1.0 / np.abs(det)
-    s1, _ = _solve2(c1, c2, G3 - G1)
-    B = G1 + s1 * u1
-    mp, mq = kin.motion[p], kin.motion[q]
-    _place(kin, i, mp.rot * _turn(j1), B, j2.point)
-    _place(kin, j, mq.rot * _turn(j3), B, j2.point)
-    if order < 1:
-        return
-    vBp, aBp = _carried(kin, p, B)
-    vBq, aBq = _carried(kin, q, B)
-    sd1, sd3 = _solve2(c1, c2, vBq - vBp)
-    vB = vBp + sd1 * u1
-    sdd1 = sdd3 = aB = None
-    if order >= 2:
-        k1 = 2 * mp.omega * sd1 * 1j * u1
-        k3 = 2 * mq.omega * sd3 * 1j * u3
-        sdd1, sdd3 = _solve2(c1, c2, aBq + k3 - aBp - k1)
-        aB = aBp + k1 + sdd1 * u1
-    _set_rates(kin, i, B, vB, aB, mp.omega, mp.eps)
-    _set_rates(kin, j, B, vB, aB, mq.omega, mq.eps)
-    kin.slides[j1.name] = (sd1, sdd1)
-    kin.slides[j3.name] = (sd3, sdd3)
-
-
-def _rpp(kin: Kinematics, g: Group, order: int) -> None:
-    i, j = g.links
-    j1, j2, j3 = g.joints
-    p, q = g.known
-    A, vA, aA = kin.point(j1.point, p)
-    G3, u3 = _guide_line(kin, j3)
-    mq = kin.motion[q]
-    Lj = kin.scene.links[j]
-    rot = mq.rot * _turn(j3)
-    guide = j2.guide
-    assert guide is not None
-    u2 = rot * guide.direction
-    zK = Lj.points[j3.point]
-    c1, c2 = u2, u3
-    det = cross(c1, c2)
-    bad = np.abs(det) <= LOCK_SIN
-    if bad.any():
-        raise _fail(NotAssemblable, kin, g, bad, j2.point,
-                    f"the slot of link {j} is parallel to its guide: {j2.point} cannot be reached")
-    kin.conditions[g.name] = 1.0 / np.abs(det)
-    # r0_j = G3 + t u3 − rot zK ; A on slot: cross(u2, A − G3 − t u3 + rot (zK − g2)) = 0
-    t = cross(u2, A - G3 + rot * (zK - guide.origin)) / cross(u2, u3)
-    r0 = G3 + t * u3 - rot * zK
-    kin.motion[j] = _Motion(rot, r0)
-    _place(kin, i, rot * _turn(j2), A, j1.point)
-    if order < 1:
-        return
-    vAq, aAq = _carried(kin, q, A)
-    sd2, sd3 = _solve2(c1, c2, vA - vAq)
-    vAj = vAq + sd3 * u3
-    sdd2 = sdd3 = aAj = None
-    if order >= 2:
-        k3 = 2 * mq.omega * sd3 * 1j * u3
-        k2 = 2 * mq.omega * sd2 * 1j * u2
-        sdd2, sdd3 = _solve2(c1, c2, aA - aAq - k3 - k2)
-        aAj = aAq + k3 + sdd3 * u3
-    _set_rates(kin, j, A, vAj, aAj, mq.omega, mq.eps)
-    _set_rates(kin, i, A, vA, aA, mq.omega, mq.eps)
-    kin.slides[j2.name] = (sd2, sdd2)
-    kin.slides[j3.name] = (sd3, sdd3)
+def _name(jt: Joint) -> str:
+    """A P joint's name (formatted once)."""
+    nm = _NAMES.get(jt)
+    if nm is None:
+        nm = _NAMES[jt] = jt.name
+    return nm
 
 
 def _turn(jt: Joint) -> complex:
     """e^{i(α − α_s)}: a slider's rotation relative to the link carrying its guide."""
     assert jt.guide is not None
-    return complex(np.exp(1j * (jt.guide.angle - jt.slider_angle)))
+    return cmath.exp(1j * (jt.guide.angle - jt.slider_angle))
 
 
-def _carried(kin: Kinematics, link: int, X: C) -> tuple[C, C]:
-    """v and a of the point fixed to ``link`` that coincides with X now (zero on the frame)."""
-    m = kin.motion[link]
-    if link == kin.scene.frame:
-        return m.v0, m.a0
-    rel = X - m.r0
-    v = m.v0 + 1j * m.omega * rel
-    a = None if m.eps is None else m.a0 + (1j * m.eps - m.omega**2) * rel
-    return v, a
+def _rotation_of(ctx: _Ctx, q: int, turn: complex) -> C:
+    """Rotation of a link that keeps its angle to link q."""
+    if q == ctx.frame:
+        return ctx.xp.full(ctx.n, turn)
+    return ctx.motion[q].rot * turn
+
+
+# --------------------------------------------------------------------------- the five dyads
+
+
+def _k_rrr(scene: Scene, g: Group) -> tuple:
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    p, q = g.known
+    Li, Lj = scene.links[i], scene.links[j]
+    zi = Li.points[j2.point] - Li.points[j1.point]
+    zj = Lj.points[j2.point] - Lj.points[j3.point]
+    l1, l3 = abs(zi), abs(zj)
+    return (_local(scene, p, j1.point), _local(scene, q, j3.point), l1, l3,
+            zi.conjugate() / l1, zj.conjugate() / l3,
+            Li.points[j1.point], Lj.points[j3.point], 0.5 * (l1 * l1 - l3 * l3))
+
+
+def _local(scene: Scene, link: int, name: str) -> complex:
+    return scene.frame_points[name] if link == scene.frame else scene.links[link].points[name]
+
+
+def _rrr(ctx: _Ctx, g: Group, k: tuple) -> None:
+    zp, zq, l1, l3, ci, cj, z1i, z3j, half_diff = k
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    p, q = g.known
+    P1, vP1, aP1 = _at(ctx, p, zp)
+    P3, vP3, aP3 = _at(ctx, q, zq)
+    d = P3 - P1
+    D = abs(d)
+    if ctx.xp.low(D) <= ASSEMBLY_REL * (l1 + l3):
+        raise _fail(NotAssemblable, ctx, g, D <= ASSEMBLY_REL * (l1 + l3), j2.point,
+                    f"{j1.point} and {j3.point} coincide: the position of {j2.point} is undefined")
+    # a along d, h across it; h² as (l1 − a)(l1 + a): no cancellation near a tangent assembly
+    a = (half_diff + 0.5 * D * D) / D
+    h = _root(ctx, g, l1 - a, l1 + a, lambda: l1 + l3 + D, j2.point,
+              lambda: f"{j1.point}{j2.point} = {l1 * 1e3:.6g} mm and {j3.point}{j2.point} = {l3 * 1e3:.6g} mm "
+                      f"cannot span {j1.point}{j3.point} = {_worst(D, abs(l1 - l3), l1 + l3) * 1e3:.6g} mm "
+                      f"(they span {abs(l1 - l3) * 1e3:.6g} to {(l1 + l3) * 1e3:.6g} mm)" + _branch_hint(g))
+    r1 = (a + 1j * h if g.branch > 0 else a - 1j * h) * (d / D)  # B − P1
+    B = P1 + r1
+    r3 = B - P3
+    # rotations from the unit vectors along the links (|r1| = l1 only to rounding, which
+    # a near-tangent assembly makes large)
+    mi = _place(ctx, i, r1 * (ci / abs(r1)), P1, z1i)
+    mj = _place(ctx, j, r3 * (cj / abs(r3)), P3, z3j)
+    if ctx.order < 1:
+        return
+    # iωi r1 − iωj r3 = vP3 − vP1
+    c1, c2 = 1j * r1, -1j * r3
+    sys2 = _System(c1, c2)
+    _lock(ctx, g, sys2.det, l1 * l3, j2.point)
+    wi, wj = sys2(vP3 - vP1)
+    ei = ej = None
+    if ctx.order >= 2:
+        ei, ej = sys2(aP3 - aP1 + wi * wi * r1 - wj * wj * r3)
+    _rates(ctx, mi, P1, vP1, aP1, wi, ei)
+    _rates(ctx, mj, P3, vP3, aP3, wj, ej)
+
+
+def _k_rrp(scene: Scene, g: Group) -> tuple:
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    Li, Lj = scene.links[i], scene.links[j]
+    zi = Li.points[j2.point] - Li.points[j1.point]
+    l1 = abs(zi)
+    return (_local(scene, g.known[0], j1.point), l1, zi.conjugate() / l1, Li.points[j1.point],
+            _turn(j3), Lj.points[j2.point])
+
+
+def _rrp(ctx: _Ctx, g: Group, k: tuple) -> None:
+    zp, l1, ci, z1i, turn, zBj = k
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    p, q = g.known
+    P1, vP1, aP1 = _at(ctx, p, zp)
+    G0, u = _guide_line(ctx, j3, constants=True)
+    wu = (P1 - G0) * u.conjugate()  # t0 + i·e: along and across the guide
+    t0, e = wu.real, wu.imag
+    root = _root(ctx, g, l1 - e, l1 + e, lambda: l1, j2.point,
+                 lambda: f"{j1.point}{j2.point} = {l1 * 1e3:.6g} mm is shorter than the distance "
+                         f"{float(np.max(np.abs(e))) * 1e3:.6g} mm from {j1.point} to the guide of {j2.point}"
+                         + _branch_hint(g))
+    B = G0 + (t0 + root if g.branch > 0 else t0 - root) * u
+    r1 = B - P1
+    mi = _place(ctx, i, r1 * (ci / abs(r1)), P1, z1i)
+    mj = _place(ctx, j, _rotation_of(ctx, q, turn), B, zBj)
+    if ctx.order < 1:
+        return
+    vBq, aBq = _carried(ctx, q, B)
+    c1, c2 = 1j * r1, -u
+    sys2 = _System(c1, c2)
+    _lock(ctx, g, sys2.det, l1, j2.point)
+    wi, sd = sys2(vBq - vP1)
+    vB = sd * u if q == ctx.frame else vBq + sd * u
+    mq = ctx.motion[q]
+    ei = sdd = aB = None
+    if ctx.order >= 2:
+        if q == ctx.frame:
+            ei, sdd = sys2(wi * wi * r1 - aP1)
+            aB = sdd * u
+        else:
+            cor = 2j * mq.omega * sd * u
+            ei, sdd = sys2(aBq + cor - aP1 + wi * wi * r1)
+            aB = aBq + cor + sdd * u
+    _rates(ctx, mi, P1, vP1, aP1, wi, ei)
+    _rates(ctx, mj, B, vB, aB, mq.omega, mq.eps)
+    ctx.slides[_name(j3)] = (sd, sdd)
+
+
+def _k_rpr(scene: Scene, g: Group) -> tuple:
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    Lj = scene.links[j]
+    guide = j2.guide
+    assert guide is not None
+    c0 = guide.origin - Lj.points[j3.point]
+    return (_local(scene, g.known[0], j1.point), _local(scene, g.known[1], j3.point),
+            cross(guide.direction, c0), Lj.points[j3.point], _turn(j2),
+            scene.links[i].points[j1.point])
+
+
+def _rpr(ctx: _Ctx, g: Group, k: tuple) -> None:
+    zp, zq, ecc, z3j, turn, z1i = k
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    p, q = g.known
+    xp = ctx.xp
+    A, vA, aA = _at(ctx, p, zp)
+    Cq, vC, aC = _at(ctx, q, zq)
+    guide = j2.guide
+    assert guide is not None
+    d = A - Cq
+    D = abs(d)
+    if xp.low(D) == 0 or xp.high(abs(ecc / xp.maximum(D, 1e-300))) > 1 + ASSEMBLY_REL:
+        sin_ = ecc / np.where(D > 0, D, 1.0)
+        bad = (D == 0) | (np.abs(sin_) > 1 + ASSEMBLY_REL)
+        raise _fail(NotAssemblable, ctx, g, bad, j2.point,
+                    f"the slot of link {j} (offset {abs(ecc):.6g} m from {j3.point}) cannot pass through "
+                    f"{j1.point}")
+    s = xp.arcsin(xp.clip(ecc / D, -1.0, 1.0))
+    psi = xp.angle(d)
+    # θ_j: the slot through C + e^{iθ}c0 along e^{i(θ+α)} holds A iff D sin(ψ − θ − α) = ecc;
+    # branch +1 puts A ahead along the slot
+    tj = psi - guide.angle - s if g.branch > 0 else psi - guide.angle - math.pi + s
+    mj = _place(ctx, j, xp.exp(1j * tj), Cq, z3j)
+    mi = _place(ctx, i, mj.rot * turn, A, z1i)
+    if ctx.order < 1:
+        return
+    u = mj.rot * guide.direction
+    c1, c2 = 1j * d, u
+    sys2 = _System(c1, c2)
+    _lock(ctx, g, sys2.det, D, j2.point)
+    wj, sd = sys2(vA - vC)
+    ej = sdd = None
+    if ctx.order >= 2:
+        cor = 2j * wj * sd * u
+        ej, sdd = sys2(aA - aC + wj * wj * d - cor)
+    _rates(ctx, mj, Cq, vC, aC, wj, ej)
+    _rates(ctx, mi, A, vA, aA, wj, ej)
+    ctx.slides[_name(j2)] = (sd, sdd)
+
+
+def _k_prp(scene: Scene, g: Group) -> tuple:
+    return (_turn(g.joints[0]), _turn(g.joints[2]), scene.links[g.links[0]].points[g.joints[1].point],
+            scene.links[g.links[1]].points[g.joints[1].point])
+
+
+def _prp(ctx: _Ctx, g: Group, k: tuple) -> None:
+    turn1, turn3, zBi, zBj = k
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    p, q = g.known
+    G1, u1 = _guide_line(ctx, j1)
+    G3, u3 = _guide_line(ctx, j3)
+    sys2 = _System(u1, -u3)
+    det = sys2.det
+    if ctx.xp.low(abs(det)) <= LOCK_SIN:
+        raise _fail(NotAssemblable, ctx, g, abs(det) <= LOCK_SIN, j2.point,
+                    "the two guides are parallel: they have no common point")
+    ctx.conditions[g.name] = 1.0 / abs(det)
+    s1, _ = sys2(G3 - G1)
+    B = G1 + s1 * u1
+    mp, mq = ctx.motion[p], ctx.motion[q]
+    mi = _place(ctx, i, _rotation_of(ctx, p, turn1), B, zBi)
+    mj = _place(ctx, j, _rotation_of(ctx, q, turn3), B, zBj)
+    if ctx.order < 1:
+        return
+    vBp, aBp = _carried(ctx, p, B)
+    vBq, aBq = _carried(ctx, q, B)
+    sd1, sd3 = sys2(vBq - vBp)
+    vB = vBp + sd1 * u1
+    sdd1 = sdd3 = aB = None
+    if ctx.order >= 2:
+        k1 = 2j * mp.omega * sd1 * u1
+        k3 = 2j * mq.omega * sd3 * u3
+        sdd1, sdd3 = sys2(aBq + k3 - aBp - k1)
+        aB = aBp + k1 + sdd1 * u1
+    _rates(ctx, mi, B, vB, aB, mp.omega, mp.eps)
+    _rates(ctx, mj, B, vB, aB, mq.omega, mq.eps)
+    ctx.slides[_name(j1)] = (sd1, sdd1)
+    ctx.slides[_name(j3)] = (sd3, sdd3)
+
+
+def _k_rpp(scene: Scene, g: Group) -> tuple:
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    guide = j2.guide
+    assert guide is not None
+    zK = scene.links[j].points[j3.point]
+    return (_local(scene, g.known[0], j1.point), _turn(j3), zK, zK - guide.origin, _turn(j2),
+            scene.links[i].points[j1.point])
+
+
+def _rpp(ctx: _Ctx, g: Group, k: tuple) -> None:
+    zp, turn3, zK, zKg, turn2, z1i = k
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    p, q = g.known
+    A, vA, aA = _at(ctx, p, zp)
+    G3, u3 = _guide_line(ctx, j3)
+    mq = ctx.motion[q]
+    rot = _rotation_of(ctx, q, turn3)
+    guide = j2.guide
+    assert guide is not None
+    u2 = rot * guide.direction
+    sys2 = _System(u2, u3)
+    det = sys2.det
+    if ctx.xp.low(abs(det)) <= LOCK_SIN:
+        raise _fail(NotAssemblable, ctx, g, abs(det) <= LOCK_SIN, j2.point,
+                    f"the slot of link {j} is parallel to its guide: {j2.point} cannot be reached")
+    ctx.conditions[g.name] = 1.0 / abs(det)
+    # r0_j = G3 + t u3 − rot zK ; A on slot: cross(u2, A − G3 − t u3 + rot (zK − g2)) = 0
+    t = cross(u2, A - G3 + rot * zKg) / det
+    ctx.motion[j] = _Motion(rot, G3 + t * u3 - rot * zK)
+    mi = _place(ctx, i, rot * turn2, A, z1i)
+    if ctx.order < 1:
+        return
+    vAq, aAq = _carried(ctx, q, A)
+    sd2, sd3 = sys2(vA - vAq)
+    vAj = vAq + sd3 * u3
+    sdd2 = sdd3 = aAj = None
+    if ctx.order >= 2:
+        if q == ctx.frame:
+            sdd2, sdd3 = sys2(aA)
+            aAj = sdd3 * u3
+        else:
+            k3 = 2j * mq.omega * sd3 * u3
+            k2 = 2j * mq.omega * sd2 * u2
+            sdd2, sdd3 = sys2(aA - aAq - k3 - k2)
+            aAj = aAq + k3 + sdd3 * u3
+    _rates(ctx, ctx.motion[j], A, vAj, aAj, mq.omega, mq.eps)
+    _rates(ctx, mi, A, vA, aA, mq.omega, mq.eps)
+    ctx.slides[_name(j2)] = (sd2, sdd2)
+    ctx.slides[_name(j3)] = (sd3, sdd3)
 
 
 _SOLVERS = {"RRR": _rrr, "RRP": _rrp, "RPR": _rpr, "PRP": _prp, "RPP": _rpp}
+_CONSTANTS = {"RRR": _k_rrr, "RRP": _k_rrp, "RPR": _k_rpr, "PRP": _k_prp, "RPP": _k_rpp}

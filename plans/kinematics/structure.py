@@ -8,7 +8,7 @@ p, J2 joins i to j, J3 joins j to a known link q.  Its kind is the letters of
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from plans.errors import InputError
 from plans.scene.model import Joint, Scene
@@ -26,11 +26,11 @@ class Group:
     joints: tuple[Joint, Joint, Joint]
     known: tuple[int, int]
     branch: int
+    name: str = field(init=False, compare=False)  # "i-j", smaller link first
 
-    @property
-    def name(self) -> str:
+    def __post_init__(self) -> None:
         a, b = sorted(self.links)
-        return f"{a}-{b}"
+        object.__setattr__(self, "name", f"{a}-{b}")
 
     @property
     def point(self) -> str:
@@ -67,7 +67,14 @@ class Structure:
 
 
 def analyse(scene: Scene) -> Structure:
-    """Mobility and Assur groups derived from links and joints alone."""
+    """Mobility and Assur groups derived from links and joints alone (once per scene)."""
+    done = scene.memo.get("structure")
+    if done is None:
+        done = scene.memo["structure"] = _analyse(scene)
+    return done
+
+
+def _analyse(scene: Scene) -> Structure:
     fail = _failer(scene.path)
     n = len(scene.links)
     p5 = len(scene.joints)
@@ -80,37 +87,63 @@ def analyse(scene: Scene) -> Structure:
     if len(base) != 1 or base[0].kind != "R" or base[0].point != scene.driver.pivot:
         raise fail("driver.link", f"link {drv} must be joined to the frame {frame} by one R joint at its pivot "
                                   f"{scene.driver.pivot}")
-    known = {drv, frame}
-    groups: list[Group] = []
-    remaining = sorted(set(scene.links) - known)
-    while remaining:
-        found = _next_group(scene, known, remaining)
-        if found is None:
-            raise fail("joints", f"links {remaining} do not form class-II Assur groups attached to "
-                                 f"links {sorted(known)}")
-        groups.append(found)
-        known |= set(found.links)
-        remaining = [x for x in remaining if x not in found.links]
+    groups = _groups(scene, {drv, frame})
     return Structure(n=n, p5=p5, p4=0, initial=(drv, frame), groups=tuple(groups))
+
+
+def _groups(scene: Scene, known: set[int]) -> list[Group]:
+    """Assur groups in attachment order: at each step the first pair (i < j) of unknown links
+    joined to each other by one pair and each to the known links by one pair.
+
+    Linear in the number of groups: every link keeps the count of its pairs with known links,
+    updated only around the links that a group makes known; the pairs to try are those of the
+    links with exactly one such pair (a handful at any step)."""
+    by_link: dict[int, list[Joint]] = {}
+    between: dict[tuple[int, int], list[Joint]] = {}
+    for jt in scene.joints:
+        a, b = jt.links
+        by_link.setdefault(a, []).append(jt)
+        by_link.setdefault(b, []).append(jt)
+        between.setdefault((min(a, b), max(a, b)), []).append(jt)
+    remaining = set(scene.links) - known
+    to_known = {k: sum(1 for jt in by_link.get(k, ()) if jt.other(k) in known) for k in remaining}
+    ready = {k for k in remaining if to_known[k] == 1}
+    groups: list[Group] = []
+    while remaining:
+        found = None
+        for i in sorted(ready):
+            for j in sorted({jt.other(i) for jt in by_link[i]} & ready):
+                if j > i and len(between[(i, j)]) == 1:
+                    outer_i = next(jt for jt in by_link[i] if jt.other(i) in known)
+                    outer_j = next(jt for jt in by_link[j] if jt.other(j) in known)
+                    found = _orient(scene, i, j, outer_i, between[(i, j)][0], outer_j)
+                    break
+            if found is not None:
+                break
+        if found is None:
+            raise _failer(scene.path)("joints", f"links {sorted(remaining)} do not form class-II Assur "
+                                                f"groups attached to links {sorted(known)}")
+        groups.append(found)
+        for k in found.links:
+            known.add(k)
+            remaining.discard(k)
+            ready.discard(k)
+        for k in found.links:
+            for jt in by_link.get(k, ()):
+                m = jt.other(k)
+                if m in remaining:
+                    to_known[m] += 1
+                    if to_known[m] == 1:
+                        ready.add(m)
+                    else:
+                        ready.discard(m)
+    return groups
 
 
 def _failer(path: str):
     def fail(field: str, msg: str) -> InputError:
         return InputError(msg, file=path, field=field)
     return fail
-
-
-def _next_group(scene: Scene, known: set[int], remaining: list[int]) -> Group | None:
-    for i in remaining:
-        for j in remaining:
-            if j <= i:
-                continue
-            inner = [x for x in scene.joints if set(x.links) == {i, j}]
-            outer_i = [x for x in scene.joints if i in x.links and x.other(i) in known]
-            outer_j = [x for x in scene.joints if j in x.links and x.other(j) in known]
-            if len(inner) == 1 and len(outer_i) == 1 and len(outer_j) == 1:
-                return _orient(scene, i, j, outer_i[0], inner[0], outer_j[0])
-    return None
 
 
 def _orient(scene: Scene, i: int, j: int, j1: Joint, j2: Joint, j3: Joint) -> Group:

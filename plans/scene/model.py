@@ -122,6 +122,9 @@ class Scene:
     scale_style: str  # "mu" (mm per unit) or "K" (unit per mm)
     fij: str
     raw: dict[str, Any] = field(repr=False, default_factory=dict)
+    #: what is derived once per scene (its structure, the solver's constants); not copied by
+    #: dataclasses.replace, so a changed scene derives its own
+    memo: dict[Any, Any] = field(init=False, repr=False, compare=False, default_factory=dict)
 
     def wants(self, output: str) -> bool:
         return output in self.outputs

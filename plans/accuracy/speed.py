@@ -1,0 +1,316 @@
+"""The speed goals, each measured as a ratio in one run: exact kinematics against the numpy
+floor and the peers, one position, a long chain, forces, start-up.
+
+Times are medians of several repetitions in this process (the machine is shared: what is
+compared is measured side by side, so the ratios hold when absolute times drift).  Peers
+(pylinkage, ``mechanism``) run when installed (``pip install -e '.[peers]'``); a goal that
+needs a missing peer says "skipped" and why.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+import subprocess
+import sys
+import time
+from collections.abc import Callable
+from dataclasses import asdict, dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from plans.accuracy import floor, peers
+from plans.kinematics import exact
+from plans.kinematics.structure import analyse
+from plans.scene.model import Scene, load_scene
+
+#: Exact kinematics at 360 positions: at most this many times the numpy floor ...
+FLOOR_RATIO = 1.5
+#: ... and at least this many times faster than pylinkage + numba, agreeing to POSITIONS_AGREE.
+PEER_SPEEDUP = 2.0
+POSITIONS_AGREE = 1e-12
+#: One position (seconds), by mechanism.
+ONE_POSITION = {"slider-crank (offset)": 20e-6, "four-bar": 20e-6, "v_engine": 40e-6}
+CHAIN_DYADS = 200
+CHAIN_ONE_POSITION = 40e-3
+FORCES_360 = 2e-3
+START_UP = 0.15
+
+
+@dataclass
+class Goal:
+    goal: str
+    measured: str
+    ratio: float  # measured over the goal's bound (≤ 1 met), or the speed-up for "ahead" goals
+    met: bool | None  # None: not measured (the reason in ``measured``)
+
+    def line(self) -> str:
+        state = "met" if self.met else "skipped" if self.met is None else "NOT met"
+        r = "" if math.isnan(self.ratio) else f" [{self.ratio:.2f}]"
+        return f"{state:8s} {self.goal}: {self.measured}{r}"
+
+
+def median_time(fn: Callable[[], Any], reps: int = 7, least: float = 2e-3) -> float:
+    """Median over ``reps`` of the mean time of a batch long enough to time (≥ ``least`` s)."""
+    t0 = time.perf_counter()
+    fn()
+    one = time.perf_counter() - t0
+    inner = max(1, int(least / max(one, 1e-9)))
+    ts = []
+    for _ in range(reps):
+        t0 = time.perf_counter()
+        for _ in range(inner):
+            fn()
+        ts.append((time.perf_counter() - t0) / inner)
+    return sorted(ts)[len(ts) // 2]
+
+
+def paired(fa: Callable[[], Any], fb: Callable[[], Any], reps: int = 7) -> tuple[float, float, float]:
+    """Times of ``fa`` and ``fb`` measured turn about (median of each) and the median of the
+    per-turn ratio fa/fb: on a shared machine the load drifts less within one turn."""
+    ta, tb, ratios = [], [], []
+    fa()
+    fb()
+    for _ in range(reps):
+        a = median_time(fa, reps=3, least=1e-3)
+        b = median_time(fb, reps=3, least=1e-3)
+        ta.append(a)
+        tb.append(b)
+        ratios.append(a / b)
+    mid = reps // 2
+    return sorted(ta)[mid], sorted(tb)[mid], sorted(ratios)[mid]
+
+
+def mechanisms(samples: Path) -> list[tuple[str, Scene]]:
+    """The slider-crank and the four-bar of the reference, and the V-engine sample."""
+    from plans.accuracy import reference
+
+    out = [("slider-crank (offset)", reference.slider_crank_scene(r=0.05, l=0.2, e=0.015, omega=2 * math.pi * 25)),
+           ("four-bar", reference.four_bar_scene(a=0.05, b=0.2, c=0.15, d=0.18, omega=2 * math.pi * 25))]
+    v = samples / "v_engine.toml"
+    if v.exists():
+        out.append(("v_engine", load_scene(v)))
+    return out
+
+
+def _us(t: float) -> str:
+    return f"{t * 1e6:.1f} µs" if t < 1e-3 else f"{t * 1e3:.2f} ms" if t < 1 else f"{t:.2f} s"
+
+
+def kinematics_goals(cases: list[tuple[str, Scene]], peer_runs: list[peers.PeerRun]) -> list[Goal]:
+    out: list[Goal] = []
+    phis = np.linspace(0.0, 360.0, 360, endpoint=False) + 7.5
+    by = {(r.peer, r.mechanism): r for r in peer_runs}
+    skipped = [r.note for r in peer_runs if r.peer == "pylinkage" and r.mechanism == "-"]
+    for name, sc in cases:
+        fl = floor.floor_for(sc)
+
+        def ours(sc: Scene = sc) -> Any:
+            return exact.solve(sc, phis, order=2)
+        t_ours = median_time(ours)
+        if fl is not None:
+            t_ours, t_floor, r = paired(ours, functools.partial(fl, phis))
+            out.append(Goal(f"exact kinematics, 360 positions, {name}: within {FLOOR_RATIO}× of the numpy floor",
+                            f"{_us(t_ours / 360)} per position, floor {_us(t_floor / 360)}, {r:.2f}×",
+                            r / FLOOR_RATIO, r <= FLOOR_RATIO))
+        pr = by.get(("pylinkage + numba", name))
+        if pr is not None and math.isfinite(pr.time_per_position):
+            if pr.runner is not None:
+                t_peer, t_ours, _ = paired(pr.runner, ours)
+                pr.time_per_position = t_peer / 360
+            speed = pr.time_per_position / (t_ours / 360)
+            out.append(Goal(f"exact kinematics, 360 positions, {name}: ≥ {PEER_SPEEDUP:g}× ahead of pylinkage + numba",
+                            f"pylinkage + numba {_us(pr.time_per_position)} per position, ours {_us(t_ours / 360)}: "
+                            f"{speed:.2f}× ahead", PEER_SPEEDUP / speed, speed >= PEER_SPEEDUP))
+            e = pr.errors.get("r", math.nan)
+            out.append(Goal(f"positions, {name}: agree with pylinkage to {POSITIONS_AGREE:g}",
+                            f"largest difference {e:.2g} of the crank (v {pr.errors.get('v', math.nan):.2g}, "
+                            f"a {pr.errors.get('a', math.nan):.2g})", e / POSITIONS_AGREE, e <= POSITIONS_AGREE))
+        else:
+            why = pr.note if pr is not None else (skipped[0] if skipped else "skipped: no run")
+            out.append(Goal(f"exact kinematics, 360 positions, {name}: ≥ {PEER_SPEEDUP:g}× ahead of pylinkage + numba",
+                            why, math.nan, None))
+        bound = ONE_POSITION.get(name)
+        t1 = median_time(functools.partial(exact.solve, sc, [45.0], order=2))
+        step = by.get(("pylinkage step", name))
+        extra = ""
+        ahead = True
+        if step is not None and math.isfinite(step.time_per_position):
+            extra = f"; pylinkage's step {_us(step.time_per_position)} (positions only)"
+            ahead = t1 <= step.time_per_position
+        if bound is not None:
+            out.append(Goal(f"one position, {name}: ≤ {_us(bound)} and ahead of pylinkage's step",
+                            f"{_us(t1)} (positions, v, a){extra}", t1 / bound, t1 <= bound and ahead))
+    return out
+
+
+def structure_goal() -> list[Goal]:
+    """A chain of 200 dyads at one position, structure analysis included (a fresh scene each
+    time), and the cost per dyad at 100 and 200 (linear: the same)."""
+    from plans.accuracy.oracles import chain_scene
+
+    def once(n: int) -> float:
+        scenes = [chain_scene(n) for _ in range(5)]
+        ts = []
+        for sc in scenes:
+            t0 = time.perf_counter()
+            analyse(sc)
+            exact.solve(sc, [45.0], order=2)
+            ts.append(time.perf_counter() - t0)
+        return sorted(ts)[len(ts) // 2]
+
+    t100, t200 = once(CHAIN_DYADS // 2), once(CHAIN_DYADS)
+    growth = t200 / t100
+    return [Goal(f"chain of {CHAIN_DYADS} dyads, one position, structure analysis included: ≤ {_us(CHAIN_ONE_POSITION)}",
+                 f"{_us(t200)}; {_us(t200 / CHAIN_DYADS)} per dyad (×{growth:.2f} from {CHAIN_DYADS // 2} to "
+                 f"{CHAIN_DYADS} dyads: linear is ×2)", t200 / CHAIN_ONE_POSITION, t200 <= CHAIN_ONE_POSITION)]
+
+
+def forces_goal(cases: list[tuple[str, Scene]]) -> list[Goal]:
+    from plans.forces import analysis as polygons
+    from plans.forces.loads import parse_loads
+
+    out = []
+    phis = np.linspace(0.0, 360.0, 360, endpoint=False) + 7.5
+    for name, sc in cases:
+        if not (sc.wants("force_polygons") or sc.wants("lever")):
+            continue
+        # a fresh analysis each time (points read once are kept by it): forces = both − solve
+        def both_fn(sc: Scene = sc) -> Any:
+            return polygons.kinetostatics(sc, exact.solve(sc, phis, order=2))
+        both, alone, _ = paired(both_fn, functools.partial(exact.solve, sc, phis, order=2))
+        t = max(both - alone, 0.0)
+        tl = median_time(functools.partial(parse_loads, sc))
+        out.append(Goal(f"forces and lever, 360 positions, {name}: ≤ {_us(FORCES_360)}",
+                        f"{_us(t)} (loads read in {_us(tl)})", t / FORCES_360, t <= FORCES_360))
+    return out
+
+
+def start_up_goals(samples: Path) -> list[Goal]:
+    """``plans --help`` and ``plans solve`` in a fresh interpreter (the interpreter's own
+    start included), median of 3."""
+    root = Path(__file__).resolve().parents[2]
+    out = []
+    for what, args in (("plans --help", ["--help"]),
+                       ("plans solve", ["solve", str(samples / "four_bar.toml"), "--quiet"])):
+        ts = []
+        for _ in range(3):
+            t0 = time.perf_counter()
+            p = subprocess.run([sys.executable, "-m", "plans", *args], cwd=root, capture_output=True)
+            ts.append(time.perf_counter() - t0)
+        if p.returncode != 0:
+            out.append(Goal(f"{what} starts in ≤ {START_UP:g} s", f"skipped: exit status {p.returncode}",
+                            math.nan, None))
+            continue
+        t = sorted(ts)[len(ts) // 2]
+        out.append(Goal(f"{what} starts in ≤ {START_UP:g} s", f"{t:.3f} s", t / START_UP, t <= START_UP))
+    return out
+
+
+def measure(samples: Path, log: Callable[[str], None] | None = None, with_peers: bool = True) -> dict[str, Any]:
+    """Every goal, and the peers' runs behind them (JSON-ready)."""
+    log = log or (lambda s: None)
+    cases = mechanisms(samples)
+    runs = peers.run_peers(cases, log=log) if with_peers else []
+    log("goals: kinematics ...")
+    goals = kinematics_goals(cases, runs)
+    log("goals: structure, forces, start-up ...")
+    goals += structure_goal()
+    goals += forces_goal(cases)
+    goals += start_up_goals(samples)
+    return {"goals": [asdict(g) for g in goals],
+            "peers": [{k: v for k, v in asdict(r).items() if k != "runner"} for r in runs]}
+
+
+def lines(result: dict[str, Any]) -> list[str]:
+    return [Goal(**g).line() for g in result.get("goals", [])]
+
+
+def markdown(result: dict[str, Any]) -> str:
+    """The goals and the peers' runs as Markdown tables."""
+    out = ["| goal | measured | ratio | met |", "|---|---|---:|---|"]
+    for g in result.get("goals", []):
+        state = "yes" if g["met"] else "skipped" if g["met"] is None else "no"
+        r = "" if g["ratio"] is None or math.isnan(g["ratio"]) else f"{g['ratio']:.2f}"
+        out.append(f"| {g['goal']} | {g['measured']} | {r} | {state} |")
+    runs = result.get("peers", [])
+    if runs:
+        out += ["", "| peer | mechanism | positions | per position | r | v | a | note |",
+                "|---|---|---:|---:|---:|---:|---:|---|"]
+        for r in runs:
+            e = r.get("errors") or {}
+            tp = r["time_per_position"]
+            out.append(f"| {r['peer']} | {r['mechanism']} | {r['positions']} | "
+                       f"{'' if tp is None or math.isnan(tp) else _us(tp)} | "
+                       + " | ".join(f"{e[k]:.2g}" if k in e else "" for k in ("r", "v", "a"))
+                       + f" | {r['note']} |")
+    return "\n".join(out)
+
+
+# --------------------------------------------------------------------------- docs/accuracy.md
+
+_BEGIN, _END = "<!-- from plans bench: begin -->", "<!-- from plans bench: end -->"
+
+
+def results_table(result: dict[str, Any]) -> str:
+    """The accuracy table of docs/accuracy.md from a run's records (1 and 360 positions)."""
+    recs = result["records"]
+
+    def get(method: str, scene: str, n: int, param: str = "") -> dict | None:
+        return next((r for r in recs if r["method"] == method and r["scene"] == scene and r["positions"] == n
+                     and (not param or r.get("param") == param)), None)
+
+    def fmt(x: float | None, unit: bool = False) -> str:
+        if x is None or not math.isfinite(x):
+            return "–"
+        return _us(x) if unit else f"{x:.2g}"
+
+    rows = ["| method | mechanism | positions | error | time per position |", "|---|---|---:|---:|---:|"]
+    for scene, label in (("slider-crank (offset)", "slider-crank"), ("four-bar", "four-bar")):
+        for method, name, param in (("exact", "exact (closed form)", ""), ("construction", "construction", ""),
+                                    ("newton", "Newton–Raphson, tol 1e-12", "")):
+            a, b = get(method, scene, 1, param), get(method, scene, 360, param)
+            if a and b:
+                rows.append(f"| {name} | {label} | 1 / 360 | {fmt(a['error'])} / {fmt(b['error'])} | "
+                            f"{fmt(a['time_per_position'], True)} / {fmt(b['time_per_position'], True)} |")
+        fd = get("finite differences", scene, 360, "h=1e-02 deg")
+        if fd:
+            rows.append(f"| finite differences, h = 0.01° | {label} | 360 | {fmt(fd['error'])} | "
+                        f"{fmt(fd['time_per_position'], True)} |")
+    for sheet in ("A1", "A4"):
+        d = get(f"draftsman {sheet}", "slider-crank (offset)", 1)
+        if d:
+            rows.append(f"| hand drawing, {sheet} (95 % of drawings) | slider-crank | – | {fmt(d['error'])} | – |")
+    return "\n".join(rows)
+
+
+def update_doc(result: dict[str, Any], path: Path) -> None:
+    """Rewrite the part of ``path`` between the bench markers from ``result``."""
+    from plans.io import atomic_write
+
+    text = path.read_text(encoding="utf-8")
+    m = result.get("meta", {})
+    body = "\n".join([
+        _BEGIN, "",
+        f"`plans bench{' --quick' if m.get('quick') else ''}`, Python {m.get('python')}, numpy {m.get('numpy')}, "
+        f"{m.get('machine')}, OPENBLAS_NUM_THREADS={m.get('OPENBLAS_NUM_THREADS') or 'unset'} "
+        "(a shared machine: times drift, the ratios are measured side by side).", "",
+        results_table(result), "",
+        "### Performance goals", "",
+        "Each goal measured in the same run as what it is compared to; ratio: measured over the "
+        "goal's bound (met when at most 1).", "",
+        markdown(result.get("performance", {})), "", _END])
+    if _BEGIN in text and _END in text:
+        head, rest = text.split(_BEGIN, 1)
+        text = head + body + rest.split(_END, 1)[1]
+    else:
+        text = text.rstrip("\n") + "\n\n" + body + "\n"
+    atomic_write(path, text)
+
+
+if __name__ == "__main__":  # pragma: no cover - python -m plans.accuracy.speed bench.json docs/accuracy.md
+    import json
+
+    update_doc(json.loads(Path(sys.argv[1]).read_text(encoding="utf-8")), Path(sys.argv[2]))

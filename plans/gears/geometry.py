@@ -1,0 +1,195 @@
+"""One pair of involute spur gears, external or internal, with profile shifts (course §4).
+
+External pair (1, 2)::
+
+    inv α_w = inv α + 2 tan α (x1 + x2)/(z1 + z2),   a = m (z1 + z2)/2,
+    a_w = a cos α / cos α_w,   y = (a_w − a)/m,   Δy = x1 + x2 − y,
+    r = m z/2,  r_b = r cos α,  r_a = r + (h_a* + x − Δy) m,  r_f = r − (h_a* + c* − x) m.
+
+Internal pair (pinion 1, ring 2): the sums become differences (x2 − x1, z2 − z1), the ring's
+tip circle is inside, r_a2 = r2 − (h_a* − x2) m, r_f2 = r2 + (h_a* + c* + x2) m, and no tip
+is shortened (the clearances of an internal pair grow by Δy m instead of shrinking).
+
+The line of action is measured from N1, where it touches the base circle of gear 1: the
+active part B1B2 runs from B1, where gear 2's tip circle cuts it, to B2, where gear 1's does;
+ε = B1B2 / p_b with p_b = π m cos α (the course's ε = Σ ±z (tan α_a − tan α_w)/2π is the
+same number, used as an oracle in the tests).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from plans.errors import InputError
+
+from .involute import inv, inv_inverse, thickness_at
+
+#: the checks a course makes on a pair
+MIN_CONTACT_RATIO = 1.2
+MIN_TIP_THICKNESS = 0.25  # × m, the least accepted
+GOOD_TIP_THICKNESS = 0.4  # × m, the usual requirement
+
+
+@dataclass(frozen=True)
+class Wheel:
+    """One gear as it is cut and assembled in a pair (metres, radians)."""
+
+    name: str
+    z: int
+    x: float
+    internal: bool
+    pitch: float  # r
+    base: float  # r_b
+    tip: float  # r_a
+    root: float  # r_f
+    working: float  # r_w
+    tip_angle: float  # α_a
+    thickness: float  # s, on the reference circle
+    tip_thickness: float  # s_a
+    limit: float  # ρ_l: radius of curvature where the generated involute starts (< 0: undercut)
+
+
+@dataclass(frozen=True)
+class Pair:
+    """Everything a course computes for one meshing pair (metres, radians)."""
+
+    gears: tuple[str, str]
+    internal: bool
+    m: float
+    alpha: float
+    alpha_w: float
+    a: float
+    a_w: float
+    y: float
+    delta_y: float
+    backlash: float  # circumferential, on the working circles (0 unless a_w is given larger)
+    wheels: tuple[Wheel, Wheel]
+    g: float  # N1N2
+    rho_start: float  # distance N1 -> B1, where gear 2's tip circle cuts N1N2
+    rho_end: float  # distance N1 -> B2, where gear 1's tip circle cuts N1N2
+    p_b: float
+    contact_ratio: float
+    sliding: tuple[float, float]  # greatest specific sliding on gear 1 and on gear 2
+
+    @property
+    def rho_p(self) -> float:
+        """Distance N1 -> P."""
+        return self.wheels[0].base * math.tan(self.alpha_w)
+
+    def checks(self) -> dict[str, bool]:
+        m = self.m
+        out = {"contact_ratio": self.contact_ratio >= MIN_CONTACT_RATIO}
+        for w in self.wheels:
+            out[f"no_undercut_{w.name}"] = w.internal or w.limit >= -1e-12 * m
+            out[f"tip_thickness_{w.name}"] = w.tip_thickness >= GOOD_TIP_THICKNESS * m - 1e-12 * m
+        w1, w2 = self.wheels
+        rho2_start = self.rho_start + self.g if self.internal else self.g - self.rho_end
+        # no interference: each flank is met only where it is an involute
+        ok1 = self.rho_start >= max(0.0, w1.limit) - 1e-12 * m
+        ok2 = True if w2.internal else rho2_start >= max(0.0, w2.limit) - 1e-12 * m
+        out["no_interference"] = ok1 and ok2
+        return out
+
+
+def centre(z1: int, z2: int, x1: float, x2: float, m: float, alpha: float, internal: bool,
+           a_w_given: float | None, where: str, file: str | None) -> tuple[float, float, float, float]:
+    """(α_w, a, a_w, backlash) of a pair; with a_w given, the pair is assembled there."""
+    S, Z = (x2 - x1, z2 - z1) if internal else (x1 + x2, z1 + z2)
+    if Z <= 0:
+        raise InputError(f"the ring gear needs more teeth than the pinion (z = {z2} vs {z1})",
+                         file=file, field=where)
+    a = m * Z / 2.0
+    if a_w_given is None:
+        v = inv(alpha) + 2.0 * math.tan(alpha) * S / Z
+        if v <= 0.0:
+            raise InputError(f"shifts with sum {S:.5g} leave no working pressure angle "
+                             f"(inv α_w = {v:.3g} <= 0)", file=file, field=where)
+        alpha_w = inv_inverse(v, field=where, file=file)
+        return alpha_w, a, a * math.cos(alpha) / math.cos(alpha_w), 0.0
+    c = a * math.cos(alpha) / a_w_given
+    if not 0.0 < c < 1.0:
+        raise InputError(f"impossible centre distance {a_w_given * 1e3:.6g} mm: the base circles "
+                         f"need more than {a * math.cos(alpha) * 1e3:.6g} mm", file=file, field=where)
+    alpha_w = math.acos(c)
+    S0 = (inv(alpha_w) - inv(alpha)) * Z / (2.0 * math.tan(alpha))
+    if S > S0 + 1e-9:
+        need = centre(z1, z2, x1, x2, m, alpha, internal, None, where, file)[2]
+        raise InputError(f"impossible centre distance {a_w_given * 1e3:.6g} mm for these shifts: the "
+                         f"teeth would jam; they mesh without backlash at {need * 1e3:.6g} mm",
+                         file=file, field=where)
+    backlash = 2.0 * m * math.tan(alpha) * (S0 - S) * math.cos(alpha) / math.cos(alpha_w)
+    return alpha_w, a, a_w_given, max(0.0, backlash)
+
+
+def sum_for_centre(z1: int, z2: int, m: float, alpha: float, internal: bool, a_w: float) -> float:
+    """Σx (x1 + x2, or x2 − x1 for an internal pair) that meshes without backlash at a_w."""
+    Z = z2 - z1 if internal else z1 + z2
+    c = m * Z / 2.0 * math.cos(alpha) / a_w
+    if not 0.0 < c < 1.0:
+        return math.nan
+    return (inv(math.acos(c)) - inv(alpha)) * Z / (2.0 * math.tan(alpha))
+
+
+def wheel(name: str, z: int, x: float, internal: bool, m: float, alpha: float, ha: float, c: float,
+          alpha_w: float, dy_tip: float, where: str, file: str | None) -> Wheel:
+    r = m * z / 2.0
+    rb = r * math.cos(alpha)
+    if internal:
+        ra, rf = r - (ha - x) * m, r + (ha + c + x) * m
+        s = m * (math.pi / 2.0 - 2.0 * x * math.tan(alpha))
+    else:
+        ra, rf = r + (ha + x - dy_tip) * m, r - (ha + c - x) * m
+        s = m * (math.pi / 2.0 + 2.0 * x * math.tan(alpha))
+    if rf <= 0.0:
+        raise InputError(f"gear {name}: z = {z}, x = {x:.5g} leave no root circle (r_f = {rf * 1e3:.4g} mm)",
+                         file=file, field=where)
+    if ra <= rb * (1.0 + 1e-12):
+        raise InputError(f"gear {name}: the tip circle (r_a = {ra * 1e3:.5g} mm) is inside the base "
+                         f"circle (r_b = {rb * 1e3:.5g} mm); expected more teeth", file=file, field=where)
+    aa = math.acos(rb / ra)
+    if internal:
+        sa = 2.0 * ra * (s / (2.0 * r) - inv(alpha) + inv(aa))
+        limit = math.inf
+    else:
+        sa = thickness_at(ra, s, r, alpha, rb)
+        limit = r * math.sin(alpha) - (ha - x) * m / math.sin(alpha)
+    if sa <= 0.0:
+        raise InputError(f"gear {name}: x = {x:.5g} gives a pointed tooth (tip thickness "
+                         f"{sa * 1e3:.4g} mm); expected a smaller shift", file=file, field=where)
+    rw = rb / math.cos(alpha_w)
+    return Wheel(name, z, x, internal, r, rb, ra, rf, rw, aa, s, sa, limit)
+
+
+def pair(names: tuple[str, str], z: tuple[int, int], x: tuple[float, float], internal: bool, m: float,
+         alpha: float, ha: float, c: float, dy_tips: tuple[float, float], a_w_given: float | None = None,
+         where: str = "meshes", file: str | None = None) -> Pair:
+    """The pair (gear 2 is the ring when ``internal``); ``dy_tips``: the Δy each tip is
+    shortened by (the course takes the largest Δy of a gear's meshes)."""
+    alpha_w, a, a_w, backlash = centre(z[0], z[1], x[0], x[1], m, alpha, internal, a_w_given, where, file)
+    y = (a_w - a) / m
+    S = x[1] - x[0] if internal else x[0] + x[1]
+    dy = S - y
+    if abs(dy) < 1e-12:
+        dy = 0.0
+    w1 = wheel(names[0], z[0], x[0], False, m, alpha, ha, c, alpha_w, dy_tips[0], where, file)
+    w2 = wheel(names[1], z[1], x[1], internal, m, alpha, ha, c, alpha_w, dy_tips[1], where, file)
+    g = a_w * math.sin(alpha_w)
+    rho_a1 = math.sqrt(w1.tip**2 - w1.base**2)
+    rho_a2 = math.sqrt(w2.tip**2 - w2.base**2)
+    start = rho_a2 - g if internal else g - rho_a2
+    end = rho_a1
+    p_b = math.pi * m * math.cos(alpha)
+    if end - start <= 0.0:
+        raise InputError(f"gears {names[0]} and {names[1]}: the tip circles do not overlap on the line "
+                         "of action; the pair cannot transmit motion", file=file, field=where)
+    eps = (end - start) / p_b
+    u = z[1] / z[0]
+
+    def rho2(r1: float) -> float:
+        return r1 + g if internal else g - r1
+
+    s1 = abs(1.0 - rho2(start) / (u * start)) if start > 0 else math.inf
+    s2 = abs(1.0 - u * end / rho2(end)) if rho2(end) > 0 else math.inf
+    return Pair(names, internal, m, alpha, alpha_w, a, a_w, y, dy, backlash, (w1, w2), g, start, end,
+                p_b, eps, (s1, s2))

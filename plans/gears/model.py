@@ -1,0 +1,305 @@
+"""The gear file: TOML, ``format = 1``, ``kind = "gears"``.
+
+::
+
+    format = 1
+    kind = "gears"
+    unit = "mm"              # lengths in the file (module, centre distances) and in the JSON
+    module = 4               # m, every gear unless it says otherwise
+    pressure_angle_deg = 20  # α of the generating rack
+    addendum = 1.0           # h_a*
+    clearance = 0.25         # c*
+    shift_rule = "minimum"   # how x = "auto" is chosen: "minimum" (x = h_a*(z_min − z)/z_min,
+                             # z_min rounded as the course tabulates it), "no_undercut" (the exact
+                             # x = h_a* − z sin²α/2), "equal_sliding" (a pair of "auto" gears:
+                             # equal greatest specific sliding, each above its undercut limit)
+    [[gears]]
+    name = "1"
+    z = 26
+    x = 0                    # or "auto"
+    internal = false         # true: a ring gear (internal teeth)
+    shaft = "1"              # gears on one shaft turn as one (default: the gear's own name)
+    [[meshes]]
+    gears = ["1", "2"]
+    centre_distance = 80.7   # optional: the pair assembled at this a_w (else a_w follows the shifts)
+    draw = true              # the pair drawn on the meshing sheet (default: the first external)
+    [[shafts]]               # only shafts that need saying: speeds, carriers
+    name = "1"
+    speed_rpm = 650          # given speed (0: held); a differential needs two
+    carrier = "H"            # this shaft's axis rides on the carrier H (a planet)
+    [synthesis]              # numbers of teeth of a 2K-H train (sun 1, planets 2, ring 3, carrier H)
+    ratio = 4.5              # i_1H with the ring held
+    planets = 3              # k (or a list to try, e.g. [3, 4])
+    tolerance = 0.02         # accepted relative error of the ratio
+    z_min = 17               # fewest teeth on any wheel
+    [sheet]                  # the drawing's title block and format, as for every sheet
+
+Every length inside the engine is in metres; the file's ``unit`` comes back at the JSON.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from plans.errors import InputError
+from plans.io import read_toml
+from plans.units import LENGTH_UNITS
+
+SHIFT_RULES = ("minimum", "no_undercut", "equal_sliding")
+
+_TOP_KEYS = ("format", "kind", "unit", "title", "module", "pressure_angle_deg", "addendum",
+             "clearance", "shift_rule", "gears", "meshes", "shafts", "synthesis", "sheet")
+_GEAR_KEYS = ("name", "z", "x", "internal", "shaft", "module")
+_MESH_KEYS = ("gears", "centre_distance", "draw")
+_SHAFT_KEYS = ("name", "speed_rpm", "carrier")
+_SYNTH_KEYS = ("ratio", "planets", "tolerance", "z_min")
+
+
+def check_keys(table: dict[str, Any], allowed: tuple[str, ...], where: str, path: str) -> None:
+    """An unknown key is one line naming it (and the nearest known key, when one is close)."""
+    import difflib
+
+    for key in table:
+        if key not in allowed:
+            near = difflib.get_close_matches(str(key), allowed, n=1)
+            hint = f"; did you mean {near[0]!r}?" if near else f"; expected one of {', '.join(allowed)}"
+            raise InputError(f"unknown key{hint}", file=path, field=f"{where}{key}")
+
+
+@dataclass(frozen=True)
+class Gear:
+    name: str
+    z: int
+    x: float | None  # None: chosen by the file's shift rule
+    internal: bool
+    shaft: str
+    module: float  # m, metres
+
+
+@dataclass(frozen=True)
+class Mesh:
+    gears: tuple[str, str]
+    centre_distance: float | None  # a_w given, metres
+    draw: bool
+
+
+@dataclass(frozen=True)
+class Shaft:
+    name: str
+    speed_rpm: float | None
+    carrier: str | None
+
+
+@dataclass(frozen=True)
+class SynthesisSpec:
+    ratio: float
+    planets: tuple[int, ...]
+    tolerance: float
+    z_min: int
+
+
+@dataclass(frozen=True)
+class GearFile:
+    path: str
+    title: str
+    unit: str
+    alpha: float  # radians
+    ha: float
+    c: float
+    shift_rule: str
+    gears: dict[str, Gear]
+    meshes: tuple[Mesh, ...]
+    shafts: dict[str, Shaft]
+    synthesis: SynthesisSpec | None
+    raw: dict[str, Any] = field(repr=False, default_factory=dict)
+
+    @property
+    def to_unit(self) -> float:
+        """Metres -> the file's unit."""
+        return 1.0 / LENGTH_UNITS[self.unit]
+
+
+def _num(v: Any, path: str, field_: str, what: str, lo: float | None = None,
+         hi: float | None = None, strict: bool = True) -> float:
+    if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
+        raise InputError(f"expected {what}, got {v!r}", file=path, field=field_)
+    f = float(v)
+    if lo is not None and (f <= lo if strict else f < lo):
+        raise InputError(f"expected {what}, got {v!r}", file=path, field=field_)
+    if hi is not None and f >= hi:
+        raise InputError(f"expected {what}, got {v!r}", file=path, field=field_)
+    return f
+
+
+def _name(v: Any, path: str, field_: str) -> str:
+    if isinstance(v, bool) or not isinstance(v, str | int) or str(v) == "":
+        raise InputError(f"expected a name (a string such as \"1\"), got {v!r}", file=path, field=field_)
+    return str(v)
+
+
+def _tables(data: dict[str, Any], key: str, path: str) -> list[dict[str, Any]]:
+    v = data.get(key, [])
+    if not isinstance(v, list) or not all(isinstance(t, dict) for t in v):
+        raise InputError(f"expected an array of tables [[{key}]]", file=path, field=key)
+    return v
+
+
+def load_gears(path: str | Path) -> GearFile:
+    """Read and validate a gear file (one-line InputError naming the field on any problem)."""
+    return parse_gears(read_toml(path), str(path))
+
+
+def parse_gears(data: dict[str, Any], path: str) -> GearFile:
+    from plans.kinds import command_for, kind_of
+
+    kind = kind_of(data, path)
+    if kind != "gears":
+        raise InputError(f"this is a {kind!r} file, not a gear file; {command_for(kind)}expected "
+                         "kind = \"gears\"", file=path, field="kind")
+    if data.get("format") != 1:
+        raise InputError(f"expected format = 1, got {data.get('format')!r}", file=path, field="format")
+    check_keys(data, _TOP_KEYS, "", path)
+    unit = data.get("unit", "mm")
+    if unit not in LENGTH_UNITS:
+        raise InputError(f"expected one of {', '.join(LENGTH_UNITS)}, got {unit!r}", file=path, field="unit")
+    k = LENGTH_UNITS[unit]
+    if "module" not in data:
+        raise InputError("missing; expected the module m in the file's unit, e.g. module = 4",
+                         file=path, field="module")
+    m = _num(data["module"], path, "module", "a module m > 0", lo=0.0) * k
+    alpha_deg = _num(data.get("pressure_angle_deg", 20), path, "pressure_angle_deg",
+                     "a pressure angle between 0 and 45 degrees", lo=0.0, hi=45.0)
+    ha = _num(data.get("addendum", 1.0), path, "addendum", "h_a* > 0", lo=0.0)
+    c = _num(data.get("clearance", 0.25), path, "clearance", "c* >= 0", lo=0.0, strict=False)
+    rule = data.get("shift_rule", "minimum")
+    if rule not in SHIFT_RULES:
+        raise InputError(f"expected one of {', '.join(repr(r) for r in SHIFT_RULES)}, got {rule!r}",
+                         file=path, field="shift_rule")
+    title = data.get("title", "")
+    if not isinstance(title, str):
+        raise InputError("expected a string", file=path, field="title")
+    gears = _gears(data, path, m, k)
+    if not gears:
+        raise InputError("expected at least one [[gears]] table", file=path, field="gears")
+    meshes = _meshes(data, path, gears, k)
+    shafts = {g.shaft: Shaft(g.shaft, None, None) for g in gears.values()}
+    given: set[str] = set()
+    for i, t in enumerate(_tables(data, "shafts", path)):
+        f = f"shafts[{i}]."
+        check_keys(t, _SHAFT_KEYS, f, path)
+        if "name" not in t:
+            raise InputError("missing; expected a shaft name", file=path, field=f + "name")
+        name = _name(t["name"], path, f + "name")
+        if name in given:
+            raise InputError(f"shaft {name!r} described twice", file=path, field=f + "name")
+        given.add(name)
+        sp = t.get("speed_rpm")
+        spv = None if sp is None else _num(sp, path, f + "speed_rpm", "a speed in rpm")
+        car = None if t.get("carrier") is None else _name(t["carrier"], path, f + "carrier")
+        shafts[name] = Shaft(name, spv, car)
+    for s in list(shafts.values()):
+        if s.carrier is not None:
+            if s.carrier == s.name:
+                raise InputError(f"shaft {s.name!r} cannot carry itself", file=path, field="shafts")
+            if s.carrier not in shafts:
+                shafts[s.carrier] = Shaft(s.carrier, None, None)
+            if shafts[s.carrier].carrier is not None:
+                raise InputError(f"carrier {s.carrier!r} rides on another carrier; expected a carrier "
+                                 "on a fixed axis", file=path, field="shafts")
+    synth = _synthesis(data.get("synthesis"), path)
+    if not meshes and synth is None:
+        raise InputError("expected at least one [[meshes]] table (or a [synthesis] request)", file=path,
+                         field="meshes")
+    return GearFile(path, title, unit, math.radians(alpha_deg), ha, c, rule, gears, tuple(meshes),
+                    shafts, synth, data)
+
+
+def _synthesis(t: Any, path: str) -> SynthesisSpec | None:
+    if t is None:
+        return None
+    if not isinstance(t, dict):
+        raise InputError("expected a table [synthesis]", file=path, field="synthesis")
+    check_keys(t, _SYNTH_KEYS, "synthesis.", path)
+    if "ratio" not in t:
+        raise InputError("missing; expected the ratio i_1H, e.g. ratio = 4.5", file=path,
+                         field="synthesis.ratio")
+    ratio = _num(t["ratio"], path, "synthesis.ratio", "a ratio i_1H > 2 (sun to carrier, ring held)",
+                 lo=2.0)
+    k = t.get("planets", [3, 4, 5, 6])
+    ks = k if isinstance(k, list) else [k]
+    if not ks or not all(isinstance(v, int) and not isinstance(v, bool) and 2 <= v <= 12 for v in ks):
+        raise InputError("expected a number of planets 2..12 (or a list of them)", file=path,
+                         field="synthesis.planets")
+    tol = _num(t.get("tolerance", 0.02), path, "synthesis.tolerance", "a relative tolerance in (0, 0.5)",
+               lo=0.0, hi=0.5)
+    zmin = t.get("z_min", 17)
+    if isinstance(zmin, bool) or not isinstance(zmin, int) or zmin < 4:
+        raise InputError("expected a whole number >= 4", file=path, field="synthesis.z_min")
+    return SynthesisSpec(ratio, tuple(ks), tol, zmin)
+
+
+def _gears(data: dict[str, Any], path: str, m: float, k: float) -> dict[str, Gear]:
+    gears: dict[str, Gear] = {}
+    for i, g in enumerate(_tables(data, "gears", path)):
+        f = f"gears[{i}]."
+        check_keys(g, _GEAR_KEYS, f, path)
+        if "name" not in g:
+            raise InputError("missing; expected a name such as \"1\"", file=path, field=f + "name")
+        name = _name(g["name"], path, f + "name")
+        if name in gears:
+            raise InputError(f"gear {name!r} named twice", file=path, field=f + "name")
+        z = g.get("z")
+        if isinstance(z, bool) or not isinstance(z, int) or z < 1:
+            raise InputError(f"expected a whole number of teeth z >= 1, got {z!r}", file=path, field=f + "z")
+        xv = g.get("x", 0)
+        x: float | None
+        if xv == "auto":
+            x = None
+        else:
+            if isinstance(xv, bool) or not isinstance(xv, int | float) or not math.isfinite(xv) or abs(xv) > 5:
+                raise InputError(f"expected a shift coefficient (a number, |x| <= 5) or \"auto\", got {xv!r}",
+                                 file=path, field=f + "x")
+            x = float(xv)
+        internal = g.get("internal", False)
+        if not isinstance(internal, bool):
+            raise InputError("expected true or false", file=path, field=f + "internal")
+        shaft = _name(g.get("shaft", name), path, f + "shaft")
+        gm = _num(g["module"], path, f + "module", "a module m > 0", lo=0.0) * k if "module" in g else m
+        gears[name] = Gear(name, z, x, internal, shaft, gm)
+    return gears
+
+
+def _meshes(data: dict[str, Any], path: str, gears: dict[str, Gear], k: float) -> list[Mesh]:
+    meshes = []
+    seen: set[frozenset[str]] = set()
+    for i, t in enumerate(_tables(data, "meshes", path)):
+        f = f"meshes[{i}]."
+        check_keys(t, _MESH_KEYS, f, path)
+        pair = t.get("gears")
+        if not isinstance(pair, list) or len(pair) != 2:
+            raise InputError("expected two gear names, e.g. gears = [\"1\", \"2\"]", file=path, field=f + "gears")
+        a, b = (_name(v, path, f + "gears") for v in pair)
+        for n in (a, b):
+            if n not in gears:
+                raise InputError(f"no gear named {n!r}; expected one of {', '.join(gears)}", file=path,
+                                 field=f + "gears")
+        if a == b or frozenset((a, b)) in seen:
+            raise InputError(f"the pair {a}-{b} is not a new pair of two gears", file=path, field=f + "gears")
+        seen.add(frozenset((a, b)))
+        ga, gb = gears[a], gears[b]
+        if ga.internal and gb.internal:
+            raise InputError(f"two internal gears {a} and {b} cannot mesh", file=path, field=f + "gears")
+        if abs(ga.module - gb.module) > 1e-12 * ga.module:
+            raise InputError(f"gears {a} and {b} have different modules", file=path, field=f + "gears")
+        if ga.shaft == gb.shaft:
+            raise InputError(f"gears {a} and {b} are on one shaft and cannot mesh", file=path, field=f + "gears")
+        aw = t.get("centre_distance")
+        awv = None if aw is None else _num(aw, path, f + "centre_distance", "a centre distance > 0", lo=0.0) * k
+        draw = t.get("draw", False)
+        if not isinstance(draw, bool):
+            raise InputError("expected true or false", file=path, field=f + "draw")
+        meshes.append(Mesh((a, b), awv, draw))
+    return meshes

@@ -1,0 +1,147 @@
+"""The fast paths change no reading: one position in Python numbers equals the same position
+solved with numpy among many; the linear structure analysis finds the groups the plain
+search finds; the hand-written floor and the peers agree with the exact analysis."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from plans.accuracy import floor, peers, reference
+from plans.accuracy.oracles import chain_scene
+from plans.errors import ConstructionError
+from plans.kinematics import exact
+from plans.kinematics.structure import _orient, analyse
+from plans.scene.model import load_scene
+
+SAMPLES = sorted((Path(__file__).resolve().parent.parent / "samples").glob("*.toml"))
+FIELDS = ("rot", "r0", "omega", "v0", "eps", "a0")
+
+
+def _scenes():
+    out = [(p.stem, load_scene(p)) for p in SAMPLES]
+    out.append(("chain of 7", chain_scene(7)))
+    out.append(("slider-crank, pivot off the crank's origin",
+                reference.slider_crank_scene(0.05, 0.2, 0.015, -80.0, eps=30.0)))
+    return out
+
+
+def _scale(sc, f):
+    w = abs(sc.driver.omega) or 1.0
+    return {"rot": 1.0, "r0": 1.0, "omega": w, "v0": w, "eps": w * w, "a0": w * w}[f]
+
+
+@pytest.mark.parametrize("name, sc", _scenes(), ids=[n for n, _ in _scenes()])
+@pytest.mark.parametrize("order", [0, 1, 2])
+def test_scalar_path_equals_vectorised_path(name, sc, order):
+    picked = [3.0, 45.0, 181.0]
+    assert len(picked) <= exact.SCALAR_MAX
+    many = np.concatenate([np.linspace(0.0, 360.0, 24, endpoint=False) + 0.5, picked])
+    one = exact.solve(sc, picked, order=order)
+    vec = exact.solve(sc, many, order=order)
+    assert set(one.motion) == set(vec.motion)
+    assert set(one.slides) == set(vec.slides) and set(one.conditions) == set(vec.conditions)
+    for lid in vec.motion:
+        for f in FIELDS:
+            x, y = getattr(one.motion[lid], f), getattr(vec.motion[lid], f)
+            assert (x is None) == (y is None), (lid, f)
+            if y is None:
+                continue
+            assert x.shape == (3,)
+            assert np.max(np.abs(x - y[-3:])) <= 1e-12 * _scale(sc, f), (lid, f)
+    for nm, (sd, sdd) in vec.slides.items():
+        w = abs(sc.driver.omega)
+        assert np.max(np.abs(one.slides[nm][0] - sd[-3:])) <= 1e-12 * w
+        if sdd is not None:
+            assert np.max(np.abs(one.slides[nm][1] - sdd[-3:])) <= 1e-12 * w * w
+    for g, c in vec.conditions.items():
+        assert np.allclose(one.conditions[g], c[-3:], rtol=1e-9, atol=0)
+    # the readings every consumer takes: points by name
+    for nm in vec.point_names():
+        for k in range(order + 1):
+            a, b = one.point(nm)[k], vec.point(nm)[k]
+            assert np.max(np.abs(a - b[-3:])) <= 1e-12 * (abs(sc.driver.omega) ** k or 1.0)
+
+
+def test_both_paths_name_the_same_position_that_does_not_assemble():
+    # crank 0.1, rod 0.15, rocker 0.05, frame 0.2: the rod cannot reach at φ = 180°
+    sc = reference.four_bar_scene(0.1, 0.15, 0.05, 0.2)
+    errs = []
+    for phis in ([180.0], np.array([10.0, 20.0, 180.0, 30.0, 40.0, 50.0])):
+        with pytest.raises(ConstructionError) as ei:
+            exact.solve(sc, phis, order=2)
+        errs.append(ei.value)
+    assert type(errs[0]) is type(errs[1])
+    assert str(errs[0]) == str(errs[1])
+
+
+def _plain_groups(sc):
+    """The search the linear analysis replaced: every pair in order, every joint scanned."""
+    known = {sc.driver.link, sc.frame}
+    remaining = sorted(set(sc.links) - known)
+    out = []
+    while remaining:
+        found = None
+        for i in remaining:
+            for j in remaining:
+                if j <= i:
+                    continue
+                inner = [x for x in sc.joints if set(x.links) == {i, j}]
+                oi = [x for x in sc.joints if i in x.links and x.other(i) in known]
+                oj = [x for x in sc.joints if j in x.links and x.other(j) in known]
+                if len(inner) == 1 and len(oi) == 1 and len(oj) == 1:
+                    found = _orient(sc, i, j, oi[0], inner[0], oj[0])
+                    break
+            if found:
+                break
+        assert found is not None
+        out.append(found)
+        known |= set(found.links)
+        remaining = [x for x in remaining if x not in found.links]
+    return tuple(out)
+
+
+@pytest.mark.parametrize("name, sc", _scenes(), ids=[n for n, _ in _scenes()])
+def test_linear_structure_analysis_finds_the_same_groups(name, sc):
+    st = analyse(sc)
+    assert st.groups == _plain_groups(sc)
+    assert analyse(sc) is st  # once per scene
+
+
+def test_structure_of_a_long_chain_is_linear_in_work():
+    sc = chain_scene(120)
+    st = analyse(sc)
+    assert len(st.groups) == 120
+    assert [g.name for g in st.groups] == [f"{2 * k}-{2 * k + 1}" for k in range(1, 121)]
+
+
+@pytest.mark.parametrize("case", ["slider", "four-bar", "v_engine"])
+def test_the_numpy_floor_agrees_with_the_exact_analysis(case):
+    if case == "slider":
+        sc = reference.slider_crank_scene(0.05, 0.2, 0.015, 2 * math.pi * 25)
+    elif case == "four-bar":
+        sc = reference.four_bar_scene(0.05, 0.2, 0.15, 0.18, 2 * math.pi * 25)
+    else:
+        sc = load_scene(Path(__file__).resolve().parent.parent / "samples" / "v_engine.toml")
+    phis = np.linspace(0.0, 360.0, 72, endpoint=False) + 7.5
+    assert floor.check_against(sc, phis, exact.solve(sc, phis, order=2)) < 1e-13
+
+
+def test_the_floor_declines_what_it_does_not_model():
+    sc = load_scene(Path(__file__).resolve().parent.parent / "samples" / "shaper.toml")
+    assert floor.floor_for(sc) is None
+
+
+def test_a_missing_peer_is_skipped_with_its_reason():
+    runs = peers.run_peers([("four-bar", reference.four_bar_scene(0.05, 0.2, 0.15, 0.18, 10.0))],
+                           positions=36, mechanism_positions=4)
+    for r in runs:
+        why = peers.available(r.peer.split()[0])
+        if why:
+            assert r.note.startswith("skipped: ") and math.isnan(r.time_per_position)
+        elif r.peer in ("pylinkage + numba", "mechanism"):
+            tol = 1e-12 if r.peer.startswith("pylinkage") else 1e-6
+            assert r.errors["r"] < tol, r
