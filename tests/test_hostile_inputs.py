@@ -145,7 +145,7 @@ scene("axis-empty-name", sub('axis = ["A", "B"]', 'axis = ["A", " "]'), "links.2
 scene("length-zero", sub("length = 300", "length = 0"), "links.2.length", "positive")
 scene("length-negative", sub("length = 300", "length = -300"), "links.2.length", "positive")
 scene("length-1e400mm", sub("length = 300", 'length = "1e400 mm"'), "links.2.length", "finite")
-scene("length-huge-int", sub("length = 300", "length = 1" + "0" * 400), "links.2.length", "at most")
+scene("length-huge-int", sub("length = 300", "length = 1" + "0" * 400), "links.2.length", "401 digits")
 scene("length-1e300", sub("length = 300", "length = 1e300"), "links.2.length", "at most")
 scene("length-tiny", sub("length = 300", "length = 1e-300"), "links.2.length", "at least")
 scene("length-bool", sub("length = 300", "length = true"), "links.2.length")
