@@ -129,8 +129,10 @@ class Reader:
         return value
 
     def value(self, value: Any, field: str, *, positive: bool = False, nonneg: bool = False,
-              limit: float = NUMBER_LIMIT, floor: float = NUMBER_FLOOR) -> float:
-        """A plain number: finite, |x| <= limit, and 0 or |x| >= floor."""
+              limit: float = NUMBER_LIMIT, floor: float | None = None) -> float:
+        """A plain number: finite, |x| <= limit, and 0 or |x| >= floor (by default a floor
+        only for positive quantities, which become scales)."""
+        floor = (NUMBER_FLOOR if positive else 0.0) if floor is None else floor
         if isinstance(value, bool) or not isinstance(value, int | float):
             raise self.fail(field, f"expected a number, got {_show(value)}")
         if isinstance(value, float) and not math.isfinite(value):
@@ -147,7 +149,7 @@ class Reader:
 
     def number(self, data: dict[str, Any], key: str, where: str, *, default: float | None = None,
                positive: bool = False, nonneg: bool = False, limit: float = NUMBER_LIMIT,
-               floor: float = NUMBER_FLOOR) -> float:
+               floor: float | None = None) -> float:
         if key not in data:
             if default is None:
                 raise self.fail(f"{where}{key}", "missing number")
@@ -234,7 +236,7 @@ class Reader:
             raise self.fail(field, f"expected a length of at most {LENGTH_LIMIT:g} m, got {_show(value)}")
         if positive and out <= 0:
             raise self.fail(field, f"expected a positive length, got {_show(value)}")
-        if out != 0 and abs(out) < LENGTH_FLOOR:
+        if positive and abs(out) < LENGTH_FLOOR:
             raise self.fail(field, f"expected 0 or a length of at least 1 µm, got {_show(value)}")
         return out
 
