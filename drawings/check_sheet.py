@@ -28,6 +28,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from plans.check.report import Finding, Item, Report, check_file
+from plans.errors import PlansError
 from plans.kinematics.plan import Plan
 
 from .backend import Prim, Pt, Recording, Style
@@ -107,9 +108,10 @@ def _marks(report: Report, plan: Plan, pole: Pt, lang: str, *, annotate: bool,
             continue
         rec.circle(sp, MARK_R, Style(width=0.3, stroke=color), f"{key}-student")
         if annotate:
-            err = "" if it.error_mm is None else f"{it.error_mm:+.1f} mm".replace(".", "," if lang == "ru" else ".")
+            mm_ = "мм" if lang == "ru" else "mm"
+            err = "" if it.error_mm is None else f"{it.error_mm:+.1f} {mm_}".replace(".", "," if lang == "ru" else ".")
             pct = "" if it.error_pct is None else f" ({fmt(it.error_pct, 2, lang)} %)"
-            text = f"{it.quantity}: {fmt(it.student_mm, 3, lang)} mm, {err}{pct}"
+            text = f"{typeset(it.quantity, lang)}: {fmt(it.student_mm, 3, lang)} {mm_}, {err}{pct}"
             # beside the ring, preferably across the vector
             lab = placer.place(text, sp, SMALL_SIZE, prefer=(-uy, ux), gap=MARK_R + 0.6)
             rec.text(lab, f"check-note {it.verdict}", f"{key}-note", fill=color)
@@ -133,12 +135,37 @@ def plan_with_marks(report: Report, plan: Plan, lang: str = "ru", *, overlay: bo
     return _repack(base.pid, plan.kind, plan.phi_deg, prims, base.title, base.quantity, base.scale)
 
 
-_NAME = re.compile(r"\b([A-Za-z]+)_([A-Za-z0-9_]+)")
+_NAME = re.compile(r"\b([A-Za-z]+)_([A-Za-z0-9_]+)(?:\^[nτk])?")
+_UNIT_RU = {"m/s": "м/с", "m/s^2": "м/с²", "rad/s": "рад/с", "rad/s^2": "рад/с²", "N": "Н", "N·m": "Н·м",
+            "N*m": "Н·м", "%": "%", "mm": "мм", "m": "м"}
 
 
-def _markup(text: str) -> str:
-    """Quantity names of the report as sheet markup: ``F_bal_lever`` -> ``F_{bal_lever}``."""
-    return _NAME.sub(lambda m: f"{m.group(1)}_{{{m.group(2)}}}", text)
+_SPECIAL = {
+    "F_bal": ("F_{ур}", "F_{bal}"), "F_bal_lever": ("F_{ур} (рычаг)", "F_{bal} (lever)"),
+    "F_bal_diff_pct": ("δF_{ур}, %", "δF_{bal}, %"),
+}
+_GREEK = {"Phi": "Φ", "omega": "ω", "eps": "ε", "tau": "τ"}
+
+
+def typeset(name: str, lang: str = "ru") -> str:
+    """A quantity key of the report as the sheet writes it: ``M_Phi_2`` -> ``M_{Φ2}``,
+    ``F_bal_lever`` -> ``F_{ур} (рычаг)``, ``omega_3`` -> ``ω_{3}``, ``a_BA^n`` -> ``a_{BA}^n``."""
+    if name in _SPECIAL:
+        return _SPECIAL[name][0 if lang == "ru" else 1]
+    head, sep, rest = name.partition("_")
+    head = _GREEK.get(head, head)
+    if not sep:
+        return head
+    parts = rest.split("_")
+    if parts and parts[0] in _GREEK:  # M_Phi_2 -> M_{Φ2}
+        return f"{head}_{{{_GREEK[parts[0]]}{''.join(parts[1:])}}}"
+    sub, caret, sup = "_".join(parts).partition("^")
+    return f"{head}_{{{sub}}}" + (f"^{sup}" if caret else "")
+
+
+def _markup(text: str, lang: str = "ru") -> str:
+    """Quantity names of the report as sheet markup, typeset (:func:`typeset`)."""
+    return _NAME.sub(lambda m: typeset(m.group(0), lang), text)
 
 
 def findings_panel(report: Report, lang: str = "ru") -> Panel:
@@ -149,22 +176,28 @@ def findings_panel(report: Report, lang: str = "ru") -> Panel:
     rec.text(layout(f"{title}: {report.check.student}", 0, y, TITLE_SIZE, "start", "top"), "title", "check-list-title")
     y += TITLE_SIZE + 3
     fails: list[Item] = [i for i in report.items if i.verdict == "fail"]
-    head = (f"{len(report.items)} figures: {report.passed} pass, {report.failed} fail; "
-            f"{len(report.findings)} findings")
+    if lang == "ru":
+        head = (f"Проверено величин: {len(report.items)}; в допуске {report.passed}, вне допуска "
+                f"{report.failed}; замечаний {len(report.findings)}")
+    else:
+        head = (f"{len(report.items)} figures: {report.passed} pass, {report.failed} fail; "
+                f"{len(report.findings)} findings")
     rec.text(layout(head, 0, y, TEXT_SIZE, "start", "top"), "note", "check-list-summary")
     y += TEXT_SIZE + 3
     lines: list[tuple[str, str]] = []
     for it in fails:
-        pct = "" if it.error_pct is None else f", {it.error_pct:+.1f} %"
-        mm = "" if it.error_mm is None else f", {it.error_mm:+.1f} mm"
+        pct = "" if it.error_pct is None else f", {fmt(it.error_pct, 3, lang)} %"
+        mm = "" if it.error_mm is None else f", {fmt(it.error_mm, 3, lang)} {'мм' if lang == 'ru' else 'mm'}"
         where = f" ({it.where})" if it.where else ""
-        lines.append((f"φ = {it.phi_deg:g}°  {it.quantity} = {it.student:.4g}, exact {it.exact:.4g} {it.unit}"
-                      f"{pct}{mm}{where}", FAIL))
+        exact = "точно" if lang == "ru" else "exact"
+        unit = _UNIT_RU.get(it.unit, it.unit) if lang == "ru" else it.unit.replace("^2", "²")
+        lines.append((f"φ = {fmt(it.phi_deg, 6, lang)}°  {it.quantity} = {fmt(it.student, 4, lang)}, "
+                      f"{exact} {fmt(it.exact, 4, lang)} {unit}{pct}{mm}{where}", FAIL))
     f: Finding
     for f in report.findings:
         lines.append((f"[{f.kind}] {f.message}", "#000"))
     for k, (text, color) in enumerate(lines):
-        for part in wrap(_markup(text), LIST_WIDTH, TEXT_SIZE):
+        for part in wrap(_markup(text, lang), LIST_WIDTH, TEXT_SIZE):
             rec.text(layout(part, 0, y, TEXT_SIZE, "start", "top"), "check-line", f"check-list-{k}", fill=color)
             y += TEXT_SIZE * 1.45
     return _repack("check-findings", "table", None, rec.prims, title)
@@ -175,7 +208,7 @@ def _spec(report: Report, lang: str, title: str, fmt_name: str | None) -> SheetS
     if sheet not in FORMATS:
         sheet = "A1"
     return SheetSpec(format=sheet, language=lang, title=title, author=report.check.student,
-                     subtitle=report.check.scene.title)
+                     subtitle=report.check.scene.title_in(lang))
 
 
 def _plans(report: Report) -> list[Plan]:
@@ -200,7 +233,15 @@ def overlay_sheets(report: Report, *, language: str = "ru") -> list[Sheet]:
     """The exact plans at 1:1 on the student's sheet size, with tolerance circles, for tracing paper."""
     panels = [plan_with_marks(report, p, language, overlay=True) for p in _plans(report)]
     title = "Калька для проверки" if language == "ru" else "Overlay"
-    return compose(panels, _spec(report, language, title, None), "1:1", report.check.path)
+    # the plans stay 1:1; the paper is the smallest format that holds them on one sheet
+    for fmt_name in ("A4", "A3", "A2"):
+        try:
+            sheets = compose(panels, _spec(report, language, title, fmt_name), "1:1", report.check.path)
+        except PlansError:
+            continue
+        if len(sheets) == 1:
+            return sheets
+    return compose(panels, _spec(report, language, title, report.check.sheet or "A1"), "1:1", report.check.path)
 
 
 def save_check_sheets(report: Report | str | Path, outdir: str | Path, stem: str | None = None,

@@ -99,6 +99,9 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
         from .bench_plot import add_plot  # ``plans bench`` draws bench.svg with the sheets' backend
 
         add_plot(sub.choices["bench"])
+        from plans.accuracy import cycle_bench  # and times the cycle's sheet (a lazy reference)
+
+        cycle_bench.SHEET_TIMERS.setdefault("cycle diagrams sheet", "drawings.cycle:diagrams_sheet_seconds")
     if "check" in sub.choices and (argv is None or command_of(argv) == "check"):  # ``plans check --sheet DIR``: the marked and overlay sheets
         try:
             from .check_sheet import add_sheet_options

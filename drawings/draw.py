@@ -64,7 +64,9 @@ def build_panels(scene: Scene, spec: SheetSpec) -> tuple[list[Panel], float]:
     lang, style = spec.language, scene.scale_style
     kin = solve(scene)
     ks = _positions(scene, kin, spec)
-    mu_l = scene.scales.get("length") or auto_length_scale(cycle_size(scene))
+    size = cycle_size(scene)
+    w, _h = spec.size  # schemes about 230 mm across on A1, proportionally less on smaller sheets
+    mu_l = scene.scales.get("length") or auto_length_scale(size, 230.0 * min(1.0, max(w, _h) / 841.0))
     strokes = strokes_over_cycle(scene)
     plans_at: dict[int, Any] = {}
     if scene.wants("velocity_plan"):
@@ -78,8 +80,9 @@ def build_panels(scene: Scene, spec: SheetSpec) -> tuple[list[Panel], float]:
     # only for the positions studied in detail (listed, or the first two).
     overlay = kin.n > 1 and scene.wants("positions") and _wants(spec, "positions")
     schemes = set(ks if spec.positions is not None or not overlay else ks[:2])
-    if overlay:
-        panels.append(positions_panel(scene, kin, mu_l, lang, sorted(schemes), strokes, spec.trace))
+    if overlay:  # the plan of positions at the largest standard scale that fits 2/5 of the sheet
+        mu_pos = scene.scales.get("length") or auto_length_scale(size, 0.4 * (w - 37.0))
+        panels.append(positions_panel(scene, kin, mu_pos, lang, sorted(schemes), strokes, spec.trace))
     for k in ks:
         if scene.wants("positions") and _wants(spec, "scheme") and k in schemes:
             panels.append(scheme_panel(scene, kin, k, mu_l, lang, strokes))
@@ -128,9 +131,16 @@ def draw(scene: Scene | str | Path, *, format: str | None = None, orientation: s
          language: str | None = None) -> Drawing:
     """Build the sheets of a scene (a Scene or a path to its TOML file)."""
     sc = scene if isinstance(scene, Scene) else load_scene(scene)
-    spec = sheet_spec(sc.raw, sc.path, sc.title, format=format, orientation=orientation, language=language)
+    lang = language or (sc.raw.get("sheet", {}).get("language") if isinstance(sc.raw.get("sheet"), dict) else None)
+    spec = sheet_spec(sc.raw, sc.path, sc.title_in(lang if lang in ("ru", "en") else "ru"), format=format,
+                      orientation=orientation, language=language)
     panels, mu_l = build_panels(sc, spec)
-    sheets = compose(panels, spec, ratio_text(mu_l), sc.path)
+    numbers = {float(phi): k for k, phi in enumerate(sc.driver.phis_deg)}
+    sheets = compose(panels, spec, ratio_text(mu_l), sc.path, numbers)
+    if sc.wants("diagrams") or sc.wants("dynamics"):  # the cycle's sheets follow
+        from .cycle import extend
+
+        sheets = extend(sc, spec, sheets, ratio_text(mu_l))
     return Drawing(sc, spec, tuple(panels), tuple(sheets), mu_l)
 
 

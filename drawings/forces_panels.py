@@ -21,7 +21,7 @@ from plans.forces.polygons import force_polygons
 from plans.forces.shared import nice_scale
 from plans.kinematics.plan import Plan
 
-from .backend import Recording, Style, Transform
+from .backend import Pt, Recording, Style, Transform
 from .common import Placer, arrow, dot, fmt, ident, phi_tag
 from .i18n import tr
 from .panels import (
@@ -105,8 +105,17 @@ def build(scene, kin, spec, ks: Sequence[int], plans_at: dict[int, Any], mu_l: f
 # --------------------------------------------------------------------------- free bodies
 
 
-def _fbd_scale(values: Sequence[complex]) -> float:
-    return nice_scale(max((abs(v) for v in values), default=0.0), FBD_ARROW_MM)
+def _fbd_scale(values: Sequence[complex], cycle: float = 0.0) -> float:
+    """μF of a free body: round, its longest force FBD_ARROW_MM at most; forces that are zero
+    up to round-off against the cycle's largest (``cycle``) take the cycle's scale."""
+    longest = max((abs(v) for v in values), default=0.0)
+    if longest <= 1e-9 * cycle:
+        longest = cycle
+    return nice_scale(longest, FBD_ARROW_MM)
+
+
+def _cycle(arrays) -> float:
+    return max((float(np.max(np.abs(a))) for a in arrays), default=0.0)
 
 
 def _moment_arc(rec: Recording, placer: Placer, c: tuple[float, float], M: float, label: str,
@@ -222,7 +231,7 @@ def group_panel(scene, kin, gf, k: int, mu_l: float, lang: str, style: str) -> P
                     couples.append((rc.point, float(rc.M[k]), "M" + name[1:]))
             reacts.append((at, complex(rc.F[k]), name))
     values = [complex(f.F[k]) for f in loads] + [v for _, v, _ in reacts]
-    mu_f = _fbd_scale(values)
+    mu_f = _fbd_scale(values, _cycle([f.F for f in loads] + [rc.F for rc in gf.reactions]))
     # arms of the moment equations
     for (eq, label), arm in gf.arms.items():
         h = float(arm[k])
@@ -273,7 +282,7 @@ def crank_panel(scene, kin, fa, k: int, mu_l: float, lang: str, style: str) -> P
     pts = _draw_links(rec, placer, scene, kin, k, [c.link], T, pid)
     bal = complex(c.F_bal[k] * c.e_bal[k]) if c.kind == "force" else 0j
     values = [complex(f.F[k]) for f in c.loads] + [bal, complex(c.frame.F[k])]
-    mu_f = _fbd_scale(values)
+    mu_f = _fbd_scale(values, _cycle([f.F for f in c.loads] + [c.frame.F]))
     for f in c.loads:
         _force_at(rec, placer, T, complex(f.r[k]), complex(f.F[k]), mu_f, force_label(f.label, lang), LOAD,
                   f"{pid}-{ident(f.label)}")
@@ -315,8 +324,15 @@ def polygon_panel(plan: Plan, lang: str, style: str, pid: str, title: str) -> Pa
             placer.add_line(list(seg))
     geoms = []
     used: dict[str, int] = {}
+    laid: list[tuple[Pt, Pt]] = []
     for s in plan.segments:
         a, b = xy[s.start], xy[s.end]
+        k = sum(_collinear_overlap(a, b, c, d) for c, d in laid)
+        laid.append((a, b))
+        if k and s.length_mm > 1e-6:  # on a line already drawn: beside it, so each one shows
+            L = math.dist(a, b)
+            nx, ny = -(b[1] - a[1]) / L * SIDE_MM * k, (b[0] - a[0]) / L * SIDE_MM * k
+            a, b = (a[0] + nx, a[1] + ny), (b[0] + nx, b[1] + ny)
         st = VECTOR_STYLES["closing" if s.kind == "closing" else "force"]
         eid = f"{pid}-{ident(s.label)}"
         used[eid] = used.get(eid, 0) + 1
@@ -329,6 +345,17 @@ def polygon_panel(plan: Plan, lang: str, style: str, pid: str, title: str) -> Pa
         if p.coincides_with is None:
             dot(rec, xy[p.name], 0.45)
             placer.add_disc(xy[p.name], 0.6)
+    centre = (sum(xs) / len(xs), sum(ys) / len(ys)) if xs else (0.0, 0.0)
+    for p in plan.points:  # the vertices lettered as the tables cite them ("o a", "a b")
+        if p.coincides_with is not None or p.name.endswith(">"):
+            continue
+        v = xy[p.name]
+        names = [q.name for q in plan.points if q.name == p.name or q.coincides_with == p.name]
+        away = (v[0] - centre[0], v[1] - centre[1])
+        L = math.hypot(*away) or 1.0
+        lab = placer.place(", ".join(point_label(n) for n in names), v, LABEL_SIZE - 0.5,
+                           prefer=(away[0] / L, away[1] / L), gap=0.8)
+        rec.text(lab, "label", f"{pid}-label-{ident(p.name)}")
     for s, a, b, eid in geoms:
         if s.length_mm < 1e-6:
             continue
@@ -342,6 +369,25 @@ def polygon_panel(plan: Plan, lang: str, style: str, pid: str, title: str) -> Pa
                   scale_text("force", plan.scale, style, lang), quantity="force", scale=plan.scale)
 
 
+SIDE_MM = 1.2  # offset of a force drawn on a line another force already covers
+
+
+def _collinear_overlap(a: Pt, b: Pt, c: Pt, d: Pt) -> bool:
+    """Segments ab and cd on one line (within 1 mm) sharing more than 0.5 mm of it."""
+    L = math.dist(a, b)
+    if L < 1e-6 or math.dist(c, d) < 1e-6:
+        return False
+    ux, uy = (b[0] - a[0]) / L, (b[1] - a[1]) / L
+    off = [abs((q[0] - a[0]) * uy - (q[1] - a[1]) * ux) for q in (c, d)]
+    if max(off) > 1.0:
+        return False
+    t = sorted(((q[0] - a[0]) * ux + (q[1] - a[1]) * uy) for q in (c, d))
+    return min(L, t[1]) - max(0.0, t[0]) > 0.5
+
+
+MIN_ARROW_MM = 4.0  # a force drawn shorter than this on the lever is lengthened and marked
+
+
 def lever_panel(lv, k: int, vplan: Plan | None, lang: str, style: str) -> Panel:
     """The velocity plan turned 90° as a rigid lever about the pole, every force at the image of
     its point parallel to itself, the arms h from the pole, and the balancing force."""
@@ -353,6 +399,13 @@ def lever_panel(lv, k: int, vplan: Plan | None, lang: str, style: str) -> Panel:
     placer = Placer()
     xy = {p.name: T(*p.xy) for p in plan.points}
     images = [p.name for p in plan.points if not p.name.endswith(">")]  # ordered: stable output
+    if vplan is not None:  # every point's image, loaded or not: the plan turned, at the lever's μv
+        rot = lv.turn * 1j * lv.scale / vplan.scale
+        for vp in vplan.points:
+            if vp.name != vplan.pole and vp.name not in xy:
+                w = rot * complex(*vp.xy)
+                xy[vp.name] = T(w.real, w.imag)
+                images.append(vp.name)
     # the lever itself: the plan's vectors turned
     if vplan is not None:
         for vs in vplan.segments:
@@ -365,28 +418,49 @@ def lever_panel(lv, k: int, vplan: Plan | None, lang: str, style: str) -> Panel:
     segs = [s for s in plan.segments if s.kind == "force"]
     mu_f = (segs[0].length_mm / segs[0].value) if segs and segs[0].value else 1.0
     c = lv.fa.crank
-    bal_vec = None
+    bal_vecs: list[tuple[str, tuple[Pt, Pt]]] = []
     if c.kind == "force":
         F = complex(lv.by_lever[k]) * complex(c.e_bal[k])
         wb = complex(lv.w_bal[k])
-        bal_vec = (T(wb.real, wb.imag), T((wb + F * mu_f).real, (wb + F * mu_f).imag))
+        bal_vecs.append((force_label("F_bal", lang), (T(wb.real, wb.imag), T((wb + F * mu_f).real,
+                                                                             (wb + F * mu_f).imag))))
+    elif bool(lv.valid[k]):  # a balancing moment as its force pair: F = M/l_OA ⟂ OA at a, −F at p
+        rA = complex(c.r_point[k])
+        rO = complex(lv.fa.kin.point(lv.fa.scene.driver.pivot, c.link)[0][k])
+        M = float(c.M_bal[k])
+        if abs(rA - rO) > 0 and M != 0:
+            F = 1j * (rA - rO) * M / abs(rA - rO) ** 2
+            wb = complex(lv.w_bal[k])
+            name = "M_ур" if lang == "ru" else "M_bal"
+            for pair, at, fv in ((f"{name}'", wb, F), (f"{name}''", 0j, -F)):
+                bal_vecs.append((pair, (T(at.real, at.imag), T((at + fv * mu_f).real, (at + fv * mu_f).imag))))
+    short = False
+    arrows: list[tuple[str, str, Pt, Pt, Style, str]] = []
+    for s in segs:
+        arrows.append((f"{pid}-{ident(s.label)}", force_label(s.label, lang), xy[s.start], xy[s.end], LOAD,
+                       "vector force"))
+    for i, (pair, (p0, p1)) in enumerate(bal_vecs):
+        arrows.append((f"{pid}-F_bal" if i == 0 else f"{pid}-F_bal-{i}", pair, p0, p1, REACTION, "vector closing"))
+    drawn: list[tuple[str, str, Pt, Pt, Style, str]] = []
+    for eid, text, p0, p1, st, cls in arrows:  # too short to see at μF: a minimum length, marked †
+        L = math.dist(p0, p1)
+        if 0 < L < MIN_ARROW_MM:
+            p1 = (p0[0] + (p1[0] - p0[0]) * MIN_ARROW_MM / L, p0[1] + (p1[1] - p0[1]) * MIN_ARROW_MM / L)
+            text, short = text + "†", True
+        drawn.append((eid, text, p0, p1, st, cls))
     pole = xy["p"]
     for i, cl in enumerate(plan.lines):
-        p0 = complex(*cl.point)
+        z0 = complex(*cl.point)
         u = complex(*cl.direction)
-        foot = p0 + ((0j - p0) * u.conjugate()).real * u
+        foot = z0 + ((0j - z0) * u.conjugate()).real * u
         if abs(foot) > 1.0:
-            f = T(foot.real, foot.imag)
-            rec.line(pole, f, ARM, f"{pid}-arm-{i}")
-            rec.line(T(*cl.point), f, Style(width=0.18, stroke="#888", dash=(4.0, 1.0, 1.0, 1.0)))
-    for s in segs:
-        a, b = xy[s.start], xy[s.end]
-        eid = f"{pid}-{ident(s.label)}"
-        arrow(rec, a, b, LOAD, eid, "vector force")
-        placer.add_line([a, b])
-    if bal_vec is not None:
-        arrow(rec, bal_vec[0], bal_vec[1], REACTION, f"{pid}-F_bal", "vector closing")
-        placer.add_line(list(bal_vec))
+            ft = T(foot.real, foot.imag)
+            rec.line(pole, ft, ARM, f"{pid}-arm-{i}")
+            rec.line(T(*cl.point), ft, Style(width=0.18, stroke="#888", dash=(4.0, 1.0, 1.0, 1.0)))
+    for eid, _text, p0, p1, st, cls in drawn:
+        if p0 != p1:
+            arrow(rec, p0, p1, st, eid, cls)
+            placer.add_line([p0, p1])
     for n in images:
         dot(rec, xy[n], 0.5)
         placer.add_disc(xy[n], 0.6)
@@ -399,23 +473,21 @@ def lever_panel(lv, k: int, vplan: Plan | None, lang: str, style: str) -> Panel:
         seen.add(key)
         lab = placer.place(", ".join(point_label(m) for m in same), xy[n], LABEL_SIZE, gap=0.8)
         rec.text(lab, "label", f"{pid}-label-{ident(n)}")
-    for s in segs:
-        a, b = xy[s.start], xy[s.end]
-        L = math.dist(a, b) or 1.0
-        lab = placer.place(force_label(s.label, lang), b, SMALL_SIZE + 0.5,
-                           prefer=((b[0] - a[0]) / L, (b[1] - a[1]) / L), gap=0.6)
-        rec.text(lab, "vector-label", f"{pid}-{ident(s.label)}-label")
-    if bal_vec is not None:
-        a, b = bal_vec
-        L = math.dist(a, b) or 1.0
-        lab = placer.place(force_label("F_bal", lang), b, SMALL_SIZE + 0.5,
-                           prefer=((b[0] - a[0]) / L, (b[1] - a[1]) / L), gap=0.6)
-        rec.text(lab, "vector-label", f"{pid}-F_bal-label", fill=REACTION.stroke or "#000")
+    for eid, text, p0, p1, st, _cls in drawn:
+        if p0 == p1:
+            continue
+        L = math.dist(p0, p1) or 1.0
+        vl = placer.place(text, p1, SMALL_SIZE + 0.5, prefer=((p1[0] - p0[0]) / L, (p1[1] - p0[1]) / L), gap=0.6)
+        rec.text(vl, "vector-label", f"{eid}-label", fill=st.stroke if st is REACTION and st.stroke else "#000")
     turn = ("90° " + ("против часовой" if lv.turn > 0 else "по часовой")) if lang == "ru" else (
         "turned 90° " + ("ccw" if lv.turn > 0 else "cw"))
     title = f"{tr('lever', lang)}, φ = {fmt(phi, 4, lang)}° ({turn})"
     sc = f"{scale_text('velocity', lv.scale, style, lang)};  {scale_text('force', mu_f, style, lang)}"
-    return finish(pid, "lever", phi, rec, title, sc, quantity="velocity", scale=lv.scale)
+    note = None
+    if short:
+        note = (f"† короче {MIN_ARROW_MM:g} мм в масштабе μF: показаны не в масштабе" if lang == "ru"
+                else f"† shorter than {MIN_ARROW_MM:g} mm at μF: drawn not to scale")
+    return finish(pid, "lever", phi, rec, title, sc, note=note, quantity="velocity", scale=lv.scale)
 
 
 # --------------------------------------------------------------------------- tables
@@ -451,19 +523,22 @@ def balancing_rows(lv, k: int, lang: str) -> list[tuple[str, ...]]:
     """The balancing load three ways (kinetostatics, lever, power) and δ, as table rows."""
     rows = force_rows(lv, k)[-4:]
     keys = ("by_groups", "by_lever", "by_power")
-    name = "F_ур" if lang == "ru" else "F_bal"
+    force = lv.fa.crank.kind == "force"
+    letter = "F" if force else "M"
+    name = f"{letter}_ур" if lang == "ru" else f"{letter}_bal"
     out: list[tuple[str, ...]] = []
     for key, r in zip(keys, rows[:3], strict=False):
         unit = "Н" if (lang == "ru" and r.unit == "N") else ("Н·м" if lang == "ru" and r.unit == "N·m" else r.unit)
         read = "—" if r.drawing is None else fmt(r.drawing, 5, lang)
         d = r.difference
-        diff = "—" if d is None else f"{abs(d):.2f}"
+        diff = "—" if d is None else f"{d:+.2f}".replace("+0.00", "0.00").replace("-0.00", "0.00")
         if lang == "ru":
             diff = diff.replace(".", ",")
         out.append((f"{name} ({tr(key, lang)})", "—", "—", "—", read, fmt(r.exact, 5, lang), unit, diff))
     delta = rows[3]
     if delta.drawing is not None and np.isfinite(delta.drawing):
-        out.append(("δ = (F_lev − F_kin)/F_kin, %" if lang == "en" else "δ = (F_рыч − F_кин)/F_кин, %",
+        out.append((f"δ = ({letter}_lev − {letter}_kin)/{letter}_kin, %" if lang == "en"
+                    else f"δ = ({letter}_рыч − {letter}_кин)/{letter}_кин, %",
                     "—", "—", "—", fmt(delta.drawing, 3, lang), fmt(delta.exact, 3, lang), "%", "—"))
     return out
 

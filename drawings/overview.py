@@ -34,6 +34,7 @@ from .text import layout, point_label
 
 POS_THIN = Style(width=0.25, stroke="#000", cls="position")
 POS_BOLD = Style(width=0.6, stroke="#000", cls="position bold")
+PATH = Style(width=0.25, stroke="#000", cls="path")  # trajectory of a numbered pin
 TRACE = Style(width=0.3, stroke="#a35200", dash=(4.0, 1.0, 1.0, 1.0, 1.0, 1.0), cls="trace")  # dash-dot-dot
 NUMBER_SIZE = SMALL_SIZE + 0.3
 
@@ -170,10 +171,10 @@ def _trajectories(scene, names: Sequence[str], n: int = 145) -> dict[str, list[c
 
 def positions_panel(scene, kin, mu_l: float, lang: str, bold: Sequence[int], strokes: dict[str, tuple[float, float]],
                     trace: Sequence[str] | None = None) -> Panel:
-    """The plan of positions: the mechanism at every crank angle of the scene, thin, the
-    positions in ``bold`` thick; positions numbered 0, 1, … at the crank pin and the other
-    moving pins; the trajectory of the ``trace`` points (default: the rods' centres of mass)
-    through them; the guides' axes and the fixed pivots once."""
+    """The plan of positions: the mechanism at the positions in ``bold`` (thick), the crank
+    alone at the others (thin); positions numbered 0, 1, … at the crank pin and the other
+    moving pins on their trajectories; the trajectory of the ``trace`` points (default: the
+    rods' centres of mass); the guides' axes and the fixed pivots once."""
     pid = "positions"
     T = Transform(mu_l)
     rec = Recording()
@@ -221,15 +222,19 @@ def positions_panel(scene, kin, mu_l: float, lang: str, bold: Sequence[int], str
             placer.add_disc(p, JOINT_R + 0.3)
     rec.end()
 
-    # trajectories
-    paths = _trajectories(scene, trace)
+    # trajectories: the traced points, and the numbered pins that neither ride the crank
+    # circle nor a fixed guide's axis (the links themselves only at the bold positions)
+    on_axis = {jt.point for jt in scene.joints if jt.kind == "P" and jt.guide is not None and jt.guide.link == frame}
+    pins = [m for m in numbered_points(scene) if m != pin and m not in on_axis and m not in trace]
+    paths = _trajectories(scene, list(trace) + pins)
     rec.begin(f"{pid}-traces", "traces")
-    for name in trace:
+    for name in list(trace) + pins:
         path = paths.get(name)
         if not path:
             continue
         curve = [T.z(z) for z in path]
-        rec.polyline(curve, TRACE, f"{pid}-trace-{ident(name)}")
+        st = TRACE if name in trace else PATH
+        rec.polyline(curve, st, f"{pid}-{'trace' if name in trace else 'path'}-{ident(name)}")
         placer.add_line(curve)
     rec.end()
 
@@ -241,7 +246,8 @@ def positions_panel(scene, kin, mu_l: float, lang: str, bold: Sequence[int], str
         where = {**pts, **extra}
         st = POS_BOLD if k in bold_set else POS_THIN
         rec.begin(f"{pid}-pos-{k}", "position bold" if k in bold_set else "position")
-        for w, walk in enumerate(_walks(edges)):
+        walks = _walks(edges) if k in bold_set else [[d.pivot, pin]]  # thin: the crank alone
+        for w, walk in enumerate(walks):
             line = [T.z(where[v]) for v in walk]
             rec.polyline(line, st, f"{pid}-pos-{k}" + (f"-{w}" if w else ""))
             placer.add_line(line)

@@ -63,7 +63,12 @@ class Panel:
 def finish(pid: str, kind: str, phi: float | None, body: Recording, title: str,
            scale_line: str | None = None, note: str | None = None, quantity: str | None = None,
            scale: float | None = None) -> Panel:
-    """Title (and scale) above the body, everything shifted to start at (0, 0)."""
+    """Title (and scale) above the body, everything shifted to start at (0, 0); labels that a
+    line of the finished figure crosses are moved clear of it (:func:`declutter`)."""
+    if kind not in ("table", "legend"):
+        from .declutter import declutter
+
+        body = Recording(declutter(body.prims))
     x0, y0, x1, y1 = body.bbox()
     head = Recording()
     y = y0 - 2.5
@@ -335,6 +340,12 @@ def link_shape(scene, lid: int) -> tuple[str, list[str]]:
         if n not in names:
             names.insert(0, n)
     if len(names) < 2:
+        # a one-pin link that carries a guide (a yoke): its body runs out to its centre of
+        # mass, so S sits on the link it belongs to
+        carrier = any(jt.guide is not None and jt.guide.link == lid for jt in scene.joints)
+        far = [n for n in link.points if n not in names and names and abs(link.points[n] - link.points[names[0]]) > 0]
+        if carrier and names and far:
+            return "line", [names[0], max(far, key=lambda n: abs(link.points[n] - link.points[names[0]]))]
         return "none", []
     z = {n: link.points[n] for n in names}
     base = z[names[1]] - z[names[0]] if len(names) > 1 else 1.0
@@ -605,8 +616,7 @@ def table_panel(rows: Sequence, lang: str, scale_style: str, phi: float, pid: st
             sc = fmt(r.scale, 4, lang)
         unit = tr(_UNITS.get(r.unit, r.unit), lang) if _UNITS.get(r.unit, r.unit) in _UNIT_KEYS else r.unit
         cells: tuple[str, ...] = (quantity_text(r.quantity), seg, mm, sc, fmt(_clean(r.value, r.ref), 5, lang),
-                 fmt(_clean(r.exact, r.ref), 5, lang), unit, f"{100.0 * r.relative:.2f}".replace(
-                     ".", "," if lang == "ru" else "."))
+                 fmt(_clean(r.exact, r.ref), 5, lang), unit, _diff_cell(r, unit, lang))
         body.append((ident(r.quantity), cells))
     for cells in extra:
         body.append((ident(cells[0]), tuple(cells)))
@@ -657,6 +667,18 @@ def table_panel(rows: Sequence, lang: str, scale_style: str, phi: float, pid: st
 
 
 _UNIT_KEYS = {"m/s", "m/s^2", "rad/s", "rad/s^2", "N", "N*m"}
+
+
+def _diff_cell(r, unit: str, lang: str) -> str:
+    """Δ as ``solve`` and the check report define it (:func:`plans.units.percent`), %; the
+    absolute difference with its unit where the exact value is zero."""
+    from plans.units import clean, percent
+
+    pct = percent(r.value, r.exact, r.ref)
+    if pct is None:
+        return f"{fmt(clean(r.value - r.exact, r.ref), 3, lang)} {unit}"
+    return f"{pct:+.2f}".replace(".", "," if lang == "ru" else ".").replace("+0,00", "0,00").replace(
+        "+0.00", "0.00").replace("-0,00", "0,00").replace("-0.00", "0.00")
 
 
 def _clean(v: float, ref: float) -> float:

@@ -18,6 +18,7 @@ from plans.errors import InputError
 from plans.reader import check_keys
 
 from .backend import Prim, Recording, Style, replay
+from .blocks import Block, Frame, frame_of, heading, pack_block, place_block, spread, widths
 from .i18n import tr
 from .panels import Panel
 from .svg import SvgBackend
@@ -54,7 +55,8 @@ class SheetSpec:
         format = "A1"                 # A1 | A2 | A3 | A4  (CLI --sheet overrides)
         orientation = "landscape"     # or "portrait"
         language = "ru"               # or "en"
-        title = "Механизм V-образного двигателя"   # name field (default: the scene's title)
+        title = "Механизм V-образного двигателя"   # name field (default: the scene's title);
+                                      # or one per language: { ru = "...", en = "..." }
         designation = "ТММ.КП.07.00.00"
         subtitle = "Кинематический и силовой анализ"
         author = "Иванов И.И."
@@ -124,7 +126,7 @@ def sheet_spec(raw: dict[str, Any], path: str, default_title: str = "", **overri
                 raise InputError("expected a string", file=path, field=f"sheet.{key}")
             out[key] = data[key]
 
-    for key in ("title", "designation", "subtitle", "author", "checked_by", "approved_by", "group",
+    for key in ("designation", "subtitle", "author", "checked_by", "approved_by", "group",
                 "organization", "date"):
         string(key)
     fmt = str(override.get("format") or data.get("format", "A1"))
@@ -141,6 +143,13 @@ def sheet_spec(raw: dict[str, Any], path: str, default_title: str = "", **overri
     if lang not in ("ru", "en"):
         raise InputError(f"expected \"ru\" or \"en\", got {lang!r}", file=path, field="sheet.language")
     out["language"] = lang
+    if "title" in data:  # a string, or one per language: { ru = "...", en = "..." }
+        t = data["title"]
+        if isinstance(t, dict) and t and all(k in ("ru", "en") and isinstance(v, str) for k, v in t.items()):
+            t = t.get(lang, t.get("en", t.get("ru")))
+        if not isinstance(t, str):
+            raise InputError("expected a string or { ru = \"...\", en = \"...\" }", file=path, field="sheet.title")
+        out["title"] = t
     for key in ("first_sheet", "total_sheets"):
         if key in data:
             v = data[key]
@@ -208,6 +217,7 @@ class Sheet:
     placed: list[tuple[Panel, float, float]] = field(default_factory=list)
     scale_text: str = ""  # for the title block's "Scale" cell
     prims: list[Prim] = field(default_factory=list)
+    frames: list[Frame] = field(default_factory=list)  # borders and headings of position blocks
 
     @property
     def frame_box(self) -> tuple[float, float, float, float]:
@@ -226,6 +236,7 @@ class Sheet:
         rec = Recording()
         _frame(rec, self)
         _title_block(rec, self)
+        _frames(rec, self)
         prims = list(rec.prims)
         for panel, x, y in self.placed:
             prims.extend(panel.at(x, y))
@@ -248,12 +259,28 @@ def _frame(rec: Recording, sh: Sheet) -> None:
     rec.end()
 
 
+def _frames(rec: Recording, sh: Sheet) -> None:
+    """A thin border round each position's block, its heading in the top-left corner."""
+    from .blocks import HEAD, HEAD_SIZE, INSET
+
+    for f in sh.frames:
+        x0, y0, x1, y1 = f.box
+        tag = f"{f.phi:.6g}".replace("-", "m")
+        rec.begin(f"block-{tag}", "block")
+        rec.polygon([(x0, y0), (x1, y0), (x1, y1), (x0, y1)], Style(width=0.35, cls="block"),
+                    f"block-{tag}-border")
+        rec.text(layout(f.heading, x0 + INSET, y0 + HEAD / 2 + 1.0, HEAD_SIZE, "start", "middle"),
+                 "heading", f"block-{tag}-heading")
+        rec.end()
+
+
 def _fit(text: str, x: float, y: float, w: float, size: float, anchor: str = "start"):
-    """A label no wider than ``w`` (the size shrinks, never below 1.8 mm)."""
+    """A label no wider than ``w``: the size shrinks (a text that does not wrap inside its
+    cell at 1.8 mm goes smaller still rather than run over the cell's lines)."""
     lab = layout(text, x, y, size, anchor, "middle")
     width = lab.box[2] - lab.box[0]
     if width > w and width > 0:
-        size = max(1.8, size * w / width)
+        size = size * w / width
         lab = layout(text, x, y, size, anchor, "middle")
     return lab
 
@@ -286,11 +313,19 @@ def _title_block(rec: Recording, sh: Sheet) -> None:
         rec.line((X0 + c, Y0 + 20), (X0 + c, Y0 + 35), thin)
     rec.line((X0 + 155, Y0 + 35), (X0 + 155, Y0 + 40), thick)
 
-    def cell(text: str, x: float, y: float, w: float, size: float, eid: str, anchor: str = "start") -> None:
+    def cell(text: str, x: float, y: float, w: float, size: float, eid: str, anchor: str = "start",
+             h: float = 5.0) -> None:
         if not text:
             return
         xx = x + 1.0 if anchor == "start" else x + w / 2
-        rec.text(_fit(text, xx, y, w - 2.0, size, anchor), "tb-text", eid)
+        lines = _cell_lines(text, w - 2.0, h, size)
+        if len(lines) == 1:
+            rec.text(_fit(text, xx, y, w - 2.0, size, anchor), "tb-text", eid)
+            return
+        sz = lines[0][1]
+        for i, (ln, _) in enumerate(lines):  # wrapped inside the cell, centred on its middle
+            yy = y + (i - (len(lines) - 1) / 2) * sz * 1.2
+            rec.text(_fit(ln, xx, yy, w - 2.0, sz, anchor), "tb-text", eid if i == 0 else f"{eid}-{i}")
 
     heads = [("izm", 0, 7), ("list", 7, 10), ("ndoc", 17, 23), ("sign", 40, 15), ("date", 55, 10)]
     for key, x, w in heads:
@@ -300,16 +335,20 @@ def _title_block(rec: Recording, sh: Sheet) -> None:
     for i, (key, name) in enumerate(sig):
         y = Y0 + 32.5 + 5 * i
         cell(tr(key, lang), X0, y, 17, 2.5, f"tb-{key}")
-        cell(name, X0 + 17, y, 23, 2.5, f"tb-{key}-name")
+        cell(name, X0 + 17, y, 23, 2.5, f"tb-{key}-name", h=5.0)
         if key == "author" and sh.spec.date:
             cell(sh.spec.date, X0 + 55, y, 10, 2.2, "tb-date", "middle")
     cell(sh.spec.designation, X0 + 65, Y0 + 7.5, 120, 5.0, "tb-designation", "middle")
     # name field: the title over up to three lines
     lines = _wrap(sh.spec.title, 66.0, 4.0)
-    y = Y0 + 27.5 - (len(lines) - 1) * 3.0
-    for i, ln in enumerate(lines):
-        cell(ln, X0 + 65, y + 6.0 * i, 70, 4.0, f"tb-title-{i}", "middle")
-    cell(sh.spec.subtitle, X0 + 65, Y0 + 47.5, 70, 3.5, "tb-subtitle", "middle")
+    if len(lines) <= 3 and len(lines[-1]) == len(" ".join(wrap(lines[-1], 66.0, 4.0))) and \
+            len(wrap(lines[-1], 66.0, 4.0)) == 1:
+        y = Y0 + 27.5 - (len(lines) - 1) * 3.0
+        for i, ln in enumerate(lines):
+            cell(ln, X0 + 65, y + 6.0 * i, 70, 4.0, f"tb-title-{i}", "middle")
+    else:  # too long for three lines at 4 mm: smaller, wrapped inside the cell
+        cell(sh.spec.title, X0 + 65, Y0 + 27.5, 70, 4.0, "tb-title-0", "middle", h=25.0)
+    cell(sh.spec.subtitle, X0 + 65, Y0 + 47.5, 70, 3.5, "tb-subtitle", "middle", h=15.0)
     cell(tr("lit", lang), X0 + 135, Y0 + 17.5, 15, 2.5, "tb-h-lit", "middle")
     cell(tr("mass", lang), X0 + 150, Y0 + 17.5, 17, 2.5, "tb-h-mass", "middle")
     cell(tr("mscale", lang), X0 + 167, Y0 + 17.5, 18, 2.5, "tb-h-scale", "middle")
@@ -320,8 +359,26 @@ def _title_block(rec: Recording, sh: Sheet) -> None:
     cell(f"{tr('sheets', lang)} {m}", X0 + 155, Y0 + 37.5, 30, 2.5, "tb-sheets")
     org = [t for t in (sh.spec.organization, sh.spec.group) if t]
     for i, t in enumerate(org):
-        cell(t, X0 + 135, Y0 + 47.5 + (i - (len(org) - 1) / 2) * 5.0, 50, 3.5, f"tb-org-{i}", "middle")
+        cell(t, X0 + 135, Y0 + 47.5 + (i - (len(org) - 1) / 2) * 15.0 / len(org), 50, 3.5, f"tb-org-{i}",
+             "middle", h=15.0 / len(org))
     rec.end()
+
+
+def _cell_lines(text: str, width: float, height: float, size: float) -> list[tuple[str, float]]:
+    """``text`` as it fits a title-block cell: one line at ``size`` if it fits, else the
+    largest size (down to 1.8 mm) at which its words wrap into lines that fit the cell."""
+    lab = layout(text, 0, 0, size)
+    if lab.box[2] - lab.box[0] <= width:
+        return [(text, size)]
+    sz = size
+    words = text.replace("-", "- ")  # a double-barrelled name may break after its hyphen
+    while sz >= 1.8 - 1e-9:
+        lines = [ln.replace("- ", "-") for ln in wrap(words, width, sz)]
+        if len(lines) * sz * 1.2 <= height - 0.6 and all(
+                layout(ln, 0, 0, sz).box[2] - layout(ln, 0, 0, sz).box[0] <= width for ln in lines):
+            return [(ln, sz) for ln in lines]
+        sz = round(sz - 0.1, 2)
+    return [(text, size)]  # one line, shrunk by _fit
 
 
 def _wrap(text: str, width: float, size: float) -> list[str]:
@@ -398,18 +455,17 @@ def _best_spot(panel: Panel, area: tuple[float, float, float, float],
 
 
 def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str = "",
-            path: str = "<scene>") -> list[Sheet]:
-    """Place panels on as few sheets of ``spec.format`` as they need (pins first).
+            path: str = "<scene>", numbers: dict[float, int] | None = None) -> list[Sheet]:
+    """Place panels on sheets of ``spec.format`` (pins first), as a course lays them out.
 
-    Panels come ordered by crank angle; within one angle the biggest go first.  Each goes
-    to the free spot of the current sheet that keeps the skyline lowest (next to its own
-    position's panels when that costs little, never above the previous position), so the
-    next position fills what the previous one left; a panel that does not fit waits while
-    the rest of its position is tried, and opens the next sheet when its position is done.
-    The same is tried with every position that does not fit whole starting a fresh sheet,
-    and with the panels of a position in reading order instead of biggest first; the first
-    of the fewest sheets wins (whole positions, reading order).  The legend sits above the
-    title block of sheet 1; spare height is shared out between the rows (:func:`_spread`).
+    The drawing-wide panels (plan of positions) come first; then one bordered block per
+    crank angle, in angle order, under a heading "Положение 3, φ = 90°" (``numbers`` maps an
+    angle to its position number).  Inside a block the panels go in reading order where they
+    keep the block's skyline lowest; a block goes below or right of the previous one, on the
+    same sheet while it fits, else on the next (sheet order = angle order).  A block that
+    cannot fit one sheet is split into parts ("continued").  Each block is packed in several
+    widths; the shape that keeps the sheet's skyline lowest is taken.  The legend sits above the
+    title block of sheet 1; spare height is shared out between the bands of blocks.
     """
     W, H = spec.size
     area = usable(W, H)
@@ -421,23 +477,19 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str = "",
                              file=path, field="sheet.pins")
     for p in panels:
         _check_fits(p, spec, path)
-    sheets: list[list[tuple[Panel, float, float]]] = []
-    taken: list[list[tuple[float, float, float, float]]] = []
-
-    def new_sheet() -> None:
-        sheets.append([])
-        taken.append([_grow(tb, 0.0)])
+    sheets: list[list[tuple[Panel, float, float]]] = [[]]
+    taken: list[list[Box]] = [[tb]]
 
     def put(s: int, p: Panel, x: float, y: float) -> None:
         sheets[s].append((p, x, y))
         taken[s].append((x, y, x + p.width, y + p.height))
 
-    new_sheet()
     pinned = {pin.panel for pin in spec.pins}
     for pin in spec.pins:
         p = by_id[pin.panel]
         while len(sheets) < pin.sheet:
-            new_sheet()
+            sheets.append([])
+            taken.append([tb])
         box = (pin.x, pin.y, pin.x + p.width, pin.y + p.height)
         if box[0] < area[0] - GAP or box[1] < area[1] - GAP or box[2] > area[2] + GAP or box[3] > area[3] + GAP:
             raise InputError(f"panel {pin.panel} ({p.width:.0f}×{p.height:.0f} mm) at x = {pin.x:g}, "
@@ -455,104 +507,102 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str = "",
         if y >= area[1] and not any(_overlaps(box, _grow(t, GAP - 1e-9)) for t in taken[0]):
             put(0, legend, x, y)
             queue.remove(legend)
-    blocks: list[list[Panel]] = []  # one per crank angle (drawing-wide panels alone)
+    groups: list[list[Panel]] = []  # one per crank angle (drawing-wide panels alone)
     for p in queue:
-        if not blocks or p.kind in _SINGLE or blocks[-1][0].kind in _SINGLE or blocks[-1][0].phi != p.phi:
-            blocks.append([])
-        blocks[-1].append(p)
-
-    def pack(whole: bool, biggest: bool) -> list[list[tuple[Panel, float, float]]]:
-        """Greedy fill; ``whole``: a position that does not fit on the current sheet in full
-        starts on a fresh one (so each position stays on one sheet where it can);
-        ``biggest``: the biggest panels of a position first, else in the reading order
-        (scheme, plans, groups, crank, lever, tables)."""
-        shs = [list(s) for s in sheets]
-        tks = [list(t) for t in taken]
-        cur = 0
-        prev_top: dict[int, float] = {}  # sheet -> top of the last position placed on it
-
-        def fresh() -> None:
-            shs.append([])
-            tks.append([_grow(tb, 0.0)])
-
-        def fill(block: list[Panel], s: int, commit: bool) -> list[Panel]:
-            tk = tks[s] if commit else list(tks[s])
-            mine: list[Box] = []
-            waiting: list[Panel] = []
-            floor = prev_top.get(s, -math.inf)
-            for p in block:
-                spot = _best_spot(p, area, tk, mine, floor)
-                if spot is None:
-                    waiting.append(p)
-                    continue
-                box = (spot[0], spot[1], spot[0] + p.width, spot[1] + p.height)
-                tk.append(box)
-                mine.append(box)
-                if commit:
-                    shs[s].append((p, spot[0], spot[1]))
-            if commit and mine and block[0].phi is not None:
-                prev_top[s] = min(b[1] for b in mine)
-            return waiting
-
-        for block in blocks:
-            if biggest:
-                block = sorted(block, key=lambda p: -p.width * p.height)  # stable: kinds keep their order
-            if whole and shs[cur] and block[0].phi is not None and fill(block, cur, False):
-                cur += 1
-                if cur == len(shs):
-                    fresh()
-            while block:
-                waiting = fill(block, cur, True)
-                if waiting and len(waiting) == len(block) and not shs[cur]:  # pragma: no cover
-                    raise InputError(f"panel {waiting[0].pid} does not fit", file=path, field="sheet.format")
-                if waiting:
-                    cur += 1
-                    if cur == len(shs):
-                        fresh()
-                block = waiting
-        return shs
-
-    # the fewest sheets; among as few, positions whole and panels in reading order first
-    tries = [pack(whole, biggest) for whole, biggest in ((True, False), (True, True), (False, False), (False, True))]
-    sheets = min(tries, key=len)
-    fixed = pinned | ({legend.pid} if legend is not None and legend not in queue else set())
-    sheets = [_spread(placed, fixed, area, tb) for placed in sheets]
+        if not groups or p.kind in _SINGLE or groups[-1][0].kind in _SINGLE or groups[-1][0].phi != p.phi:
+            groups.append([])
+        groups[-1].append(p)
+    best = _place_blocks(_blocks(groups, area, spec.language, numbers or {}), taken, area, path)
     out = []
     order = {p.pid: k for k, p in enumerate(panels)}
-    for n, placed in enumerate(sheets):
+    for n, bl in enumerate(best):
+        stays = list(taken[n]) if n < len(taken) else [tb]
+        bl = spread(bl, area, stays, GAP)
+        placed = list(sheets[n]) if n < len(sheets) else []
+        frames = []
+        for b, bx, by in bl:
+            placed.extend((p, bx + x, by + y) for p, x, y in b.panels)
+            if b.framed:
+                frames.append(frame_of(b, bx, by))
         placed.sort(key=lambda t: order[t[0].pid])
-        sh = Sheet(spec, n + 1, len(sheets), W, H, placed, scale_text)
+        sh = Sheet(spec, n + 1, len(best), W, H, placed, scale_text, frames=frames)
         sh.render()
         out.append(sh)
     return out
 
 
-def _spread(placed: list[tuple[Panel, float, float]], fixed: set[str], area: Box, tb: Box,
-            most: float = 1.5) -> list[tuple[Panel, float, float]]:
-    """Share a sheet's spare height out between its rows: every free panel's top moves away
-    from the top of the area by one factor f (1 ≤ f ≤ ``most``).  Panels one above the
-    other only move apart, side by side ones keep their x, so nothing new overlaps; f stops
-    where a panel would reach the frame, the title block or a pinned panel."""
-    free = [(p, x, y) for p, x, y in placed if p.pid not in fixed and y > area[1] + 1e-9]
-    if not free:
-        return placed
-    stays = [(x, y, x + p.width, y + p.height) for p, x, y in placed if p.pid in fixed] + [tb]
-    top = area[1]
+def _blocks(groups: list[list[Panel]], area: Box, lang: str, numbers: dict[float, int]) -> list[list[Block]]:
+    """Each group as a block, in every shape worth trying (packed into widths from a quarter
+    to the whole sheet); a group that cannot fit one sheet is split into parts."""
+    aw, ah = area[2] - area[0], area[3] - area[1]
 
-    def ok(f: float) -> bool:
-        for p, x, y in free:
-            y2 = top + (y - top) * f
-            box = (x, y2, x + p.width, y2 + p.height)
-            if box[3] > area[3] + 1e-9 or any(_overlaps(box, _grow(s, GAP - 1e-9)) for s in stays):
-                return False
-        return True
+    def limit(w: float) -> float:  # a block beside the title block may run the full height
+        return ah if w <= aw - TB_W - GAP + 1e-9 else ah - TB_H - GAP
 
-    f = most
-    while f > 1.0 and not ok(f):
-        f = max(1.0, f - 0.02)
-    if f <= 1.0 + 1e-9:
-        return placed
-    return [(p, x, y) if p.pid in fixed else (p, x, top + (y - top) * f) for p, x, y in placed]
+    out: list[list[Block]] = []
+    for grp in groups:
+        phi = grp[0].phi
+        if grp[0].kind in _SINGLE or phi is None:
+            out.extend([Block([(p, 0.0, 0.0)], p.width, p.height, p.phi)] for p in grp)
+            continue
+        rest, part = list(grp), 0
+        while rest:
+            title = heading(phi, numbers.get(phi), lang, part)
+            tried = [pack_block(rest, w, limit(w), GAP, _free_spots, title) for w in widths(aw, rest)]
+            fewest = min(len(t[1]) for t in tried)
+            if fewest == 0:
+                out.append([t[0] for t in tried if not t[1]])
+                break
+            blk, left = next(t for t in tried if len(t[1]) == fewest)
+            if not blk.panels:  # too big for a framed block: the panel alone, unframed
+                p = rest[0]
+                blk, left = Block([(p, 0.0, 0.0)], p.width, p.height, p.phi), rest[1:]
+            out.append([blk])
+            rest, part = left, part + 1
+    return out
+
+
+def _place_blocks(blks: list[list[Block]], taken: list[list[Box]], area: Box,
+                  path: str) -> list[list[tuple[Block, float, float]]]:
+    """Blocks one after another on the sheets (pinned panels already there): each in the
+    shape and spot that keep the current sheet's skyline lowest, else on the next sheet."""
+    tks = [list(t) for t in taken]
+    out: list[list[tuple[Block, float, float]]] = [[] for _ in tks]
+    tb = tks[0][0]
+    cur = 0
+    prev: Box | None = None
+    for n, shapes in enumerate(blks):
+        after = blks[n + 1] if n + 1 < len(blks) else []
+        while True:
+            best = None
+            for b in shapes:
+                spot = place_block(b, area, tks[cur], prev, _free_spots, GAP)
+                if spot is None:
+                    continue
+                box = (spot[0], spot[1], spot[0] + b.width, spot[1] + b.height)
+                # one step ahead: a shape that leaves room for the next block on this sheet wins
+                room = any(place_block(c, area, tks[cur] + [box], box, _free_spots, GAP) is not None
+                           for c in after)
+                cost = (not room, spot[1] + b.height + 0.05 * spot[0], spot[1], spot[0])
+                if best is None or cost < best[0]:
+                    best = (cost, b, spot)
+            if best is not None:
+                break
+            if not out[cur] and len(tks[cur]) == 1:  # pragma: no cover - blocks fit an empty sheet
+                raise InputError(f"a block of {shapes[0].width:.0f}×{shapes[0].height:.0f} mm does not fit",
+                                 file=path, field="sheet.format")
+            cur, prev = cur + 1, None
+            if cur == len(tks):
+                tks.append([tb])
+                out.append([])
+        _, b, spot = best
+        box = (spot[0], spot[1], spot[0] + b.width, spot[1] + b.height)
+        tks[cur].append(box)
+        out[cur].append((b, spot[0], spot[1]))
+        prev = box
+    while len(out) > 1 and not out[-1] and len(tks[-1]) == 1:
+        out.pop()
+    return out
 
 
 _SINGLE = ("positions", "legend")  # drawing-wide panels: a block of their own

@@ -49,6 +49,7 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     s = sub.add_parser("solve", help="solve a scene: table per position, JSON")
     s.add_argument("scene", help="scene file (TOML)")
     s.add_argument("--json", metavar="PATH", help="write results as JSON ('-' for stdout)")
+    s.add_argument("--csv", metavar="PATH", help="write the tables over the positions as CSV ('-' for stdout)")
     s.add_argument("--protocol", action="store_true", help="print the construction protocol")
     s.add_argument("--quiet", action="store_true", help="no table on stdout")
     s.set_defaults(func=_solve)
@@ -84,6 +85,14 @@ def _solve(args: argparse.Namespace) -> int:
 
     refuse_input(args.json, args.scene)
     sol = solve_scene(load_scene(args.scene))
+    if getattr(args, "csv", None):
+        from plans.cycle.results import cycle_csv
+
+        text = cycle_csv(sol.cycle) if sol.cycle is not None else ""
+        if args.csv == "-":
+            sys.stdout.write(text)
+            return 0
+        atomic_write(args.csv, text)
     if args.json == "-":
         sys.stdout.write(dumps(to_json(sol)))
         return 0

@@ -31,6 +31,7 @@ class Solution:
     kinematics: Kinematics
     plans: tuple[PositionPlans, ...]
     forces: Any = None  # (ForceAnalysis, LeverAnalysis) from plans.forces when asked
+    cycle: Any = None  # plans.cycle.results.CycleResult: tables over the positions, dynamics, diagrams
 
 
 def solve_scene(scene: Scene) -> Solution:
@@ -51,7 +52,9 @@ def _solve_scene(scene: Scene) -> Solution:
         from plans.forces import analysis as _forces  # loaded only when asked for
 
         forces = _forces.kinetostatics(scene, kin)
-    return Solution(scene, st, kin, plans, forces)
+    from plans.cycle.results import solve_cycle
+
+    return Solution(scene, st, kin, plans, forces, solve_cycle(scene, kin, plans))
 
 
 def _xy(z: complex) -> list[float]:
@@ -105,6 +108,10 @@ def to_json(sol: Solution) -> dict[str, Any]:
 
         for pos, extra in zip(out["positions"], force_json(sol.forces[1]), strict=True):
             pos.update(extra)
+    if sol.cycle is not None:
+        from plans.cycle.results import cycle_json
+
+        out.update(cycle_json(sol.cycle))
     return out
 
 
@@ -159,6 +166,10 @@ def table(sol: Solution, protocol: bool = False) -> str:
                     lines.append(f"  construction of the {plan.kind} plan:")
                     lines += ["   " + s for s in plan.protocol().splitlines()]
         lines.append("")
+    if sol.cycle is not None:
+        from plans.cycle.results import cycle_text
+
+        lines.append(cycle_text(sol.cycle))
     return "\n".join(lines)
 
 

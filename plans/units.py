@@ -37,3 +37,23 @@ def parse_length(value: object, default_unit: str) -> float:
 def rpm_to_rad_s(n: float) -> float:
     """ω = π n / 30."""
     return math.pi * n / 30.0
+
+
+#: A value within this fraction of its scale is zero up to round-off: written 0, drawn as a point.
+DUST = 1e-9
+
+
+def clean(x: float, scale: float) -> float:
+    """``x``, or 0.0 where it is zero up to round-off against ``scale`` (the size of the plan,
+    polygon or quantity it belongs to); -0.0 becomes 0.0."""
+    return 0.0 if abs(x) <= DUST * abs(scale) else x + 0.0
+
+
+def percent(read: float, exact: float, ref: float = 0.0) -> float | None:
+    """The difference of a reading, %: 100·(read − exact)/max(|exact|, ref), the same in
+    ``solve``, on the sheet and in the check report.  None where the exact value is zero up to
+    round-off (against ``ref``, or itself when no ref): print the absolute difference instead."""
+    den = max(abs(exact), ref)
+    if den == 0 or abs(exact) <= DUST * max(ref, abs(read)):
+        return None
+    return clean(100.0 * (read - exact) / den, 100.0)

@@ -65,14 +65,19 @@ def test_marked_sheet_lists_failures_and_findings(report):
     assert sheets and (sheets[0].width, sheets[0].height) == (841.0, 594.0)
     texts = " ".join(p.label.plain for sh in sheets for p in sh.prims if p.op == "text" and p.label)
     assert "[percent]" in texts and "[duplicate]" in texts and "[symmetry]" in texts
-    assert "Fbal_diff_pct = 6.18" in texts  # names keep their underscores after the first
+    assert "δFур, % = 6.18" in texts  # quantities typeset, not raw keys
+    assert "F_bal" not in texts and "M_Phi" not in texts
     rings = [p for sh in sheets for p in sh.prims if p.op == "circle" and p.eid.endswith("-student")]
     assert len(rings) >= 30
 
 
 def test_overlay_is_one_to_one_on_the_students_sheet(report):
     sheets = overlay_sheets(report, language="ru")
-    assert (sheets[0].width, sheets[0].height) == (841.0, 594.0)  # sheet = "A1" in the check file
+    # the plans at 1:1 on the smallest sheet that holds them (not a mostly empty A1)
+    assert len(sheets) == 1 and (sheets[0].width, sheets[0].height) in ((297.0, 210.0), (420.0, 297.0),
+                                                                         (594.0, 420.0))
+    used = sum(p.width * p.height for p, _, _ in sheets[0].placed)
+    assert used > 0.2 * sheets[0].width * sheets[0].height
     prims = [p for sh in sheets for p in sh.prims]
     # 1:1: p_v a is 82 mm on the overlay as on the student's sheet
     panel = plan_with_marks(report, _plan(report, 45.0, "velocity"), "ru", overlay=True)

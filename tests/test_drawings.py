@@ -131,8 +131,12 @@ def test_dead_position_vector_is_zero_length_and_present(v_svgs):
     assert label is not None and _text(label).replace(" ", "") == "pv,b"
 
 
+def _sheet_with(roots, pid: str):
+    return next(r for r in roots if r.find(f".//{SVG}g[@id='{pid}']") is not None)
+
+
 def test_component_vectors_are_distinguishable(v_svgs):
-    root = v_svgs[0]
+    root = _sheet_with(v_svgs, "acceleration-45")
     g_n = root.find(f".//{SVG}g[@id='acceleration-45-a_BA-n']")
     g_t = root.find(f".//{SVG}g[@id='acceleration-45-a_BA-tau']")
     g_a = root.find(f".//{SVG}g[@id='acceleration-45-a_B']")
@@ -144,8 +148,8 @@ def test_component_vectors_are_distinguishable(v_svgs):
 
 
 def test_scales_written_as_the_course_writes_them(v_svgs):
-    root = v_svgs[0]
-    assert _text(root.find(f".//{SVG}text[@id='velocity-45-scale']")).startswith("μv = 6,667 мм/(м/с)")
+    root = _sheet_with(v_svgs, "velocity-45")
+    assert _text(root.find(f".//{SVG}text[@id='velocity-45-scale']")).startswith("μv = 5 мм/(м/с)")
     assert "M 1:1" in _text(root.find(f".//{SVG}text[@id='scheme-45-scale']"))
 
 
@@ -156,10 +160,10 @@ def test_k_style_scales(tmp_path):
     p = tmp_path / "k.toml"
     p.write_text(text, encoding="utf-8")
     d = draw(p)
-    root = ET.fromstring(d.sheets[0].svg())
+    root = _sheet_with([ET.fromstring(sh.svg()) for sh in d.sheets], "velocity-45")
     t = _text(root.find(f".//{SVG}text[@id='velocity-45-scale']"))
-    assert t.startswith("Kv = 0.15 (m/s)/mm")
-    assert _stated_scale(root, "velocity-45") == pytest.approx(1 / 0.15)
+    assert t.startswith("Kv = 0.2 (m/s)/mm")
+    assert _stated_scale(root, "velocity-45") == pytest.approx(1 / 0.2)
 
 
 # --------------------------------------------------------------------------- the sheet

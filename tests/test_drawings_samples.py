@@ -110,6 +110,46 @@ def test_no_overlaps_in_any_sample(drawn):
         assert not bad, panel.pid
 
 
+def _segments(prims):
+    from drawings.backend import arc_points
+
+    for p in prims:
+        if p.op in ("line", "polyline"):
+            pts = list(p.pts)
+        elif p.op == "polygon":
+            pts = list(p.pts) + list(p.pts[:1])
+        elif p.op == "circle":
+            pts = arc_points(p.pts[0], p.r, 0.0, 2 * 3.141592653589793, 48)
+        elif p.op == "arc":
+            pts = arc_points(p.pts[0], p.r, p.a0, p.a1, 48)
+        else:
+            continue
+        if len(pts) >= 2:
+            yield p, pts
+
+
+def test_no_label_crossed_by_a_line_or_arrow_in_any_sample(drawn):
+    """Every label of every panel (every position) clear of every line, arrow head, circle and
+    arc of its panel (a line grazing the box by under 0.25 mm aside), checked with shapely."""
+    import shapely
+
+    _, d, _ = drawn
+    bad = []
+    for panel in d.panels:
+        lines = [(p, shapely.LineString(pts)) for p, pts in _segments(panel.prims)]
+        tree = shapely.STRtree([g for _, g in lines])
+        for t in panel.prims:
+            if t.op != "text" or t.label is None:
+                continue
+            b = t.label.box
+            if b[2] - b[0] <= 0.5 or b[3] - b[1] <= 0.5:
+                continue
+            box = shapely.box(b[0] + 0.25, b[1] + 0.25, b[2] - 0.25, b[3] - 0.25)
+            for i in tree.query(box, predicate="intersects"):
+                bad.append((panel.pid, t.eid, lines[int(i)][0].eid or lines[int(i)][0].op))
+    assert not bad, bad[:10]
+
+
 def test_structure_matches_golden(drawn):
     path, d, _ = drawn
     got = _structure(d)
@@ -122,3 +162,17 @@ def test_structure_matches_golden(drawn):
     want = json.loads(golden.read_text(encoding="utf-8"))
     assert [len(s["panels"]) for s in got["sheets"]] == [len(s["panels"]) for s in want["sheets"]]
     assert got == want
+
+
+def test_no_numerical_dust_on_the_sheets(drawn):
+    """Values zero up to round-off are written 0 on the sheets: no number in e-notation below
+    1e-12 (1e-9 of the smallest scale of these samples), and no scale derived from a zero vector."""
+    _, d, _ = drawn
+    dust = re.compile(r"\d(?:[.,]\d+)?[eE]-(?:1[2-9]|[2-9]\d)")
+    for sh in d.sheets:
+        for p in sh.prims:
+            if p.op == "text" and p.label is not None:
+                assert not dust.search(p.label.plain), (p.eid, p.label.plain)
+    for panel in d.panels:
+        if panel.scale is not None:
+            assert 1e-6 < panel.scale < 1e6, (panel.pid, panel.scale)

@@ -311,6 +311,10 @@ def run_bench(quick: bool = False, samples: Path | None = None, progress: Callab
     records += bench_peers(perf)
     log("forces ...")
     records += bench_forces(cases + vcases, sizes, budget)
+    log("cycle ...")
+    from plans.accuracy import cycle_bench  # the cycle's dynamics and sheets
+
+    records += cycle_bench.records(samples, quick)
     log("draftsman Monte Carlo ...")
     mc = mc_samples or (400 if quick else 4000)
     model = model or DraftsmanModel()

@@ -41,6 +41,8 @@ class Item:
 
     @property
     def tolerance_pct(self) -> float | None:
+        if self.error_pct is None and self.student is not None:  # no % against a zero exact value
+            return None
         return 100.0 * self.tolerance / abs(self.exact) if self.exact else None
 
     def to_json(self) -> dict:

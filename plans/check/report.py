@@ -47,7 +47,7 @@ import csv
 import io
 import re
 import sys
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -69,6 +69,9 @@ from plans.check.providers import STUDENT_ONLY, Context, Exact, exact_value, kno
 from plans.check.relations import relation_findings
 from plans.errors import InputError, OutputError, PlansError, one_line
 from plans.io import atomic_write, dumps, refuse_input, write_all
+from plans.units import DUST, percent
+
+_SCALE_UNIT = {"length": "mm/m", "velocity": "mm/(m/s)", "acceleration": "mm/(m/s²)", "force": "mm/N"}
 
 
 @dataclass(frozen=True)
@@ -167,6 +170,8 @@ def check(cf: CheckFile) -> Report:
 
 def _items(cf: CheckFile, pos: StudentPosition, q: str, ex: Exact) -> list[Item]:
     """One item per figure written; a value that is its measured segment over μ joins it."""
+    if ex.value != 0 and abs(ex.value) <= DUST * ex.ref:  # zero up to round-off: exactly 0
+        ex = replace(ex, value=0.0)
     values = pos.written(q, "value")
     measured = pos.written(q, "measured")
     mu = ex.mm_per_unit
@@ -204,9 +209,8 @@ def _items(cf: CheckFile, pos: StudentPosition, q: str, ex: Exact) -> list[Item]
         assert w is not None
         where = ", ".join(dict.fromkeys(x.where for x in (m, v) if x is not None and x.where))
         diff = judged - ex.value
-        err_pct = None if ex.value == 0 else 100.0 * diff / abs(ex.value)
-        if ex.value == 0 and abs(diff) <= 1e-12:
-            err_pct = 0.0
+        # one definition with solve and the sheet; none against an exact value that vanishes
+        err_pct = percent(judged, ex.value) if abs(ex.value) > DUST * ex.ref else None
         err_mm = None if not mu or student_mm is None or exact_mm is None else student_mm - exact_mm
         if t.model == "draftsman" and ex.tol_mm is not None and mu:
             tol = ex.tol_mm / mu
@@ -239,7 +243,7 @@ def table(report: Report) -> str:
              f"propagated; else course rule ±{t.rule_pct:g} %" if t.model == "draftsman"
              else f"course rule ±{t.rule_pct:g} %")
     lines = [f"Check of {cf.student} — {cf.scene.title}",
-             f"  file {cf.path}; scales " + ", ".join(f"{k} {v:.4g} mm/unit" for k, v in cf.scales.items()),
+             f"  file {cf.path}; scales " + ", ".join(f"{k} {v:.4g} {_SCALE_UNIT.get(k, 'mm/unit')}" for k, v in cf.scales.items()),
              f"  tolerance: {model}"]
     head = f"  {'quantity':<16}{'student':>14}{'exact':>14}{'error':>10}{'err mm':>9}{'tol mm':>8}{'tol %':>8}  verdict  where"
     for pos in cf.positions:
@@ -348,6 +352,10 @@ def run(args: argparse.Namespace) -> int:
             return 2
         for out_path in (args.json, args.csv):
             refuse_input(out_path, target)
+        from plans.cycle import check as cycle_check  # cycle tables (a dynamics sheet)
+
+        if cycle_check.is_cycle_check(target):
+            return cycle_check.run_file(target, args)
         report = check_file(target)
         for out_path in (args.json, args.csv):
             refuse_input(out_path, report.check.scene.path)

@@ -22,6 +22,8 @@ from plans.forces.polygons import ForceAnalysis, force_polygons
 from plans.forces.shared import RULER_MM, mu_force, nice_scale, safe_div, unit_vector
 from plans.kinematics.exact import cross
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step
+from plans.kinematics.scales import round_scale
+from plans.units import clean, percent
 
 C = NDArray[np.complex128]
 R = NDArray[np.float64]
@@ -167,7 +169,7 @@ def lever_plan(lv: LeverAnalysis, k: int) -> Plan:
                                                   f"about the pole p (μv = {lv.scale:g} mm/(m/s)).")]
     # force vectors drawn at a common force scale, only for the picture
     fmax = max([float(np.abs(it.F[k])) for it in lv.forces] + [abs(float(lv.by_lever[k]))], default=0.0)
-    mu_f = 30.0 / fmax if fmax > 0 else 1.0
+    mu_f = round_scale(fmax, 30.0) if fmax > 0 else 1.0  # a round μF, the largest ≤ 30 mm
     for it in lv.forces:
         w = complex(it.w[k])
         pts.setdefault(it.point, (w.real, w.imag))
@@ -202,7 +204,9 @@ def _xy(z: complex) -> list[float]:
     return [float(z.real) + 0.0, float(z.imag) + 0.0]  # + 0.0 turns −0.0 into 0.0
 
 
-def _num(x: float, ok: bool = True) -> float | None:
+def _num(x: float | None, ok: bool = True) -> float | None:
+    if x is None:
+        return None
     x = float(x)
     return x if ok and np.isfinite(x) else None
 
@@ -240,6 +244,7 @@ def force_json(lv: LeverAnalysis) -> list[dict]:
                                         "offset": off if has else None, "couple": float(rc.M[k])}
         c = fa.crank
         ok = bool(lv.valid[k])
+        cycle = float(np.max(np.abs(kin_bal)))
         bal = {
             "kind": c.kind,
             "force": ({"point": c.point, "vector": _xy(complex(c.F_bal[k] * c.e_bal[k]))}
@@ -248,7 +253,7 @@ def force_json(lv: LeverAnalysis) -> list[dict]:
             "by_kinetostatics": float(kin_bal[k]),
             "by_lever": _num(lev[k], ok),
             "by_power": _num(powr[k], ok),
-            "exact_difference_percent": _num(_pct(float(lev[k]), float(kin_bal[k])), ok),
+            "exact_difference_percent": _num(_pct(float(lev[k]), clean(float(kin_bal[k]), cycle)), ok),
             "difference_percent": _num(_pct(*_drawn_balancing(lv, k)), ok),
         }
         inertia: dict[str, dict] = {}
@@ -268,11 +273,10 @@ def force_json(lv: LeverAnalysis) -> list[dict]:
 NOISE_MM = 1e-6
 
 
-def _pct(x: float, ref: float) -> float:
-    """The coursework's δ = 100 (F_lever − F_kin)/F_kin, %; 0 when both vanish."""
-    if ref == 0:
-        return 0.0 if x == 0 else float("nan")
-    return 100.0 * (x - ref) / ref
+def _pct(x: float, ref: float) -> float | None:
+    """The coursework's δ = 100 (F_lever − F_kin)/F_kin, % (:func:`plans.units.percent`);
+    None against a balancing load that vanishes."""
+    return percent(x, ref)
 
 
 def _ruler(mm: float) -> float:
@@ -313,18 +317,26 @@ class Reading:
     exact: float
     unit: str
     compare: bool = True  # False for a row that is itself a difference
+    ref: float = 0.0  # size of the polygon read from: the floor of the % (plans.units.percent)
 
     @property
     def difference(self) -> float | None:
-        """(drawing − exact)/exact, %."""
-        if not self.compare or self.drawing is None or self.exact == 0:
+        """(drawing − exact)/max(|exact|, ref), %; None against a zero exact value."""
+        if not self.compare or self.drawing is None:
             return None
-        return 100.0 * (self.drawing - self.exact) / self.exact
+        return percent(self.drawing, self.exact, self.ref)
 
     def cells(self) -> tuple[str, str, str, str]:
         d = self.difference
-        return (self.quantity, "" if self.drawing is None else f"{self.drawing + 0.0:.4g} {self.unit}",
-                f"{self.exact + 0.0:.6g} {self.unit}", "" if d is None else f"{d:+.2f} %")
+        scale = max(abs(self.exact), self.ref, abs(self.drawing or 0.0))
+        if d is not None:
+            diff = f"{d:+.2f} %"
+        elif self.compare and self.drawing is not None:  # against zero: the absolute difference
+            diff = f"{clean(self.drawing - self.exact, scale):+.4g} {self.unit}"
+        else:
+            diff = ""
+        return (self.quantity, "" if self.drawing is None else f"{clean(self.drawing, scale):.4g} {self.unit}",
+                f"{clean(self.exact, scale):.6g} {self.unit}", diff)
 
 
 def force_rows(lv: LeverAnalysis, k: int) -> list[Reading]:
@@ -335,10 +347,11 @@ def force_rows(lv: LeverAnalysis, k: int) -> list[Reading]:
     big = max([abs(complex(f.F[k])) for f in fa.applied.forces]
               + [abs(complex(rc.F[k])) for rc in fa.reactions()] + [1e-300])
     for fp in force_polygons(fa, k):
+        ref = max((sg.value for sg in fp.plan.segments), default=0.0)
         for sg in fp.plan.segments:
-            exact = sg.value if sg.value > 1e-12 * big else 0.0  # rounding noise of a vanishing force
+            exact = clean(sg.value, big)  # rounding noise of a vanishing force
             rows.append(Reading(f"{sg.label} (polygon {fp.group}, μF = {fp.scale:g} mm/N)",
-                                fp.reading(sg.label), exact, "N"))
+                                fp.reading(sg.label), exact, "N", ref=ref))
     mu_l = fa.scene.scales.get("length", 1000.0)  # the mechanism's drawing, 1:1 unless the scene says
     arms = [(eq, lab, h) for gf in fa.groups for (eq, lab), h in gf.arms.items()]
     arms += [(f"M_{fa.scene.driver.pivot}({fa.crank.link})", lab, h) for lab, h in fa.crank.arms.items()]
@@ -353,15 +366,20 @@ def force_rows(lv: LeverAnalysis, k: int) -> list[Reading]:
     unit = "N" if fa.crank.kind == "force" else "N·m"
     exact = float(fa.balancing[k])
     lev_read, kin_read = _drawn_balancing(lv, k)
-    rows.append(Reading("F_bal by kinetostatics", kin_read, exact, unit))
+    cycle = float(np.max(np.abs(fa.balancing))) if fa.n else 0.0
+    exact = clean(exact, cycle)
+    sym = "F_bal" if fa.crank.kind == "force" else "M_bal"
+    rows.append(Reading(f"{sym} by kinetostatics", clean(kin_read, cycle), exact, unit))
     ok = bool(lv.valid[k])
-    rows.append(Reading("F_bal by Zhukovsky's lever", lev_read if ok else None,
-                        float(lv.signed(lv.by_lever)[k]), unit))
-    rows.append(Reading("F_bal by power balance", None, float(lv.signed(lv.by_power)[k]), unit))
-    pct = _pct(lev_read, kin_read) if ok else None
-    rows.append(Reading("δ = (F_lever − F_kin)/F_kin (coursework, from the drawings)",
-                        pct if pct is not None and np.isfinite(pct) else None,
-                        _pct(float(lv.signed(lv.by_lever)[k]), exact) if exact else 0.0, "%", False))
+    rows.append(Reading(f"{sym} by Zhukovsky's lever", clean(lev_read, cycle) if ok else None,
+                        clean(float(lv.signed(lv.by_lever)[k]), cycle), unit))
+    rows.append(Reading(f"{sym} by power balance", None, clean(float(lv.signed(lv.by_power)[k]), cycle), unit))
+    # δ against a balancing load that vanishes here is not a percentage: left out
+    pct = percent(lev_read, kin_read) if ok and exact else None
+    ex_pct = percent(float(lv.signed(lv.by_lever)[k]), exact) if exact else None
+    letter = sym[0]
+    rows.append(Reading(f"δ = ({letter}_lever − {letter}_kin)/{letter}_kin (coursework, from the drawings)",
+                        pct, 0.0 if ex_pct is None else ex_pct, "%", False))
     return rows
 
 
@@ -378,7 +396,8 @@ def table_lines(fa: ForceAnalysis, lv: LeverAnalysis, k: int) -> list[str]:
         q, d, e, diff = r.cells()
         lines.append(f"  {q:58s} {d:>14s} {e:>16s} {diff:>11s}")
     b = lv.signed(lv.by_lever)[k] if lv.valid[k] else None
-    lines.append(f"  balancing {fa.crank.kind}: by kinetostatics {float(fa.balancing[k]):.6g} {unit}, "
-                 f"by lever {'-' if b is None else f'{float(b):.6g}'} {unit} (positive along the motion of "
+    cyc = float(np.max(np.abs(fa.balancing)))
+    lines.append(f"  balancing {fa.crank.kind}: by kinetostatics {clean(float(fa.balancing[k]), cyc):.6g} {unit}, "
+                 f"by lever {'-' if b is None else f'{clean(float(b), cyc):.6g}'} {unit} (positive along the motion of "
                  f"{fa.crank.point})")
     return lines

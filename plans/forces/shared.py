@@ -18,22 +18,27 @@ R = NDArray[np.float64]
 
 #: What a draftsman reads off a ruler, mm (readings are rounded to this).
 RULER_MM = 0.5
-#: Nice values of K = 1/μ (unit per mm), times powers of ten: consecutive ratios ≤ 1.25,
-#: so the longest vector always lands between 80 and 100 mm.
-_NICE = (1.0, 1.2, 1.25, 1.5, 1.6, 2.0, 2.5, 3.0, 3.5, 4.0, 5.0, 6.0, 7.0, 8.0)
+#: Round values of K = 1/μ (unit per mm), times powers of ten; the longest vector lands
+#: between 50 and 100 mm.
+_NICE = (1.0, 2.0, 2.5, 4.0, 5.0)  # round both ways: μ and K = 1/μ
 
 
 def nice_scale(longest: float, target_mm: float = 100.0) -> float:
-    """μF (mm per N): K a round number from a denser set, the longest vector 80..100 mm."""
+    """μF (mm per N): K a round number, the longest vector 50..100 mm."""
     return construction.nice_scale(longest, target_mm, _NICE)
 
 
 def mu_force(fa: ForceAnalysis, values: list[complex]) -> float:
-    """The scene's μF when it gives one, else a nice scale for the longest of ``values``."""
+    """The scene's μF when it gives one, else a round scale for the longest of ``values``;
+    never from forces that are zero up to round-off (then the cycle's largest sets it)."""
     given = fa.scene.scales.get("force")
     if given:
         return given
-    return nice_scale(max((abs(v) for v in values), default=0.0))
+    longest = max((abs(v) for v in values), default=0.0)
+    cycle = max((float(np.max(np.abs(rc.F))) for rc in fa.reactions()), default=0.0)
+    if longest <= 1e-9 * cycle:  # zero up to round-off: a point, at the cycle's scale
+        longest = cycle
+    return nice_scale(longest)
 
 
 def unit_vector(z: C) -> C:

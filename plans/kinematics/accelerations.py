@@ -21,6 +21,7 @@ from plans.kinematics.dyads import (
     read_rates,
 )
 from plans.kinematics.structure import Group
+from plans.units import clean
 
 
 class _VelReader:
@@ -87,7 +88,7 @@ def _normal(b: Builder, vr: _VelReader, link: int, frm: str, frm_xy: np.ndarray,
     vec = b.pencil.vector(b.mu * w * w * ln, P - X, ln, lb)
     b.add(lb, frm_xy + vec)
     b.step("lay off", (frm,), lb, lambda: (
-        f"a_{Xn}{Pn}^n = v_{Xn}{Pn}²/l_{Pn}{Xn} = {b.s(w * w * ln):.6g} m/s²: {abs(b.s(vec)):.3f} mm from {frm} "
+        f"a_{Xn}{Pn}^n = v_{Xn}{Pn}²/l_{Pn}{Xn} = {clean(b.s(w * w * ln), b.s(b.ref)):.6g} m/s²: {abs(b.s(vec)):.3f} mm from {frm} "
         f"parallel to {Xn}{Pn}, from {Xn} toward {Pn}"))
     b.seg(frm, lb, "normal", f"a_{Xn}{Pn}^n", b.snap.w[link] ** 2 * ln)
     return lb, frm_xy + vec
@@ -104,7 +105,7 @@ def _coriolis(b: Builder, vr: _VelReader, guide_link: int, v_rel: np.ndarray, fr
     vec = b.pencil.vector(b.mu * 2 * np.abs(w) * v_read, 1j * np.sign(w) * v_rel, 0.0, lb)
     b.add(lb, frm_xy + vec)
     b.step("lay off", (frm,), lb, lambda: (
-        f"a^k_{label} = 2·ω{guide_link}·v_r = {abs(b.s(2 * w * v_rel)):.6g} m/s²: {abs(b.s(vec)):.3f} mm, "
+        f"a^k_{label} = 2·ω{guide_link}·v_r = {clean(abs(b.s(2 * w * v_rel)), b.s(b.ref)):.6g} m/s²: {abs(b.s(vec)):.3f} mm, "
         f"v_r turned 90° in the sense of ω{guide_link}"))
     b.seg(frm, lb, "coriolis", f"a^k_{label}", exact)
     return lb, frm_xy + vec

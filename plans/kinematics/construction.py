@@ -28,8 +28,9 @@ from plans.kinematics.dyads import Builder, Mixed, PerfectPencil, Scheme, plans_
 from plans.kinematics.exact import Kinematics
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step
 from plans.tolerances import COINCIDE_REL
+from plans.units import clean, percent
 
-_NICE = (1.0, 1.2, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0)
+_NICE = (1.0, 2.0, 2.5, 4.0, 5.0)  # round both ways: μ and K = 1/μ
 
 
 def nice_scale(longest: float, target_mm: float = 100.0, mantissas: tuple[float, ...] = _NICE) -> float:
@@ -61,7 +62,12 @@ class Reading:
 
     @property
     def difference(self) -> float:
-        return self.value - self.exact
+        return clean(self.value - self.exact, max(abs(self.exact), self.ref))
+
+    @property
+    def percent(self) -> float | None:
+        """Signed difference, % of max(|exact|, ref); None where the exact value is zero."""
+        return percent(self.value, self.exact, self.ref)
 
     @property
     def relative(self) -> float:
@@ -247,29 +253,27 @@ def build_many(kin: Kinematics, ks: Sequence[int], *, velocity_scale: float | No
 
 def default_scales(kin: Kinematics) -> tuple[float, float]:
     """μv and μa as the course picks them: the crank pin's vector (the known one)
-    drawn 75–100 mm, the same scale at every position."""
-    d = kin.scene.driver
-    l1 = abs(kin.scene.links[d.link].points[kin.scene.links[d.link].axis[1]])
-    va = abs(d.omega) * l1
-    aa = l1 * math.hypot(d.omega**2, d.eps)
-    return nice_scale(va), nice_scale(aa)
+    drawn 50–100 mm at a round scale (or as ``[scales]`` says), the same at every position."""
+    from plans.kinematics.scales import common_scales
+
+    return common_scales(kin)
 
 
 def build_all(kin: Kinematics) -> list[PositionPlans]:
-    """Plans at every position of the scene, with one scale for all (as on one sheet), built
-    together; position by position only where a label differs between positions or a group
+    """Plans at every position of the scene, with one round scale for all (as on one sheet;
+    a position whose plan would run too long gets a round one of its own), built together; position by position only where a label differs between positions or a group
     locks (the error then names the first position, as drawn one by one)."""
+    from plans.kinematics.scales import refit
+
     mv, ma = default_scales(kin)
-    mv = kin.scene.scales.get("velocity", mv)
-    ma = kin.scene.scales.get("acceleration", ma)
     want_mv, want_ma = _scales(kin, mv, ma)
     if want_mv is None:
         return [PositionPlans(float(phi), None, None, ()) for phi in kin.phi_deg]
     try:
         together = _Together(kin, slice(None), want_mv, want_ma)
     except (Mixed, Locked):
-        return [build(kin, k, velocity_scale=mv, acceleration_scale=ma) for k in range(kin.n)]
-    return [together.position(k) for k in range(kin.n)]
+        return refit(kin, [build(kin, k, velocity_scale=mv, acceleration_scale=ma) for k in range(kin.n)], build)
+    return refit(kin, [together.position(k) for k in range(kin.n)], build)
 
 
 __all__ = ["Reading", "PositionPlans", "build", "build_all", "build_many", "default_scales", "nice_scale"]

@@ -26,6 +26,8 @@ OUTPUTS: dict[str, tuple[str, ...]] = {
     "acceleration_plan": ("velocity_plan",),
     "force_polygons": ("acceleration_plan",),
     "lever": ("acceleration_plan",),
+    "diagrams": ("positions",),  # kinematic diagrams over the cycle ([diagrams], plans.cycle)
+    "dynamics": ("positions",),  # machine dynamics and the flywheel ([dynamics], plans.cycle)
 }
 
 #: F_ij conventions: seed 003 (force on link i from link j) or seed 000 (of link i on link j).
@@ -122,9 +124,14 @@ class Scene:
     scale_style: str  # "mu" (mm per unit) or "K" (unit per mm)
     fij: str
     raw: dict[str, Any] = field(repr=False, default_factory=dict)
+    titles: dict[str, str] = field(default_factory=dict)  # per sheet language: {"ru": ..., "en": ...}
     #: what is derived once per scene (its structure, the solver's constants); not copied by
     #: dataclasses.replace, so a changed scene derives its own
     memo: dict[Any, Any] = field(init=False, repr=False, compare=False, default_factory=dict)
+
+    def title_in(self, lang: str) -> str:
+        """The title in a sheet's language (the plain title where none is given for it)."""
+        return self.titles.get(lang, self.title)
 
     def wants(self, output: str) -> bool:
         return output in self.outputs
@@ -186,10 +193,10 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
                              f"{command_for(kind)}expected kind = \"linkage\" or no kind")
     r.keys(data, TOP_KEYS, "")
     unit = r.choice(data, "unit", "", sorted(LENGTH_UNITS), "mm")
-    title = data.get("title", Path(path).stem)
-    if not isinstance(title, str):
-        raise r.fail("title", "expected a string")
+    title, titles = _title(r, data.get("title", Path(path).stem))
     r.string(title, "title", limit=2000)
+    for lang, text in titles.items():
+        r.string(text, f"title.{lang}", limit=2000)
     frame = data.get("frame")
     if isinstance(frame, bool) or not isinstance(frame, int) or not 0 < frame < 1_000_000:
         raise r.fail("frame", "expected the frame's link number (a positive integer)")
@@ -221,7 +228,7 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
     fij = r.choice(data, "fij", "", FIJ_CONVENTIONS, "on_i_from_j")
     return Scene(path=path, title=title, frame=frame, frame_points=frame_points, links=links,
                  joints=joints, driver=driver, branches=branches, outputs=outputs,
-                 scales=scales, scale_style=style, fij=fij, raw=data)
+                 scales=scales, scale_style=style, fij=fij, raw=data, titles=titles)
 
 
 def _link_id(r: Reader, key: str) -> int:
@@ -505,6 +512,16 @@ def _outputs(r: Reader, data: dict[str, Any]) -> frozenset[str]:
     return frozenset(wanted)
 
 
+def _title(r: Reader, value: Any) -> tuple[str, dict[str, str]]:
+    """``title = "..."`` or ``title = { ru = "...", en = "..." }`` (one per sheet language)."""
+    if isinstance(value, str):
+        return value, {}
+    if isinstance(value, dict) and value and all(k in ("ru", "en") and isinstance(v, str)
+                                                 for k, v in value.items()):
+        return str(value.get("en") or value.get("ru") or ""), {str(k): str(v) for k, v in value.items()}
+    raise r.fail("title", "expected a string or { ru = \"...\", en = \"...\" }")
+
+
 _SCALE_UNITS = {"length": "mm/m", "velocity": "mm/(m/s)", "acceleration": "mm/(m/s^2)", "force": "mm/N"}
 
 
@@ -516,8 +533,14 @@ def _scales(r: Reader, data: dict[str, Any]) -> tuple[dict[str, float], str]:
     for key, value in raw.items():
         if key == "style":
             continue
+        if isinstance(value, dict) and set(value) == {"known_mm"} and key in ("velocity", "acceleration"):
+            # the course habit: the known vector (crank pin) drawn this long, e.g. pa = 100 mm
+            out[f"{key}_known_mm"] = r.number(value, "known_mm", f"scales.{key}.", positive=True, limit=1e4)
+            continue
         if not isinstance(value, dict) or len(value) != 1 or not ({"mu", "K"} & set(value)):
-            raise r.fail(f"scales.{key}", "expected { mu = mm per unit } or { K = unit per mm }")
+            raise r.fail(f"scales.{key}", "expected { mu = mm per unit }, { K = unit per mm }"
+                         + (" or { known_mm = length of the known vector }"
+                            if key in ("velocity", "acceleration") else ""))
         kind = "mu" if "mu" in value else "K"
         x = r.number(value, kind, f"scales.{key}.", positive=True, limit=1e9, floor=1e-9)
         out[key] = x if kind == "mu" else 1.0 / x

@@ -1,0 +1,457 @@
+"""The engine-balancing sheet (seed 002): crankshaft scheme, phase diagrams of the first and
+second order, polygons of the inertia forces and of the turned moments with their closing
+vectors, the analytic table beside each polygon, counterweights and results.
+
+Reads the frozen results of :mod:`plans.balancing`; lays them out with the panel and sheet
+machinery of the linkage sheets (:mod:`drawings.panels`, :mod:`drawings.sheet`).
+"""
+
+from __future__ import annotations
+
+import cmath
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from plans.balancing.analysis import KINDS, Balance, Polygon, Resultant, balance
+from plans.balancing.engine import Engine, load_engine
+
+from .backend import HAIR, MAIN, Pt, Recording, Style
+from .common import Placer, arrow, dot, fmt
+from .fonts import metrics
+from .panels import LABEL_SIZE, SMALL_SIZE, VECTOR_STYLES, Panel, finish
+from .sheet import Sheet, SheetSpec, compose, sheet_spec
+from .text import layout
+
+_W: dict[str, tuple[str, str]] = {
+    "shaft": ("Схема коленчатого вала", "Crankshaft"),
+    "phase1": ("Фазовая диаграмма I порядка", "Phase diagram, first order"),
+    "phase2": ("Фазовая диаграмма II порядка", "Phase diagram, second order"),
+    "force-rotating": ("Силы инерции вращающихся масс", "Inertia forces of the rotating masses"),
+    "force-first_order": ("Силы инерции ПДМ I порядка", "Reciprocating inertia forces, first order"),
+    "force-second_order": ("Силы инерции ПДМ II порядка", "Reciprocating inertia forces, second order"),
+    "moment-rotating": ("Повёрнутые моменты вращающихся масс", "Turned moments of the rotating masses"),
+    "moment-first_order": ("Повёрнутые моменты сил ПДМ I порядка", "Turned moments, first order"),
+    "moment-second_order": ("Повёрнутые моменты сил ПДМ II порядка", "Turned moments, second order"),
+    "forward": ("прямое вращение", "turning with the crank"),
+    "backward": ("обратное вращение", "turning against the crank"),
+    "table": ("Таблица", "Table"),
+    "closed": ("многоугольник замкнут", "the polygon closes"),
+    "results": ("Неуравновешенные силы и моменты", "Unbalanced forces and moments"),
+    "cw": ("Противовесы", "Counterweights"),
+    "quantity": ("Величина", "Quantity"),
+    "amplitude": ("Амплитуда", "Amplitude"),
+    "dimless": ("Безразм.", "Dimensionless"),
+    "phase": ("Фаза, °", "Phase, °"),
+    "unit": ("Ед.", "Unit"),
+    "for": ("Для", "For"),
+    "plane": ("Плоскость z, м", "Plane z, m"),
+    "mr": ("m·r, кг·м", "m·r, kg·m"),
+    "mass": ("m, кг", "m, kg"),
+    "radius": ("r, м", "r, m"),
+    "angle": ("Угол, °", "Angle, °"),
+    "none": ("не нужны", "none needed"),
+    "exact": ("Проверка кинетостатикой", "Check by kinetostatics"),
+    "ref": ("плоскость приведения", "reference plane"),
+    "tdc": ("ВМТ", "TDC"),
+    "rotating": ("вращ.", "rotating"),
+    "first_order": ("ПДМ I", "recipr. I"),
+    "second_order": ("ПДМ II", "recipr. II"),
+    "N": ("Н", "N"),
+    "N*m": ("Н·м", "N·m"),
+    "err": ("ошибка ряда", "truncation error"),
+    "actual": ("действительный", "actual"),
+    "cw_first": ("силы и моменты ПДМ I порядка противовесом не уравновешиваются (балансирные валы)",
+                 "first-order reciprocating forces and moments: not by a counterweight (balancing shafts)"),
+    "cw_second": ("силы и моменты ПДМ II порядка противовесом не уравновешиваются (валы с 2ω)",
+                  "second-order reciprocating forces and moments: not by a counterweight (shafts at 2ω)"),
+}
+_SYM = {("force", "rotating"): "r_r", ("force", "first_order"): "r_I", ("force", "second_order"): "r_{II}",
+        ("moment", "rotating"): "m_r", ("moment", "first_order"): "m_I", ("moment", "second_order"): "m_{II}"}
+_ABS = {("force", "rotating"): "R_r", ("force", "first_order"): "R_I", ("force", "second_order"): "R_{II}",
+        ("moment", "rotating"): "M_r", ("moment", "first_order"): "M_I", ("moment", "second_order"): "M_{II}"}
+CLOSING = VECTOR_STYLES["closing"]
+ACTUAL = Style(width=0.35, stroke="#b3261e", dash=(2.5, 1.2))
+AXIS = Style(width=0.18, stroke="#333", dash=(6.0, 1.0, 1.0, 1.0), cls="axis")
+POLY_MM = 130.0  # the largest polygon extent on the sheet, mm
+STAR_R = 50.0  # radius of a phase diagram, mm
+
+
+def _deg(a: float) -> float:
+    """Radians as degrees in [0, 360), round-off at 360 shown as 0."""
+    d = round(math.degrees(a) % 360.0, 6)
+    return 0.0 if d >= 360.0 else d
+
+
+def _t(key: str, lang: str) -> str:
+    ru, en = _W[key]
+    return ru if lang == "ru" else en
+
+
+def _P(z: complex, s: float, o: Pt = (0.0, 0.0)) -> Pt:
+    """Engine plane -> paper: the real part is up, the imaginary part along the rotation
+    (counter-clockwise on the sheet, as the seed draws it)."""
+    return (o[0] - s * z.imag, o[1] - s * z.real)
+
+
+@dataclass(frozen=True)
+class BalancingDrawing:
+    """Everything drawn for one engine."""
+
+    engine: Engine
+    balance: Balance
+    spec: SheetSpec
+    panels: tuple[Panel, ...]
+    sheets: tuple[Sheet, ...]
+
+    def _repr_svg_(self) -> str:
+        return self.sheets[0].svg()
+
+
+def draw(path: str | Path | Engine, *, format: str | None = None, orientation: str | None = None,
+         language: str | None = None) -> BalancingDrawing:
+    """The sheets of an engine file."""
+    engine = path if isinstance(path, Engine) else load_engine(path)
+    spec = sheet_spec(engine.raw, engine.path, engine.title, format=format, orientation=orientation,
+                      language=language)
+    metrics()
+    b = balance(engine)
+    panels = build_panels(b, spec.language)
+    sheets = compose(panels, spec, "", engine.path)
+    return BalancingDrawing(engine, b, spec, tuple(panels), tuple(sheets))
+
+
+def build_panels(b: Balance, lang: str) -> list[Panel]:
+    e = b.engine
+    panels = [shaft_panel(e, lang), phase_panel(e, 1, lang), phase_panel(e, 2, lang)]
+    for _quantity, res in (("force", b.forces), ("moment", b.moments)):
+        for kind in KINDS:
+            R = res[kind]
+            panels.append(polygon_panel(R, lang))
+    panels.append(results_panel(b, lang))
+    panels.append(counterweights_panel(b, lang))
+    return panels
+
+
+# --------------------------------------------------------------------------- scheme and phase diagrams
+
+
+def shaft_panel(e: Engine, lang: str) -> Panel:
+    """The crankshaft from the side: the axis, each crank as its projection on the vertical
+    plane at its z, the cylinder numbers, the reference plane and the arms l_i."""
+    zs = [c.z for c in e.cylinders] + [e.reference_z]
+    span = max(max(zs) - min(zs), e.r)
+    s_z = 260.0 / span  # mm per m along the shaft
+    s_r = 30.0 / e.r  # mm per m of crank radius
+    # cylinder 1 on the left, whichever way z runs
+    sign = 1.0 if e.cylinders[0].z <= e.cylinders[-1].z else -1.0
+    z0 = min(zs) if sign > 0 else max(zs)
+    rec = Recording()
+    x = [sign * (c.z - z0) * s_z for c in e.cylinders]
+    lo, hi = -8.0, (max(zs) - min(zs)) * s_z + 8.0
+    rec.line((lo, 0.0), (hi, 0.0), AXIS, "shaft-axis")
+    for c, xc in zip(e.cylinders, x, strict=True):
+        y = -s_r * e.r * math.cos(c.crank)
+        rec.polyline([(xc - 3, 0.0), (xc - 3, y), (xc + 3, y), (xc + 3, 0.0)], MAIN, f"shaft-crank-{c.number}")
+        dot(rec, (xc, y), 0.8)
+    names: dict[float, list[str]] = {}  # cylinders in one plane (a V engine) share a label
+    for c, xc in zip(e.cylinders, x, strict=True):
+        names.setdefault(round(xc, 6), []).append(f"{c.name}: {fmt(_deg(c.crank), 4, lang)}°")
+    for xc, texts in names.items():
+        lab = layout(", ".join(texts), xc, -s_r * e.r - 4.0, SMALL_SIZE + 0.5, "middle", "bottom")
+        rec.text(lab, "label", f"shaft-label-{xc:g}")
+    xr = sign * (e.reference_z - z0) * s_z
+    rec.line((xr, -s_r * e.r - 2), (xr, s_r * e.r + 6), Style(width=0.25, stroke="#1f4e9c", dash=(3, 1.5)),
+             "shaft-ref")
+    rec.text(layout(_t("ref", lang), xr + 1.0, s_r * e.r + 6, SMALL_SIZE, "start", "top"), "note", "shaft-ref-label")
+    arms: dict[float, list[int]] = {}
+    for c, xc in zip(e.cylinders, x, strict=True):
+        arms.setdefault(round(xc, 6), []).append(c.number)
+    for c, xc in zip(e.cylinders, x, strict=True):
+        if arms[round(xc, 6)][0] != c.number:
+            continue
+        l_dim = (c.z - e.reference_z) / e.arm_unit
+        rec.text(layout(f"l_{c.number} = {fmt(l_dim, 3, lang)}", xc, s_r * e.r + 2.0, SMALL_SIZE, "middle", "top"),
+                 "note", f"shaft-arm-{c.number}")
+    note = f"r = {fmt(e.r * 1000, 4, lang)} мм, λ = {fmt(e.lam, 3, lang)}, ω = {fmt(e.omega, 4, lang)} рад/с" \
+        if lang == "ru" else f"r = {fmt(e.r * 1000, 4)} mm, λ = {fmt(e.lam, 3)}, ω = {fmt(e.omega, 4)} rad/s"
+    return finish("shaft", "scheme", None, rec, _t("shaft", lang), note)
+
+
+def phase_panel(e: Engine, order: int, lang: str) -> Panel:
+    """The star of cranks at k·β_i (and the banks' axes of a V engine)."""
+    pid = f"phase-{order}"
+    rec = Recording()
+    placer = Placer()
+    R = STAR_R
+    rec.line((0.0, R + 6), (0.0, -R - 6), AXIS, f"{pid}-vertical")
+    rec.text(layout(_t("tdc", lang), 0.0, -R - 7, SMALL_SIZE, "middle", "bottom"), "note", f"{pid}-tdc")
+    placer.add_line([(0.0, R + 6), (0.0, -R - 6)])
+    if not e.is_inline:
+        for g in sorted({round(c.bank, 12) for c in e.cylinders}):
+            a, b = _P(cmath.exp(1j * g), R + 8), _P(-cmath.exp(1j * g), 8.0)
+            rec.line(b, a, Style(width=0.25, stroke="#6a3d9a", dash=(4, 1.5)), f"{pid}-bank-{math.degrees(g):g}")
+            placer.add_line([b, a])
+            who = ", ".join(c.name for c in e.cylinders if abs(c.bank - g) < 1e-9)
+            lab = placer.place(who, a, SMALL_SIZE + 0.3, prefer=(a[0] / (R + 8), a[1] / (R + 8)), gap=0.8)
+            rec.text(lab, "label", f"{pid}-bank-label-{math.degrees(g):g}", fill="#6a3d9a")
+    rec.circle((0.0, 0.0), R, HAIR, f"{pid}-circle")
+    tips: dict[int, list[str]] = {}
+    for c in e.cylinders:
+        ang = order * c.crank
+        key = round(math.degrees(ang) % 360.0 * 1e6)
+        tips.setdefault(key, []).append(c.name)
+    for key, names in sorted(tips.items()):
+        ang = math.radians(key / 1e6)
+        tip = _P(cmath.exp(1j * ang), R)
+        rec.line((0.0, 0.0), tip, Style(width=0.5), f"{pid}-crank-{names[0]}")
+        placer.add_line([(0.0, 0.0), tip])
+        dot(rec, tip, 0.7)
+        lab = placer.place(", ".join(names), tip, LABEL_SIZE, prefer=(tip[0] / R, tip[1] / R), gap=1.2)
+        rec.text(lab, "label", f"{pid}-label-{names[0]}")
+    # the sense of rotation
+    rec.arc((0.0, 0.0), R * 0.45, -math.radians(100), -math.radians(150), Style(width=0.3), f"{pid}-omega")
+    a1 = -math.radians(150)
+    end = (R * 0.45 * math.cos(a1), R * 0.45 * math.sin(a1))
+    tx, ty = math.sin(a1), -math.cos(a1)
+    rec.polygon([(end[0] - tx * 2.4, end[1] - ty * 2.4), (end[0] - ty * 0.7, end[1] + tx * 0.7),
+                 (end[0] + ty * 0.7, end[1] - tx * 0.7)], Style(stroke=None, width=0, fill="#000"))
+    lab = placer.place("ω" if order == 1 else "2ω", (-R * 0.45 * 0.94, -R * 0.45 * 0.94), SMALL_SIZE + 0.5,
+                       prefer=(-0.7, -0.7), gap=1.0)
+    rec.text(lab, "label", f"{pid}-omega-label")
+    return finish(pid, "phase", None, rec, _t(f"phase{order}", lang))
+
+
+# --------------------------------------------------------------------------- polygons
+
+
+def _nice_mm(extent: float) -> float:
+    """mm per dimensionless unit: a round value that draws ``extent`` units within POLY_MM."""
+    if extent <= 0:
+        return 20.0
+    raw = POLY_MM / extent
+    e10 = 10.0 ** math.floor(math.log10(raw))
+    for m in (10.0, 8.0, 5.0, 4.0, 2.5, 2.0, 1.0):
+        if m * e10 <= raw:
+            return m * e10
+    return e10
+
+
+def _path(poly: Polygon) -> list[complex]:
+    pts = [0j]
+    for r in poly.rows:
+        pts.append(pts[-1] + r.vector)
+    return pts
+
+
+def polygon_panel(R: Resultant, lang: str) -> Panel:
+    """The vectors p_i (or p_i l_i) head to tail and the closing vector, one polygon per
+    rotating part (forward and backward side by side for a V engine)."""
+    pid = f"polygon-{R.quantity}-{R.kind}"
+    rec = Recording()
+    placer = Placer()
+    paths = [_path(p) for p in R.polygons]
+    extent = max(max(abs(a - b) for a in pts for b in pts) for pts in paths)
+    s = _nice_mm(extent)
+    x_off = 0.0
+    sym = _SYM[(R.quantity, R.kind)]
+    for poly, pts in zip(R.polygons, paths, strict=True):
+        xs = [_P(z, s)[0] for z in pts]
+        o = (x_off - min(xs), 0.0)
+        tag = f"{pid}-{poly.branch}" if poly.branch else pid
+        dot(rec, o, 0.6, f"{tag}-pole")
+        for r, a, b in zip(poly.rows, pts[:-1], pts[1:], strict=True):
+            pa, pb = _P(a, s, o), _P(b, s, o)
+            if abs(b - a) * s < 0.05:
+                continue
+            arrow(rec, pa, pb, VECTOR_STYLES["force"], f"{tag}-v{r.cylinder}", "vector force")
+            placer.add_line([pa, pb])
+        for r, a, b in zip(poly.rows, pts[:-1], pts[1:], strict=True):
+            pa, pb = _P(a, s, o), _P(b, s, o)
+            if abs(b - a) * s < 0.05:
+                continue
+            mid = ((pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2)
+            L = math.dist(pa, pb)
+            nx, ny = -(pb[1] - pa[1]) / L, (pb[0] - pa[0]) / L
+            lab = placer.place(str(r.cylinder), mid, SMALL_SIZE + 0.5, prefer=(nx, ny), gap=0.8)
+            rec.text(lab, "label", f"{tag}-v{r.cylinder}-label")
+        end = _P(pts[-1], s, o)
+        sub = "" if not poly.branch else ("^+" if poly.branch == "forward" else "^−")
+        if poly.closed:
+            text = f"{sym}{sub} = 0"
+        else:
+            z = poly.closing
+            arrow(rec, o, end, CLOSING, f"{tag}-closing", "vector closing")
+            placer.add_line([o, end])
+            text = f"{sym}{sub} = {fmt(abs(z), 4, lang)}, {fmt(_deg(math.atan2(z.imag, z.real)), 4, lang)}°"
+        lab = placer.place(text, ((o[0] + end[0]) / 2, (o[1] + end[1]) / 2), SMALL_SIZE + 0.6, gap=1.5)
+        rec.text(lab, "closing-label", f"{tag}-closing-label", fill=CLOSING.stroke or "#000")
+        if R.quantity == "moment" and not poly.closed:
+            # the seed's last step: the turned closing vector turned back 90° clockwise is the moment
+            act = _P(pts[-1] * -1j, s, o)
+            arrow(rec, o, act, ACTUAL, f"{tag}-actual", "vector actual")
+            placer.add_line([o, act])
+            lab = placer.place(f"{sym}{sub} ({_t('actual', lang)})", act, SMALL_SIZE + 0.3, gap=1.0)
+            rec.text(lab, "note", f"{tag}-actual-label", fill=ACTUAL.stroke or "#000")
+        if poly.branch:
+            lab = layout(_t(poly.branch, lang), o[0], -s * 0 + 6.0 + max(_P(z, s, o)[1] for z in pts),
+                         SMALL_SIZE, "start", "top")
+            rec.text(lab, "note", f"{tag}-branch")
+        x0, _, x1, _ = rec.bbox()
+        x_off = x1 + 12.0
+    x_tab = rec.bbox()[2] + 10.0
+    y_tab = rec.bbox()[1]
+    for poly in R.polygons:
+        tab = table_recording(R, poly, lang)
+        bx = tab.bbox()
+        moved = tab.moved(x_tab - bx[0], y_tab - bx[1])
+        rec.prims.extend(moved.prims)
+        y_tab += bx[3] - bx[1] + 5.0
+    unit = "N*m" if R.quantity == "moment" else "N"
+    amp = f"{_ABS[(R.quantity, R.kind)]} = {fmt(R.amplitude, 5, lang)} {_t(unit, lang)}"
+    if R.amplitude > 0:
+        amp += f", φ = {fmt(_deg(R.phase), 4, lang)}°"
+    scale = f"μ = {fmt(s, 4, lang)} {'мм/ед.' if lang == 'ru' else 'mm/unit'}; " \
+            f"{'ед.' if lang == 'ru' else 'unit'} = {fmt(R.polygons[0].unit, 5, lang)} {_t(unit, lang)}"
+    return finish(pid, "polygon", None, rec, _t(f"{R.quantity}-{R.kind}", lang), scale, amp)
+
+
+# --------------------------------------------------------------------------- tables
+
+
+def grid_panel(pid: str, title: str, header: Sequence[str], rows: Sequence[Sequence[str]],
+               note: str | None = None, left: int = 1) -> Panel:
+    """A ruled table as a panel of its own."""
+    return finish(pid, "table", None, grid_recording(pid, header, rows, left), title, note)
+
+
+def grid_recording(pid: str, header: Sequence[str], rows: Sequence[Sequence[str]], left: int = 1,
+                   caption: str | None = None) -> Recording:
+    """A ruled table: header row, body rows; the first ``left`` columns left-aligned."""
+    size = 3.5
+    widths = [0.0] * len(header)
+    for cells in [list(header)] + [list(r) for r in rows]:
+        for i, t in enumerate(cells):
+            lab = layout(t, 0, 0, size)
+            widths[i] = max(widths[i], lab.box[2] - lab.box[0] + 3.0)
+    rh = size * 1.75
+    xe = [0.0]
+    for w in widths:
+        xe.append(xe[-1] + w)
+    n = len(rows) + 1
+    H = n * rh
+    rec = Recording()
+    rec.begin(f"{pid}-grid", "grid")
+    rec.polygon([(0, 0), (xe[-1], 0), (xe[-1], H), (0, H)], Style(width=0.5, cls="grid"))
+    for i in range(1, n):
+        rec.line((0, i * rh), (xe[-1], i * rh), Style(width=0.5 if i in (1, n - 1) and n > 2 else 0.18,
+                                                          cls="grid"))
+    for x in xe[1:-1]:
+        rec.line((x, 0), (x, H), Style(width=0.18, cls="grid"))
+    rec.end()
+    rec.begin(f"{pid}-cells", "cells")
+    for j, cells in enumerate([list(header)] + [list(r) for r in rows]):
+        yc = j * rh + rh / 2
+        for i, t in enumerate(cells):
+            if j == 0:
+                lab = layout(t, (xe[i] + xe[i + 1]) / 2, yc, size, "middle", "middle")
+            elif i < left:
+                lab = layout(t, xe[i] + 1.5, yc, size, "start", "middle")
+            else:
+                lab = layout(t, xe[i + 1] - 1.5, yc, size, "end", "middle")
+            rec.text(lab, "th" if j == 0 else "td")
+    rec.end()
+    if caption:
+        rec.text(layout(caption, 0.0, -1.2, SMALL_SIZE + 0.3, "start", "bottom"), "note", f"{pid}-caption")
+    return rec
+
+
+def table_recording(R: Resultant, poly: Polygon, lang: str) -> Recording:
+    """The seed's analytic table beside its polygon: β_i, cos β_i, sin β_i, p_i, (l_i,)
+    p_i l_i cos β_i, p_i l_i sin β_i and the sums (the closing vector's projections), and
+    each vector in N (N·m) with the closing vector's length in the last row."""
+    moment = R.quantity == "moment"
+    b = "β" if poly.order == 1 else "2β"
+    head = ["№", f"{b}_i, °", f"cos {b}_i", f"sin {b}_i", "p_i"]
+    head += ["l_i", f"p_i l_i cos {b}_i", f"p_i l_i sin {b}_i"] if moment else [f"p_i cos {b}_i", f"p_i sin {b}_i"]
+    unit = _t("N*m" if moment else "N", lang)
+    head.append(f"{'M_i' if moment else 'P_i'}, {unit}")
+    rows = []
+    for r in poly.rows:
+        c, s = math.cos(r.angle), math.sin(r.angle)
+        cells = [str(r.cylinder), fmt(_deg(r.angle), 4, lang), fmt(c, 3, lang), fmt(s, 3, lang),
+                 fmt(r.p, 3, lang)]
+        if moment:
+            cells.append(fmt(r.l, 3, lang))
+        cells += [fmt(r.p * r.l * c, 3, lang), fmt(r.p * r.l * s, 3, lang), fmt(r.p * r.l * poly.unit, 5, lang)]
+        rows.append(cells)
+    z = poly.closing
+    total = 0.0 if poly.closed else abs(z) * poly.unit
+    rows.append(["Σ"] + [""] * (len(head) - 4) + [fmt(z.real, 3, lang), fmt(z.imag, 3, lang), fmt(total, 5, lang)])
+    tag = f"-{poly.branch}" if poly.branch else ""
+    caption = None if not poly.branch else _t(poly.branch, lang)
+    return grid_recording(f"table-{R.quantity}-{R.kind}{tag}", head, rows, caption=caption)
+
+
+def results_panel(b: Balance, lang: str) -> Panel:
+    head = [_t("quantity", lang), _t("dimless", lang), _t("amplitude", lang), _t("unit", lang), _t("phase", lang)]
+    rows = []
+    for quantity, res in (("force", b.forces), ("moment", b.moments)):
+        for kind in KINDS:
+            R = res[kind]
+            unit = "N*m" if quantity == "moment" else "N"
+            rows.append([_ABS[(quantity, kind)], fmt(R.dimensionless, 4, lang), fmt(R.amplitude, 5, lang),
+                         _t(unit, lang), fmt(_deg(R.phase), 4, lang) if R.amplitude > 0 else "—"])
+    note = None
+    e = b.engine
+    if e.lam > 0:
+        from plans.balancing.exact import exact_check
+
+        chk = exact_check(e)
+        note = (f"{_t('exact', lang)}: max |R| = {fmt(chk.max_exact, 5, lang)} {_t('N', lang)}, "
+                f"{_t('err', lang)} {fmt(chk.max_error, 3, lang)} {_t('N', lang)}; "
+                f"max |M| = {fmt(chk.max_moment, 5, lang)} {_t('N*m', lang)}, "
+                f"{_t('err', lang)} {fmt(chk.max_moment_error, 3, lang)} {_t('N*m', lang)}")
+    return grid_panel("results", _t("results", lang), head, rows, note)
+
+
+def counterweights_panel(b: Balance, lang: str) -> Panel:
+    head = [_t("for", lang), _t("plane", lang), _t("mr", lang), _t("mass", lang), _t("radius", lang),
+            _t("angle", lang)]
+    rows = [[_t(c.of, lang), fmt(c.plane_z, 4, lang), fmt(c.mass_radius, 4, lang), fmt(c.mass, 4, lang),
+             fmt(c.radius, 4, lang), fmt(_deg(c.angle), 4, lang)] for c in b.counterweights]
+    if not rows:
+        return grid_panel("counterweights", _t("cw", lang), head, [[_t("none", lang), "—", "—", "—", "—", "—"]],
+                          _cw_note(b, lang))
+    # an end view: crank 1 up, each counterweight's m·r as a vector at its angle
+    rec = Recording()
+    placer = Placer()
+    Rr = 22.0
+    rec.circle((0.0, 0.0), Rr, HAIR, "cw-circle")
+    rec.line((0.0, 0.0), (0.0, -Rr), Style(width=0.7), "cw-crank1")
+    placer.add_line([(0.0, 0.0), (0.0, -Rr)])
+    rec.text(placer.place("1", (0.0, -Rr), LABEL_SIZE, prefer=(0.0, -1.0), gap=0.8), "label", "cw-crank1-label")
+    big = max(c.mass_radius for c in b.counterweights)
+    for k, c in enumerate(b.counterweights):
+        tip = _P(cmath.exp(1j * c.angle) * (Rr * c.mass_radius / big), 1.0)
+        style = CLOSING if c.of == "rotating" else Style(width=0.5, stroke="#1f4e9c")
+        arrow(rec, (0.0, 0.0), tip, style, f"cw-{k}", "vector counterweight")
+        placer.add_line([(0.0, 0.0), tip])
+        lab = placer.place(f"{_t(c.of, lang)}, z = {fmt(c.plane_z, 4, lang)}", tip, SMALL_SIZE + 0.3, gap=1.0)
+        rec.text(lab, "label", f"cw-{k}-label", fill=style.stroke or "#000")
+    tab = grid_recording("cw-table", head, rows)
+    x0 = rec.bbox()[2] + 10.0
+    y0 = rec.bbox()[1]
+    bx = tab.bbox()
+    rec.prims.extend(tab.moved(x0 - bx[0], y0 - bx[1]).prims)
+    return finish("counterweights", "table", None, rec, _t("cw", lang), _cw_note(b, lang))
+
+
+def _cw_note(b: Balance, lang: str) -> str | None:
+    """What a counterweight cannot take, in the sheet's language."""
+    out = []
+    for t in b.notes:
+        key = "cw_first" if t.startswith("first-order") else "cw_second" if t.startswith("second-order") else ""
+        out.append(_t(key, lang) if key else t)
+    return "; ".join(out) or None

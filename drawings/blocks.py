@@ -1,0 +1,152 @@
+"""Sheets of many positions laid out as a course lays them out: one bordered block per
+crank angle, in angle order, a block never split across sheets unless it cannot fit one.
+
+A block is the panels of one position (scheme, plans, groups with polygons, crank, lever,
+tables) packed inside a thin border under a heading "Положение 3, φ = 90°".  Blocks go on
+the sheets one after another, each below or to the right of the previous one, so a
+teacher reads the positions in order and finds one at a glance.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from .panels import Panel
+from .text import layout
+
+Box = tuple[float, float, float, float]
+HEAD = 8.0  # heading band of a block, mm
+INSET = 3.0  # panels keep this far inside the border
+HEAD_SIZE = 5.0
+
+
+@dataclass(frozen=True, slots=True)
+class Frame:
+    """The border and heading of one position's block on a sheet."""
+
+    phi: float
+    box: Box
+    heading: str
+
+
+@dataclass(slots=True)
+class Block:
+    """Panels placed relative to the block's top-left corner; ``framed`` blocks get a border."""
+
+    panels: list[tuple[Panel, float, float]]
+    width: float
+    height: float
+    phi: float | None
+    heading: str = ""
+
+    @property
+    def framed(self) -> bool:
+        return bool(self.heading)
+
+
+def heading(phi: float, number: int | None, lang: str, part: int = 0) -> str:
+    """``Положение 3, φ = 90°`` (``Position 3, φ = 90°``), ``(продолжение)`` on a second part."""
+    from .common import fmt
+
+    angle = f"φ = {fmt(phi, 6, lang)}°"
+    word = "Положение" if lang == "ru" else "Position"
+    text = f"{word} {number}, {angle}" if number is not None else angle
+    if part:
+        text += " (продолжение)" if lang == "ru" else " (continued)"
+    return text
+
+
+def pack_block(panels: Sequence[Panel], width: float, height: float, gap: float,
+               free_spots, title: str = "") -> tuple[Block, list[Panel]]:
+    """Panels in reading order inside a ``width`` × ``height`` block, each where it keeps the
+    block's skyline lowest; returns the block (shrunk to its content) and what did not fit."""
+    framed = bool(title)
+    top = HEAD if framed else 0.0
+    inset = INSET if framed else 0.0
+    area = (inset, top + inset, width - inset, height - inset)
+    taken: list[Box] = []
+    placed: list[tuple[Panel, float, float]] = []
+    rest: list[Panel] = []
+    for p in panels:
+        spots = free_spots(p.width, p.height, area, taken)
+        if not len(spots):
+            rest.append(p)
+            continue
+        X, Y = spots[:, 0], spots[:, 1]
+        i = int(np.lexsort((X, Y, Y + p.height + 0.05 * X))[0])
+        x, y = float(X[i]), float(Y[i])
+        taken.append((x, y, x + p.width, y + p.height))
+        placed.append((p, x, y))
+    if not placed:
+        return Block([], 0.0, 0.0, None, title), rest
+    w = max(b[2] for b in taken) + inset
+    h = max(b[3] for b in taken) + inset
+    if framed:
+        w = max(w, layout(title, 0, 0, HEAD_SIZE).box[2] + 2 * inset)
+    return Block(placed, w, h, placed[0][0].phi, title), rest
+
+
+def place_block(block: Block, area: Box, taken: Sequence[Box], prev: Box | None, free_spots,
+                gap: float) -> tuple[float, float] | None:
+    """Where a block goes on a sheet: never above the previous block, nor left of it while
+    wholly beside it (reading order), then the spot that keeps the skyline lowest."""
+    spots = free_spots(block.width, block.height, area, taken)
+    if not len(spots):
+        return None
+    X, Y = spots[:, 0], spots[:, 1]
+    if prev is not None:
+        ok = (Y >= prev[1] - 1e-9) & ((Y + block.height > prev[3] + 1e-9) | (X >= prev[2] + gap - 1e-9))
+        X, Y = X[ok], Y[ok]
+        if not len(X):
+            return None
+    i = int(np.lexsort((X, Y, Y + block.height + 0.05 * X))[0])
+    return float(X[i]), float(Y[i])
+
+
+def spread(blocks: list[tuple[Block, float, float]], area: Box, stays: Sequence[Box], gap: float,
+           most: float = 1.5) -> list[tuple[Block, float, float]]:
+    """Share a sheet's spare height between its bands of blocks: every block's top moves away
+    from the area's top by one factor f (1 ≤ f ≤ ``most``), so nothing new overlaps."""
+    top = area[1]
+    free = [(b, x, y) for b, x, y in blocks if y > top + 1e-9]
+    if not free:
+        return blocks
+
+    def ok(f: float) -> bool:
+        for b, x, y in free:
+            y2 = top + (y - top) * f
+            box = (x, y2, x + b.width, y2 + b.height)
+            if box[3] > area[3] + 1e-9:
+                return False
+            for s in stays:
+                if box[0] < s[2] + gap - 1e-9 and s[0] < box[2] + gap - 1e-9 and \
+                        box[1] < s[3] + gap - 1e-9 and s[1] < box[3] + gap - 1e-9:
+                    return False
+        return True
+
+    f = most
+    while f > 1.0 and not ok(f):
+        f = max(1.0, f - 0.02)
+    if f <= 1.0 + 1e-9:
+        return blocks
+    return [(b, x, y if y <= top + 1e-9 else top + (y - top) * f) for b, x, y in blocks]
+
+
+def widths(area_w: float, panels: Sequence[Panel]) -> list[float]:
+    """Block widths worth trying, widest first: fractions of the sheet's width, never
+    narrower than the widest panel of the block."""
+    widest = max((p.width for p in panels), default=0.0) + 2 * INSET
+    out: list[float] = []
+    for f in (1.0, 0.75, 2 / 3, 0.6, 0.5, 0.4, 1 / 3, 0.25):
+        w = max(widest, area_w * f)
+        if w <= area_w + 1e-9 and all(abs(w - o) > 1.0 for o in out):
+            out.append(w)
+    return out or [area_w]
+
+
+def frame_of(block: Block, x: float, y: float) -> Frame:
+    assert block.phi is not None
+    return Frame(block.phi, (x, y, x + block.width, y + block.height), block.heading)

@@ -1,0 +1,422 @@
+"""The cycle's sheets: kinematic diagrams, and the machine dynamics with the flywheel.
+
+Added to a linkage's drawing when its outputs ask for ``diagrams`` or ``dynamics``
+(:func:`extend`).  Every diagram carries its scale as the course writes it, the pole
+distance of the graphical differentiation or integration, and the exact curve drawn thin
+and dashed beside the graphical one.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Sequence
+from pathlib import Path
+
+import numpy as np
+
+from plans.cycle import spline
+from plans.cycle.diagrams import Diagrams
+from plans.cycle.dynamics import Dynamics
+from plans.cycle.table import CycleTable, TableRow
+from plans.scene.model import Scene
+
+from .backend import HAIR, MAIN, THIN, Recording, Style
+from .common import fmt
+from .cycle_plot import EXACT, GRAPH, Axes, number, plot_panel, wide_table
+from .panels import Panel
+from .sheet import Sheet, SheetSpec, compose
+from .text import layout
+
+WORDS: dict[str, tuple[str, str]] = {
+    "diagrams": ("Кинематические диаграммы", "Kinematic diagrams"),
+    "dynamics": ("Динамика машины. Маховик", "Machine dynamics. Flywheel"),
+    "s": ("Диаграмма перемещений", "Displacement diagram"),
+    "v": ("Диаграмма скоростей", "Velocity diagram"),
+    "a": ("Диаграмма ускорений", "Acceleration diagram"),
+    "chords": ("метод хорд", "chord method"),
+    "tangents": ("метод касательных", "tangent method"),
+    "exact_thin": ("тонкая штриховая — точная кривая", "thin dashed: exact curve"),
+    "error": ("погрешность", "error"),
+    "errors": ("Погрешность графических диаграмм, % размаха", "Error of the graphical diagrams, % of range"),
+    "M": ("Приведённый момент сил M_пр(φ)", "Reduced moment of forces M_pr(φ)"),
+    "A": ("Работы A_c(φ), A_д(φ)", "Work A_c(φ), A_d(φ)"),
+    "T": ("Изменение кинетической энергии ΔT(φ)", "Change of kinetic energy ΔT(φ)"),
+    "I": ("Приведённый момент инерции I_пр(φ)", "Reduced moment of inertia I_pr(φ)"),
+    "W": ("Диаграмма энергомасс (Виттенбауэр)", "Energy–mass diagram (Wittenbauer)"),
+    "w": ("Угловая скорость кривошипа ω(φ)", "Angular velocity of the crank ω(φ)"),
+    "fly": ("Маховик", "Flywheel"),
+    "sign": ("M_пр > 0: нагрузки движут кривошип", "M_pr > 0: the loads drive the crank"),
+    "method": ("Метод", "Method"),
+    "inertia": ("I_м, кг·м²", "I_fw, kg·m²"),
+    "achieved": ("δ достигнутое", "δ achieved"),
+    "diff": ("Δ к точному, %", "vs exact, %"),
+    "graphical": ("Виттенбауэр", "Wittenbauer"),
+    "merkalov": ("Мерцалов", "Merkalov"),
+    "exact": ("точно", "exact"),
+    "position": ("№ положения", "Position"),
+    "phi": ("φ, °", "φ, deg"),
+    "analogues": ("Аналоги скоростей", "Velocity analogues"),
+    "Ipr": ("Приведённый момент инерции, кг·м²", "Reduced moment of inertia, kg·m²"),
+    "Mpr": ("Приведённый момент сил, Н·м", "Reduced moment of forces, N·m"),
+    "plans": ("Планы по положениям", "Plans over the positions"),
+    "ordinates": ("Ординаты диаграмм по положениям:", "Ordinates of the diagrams over the positions:"),
+    "energy": ("Работы и кинетическая энергия, Дж", "Work and kinetic energy, J"),
+    "with_graphical": ("с маховиком по Виттенбауэру", "with the Wittenbauer flywheel"),
+    "with_exact": ("с точным маховиком", "with the exact flywheel"),
+}
+
+
+_UNITS = {"N*m": ("Н·м", "N·m"), "kg*m^2": ("кг·м²", "kg·m²"), "m": ("м", "m"), "mm": ("мм", "mm"),
+          "J": ("Дж", "J"), "N": ("Н", "N"), "m/s": ("м/с", "m/s"), "m/s^2": ("м/с²", "m/s²"),
+          "rad/s": ("рад/с", "rad/s"), "rad/s^2": ("рад/с²", "rad/s²"), "deg": ("°", "°")}
+
+
+def tr(key: str, lang: str) -> str:
+    ru, en = WORDS[key]
+    return ru if lang == "ru" else en
+
+
+# --------------------------------------------------------------------------- kinematic diagrams
+
+
+def diagram_panels(dg: Diagrams, lang: str) -> list[Panel]:
+    """s, v, a of every subject, each with its pole, scale and error."""
+    out: list[Panel] = []
+    L = dg.spec.length_mm
+    phi0 = float(dg.nodes_deg[0])
+    for g in dg.diagrams:
+        rec = Recording()
+        ax = Axes(rec, f"diagram-{g.name}", dg.mu_phi, phi0, lang)
+        ys = g.values * g.scale
+        ye = g.exact * g.scale
+        ax.frame(L, float(min(ys.min(), ye.min())), float(max(ys.max(), ye.max())), g.name.replace("_", "_"))
+        ax.positions(dg.nodes_deg[:-1])
+        step = max(1, len(ye) // 240)  # a thin curve needs no more than a point per mm
+        ax.curve(ax.x(g.exact_phi_deg[::step]), ye[::step], EXACT, f"diagram-{g.name}-exact")
+        xs = ax.x(g.phi_deg)
+        if g.quantity != "s":
+            ax.pole(float(g.pole_mm or dg.pole_mm), ys, "P", "H_1" if g.quantity == "v" else "H_2")
+        cx, cy = _closed(xs, ys, L)
+        if g.quantity != "s":  # the draftsman's smooth curve through the found points
+            cx, cy = spline.sample(cx, cy, spline.slopes(cx, cy), 6)
+        ax.curve(cx, cy, GRAPH, f"diagram-{g.name}-graphical")
+        ax.dots(xs, ys)
+        how = tr(dg.spec.method, lang) if g.quantity != "s" else ""
+        err = (f"{tr('error', lang)}: max {fmt(g.error_max_pct, 2, lang)} %, rms {fmt(g.error_rms_pct, 2, lang)} %"
+               if g.quantity != "s" else tr("exact_thin", lang))
+        note = "; ".join(x for x in (how, err) if x)
+        formula = g.scale_formula.replace(".", ",") if lang == "ru" else g.scale_formula
+        scale = f"{formula}; μ_φ = {fmt(dg.mu_phi, 4, lang)} mm/rad"
+        out.append(plot_panel(f"diagram-{g.name}", "diagram", f"{tr(g.quantity, lang)} {g.name}", rec, scale,
+                              note, lang=lang))
+    out += _ordinates_table(dg, lang)
+    rows = [[g.name, number(g.error_max_pct, lang, 3), number(g.error_rms_pct, lang, 3),
+             "—" if g.integral_error_max_pct is None else number(g.integral_error_max_pct, lang, 3)]
+            for g in dg.diagrams]
+    head = ["", "max", "rms", "∫ max"]
+    out.append(wide_table("diagram-errors", tr("errors", lang), head, rows, lang))
+    return out
+
+
+def _ordinates_table(dg: Diagrams, lang: str) -> list[Panel]:
+    """The diagrams over the positions: ordinate (mm) and value at each position, as the
+    course tabulates them (the chord method's values sit between the positions)."""
+    tables = []
+    for subject in dict.fromkeys(g.subject for g in dg.diagrams):
+        rows = []
+        for g in dg.diagrams:
+            if g.subject != subject:
+                continue
+            at = np.interp(dg.nodes_deg[:-1], g.phi_deg, g.values, period=360.0)
+            u = _UNITS.get(g.unit, (g.unit, g.unit))[0 if lang == "ru" else 1]
+            rows.append(TableRow(f"{g.name}:mm", f"y({g.name})", "mm", tuple(float(x) for x in at * g.scale)))
+            rows.append(TableRow(g.name, g.name, u, tuple(float(x) for x in at)))
+        tables.append(CycleTable(f"{tr('ordinates', lang)} {subject}", tuple(float(x) for x in dg.nodes_deg[:-1]),
+                                 tuple(rows)))
+    return table_panels(tables, lang, "diagram")
+
+
+def _closed(xs: np.ndarray, ys: np.ndarray, L: float) -> tuple[np.ndarray, np.ndarray]:
+    """A periodic diagram joined over the whole axis: where its points stop short of 0 or L
+    (the middles of the chords), the curve runs on to the value the cycle continues with."""
+    if xs[0] > 1e-9:
+        y0 = ys[-1] + (ys[0] - ys[-1]) * (L - xs[-1]) / (xs[0] + L - xs[-1]) if xs[-1] < L - 1e-9 else ys[-1]
+        xs, ys = np.concatenate([[0.0], xs]), np.concatenate([[y0], ys])
+    if xs[-1] < L - 1e-9:
+        xs, ys = np.append(xs, L), np.append(ys, ys[0])
+    return xs, ys
+
+
+# --------------------------------------------------------------------------- dynamics
+
+
+def _m_panel(d: Dynamics, lang: str) -> Panel:
+    s = d.scales
+    t = d.table
+    rec = Recording()
+    ax = Axes(rec, "dyn-M", s.phi, float(t.phi_deg[0]), lang)
+    rad = np.radians(t.phi_deg - t.phi_deg[0])
+    xs_s, ys_s = spline.sample(rad, t.M_pr, spline.slopes(rad, t.M_pr), 8)
+    ye = d.exact.M_pr * s.M
+    L = 2 * math.pi * s.phi
+    ax.frame(L, float(min(ye.min(), t.M_pr.min() * s.M)), float(max(ye.max(), t.M_pr.max() * s.M)), "M_пр" if lang == "ru" else "M_pr")
+    ax.positions(t.phi_deg[:-1])
+    ax.curve(ax.x(d.exact.phi_deg), ye, EXACT)
+    ax.curve(xs_s * s.phi, ys_s * s.M, GRAPH, "dyn-M-graphical")
+    ax.dots(ax.x(t.phi_deg), t.M_pr * s.M)
+    # the mean ordinate of each interval, projected onto the axis, and the pole's rays to it
+    means = spline.interval_integrals(rad, t.M_pr, spline.slopes(rad, t.M_pr)) / np.diff(rad)
+    for k, m in enumerate(means):
+        x0, x1 = rad[k] * s.phi, rad[k + 1] * s.phi
+        rec.line((x0, -m * s.M), (x1, -m * s.M), HAIR)
+    ax.pole(s.H, means * s.M)
+    ax.hline(-d.M_driving * s.M, 0.0, L, Style(width=0.35, dash=(4, 1.5)), f"−M_д = {fmt(-d.M_driving, 4, lang)}"
+             if lang == "ru" else f"−M_d = {fmt(-d.M_driving, 4, lang)}")
+    scale = f"μ_M = {fmt(s.M, 4, lang)} mm/(N·m); μ_φ = {fmt(s.phi, 4, lang)} mm/rad; H = {fmt(s.H, 3, lang)} mm"
+    return plot_panel("dyn-M", "dynamics", tr("M", lang), rec, scale, tr("sign", lang), lang=lang)
+
+
+def _a_panel(d: Dynamics, lang: str) -> Panel:
+    s = d.scales
+    t = d.table
+    rec = Recording()
+    ax = Axes(rec, "dyn-A", s.phi, float(t.phi_deg[0]), lang)
+    L = 2 * math.pi * s.phi
+    ya = np.concatenate([d.A_c, d.A_d]) * s.A
+    ax.frame(L, float(ya.min()), float(ya.max()), "A")
+    ax.positions(t.phi_deg[:-1])
+    ex_A = d.A_c_exact * s.A
+    ax.curve(ax.x(d.exact.phi_deg), ex_A, EXACT)
+    rad = np.radians(t.phi_deg - t.phi_deg[0])
+    xs, ys = spline.sample(rad, d.A_c, spline.slopes(rad, d.A_c), 8)
+    ax.curve(xs * s.phi, ys * s.A, GRAPH, "dyn-A-c")
+    ax.dots(ax.x(t.phi_deg), d.A_c * s.A)
+    rec.line((0.0, 0.0), (L, -d.A_d[-1] * s.A), MAIN, "dyn-A-d")
+    end_c = "A_c" if lang != "ru" else "A_с"
+    rec.text(layout(end_c, L + 1.5, -d.A_c[-1] * s.A, 2.5, "start", "middle"), "note")
+    rec.text(layout("A_д" if lang == "ru" else "A_d", L + 1.5, -d.A_d[-1] * s.A, 2.5, "start", "middle"), "note")
+    scale = f"μ_A = μ_M·μ_φ/H = {fmt(s.A, 4, lang)} mm/J"
+    return plot_panel("dyn-A", "dynamics", tr("A", lang), rec, scale, tr("exact_thin", lang), lang=lang)
+
+
+def _t_panel(d: Dynamics, lang: str) -> Panel:
+    s = d.scales
+    t = d.table
+    rec = Recording()
+    ax = Axes(rec, "dyn-T", s.phi, float(t.phi_deg[0]), lang)
+    L = 2 * math.pi * s.phi
+    ye = d.dT_exact * s.A
+    ax.frame(L, float(min(ye.min(), d.dT.min() * s.A)), float(max(ye.max(), d.dT.max() * s.A)), "ΔT")
+    ax.positions(t.phi_deg[:-1])
+    ax.curve(ax.x(d.exact.phi_deg), ye, EXACT)
+    rad = np.radians(t.phi_deg - t.phi_deg[0])
+    xs, ys = spline.sample(rad, d.dT, spline.slopes(rad, d.dT), 8)
+    ax.curve(xs * s.phi, ys * s.A, GRAPH, "dyn-T-graphical")
+    ax.dots(ax.x(t.phi_deg), d.dT * s.A)
+    scale = f"μ_T = μ_A = {fmt(s.A, 4, lang)} mm/J; ΔT = A_c + A_d" if lang != "ru" else \
+        f"μ_T = μ_A = {fmt(s.A, 4, lang)} мм/Дж; ΔT = A_с + A_д"
+    return plot_panel("dyn-T", "dynamics", tr("T", lang), rec, scale, lang=lang)
+
+
+def _i_panel(d: Dynamics, lang: str) -> Panel:
+    s = d.scales
+    t = d.table
+    rec = Recording()
+    ax = Axes(rec, "dyn-I", s.phi, float(t.phi_deg[0]), lang)
+    L = 2 * math.pi * s.phi
+    ye = d.exact.I_pr * s.I
+    ax.frame(L, 0.0, float(ye.max()), "I_пр" if lang == "ru" else "I_pr")
+    ax.positions(t.phi_deg[:-1])
+    ax.curve(ax.x(d.exact.phi_deg), ye, EXACT)
+    rad = np.radians(t.phi_deg - t.phi_deg[0])
+    xs, ys = spline.sample(rad, t.I_pr, spline.slopes(rad, t.I_pr), 8)
+    ax.curve(xs * s.phi, ys * s.I, GRAPH, "dyn-I-graphical")
+    ax.dots(ax.x(t.phi_deg), t.I_pr * s.I)
+    scale = f"μ_I = {fmt(s.I, 4, lang)} mm/(kg·m²)"
+    return plot_panel("dyn-I", "dynamics", tr("I", lang), rec, scale, lang=lang)
+
+
+def _w_panel(d: Dynamics, lang: str) -> Panel:
+    """ΔT against I_pr from I = 0: the closed curve, the tangents at ψ_max, ψ_min, k and l."""
+    s = d.scales
+    w = d.wittenbauer
+    rec = Recording()
+    X = w.I * s.I
+    Y = w.dT * s.A
+    x_hi = float(X.max()) + 8.0
+    k_mm, l_mm = w.k * s.A, w.l * s.A
+    lo = float(min(Y.min(), k_mm, l_mm))
+    hi = float(max(Y.max(), k_mm, l_mm))
+    ax = Axes(rec, "dyn-W", 1.0, 0.0, lang)
+    ax.frame(x_hi, lo, hi, "ΔT", "I_пр" if lang == "ru" else "I_pr")
+    rec.polyline([(float(a), float(-b)) for a, b in zip(X, Y, strict=True)], GRAPH, "dyn-W-curve")
+    t = d.table
+    last = None
+    for k in range(len(t.phi_deg) - 1):
+        p = (float(t.I_pr[k] * s.I), float(-d.dT[k] * s.A))
+        rec.circle(p, 0.5, Style(stroke=None, width=0, fill="#000"))
+        if last is None or math.hypot(p[0] - last[0], p[1] - last[1]) > 4.0:
+            rec.text(layout(str(k + 1), p[0] + 1.0, p[1] - 1.0, 2.2, "start", "bottom"), "tick")
+            last = p
+    for name, b, slope, touch in (("k", w.k, w.slope_max, w.touch_max), ("l", w.l, w.slope_min, w.touch_min)):
+        tan = slope * s.A / s.I  # on paper
+        x1 = float(X[touch]) + 6.0
+        rec.line((0.0, -b * s.A), (x1, -(b * s.A + tan * x1)), THIN, f"dyn-W-tangent-{name}")
+        rec.circle((0.0, -b * s.A), 0.6, Style(stroke=None, width=0, fill="#000"))
+        rec.text(layout(name, -1.5, -b * s.A, 3.0, "end", "middle"), "point")
+    kl = (w.k - w.l) * s.A
+    fw = d.flywheel
+    scale = (f"μ_T = {fmt(s.A, 4, lang)} mm/J; μ_I = {fmt(s.I, 4, lang)} mm/(kg·m²); "
+             f"tg ψ = (μ_T/μ_I)·ω_{{m}}²(1 ± δ)/2")
+    note = (f"kl = {fmt(kl, 4, lang)} mm; I_fw = kl/(μ_T·ω_{{m}}²·δ) = {fmt(fw.inertia_graphical, 4, lang)} kg·m²; "
+            f"ω_m = {fmt(fw.omega_mean, 4, lang)} rad/s, δ = {fmt(fw.delta, 4, lang)}")
+    return plot_panel("dyn-W", "dynamics", tr("W", lang), rec, scale, note, lang=lang)
+
+
+def _omega_panel(d: Dynamics, lang: str) -> Panel:
+    """ω(φ) by exact integration of the motion, magnified about ω_m."""
+    s = d.scales
+    fw = d.flywheel
+    rec = Recording()
+    ax = Axes(rec, "dyn-w", s.phi, float(d.exact.phi_deg[0]), lang)
+    L = 2 * math.pi * s.phi
+    span = max(float(np.ptp(d.omega)), float(np.ptp(d.omega_exact)), 1e-300)
+    mu_w = 40.0 / span
+    y_g = (d.omega - fw.omega_mean) * mu_w
+    y_e = (d.omega_exact - fw.omega_mean) * mu_w
+    ax.frame(L, float(min(y_g.min(), y_e.min())), float(max(y_g.max(), y_e.max())), "ω − ω_m")
+    ax.positions(d.table.phi_deg[:-1])
+    ax.curve(ax.x(d.exact.phi_deg), y_e, EXACT, "dyn-w-exact")
+    ax.curve(ax.x(d.exact.phi_deg), y_g, GRAPH, "dyn-w-graphical")
+    half = fw.delta * fw.omega_mean / 2 * mu_w
+    for y, lab in ((half, "ω_max"), (-half, "ω_min")):
+        ax.hline(y, 0.0, L, Style(width=0.2, dash=(3, 1.5)), lab)
+    scale = f"μ_ω = {fmt(mu_w, 4, lang)} mm/(rad/s); ω_m = {fmt(fw.omega_mean, 5, lang)} rad/s"
+    note = (f"{tr('with_graphical', lang)}: δ = {fmt(fw.delta_achieved, 4, lang)}; "
+            f"{tr('with_exact', lang)} ({tr('exact_thin', lang).split(' — ')[0]}): δ = "
+            f"{fmt(fw.delta_achieved_exact, 4, lang)}")
+    return plot_panel("dyn-w", "dynamics", tr("w", lang), rec, scale, note, lang=lang)
+
+
+def _fly_table(d: Dynamics, lang: str) -> Panel:
+    fw = d.flywheel
+    ex = fw.inertia_exact
+
+    def pct(i: float) -> str:
+        return number(100 * (i - ex) / ex, lang, 3) if ex else "—"
+
+    rows = [[tr("graphical", lang), number(fw.inertia_graphical, lang, 5), number(fw.delta_achieved, lang, 4),
+             pct(fw.inertia_graphical)],
+            [tr("merkalov", lang), number(fw.inertia_merkalov, lang, 5), number(fw.delta_achieved_merkalov, lang, 4),
+             pct(fw.inertia_merkalov)],
+            [tr("exact", lang), number(ex, lang, 5), number(fw.delta_achieved_exact, lang, 4), "0"]]
+    head = [tr("method", lang), tr("inertia", lang), tr("achieved", lang), tr("diff", lang)]
+    note = (f"M_д = {fmt(d.M_driving, 4, lang)} Н·м (точно {fmt(d.M_driving_exact, 4, lang)})" if lang == "ru" else
+            f"M_d = {fmt(d.M_driving, 4, lang)} N·m (exact {fmt(d.M_driving_exact, 4, lang)})")
+    return wide_table("dyn-flywheel", f"{tr('fly', lang)}: δ = {fmt(fw.delta, 4, lang)}", head, rows, lang, note)
+
+
+def table_panels(tables: Sequence[CycleTable], lang: str, prefix: str,
+                 titles: Sequence[str] | None = None) -> list[Panel]:
+    """Cycle tables as panels: positions as columns, split in halves when they are many."""
+    out: list[Panel] = []
+    for i, t in enumerate(tables):
+        title = titles[i] if titles else t.title
+        n = len(t.phi_deg)
+        chunks = [range(0, n)] if n <= 14 else [range(a, min(n, a + 12)) for a in range(0, n, 12)]
+        for j, ks in enumerate(chunks):
+            head = [tr("position", lang)] + [str(k + 1) for k in ks]
+            rows = [[tr("phi", lang)] + [number(t.phi_deg[k], lang, 5) for k in ks]]
+            for r in t.rows:
+                big = max([abs(v) for v in r.values if v is not None] + [0.0])
+                # a dead centre's 1e-8 is a zero on paper
+                cells = [None if r.values[k] is None else (0.0 if abs(r.values[k] or 0.0) <= 1e-5 * big
+                                                          else r.values[k]) for k in ks]
+                u = _UNITS.get(r.unit, (r.unit, r.unit))[0 if lang == "ru" else 1]
+                unit = f", {u}" if u and u != "1" else ""
+                rows.append([f"{r.label}{unit}"] + [number(c, lang, 4) for c in cells])
+            out.append(wide_table(f"{prefix}-table-{i + 1}-{j + 1}", title, head, rows, lang))
+    return out
+
+
+def analogue_plans(d: Dynamics, lang: str) -> list[Panel]:
+    """Plans of velocity analogues at the table's positions: velocity plans drawn at
+    μ_v = μ/|ω1|, so that every segment is the analogue v/ω1 at μ (mm per m), the pole p."""
+    from plans.kinematics.construction import build
+    from plans.kinematics.exact import solve
+
+    from .panels import plan_panel
+
+    scene = dataclasses.replace(d.scene, outputs=d.scene.outputs | {"velocity_plan"})
+    kin = solve(scene, np.asarray(d.spec.phi_deg, float), order=1)
+    mu_v = d.scales.analogue / abs(d.scene.driver.omega)
+    out = []
+    for k in range(kin.n):
+        pp = build(kin, k, velocity_scale=mu_v)
+        if pp.velocity is not None:
+            out.append(plan_panel(pp.velocity, lang, d.scene.scale_style, pid=f"analogue-{k + 1}"))
+    return out
+
+
+def dynamics_panels(d: Dynamics, tables: Sequence[CycleTable], lang: str) -> list[Panel]:
+    titles = [f"{tr('analogues', lang)}, μ = {fmt(d.scales.analogue, 4, lang)} mm/m (ω_1 = 1)",
+              tr("Ipr", lang), f"{tr('Mpr', lang)}; {tr('sign', lang)}", tr("energy", lang)]
+    plans = [] if d.scene.wants("velocity_plan") else analogue_plans(d, lang)  # else on the first sheet
+    return ([_m_panel(d, lang), _a_panel(d, lang), _t_panel(d, lang), _i_panel(d, lang), _w_panel(d, lang),
+             _omega_panel(d, lang), _fly_table(d, lang)] + table_panels(tables, lang, "dyn", titles) + plans)
+
+
+# --------------------------------------------------------------------------- the hook
+
+
+def extend(scene: Scene, spec: SheetSpec, sheets: list[Sheet], scale_text: str = "") -> list[Sheet]:
+    """The drawing's sheets and, when the scene asks, the diagrams and dynamics sheets after them,
+    numbered on from the last."""
+    if not (scene.wants("diagrams") or scene.wants("dynamics")):
+        return sheets
+    from plans.cycle.results import solve_cycle
+
+    lang = spec.language
+    cr = solve_cycle(scene, _kin(scene), ())
+    extra: list[Sheet] = []
+    if cr is not None and cr.diagrams is not None:
+        sub = dataclasses.replace(spec, subtitle=tr("diagrams", lang), pins=())
+        extra += compose(diagram_panels(cr.diagrams, lang), sub, scale_text, scene.path)
+    if cr is not None and cr.dynamics is not None:
+        sub = dataclasses.replace(spec, subtitle=tr("dynamics", lang), pins=())
+        tabs = cr.tables[-4:]  # the dynamics' own: analogues, I_pr, M_pr, work and energy
+        extra += compose(dynamics_panels(cr.dynamics, tabs, lang), sub, scale_text, scene.path)
+    out = list(sheets) + extra
+    for i, sh in enumerate(out):
+        sh.number, sh.count = i + 1, len(out)
+        sh.prims = []
+        sh.render()
+    return out
+
+
+def _kin(scene: Scene):
+    from plans.kinematics.exact import solve
+
+    return solve(scene, order=0)
+
+
+def diagrams_sheet_seconds(path: str | Path, repeat: int = 5) -> float:
+    """Best time of the diagrams sheet of a scene to SVG text: engine, panels, layout, SVG."""
+    import time
+
+    from plans.cycle.diagrams import diagrams
+    from plans.scene.model import load_scene
+
+    from .sheet import sheet_spec
+
+    scene = load_scene(path)
+    spec = dataclasses.replace(sheet_spec(scene.raw, scene.path, scene.title), pins=())
+    best = float("inf")
+    for _ in range(max(1, repeat)):
+        t = time.perf_counter()
+        sheets = compose(diagram_panels(diagrams(scene), spec.language), spec, "", scene.path)
+        for sh in sheets:
+            sh.svg()
+        best = min(best, time.perf_counter() - t)
+    return best

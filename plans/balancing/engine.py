@@ -1,0 +1,313 @@
+"""The engine file (TOML, ``format = 1``, ``kind = "engine"``): cylinders, cranks, masses.
+
+.. code-block:: toml
+
+    format = 1
+    kind = "engine"
+    title = "Inline-4, four-stroke"
+    unit = "mm"              # lengths below (r, z, reference_z): mm | cm | m
+    r = 50                   # crank radius
+    lambda = 0.25            # r / l, 0 <= lambda < 1
+    omega = 300              # rad/s (or omega_rpm = 3000)
+    strokes = 4              # 2 or 4: the firing interval is 360/n or 720/n degrees
+    firing_order = [1, 3, 4, 2]   # instead of every crank_deg: even firing in this order
+    reference_z = 0          # plane the moments are taken about (default 0)
+    m_rot = 1.2              # default masses of every cylinder (kg), a cylinder may override
+    m_rec = 1.0
+    [[cylinders]]            # one table per cylinder, in order along the shaft
+    crank_deg = 0            # crank angle of this cylinder relative to cylinder 1
+    z = 0                    # axial position along the shaft
+    bank_deg = 0             # cylinder axis from the vertical (V engines: ±γ/2)
+    m_rot = 1.2              # kg, rotating mass at the crank pin
+    m_rec = 1.0              # kg, reciprocating mass at the piston pin
+    [counterweights]         # optional
+    planes = [0, 300]        # one or two planes for the counterweights (default: the end cylinders)
+    radius = 50              # radius of the counterweights' centres (default r)
+
+Angles (crank_deg, bank_deg and every phase) are measured from the vertical in the
+direction of rotation.  With ``firing_order`` the cylinder that fires k-th (k = 0, 1, ...)
+reaches its top dead centre k·δ after cylinder 1 (δ = 720°/n four-stroke, 360°/n
+two-stroke), so its crank is β = (γ_i − γ_1) − k·δ ahead of crank 1.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from plans.errors import InputError
+from plans.io import loads_toml, read_toml
+from plans.units import LENGTH_UNITS, parse_length, rpm_to_rad_s
+
+TOP_KEYS = {"format", "kind", "title", "unit", "r", "lambda", "omega", "omega_rpm", "strokes",
+            "firing_order", "crank_deg", "reference_z", "m_rot", "m_rec", "cylinders",
+            "counterweights", "sheet"}
+CYLINDER_KEYS = {"name", "crank_deg", "z", "bank_deg", "m_rot", "m_rec"}
+COUNTERWEIGHT_KEYS = {"planes", "radius"}
+
+
+def check_keys(table: dict[str, Any], known: Iterable[str], *, file: str, where: str) -> None:
+    """Refuse a key that is not known here: one line naming it and what is expected.
+    (Same signature as the shared unknown-key helper, so it can stand in for it.)"""
+    known = set(known)
+    for key in table:
+        if key not in known:
+            import difflib
+
+            close = difflib.get_close_matches(str(key), sorted(known), n=1, cutoff=0.6)
+            hint = f"; did you mean {close[0]!r}?" if close else ""
+            raise InputError(f"unknown key{hint} (expected one of {', '.join(sorted(known))})",
+                             file=file, field=f"{where}{key}")
+
+
+@dataclass(frozen=True, slots=True)
+class Cylinder:
+    """One crank-slider unit: its crank β, plane z and bank γ (SI, radians), its masses."""
+
+    number: int  # 1-based, order along the shaft
+    name: str
+    crank: float  # β_i, rad, ahead of crank 1 in the direction of rotation
+    z: float  # m
+    bank: float  # γ_i, rad, from the vertical in the direction of rotation
+    m_rot: float  # kg
+    m_rec: float  # kg
+
+    @property
+    def crank_deg(self) -> float:
+        return math.degrees(self.crank)
+
+    @property
+    def bank_deg(self) -> float:
+        return math.degrees(self.bank)
+
+
+@dataclass(frozen=True, slots=True)
+class Engine:
+    path: str
+    title: str
+    unit: str
+    r: float  # m
+    lam: float  # λ = r / l
+    omega: float  # rad/s
+    strokes: int
+    firing_order: tuple[int, ...] | None
+    cylinders: tuple[Cylinder, ...]
+    reference_z: float  # m
+    cw_planes: tuple[float, ...] | None  # m
+    cw_radius: float  # m
+    raw: dict[str, Any]
+
+    @property
+    def n(self) -> int:
+        return len(self.cylinders)
+
+    @property
+    def rod_length(self) -> float:
+        """Connecting-rod length (m); infinite for λ = 0."""
+        return self.r / self.lam if self.lam > 0 else math.inf
+
+    @property
+    def is_inline(self) -> bool:
+        """All cylinders on one bank: forces along one line, the seed's classic polygons."""
+        return all(abs(c.bank - self.cylinders[0].bank) < 1e-12 for c in self.cylinders)
+
+    @property
+    def is_planar(self) -> bool:
+        """One crank throw: the engine is a planar linkage (single cylinder, V-twin)."""
+        return all(abs(_wrap(c.crank)) < 1e-12 for c in self.cylinders)
+
+    @property
+    def arm_unit(self) -> float:
+        """l_ц, the unit of the dimensionless arms: the mean spacing of the cylinder planes
+        (the crank radius when every cylinder is in one plane)."""
+        zs = sorted({round(c.z, 12) for c in self.cylinders})
+        if len(zs) < 2:
+            return self.r
+        return (zs[-1] - zs[0]) / (len(zs) - 1)
+
+
+def _wrap(a: float) -> float:
+    """An angle reduced to (−π, π]."""
+    return math.atan2(math.sin(a), math.cos(a))
+
+
+class _Reader:
+    def __init__(self, path: str) -> None:
+        self.path = path
+
+    def fail(self, field: str, expected: str) -> InputError:
+        return InputError(expected, file=self.path, field=field)
+
+    def number(self, data: dict[str, Any], key: str, where: str = "", *, default: float | None = None,
+               positive: bool = False) -> float:
+        if key not in data:
+            if default is None:
+                raise self.fail(f"{where}{key}", "missing number")
+            return default
+        v = data[key]
+        if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
+            raise self.fail(f"{where}{key}", f"expected a number, got {v!r}")
+        if positive and v <= 0:
+            raise self.fail(f"{where}{key}", f"expected a positive number, got {v!r}")
+        return float(v)
+
+    def length(self, value: Any, field: str, unit: str, *, positive: bool = False) -> float:
+        try:
+            out = parse_length(value, unit)
+        except ValueError as exc:
+            raise self.fail(field, str(exc)) from None
+        if positive and out <= 0:
+            raise self.fail(field, f"expected a positive length, got {value!r}")
+        return out
+
+
+def load_engine(path: str | Path) -> Engine:
+    """Read and validate an engine file."""
+    return engine_from_dict(read_toml(path), str(path))
+
+
+def parse_engine(text: str, path: str = "<engine>") -> Engine:
+    return engine_from_dict(loads_toml(text, path), path)
+
+
+def engine_from_dict(data: dict[str, Any], path: str = "<engine>") -> Engine:
+    """Validate an engine table; every problem is one InputError naming the key."""
+    rd = _Reader(path)
+    if data.get("format") != 1:
+        raise rd.fail("format", "expected format = 1")
+    if data.get("kind") != "engine":
+        from plans.kinds import command_for
+
+        kind = data.get("kind", "linkage")
+        hint = command_for(kind) if isinstance(kind, str) else ""
+        raise rd.fail("kind", f"this is a {kind!r} file, not an engine; {hint}expected kind = \"engine\"")
+    check_keys(data, TOP_KEYS, file=path, where="")
+    unit = data.get("unit", "mm")
+    if unit not in LENGTH_UNITS:
+        raise rd.fail("unit", f"expected one of {sorted(LENGTH_UNITS)}, got {unit!r}")
+    title = data.get("title", Path(path).stem)
+    if not isinstance(title, str):
+        raise rd.fail("title", "expected a string")
+    if "r" not in data:
+        raise rd.fail("r", "missing crank radius")
+    r = rd.length(data["r"], "r", unit, positive=True)
+    lam = rd.number(data, "lambda")
+    if not 0.0 <= lam < 1.0:
+        raise rd.fail("lambda", f"expected 0 <= lambda = r/l < 1 (the rod longer than the crank), got {lam!r}")
+    if "omega" in data and "omega_rpm" in data:
+        raise rd.fail("omega_rpm", "give omega (rad/s) or omega_rpm, not both")
+    if "omega_rpm" in data:
+        omega = rpm_to_rad_s(rd.number(data, "omega_rpm", positive=True))
+    else:
+        omega = rd.number(data, "omega", positive=True)
+    strokes = data.get("strokes", 4)
+    if strokes not in (2, 4) or isinstance(strokes, bool):
+        raise rd.fail("strokes", f"expected 2 or 4, got {strokes!r}")
+    m_rot0 = rd.number(data, "m_rot", positive=True) if "m_rot" in data else None
+    m_rec0 = rd.number(data, "m_rec", positive=True) if "m_rec" in data else None
+
+    raw = data.get("cylinders")
+    if not isinstance(raw, list) or not raw or not all(isinstance(c, dict) for c in raw):
+        raise rd.fail("cylinders", "expected one table [[cylinders]] per cylinder")
+    n = len(raw)
+    for k, body in enumerate(raw):
+        check_keys(body, CYLINDER_KEYS, file=path, where=f"cylinders[{k}].")
+    banks = [math.radians(rd.number(body, "bank_deg", f"cylinders[{k}].", default=0.0))
+             for k, body in enumerate(raw)]
+    for k, g in enumerate(banks):
+        if not abs(g) < math.pi:
+            raise rd.fail(f"cylinders[{k}].bank_deg", "expected an angle between -180 and 180 degrees")
+    cranks = _cranks(rd, data, raw, banks, int(strokes))
+    cyls = []
+    for k, body in enumerate(raw):
+        where = f"cylinders[{k}]."
+        if "z" in body:
+            z = rd.length(body["z"], f"{where}z", unit)
+        elif n == 1:
+            z = 0.0
+        else:
+            raise rd.fail(f"{where}z", "missing the cylinder's position along the shaft")
+        m_rot = rd.number(body, "m_rot", where, positive=True) if "m_rot" in body else m_rot0
+        m_rec = rd.number(body, "m_rec", where, positive=True) if "m_rec" in body else m_rec0
+        if m_rot is None:
+            raise rd.fail(f"{where}m_rot", "missing rotating mass (kg), here or as m_rot at the top")
+        if m_rec is None:
+            raise rd.fail(f"{where}m_rec", "missing reciprocating mass (kg), here or as m_rec at the top")
+        name = body.get("name", str(k + 1))
+        if not isinstance(name, str) or not name:
+            raise rd.fail(f"{where}name", "expected a short text")
+        cyls.append(Cylinder(k + 1, name, cranks[k], z, banks[k], m_rot, m_rec))
+    ref = rd.length(data.get("reference_z", 0), "reference_z", unit)
+    planes, radius = _counterweights(rd, data, unit, r)
+    order = tuple(data["firing_order"]) if "firing_order" in data else None
+    return Engine(path, title, unit, r, lam, omega, int(strokes), order, tuple(cyls), ref, planes,
+                  radius, data)
+
+
+def _cranks(rd: _Reader, data: dict[str, Any], raw: list[dict[str, Any]], banks: list[float],
+            strokes: int) -> list[float]:
+    """β_i of every cylinder (rad, relative to crank 1): from crank_deg (per cylinder or a
+    list at the top) or from the firing order."""
+    n = len(raw)
+    per = [k for k, body in enumerate(raw) if "crank_deg" in body]
+    given = ["firing_order"] if "firing_order" in data else []
+    given += ["crank_deg"] if "crank_deg" in data else []
+    if per:
+        given.append("cylinders[].crank_deg")
+    if len(given) > 1:
+        raise rd.fail(given[1].split("[")[0] if given[1] != "cylinders[].crank_deg"
+                      else f"cylinders[{per[0]}].crank_deg",
+                      f"give the cranks one way: {' or '.join(given)}, not both")
+    if "firing_order" in data:
+        order = data["firing_order"]
+        if (not isinstance(order, list) or any(isinstance(x, bool) or not isinstance(x, int) for x in order)
+                or sorted(order) != list(range(1, n + 1))):
+            raise rd.fail("firing_order", f"expected the numbers 1..{n} of the {n} cylinders, each once, "
+                                          f"got {order!r}")
+        if order[0] != 1:
+            raise rd.fail("firing_order", f"expected the order to start with cylinder 1, got {order!r}")
+        delta = math.radians((720.0 if strokes == 4 else 360.0) / n)
+        out = [0.0] * n
+        for k, cyl in enumerate(order):
+            out[cyl - 1] = (banks[cyl - 1] - banks[0]) - k * delta
+        return [_wrap(b) for b in out]
+    if "crank_deg" in data:
+        lst = data["crank_deg"]
+        if not isinstance(lst, list) or len(lst) != n:
+            got = len(lst) if isinstance(lst, list) else lst
+            raise rd.fail("crank_deg", f"expected one angle per cylinder ({n} cylinders), got {got!r}")
+        degs = []
+        for k, v in enumerate(lst):
+            if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
+                raise rd.fail(f"crank_deg[{k}]", f"expected a number of degrees, got {v!r}")
+            degs.append(float(v))
+    elif len(per) == n:
+        degs = [rd.number(body, "crank_deg", f"cylinders[{k}].") for k, body in enumerate(raw)]
+    elif n == 1:
+        degs = [0.0]
+    else:
+        missing = next(k for k in range(n) if k not in per)
+        raise rd.fail(f"cylinders[{missing}].crank_deg",
+                      f"missing crank angle: give crank_deg for all {n} cylinders, or firing_order")
+    return [_wrap(math.radians(d - degs[0])) for d in degs]
+
+
+def _counterweights(rd: _Reader, data: dict[str, Any], unit: str, r: float
+                    ) -> tuple[tuple[float, ...] | None, float]:
+    cw = data.get("counterweights", {})
+    if not isinstance(cw, dict):
+        raise rd.fail("counterweights", "expected a table [counterweights]")
+    check_keys(cw, COUNTERWEIGHT_KEYS, file=rd.path, where="counterweights.")
+    planes = None
+    if "planes" in cw:
+        p = cw["planes"]
+        if not isinstance(p, list) or len(p) not in (1, 2):
+            raise rd.fail("counterweights.planes", "expected one or two plane positions, e.g. [0, 300]")
+        planes = tuple(rd.length(v, f"counterweights.planes[{k}]", unit) for k, v in enumerate(p))
+        if len(planes) == 2 and abs(planes[0] - planes[1]) < 1e-12:
+            raise rd.fail("counterweights.planes", "expected two different planes")
+    radius = rd.length(cw["radius"], "counterweights.radius", unit, positive=True) if "radius" in cw else r
+    return planes, radius

@@ -1,0 +1,313 @@
+"""Checking the cycle tables of a hand-drawn dynamics sheet (seed 004's tables 1.1–1.4).
+
+A cycle check file is a check file with a ``[cycle]`` table instead of ``[[positions]]``;
+rows are arrays over the student's positions, as the tables are laid out on the sheet::
+
+    format = 1
+    student = "..."
+    scene = "../dynamics_slider_crank.toml"
+
+    [cycle]
+    phi_deg = [0, 30, 60]            # the student's positions
+    sign = "driving"                 # M_pr > 0 when the loads drive the crank; or "resisting"
+    velocity_scale = { mu = 125 }    # μ of the student's velocity plans, mm per m/s ...
+    # analogue_scale = { mu = 850 }  # ... or of plans of analogues (ω1 = 1), mm per m
+    segment_mm = 1.0                 # a segment drawn and read: ±1 mm
+    rule_pct = 5                     # values: ±5 % (of the row's largest where they vanish)
+
+    [cycle.measured]                 # segments on the plans, mm: p + point, or two points
+    pc = [0, 36, 59]
+    bs2 = [21.6, 18.6, 11]
+
+    [cycle.values]                   # SI: v_C, v_CB, omega_2, I_pr, M_pr, I_A, m2_vS2, I2_w2,
+    I_pr = [2.2317, 2.535, 3.059]    # m3_vC (the rows of I_pr), G2, F_c (loads, N), M_G2 ...
+    M_pr = [0, 83.084, 138.319]
+
+    [cycle.flywheel]
+    inertia = 380.0                  # kg·m², the flywheel the student read off
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import re
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from plans.errors import InputError
+from plans.forces.loads import apply_loads, parse_loads
+from plans.io import atomic_write, dumps, read_toml
+from plans.kinematics.exact import solve
+from plans.scene.model import Scene, load_scene
+
+from .dynamics import dynamics, reduce
+
+_KEYS = {"phi_deg", "sign", "velocity_scale", "analogue_scale", "segment_mm", "rule_pct", "measured", "values",
+         "flywheel"}
+VANISH = 0.05  # a value is judged against 5 % of its row's largest where it vanishes
+
+
+@dataclass(frozen=True, slots=True)
+class CycleItem:
+    quantity: str
+    phi_deg: float | None
+    student: float
+    exact: float
+    unit: str
+    error_pct: float
+    error_mm: float | None
+    tolerance: str
+    verdict: str
+    field: str
+
+    def to_json(self) -> dict[str, Any]:
+        return {"quantity": self.quantity, "phi_deg": self.phi_deg, "student": self.student, "exact": self.exact,
+                "unit": self.unit, "error_pct": self.error_pct, "error_mm": self.error_mm,
+                "tolerance": self.tolerance, "verdict": self.verdict, "field": self.field}
+
+
+@dataclass(frozen=True)
+class CycleReport:
+    path: str
+    student: str
+    scene: Scene
+    items: tuple[CycleItem, ...]
+
+    @property
+    def passed(self) -> int:
+        return sum(1 for i in self.items if i.verdict == "pass")
+
+    @property
+    def failed(self) -> int:
+        return sum(1 for i in self.items if i.verdict == "fail")
+
+    def to_json(self) -> dict[str, Any]:
+        return {"format": 1, "kind": "cycle", "student": self.student, "check_file": self.path,
+                "scene": self.scene.path, "items": [i.to_json() for i in self.items],
+                "summary": {"items": len(self.items), "passed": self.passed, "failed": self.failed}}
+
+
+def is_cycle_check(path: str | Path) -> bool:
+    """A check file whose figures are cycle tables."""
+    try:
+        data = read_toml(path)
+    except InputError:
+        return False
+    return isinstance(data.get("cycle"), dict) and "positions" not in data
+
+
+def _fail(path: str, field: str, msg: str) -> InputError:
+    return InputError(msg, file=path, field=field)
+
+
+def _scale(path: str, raw: Any, field: str) -> float:
+    if not (isinstance(raw, dict) and len(raw) == 1 and set(raw) <= {"mu", "K"}):
+        raise _fail(path, field, "expected { mu = mm per unit } or { K = unit per mm }")
+    (k, v), = raw.items()
+    if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v) or v <= 0:
+        raise _fail(path, field, f"expected a positive scale, got {v!r}")
+    return float(v) if k == "mu" else 1.0 / float(v)
+
+
+def _rows(path: str, raw: Any, where: str, n: int) -> dict[str, list[float | None]]:
+    if not isinstance(raw, dict):
+        raise _fail(path, where, "expected a table of name = [one figure per position]")
+    out = {}
+    for name, vals in raw.items():
+        f = f"{where}.{name}"
+        if not (isinstance(vals, list) and len(vals) == n):
+            raise _fail(path, f, f"expected {n} figures, one per position of cycle.phi_deg")
+        row: list[float | None] = []
+        for v in vals:
+            if v == "" or v == "-":
+                row.append(None)
+            elif isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
+                raise _fail(path, f, f"expected numbers (or \"-\" for none), got {v!r}")
+            else:
+                row.append(float(v))
+        out[name] = row
+    return out
+
+
+def _segment(scene: Scene, name: str) -> tuple[str | None, str] | None:
+    """``pc`` -> (None, "C"); ``bs2`` -> ("B", "S2"): the pole or a point, then a point."""
+    points = sorted({n for link in scene.links.values() for n in link.points} | set(scene.frame_points),
+                    key=len, reverse=True)
+    low = {p.lower(): p for p in points}
+
+    def split(s: str) -> list[str] | None:
+        if not s:
+            return []
+        for p in sorted(low, key=len, reverse=True):
+            if s.startswith(p):
+                rest = split(s[len(p):])
+                if rest is not None:
+                    return [low[p]] + rest
+        return None
+
+    if name.startswith("p") and len(name) > 1:
+        tail = split(name[1:])
+        if tail is not None and len(tail) == 1:
+            return None, tail[0]
+    parts = split(name)
+    if parts is not None and len(parts) == 2:
+        return parts[0], parts[1]
+    return None
+
+
+def check_cycle(path: str | Path) -> CycleReport:
+    path = str(path)
+    data = read_toml(path)
+    cyc = data["cycle"]
+    for key in cyc:
+        if key not in _KEYS:
+            raise _fail(path, f"cycle.{key}", f"unknown key; expected some of {sorted(_KEYS)}")
+    scene_ref = data.get("scene")
+    if not isinstance(scene_ref, str):
+        raise _fail(path, "scene", "expected the path of the scene file")
+    target = Path(scene_ref) if Path(scene_ref).is_absolute() else Path(path).parent / scene_ref
+    if not target.is_file():
+        raise _fail(path, "scene", f"scene file {scene_ref!r} not found (looked at {target})")
+    scene = load_scene(target)
+    phis = cyc.get("phi_deg")
+    if not (isinstance(phis, list) and phis and all(isinstance(p, int | float) and not isinstance(p, bool)
+                                                    for p in phis)):
+        raise _fail(path, "cycle.phi_deg", "expected the student's crank angles, e.g. [0, 30, 60]")
+    phis_a = np.asarray(phis, float)
+    n = len(phis)
+    sign = cyc.get("sign", "driving")
+    if sign not in ("driving", "resisting"):
+        raise _fail(path, "cycle.sign", f"expected \"driving\" or \"resisting\", got {sign!r}")
+    mu_v = _scale(path, cyc["velocity_scale"], "cycle.velocity_scale") if "velocity_scale" in cyc else None
+    mu_an = _scale(path, cyc["analogue_scale"], "cycle.analogue_scale") if "analogue_scale" in cyc else None
+    seg_tol = float(cyc.get("segment_mm", 1.0))
+    rule = float(cyc.get("rule_pct", 5.0))
+    loads = parse_loads(scene)
+    kin = solve(scene, phis_a, order=2)
+    spec_rotor = float(scene.raw.get("dynamics", {}).get("rotor_inertia", 0.0))
+    red = reduce(scene, loads, kin, spec_rotor)
+    w = abs(scene.driver.omega)
+    exact_rows: dict[str, tuple[np.ndarray, str]] = {"I_pr": (red.I_pr, "kg*m^2"),
+                                                      "M_pr": (red.M_pr * (1 if sign == "driving" else -1), "N*m")}
+    for r in red.inertia_rows:
+        exact_rows[r.key] = (r.values, "kg*m^2")
+    for r in red.load_rows:
+        exact_rows[f"M_{r.key}"] = (r.values * (1 if sign == "driving" else -1), "N*m")
+    for f in apply_loads(scene, loads, kin).forces:
+        if f.kind != "inertia":
+            exact_rows[f.label] = (np.abs(f.F), "N")
+    for lid in scene.links:
+        exact_rows[f"omega_{lid}"] = (np.abs(kin.omega(lid)), "rad/s")
+    items: list[CycleItem] = []
+    measured = _rows(path, cyc.get("measured", {}), "cycle.measured", n)
+    for name, row in measured.items():
+        seg = _segment(scene, name)
+        if seg is None:
+            raise _fail(path, f"cycle.measured.{name}", "not a segment of the plan: p + a point (pc) or two "
+                                                       "points (bc, bs2)")
+        if mu_v is None and mu_an is None:
+            raise _fail(path, "cycle.velocity_scale", "segments need the student's velocity_scale or analogue_scale")
+        vb = kin.point(seg[1])[1]
+        va = 0 if seg[0] is None else kin.point(seg[0])[1]
+        mm = np.abs(vb - va) * (mu_v if mu_v is not None else (mu_an or 0.0) / w)
+        for k, s in enumerate(row):
+            if s is None:
+                continue
+            err = abs(s - mm[k])
+            items.append(CycleItem(name, float(phis_a[k]), s, float(mm[k]), "mm",
+                                   100 * err / max(abs(mm[k]), VANISH * float(np.max(mm)), 1e-300), err,
+                                   f"±{seg_tol:g} mm", "pass" if err <= seg_tol + 1e-9 else "fail",
+                                   f"cycle.measured.{name}[{k}]"))
+    values = _rows(path, cyc.get("values", {}), "cycle.values", n)
+    for name, row in values.items():
+        ex = _exact_value(scene, kin, name, exact_rows)
+        if ex is None:
+            raise _fail(path, f"cycle.values.{name}", f"the scene has no such row; expected one of "
+                                                      f"{sorted(exact_rows)} or v_X, v_XY")
+        vals, unit = ex
+        ref = VANISH * float(np.max(np.abs(vals)))
+        for k, s in enumerate(row):
+            if s is None:
+                continue
+            e = float(vals[k])
+            pct = 100 * abs(s - e) / max(abs(e), ref, 1e-300)
+            items.append(CycleItem(name, float(phis_a[k]), s, e, unit, pct, None, f"±{rule:g} %",
+                                   "pass" if pct <= rule else "fail", f"cycle.values.{name}[{k}]"))
+    fly = cyc.get("flywheel", {})
+    if fly:
+        if not isinstance(fly, dict) or set(fly) - {"inertia"} or "inertia" not in fly:
+            raise _fail(path, "cycle.flywheel", "expected { inertia = kg·m² }")
+        d = dynamics(scene)
+        s = float(fly["inertia"])
+        e = d.flywheel.inertia_exact
+        pct = 100 * abs(s - e) / abs(e)
+        items.append(CycleItem("I_fw", None, s, e, "kg*m^2", pct, None, f"±{rule:g} %",
+                               "pass" if pct <= rule else "fail", "cycle.flywheel.inertia"))
+    student = data.get("student", Path(path).stem)
+    return CycleReport(path, str(student), scene, tuple(items))
+
+
+def _exact_value(scene: Scene, kin: Any, name: str, rows: dict[str, tuple[np.ndarray, str]]):
+    if name in rows:
+        return rows[name]
+    m = re.fullmatch(r"v_([A-Z][A-Za-z0-9]*)", name)
+    points = {nm for link in scene.links.values() for nm in link.points}
+    if m:
+        if m.group(1) in points:
+            return np.abs(kin.point(m.group(1))[1]), "m/s"
+        for a in sorted(points, key=len, reverse=True):  # v_CB: relative velocity of C about B
+            if m.group(1).startswith(a) and m.group(1)[len(a):] in points:
+                return np.abs(kin.point(a)[1] - kin.point(m.group(1)[len(a):])[1]), "m/s"
+    return None
+
+
+def text(rep: CycleReport) -> str:
+    lines = [f"Check of {rep.student} — cycle tables of {rep.scene.title}", f"  file {rep.path}",
+             f"  {'quantity':<10}{'phi':>9}{'student':>12}{'exact':>12}{'error %':>9}  tolerance  verdict"]
+    for i in rep.items:
+        phi = "" if i.phi_deg is None else f"{i.phi_deg:g}"
+        lines.append(f"  {i.quantity:<10}{phi:>9}{i.student:>12.6g}{i.exact:>12.6g}{i.error_pct:>9.2f}  "
+                     f"{i.tolerance:<9}  {i.verdict}")
+    lines.append(f"  {len(rep.items)} figures: {rep.passed} pass, {rep.failed} fail")
+    return "\n".join(lines)
+
+
+def csv_text(rep: CycleReport) -> str:
+    """One line per figure checked."""
+    import csv
+    import io
+
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(["quantity", "phi_deg", "student", "exact", "unit", "error_pct", "error_mm", "tolerance", "verdict",
+                "field"])
+    for i in rep.items:
+        w.writerow([i.quantity, "" if i.phi_deg is None else repr(i.phi_deg), repr(i.student), repr(i.exact), i.unit,
+                    f"{i.error_pct:.4f}", "" if i.error_mm is None else f"{i.error_mm:.4f}", i.tolerance, i.verdict,
+                    i.field])
+    return buf.getvalue()
+
+
+def run_file(target: Path, args: argparse.Namespace) -> int:
+    """``plans check`` on a cycle check file (same options as for a sheet's check file)."""
+    import sys
+
+    rep = check_cycle(target)
+    if args.json == "-":
+        sys.stdout.write(dumps(rep.to_json()))
+    elif args.json:
+        atomic_write(args.json, dumps(rep.to_json()))
+    if getattr(args, "csv", None):
+        atomic_write(args.csv, csv_text(rep))
+    if getattr(args, "out", None):
+        out = Path(args.out)
+        out.mkdir(parents=True, exist_ok=True)
+        atomic_write(out / f"{target.stem}.json", dumps(rep.to_json()))
+        atomic_write(out / f"{target.stem}.txt", text(rep) + "\n")
+    if not args.quiet and args.json != "-":
+        print(text(rep))
+    return 0

@@ -1,0 +1,102 @@
+"""The cycle's part of a solved scene: its tables, dynamics and diagrams, as asked for."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from plans.scene.model import Scene
+
+from .diagrams import Diagrams
+from .dynamics import Dynamics
+from .table import CycleTable, csv_text, plan_table, position_table, text
+
+
+@dataclass(frozen=True)
+class CycleResult:
+    tables: tuple[CycleTable, ...]
+    dynamics: Dynamics | None
+    diagrams: Diagrams | None
+
+
+def solve_cycle(scene: Scene, kin: Any, plans: Any) -> CycleResult | None:
+    """Tables over the positions (several positions), dynamics and diagrams (when asked)."""
+    dyn = dia = None
+    if scene.wants("dynamics"):
+        from .dynamics import dynamics
+
+        dyn = dynamics(scene)
+    if scene.wants("diagrams"):
+        from .diagrams import diagrams
+
+        dia = diagrams(scene)
+    tables: list[CycleTable] = []
+    base = plan_table(plans) if plans else position_table(kin)
+    if base is not None:
+        tables.append(base)
+    if dyn is not None:
+        from .output import dynamics_tables
+
+        tables += dynamics_tables(dyn)
+    if not tables and dyn is None and dia is None:
+        return None
+    return CycleResult(tuple(tables), dyn, dia)
+
+
+def _l(a: Any) -> list[float]:
+    return [float(x) for x in np.asarray(a, float)]
+
+
+def diagrams_json(d: Diagrams) -> dict[str, Any]:
+    out = []
+    for g in d.diagrams:
+        out.append({"name": g.name, "subject": g.subject, "quantity": g.quantity, "unit": g.unit,
+                    "phi_deg": _l(g.phi_deg), "values": _l(g.values),
+                    "exact": _l(np.interp(g.phi_deg, g.exact_phi_deg, g.exact)),
+                    "scale": g.scale, "scale_formula": g.scale_formula, "pole_mm": g.pole_mm,
+                    "error_max_pct": g.error_max_pct, "error_rms_pct": g.error_rms_pct,
+                    "integral": None if g.integral is None else _l(g.integral),
+                    "integral_error_max_pct": g.integral_error_max_pct})
+    return {"method": d.spec.method, "omega": d.omega, "mu_phi": d.mu_phi, "pole_mm": d.pole_mm,
+            "pole2_mm": d.pole2_mm,
+            "nodes_deg": _l(d.nodes_deg), "diagrams": out}
+
+
+def cycle_json(cr: CycleResult) -> dict[str, Any]:
+    """Top-level JSON blocks: ``cycle`` (tables), ``dynamics``, ``diagrams``."""
+    out: dict[str, Any] = {}
+    if cr.tables:
+        out["cycle"] = {"tables": [t.to_json() for t in cr.tables]}
+    if cr.dynamics is not None:
+        from .output import dynamics_json
+
+        out["dynamics"] = dynamics_json(cr.dynamics)
+    if cr.diagrams is not None:
+        out["diagrams"] = diagrams_json(cr.diagrams)
+    return out
+
+
+def cycle_text(cr: CycleResult) -> str:
+    parts = [text(t) for t in cr.tables]
+    if cr.diagrams is not None:
+        d = cr.diagrams
+        lines = [f"Kinematic diagrams ({d.spec.method}, H1 = {d.pole_mm:g} mm, H2 = {d.pole2_mm:g} mm, "
+                 f"μφ = {d.mu_phi:.4g} mm/rad); "
+                 f"error of the graphical method in % of each diagram's range"]
+        for g in d.diagrams:
+            integ = "" if g.integral_error_max_pct is None else \
+                f"; integrated back from the next: max {g.integral_error_max_pct:.3g} %"
+            lines.append(f"  {g.name:8s} {g.scale_formula:44s} max {g.error_max_pct:.3g} %, "
+                         f"rms {g.error_rms_pct:.3g} %{integ}")
+        parts.append("\n".join(lines) + "\n")
+    if cr.dynamics is not None:
+        from .output import dynamics_text
+
+        parts.append(dynamics_text(cr.dynamics) + "\n")
+    return "\n".join(parts)
+
+
+def cycle_csv(cr: CycleResult) -> str:
+    return csv_text(cr.tables)

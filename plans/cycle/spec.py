@@ -1,0 +1,194 @@
+"""``[dynamics]`` and ``[diagrams]``: what a scene asks of the cycle.
+
+.. code-block:: toml
+
+    outputs = ["dynamics", "diagrams"]
+
+    [dynamics]
+    rotor_inertia = 2.06     # kg·m², the rotor's own inertia at the crank (I_A)
+    delta = 0.05             # coefficient of fluctuation δ = (ω_max − ω_min)/ω_m
+    driving = "constant"     # the driving moment: constant, from the cycle's work balance,
+                             # or a number (N·m, in the crank's sense) that must balance it
+    positions = 12           # or phi_deg = [...] (extra positions such as the dead centres)
+    pole_mm = 40             # pole distance H of the graphical integration (default: chosen)
+    exact_steps = 3600       # steps of the exact integration over 0..360°
+
+    [diagrams]
+    points = ["B"]           # s along the guide (a slider) or the path (any other point)
+    links = [2]              # and/or angles of links
+    quantities = ["s", "v", "a"]
+    positions = 12           # equal steps over the revolution
+    method = "chords"        # or "tangents"
+    pole_mm = 30             # H of the differentiation (default: chosen for ~50 mm ordinates)
+    length_mm = 240          # the φ axis of one revolution
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+from plans.errors import InputError
+from plans.scene.model import Scene
+
+#: The widest step between the positions of a cycle (the graphical integration needs the
+#: whole revolution, drawn by chords no longer than this).
+MAX_STEP_DEG = 90.0
+#: The most positions of a cycle (one every 0.1°).
+MAX_POSITIONS = 3600
+
+
+@dataclass(frozen=True, slots=True)
+class DynamicsSpec:
+    rotor_inertia: float
+    delta: float
+    driving: float | None  # None: constant, from the work balance
+    phi_deg: tuple[float, ...]  # the table's positions (closing 360° added by the method)
+    pole_mm: float | None
+    exact_steps: int
+
+
+@dataclass(frozen=True, slots=True)
+class DiagramsSpec:
+    points: tuple[str, ...]
+    links: tuple[int, ...]
+    quantities: tuple[str, ...]
+    phi_deg: tuple[float, ...]  # equal steps, first = phi0, without the closing 360°
+    method: str
+    pole_mm: float | None
+    length_mm: float
+
+
+_DYN_KEYS = {"rotor_inertia", "delta", "driving", "positions", "phi_deg", "pole_mm", "exact_steps"}
+_DIA_KEYS = {"points", "links", "quantities", "positions", "phi_deg", "method", "pole_mm", "length_mm"}
+QUANTITIES = ("s", "v", "a")
+METHODS = ("chords", "tangents")
+
+
+def _fail(scene: Scene, field: str, msg: str) -> InputError:
+    return InputError(msg, file=scene.path, field=field)
+
+
+def _table(scene: Scene, key: str, known: set[str]) -> dict[str, Any]:
+    raw = scene.raw.get(key, {})
+    if not isinstance(raw, dict):
+        raise _fail(scene, key, f"expected a table [{key}]")
+    for k in raw:
+        if k not in known:
+            raise _fail(scene, f"{key}.{k}", f"unknown key; expected some of {sorted(known)}")
+    return raw
+
+
+def _number(scene: Scene, raw: dict[str, Any], key: str, where: str) -> float:
+    v = raw[key]
+    if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
+        raise _fail(scene, f"{where}.{key}", f"expected a number, got {v!r}")
+    return float(v)
+
+
+def _positions(scene: Scene, raw: dict[str, Any], where: str, *, equal: bool) -> tuple[float, ...]:
+    """The positions of a cycle: ``positions = N`` equal steps from the driver's first angle, or
+    ``phi_deg = [...]`` increasing within one revolution with no step over MAX_STEP_DEG."""
+    phi0 = scene.driver.phis_deg[0] if scene.driver.phis_deg else 0.0
+    if "positions" in raw and "phi_deg" in raw:
+        raise _fail(scene, f"{where}.phi_deg", "give positions or phi_deg, not both")
+    if "phi_deg" in raw:
+        vals = raw["phi_deg"]
+        if not (isinstance(vals, list) and 4 <= len(vals) <= MAX_POSITIONS and all(
+                not isinstance(v, bool) and isinstance(v, int | float) and math.isfinite(v) for v in vals)):
+            raise _fail(scene, f"{where}.phi_deg", f"expected 4 to {MAX_POSITIONS} crank angles in degrees")
+        phis = [float(v) for v in vals]
+        if any(b <= a for a, b in zip(phis, phis[1:], strict=False)):
+            raise _fail(scene, f"{where}.phi_deg", "expected crank angles increasing from position to position")
+        if abs(phis[-1] - phis[0] - 360.0) < 1e-9:
+            phis = phis[:-1]  # the closing position is the first one again
+        span = phis[-1] - phis[0]
+        gap = max([b - a for a, b in zip(phis, phis[1:], strict=False)] + [360.0 - span])
+        if span >= 360.0 or gap > MAX_STEP_DEG + 1e-9:
+            raise _fail(scene, f"{where}.phi_deg",
+                        f"the positions do not close the cycle: they must lie within one revolution "
+                        f"(from {phis[0]:g}° to {phis[0] + 360:g}°) with no step over {MAX_STEP_DEG:g}° "
+                        f"(the widest here is {gap:g}°)")
+        if equal:
+            closed = phis + [phis[0] + 360.0]
+            steps = [b - a for a, b in zip(closed, closed[1:], strict=False)]
+            if max(steps) - min(steps) > 1e-6:
+                raise _fail(scene, f"{where}.phi_deg",
+                            "the diagram does not cover the stroke in equal steps: graphical differentiation "
+                            "needs equal steps over the whole revolution (use positions = N)")
+        return tuple(phis)
+    n = raw.get("positions", 12)
+    if isinstance(n, bool) or not isinstance(n, int) or n < 4 or n > MAX_POSITIONS:
+        raise _fail(scene, f"{where}.positions", f"expected a whole number of positions from 4 to {MAX_POSITIONS}, "
+                                                 f"got {n!r}")
+    return tuple(phi0 + 360.0 * k / n for k in range(n))
+
+
+def dynamics_spec(scene: Scene) -> DynamicsSpec:
+    raw = _table(scene, "dynamics", _DYN_KEYS)
+    where = "dynamics"
+    if "delta" not in raw:
+        raise _fail(scene, "dynamics.delta", "missing the coefficient of fluctuation δ, e.g. delta = 0.05")
+    delta = _number(scene, raw, "delta", where)
+    if not 0.0 < delta < 1.0:
+        raise _fail(scene, "dynamics.delta", f"expected 0 < δ < 1, got {delta:g}")
+    rotor = _number(scene, raw, "rotor_inertia", where) if "rotor_inertia" in raw else 0.0
+    if rotor < 0:
+        raise _fail(scene, "dynamics.rotor_inertia", f"expected a moment of inertia >= 0 kg·m², got {rotor:g}")
+    driving: float | None = None
+    d = raw.get("driving", "constant")
+    if isinstance(d, str):
+        if d != "constant":
+            raise _fail(scene, "dynamics.driving", f"expected \"constant\" or a moment in N·m, got {d!r}")
+    else:
+        driving = _number(scene, raw, "driving", where)
+    pole = None
+    if "pole_mm" in raw:
+        pole = _number(scene, raw, "pole_mm", where)
+        if pole <= 0:
+            raise _fail(scene, "dynamics.pole_mm", f"expected a positive pole distance in mm, got {pole:g}")
+    steps = raw.get("exact_steps", 3600)
+    if isinstance(steps, bool) or not isinstance(steps, int) or not 360 <= steps <= 200000:
+        raise _fail(scene, "dynamics.exact_steps", f"expected a whole number from 360 to 200000, got {steps!r}")
+    if scene.driver.omega == 0:
+        raise _fail(scene, "driver.omega", "the dynamics needs the mean angular velocity of the crank (ω ≠ 0)")
+    return DynamicsSpec(rotor, delta, driving, _positions(scene, raw, where, equal=False), pole, steps)
+
+
+def diagrams_spec(scene: Scene) -> DiagramsSpec:
+    raw = _table(scene, "diagrams", _DIA_KEYS)
+    pts = raw.get("points", [])
+    if not (isinstance(pts, list) and all(isinstance(p, str) for p in pts)):
+        raise _fail(scene, "diagrams.points", "expected a list of point names, e.g. points = [\"B\"]")
+    known = {n for link in scene.links.values() for n in link.points}
+    for p in pts:
+        if p not in known:
+            raise _fail(scene, "diagrams.points", f"unknown point {p!r}; expected one of {sorted(known)}")
+    links = raw.get("links", [])
+    if not (isinstance(links, list) and all(isinstance(x, int) and not isinstance(x, bool) for x in links)):
+        raise _fail(scene, "diagrams.links", "expected a list of link numbers, e.g. links = [2]")
+    for lid in links:
+        if lid not in scene.links:
+            raise _fail(scene, "diagrams.links", f"unknown link {lid}; expected one of {sorted(scene.links)}")
+    if not pts and not links:
+        raise _fail(scene, "diagrams.points", "expected at least one point (or links = [...]) to draw")
+    qs = raw.get("quantities", list(QUANTITIES))
+    if not (isinstance(qs, list) and qs and all(q in QUANTITIES for q in qs)):
+        raise _fail(scene, "diagrams.quantities", f"expected some of {list(QUANTITIES)}, got {qs!r}")
+    method = raw.get("method", "chords")
+    if method not in METHODS:
+        raise _fail(scene, "diagrams.method", f"expected one of {list(METHODS)}, got {method!r}")
+    pole = None
+    if "pole_mm" in raw:
+        pole = _number(scene, raw, "pole_mm", "diagrams")
+        if pole <= 0:
+            raise _fail(scene, "diagrams.pole_mm", f"expected a positive pole distance in mm, got {pole:g}")
+    length = _number(scene, raw, "length_mm", "diagrams") if "length_mm" in raw else 240.0
+    if not 60.0 <= length <= 700.0:
+        raise _fail(scene, "diagrams.length_mm", f"expected a φ axis from 60 to 700 mm long, got {length:g}")
+    if scene.driver.omega == 0:
+        raise _fail(scene, "driver.omega", "v(φ) and a(φ) need the crank's angular velocity (ω ≠ 0)")
+    phis = _positions(scene, raw, "diagrams", equal=True)
+    return DiagramsSpec(tuple(pts), tuple(links), tuple(q for q in QUANTITIES if q in qs), phis, method,
+                        pole, length)

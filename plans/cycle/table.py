@@ -1,0 +1,129 @@
+"""Tables across positions: quantities as rows, positions as columns (seed 004's table 1.1).
+
+Each quantity read off a plan gives two rows, its segment on the plan in mm and its
+value; scenes without plans give the coordinates of their points.  The dynamics adds the
+plans of analogues (segments at μ of the analogue plan and v/ω1), the reduced moment of
+inertia term by term (table 1.2) and the reduced moment of forces load by load (table 1.4).
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+
+@dataclass(frozen=True, slots=True)
+class TableRow:
+    key: str  # machine name: "v_B", "v_B:mm", "I_pr", ...
+    label: str  # as printed: "p_v b", "v_B", "m_2 (v_S2/ω_1)^2"
+    unit: str  # "mm", "m/s", "kg*m^2", ...
+    values: tuple[float | None, ...]  # one per position (None: not at this position)
+
+
+@dataclass(frozen=True, slots=True)
+class CycleTable:
+    title: str
+    phi_deg: tuple[float, ...]
+    rows: tuple[TableRow, ...]
+
+    def row(self, key: str) -> TableRow:
+        for r in self.rows:
+            if r.key == key:
+                return r
+        raise KeyError(key)
+
+    def to_json(self) -> dict[str, Any]:
+        return {"title": self.title, "phi_deg": list(self.phi_deg),
+                "rows": [{"key": r.key, "label": r.label, "unit": r.unit, "values": list(r.values)}
+                         for r in self.rows]}
+
+
+def _clean(x: Any) -> float | None:
+    if x is None:
+        return None
+    v = float(x)
+    return v if math.isfinite(v) else None
+
+
+def plan_table(plans: Sequence[Any], title: str = "Plans over the cycle") -> CycleTable | None:
+    """Segments (mm) and values read off the velocity and acceleration plans, per position."""
+    if len(plans) < 2:
+        return None
+    order: list[tuple[str, str | None, str]] = []
+    cells: dict[tuple[str, str], list[float | None]] = {}
+    n = len(plans)
+    for k, pp in enumerate(plans):
+        for r in pp.readings:
+            if r.quantity not in [q for q, _, _ in order]:
+                order.append((r.quantity, r.segment, r.unit))
+            if r.length_mm is not None:
+                cells.setdefault((r.quantity, "mm"), [None] * n)[k] = _clean(r.length_mm)
+            cells.setdefault((r.quantity, "value"), [None] * n)[k] = _clean(r.value)
+    rows: list[TableRow] = []
+    for q, seg, unit in order:
+        if (q, "mm") in cells:
+            rows.append(TableRow(f"{q}:mm", seg or q, "mm", tuple(cells[(q, "mm")])))
+        rows.append(TableRow(q, q, unit, tuple(cells[(q, "value")])))
+    return CycleTable(title, tuple(float(pp.phi_deg) for pp in plans), tuple(rows))
+
+
+def position_table(kin: Any, title: str = "Positions over the cycle") -> CycleTable | None:
+    """Coordinates of the points (m) and angles of the links (deg) when no plan is drawn."""
+    if kin.n < 2:
+        return None
+    rows: list[TableRow] = []
+    for nm in kin.point_names():
+        r = kin.point(nm)[0]
+        rows.append(TableRow(f"x_{nm}", f"x_{nm}", "m", tuple(_clean(x) for x in r.real)))
+        rows.append(TableRow(f"y_{nm}", f"y_{nm}", "m", tuple(_clean(x) for x in r.imag)))
+    for lid in sorted(kin.scene.links):
+        th = np.degrees(kin.theta(lid))
+        rows.append(TableRow(f"theta_{lid}", f"θ_{lid}", "deg", tuple(_clean(x) for x in th)))
+    return CycleTable(title, tuple(float(x) for x in kin.phi_deg), tuple(rows))
+
+
+# --------------------------------------------------------------------------- printing
+
+
+def _cell(v: float | None) -> str:
+    if v is None:
+        return "-"
+    if v == 0 or (abs(v) >= 1e-3 and abs(v) < 1e6):
+        return f"{v:.4g}" if abs(v) < 1000 else f"{v:.1f}"
+    return f"{v:.3e}"
+
+
+def text(table: CycleTable, columns: int = 7) -> str:
+    """Blocks of ``columns`` positions, numbered 1..N as the course numbers them."""
+    lines = [table.title]
+    n = len(table.phi_deg)
+    wlab = max([len(f"{r.label}, {r.unit}") for r in table.rows] + [14])
+    for start in range(0, n, columns):
+        ks = range(start, min(n, start + columns))
+        lines.append(f"  {'position':<{wlab}}" + "".join(f"{k + 1:>11d}" for k in ks))
+        lines.append(f"  {'phi, deg':<{wlab}}" + "".join(f"{table.phi_deg[k]:>11.6g}" for k in ks))
+        for r in table.rows:
+            big = max([abs(v) for v in r.values if v is not None] + [0.0])
+            cells = [None if v is None else (0.0 if abs(v) <= 1e-9 * big else v) for v in r.values]
+            head = f"{r.label}, {r.unit}" if r.unit else r.label
+            lines.append(f"  {head:<{wlab}}" + "".join(f"{_cell(cells[k]):>11s}" for k in ks))
+        lines.append("")
+    return "\n".join(lines)
+
+
+def csv_text(tables: Sequence[CycleTable]) -> str:
+    """One CSV: a header of crank angles per table, then one line per quantity."""
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    for t in tables:
+        w.writerow(["table", t.title])
+        w.writerow(["quantity", "label", "unit"] + [f"{p:.10g}" for p in t.phi_deg])
+        for r in t.rows:
+            w.writerow([r.key, r.label, r.unit] + ["" if v is None else repr(float(v)) for v in r.values])
+    return buf.getvalue()

@@ -1,0 +1,107 @@
+"""Scales of the plans as a draftsman picks them: round numbers, each plan within its length.
+
+Every default scale is 1, 2, 2.5, 4 or 5 × 10^k (this set is closed under 1/x, so μ and
+K = 1/μ are both round).  One scale serves every position while the longest vector of
+each plan stays within ``LONGEST_MM``; a position whose plan would run longer gets a round
+scale of its own.  ``[scales] velocity = { known_mm = 100 }`` keeps the course habit of a
+given length for the known vector (pa = 100 mm) instead.
+"""
+
+from __future__ import annotations
+
+import math
+
+from plans.kinematics.exact import Kinematics
+
+#: Round mantissas of a scale (either direction of the ratio).
+ROUND = (1.0, 2.0, 2.5, 4.0, 5.0)
+#: The known vector (crank pin) is drawn at most this long (mm) at the common scale.
+KNOWN_MM = 100.0
+#: No plan's longest vector runs longer than this (mm); longer ones get their own scale.
+LONGEST_MM = 150.0
+
+
+def round_scale(longest: float, target_mm: float = KNOWN_MM) -> float:
+    """μ (mm per unit), round in both directions, the largest that draws ``longest`` within
+    ``target_mm``; 1 for a zero or non-finite length (no scale from a zero vector)."""
+    if not (longest > 0 and math.isfinite(longest)):
+        return 1.0
+    k_min = longest / target_mm
+    e = math.floor(math.log10(k_min))
+    for m in ROUND + (10.0,):
+        K = m * 10.0**e
+        if K >= k_min * (1 - 1e-12):
+            return 1.0 / K
+    return 1.0 / 10.0 ** (e + 1)  # pragma: no cover
+
+
+def is_round(mu: float) -> bool:
+    """True for 1, 2, 2.5, 4, 5 × 10^k."""
+    if not (mu > 0 and math.isfinite(mu)):
+        return False
+    e = math.floor(math.log10(mu))
+    m = mu / 10.0**e
+    return any(abs(m - r) < 1e-9 * r for r in ROUND + (10.0,))
+
+
+def known_vectors(kin: Kinematics) -> tuple[float, float]:
+    """|v_A| and |a_A| of the crank pin (SI): the known vectors of the plans."""
+    d = kin.scene.driver
+    l1 = abs(kin.scene.links[d.link].points[kin.scene.links[d.link].axis[1]])
+    return abs(d.omega) * l1, l1 * math.hypot(d.omega**2, d.eps)
+
+
+def common_scales(kin: Kinematics) -> tuple[float, float]:
+    """μv and μa for every position: the scene's, the known-vector length it gives, or round."""
+    va, aa = known_vectors(kin)
+    sc = kin.scene.scales
+    out = []
+    for key, known in (("velocity", va), ("acceleration", aa)):
+        if key in sc:
+            out.append(sc[key])
+        elif f"{key}_known_mm" in sc and known > 0:
+            out.append(sc[f"{key}_known_mm"] / known)
+        else:
+            out.append(round_scale(known))
+    return out[0], out[1]
+
+
+def refit(kin: Kinematics, plans: list, build) -> list:
+    """``plans`` built at the common scales, each position whose plan would run past
+    ``LONGEST_MM`` rebuilt at a round scale of its own (a scale the scene gives is kept)."""
+    sc = kin.scene.scales
+    out = list(plans)
+    for k, pp in enumerate(plans):
+        v, a = pp.velocity, pp.acceleration
+        mv = v.scale if v is not None else None
+        ma = a.scale if a is not None else None
+        mv2, ma2 = mv, ma
+        if v is not None and mv and not _given(sc, "velocity") and v.extent > LONGEST_MM:
+            mv2 = round_scale(v.extent / mv, LONGEST_MM)
+        if a is not None and ma and not _given(sc, "acceleration") and a.extent > LONGEST_MM:
+            ma2 = round_scale(a.extent / ma, LONGEST_MM)
+        if (mv2, ma2) != (mv, ma):
+            out[k] = build(kin, k, velocity_scale=mv2, acceleration_scale=ma2)
+    return out
+
+
+def _given(sc: dict[str, float], key: str) -> bool:
+    return key in sc or f"{key}_known_mm" in sc
+
+
+def fitted(kin: Kinematics, k: int, mv: float, ma: float, build):
+    """Plans at position ``k`` at the common scales, rebuilt at a round scale of their own
+    where a plan's longest vector would exceed ``LONGEST_MM`` (a scale the scene gives is kept)."""
+    pp = build(kin, k, velocity_scale=mv, acceleration_scale=ma)
+    sc = kin.scene.scales
+    mv2, ma2 = mv, ma
+    if pp.velocity is not None and not _given(sc, "velocity") and pp.velocity.extent > LONGEST_MM:
+        mv2 = round_scale(pp.velocity.extent / mv, LONGEST_MM)
+    if pp.acceleration is not None and not _given(sc, "acceleration") and pp.acceleration.extent > LONGEST_MM:
+        ma2 = round_scale(pp.acceleration.extent / ma, LONGEST_MM)
+    if (mv2, ma2) != (mv, ma):
+        pp = build(kin, k, velocity_scale=mv2, acceleration_scale=ma2)
+    return pp
+
+
+__all__ = ["ROUND", "round_scale", "is_round", "common_scales", "fitted", "refit", "known_vectors"]

@@ -1,0 +1,373 @@
+"""Engine balancing: seed 002's tables, the classic engines, and independent oracles
+(time-domain sums of the exact piston motion, the kinetostatics of the same engine)."""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from plans.balancing.analysis import balance
+from plans.balancing.engine import engine_from_dict, load_engine
+from plans.balancing.exact import exact_check, truncation_table
+from plans.cli import main
+from plans.io import read_toml
+
+ROOT = Path(__file__).resolve().parent.parent
+ENGINES = sorted((ROOT / "samples" / "engines").glob("*.toml"))
+SEED = ROOT / "samples" / "engines" / "seed002_four_cylinder_two_stroke.toml"
+
+
+def _omega(data: dict) -> float:
+    return data["omega"] if "omega" in data else data["omega_rpm"] * math.pi / 30
+
+
+# --------------------------------------------------------------------------- seed 002
+
+
+def test_seed002_rotating_force_polygon():
+    """Seed 002: r_r = 0.5 vertical, 0.5 horizontal, 0.707 in all, phase 45°."""
+    b = balance(load_engine(SEED))
+    js = b.to_json()["forces"]["rotating"]
+    assert js["dimensionless_cos"] == pytest.approx(0.5, abs=1e-12)
+    assert js["dimensionless_sin"] == pytest.approx(0.5, abs=1e-12)
+    assert js["dimensionless"] == pytest.approx(math.sqrt(0.5), abs=1e-12)
+    assert js["phase_deg"] == pytest.approx(45.0, abs=1e-9)
+    data = read_toml(SEED)
+    M_R1 = data["cylinders"][0]["m_rot"]
+    assert js["amplitude"] == pytest.approx(math.sqrt(0.5) * M_R1 * data["r"] * 1e-3 * _omega(data) ** 2)
+
+
+def test_seed002_first_order_balanced_moment_one_and_one():
+    """Equal reciprocating masses: first-order forces balance; first-order moment
+    m_I = 1 and 1 (1.414 in all) at 45°, as the seed's second table."""
+    js = balance(load_engine(SEED)).to_json()
+    assert js["forces"]["first_order"]["amplitude"] == 0.0
+    m = js["moments"]["first_order"]
+    assert (m["dimensionless_cos"], m["dimensionless_sin"]) == pytest.approx((1.0, 1.0), abs=1e-12)
+    assert m["dimensionless"] == pytest.approx(math.sqrt(2), abs=1e-12)
+    assert m["phase_deg"] == pytest.approx(45.0, abs=1e-9)
+
+
+def test_seed002_homogeneous_rotating_moment():
+    """The seed's moment table (equal rotating masses): m_r = 1.0 and 1.0, phase 45°."""
+    data = read_toml(SEED)
+    for c in data["cylinders"]:
+        c["m_rot"] = 400
+    m = balance(engine_from_dict(data, str(SEED))).to_json()["moments"]["rotating"]
+    assert (m["dimensionless_cos"], m["dimensionless_sin"]) == pytest.approx((1.0, 1.0), abs=1e-12)
+    assert m["phase_deg"] == pytest.approx(45.0, abs=1e-9)
+
+
+def test_seed002_counterweights_cancel_rotating_force_and_moment():
+    e = load_engine(SEED)
+    b = balance(e)
+    cws = [c for c in b.counterweights if c.of == "rotating"]
+    assert len(cws) == 2
+    S = sum(c.m_rot * e.r * np.exp(1j * c.crank) for c in e.cylinders)
+    T = sum(c.m_rot * e.r * (c.z - e.reference_z) * np.exp(1j * c.crank) for c in e.cylinders)
+    S += sum(w.mass_radius * np.exp(1j * w.angle) for w in cws)
+    T += sum(w.mass_radius * (w.plane_z - e.reference_z) * np.exp(1j * w.angle) for w in cws)
+    assert abs(S) < 1e-9 and abs(T) < 1e-9
+
+
+def test_firing_order_gives_the_cranks():
+    seed = read_toml(SEED)
+    for c in seed["cylinders"]:
+        del c["crank_deg"]
+    seed["firing_order"] = [1, 4, 2, 3]  # two-stroke, 90° apart
+    e = engine_from_dict(seed, "seed")
+    assert [round(math.degrees(c.crank)) % 360 for c in e.cylinders] == [0, 180, 90, 270]
+    i6 = load_engine(ROOT / "samples" / "engines" / "inline6.toml")
+    assert [round(math.degrees(c.crank)) % 360 for c in i6.cylinders] == [0, 240, 120, 120, 240, 0]
+
+
+# --------------------------------------------------------------------------- classic engines
+
+
+def test_inline4_first_order_balanced_second_order_four():
+    path = ROOT / "samples" / "engines" / "inline4.toml"
+    data = read_toml(path)
+    e = load_engine(path)
+    assert [round(math.degrees(c.crank)) % 360 for c in e.cylinders] == [0, 180, 180, 0]
+    js = balance(e).to_json()
+    for q in ("forces", "moments"):
+        assert js[q]["first_order"]["amplitude"] == 0.0
+        assert js[q]["rotating"]["amplitude"] == 0.0
+    expected = 4 * data["m_rec"] * data["r"] * 1e-3 * _omega(data) ** 2 * data["lambda"]
+    assert js["forces"]["second_order"]["amplitude"] == pytest.approx(expected, rel=1e-12)
+    assert js["forces"]["second_order"]["phase_deg"] == 0.0
+
+
+def test_inline6_fully_balanced():
+    js = balance(load_engine(ROOT / "samples" / "engines" / "inline6.toml")).to_json()
+    for q in ("forces", "moments"):
+        for k in ("rotating", "first_order", "second_order"):
+            assert js[q][k]["amplitude"] == 0.0
+    assert js["counterweights"] == []
+
+
+def test_v_twin_first_order_constant_and_turning_with_the_crank():
+    """Seed 000's 90° V-twin: the first-order resultant is m_j r ω², along the crank."""
+    path = ROOT / "samples" / "engines" / "v_twin.toml"
+    data = read_toml(path)
+    e = load_engine(path)
+    b = balance(e)
+    P1 = data["m_rec"] * data["r"] * 1e-3 * _omega(data) ** 2
+    alpha = np.radians(np.arange(0, 360, 5.0))
+    # time domain: each cylinder's first-order force along its own axis
+    F = sum(P1 * np.cos(alpha + c.crank - c.bank) * np.exp(1j * c.bank) for c in e.cylinders)
+    assert np.allclose(np.abs(F), P1, rtol=1e-12)
+    assert np.allclose(F, P1 * np.exp(1j * alpha), rtol=1e-12, atol=1e-9 * P1)
+    R = b.forces["first_order"]
+    assert R.amplitude == pytest.approx(P1, rel=1e-12)
+    assert np.allclose(R.at(alpha), F, atol=1e-9 * P1)
+    cw = [c for c in b.counterweights if c.of == "first_order"]
+    assert len(cw) == 1
+    assert cw[0].mass_radius == pytest.approx(data["m_rec"] * data["r"] * 1e-3, rel=1e-12)
+    assert math.degrees(cw[0].angle) % 360 == pytest.approx(180.0)
+    # the second order of a 90° V-twin: √2 m_j r ω² λ, horizontal
+    assert b.forces["second_order"].amplitude == pytest.approx(math.sqrt(2) * P1 * data["lambda"], rel=1e-12)
+    assert np.allclose(b.forces["second_order"].at(alpha).real, 0.0, atol=1e-9 * P1)
+
+
+# --------------------------------------------------------------------------- independent oracles
+
+
+def _piston_s(theta: np.ndarray, r: float, l: float) -> np.ndarray:
+    """Distance of the piston pin from the crank centre along the cylinder axis."""
+    return r * np.cos(theta) + np.sqrt(l * l - (r * np.sin(theta)) ** 2)
+
+
+def _time_domain(e, weights, n: int = 720):
+    """Σ_i w_i m_j,i (−s_i'') ω² e^{iγ_i} over a turn; s'' by central differences of the
+    exact position (the inertia force of each piston along its own axis)."""
+    alpha = 2 * np.pi * np.arange(n) / n
+    h = 1e-4
+    F = np.zeros(n, complex)
+    for c, w in zip(e.cylinders, weights, strict=True):
+        th = alpha + c.crank - c.bank
+        s2 = (_piston_s(th + h, e.r, e.rod_length) - 2 * _piston_s(th, e.r, e.rod_length) + _piston_s(th - h, e.r, e.rod_length)) / h**2
+        F += w * c.m_rec * (-s2) * e.omega**2 * np.exp(1j * c.bank)
+    return alpha, F
+
+
+def _harmonic(alpha, F, k, at=None):
+    """The k-th harmonic of a vector function of α (sampled at ``alpha``), evaluated at ``at``."""
+    fwd = np.mean(F * np.exp(-1j * k * alpha))
+    bwd = np.mean(F * np.exp(1j * k * alpha))
+    at = alpha if at is None else at
+    return fwd * np.exp(1j * k * at) + bwd * np.exp(-1j * k * at)
+
+
+FINE = np.linspace(0.0, 2 * np.pi, 72001)
+
+
+ORACLE_ENGINES = [p for p in ENGINES] + ["random-1", "random-2", "random-3"]
+
+
+def _engine(which):
+    if isinstance(which, Path):
+        return load_engine(which)
+    rng = np.random.default_rng(int(which[-1]))
+    n = int(rng.integers(1, 6))
+    return engine_from_dict({
+        "format": 1, "kind": "engine", "r": float(rng.uniform(30, 80)), "lambda": float(rng.uniform(0.1, 0.35)),
+        "omega": float(rng.uniform(100, 500)), "reference_z": float(rng.uniform(-50, 50)),
+        "cylinders": [{"crank_deg": float(rng.uniform(0, 360)), "z": 100.0 * k,
+                       "bank_deg": float(rng.choice([-45.0, 0.0, 30.0, 60.0])),
+                       "m_rot": float(rng.uniform(0.2, 2)), "m_rec": float(rng.uniform(0.2, 2))}
+                      for k in range(n)]}, which)
+
+
+@pytest.mark.parametrize("which", ORACLE_ENGINES, ids=lambda w: w.stem if isinstance(w, Path) else w)
+def test_polygons_against_the_time_domain_sum(which):
+    """Max over a turn of the time-domain sum of the exact piston forces, per harmonic,
+    against the polygon amplitudes: first order exactly (the exact motion has no other odd
+    harmonic), second order to O(λ³) (its coefficient is λ + λ³/4 + ...)."""
+    e = _engine(which)
+    b = balance(e)
+    for quantity, res in (("force", b.forces), ("moment", b.moments)):
+        w = [1.0 if quantity == "force" else c.z - e.reference_z for c in e.cylinders]
+        alpha, F = _time_domain(e, w)
+        ref = sum(c.m_rec for c in e.cylinders) * e.r * e.omega**2 * max(1.0, *map(abs, w))
+        h1 = _harmonic(alpha, F, 1)
+        assert np.max(np.abs(_harmonic(alpha, F, 1, FINE))) == pytest.approx(res["first_order"].amplitude, abs=1e-6 * ref)
+        assert np.allclose(h1, res["first_order"].at(alpha), atol=1e-6 * ref)
+        h2 = _harmonic(alpha, F, 2)
+        tol = (e.lam**3 / 4 + 1e-6) * ref * 1.05
+        assert np.max(np.abs(_harmonic(alpha, F, 2, FINE))) == pytest.approx(res["second_order"].amplitude, abs=tol)
+        assert np.allclose(h2, res["second_order"].at(alpha), atol=tol)
+        # the rotating masses: their vectors summed in the time domain
+        R = sum(wi * c.m_rot * e.r * e.omega**2 * np.exp(1j * (alpha + c.crank)) for c, wi in zip(e.cylinders, w,
+                                                                                               strict=True))
+        assert np.max(np.abs(R)) == pytest.approx(res["rotating"].amplitude,
+                                                  abs=1e-9 * sum(c.m_rot for c in e.cylinders) * e.r * e.omega**2
+                                                  * max(1.0, *map(abs, w)))
+
+
+def test_shaking_force_from_kinetostatics_truncation_shrinks_as_lambda_cubed():
+    """Single cylinder and the V-twin as planar linkages: the frame reactions of the
+    kinetostatics against rotating + first + second order; the difference is the
+    truncation of the series, ≈ m_j r ω² λ³/2 for one cylinder."""
+    v = load_engine(ROOT / "samples" / "engines" / "v_twin.toml")
+    one = replace(v, cylinders=v.cylinders[:1])
+    for e, const in ((one, 0.5), (v, 0.25)):
+        rows = truncation_table(e, (0.025, 0.05, 0.1, 0.2))
+        errs = [r[1] for r in rows]
+        slopes = [math.log2(b / a) for a, b in zip(errs, errs[1:], strict=False)]
+        assert all(2.9 < s < 3.1 for s in slopes), slopes
+        assert rows[0][2] == pytest.approx(const, rel=0.01)
+    chk = exact_check(v)
+    assert chk.max_error < 0.01 * chk.max_exact
+
+
+@pytest.mark.parametrize("path", ENGINES, ids=lambda p: p.stem)
+def test_every_sample_against_the_kinetostatics(path):
+    """Force and turned moment of the whole engine from the kinetostatics (one linkage per
+    throw, superposed) against the harmonic analysis: they differ by the truncation only,
+    at most ≈ m_j r ω² λ³/2 per cylinder (0.54 at λ = 0.3, see the λ³ test)."""
+    e = load_engine(path)
+    chk = exact_check(e)
+    unit = e.r * e.omega**2 * 0.6 * e.lam**3
+    assert chk.max_error <= unit * sum(c.m_rec for c in e.cylinders)
+    assert chk.max_moment_error <= unit * sum(c.m_rec * abs(c.z - e.reference_z) for c in e.cylinders) + 1e-9
+    assert chk.linkages == (1 if e.is_planar else e.n)
+
+
+def test_multi_throw_truncation_shrinks_as_lambda_cubed():
+    e = load_engine(SEED)
+    errs = []
+    for lam in (0.05, 0.1, 0.2):
+        chk = exact_check(replace(e, lam=lam))
+        errs.append((chk.max_error, chk.max_moment_error))
+    for k in (0, 1):
+        slopes = [math.log2(b[k] / a[k]) for a, b in zip(errs, errs[1:], strict=False)]
+        assert all(2.9 < sl < 3.1 for sl in slopes), slopes
+
+
+# --------------------------------------------------------------------------- file, command, sheet
+
+
+def _write(tmp_path, data: dict) -> str:
+    lines = []
+
+    def val(v):
+        return json.dumps(v)
+
+    for k, v in data.items():
+        if k != "cylinders":
+            lines.append(f"{k} = {val(v)}")
+    for c in data.get("cylinders", []):
+        lines.append("[[cylinders]]")
+        lines += [f"{k} = {val(v)}" for k, v in c.items()]
+    p = tmp_path / "engine.toml"
+    p.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return str(p)
+
+
+def _base() -> dict:
+    return {"format": 1, "kind": "engine", "r": 50, "lambda": 0.25, "omega": 300, "strokes": 4,
+            "cylinders": [{"crank_deg": 0, "z": 0, "m_rot": 1.2, "m_rec": 1.0},
+                          {"crank_deg": 180, "z": 100, "m_rot": 1.2, "m_rec": 1.0}]}
+
+
+BAD = [
+    ("lambda", lambda d: d.update({"lambda": 1.0})),
+    ("lambda", lambda d: d.update({"lambda": 1.7})),
+    ("cylinders[1].m_rot", lambda d: d["cylinders"][1].update({"m_rot": 0})),
+    ("cylinders[0].m_rec", lambda d: d["cylinders"][0].update({"m_rec": -1.0})),
+    ("firing_order", lambda d: [c.pop("crank_deg") for c in d["cylinders"]] and d.update({"firing_order": [1, 2, 3]})),
+    ("crank_deg", lambda d: [c.pop("crank_deg") for c in d["cylinders"]] and d.update({"crank_deg": [0, 90, 180]})),
+    ("cylinders[1].crank_deg", lambda d: d["cylinders"][1].pop("crank_deg")),
+    ("lamda", lambda d: d.update({"lamda": 0.2})),
+    ("cylinders[0].bank", lambda d: d["cylinders"][0].update({"bank": 45})),
+    ("strokes", lambda d: d.update({"strokes": 3})),
+]
+
+
+@pytest.mark.parametrize("field,mutate", BAD, ids=[b[0] for b in BAD])
+def test_bad_input_is_one_line_naming_the_key(tmp_path, capsys, field, mutate):
+    data = _base()
+    mutate(data)
+    path = _write(tmp_path, data)
+    out = tmp_path / "out.json"
+    assert main(["balance", path, "--json", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and f": {field}:" in err, err
+    assert not out.exists()
+
+
+def test_unknown_key_suggests_the_right_one(tmp_path, capsys):
+    data = _base()
+    data["lamda"] = 0.2
+    assert main(["balance", _write(tmp_path, data)]) == 2
+    assert "did you mean 'lambda'" in capsys.readouterr().err
+
+
+def test_json_names_and_determinism(tmp_path):
+    a, b = tmp_path / "a.json", tmp_path / "b.json"
+    path = str(ROOT / "samples" / "engines" / "v_twin.toml")
+    assert main(["balance", path, "--json", str(a), "--quiet"]) == 0
+    assert main(["balance", path, "--json", str(b), "--quiet"]) == 0
+    assert a.read_bytes() == b.read_bytes()
+    js = json.loads(a.read_text())
+    for q in ("forces", "moments"):
+        assert set(js[q]) == {"rotating", "first_order", "second_order"}
+        for R in js[q].values():
+            assert {"amplitude", "phase_deg"} <= set(R)
+    assert isinstance(js["counterweights"], list) and js["counterweights"]
+    assert {"for", "plane_z", "mass_radius", "angle_deg"} <= set(js["counterweights"][0])
+    assert js["exact_check"]["relative_truncation_error"] < 0.01
+
+
+def test_sheet_is_deterministic():
+    from drawings.balancing import draw
+
+    a = draw(SEED).sheets[0].svg()
+    b = draw(SEED).sheets[0].svg()
+    assert a == b
+
+
+@pytest.mark.parametrize("path", ENGINES, ids=lambda p: p.stem)
+def test_every_engine_sample_solves_and_draws(path, tmp_path):
+    from drawings.balancing import draw
+    from drawings.cli import main as plans_main
+
+    assert main(["balance", str(path), "--json", str(tmp_path / "x.json"), "--quiet"]) == 0
+    d = draw(path)
+    assert d.sheets
+    kinds = {p.kind for p in d.panels}
+    assert {"phase", "polygon", "table", "scheme"} <= kinds
+    svg = d.sheets[0].svg()
+    assert "nan" not in svg.lower().replace("nanometer", "")
+    assert plans_main(["draw", str(path), "-o", str(tmp_path / "out")]) == 0
+    assert list((tmp_path / "out").glob("*.svg"))
+
+
+@settings(max_examples=25, derandomize=True, deadline=None)
+@given(st.lists(st.tuples(st.floats(0, 360), st.floats(0.1, 5.0), st.floats(0.1, 5.0)), min_size=1, max_size=6),
+       st.floats(-200, 400))
+def test_counterweights_balance_the_rotating_masses(cyls, ref):
+    """Any inline engine: after the counterweights the rotating force and moment are gone."""
+    data = {"format": 1, "kind": "engine", "r": 50, "lambda": 0.25, "omega": 100, "reference_z": ref,
+            "cylinders": [{"crank_deg": a, "z": 80.0 * k, "m_rot": mr, "m_rec": mj}
+                          for k, (a, mr, mj) in enumerate(cyls)]}
+    e = engine_from_dict(data, "random")
+    b = balance(e)
+    S = sum(c.m_rot * e.r * np.exp(1j * c.crank) for c in e.cylinders)
+    T = sum(c.m_rot * e.r * (c.z - e.reference_z) * np.exp(1j * c.crank) for c in e.cylinders)
+    cws = [w for w in b.counterweights if w.of == "rotating"]
+    S += sum(w.mass_radius * np.exp(1j * w.angle) for w in cws)
+    T += sum(w.mass_radius * (w.plane_z - e.reference_z) * np.exp(1j * w.angle) for w in cws)
+    scale = sum(c.m_rot for c in e.cylinders) * e.r
+    assert abs(S) < 1e-9 * scale
+    if len(cyls) > 1:
+        assert abs(T) < 1e-9 * scale
+    assert len(cws) <= (2 if len(cyls) > 1 else 1)
