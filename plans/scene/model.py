@@ -153,7 +153,7 @@ MAX_POSITIONS = 3600
 
 #: Keys of each table of a linkage scene (the readers of loads and [sheet] check their own).
 TOP_KEYS = {"format", "kind", "title", "unit", "frame", "points", "links", "joints", "driver", "branches",
-            "outputs", "scales", "fij", "loads", "sheet"}
+            "outputs", "scales", "fij", "loads", "sheet", "diagrams", "dynamics"}
 LINK_KEYS = {"name", "axis", "length", "points", "mass", "inertia", "centre"}
 JOINT_KEYS = {"kind", "links", "point", "guide", "slider_angle_deg"}
 GUIDE_KEYS = {"link", "through", "toward", "angle_deg", "offset"}
