@@ -33,7 +33,8 @@ from plans.kinematics.plan import Plan
 
 from .backend import Prim, Pt, Recording, Style
 from .common import Placer, fmt, ident, label_boxes, phi_tag
-from .export import save
+from .export import FORMATS as FORMATS_OUT
+from .export import render, write
 from .panels import PAD, SMALL_SIZE, TITLE_SIZE, Panel, plan_panel
 from .sheet import FORMATS, Sheet, SheetSpec, compose
 from .text import layout, wrap
@@ -247,10 +248,31 @@ def save_check_sheets(report: Report | str | Path, outdir: str | Path, stem: str
                       formats: Sequence[str] = ("svg",), *, language: str = "ru", dpi: float = 150.0) -> list[Path]:
     """Write ``<stem>-marked.*`` and ``<stem>-overlay.*``; returns the files written."""
     rep = report if isinstance(report, Report) else check_file(report)
+    return write(render_check_sheets(rep, outdir, stem, formats, language=language, dpi=dpi), outdir,
+                 source=rep.check.path)
+
+
+#: Old sheets of the checked files, removed once the new ones are written.
+_STALE: list[Path] = []
+
+
+def _claim(folder: Path, files: dict[Path, bytes], source: Path) -> dict[Path, bytes]:
+    """The sheets plus the folder's manifest, written with the report as one."""
+    from .manifest import plan_sheets
+
+    staged, stale = plan_sheets(folder, files, source)
+    _STALE.extend(stale)
+    return staged
+
+
+def render_check_sheets(rep: Report, outdir: str | Path, stem: str | None = None,
+                        formats: Sequence[str] = ("svg",), *, language: str = "ru",
+                        dpi: float = 150.0) -> dict[Path, bytes]:
+    """The marked and overlay sheets as bytes by target path; nothing is written."""
     name = stem or Path(rep.check.path).stem
-    written = save(marked_sheets(rep, language=language), outdir, f"{name}-marked", formats, dpi)
-    written += save(overlay_sheets(rep, language=language), outdir, f"{name}-overlay", formats, dpi)
-    return written
+    files = render(marked_sheets(rep, language=language), outdir, f"{name}-marked", formats, dpi)
+    files.update(render(overlay_sheets(rep, language=language), outdir, f"{name}-overlay", formats, dpi))
+    return files
 
 
 # --------------------------------------------------------------------------- command line
@@ -268,24 +290,26 @@ def add_sheet_options(check_parser: argparse.ArgumentParser) -> argparse.Argumen
     inner = check_parser.get_default("func")
 
     def run_with_sheets(args: argparse.Namespace) -> int:
+        if getattr(args, "sheet", None):
+            formats = [f.strip().lower() for f in str(args.sheet_format).split(",") if f.strip()]
+            bad = [f for f in formats if f not in FORMATS_OUT] or ([] if formats else [args.sheet_format])
+            if bad:
+                print(f"plans: error: --sheet-format: expected some of {','.join(FORMATS_OUT)}, got "
+                      f"{args.sheet_format!r}", file=sys.stderr)
+                return 2
+
+            def extra(report: Report, target: Path) -> dict[Path, bytes]:
+                files = render_check_sheets(report, args.sheet, target.stem, formats,
+                                            language=args.sheet_language)
+                return _claim(Path(args.sheet), files, target)
+
+            args.extra_files = extra
+        _STALE.clear()
         rc = int(inner(args))
-        if not getattr(args, "sheet", None):
-            return rc
-        formats = [f.strip().lower() for f in str(args.sheet_format).split(",") if f.strip()]
-        target = Path(args.path)
-        files = sorted(target.glob("*.toml")) if target.is_dir() else [target]
-        for f in files:
-            try:
-                rep = check_file(f)
-            except PlansError:
-                continue  # already reported by the check itself
-            try:
-                for path in save_check_sheets(rep, args.sheet, f.stem, formats, language=args.sheet_language):
-                    if not getattr(args, "quiet", False):
-                        print(path)
-            except PlansError as exc:
-                print(f"plans check: error: {exc}", file=sys.stderr)
-                rc = 2
+        from .manifest import remove
+
+        remove(_STALE if rc == 0 else [])
+        _STALE.clear()
         return rc
 
     check_parser.set_defaults(func=run_with_sheets)

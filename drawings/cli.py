@@ -52,8 +52,11 @@ def draw_command(args: argparse.Namespace) -> int:
 
     progress = Progress(getattr(args, "quiet", False))
 
-    if args.dpi <= 0 or args.dpi > 1200:
-        raise InputError(f"--dpi {args.dpi:g} is out of range; expected 1..1200")
+    if not (0 < args.dpi <= 1200):
+        raise InputError(f"{args.dpi:g} is out of range; expected 1..1200", file=args.scene, field="--dpi")
+    if Path(args.output).exists() and not Path(args.output).is_dir():
+        raise InputError(f"{args.output} is a file; expected a folder for the sheets", file=args.scene,
+                         field="--output")
     kind, _ = read_kind(args.scene)
     try:
         module = importlib.import_module(KINDS[kind][1])
@@ -66,7 +69,7 @@ def draw_command(args: argparse.Namespace) -> int:
     drawing = module.draw(args.scene, format=args.sheet, orientation=args.orientation,
                           language=args.language)
     written = save(drawing.sheets, args.output, Path(args.scene).stem, args.format, args.dpi,
-                   progress=progress)
+                   progress=progress, source=args.scene)
     for p in written:
         print(p)
     return 0
@@ -116,7 +119,10 @@ def _run(args: argparse.Namespace) -> int:
 
 def main(argv: Sequence[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
-    args = build_parser(argv).parse_args(argv)
+    try:
+        args = build_parser(argv).parse_args(argv)
+    except KeyboardInterrupt:
+        return 130
     return _run(args)
 
 

@@ -8,7 +8,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from plans.errors import OutputError
-from plans.io import atomic_write
+from plans.io import atomic_write  # noqa: F401  (re-exported by drawings)
 
 if TYPE_CHECKING:  # the sheet's modules (svgwrite, numpy) load only when a sheet is drawn
     from .sheet import Sheet
@@ -95,30 +95,46 @@ def encode_png(surface) -> bytes:
             + chunk(b"IDAT", zlib.compress(raw.tobytes(), 3)) + chunk(b"IEND", b""))
 
 
-def save(sheets: Sequence[Sheet], outdir: str | Path, stem: str, formats: Sequence[str] = ("svg",),
-         dpi: float = 150.0, progress: Callable[[str], None] | None = None) -> list[Path]:
-    """Write every sheet in every format: ``stem.svg`` (one sheet) or ``stem-2.svg`` ..."""
+def render(sheets: Sequence[Sheet], outdir: str | Path, stem: str, formats: Sequence[str] = ("svg",),
+           dpi: float = 150.0, progress: Callable[[str], None] | None = None) -> dict[Path, bytes]:
+    """Every sheet in every format as bytes, by target path: ``stem.svg`` (one sheet) or
+    ``stem-2.svg`` ...; nothing is written."""
     out = Path(outdir)
     for f in formats:
         if f not in FORMATS:
             raise OutputError(f"unknown output format {f!r}; expected some of {', '.join(FORMATS)}")
     if not (dpi > 0 and dpi <= 1200):
         raise OutputError(f"dpi {dpi:g} is out of range; expected 1..1200")
+    files: dict[Path, bytes] = {}
+    for sh in sheets:
+        name = stem if len(sheets) == 1 else f"{stem}-{sh.number}"
+        svg = svg_bytes(sh)
+        for f in formats:
+            p = out / f"{name}.{f}"
+            files[p] = svg if f == "svg" else pdf_bytes(svg) if f == "pdf" else png_bytes(svg, dpi)
+        if progress is not None:
+            progress(f"sheet {sh.number} of {len(sheets)} drawn ({', '.join(formats)})")
+    return files
+
+
+def write(files: dict[Path, bytes], outdir: str | Path, *, source: str | Path | None = None) -> list[Path]:
+    """Write rendered files as one (an error leaves none of them); with ``source`` the
+    folder's manifest removes that input's old sheets the new set lacks and refuses to
+    overwrite another input's sheets (:mod:`drawings.manifest`)."""
+    from .manifest import write_sheets
+
+    out = Path(outdir)
     try:
         out.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
         raise OutputError(f"cannot create the output folder {out}: {exc.strerror}") from None
     if not os.access(out, os.W_OK):
         raise OutputError(f"cannot write to {out}: permission denied")
-    written = []
-    for sh in sheets:
-        name = stem if len(sheets) == 1 else f"{stem}-{sh.number}"
-        svg = svg_bytes(sh)
-        for f in formats:
-            p = out / f"{name}.{f}"
-            data = svg if f == "svg" else pdf_bytes(svg) if f == "pdf" else png_bytes(svg, dpi)
-            atomic_write(p, data)
-            written.append(p)
-        if progress is not None:
-            progress(f"sheet {sh.number} of {len(sheets)} written ({', '.join(formats)})")
-    return written
+    return write_sheets(out, files, source)
+
+
+def save(sheets: Sequence[Sheet], outdir: str | Path, stem: str, formats: Sequence[str] = ("svg",),
+         dpi: float = 150.0, progress: Callable[[str], None] | None = None, *,
+         source: str | Path | None = None) -> list[Path]:
+    """Render every sheet in every format, then write them all as one (see :func:`write`)."""
+    return write(render(sheets, outdir, stem, formats, dpi, progress), outdir, source=source)

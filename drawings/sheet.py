@@ -15,6 +15,7 @@ from typing import Any
 import numpy as np
 
 from plans.errors import InputError
+from plans.reader import check_keys
 
 from .backend import Prim, Recording, Style, replay
 from .blocks import Block, Frame, frame_of, heading, pack_block, place_block, spread, widths
@@ -116,9 +117,7 @@ def sheet_spec(raw: dict[str, Any], path: str, default_title: str = "", **overri
     data = raw.get("sheet", {})
     if not isinstance(data, dict):
         raise InputError("expected a table [sheet]", file=path, field="sheet")
-    for key in data:
-        if key not in _KEYS:
-            raise InputError(f"unknown key; expected one of {sorted(_KEYS)}", file=path, field=f"sheet.{key}")
+    check_keys(data, _KEYS, file=path, where="sheet.")
     out: dict[str, Any] = {}
 
     def string(key: str) -> None:
@@ -154,8 +153,8 @@ def sheet_spec(raw: dict[str, Any], path: str, default_title: str = "", **overri
     for key in ("first_sheet", "total_sheets"):
         if key in data:
             v = data[key]
-            if isinstance(v, bool) or not isinstance(v, int) or v < 1:
-                raise InputError(f"expected a whole number >= 1, got {v!r}", file=path, field=f"sheet.{key}")
+            if isinstance(v, bool) or not isinstance(v, int) or not 1 <= v <= 9999:
+                raise InputError(f"expected a whole number 1..9999, got {v!r}", file=path, field=f"sheet.{key}")
             out[key] = v
     if "panels" in data:
         v = data["panels"]
@@ -166,7 +165,8 @@ def sheet_spec(raw: dict[str, Any], path: str, default_title: str = "", **overri
     if "positions" in data:
         v = data["positions"]
         v = v if isinstance(v, list) else [v]
-        if not v or not all(isinstance(x, int | float) and not isinstance(x, bool) for x in v):
+        if not v or not all(isinstance(x, int | float) and not isinstance(x, bool) and abs(x) <= 1e300
+                            and x == x for x in v):
             raise InputError("expected crank angles in degrees, e.g. positions = [45, 0]", file=path,
                              field="sheet.positions")
         out["positions"] = tuple(float(x) for x in v)
@@ -187,12 +187,14 @@ def sheet_spec(raw: dict[str, Any], path: str, default_title: str = "", **overri
             if not isinstance(p, dict) or not isinstance(p.get("panel"), str):
                 raise InputError("expected { panel = \"velocity-45\", x = mm, y = mm, sheet = 1 }", file=path,
                                  field=f)
+            check_keys(p, ("panel", "x", "y", "sheet"), file=path, where=f"{f}.")
             for key in ("x", "y"):
-                if not isinstance(p.get(key), int | float) or isinstance(p.get(key), bool):
+                if not isinstance(p.get(key), int | float) or isinstance(p.get(key), bool) or \
+                        not abs(p[key]) <= 10_000:
                     raise InputError(f"expected {key} in mm from the sheet's top-left corner", file=path,
                                      field=f"{f}.{key}")
             sh = p.get("sheet", 1)
-            if isinstance(sh, bool) or not isinstance(sh, int) or sh < 1:
+            if isinstance(sh, bool) or not isinstance(sh, int) or not 1 <= sh <= 9999:
                 raise InputError("expected a sheet number >= 1", file=path, field=f"{f}.sheet")
             pins.append(Pin(p["panel"], sh, float(p["x"]), float(p["y"])))
         out["pins"] = tuple(pins)

@@ -6,10 +6,12 @@ from __future__ import annotations
 import argparse
 import importlib
 import importlib.util
+import os
 import sys
 from collections.abc import Sequence
+from typing import NoReturn
 
-from plans.errors import PlansError
+from plans.errors import InputError, PlansError, one_line
 
 #: Pure commands living in their own modules, each with ``register(subparsers)``; a module
 #: that is absent is simply not offered.
@@ -28,10 +30,18 @@ def command_of(argv: Sequence[str] | None) -> str | None:
     return next((a for a in argv if not a.startswith("-")), None) if argv is not None else None
 
 
+class Parser(argparse.ArgumentParser):
+    """argparse with every usage error as one line, like every other error of ``plans``."""
+
+    def error(self, message: str) -> NoReturn:
+        self.exit(2, f"plans: error: {self.prog.split(' ', 1)[-1] + ': ' if ' ' in self.prog else ''}"
+                     f"{' '.join(message.split())} (see plans -h)\n")
+
+
 def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     """The parser; with ``argv``, only the module of the command asked for is imported (the
     others are listed by name), without it every command is complete."""
-    parser = argparse.ArgumentParser(
+    parser = Parser(
         prog="plans",
         description="Velocity and acceleration plans, force polygons and the Zhukovsky lever "
                     "of planar linkages, built as a draftsman builds them and checked exactly.")
@@ -69,10 +79,11 @@ def register_commands(sub: argparse._SubParsersAction, modules: Sequence[str],
 
 
 def _solve(args: argparse.Namespace) -> int:
-    from plans.io import atomic_write, dumps
+    from plans.io import atomic_write, dumps, refuse_input
     from plans.results import solve_scene, table, to_json
     from plans.scene.model import load_scene
 
+    refuse_input(args.json, args.scene)
     sol = solve_scene(load_scene(args.scene))
     if getattr(args, "csv", None):
         from plans.cycle.results import cycle_csv
@@ -93,20 +104,42 @@ def _solve(args: argparse.Namespace) -> int:
 
 
 def run(args: argparse.Namespace) -> int:
-    """Run a parsed command; user errors become one line on stderr and status 2."""
+    """Run a parsed command; user errors become one line on stderr and status 2; Ctrl-C
+    stops quietly with 130; a closed pipe (``plans solve ... | head``) ends with 0."""
     try:
         return int(args.func(args))
     except PlansError as exc:
-        print(f"plans: error: {exc}", file=sys.stderr)
+        if exc.source is None and not isinstance(exc, InputError):
+            exc.source = getattr(args, "scene", None) or getattr(args, "path", None)
+        print(f"plans: error: {one_line(exc)}", file=sys.stderr)
         return 2
+    except BrokenPipeError:
+        return _closed_pipe()
     except OSError as exc:
-        print(f"plans: error: {exc.filename or ''}: {exc.strerror}", file=sys.stderr)
+        print(f"plans: error: {exc.filename or ''}: {' '.join((exc.strerror or str(exc)).split())}",
+              file=sys.stderr)
         return 2
+    except KeyboardInterrupt:
+        return 130
+
+
+def _closed_pipe() -> int:
+    """The reader of our output has gone (``| head``): that is not an error.  Point stdout
+    at /dev/null so the interpreter's final flush does not complain either."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError):
+        pass
+    return 0
 
 
 def main(argv: Sequence[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
-    args = build_parser(argv).parse_args(argv)
+    try:
+        args = build_parser(argv).parse_args(argv)
+    except KeyboardInterrupt:
+        return 130
     return run(args)
 
 

@@ -12,6 +12,18 @@ from __future__ import annotations
 class PlansError(Exception):
     """Base of every error the engine raises on purpose."""
 
+    #: The input file the error is about, when the message does not name it already.
+    source: str | None = None
+
+
+def one_line(exc: BaseException) -> str:
+    """The error as the one line the command prints: the file first, whitespace folded."""
+    text = " ".join(str(exc).split())
+    source = getattr(exc, "source", None)
+    if source and not text.startswith(source):
+        text = f"{source}: {text}"
+    return text
+
 
 class InputError(PlansError):
     """A malformed or impossible input file: says file, field and what was expected."""

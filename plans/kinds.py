@@ -39,6 +39,6 @@ def read_kind(path: str | Path) -> tuple[str, dict[str, Any]]:
 
 def command_for(kind: str) -> str:
     """A hint naming the command for a file of this kind ("" when unknown)."""
-    if kind in KINDS:
+    if isinstance(kind, str) and kind in KINDS:
         return f"use 'plans {KINDS[kind][0]}' for it; "
     return ""

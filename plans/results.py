@@ -14,6 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
+from plans.errors import ConstructionError
 from plans.kinematics.construction import PositionPlans, build_all
 from plans.kinematics.exact import Kinematics, solve
 from plans.kinematics.structure import Structure, analyse
@@ -34,6 +35,15 @@ class Solution:
 
 
 def solve_scene(scene: Scene) -> Solution:
+    """Everything the scene asks for; a construction that has no answer names the file."""
+    try:
+        return _solve_scene(scene)
+    except ConstructionError as exc:
+        exc.source = scene.path
+        raise
+
+
+def _solve_scene(scene: Scene) -> Solution:
     st = analyse(scene)
     kin = solve(scene, structure=st)
     plans = tuple(build_all(kin)) if scene.wants("velocity_plan") else ()

@@ -20,6 +20,8 @@ def parse_length(value: object, default_unit: str) -> float:
     if isinstance(value, bool):
         raise ValueError("expected a length (number or string like '35 mm')")
     if isinstance(value, int | float):
+        if isinstance(value, int) and abs(value) > 10**300:
+            raise ValueError(f"expected a length of a sensible size, got an integer of {len(str(abs(value)))} digits")
         if not math.isfinite(value):
             raise ValueError("expected a finite length")
         return float(value) * LENGTH_UNITS[default_unit]

@@ -104,8 +104,9 @@ def test_sheet_option_on_the_check_command(tmp_path, capsys):
     add_sheet_options(sub.choices["check"])
     args = parser.parse_args(["check", str(COURSEWORK), "--quiet", "--sheet", str(tmp_path), "--sheet-format", "svg"])
     assert run(args) == 0
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["v_engine_coursework-marked.svg",
-                                                          "v_engine_coursework-overlay.svg"]
+    assert sorted(p.name for p in tmp_path.iterdir() if not p.name.startswith(".")) == [
+        "v_engine_coursework-marked.svg",
+        "v_engine_coursework-overlay.svg"]
 
 
 def test_overlay_has_no_student_rings(report):

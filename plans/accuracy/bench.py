@@ -42,7 +42,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from plans.accuracy import newton, speed
+from plans.accuracy import fuzz, newton, speed
 from plans.accuracy.draftsman import DraftsmanModel, draftsman_errors
 from plans.accuracy.goals import performance_goals
 from plans.accuracy.markdown import goal_line, markdown, summary_table
@@ -61,7 +61,7 @@ from plans.accuracy.oracles import (
     total_error,
 )
 from plans.accuracy.stability import stability_records, stiff_load_records
-from plans.io import atomic_write
+from plans.io import write_all
 from plans.kinematics import construction
 from plans.kinematics import exact as kinematics
 from plans.scene.model import Scene
@@ -373,23 +373,33 @@ def _cpus() -> int:
 def write_outputs(result: dict[str, Any], out_dir: Path, json_path: str | None = None,
                   plots: Mapping[str, Callable[[dict[str, Any]], str]] | None = None) -> list[Path]:
     """Write bench.md, bench.json and each of ``plots`` (file name -> the result drawn; the
-    renderer supplies bench.svg), each complete or not at all."""
-    out_dir.mkdir(parents=True, exist_ok=True)
-    files = {out_dir / "bench.md": markdown(result)}
+    renderer supplies bench.svg): all of them or none."""
+    files: dict[Path, str] = {out_dir / "bench.md": markdown(result)}
     for name, draw in (plots or {}).items():
         files[out_dir / name] = draw(result)
     text = json.dumps(result, indent=1, sort_keys=True, default=_jsonable)
-    written = []
-    for path, body in files.items():
-        atomic_write(path, body)
-        written.append(path)
+    if json_path != "-":
+        files[Path(json_path) if json_path else out_dir / "bench.json"] = text + "\n"
+    out_dir.mkdir(parents=True, exist_ok=True)
+    written = write_all(files)
     if json_path == "-":
         sys.stdout.write(text + "\n")
-    else:
-        jp = Path(json_path) if json_path else out_dir / "bench.json"
-        atomic_write(jp, text + "\n")
-        written.append(jp)
     return written
+
+
+def check_outputs(out_dir: Path, json_path: str | None) -> None:
+    """Refuse output paths that cannot be written before the bench runs for minutes."""
+    from plans.errors import OutputError
+
+    targets = [out_dir] + ([Path(json_path).parent] if json_path and json_path != "-" else [])
+    for folder in targets:
+        probe = folder
+        while not probe.exists() and probe != probe.parent:
+            probe = probe.parent
+        if not probe.is_dir() or not os.access(probe, os.W_OK):
+            raise OutputError(f"{folder}: cannot write there (expected a writable folder)")
+        if folder != out_dir and not folder.is_dir():
+            raise OutputError(f"{folder}: no such folder (for --json {json_path})")
 
 
 def _jsonable(x: Any) -> Any:
@@ -412,6 +422,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--pencil-mm", type=float, default=0.25, help="pencil error, ± mm (default 0.25)")
     p.add_argument("--protractor-deg", type=float, default=0.25, help="protractor error, ± degrees (default 0.25)")
     p.add_argument("--quiet", action="store_true", help="no progress lines and no summary on the terminal")
+    fuzz.add_arguments(p)
     p.set_defaults(func=run)
     return p
 
@@ -427,6 +438,8 @@ def _ints(text: str) -> tuple[int, ...]:
 
 
 def run(args: argparse.Namespace) -> int:
+    if getattr(args, "fuzz", None) is not None:
+        return fuzz.run(args)
     from plans.progress import Progress
 
     quiet = getattr(args, "json", None) == "-" or getattr(args, "quiet", False)
@@ -439,6 +452,7 @@ def run(args: argparse.Namespace) -> int:
     def log(s: str) -> None:
         progress(s.split("] ", 1)[-1])
 
+    check_outputs(Path(args.out), getattr(args, "json", None))
     model = DraftsmanModel(getattr(args, "pencil_mm", 0.25), getattr(args, "protractor_deg", 0.25))
     result = run_bench(quick=bool(args.quick), samples=Path(args.samples) if getattr(args, "samples", None) else None,
                        progress=log, mc_samples=getattr(args, "mc", None), sizes=getattr(args, "sizes", None),

@@ -31,7 +31,8 @@ from typing import Any
 
 from plans.errors import InputError
 from plans.io import read_toml
-from plans.units import LENGTH_UNITS, parse_length, rpm_to_rad_s
+from plans.reader import Reader
+from plans.units import LENGTH_UNITS, rpm_to_rad_s
 
 from .laws import LAWS, Law, table_law
 
@@ -111,10 +112,7 @@ def _number(data: dict[str, Any], key: str, path: str, where: str = "", *, defau
         if default is None:
             raise InputError("missing; expected a number", file=path, field=f"{where}{key}")
         return default
-    v = data[key]
-    if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
-        raise InputError(f"expected a finite number, got {v!r}", file=path, field=f"{where}{key}")
-    v = float(v)
+    v = Reader(path).value(data[key], f"{where}{key}", floor=0.0)  # finite, at most 1e12
     if positive and v <= 0:
         raise InputError(f"expected a positive number, got {v:g}", file=path, field=f"{where}{key}")
     if at_least is not None and v < at_least:
@@ -130,10 +128,7 @@ def _length(data: dict[str, Any], key: str, unit: str, path: str, where: str = "
         if default is None:
             raise InputError("missing; expected a length", file=path, field=f"{where}{key}")
         return default
-    try:
-        v = parse_length(data[key], unit)
-    except ValueError as exc:
-        raise InputError(str(exc), file=path, field=f"{where}{key}") from None
+    v = Reader(path).length(data[key], f"{where}{key}", unit)  # finite, 1 µm .. 10 km (or 0)
     if positive and v <= 0:
         raise InputError(f"expected a positive length, got {data[key]!r}", file=path, field=f"{where}{key}")
     if at_least is not None and v < at_least:
@@ -197,7 +192,7 @@ def cam_from_dict(data: dict[str, Any], path: str) -> Cam:
         if not abs(arm - r0) < pivot < arm + r0:
             raise InputError("the base circle cannot reach the roller: need |arm − base_radius| < pivot "
                              "< arm + base_radius", file=path, field="pivot")
-    omega = rpm_to_rad_s(_number(data, "omega_rpm", path, positive=True))
+    omega = rpm_to_rad_s(_number(data, "omega_rpm", path, positive=True, below=1e7))  # ω² stays finite
     sense = _choice(data, "sense", ("ccw", "cw"), path, default="ccw")
     a_rise = _number(data, "pressure_angle_rise_deg", path, default=45.0 if osc else 30.0,
                      positive=True, below=90)
@@ -288,7 +283,8 @@ def _table(ph: dict[str, Any], path: str, where: str, stroke: float, angle_deg: 
     field = f"{where}table"
     if not isinstance(rows, list) or len(rows) < 3 or not all(
             isinstance(r, list) and len(r) == 2 and all(isinstance(v, int | float) and not isinstance(v, bool)
-                                                       and math.isfinite(v) for v in r) for r in rows):
+                                                       and abs(v) <= 1e12 and math.isfinite(v) for v in r)
+            for r in rows):
         raise InputError("expected at least 3 rows [angle_deg, lift] of finite numbers", file=path, field=field)
     ang = [float(r[0]) for r in rows]
     scale = math.radians(1.0) if osc else LENGTH_UNITS[unit]

@@ -59,7 +59,8 @@ from typing import Any
 
 from plans.errors import InputError
 from plans.io import loads_toml, read_toml
-from plans.scene.model import Scene, load_scene, scene_from_dict
+from plans.reader import NUMBER_FLOOR, NUMBER_LIMIT, Reader, bad_character, check_keys, did_you_mean
+from plans.scene.model import Scene, check_format, load_scene, scene_from_dict
 from plans.units import LENGTH_UNITS
 
 SCALE_KINDS = ("length", "velocity", "acceleration", "force")
@@ -165,18 +166,19 @@ _TOP = {"format", "student", "scene", "sheet", "scales", "tolerance", "positions
 
 
 def check_from_dict(data: dict[str, Any], path: str = "<check>") -> CheckFile:
-    if data.get("format") != 1:
-        raise _fail(path, "format", "expected format = 1")
-    for key in data:
-        if key not in _TOP:
-            raise _fail(path, key, f"unknown key; expected some of {sorted(_TOP)}")
+    check_format(Reader(path), data)
+    check_keys(data, _TOP, file=path, where="")
     student = data.get("student", Path(path).stem)
     if not isinstance(student, str):
         raise _fail(path, "student", "expected a string (the student's name)")
+    Reader(path).string(student, "student")
+    if "title" in data:
+        Reader(path).string(data["title"], "title", limit=2000)
     scene = _scene(path, data.get("scene"))
     sheet = data.get("sheet")
     if sheet is not None and not (isinstance(sheet, str) and sheet in SHEETS):
-        raise _fail(path, "sheet", f"expected one of {sorted(SHEETS)}, got {sheet!r}")
+        hint = did_you_mean(sheet, SHEETS) if isinstance(sheet, str) else ""
+        raise _fail(path, "sheet", f"expected one of {sorted(SHEETS)}, got {sheet!r}{hint}")
     scales = _scales(path, data.get("scales"))
     tol = _tolerance(path, data.get("tolerance", {}))
     raw = data.get("positions")
@@ -205,32 +207,32 @@ def _scene(path: str, raw: Any) -> Scene:
             target = Path(path).parent / target
         if not target.is_file():
             raise _fail(path, "scene", f"scene file {raw!r} not found (looked at {target})")
+        if target.resolve() == Path(path).resolve():
+            raise _fail(path, "scene", "names the check file itself; expected the scene file")
         return load_scene(target)
     if isinstance(raw, dict):
         return scene_from_dict(raw, f"{path} [scene]")
     raise _fail(path, "scene", "expected a path (string) or an inline [scene] table")
 
 
-def _positive(path: str, field: str, value: Any) -> float:
-    if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
+def _positive(path: str, field: str, value: Any, limit: float = 1e9, floor: float = 1e-9) -> float:
+    if isinstance(value, bool) or not isinstance(value, int | float) or \
+            (isinstance(value, float) and not math.isfinite(value)):
         raise _fail(path, field, f"expected a positive number, got {value!r}")
     if value <= 0:
         raise _fail(path, field, f"expected a positive scale, got {value!r} (a scale of zero draws nothing)")
-    return float(value)
+    return Reader(path).value(value, field, positive=True, limit=limit, floor=floor)
 
 
 def _scales(path: str, raw: Any) -> dict[str, float]:
     if not isinstance(raw, dict):
         raise _fail(path, "scales", "missing table [scales] with the student's μv, μa (and μl, μF)")
-    style = raw.get("style", "mu")
-    if style not in ("mu", "K"):
-        raise _fail(path, "scales.style", f"expected \"mu\" (mm per unit) or \"K\" (unit per mm), got {style!r}")
+    style = Reader(path).choice(raw, "style", "scales.", ("mu", "K"), "mu")
+    check_keys(raw, ("style", *SCALE_KINDS), file=path, where="scales.")
     out: dict[str, float] = {}
     for key, value in raw.items():
         if key == "style":
             continue
-        if key not in SCALE_KINDS:
-            raise _fail(path, f"scales.{key}", f"unknown scale; expected some of {list(SCALE_KINDS)}")
         if isinstance(value, dict):
             if len(value) != 1 or not ({"mu", "K"} & set(value)):
                 raise _fail(path, f"scales.{key}", "expected { mu = mm per unit } or { K = unit per mm }")
@@ -249,20 +251,14 @@ def _tolerance(path: str, raw: Any) -> Tolerance:
     if not isinstance(raw, dict):
         raise _fail(path, "tolerance", "expected a table [tolerance]")
     known = {"model", "segment_mm", "direction_deg", "rule_pct", "arithmetic_pct", "balance_base"}
-    for key in raw:
-        if key not in known:
-            raise _fail(path, f"tolerance.{key}", f"unknown key; expected some of {sorted(known)}")
-    model = raw.get("model", "draftsman")
-    if model not in TOLERANCE_MODELS:
-        raise _fail(path, "tolerance.model", f"expected one of {list(TOLERANCE_MODELS)}, got {model!r}")
-    base = raw.get("balance_base", "lever")
-    if base not in BALANCE_BASES:
-        raise _fail(path, "tolerance.balance_base", f"expected one of {list(BALANCE_BASES)}, got {base!r}")
+    check_keys(raw, known, file=path, where="tolerance.")
+    model = Reader(path).choice(raw, "model", "tolerance.", TOLERANCE_MODELS, "draftsman")
+    base = Reader(path).choice(raw, "balance_base", "tolerance.", BALANCE_BASES, "lever")
     nums = {}
     for key, default in (("segment_mm", 0.5), ("direction_deg", 0.5), ("rule_pct", 5.0),
                          ("arithmetic_pct", 0.2)):
         v = raw.get(key, default)
-        nums[key] = _positive(path, f"tolerance.{key}", v)
+        nums[key] = _positive(path, f"tolerance.{key}", v, limit=1e6, floor=1e-6)
     return Tolerance(model=model, balance_base=base, **nums)
 
 
@@ -285,11 +281,10 @@ def _position(path: str, k: int, body: Any, scene: Scene) -> StudentPosition:
     where = f"positions[{k}]"
     if not isinstance(body, dict):
         raise _fail(path, where, "expected a table")
-    for key in body:
-        if key not in ("phi_deg", "measured", "values", "where"):
-            raise _fail(path, f"{where}.{key}", "unknown key; expected phi_deg, measured, values")
+    check_keys(body, ("phi_deg", "measured", "values", "where"), file=path, where=f"{where}.")
     phi = body.get("phi_deg")
-    if isinstance(phi, bool) or not isinstance(phi, int | float) or not math.isfinite(phi):
+    if isinstance(phi, bool) or not isinstance(phi, int | float) or \
+            (isinstance(phi, float) and not math.isfinite(phi)) or abs(phi) > 1e300:
         raise _fail(path, f"{where}.phi_deg", f"expected the crank angle in degrees, got {phi!r}")
     phis = scene.driver.phis_deg
     idx = next((i for i, p in enumerate(phis) if abs(p - phi) < 1e-9), None)
@@ -311,6 +306,8 @@ def _entries(path: str, where: str, raw: Any, kind: str, default_where: str) -> 
         raise _fail(path, where, "expected a table of quantity = figure")
     out = []
     for name, spec in raw.items():
+        if bad_character(name) or len(name) > 200:
+            raise _fail(path, f"{where}.{name!r}", "not a quantity name (e.g. v_B, omega_2, a_BA^τ, F_12)")
         q = canonical(name)
         if not _NAME.match(q.replace("^τ", "^τ")):
             raise _fail(path, f"{where}.{name}", "not a quantity name (e.g. v_B, omega_2, a_BA^τ, F_12)")
@@ -327,9 +324,8 @@ def _one(path: str, field: str, q: str, item: Any, kind: str, default_where: str
     loc = default_where
     key = "mm" if kind == "measured" else "value"
     if isinstance(item, dict):
-        extra = set(item) - {key, "where", "length"}
-        if extra:
-            raise _fail(path, field, f"unknown key(s) {sorted(extra)}; expected {key} and where")
+        check_keys(item, (key, "where") + (("length",) if kind == "value" else ()), file=path,
+                   where=f"{field}.")
         loc = item.get("where", default_where)
         if not isinstance(loc, str):
             raise _fail(path, f"{field}.where", "expected a string (the section of the student's work)")
@@ -347,8 +343,12 @@ def _one(path: str, field: str, q: str, item: Any, kind: str, default_where: str
     if LENGTH_QUANTITY.match(q):
         mm, hu = _length_mm(path, field, item, need_unit=True)
         return Written(q, mm * 1e-3, kind, loc, field, hu * 1e-3)
-    if isinstance(item, bool) or not isinstance(item, int | float) or not math.isfinite(item):
-        raise _fail(path, field, f"expected a number in SI units, got {item!r}")
+    if isinstance(item, bool) or not isinstance(item, int | float) or \
+            (isinstance(item, float) and not math.isfinite(item)) or abs(item) > NUMBER_LIMIT:
+        raise _fail(path, field, f"expected a number in SI units (magnitude at most {NUMBER_LIMIT:g}), "
+                                 f"got {item if isinstance(item, float) else type(item).__name__}")
+    if item != 0 and abs(item) < NUMBER_FLOOR:
+        raise _fail(path, field, f"expected 0 or a magnitude of at least {NUMBER_FLOOR:g}, got {item!r}")
     return Written(q, float(item), kind, loc, field, half_ulp(item))
 
 
@@ -362,8 +362,8 @@ def _length_mm(path: str, field: str, item: Any, *, need_unit: bool) -> tuple[fl
     if isinstance(item, int | float):
         if need_unit:
             raise _fail(path, field, f"a length needs its unit: write '{item} mm' or '{item} m'")
-        if not math.isfinite(item):
-            raise _fail(path, field, "expected a finite length")
+        if (isinstance(item, float) and not math.isfinite(item)) or abs(item) > 1e7:
+            raise _fail(path, field, "expected a finite length of at most 10 km")
         return float(item), half_ulp(item)
     if isinstance(item, str):
         m = _LEN.match(item)
@@ -371,6 +371,8 @@ def _length_mm(path: str, field: str, item: Any, *, need_unit: bool) -> tuple[fl
             unit = m.group(2) or ("" if need_unit else "mm")
             if unit in LENGTH_UNITS:
                 number = m.group(1)
+                if not (abs(float(number)) * LENGTH_UNITS[unit] <= 1e4):
+                    raise _fail(path, field, f"expected a finite length of at most 10 km, got {item!r}")
                 hu = half_ulp(float(number)) if "." in number else 0.5
                 factor = LENGTH_UNITS[unit] / 1e-3
                 return float(number) * factor, hu * factor

@@ -213,7 +213,10 @@ def relation_findings(ctx: Context, pos: StudentPosition) -> list[Finding]:
 
 def _percent_hint(cf: CheckFile, combo: tuple[_Input, ...], value: float) -> str:
     lever, kin = combo[0].value, combo[1].value
-    other = 100 * abs(lever - kin) / (kin if cf.tolerance.balance_base == "lever" else lever)
+    denominator = kin if cf.tolerance.balance_base == "lever" else lever
+    if denominator == 0:  # a student's zero: no other denominator to suspect
+        return ""
+    other = 100 * abs(lever - kin) / denominator
     if abs(other - value) <= 0.01 * max(abs(value), 1e-9) + 0.005:
         base = "the kinetostatic force F_bal" if cf.tolerance.balance_base == "lever" else "the lever's F_bal"
         right = "the Zhukovsky lever's F_bal_lever" if cf.tolerance.balance_base == "lever" else "F_bal"

@@ -67,8 +67,8 @@ from plans.check.findings import (
 )
 from plans.check.providers import STUDENT_ONLY, Context, Exact, exact_value, known_quantities
 from plans.check.relations import relation_findings
-from plans.errors import InputError, PlansError
-from plans.io import atomic_write, dumps
+from plans.errors import InputError, OutputError, PlansError, one_line
+from plans.io import atomic_write, dumps, refuse_input, write_all
 from plans.units import DUST, percent
 
 _SCALE_UNIT = {"length": "mm/m", "velocity": "mm/(m/s)", "acceleration": "mm/(m/s²)", "force": "mm/N"}
@@ -303,7 +303,12 @@ def csv_text(rows: list[dict[str, Any]]) -> str:
 
 
 def check_file(path: str | Path) -> Report:
-    return check(load_check(path))
+    cf = load_check(path)
+    try:
+        return check(cf)
+    except PlansError as exc:
+        exc.source = exc.source or str(path)
+        raise
 
 
 # --------------------------------------------------------------------------- command line
@@ -325,11 +330,19 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 
 
 def _err(msg: str) -> None:
-    print(f"plans check: error: {msg}", file=sys.stderr)
+    print(f"plans: error: {' '.join(msg.split())}", file=sys.stderr)
+
+
+def _extra(args: argparse.Namespace, report: Report, target: Path) -> dict[Path, Any]:
+    """Files another module adds for each checked file (``plans check --sheet``: the marked
+    and overlay sheets), rendered before anything is written."""
+    hook = getattr(args, "extra_files", None)
+    return dict(hook(report, target)) if hook is not None else {}
 
 
 def run(args: argparse.Namespace) -> int:
-    """``plans check``: 0 when every file was checked, 2 on a user error (one line on stderr)."""
+    """``plans check``: 0 when every file was checked, 2 on a user error (one line on stderr).
+    A single file's outputs (JSON, CSV, reports, sheets) are written all or none."""
     target = Path(args.path)
     try:
         if target.is_dir():
@@ -337,31 +350,54 @@ def run(args: argparse.Namespace) -> int:
         if not target.exists():
             _err(f"{target}: no such file or folder")
             return 2
+        for out_path in (args.json, args.csv):
+            refuse_input(out_path, target)
         from plans.cycle import check as cycle_check  # cycle tables (a dynamics sheet)
 
         if cycle_check.is_cycle_check(target):
             return cycle_check.run_file(target, args)
         report = check_file(target)
-        if args.json == "-":
-            sys.stdout.write(dumps(report.to_json()))
-        elif args.json:
-            atomic_write(args.json, dumps(report.to_json()))
+        for out_path in (args.json, args.csv):
+            refuse_input(out_path, report.check.scene.path)
+        files: dict[Path, Any] = {}
+        if args.json and args.json != "-":
+            files[Path(args.json)] = dumps(report.to_json())
         if args.csv:
-            atomic_write(args.csv, csv_text([summary_row(str(target), report)]))
+            files[Path(args.csv)] = csv_text([summary_row(str(target), report)])
         if args.out:
             out = Path(args.out)
-            out.mkdir(parents=True, exist_ok=True)
-            atomic_write(out / f"{target.stem}.json", dumps(report.to_json()))
-            atomic_write(out / f"{target.stem}.txt", table(report) + "\n")
+            files[out / f"{target.stem}.json"] = dumps(report.to_json())
+            files[out / f"{target.stem}.txt"] = table(report) + "\n"
+        for out_path in (args.json, args.csv):
+            if out_path and out_path != "-" and not Path(out_path).parent.is_dir():
+                raise OutputError(f"{out_path}: no such folder {Path(out_path).parent}")
+        files.update(_extra(args, report, target))
+        for folder in sorted({p.parent for p in files}):
+            _make_folder(folder)
+        written = write_all(files)
+        if args.json == "-":
+            sys.stdout.write(dumps(report.to_json()))
         if not args.quiet and args.json != "-":
             print(table(report))
+            for p in written:
+                if p.suffix in (".svg", ".pdf", ".png"):
+                    print(p)
         return 0
     except PlansError as exc:
-        _err(str(exc))
+        _err(one_line(exc))
         return 2
+    except BrokenPipeError:
+        raise  # the runner ends quietly: the reader of the table has gone
     except OSError as exc:
         _err(f"{exc.filename or ''}: {exc.strerror}")
         return 2
+
+
+def _make_folder(folder: Path) -> None:
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise OutputError(f"cannot create the output folder {folder}: {exc.strerror}") from None
 
 
 def _batch(folder: Path, args: argparse.Namespace) -> int:
@@ -373,7 +409,7 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
         _err(f"{folder}: no check files (*.toml)")
         return 2
     out = Path(args.out) if args.out else folder / "reports"
-    out.mkdir(parents=True, exist_ok=True)
+    _make_folder(out)
     rows = []
     bad = 0
     from plans.progress import Progress
@@ -385,11 +421,19 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
             report = check_file(f)
         except PlansError as exc:
             bad += 1
-            _err(str(exc))
+            _err(one_line(exc))
             rows.append(summary_row(str(f), None, str(exc)))
             continue
-        atomic_write(out / f"{f.stem}.json", dumps(report.to_json()))
-        atomic_write(out / f"{f.stem}.txt", table(report) + "\n")
+        try:
+            outputs: dict[Path, Any] = {out / f"{f.stem}.json": dumps(report.to_json()),
+                                        out / f"{f.stem}.txt": table(report) + "\n"}
+            outputs.update(_extra(args, report, f))
+            write_all(outputs)
+        except PlansError as exc:
+            bad += 1
+            _err(one_line(exc))
+            rows.append(summary_row(str(f), None, str(exc)))
+            continue
         rows.append(summary_row(str(f), report))
     atomic_write(Path(args.csv) if args.csv else out / "summary.csv", csv_text(rows))
     if not args.quiet:

@@ -65,8 +65,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from plans.errors import ConstructionError, InputError
+from plans.reader import Reader, check_keys, did_you_mean
 from plans.scene.model import Scene
-from plans.units import LENGTH_UNITS, parse_length
+from plans.units import LENGTH_UNITS
 
 C = NDArray[np.complex128]
 R = NDArray[np.float64]
@@ -153,35 +154,27 @@ def _parse_loads(scene: Scene) -> Loads:
 
     if not isinstance(raw, dict):
         raise fail("loads", "expected a table [loads]")
-    for key in raw:
-        if key not in _LOAD_KEYS:
-            raise fail(f"loads.{key}", f"unknown key; expected some of {sorted(_LOAD_KEYS)}")
+    r = Reader(path)
+    check_keys(raw, _LOAD_KEYS, file=path, where="loads.")
 
     def number(body: dict[str, Any], key: str, where: str, *, nonneg: bool = False,
                positive: bool = False) -> float:
-        v = body[key]
-        if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
-            raise fail(f"{where}{key}", f"expected a number, got {v!r}")
-        if nonneg and v < 0:
-            raise fail(f"{where}{key}", f"expected a number >= 0, got {v!r}")
-        if positive and v <= 0:
-            raise fail(f"{where}{key}", f"expected a positive number, got {v!r}")
-        return float(v)
+        return r.number(body, key, where, nonneg=nonneg, positive=positive)
+
+    def angle(body: dict[str, Any], key: str, where: str, default: float) -> float:
+        return r.angle(body, key, where, default=default)
 
     def length(v: Any, field: str, positive: bool = True) -> float:
-        try:
-            x = parse_length(v, unit if unit in LENGTH_UNITS else "mm")
-        except ValueError as exc:
-            raise fail(field, str(exc)) from None
-        if positive and x <= 0:
-            raise fail(field, f"expected a positive length, got {v!r}")
-        return x
+        return r.length(v, field, unit if unit in LENGTH_UNITS else "mm", positive=positive)
+
+    def label(body: dict[str, Any], where: str, default: str) -> str:
+        return r.name(body.get("name", default), f"{where}name")
 
     def moving_link(body: dict[str, Any], where: str) -> int:
         lid = body.get("link")
-        if lid == scene.frame:
+        if lid == scene.frame and not isinstance(lid, bool):
             raise fail(f"{where}link", f"link {lid} is the frame: loads on the frame do not enter the analysis")
-        if isinstance(lid, bool) or lid not in scene.links:
+        if isinstance(lid, bool) or not isinstance(lid, int) or lid not in scene.links:
             raise fail(f"{where}link", f"unknown link {lid!r}; expected one of {sorted(scene.links)}")
         return int(lid)
 
@@ -193,6 +186,7 @@ def _parse_loads(scene: Scene) -> Loads:
     if rule is not None:
         if not isinstance(rule, dict):
             raise fail("loads.mass_rule", "expected a table { diameter = ..., g_per_cm2 = { link = k } }")
+        check_keys(rule, ("diameter", "g_per_cm2", "rod_inertia"), file=path, where="loads.mass_rule.")
         if "diameter" not in rule:
             raise fail("loads.mass_rule.diameter", "missing piston diameter")
         d = length(rule["diameter"], "loads.mass_rule.diameter")
@@ -202,10 +196,9 @@ def _parse_loads(scene: Scene) -> Loads:
             raise fail("loads.mass_rule.g_per_cm2", "expected a table { link = k }")
         for key in ks:
             where = f"loads.mass_rule.g_per_cm2.{key}"
-            try:
-                lid = int(key)
-            except ValueError:
-                raise fail(where, "expected a link number") from None
+            if not (key.isascii() and key.isdigit() and key == str(int(key))):
+                raise fail(where, "expected a link number")
+            lid = int(key)
             if lid not in scene.links:
                 raise fail(where, f"unknown link {lid}")
             if "mass" in links_raw.get(str(lid), {}):
@@ -216,7 +209,7 @@ def _parse_loads(scene: Scene) -> Loads:
             raise fail("loads.mass_rule.rod_inertia", "expected a list of link numbers")
         for lid in rods:
             where = "loads.mass_rule.rod_inertia"
-            if lid not in scene.links:
+            if isinstance(lid, bool) or not isinstance(lid, int) or lid not in scene.links:
                 raise fail(where, f"unknown link {lid!r}")
             link = scene.links[lid]
             if link.length is None or link.centre is None:
@@ -240,27 +233,23 @@ def _parse_loads(scene: Scene) -> Loads:
     if isinstance(grav, bool):
         g = complex(0, -G_STANDARD) if grav else 0j
     elif isinstance(grav, dict):
+        check_keys(grav, ("g", "direction_deg"), file=path, where="loads.gravity.")
         gval = number(grav, "g", "loads.gravity.", nonneg=True) if "g" in grav else G_STANDARD
-        ang = number(grav, "direction_deg", "loads.gravity.") if "direction_deg" in grav else -90.0
+        ang = angle(grav, "direction_deg", "loads.gravity.", -90.0)
         g = gval * complex(math.cos(math.radians(ang)), math.sin(math.radians(ang)))
     else:
         raise fail("loads.gravity", "expected true, false or { g = 9.81, direction_deg = -90 }")
 
-    inertia_mode = raw.get("inertia", "force_and_moment")
-    if inertia_mode not in ("force_and_moment", "offset_force"):
-        raise fail("loads.inertia", f"expected \"force_and_moment\" or \"offset_force\", got {inertia_mode!r}")
-    turn = raw.get("lever_turn", "ccw")
-    if turn not in ("ccw", "cw"):
-        raise fail("loads.lever_turn", f"expected \"ccw\" or \"cw\", got {turn!r}")
+    inertia_mode = r.choice(raw, "inertia", "loads.", ("force_and_moment", "offset_force"), "force_and_moment")
+    turn = r.choice(raw, "lever_turn", "loads.", ("ccw", "cw"), "ccw")
 
     # ---- balancing load
     crank = scene.links[scene.driver.link]
     bal = raw.get("balancing", {})
     if not isinstance(bal, dict):
         raise fail("loads.balancing", "expected a table { kind = \"force\", point = \"A\" }")
-    kind = bal.get("kind", "force")
-    if kind not in ("force", "moment"):
-        raise fail("loads.balancing.kind", f"expected \"force\" or \"moment\", got {kind!r}")
+    check_keys(bal, ("kind", "point"), file=path, where="loads.balancing.")
+    kind = r.choice(bal, "kind", "loads.balancing.", ("force", "moment"), "force")
     bpoint = bal.get("point", crank.axis[1])
     if not isinstance(bpoint, str):
         raise fail("loads.balancing.point", "expected a point name")
@@ -268,7 +257,8 @@ def _parse_loads(scene: Scene) -> Loads:
         if bpoint in scene.frame_points:
             raise fail("loads.balancing.point", f"point {bpoint!r} is on the frame; the balancing force acts on "
                                                 f"the driving link {crank.id}")
-        raise fail("loads.balancing.point", f"point {bpoint!r} is not on the driving link {crank.id}")
+        raise fail("loads.balancing.point", f"point {bpoint!r} is not on the driving link {crank.id}"
+                                            f"{did_you_mean(bpoint, crank.points)}")
     if abs(crank.points[bpoint] - crank.points[scene.driver.pivot]) == 0:
         raise fail("loads.balancing.point", f"point {bpoint!r} is the pivot: a force there has no moment")
 
@@ -281,6 +271,10 @@ def _parse_loads(scene: Scene) -> Loads:
         where = f"loads.gas[{k}]."
         if not isinstance(body, dict):
             raise fail(f"loads.gas[{k}]", "expected a table")
+        check_keys(body, ("link", "diameter", "area", "area_unit", "pressure", "pressure_unit", "strokes",
+                          "direction", "diagram", "name"), file=path, where=where)
+        if "diameter" in body and "area" in body:
+            raise fail(f"{where}area", "give diameter or area, not both")
         lid = moving_link(body, where)
         pj = [j for j in scene.joints if j.kind == "P" and j.guide is not None and j.slider == lid]
         if len(pj) != 1:
@@ -288,15 +282,11 @@ def _parse_loads(scene: Scene) -> Loads:
         if "diameter" in body:
             area = math.pi * length(body["diameter"], f"{where}diameter") ** 2 / 4
         elif "area" in body:
-            au = body.get("area_unit", "cm2")
-            if au not in AREA_UNITS:
-                raise fail(f"{where}area_unit", f"expected one of {list(AREA_UNITS)}, got {au!r}")
+            au = r.choice(body, "area_unit", where, AREA_UNITS, "cm2")
             area = number(body, "area", where, positive=True) * AREA_UNITS[au]
         else:
             raise fail(f"{where}diameter", "missing piston diameter (or area)")
-        pu = body.get("pressure_unit", "MPa")
-        if pu not in PRESSURE_UNITS:
-            raise fail(f"{where}pressure_unit", f"expected one of {list(PRESSURE_UNITS)}, got {pu!r}")
+        pu = r.choice(body, "pressure_unit", where, PRESSURE_UNITS, "MPa")
         scale = PRESSURE_UNITS[pu]
         strokes = body.get("strokes", ["down", "up"])
         if not (isinstance(strokes, list) and strokes and all(s in ("down", "up") for s in strokes)):
@@ -337,7 +327,7 @@ def _parse_loads(scene: Scene) -> Loads:
             raise fail(f"{where}pressure", "missing pressure (or an indicator diagram)")
         gas.append(GasLoad(link=lid, joint=pj[0].name, area=area, pressure=pressure, diagram=diagram,
                            strokes=tuple(strokes), toward_pivot=direction == "toward_pivot",
-                           name=str(body.get("name", f"P{lid}")), outer=outer, stroke=stroke_len))
+                           name=label(body, where, f"P{lid}"), outer=outer, stroke=stroke_len))
 
     # ---- external forces and moments
     forces = []
@@ -348,10 +338,16 @@ def _parse_loads(scene: Scene) -> Loads:
         where = f"loads.force[{k}]."
         if not isinstance(body, dict):
             raise fail(f"loads.force[{k}]", "expected a table")
+        check_keys(body, ("link", "point", "vector", "magnitude", "angle_deg", "resisting", "along", "stroke",
+                          "name"), file=path, where=where)
+        given = [key for key in ("vector", "magnitude", "resisting") if key in body]
+        if len(given) > 1:
+            raise fail(f"{where}{given[1]}", f"give one of vector, magnitude or resisting, not {' and '.join(given)}")
         lid = moving_link(body, where)
         pt = body.get("point")
         if not isinstance(pt, str) or pt not in scene.links[lid].points:
-            raise fail(f"{where}point", f"unknown point {pt!r} on link {lid}; expected one of "
+            hint = did_you_mean(pt, scene.links[lid].points) if isinstance(pt, str) else ""
+            raise fail(f"{where}point", f"unknown point {pt!r} on link {lid}{hint}; expected one of "
                                         f"{sorted(scene.links[lid].points)}")
         vec = res = along = None
         stroke = body.get("stroke", "both")
@@ -365,18 +361,18 @@ def _parse_loads(scene: Scene) -> Loads:
             vec = complex(number(vv, "x", f"{where}vector."), number(vv, "y", f"{where}vector."))
         elif "magnitude" in body:
             mag = number(body, "magnitude", where)
-            ang = number(body, "angle_deg", where) if "angle_deg" in body else 0.0
+            ang = angle(body, "angle_deg", where, 0.0)
             vec = mag * complex(math.cos(math.radians(ang)), math.sin(math.radians(ang)))
         elif "resisting" in body:
             res = number(body, "resisting", where, nonneg=True)
             if "along" in body:
-                along = math.radians(number(body, "along", where))
+                along = math.radians(angle(body, "along", where, 0.0))
         else:
             raise fail(f"{where}vector", "expected vector = [Fx, Fy], magnitude (+ angle_deg) or resisting")
         if stroke != "both" and along is None:
             raise fail(f"{where}stroke", "a stroke needs an axis: along = angle in degrees")
         forces.append(ForceLoad(link=lid, point=pt, vector=vec, resisting=res, along=along, stroke=stroke,
-                                name=str(body.get("name", f"F_ext{k + 1}"))))
+                                name=label(body, where, f"F_ext{k + 1}")))
     moments = []
     m_raw = raw.get("moment", [])
     if not isinstance(m_raw, list):
@@ -385,12 +381,15 @@ def _parse_loads(scene: Scene) -> Loads:
         where = f"loads.moment[{k}]."
         if not isinstance(body, dict):
             raise fail(f"loads.moment[{k}]", "expected a table")
+        check_keys(body, ("link", "value", "resisting", "name"), file=path, where=where)
+        if "value" in body and "resisting" in body:
+            raise fail(f"{where}resisting", "give value or resisting, not both")
         lid = moving_link(body, where)
         if "value" in body:
-            moments.append(MomentLoad(lid, number(body, "value", where), None, str(body.get("name", f"M{lid}"))))
+            moments.append(MomentLoad(lid, number(body, "value", where), None, label(body, where, f"M{lid}")))
         elif "resisting" in body:
             moments.append(MomentLoad(lid, None, number(body, "resisting", where, nonneg=True),
-                                      str(body.get("name", f"M_c{lid}"))))
+                                      label(body, where, f"M_c{lid}")))
         else:
             raise fail(f"{where}value", "expected value = N·m (ccw+) or resisting = N·m")
 

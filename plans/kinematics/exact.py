@@ -487,6 +487,18 @@ def _root(ctx: _Ctx, g: Group, x: R, y: R, scale: Any, point: str, why: Any) -> 
     return xp.sqrt(x)
 
 
+def _worst(D: Any, low: float, high: float) -> float:
+    """The distance farthest outside [low, high] (the one a group could not span)."""
+    d = np.atleast_1d(np.asarray(D, dtype=float))
+    return float(d.max()) if d.max() > high else float(d.min())
+
+
+def _branch_hint(g: Group) -> str:
+    """Which ``[branches]`` entry picks the group's other assembly (where there are two)."""
+    return (f"; the group has no assembly here on either branch ([branches] \"{g.name}\" = "
+            f"{-g.branch:+d} selects the other of two assemblies only where two exist)")
+
+
 _NAMES: dict[Joint, str] = {}
 
 
@@ -546,8 +558,9 @@ def _rrr(ctx: _Ctx, g: Group, k: tuple) -> None:
     # a along d, h across it; h² as (l1 − a)(l1 + a): no cancellation near a tangent assembly
     a = (half_diff + 0.5 * D * D) / D
     h = _root(ctx, g, l1 - a, l1 + a, lambda: l1 + l3 + D, j2.point,
-              lambda: f"{j1.point}{j2.point} = {l1:.6g} m and {j3.point}{j2.point} = {l3:.6g} m cannot "
-                      f"reach across {j1.point}{j3.point}")
+              lambda: f"{j1.point}{j2.point} = {l1 * 1e3:.6g} mm and {j3.point}{j2.point} = {l3 * 1e3:.6g} mm "
+                      f"cannot span {j1.point}{j3.point} = {_worst(D, abs(l1 - l3), l1 + l3) * 1e3:.6g} mm "
+                      f"(they span {abs(l1 - l3) * 1e3:.6g} to {(l1 + l3) * 1e3:.6g} mm)" + _branch_hint(g))
     r1 = (a + 1j * h if g.branch > 0 else a - 1j * h) * (d / D)  # B − P1
     B = P1 + r1
     r3 = B - P3
@@ -589,8 +602,9 @@ def _rrp(ctx: _Ctx, g: Group, k: tuple) -> None:
     wu = (P1 - G0) * u.conjugate()  # t0 + i·e: along and across the guide
     t0, e = wu.real, wu.imag
     root = _root(ctx, g, l1 - e, l1 + e, lambda: l1, j2.point,
-                 lambda: f"{j1.point}{j2.point} = {l1:.6g} m is shorter than the distance from "
-                         f"{j1.point} to the guide of {j2.point}")
+                 lambda: f"{j1.point}{j2.point} = {l1 * 1e3:.6g} mm is shorter than the distance "
+                         f"{float(np.max(np.abs(e))) * 1e3:.6g} mm from {j1.point} to the guide of {j2.point}"
+                         + _branch_hint(g))
     B = G0 + (t0 + root if g.branch > 0 else t0 - root) * u
     r1 = B - P1
     mi = _place(ctx, i, r1 * (ci / abs(r1)), P1, z1i)

@@ -15,9 +15,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from plans.errors import InputError
 from plans.io import loads_toml, read_toml
-from plans.units import LENGTH_UNITS, parse_length, rpm_to_rad_s
+from plans.reader import Reader, did_you_mean
+from plans.units import LENGTH_UNITS, rpm_to_rad_s
 
 #: What a scene may ask for, and what each one needs first.
 OUTPUTS: dict[str, tuple[str, ...]] = {
@@ -101,7 +101,8 @@ class Driver:
         crank angle near a dead centre (90°, 180°, ...) keeps its small offset exactly."""
         import numpy as np
 
-        t = math.degrees(self.phi_ref) + self.sense * np.asarray(phi_deg, dtype=float)
+        phi = np.fmod(np.asarray(phi_deg, dtype=float), 360.0)  # exact, even for 1e21 degrees
+        t = math.degrees(self.phi_ref) + self.sense * phi
         q = np.round(t / 90.0)
         r = t - 90.0 * q
         quarter = np.array([1, 1j, -1, -1j])[q.astype(int) % 4]
@@ -146,48 +147,26 @@ class Scene:
 # --------------------------------------------------------------------------- parsing
 
 
-class _Reader:
-    """Field access that turns every problem into one InputError line."""
+#: The most crank positions one scene may ask for (a position every 0.1°); beyond it the
+#: tables, JSON and sheets would run to gigabytes.
+MAX_POSITIONS = 3600
 
-    def __init__(self, path: str) -> None:
-        self.path = path
+#: Keys of each table of a linkage scene (the readers of loads and [sheet] check their own).
+TOP_KEYS = {"format", "kind", "title", "unit", "frame", "points", "links", "joints", "driver", "branches",
+            "outputs", "scales", "fij", "loads", "sheet", "diagrams", "dynamics"}
+LINK_KEYS = {"name", "axis", "length", "points", "mass", "inertia", "centre"}
+JOINT_KEYS = {"kind", "links", "point", "guide", "slider_angle_deg"}
+GUIDE_KEYS = {"link", "through", "toward", "angle_deg", "offset"}
+DRIVER_KEYS = {"link", "omega", "omega_rpm", "sense", "eps", "phi_ref_deg", "phi_deg", "positions", "phi0_deg"}
+#: ω at most 1e6 rad/s, and 0 or at least 1e-6 rad/s (a slower crank makes plan scales overflow).
+OMEGA_LIMIT = 1e6
 
-    def fail(self, field: str, expected: str) -> InputError:
-        return InputError(expected, file=self.path, field=field)
 
-    def table(self, data: dict[str, Any], key: str, where: str, required: bool = True) -> dict[str, Any]:
-        if key not in data:
-            if required:
-                raise self.fail(f"{where}{key}", "missing table")
-            return {}
-        value = data[key]
-        if not isinstance(value, dict):
-            raise self.fail(f"{where}{key}", "expected a table")
-        return value
-
-    def number(self, data: dict[str, Any], key: str, where: str, *, default: float | None = None,
-               positive: bool = False, nonneg: bool = False) -> float:
-        if key not in data:
-            if default is None:
-                raise self.fail(f"{where}{key}", "missing number")
-            return default
-        value = data[key]
-        if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
-            raise self.fail(f"{where}{key}", f"expected a number, got {value!r}")
-        if positive and value <= 0:
-            raise self.fail(f"{where}{key}", f"expected a positive number, got {value!r}")
-        if nonneg and value < 0:
-            raise self.fail(f"{where}{key}", f"expected a number >= 0, got {value!r}")
-        return float(value)
-
-    def length(self, value: Any, field: str, unit: str, *, positive: bool = False) -> float:
-        try:
-            out = parse_length(value, unit)
-        except ValueError as exc:
-            raise self.fail(field, str(exc)) from None
-        if positive and out <= 0:
-            raise self.fail(field, f"expected a positive length, got {value!r}")
-        return out
+def check_format(r: Reader, data: dict[str, Any]) -> None:
+    """``format = 1`` exactly (an integer, not ``true`` nor ``1.0``)."""
+    fmt = data.get("format")
+    if isinstance(fmt, bool) or not isinstance(fmt, int) or fmt != 1:
+        raise r.fail("format", f"expected format = 1, got {'nothing' if fmt is None else repr(fmt)}")
 
 
 def load_scene(path: str | Path) -> Scene:
@@ -200,80 +179,88 @@ def parse_scene(text: str, path: str = "<scene>") -> Scene:
 
 
 def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
-    r = _Reader(path)
-    if data.get("format") != 1:
-        raise r.fail("format", "expected format = 1")
+    r = Reader(path)
+    check_format(r, data)
     kind = data.get("kind", "linkage")
     if kind != "linkage":
-        from plans.kinds import command_for
+        from plans.kinds import KINDS, command_for
+
+        if not isinstance(kind, str) or kind not in KINDS:
+            hint = did_you_mean(kind, KINDS) if isinstance(kind, str) else ""
+            raise r.fail("kind", f"expected one of {', '.join(repr(k) for k in KINDS)}, got {kind!r}{hint}")
 
         raise r.fail("kind", f"this is a {kind!r} file, not a linkage scene; "
                              f"{command_for(kind)}expected kind = \"linkage\" or no kind")
-    unit = data.get("unit", "mm")
-    if unit not in LENGTH_UNITS:
-        raise r.fail("unit", f"expected one of {sorted(LENGTH_UNITS)}, got {unit!r}")
+    r.keys(data, TOP_KEYS, "")
+    unit = r.choice(data, "unit", "", sorted(LENGTH_UNITS), "mm")
     title, titles = _title(r, data.get("title", Path(path).stem))
+    r.string(title, "title", limit=2000)
+    for lang, text in titles.items():
+        r.string(text, f"title.{lang}", limit=2000)
     frame = data.get("frame")
-    if isinstance(frame, bool) or not isinstance(frame, int) or frame <= 0:
+    if isinstance(frame, bool) or not isinstance(frame, int) or not 0 < frame < 1_000_000:
         raise r.fail("frame", "expected the frame's link number (a positive integer)")
 
     frame_points = _frame_points(r, data, unit)
     links_raw = r.table(data, "links", "")
     links = {}
+    links_raw_key: dict[int, str] = {}
     for key, body in links_raw.items():
         lid = _link_id(r, key)
         if lid == frame:
             raise r.fail(f"links.{key}", f"link {lid} is the frame; put frame points in [points]")
         if not isinstance(body, dict):
             raise r.fail(f"links.{key}", "expected a table")
+        if lid in links:
+            raise r.fail(f"links.{key}", f"link {lid} is given twice ([links.{links_raw_key[lid]}] and [links.{key}])")
+        links_raw_key[lid] = key
         links[lid] = _link(r, lid, body, unit)
     if not links:
         raise r.fail("links", "expected at least the driving link")
 
     joints = _joints(r, data, unit, frame, frame_points, links)
     links = _orient_sliders(r, links, joints)
+    _shared_points(r, frame, frame_points, links, joints)
     driver = _driver(r, data, frame, frame_points, links)
     branches = _branches(r, data)
     outputs = _outputs(r, data)
     scales, style = _scales(r, data)
-    fij = data.get("fij", "on_i_from_j")
-    if fij not in FIJ_CONVENTIONS:
-        raise r.fail("fij", f"expected one of {list(FIJ_CONVENTIONS)}, got {fij!r}")
+    fij = r.choice(data, "fij", "", FIJ_CONVENTIONS, "on_i_from_j")
     return Scene(path=path, title=title, frame=frame, frame_points=frame_points, links=links,
                  joints=joints, driver=driver, branches=branches, outputs=outputs,
                  scales=scales, scale_style=style, fij=fij, raw=data, titles=titles)
 
 
-def _link_id(r: _Reader, key: str) -> int:
-    try:
-        lid = int(key)
-    except ValueError:
-        raise r.fail(f"links.{key}", "expected links numbered as the textbook does: [links.1], [links.2], ...") from None
+def _link_id(r: Reader, key: str) -> int:
+    """``[links.2]``: a positive number written plainly (``01``, ``+1``, ``1_0`` would
+    merge or hide links)."""
+    if not (key.isascii() and key.isdigit()) or key != str(int(key)) or len(key) > 6:
+        raise r.fail(f"links.{key}", "expected links numbered as the textbook does: [links.1], [links.2], ...")
+    lid = int(key)
     if lid <= 0:
         raise r.fail(f"links.{key}", "expected a positive link number")
     return lid
 
 
-def _xy(r: _Reader, value: Any, field: str, unit: str) -> complex:
+def _xy(r: Reader, value: Any, field: str, unit: str) -> complex:
     if not (isinstance(value, list) and len(value) == 2):
         raise r.fail(field, "expected a point [x, y]")
     return complex(r.length(value[0], f"{field}[0]", unit), r.length(value[1], f"{field}[1]", unit))
 
 
-def _frame_points(r: _Reader, data: dict[str, Any], unit: str) -> dict[str, complex]:
+def _frame_points(r: Reader, data: dict[str, Any], unit: str) -> dict[str, complex]:
     pts = r.table(data, "points", "")
-    return {name: _xy(r, value, f"points.{name}", unit) for name, value in pts.items()}
+    return {r.name(name, f"points.{name}"): _xy(r, value, f"points.{name}", unit) for name, value in pts.items()}
 
 
-def _link(r: _Reader, lid: int, body: dict[str, Any], unit: str) -> Link:
+def _link(r: Reader, lid: int, body: dict[str, Any], unit: str) -> Link:
     where = f"links.{lid}."
-    known = {"name", "axis", "length", "points", "mass", "inertia", "centre"}
-    for key in body:
-        if key not in known:
-            raise r.fail(f"{where}{key}", f"unknown key; expected one of {sorted(known)}")
+    r.keys(body, LINK_KEYS, where)
     axis = body.get("axis")
     if not (isinstance(axis, list) and 1 <= len(axis) <= 2 and all(isinstance(a, str) for a in axis)):
         raise r.fail(f"{where}axis", "expected one or two point names, e.g. axis = [\"A\", \"B\"]")
+    for k, a in enumerate(axis):
+        r.name(a, f"{where}axis[{k}]")
     if len(axis) == 2 and axis[0] == axis[1]:
         raise r.fail(f"{where}axis", "expected two different points")
     length = None
@@ -290,14 +277,18 @@ def _link(r: _Reader, lid: int, body: dict[str, Any], unit: str) -> Link:
         raise r.fail(f"{where}points", "expected a table of named points")
     for name, spec in extra.items():
         f = f"{where}points.{name}"
+        r.name(name, f)
         if name in points:
             raise r.fail(f, "point already defined by the axis")
         if not isinstance(spec, dict):
             raise r.fail(f, "expected { ratio = r } or { along = a, across = c }")
+        r.keys(spec, ("ratio", "along", "across"), f + ".")
+        if "ratio" in spec and ({"along", "across"} & set(spec)):
+            raise r.fail(f, "give ratio, or along and across, not both")
         if "ratio" in spec:
             if length is None:
                 raise r.fail(f, "ratio needs a two-point axis")
-            ratio = r.number(spec, "ratio", f + ".")
+            ratio = r.number(spec, "ratio", f + ".", limit=1e6)
             points[name] = complex(ratio * length, 0.0)
         else:
             along = r.length(spec.get("along", 0), f + ".along", unit)
@@ -306,14 +297,15 @@ def _link(r: _Reader, lid: int, body: dict[str, Any], unit: str) -> Link:
     mass = r.number(body, "mass", where, default=0.0, nonneg=True)
     inertia = r.number(body, "inertia", where, default=0.0, nonneg=True)
     centre = body.get("centre")
-    if centre is not None and centre not in points:
-        raise r.fail(f"{where}centre", f"unknown point {centre!r} on link {lid}")
-    name = body.get("name", f"link {lid}")
-    return Link(id=lid, name=str(name), axis=tuple(axis), length=length, points=points,
+    if centre is not None and (not isinstance(centre, str) or centre not in points):
+        raise r.fail(f"{where}centre", f"unknown point {centre!r} on link {lid}"
+                                       f"{did_you_mean(centre, points) if isinstance(centre, str) else ''}")
+    name = r.string(body.get("name", f"link {lid}"), f"{where}name")
+    return Link(id=lid, name=name, axis=tuple(axis), length=length, points=points,
                 mass=mass, inertia=inertia, centre=centre)
 
 
-def _joints(r: _Reader, data: dict[str, Any], unit: str, frame: int,
+def _joints(r: Reader, data: dict[str, Any], unit: str, frame: int,
             frame_points: dict[str, complex], links: dict[int, Link]) -> tuple[Joint, ...]:
     raw = data.get("joints")
     if not isinstance(raw, list) or not raw:
@@ -324,11 +316,13 @@ def _joints(r: _Reader, data: dict[str, Any], unit: str, frame: int,
         where = f"joints[{k}]."
         if not isinstance(body, dict):
             raise r.fail(f"joints[{k}]", "expected a table")
+        r.keys(body, JOINT_KEYS, where)
         kind = body.get("kind")
         if kind not in ("R", "P"):
             raise r.fail(f"{where}kind", f"expected \"R\" or \"P\", got {kind!r}")
         pair = body.get("links")
-        if not (isinstance(pair, list) and len(pair) == 2 and all(isinstance(x, int) for x in pair)):
+        if not (isinstance(pair, list) and len(pair) == 2
+                and all(isinstance(x, int) and not isinstance(x, bool) for x in pair)):
             raise r.fail(f"{where}links", "expected two link numbers, e.g. links = [1, 2]")
         for lid in pair:
             if lid not in known_links:
@@ -344,6 +338,9 @@ def _joints(r: _Reader, data: dict[str, Any], unit: str, frame: int,
             return name in (frame_points if lid == frame else links[lid].points)
 
         if kind == "R":
+            if "guide" in body or "slider_angle_deg" in body:
+                raise r.fail(f"{where}guide" if "guide" in body else f"{where}slider_angle_deg",
+                             "a turning pair (kind = \"R\") has no guide")
             for lid in pair:
                 if not carries(lid, point):
                     raise r.fail(f"{where}point", f"point {point!r} is not on link {lid}")
@@ -352,8 +349,11 @@ def _joints(r: _Reader, data: dict[str, Any], unit: str, frame: int,
         g = body.get("guide")
         if not isinstance(g, dict):
             raise r.fail(f"{where}guide", "a P joint needs guide = { link = N, through = ..., angle_deg = ... }")
+        r.keys(g, GUIDE_KEYS, f"{where}guide.")
+        if "toward" in g and "angle_deg" in g:
+            raise r.fail(f"{where}guide.angle_deg", "give toward or angle_deg, not both")
         carrier = g.get("link")
-        if not isinstance(carrier, int) or carrier not in pair:
+        if isinstance(carrier, bool) or not isinstance(carrier, int) or carrier not in pair:
             raise r.fail(f"{where}guide.link", f"expected one of the joint's links {pair}")
         slider = b if carrier == a else a
         if not carries(slider, point):
@@ -376,15 +376,15 @@ def _joints(r: _Reader, data: dict[str, Any], unit: str, frame: int,
                 raise r.fail(f"{where}guide.toward", "coincides with 'through'")
             angle = cmath.phase(target - origin)
         else:
-            angle = math.radians(r.number(g, "angle_deg", f"{where}guide.", default=0.0))
+            angle = math.radians(r.angle(g, "angle_deg", f"{where}guide."))
         offset = r.length(g.get("offset", 0), f"{where}guide.offset", unit)
         origin = origin + offset * 1j * cmath.exp(1j * angle)  # offset to the left of the direction
-        slider_angle = math.radians(r.number(body, "slider_angle_deg", where, default=0.0))
+        slider_angle = math.radians(r.angle(body, "slider_angle_deg", where))
         out.append(Joint("P", (a, b), point, Guide(carrier, origin, angle), slider_angle))
     return tuple(out)
 
 
-def _orient_sliders(r: _Reader, links: dict[int, Link], joints: tuple[Joint, ...]) -> dict[int, Link]:
+def _orient_sliders(r: Reader, links: dict[int, Link], joints: tuple[Joint, ...]) -> dict[int, Link]:
     """One-point links need a local x axis: the guide they slide on or carry."""
     for lid, link in links.items():
         if len(link.axis) == 2:
@@ -399,32 +399,38 @@ def _orient_sliders(r: _Reader, links: dict[int, Link], joints: tuple[Joint, ...
     return links
 
 
-def _driver(r: _Reader, data: dict[str, Any], frame: int, frame_points: dict[str, complex],
+def _driver(r: Reader, data: dict[str, Any], frame: int, frame_points: dict[str, complex],
             links: dict[int, Link]) -> Driver:
     d = r.table(data, "driver", "")
+    r.keys(d, DRIVER_KEYS, "driver.")
     lid = d.get("link")
-    if lid not in links:
-        raise r.fail("driver.link", f"expected a moving link number, got {lid!r}")
+    if isinstance(lid, bool) or not isinstance(lid, int) or lid not in links:
+        raise r.fail("driver.link", f"expected a moving link number (one of {sorted(links)}), got {lid!r}")
     link = links[lid]
     if len(link.axis) != 2 or link.axis[0] not in frame_points:
         raise r.fail("driver.link", "the driving link needs axis = [pivot on the frame, crank pin]")
+    if "omega_rpm" in d and "omega" in d:
+        raise r.fail("driver.omega_rpm", "give omega (rad/s) or omega_rpm, not both")
     if "omega_rpm" in d:
-        omega = rpm_to_rad_s(r.number(d, "omega_rpm", "driver.", nonneg=True))
+        omega = rpm_to_rad_s(r.number(d, "omega_rpm", "driver.", nonneg=True, limit=OMEGA_LIMIT * 30 / math.pi,
+                                      floor=1e-6))
+    elif "omega" in d:
+        omega = r.number(d, "omega", "driver.", nonneg=True, limit=OMEGA_LIMIT, floor=1e-6)
     else:
-        omega = r.number(d, "omega", "driver.", nonneg=True)
-    sense_txt = d.get("sense", "ccw")
-    if sense_txt not in ("ccw", "cw"):
-        raise r.fail("driver.sense", f"expected \"ccw\" or \"cw\", got {sense_txt!r}")
-    sense = 1 if sense_txt == "ccw" else -1
+        raise r.fail("driver.omega", "missing crank speed: omega = rad/s or omega_rpm = rev/min")
+    sense = 1 if r.choice(d, "sense", "driver.", ("ccw", "cw"), "ccw") == "ccw" else -1
     eps = r.number(d, "eps", "driver.", default=0.0)
-    phi_ref = math.radians(r.number(d, "phi_ref_deg", "driver.", default=0.0))
+    phi_ref = math.radians(r.angle(d, "phi_ref_deg", "driver."))
     if "phi_deg" in d and "positions" in d:
         raise r.fail("driver.phi_deg", "give phi_deg or positions, not both")
+    if "phi0_deg" in d and "positions" not in d:
+        raise r.fail("driver.phi0_deg", "phi0_deg goes with positions = N (with phi_deg give the angles)")
     if "positions" in d:
-        n = d["positions"]
-        if isinstance(n, bool) or not isinstance(n, int) or n <= 0:
-            raise r.fail("driver.positions", f"expected a positive whole number, got {n!r}")
-        phi0 = r.number(d, "phi0_deg", "driver.", default=0.0)
+        n = r.integer(d, "positions", "driver.", at_least=1)
+        if n > MAX_POSITIONS:
+            raise r.fail("driver.positions", f"{n} positions; expected at most {MAX_POSITIONS} "
+                                             "(a position every 0.1°)")
+        phi0 = r.angle(d, "phi0_deg", "driver.")
         phis = tuple(phi0 + 360.0 * k / n for k in range(n))
     else:
         raw = d.get("phi_deg")
@@ -433,25 +439,58 @@ def _driver(r: _Reader, data: dict[str, Any], frame: int, frame_points: dict[str
         values = raw if isinstance(raw, list) else [raw]
         if not values:
             raise r.fail("driver.phi_deg", "expected at least one angle")
+        if len(values) > MAX_POSITIONS:
+            raise r.fail("driver.phi_deg", f"{len(values)} angles; expected at most {MAX_POSITIONS}")
         for v in values:
-            if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
+            if isinstance(v, bool) or not isinstance(v, int | float):
                 raise r.fail("driver.phi_deg", f"expected a number of degrees, got {v!r}")
-        phis = tuple(float(v) for v in values)
+        phis = tuple(r.value(v, "driver.phi_deg", limit=1e300, floor=0.0) for v in values)
     return Driver(link=lid, pivot=link.axis[0], omega=sense * omega, eps=sense * eps,
                   phi_ref=phi_ref, sense=sense, phis_deg=phis)
 
 
-def _branches(r: _Reader, data: dict[str, Any]) -> dict[str, int]:
+def _shared_points(r: Reader, frame: int, frame_points: dict[str, complex], links: dict[int, Link],
+                   joints: tuple[Joint, ...]) -> None:
+    """A point name carried by several links names one point: the links must be joined
+    there (turning pairs, or a slider on its guide).  Two unjoined points of one name would
+    silently become one."""
+    carriers: dict[str, list[int]] = {}
+    for lid, link in sorted(links.items()):
+        for nm in link.points:
+            carriers.setdefault(nm, []).append(lid)
+    for nm in frame_points:
+        carriers.setdefault(nm, []).append(frame)
+    for nm, lids in carriers.items():
+        if len(lids) < 2:
+            continue
+        parent = {lid: lid for lid in lids}
+
+        def root(x: int, parent: dict[int, int] = parent) -> int:
+            while parent[x] != x:
+                x = parent[x]
+            return x
+
+        for j in joints:
+            if j.point == nm and all(x in parent for x in j.links):
+                parent[root(j.links[0])] = root(j.links[1])
+        groups = {root(x) for x in lids}
+        if len(groups) > 1:
+            where = "points" if frame in lids else f"links.{lids[-1]}.points"
+            raise r.fail(f"{where}.{nm}", f"point {nm!r} is on links {', '.join(map(str, lids))} but no joint "
+                                          f"at {nm!r} joins them; rename one of them (S2, S3, ...) or add the joint")
+
+
+def _branches(r: Reader, data: dict[str, Any]) -> dict[str, int]:
     raw = r.table(data, "branches", "", required=False)
     out = {}
     for key, value in raw.items():
-        if value not in (1, -1):
-            raise r.fail(f"branches.{key}", "expected +1 or -1")
-        out[key] = int(value)
+        if isinstance(value, bool) or value not in (1, -1):
+            raise r.fail(f"branches.{key}", f"expected +1 or -1, got {value!r}")
+        out[r.name(key, f"branches.{key}")] = int(value)
     return out
 
 
-def _outputs(r: _Reader, data: dict[str, Any]) -> frozenset[str]:
+def _outputs(r: Reader, data: dict[str, Any]) -> frozenset[str]:
     raw = data.get("outputs", ["positions", "velocity_plan", "acceleration_plan"])
     if not isinstance(raw, list) or not all(isinstance(x, str) for x in raw):
         raise r.fail("outputs", "expected a list of names")
@@ -466,11 +505,14 @@ def _outputs(r: _Reader, data: dict[str, Any]) -> frozenset[str]:
                 add(dep)
 
     for name in raw:
+        if name not in OUTPUTS:
+            raise r.fail("outputs", f"unknown output {name!r}{did_you_mean(name, OUTPUTS)} "
+                                    f"(expected some of {', '.join(OUTPUTS)})")
         add(name)
     return frozenset(wanted)
 
 
-def _title(r: _Reader, value: Any) -> tuple[str, dict[str, str]]:
+def _title(r: Reader, value: Any) -> tuple[str, dict[str, str]]:
     """``title = "..."`` or ``title = { ru = "...", en = "..." }`` (one per sheet language)."""
     if isinstance(value, str):
         return value, {}
@@ -483,26 +525,23 @@ def _title(r: _Reader, value: Any) -> tuple[str, dict[str, str]]:
 _SCALE_UNITS = {"length": "mm/m", "velocity": "mm/(m/s)", "acceleration": "mm/(m/s^2)", "force": "mm/N"}
 
 
-def _scales(r: _Reader, data: dict[str, Any]) -> tuple[dict[str, float], str]:
+def _scales(r: Reader, data: dict[str, Any]) -> tuple[dict[str, float], str]:
     raw = r.table(data, "scales", "", required=False)
-    style = raw.get("style", "mu")
-    if style not in ("mu", "K"):
-        raise r.fail("scales.style", "expected \"mu\" (mm per unit) or \"K\" (unit per mm)")
+    style = r.choice(raw, "style", "scales.", ("mu", "K"), "mu")
+    r.keys(raw, {"style", *_SCALE_UNITS}, "scales.")
     out = {}
     for key, value in raw.items():
         if key == "style":
             continue
-        if key not in _SCALE_UNITS:
-            raise r.fail(f"scales.{key}", f"unknown scale; expected some of {list(_SCALE_UNITS)}")
         if isinstance(value, dict) and set(value) == {"known_mm"} and key in ("velocity", "acceleration"):
             # the course habit: the known vector (crank pin) drawn this long, e.g. pa = 100 mm
-            out[f"{key}_known_mm"] = r.number(value, "known_mm", f"scales.{key}.", positive=True)
+            out[f"{key}_known_mm"] = r.number(value, "known_mm", f"scales.{key}.", positive=True, limit=1e4)
             continue
         if not isinstance(value, dict) or len(value) != 1 or not ({"mu", "K"} & set(value)):
             raise r.fail(f"scales.{key}", "expected { mu = mm per unit }, { K = unit per mm }"
                          + (" or { known_mm = length of the known vector }"
                             if key in ("velocity", "acceleration") else ""))
         kind = "mu" if "mu" in value else "K"
-        x = r.number(value, kind, f"scales.{key}.", positive=True)
+        x = r.number(value, kind, f"scales.{key}.", positive=True, limit=1e9, floor=1e-9)
         out[key] = x if kind == "mu" else 1.0 / x
     return out, style

@@ -1,0 +1,532 @@
+"""Fuzzing the promise on input files: ``plans bench --fuzz N``.
+
+Every file under ``samples/`` (any kind: linkage scenes, check files, engines, gears,
+cams) is parsed, mutated as a hostile user would (hostile numbers, wrong types, misspelt
+and unknown keys, control characters and markup in names, files that are not UTF-8,
+truncated TOML) and run through its command in-process.  A case keeps the promise when
+
+* the command accepts it (status 0) and every number it printed or wrote is finite, or
+* it refuses it with status 2 and exactly one line ``plans: error: ...`` on stderr,
+  having written nothing and changed no input.
+
+Anything else (an exception that escapes, another status, a warning printed, NaN or inf
+in an output) is a failure, reported with the file that caused it.  The same mutations
+drive the Hypothesis test in the test suite (a fixed budget, derandomized).
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import io
+import json
+import math
+import os
+import random
+import re
+import shutil
+import sys
+import tempfile
+import time
+import tomllib
+import traceback
+import warnings
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+SAMPLES = Path(__file__).resolve().parents[2] / "samples"
+
+# --------------------------------------------------------------------------- TOML out
+
+
+def _key(k: str) -> str:
+    return k if re.fullmatch(r"[A-Za-z0-9_-]+", k) else _string(k)
+
+
+def _string(s: str) -> str:
+    out = ['"']
+    for ch in s:
+        o = ord(ch)
+        if ch == '"':
+            out.append('\\"')
+        elif ch == "\\":
+            out.append("\\\\")
+        elif o < 0x20 or o == 0x7F:
+            out.append(f"\\u{o:04X}")
+        elif 0xD800 <= o <= 0xDFFF:
+            out.append("?")
+        else:
+            out.append(ch)
+    out.append('"')
+    return "".join(out)
+
+
+def _value(v: Any) -> str:
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, int):
+        return str(v)
+    if isinstance(v, float):
+        if math.isnan(v):
+            return "nan"
+        if math.isinf(v):
+            return "inf" if v > 0 else "-inf"
+        return repr(v)
+    if isinstance(v, str):
+        return _string(v)
+    if isinstance(v, list):
+        return "[" + ", ".join(_value(x) for x in v) + "]"
+    if isinstance(v, dict):
+        return "{" + ", ".join(f"{_key(str(k))} = {_value(x)}" for k, x in v.items()) + "}"
+    return _string(str(v))
+
+
+def to_toml(data: dict[str, Any]) -> str:
+    """A table as TOML text (every sub-table inline: enough to carry any mutation)."""
+    return "".join(f"{_key(str(k))} = {_value(v)}\n" for k, v in data.items())
+
+
+# --------------------------------------------------------------------------- mutations
+
+HOSTILE_NUMBERS: tuple[Any, ...] = (
+    0, -1, 1, 2, 3, 7, -0.0, 0.5, 1e-300, 5e-324, 1e-154, 1e-12, 1e-7, 1e300, -1e300, 1e308, 1.7e308,
+    10**400, -(10**400), 2**63, 2**64 + 1, 1.234567e21, -1.234567e21, 1e400, float("nan"), 1e16, 360, 720,
+    90, 180, 270, 1e6, 1e7, 3601, 10_000_000, 123456789012, 0.1, 1e-9)
+HOSTILE_STRINGS: tuple[str, ...] = (
+    "", " ", "A", "B", "S2", "O", "<script>alert(1)</script>", "a & b < c > d \" '", "]]>", "\x01", "\x7f",
+    "\ufffe", "\uffff", "\ufdd0", "\u202e", "x" * 300, "title\nsecond line", "\t", "1e400 mm", "35 mm",
+    "0.035 m", "-5 mm", "10 furlongs", "1e300 m", "mm", "ccw", "cw", "force", "moment", "linkage", "engine",
+    "gears", "cam", "R", "P", "A1", "A9", "draftsman", "lever", "MPa", "down", "up", "π", "ω2", "\U0001F600",
+    '<image href="file:///etc/passwd"/>', "&amp;", "../../etc/passwd", "/dev/zero")
+
+
+def _hostile(rng: random.Random, old: Any) -> Any:
+    pick = rng.random()
+    if isinstance(old, int | float) and not isinstance(old, bool) and pick < 0.35:
+        factor = rng.choice((1e-300, 1e-12, -1, 0, 1e12, 1e300, 10, 0.1, 1.0000001))
+        try:
+            out = old * factor
+        except OverflowError:
+            out = 1e308
+        return int(out) if isinstance(old, int) and isinstance(out, float) and math.isfinite(out) else out
+    if pick < 0.6:
+        return rng.choice(HOSTILE_NUMBERS)
+    if pick < 0.8:
+        return rng.choice(HOSTILE_STRINGS)
+    return rng.choice((True, False, [], {}, [1], ["A"], [[1, 2]], {"x": 1}, [1, 2, 3], [0, 0], ["A", "A"],
+                       [1e300, 1e300], {"mu": 0}, {"K": 1e-300}, [-1, 1]))
+
+
+def _number(rng: random.Random, old: float) -> float:
+    """Another number for a numeric field: near the engine's limits, near zero, scaled."""
+    pick = rng.random()
+    if pick < 0.4:
+        factor = rng.choice((1e-6, 1e-3, 0.01, 0.5, 0.999999, 1.000001, 2, 10, 100, 1e3, 1e6, -1, 0))
+        try:
+            out = old * factor
+        except OverflowError:
+            return 1e308
+        return int(out) if isinstance(old, int) and abs(out) < 1e15 and out == int(out) else out
+    if pick < 0.7:
+        return rng.choice((0, 1, -1, 1e-6, 1.0000001e-6, 9.99e-7, 1e4, 1e7, 1e12, 1e-12, 9.9e11, 1.01e-12, 0.5e-3,
+                           1e6, 1e5, 360, 3601, 1.234567e21, 89.99999999, 90.0000001, 180, 359.9999999, 1e-9))
+    return rng.choice(HOSTILE_NUMBERS)
+
+
+def _typo(rng: random.Random, key: str) -> str:
+    if not key:
+        return "x"
+    i = rng.randrange(len(key))
+    how = rng.randrange(4)
+    if how == 0:
+        return key[:i] + key[i + 1:] or key + "_"
+    if how == 1 and len(key) > 1:
+        j = min(i + 1, len(key) - 1)
+        chars = list(key)
+        chars[i], chars[j] = chars[j], chars[i]
+        return "".join(chars) if "".join(chars) != key else key + "s"
+    if how == 2:
+        return key + rng.choice(("s", "_", "0", "x"))
+    return key.upper() if key.upper() != key else key.lower() + "_"
+
+
+def _paths(node: Any, prefix: tuple[Any, ...] = ()) -> list[tuple[Any, ...]]:
+    out = [prefix]
+    if isinstance(node, dict):
+        for k, v in node.items():
+            out += _paths(v, prefix + (k,))
+    elif isinstance(node, list):
+        for i, v in enumerate(node):
+            out += _paths(v, prefix + (i,))
+    return out
+
+
+def _get(node: Any, path: tuple[Any, ...]) -> Any:
+    for p in path:
+        node = node[p]
+    return node
+
+
+def mutate(data: dict[str, Any], rng: random.Random, n: int | None = None) -> dict[str, Any]:
+    """A copy of ``data`` with 1..3 hostile edits (values, types, keys, whole tables)."""
+    out = json.loads(json.dumps(data))
+    for _ in range(n if n is not None else rng.choice((1, 1, 1, 2, 3))):
+        paths = [p for p in _paths(out) if p]
+        if not paths:
+            break
+        numeric = [p for p in paths if isinstance(_get(out, p), int | float) and not isinstance(_get(out, p), bool)]
+        if numeric and rng.random() < 0.5:  # a number that may pass the reader: the deep paths
+            path = rng.choice(numeric)
+            parent = _get(out, path[:-1])
+            old = parent[path[-1]]
+            parent[path[-1]] = _number(rng, old)
+            continue
+        path = rng.choice(paths)
+        parent = _get(out, path[:-1])
+        last = path[-1]
+        action = rng.randrange(10)
+        if action <= 4:
+            parent[last] = _hostile(rng, parent[last])
+        elif action == 5 and isinstance(parent, dict):
+            del parent[last]
+        elif action == 6 and isinstance(parent, dict):
+            parent[_typo(rng, str(last))] = parent.pop(last)
+        elif action == 7 and isinstance(parent, dict):
+            parent[rng.choice(("foo", "output", "omega_rmp", "kind", "omega", "omega_rpm", "positions", "phi_deg",
+                               "01", "1", "centre", "name", "title", "links", "x y"))] = _hostile(rng, None)
+        elif action == 8 and isinstance(parent, list):
+            parent.append(json.loads(json.dumps(parent[last])))
+        elif action == 8:
+            parent[last] = [parent[last]]
+        else:
+            node = parent[last]
+            if isinstance(node, int | float) and not isinstance(node, bool):
+                parent[last] = _hostile(rng, node)
+            elif isinstance(node, dict) and node:
+                node.pop(rng.choice(list(node)))
+            elif isinstance(node, list) and node:
+                node.pop(rng.randrange(len(node)))
+            else:
+                parent[last] = _hostile(rng, node)
+    return out
+
+
+def mutate_bytes(text: str, rng: random.Random) -> bytes:
+    """Damage at the byte level: not UTF-8, truncated, a stray character."""
+    raw = text.encode("utf-8")
+    how = rng.randrange(4)
+    i = rng.randrange(len(raw) + 1)
+    if how == 0:
+        return raw[:i] + rng.choice((b"\xff", b"\xc3", b"\xed\xa0\x80", b"\x00")) + raw[i:]
+    if how == 1:
+        return raw[:i]
+    if how == 2:
+        return raw[:i] + rng.choice((b"[", b"]", b"=", b'"', b"\n[links.1]\n", b"\n[[joints]]\n")) + raw[i:]
+    return "\ufeff".encode() + raw
+
+
+# --------------------------------------------------------------------------- running one case
+
+
+@dataclass
+class Sample:
+    """A sample file as the fuzzer starts from it."""
+
+    path: Path
+    data: dict[str, Any]
+    argv: Callable[[str, str | None], list[str]]  # (input file, JSON output or None) -> the command line
+    rel: str
+    json: bool = True  # the command takes --json PATH
+
+
+def _kind_argv(kind: str, is_check: bool) -> Callable[[str, str | None], list[str]]:
+    """The command line: with ``out`` the JSON goes there, without it the table to stdout."""
+    from plans.kinds import KINDS
+
+    cmd = "check" if is_check else KINDS[kind][0]
+    quiet = ["--quiet"] if cmd in ("check", "solve") else []
+    return lambda f, out: [cmd, f, "--json", out, *quiet] if out else [cmd, f]
+
+
+def _absolute_paths(data: dict[str, Any], folder: Path) -> dict[str, Any]:
+    """A check file's ``scene = "../x.toml"`` made absolute, so a copy elsewhere still finds it."""
+    if isinstance(data.get("scene"), str) and not Path(data["scene"]).is_absolute():
+        data = dict(data, scene=str((folder / data["scene"]).resolve()))
+    return data
+
+
+def _few_positions(data: dict[str, Any]) -> dict[str, Any]:
+    """A linkage sample with many positions fuzzed at two of them: the same paths, faster
+    (a mutation may still ask for more)."""
+    driver = data.get("driver")
+    if isinstance(driver, dict) and isinstance(driver.get("positions"), int) and driver["positions"] > 2:
+        data = json.loads(json.dumps(data))
+        data["driver"]["positions"] = 2
+    if isinstance(driver, dict) and isinstance(driver.get("phi_deg"), list) and len(driver["phi_deg"]) > 2:
+        data = json.loads(json.dumps(data))
+        data["driver"]["phi_deg"] = data["driver"]["phi_deg"][:2]
+    return data
+
+
+def load_samples(root: Path = SAMPLES) -> list[Sample]:
+    """Every ``*.toml`` under ``root`` that its own command accepts as it is."""
+    from plans.kinds import kind_of
+
+    out = []
+    for p in sorted(root.rglob("*.toml")):
+        try:
+            data = tomllib.loads(p.read_text(encoding="utf-8"))
+            kind = kind_of(data, str(p))
+        except Exception:  # noqa: BLE001 - a sample that does not read is simply not fuzzed
+            continue
+        is_check = "checks" in p.relative_to(root).parts or ("student" in data and "positions" in data)
+        sample = Sample(p, _few_positions(_absolute_paths(data, p.parent)), _kind_argv(kind, is_check),
+                        str(p.relative_to(root)))
+        for with_json in (True, False):  # a command of another kind may have no --json
+            sample.json = with_json
+            with tempfile.TemporaryDirectory() as tmp:
+                res = run_case(sample, to_toml(sample.data).encode("utf-8"), Path(tmp))
+            if res.ok and res.status == 0:
+                out.append(sample)
+                break
+    return out
+
+
+@dataclass
+class Result:
+    ok: bool
+    status: int | None
+    why: str = ""
+    nonfinite: bool = False
+
+
+_NONFINITE = re.compile(r"(?<![A-Za-z_])(nan|inf|infinity)(?![A-Za-z_])", re.IGNORECASE)
+
+
+def _finite_json(text: str) -> bool:
+    bad = []
+
+    def const(name: str) -> float:
+        bad.append(name)
+        return 0.0
+
+    json.loads(text, parse_constant=const)
+    return not bad
+
+
+def _snapshot(folder: Path) -> dict[str, bytes]:
+    return {str(p.relative_to(folder)): p.read_bytes() for p in sorted(folder.rglob("*")) if p.is_file()}
+
+
+_PARSERS: dict[str, argparse.ArgumentParser] = {}
+
+
+def _main() -> Callable[[list[str]], int]:
+    """The full ``plans`` command when the renderer is loaded (``draw`` included), else the
+    engine's own (this package never imports the renderer); its parser built once."""
+    from plans import cli
+
+    module: Any = sys.modules.get("drawings.cli") or cli
+    if module.__name__ not in _PARSERS:
+        _PARSERS[module.__name__] = module.build_parser()
+    parser = _PARSERS[module.__name__]
+
+    def main(argv: list[str]) -> int:
+        return cli.run(parser.parse_args(argv))
+
+    return main
+
+
+def run_case(sample: Sample, raw: bytes, tmp: Path, draw: bool = False, json_out: bool = True) -> Result:
+    """Run the sample's command on ``raw`` in-process; whether the promise was kept (with
+    ``draw``, and the renderer loaded, its SVG sheets are drawn and checked too)."""
+    main = _main()
+
+    src = tmp / sample.path.name
+    src.write_bytes(raw)
+    out_json = tmp / "out" / "result.json"
+    out_json.parent.mkdir(exist_ok=True)
+    before = _snapshot(tmp)
+    argv = sample.argv(str(src), str(out_json) if json_out and sample.json else None)
+    stdout, stderr = io.StringIO(), io.StringIO()
+    with warnings.catch_warnings(record=True) as caught, contextlib.redirect_stdout(stdout), \
+            contextlib.redirect_stderr(stderr):
+        warnings.simplefilter("always")
+        try:
+            status: int | None = main(argv)
+        except SystemExit as exc:
+            status = exc.code if isinstance(exc.code, int) else 1
+        except Exception as exc:  # noqa: BLE001 - this is what the fuzzer looks for
+            tb = traceback.extract_tb(exc.__traceback__)[-1]
+            return Result(False, None, f"{type(exc).__name__}: {exc} (at {Path(tb.filename).name}:{tb.lineno})")
+    err = stderr.getvalue()
+    if caught:
+        w = caught[0]
+        return Result(False, status, f"warning printed: {w.category.__name__}: {w.message} "
+                                     f"({Path(w.filename).name}:{w.lineno})")
+    if status == 2:
+        lines = err.splitlines()
+        if len(lines) != 1 or not lines[0].startswith("plans: error: ") or "Traceback" in err:
+            return Result(False, status, f"refusal is not one line: {err[:300]!r}")
+        if _snapshot(tmp) != before:
+            return Result(False, status, "refused, but files were written or changed")
+        return Result(True, 2)
+    if status != 0:
+        return Result(False, status, f"status {status}: {err[:300]!r}")
+    if err.strip():
+        return Result(False, status, f"accepted, but printed on stderr: {err[:300]!r}")
+    if src.read_bytes() != raw:
+        return Result(False, status, "the input file was changed")
+    if _NONFINITE.search(stdout.getvalue()):
+        return Result(False, status, "non-finite number printed", nonfinite=True)
+    if out_json.exists():
+        try:
+            if not _finite_json(out_json.read_text(encoding="utf-8")):
+                return Result(False, status, "non-finite number in the JSON", nonfinite=True)
+        except ValueError as exc:
+            return Result(False, status, f"the JSON does not parse: {exc}")
+    if draw and "drawings.cli" in sys.modules:
+        return _draw(src, tmp, main)
+    return Result(True, 0)
+
+
+def _draw(src: Path, tmp: Path, main: Callable[[list[str]], int]) -> Result:
+    """Draw the accepted file as SVG: refused in one line, or well-formed sheets without NaN."""
+    import xml.etree.ElementTree as ET
+
+    out = tmp / "sheets"
+    stderr = io.StringIO()
+    with warnings.catch_warnings(record=True) as caught, contextlib.redirect_stdout(io.StringIO()), \
+            contextlib.redirect_stderr(stderr):
+        warnings.simplefilter("always")
+        try:
+            status = main(["draw", str(src), "-o", str(out)])
+        except Exception as exc:  # noqa: BLE001
+            tb = traceback.extract_tb(exc.__traceback__)[-1]
+            return Result(False, None, f"draw: {type(exc).__name__}: {exc} (at {Path(tb.filename).name}:{tb.lineno})")
+    if caught:
+        return Result(False, status, f"draw: warning printed: {caught[0].message}")
+    if status == 2:
+        lines = stderr.getvalue().splitlines()
+        ok = len(lines) == 1 and lines[0].startswith("plans: error: ")
+        return Result(ok, 2, "" if ok else f"draw: refusal is not one line: {stderr.getvalue()[:300]!r}")
+    if status != 0:
+        return Result(False, status, f"draw: status {status}")
+    for p in sorted(out.glob("*.svg")):
+        text = p.read_text(encoding="utf-8")
+        try:
+            ET.fromstring(text)
+        except ET.ParseError as exc:
+            return Result(False, 0, f"draw: {p.name} is not well-formed XML: {exc}")
+        if re.search(r'="[^"]*\b(nan|inf)\b', text, re.IGNORECASE):
+            return Result(False, 0, f"draw: {p.name} holds NaN or inf in an attribute", nonfinite=True)
+    shutil.rmtree(out, ignore_errors=True)
+    return Result(True, 0)
+
+
+def case_bytes(sample: Sample, rng: random.Random) -> bytes:
+    """One fuzzed file: mostly a mutated table, sometimes damaged bytes."""
+    if rng.random() < 0.08:
+        return mutate_bytes(to_toml(sample.data), rng)
+    return to_toml(mutate(sample.data, rng)).encode("utf-8")
+
+
+# --------------------------------------------------------------------------- the long run
+
+
+@dataclass
+class Summary:
+    cases: int = 0
+    accepted: int = 0
+    refused: int = 0
+    failures: dict[str, str] = field(default_factory=dict)  # distinct reason -> first case file
+    nonfinite: int = 0
+    foreign: int = 0
+
+
+def fuzz(n: int, seed: int = 0, draw_every: int = 50, keep: Path | None = None,
+         progress: Callable[[str], None] | None = None, samples: Sequence[Sample] | None = None) -> Summary:
+    """Run ``n`` fuzzed cases over every sample; distinct failures are kept in ``keep``."""
+    rng = random.Random(seed)
+    pool = list(samples) if samples is not None else load_samples()
+    if not pool:
+        raise SystemExit("plans bench --fuzz: no samples to fuzz")
+    # a check file costs ten linkage cases: fuzzed a third as often, so the run covers more
+    schedule = [s for s in pool for _ in range(1 if s.argv("f", None)[0] == "check" else 3)]
+    summary = Summary()
+    t0 = time.perf_counter()
+    with tempfile.TemporaryDirectory(prefix="plans-fuzz-") as base:
+        for i in range(n):
+            sample = schedule[i % len(schedule)]
+            raw = case_bytes(sample, rng)
+            tmp = Path(base) / f"case{i % 4}"
+            shutil.rmtree(tmp, ignore_errors=True)
+            tmp.mkdir()
+            res = run_case(sample, raw, tmp, draw=draw_every > 0 and i % draw_every == 0, json_out=i % 8 == 0)
+            summary.cases += 1
+            if res.ok:
+                summary.accepted += res.status == 0
+                summary.refused += res.status == 2
+            else:
+                summary.nonfinite += res.nonfinite
+                summary.foreign += res.status is None
+                reason = re.sub(r"\d+(\.\d+)?(e[-+]?\d+)?", "#", res.why.replace(str(tmp), "DIR"))[:100]
+                if reason not in summary.failures:
+                    name = f"fail-{len(summary.failures):03d}-{sample.path.name}"
+                    summary.failures[reason] = name
+                    if keep is not None:
+                        keep.mkdir(parents=True, exist_ok=True)
+                        (keep / name).write_bytes(raw)
+                        (keep / (name + ".txt")).write_text(f"{sample.rel}\n{res.why}\n", encoding="utf-8")
+                    if progress:
+                        progress(f"case {i}: {sample.rel}: {res.why}")
+            if progress and (i + 1) % 1000 == 0:
+                progress(f"{i + 1} cases, {summary.accepted} accepted, {summary.refused} refused, "
+                         f"{len(summary.failures)} distinct failures, {time.perf_counter() - t0:.0f} s")
+    return summary
+
+
+def report(summary: Summary, seed: int) -> str:
+    lines = [f"fuzz: {summary.cases} cases (seed {seed}): {summary.accepted} accepted, {summary.refused} refused "
+             f"in one line, {summary.cases - summary.accepted - summary.refused} broke the promise "
+             f"({summary.foreign} foreign exceptions, {summary.nonfinite} non-finite outputs, "
+             f"{len(summary.failures)} distinct)"]
+    lines += [f"  {name}: {reason}" for reason, name in summary.failures.items()]
+    return "\n".join(lines)
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The hook of ``plans bench``: ``--fuzz N`` (and its seed and folder for failures)."""
+    p.add_argument("--fuzz", type=int, metavar="N", help="instead of the bench: fuzz the sample files with N "
+                                                          "hostile cases and report every broken promise")
+    p.add_argument("--fuzz-seed", type=int, default=0, metavar="S", help="seed of --fuzz (default 0)")
+    p.add_argument("--fuzz-keep", metavar="DIR", help="keep the files of distinct failures here")
+
+
+def run(args: argparse.Namespace) -> int:
+    """``plans bench --fuzz N``: 0 when every case kept the promise, 1 otherwise."""
+    n = int(args.fuzz)
+    if n < 1:
+        print("plans: error: --fuzz: expected a positive number of cases", file=sys.stderr)
+        return 2
+    keep = Path(args.fuzz_keep) if getattr(args, "fuzz_keep", None) else None
+    seed = int(getattr(args, "fuzz_seed", 0))
+    summary = fuzz(n, seed=seed, keep=keep, progress=lambda s: print(s, file=sys.stderr, flush=True))
+    print(report(summary, seed))
+    return 0 if not summary.failures else 1
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    p = argparse.ArgumentParser(prog="python -m plans.accuracy.fuzz")
+    add_arguments(p)
+    args = p.parse_args(argv)
+    if args.fuzz is None:
+        p.error("expected --fuzz N")
+    os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+    return run(args)
+
+
+if __name__ == "__main__":  # pragma: no cover
+    raise SystemExit(main())
