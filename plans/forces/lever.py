@@ -183,7 +183,7 @@ def lever_plan(lv: LeverAnalysis, k: int) -> Plan:
         u = F / abs(F)
         lines.append(ConstructionLine((w.real, w.imag), (u.real, u.imag), f"line of {it.label}"))
         steps.append(Step("parallel", (it.point,), tip,
-                          f"Apply {it.label} = {abs(F):.4g} N at {it.point} parallel to itself; "
+                          f"Apply {it.label} = {clean(abs(F), fmax):.4g} N at {it.point} parallel to itself; "
                           f"arm h = {float(it.arm[k]):.2f} mm from p."))
     wb = complex(lv.w_bal[k])
     pts.setdefault(lv.bal_point, (wb.real, wb.imag))

@@ -53,6 +53,7 @@ from plans.kinematics.exact import Kinematics, cross
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step
 from plans.kinematics.structure import Group
 from plans.scene.model import Joint, Scene
+from plans.units import clean
 
 C = NDArray[np.complex128]
 R = NDArray[np.float64]
@@ -472,7 +473,8 @@ class _Poly:
         start = self.cur
         end = self._new(self.pts[start] + F * self.mu)
         self._seg(start, end, "force", label)
-        self.steps.append(Step("lay off", (start,), end, f"From {start} lay off {label} = {abs(F):.6g} N "
+        shown = clean(abs(F), 100.0 / self.mu)  # against the polygon's size (its longest ≈ 100 mm)
+        self.steps.append(Step("lay off", (start,), end, f"From {start} lay off {label} = {shown:.6g} N "
                                                          f"as {start}{end} = {abs(F) * self.mu:.1f} mm."))
         self.cur = end
 
