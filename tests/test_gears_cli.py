@@ -66,6 +66,9 @@ BAD = [
     ("module = 4", "modul = 4", "did you mean 'module'"),
     ('gears = ["1", "2"]\ndraw = true', 'gears = ["1", "2"]\ndraw = true\ncentre = 81', "meshes[0].centre"),
     ('speed_rpm = 650', 'speed_rpm = 650\ncarier = "H"', "did you mean 'carrier'"),
+    ("module = 4", "module = -" + "1" * 400, "module: expected a number of magnitude"),
+    ('unit = "mm"', 'unit = ["A"]', "unit: expected one of"),
+    ("addendum = 1.0", "addendum = 9.99e-07", "addendum: expected h_a*"),
 ]
 
 

@@ -46,6 +46,7 @@ from typing import Any
 
 from plans.errors import InputError
 from plans.io import read_toml
+from plans.reader import Reader, _show
 from plans.units import LENGTH_UNITS
 
 SHIFT_RULES = ("minimum", "no_undercut", "equal_sliding")
@@ -124,9 +125,9 @@ class GearFile:
 
 def _num(v: Any, path: str, field_: str, what: str, lo: float | None = None,
          hi: float | None = None, strict: bool = True) -> float:
-    if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
-        raise InputError(f"expected {what}, got {v!r}", file=path, field=field_)
-    f = float(v)
+    if isinstance(v, bool) or not isinstance(v, int | float):
+        raise InputError(f"expected {what}, got {_show(v)}", file=path, field=field_)
+    f = Reader(path).value(v, field_, positive=lo == 0.0 and strict)
     if lo is not None and (f <= lo if strict else f < lo):
         raise InputError(f"expected {what}, got {v!r}", file=path, field=field_)
     if hi is not None and f >= hi:
@@ -136,8 +137,8 @@ def _num(v: Any, path: str, field_: str, what: str, lo: float | None = None,
 
 def _name(v: Any, path: str, field_: str) -> str:
     if isinstance(v, bool) or not isinstance(v, str | int) or str(v) == "":
-        raise InputError(f"expected a name (a string such as \"1\"), got {v!r}", file=path, field=field_)
-    return str(v)
+        raise InputError(f"expected a name (a string such as \"1\"), got {_show(v)}", file=path, field=field_)
+    return Reader(path).name(str(v), field_)
 
 
 def _tables(data: dict[str, Any], key: str, path: str) -> list[dict[str, Any]]:
@@ -162,17 +163,17 @@ def parse_gears(data: dict[str, Any], path: str) -> GearFile:
     if data.get("format") != 1:
         raise InputError(f"expected format = 1, got {data.get('format')!r}", file=path, field="format")
     check_keys(data, _TOP_KEYS, "", path)
-    unit = data.get("unit", "mm")
-    if unit not in LENGTH_UNITS:
-        raise InputError(f"expected one of {', '.join(LENGTH_UNITS)}, got {unit!r}", file=path, field="unit")
+    unit = Reader(path).choice(data, "unit", "", LENGTH_UNITS, default="mm")
     k = LENGTH_UNITS[unit]
     if "module" not in data:
         raise InputError("missing; expected the module m in the file's unit, e.g. module = 4",
                          file=path, field="module")
     m = _num(data["module"], path, "module", "a module m > 0", lo=0.0) * k
     alpha_deg = _num(data.get("pressure_angle_deg", 20), path, "pressure_angle_deg",
-                     "a pressure angle between 0 and 45 degrees", lo=0.0, hi=45.0)
-    ha = _num(data.get("addendum", 1.0), path, "addendum", "h_a* > 0", lo=0.0)
+                     "a pressure angle between 5 and 45 degrees", lo=5.0, hi=45.0, strict=False)
+    # h_a* below 0.5 leaves no tooth to cut and z_min rounds to nothing.
+    ha = _num(data.get("addendum", 1.0), path, "addendum", "h_a* between 0.5 and 2", lo=0.5, hi=2.0,
+              strict=False)
     c = _num(data.get("clearance", 0.25), path, "clearance", "c* >= 0", lo=0.0, strict=False)
     rule = data.get("shift_rule", "minimum")
     if rule not in SHIFT_RULES:
