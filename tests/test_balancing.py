@@ -289,6 +289,11 @@ BAD = [
     ("lamda", lambda d: d.update({"lamda": 0.2})),
     ("cylinders[0].bank", lambda d: d["cylinders"][0].update({"bank": 45})),
     ("strokes", lambda d: d.update({"strokes": 3})),
+    ("lambda", lambda d: d.update({"lambda": -10**400})),
+    ("omega_rpm", lambda d: d.pop("omega") and d.update({"omega_rpm": 10**303})),
+    ("omega_rpm", lambda d: d.pop("omega") and d.update({"omega_rpm": 5e-324})),
+    ("cylinders[1].z", lambda d: d["cylinders"][1].update({"z": 1e308})),
+    ("unit", lambda d: d.update({"unit": ["mm"]})),
 ]
 
 

@@ -40,7 +40,8 @@ from typing import Any
 
 from plans.errors import InputError
 from plans.io import loads_toml, read_toml
-from plans.units import LENGTH_UNITS, parse_length, rpm_to_rad_s
+from plans.reader import NUMBER_LIMIT, Reader
+from plans.units import LENGTH_UNITS, rpm_to_rad_s
 
 TOP_KEYS = {"format", "kind", "title", "unit", "r", "lambda", "omega", "omega_rpm", "strokes",
             "firing_order", "crank_deg", "reference_z", "m_rot", "m_rec", "cylinders",
@@ -134,34 +135,14 @@ def _wrap(a: float) -> float:
     return math.atan2(math.sin(a), math.cos(a))
 
 
-class _Reader:
-    def __init__(self, path: str) -> None:
-        self.path = path
-
-    def fail(self, field: str, expected: str) -> InputError:
-        return InputError(expected, file=self.path, field=field)
+class _Reader(Reader):
+    """The shared reader (bounded numbers and lengths), with ``where`` optional."""
 
     def number(self, data: dict[str, Any], key: str, where: str = "", *, default: float | None = None,
-               positive: bool = False) -> float:
-        if key not in data:
-            if default is None:
-                raise self.fail(f"{where}{key}", "missing number")
-            return default
-        v = data[key]
-        if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
-            raise self.fail(f"{where}{key}", f"expected a number, got {v!r}")
-        if positive and v <= 0:
-            raise self.fail(f"{where}{key}", f"expected a positive number, got {v!r}")
-        return float(v)
-
-    def length(self, value: Any, field: str, unit: str, *, positive: bool = False) -> float:
-        try:
-            out = parse_length(value, unit)
-        except ValueError as exc:
-            raise self.fail(field, str(exc)) from None
-        if positive and out <= 0:
-            raise self.fail(field, f"expected a positive length, got {value!r}")
-        return out
+               positive: bool = False, nonneg: bool = False, limit: float = NUMBER_LIMIT,
+               floor: float | None = None) -> float:
+        return super().number(data, key, where, default=default, positive=positive, nonneg=nonneg,
+                              limit=limit, floor=floor)
 
 
 def load_engine(path: str | Path) -> Engine:
@@ -185,9 +166,7 @@ def engine_from_dict(data: dict[str, Any], path: str = "<engine>") -> Engine:
         hint = command_for(kind) if isinstance(kind, str) else ""
         raise rd.fail("kind", f"this is a {kind!r} file, not an engine; {hint}expected kind = \"engine\"")
     check_keys(data, TOP_KEYS, file=path, where="")
-    unit = data.get("unit", "mm")
-    if unit not in LENGTH_UNITS:
-        raise rd.fail("unit", f"expected one of {sorted(LENGTH_UNITS)}, got {unit!r}")
+    unit = rd.choice(data, "unit", "", LENGTH_UNITS, default="mm")
     title = data.get("title", Path(path).stem)
     if not isinstance(title, str):
         raise rd.fail("title", "expected a string")
