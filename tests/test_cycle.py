@@ -357,3 +357,33 @@ def test_a_machine_without_inertia_is_one_line():
     with pytest.raises(InputError) as exc:
         dynamics(scene_from_dict(data, "bare.toml"))
     assert exc.value.field == "dynamics.rotor_inertia"
+
+
+CHECK = ROOT / "samples" / "checks" / "dynamics_seed004.toml"
+
+
+@pytest.mark.parametrize("which, old, new, field", [
+    ("scene", "phi_deg = [0, 1.096", "phi_deg = [0, 5e-324", "dynamics.phi_deg: expected crank angles increasing"),
+    ("check", "rule_pct = 5", "rule_pct = {K = 1e-300}", "cycle.rule_pct: expected a number"),
+    ("check", "phi_deg = [0, 30", "phi_deg = [" + "9" * 400 + ", 30", "cycle.phi_deg: expected a number of magnitude"),
+    ("check", "velocity_scale = { mu = 125 }", "velocity_scale = { K = 1e-300 }", "cycle.velocity_scale.K"),
+])
+def test_bad_input_from_the_console_is_one_line(tmp_path, capsys, which, old, new, field):
+    if which == "scene":
+        head, tail = SEED.read_text(encoding="utf-8").split("[dynamics]", 1)
+        assert old in tail
+        text = head + "[dynamics]" + tail.replace(old, new, 1)
+        command = ["solve", "--quiet"]
+    else:
+        text = CHECK.read_text(encoding="utf-8")
+        assert old in text
+        text = text.replace(old, new, 1).replace('scene = "', f'scene = "{CHECK.parent.as_posix()}/', 1)
+        command = ["check", "--quiet"]
+    bad = tmp_path / "bad.toml"
+    bad.write_text(text, encoding="utf-8")
+    out = tmp_path / "out.json"
+    assert main([command[0], str(bad), "--json", str(out), *command[1:]]) == 2
+    err = capsys.readouterr().err
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and field in lines[0] and "bad.toml" in lines[0] and "Traceback" not in err, err
+    assert not out.exists()

@@ -30,7 +30,6 @@ rows are arrays over the student's positions, as the tables are laid out on the 
 from __future__ import annotations
 
 import argparse
-import math
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -42,9 +41,11 @@ from plans.errors import InputError
 from plans.forces.loads import apply_loads, parse_loads
 from plans.io import atomic_write, dumps, read_toml
 from plans.kinematics.exact import solve
+from plans.reader import Reader, _show
 from plans.scene.model import Scene, load_scene
 
 from .dynamics import dynamics, reduce
+from .spec import ANGLE_LIMIT_DEG
 
 _KEYS = {"phi_deg", "sign", "velocity_scale", "analogue_scale", "segment_mm", "rule_pct", "measured", "values",
          "flywheel"}
@@ -108,9 +109,8 @@ def _scale(path: str, raw: Any, field: str) -> float:
     if not (isinstance(raw, dict) and len(raw) == 1 and set(raw) <= {"mu", "K"}):
         raise _fail(path, field, "expected { mu = mm per unit } or { K = unit per mm }")
     (k, v), = raw.items()
-    if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v) or v <= 0:
-        raise _fail(path, field, f"expected a positive scale, got {v!r}")
-    return float(v) if k == "mu" else 1.0 / float(v)
+    f = Reader(path).value(v, f"{field}.{k}", positive=True)
+    return f if k == "mu" else 1.0 / f
 
 
 def _rows(path: str, raw: Any, where: str, n: int) -> dict[str, list[float | None]]:
@@ -125,10 +125,10 @@ def _rows(path: str, raw: Any, where: str, n: int) -> dict[str, list[float | Non
         for v in vals:
             if v == "" or v == "-":
                 row.append(None)
-            elif isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
-                raise _fail(path, f, f"expected numbers (or \"-\" for none), got {v!r}")
+            elif isinstance(v, bool) or not isinstance(v, int | float):
+                raise _fail(path, f, f"expected numbers (or \"-\" for none), got {_show(v)}")
             else:
-                row.append(float(v))
+                row.append(Reader(path).value(v, f))
         out[name] = row
     return out
 
@@ -177,15 +177,16 @@ def check_cycle(path: str | Path) -> CycleReport:
     if not (isinstance(phis, list) and phis and all(isinstance(p, int | float) and not isinstance(p, bool)
                                                     for p in phis)):
         raise _fail(path, "cycle.phi_deg", "expected the student's crank angles, e.g. [0, 30, 60]")
-    phis_a = np.asarray(phis, float)
+    rd = Reader(path)
+    phis_a = np.asarray([rd.value(p, "cycle.phi_deg", limit=ANGLE_LIMIT_DEG) for p in phis], float)
     n = len(phis)
     sign = cyc.get("sign", "driving")
     if sign not in ("driving", "resisting"):
         raise _fail(path, "cycle.sign", f"expected \"driving\" or \"resisting\", got {sign!r}")
     mu_v = _scale(path, cyc["velocity_scale"], "cycle.velocity_scale") if "velocity_scale" in cyc else None
     mu_an = _scale(path, cyc["analogue_scale"], "cycle.analogue_scale") if "analogue_scale" in cyc else None
-    seg_tol = float(cyc.get("segment_mm", 1.0))
-    rule = float(cyc.get("rule_pct", 5.0))
+    seg_tol = rd.number(cyc, "segment_mm", "cycle.", default=1.0, positive=True)
+    rule = rd.number(cyc, "rule_pct", "cycle.", default=5.0, positive=True)
     loads = parse_loads(scene)
     kin = solve(scene, phis_a, order=2)
     spec_rotor = float(scene.raw.get("dynamics", {}).get("rotor_inertia", 0.0))

@@ -25,11 +25,11 @@
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import Any
 
 from plans.errors import InputError
+from plans.reader import Reader
 from plans.scene.model import Scene
 
 #: The widest step between the positions of a cycle (the graphical integration needs the
@@ -37,6 +37,9 @@ from plans.scene.model import Scene
 MAX_STEP_DEG = 90.0
 #: The most positions of a cycle (one every 0.1°).
 MAX_POSITIONS = 3600
+#: Positions closer than this are one position; angles beyond ANGLE_LIMIT_DEG are not a crank's.
+MIN_STEP_DEG = 1e-3
+ANGLE_LIMIT_DEG = 1e6
 
 
 @dataclass(frozen=True, slots=True)
@@ -81,10 +84,7 @@ def _table(scene: Scene, key: str, known: set[str]) -> dict[str, Any]:
 
 
 def _number(scene: Scene, raw: dict[str, Any], key: str, where: str) -> float:
-    v = raw[key]
-    if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
-        raise _fail(scene, f"{where}.{key}", f"expected a number, got {v!r}")
-    return float(v)
+    return Reader(scene.path).value(raw[key], f"{where}.{key}")
 
 
 def _positions(scene: Scene, raw: dict[str, Any], where: str, *, equal: bool) -> tuple[float, ...]:
@@ -95,12 +95,14 @@ def _positions(scene: Scene, raw: dict[str, Any], where: str, *, equal: bool) ->
         raise _fail(scene, f"{where}.phi_deg", "give positions or phi_deg, not both")
     if "phi_deg" in raw:
         vals = raw["phi_deg"]
-        if not (isinstance(vals, list) and 4 <= len(vals) <= MAX_POSITIONS and all(
-                not isinstance(v, bool) and isinstance(v, int | float) and math.isfinite(v) for v in vals)):
+        if not (isinstance(vals, list) and 4 <= len(vals) <= MAX_POSITIONS):
             raise _fail(scene, f"{where}.phi_deg", f"expected 4 to {MAX_POSITIONS} crank angles in degrees")
-        phis = [float(v) for v in vals]
-        if any(b <= a for a, b in zip(phis, phis[1:], strict=False)):
-            raise _fail(scene, f"{where}.phi_deg", "expected crank angles increasing from position to position")
+        rd = Reader(scene.path)
+        phis = [rd.value(v, f"{where}.phi_deg", limit=ANGLE_LIMIT_DEG) for v in vals]
+        # Closer positions than MIN_STEP_DEG make the curve's chord slopes 0/0.
+        if any(b - a < MIN_STEP_DEG for a, b in zip(phis, phis[1:], strict=False)):
+            raise _fail(scene, f"{where}.phi_deg", "expected crank angles increasing from position to position "
+                                                   f"by at least {MIN_STEP_DEG:g}°")
         if abs(phis[-1] - phis[0] - 360.0) < 1e-9:
             phis = phis[:-1]  # the closing position is the first one again
         span = phis[-1] - phis[0]
