@@ -364,6 +364,7 @@ CHECK = ROOT / "samples" / "checks" / "dynamics_seed004.toml"
 
 @pytest.mark.parametrize("which, old, new, field", [
     ("scene", "phi_deg = [0, 1.096", "phi_deg = [0, 5e-324", "dynamics.phi_deg: expected crank angles increasing"),
+    ("scene", "delta = 0.05", "delta = 5e-324", "dynamics.delta: expected 1e-06 <= δ < 1"),
     ("check", "rule_pct = 5", "rule_pct = {K = 1e-300}", "cycle.rule_pct: expected a number"),
     ("check", "phi_deg = [0, 30", "phi_deg = [" + "9" * 400 + ", 30", "cycle.phi_deg: expected a number of magnitude"),
     ("check", "velocity_scale = { mu = 125 }", "velocity_scale = { K = 1e-300 }", "cycle.velocity_scale.K"),

@@ -39,6 +39,7 @@ MAX_STEP_DEG = 90.0
 MAX_POSITIONS = 3600
 #: Positions closer than this are one position; angles beyond ANGLE_LIMIT_DEG are not a crank's.
 MIN_STEP_DEG = 1e-3
+DELTA_FLOOR = 1e-6
 ANGLE_LIMIT_DEG = 1e6
 
 
@@ -133,8 +134,9 @@ def dynamics_spec(scene: Scene) -> DynamicsSpec:
     if "delta" not in raw:
         raise _fail(scene, "dynamics.delta", "missing the coefficient of fluctuation δ, e.g. delta = 0.05")
     delta = _number(scene, raw, "delta", where)
-    if not 0.0 < delta < 1.0:
-        raise _fail(scene, "dynamics.delta", f"expected 0 < δ < 1, got {delta:g}")
+    # Below DELTA_FLOOR ω_max² − ω_min² is lost to round-off (and no flywheel is that uniform).
+    if not DELTA_FLOOR <= delta < 1.0:
+        raise _fail(scene, "dynamics.delta", f"expected {DELTA_FLOOR:g} <= δ < 1, got {delta:g}")
     rotor = _number(scene, raw, "rotor_inertia", where) if "rotor_inertia" in raw else 0.0
     if rotor < 0:
         raise _fail(scene, "dynamics.rotor_inertia", f"expected a moment of inertia >= 0 kg·m², got {rotor:g}")
