@@ -334,6 +334,12 @@ def test_bad_base_radius(tmp_path, capsys, r0):
     assert "base_radius" in err and "positive" in err
 
 
+@pytest.mark.parametrize("key", ["pressure_angle_rise_deg", "pressure_angle_return_deg"])
+def test_bad_permissible_pressure_angle(tmp_path, capsys, key):
+    err = _bad(tmp_path, capsys, lambda d: d.update({key: 5e-324}))
+    assert f"{key}: expected at least 1" in err
+
+
 def test_roller_bigger_than_base_circle(tmp_path, capsys):
     err = _bad(tmp_path, capsys, lambda d: d.update(roller=40))
     assert "roller" in err and "smaller than the base radius" in err

@@ -195,8 +195,9 @@ def cam_from_dict(data: dict[str, Any], path: str) -> Cam:
     omega = rpm_to_rad_s(_number(data, "omega_rpm", path, positive=True, below=1e7))  # ω² stays finite
     sense = _choice(data, "sense", ("ccw", "cw"), path, default="ccw")
     a_rise = _number(data, "pressure_angle_rise_deg", path, default=45.0 if osc else 30.0,
-                     positive=True, below=90)
-    a_ret = _number(data, "pressure_angle_return_deg", path, default=70.0, positive=True, below=90)
+                     positive=True, at_least=1.0, below=90)  # below 1° tan α vanishes in the bounds
+    a_ret = _number(data, "pressure_angle_return_deg", path, default=70.0, positive=True, at_least=1.0,
+                    below=90)
     step = _number(data, "step_deg", path, default=1.0, positive=True, at_least=0.01)
     if step > 30 or abs(360 / step - round(360 / step)) > 1e-9:
         raise InputError(f"expected a divisor of 360 not above 30, got {step:g}", file=path, field="step_deg")
