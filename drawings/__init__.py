@@ -17,13 +17,13 @@ import importlib
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from .draw import Drawing, build_panels, draw
     from .export import atomic_write, pdf_bytes, png_bytes, save
+    from .linkage import Drawing, build_panels, draw
     from .panels import Panel, plan_panel
     from .sheet import Sheet, SheetSpec, compose, sheet_spec
 
 #: Loaded on first use (PEP 562): ``plans --help`` does not pay for svgwrite and numpy.
-_LAZY = {"Drawing": "draw", "build_panels": "draw", "draw": "draw", "atomic_write": "export",
+_LAZY = {"Drawing": "linkage", "build_panels": "linkage", "draw": "linkage", "atomic_write": "export",
          "pdf_bytes": "export", "png_bytes": "export", "save": "export", "Panel": "panels",
          "plan_panel": "panels", "Sheet": "sheet", "SheetSpec": "sheet", "compose": "sheet",
          "sheet_spec": "sheet"}

@@ -12,8 +12,8 @@ from typing import Any
 
 from plans.scene.model import load_scene
 
-from .draw import build_panels, draw
 from .export import pdf_bytes
+from .linkage import build_panels, draw
 from .panels import ratio_text
 from .sheet import compose, sheet_spec
 

@@ -12,7 +12,7 @@ from typing import Any
 import numpy as np
 
 from plans.cams.analysis import Profile, grid, profile
-from plans.cams.base_radius import BaseRadius, division_points, min_base_radius
+from plans.cams.base_radius import BaseRadius, allowed_region, division_points, min_base_radius
 from plans.cams.graphical import Integration, integral_scale, integrate_cam
 from plans.cams.model import Cam, load_cam
 
@@ -209,7 +209,8 @@ def diagram_panel(cam: Cam, br: BaseRadius, lang: str, g: float = 1.0) -> Panel:
     xmin, xmax = float(pts[:, 0].min()) - 0.1 * span, float(pts[:, 0].max()) + 0.1 * span
     ymin = float(pts[:, 1].min()) - 0.15 * span
     # allowed region: clip the half-planes to the box
-    region = _clip_region(br, xmin, xmax, ymin, float(np.max(Yd)))
+    assert br.bounds is not None
+    region = allowed_region(br.bounds, (xmin, ymin, xmax, float(np.max(Yd))))
     if len(region) >= 3:
         rec.polygon([P(*q) for q in region], REGION, "allowed-region")
     rec.line(P(0, ymin), P(0, float(np.max(Yd)) * 1.1), AXIS, "follower-line")
@@ -286,27 +287,6 @@ def rocker_panel(cam: Cam, br: BaseRadius, lang: str, g: float = 1.0) -> Panel:
         _text(rec, name, P(c)[0] + 1.5, P(c)[1] + 1.5, LABEL, "start", "top")
     note = f"{ratio_text(mu)}; AD = (1 − r)·AB, r = ω_arm/ω_cam; ∠(OD, ⟂AB) = α"
     return finish("rocker", "cam-diagram", None, rec, _w("rocker", lang), note=note)
-
-
-def _clip_region(br: BaseRadius, x0: float, x1: float, y0: float, y1: float) -> list[tuple[float, float]]:
-    """The allowed region within a box, by clipping the box polygon with each half-plane."""
-    assert br.bounds is not None
-    poly = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
-    for t, c1, c2 in br.bounds.lines:
-        for a, b, c in ((-1.0, t, -c1), (1.0, t, c2)):  # a·x + b·y ≤ c
-            out: list[tuple[float, float]] = []
-            for i in range(len(poly)):
-                p, q = poly[i], poly[(i + 1) % len(poly)]
-                fp, fq = a * p[0] + b * p[1] - c, a * q[0] + b * q[1] - c
-                if fp <= 0:
-                    out.append(p)
-                if fp * fq < 0:
-                    r = fp / (fp - fq)
-                    out.append((p[0] + r * (q[0] - p[0]), p[1] + r * (q[1] - p[1])))
-            poly = out
-            if not poly:
-                return []
-    return poly
 
 
 def profile_panel(cam: Cam, lang: str, target: float = 180.0) -> Panel:

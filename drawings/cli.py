@@ -5,11 +5,11 @@ from __future__ import annotations
 
 import argparse
 import importlib
-import sys
 from collections.abc import Sequence
 from pathlib import Path
 
-from plans.cli import command_of, register_commands, run
+from plans.cli import command_of, register_commands
+from plans.cli import main as plans_main
 from plans.errors import InputError
 
 from .export import FORMATS
@@ -112,18 +112,10 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     return parser
 
 
-def _run(args: argparse.Namespace) -> int:
-    """Every command, draw included, runs through the engine's runner (one-line errors, exit 2)."""
-    return run(args)
-
-
 def main(argv: Sequence[str] | None = None) -> int:
-    argv = sys.argv[1:] if argv is None else list(argv)
-    try:
-        args = build_parser(argv).parse_args(argv)
-    except KeyboardInterrupt:
-        return 130
-    return _run(args)
+    """Every command, draw included, runs through the engine's main and runner (one-line
+    errors, exit 2)."""
+    return plans_main(argv, build_parser)
 
 
 if __name__ == "__main__":  # pragma: no cover

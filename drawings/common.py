@@ -11,6 +11,7 @@ import numpy as np
 import shapely
 
 from .backend import FILLED, Backend, Prim, Pt, Recording, Style
+from .declutter import clip_segments
 from .text import Label, layout
 
 HEAD_LEN = 3.5  # mm, arrowhead length on the sheet
@@ -130,19 +131,8 @@ class Placer:
                     & (np.minimum(S[:, 1], S[:, 3]) <= hi_y) & (np.maximum(S[:, 1], S[:, 3]) >= lo_y))
             S = S[near]
         if len(S):
-            sx, sy = S[:, 0], S[:, 1]
-            dx, dy = S[:, 2] - sx, S[:, 3] - sy
-            t0 = np.zeros((k, len(S)))
-            t1 = np.ones((k, len(S)))
-            ok = np.ones((k, len(S)), dtype=bool)
-            with np.errstate(divide="ignore", invalid="ignore"):
-                for p, q in ((-dx, sx - x0), (dx, x1 - sx), (-dy, sy - y0), (dy, y1 - sy)):
-                    p = np.broadcast_to(p, t0.shape)
-                    r = q / p
-                    ok &= ~((p == 0) & (q < 0))
-                    t0 = np.where(p < 0, np.maximum(t0, r), t0)
-                    t1 = np.where(p > 0, np.minimum(t1, r), t1)
-            inside = ok & (t1 > t0)
+            inside, t0, t1 = clip_segments(S, bx)
+            dx, dy = S[:, 2] - S[:, 0], S[:, 3] - S[:, 1]
             length = np.where(inside, (t1 - t0) * np.hypot(dx, dy), 0.0)
             cost += (inside * 3.0 + length).sum(axis=1)
         if self.discs:

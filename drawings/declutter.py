@@ -39,11 +39,10 @@ def _segments(prims: list[Prim]) -> np.ndarray:
     return np.asarray(out, dtype=float).reshape(-1, 4)
 
 
-def _crossed(S: np.ndarray, bx: np.ndarray) -> np.ndarray:
-    """For candidate boxes bx (k×4): does any segment of S run through the box (Liang–Barsky)?"""
+def clip_segments(S: np.ndarray, bx: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Liang–Barsky clip of every segment of S (m×4) by every box of bx (k×4): (k×m) whether
+    the segment runs through the box, and the parameters t0, t1 of the part inside."""
     k = len(bx)
-    if not len(S) or not k:
-        return np.zeros(k, dtype=bool)
     x0, y0, x1, y1 = (bx[:, i:i + 1] for i in range(4))
     sx, sy = S[:, 0], S[:, 1]
     dx, dy = S[:, 2] - sx, S[:, 3] - sy
@@ -57,7 +56,15 @@ def _crossed(S: np.ndarray, bx: np.ndarray) -> np.ndarray:
             ok &= ~((p == 0) & (q < 0))
             t0 = np.where(p < 0, np.maximum(t0, r), t0)
             t1 = np.where(p > 0, np.minimum(t1, r), t1)
-    return np.asarray((ok & (t1 > t0)).any(axis=1))
+    return ok & (t1 > t0), t0, t1
+
+
+def _crossed(S: np.ndarray, bx: np.ndarray) -> np.ndarray:
+    """For candidate boxes bx (k×4): does any segment of S run through the box (Liang–Barsky)?"""
+    k = len(bx)
+    if not len(S) or not k:
+        return np.zeros(k, dtype=bool)
+    return np.asarray(clip_segments(S, bx)[0].any(axis=1))
 
 
 def _clash(boxes: np.ndarray, bx: np.ndarray) -> np.ndarray:

@@ -121,6 +121,16 @@ def _walks(edges: Iterable[tuple[str, str]]) -> list[list[str]]:
     return out
 
 
+def coincident_positions(points: Sequence[tuple[float, float]]) -> list[list[int]]:
+    """The positions whose sheet points fall in one 0.3 mm cell (they share one mark and one
+    label, "1, 11"), each group in order of position, the groups in order of first position."""
+    groups: dict[tuple[float, float], list[int]] = {}
+    for k, p in enumerate(points):
+        key = (round(p[0] / 0.3) * 0.3, round(p[1] / 0.3) * 0.3)
+        groups.setdefault(key, []).append(k)
+    return list(groups.values())
+
+
 def numbered_points(scene) -> list[str]:
     """Where positions get their numbers: the crank pin, the pins between moving links and
     the sliders' pins on fixed guides."""
@@ -276,23 +286,13 @@ def positions_panel(scene, kin, mu_l: float, lang: str, bold: Sequence[int], str
     rec.begin(f"{pid}-numbers", "numbers")
     marks = numbered_points(scene)
     for name in marks:
-        groups: dict[tuple[float, float], list[int]] = {}
-        for k in range(n):
-            p = T.z(at[k][name])
-            key = (round(p[0] / 0.3) * 0.3, round(p[1] / 0.3) * 0.3)
-            groups.setdefault(key, []).append(k)
-        for ks in groups.values():
+        for ks in coincident_positions([T.z(at[k][name]) for k in range(n)]):
             p = T.z(at[ks[0]][name])
             r = 0.7 if any(k in bold_set for k in ks) else 0.5
             rec.circle(p, r, Style(width=0.2, fill="#fff", cls="mark"))
             placer.add_disc(p, r + 0.2)
     for name in marks:
-        groups = {}
-        for k in range(n):
-            p = T.z(at[k][name])
-            key = (round(p[0] / 0.3) * 0.3, round(p[1] / 0.3) * 0.3)
-            groups.setdefault(key, []).append(k)
-        for ks in groups.values():
+        for ks in coincident_positions([T.z(at[k][name]) for k in range(n)]):
             p = T.z(at[ks[0]][name])
             away = at[ks[0]][name] - (O if name == pin else centre_world)
             L = abs(away) or 1.0
@@ -398,4 +398,5 @@ def legend_panel(kinds: Sequence[str], lang: str) -> Panel:
     return finish(pid, "legend", None, rec, title)
 
 
-__all__ = ["positions_panel", "legend_panel", "legend_kinds", "numbered_points", "default_trace"]
+__all__ = ["positions_panel", "legend_panel", "legend_kinds", "numbered_points", "coincident_positions",
+           "default_trace"]

@@ -8,7 +8,7 @@ import importlib
 import importlib.util
 import os
 import sys
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import NoReturn
 
 from plans.errors import InputError, PlansError, one_line
@@ -134,10 +134,13 @@ def _closed_pipe() -> int:
     return 0
 
 
-def main(argv: Sequence[str] | None = None) -> int:
+def main(argv: Sequence[str] | None = None,
+         parser: Callable[[Sequence[str]], argparse.ArgumentParser] | None = None) -> int:
+    """Parse and run one command; ``parser`` builds the parser (the renderer's CLI passes its
+    own, with ``draw`` added)."""
     argv = sys.argv[1:] if argv is None else list(argv)
     try:
-        args = build_parser(argv).parse_args(argv)
+        args = (parser or build_parser)(argv).parse_args(argv)
     except KeyboardInterrupt:
         return 130
     return run(args)

@@ -15,7 +15,7 @@ from plans.io import read_toml
 
 #: kind -> (the pure command that solves it, the module of drawings that draws it)
 KINDS: dict[str, tuple[str, str]] = {
-    "linkage": ("solve", "drawings.draw"),
+    "linkage": ("solve", "drawings.linkage"),
     "engine": ("balance", "drawings.balancing"),
     "gears": ("gears", "drawings.gears"),
     "cam": ("cam", "drawings.cams"),

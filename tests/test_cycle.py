@@ -319,7 +319,7 @@ def test_diagram_objects_are_frozen_data(veng):
 
 
 def test_drawing_adds_the_cycle_sheets_numbered_on():
-    from drawings.draw import draw
+    from drawings.linkage import draw
 
     d = draw(VENG)
     kinds = [{p.kind for p, _, _ in sh.placed} for sh in d.sheets]

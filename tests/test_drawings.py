@@ -19,7 +19,7 @@ import shapely
 
 from drawings.backend import Recording, Style, Transform, hatch_segments, replay
 from drawings.common import arrow, fmt, ident
-from drawings.draw import draw
+from drawings.linkage import draw
 from drawings.panels import plan_panel, scheme_panel, strokes_over_cycle
 from drawings.sheet import FORMATS, compose, sheet_spec
 from drawings.svg import SvgBackend, num

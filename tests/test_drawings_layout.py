@@ -12,7 +12,7 @@ import pytest
 import shapely
 
 from drawings.backend import THIN, Recording
-from drawings.draw import draw
+from drawings.linkage import draw
 from drawings.overview import positions_panel
 from drawings.panels import Panel, finish, strokes_over_cycle
 from drawings.sheet import GAP, compose, sheet_spec, usable

@@ -12,8 +12,8 @@ from pathlib import Path
 
 import pytest
 
-from drawings.draw import draw
 from drawings.export import save
+from drawings.linkage import draw
 
 ROOT = Path(__file__).resolve().parents[1]
 SAMPLES = sorted((ROOT / "samples").glob("*.toml"))

@@ -44,7 +44,6 @@ import numpy as np
 
 from plans.accuracy import fuzz, newton, speed
 from plans.accuracy.draftsman import DraftsmanModel, draftsman_errors
-from plans.accuracy.goals import performance_goals
 from plans.accuracy.markdown import goal_line, markdown, summary_table
 from plans.accuracy.oracles import (
     Case,
@@ -349,7 +348,7 @@ def run_bench(quick: bool = False, samples: Path | None = None, progress: Callab
     stability = stability_records()
     stiff = stiff_load_records(samples)
     log("performance goals ...")
-    goals = performance_goals(samples, budget)
+    goals = speed.performance_goals(samples, budget)
     warnings = [f"{r.method} on {r.scene} ({r.positions} positions, {r.param}): condition number "
                 f"{r.cond:.3g} > {newton.COND_WARN:.0e}" for r in records
                 if r.cond is not None and math.isfinite(r.cond) and r.cond > newton.COND_WARN]

@@ -33,14 +33,12 @@ two-stroke), so its crank is β = (γ_i − γ_1) − k·δ ahead of crank 1.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from plans.errors import InputError
 from plans.io import loads_toml, read_toml
-from plans.reader import NUMBER_LIMIT, Reader
+from plans.reader import NUMBER_LIMIT, Reader, check_keys
 from plans.units import LENGTH_UNITS, rpm_to_rad_s
 
 TOP_KEYS = {"format", "kind", "title", "unit", "r", "lambda", "omega", "omega_rpm", "strokes",
@@ -48,20 +46,6 @@ TOP_KEYS = {"format", "kind", "title", "unit", "r", "lambda", "omega", "omega_rp
             "counterweights", "sheet"}
 CYLINDER_KEYS = {"name", "crank_deg", "z", "bank_deg", "m_rot", "m_rec"}
 COUNTERWEIGHT_KEYS = {"planes", "radius"}
-
-
-def check_keys(table: dict[str, Any], known: Iterable[str], *, file: str, where: str) -> None:
-    """Refuse a key that is not known here: one line naming it and what is expected.
-    (Same signature as the shared unknown-key helper, so it can stand in for it.)"""
-    known = set(known)
-    for key in table:
-        if key not in known:
-            import difflib
-
-            close = difflib.get_close_matches(str(key), sorted(known), n=1, cutoff=0.6)
-            hint = f"; did you mean {close[0]!r}?" if close else ""
-            raise InputError(f"unknown key{hint} (expected one of {', '.join(sorted(known))})",
-                             file=file, field=f"{where}{key}")
 
 
 @dataclass(frozen=True, slots=True)

@@ -113,6 +113,33 @@ def bounds(cam: Cam, phi: np.ndarray | None = None, exact: bool = True) -> Bound
     return Bounds(tuple(lines), tuple(touch))
 
 
+def clip_half_plane(poly: list[tuple[float, float]], a: float, b: float, c: float) -> list[tuple[float, float]]:
+    """The part of the convex polygon ``poly`` where a·x + b·y ≤ c."""
+    out: list[tuple[float, float]] = []
+    for i in range(len(poly)):
+        p, q = poly[i], poly[(i + 1) % len(poly)]
+        fp, fq = a * p[0] + b * p[1] - c, a * q[0] + b * q[1] - c
+        if fp <= 0:
+            out.append(p)
+        if fp * fq < 0:
+            s = fp / (fp - fq)
+            out.append((p[0] + s * (q[0] - p[0]), p[1] + s * (q[1] - p[1])))
+    return out
+
+
+def allowed_region(b: Bounds, box: tuple[float, float, float, float]) -> list[tuple[float, float]]:
+    """The allowed centres within ``box`` (x0, y0, x1, y1): the box clipped by each half-plane
+    of the bounds, x − y·tan α ≥ c1 and x + y·tan α ≤ c2."""
+    x0, y0, x1, y1 = box
+    poly = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+    for t, c1, c2 in b.lines:
+        for a, bb, c in ((-1.0, t, -c1), (1.0, t, c2)):  # a·x + b·y ≤ c
+            poly = clip_half_plane(poly, a, bb, c)
+            if not poly:
+                return []
+    return poly
+
+
 def _allowed(b: Bounds, x: float, y: float, tol: float = 1e-12) -> bool:
     return all(x - y * t >= c1 - tol and x + y * t <= c2 + tol for t, c1, c2 in b.lines)
 

@@ -31,7 +31,7 @@ from typing import Any
 
 from plans.errors import InputError
 from plans.io import read_toml
-from plans.reader import Reader
+from plans.reader import Reader, check_keys
 from plans.units import LENGTH_UNITS, rpm_to_rad_s
 
 from .laws import LAWS, Law, table_law
@@ -43,19 +43,6 @@ PHASE_KEYS = {"kind", "angle_deg", "stroke", "swing_deg", "law", "table"}
 PHASE_KINDS = ("rise", "dwell", "return")
 LAW_NAMES = (*LAWS, "table")
 _TOL = 1e-9
-
-
-def check_keys(table: dict[str, Any], known: Iterable[str], *, file: str, where: str) -> None:
-    """A key that is not known is one InputError line naming it (a local check, same
-    signature as the shared reader's, so one may replace the other)."""
-    known = set(known)
-    for key in table:
-        if key not in known:
-            import difflib
-
-            close = difflib.get_close_matches(str(key), sorted(known), n=1)
-            hint = f"; did you mean {close[0]!r}?" if close else f"; expected one of {sorted(known)}"
-            raise InputError(f"unknown key{hint}", file=file, field=f"{where}{key}")
 
 
 @dataclass(frozen=True, slots=True)

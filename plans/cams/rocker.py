@@ -20,6 +20,7 @@ import shapely
 from shapely.ops import nearest_points
 
 from .analysis import motion, oscillating_rest
+from .base_radius import clip_half_plane
 from .model import Cam
 
 
@@ -69,23 +70,10 @@ def region(cam: Cam, phi: np.ndarray, box: tuple[float, float, float, float]) ->
         for sgn in (1.0, -1.0):
             g = sgn * u[i] - t[i] * n[i]  # g·(O − D) ≤ 0
             c = float(g @ D[i])
-            poly = _clip(poly, float(g[0]), float(g[1]), c)
+            poly = clip_half_plane(poly, float(g[0]), float(g[1]), c)
             if not poly:
                 return []
     return poly
-
-
-def _clip(poly: list[tuple[float, float]], a: float, b: float, c: float) -> list[tuple[float, float]]:
-    out: list[tuple[float, float]] = []
-    for i in range(len(poly)):
-        p, q = poly[i], poly[(i + 1) % len(poly)]
-        fp, fq = a * p[0] + b * p[1] - c, a * q[0] + b * q[1] - c
-        if fp <= 0:
-            out.append(p)
-        if fp * fq < 0:
-            s = fp / (fp - fq)
-            out.append((p[0] + s * (q[0] - p[0]), p[1] + s * (q[1] - p[1])))
-    return out
 
 
 def diagram(cam: Cam, phi: np.ndarray) -> RockerDiagram:

@@ -46,7 +46,7 @@ from typing import Any
 
 from plans.errors import InputError
 from plans.io import read_toml
-from plans.reader import Reader, _show
+from plans.reader import Reader, _show, check_keys
 from plans.units import LENGTH_UNITS
 
 SHIFT_RULES = ("minimum", "no_undercut", "equal_sliding")
@@ -57,17 +57,6 @@ _GEAR_KEYS = ("name", "z", "x", "internal", "shaft", "module")
 _MESH_KEYS = ("gears", "centre_distance", "draw")
 _SHAFT_KEYS = ("name", "speed_rpm", "carrier")
 _SYNTH_KEYS = ("ratio", "planets", "tolerance", "z_min")
-
-
-def check_keys(table: dict[str, Any], allowed: tuple[str, ...], where: str, path: str) -> None:
-    """An unknown key is one line naming it (and the nearest known key, when one is close)."""
-    import difflib
-
-    for key in table:
-        if key not in allowed:
-            near = difflib.get_close_matches(str(key), allowed, n=1)
-            hint = f"; did you mean {near[0]!r}?" if near else f"; expected one of {', '.join(allowed)}"
-            raise InputError(f"unknown key{hint}", file=path, field=f"{where}{key}")
 
 
 @dataclass(frozen=True)
@@ -162,7 +151,7 @@ def parse_gears(data: dict[str, Any], path: str) -> GearFile:
                          "kind = \"gears\"", file=path, field="kind")
     if data.get("format") != 1:
         raise InputError(f"expected format = 1, got {data.get('format')!r}", file=path, field="format")
-    check_keys(data, _TOP_KEYS, "", path)
+    check_keys(data, _TOP_KEYS, file=path, where="")
     unit = Reader(path).choice(data, "unit", "", LENGTH_UNITS, default="mm")
     k = LENGTH_UNITS[unit]
     if "module" not in data:
@@ -190,7 +179,7 @@ def parse_gears(data: dict[str, Any], path: str) -> GearFile:
     given: set[str] = set()
     for i, t in enumerate(_tables(data, "shafts", path)):
         f = f"shafts[{i}]."
-        check_keys(t, _SHAFT_KEYS, f, path)
+        check_keys(t, _SHAFT_KEYS, file=path, where=f)
         if "name" not in t:
             raise InputError("missing; expected a shaft name", file=path, field=f + "name")
         name = _name(t["name"], path, f + "name")
@@ -223,7 +212,7 @@ def _synthesis(t: Any, path: str) -> SynthesisSpec | None:
         return None
     if not isinstance(t, dict):
         raise InputError("expected a table [synthesis]", file=path, field="synthesis")
-    check_keys(t, _SYNTH_KEYS, "synthesis.", path)
+    check_keys(t, _SYNTH_KEYS, file=path, where="synthesis.")
     if "ratio" not in t:
         raise InputError("missing; expected the ratio i_1H, e.g. ratio = 4.5", file=path,
                          field="synthesis.ratio")
@@ -246,7 +235,7 @@ def _gears(data: dict[str, Any], path: str, m: float, k: float) -> dict[str, Gea
     gears: dict[str, Gear] = {}
     for i, g in enumerate(_tables(data, "gears", path)):
         f = f"gears[{i}]."
-        check_keys(g, _GEAR_KEYS, f, path)
+        check_keys(g, _GEAR_KEYS, file=path, where=f)
         if "name" not in g:
             raise InputError("missing; expected a name such as \"1\"", file=path, field=f + "name")
         name = _name(g["name"], path, f + "name")
@@ -278,7 +267,7 @@ def _meshes(data: dict[str, Any], path: str, gears: dict[str, Gear], k: float) -
     seen: set[frozenset[str]] = set()
     for i, t in enumerate(_tables(data, "meshes", path)):
         f = f"meshes[{i}]."
-        check_keys(t, _MESH_KEYS, f, path)
+        check_keys(t, _MESH_KEYS, file=path, where=f)
         pair = t.get("gears")
         if not isinstance(pair, list) or len(pair) != 2:
             raise InputError("expected two gear names, e.g. gears = [\"1\", \"2\"]", file=path, field=f + "gears")

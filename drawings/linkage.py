@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import sys
-import types
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -142,14 +140,3 @@ def draw(scene: Scene | str | Path, *, format: str | None = None, orientation: s
 
         sheets = extend(sc, spec, sheets, ratio_text(mu_l))
     return Drawing(sc, spec, tuple(panels), tuple(sheets), mu_l)
-
-
-class _CallableModule(types.ModuleType):
-    """The package loads its modules on first use (``plans --help`` stays light), so once this
-    module is imported ``drawings.draw`` names the module: calling it draws, as the function."""
-
-    def __call__(self, *args: Any, **kwargs: Any) -> Drawing:
-        return draw(*args, **kwargs)
-
-
-sys.modules[__name__].__class__ = _CallableModule
