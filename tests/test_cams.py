@@ -340,6 +340,11 @@ def test_bad_permissible_pressure_angle(tmp_path, capsys, key):
     assert f"{key}: expected at least 1" in err
 
 
+def test_title_that_is_not_text(tmp_path, capsys):
+    err = _bad(tmp_path, capsys, lambda d: d.update(title=5))
+    assert "title: expected a string" in err
+
+
 def test_roller_bigger_than_base_circle(tmp_path, capsys):
     err = _bad(tmp_path, capsys, lambda d: d.update(roller=40))
     assert "roller" in err and "smaller than the base radius" in err

@@ -67,6 +67,10 @@ BAD = [
     ('gears = ["1", "2"]\ndraw = true', 'gears = ["1", "2"]\ndraw = true\ncentre = 81', "meshes[0].centre"),
     ('speed_rpm = 650', 'speed_rpm = 650\ncarier = "H"', "did you mean 'carrier'"),
     ("module = 4", "module = -" + "1" * 400, "module: expected a number of magnitude"),
+    ('[[gears]]\nname = "1"\nz = 26\nx = 0', '[[gears]]\nname = "1"\nz = 1' + "0" * 400 + '\nx = 0',
+     "gears[0].z: expected a whole number of teeth"),
+    ('[[gears]]\nname = "1"\nz = 26\nx = 0', '[[gears]]\nname = "1"\nz = 26\nx = -1' + "0" * 400,
+     "an integer of 401 digits"),
     ('unit = "mm"', 'unit = ["A"]', "unit: expected one of"),
     ("addendum = 1.0", "addendum = 9.99e-07", "addendum: expected h_a*"),
 ]

@@ -192,7 +192,10 @@ def cam_from_dict(data: dict[str, Any], path: str) -> Cam:
     h = max(p.lift0 + max(p.stroke, 0.0) for p in phases)
     if osc and h >= math.pi / 2:
         raise InputError("the swing must stay below 90°", file=path, field="phases")
-    return Cam(path, str(data.get("title", Path(path).stem)), unit, follower, r0, offset, roller, flat, arm,
+    title = data.get("title", Path(path).stem)
+    if not isinstance(title, str):
+        raise InputError(f"expected a string, got {title!r}", file=path, field="title")
+    return Cam(path, title, unit, follower, r0, offset, roller, flat, arm,
                pivot, omega, 1 if sense == "ccw" else -1, math.radians(a_rise), math.radians(a_ret), step,
                phases, h, data)
 

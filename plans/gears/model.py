@@ -50,6 +50,8 @@ from plans.reader import Reader, _show, check_keys
 from plans.units import LENGTH_UNITS
 
 SHIFT_RULES = ("minimum", "no_undercut", "equal_sliding")
+#: The most teeth a wheel may have (more is no gear a course draws, and keeps numbers finite).
+MAX_TEETH = 10_000
 
 _TOP_KEYS = ("format", "kind", "unit", "title", "module", "pressure_angle_deg", "addendum",
              "clearance", "shift_rule", "gears", "meshes", "shafts", "synthesis", "sheet")
@@ -242,15 +244,16 @@ def _gears(data: dict[str, Any], path: str, m: float, k: float) -> dict[str, Gea
         if name in gears:
             raise InputError(f"gear {name!r} named twice", file=path, field=f + "name")
         z = g.get("z")
-        if isinstance(z, bool) or not isinstance(z, int) or z < 1:
-            raise InputError(f"expected a whole number of teeth z >= 1, got {z!r}", file=path, field=f + "z")
+        if isinstance(z, bool) or not isinstance(z, int) or not 1 <= z <= MAX_TEETH:
+            raise InputError(f"expected a whole number of teeth 1 <= z <= {MAX_TEETH}, got {_show(z)}", file=path,
+                             field=f + "z")
         xv = g.get("x", 0)
         x: float | None
         if xv == "auto":
             x = None
         else:
-            if isinstance(xv, bool) or not isinstance(xv, int | float) or not math.isfinite(xv) or abs(xv) > 5:
-                raise InputError(f"expected a shift coefficient (a number, |x| <= 5) or \"auto\", got {xv!r}",
+            if isinstance(xv, bool) or not isinstance(xv, int | float) or not abs(xv) <= 5:  # NaN fails too
+                raise InputError(f"expected a shift coefficient (a number, |x| <= 5) or \"auto\", got {_show(xv)}",
                                  file=path, field=f + "x")
             x = float(xv)
         internal = g.get("internal", False)
