@@ -53,3 +53,11 @@ def test_one_percent_definition():
     assert percent(1.0 + 1e-15, 1.0) == 0.0
     assert clean(3.57e-32, 100.0) == 0.0 and clean(-1e-20, 1.0) == 0.0
     assert str(clean(-0.0, 1.0)) == "0.0"
+
+
+def test_scale_of_a_subnormal_vector_is_finite():
+    """A vector of 5e-324 (found by the fuzzer) gives a plain scale, not a math domain error."""
+    from plans.kinematics.construction import nice_scale
+
+    assert nice_scale(5e-324) == 1.0
+    assert nice_scale(5e-324, 1e-300) > 0

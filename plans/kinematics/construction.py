@@ -39,6 +39,8 @@ def nice_scale(longest: float, target_mm: float = 100.0, mantissas: tuple[float,
     if not (longest > 0 and math.isfinite(longest)):
         return 1.0
     k_min = longest / target_mm  # K may not be smaller than this
+    if k_min <= 0:  # a subnormal longest vector: nothing to draw at any scale
+        return 1.0
     e = math.floor(math.log10(k_min))
     for m in mantissas + (10.0,):
         K = m * 10.0**e
