@@ -17,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from plans.demo.mistakes import mistakes
+from plans.demo.mistakes import mistakes, page_mm, page_xy
 from plans.errors import InputError, PlansError
 from plans.kinematics.exact import Kinematics, solve
 from plans.kinematics.plan import Plan, Step
@@ -28,16 +28,6 @@ from plans.scene.model import Scene
 FRAMES = 72
 #: Largest number of frames a page may hold (the page stays small and quick to open).
 MAX_FRAMES = 720
-
-
-def _r(x: float) -> float:
-    """Page coordinates to 1 µm: small pages, and no −0.0 or round-off dust."""
-    v = round(float(x), 3)
-    return v + 0.0
-
-
-def _xy(z: complex) -> list[float]:
-    return [_r(z.real), _r(z.imag)]
 
 
 def _nice_length_scale(extent_m: float, target_mm: float = 120.0) -> float:
@@ -58,7 +48,7 @@ def _nice_length_scale(extent_m: float, target_mm: float = 120.0) -> float:
 def _scheme(scene: Scene, kin: Kinematics, mu_l: float) -> dict[str, Any]:
     """The mechanism's drawing over the frames: joints, links as bars, sliders, guides."""
     names = kin.point_names()
-    points = {nm: [_xy(z * mu_l) for z in kin.point(nm)[0]] for nm in names}
+    points = {nm: [page_xy(z * mu_l) for z in kin.point(nm)[0]] for nm in names}
     links = []
     for lid in sorted(scene.links):
         link = scene.links[lid]
@@ -75,7 +65,7 @@ def _scheme(scene: Scene, kin: Kinematics, mu_l: float) -> dict[str, Any]:
         else:
             ang = kin.theta(g.link) + g.angle
         sliders.append({"point": jt.point, "link": jt.slider,
-                        "angle_deg": [_r(math.degrees(a)) for a in ang]})
+                        "angle_deg": [page_mm(math.degrees(a)) for a in ang]})
         if g.link == scene.frame:
             pin = kin.point(jt.point)[0]
             d = complex(math.cos(g.angle), math.sin(g.angle))
@@ -83,7 +73,7 @@ def _scheme(scene: Scene, kin: Kinematics, mu_l: float) -> dict[str, Any]:
             lo, hi = float(np.min(s)), float(np.max(s))
             pad = 0.15 * (hi - lo) + 0.02 * (abs(lo) + abs(hi)) + 1e-9
             a, b = g.origin + (lo - pad) * d, g.origin + (hi + pad) * d
-            guides.append({"from": _xy(a * mu_l), "to": _xy(b * mu_l), "point": jt.point})
+            guides.append({"from": page_xy(a * mu_l), "to": page_xy(b * mu_l), "point": jt.point})
     return {"mu_l": mu_l, "points": points, "frame_points": sorted(scene.frame_points),
             "links": links, "sliders": sliders, "guides": guides, "frame": scene.frame}
 
@@ -97,7 +87,7 @@ def _plan_images(kin: Kinematics, names: list[str], order: int, mu: float) -> di
         z = kin.point(nm)[order]
         if z is None:
             continue
-        out[nm.lower()] = [_xy(w * mu) for w in z]
+        out[nm.lower()] = [page_xy(w * mu) for w in z]
     return out
 
 
@@ -107,9 +97,9 @@ def _plan_images(kin: Kinematics, names: list[str], order: int, mu: float) -> di
 def _panel(pid: str, title: str, plan: Plan, unit: str) -> dict[str, Any]:
     return {
         "id": pid, "title": title, "kind": plan.kind, "scale": plan.scale, "unit": unit, "pole": plan.pole,
-        "points": {p.name: _xy(complex(*p.xy)) for p in plan.points},
+        "points": {p.name: page_xy(complex(*p.xy)) for p in plan.points},
         "segments": [{"from": s.start, "to": s.end, "kind": s.kind, "label": s.label} for s in plan.segments],
-        "lines": [{"point": _xy(complex(*ln.point)), "dir": [round(ln.direction[0], 9) + 0.0, round(ln.direction[1], 9) + 0.0],
+        "lines": [{"point": page_xy(complex(*ln.point)), "dir": [round(ln.direction[0], 9) + 0.0, round(ln.direction[1], 9) + 0.0],
                    "label": ln.label} for ln in plan.lines],
     }
 
@@ -248,7 +238,7 @@ def lesson(scene: Scene, *, phi_deg: float | None = None, frames: int = FRAMES) 
     extent = max(abs(z) for nm in cyc.point_names() for z in cyc.point(nm)[0])
     mu_l = scene.scales.get("length") or _nice_length_scale(2.0 * float(extent))
     names = cyc.point_names()
-    cycle: dict[str, Any] = {"phi_deg": [_r(p) for p in phis], "scheme": _scheme(scene, cyc, mu_l)}
+    cycle: dict[str, Any] = {"phi_deg": [page_mm(p) for p in phis], "scheme": _scheme(scene, cyc, mu_l)}
     if order >= 1:
         vmax = max(float(np.max(np.abs(cyc.point(nm)[1]))) for nm in names)
         cycle["mu_v"] = _nice_length_scale(vmax / 1000.0, 60.0) / 1000.0 if vmax > 0 else 1.0
@@ -286,10 +276,10 @@ def _chart(label: str, unit: str, phi_deg: Any, values: Any, nodes: tuple[Any, A
     y = np.asarray(values, float)
     step = max(1, int(np.ceil(len(phi) / CHART_SAMPLES)))
     keep = np.unique(np.append(np.arange(0, len(phi), step), len(phi) - 1))
-    out: dict[str, Any] = {"label": label, "unit": unit, "phi_deg": [_r(x) for x in phi[keep]],
+    out: dict[str, Any] = {"label": label, "unit": unit, "phi_deg": [page_mm(x) for x in phi[keep]],
                            "values": [float(f"{v:.6g}") + 0.0 for v in y[keep]]}
     if nodes is not None:
-        out["nodes_deg"] = [_r(x) for x in np.asarray(nodes[0], float)]
+        out["nodes_deg"] = [page_mm(x) for x in np.asarray(nodes[0], float)]
         out["nodes"] = [float(f"{v:.6g}") + 0.0 for v in np.asarray(nodes[1], float)]
     return out
 

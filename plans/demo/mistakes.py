@@ -17,8 +17,13 @@ from plans.kinematics.exact import solve
 from plans.results import Solution
 
 
-def _r(x: float) -> float:
+def page_mm(x: float) -> float:
+    """Page coordinates to 1 µm: small pages, and no −0.0 or round-off dust."""
     return round(float(x), 3) + 0.0
+
+
+def page_xy(z: complex) -> list[float]:
+    return [page_mm(z.real), page_mm(z.imag)]
 
 
 def _meet(p1: complex, d1: complex, p2: complex, d2: complex) -> complex | None:
@@ -69,8 +74,8 @@ def _relay(panel: dict, anchor: str, shift: complex) -> tuple[str, complex, comp
 
 def _moved(pid: str, name: str, right: complex, wrong: complex, mu: float, unit: str, text: str) -> dict:
     d = abs(wrong - right)
-    return {"panel": pid, "moved": {name: [_r(wrong.real), _r(wrong.imag)]},
-            "right": {name: [_r(right.real), _r(right.imag)]},
+    return {"panel": pid, "moved": {name: page_xy(wrong)},
+            "right": {name: page_xy(right)},
             "text": f"{text} Point {name} moves by {d:.1f} mm on the drawing: "
                     f"|p{name}| = {abs(wrong) / mu:.5g} {unit} instead of {abs(right) / mu:.5g} {unit} "
                     f"({_pct(abs(wrong), abs(right))})."}
@@ -159,7 +164,7 @@ def _pi(sol: Solution, k: int, panels: list[dict]) -> dict | None:
         img = nm.lower()
         if img in vel["points"]:
             v = complex(kin.point(nm)[1][0]) * vel["scale"]
-            moved[img] = [_r(v.real), _r(v.imag)]
+            moved[img] = page_xy(v)
     crank_pin = scene.links[d.link].axis[1]
     vA = abs(d.omega) * abs(scene.links[d.link].points[crank_pin])
     text = (f"ω1 = πn/30 computed with π = 3.14: ω1 = {abs(d.omega) * ratio:.5g} rad/s instead of "
