@@ -145,3 +145,38 @@ def test_a_missing_peer_is_skipped_with_its_reason():
         elif r.peer in ("pylinkage + numba", "mechanism"):
             tol = 1e-12 if r.peer.startswith("pylinkage") else 1e-6
             assert r.errors["r"] < tol, r
+
+
+@pytest.mark.parametrize("name, sc", _scenes(), ids=[n for n, _ in _scenes()])
+@pytest.mark.parametrize("order", [0, 1, 2])
+@pytest.mark.parametrize("phis", [[45.0], [3.0, 181.0], list(np.linspace(0.0, 360.0, 24, endpoint=False) + 0.5)],
+                         ids=["one", "few", "many"])
+def test_fast_path_equals_the_general_solvers(name, sc, order, phis, monkeypatch):
+    """The fast path for cranks with RRR/RRP dyads gives what the general solvers give."""
+    fast_kin = exact.solve(sc, phis, order=order)
+    monkeypatch.setattr(exact.fast, "plan_for", lambda *a: None)
+    slow = exact.solve(sc, phis, order=order)
+    w = abs(sc.driver.omega) or 1.0
+    assert set(fast_kin.motion) == set(slow.motion)
+    for lid in slow.motion:
+        for f in FIELDS:
+            x, y = getattr(fast_kin.motion[lid], f), getattr(slow.motion[lid], f)
+            assert (x is None) == (y is None), (lid, f)
+            if y is not None:
+                assert x.shape == y.shape == (len(phis),)
+                assert np.max(np.abs(x - y)) <= 1e-12 * _scale(sc, f), (lid, f)
+    assert set(fast_kin.slides) == set(slow.slides) and set(fast_kin.conditions) == set(slow.conditions)
+    for nm, (sd, sdd) in slow.slides.items():
+        assert np.max(np.abs(fast_kin.slides[nm][0] - sd)) <= 1e-12 * w
+        assert (sdd is None) == (fast_kin.slides[nm][1] is None)
+        if sdd is not None:
+            assert np.max(np.abs(fast_kin.slides[nm][1] - sdd)) <= 1e-12 * w * w
+    for g, c in slow.conditions.items():
+        assert np.allclose(fast_kin.conditions[g], c, rtol=1e-9, atol=0)
+    assert np.array_equal(fast_kin.phi_deg, slow.phi_deg)
+
+
+def test_the_fast_path_covers_the_usual_mechanisms():
+    for sc in (reference.slider_crank_scene(0.05, 0.2, 0.015, 10.0), reference.four_bar_scene(0.05, 0.2, 0.15, 0.18),
+               load_scene(Path(__file__).resolve().parent.parent / "samples" / "v_engine.toml"), chain_scene(5)):
+        assert exact.fast.plan_for(sc, analyse(sc)) is not None

@@ -25,6 +25,7 @@ from typing import Any
 import numpy as np
 
 from plans.errors import Locked, NotAssemblable
+from plans.kinematics import fast
 from plans.kinematics.structure import Group, Structure, analyse
 from plans.scene.model import Joint, Scene
 from plans.tolerances import ASSEMBLY_REL, LOCK_SIN
@@ -146,7 +147,21 @@ def solve(scene: Scene, phi_deg=None, order: int | None = None,
             order = 1
         if scene.wants("acceleration_plan"):
             order = 2
-    phis = np.atleast_1d(np.asarray(scene.driver.phis_deg if phi_deg is None else phi_deg, dtype=float))
+    if phi_deg is None:
+        phi_deg = scene.driver.phis_deg
+    fp = fast.plan_for(scene, st)
+    if fp is not None and type(phi_deg) in (list, tuple) and len(phi_deg) == 1:
+        # one position (a demonstration, a GUI): no numpy until a reading is asked for
+        phi = phi_deg[0]
+        if type(phi) is float or type(phi) is int:
+            res = fast.solve_one(fp, phi, order)
+            if res is not None:
+                return _kinematics(scene, st, order, _columns(1, res[0]), *_one(float(phi), res[1], res[2]))
+    phis = np.atleast_1d(np.asarray(phi_deg, dtype=float))
+    if fp is not None:
+        res = _fast_runs(fp, phis, order) if len(phis) <= SCALAR_MAX else fast.solve_vec(fp, phis, order)
+        if res is not None:
+            return _kinematics(scene, st, order, _columns(len(phis), res[0]), phis, res[1], res[2])
     program = _program(scene, st)
     if len(phis) <= SCALAR_MAX:
         return _solve_scalar(scene, st, program, phis, order)
@@ -159,6 +174,53 @@ def solve(scene: Scene, phi_deg=None, order: int | None = None,
     for fn, g, k in program:
         fn(ctx, g, k)
     return Kinematics(scene, st, phis, order, ctx.motion, ctx.slides, ctx.conditions)
+
+
+def _kinematics(scene: Scene, st: Structure, order: int, motion: dict, phis: Any, slides: dict,
+                conditions: dict) -> Kinematics:
+    """A Kinematics made without the frozen dataclass's per-field checks (a third of the
+    time of one position otherwise); the fields are those of the constructor."""
+    kin = object.__new__(Kinematics)
+    kin.__dict__.update(scene=scene, structure=st, phi_deg=phis, order=order, motion=motion, slides=slides,
+                        conditions=conditions, _points={})
+    return kin
+
+
+def _columns(n: int, motion: dict) -> dict:
+    return {lid: _Cols(n, m) for lid, m in motion.items()}
+
+
+def _one(phi: float, slides: dict, conditions: dict) -> tuple[Any, dict, dict]:
+    """The angle, slides and conditions of one position as arrays of one element: rows of
+    one array (numpy's cost per array made is what the one-position path avoids)."""
+    vals = [phi]
+    for sd, sdd in slides.values():
+        vals.append(sd)
+        if sdd is not None:
+            vals.append(sdd)
+    vals += conditions.values()
+    rows = iter(np.array(vals)[:, None])
+    phis = next(rows)
+    out_s = {nm: (next(rows), None if sdd is None else next(rows)) for nm, (_, sdd) in slides.items()}
+    return phis, out_s, {g: next(rows) for g in conditions}
+
+
+def _fast_runs(fp: fast.Plan, phis: Any, order: int) -> tuple[dict, dict, dict] | None:
+    """A few positions by the fast path one by one, the numbers of each quantity listed."""
+    runs = []
+    for phi in phis.tolist():
+        res = fast.solve_one(fp, phi, order)
+        if res is None:
+            return None
+        runs.append(res)
+    first = runs[0]
+    motion = {lid: [None if m[f] is None else [r[0][lid][f] for r in runs] for f in range(6)]
+              for lid, m in first[0].items()}
+    slides = {nm: (np.array([r[1][nm][0] for r in runs], dtype=float),
+                   None if sdd is None else np.array([r[1][nm][1] for r in runs], dtype=float))
+              for nm, (_, sdd) in first[1].items()}
+    conditions = {g: np.array([r[2][g] for r in runs], dtype=float) for g in first[2]}
+    return motion, slides, conditions
 
 
 # --------------------------------------------------------------------------- two ways to run
@@ -265,25 +327,14 @@ def _drive(ctx: _Ctx, rot1, omega, eps) -> None:
     ctx.motion[ctx.crank] = m1
 
 
-_QUARTER = np.array([1, 1j, -1, -1j])
-
-
 def _rotation(d: Any, phis: Any) -> C:
-    """e^{iθ1} over positions, reduced by quarter turns like :meth:`Driver.rotation`
-    (the same numbers, fewer numpy calls)."""
-    ref = math.degrees(d.phi_ref)
-    t = phis if d.sense == 1 and ref == 0 else ref + d.sense * phis
-    q = np.rint(t / 90.0)
-    r = t - 90.0 * q
-    return _QUARTER[q.astype(np.intp) & 3] * np.exp(r * (1j * math.pi / 180.0))
+    """e^{iθ1} over positions (:func:`plans.kinematics.fast.rotation`)."""
+    return fast.rotation(math.degrees(d.phi_ref), d.sense, phis)
 
 
 def _rotation1(d: Any, phi: float) -> complex:
-    """e^{iθ1} of one position, reduced by quarter turns like :meth:`Driver.rotation`."""
-    t = math.degrees(d.phi_ref) + d.sense * phi
-    q = round(t / 90.0)
-    r = t - 90.0 * q
-    return (1, 1j, -1, -1j)[int(q) % 4] * cmath.exp(1j * math.radians(r))
+    """e^{iθ1} of one position (:func:`plans.kinematics.fast.rotation1`)."""
+    return fast.rotation1(math.degrees(d.phi_ref), d.sense, phi)
 
 
 def _solve_scalar(scene: Scene, st: Structure, program: list, phis: Any, order: int) -> Kinematics:
@@ -306,63 +357,63 @@ def _stack(scene: Scene, st: Structure, phis: Any, order: int, runs: list) -> Ki
     read (each array costs about as much as a group's whole solution in Python numbers)."""
     first = runs[0]
     k = min(order, 2)
-    fields = _FIELDS_BY_ORDER[k]
+    n = len(runs)
     motion: dict[int, _Motion] = {}
-    if len(runs) == 1:
-        for lid, m in first.motion.items():
-            motion[lid] = _Stacked({"rot": [m.rot], "r0": [m.r0], "omega": [m.omega], "v0": [m.v0],
-                                    "eps": [m.eps], "a0": [m.a0]} if k == 2 else
-                                   {f: [getattr(m, f)] for f in fields})
-    else:
-        for lid in first.motion:
-            ms = [r.motion[lid] for r in runs]
-            motion[lid] = _Stacked({f: [getattr(m, f) for m in ms] for f in fields})
-    if k < 2:  # the frame's rates are known (zero) whatever is asked
-        fm = motion[scene.frame]
-        n = len(runs)
-        fm.omega, fm.v0, fm.eps, fm.a0 = np.zeros(n), np.zeros(n, complex), np.zeros(n), np.zeros(n, complex)
+    for lid in first.motion:
+        ms = [r.motion[lid] for r in runs]
+        motion[lid] = _Cols(n, [[getattr(m, f) for m in ms] if i < _WIDTH[k] else None
+                                for i, f in enumerate(_FIELDS)])
+    motion[scene.frame] = _Cols(n, [1 + 0j, 0j, 0.0, 0j, 0.0, 0j])  # the frame's rates are known whatever is asked
     slides = {}
     for nm, (sd, _) in first.slides.items():
         if sd is not None:
             slides[nm] = (np.array([r.slides[nm][0] for r in runs], dtype=float),
                           np.array([r.slides[nm][1] for r in runs], dtype=float) if k == 2 else None)
     conditions = {g: np.array([r.conditions[g] for r in runs], dtype=float) for g in first.conditions}
-    return Kinematics(scene, st, phis, order, motion, slides, conditions)
-
-
-_FIELDS_BY_ORDER = (("rot", "r0"), ("rot", "r0", "omega", "v0"), ("rot", "r0", "omega", "v0", "eps", "a0"))
-_COMPLEX = frozenset(("rot", "r0", "v0", "a0"))
-
-
-class _Stacked(_Motion):
-    """A motion solved position by position: each quantity a list of numbers until read."""
-
-    __slots__ = ("_cols",)
-
-    def __init__(self, cols: dict[str, Any]) -> None:  # noqa: D107 - fields live in _cols
-        self._cols = cols
-
-    def _get(self, f: str) -> Any:
-        v = self._cols.get(f)
-        if isinstance(v, list):
-            v = self._cols[f] = np.array(v, dtype=complex if f in _COMPLEX else float)
-        return v
-
-
-def _stacked_field(f: str) -> property:
-    def get(self: _Stacked) -> Any:
-        return self._get(f)
-
-    def put(self: _Stacked, value: Any) -> None:
-        self._cols[f] = value
-    return property(get, put)
-
-
-for _f in ("rot", "r0", "omega", "v0", "eps", "a0"):
-    setattr(_Stacked, _f, _stacked_field(_f))
+    return _kinematics(scene, st, order, motion, phis, slides, conditions)
 
 
 _FIELDS = ("rot", "r0", "omega", "v0", "eps", "a0")
+_WIDTH = (2, 4, 6)  # fields known at each order
+_DTYPES = (complex, complex, float, complex, float, complex)
+
+
+class _Cols(_Motion):
+    """A motion whose quantities become arrays over the ``n`` positions when first read:
+    each is an array already, a list of numbers (one per position), one number (the same
+    at every position: the frame, the crank's ω, a slider's angle) or None (not asked for)."""
+
+    __slots__ = ("_n", "_vals")
+
+    def __init__(self, n: int, vals: list) -> None:  # noqa: D107 - fields live in _vals
+        self._n = n
+        self._vals = vals
+
+    def _get(self, i: int) -> Any:
+        v = self._vals[i]
+        if v is None or type(v) is np.ndarray:
+            return v
+        if type(v) is list:
+            v = np.array(v, dtype=_DTYPES[i])
+        elif self._n == 1:
+            v = np.array((v,), dtype=_DTYPES[i])
+        else:
+            v = np.full(self._n, v, dtype=_DTYPES[i])
+        self._vals[i] = v
+        return v
+
+
+def _field(i: int) -> property:
+    def get(self: _Cols) -> Any:
+        return self._get(i)
+
+    def put(self: _Cols, value: Any) -> None:
+        self._vals[i] = value
+    return property(get, put)
+
+
+for _i, _f in enumerate(_FIELDS):
+    setattr(_Cols, _f, _field(_i))
 
 
 # --------------------------------------------------------------------------- helpers

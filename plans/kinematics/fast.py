@@ -1,0 +1,282 @@
+"""The exact analysis's fast path for the usual mechanism: a crank and RRR/RRP dyads (each
+RRP's guide on the frame), in any chain.
+
+The same formulas as the general solvers of :mod:`plans.kinematics.exact`, in the same
+order, with everything that depends only on the scene worked out once (:func:`plan_for`) and
+no bookkeeping per group beyond local variables: one function per dyad kind that runs on
+numpy arrays over positions or on plain Python numbers for one position.  What is constant
+over the positions (the frame, the crank's ω and ε, a slider's angle) stays one number;
+:mod:`.exact` makes arrays of it only when it is read.
+
+Whatever is out of the ordinary (a group that does not assemble somewhere, an assembly at
+the tangent, a lock) is not handled here: the solve returns None and the general solvers
+run instead, and they give the draftsman's answer or the error that names the group.
+"""
+
+from __future__ import annotations
+
+import cmath
+import math
+from typing import Any
+
+import numpy as np
+
+from plans.kinematics.structure import Structure
+from plans.scene.model import Scene
+from plans.tolerances import ASSEMBLY_REL, LOCK_SIN
+
+#: A link's motion while solving: [rot, r0, ω, v0, ε, a0] (numbers, arrays or None).
+Motion = list
+
+_QUARTER = np.array([1, 1j, -1, -1j])
+
+
+def rotation(ref_deg: float, sense: int, phis: Any) -> Any:
+    """e^{iθ1} over positions, θ1 = ref + sense·φ reduced by whole quarter turns in degrees
+    first (as :meth:`plans.scene.model.Driver.rotation`), so that a dead centre's small
+    offset is kept exactly."""
+    t = phis if sense == 1 and ref_deg == 0 else ref_deg + sense * phis
+    q = np.rint(t / 90.0)
+    r = t - 90.0 * q
+    return _QUARTER[q.astype(np.intp) & 3] * np.exp(r * (1j * math.pi / 180.0))
+
+
+def rotation1(ref_deg: float, sense: int, phi: float) -> complex:
+    """e^{iθ1} of one position, reduced by quarter turns like :func:`rotation`."""
+    t = ref_deg + sense * phi
+    q = round(t / 90.0)
+    r = t - 90.0 * q
+    return (1, 1j, -1, -1j)[int(q) % 4] * cmath.exp(1j * math.radians(r))
+
+
+class Plan:
+    """What the fast path needs of a scene, worked out once."""
+
+    __slots__ = ("frame", "crank", "pivot", "zpivot", "W", "E", "omega", "eps", "ref_deg", "sense", "steps")
+
+    def __init__(self, scene: Scene, steps: list) -> None:
+        d = scene.driver
+        self.frame = scene.frame
+        self.crank = d.link
+        self.pivot = scene.frame_points[d.pivot]
+        self.zpivot = scene.links[d.link].points[d.pivot]
+        self.omega, self.eps = d.omega, d.eps
+        self.W = 1j * d.omega
+        self.E = complex(-d.omega * d.omega, d.eps)
+        self.ref_deg = math.degrees(d.phi_ref)
+        self.sense = d.sense
+        self.steps = steps
+
+
+def plan_for(scene: Scene, st: Structure) -> Plan | None:
+    """The fast path's plan of ``scene``, or None where the general solvers are needed."""
+    done = scene.memo.get("fast")
+    if done is None or done[0] is not st:
+        done = scene.memo["fast"] = (st, _make_plan(scene, st))
+    return done[1]
+
+
+def _local(scene: Scene, link: int, name: str) -> complex:
+    return scene.frame_points[name] if link == scene.frame else scene.links[link].points[name]
+
+
+def _make_plan(scene: Scene, st: Structure) -> Plan | None:
+    steps: list[tuple] = []
+    frame = scene.frame
+    for g in st.groups:
+        i, j = g.links
+        j1, j2, j3 = g.joints
+        p, q = g.known
+        if p == frame and q == frame:  # a group on the frame alone does not move: general path
+            return None
+        Li, Lj = scene.links[i], scene.links[j]
+        zi = Li.points[j2.point] - Li.points[j1.point]
+        l1 = abs(zi)
+        if g.kind == "RRR":
+            zj = Lj.points[j2.point] - Lj.points[j3.point]
+            l3 = abs(zj)
+            steps.append((_rrr, i, j, p, _local(scene, p, j1.point), q, _local(scene, q, j3.point), l1, l3,
+                          zi.conjugate() / l1, zj.conjugate() / l3, Li.points[j1.point], Lj.points[j3.point],
+                          0.5 * (l1 * l1 - l3 * l3), g.branch, g.name, ASSEMBLY_REL * (l1 + l3), l1 * l3))
+        elif g.kind == "RRP" and j3.guide is not None and j3.guide.link == frame:
+            guide = j3.guide
+            u = guide.direction
+            steps.append((_rrp, i, j, p, _local(scene, p, j1.point), l1, zi.conjugate() / l1, Li.points[j1.point],
+                          cmath.exp(1j * (guide.angle - j3.slider_angle)), Lj.points[j2.point], guide.origin, u,
+                          u.conjugate(), g.branch, g.name, j3.name))
+        else:
+            return None
+    return Plan(scene, steps)
+
+
+# --------------------------------------------------------------------------- the solve
+
+
+def solve_vec(plan: Plan, phis: Any, order: int) -> tuple[dict, dict, dict] | None:
+    """Motions, slides and conditions over the positions ``phis`` (an array), or None."""
+    rot1 = rotation(plan.ref_deg, plan.sense, phis)
+    return _run(plan, rot1, order, True)
+
+
+def solve_one(plan: Plan, phi: float, order: int) -> tuple[dict, dict, dict] | None:
+    """The same at one position, in Python numbers, or None."""
+    return _run(plan, rotation1(plan.ref_deg, plan.sense, phi), order, False)
+
+
+def _run(plan: Plan, rot1: Any, order: int, vec: bool) -> tuple[dict, dict, dict] | None:
+    motion: dict[int, Motion] = {plan.frame: [1 + 0j, 0j, 0.0, 0j, 0.0, 0j]}
+    z = plan.zpivot
+    if z:
+        rel = -rot1 * z  # the crank's origin from its pivot
+        m1 = [rot1, plan.pivot + rel, None, None, None, None]
+        if order >= 1:
+            m1[2], m1[3] = plan.omega, plan.W * rel
+            if order >= 2:
+                m1[4], m1[5] = plan.eps, plan.E * rel
+    else:
+        m1 = [rot1, plan.pivot, None, None, None, None]
+        if order >= 1:
+            m1[2], m1[3] = plan.omega, 0j
+            if order >= 2:
+                m1[4], m1[5] = plan.eps, 0j
+    motion[plan.crank] = m1
+    pins: dict[tuple[int, complex], tuple] = {}
+    slides: dict[str, tuple] = {}
+    conditions: dict[str, Any] = {}
+    for step in plan.steps:
+        if not step[0](plan, motion, pins, slides, conditions, step, order, vec):
+            return None
+    return motion, slides, conditions
+
+
+def _at(plan: Plan, motion: dict, pins: dict, link: int, z: complex, order: int) -> tuple:
+    """r, v, a of the point with local coordinates z on a known link (v, a None on the frame
+    and where not ordered)."""
+    if link == plan.frame:
+        return z, None, None
+    key = (link, z)
+    done = pins.get(key)  # a pin carries several groups (the V-engine's crank pin)
+    if done is not None:
+        return done
+    if link == plan.crank:
+        rel = motion[link][0] * (z - plan.zpivot)
+        done = (plan.pivot + rel if plan.pivot else rel, plan.W * rel if order >= 1 else None,
+                plan.E * rel if order >= 2 else None)
+    else:
+        rot, r0, w, v0, e, a0 = motion[link]
+        if not z:
+            done = (r0, v0, a0)
+        else:
+            rel = rot * z
+            v = a = None
+            if order >= 1:
+                v = v0 + 1j * w * rel
+                if order >= 2:
+                    a = a0 + (1j * e - w * w) * rel
+            done = (r0 + rel, v, a)
+    pins[key] = done
+    return done
+
+
+def _placed(rot: Any, anchor: Any, z: complex, v: Any, a: Any, omega: Any, eps: Any, order: int) -> Motion:
+    """A link placed by its rotation and one of its points (local z, velocity v, acceleration
+    a), with its ω and ε (as far as ordered)."""
+    if not z:  # the point is the link's origin
+        if order >= 2:
+            return [rot, anchor, omega, v, eps, a]
+        return [rot, anchor, omega, v, None, None] if order else [rot, anchor, None, None, None, None]
+    rel = -rot * z  # the origin from the point
+    m = [rot, anchor + rel, None, None, None, None]
+    if order >= 1:
+        m[2], m[3] = omega, v + 1j * omega * rel
+        if order >= 2:
+            m[4], m[5] = eps, a + (1j * eps - omega * omega) * rel
+    return m
+
+
+def _rrr(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k: tuple, order: int,
+         vec: bool) -> bool:
+    _, i, j, p, zp, q, zq, l1, l3, ci, cj, z1i, z3j, half_diff, branch, name, near, size = k
+    P1, vP1, aP1 = _at(plan, motion, pins, p, zp, order)
+    P3, vP3, aP3 = _at(plan, motion, pins, q, zq, order)
+    d = P3 - P1
+    D = abs(d)
+    if (D.min() if vec else D) <= near:
+        return False
+    a = (half_diff + 0.5 * D * D) / D
+    x = (l1 - a) * (l1 + a)
+    if (x.min() if vec else x) < 0:
+        return False
+    h = np.sqrt(x) if vec else math.sqrt(x)
+    r1 = (a + 1j * h if branch > 0 else a - 1j * h) * (d / D)  # B − P1
+    r3 = P1 + r1 - P3
+    roti = r1 * (ci / abs(r1))
+    rotj = r3 * (cj / abs(r3))
+    if order < 1:
+        motion[i] = _placed(roti, P1, z1i, None, None, None, None, 0)
+        motion[j] = _placed(rotj, P3, z3j, None, None, None, None, 0)
+        return True
+    # iωi r1 − iωj r3 = vP3 − vP1, by Cramer's rule as exact._System
+    c2 = -1j * r3
+    cc1 = (1j * r1).conjugate()
+    det = (cc1 * c2).imag
+    adet = abs(det)
+    if (adet.min() if vec else adet) <= LOCK_SIN * size:
+        return False
+    conditions[name] = size / adet
+    inv = 1.0 / det
+    k1 = (-c2).conjugate() * inv
+    k2 = cc1 * inv
+    rhs = -vP1 if vP3 is None else vP3 if vP1 is None else vP3 - vP1
+    wi, wj = (rhs * k1).imag, (rhs * k2).imag
+    ei = ej = None
+    if order >= 2:
+        rhs = -aP1 if aP3 is None else aP3 if aP1 is None else aP3 - aP1
+        rhs = rhs + wi * wi * r1 - wj * wj * r3
+        ei, ej = (rhs * k1).imag, (rhs * k2).imag
+    if vP1 is None:
+        vP1 = aP1 = 0j
+    if vP3 is None:
+        vP3 = aP3 = 0j
+    motion[i] = _placed(roti, P1, z1i, vP1, aP1, wi, ei, order)
+    motion[j] = _placed(rotj, P3, z3j, vP3, aP3, wj, ej, order)
+    return True
+
+
+def _rrp(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k: tuple, order: int,
+         vec: bool) -> bool:
+    _, i, j, p, zp, l1, ci, z1i, turn, zBj, G0, u, cu, branch, name, slide = k
+    P1, vP1, aP1 = _at(plan, motion, pins, p, zp, order)
+    wu = (P1 - G0) * cu  # t0 + i·e: along and across the guide
+    t0, e = wu.real, wu.imag
+    x = (l1 - e) * (l1 + e)
+    if (x.min() if vec else x) < 0:
+        return False
+    root = np.sqrt(x) if vec else math.sqrt(x)
+    B = G0 + (t0 + root if branch > 0 else t0 - root) * u
+    r1 = B - P1
+    rot = r1 * (ci / abs(r1))
+    if order < 1:
+        motion[i] = _placed(rot, P1, z1i, None, None, None, None, 0)
+        motion[j] = _placed(turn, B, zBj, None, None, None, None, 0)
+        return True
+    # iωi r1 − ṡ u = −vP1 (the guide on the frame), by Cramer's rule as exact._System
+    cc1 = (1j * r1).conjugate()
+    det = (cc1 * -u).imag
+    adet = abs(det)
+    if (adet.min() if vec else adet) <= LOCK_SIN * l1:
+        return False
+    conditions[name] = l1 / adet
+    inv = 1.0 / det
+    k1 = cu * inv
+    k2 = cc1 * inv
+    wi, sd = (-vP1 * k1).imag, (-vP1 * k2).imag
+    ei = sdd = aB = None
+    if order >= 2:
+        rhs = wi * wi * r1 - aP1
+        ei, sdd = (rhs * k1).imag, (rhs * k2).imag
+        aB = sdd * u
+    motion[i] = _placed(rot, P1, z1i, vP1, aP1, wi, ei, order)
+    motion[j] = _placed(turn, B, zBj, sd * u, aB, 0.0, 0.0, order)
+    slides[slide] = (sd, sdd)
+    return True
