@@ -217,3 +217,26 @@ def test_known_vector_given_length_keeps_the_course_habit(tmp_path):
     for pp in build_all(kin):
         assert pp.velocity.segment("v_A").length_mm == pytest.approx(100.0, rel=1e-9)
         assert pp.acceleration.segment("a_A").length_mm == pytest.approx(80.0, rel=1e-9)
+
+
+@pytest.mark.parametrize("name", ["six_bar", "shaper", "v_engine"])
+def test_plans_refitted_from_the_arrays_are_those_refitted_from_the_plan_objects(name):
+    """build_all looks at the plan objects only where the arrays say a plan may run long:
+    the same plans as refitting every position from its plan objects."""
+    from plans.kinematics import construction
+    from plans.kinematics.scales import refit
+
+    kin = solve(load_scene(ROOT / "samples" / f"{name}.toml"), np.linspace(0.0, 360.0, 72, endpoint=False))
+    mv, ma = construction.default_scales(kin)
+    together = construction._Together(kin, slice(None), mv, ma)
+    every = [together.position(k) for k in range(kin.n)]
+    flagged = set(together.may_run_past(LONGEST_MM))
+    for k, pp in enumerate(every):
+        if any(p is not None and p.extent > LONGEST_MM for p in (pp.velocity, pp.acceleration)):
+            assert k in flagged
+    a, b = build_all(kin), refit(kin, every, build)
+    for pa, pb in zip(a, b, strict=True):
+        for x, y in ((pa.velocity, pb.velocity), (pa.acceleration, pb.acceleration)):
+            assert (x is None) == (y is None)
+            if x is not None:
+                assert x.scale == y.scale and x.points == y.points

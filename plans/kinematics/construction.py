@@ -140,6 +140,16 @@ class _Together:
     def position(self, k: int) -> PositionPlans:
         return PositionPlans(float(self.phi[k]), source=self, k=k)
 
+    def may_run_past(self, longest_mm: float) -> list[int]:
+        """The positions where a plan's largest distance from the pole (:attr:`Plan.extent`)
+        may exceed ``longest_mm``, from the arrays (with a margin for rounding)."""
+        far = np.zeros(len(self.phi), dtype=bool)
+        for b in (self.vb, self.ab):
+            if b is not None:
+                for name in b.order:
+                    far |= np.abs(b.pts[name]) > longest_mm * (1 - 1e-9)
+        return np.flatnonzero(far).tolist()
+
     def readings(self, k: int) -> tuple[Reading, ...]:
         if self._columns is None:  # each reading's arrays as lists, once for all positions
             n = len(self.phi)
@@ -265,7 +275,7 @@ def build_all(kin: Kinematics) -> list[PositionPlans]:
     """Plans at every position of the scene, with one round scale for all (as on one sheet;
     a position whose plan would run too long gets a round one of its own), built together; position by position only where a label differs between positions or a group
     locks (the error then names the first position, as drawn one by one)."""
-    from plans.kinematics.scales import refit
+    from plans.kinematics.scales import LONGEST_MM, refit
 
     mv, ma = default_scales(kin)
     want_mv, want_ma = _scales(kin, mv, ma)
@@ -275,7 +285,8 @@ def build_all(kin: Kinematics) -> list[PositionPlans]:
         together = _Together(kin, slice(None), want_mv, want_ma)
     except (Mixed, Locked):
         return refit(kin, [build(kin, k, velocity_scale=mv, acceleration_scale=ma) for k in range(kin.n)], build)
-    return refit(kin, [together.position(k) for k in range(kin.n)], build)
+    return refit(kin, [together.position(k) for k in range(kin.n)], build,
+                 only=together.may_run_past(LONGEST_MM))
 
 
 __all__ = ["Reading", "PositionPlans", "build", "build_all", "build_many", "default_scales", "nice_scale"]

@@ -10,6 +10,7 @@ given length for the known vector (pa = 100 mm) instead.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 from plans.kinematics.exact import Kinematics
 
@@ -66,12 +67,15 @@ def common_scales(kin: Kinematics) -> tuple[float, float]:
     return out[0], out[1]
 
 
-def refit(kin: Kinematics, plans: list, build) -> list:
+def refit(kin: Kinematics, plans: list, build, only: Any = None) -> list:
     """``plans`` built at the common scales, each position whose plan would run past
-    ``LONGEST_MM`` rebuilt at a round scale of its own (a scale the scene gives is kept)."""
+    ``LONGEST_MM`` rebuilt at a round scale of its own (a scale the scene gives is kept).
+    ``only``: the positions that may run past it (the others are not looked at, so their
+    plan objects are not made)."""
     sc = kin.scene.scales
     out = list(plans)
-    for k, pp in enumerate(plans):
+    for k in range(len(plans)) if only is None else only:
+        pp = plans[k]
         v, a = pp.velocity, pp.acceleration
         mv = v.scale if v is not None else None
         ma = a.scale if a is not None else None
