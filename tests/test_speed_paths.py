@@ -180,3 +180,36 @@ def test_the_fast_path_covers_the_usual_mechanisms():
     for sc in (reference.slider_crank_scene(0.05, 0.2, 0.015, 10.0), reference.four_bar_scene(0.05, 0.2, 0.15, 0.18),
                load_scene(Path(__file__).resolve().parent.parent / "samples" / "v_engine.toml"), chain_scene(5)):
         assert exact.fast.plan_for(sc, analyse(sc)) is not None
+
+
+@pytest.mark.parametrize("order", [0, 1, 2])
+@pytest.mark.parametrize("case", ["slider-crank", "four-bar", "V-engine"])
+def test_what_does_not_assemble_is_named_alike_on_every_path(case, order, monkeypatch):
+    """A position that does not assemble gives the general solvers' error whether the fast
+    path runs (one position, a few, many) or not."""
+    if case == "slider-crank":  # at 270° A is 70 mm from the guide, the rod 60 mm long
+        sc = reference.slider_crank_scene(0.05, 0.06, 0.02, 10.0)
+        bad = 270.0
+    elif case == "four-bar":
+        sc = reference.four_bar_scene(0.1, 0.15, 0.05, 0.2)
+        bad = 180.0
+    else:
+        import dataclasses
+
+        v = load_scene(Path(__file__).resolve().parent.parent / "samples" / "v_engine.toml")
+        links = dict(v.links)
+        rod = links[4]
+        links[4] = dataclasses.replace(rod, points={k: z * 0.2 for k, z in rod.points.items()})
+        sc = dataclasses.replace(v, links=links)
+        bad = 45.0
+    msgs = []
+    for phis in ([bad], [10.0, bad], np.array([10.0, 20.0, bad, 30.0, 40.0, 50.0])):
+        for off in (False, True):
+            if off:
+                monkeypatch.setattr(exact.fast, "plan_for", lambda *a: None)
+            with pytest.raises(ConstructionError) as ei:
+                exact.solve(sc, phis, order=order)
+            msgs.append(str(ei.value))
+            monkeypatch.undo()
+    assert msgs[0::2] == msgs[1::2]  # fast path or not, the same error
+    assert f"phi = {bad:g} deg" in msgs[0]

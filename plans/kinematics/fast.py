@@ -52,7 +52,8 @@ def rotation1(ref_deg: float, sense: int, phi: float) -> complex:
 class Plan:
     """What the fast path needs of a scene, worked out once."""
 
-    __slots__ = ("frame", "crank", "pivot", "zpivot", "W", "E", "omega", "eps", "ref_deg", "sense", "steps")
+    __slots__ = ("frame", "crank", "pivot", "zpivot", "W", "E", "omega", "eps", "ref_deg", "sense", "steps",
+                 "vsteps")
 
     def __init__(self, scene: Scene, steps: list) -> None:
         d = scene.driver
@@ -66,6 +67,32 @@ class Plan:
         self.ref_deg = math.degrees(d.phi_ref)
         self.sense = d.sense
         self.steps = steps
+        self.vsteps = _batches(steps)
+
+
+def _batches(steps: list) -> list:
+    """The steps over arrays: RRP groups one after another on the same pin (the cylinders of
+    a V or radial engine on the crank pin) solved together, one row of arrays each."""
+    out: list = []
+    run: list = []
+    for st in steps + [None]:
+        if run and (st is None or st[0] is not _rrp or st[3:5] != run[0][3:5]):
+            if len(run) == 1:
+                out.append(run[0])
+            else:
+                col = np.array
+                out.append((_rrp_many, run[0][3], run[0][4], tuple(run),
+                            col([[m[5]] for m in run]), col([[m[10]] for m in run]), col([[m[11]] for m in run]),
+                            col([[m[12]] for m in run]), col([[1.0 if m[13] > 0 else -1.0] for m in run]),
+                            col([[m[16]] for m in run]), col([[(-1.0 if m[13] > 0 else 1.0) / m[5]] for m in run]),
+                            max(m[17] for m in run)))
+            run = []
+        if st is not None:
+            if st[0] is _rrp:
+                run.append(st)
+            else:
+                out.append(st)
+    return out
 
 
 def plan_for(scene: Scene, st: Structure) -> Plan | None:
@@ -103,7 +130,8 @@ def _make_plan(scene: Scene, st: Structure) -> Plan | None:
             u = guide.direction
             steps.append((_rrp, i, j, p, _local(scene, p, j1.point), l1, zi.conjugate() / l1, Li.points[j1.point],
                           cmath.exp(1j * (guide.angle - j3.slider_angle)), Lj.points[j2.point], guide.origin, u,
-                          u.conjugate(), g.branch, g.name, j3.name))
+                          u.conjugate(), g.branch, g.name, j3.name, u * zi.conjugate() / (l1 * l1),
+                          (LOCK_SIN * l1) ** 2 * 1.01))
         else:
             return None
     return Plan(scene, steps)
@@ -115,15 +143,15 @@ def _make_plan(scene: Scene, st: Structure) -> Plan | None:
 def solve_vec(plan: Plan, phis: Any, order: int) -> tuple[dict, dict, dict] | None:
     """Motions, slides and conditions over the positions ``phis`` (an array), or None."""
     rot1 = rotation(plan.ref_deg, plan.sense, phis)
-    return _run(plan, rot1, order, True)
+    return _run(plan, rot1, order, True, plan.vsteps)
 
 
 def solve_one(plan: Plan, phi: float, order: int) -> tuple[dict, dict, dict] | None:
     """The same at one position, in Python numbers, or None."""
-    return _run(plan, rotation1(plan.ref_deg, plan.sense, phi), order, False)
+    return _run(plan, rotation1(plan.ref_deg, plan.sense, phi), order, False, plan.steps)
 
 
-def _run(plan: Plan, rot1: Any, order: int, vec: bool) -> tuple[dict, dict, dict] | None:
+def _run(plan: Plan, rot1: Any, order: int, vec: bool, steps: list) -> tuple[dict, dict, dict] | None:
     motion: dict[int, Motion] = {plan.frame: [1 + 0j, 0j, 0.0, 0j, 0.0, 0j]}
     z = plan.zpivot
     if z:
@@ -143,7 +171,7 @@ def _run(plan: Plan, rot1: Any, order: int, vec: bool) -> tuple[dict, dict, dict
     pins: dict[tuple[int, complex], tuple] = {}
     slides: dict[str, tuple] = {}
     conditions: dict[str, Any] = {}
-    for step in plan.steps:
+    for step in steps:
         if not step[0](plan, motion, pins, slides, conditions, step, order, vec):
             return None
     return motion, slides, conditions
@@ -245,38 +273,96 @@ def _rrr(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k
 
 def _rrp(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k: tuple, order: int,
          vec: bool) -> bool:
-    _, i, j, p, zp, l1, ci, z1i, turn, zBj, G0, u, cu, branch, name, slide = k
+    _, i, j, p, zp, l1, ci, z1i, turn, zBj, G0, u, cu, branch, name, slide, K, lock = k
     P1, vP1, aP1 = _at(plan, motion, pins, p, zp, order)
-    wu = (P1 - G0) * cu  # t0 + i·e: along and across the guide
+    wu = (P1 - G0) * cu if G0 else P1 * cu  # t0 + i·e: P1 along and across the guide
     t0, e = wu.real, wu.imag
     x = (l1 - e) * (l1 + e)
-    if (x.min() if vec else x) < 0:
+    # the system's determinant below is ±√x: a lock is √x ≤ LOCK_SIN·l1 (checked here, with a
+    # margin: the general solvers decide at the limit)
+    xm = x.min() if vec else x
+    if xm < 0 or (order and xm <= lock):
         return False
-    root = np.sqrt(x) if vec else math.sqrt(x)
-    B = G0 + (t0 + root if branch > 0 else t0 - root) * u
-    r1 = B - P1
-    rot = r1 * (ci / abs(r1))
+    if vec:
+        rt = np.sqrt(x)
+        root = rt if branch > 0 else -rt
+        # the rod B − P1 along and across the guide: q = ±√x − i·e (|q| = l1 to rounding,
+        # with no cancellation near a tangent assembly, unlike B − P1)
+        q = wu.conjugate()
+        q.real = root
+    else:
+        rt = math.sqrt(x)
+        root = rt if branch > 0 else -rt
+        q = complex(root, -e)
+    B = (t0 + root) * u
+    if G0:
+        B = G0 + B
+    mi_rot = q * K  # K = u·conj(z_B − z_P1)/l1²: the rod's rotation
     if order < 1:
-        motion[i] = _placed(rot, P1, z1i, None, None, None, None, 0)
+        motion[i] = _placed(mi_rot, P1, z1i, None, None, None, None, 0)
         motion[j] = _placed(turn, B, zBj, None, None, None, None, 0)
         return True
-    # iωi r1 − ṡ u = −vP1 (the guide on the frame), by Cramer's rule as exact._System
-    cc1 = (1j * r1).conjugate()
-    det = (cc1 * -u).imag
-    adet = abs(det)
-    if (adet.min() if vec else adet) <= LOCK_SIN * l1:
-        return False
-    conditions[name] = l1 / adet
-    inv = 1.0 / det
-    k1 = cu * inv
-    k2 = cc1 * inv
-    wi, sd = (-vP1 * k1).imag, (-vP1 * k2).imag
+    # vB = vP1 + iωi r1 = ṡ u along and across the guide (V = vP1·conj(u)); the determinant
+    # of the system is q.real = ±√x (exact._System's)
+    cond = conditions[name] = l1 / rt
+    ninv = cond * (-1.0 / l1 if branch > 0 else 1.0 / l1)  # −1/det
+    V = vP1 * cu
+    qi = q.imag
+    wi = V.imag * ninv
+    sd = V.real - wi * qi
     ei = sdd = aB = None
     if order >= 2:
-        rhs = wi * wi * r1 - aP1
-        ei, sdd = (rhs * k1).imag, (rhs * k2).imag
+        A = aP1 * cu
+        w2 = wi * wi
+        ei = (A.imag - w2 * qi) * ninv
+        sdd = A.real - ei * qi - w2 * root
         aB = sdd * u
-    motion[i] = _placed(rot, P1, z1i, vP1, aP1, wi, ei, order)
+    motion[i] = _placed(mi_rot, P1, z1i, vP1, aP1, wi, ei, order)
     motion[j] = _placed(turn, B, zBj, sd * u, aB, 0.0, 0.0, order)
     slides[slide] = (sd, sdd)
+    return True
+
+
+def _rrp_many(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k: tuple, order: int,
+              vec: bool) -> bool:
+    """RRP groups on the same pin, each a row of (groups × positions) arrays: the formulas
+    of :func:`_rrp` with the constants as columns."""
+    _, p, zp, groups, l1, G0, u, cu, sgn, K, nl1, lock = k
+    P1, vP1, aP1 = _at(plan, motion, pins, p, zp, order)
+    wu = (P1 - G0) * cu
+    t0, e = wu.real, wu.imag
+    x = (l1 - e) * (l1 + e)
+    xm = x.min()
+    if xm < 0 or (order and xm <= lock):  # not assembled, or at or near a lock somewhere
+        return False
+    rt = np.sqrt(x)
+    root = rt * sgn
+    B = G0 + (t0 + root) * u
+    q = wu.conjugate()
+    q.real = root
+    rot = q * K
+    if order < 1:
+        for r, g in enumerate(groups):
+            motion[g[1]] = _placed(rot[r], P1, g[7], None, None, None, None, 0)
+            motion[g[2]] = _placed(g[8], B[r], g[9], None, None, None, None, 0)
+        return True
+    cond = l1 / rt
+    ninv = cond * nl1  # −1/det
+    V = vP1 * cu
+    qi = q.imag
+    wi = V.imag * ninv
+    sd = V.real - wi * qi
+    vB = sd * u
+    ei = sdd = aB = None
+    if order >= 2:
+        A = aP1 * cu
+        w2 = wi * wi
+        ei = (A.imag - w2 * qi) * ninv
+        sdd = A.real - ei * qi - w2 * root
+        aB = sdd * u
+    for r, g in enumerate(groups):
+        motion[g[1]] = _placed(rot[r], P1, g[7], vP1, aP1, wi[r], None if ei is None else ei[r], order)
+        motion[g[2]] = _placed(g[8], B[r], g[9], vB[r], None if aB is None else aB[r], 0.0, 0.0, order)
+        conditions[g[14]] = cond[r]
+        slides[g[15]] = (sd[r], None if sdd is None else sdd[r])
     return True
