@@ -107,6 +107,11 @@ def _local(scene: Scene, link: int, name: str) -> complex:
     return scene.frame_points[name] if link == scene.frame else scene.links[link].points[name]
 
 
+def _real(z: complex) -> complex | float:
+    """z as a real number where it is one (real by complex arrays is the cheaper product)."""
+    return z.real if z.imag == 0 else z
+
+
 def _make_plan(scene: Scene, st: Structure) -> Plan | None:
     steps: list[tuple] = []
     frame = scene.frame
@@ -123,7 +128,8 @@ def _make_plan(scene: Scene, st: Structure) -> Plan | None:
             zj = Lj.points[j2.point] - Lj.points[j3.point]
             l3 = abs(zj)
             steps.append((_rrr, i, j, p, _local(scene, p, j1.point), q, _local(scene, q, j3.point), l1, l3,
-                          zi.conjugate() / l1, zj.conjugate() / l3, Li.points[j1.point], Lj.points[j3.point],
+                          zi.conjugate() / (l1 * l1), _real(zj.conjugate() / l3), Li.points[j1.point],
+                          Lj.points[j3.point],
                           0.5 * (l1 * l1 - l3 * l3), g.branch, g.name, ASSEMBLY_REL * (l1 + l3), l1 * l3))
         elif g.kind == "RRP" and j3.guide is not None and j3.guide.link == frame:
             guide = j3.guide
@@ -131,7 +137,7 @@ def _make_plan(scene: Scene, st: Structure) -> Plan | None:
             steps.append((_rrp, i, j, p, _local(scene, p, j1.point), l1, zi.conjugate() / l1, Li.points[j1.point],
                           cmath.exp(1j * (guide.angle - j3.slider_angle)), Lj.points[j2.point], guide.origin, u,
                           u.conjugate(), g.branch, g.name, j3.name, u * zi.conjugate() / (l1 * l1),
-                          (LOCK_SIN * l1) ** 2 * 1.01))
+                          (2 * LOCK_SIN * l1) ** 2))
         else:
             return None
     return Plan(scene, steps)
@@ -229,16 +235,22 @@ def _rrr(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k
     P3, vP3, aP3 = _at(plan, motion, pins, q, zq, order)
     d = P3 - P1
     D = abs(d)
-    if (D.min() if vec else D) <= near:
+    Dm = D.min() if vec else D
+    if Dm <= near:
         return False
-    a = (half_diff + 0.5 * D * D) / D
+    invD = 1.0 / D
+    a = (half_diff + 0.5 * D * D) * invD
     x = (l1 - a) * (l1 + a)
-    if (x.min() if vec else x) < 0:
+    xm = x.min() if vec else x
+    # over arrays the lock (|r1 × r3| = h·D ≤ LOCK_SIN·l1·l3) is looked for here, with a margin
+    # (the general solvers decide at the limit)
+    if xm < 0 or (vec and order and xm <= (2 * LOCK_SIN * size / Dm) ** 2):
         return False
     h = np.sqrt(x) if vec else math.sqrt(x)
-    r1 = (a + 1j * h if branch > 0 else a - 1j * h) * (d / D)  # B − P1
+    r1 = (a + 1j * h if branch > 0 else a - 1j * h) * (d * invD)  # B − P1
     r3 = P1 + r1 - P3
-    roti = r1 * (ci / abs(r1))
+    # |r1| = l1 to rounding (from a and h, no cancellation); r3 is normalised as drawn
+    roti = r1 * ci
     rotj = r3 * (cj / abs(r3))
     if order < 1:
         motion[i] = _placed(roti, P1, z1i, None, None, None, None, 0)
@@ -249,7 +261,7 @@ def _rrr(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k
     cc1 = (1j * r1).conjugate()
     det = (cc1 * c2).imag
     adet = abs(det)
-    if (adet.min() if vec else adet) <= LOCK_SIN * size:
+    if not vec and adet <= LOCK_SIN * size:
         return False
     conditions[name] = size / adet
     inv = 1.0 / det
