@@ -44,9 +44,15 @@ def mu_force(fa: ForceAnalysis, values: list[complex]) -> float:
 def unit_vector(z: C) -> C:
     """z / |z|, and 1 where z = 0."""
     mag = np.abs(z)
-    return np.where(mag > 0, z / np.where(mag > 0, mag, 1.0), 1.0 + 0j)
+    some = mag > 0
+    if some.all():  # the usual case, in one division
+        return z / mag
+    return np.where(some, z / np.where(some, mag, 1.0), 1.0 + 0j)
 
 
 def safe_div(a: R, b: R) -> R:
     """a / b, and 0 where b = 0."""
-    return np.where(b != 0, a / np.where(b != 0, b, 1.0), 0.0)
+    nz = b != 0
+    if nz.all():  # the usual case, in one division
+        return a / b
+    return np.where(nz, a / np.where(nz, b, 1.0), 0.0)

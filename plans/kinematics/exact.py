@@ -98,14 +98,24 @@ class Kinematics:
         done = None if key is None else self._points.get(key)
         if done is None:
             m = self.motion[link]
-            rel = m.rot * z
-            r = m.r0 + rel
-            v = None if m.omega is None else m.v0 + 1j * m.omega * rel
-            a = None if m.eps is None else m.a0 + (1j * m.eps - m.omega**2) * rel
-            done = (r, v, a)
+            if type(m) is _Cols:  # what is the same at every position stays a number here
+                rot, r0, w, v0, e, a0 = m.raw()
+            else:
+                rot, r0, w, v0, e, a0 = m.rot, m.r0, m.omega, m.v0, m.eps, m.a0
+            rel = rot * z
+            r = r0 + rel
+            v = None if w is None else v0 + 1j * w * rel
+            a = None if e is None else a0 + (1j * e - w * w) * rel
+            done = (r, v, a) if type(r) is np.ndarray and (w is None or type(v) is np.ndarray) and \
+                (e is None or type(a) is np.ndarray) else self._arrays(r, v, a)
             if key is not None:
                 self._points[key] = done
         return done
+
+    def _arrays(self, *xs: Any) -> tuple:
+        n = self.n
+        return tuple(x if x is None or type(x) is np.ndarray else
+                     np.array((x,), dtype=complex) if n == 1 else np.full(n, x, dtype=complex) for x in xs)
 
     def point(self, name: str, link: int | None = None) -> tuple[C, C, C]:
         k = self.home(name) if link is None else link
@@ -388,6 +398,15 @@ class _Cols(_Motion):
     def __init__(self, n: int, vals: list) -> None:  # noqa: D107 - fields live in _vals
         self._n = n
         self._vals = vals
+
+    def raw(self) -> list:
+        """The six quantities as held: arrays, or numbers where the same at every position
+        (lists of numbers made arrays first)."""
+        vals = self._vals
+        for i, v in enumerate(vals):
+            if type(v) is list:
+                self._get(i)
+        return vals
 
     def _get(self, i: int) -> Any:
         v = self._vals[i]
