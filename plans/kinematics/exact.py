@@ -75,6 +75,21 @@ class Kinematics:
     #: the same points many times)
     _points: dict[tuple[int, complex], tuple[C, C, C]] = field(repr=False, compare=False, default_factory=dict)
 
+    def __getattr__(self, name: str) -> Any:
+        """The motions, slides and conditions of a solve at one position, made into arrays
+        when first read (the solve itself stays in Python numbers)."""
+        raw = self.__dict__.get("_raw") if name in ("motion", "slides", "conditions") else None
+        if raw is None:
+            raise AttributeError(name)
+        motion, slides, conditions = raw
+        d = self.__dict__
+        d["motion"] = _columns(1, motion)
+        d["slides"] = {nm: (np.array((sd,)), None if sdd is None else np.array((sdd,)))
+                       for nm, (sd, sdd) in slides.items()}
+        d["conditions"] = {g: np.array((c,)) for g, c in conditions.items()}
+        del d["_raw"]
+        return d[name]
+
     @property
     def n(self) -> int:
         return len(self.phi_deg)
@@ -166,7 +181,10 @@ def solve(scene: Scene, phi_deg=None, order: int | None = None,
         if type(phi) is float or type(phi) is int:
             res = fast.solve_one(fp, phi, order)
             if res is not None:
-                return _kinematics(scene, st, order, _columns(1, res[0]), *_one(float(phi), res[1], res[2]))
+                kin = object.__new__(Kinematics)
+                kin.__dict__.update(scene=scene, structure=st, phi_deg=np.array((float(phi),)), order=order,
+                                    _points={}, _raw=res)
+                return kin
     phis = np.atleast_1d(np.asarray(phi_deg, dtype=float))
     if fp is not None:
         res = _fast_runs(fp, phis, order) if len(phis) <= SCALAR_MAX else fast.solve_vec(fp, phis, order)
@@ -198,21 +216,6 @@ def _kinematics(scene: Scene, st: Structure, order: int, motion: dict, phis: Any
 
 def _columns(n: int, motion: dict) -> dict:
     return {lid: _Cols(n, m) for lid, m in motion.items()}
-
-
-def _one(phi: float, slides: dict, conditions: dict) -> tuple[Any, dict, dict]:
-    """The angle, slides and conditions of one position as arrays of one element: rows of
-    one array (numpy's cost per array made is what the one-position path avoids)."""
-    vals = [phi]
-    for sd, sdd in slides.values():
-        vals.append(sd)
-        if sdd is not None:
-            vals.append(sdd)
-    vals += conditions.values()
-    rows = iter(np.array(vals)[:, None])
-    phis = next(rows)
-    out_s = {nm: (next(rows), None if sdd is None else next(rows)) for nm, (_, sdd) in slides.items()}
-    return phis, out_s, {g: next(rows) for g in conditions}
 
 
 def _fast_runs(fp: fast.Plan, phis: Any, order: int) -> tuple[dict, dict, dict] | None:
