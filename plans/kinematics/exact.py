@@ -83,11 +83,12 @@ class Kinematics:
             raise AttributeError(name)
         motion, slides, conditions = raw
         d = self.__dict__
-        d["motion"] = _columns(1, motion)
-        d["slides"] = {nm: (np.array((sd,)), None if sdd is None else np.array((sdd,)))
-                       for nm, (sd, sdd) in slides.items()}
-        d["conditions"] = {g: np.array((c,)) for g, c in conditions.items()}
-        del d["_raw"]
+        if name == "motion":
+            d[name] = _columns(1, motion)
+        elif name == "slides":
+            d[name] = {nm: (np.array((sd,)), None if sdd is None else np.array((sdd,))) for nm, (sd, sdd) in slides.items()}
+        else:
+            d[name] = {g: np.array((c,)) for g, c in conditions.items()}
         return d[name]
 
     @property
@@ -127,10 +128,15 @@ class Kinematics:
                 self._points[key] = done
         return done
 
-    def _arrays(self, *xs: Any) -> tuple:
+    def _arrays(self, r: Any, v: Any, a: Any) -> tuple:
+        """r, v, a as arrays over the positions (a number: the same at each)."""
         n = self.n
-        return tuple(x if x is None or type(x) is np.ndarray else
-                     np.array((x,), dtype=complex) if n == 1 else np.full(n, x, dtype=complex) for x in xs)
+
+        def arr(x: Any) -> Any:
+            if x is None or type(x) is np.ndarray:
+                return x
+            return np.array((x,), dtype=complex) if n == 1 else np.full(n, x, dtype=complex)
+        return arr(r), arr(v), arr(a)
 
     def point(self, name: str, link: int | None = None) -> tuple[C, C, C]:
         k = self.home(name) if link is None else link

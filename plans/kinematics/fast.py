@@ -231,8 +231,17 @@ def _placed(rot: Any, anchor: Any, z: complex, v: Any, a: Any, omega: Any, eps: 
 def _rrr(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k: tuple, order: int,
          vec: bool) -> bool:
     _, i, j, p, zp, q, zq, l1, l3, ci, cj, z1i, z3j, half_diff, branch, name, near, size = k
-    P1, vP1, aP1 = _at(plan, motion, pins, p, zp, order)
-    P3, vP3, aP3 = _at(plan, motion, pins, q, zq, order)
+    P1: Any
+    vP1: Any
+    aP1: Any
+    if p == plan.frame:
+        P1, vP1, aP1 = zp, None, None
+    else:
+        P1, vP1, aP1 = _at(plan, motion, pins, p, zp, order)
+    if q == plan.frame:
+        P3, vP3, aP3 = zq, None, None
+    else:
+        P3, vP3, aP3 = _at(plan, motion, pins, q, zq, order)
     d = P3 - P1
     D = abs(d)
     Dm = D.min() if vec else D
