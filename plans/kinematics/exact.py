@@ -76,15 +76,16 @@ class Kinematics:
     _points: dict[tuple[int, complex], tuple[C, C, C]] = field(repr=False, compare=False, default_factory=dict)
 
     def __getattr__(self, name: str) -> Any:
-        """The motions, slides and conditions of a solve at one position, made into arrays
-        when first read (the solve itself stays in Python numbers)."""
+        """What the fast path solved, made into the readings' objects when first read: the
+        motions (and, at one position, the slides and conditions as arrays; the solve itself
+        stays in Python numbers)."""
         raw = self.__dict__.get("_raw") if name in ("motion", "slides", "conditions") else None
         if raw is None:
             raise AttributeError(name)
         motion, slides, conditions = raw
         d = self.__dict__
         if name == "motion":
-            d[name] = _columns(1, motion)
+            d[name] = _columns(len(self.phi_deg), motion)
         elif name == "slides":
             d[name] = {nm: (np.array((sd,)), None if sdd is None else np.array((sdd,))) for nm, (sd, sdd) in slides.items()}
         else:
@@ -195,7 +196,10 @@ def solve(scene: Scene, phi_deg=None, order: int | None = None,
     if fp is not None:
         res = _fast_runs(fp, phis, order) if len(phis) <= SCALAR_MAX else fast.solve_vec(fp, phis, order)
         if res is not None:
-            return _kinematics(scene, st, order, _columns(len(phis), res[0]), phis, res[1], res[2])
+            kin = object.__new__(Kinematics)
+            kin.__dict__.update(scene=scene, structure=st, phi_deg=phis, order=order, slides=res[1],
+                                conditions=res[2], _points={}, _raw=res)
+            return kin
     program = _program(scene, st)
     if len(phis) <= SCALAR_MAX:
         return _solve_scalar(scene, st, program, phis, order)
