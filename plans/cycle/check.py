@@ -41,11 +41,11 @@ from plans.errors import InputError
 from plans.forces.loads import apply_loads, parse_loads
 from plans.io import atomic_write, dumps, read_toml
 from plans.kinematics.exact import solve
-from plans.reader import Reader, _show
+from plans.reader import Reader, show
 from plans.scene.model import Scene, load_scene
 
 from .dynamics import dynamics, reduce
-from .spec import ANGLE_LIMIT_DEG
+from .spec import ANGLE_LIMIT_DEG, rotor_inertia
 
 _KEYS = {"phi_deg", "sign", "velocity_scale", "analogue_scale", "segment_mm", "rule_pct", "measured", "values",
          "flywheel"}
@@ -126,7 +126,7 @@ def _rows(path: str, raw: Any, where: str, n: int) -> dict[str, list[float | Non
             if v == "" or v == "-":
                 row.append(None)
             elif isinstance(v, bool) or not isinstance(v, int | float):
-                raise _fail(path, f, f"expected numbers (or \"-\" for none), got {_show(v)}")
+                raise _fail(path, f, f"expected numbers (or \"-\" for none), got {show(v)}")
             else:
                 row.append(Reader(path).value(v, f))
         out[name] = row
@@ -189,8 +189,7 @@ def check_cycle(path: str | Path) -> CycleReport:
     rule = rd.number(cyc, "rule_pct", "cycle.", default=5.0, positive=True)
     loads = parse_loads(scene)
     kin = solve(scene, phis_a, order=2)
-    spec_rotor = float(scene.raw.get("dynamics", {}).get("rotor_inertia", 0.0))
-    red = reduce(scene, loads, kin, spec_rotor)
+    red = reduce(scene, loads, kin, rotor_inertia(scene))
     w = abs(scene.driver.omega)
     exact_rows: dict[str, tuple[np.ndarray, str]] = {"I_pr": (red.I_pr, "kg*m^2"),
                                                       "M_pr": (red.M_pr * (1 if sign == "driving" else -1), "N*m")}
