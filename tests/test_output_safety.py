@@ -286,3 +286,16 @@ def test_console_script_runs_the_command():
                            "solve", "samples/slider_crank.toml", "--quiet"], cwd=ROOT, env=env,
                           capture_output=True, timeout=60)
     assert proc.returncode == 0 and proc.stderr == b""
+
+
+@pytest.mark.parametrize("name", ["slider_crank", "six_bar", "v_engine_cycle", "dynamics_slider_crank"])
+def test_json_written_in_pieces_is_the_whole_json_to_the_byte(name):
+    from plans.io import dumps
+    from plans.results import solve_scene, to_json, write_json
+    from plans.scene.model import load_scene
+
+    sol = solve_scene(load_scene(ROOT / "samples" / f"{name}.toml"))
+    pieces: list[str] = []
+    write_json(sol, pieces.append)
+    assert len(pieces) > sol.kinematics.n  # one piece per position, not one string
+    assert "".join(pieces) == dumps(to_json(sol))
