@@ -421,6 +421,7 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
     _make_folder(out)
     rows = []
     bad = 0
+    from plans.cycle import check as cycle_check
     from plans.progress import Progress
 
     progress = Progress(args.quiet)
@@ -428,10 +429,16 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
         progress(f"{k}/{len(files)} {f.name}")
         reports = {out / f"{f.stem}.json", out / f"{f.stem}.txt"}
         try:
-            report = check_file(f)
-            outputs: dict[Path, Any] = {out / f"{f.stem}.json": dumps(report.to_json()),
-                                        out / f"{f.stem}.txt": table(report) + "\n"}
-            outputs.update(_extra(args, report, f))
+            outputs: dict[Path, Any]
+            if cycle_check.is_cycle_check(f):  # cycle tables: a report, no marked sheet
+                crep = cycle_check.check_cycle(f)
+                outputs, row = cycle_check.outputs(crep, f, out), cycle_check.summary_row(str(f), crep)
+            else:
+                report = check_file(f)
+                outputs = {out / f"{f.stem}.json": dumps(report.to_json()),
+                           out / f"{f.stem}.txt": table(report) + "\n"}
+                outputs.update(_extra(args, report, f))
+                row = summary_row(str(f), report)
             for sub in sorted({p.parent for p in outputs}):
                 _make_folder(sub)
             write_all(outputs)
@@ -444,7 +451,7 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
             _after(args, f, False)
             continue
         _after(args, f, True)
-        rows.append(summary_row(str(f), report))
+        rows.append(row)
     atomic_write(Path(args.csv) if args.csv else out / "summary.csv", csv_text(rows))
     if not args.quiet:
         for r in rows:
