@@ -26,6 +26,7 @@ known image point plus its *similarity factor* f = (image of Y − image of X)/(
 from __future__ import annotations
 
 from collections.abc import Callable
+from functools import partial
 from typing import Any, Protocol
 
 import numpy as np
@@ -307,8 +308,7 @@ def link_points(b: Builder, link: int) -> None:
         b.add(lb, b.pencil.mark(xy, lambda link=link: image_span(b, link), joint=name in joints))
         b.labels[(link, name)] = lb
         ref = b.anchor[link][0]
-        b.step("similarity", (ref,), lb,
-               lambda lb=lb, link=link, name=name, ref=ref: phrase("similarity", lb=lb, link=link, name=name, ref=ref))
+        b.step("similarity", (ref,), lb, partial(phrase, "similarity", lb=lb, link=link, name=name, ref=ref))
         exact = np.abs(snap.v(link, X)) if b.sym == "v" else np.abs(snap.a(link, X))
         b.seg(b.pole, lb, "absolute", f"{b.sym}_{name}", exact)
 
