@@ -73,7 +73,7 @@ figcaption { font-size: .8em; padding: .1em .4em; border-bottom: 1px solid #eee;
 svg { width: 100%; height: auto; max-height: 58vh; display: block; }
 .forces { display: grid; grid-template-columns: repeat(auto-fit, minmax(12em, 1fr)); gap: .6em; margin-bottom: .6em; }
 .cycle .stage svg { max-height: 40vh; }
-.forces svg { max-height: 30vh; aspect-ratio: 1; }
+.forces svg { max-height: 30vh; aspect-ratio: 25 / 28; }
 .charts { display: grid; grid-template-columns: repeat(auto-fit, minmax(18em, 1fr)); gap: .6em; }
 svg.chart { max-height: 22vh; }
 .node { fill: #fff; stroke: #2c3e50; stroke-width: .4; }

@@ -340,14 +340,15 @@
     let x0 = 0, y0 = 0, x1 = 0, y1 = 0;
     for (const [x, y] of pts) { x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, -y); y1 = Math.max(y1, -y); }
     const side = Math.max(x1 - x0, y1 - y0, 1e-3) * 1.3, cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
-    svg.setAttribute("viewBox", [cx - side / 2, cy - side / 2, side, side].map(f3).join(" "));
+    // a strip under the drawing holds the scale bar (CSS keeps the panel at this aspect)
+    svg.setAttribute("viewBox", [cx - side / 2, cy - side / 2, side, side * 1.12].map(f3).join(" "));
     return [cx - side / 2, cy - side / 2, side];
   }
   function scaleBar(svg, box, mu, u) {
     const want = 0.25 * box[2] / mu;  // a quarter of the panel, in newtons
     const k = Math.pow(10, Math.floor(Math.log10(want)));
     const F0 = [5, 2, 1].map((m) => m * k).find((x) => x <= want) || k;
-    const x = box[0] + 0.04 * box[2], y = box[1] + box[2] * 0.96;
+    const x = box[0] + 0.04 * box[2], y = box[1] + box[2] * 1.09;
     el(svg, "line", {x1: f3(x), y1: f3(y), x2: f3(x + F0 * mu), y2: f3(y), class: "seg", "stroke-width": f3(0.6 * u),
       "data-bar": String(F0)});
     el(svg, "text", {x: f3(x), y: f3(y - 1.5 * u), "font-size": f3(4.5 * u), class: "label"},
