@@ -18,7 +18,7 @@
   // numbers and words as the page's language writes them (decimal comma, F_ур, Н)
   const nf = (x, digits) => String(Number(x.toPrecision(digits))).replace(".", T.decimal);
   const fixed = (x, digits) => x.toFixed(digits).replace(".", T.decimal);
-  const lab = (s) => String(s).replace(/\b([FM])_bal\b/g, (m) => T.labels[m] || m);
+  const lab = (s) => String(s).replace(/\b([FM])_bal\b/g, (m) => T.labels[m] || m).replace(/Phi/g, "Φ");
   const unit = (u) => T.units[u] || u;
   function fit(svg, boxes, pad) {
     let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
@@ -187,7 +187,7 @@
     drawPanel($("panel"), panel, revealed(cur), s, m);
     drawScheme($("scheme"), L.scheme, 0, s.scheme, s.links, schemeSize);
     $("counter").textContent = (cur + 1) + " / " + steps.length;
-    $("step-text").textContent = s.text;
+    $("step-text").textContent = lab(s.text);
     $("panel-title").textContent = panelTitle(panel) + ", μ = " + nf(panel.scale, 4) + " " + unit(panel.unit);
     $("back").disabled = cur === 0;
     $("next").disabled = cur === steps.length - 1;
@@ -198,23 +198,23 @@
     const box = $("mistakes");
     if (!L.mistakes.length) { box.hidden = true; return; }
     for (const m of L.mistakes) {
-      const lab = document.createElement("label");
+      const row = document.createElement("label");
       const cb = document.createElement("input");
       cb.type = "checkbox";
       cb.id = "mistake-" + m.id;
       cb.onchange = () => {
         for (const o of box.querySelectorAll("input")) if (o !== cb) o.checked = false;
         mistakeOn = cb.checked ? m : null;
-        $("mistake-text").textContent = cb.checked ? m.text : "";
+        $("mistake-text").textContent = cb.checked ? lab(m.text) : "";
         if (cb.checked) {
           let last = -1;
           steps.forEach((s, k) => { if (s.panel === m.panel) last = k; });
           go(last);
         } else go(cur);
       };
-      lab.appendChild(cb);
-      lab.appendChild(document.createTextNode(" " + (T.mistakes[m.id] || m.title)));
-      box.appendChild(lab);
+      row.appendChild(cb);
+      row.appendChild(document.createTextNode(" " + (T.mistakes[m.id] || m.title)));
+      box.appendChild(row);
     }
   }
 

@@ -455,6 +455,10 @@ def test_slider_moves_the_force_polygons_and_the_lever(browser, tmp_path):
     L = lesson(scene, frames=36)
     f.write_text(page(scene, frames=36, language="ru"), encoding="utf-8")
     pg, errors, requests = _open(browser, f)
+    pg.keyboard.press("End")  # the lever's equation, as the Russian page writes it
+    last = pg.inner_text("#step-text")
+    assert "ΣM_p = 0 на рычаге Жуковского" in last and "F_ур" in last and "Φ2" in last, last
+    assert not re.search(r"\b(lever|so|by|power)\b", last), last
     pg.click("#mode-cycle")
     mu = float(pg.get_attribute("#cyc-f-group-2-3", "data-mu"))
     mu_v = float(pg.get_attribute("#cyc-f-lever", "data-mu"))
