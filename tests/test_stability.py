@@ -349,3 +349,25 @@ def test_ram_guide_through_the_rocker_pivot_keeps_the_inertia_couple(tmp_path, y
     assert "NaN" not in "".join(pieces) and "Infinity" not in "".join(pieces)
     for f in sol.forces[0].applied.forces:
         assert np.all(np.isfinite(f.r)) and np.all(np.isfinite(f.F))
+
+
+def test_gas_force_at_a_dead_centre_solved_alone_is_the_one_of_the_whole_turn():
+    # At the dead centre the piston's velocity is round-off; the stroke that begins there is
+    # the acceleration's, whatever other positions are solved with it.
+    from plans.io import read_toml
+    from plans.results import solve_scene
+    from plans.scene.model import scene_from_dict
+
+    path = Path(__file__).resolve().parent.parent / "samples" / "v_engine.toml"
+    raw = read_toml(path)
+    gas = {}
+    for phis in ([0.0], [180.0], [float(p) for p in range(0, 360, 5)]):
+        raw["driver"]["phi_deg"] = phis
+        sol = solve_scene(scene_from_dict(raw, str(path)))
+        for phi in (0.0, 180.0):
+            if phi in phis:
+                gas.setdefault(phi, []).append({f.label: complex(f.F[phis.index(phi)])
+                                                for f in sol.forces[0].applied.forces if f.kind == "gas"})
+    for phi, seen in gas.items():
+        assert len(seen) == 2 and seen[0] == seen[1], phi
+    assert any(abs(F) > 0 for seen in gas.values() for F in seen[0].values())  # a gas force acts there

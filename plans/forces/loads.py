@@ -67,7 +67,7 @@ from numpy.typing import NDArray
 from plans.errors import ConstructionError, InputError
 from plans.reader import Reader, check_keys, did_you_mean
 from plans.scene.model import Scene
-from plans.units import LENGTH_UNITS
+from plans.units import DUST, LENGTH_UNITS
 
 C = NDArray[np.complex128]
 R = NDArray[np.float64]
@@ -573,8 +573,9 @@ def _gas_force(scene: Scene, kin: Any, gl: GasLoad) -> AppliedForce:
     # the acceleration says which stroke begins
     vd = (v * np.conj(e_down)).real
     ad = (a * np.conj(e_down)).real if a is not None else np.zeros_like(vd)
-    scale_v = np.max(np.abs(vd)) if vd.size else 0.0
-    moving = np.abs(vd) > 1e-12 * max(scale_v, 1e-300)
+    # zero up to round-off against the mechanism's own speed (ω × its reach), not against the
+    # positions asked for: a dead centre solved alone gives the same stroke as in the whole turn
+    moving = np.abs(vd) > DUST * abs(scene.driver.omega) * _extent(kin)
     down = np.where(moving, vd > 0, ad >= 0)
     if gl.pressure is not None:
         p = np.full(kin.n, gl.pressure)
