@@ -514,11 +514,14 @@ def apply_loads(scene: Scene, loads: Loads, kin: Any) -> AppliedLoads:
         phi = -m * a if m > 0 else np.zeros(n, complex)
         m_phi = -inert * kin.eps(lid) if inert > 0 else np.zeros(n)
         if loads.offset_inertia and m > 0:
-            # one force Φ offset from S so that its moment about S is M_Φ: d = −iΦ M_Φ/|Φ|² = −i M_Φ/Φ̄;
+            # one force Φ offset from S so that its moment about S is M_Φ: d = −iΦ M_Φ/|Φ|²;
             # where Φ vanishes (or is dust beside M_Φ: an offset a billion times the mechanism)
             # the couple stays a couple
-            ok = np.abs(m_phi) < 1e9 * _extent(kin) * np.abs(phi)
-            d = np.where(ok, -1j * m_phi / np.where(ok, np.conj(phi), 1.0), 0)
+            mag = np.abs(phi)
+            ok = np.abs(m_phi) < 1e9 * _extent(kin) * mag
+            safe = np.where(ok, mag, 1.0)  # real divisions only: no complex one to overflow inside
+            unit = phi.real / safe + 1j * (phi.imag / safe)
+            d = np.where(ok, -1j * (m_phi / safe) * unit, 0)
             local = z + d * np.conj(kin.motion[lid].rot)
             forces.append(AppliedForce(f"Phi{lid}", lid, f"{s_name}*", r + d, local, phi, "inertia"))
             rest = np.where(ok, 0.0, m_phi)
