@@ -42,12 +42,14 @@ def mu_force(fa: ForceAnalysis, values: list[complex]) -> float:
 
 
 def unit_vector(z: C) -> C:
-    """z / |z|, and 1 where z = 0."""
+    """z / |z|, and 1 where z = 0 (divided in real parts: numpy's complex division by a
+    subnormal |z| overflows inside)."""
     mag = np.abs(z)
     some = mag > 0
-    if some.all():  # the usual case, in one division
-        return z / mag
-    return np.where(some, z / np.where(some, mag, 1.0), 1.0 + 0j)
+    if some.all():  # the usual case: no zero to leave out
+        return np.real(z) / mag + 1j * (np.imag(z) / mag)
+    safe = np.where(some, mag, 1.0)
+    return np.where(some, np.real(z) / safe + 1j * (np.imag(z) / safe), 1.0 + 0j)
 
 
 def safe_div(a: R, b: R) -> R:
