@@ -77,13 +77,16 @@ class Kinematics:
 
     def __getattr__(self, name: str) -> Any:
         """What the fast path solved, made into the readings' objects when first read: the
-        motions (and, at one position, the slides and conditions as arrays; the solve itself
-        stays in Python numbers)."""
-        raw = self.__dict__.get("_raw") if name in ("motion", "slides", "conditions") else None
+        motions (and, at one position, the angle, slides and conditions as arrays; the solve
+        itself stays in Python numbers)."""
+        d = self.__dict__
+        if name == "phi_deg" and "_phi" in d:
+            arr = d[name] = np.array((d["_phi"],))
+            return arr
+        raw = d.get("_raw") if name in ("motion", "slides", "conditions") else None
         if raw is None:
             raise AttributeError(name)
         motion, slides, conditions = raw
-        d = self.__dict__
         if name == "motion":
             d[name] = _columns(len(self.phi_deg), motion)
         elif name == "slides":
@@ -189,8 +192,7 @@ def solve(scene: Scene, phi_deg=None, order: int | None = None,
             res = fast.solve_one(fp, phi, order)
             if res is not None:
                 kin = object.__new__(Kinematics)
-                kin.__dict__.update(scene=scene, structure=st, phi_deg=np.array((float(phi),)), order=order,
-                                    _points={}, _raw=res)
+                kin.__dict__.update(scene=scene, structure=st, _phi=float(phi), order=order, _points={}, _raw=res)
                 return kin
     phis = np.atleast_1d(np.asarray(phi_deg, dtype=float))
     if fp is not None:
