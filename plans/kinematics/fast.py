@@ -248,7 +248,7 @@ def _rrr(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k
     if Dm <= near:
         return False
     invD = 1.0 / D
-    a = (half_diff + 0.5 * D * D) * invD
+    a = half_diff * invD + 0.5 * D
     x = (l1 - a) * (l1 + a)
     xm = x.min() if vec else x
     # over arrays the lock (|r1 × r3| = h·D ≤ LOCK_SIN·l1·l3) is looked for here, with a margin
@@ -269,12 +269,13 @@ def _rrr(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k
     c2 = -1j * r3
     cc1 = (1j * r1).conjugate()
     det = (cc1 * c2).imag
-    adet = abs(det)
-    if not vec and adet <= LOCK_SIN * size:
+    if not vec and abs(det) <= LOCK_SIN * size:
         return False
-    conditions[name] = size / adet
     inv = 1.0 / det
-    k1 = (-c2).conjugate() * inv
+    cond = abs(inv)
+    cond *= size  # |c1||c2| / |det|
+    conditions[name] = cond
+    k1 = c2.conjugate() * -inv
     k2 = cc1 * inv
     rhs = -vP1 if vP3 is None else vP3 if vP1 is None else vP3 - vP1
     wi, wj = (rhs * k1).imag, (rhs * k2).imag
