@@ -213,3 +213,20 @@ def test_what_does_not_assemble_is_named_alike_on_every_path(case, order, monkey
             monkeypatch.undo()
     assert msgs[0::2] == msgs[1::2]  # fast path or not, the same error
     assert f"phi = {bad:g} deg" in msgs[0]
+
+
+def test_one_position_reads_like_any_other():
+    """One position solved in Python numbers reads as arrays of one element, copies and
+    compares like any Kinematics, and has no attribute it should not have."""
+    import copy
+
+    sc = reference.four_bar_scene(0.05, 0.2, 0.15, 0.18, 10.0)
+    one = exact.solve(sc, [30.0], order=2)
+    assert not hasattr(one, "not_a_field")
+    twin = copy.deepcopy(one)
+    assert isinstance(one.phi_deg, np.ndarray) and one.phi_deg.tolist() == [30.0] and one.n == 1
+    assert "phi_deg=array([30.])" in repr(one)
+    for k in (one, twin):
+        assert all(isinstance(x, np.ndarray) and x.shape == (1,) for x in k.point("B"))
+        assert all(c.shape == (1,) for c in k.conditions.values())
+    assert np.array_equal(one.point("B")[2], twin.point("B")[2])

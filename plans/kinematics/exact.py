@@ -20,7 +20,7 @@ from __future__ import annotations
 import cmath
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -75,25 +75,10 @@ class Kinematics:
     #: the same points many times)
     _points: dict[tuple[int, complex], tuple[C, C, C]] = field(repr=False, compare=False, default_factory=dict)
 
-    def __getattr__(self, name: str) -> Any:
-        """What the fast path solved, made into the readings' objects when first read: the
-        motions (and, at one position, the angle, slides and conditions as arrays; the solve
-        itself stays in Python numbers)."""
-        d = self.__dict__
-        if name == "phi_deg" and "_phi" in d:
-            arr = d[name] = np.array((d["_phi"],))
-            return arr
-        raw = d.get("_raw") if name in ("motion", "slides", "conditions") else None
-        if raw is None:
-            raise AttributeError(name)
-        motion, slides, conditions = raw
-        if name == "motion":
-            d[name] = _columns(len(self.phi_deg), motion)
-        elif name == "slides":
-            d[name] = {nm: (np.array((sd,)), None if sdd is None else np.array((sdd,))) for nm, (sd, sdd) in slides.items()}
-        else:
-            d[name] = {g: np.array((c,)) for g, c in conditions.items()}
-        return d[name]
+    if not TYPE_CHECKING:  # the type checker sees the fields, not how they are filled
+
+        def __getattr__(self, name: str) -> Any:
+            return _unpacked(self, name)
 
     @property
     def n(self) -> int:
@@ -166,6 +151,27 @@ class Kinematics:
                 if nm not in names:
                     names.append(nm)
         return names
+
+
+def _unpacked(kin: Kinematics, name: str) -> Any:
+    """What the fast path solved, made into the readings' objects when first read: the
+    motions (and, at one position, the angle, slides and conditions as arrays; the solve
+    itself stays in Python numbers)."""
+    d = kin.__dict__
+    if name == "phi_deg" and "_phi" in d:
+        arr = d[name] = np.array((d["_phi"],))
+        return arr
+    raw = d.get("_raw") if name in ("motion", "slides", "conditions") else None
+    if raw is None:
+        raise AttributeError(name)
+    motion, slides, conditions = raw
+    if name == "motion":
+        d[name] = _columns(len(kin.phi_deg), motion)
+    elif name == "slides":
+        d[name] = {nm: (np.array((sd,)), None if sdd is None else np.array((sdd,))) for nm, (sd, sdd) in slides.items()}
+    else:
+        d[name] = {g: np.array((c,)) for g, c in conditions.items()}
+    return d[name]
 
 
 def solve(scene: Scene, phi_deg=None, order: int | None = None,
