@@ -324,20 +324,21 @@ def _rrp(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k
         motion[i] = _placed(mi_rot, P1, z1i, None, None, None, None, 0)
         motion[j] = _placed(turn, B, zBj, None, None, None, None, 0)
         return True
-    # vB = vP1 + iωi r1 = ṡ u along and across the guide (V = vP1·conj(u)); the determinant
-    # of the system is q.real = ±√x (exact._System's)
-    cond = conditions[name] = l1 / rt
-    ninv = cond * (-1.0 / l1 if branch > 0 else 1.0 / l1)  # −1/det
-    V = vP1 * cu
-    qi = q.imag
-    wi = V.imag * ninv
-    sd = V.real - wi * qi
+    # iωi r1 − ṡ u = −vP1 (the guide on the frame), by Cramer's rule with exact._System's
+    # numbers (a dead centre's exact zeros kept)
+    r1 = B - P1
+    cc1 = (1j * r1).conjugate()
+    det = (cc1 * -u).imag
+    conditions[name] = l1 / abs(det)
+    inv = 1.0 / det
+    k1 = cu * inv
+    k2 = cc1 * inv
+    nv = -vP1
+    wi, sd = (nv * k1).imag, (nv * k2).imag
     ei = sdd = aB = None
     if order >= 2:
-        A = aP1 * cu
-        w2 = wi * wi
-        ei = (A.imag - w2 * qi) * ninv
-        sdd = A.real - ei * qi - w2 * root
+        rhs = wi * wi * r1 - aP1
+        ei, sdd = (rhs * k1).imag, (rhs * k2).imag
         aB = sdd * u
     motion[i] = _placed(mi_rot, P1, z1i, vP1, aP1, wi, ei, order)
     motion[j] = _placed(turn, B, zBj, sd * u, aB, 0.0, 0.0, order)
@@ -368,19 +369,20 @@ def _rrp_many(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: di
             motion[g[1]] = _placed(rot[r], P1, g[7], None, None, None, None, 0)
             motion[g[2]] = _placed(g[8], B[r], g[9], None, None, None, None, 0)
         return True
-    cond = l1 / rt
-    ninv = cond * nl1  # −1/det
-    V = vP1 * cu
-    qi = q.imag
-    wi = V.imag * ninv
-    sd = V.real - wi * qi
+    r1 = B - P1
+    cc1 = (1j * r1).conjugate()
+    det = (cc1 * -u).imag
+    cond = l1 / abs(det)
+    inv = 1.0 / det
+    k1 = cu * inv
+    k2 = cc1 * inv
+    nv = -vP1
+    wi, sd = (nv * k1).imag, (nv * k2).imag
     vB = sd * u
     ei = sdd = aB = None
     if order >= 2:
-        A = aP1 * cu
-        w2 = wi * wi
-        ei = (A.imag - w2 * qi) * ninv
-        sdd = A.real - ei * qi - w2 * root
+        rhs = wi * wi * r1 - aP1
+        ei, sdd = (rhs * k1).imag, (rhs * k2).imag
         aB = sdd * u
     for r, g in enumerate(groups):
         motion[g[1]] = _placed(rot[r], P1, g[7], vP1, aP1, wi[r], None if ei is None else ei[r], order)
