@@ -84,8 +84,7 @@ def _batches(steps: list) -> list:
                 out.append((_rrp_many, run[0][3], run[0][4], tuple(run),
                             col([[m[5]] for m in run]), col([[m[10]] for m in run]), col([[m[11]] for m in run]),
                             col([[m[12]] for m in run]), col([[1.0 if m[13] > 0 else -1.0] for m in run]),
-                            col([[m[16]] for m in run]), col([[(-1.0 if m[13] > 0 else 1.0) / m[5]] for m in run]),
-                            max(m[17] for m in run)))
+                            col([[m[16]] for m in run]), max(m[17] for m in run)))
             run = []
         if st is not None:
             if st[0] is _rrp:
@@ -300,8 +299,8 @@ def _rrp(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k
     wu = (P1 - G0) * cu if G0 else P1 * cu  # t0 + i·e: P1 along and across the guide
     t0, e = wu.real, wu.imag
     x = (l1 - e) * (l1 + e)
-    # the system's determinant below is ±√x: a lock is √x ≤ LOCK_SIN·l1 (checked here, with a
-    # margin: the general solvers decide at the limit)
+    # the system's determinant below is ±√x to rounding: a lock is √x ≤ LOCK_SIN·l1 (looked
+    # for here, with a margin: the general solvers decide at the limit)
     xm = x.min() if vec else x
     if xm < 0 or (order and xm <= lock):
         return False
@@ -350,7 +349,7 @@ def _rrp_many(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: di
               vec: bool) -> bool:
     """RRP groups on the same pin, each a row of (groups × positions) arrays: the formulas
     of :func:`_rrp` with the constants as columns."""
-    _, p, zp, groups, l1, G0, u, cu, sgn, K, nl1, lock = k
+    _, p, zp, groups, l1, G0, u, cu, sgn, K, lock = k
     P1, vP1, aP1 = _at(plan, motion, pins, p, zp, order)
     wu = (P1 - G0) * cu
     t0, e = wu.real, wu.imag
