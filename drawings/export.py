@@ -5,7 +5,7 @@ from __future__ import annotations
 import os
 from collections.abc import Callable, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from plans.errors import OutputError
 from plans.io import atomic_write  # noqa: F401  (re-exported by drawings)
@@ -24,12 +24,13 @@ def svg_bytes(sheet: Sheet) -> bytes:
 PDF_DATE = "2000-01-01T00:00:00Z"
 
 
-def pdf_bytes(svg: bytes, title: str = "") -> bytes:
-    """SVG -> PDF at 1:1 (the page is the sheet in points), with fixed metadata."""
-    import io
-
+def pdf_bytes(svg: bytes | Any, title: str = "") -> bytes:
+    """SVG -> PDF at 1:1 (the page is the sheet in points), with fixed metadata; ``svg`` is
+    the document's bytes or its tree parsed once (:func:`drawings.convert.tree`)."""
     import cairocffi
     from cairosvg.surface import PDFSurface
+
+    from . import convert
 
     class _Pdf(PDFSurface):
         def _create_surface(self, width, height):
@@ -40,17 +41,16 @@ def pdf_bytes(svg: bytes, title: str = "") -> bytes:
                 surface.set_metadata(cairocffi.PDF_METADATA_TITLE, title)
             return surface, w, h
 
-    out = io.BytesIO()
-    _Pdf.convert(bytestring=svg, write_to=out)
-    return out.getvalue()
+    return convert.draw(_Pdf, convert.tree(svg) if isinstance(svg, bytes) else svg)
 
 
-def png_bytes(svg: bytes, dpi: float) -> bytes:
-    """SVG -> PNG: cairosvg draws the page, the pixels are written here (cairo's own PNG
-    writer, with libpng's adaptive filters, took as long as drawing an A1 sheet)."""
-    import io
-
+def png_bytes(svg: bytes | Any, dpi: float) -> bytes:
+    """SVG -> PNG (bytes or a parsed tree, as :func:`pdf_bytes`): cairosvg draws the page,
+    the pixels are written here (cairo's own PNG writer, with libpng's adaptive filters,
+    took as long as drawing an A1 sheet)."""
     from cairosvg.surface import PNGSurface, Surface
+
+    from . import convert
 
     class _Png(PNGSurface):
         def finish(self):
@@ -59,9 +59,7 @@ def png_bytes(svg: bytes, dpi: float) -> bytes:
                 self.output.write(encode_png(self.cairo))
             return Surface.finish(self)
 
-    out = io.BytesIO()
-    _Png.convert(bytestring=svg, write_to=out, dpi=dpi)
-    return out.getvalue()
+    return convert.draw(_Png, convert.tree(svg) if isinstance(svg, bytes) else svg, dpi)
 
 
 def encode_png(surface) -> bytes:
@@ -109,9 +107,17 @@ def render(sheets: Sequence[Sheet], outdir: str | Path, stem: str, formats: Sequ
     for sh in sheets:
         name = stem if len(sheets) == 1 else f"{stem}-{sh.number}"
         svg = svg_bytes(sh)
+        doc = None  # parsed once for both PDF and PNG
         for f in formats:
             p = out / f"{name}.{f}"
-            files[p] = svg if f == "svg" else pdf_bytes(svg) if f == "pdf" else png_bytes(svg, dpi)
+            if f == "svg":
+                files[p] = svg
+                continue
+            if doc is None:
+                from .convert import tree
+
+                doc = tree(svg)
+            files[p] = pdf_bytes(doc) if f == "pdf" else png_bytes(doc, dpi)
         if progress is not None:
             progress(f"sheet {sh.number} of {len(sheets)} drawn ({', '.join(formats)})")
     return files
