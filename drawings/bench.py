@@ -11,6 +11,7 @@ panels, layout) per sheet, and, for a second scene, its cycle diagrams sheet to 
 
 from __future__ import annotations
 
+import functools
 import json
 import os
 import statistics
@@ -21,7 +22,7 @@ from typing import Any
 
 from plans.scene.model import load_scene
 
-from .export import pdf_bytes, png_bytes
+from .export import pdf_bytes, png_bytes, svg_bytes
 from .linkage import build_panels, draw
 from .panels import ratio_text
 from .sheet import compose, sheet_spec
@@ -74,9 +75,9 @@ def sheet_seconds(path: str, repeat: int = 3) -> dict[str, Any]:
     for sh in sheets:
         svg = sh.svg().encode("utf-8")
         out["svg_bytes"].append(len(svg))
-        out["svg_s"].append(_median(lambda sh=sh: sh.svg().encode("utf-8"), repeat))
-        out["pdf_s"].append(_median(lambda svg=svg: pdf_bytes(svg), repeat))
-        out["png_s"].append(_median(lambda svg=svg: png_bytes(svg, PNG_DPI), repeat))
+        out["svg_s"].append(_median(functools.partial(svg_bytes, sh), repeat))
+        out["pdf_s"].append(_median(functools.partial(pdf_bytes, svg), repeat))
+        out["png_s"].append(_median(functools.partial(png_bytes, svg, PNG_DPI), repeat))
     return out
 
 
