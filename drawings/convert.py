@@ -1,38 +1,41 @@
-"""SVG -> PDF and PNG with cairosvg, the sheets' text drawn faster, the page unchanged.
+"""SVG -> PDF and PNG with cairosvg, the sheets' labels drawn faster, the page unchanged.
 
-cairosvg draws a ``text`` twice: once as glyph outlines added to the path (for a stroke),
-once as glyphs (the fill), each letter with its own save, moves, rotation, measure and
-restore.  Our labels have no stroke, no per-letter offsets, rotations or spacing, no
-anchor and no text path: for such a node the outlines are never painted (cairo paints
-nothing with a clear source) and the glyphs stand at ``x``, ``x + advance``, ... .
-:func:`_text` draws exactly that with the same cairo calls for the glyphs (move to the
-letter's point, show the letter) and each letter's advance measured once per font; any
-other node goes to cairosvg's own drawer.  The pixels (tests compare them with cairosvg's
-own rendering) and the PDF's bytes are the same.
+cairosvg draws every ``text`` and ``tspan`` through its general node drawer (transforms,
+clips, masks, dashes, markers, font options, a stroke pass) and draws the letters twice:
+as outlines added to the path (for a stroke) and as glyphs (the fill), each letter with
+its own save, moves, rotation, measure and restore.  The labels of our sheets have none
+of that: no stroke (cairo paints nothing with a clear source, so the outlines are never
+seen), no transform, opacity, clip or filter, no per-letter offsets, rotations or
+spacing, no anchor and no text path.  For such a node :func:`_label` makes the cairo
+calls that leave a mark, in the same order with the same numbers: the fill colour, the
+font, and for each letter a move to its point and the letter shown (each letter's
+advance measured once per font); the glyphs stand at ``x``, ``x + advance``, ... as in
+cairosvg.  Every other node goes through cairosvg as it is.  The pixels of a PNG and the
+bytes of a PDF are those of cairosvg's own drawing (the tests compare them).
 
-The document is parsed once and drawn on each surface asked for (:func:`convert`).
+The document is parsed once and can be drawn on several surfaces (:func:`tree`,
+:func:`draw`).
 """
 
 from __future__ import annotations
 
 import io
-import threading
-from collections.abc import Iterator
-from contextlib import contextmanager
 from typing import Any
 
-#: Attributes of a text node that the fast drawer leaves to cairosvg.
-_OWN = ("dx", "dy", "rotate", "letter-spacing", "text-anchor", "display-anchor", "dominant-baseline",
-        "alignment-baseline", "font-style", "font-weight", "textLength", "lengthAdjust")
-_CLEAR_STROKES = (None, "", "none", "transparent")
-_LOCK = threading.RLock()
+#: Attributes that send a text node to cairosvg's own drawer.
+_OWN = frozenset(("dx", "dy", "rotate", "letter-spacing", "text-anchor", "display-anchor",
+                  "dominant-baseline", "alignment-baseline", "font-style", "font-weight", "font",
+                  "textLength", "lengthAdjust", "transform", "transform-origin", "opacity", "mask",
+                  "filter", "clip", "clip-path", "display", "visibility", "text-rendering",
+                  "shape-rendering", "fill-rule", "width", "height"))
+_CLEAR = (None, "", "none", "transparent")
 
 
 def _plain(surface: Any, node: Any) -> bool:
-    """A label our sheets write: one x and one y at most, plain fill, no stroke."""
-    if node.tag not in ("text", "tspan") or any(k in node for k in _OWN):
+    """A label as our sheets write it (see the module's note)."""
+    if node.tag not in ("text", "tspan") or not _OWN.isdisjoint(node):
         return False
-    if node.get("stroke") not in _CLEAR_STROKES or "url(" in (node.get("fill") or ""):
+    if node.get("stroke") not in _CLEAR or "url(" in (node.get("fill") or ""):
         return False
     parent = getattr(node, "parent", None)
     if node.get_href() or (parent is not None and parent.get_href()):
@@ -41,61 +44,61 @@ def _plain(surface: Any, node: Any) -> bool:
         v = node.get(key)
         if v is not None and len(str(v).replace(",", " ").split()) > 1:
             return False
-    return list(surface.cursor_d_position) == [0, 0]
+    return surface.stroke_and_fill and list(surface.cursor_d_position) == [0, 0]
 
 
-def _text(surface: Any, node: Any, draw_as_text: bool = False) -> None:
-    """cairosvg's ``text`` for a plain label (see the module's note), its own otherwise."""
-    from cairosvg import text as _cs_text
-    from cairosvg.helpers import size
+def _label(surface: Any, node: Any) -> None:
+    """What cairosvg's node drawer and its ``text`` leave on the page for a plain label."""
+    from cairosvg.helpers import paint, size
 
-    if not _plain(surface, node):
-        _cs_text.text(surface, node, draw_as_text)
-        return
+    ctx = surface.context
+    saved = surface.parent_node, surface.font_size, surface.context_width, surface.context_height
+    surface.parent_node = node
+    surface.font_size = size(surface, node.get("font-size", "12pt"))
+    ctx.save()
     x = size(surface, node["x"], "x") if "x" in node else None
     y = size(surface, node["y"], "y") if "y" in node else None
-    letters = node.text
-    if not letters:
-        cx, cy = surface.cursor_position
-        surface.cursor_position = (cx if x is None else x, cy if y is None else y)
-        return
-    ctx = surface.context
-    family = (node.get("font-family") or "sans-serif").split(",")[0].strip("\"' ")
-    font_size = surface.font_size
-    cache = surface.__dict__.setdefault("_advances", {})
-    key = (family, font_size, tuple(ctx.get_matrix()))
-    adv = cache.get(key)
-    if adv is None:
-        adv = cache[key] = {}
-    ctx.select_font_face(family, 0, 0)  # FONT_SLANT_NORMAL, FONT_WEIGHT_NORMAL
-    ctx.set_font_size(font_size)
     cx, cy = surface.cursor_position
     px = cx if x is None else x
     py = cy if y is None else y
-    for letter in letters:
-        a = adv.get(letter)
-        if a is None:
-            a = adv[letter] = ctx.text_extents(letter)[4]
-        if draw_as_text and not letter.isspace():
-            ctx.move_to(px, py)
-            ctx.show_text(letter)
-        px += a
+    if node.text:
+        ctx.save()
+        _, colour = paint(node.get("fill", "black"))
+        ctx.set_source_rgba(*surface.map_color(colour, float(node.get("fill-opacity", 1))))
+        family = (node.get("font-family") or "sans-serif").split(",")[0].strip("\"' ")
+        ctx.select_font_face(family, 0, 0)  # FONT_SLANT_NORMAL, FONT_WEIGHT_NORMAL
+        ctx.set_font_size(surface.font_size)
+        cache = surface.__dict__.setdefault("_advances", {})
+        adv = cache.setdefault((family, surface.font_size, tuple(ctx.get_matrix())), {})
+        for letter in node.text:
+            a = adv.get(letter)
+            if a is None:
+                a = adv[letter] = ctx.text_extents(letter)[4]
+            if not letter.isspace():
+                ctx.move_to(px, py)
+                ctx.show_text(letter)
+            px += a
+        ctx.restore()
     surface.cursor_position = (px, py)
+    ctx.new_path()  # cairosvg's (clear) stroke ends the node's path
+    for child in node.children:
+        surface.draw(child)
+    if node.tag == "text":
+        surface.cursor_position = [0, 0]
+        surface.cursor_d_position = [0, 0]
+        surface.text_path_width = 0
+    ctx.restore()
+    surface.parent_node, surface.font_size, surface.context_width, surface.context_height = saved
 
 
-@contextmanager
-def _fast_text() -> Iterator[None]:
-    """cairosvg's surfaces use :func:`_text` for ``text`` and ``tspan`` while converting
-    (restored after: other callers in the process get cairosvg as it is)."""
-    from cairosvg import surface as cs
+class Labels:
+    """Mixed into a cairosvg surface class: plain labels drawn by :func:`_label`."""
 
-    with _LOCK:
-        saved = cs.TAGS["text"], cs.TAGS["tspan"], cs.text
-        cs.TAGS["text"] = cs.TAGS["tspan"] = cs.text = _text
-        try:
-            yield
-        finally:
-            cs.TAGS["text"], cs.TAGS["tspan"], cs.text = saved
+    def draw(self, node: Any) -> None:
+        if node.tag in ("text", "tspan") and _plain(self, node):
+            _label(self, node)
+        else:
+            super().draw(node)  # type: ignore[misc]
 
 
 def tree(svg: bytes) -> Any:
@@ -106,9 +109,9 @@ def tree(svg: bytes) -> Any:
 
 
 def draw(surface_class: Any, doc: Any, dpi: float = 96.0) -> bytes:
-    """The document drawn on a cairosvg surface class (PDF, PNG, ...): its output bytes."""
+    """The document drawn on a cairosvg surface class (PDF, PNG, ...) with :class:`Labels`
+    mixed in: its output bytes."""
     out = io.BytesIO()
-    with _fast_text():
-        instance = surface_class(doc, out, dpi, None, None, None, 1, None, None, None)
-        instance.finish()
+    cls = type(surface_class.__name__, (Labels, surface_class), {})
+    cls(doc, out, dpi, None, None, None, 1, None, None, None).finish()
     return out.getvalue()

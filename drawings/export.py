@@ -71,26 +71,35 @@ def encode_png(surface) -> bytes:
     import numpy as np
 
     w, h, stride = surface.get_width(), surface.get_height(), surface.get_stride()
-    px = np.frombuffer(surface.get_data(), np.uint8).reshape(h, stride)[:, :4 * w].reshape(h, w, 4)
+    argb = np.frombuffer(surface.get_data(), np.uint32).reshape(h, stride // 4)[:, :w]
     raw = np.zeros((h, 1 + 4 * w), np.uint8)  # a 0 (no filter) before every row
-    rgba = raw[:, 1:].reshape(h, w, 4)
-    # cairo keeps premultiplied B, G, R, A in a little-endian word: bytes B G R A
-    for dst, src in ((0, 2), (1, 1), (2, 0), (3, 3)):
-        rgba[..., dst] = px[..., src]
-    alpha = px[..., 3]
-    part = (alpha > 0) & (alpha < 255)
-    if part.any():  # cairo's unpremultiply: (c·255 + a/2) / a, integer
-        a = alpha[part].astype(np.uint32)
-        for dst in range(3):
-            c = rgba[..., dst][part].astype(np.uint32)
-            rgba[..., dst][part] = ((c * 255 + a // 2) // a).astype(np.uint8)
-    rgba[alpha == 0] = 0
+    # cairo keeps premultiplied A R G B in a native (little-endian) word, bytes B G R A:
+    # G and A stay, B and R swap
+    rgba = np.bitwise_and(argb, 0xFF00FF00)
+    part = np.right_shift(argb, 16)
+    part &= 0xFF
+    rgba |= part
+    np.left_shift(argb, 16, out=part)
+    part &= 0xFF0000
+    rgba |= part
+    odd = np.flatnonzero(np.right_shift(argb, 24, out=part) != 255)
+    if odd.size:  # cairo's unpremultiply: (c·255 + a/2) / a, integer; 0 where a = 0
+        flat = rgba.reshape(-1)
+        px = flat[odd]
+        a = px >> 24
+        seen = np.maximum(a, 1)
+        out = a << 24
+        for shift in (0, 8, 16):
+            c = (px >> shift) & 0xFF
+            out |= np.where(a > 0, (c * 255 + seen // 2) // seen, 0) << shift
+        flat[odd] = out
+    raw[:, 1:] = rgba.view(np.uint8).reshape(h, 4 * w)
 
     def chunk(kind: bytes, data: bytes) -> bytes:
         return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
 
     return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 6, 0, 0, 0))
-            + chunk(b"IDAT", zlib.compress(raw.tobytes(), 3)) + chunk(b"IEND", b""))
+            + chunk(b"IDAT", zlib.compress(raw, 3)) + chunk(b"IEND", b""))
 
 
 def render(sheets: Sequence[Sheet], outdir: str | Path, stem: str, formats: Sequence[str] = ("svg",),
