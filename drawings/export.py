@@ -99,7 +99,7 @@ def encode_png(surface) -> bytes:
         return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
 
     return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 6, 0, 0, 0))
-            + chunk(b"IDAT", zlib.compress(raw, 3)) + chunk(b"IEND", b""))
+            + chunk(b"IDAT", zlib.compress(raw.data, 3)) + chunk(b"IEND", b""))
 
 
 def render(sheets: Sequence[Sheet], outdir: str | Path, stem: str, formats: Sequence[str] = ("svg",),
