@@ -50,8 +50,10 @@ class Panel:
     def svg(self, debug: bool = False) -> str:
         """The panel alone as an SVG document in true millimetres."""
         from .backend import replay
-        from .svg import SvgBackend
+        from .svg import SvgBackend, document
 
+        if not debug:
+            return document(self.width, self.height, self.prims)
         be = SvgBackend(self.width, self.height, debug=debug)
         replay(self.prims, be)
         return be.tostring()
