@@ -91,12 +91,80 @@ def _label(surface: Any, node: Any) -> None:
     surface.parent_node, surface.font_size, surface.context_width, surface.context_height = saved
 
 
+#: What sends a group or a shape to cairosvg's own drawer.
+_SHAPE_OWN = frozenset(("transform", "transform-origin", "opacity", "mask", "filter", "clip", "clip-path",
+                        "display", "visibility", "shape-rendering", "text-rendering", "fill-rule", "font",
+                        "width", "height", "marker", "marker-start", "marker-mid", "marker-end"))
+_SHAPES = ("g", "line", "path", "circle")
+
+
+def _plain_shape(surface: Any, node: Any) -> bool:
+    """A group or a line, path or circle as our sheets write them: no transform, opacity,
+    clip, mask, filter, marker or paint server."""
+    return (surface.stroke_and_fill and _SHAPES.count(node.tag) > 0 and _SHAPE_OWN.isdisjoint(node)
+            and "url(" not in (node.get("fill") or "") and "url(" not in (node.get("stroke") or ""))
+
+
+def _shape(surface: Any, node: Any) -> None:
+    """What cairosvg's node drawer leaves on the page for a plain group or shape: the same
+    state (join, cap, dashes, miter) and, for a shape, its path from cairosvg's own
+    function, filled then stroked; without the transform, clip, mask, marker, font and
+    cursor bookkeeping such a node does not use."""
+    import cairocffi as cairo
+    from cairosvg.helpers import PointError, normalize, paint, size
+    from cairosvg.surface import TAGS
+
+    ctx = surface.context
+    saved = surface.parent_node, surface.font_size, surface.context_width, surface.context_height
+    surface.parent_node = node
+    surface.font_size = size(surface, node.get("font-size", "12pt"))
+    ctx.save()
+    ctx.move_to(size(surface, node.get("x"), "x"), size(surface, node.get("y"), "y"))
+    cap, join = node.get("stroke-linecap"), node.get("stroke-linejoin")
+    if cap == "square":
+        ctx.set_line_cap(cairo.LINE_CAP_SQUARE)
+    if cap == "round":
+        ctx.set_line_cap(cairo.LINE_CAP_ROUND)
+    if join == "round":
+        ctx.set_line_join(cairo.LINE_JOIN_ROUND)
+    if join == "bevel":
+        ctx.set_line_join(cairo.LINE_JOIN_BEVEL)
+    if node.get("stroke-dasharray"):
+        dashes = [size(surface, d) for d in normalize(node["stroke-dasharray"]).split()]
+        if sum(dashes):
+            ctx.set_dash(dashes, size(surface, node.get("stroke-dashoffset")))
+    ctx.set_miter_limit(float(node.get("stroke-miterlimit", 4)))
+    if node.tag != "g":
+        try:
+            TAGS[node.tag](surface, node)
+        except PointError:
+            pass
+        ctx.save()
+        _, colour = paint(node.get("fill", "black"))
+        ctx.set_source_rgba(*surface.map_color(colour, float(node.get("fill-opacity", 1))))
+        ctx.fill_preserve()
+        ctx.restore()
+        ctx.save()
+        ctx.set_line_width(size(surface, node.get("stroke-width", "1")))
+        _, colour = paint(node.get("stroke"))
+        ctx.set_source_rgba(*surface.map_color(colour, float(node.get("stroke-opacity", 1))))
+        ctx.stroke()
+        ctx.restore()
+    for child in node.children:
+        surface.draw(child)
+    ctx.restore()
+    surface.parent_node, surface.font_size, surface.context_width, surface.context_height = saved
+
+
 class Labels:
-    """Mixed into a cairosvg surface class: plain labels drawn by :func:`_label`."""
+    """Mixed into a cairosvg surface class: plain labels drawn by :func:`_label`, plain
+    groups and shapes by :func:`_shape`."""
 
     def draw(self, node: Any) -> None:
         if node.tag in ("text", "tspan") and _plain(self, node):
             _label(self, node)
+        elif _plain_shape(self, node):
+            _shape(self, node)
         else:
             super().draw(node)  # type: ignore[misc]
 

@@ -85,7 +85,10 @@ def test_pdf_is_cairosvgs_own_page_byte_for_byte():
     odd = (b'<svg xmlns="http://www.w3.org/2000/svg" width="60" height="30">'
            b'<text x="30" y="10" text-anchor="middle" font-size="6">mid</text>'
            b'<text x="2 8 14" y="20" font-size="6" stroke="#c00">abc</text>'
-           b'<text font-size="5"><tspan x="3" y="27">v</tspan><tspan x="6" y="28" font-size="3">B</tspan></text></svg>')
+           b'<text font-size="5"><tspan x="3" y="27">v</tspan><tspan x="6" y="28" font-size="3">B</tspan></text>'
+           b'<g stroke-dasharray="2 1" stroke-linejoin="bevel"><path d="M30,20 L50,25 L40,5" stroke="#00f" fill="none"'
+           b' stroke-width="1.5"/></g><line x1="5" y1="5" x2="25" y2="8" stroke="#000" transform="rotate(10)"/>'
+           b'<circle cx="50" cy="8" r="4" fill="#0a0" opacity="0.5" stroke="#000"/></svg>')
     assert _pixels(png_bytes_of(odd)) == _pixels(cairosvg.svg2png(bytestring=odd, dpi=96))
 
 
