@@ -112,17 +112,13 @@ def _rgba_rows(argb: Any) -> Any:
     import numpy as np
 
     h, w = argb.shape
-    raw = np.zeros((h, 1 + 4 * w), np.uint8)
-    # cairo keeps A R G B in a native (little-endian) word, bytes B G R A: G and A stay,
-    # B and R swap
-    rgba = np.bitwise_and(argb, 0xFF00FF00)
-    part = np.right_shift(argb, 16)
-    part &= 0xFF
-    rgba |= part
-    np.left_shift(argb, 16, out=part)
-    part &= 0xFF0000
-    rgba |= part
-    odd = np.flatnonzero(np.right_shift(argb, 24, out=part) != 255)
+    # cairo keeps A R G B in a native (little-endian) word, bytes B G R A; byte-swapped
+    # the word reads B G R A from the top, turned right by 8 bits A B G R: bytes R G B A
+    bs = argb.byteswap()
+    rgba = np.right_shift(bs, 8)
+    np.left_shift(bs, 24, out=bs)
+    rgba |= bs
+    odd = np.flatnonzero(argb < 0xFF000000)  # alpha below 255
     if odd.size:  # cairo's unpremultiply: (c·255 + a/2) / a, integer; 0 where a = 0
         flat = rgba.reshape(-1)
         px = flat[odd]
@@ -133,6 +129,8 @@ def _rgba_rows(argb: Any) -> Any:
             c = (px >> shift) & 0xFF
             out |= np.where(a > 0, (c * 255 + seen // 2) // seen, 0) << shift
         flat[odd] = out
+    raw = np.empty((h, 1 + 4 * w), np.uint8)
+    raw[:, 0] = 0
     raw[:, 1:] = rgba.view(np.uint8).reshape(h, 4 * w)
     return raw
 
