@@ -1,17 +1,18 @@
-"""SVG -> PDF and PNG with cairosvg, the sheets' labels drawn faster, the page unchanged.
+"""SVG -> PDF and PNG with cairosvg, the sheets' nodes drawn faster, the page unchanged.
 
-cairosvg draws every ``text`` and ``tspan`` through its general node drawer (transforms,
-clips, masks, dashes, markers, font options, a stroke pass) and draws the letters twice:
-as outlines added to the path (for a stroke) and as glyphs (the fill), each letter with
-its own save, moves, rotation, measure and restore.  The labels of our sheets have none
-of that: no stroke (cairo paints nothing with a clear source, so the outlines are never
-seen), no transform, opacity, clip or filter, no per-letter offsets, rotations or
-spacing, no anchor and no text path.  For such a node :func:`_label` makes the cairo
-calls that leave a mark, in the same order with the same numbers: the fill colour, the
-font, and for each letter a move to its point and the letter shown (each letter's
-advance measured once per font); the glyphs stand at ``x``, ``x + advance``, ... as in
-cairosvg.  Every other node goes through cairosvg as it is.  The pixels of a PNG and the
-bytes of a PDF are those of cairosvg's own drawing (the tests compare them).
+cairosvg draws every node through one general drawer (transforms, clips, masks, filters,
+markers, font options, cursor bookkeeping, a fill and a stroke pass), and every ``text``
+and ``tspan`` letter by letter twice: as outlines added to the path (for a stroke) and
+as glyphs (the fill), each letter with its own save, moves, rotation, measure and
+restore.  Most of that does nothing on our sheets: labels have no stroke (cairo paints
+nothing with a clear source, so the outlines are never seen), no per-letter offsets,
+rotations or spacing, no anchor, no text path; no node has a transform, opacity, clip,
+mask, filter, marker or paint server.  For such a node :func:`_label` (text) and
+:func:`_shape` (group, line, path, circle) make the cairo calls that leave a mark, in
+the same order with the same numbers; a label's glyphs stand at ``x``, ``x + advance``,
+... as in cairosvg (each letter's advance measured once per font).  Every other node
+goes through cairosvg as it is.  The pixels of a PNG and the bytes of a PDF are those of
+cairosvg's own drawing (the tests compare them).
 
 The document is parsed once and can be drawn on several surfaces (:func:`tree`,
 :func:`draw`).
@@ -101,7 +102,7 @@ _SHAPES = ("g", "line", "path", "circle")
 def _plain_shape(surface: Any, node: Any) -> bool:
     """A group or a line, path or circle as our sheets write them: no transform, opacity,
     clip, mask, filter, marker or paint server."""
-    return (surface.stroke_and_fill and _SHAPES.count(node.tag) > 0 and _SHAPE_OWN.isdisjoint(node)
+    return (surface.stroke_and_fill and node.tag in _SHAPES and _SHAPE_OWN.isdisjoint(node)
             and "url(" not in (node.get("fill") or "") and "url(" not in (node.get("stroke") or ""))
 
 
@@ -156,7 +157,7 @@ def _shape(surface: Any, node: Any) -> None:
     surface.parent_node, surface.font_size, surface.context_width, surface.context_height = saved
 
 
-class Labels:
+class PlainNodes:
     """Mixed into a cairosvg surface class: plain labels drawn by :func:`_label`, plain
     groups and shapes by :func:`_shape`."""
 
@@ -177,9 +178,9 @@ def tree(svg: bytes) -> Any:
 
 
 def draw(surface_class: Any, doc: Any, dpi: float = 96.0) -> bytes:
-    """The document drawn on a cairosvg surface class (PDF, PNG, ...) with :class:`Labels`
+    """The document drawn on a cairosvg surface class (PDF, PNG, ...) with :class:`PlainNodes`
     mixed in: its output bytes."""
     out = io.BytesIO()
-    cls = type(surface_class.__name__, (Labels, surface_class), {})
+    cls = type(surface_class.__name__, (PlainNodes, surface_class), {})
     cls(doc, out, dpi, None, None, None, 1, None, None, None).finish()
     return out.getvalue()

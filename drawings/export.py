@@ -1,4 +1,4 @@
-"""Writing sheets: SVG (svgwrite), PDF and PNG (cairosvg), each file atomically."""
+"""Writing sheets: SVG text, PDF and PNG (cairosvg, through :mod:`drawings.convert`), each file atomically."""
 
 from __future__ import annotations
 
