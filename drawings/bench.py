@@ -39,12 +39,17 @@ def _best(f: Callable[[], Any], n: int) -> tuple[float, Any]:
     return best, out
 
 
-def _median(f: Callable[[], Any], n: int) -> float:
-    ts = []
+def _median(f: Callable[[], Any], n: int, cpu: list[float] | None = None) -> float:
+    """Median wall time of ``n`` calls; with ``cpu``, the median processor time is appended
+    to it (on a shared machine the load stretches the first, hardly the second)."""
+    ts, cs = [], []
     for _ in range(max(1, n)):
-        t = time.perf_counter()
+        c, t = time.process_time(), time.perf_counter()
         f()
         ts.append(time.perf_counter() - t)
+        cs.append(time.process_time() - c)
+    if cpu is not None:
+        cpu.append(statistics.median(cs))
     return statistics.median(ts)
 
 
@@ -71,13 +76,14 @@ def sheet_seconds(path: str, repeat: int = 3) -> dict[str, Any]:
     sheets = draw(path).sheets
     out: dict[str, Any] = {"scene": str(path), "sheets": len(sheets),
                            "format": sheets[0].spec.format if sheets else "",
-                           "build_s": build, "svg_s": [], "pdf_s": [], "png_s": [], "svg_bytes": []}
+                           "build_s": build, "svg_s": [], "pdf_s": [], "png_s": [], "svg_bytes": [],
+                           "svg_cpu_s": [], "pdf_cpu_s": [], "png_cpu_s": []}
     for sh in sheets:
         svg = sh.svg().encode("utf-8")
         out["svg_bytes"].append(len(svg))
-        out["svg_s"].append(_median(functools.partial(svg_bytes, sh), repeat))
-        out["pdf_s"].append(_median(functools.partial(pdf_bytes, svg), repeat))
-        out["png_s"].append(_median(functools.partial(png_bytes, svg, PNG_DPI), repeat))
+        out["svg_s"].append(_median(functools.partial(svg_bytes, sh), repeat, out["svg_cpu_s"]))
+        out["pdf_s"].append(_median(functools.partial(pdf_bytes, svg), repeat, out["pdf_cpu_s"]))
+        out["png_s"].append(_median(functools.partial(png_bytes, svg, PNG_DPI), repeat, out["png_cpu_s"]))
     return out
 
 

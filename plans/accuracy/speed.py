@@ -275,10 +275,12 @@ def sheet_goals(samples: Path, reps: int = 3) -> list[Goal]:
                              ("png_s", "PNG at 150 dpi", SHEET_PNG)):
         ts = sh[key]
         per = sum(ts) / n
+        cpu = sum(sh.get(key.replace("_s", "_cpu_s"), [math.nan])) / n
         extra = f"; the sheets built (engine, panels, layout) in {sh['build_s'] / n:.3f} s per sheet" \
             if key == "svg_s" else ""
         out.append(Goal(f"V-engine, {n} {sh['format']} sheets: {name} ≤ {bound:g} s per sheet",
-                        f"{per:.3f} s per sheet (slowest {max(ts):.3f} s), medians of {reps}{extra}; "
+                        f"{per:.3f} s per sheet (processor {cpu:.3f} s; slowest {max(ts):.3f} s), medians "
+                        f"of {reps}{extra}; "
                         f"load {load}", per / bound, per <= bound))
     d = fig.get("diagrams")
     if d is not None:
