@@ -513,3 +513,20 @@ def test_v_twin_bank_against_the_kinetostatics():
         S = p.closing * p.unit
         # F = Re(S e^{iα}) u + higher even harmonics: the e^{iα} coefficient is S u / 2
         assert abs(_fourier(F, 1) - S * bank.direction / 2) <= 1e-9 * p.unit
+
+
+def test_sheet_draws_each_bank_and_the_locus():
+    """The V-twin's sheet carries a bank panel per order (no moment panels: no arms), with
+    each bank's closing vector and the combined locus; an inline engine has none."""
+    from drawings.balancing import draw
+
+    d = draw(ROOT / "samples" / "engines" / "v_twin.toml")
+    ids = {p.pid for p in d.panels}
+    assert {"banks-force-first_order", "banks-force-second_order"} <= ids
+    assert not any(i.startswith("banks-moment") for i in ids)
+    svg = "".join(s.svg() for s in d.sheets)
+    for tag in ("banks-force-first_order-1-closing", "banks-force-first_order-2-closing",
+                "banks-force-first_order-sum-locus", "banks-force-second_order-sum-max"):
+        assert tag in svg
+    inline = draw(ROOT / "samples" / "engines" / "inline4.toml")
+    assert not any(p.pid.startswith("banks-") for p in inline.panels)
