@@ -83,9 +83,9 @@ def _panel(quantity: str, kind: str, polys: list[tuple[Bank, BankPolygon]], L: L
         xs = [_P(z, s)[0] for z in pts]
         o = (x_off - min(xs), 0.0)
         # the bank's axis: the phase diagram's reference (up), cranks measured from it
-        top = min(_P(z, s, o)[1] for z in pts)
-        rec.line((o[0], o[1] + 4.0), (o[0], top - 6.0), BANK_AXIS, f"{tag}-axis")
-        placer.add_line([(o[0], o[1] + 4.0), (o[0], top - 6.0)])
+        top = min([_P(z, s, o)[1] for z in pts] + [o[1] - 10.0])
+        rec.line((o[0], o[1] + 6.0), (o[0], top - 6.0), BANK_AXIS, f"{tag}-axis")
+        placer.add_line([(o[0], o[1] + 6.0), (o[0], top - 6.0)])
         dot(rec, o, 0.6, f"{tag}-pole")
         for (cyl, _, _, _), a, c in zip(poly.rows, pts[:-1], pts[1:], strict=True):
             pa, pc = _P(a, s, o), _P(c, s, o)
@@ -141,7 +141,7 @@ def _locus(rec: Recording, pid: str, L: Locus, banks: tuple[Bank, ...], xc: floa
         rec.text(layout(str(bank.number), a[0], a[1] - 0.8, SMALL_SIZE, "middle", "bottom"), "label",
                  f"{pid}-sum-axis-{bank.number}-label", fill=BANK_AXIS.stroke or "#000")
     rec.line((o[0], o[1] + R + 6.0), (o[0], o[1] - R - 6.0), AXIS, f"{pid}-sum-vertical")
-    text = f"{sym.upper()} : {_w(L.shape, lang)}"
+    text = f"{sym.upper()}: {_w(L.shape, lang)}"
     if L.shape != "zero":
         s = R / L.maximum
         alpha = np.linspace(0.0, 2 * np.pi / L.order, 181)
