@@ -508,3 +508,17 @@ def test_ring_root_has_fillets():
     # without the fillet the flank would meet the root circle at a corner of some 60°-90°
     near_root = r > ring.radii["root"] - 0.38 * p.m * 1e3 * meshing(p).k
     assert near_root.sum() >= 10 and np.max(turn[near_root]) < math.radians(20)
+
+
+@pytest.mark.parametrize("edit, field", [
+    (("internal = true", 'internal = true\nring_tip = "cut"'), "gears[2].ring_tip"),
+    (("addendum = 1.0", "addendum = 1.0\nring_tip = 3"), "ring_tip"),
+    (('z = 20\n', 'z = 20\nring_tip = "plain"\n'), "gears[0].ring_tip"),
+])
+def test_ring_tip_bad_input_names_the_key(edit, field):
+    import tomllib
+
+    text = open(PLANETARY, encoding="utf-8").read().replace(*edit, 1)
+    with pytest.raises(InputError) as exc:
+        parse_gears(tomllib.loads(text), "p.toml")
+    assert f"p.toml: {field}:" in str(exc.value) and "\n" not in str(exc.value)
