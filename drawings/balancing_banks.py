@@ -115,7 +115,7 @@ def _panel(quantity: str, kind: str, polys: list[tuple[Bank, BankPolygon]], L: L
                            gap=1.5)
         rec.text(lab, "closing-label", f"{tag}-closing-label", fill=CLOSING.stroke or "#000")
         names = ", ".join(c.name for c in bank.cylinders)
-        bottom = max(_P(z, s, o)[1] for z in pts) + 5.0
+        bottom = max([_P(z, s, o)[1] for z in pts] + [o[1] + 6.0]) + 3.0  # below the axis line too
         head = layout(f"{_w('bank', lang, n=bank.number, g=fmt(_deg(bank.axis), 4, lang))} ({names})",
                       o[0], bottom, SMALL_SIZE, "start", "top")
         rec.text(head, "note", f"{tag}-name")
