@@ -522,3 +522,20 @@ def test_ring_tip_bad_input_names_the_key(edit, field):
     with pytest.raises(InputError) as exc:
         parse_gears(tomllib.loads(text), "p.toml")
     assert f"p.toml: {field}:" in str(exc.value) and "\n" not in str(exc.value)
+
+
+@pytest.mark.parametrize("language", ["ru", "en"])
+def test_meshing_panels_draw_nothing_outside_their_field(language):
+    # An internal pair's N2 lies far beyond the field: an arrow at the edge names it instead.
+    from drawings.gears import meshing_panel
+
+    pairs = solve_gears(load_gears(SEED)).drawn_pairs() + solve_gears(load_gears(PLANETARY)).drawn_pairs()
+    for p in pairs:
+        panel = meshing_panel(meshing(p), language)
+        for prim in panel.prims:
+            if prim.pts and prim.label is None:
+                xs, ys = zip(*prim.pts, strict=True)
+                assert -1e-6 <= min(xs) and max(xs) <= panel.width + 1e-6, prim.eid
+                assert -1e-6 <= min(ys) and max(ys) <= panel.height + 1e-6, prim.eid
+    labels = [pr.label.plain for pr in panel.prims if pr.label is not None]
+    assert any(t.startswith("N2:") or t.startswith("N_2:") for t in labels), labels
