@@ -371,3 +371,19 @@ def test_gas_force_at_a_dead_centre_solved_alone_is_the_one_of_the_whole_turn():
     for phi, seen in gas.items():
         assert len(seen) == 2 and seen[0] == seen[1], phi
     assert any(abs(F) > 0 for seen in gas.values() for F in seen[0].values())  # a gas force acts there
+
+
+def test_a_ram_of_subnormal_mass_keeps_the_promise(tmp_path):
+    # Its inertia force is a subnormal number of newtons: the offset force divides by it.
+    from plans.results import solve_scene, table
+    from plans.scene.model import load_scene
+
+    text = (Path(__file__).resolve().parent.parent / "samples" / "six_bar.toml").read_text(encoding="utf-8")
+    assert text.count("mass = 20.0") == 1
+    path = tmp_path / "six_bar.toml"
+    path.write_text(text.replace("mass = 20.0", "mass = 5e-324"), encoding="utf-8")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        sol = solve_scene(load_scene(path))
+        text = table(sol, protocol=True)
+    assert "nan" not in text.lower() and "inf" not in text.lower()

@@ -65,6 +65,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from plans.errors import ConstructionError, InputError
+from plans.forces.shared import unit_vector
 from plans.reader import Reader, check_keys, did_you_mean
 from plans.scene.model import Scene
 from plans.units import DUST, LENGTH_UNITS
@@ -514,11 +515,13 @@ def apply_loads(scene: Scene, loads: Loads, kin: Any) -> AppliedLoads:
         phi = -m * a if m > 0 else np.zeros(n, complex)
         m_phi = -inert * kin.eps(lid) if inert > 0 else np.zeros(n)
         if loads.offset_inertia and m > 0:
-            # one force Φ offset from S so that its moment about S is M_Φ: d = −iΦ M_Φ/|Φ|² = −i M_Φ/Φ̄;
+            # one force Φ offset from S so that its moment about S is M_Φ: d = −iΦ M_Φ/|Φ|²;
             # where Φ vanishes (or is dust beside M_Φ: an offset a billion times the mechanism)
             # the couple stays a couple
-            ok = np.abs(m_phi) < 1e9 * _extent(kin) * np.abs(phi)
-            d = np.where(ok, -1j * m_phi / np.where(ok, np.conj(phi), 1.0), 0)
+            mag = np.abs(phi)
+            ok = np.abs(m_phi) < 1e9 * _extent(kin) * mag
+            safe = np.where(ok, mag, 1.0)
+            d = np.where(ok, -1j * (m_phi / safe) * unit_vector(phi), 0)
             local = z + d * np.conj(kin.motion[lid].rot)
             forces.append(AppliedForce(f"Phi{lid}", lid, f"{s_name}*", r + d, local, phi, "inertia"))
             rest = np.where(ok, 0.0, m_phi)
@@ -540,7 +543,7 @@ def apply_loads(scene: Scene, loads: Loads, kin: Any) -> AppliedLoads:
             assert fl.resisting is not None and v is not None
             if fl.along is None:
                 speed = np.abs(v)
-                F = np.where(speed > 0, -fl.resisting * v / np.where(speed > 0, speed, 1.0), 0)
+                F = np.where(speed > 0, -fl.resisting * unit_vector(v), 0)
             else:
                 e = complex(math.cos(fl.along), math.sin(fl.along))
                 sv = np.sign((v * np.conj(e)).real)
