@@ -29,6 +29,7 @@ from plans.tolerances import ASSEMBLY_REL, LOCK_SIN
 Motion = list
 
 _QUARTER = np.array([1, 1j, -1, -1j])
+_low = np.minimum.reduce  # the least element of a 1-d array, without ndarray.min's Python wrapper
 
 
 def rotation(ref_deg: float, sense: int, phis: Any) -> Any:
@@ -37,8 +38,13 @@ def rotation(ref_deg: float, sense: int, phis: Any) -> Any:
     offset is kept exactly."""
     t = phis if sense == 1 and ref_deg == 0 else ref_deg + sense * phis
     q = np.rint(t / 90.0)
-    r = t - 90.0 * q
-    return _QUARTER[q.astype(np.intp) & 3] * np.exp(r * (1j * math.pi / 180.0))
+    quarter = _QUARTER[q.astype(np.intp) & 3]
+    q *= -90.0
+    q += t  # the remainder in degrees, in place (the same numbers as t − 90·q)
+    z = q * (1j * math.pi / 180.0)
+    np.exp(z, out=z)
+    z *= quarter
+    return z
 
 
 def rotation1(ref_deg: float, sense: int, phi: float) -> complex:
@@ -243,13 +249,13 @@ def _rrr(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k
         P3, vP3, aP3 = _at(plan, motion, pins, q, zq, order)
     d = P3 - P1
     D = abs(d)
-    Dm = D.min() if vec else D
+    Dm = _low(D) if vec else D
     if Dm <= near:
         return False
     invD = 1.0 / D
     a = half_diff * invD + 0.5 * D
     x = (l1 - a) * (l1 + a)
-    xm = x.min() if vec else x
+    xm = _low(x) if vec else x
     # over arrays the lock (|r1 × r3| = h·D ≤ LOCK_SIN·l1·l3) is looked for here, with a margin
     # (the general solvers decide at the limit)
     if xm < 0 or (vec and order and xm <= (2 * LOCK_SIN * size / Dm) ** 2):
@@ -301,7 +307,7 @@ def _rrp(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k
     x = (l1 - e) * (l1 + e)
     # the system's determinant below is ±√x to rounding: a lock is √x ≤ LOCK_SIN·l1 (looked
     # for here, with a margin: the general solvers decide at the limit)
-    xm = x.min() if vec else x
+    xm = _low(x) if vec else x
     if xm < 0 or (order and xm <= lock):
         return False
     if vec:
