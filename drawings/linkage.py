@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import math
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
 from plans.errors import InputError
 from plans.kinematics.exact import Kinematics, solve
+from plans.kinematics.scales import FIT
 from plans.scene.model import Scene, load_scene
 
 from .fonts import metrics
@@ -59,6 +61,7 @@ def _wants(spec: SheetSpec, kind: str) -> bool:
 def build_panels(scene: Scene, spec: SheetSpec) -> tuple[list[Panel], float]:
     """Every panel the scene asks for, in the order they go on the sheet."""
     metrics()  # fail early, with the font's name, if it is missing
+    scene = for_sheet(scene, spec)
     lang, style = spec.language, scene.scale_style
     kin = solve(scene)
     ks = _positions(scene, kin, spec)
@@ -99,6 +102,17 @@ def build_panels(scene: Scene, spec: SheetSpec) -> tuple[list[Panel], float]:
     if _wants(spec, "legend") and any(k not in ("trace",) for k in kinds):
         panels.append(legend_panel(kinds, lang))
     return panels, mu_l
+
+
+def for_sheet(scene: Scene, spec: SheetSpec) -> Scene:
+    """The scene whose plans, polygons and lever are drawn for ``spec``'s paper: on a smaller
+    sheet every target length shrinks by the square root of the ratio of the sheets' sizes
+    (A3 about 0.7 of A1: smaller, still readable), the scales still round."""
+    w, h = spec.size
+    factor = min(1.0, math.sqrt(max(w, h) / 841.0))
+    if factor >= 1.0 or FIT in scene.scales:
+        return scene
+    return replace(scene, scales={**scene.scales, FIT: factor})
 
 
 def _rows(scene: Scene, readings) -> list:

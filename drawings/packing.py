@@ -53,11 +53,12 @@ def free_spots(gap: float) -> Spots:
 
 
 def _orders(panels: Sequence[Panel]) -> list[list[Panel]]:
-    """Reading order first (it wins a tie), then the classic orders of rectangle packing."""
+    """Reading order first (it wins a tie), then the classic orders of rectangle packing
+    (tallest, widest, largest first), the first panel (the scheme) still first."""
     base = list(panels)
     out = [base]
     for key in (lambda p: -p.height, lambda p: -p.width, lambda p: -p.width * p.height):
-        o = sorted(base, key=key)
+        o = base[:1] + sorted(base[1:], key=key)
         if all(o != x for x in out):
             out.append(o)
     return out
