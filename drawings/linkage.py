@@ -19,7 +19,6 @@ from .panels import (
     auto_length_scale,
     cycle_size,
     plan_panel,
-    ratio_text,
     scheme_panel,
     strokes_over_cycle,
     table_panel,
@@ -148,9 +147,9 @@ def draw(scene: Scene | str | Path, *, format: str | None = None, orientation: s
                       orientation=orientation, language=language)
     panels, mu_l = build_panels(sc, spec)
     numbers = {float(phi): k for k, phi in enumerate(sc.driver.phis_deg)}
-    sheets = compose(panels, spec, ratio_text(mu_l), sc.path, numbers)
+    sheets = compose(panels, spec, None, sc.path, numbers)  # each sheet's scale: its main image's
     if sc.wants("diagrams") or sc.wants("dynamics"):  # the cycle's sheets follow
         from .cycle import extend
 
-        sheets = extend(sc, spec, sheets, ratio_text(mu_l))
+        sheets = extend(sc, spec, sheets, None)
     return Drawing(sc, spec, tuple(panels), tuple(sheets), mu_l)

@@ -214,7 +214,7 @@ class Sheet:
     width: float
     height: float
     placed: list[tuple[Panel, float, float]] = field(default_factory=list)
-    scale_text: str = ""  # for the title block's "Scale" cell
+    scale_text: str | None = ""  # the title block's "Scale" cell; None: the sheet's main image's
     prims: list[Prim] = field(default_factory=list)
     frames: list[Frame] = field(default_factory=list)  # borders and headings of position blocks
 
@@ -351,7 +351,8 @@ def _title_block(rec: Recording, sh: Sheet) -> None:
     cell(tr("lit", lang), X0 + 135, Y0 + 17.5, 15, 2.5, "tb-h-lit", "middle")
     cell(tr("mass", lang), X0 + 150, Y0 + 17.5, 17, 2.5, "tb-h-mass", "middle")
     cell(tr("mscale", lang), X0 + 167, Y0 + 17.5, 18, 2.5, "tb-h-scale", "middle")
-    cell(sh.scale_text, X0 + 167, Y0 + 27.5, 18, 3.5, "tb-scale", "middle")
+    scale = sheet_scale(sh.placed, lang) if sh.scale_text is None else sh.scale_text
+    cell(scale, X0 + 167, Y0 + 27.5, 18, 3.5, "tb-scale", "middle")
     n = sh.spec.first_sheet + sh.number - 1
     m = sh.spec.total_sheets or (sh.spec.first_sheet - 1 + sh.count)
     cell(f"{tr('sheet', lang)} {n}", X0 + 135, Y0 + 37.5, 20, 2.5, "tb-sheet")
@@ -361,6 +362,18 @@ def _title_block(rec: Recording, sh: Sheet) -> None:
         cell(t, X0 + 135, Y0 + 47.5 + (i - (len(org) - 1) / 2) * 15.0 / len(org), 50, 3.5, f"tb-org-{i}",
              "middle", h=15.0 / len(org))
     rec.end()
+
+
+def sheet_scale(placed: Sequence[tuple[Panel, float, float]], lang: str) -> str:
+    """The "Scale" cell as GOST 2.104 fills it: the scale (GOST 2.302) of the sheet's main
+    image, its largest panel drawn at a length scale (the others say "M 1:4" under their
+    titles); a dash where nothing on the sheet is drawn at a length scale (plans, tables)."""
+    from .panels import ratio_text
+
+    drawn = [(p.width * p.height, p.scale) for p, _, _ in placed if p.quantity == "length" and p.scale]
+    if not drawn:
+        return "—"
+    return ratio_text(max(drawn, key=lambda t: t[0])[1], lang)
 
 
 def _cell_lines(text: str, width: float, height: float, size: float) -> list[tuple[str, float]]:
@@ -400,7 +413,7 @@ def _overlaps(a: Sequence[float], b: Sequence[float]) -> bool:
     return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
 
 
-def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str = "",
+def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str | None = "",
             path: str = "<scene>", numbers: dict[float, int] | None = None) -> list[Sheet]:
     """Place panels on sheets of ``spec.format`` (pins first), as a course lays them out.
 

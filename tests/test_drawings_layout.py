@@ -386,3 +386,25 @@ def test_plans_are_smaller_on_smaller_sheets(tmp_path):
     for pp in build_all(solve_(scene)):
         for plan in (pp.velocity, pp.acceleration):
             assert plan.extent <= LONGEST_MM * math.sqrt(420 / 841) + 1e-9
+
+
+def _cell(sh, eid: str) -> str:
+    return next(p.label.plain for p in sh.prims if p.eid == eid and p.label is not None)
+
+
+def test_scale_cell_is_the_scale_of_the_sheets_main_image(drawings):
+    """GOST 2.104: the "Scale" cell holds the scale of the sheet's main image, written as
+    GOST 2.302 writes it: the shaper's plan of positions is drawn at μl = 500 mm/m (1:2),
+    its schemes and groups at 400 mm/m (1:2,5, a decimal comma on a Russian sheet)."""
+    d = drawings["shaper"]
+    assert next(p for p in d.panels if p.kind == "positions").scale == 500.0
+    assert {p.scale for p in d.panels if p.kind in ("scheme", "group", "crank")} == {400.0}
+    assert _cell(d.sheets[0], "tb-scale") == "1:2"
+    assert {_cell(sh, "tb-scale") for sh in d.sheets[1:]} == {"1:2,5"}
+
+
+def test_scale_cell_is_a_dash_without_a_length_scale():
+    d = draw(SAMPLES / "v_engine_cycle.toml")
+    last = d.sheets[-1]
+    assert not any(p.quantity == "length" for p, _, _ in last.placed)
+    assert _cell(last, "tb-scale") == "—"
