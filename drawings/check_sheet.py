@@ -28,6 +28,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from plans.check.report import Finding, Item, Report, check_file
+from plans.check.wording import KINDS_RU
 from plans.errors import PlansError
 from plans.kinematics.plan import Plan
 
@@ -159,6 +160,8 @@ def typeset(name: str, lang: str = "ru") -> str:
     parts = rest.split("_")
     if parts and parts[0] in _GREEK:  # M_Phi_2 -> M_{Φ2}
         return f"{head}_{{{_GREEK[parts[0]]}{''.join(parts[1:])}}}"
+    if parts and parts[0].startswith("Phi"):  # an arm: h_Phi2_B -> h_{Φ2,B}
+        return f"{head}_{{{','.join([_GREEK['Phi'] + parts[0][3:]] + parts[1:])}}}"
     sub, caret, sup = "_".join(parts).partition("^")
     return f"{head}_{{{sub}}}" + (f"^{sup}" if caret else "")
 
@@ -166,6 +169,14 @@ def typeset(name: str, lang: str = "ru") -> str:
 def _markup(text: str, lang: str = "ru") -> str:
     """Quantity names of the report as sheet markup, typeset (:func:`typeset`)."""
     return _NAME.sub(lambda m: typeset(m.group(0), lang), text)
+
+
+def finding_text(f: Finding, lang: str = "ru") -> str:
+    """A finding as the sheet writes it: in the sheet's language, quantities typeset."""
+    kind = KINDS_RU.get(f.kind, f.kind) if lang == "ru" else f.kind
+    if f.words is None:  # pragma: no cover - every finding of the check has its words
+        return f"[{kind}] {_markup(f.message, lang)}"
+    return f"[{kind}] {f.words.render(lang, lambda q: typeset(q, lang))}"
 
 
 def findings_panel(report: Report, lang: str = "ru") -> Panel:
@@ -193,11 +204,12 @@ def findings_panel(report: Report, lang: str = "ru") -> Panel:
         unit = _UNIT_RU.get(it.unit, it.unit) if lang == "ru" else it.unit.replace("^2", "²")
         lines.append((f"φ = {fmt(it.phi_deg, 6, lang)}°  {it.quantity} = {fmt(it.student, 4, lang)}, "
                       f"{exact} {fmt(it.exact, 4, lang)} {unit}{pct}{mm}{where}", FAIL))
+    lines = [(_markup(text, lang), color) for text, color in lines]
     f: Finding
     for f in report.findings:
-        lines.append((f"[{f.kind}] {f.message}", "#000"))
+        lines.append((finding_text(f, lang), "#000"))
     for k, (text, color) in enumerate(lines):
-        for part in wrap(_markup(text, lang), LIST_WIDTH, TEXT_SIZE):
+        for part in wrap(text, LIST_WIDTH, TEXT_SIZE):
             rec.text(layout(part, 0, y, TEXT_SIZE, "start", "top"), "check-line", f"check-list-{k}", fill=color)
             y += TEXT_SIZE * 1.45
     return _repack("check-findings", "table", None, rec.prims, title)
