@@ -84,17 +84,22 @@ def shapes(panels: Sequence[Panel], area_w: float, limit: Callable[[float], floa
     from .blocks import INSET
 
     widest = max((p.width for p in panels), default=0.0) + 2 * INSET
+    one_row = sum(p.width for p in panels) + gap * (len(panels) - 1) + 2 * INSET  # wider packs alike
     ws: list[float] = []
     for w in [area_w * f for f in FRACTIONS] + list(extra):
-        w = max(widest, w)
+        w = min(max(widest, w), max(widest, one_row))
         if w <= area_w + 1e-9 and all(abs(w - o) > 1.0 for o in ws):
             ws.append(w)
     whole: list[Block] = []
     reading: list[Block] = []  # the shapes that keep the reading order
     part: tuple[Block, list[Panel]] | None = None
     for i, order in enumerate(_orders(panels)):
-        for w in ws or [area_w]:
+        last: tuple[Block, list[Panel], float] | None = None
+        for w in sorted(ws or [area_w], reverse=True):
+            if last is not None and not last[1] and last[0].width <= w - 1.0 and last[2] == limit(w):
+                continue  # the wider pack did not use this width: the same pack again
             blk, rest = pack_block(order, w, limit(w), gap, spots, title)
+            last = (blk, rest, limit(w))
             if not rest:
                 (reading if i == 0 else whole).append(blk)
             elif i == 0 and (part is None or len(rest) < len(part[1])):  # parts keep the reading order
@@ -202,6 +207,11 @@ def place_blocks(blks: list[list[Block] | Flow], taken: list[list[Box]], area: B
                 tks[cur].append(box)
                 out[cur].append((b, x, y))
                 prev, part = box, part + 1
+                if rest:  # the part took what this sheet had for it: the next part, the next sheet
+                    cur, prev = cur + 1, None
+                    if cur == len(tks):
+                        tks.append([tb])
+                        out.append([])
             continue
         after = blks[n + 1] if n + 1 < len(blks) else []
         after = [] if isinstance(after, Flow) else after
