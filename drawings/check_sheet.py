@@ -264,19 +264,6 @@ def save_check_sheets(report: Report | str | Path, outdir: str | Path, stem: str
                  source=rep.check.path)
 
 
-#: Old sheets of the checked files, removed once the new ones are written.
-_STALE: list[Path] = []
-
-
-def _claim(folder: Path, files: dict[Path, bytes], source: Path) -> dict[Path, bytes]:
-    """The sheets plus the folder's manifest, written with the report as one."""
-    from .manifest import plan_sheets
-
-    staged, stale = plan_sheets(folder, files, source)
-    _STALE.extend(stale)
-    return staged
-
-
 def render_check_sheets(rep: Report, outdir: str | Path, stem: str | None = None,
                         formats: Sequence[str] = ("svg",), *, language: str = "ru",
                         dpi: float = 150.0) -> dict[Path, bytes]:
@@ -310,19 +297,27 @@ def add_sheet_options(check_parser: argparse.ArgumentParser) -> argparse.Argumen
                       f"{args.sheet_format!r}", file=sys.stderr)
                 return 2
 
+            from .manifest import forget, plan_sheets, remove
+
+            folder = Path(args.sheet)
+            stale: list[Path] = []  # the old sheets of the file being checked
+
             def extra(report: Report, target: Path) -> dict[Path, bytes]:
-                files = render_check_sheets(report, args.sheet, target.stem, formats,
-                                            language=args.sheet_language)
-                return _claim(Path(args.sheet), files, target)
+                files = render_check_sheets(report, folder, target.stem, formats, language=args.sheet_language)
+                staged, old = plan_sheets(folder, files, target)
+                stale[:] = old
+                return staged
+
+            def after(target: Path, written: bool) -> None:
+                if written:
+                    remove(stale)
+                elif folder.is_dir():
+                    forget(folder, target)
+                stale.clear()
 
             args.extra_files = extra
-        _STALE.clear()
-        rc = int(inner(args))
-        from .manifest import remove
-
-        remove(_STALE if rc == 0 else [])
-        _STALE.clear()
-        return rc
+            args.after_write = after
+        return int(inner(args))
 
     check_parser.set_defaults(func=run_with_sheets)
     return check_parser

@@ -28,11 +28,12 @@ WORDS = {
         "velocity_plan": "Velocity plan", "acceleration_plan": "Acceleration plan", "chart": "Balancing load",
         "keys": "Keys: ← → step, Home / End; in the cycle ← → turn the crank, space plays.",
         "panel_titles": {"velocity": "velocity plan", "acceleration": "acceleration plan",
-                         "force": "force polygon", "lever": "Zhukovsky lever",
+                         "force": "force polygon, group", "lever": "Zhukovsky lever",
                          "crank": "initial link"},
         "mistakes": {"coriolis": "Coriolis vector reversed", "normal": "normal component from the wrong point",
                      "couple": "inertia couple with the wrong sign", "pi": "π = 3.14"},
-        "position": "position",
+        "position": "position", "forces": "Forces over the cycle", "decimal": ".",
+        "units": {}, "labels": {},
     },
     "ru": {
         "steps": "По шагам", "cycle": "Цикл", "back": "◀ Назад", "next": "Далее ▶", "play": "▶ Пуск",
@@ -40,12 +41,16 @@ WORDS = {
         "velocity_plan": "План скоростей", "acceleration_plan": "План ускорений", "chart": "Уравновешивающая нагрузка",
         "keys": "Клавиши: ← → шаг, Home / End; в цикле ← → поворот кривошипа, пробел — пуск.",
         "panel_titles": {"velocity": "план скоростей", "acceleration": "план ускорений",
-                         "force": "план сил", "lever": "рычаг Жуковского",
+                         "force": "план сил группы", "lever": "рычаг Жуковского",
                          "crank": "начальное звено"},
         "mistakes": {"coriolis": "кориолисово ускорение в обратную сторону",
                      "normal": "нормальная составляющая не от той точки",
                      "couple": "момент сил инерции с неверным знаком", "pi": "π = 3,14"},
-        "position": "положение",
+        "position": "положение", "forces": "Силы за цикл", "decimal": ",",
+        "units": {"mm/(m/s)": "мм/(м/с)", "mm/(m/s²)": "мм/(м/с²)", "mm/N": "мм/Н", "N": "Н", "N·m": "Н·м",
+                  "J": "Дж", "rad/s": "рад/с", "rad/s²": "рад/с²", "kg·m²": "кг·м²", "m": "м", "m/s": "м/с",
+                  "m/s²": "м/с²", "mm": "мм", "s": "с"},
+        "labels": {"F_bal": "F_ур", "M_bal": "M_ур"},
     },
 }
 
@@ -66,6 +71,9 @@ main { padding: .4em .8em; }
 figure { margin: 0; border: 1px solid #ddd; background: #fff; }
 figcaption { font-size: .8em; padding: .1em .4em; border-bottom: 1px solid #eee; }
 svg { width: 100%; height: auto; max-height: 58vh; display: block; }
+.forces { display: grid; grid-template-columns: repeat(auto-fit, minmax(12em, 1fr)); gap: .6em; margin-bottom: .6em; }
+.cycle .stage svg { max-height: 40vh; }
+.forces svg { max-height: 30vh; aspect-ratio: 25 / 28; }
 .charts { display: grid; grid-template-columns: repeat(auto-fit, minmax(18em, 1fr)); gap: .6em; }
 svg.chart { max-height: 22vh; }
 .node { fill: #fff; stroke: #2c3e50; stroke-width: .4; }
@@ -93,6 +101,7 @@ input[type=range] { flex: 1; min-width: 12em; }
 .cline { stroke: var(--thin); stroke-dasharray: 2 1.5; }
 .cline.hi { stroke: var(--hi); }
 .seg { stroke: var(--ink); }
+.lever { fill: rgba(0,0,0,.04); stroke: var(--thin); stroke-linejoin: round; }
 .seg.rel, .seg.nrm, .seg.tan, .seg.cor, .seg.sld { stroke: #2c3e50; stroke-dasharray: 4 1.5; }
 .seg.cor { stroke: #8e44ad; }
 .seg.cls { stroke: #16a085; }
@@ -128,6 +137,7 @@ _BODY = """<header><h1>{title}</h1><nav><button id="mode-steps" class="on">{step
 <figure><figcaption>{acceleration_plan}</figcaption><svg id="cyc-acc" role="img"></svg></figure></div>
 <div class="controls"><button id="play">{play}</button><input id="phi" type="range" min="0" step="0.01" value="0">
 <output id="phi-out"></output></div>
+<div id="cyc-forces" class="forces" aria-label="{forces}"></div>
 <div id="cyc-charts" class="charts"></div>
 </section>
 </main>"""
@@ -154,7 +164,7 @@ def page(scene: Scene | str | Path, *, language: str | None = None, frames: int 
     """The whole page as text."""
     sc = scene if isinstance(scene, Scene) else load_scene(scene)
     lang = _language(sc, language)
-    data = lesson(sc, phi_deg=phi_deg, frames=frames)
+    data = lesson(sc, phi_deg=phi_deg, frames=frames, language=lang)
     words = WORDS[lang]
     esc = {k: html.escape(v) for k, v in words.items() if isinstance(v, str)}
     body = _BODY.format(title=html.escape(data["title"]), phi=f"{data['phi_deg']:g}", **esc)

@@ -15,6 +15,11 @@
     return e;
   }
   const f3 = (x) => (Math.round(x * 1000) / 1000).toString();
+  // numbers and words as the page's language writes them (decimal comma, F_ур, Н)
+  const nf = (x, digits) => String(Number(x.toPrecision(digits))).replace(".", T.decimal);
+  const fixed = (x, digits) => x.toFixed(digits).replace(".", T.decimal);
+  const lab = (s) => String(s).replace(/\b([FM])_bal\b/g, (m) => T.labels[m] || m).replace(/Phi/g, "Φ");
+  const unit = (u) => T.units[u] || u;
   function fit(svg, boxes, pad) {
     let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
     for (const [x, y] of boxes) { x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, -y); y1 = Math.max(y1, -y); }
@@ -120,9 +125,10 @@
         "stroke-width": f3((hi ? 0.9 : 0.6) * u), "marker-end": "url(#" + svg.id + (bad ? "-arr-bad" : hi ? "-arr-hi" : "-arr") + ")",
         "data-seg": s.label});
       const m = [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
-      el(svg, "text", {x: f3(m[0] + 1.5 * u), y: f3(-m[1] - 1.5 * u), "font-size": f3(3.2 * u), class: "seglabel"}, s.label);
+      el(svg, "text", {x: f3(m[0] + 1.5 * u), y: f3(-m[1] - 1.5 * u), "font-size": f3(3.2 * u), class: "seglabel"}, lab(s.label));
     }
     for (const nm of shown) {
+      if (nm.endsWith(">")) continue;  // a force's tip on the lever: its arrow and label say it
       const p = panel.points[nm], hi = fresh.points.indexOf(nm) >= 0;
       el(svg, "circle", {cx: f3(p[0]), cy: f3(-p[1]), r: f3((hi ? 1.4 : 0.9) * u), class: "pt" + (hi ? " hi" : ""),
         "data-point": nm});
@@ -181,8 +187,8 @@
     drawPanel($("panel"), panel, revealed(cur), s, m);
     drawScheme($("scheme"), L.scheme, 0, s.scheme, s.links, schemeSize);
     $("counter").textContent = (cur + 1) + " / " + steps.length;
-    $("step-text").textContent = s.text;
-    $("panel-title").textContent = panelTitle(panel) + ", μ = " + panel.scale.toPrecision(4) + " " + panel.unit;
+    $("step-text").textContent = lab(s.text);
+    $("panel-title").textContent = panelTitle(panel) + ", μ = " + nf(panel.scale, 4) + " " + unit(panel.unit);
     $("back").disabled = cur === 0;
     $("next").disabled = cur === steps.length - 1;
     document.body.dataset.step = String(cur);
@@ -192,23 +198,23 @@
     const box = $("mistakes");
     if (!L.mistakes.length) { box.hidden = true; return; }
     for (const m of L.mistakes) {
-      const lab = document.createElement("label");
+      const row = document.createElement("label");
       const cb = document.createElement("input");
       cb.type = "checkbox";
       cb.id = "mistake-" + m.id;
       cb.onchange = () => {
         for (const o of box.querySelectorAll("input")) if (o !== cb) o.checked = false;
         mistakeOn = cb.checked ? m : null;
-        $("mistake-text").textContent = cb.checked ? m.text : "";
+        $("mistake-text").textContent = cb.checked ? lab(m.text) : "";
         if (cb.checked) {
           let last = -1;
           steps.forEach((s, k) => { if (s.panel === m.panel) last = k; });
           go(last);
         } else go(cur);
       };
-      lab.appendChild(cb);
-      lab.appendChild(document.createTextNode(" " + (T.mistakes[m.id] || m.title)));
-      box.appendChild(lab);
+      row.appendChild(cb);
+      row.appendChild(document.createTextNode(" " + (T.mistakes[m.id] || m.title)));
+      box.appendChild(row);
     }
   }
 
@@ -262,7 +268,7 @@
     (C.charts || []).forEach((ch, k) => {
       const fig = document.createElement("figure");
       const cap = document.createElement("figcaption");
-      cap.textContent = ch.label + ", " + ch.unit;
+      cap.textContent = lab(ch.label) + ", " + unit(ch.unit);
       fig.appendChild(cap);
       const svg = document.createElementNS(NS, "svg");
       svg.id = "chart-" + k;
@@ -296,16 +302,115 @@
         "stroke-width": "0.6"});
       el(svg, "circle", {cx: f3(X(p)), cy: f3(Y(v)), r: "1.4", class: "pt hi"});
       el(svg, "text", {x: "1", y: "-3", "font-size": "5.5", class: "label", "data-value": String(v)},
-        ch.label + "(" + p.toFixed(1) + "°) = " + v.toPrecision(5) + " " + ch.unit);
+        lab(ch.label) + "(" + fixed(p, 1) + "°) = " + nf(v, 5) + " " + unit(ch.unit));
     });
   }
+  // ---------------------------------------------------------------- forces over the cycle
+  const F = C.forces || [];
+  function segAt(track) {
+    const i = Math.floor(t) % N, f = t - Math.floor(t), a = track[i], b = track[(i + 1) % N];
+    if (a && b) return [a[0] + (b[0] - a[0]) * f, a[1] + (b[1] - a[1]) * f, a[2] + (b[2] - a[2]) * f, a[3] + (b[3] - a[3]) * f];
+    return f < 0.5 ? a || b : b || a;
+  }
+  function ptAt(track) {
+    const i = Math.floor(t) % N, f = t - Math.floor(t), a = track[i], b = track[(i + 1) % N];
+    if (a && b) return lerp(a, b, f);
+    return f < 0.5 ? a || b : b || a;
+  }
+  function makeForces() {
+    const box = $("cyc-forces");
+    for (const fp of F) {
+      const fig = document.createElement("figure");
+      const cap = document.createElement("figcaption");
+      cap.textContent = panelTitle(fp) + ", μ = " + nf(fp.scale, 4) + " " + unit(fp.unit);
+      fig.appendChild(cap);
+      const svg = document.createElementNS(NS, "svg");
+      svg.id = "cyc-f-" + fp.id;
+      svg.setAttribute("role", "img");
+      svg.dataset.mu = String(fp.scale);
+      if (fp.force_scale) svg.dataset.muF = String(fp.force_scale);
+      fig.appendChild(svg);
+      box.appendChild(fig);
+    }
+    box.hidden = !F.length;
+  }
+  // A polygon's forces change tenfold over a turn (the gas force): each frame is shown
+  // filling its square panel, with a scale bar of a round force saying how big it is.
+  function square(svg, pts) {
+    let x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    for (const [x, y] of pts) { x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, -y); y1 = Math.max(y1, -y); }
+    const side = Math.max(x1 - x0, y1 - y0, 1e-3) * 1.3, cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+    // a strip under the drawing holds the scale bar (CSS keeps the panel at this aspect)
+    svg.setAttribute("viewBox", [cx - side / 2, cy - side / 2, side, side * 1.12].map(f3).join(" "));
+    return [cx - side / 2, cy - side / 2, side];
+  }
+  function scaleBar(svg, box, mu, u) {
+    const want = 0.25 * box[2] / mu;  // a quarter of the panel, in newtons
+    const k = Math.pow(10, Math.floor(Math.log10(want)));
+    const F0 = [5, 2, 1].map((m) => m * k).find((x) => x <= want) || k;
+    const x = box[0] + 0.04 * box[2], y = box[1] + box[2] * 1.09;
+    el(svg, "line", {x1: f3(x), y1: f3(y), x2: f3(x + F0 * mu), y2: f3(y), class: "seg", "stroke-width": f3(0.6 * u),
+      "data-bar": String(F0)});
+    el(svg, "text", {x: f3(x), y: f3(y - 1.5 * u), "font-size": f3(4.5 * u), class: "label"},
+      nf(F0, 6) + " " + unit("N"));
+  }
+  function drawForces() {
+    for (const fp of F) {
+      const svg = $("cyc-f-" + fp.id);
+      clear(svg);
+      defs(svg);
+      const P = {}, E = fp.segments.map((s) => segAt(s.track)), pts = [[0, 0]];
+      for (const nm in fp.points || {}) { P[nm] = ptAt(fp.points[nm]); if (P[nm]) pts.push(P[nm]); }
+      let mu = fp.force_scale || fp.scale;
+      if (fp.points) {  // the lever's arrows: the longest a third of the lever, whatever the turn
+        let reach = 0, longest = 0;
+        for (const nm in P) if (P[nm]) reach = Math.max(reach, Math.hypot(P[nm][0], P[nm][1]));
+        for (const e of E) if (e) longest = Math.max(longest, Math.hypot(e[2] - e[0], e[3] - e[1]));
+        const g = longest > 0 && reach > 0 ? reach / 3 / longest : 1;
+        E.forEach((e, k) => { if (e) E[k] = [e[0], e[1], e[0] + (e[2] - e[0]) * g, e[1] + (e[3] - e[1]) * g]; });
+        mu *= g;
+      }
+      for (const e of E) if (e) pts.push([e[0], e[1]], [e[2], e[3]]);
+      const box = square(svg, pts), u = box[2] / 100;
+      if (fp.points) {  // the lever: the turned velocity plan, its links as a rigid figure
+        for (const lk of C.scheme.links) {
+          const pts = lk.points.map((nm) => P[nm.toLowerCase()] || (C.scheme.frame_points.indexOf(nm) >= 0 ? [0, 0] : null))
+            .filter((x) => x);
+          if (pts.length < 2) continue;
+          const d = pts.map((p, k) => (k ? "L" : "M") + f3(p[0]) + "," + f3(-p[1])).join(" ") + (pts.length > 2 ? " Z" : "");
+          el(svg, "path", {d: d, class: "lever", "stroke-width": f3(0.5 * u)});
+        }
+        for (const nm in P) {
+          const p = P[nm];
+          if (!p) continue;
+          el(svg, "circle", {id: svg.id + "-pt-" + nm, cx: f3(p[0]), cy: f3(-p[1]), r: f3(0.9 * u), class: "pt"});
+          el(svg, "text", {x: f3(p[0] - 5.5 * u), y: f3(-p[1] - 1.5 * u), "font-size": f3(5.5 * u), class: "label"}, nm);
+        }
+      }
+      fp.segments.forEach((s, k) => {
+        const e = E[k];
+        if (!e || Math.hypot(e[2] - e[0], e[3] - e[1]) < 1e-6) return;
+        el(svg, "line", {id: svg.id + "-seg-" + k, x1: f3(e[0]), y1: f3(-e[1]), x2: f3(e[2]), y2: f3(-e[3]),
+          class: "seg " + (KIND[s.kind] || "abs"), "stroke-width": f3(0.8 * u), "marker-end": "url(#" + svg.id + "-arr)",
+          "data-seg": s.label});
+        const lx = fp.points ? e[2] : (e[0] + e[2]) / 2, ly = fp.points ? e[3] : (e[1] + e[3]) / 2;
+        el(svg, "text", {x: f3(lx + 1.2 * u), y: f3(-ly - 1.2 * u), "font-size": f3(5 * u), class: "seglabel"}, lab(s.label));
+      });
+      el(svg, "circle", {cx: "0", cy: "0", r: f3(1.1 * u), class: "pt"});
+      el(svg, "text", {x: f3(-6 * u), y: f3(5.5 * u), "font-size": f3(5.5 * u), class: "label"}, fp.points ? "p" : "o");
+      scaleBar(svg, box, mu, u);
+    }
+  }
+  makeForces();
+
   function drawCycle() {
     drawScheme($("cyc-scheme"), C.scheme, t, [], [], cycSize);
     if (C.velocity) drawCyclePlan($("cyc-vel"), C.velocity, velSize, "p_v");
     if (C.acceleration) drawCyclePlan($("cyc-acc"), C.acceleration, accSize, "p_a");
     drawCharts();
+    drawForces();
     const phi = ((Math.floor(t) % N) + (t - Math.floor(t))) * (360 / N);
-    $("phi-out").textContent = "φ = " + phi.toFixed(1) + "°";
+    $("phi-out").textContent = "φ = " + fixed(phi, 1) + "°";
     $("phi").value = String(t);
   }
   function frame(now) {

@@ -66,6 +66,19 @@ def write_sheets(folder: Path, files: dict[Path, bytes], source: str | Path | No
     return [p for p in written if p.name != NAME]
 
 
+def forget(folder: Path, source: str | Path) -> None:
+    """Remove the sheets ``source`` had in ``folder`` and its line of the manifest: a file
+    that fails in a batch keeps no sheet of an earlier run that would look current."""
+    me = str(Path(source).resolve())
+    sources = _load(folder)
+    if me not in sources:
+        return
+    owned = sources.pop(me)
+    manifest = json.dumps({"format": 1, "sources": sources}, indent=1, sort_keys=True, ensure_ascii=False) + "\n"
+    write_all({folder / NAME: manifest.encode("utf-8")})
+    remove(folder / n for n in owned)
+
+
 def remove(paths: Iterable[Path]) -> None:
     """Remove old sheets (already gone is fine)."""
     for p in paths:

@@ -79,8 +79,8 @@ def register_commands(sub: argparse._SubParsersAction, modules: Sequence[str],
 
 
 def _solve(args: argparse.Namespace) -> int:
-    from plans.io import atomic_write, dumps, refuse_input
-    from plans.results import solve_scene, table, to_json
+    from plans.io import atomic_file, atomic_write, refuse_input
+    from plans.results import solve_scene, table, write_json
     from plans.scene.model import load_scene
 
     refuse_input(args.json, args.scene)
@@ -94,10 +94,11 @@ def _solve(args: argparse.Namespace) -> int:
             return 0
         atomic_write(args.csv, text)
     if args.json == "-":
-        sys.stdout.write(dumps(to_json(sol)))
+        write_json(sol, sys.stdout.write)
         return 0
     if args.json:
-        atomic_write(args.json, dumps(to_json(sol)))
+        with atomic_file(args.json) as fh:
+            write_json(sol, lambda text: fh.write(text.encode("utf-8")))
     if not args.quiet:
         print(table(sol, protocol=args.protocol))
     return 0

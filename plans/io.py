@@ -7,9 +7,10 @@ import json
 import os
 import tempfile
 import tomllib
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
+from contextlib import contextmanager
 from pathlib import Path
-from typing import Any
+from typing import Any, BinaryIO
 
 from plans.errors import InputError, OutputError
 
@@ -17,8 +18,16 @@ from plans.errors import InputError, OutputError
 def atomic_write(path: str | Path, data: bytes | str) -> None:
     """Write to a temporary file in the same folder, then rename over ``path``;
     a failure leaves nothing behind and is one OutputError line."""
-    target = Path(path)
     raw = data.encode("utf-8") if isinstance(data, str) else data
+    with atomic_file(path) as fh:
+        fh.write(raw)
+
+
+@contextmanager
+def atomic_file(path: str | Path) -> Iterator[BinaryIO]:
+    """A binary file to write in pieces, renamed over ``path`` only when the block ends
+    without an error; otherwise nothing is left behind (an OSError is one OutputError line)."""
+    target = Path(path)
     folder = target.parent
     try:
         fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=folder)
@@ -26,7 +35,7 @@ def atomic_write(path: str | Path, data: bytes | str) -> None:
         raise OutputError(f"cannot write to {folder}: {exc.strerror}") from None
     try:
         with os.fdopen(fd, "wb") as fh:
-            fh.write(raw)
+            yield fh
         os.chmod(tmp, 0o644)
         os.replace(tmp, target)
     except BaseException as exc:

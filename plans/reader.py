@@ -134,11 +134,11 @@ class Reader:
         only for positive quantities, which become scales)."""
         floor = (NUMBER_FLOOR if positive else 0.0) if floor is None else floor
         if isinstance(value, bool) or not isinstance(value, int | float):
-            raise self.fail(field, f"expected a number, got {_show(value)}")
+            raise self.fail(field, f"expected a number, got {show(value)}")
         if isinstance(value, float) and not math.isfinite(value):
             raise self.fail(field, f"expected a finite number, got {value!r}")
         if abs(value) > limit:
-            raise self.fail(field, f"expected a number of magnitude at most {limit:g}, got {_show(value)}")
+            raise self.fail(field, f"expected a number of magnitude at most {limit:g}, got {show(value)}")
         if positive and value <= 0:
             raise self.fail(field, f"expected a positive number, got {value!r}")
         if nonneg and value < 0:
@@ -163,7 +163,7 @@ class Reader:
             return default
         value = data[key]
         if isinstance(value, bool) or not isinstance(value, int | float):
-            raise self.fail(f"{where}{key}", f"expected an angle in degrees, got {_show(value)}")
+            raise self.fail(f"{where}{key}", f"expected an angle in degrees, got {show(value)}")
         if isinstance(value, int):
             return float(value % 360)
         if not math.isfinite(value):
@@ -178,11 +178,11 @@ class Reader:
             return default
         value = data[key]
         if isinstance(value, bool) or not isinstance(value, int):
-            raise self.fail(f"{where}{key}", f"expected a whole number, got {_show(value)}")
+            raise self.fail(f"{where}{key}", f"expected a whole number, got {show(value)}")
         if at_least is not None and value < at_least:
-            raise self.fail(f"{where}{key}", f"expected a whole number >= {at_least}, got {_show(value)}")
+            raise self.fail(f"{where}{key}", f"expected a whole number >= {at_least}, got {show(value)}")
         if at_most is not None and value > at_most:
-            raise self.fail(f"{where}{key}", f"expected a whole number <= {at_most}, got {_show(value)}")
+            raise self.fail(f"{where}{key}", f"expected a whole number <= {at_most}, got {show(value)}")
         return value
 
     def text(self, data: dict[str, Any], key: str, where: str, *, default: str | None = None,
@@ -196,7 +196,7 @@ class Reader:
     def string(self, value: Any, field: str, *, limit: int = NAME_LIMIT) -> str:
         """A name or a text: a string of printable characters, at most ``limit`` long."""
         if not isinstance(value, str):
-            raise self.fail(field, f"expected a string, got {_show(value)}")
+            raise self.fail(field, f"expected a string, got {show(value)}")
         bad = bad_character(value)
         if bad:
             raise self.fail(field, f"the text holds a {bad}; expected printable text")
@@ -218,7 +218,7 @@ class Reader:
         if not isinstance(value, str) or value not in options:
             hint = did_you_mean(value, options) if isinstance(value, str) else ""
             raise self.fail(f"{where}{key}", f"expected one of {', '.join(repr(o) for o in options)}, "
-                                             f"got {_show(value)}{hint}")
+                                             f"got {show(value)}{hint}")
         return value
 
     def length(self, value: Any, field: str, unit: str, *, positive: bool = False) -> float:
@@ -229,19 +229,19 @@ class Reader:
         except ValueError as exc:
             raise self.fail(field, str(exc)) from None
         except OverflowError:
-            raise self.fail(field, f"expected a length of at most {LENGTH_LIMIT:g} m, got {_show(value)}") from None
+            raise self.fail(field, f"expected a length of at most {LENGTH_LIMIT:g} m, got {show(value)}") from None
         if not math.isfinite(out):
-            raise self.fail(field, f"expected a finite length, got {_show(value)}")
+            raise self.fail(field, f"expected a finite length, got {show(value)}")
         if abs(out) > LENGTH_LIMIT:
-            raise self.fail(field, f"expected a length of at most {LENGTH_LIMIT:g} m, got {_show(value)}")
+            raise self.fail(field, f"expected a length of at most {LENGTH_LIMIT:g} m, got {show(value)}")
         if positive and out <= 0:
-            raise self.fail(field, f"expected a positive length, got {_show(value)}")
+            raise self.fail(field, f"expected a positive length, got {show(value)}")
         if positive and abs(out) < LENGTH_FLOOR:
-            raise self.fail(field, f"expected 0 or a length of at least 1 µm, got {_show(value)}")
+            raise self.fail(field, f"expected 0 or a length of at least 1 µm, got {show(value)}")
         return out
 
 
-def _show(value: Any) -> str:
+def show(value: Any) -> str:
     """A value for a message, shortened (a 400-digit integer is not repeated in full)."""
     if isinstance(value, int) and not isinstance(value, bool) and abs(value) > 10**15:
         return f"an integer of {len(str(abs(value)))} digits"

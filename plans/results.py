@@ -11,6 +11,8 @@ value).  Keys appear only for what the scene asked for.
 
 from __future__ import annotations
 
+import json
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from typing import Any
 
@@ -62,7 +64,19 @@ def _xy(z: complex) -> list[float]:
 
 
 def to_json(sol: Solution) -> dict[str, Any]:
-    kin, scene = sol.kinematics, sol.scene
+    """The whole result as one dict (``plans solve --json``); :func:`write_json` writes the
+    same text position by position."""
+    out = _head(sol)
+    out["positions"] = list(_positions(sol))
+    return out
+
+
+#: Stands for the positions in the head of the JSON while it is written in pieces.
+_POSITIONS = "\x00positions"
+
+
+def _head(sol: Solution) -> dict[str, Any]:
+    scene = sol.scene
     out: dict[str, Any] = {
         "title": scene.title,
         "scene": scene.path,
@@ -71,55 +85,79 @@ def to_json(sol: Solution) -> dict[str, Any]:
         "fij": scene.fij,
         "outputs": sorted(scene.outputs),
         "structure": sol.structure.to_json(),
-        "positions": [],
+        "positions": _POSITIONS,
     }
-    names = kin.point_names()
-    for k in range(kin.n):
-        pos: dict[str, Any] = {"phi_deg": float(kin.phi_deg[k]), "points": {}, "links": {}}
-        for nm in names:
-            r, v, a = kin.point(nm)
-            entry = {"r": _xy(r[k])}
-            if v is not None:
-                entry["v"] = _xy(v[k])
-            if a is not None:
-                entry["a"] = _xy(a[k])
-            pos["points"][nm] = entry
-        for lid in sorted(scene.links):
-            m = kin.motion[lid]
-            le: dict[str, float] = {"theta": float(m.theta[k])}
-            if m.omega is not None:
-                le["omega"] = float(m.omega[k])
-            if m.eps is not None:
-                le["eps"] = float(m.eps[k])
-            pos["links"][str(lid)] = le
-        if kin.conditions:
-            pos["conditioning"] = {g: float(c[k]) for g, c in kin.conditions.items()}
-        if sol.plans:
-            pp = sol.plans[k]
-            pos["plans"] = {}
-            if pp.velocity is not None:
-                pos["plans"]["velocity"] = pp.velocity.to_json()
-            if pp.acceleration is not None:
-                pos["plans"]["acceleration"] = pp.acceleration.to_json()
-            pos["readings"] = [r.to_json() for r in pp.readings]
-        out["positions"].append(pos)
-    if sol.forces is not None:
-        from plans.forces.lever import force_json
-
-        for pos, extra in zip(out["positions"], force_json(sol.forces[1]), strict=True):
-            pos.update(extra)
-    if sol.plans or sol.forces is not None:
-        from plans.forces.protocol import force_steps, steps_json
-
-        for k, pos in enumerate(out["positions"]):
-            plans = (sol.plans[k].velocity, sol.plans[k].acceleration) if sol.plans else ()
-            forces = force_steps(sol.forces[0], sol.forces[1], k) if sol.forces is not None else ()
-            pos["steps"] = steps_json(plans, forces)
     if sol.cycle is not None:
         from plans.cycle.results import cycle_json
 
         out.update(cycle_json(sol.cycle))
     return out
+
+
+def _positions(sol: Solution) -> Iterator[dict[str, Any]]:
+    forces: list[dict] | None = None
+    if sol.forces is not None:
+        from plans.forces.lever import force_json
+
+        forces = force_json(sol.forces[1])
+    for k in range(sol.kinematics.n):
+        yield _position(sol, k, None if forces is None else forces[k])
+
+
+def _position(sol: Solution, k: int, forces: dict | None) -> dict[str, Any]:
+    kin, scene = sol.kinematics, sol.scene
+    pos: dict[str, Any] = {"phi_deg": float(kin.phi_deg[k]), "points": {}, "links": {}}
+    for nm in kin.point_names():
+        r, v, a = kin.point(nm)
+        entry = {"r": _xy(r[k])}
+        if v is not None:
+            entry["v"] = _xy(v[k])
+        if a is not None:
+            entry["a"] = _xy(a[k])
+        pos["points"][nm] = entry
+    for lid in sorted(scene.links):
+        m = kin.motion[lid]
+        le: dict[str, float] = {"theta": float(m.theta[k])}
+        if m.omega is not None:
+            le["omega"] = float(m.omega[k])
+        if m.eps is not None:
+            le["eps"] = float(m.eps[k])
+        pos["links"][str(lid)] = le
+    if kin.conditions:
+        pos["conditioning"] = {g: float(c[k]) for g, c in kin.conditions.items()}
+    if sol.plans:
+        pp = sol.plans[k]
+        pos["plans"] = {}
+        if pp.velocity is not None:
+            pos["plans"]["velocity"] = pp.velocity.to_json()
+        if pp.acceleration is not None:
+            pos["plans"]["acceleration"] = pp.acceleration.to_json()
+        pos["readings"] = [r.to_json() for r in pp.readings]
+    if forces is not None:
+        pos.update(forces)
+    if sol.plans or sol.forces is not None:
+        from plans.forces.protocol import force_steps, steps_json
+
+        plans = (sol.plans[k].velocity, sol.plans[k].acceleration) if sol.plans else ()
+        steps = force_steps(sol.forces[0], sol.forces[1], k) if sol.forces is not None else ()
+        pos["steps"] = steps_json(plans, steps)
+    return pos
+
+
+def write_json(sol: Solution, write: Callable[[str], object]) -> None:
+    """Write ``dumps(to_json(sol))`` in pieces, one position at a time: the text is the same
+    to the byte, and memory holds one position's JSON, not the whole run's (3600 positions
+    of a V-engine are over 100 MB of text)."""
+    from plans.io import dumps
+
+    before, after = dumps(_head(sol)).split(json.dumps(_POSITIONS))
+    write(before)
+    opening = "[\n    "
+    for pos in _positions(sol):
+        write(opening + dumps(pos)[:-1].replace("\n", "\n    "))  # nested two levels deep
+        opening = ",\n    "
+    write("[]" if opening == "[\n    " else "\n  ]")
+    write(after)
 
 
 def _fmt(x: float | None, width: int = 12) -> str:

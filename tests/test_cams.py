@@ -424,3 +424,43 @@ def test_cli_json_to_stdout(capsys):
     d = json.loads(cap.out)
     assert d["follower"] == "oscillating" and max(d["s"]) == pytest.approx(20.0)
     assert max(d["v"]) == pytest.approx(4.18879, abs=1e-4)  # 2·ψ/Φ·ω of the cycloid, rad/s
+
+
+def _smallest_convex_radius_drawn(cam, step_deg: float = 0.05) -> float:
+    """The theoretical profile as a fine polyline, each three neighbours' circle: the
+    smallest convex radius found without the analytic curvature."""
+    pts = np.asarray(profile(cam, np.radians(np.arange(0.0, 360.0, step_deg))).theoretical)
+    a, b, c = pts, np.roll(pts, -1, axis=0), np.roll(pts, -2, axis=0)
+    cross = (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0])
+    ab, bc, ca = (np.hypot(*(q - p).T) for p, q in ((a, b), (b, c), (c, a)))
+    radius = ab * bc * ca / (2 * np.abs(cross))
+    turning = np.sign(np.median(cross))  # the profile's own sense: convex parts turn with it
+    return float(np.min(radius[np.sign(cross) == turning]))
+
+
+@pytest.mark.parametrize("roller_mm", [15.0, 22.0])
+def test_base_radius_raised_until_a_big_roller_fits(roller_mm):
+    from plans.cams.base_radius import roller_base_radius
+
+    cam = replace(load_cam(SEED), roller=roller_mm / 1000)
+    start = min_base_radius(cam).min_base_radius
+    fit = roller_base_radius(cam, start)
+    assert fit is not None and fit > start  # the pressure angle alone would undercut this roller
+    assert findings(replace(cam, base_radius=start)).undercut
+    # at the radius found the profile's smallest convex radius is the roller's, measured on the drawn curve
+    assert _smallest_convex_radius_drawn(replace(cam, base_radius=fit)) == pytest.approx(cam.roller, rel=2e-3)
+    assert findings(replace(cam, base_radius=fit * 1.001)).undercut == ()
+
+
+def test_cam_command_reports_the_roller_base_radius(tmp_path):
+    from plans.cli import main
+
+    text = SEED.read_text(encoding="utf-8")
+    assert "\nroller = 5\n" in text
+    path = tmp_path / "big_roller.toml"
+    path.write_text(text.replace("\nroller = 5\n", "\nroller = 15\n"), encoding="utf-8")
+    out = tmp_path / "r.json"
+    assert main(["cam", str(path), "--json", str(out)]) == 0
+    res = json.loads(out.read_text(encoding="utf-8"))
+    assert res["min_base_radius_roller"] > res["min_base_radius"]
+    assert res["best_base_radius_roller"] >= res["best_base_radius"]

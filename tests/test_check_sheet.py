@@ -146,3 +146,24 @@ def test_english_report_keeps_its_words(report):
         assert f.words is not None and f.words.render("en") == f.message
     texts = "\n".join(_texts(marked_sheets(report, language="en")))
     assert "is written as" in texts and "[duplicate]" in texts
+
+
+def test_a_folder_checked_again_keeps_no_stale_sheet_or_report(tmp_path, capsys):
+    from drawings.cli import main
+
+    group, out, sheets = tmp_path / "group", tmp_path / "reports", tmp_path / "sheets"
+    group.mkdir()
+    text = COURSEWORK.read_text(encoding="utf-8").replace('scene = "../v_engine.toml"',
+                                                         f'scene = "{ROOT / "samples" / "v_engine.toml"}"')
+    (group / "a.toml").write_text(text, encoding="utf-8")
+    (group / "b.toml").write_text(text, encoding="utf-8")
+    args = ["check", str(group), "--out", str(out), "--quiet", "--sheet", str(sheets)]
+    assert main([*args, "--sheet-format", "svg,png"]) == 0
+    assert len([p for p in sheets.iterdir() if not p.name.startswith(".")]) == 8
+    # b.toml now fails, and a.toml is drawn in one format only
+    (group / "b.toml").write_text(text.replace("velocity = { mu = 6.58 }", "velocity = { mu = 0 }"), encoding="utf-8")
+    assert main([*args, "--sheet-format", "svg"]) == 2
+    assert "b.toml" in capsys.readouterr().err
+    assert sorted(p.name for p in sheets.iterdir() if not p.name.startswith(".")) == ["a-marked.svg",
+                                                                                      "a-overlay.svg"]
+    assert sorted(p.name for p in out.iterdir()) == ["a.json", "a.txt", "summary.csv"]

@@ -4,6 +4,7 @@ motion, bad input, and the seed's tables."""
 
 from __future__ import annotations
 
+import csv
 import dataclasses
 import json
 import math
@@ -13,6 +14,7 @@ import numpy as np
 import pytest
 
 from plans.cli import main
+from plans.cycle.check import check_cycle
 from plans.cycle.diagrams import diagrams
 from plans.cycle.dynamics import dynamics, reduce
 from plans.cycle.spec import diagrams_spec, dynamics_spec
@@ -388,3 +390,19 @@ def test_bad_input_from_the_console_is_one_line(tmp_path, capsys, which, old, ne
     lines = err.strip().splitlines()
     assert len(lines) == 1 and field in lines[0] and "bad.toml" in lines[0] and "Traceback" not in err, err
     assert not out.exists()
+
+
+def test_a_folder_of_sheet_and_cycle_check_files(tmp_path, capsys):
+    group, out = tmp_path / "group", tmp_path / "reports"
+    group.mkdir()
+    for name, scene in (("dynamics_seed004", "dynamics_slider_crank"), ("v_engine_coursework", "v_engine")):
+        text = (ROOT / "samples" / "checks" / f"{name}.toml").read_text(encoding="utf-8")
+        (group / f"{name}.toml").write_text(text.replace(f'"../{scene}.toml"', f'"{ROOT / "samples" / scene}.toml"'),
+                                            encoding="utf-8")
+    assert main(["check", str(group), "--out", str(out), "--quiet"]) == 0
+    rows = {r["file"]: r for r in csv.DictReader((out / "summary.csv").open(encoding="utf-8"))}
+    cyc = rows[str(group / "dynamics_seed004.toml")]
+    single = check_cycle(ROOT / "samples" / "checks" / "dynamics_seed004.toml")
+    assert cyc["status"] == "ok" and (int(cyc["passed"]), int(cyc["failed"])) == (single.passed, single.failed)
+    assert json.loads((out / "dynamics_seed004.json").read_text(encoding="utf-8"))["kind"] == "cycle"
+    assert rows[str(group / "v_engine_coursework.toml")]["status"] == "ok"

@@ -361,3 +361,143 @@ def test_cycle_page_carries_the_diagrams_and_dynamics_with_the_graphical_nodes()
     assert mpr["nodes"] == pytest.approx([float(x) for x in dyn.table.M_pr], rel=1e-5)
     exact_at_nodes = np.interp(mpr["nodes_deg"], mpr["phi_deg"], mpr["values"])
     assert np.max(np.abs(exact_at_nodes - np.array(mpr["nodes"]))) <= 1e-3 * np.max(np.abs(mpr["values"]))
+
+
+# --------------------------------------------------------------------------- one language per page
+
+_ENGLISH = {"intersection", "guide", "from", "polygon", "lever", "line", "through", "meet", "lay", "off", "the",
+            "and", "of", "link", "slot", "balances", "sum", "sense", "toward", "parallel", "apply", "turn",
+            "couple", "closes", "arm", "instead", "moves", "gives", "so", "known", "point", "similarity", "image",
+            "acceleration", "normal", "inertia", "power", "balance", "draw", "coincides", "computed", "every"}
+_WORD = re.compile(r"[^\W\d_]+")
+_NUMBER_EN = re.compile(r"\d+(?:\.\d+)?")
+_NUMBER_RU = re.compile(r"\d+(?:,\d+)?")
+
+
+def _sentences(L):
+    return [s["text"] for s in L["steps"]] + [m["text"] for m in L["mistakes"]]
+
+
+@pytest.mark.parametrize("name, phi", [("v_engine", None), ("six_bar", 60), ("scotch_yoke", None),
+                                       ("shaper", None), ("slider_crank", 30)])
+def test_russian_lesson_speaks_russian_with_the_same_numbers(name, phi):
+    from collections import Counter
+
+    scene = load_scene(SAMPLES / f"{name}.toml")
+    ru = _sentences(lesson(scene, frames=12, phi_deg=phi, language="ru"))
+    en = _sentences(lesson(scene, frames=12, phi_deg=phi, language="en"))
+    assert len(ru) == len(en) and ru
+    for r, e in zip(ru, en, strict=True):
+        words = {w.lower() for w in _WORD.findall(r)}
+        assert not words & _ENGLISH, r
+        assert re.search("[а-яё]", r.lower()) or not re.search("[a-z]{3}", e.lower()), r  # a sentence, not symbols
+        assert not re.search("[А-яЁё]", e), e
+        # the same values, decimal comma in Russian
+        got = Counter(float(x.replace(",", ".")) for x in _NUMBER_RU.findall(r))
+        assert got == Counter(float(x) for x in _NUMBER_EN.findall(e)), (r, e)
+    # the textbook's words are there
+    text = " ".join(ru)
+    assert "пересечение" in text
+    if name == "v_engine":
+        assert "F_ур" in text and "рычаге Жуковского" in text and "многоугольник" in text and "плечом" in text
+    if name == "six_bar":
+        assert "кориолисово ускорение" in text.lower()
+
+
+def test_unknown_lesson_language_is_an_input_error():
+    from plans.errors import InputError
+
+    with pytest.raises(InputError):
+        lesson(load_scene(SAMPLES / "four_bar.toml"), frames=6, language="de")
+
+
+def test_v_engine_page_with_72_positions_stays_small():
+    size = len(page(SAMPLES / "v_engine.toml").encode("utf-8"))
+    assert size < 1_500_000
+
+
+# --------------------------------------------------------------------------- forces over the cycle
+
+
+def test_cycle_forces_are_the_engines_polygons_and_lever_at_every_frame():
+    from plans.forces.lever import lever_plan
+    from plans.forces.polygons import force_polygons
+
+    scene = load_scene(SAMPLES / "v_engine.toml")
+    L = lesson(scene, frames=12)
+    panels = {p["id"]: p for p in L["cycle"]["forces"]}
+    assert set(panels) == {"group-2-3", "group-4-5", "crank", "lever"}
+    # over the turn, as the page does: at a dead centre the stroke (and so the gas force) is
+    # told by the piston's velocity against the turn's largest
+    fa = analyse_forces(scene, solve(scene, L["cycle"]["phi_deg"], order=2))
+    lv = zhukovsky_lever(fa, scale=panels["lever"]["scale"])
+    for k in (0, 5, 11):
+        for poly in force_polygons(fa, k):
+            pid = "crank" if poly.kind == "crank" else f"group-{poly.group}"
+            mu = panels[pid]["scale"]
+            segs = {s["label"]: s["track"][k] for s in panels[pid]["segments"]}
+            for s in poly.plan.segments:
+                a = complex(*poly.plan.xy(s.start)) / poly.plan.scale * mu
+                b = complex(*poly.plan.xy(s.end)) / poly.plan.scale * mu
+                x1, y1, x2, y2 = segs[s.label]
+                assert abs(complex(x1, y1) - a) <= 2e-3 and abs(complex(x2, y2) - b) <= 2e-3, (k, pid, s.label)
+        plan = lever_plan(lv, k)
+        for nm, track in panels["lever"]["points"].items():
+            assert abs(complex(*track[k]) - complex(*plan.xy(nm))) <= 2e-3, (k, nm)
+
+
+def test_slider_moves_the_force_polygons_and_the_lever(browser, tmp_path):
+    from plans.forces.lever import lever_plan
+    from plans.forces.polygons import force_polygons
+
+    scene = load_scene(SAMPLES / "slider_crank.toml")
+    f = tmp_path / "f.html"
+    L = lesson(scene, frames=36)
+    f.write_text(page(scene, frames=36, language="ru"), encoding="utf-8")
+    pg, errors, requests = _open(browser, f)
+    pg.keyboard.press("End")  # the lever's equation, as the Russian page writes it
+    last = pg.inner_text("#step-text")
+    assert "ΣM_p = 0 на рычаге Жуковского" in last and "F_ур" in last and "Φ2" in last, last
+    assert not re.search(r"\b(lever|so|by|power)\b", last), last
+    pg.click("#mode-cycle")
+    mu = float(pg.get_attribute("#cyc-f-group-2-3", "data-mu"))
+    mu_v = float(pg.get_attribute("#cyc-f-lever", "data-mu"))
+
+    fa = analyse_forces(scene, solve(scene, L["cycle"]["phi_deg"], order=2))
+    lv = zhukovsky_lever(fa, scale=mu_v)
+
+    def engine(k):
+        poly = force_polygons(fa, k)[0].plan
+        ends = {s.label: complex(*poly.xy(s.end)) / poly.scale * mu for s in poly.segments}
+        return ends, complex(*lever_plan(lv, k).xy("b"))
+
+    def shown():
+        ends = {}
+        for ln in pg.locator("#cyc-f-group-2-3 line[data-seg]").all():
+            ends[ln.get_attribute("data-seg")] = complex(float(ln.get_attribute("x2")), -float(ln.get_attribute("y2")))
+        b = pg.locator("#cyc-f-lever-pt-b")
+        return ends, complex(float(b.get_attribute("cx")), -float(b.get_attribute("cy")))
+
+    seen = []
+    for k in (0, 7, 20, 31):
+        pg.fill("#phi", str(k))
+        pg.dispatch_event("#phi", "input")
+        ends, b = shown()
+        want, want_b = engine(k)
+        assert set(ends) == set(want), k
+        for label, z in want.items():
+            assert abs(ends[label] - z) <= 0.1, (k, label)
+        assert abs(b - want_b) <= 0.1, k
+        seen.append(ends)
+    assert len({tuple(round(abs(z), 1) for z in e.values()) for e in seen}) == len(seen)  # it really moved
+    # between two frames the drawing is interpolated, as the plans are
+    pg.fill("#phi", "7.5")
+    pg.dispatch_event("#phi", "input")
+    ends, _ = shown()
+    (w7, _), (w8, _) = engine(7), engine(8)
+    for label in w7.keys() & w8.keys():
+        assert abs(ends[label] - (w7[label] + w8[label]) / 2) <= 0.1, label
+    # the page's figures speak Russian
+    assert "Н" in pg.inner_text("#cyc-forces") and "mm/N" not in pg.inner_text("#cyc-forces")
+    assert errors == []
+    assert requests == [f.as_uri()]

@@ -260,3 +260,42 @@ def test_ctrl_c_stops_quietly_with_130(tmp_path):
     assert proc.returncode == 130
     assert b"Traceback" not in err and err.strip() == b""
     assert sorted(p.name for p in tmp_path.iterdir()) == ["x.toml"]
+
+
+def test_ctrl_c_while_the_command_loads_stops_quietly_with_130():
+    # A real SIGINT, sent while the command's modules are being imported.
+    code = ("import os, signal, sys\n"
+            "class Interrupt:\n"
+            "    def find_spec(self, name, path=None, target=None):\n"
+            "        if name == 'plans.cli':\n"
+            "            os.kill(os.getpid(), signal.SIGINT)\n"
+            "        return None\n"
+            "sys.meta_path.insert(0, Interrupt())\n"
+            "from drawings.console import main\n"
+            "sys.exit(main())\n")
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    proc = subprocess.run([sys.executable, "-c", code, "solve", "samples/slider_crank.toml"], cwd=ROOT, env=env,
+                          capture_output=True, timeout=60)
+    assert proc.returncode == 130
+    assert proc.stderr == b"" and proc.stdout == b""
+
+
+def test_console_script_runs_the_command():
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    proc = subprocess.run([sys.executable, "-c", "import sys; from drawings.console import main; sys.exit(main())",
+                           "solve", "samples/slider_crank.toml", "--quiet"], cwd=ROOT, env=env,
+                          capture_output=True, timeout=60)
+    assert proc.returncode == 0 and proc.stderr == b""
+
+
+@pytest.mark.parametrize("name", ["slider_crank", "six_bar", "v_engine_cycle", "dynamics_slider_crank"])
+def test_json_written_in_pieces_is_the_whole_json_to_the_byte(name):
+    from plans.io import dumps
+    from plans.results import solve_scene, to_json, write_json
+    from plans.scene.model import load_scene
+
+    sol = solve_scene(load_scene(ROOT / "samples" / f"{name}.toml"))
+    pieces: list[str] = []
+    write_json(sol, pieces.append)
+    assert len(pieces) > sol.kinematics.n  # one piece per position, not one string
+    assert "".join(pieces) == dumps(to_json(sol))

@@ -8,6 +8,8 @@ Errors are relative to the size of the known vector of each kind (l1, ω1·l1, �
 from __future__ import annotations
 
 import math
+import warnings
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -326,3 +328,62 @@ def test_stiff_loads_three_balancing_loads_agree():
     for row in rows:
         assert "error" not in row, row
         assert row["lever"] < 1e-13 and row["power"] < 1e-13, row
+
+
+@pytest.mark.parametrize("y_mm", ["0", "1e-154", "1e-30"])
+def test_ram_guide_through_the_rocker_pivot_keeps_the_inertia_couple(tmp_path, y_mm):
+    # The ram's guide through C (to the last subnormal): D stays at C, the ram's inertia force
+    # is zero or dust, and its offset force would lie farther than any sheet: it stays a couple.
+    from plans.results import solve_scene, write_json
+    from plans.scene.model import load_scene
+
+    text = (Path(__file__).resolve().parent.parent / "samples" / "six_bar.toml").read_text(encoding="utf-8")
+    assert "through = [0, 520]" in text and 'inertia = "offset_force"' in text
+    path = tmp_path / "six_bar.toml"
+    path.write_text(text.replace("through = [0, 520]", f"through = [0, {y_mm}]"), encoding="utf-8")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        sol = solve_scene(load_scene(path))
+        pieces: list[str] = []
+        write_json(sol, pieces.append)
+    assert "NaN" not in "".join(pieces) and "Infinity" not in "".join(pieces)
+    for f in sol.forces[0].applied.forces:
+        assert np.all(np.isfinite(f.r)) and np.all(np.isfinite(f.F))
+
+
+def test_gas_force_at_a_dead_centre_solved_alone_is_the_one_of_the_whole_turn():
+    # At the dead centre the piston's velocity is round-off; the stroke that begins there is
+    # the acceleration's, whatever other positions are solved with it.
+    from plans.io import read_toml
+    from plans.results import solve_scene
+    from plans.scene.model import scene_from_dict
+
+    path = Path(__file__).resolve().parent.parent / "samples" / "v_engine.toml"
+    raw = read_toml(path)
+    gas = {}
+    for phis in ([0.0], [180.0], [float(p) for p in range(0, 360, 5)]):
+        raw["driver"]["phi_deg"] = phis
+        sol = solve_scene(scene_from_dict(raw, str(path)))
+        for phi in (0.0, 180.0):
+            if phi in phis:
+                gas.setdefault(phi, []).append({f.label: complex(f.F[phis.index(phi)])
+                                                for f in sol.forces[0].applied.forces if f.kind == "gas"})
+    for phi, seen in gas.items():
+        assert len(seen) == 2 and seen[0] == seen[1], phi
+    assert any(abs(F) > 0 for seen in gas.values() for F in seen[0].values())  # a gas force acts there
+
+
+def test_a_ram_of_subnormal_mass_keeps_the_promise(tmp_path):
+    # Its inertia force is a subnormal number of newtons: the offset force divides by it.
+    from plans.results import solve_scene, table
+    from plans.scene.model import load_scene
+
+    text = (Path(__file__).resolve().parent.parent / "samples" / "six_bar.toml").read_text(encoding="utf-8")
+    assert text.count("mass = 20.0") == 1
+    path = tmp_path / "six_bar.toml"
+    path.write_text(text.replace("mass = 20.0", "mass = 5e-324"), encoding="utf-8")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        sol = solve_scene(load_scene(path))
+        text = table(sol, protocol=True)
+    assert "nan" not in text.lower() and "inf" not in text.lower()

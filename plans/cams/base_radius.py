@@ -239,3 +239,36 @@ def _oscillating(cam: Cam) -> float | None:
             return hi
         prev = float(r)
     return None
+
+
+def roller_base_radius(cam: Cam, start: float) -> float | None:
+    """The smallest base radius, from ``start`` (the pressure angle's minimum) up, at which
+    the roller fits every convex part of the theoretical profile (no undercut), the file's
+    offset (or arm and pivot) kept; ``None`` for a flat face or when no base radius the
+    mechanism allows will do.  The profile's radius grows with r0, so the first radius that
+    fits is found by doubling the step and then halving the bracket."""
+    from .analysis import findings
+
+    if cam.flat or cam.roller <= 0:
+        return None
+    top = math.inf
+    if cam.follower == "oscillating":  # the base circle must still reach the arm: |arm − r0| < pivot
+        top = cam.arm + cam.pivot
+    low = max(start, cam.roller, abs(cam.offset)) * (1 + 1e-12)
+
+    def fits(r0: float) -> bool:
+        return not findings(replace(cam, base_radius=r0)).undercut
+
+    if fits(low):
+        return low
+    step = max(low, cam.h)
+    high = low + step
+    while not fits(high):
+        low, step = high, 2 * step
+        high = low + step
+        if high >= top or step > 1e6 * max(cam.h, cam.roller):
+            return None
+    while high - low > 1e-9 * high:
+        mid = 0.5 * (low + high)
+        low, high = (low, mid) if fits(mid) else (mid, high)
+    return high

@@ -6,6 +6,7 @@ from __future__ import annotations
 import argparse
 import math
 import sys
+from dataclasses import replace
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:  # the analysis is imported when the command runs: ``plans`` starts fast
@@ -40,7 +41,7 @@ def results(cam: Cam) -> dict[str, Any]:
     import numpy as np
 
     from .analysis import findings, grid, profile
-    from .base_radius import min_base_radius
+    from .base_radius import min_base_radius, roller_base_radius
     phi = grid(cam)
     pr = profile(cam, phi)
     mo = pr.motion
@@ -51,6 +52,10 @@ def results(cam: Cam) -> dict[str, Any]:
     fi = findings(cam)
     exact = min_base_radius(cam, True)
     drawn = None if cam.flat else min_base_radius(cam, False)
+    fit = None if exact.min_base_radius is None else roller_base_radius(cam, exact.min_base_radius)
+    best_fit = None  # the best offset kept, the base radius raised until the roller fits
+    if exact.best_offset is not None:
+        best_fit = roller_base_radius(replace(cam, offset=exact.best_offset), exact.best_base_radius)
     out: dict[str, Any] = {
         "phi_deg": _arr(np.degrees(phi), 6),
         "s": _arr(mo.s * lift),
@@ -64,8 +69,10 @@ def results(cam: Cam) -> dict[str, Any]:
                     "actual": [[_r(x / L), _r(y / L)] for x, y in pr.actual]},
         "min_base_radius": _opt(exact.min_base_radius, L),
         "min_base_radius_graphical": None if drawn is None else _opt(drawn.min_base_radius, L),
+        "min_base_radius_roller": None if fit is None else _r(fit / L),
         "best_base_radius": _r(exact.best_base_radius / L),
         "best_offset": None if exact.best_offset is None else _r(exact.best_offset / L),
+        "best_base_radius_roller": None if best_fit is None else _r(best_fit / L),
         "best_pivot": None if exact.best_pivot is None else _r(exact.best_pivot / L),
         "min_curvature_radius": _r(fi.min_curvature_radius / L),
         "max_pressure_angle_rise_deg": _r(math.degrees(fi.max_pressure_rise)),
@@ -103,9 +110,16 @@ def summary(cam: Cam, res: dict[str, Any]) -> str:
         if res["min_base_radius_graphical"] is not None:
             line += f", {res['min_base_radius_graphical']:.4f} {u} from the diagram's division points"
         lines.append(line)
+        if res["min_base_radius_roller"] is not None:
+            lines.append(f"  with the roller ({cam.roller / cam.scale:g} {u}) fitting every convex part: base radius "
+                         f"{res['min_base_radius_roller']:.4f} {u} at least")
         if res["best_offset"] is not None:
-            lines.append(f"  with the offset chosen: base radius {res['best_base_radius']:.4f} {u} "
-                         f"at offset {res['best_offset']:.4f} {u}")
+            line = (f"  with the offset chosen: base radius {res['best_base_radius']:.4f} {u} "
+                    f"at offset {res['best_offset']:.4f} {u}")
+            fit = res["best_base_radius_roller"]
+            if fit is not None and fit > res["best_base_radius"] * (1 + 1e-9):
+                line += f" ({fit:.4f} {u} for the roller to fit)"
+            lines.append(line)
         if res["best_pivot"] is not None:
             lines.append(f"  with the pivot moved: base radius {res['best_base_radius']:.4f} {u} "
                          f"at pivot distance {res['best_pivot']:.4f} {u}")

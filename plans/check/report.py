@@ -340,6 +340,14 @@ def _extra(args: argparse.Namespace, report: Report, target: Path) -> dict[Path,
     return dict(hook(report, target)) if hook is not None else {}
 
 
+def _after(args: argparse.Namespace, target: Path, written: bool) -> None:
+    """Tell that module whether ``target``'s files were written (its old sheets the new set
+    lacks go) or, in a folder, the file failed (its sheets of an earlier run go)."""
+    hook = getattr(args, "after_write", None)
+    if hook is not None:
+        hook(target, written)
+
+
 def run(args: argparse.Namespace) -> int:
     """``plans check``: 0 when every file was checked, 2 on a user error (one line on stderr).
     A single file's outputs (JSON, CSV, reports, sheets) are written all or none."""
@@ -375,6 +383,7 @@ def run(args: argparse.Namespace) -> int:
         for folder in sorted({p.parent for p in files}):
             _make_folder(folder)
         written = write_all(files)
+        _after(args, target, True)
         if args.json == "-":
             sys.stdout.write(dumps(report.to_json()))
         if not args.quiet and args.json != "-":
@@ -412,29 +421,37 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
     _make_folder(out)
     rows = []
     bad = 0
+    from plans.cycle import check as cycle_check
     from plans.progress import Progress
 
     progress = Progress(args.quiet)
     for k, f in enumerate(files, 1):
         progress(f"{k}/{len(files)} {f.name}")
+        reports = {out / f"{f.stem}.json", out / f"{f.stem}.txt"}
         try:
-            report = check_file(f)
-        except PlansError as exc:
-            bad += 1
-            _err(one_line(exc))
-            rows.append(summary_row(str(f), None, str(exc)))
-            continue
-        try:
-            outputs: dict[Path, Any] = {out / f"{f.stem}.json": dumps(report.to_json()),
-                                        out / f"{f.stem}.txt": table(report) + "\n"}
-            outputs.update(_extra(args, report, f))
+            outputs: dict[Path, Any]
+            if cycle_check.is_cycle_check(f):  # cycle tables: a report, no marked sheet
+                crep = cycle_check.check_cycle(f)
+                outputs, row = cycle_check.outputs(crep, f, out), cycle_check.summary_row(str(f), crep)
+            else:
+                report = check_file(f)
+                outputs = {out / f"{f.stem}.json": dumps(report.to_json()),
+                           out / f"{f.stem}.txt": table(report) + "\n"}
+                outputs.update(_extra(args, report, f))
+                row = summary_row(str(f), report)
+            for sub in sorted({p.parent for p in outputs}):
+                _make_folder(sub)
             write_all(outputs)
         except PlansError as exc:
             bad += 1
             _err(one_line(exc))
             rows.append(summary_row(str(f), None, str(exc)))
+            for old in reports:  # a report of an earlier run would look current
+                old.unlink(missing_ok=True)
+            _after(args, f, False)
             continue
-        rows.append(summary_row(str(f), report))
+        _after(args, f, True)
+        rows.append(row)
     atomic_write(Path(args.csv) if args.csv else out / "summary.csv", csv_text(rows))
     if not args.quiet:
         for r in rows:

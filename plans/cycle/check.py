@@ -37,15 +37,15 @@ from typing import Any
 
 import numpy as np
 
-from plans.errors import InputError
+from plans.errors import InputError, OutputError
 from plans.forces.loads import apply_loads, parse_loads
-from plans.io import atomic_write, dumps, read_toml
+from plans.io import dumps, read_toml, refuse_input, write_all
 from plans.kinematics.exact import solve
-from plans.reader import Reader, _show
+from plans.reader import Reader, show
 from plans.scene.model import Scene, load_scene
 
 from .dynamics import dynamics, reduce
-from .spec import ANGLE_LIMIT_DEG
+from .spec import ANGLE_LIMIT_DEG, rotor_inertia
 
 _KEYS = {"phi_deg", "sign", "velocity_scale", "analogue_scale", "segment_mm", "rule_pct", "measured", "values",
          "flywheel"}
@@ -126,7 +126,7 @@ def _rows(path: str, raw: Any, where: str, n: int) -> dict[str, list[float | Non
             if v == "" or v == "-":
                 row.append(None)
             elif isinstance(v, bool) or not isinstance(v, int | float):
-                raise _fail(path, f, f"expected numbers (or \"-\" for none), got {_show(v)}")
+                raise _fail(path, f, f"expected numbers (or \"-\" for none), got {show(v)}")
             else:
                 row.append(Reader(path).value(v, f))
         out[name] = row
@@ -189,8 +189,7 @@ def check_cycle(path: str | Path) -> CycleReport:
     rule = rd.number(cyc, "rule_pct", "cycle.", default=5.0, positive=True)
     loads = parse_loads(scene)
     kin = solve(scene, phis_a, order=2)
-    spec_rotor = float(scene.raw.get("dynamics", {}).get("rotor_inertia", 0.0))
-    red = reduce(scene, loads, kin, spec_rotor)
+    red = reduce(scene, loads, kin, rotor_inertia(scene))
     w = abs(scene.driver.omega)
     exact_rows: dict[str, tuple[np.ndarray, str]] = {"I_pr": (red.I_pr, "kg*m^2"),
                                                       "M_pr": (red.M_pr * (1 if sign == "driving" else -1), "N*m")}
@@ -293,22 +292,43 @@ def csv_text(rep: CycleReport) -> str:
     return buf.getvalue()
 
 
+def summary_row(path: str, rep: CycleReport) -> dict[str, Any]:
+    """The line of ``summary.csv`` (``plans check DIR``) for a cycle check file."""
+    worst = max(rep.items, key=lambda i: abs(i.error_pct), default=None)
+    where = "" if worst is None else worst.quantity + ("" if worst.phi_deg is None else f" at {worst.phi_deg:g}°")
+    return {"file": path, "student": rep.student, "status": "ok", "items": len(rep.items), "passed": rep.passed,
+            "failed": rep.failed, "findings": 0, "worst": where,
+            "worst_error_pct": "" if worst is None else f"{worst.error_pct:.2f}", "message": ""}
+
+
+def outputs(rep: CycleReport, target: Path, out: Path) -> dict[Path, str]:
+    """The report files of one cycle check file in the folder ``out``."""
+    return {out / f"{target.stem}.json": dumps(rep.to_json()), out / f"{target.stem}.txt": text(rep) + "\n"}
+
+
 def run_file(target: Path, args: argparse.Namespace) -> int:
-    """``plans check`` on a cycle check file (same options as for a sheet's check file)."""
+    """``plans check`` on a cycle check file (same options as for a sheet's check file; a
+    cycle has no marked sheet).  Its outputs are written all or none."""
     import sys
 
     rep = check_cycle(target)
-    if args.json == "-":
-        sys.stdout.write(dumps(rep.to_json()))
-    elif args.json:
-        atomic_write(args.json, dumps(rep.to_json()))
+    for out_path in (args.json, getattr(args, "csv", None)):
+        refuse_input(out_path, target, rep.scene.path)
+    files: dict[Path, str] = {}
+    if args.json and args.json != "-":
+        files[Path(args.json)] = dumps(rep.to_json())
     if getattr(args, "csv", None):
-        atomic_write(args.csv, csv_text(rep))
+        files[Path(args.csv)] = csv_text(rep)
     if getattr(args, "out", None):
         out = Path(args.out)
-        out.mkdir(parents=True, exist_ok=True)
-        atomic_write(out / f"{target.stem}.json", dumps(rep.to_json()))
-        atomic_write(out / f"{target.stem}.txt", text(rep) + "\n")
+        try:
+            out.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            raise OutputError(f"cannot create the output folder {out}: {exc.strerror}") from None
+        files.update(outputs(rep, target, out))
+    write_all(files)
+    if args.json == "-":
+        sys.stdout.write(dumps(rep.to_json()))
     if not args.quiet and args.json != "-":
         print(text(rep))
     return 0

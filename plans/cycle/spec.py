@@ -128,6 +128,16 @@ def _positions(scene: Scene, raw: dict[str, Any], where: str, *, equal: bool) ->
     return tuple(phi0 + 360.0 * k / n for k in range(n))
 
 
+def rotor_inertia(scene: Scene) -> float:
+    """The rotor's own inertia at the crank (``[dynamics] rotor_inertia``, 0 when absent),
+    read on its own for a check file that needs no flywheel."""
+    raw = _table(scene, "dynamics", _DYN_KEYS)
+    rotor = _number(scene, raw, "rotor_inertia", "dynamics") if "rotor_inertia" in raw else 0.0
+    if rotor < 0:
+        raise _fail(scene, "dynamics.rotor_inertia", f"expected a moment of inertia >= 0 kg·m², got {rotor:g}")
+    return rotor
+
+
 def dynamics_spec(scene: Scene) -> DynamicsSpec:
     raw = _table(scene, "dynamics", _DYN_KEYS)
     where = "dynamics"
@@ -137,9 +147,7 @@ def dynamics_spec(scene: Scene) -> DynamicsSpec:
     # Below DELTA_FLOOR ω_max² − ω_min² is lost to round-off (and no flywheel is that uniform).
     if not DELTA_FLOOR <= delta < 1.0:
         raise _fail(scene, "dynamics.delta", f"expected {DELTA_FLOOR:g} <= δ < 1, got {delta:g}")
-    rotor = _number(scene, raw, "rotor_inertia", where) if "rotor_inertia" in raw else 0.0
-    if rotor < 0:
-        raise _fail(scene, "dynamics.rotor_inertia", f"expected a moment of inertia >= 0 kg·m², got {rotor:g}")
+    rotor = rotor_inertia(scene)
     driving: float | None = None
     d = raw.get("driving", "constant")
     if isinstance(d, str):

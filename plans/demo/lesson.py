@@ -13,7 +13,7 @@ Coordinates are millimetres on the page (scheme at μl, plans at their μ), y up
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -21,8 +21,13 @@ from plans.demo.mistakes import mistakes, page_mm, page_xy
 from plans.errors import InputError, PlansError
 from plans.kinematics.exact import Kinematics, solve
 from plans.kinematics.plan import Plan, Step
+from plans.phrases import LANGUAGES
 from plans.results import Solution, solve_scene
 from plans.scene.model import Scene
+
+if TYPE_CHECKING:  # the force rooms are loaded only for a scene with forces
+    from plans.forces.lever import LeverAnalysis
+    from plans.forces.polygons import ForceAnalysis
 
 #: How many crank positions the cycle of a page holds by default (every 5°).
 FRAMES = 72
@@ -170,18 +175,18 @@ def _group_links(label: str) -> list[int]:
     return []
 
 
-def _steps(sol: Solution, k: int) -> tuple[list[dict], list[dict]]:
+def _steps(sol: Solution, k: int, lang: str) -> tuple[list[dict], list[dict]]:
     scene = sol.scene
     panels: list[dict] = []
     steps: list[dict] = []
     pp = sol.plans[k] if sol.plans else None
 
-    def add(panel: dict, plan_steps: list[Step], texts: list[str] | None = None, links: list[int] | None = None):
+    def add(panel: dict, plan_steps: list[Step], links: list[int] | None = None):
         panel["found"] = [s.output for s in plan_steps if s.op == "intersect" and s.output in panel["points"]]
         panels.append(panel)
         reveal = _reveal(panel, plan_steps) if panel is not None else []
         for n, s in enumerate(plan_steps):
-            steps.append({"panel": panel["id"], "text": (texts[n] if texts else s.text),
+            steps.append({"panel": panel["id"], "text": s.say(lang),
                           "op": s.op, **reveal[n],
                           "scheme": _scheme_marks(scene, s, panel["kind"]), "links": links or []})
 
@@ -208,7 +213,7 @@ def _steps(sol: Solution, k: int) -> tuple[list[dict], list[dict]]:
                 plan = polys[name].plan
                 panel = _panel(name.replace(" ", "-"), f"force polygon, {name}", plan, "mm/N")
             links = _group_links(name) or ([scene.driver.link] if name == "crank" else [])
-            add(panel, st, None, links)
+            add(panel, st, links)
     return panels, steps
 
 
@@ -225,11 +230,15 @@ def _position_index(sol: Solution, phi_deg: float | None) -> int:
     raise InputError(f"crank angle {phi_deg:g}° is not among the scene's positions {phis}", field="--phi")
 
 
-def lesson(scene: Scene, *, phi_deg: float | None = None, frames: int = FRAMES) -> dict[str, Any]:
-    """The lesson of a scene (a JSON-able dict): steps at one position, the cycle, mistakes."""
+def lesson(scene: Scene, *, phi_deg: float | None = None, frames: int = FRAMES,
+           language: str = "en") -> dict[str, Any]:
+    """The lesson of a scene (a JSON-able dict): steps at one position, the cycle, mistakes;
+    every sentence in ``language`` ("en" or "ru")."""
     if not (isinstance(frames, int) and 2 <= frames <= MAX_FRAMES):
         raise InputError(f"expected a whole number of frames from 2 to {MAX_FRAMES}, got {frames!r}",
                          field="--frames")
+    if language not in LANGUAGES:
+        raise InputError(f"expected one of {', '.join(LANGUAGES)}, got {language!r}", field="--language")
     sol = solve_scene(scene)
     k = _position_index(sol, phi_deg)
     phis = np.arange(frames) * (360.0 / frames)
@@ -247,9 +256,14 @@ def lesson(scene: Scene, *, phi_deg: float | None = None, frames: int = FRAMES) 
         amax = max(float(np.max(np.abs(cyc.point(nm)[2]))) for nm in names)
         cycle["mu_a"] = _nice_length_scale(amax / 1000.0, 60.0) / 1000.0 if amax > 0 else 1.0
         cycle["acceleration"] = _plan_images(cyc, names, 2, cycle["mu_a"])
-    charts = [c for c in ([_balancing_chart(scene, phis)] if sol.forces is not None else []) if c]
+    forces = _cycle_force_analysis(scene, phis, cycle.get("mu_v")) if sol.forces is not None else None
+    charts = [] if forces is None else [_balancing_chart(phis, forces[0])]
     cycle["charts"] = charts + _cycle_charts(scene)
-    panels, steps = _steps(sol, k)
+    if forces is not None:
+        from plans.demo.cycle_forces import cycle_forces
+
+        cycle["forces"] = cycle_forces(*forces)
+    panels, steps = _steps(sol, k, language)
     at = solve(scene, [float(sol.kinematics.phi_deg[k])], order=order, structure=sol.structure)
     scheme = _scheme(scene, at, mu_l)
     scheme["guides"] = cycle["scheme"]["guides"]  # a guide is drawn over the whole stroke
@@ -260,7 +274,7 @@ def lesson(scene: Scene, *, phi_deg: float | None = None, frames: int = FRAMES) 
         "panels": panels,
         "steps": steps,
         "cycle": cycle,
-        "mistakes": mistakes(sol, k, panels),
+        "mistakes": mistakes(sol, k, panels, language),
         "links": {str(lid): scene.links[lid].name for lid in scene.links},
     }
 
@@ -284,15 +298,22 @@ def _chart(label: str, unit: str, phi_deg: Any, values: Any, nodes: tuple[Any, A
     return out
 
 
-def _balancing_chart(scene: Scene, phis: np.ndarray) -> dict[str, Any] | None:
-    """F_bal(φ) over the cycle, exact; None where the turn passes a position the force
-    analysis cannot take (a locked group)."""
+def _cycle_force_analysis(scene: Scene, phis: np.ndarray, mu_v: float | None
+                          ) -> tuple[ForceAnalysis, LeverAnalysis] | None:
+    """The force analysis and the lever (at the cycle's μv) over the frames; None where the
+    turn passes a position the force analysis cannot take (a locked group)."""
+    from plans.forces.lever import zhukovsky_lever
     from plans.forces.polygons import analyse_forces
 
     try:
         fa = analyse_forces(scene, solve(scene, phis, order=2))
+        return fa, zhukovsky_lever(fa, scale=mu_v)
     except PlansError:
         return None
+
+
+def _balancing_chart(phis: np.ndarray, fa: ForceAnalysis) -> dict[str, Any]:
+    """F_bal(φ) over the cycle, exact."""
     kind = fa.crank.kind
     closed = np.append(phis, phis[0] + 360.0), np.append(fa.balancing, fa.balancing[0])  # the turn closes
     return _chart("F_bal" if kind == "force" else "M_bal", "N" if kind == "force" else "N·m", *closed)

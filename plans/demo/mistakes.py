@@ -14,6 +14,7 @@ from dataclasses import replace
 from typing import Any
 
 from plans.kinematics.exact import solve
+from plans.phrases import Phrase, phrase
 from plans.results import Solution
 
 
@@ -35,10 +36,10 @@ def _meet(p1: complex, d1: complex, p2: complex, d2: complex) -> complex | None:
     return p1 + t * d1
 
 
-def _pct(wrong: float, right: float) -> str:
+def _pct(wrong: float, right: float) -> Phrase:
     if right == 0:
-        return f"{wrong - right:+.4g}"
-    return f"{100.0 * (wrong - right) / abs(right):+.2f} %"
+        return phrase("x_diff", d=wrong - right)
+    return phrase("x_pct", p=100.0 * (wrong - right) / abs(right))
 
 
 def _panel(panels: list[dict], pid: str) -> dict | None:
@@ -72,16 +73,14 @@ def _relay(panel: dict, anchor: str, shift: complex) -> tuple[str, complex, comp
     return None
 
 
-def _moved(pid: str, name: str, right: complex, wrong: complex, mu: float, unit: str, text: str) -> dict:
-    d = abs(wrong - right)
-    return {"panel": pid, "moved": {name: page_xy(wrong)},
-            "right": {name: page_xy(right)},
-            "text": f"{text} Point {name} moves by {d:.1f} mm on the drawing: "
-                    f"|p{name}| = {abs(wrong) / mu:.5g} {unit} instead of {abs(right) / mu:.5g} {unit} "
-                    f"({_pct(abs(wrong), abs(right))})."}
+def _moved(pid: str, name: str, right: complex, wrong: complex, mu: float, unit: str, why: Phrase,
+           lang: str) -> dict:
+    words = phrase("x_moved", why=why, name=name, d=abs(wrong - right), w=abs(wrong) / mu, r=abs(right) / mu,
+                   unit=unit, pct=_pct(abs(wrong), abs(right)))
+    return {"panel": pid, "moved": {name: page_xy(wrong)}, "right": {name: page_xy(right)}, "text": words.say(lang)}
 
 
-def _coriolis(panels: list[dict]) -> dict | None:
+def _coriolis(panels: list[dict], lang: str) -> dict | None:
     acc = _panel(panels, "acceleration")
     if acc is None:
         return None
@@ -93,14 +92,12 @@ def _coriolis(panels: list[dict]) -> dict | None:
             continue
         hit = _relay(acc, sg["to"], -2.0 * c)
         if hit is not None:
-            out = _moved("acceleration", *hit, acc["scale"], "m/s²",
-                         f"The Coriolis acceleration {sg['label']} laid off the wrong way round "
-                         f"(ω of the guide not turned 90° in its own sense).")
+            out = _moved("acceleration", *hit, acc["scale"], "m/s²", phrase("x_coriolis", label=sg["label"]), lang)
             return {"id": "coriolis", "title": "Coriolis vector reversed", **out}
     return None
 
 
-def _normal(panels: list[dict]) -> dict | None:
+def _normal(panels: list[dict], lang: str) -> dict | None:
     acc = _panel(panels, "acceleration")
     if acc is None:
         return None
@@ -112,13 +109,12 @@ def _normal(panels: list[dict]) -> dict | None:
         hit = _relay(acc, sg["to"], shift)
         if hit is not None:
             out = _moved("acceleration", *hit, acc["scale"], "m/s²",
-                         f"The normal component {sg['label']} laid off from the pole {pole} instead of "
-                         f"from {sg['from']}.")
+                         phrase("x_normal", label=sg["label"], pole=pole, frm=sg["from"]), lang)
             return {"id": "normal", "title": "normal component from the wrong point", **out}
     return None
 
 
-def _couple(sol: Solution, k: int) -> dict | None:
+def _couple(sol: Solution, k: int, lang: str) -> dict | None:
     if sol.forces is None:
         return None
     _, lv = sol.forces
@@ -141,12 +137,10 @@ def _couple(sol: Solution, k: int) -> dict | None:
     return {"id": "couple", "title": "inertia couple with the wrong sign", "panel": "lever", "moved": {},
             "right": {}, "highlight": [label + "'", label + "''"],
             "values": {"quantity": "F_bal" if unit == "N" else "M_bal", "unit": unit, "right": right, "wrong": wrong},
-            "text": f"The inertia couple {label} put on the lever in the sense of the angular acceleration "
-                    f"instead of against it: F_bal = {wrong:.5g} {unit} instead of {right:.5g} {unit} "
-                    f"({_pct(wrong, right)})."}
+            "text": phrase("x_couple", label=label, w=wrong, r=right, unit=unit, pct=_pct(wrong, right)).say(lang)}
 
 
-def _pi(sol: Solution, k: int, panels: list[dict]) -> dict | None:
+def _pi(sol: Solution, k: int, panels: list[dict], lang: str) -> dict | None:
     scene = sol.scene
     if "omega_rpm" not in scene.raw.get("driver", {}):
         return None
@@ -167,9 +161,8 @@ def _pi(sol: Solution, k: int, panels: list[dict]) -> dict | None:
             moved[img] = page_xy(v)
     crank_pin = scene.links[d.link].axis[1]
     vA = abs(d.omega) * abs(scene.links[d.link].points[crank_pin])
-    text = (f"ω1 = πn/30 computed with π = 3.14: ω1 = {abs(d.omega) * ratio:.5g} rad/s instead of "
-            f"{abs(d.omega):.5g} rad/s, so v_{crank_pin} = {vA * ratio:.5g} m/s instead of {vA:.5g} m/s "
-            f"({_pct(ratio, 1.0)}), every acceleration {_pct(ratio**2, 1.0)}.")
+    text = phrase("x_pi", w=abs(d.omega) * ratio, r=abs(d.omega), A=crank_pin, vw=vA * ratio, vr=vA,
+                  pct=_pct(ratio, 1.0), pct2=_pct(ratio**2, 1.0)).say(lang)
     if sol.forces is not None and order == 2:
         from plans.errors import PlansError
         from plans.forces.polygons import analyse_forces
@@ -182,14 +175,15 @@ def _pi(sol: Solution, k: int, panels: list[dict]) -> dict | None:
             f_right = float(sol.forces[0].balancing[k])
             f_wrong = float(fa.balancing[0])
             unit = "N" if fa.crank.kind == "force" else "N·m"
-            text += f" F_bal = {f_wrong:.5g} {unit} instead of {f_right:.5g} {unit} ({_pct(f_wrong, f_right)})."
+            text += phrase("x_pi_force", w=f_wrong, r=f_right, unit=unit, pct=_pct(f_wrong, f_right)).say(lang)
     right = {nm: vel["points"][nm] for nm in moved}
     return {"id": "pi", "title": "π = 3.14", "panel": "velocity", "moved": moved, "right": right, "text": text}
 
 
-def mistakes(sol: Solution, k: int, panels: list[dict]) -> list[dict[str, Any]]:
-    """The classic mistakes that apply to this scene at position k."""
-    out = [m for m in (_coriolis(panels), _normal(panels), _couple(sol, k), _pi(sol, k, panels)) if m]
+def mistakes(sol: Solution, k: int, panels: list[dict], lang: str = "en") -> list[dict[str, Any]]:
+    """The classic mistakes that apply to this scene at position k, told in ``lang``."""
+    out = [m for m in (_coriolis(panels, lang), _normal(panels, lang), _couple(sol, k, lang),
+                       _pi(sol, k, panels, lang)) if m]
     return out
 
 

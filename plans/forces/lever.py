@@ -23,6 +23,7 @@ from plans.forces.shared import RULER_MM, mu_force, nice_scale, safe_div, unit_v
 from plans.kinematics.exact import cross
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step
 from plans.kinematics.scales import round_scale
+from plans.phrases import phrase
 from plans.units import clean, percent
 
 C = NDArray[np.complex128]
@@ -165,8 +166,8 @@ def lever_plan(lv: LeverAnalysis, k: int) -> Plan:
     pts: dict[str, tuple[float, float]] = {"p": (0.0, 0.0)}
     segs: list[Segment] = []
     lines: list[ConstructionLine] = []
-    steps: list[Step] = [Step("lay off", (), "p", f"Turn the velocity plan 90° {'ccw' if lv.turn > 0 else 'cw'} "
-                                                  f"about the pole p (μv = {lv.scale:g} mm/(m/s)).")]
+    steps: list[Step] = [Step.of("lay off", (), "p", phrase(
+        "l_turn", sense=phrase("ccw" if lv.turn > 0 else "cw"), mu=lv.scale))]
     # force vectors drawn at a common force scale, only for the picture
     fmax = max([float(np.abs(it.F[k])) for it in lv.forces] + [abs(float(lv.by_lever[k]))], default=0.0)
     mu_f = round_scale(fmax, 30.0) if fmax > 0 else 1.0  # a round μF, the largest ≤ 30 mm
@@ -182,14 +183,13 @@ def lever_plan(lv: LeverAnalysis, k: int) -> Plan:
         segs.append(Segment(it.point, tip, "force", it.label, abs(F) * mu_f, abs(F)))
         u = F / abs(F)
         lines.append(ConstructionLine((w.real, w.imag), (u.real, u.imag), f"line of {it.label}"))
-        steps.append(Step("parallel", (it.point,), tip,
-                          f"Apply {it.label} = {clean(abs(F), fmax):.4g} N at {it.point} parallel to itself; "
-                          f"arm h = {float(it.arm[k]):.2f} mm from p."))
+        steps.append(Step.of("parallel", (it.point,), tip, phrase(
+            "l_apply", label=it.label, F=clean(abs(F), fmax), pt=it.point, h=float(it.arm[k]))))
     wb = complex(lv.w_bal[k])
     pts.setdefault(lv.bal_point, (wb.real, wb.imag))
-    steps.append(Step("intersect", (), "F_bal",
-                      f"ΣM_p = 0 gives F_bal = {float(lv.signed(lv.by_lever)[k]):.6g} "
-                      f"{'N' if fa.crank.kind == 'force' else 'N·m'} at {lv.bal_point}."))
+    steps.append(Step.of("intersect", (), "F_bal", phrase(
+        "l_result", F=float(lv.signed(lv.by_lever)[k]), unit="N" if fa.crank.kind == "force" else "N·m",
+        pt=lv.bal_point)))
     points = tuple(PlanPoint(nm, xy, "p" if nm != "p" and xy == (0.0, 0.0) else None) for nm, xy in pts.items())
     return Plan("lever", float(kin.phi_deg[k]), lv.scale, "p", points, tuple(segs), tuple(lines), tuple(steps),
                 () if bool(lv.valid[k]) else ("the crank stands still: no lever",))

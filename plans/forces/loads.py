@@ -65,9 +65,10 @@ import numpy as np
 from numpy.typing import NDArray
 
 from plans.errors import ConstructionError, InputError
+from plans.forces.shared import unit_vector
 from plans.reader import Reader, check_keys, did_you_mean
 from plans.scene.model import Scene
-from plans.units import LENGTH_UNITS
+from plans.units import DUST, LENGTH_UNITS
 
 C = NDArray[np.complex128]
 R = NDArray[np.float64]
@@ -491,6 +492,11 @@ class AppliedLoads:
         return np.max(np.abs(np.stack([f.F for f in self.forces])), axis=0)
 
 
+def _extent(kin: Any) -> float:
+    """The mechanism's reach from the origin (m) over the positions, for what counts as dust."""
+    return max((float(np.max(np.abs(kin.point(nm)[0]))) for nm in kin.point_names()), default=1.0) or 1.0
+
+
 def apply_loads(scene: Scene, loads: Loads, kin: Any) -> AppliedLoads:
     """Gravity, inertia (Φ = −m a_S at S, M_Φ = −I_S ε), gas, external loads at every position."""
     n = kin.n
@@ -510,10 +516,12 @@ def apply_loads(scene: Scene, loads: Loads, kin: Any) -> AppliedLoads:
         m_phi = -inert * kin.eps(lid) if inert > 0 else np.zeros(n)
         if loads.offset_inertia and m > 0:
             # one force Φ offset from S so that its moment about S is M_Φ: d = −iΦ M_Φ/|Φ|²;
-            # where Φ vanishes the couple stays a couple (the offset would be infinite)
-            mag2 = np.abs(phi) ** 2
-            ok = mag2 > 0
-            d = np.where(ok, -1j * phi * m_phi / np.where(ok, mag2, 1.0), 0)
+            # where Φ vanishes (or is dust beside M_Φ: an offset a billion times the mechanism)
+            # the couple stays a couple
+            mag = np.abs(phi)
+            ok = np.abs(m_phi) < 1e9 * _extent(kin) * mag
+            safe = np.where(ok, mag, 1.0)
+            d = np.where(ok, -1j * (m_phi / safe) * unit_vector(phi), 0)
             local = z + d * np.conj(kin.motion[lid].rot)
             forces.append(AppliedForce(f"Phi{lid}", lid, f"{s_name}*", r + d, local, phi, "inertia"))
             rest = np.where(ok, 0.0, m_phi)
@@ -535,7 +543,7 @@ def apply_loads(scene: Scene, loads: Loads, kin: Any) -> AppliedLoads:
             assert fl.resisting is not None and v is not None
             if fl.along is None:
                 speed = np.abs(v)
-                F = np.where(speed > 0, -fl.resisting * v / np.where(speed > 0, speed, 1.0), 0)
+                F = np.where(speed > 0, -fl.resisting * unit_vector(v), 0)
             else:
                 e = complex(math.cos(fl.along), math.sin(fl.along))
                 sv = np.sign((v * np.conj(e)).real)
@@ -568,8 +576,9 @@ def _gas_force(scene: Scene, kin: Any, gl: GasLoad) -> AppliedForce:
     # the acceleration says which stroke begins
     vd = (v * np.conj(e_down)).real
     ad = (a * np.conj(e_down)).real if a is not None else np.zeros_like(vd)
-    scale_v = np.max(np.abs(vd)) if vd.size else 0.0
-    moving = np.abs(vd) > 1e-12 * max(scale_v, 1e-300)
+    # zero up to round-off against the mechanism's own speed (ω × its reach), not against the
+    # positions asked for: a dead centre solved alone gives the same stroke as in the whole turn
+    moving = np.abs(vd) > DUST * abs(scene.driver.omega) * _extent(kin)
     down = np.where(moving, vd > 0, ad >= 0)
     if gl.pressure is not None:
         p = np.full(kin.n, gl.pressure)

@@ -52,6 +52,7 @@ from plans.forces.shared import RULER_MM, mu_force, safe_div, unit_vector
 from plans.kinematics.exact import Kinematics, cross
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step
 from plans.kinematics.structure import Group
+from plans.phrases import Phrase, phrase
 from plans.scene.model import Joint, Scene
 from plans.units import clean
 
@@ -474,8 +475,8 @@ class _Poly:
         end = self._new(self.pts[start] + F * self.mu)
         self._seg(start, end, "force", label)
         shown = clean(abs(F), 100.0 / self.mu)  # against the polygon's size (its longest ≈ 100 mm)
-        self.steps.append(Step("lay off", (start,), end, f"From {start} lay off {label} = {shown:.6g} N "
-                                                         f"as {start}{end} = {abs(F) * self.mu:.1f} mm."))
+        self.steps.append(Step.of("lay off", (start,), end, phrase(
+            "f_lay", start=start, end=end, label=label, F=shown, mm=abs(F) * self.mu)))
         self.cur = end
 
     def intersect(self, label_end: str, d_end: complex, label_start: str, d_start: complex,
@@ -503,10 +504,8 @@ class _Poly:
         xn = self._new(x)
         self._seg(end, xn, "closing", label_end)
         self._seg(xn, start, "closing", label_start)
-        self.steps.append(Step("intersect", (end, start), xn,
-                               f"Through {end} draw the line of {label_end}, through {start} the line of "
-                               f"{label_start}; they meet at {xn}: {label_end} = {end}{xn}, "
-                               f"{label_start} = {xn}{start}."))
+        self.steps.append(Step.of("intersect", (end, start), xn, phrase(
+            "f_meet", end=end, start=start, le=label_end, ls=label_start, xn=xn)))
         self.cur = xn
         return xn
 
@@ -515,12 +514,13 @@ class _Poly:
         if abs(self.pts[a] - self.pts[to]) == 0:
             self.notes.append(f"{label} = 0")
         self._seg(a, to, "closing", label)
-        self.steps.append(Step("closing", (a, to), label, f"{label} = {a}{to} closes the polygon."))
+        self.steps.append(Step.of("closing", (a, to), label, phrase("f_close", label=label, a=a, to=to)))
         self.cur = to
 
-    def join(self, label: str, a: str, b: str, why: str) -> None:
+    def join(self, label: str, a: str, b: str, why: str | Phrase) -> None:
         self._seg(a, b, "closing", label)
-        self.steps.append(Step("closing", (a, b), label, f"{label} = {a}{b} ({why})."))
+        words = why if isinstance(why, Phrase) else phrase("f_sum", x=why)
+        self.steps.append(Step.of("closing", (a, b), label, phrase("f_join", label=label, a=a, b=b, why=words)))
 
     def end_of(self, labels: list[str], default: str) -> str:
         for lab in reversed(labels):
@@ -574,7 +574,7 @@ def force_polygons(fa: ForceAnalysis, k: int) -> tuple[ForcePolygon, ...]:
                 assert r3.guide is not None
                 x = poly.intersect(n3, complex(1j * r3.guide[k]), f"{n1}^n", complex(r1.e_n[k]))
             poly.join(n1, x, poly.end_of([tau1], "o"), f"{n1}^n + {n1}^τ")
-            poly.join(n2, end_i, x, f"closes the polygon of link {i}")
+            poly.join(n2, end_i, x, phrase("f_closes_link", i=i))
         elif g.kind == "PRP":
             assert r1.guide is not None and r3.guide is not None
             for lab, v in li:
@@ -583,7 +583,7 @@ def force_polygons(fa: ForceAnalysis, k: int) -> tuple[ForcePolygon, ...]:
             for lab, v in lj:
                 poly.lay(lab, v)
             x = poly.intersect(n3, complex(1j * r3.guide[k]), n1, complex(1j * r1.guide[k]))
-            poly.join(n2, end_i, x, f"closes the polygon of link {i}")
+            poly.join(n2, end_i, x, phrase("f_closes_link", i=i))
         elif g.kind == "RPP":
             assert r2.guide is not None and r3.guide is not None
             n_ji = _fname(scene, j, i)

@@ -16,6 +16,7 @@ from plans.forces.lever import LeverAnalysis, lever_plan
 from plans.forces.polygons import ForceAnalysis, GroupForces, force_polygons
 from plans.kinematics.exact import cross
 from plans.kinematics.plan import Plan, Step
+from plans.phrases import Phrase, phrase
 
 
 @dataclass(frozen=True, slots=True)
@@ -27,12 +28,7 @@ class ForceStep:
     step: Step
 
 
-def _num(x: float) -> str:
-    """A value as printed: zero up to round-off is 0."""
-    return "0" if abs(x) < 1e-12 else f"{x:.6g}"
-
-
-def _moment_terms(forces, moments, P: complex, k: int, mu_l: float) -> tuple[list[str], float]:
+def _moment_terms(forces, moments, P: complex, k: int, mu_l: float) -> tuple[list[Phrase], float]:
     """Signed moments of known forces (arms in mm on the scheme and in m) and couples about P."""
     terms, total = [], 0.0
     for f in forces:
@@ -43,20 +39,22 @@ def _moment_terms(forces, moments, P: complex, k: int, mu_l: float) -> tuple[lis
         h = abs(m) / abs(F)
         if h <= 1e-12 * max(abs(complex(f.r[k]) - P), 1e-300):  # passes through P up to round-off
             m, h = 0.0, 0.0
-        terms.append(f"{'+' if m >= 0 else '−'}{f.label}·h ({_num(abs(F))} N × {h * mu_l:.2f} mm = {_num(h)} m)")
+        terms.append(phrase("m_term_force", sign="+" if m >= 0 else "−", label=f.label, F=abs(F), mm=h * mu_l, h=h))
         total += m
     for mo in moments:
         M = float(mo.M[k])
         if M == 0:
             continue
-        terms.append(f"{'+' if M >= 0 else '−'}{mo.label} ({_num(abs(M))} N·m)")
+        terms.append(phrase("m_term_couple", sign="+" if M >= 0 else "−", label=mo.label, M=abs(M)))
         total += M
     return terms, total
 
 
-def _equation(name: str, terms: list[str], total: float, unknown: str) -> str:
-    known = " ".join(terms) if terms else "0"
-    return f"{name} = 0: {known}; known moments sum to {_num(total)} N·m (ccw +), so {unknown}."
+def _equation(op: str, inputs: tuple[str, ...], output: str, name: str, terms: list[Phrase], total: float,
+              unknown: Phrase) -> Step:
+    """The step of one moment equation: the known moments and what they give."""
+    return Step.of(op, inputs, output, phrase("m_equation", name=name, known=terms or phrase("m_zero"),
+                                              total=total, unknown=unknown))
 
 
 def _group_steps(fa: ForceAnalysis, gf: GroupForces, k: int, mu_l: float) -> list[Step]:
@@ -65,54 +63,47 @@ def _group_steps(fa: ForceAnalysis, gf: GroupForces, k: int, mu_l: float) -> lis
     i, j = g.links
     r1, r2, r3 = gf.reactions
     n1, n2, n3 = (rc.name(scene.fij) for rc in gf.reactions)
+    p1, p2, p3 = (jt.point for jt in g.joints)
     out: list[Step] = []
 
     def about(point: str, link: int) -> complex:
         return complex(kin.point(point, link)[0][k])
 
     if g.kind in ("RRR", "RRP"):
-        B = about(g.joints[1].point, i)
-        A = about(g.joints[0].point, i)
+        B = about(p2, i)
+        A = about(p1, i)
         terms, total = _moment_terms(gf.loads_i, gf.moments_i, B, k, mu_l)
         assert r1.tau is not None
-        out.append(Step("moment", (g.joints[1].point,), f"{n1}^τ", _equation(
-            f"ΣM_{g.joints[1].point}({i})", terms, total,
-            f"{n1}^τ · l_{g.joints[0].point}{g.joints[1].point} ({abs(B - A):.5g} m) balances them: "
-            f"{n1}^τ = {_num(float(r1.tau[k]))} N")))
+        out.append(_equation("moment", (p2,), f"{n1}^τ", f"ΣM_{p2}({i})", terms, total, phrase(
+            "m_tau", n=n1, A=p1, B=p2, l=abs(B - A), tau=float(r1.tau[k]))))
         terms, total = _moment_terms(gf.loads_j, gf.moments_j, B, k, mu_l)
         if g.kind == "RRR":
             assert r3.tau is not None
-            Cc = about(g.joints[2].point, j)
-            out.append(Step("moment", (g.joints[1].point,), f"{n3}^τ", _equation(
-                f"ΣM_{g.joints[1].point}({j})", terms, total,
-                f"{n3}^τ · l_{g.joints[2].point}{g.joints[1].point} ({abs(B - Cc):.5g} m) balances them: "
-                f"{n3}^τ = {_num(float(r3.tau[k]))} N")))
+            Cc = about(p3, j)
+            out.append(_equation("moment", (p2,), f"{n3}^τ", f"ΣM_{p2}({j})", terms, total, phrase(
+                "m_tau", n=n3, A=p3, B=p2, l=abs(B - Cc), tau=float(r3.tau[k]))))
         else:
-            out.append(Step("moment", (g.joints[1].point,), n3, _equation(
-                f"ΣM_{g.joints[1].point}({j})", terms, total,
-                f"the guide's couple is {_num(float(r3.M[k]))} N·m: {n3} acts "
-                f"{abs(float(r3.offset[k])) * mu_l:.2f} mm from {g.joints[1].point} along the guide")))
+            out.append(_equation("moment", (p2,), n3, f"ΣM_{p2}({j})", terms, total, phrase(
+                "m_guide", M=float(r3.M[k]), n=n3, mm=abs(float(r3.offset[k])) * mu_l, B=p2)))
     elif g.kind == "RPR":
-        A = about(g.joints[0].point, i)
-        Cc = about(g.joints[2].point, j)
+        A = about(p1, i)
+        Cc = about(p3, j)
         terms, total = _moment_terms(gf.loads_i, gf.moments_i, A, k, mu_l)
-        out.append(Step("moment", (g.joints[0].point,), n2, _equation(
-            f"ΣM_{g.joints[0].point}({i})", terms, total, f"the slot's couple on the block is "
-                                                         f"{_num(float(r2.M[k]))} N·m")))
+        out.append(_equation("moment", (p1,), n2, f"ΣM_{p1}({i})", terms, total,
+                             phrase("m_slot_couple", M=float(r2.M[k]))))
         terms, total = _moment_terms(gf.loads_j, gf.moments_j, Cc, k, mu_l)
-        out.append(Step("moment", (g.joints[2].point,), n2, _equation(
-            f"ΣM_{g.joints[2].point}({j})", terms, total,
-            f"{n2} ⟂ the slot, its arm {abs(cross(A - Cc, complex(1j * r2.guide[k]))) * mu_l:.2f} mm: "
-            f"|{n2}| = {_num(abs(complex(r2.F[k])))} N" if r2.guide is not None else n2)))
+        slot = (phrase("m_slot", n=n2, mm=abs(cross(A - Cc, complex(1j * r2.guide[k]))) * mu_l,
+                       F=abs(complex(r2.F[k]))) if r2.guide is not None else phrase("m_name", n=n2))
+        out.append(_equation("moment", (p3,), n2, f"ΣM_{p3}({j})", terms, total, slot))
     else:  # PRP, RPP: the couples of the prismatic pairs
-        P = about(g.joints[1].point if g.kind == "PRP" else g.joints[0].point, i)
+        P = about(p2 if g.kind == "PRP" else p1, i)
         terms, total = _moment_terms(gf.loads_i, gf.moments_i, P, k, mu_l)
         first = r1 if g.kind == "PRP" else r2
-        out.append(Step("moment", (), first.name(scene.fij), _equation(
-            f"ΣM({i})", terms, total, f"the couple of {first.name(scene.fij)} is {_num(float(first.M[k]))} N·m")))
+        out.append(_equation("moment", (), first.name(scene.fij), f"ΣM({i})", terms, total,
+                             phrase("m_couple_of", n=first.name(scene.fij), M=float(first.M[k]))))
         terms, total = _moment_terms(gf.loads_j, gf.moments_j, P, k, mu_l)
-        out.append(Step("moment", (), n3, _equation(
-            f"ΣM({j})", terms, total, f"the couple of {n3} is {_num(float(r3.M[k]))} N·m")))
+        out.append(_equation("moment", (), n3, f"ΣM({j})", terms, total,
+                             phrase("m_couple_of", n=n3, M=float(r3.M[k]))))
     return out
 
 
@@ -123,12 +114,11 @@ def _crank_steps(fa: ForceAnalysis, k: int, mu_l: float) -> list[Step]:
     terms, total = _moment_terms(c.loads, c.moments, O, k, mu_l)
     if c.kind == "force":
         l = abs(complex(c.r_point[k]) - O)
-        what = (f"F_bal ⟂ O{c.point} with the arm l = {l * mu_l:.2f} mm ({l:.5g} m) balances them: "
-                f"F_bal = {_num(float(fa.balancing[k]))} N along the motion of {c.point}")
+        what = phrase("m_crank_force", pt=c.point, mm=l * mu_l, l=l, F=float(fa.balancing[k]))
     else:
-        what = f"the balancing moment is M_bal = {_num(float(fa.balancing[k]))} N·m along ω1"
-    return [Step("moment", (scene.driver.pivot,), "F_bal" if c.kind == "force" else "M_bal",
-                 _equation(f"ΣM_{scene.driver.pivot}({c.link})", terms, total, what))]
+        what = phrase("m_crank_moment", M=float(fa.balancing[k]))
+    return [_equation("moment", (scene.driver.pivot,), "F_bal" if c.kind == "force" else "M_bal",
+                      f"ΣM_{scene.driver.pivot}({c.link})", terms, total, what)]
 
 
 def _lever_steps(lv: LeverAnalysis, k: int) -> list[Step]:
@@ -141,13 +131,14 @@ def _lever_steps(lv: LeverAnalysis, k: int) -> list[Step]:
         if F == 0:
             continue
         m = float(it.moment[k]) / 1000.0  # N·mm on the plan → N·m
-        terms.append(f"{'+' if m >= 0 else '−'}{it.label}·h_{it.point} ({_num(F)} N × {float(it.arm[k]):.2f} mm)")
+        terms.append(phrase("l_term", sign="+" if m >= 0 else "−", label=it.label, pt=it.point, F=F,
+                            h=float(it.arm[k])))
     unit = "N" if lv.fa.crank.kind == "force" else "N·m"
     bal = float(lv.signed(lv.by_lever)[k])
-    arm = (f" × {float(lv.arm_bal[k]):.2f} mm" if lv.fa.crank.kind == "force" else "")
-    eq = Step("moment", ("p",), "F_bal",
-              f"ΣM_p = 0 on the lever: {' '.join(terms) or '0'} + F_bal·h_{lv.bal_point}{arm} = 0, "
-              f"so F_bal = {_num(bal)} {unit} (by power balance {_num(float(lv.signed(lv.by_power)[k]))} {unit}).")
+    arm = phrase("l_arm", a=float(lv.arm_bal[k])) if lv.fa.crank.kind == "force" else phrase("nothing")
+    eq = Step.of("moment", ("p",), "F_bal", phrase(
+        "l_equation", terms=terms or phrase("m_zero"), pt=lv.bal_point, arm=arm, F=bal, unit=unit,
+        P=float(lv.signed(lv.by_power)[k])))
     return list(plan.steps[:-1]) + [eq]
 
 

@@ -43,9 +43,11 @@ def mu_force(fa: ForceAnalysis, values: list[complex]) -> float:
 
 
 def unit_vector(z: C) -> C:
-    """z / |z|, and 1 where z = 0."""
+    """z / |z|, and 1 where z = 0 (divided in real parts: numpy's complex division by a
+    subnormal |z| overflows inside)."""
     mag = np.abs(z)
-    return np.where(mag > 0, z / np.where(mag > 0, mag, 1.0), 1.0 + 0j)
+    safe = np.where(mag > 0, mag, 1.0)
+    return np.where(mag > 0, np.real(z) / safe + 1j * (np.imag(z) / safe), 1.0 + 0j)
 
 
 def safe_div(a: R, b: R) -> R:

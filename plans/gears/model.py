@@ -46,7 +46,7 @@ from typing import Any
 
 from plans.errors import InputError
 from plans.io import read_toml
-from plans.reader import Reader, _show, check_keys
+from plans.reader import Reader, check_keys, show
 from plans.units import LENGTH_UNITS
 
 SHIFT_RULES = ("minimum", "no_undercut", "equal_sliding")
@@ -117,7 +117,7 @@ class GearFile:
 def _num(v: Any, path: str, field_: str, what: str, lo: float | None = None,
          hi: float | None = None, strict: bool = True) -> float:
     if isinstance(v, bool) or not isinstance(v, int | float):
-        raise InputError(f"expected {what}, got {_show(v)}", file=path, field=field_)
+        raise InputError(f"expected {what}, got {show(v)}", file=path, field=field_)
     f = Reader(path).value(v, field_, positive=lo == 0.0 and strict)
     if lo is not None and (f <= lo if strict else f < lo):
         raise InputError(f"expected {what}, got {v!r}", file=path, field=field_)
@@ -128,7 +128,7 @@ def _num(v: Any, path: str, field_: str, what: str, lo: float | None = None,
 
 def _name(v: Any, path: str, field_: str) -> str:
     if isinstance(v, bool) or not isinstance(v, str | int) or str(v) == "":
-        raise InputError(f"expected a name (a string such as \"1\"), got {_show(v)}", file=path, field=field_)
+        raise InputError(f"expected a name (a string such as \"1\"), got {show(v)}", file=path, field=field_)
     return Reader(path).name(str(v), field_)
 
 
@@ -245,7 +245,7 @@ def _gears(data: dict[str, Any], path: str, m: float, k: float) -> dict[str, Gea
             raise InputError(f"gear {name!r} named twice", file=path, field=f + "name")
         z = g.get("z")
         if isinstance(z, bool) or not isinstance(z, int) or not 1 <= z <= MAX_TEETH:
-            raise InputError(f"expected a whole number of teeth 1 <= z <= {MAX_TEETH}, got {_show(z)}", file=path,
+            raise InputError(f"expected a whole number of teeth 1 <= z <= {MAX_TEETH}, got {show(z)}", file=path,
                              field=f + "z")
         xv = g.get("x", 0)
         x: float | None
@@ -253,7 +253,7 @@ def _gears(data: dict[str, Any], path: str, m: float, k: float) -> dict[str, Gea
             x = None
         else:
             if isinstance(xv, bool) or not isinstance(xv, int | float) or not abs(xv) <= 5:  # NaN fails too
-                raise InputError(f"expected a shift coefficient (a number, |x| <= 5) or \"auto\", got {_show(xv)}",
+                raise InputError(f"expected a shift coefficient (a number, |x| <= 5) or \"auto\", got {show(xv)}",
                                  file=path, field=f + "x")
             x = float(xv)
         internal = g.get("internal", False)

@@ -21,6 +21,7 @@ from plans.kinematics.dyads import (
     read_rates,
 )
 from plans.kinematics.structure import Group
+from plans.phrases import phrase
 from plans.units import clean
 
 
@@ -52,19 +53,17 @@ def acceleration_plan(snap: Scheme, mu: float, vb: Builder, pencil: Pencil, prot
     at = pencil.vector(mu * abs(e1) * l1, 1j * np.sign(e1) * (Apos - Opos), l1, a_lab) if e1 != 0.0 else 0 * an
     if e1 != 0.0:
         b.add(f"n_{A_name}{O}", an)
-        b.step("lay off", (b.pole,), f"n_{A_name}{O}", lambda: (
-            f"a_{A_name}^n = ω1²·l_{O}{A_name} = {w1**2 * b.s(l1):.6g} m/s²: {abs(b.s(an)):.3f} mm from {A_name} "
-            f"toward {O} (μa = {mu:.6g} mm/(m/s²))"))
+        b.step("lay off", (b.pole,), f"n_{A_name}{O}", lambda: phrase(
+            "a_crank_n", A=A_name, O=O, an=w1**2 * b.s(l1), mm=abs(b.s(an)), mu=mu))
         b.add(a_lab, an + at)
-        b.step("lay off", (f"n_{A_name}{O}",), a_lab, lambda: (
-            f"a_{A_name}^τ = ε1·l_{O}{A_name} = {abs(e1) * b.s(l1):.6g} m/s²: {abs(b.s(at)):.3f} mm ⟂ {O}{A_name}"))
+        b.step("lay off", (f"n_{A_name}{O}",), a_lab, lambda: phrase(
+            "a_crank_t", A=A_name, O=O, at=abs(e1) * b.s(l1), mm=abs(b.s(at))))
         b.seg(b.pole, f"n_{A_name}{O}", "normal", f"a_{A_name}{O}^n", w1**2 * l1)
         b.seg(f"n_{A_name}{O}", a_lab, "tangential", f"a_{A_name}{O}^τ", abs(e1) * l1)
     else:
         b.add(a_lab, an)
-        b.step("lay off", (b.pole,), a_lab, lambda: (
-            f"a_{A_name} = a_{A_name}^n = ω1²·l_{O}{A_name} = {w1**2 * b.s(l1):.6g} m/s² (ε1 = 0): "
-            f"{abs(b.s(an)):.3f} mm from {A_name} toward {O} (μa = {mu:.6g} mm/(m/s²))"))
+        b.step("lay off", (b.pole,), a_lab, lambda: phrase(
+            "a_crank", A=A_name, O=O, an=w1**2 * b.s(l1), mm=abs(b.s(an)), mu=mu))
     b.labels[(d.link, A_name)] = a_lab
     b.labels[(d.link, O)] = b.pole
     b.ref = np.abs(an + at) / mu
@@ -87,9 +86,9 @@ def _normal(b: Builder, vr: _VelReader, link: int, frm: str, frm_xy: np.ndarray,
     lb = f"n_{Xn}{Pn}"
     vec = b.pencil.vector(b.mu * w * w * ln, P - X, ln, lb)
     b.add(lb, frm_xy + vec)
-    b.step("lay off", (frm,), lb, lambda: (
-        f"a_{Xn}{Pn}^n = v_{Xn}{Pn}²/l_{Pn}{Xn} = {clean(b.s(w * w * ln), b.s(b.ref)):.6g} m/s²: {abs(b.s(vec)):.3f} mm from {frm} "
-        f"parallel to {Xn}{Pn}, from {Xn} toward {Pn}"))
+    b.step("lay off", (frm,), lb, lambda: phrase(
+        "a_normal", X=Xn, P=Pn, v=clean(abs(b.s(w * ln)), b.s(vr.vb.ref)), l=b.s(ln), an=clean(b.s(w * w * ln), b.s(b.ref)),
+        mm=abs(b.s(vec)), frm=frm))
     b.seg(frm, lb, "normal", f"a_{Xn}{Pn}^n", b.snap.w[link] ** 2 * ln)
     return lb, frm_xy + vec
 
@@ -104,9 +103,9 @@ def _coriolis(b: Builder, vr: _VelReader, guide_link: int, v_rel: np.ndarray, fr
     lb = f"k_{label}"
     vec = b.pencil.vector(b.mu * 2 * np.abs(w) * v_read, 1j * np.sign(w) * v_rel, 0.0, lb)
     b.add(lb, frm_xy + vec)
-    b.step("lay off", (frm,), lb, lambda: (
-        f"a^k_{label} = 2·ω{guide_link}·v_r = {clean(abs(b.s(2 * w * v_rel)), b.s(b.ref)):.6g} m/s²: {abs(b.s(vec)):.3f} mm, "
-        f"v_r turned 90° in the sense of ω{guide_link}"))
+    b.step("lay off", (frm,), lb, lambda: phrase(
+        "a_coriolis", label=label, g=guide_link, w=abs(b.s(w)), v=clean(abs(b.s(v_rel)), b.s(vr.vb.ref)),
+        ak=clean(abs(b.s(2 * w * v_rel)), b.s(b.ref)), mm=abs(b.s(vec))))
     b.seg(frm, lb, "coriolis", f"a^k_{label}", exact)
     return lb, frm_xy + vec
 
@@ -126,9 +125,8 @@ def _a_rrr(b: Builder, g: Group, vr: _VelReader) -> None:
     L3 = b.line(y3, 1j * (B - P3), np.abs(B - P3), f"⟂ {j3.point}{j2.point}")
     out = lab(j2.point)
     xb = meet(b, g, L1, L3, out, b.mu * snap.a(i, B), j2.point, (i, j))
-    b.step("intersect", (m1, m3), out, lambda: (
-        f"a_{j2.point}{j1.point}^τ ⟂ {j1.point}{j2.point} through {m1} and a_{j2.point}{j3.point}^τ ⟂ "
-        f"{j3.point}{j2.point} through {m3} meet at {out}"))
+    b.step("intersect", (m1, m3), out, lambda: phrase(
+        "a_rrr", A=j1.point, B=j2.point, C=j3.point, m1=m1, m3=m3, out=out))
     b.set_link(i, out, B, (xb - x1) / (B - P1))
     b.set_link(j, out, B, (xb - x3) / (B - P3))
     b.rate[i], b.rate[j] = (m1, out, np.abs(B - P1)), (m3, out, np.abs(B - P3))
@@ -158,9 +156,8 @@ def _a_rrp(b: Builder, g: Group, vr: _VelReader) -> None:
     L3 = b.line(start_xy, u, span, f"∥ guide of {j2.point}")
     out = lab(j2.point)
     xb = meet(b, g, L1, L3, out, b.mu * snap.a(i, B), j2.point, (i, j))
-    b.step("intersect", (m1, start), out, lambda: (
-        f"line through {m1} ⟂ {j1.point}{j2.point} (a_{j2.point}{j1.point}^τ) and line through {start} "
-        f"∥ guide meet at {out}"))
+    b.step("intersect", (m1, start), out, lambda: phrase(
+        "a_rrp", A=j1.point, B=j2.point, m1=m1, start=start, out=out))
     b.set_link(i, out, B, (xb - x1) / (B - P1))
     b.set_link(j, out, B, b.factor[q])
     b.rate[i], b.rate[j] = (m1, out, np.abs(B - P1)), q
@@ -191,8 +188,8 @@ def _a_rpr(b: Builder, g: Group, vr: _VelReader) -> None:
     L2 = b.line(yk, u, span, f"∥ slot of link {j}")
     out = f"{lab(j1.point)}{j}"
     x3 = meet(b, g, L1, L2, out, b.mu * snap.a(j, A), j1.point, ())
-    b.step("intersect", (mc, mk), out, lambda: (
-        f"a_{An}{j3.point}^τ ⟂ {j3.point}{j1.point} through {mc} and a^r ∥ slot through {mk} meet at {out}"))
+    b.step("intersect", (mc, mk), out, lambda: phrase(
+        "a_rpr", An=An, A=j1.point, C=j3.point, mc=mc, mk=mk, out=out))
     f = (x3 - xc) / (A - Cq)
     b.set_link(j, out, A, f)
     b.set_link(i, na, A, f)
@@ -224,9 +221,8 @@ def _a_prp(b: Builder, g: Group, vr: _VelReader) -> None:
     L1 = b.line(ends[0][1], u1, s1, f"∥ guide of link {i}")
     L3 = b.line(ends[1][1], u3, s3, f"∥ guide of link {j}")
     meet(b, g, L1, L3, out, b.mu * snap.a(i, B), j2.point, (i, j))
-    b.step("intersect", (ends[0][0], ends[1][0]), out, lambda: (
-        f"line through {ends[0][0]} ∥ guide of link {i} and line through {ends[1][0]} ∥ guide of link {j} "
-        f"meet at {out}"))
+    b.step("intersect", (ends[0][0], ends[1][0]), out, lambda: phrase(
+        "a_prp", e0=ends[0][0], e1=ends[1][0], i=i, j=j, out=out))
     b.set_link(i, out, B, b.factor[p])
     b.set_link(j, out, B, b.factor[q])
     b.rate[i], b.rate[j] = p, q
@@ -263,8 +259,7 @@ def _a_rpp(b: Builder, g: Group, vr: _VelReader) -> None:
     L3 = b.line(y3, u3, sp3, f"∥ guide of link {j}")
     L2 = b.line(y2, u2, sp2, f"∥ slot of link {j}")
     meet(b, g, L3, L2, out, b.mu * snap.a(j, A), j1.point, ())
-    b.step("intersect", (s3, s2), out, lambda: (
-        f"line through {s3} ∥ guide of link {j} and line through {s2} ∥ slot meet at {out}"))
+    b.step("intersect", (s3, s2), out, lambda: phrase("a_rpp", s3=s3, s2=s2, j=j, out=out))
     b.set_link(j, out, A, b.factor[q])
     b.set_link(i, na, A, b.factor[q])
     b.rate[j], b.rate[i] = q, q

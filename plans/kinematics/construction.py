@@ -27,6 +27,7 @@ from plans.errors import Locked
 from plans.kinematics.dyads import Builder, Mixed, PerfectPencil, Scheme, plans_of
 from plans.kinematics.exact import Kinematics
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step
+from plans.phrases import phrase
 from plans.tolerances import COINCIDE_REL
 from plans.units import clean, percent
 
@@ -216,7 +217,7 @@ def _points(b: Builder, k: int) -> tuple[tuple[PlanPoint, ...], list[Step]]:
         if same is None:
             seen.append(name)
         elif name != b.pole:
-            steps.append(Step("coincide", (same,), name, f"{name} coincides with {same}"))
+            steps.append(Step.of("coincide", (same,), name, phrase("coincide", name=name, same=same)))
     return tuple(points), steps
 
 

@@ -26,6 +26,7 @@ known image point plus its *similarity factor* f = (image of Y − image of X)/(
 from __future__ import annotations
 
 from collections.abc import Callable
+from functools import partial
 from typing import Any, Protocol
 
 import numpy as np
@@ -35,6 +36,7 @@ from plans.errors import Locked
 from plans.kinematics.exact import Kinematics
 from plans.kinematics.plan import Step
 from plans.kinematics.structure import Group
+from plans.phrases import Phrase, phrase
 from plans.scene.model import Joint
 from plans.tolerances import COINCIDE_REL, LOCK_SIN, NEAR_PARALLEL_SIN
 
@@ -240,9 +242,10 @@ class Builder:
         self.segments.append((start, end, kind, label, length, value))
         self.readings.append((label, f"{start} {end}", length, self.mu, value, exact, self.unit, self.ref, True))
 
-    def step(self, op: str, inputs: tuple[str, ...], output: str, text: Callable[[], str]) -> None:
+    def step(self, op: str, inputs: tuple[str, ...], output: str, words: Callable[[], Phrase]) -> None:
+        """A step of the protocol; its sentence is written only when a protocol is asked for."""
         if self.protocol:
-            self.steps.append(Step(op, inputs, output, text()))
+            self.steps.append(Step.of(op, inputs, output, words()))
 
     def line(self, through: C, direction: Any, span: Any, label: str) -> Line:
         u = self.pencil.line(direction, span)
@@ -305,8 +308,7 @@ def link_points(b: Builder, link: int) -> None:
         b.add(lb, b.pencil.mark(xy, lambda link=link: image_span(b, link), joint=name in joints))
         b.labels[(link, name)] = lb
         ref = b.anchor[link][0]
-        text = f"{lb}: similarity theorem on link {link} ({name} of link {link} from {ref})" if b.protocol else ""
-        b.step("similarity", (ref,), lb, text.__str__)
+        b.step("similarity", (ref,), lb, partial(phrase, "similarity", lb=lb, link=link, name=name, ref=ref))
         exact = np.abs(snap.v(link, X)) if b.sym == "v" else np.abs(snap.a(link, X))
         b.seg(b.pole, lb, "absolute", f"{b.sym}_{name}", exact)
 
@@ -389,7 +391,7 @@ def coincident(b: Builder, link: int, name: str, X: C) -> tuple[str, C]:
     xy = b.pencil.mark(b.image_at(link, X), lambda: image_span(b, link))
     b.add(lb, xy)
     b.step("similarity", (b.anchor[link][0],), lb,
-           lambda: f"{lb}: image of the point of link {link} under {name} (similarity theorem)")
+           lambda: phrase("coincident", lb=lb, link=link, name=name))
     return lb, xy
 
 

@@ -10,7 +10,9 @@ mm per SI unit (mm/(m/s), mm/(m/s²), mm/N).
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+
+from plans.phrases import Phrase
 
 #: Segment kinds, as the textbook distinguishes them.
 SEGMENT_KINDS = ("absolute", "relative", "normal", "tangential", "coriolis", "sliding", "force", "closing")
@@ -51,7 +53,17 @@ class Step:
     op: str  # "lay off", "parallel", "perpendicular", "intersect", "similarity", "coincide"
     inputs: tuple[str, ...]
     output: str
-    text: str
+    text: str  # the sentence in English
+    phrase: Phrase | None = field(default=None, compare=False, repr=False)  # to write it in another language
+
+    @classmethod
+    def of(cls, op: str, inputs: tuple[str, ...], output: str, words: Phrase) -> Step:
+        """A step whose sentence is a phrase (written in English as ``text``)."""
+        return cls(op, inputs, output, words.say("en"), words)
+
+    def say(self, lang: str = "en") -> str:
+        """The sentence in ``lang`` ("en" or "ru"), the same numbers either way."""
+        return self.text if self.phrase is None or lang == "en" else self.phrase.say(lang)
 
 
 @dataclass(frozen=True, slots=True)

@@ -21,6 +21,7 @@ from plans.kinematics.dyads import (
     rel_seg,
 )
 from plans.kinematics.structure import Group
+from plans.phrases import phrase
 
 
 def velocity_plan(snap: Scheme, mu: float, pencil: Pencil, protocol: bool = False) -> Builder:
@@ -36,10 +37,9 @@ def velocity_plan(snap: Scheme, mu: float, pencil: Pencil, protocol: bool = Fals
     b.ref = np.abs(a_xy) / mu
     b.labels[(d.link, A_name)] = lab(A_name)
     b.labels[(d.link, O)] = b.pole
-    b.step("lay off", (b.pole,), lab(A_name), lambda: (
-        f"v_{A_name} = ω1·l_{O}{A_name} = {abs(w1):.6g}·{b.s(l1):.6g} = {abs(w1) * b.s(l1):.6g} m/s; "
-        f"lay off {b.pole}{lab(A_name)} = {abs(b.s(a_xy)):.3f} mm ⟂ {O}{A_name} in the sense of ω1 "
-        f"(μv = {mu:.6g} mm/(m/s))"))
+    b.step("lay off", (b.pole,), lab(A_name), lambda: phrase(
+        "v_crank", A=A_name, O=O, w=abs(w1), l=b.s(l1), v=abs(w1) * b.s(l1), pole=b.pole, a=lab(A_name),
+        mm=abs(b.s(a_xy)), mu=mu))
     b.set_link(d.link, lab(A_name), Apos, mu * 1j * w1 + 0 * Apos)
     b.seg(b.pole, lab(A_name), "absolute", f"v_{A_name}", np.abs(snap.v(d.link, Apos)))
     link_points(b, d.link)
@@ -68,10 +68,8 @@ def _v_rrr(b: Builder, g: Group) -> None:
     L3 = b.line(x3, 1j * (B - P3), np.abs(B - P3), f"⟂ {j3.point}{j2.point}")
     out = lab(j2.point)
     xb = meet(b, g, L1, L3, out, _exact_v(b, i, B), j2.point, (i, j))
-    b.step("intersect", (n1, n3), out, lambda: (
-        f"v_{j2.point} = v_{j1.point} + v_{j2.point}{j1.point} = v_{j3.point} + v_{j2.point}{j3.point}: "
-        f"line through {n1} ⟂ {j1.point}{j2.point}, line through {n3} ⟂ {j3.point}{j2.point}; "
-        f"they meet at {out}"))
+    b.step("intersect", (n1, n3), out, lambda: phrase(
+        "v_rrr", A=j1.point, B=j2.point, C=j3.point, n1=n1, n3=n3, out=out))
     b.set_link(i, out, B, (xb - x1) / (B - P1))
     b.set_link(j, out, B, (xb - x3) / (B - P3))
     b.rate[i], b.rate[j] = (n1, out, np.abs(B - P1)), (n3, out, np.abs(B - P3))
@@ -94,10 +92,8 @@ def _v_rrp(b: Builder, g: Group) -> None:
     L3 = b.line(xq, u, span, f"∥ guide of {j2.point}")
     out = lab(j2.point)
     xb = meet(b, g, L1, L3, out, _exact_v(b, i, B), j2.point, (i, j))
-    b.step("intersect", (n1, nq), out, lambda: (
-        f"v_{j2.point} = v_{j1.point} + v_{j2.point}{j1.point}, v_{j2.point}{j1.point} ⟂ {j1.point}{j2.point}, "
-        f"v_{j2.point} ∥ guide: line through {n1} ⟂ {j1.point}{j2.point}, line through {nq} ∥ guide; "
-        f"they meet at {out}"))
+    b.step("intersect", (n1, nq), out, lambda: phrase(
+        "v_rrp", A=j1.point, B=j2.point, n1=n1, nq=nq, out=out))
     b.set_link(i, out, B, (xb - x1) / (B - P1))
     b.set_link(j, out, B, b.factor[q])
     b.rate[i], b.rate[j] = (n1, out, np.abs(B - P1)), q
@@ -122,9 +118,8 @@ def _v_rpr(b: Builder, g: Group) -> None:
     L2 = b.line(xa, u, span, f"∥ slot of link {j}")
     out = f"{lab(j1.point)}{j}"
     x3 = meet(b, g, L1, L2, out, _exact_v(b, j, A), j1.point, ())
-    b.step("intersect", (nc, na), out, lambda: (
-        f"v_{j1.point}{j} = v_{j3.point} + v_{j1.point}{j}{j3.point} (⟂ {j3.point}{j1.point}) = "
-        f"v_{j1.point}{i} + v_{j1.point}{j}{j1.point}{i} (∥ slot): they meet at {out}"))
+    b.step("intersect", (nc, na), out, lambda: phrase(
+        "v_rpr", A=j1.point, C=j3.point, i=i, j=j, out=out))
     f = (x3 - xc) / (A - Cq)
     b.set_link(j, out, A, f)
     b.set_link(i, na, A, f)
@@ -150,9 +145,8 @@ def _v_prp(b: Builder, g: Group) -> None:
     L3 = b.line(x3, u3, s3, f"∥ guide of link {j}")
     out = lab(j2.point)
     meet(b, g, L1, L3, out, _exact_v(b, i, B), j2.point, (i, j))
-    b.step("intersect", (n1, n3), out, lambda: (
-        f"v_{j2.point} = v_{j2.point}{p} + v_rel ∥ guide of {i} = v_{j2.point}{q} + v_rel ∥ guide of {j}: "
-        f"they meet at {out}"))
+    b.step("intersect", (n1, n3), out, lambda: phrase(
+        "v_prp", B=j2.point, p=p, q=q, i=i, j=j, out=out))
     b.set_link(i, out, B, b.factor[p])
     b.set_link(j, out, B, b.factor[q])
     b.rate[i], b.rate[j] = p, q
@@ -180,9 +174,8 @@ def _v_rpp(b: Builder, g: Group) -> None:
     L2 = b.line(xa, u2, s2, f"∥ slot of link {j}")
     out = f"{lab(j1.point)}{j}"
     meet(b, g, L3, L2, out, _exact_v(b, j, A), j1.point, ())
-    b.step("intersect", (nq, na), out, lambda: (
-        f"v_{j1.point}{j} = v_{j1.point}{q} + v_rel ∥ guide = v_{j1.point}{i} + v_rel ∥ slot: "
-        f"they meet at {out}"))
+    b.step("intersect", (nq, na), out, lambda: phrase(
+        "v_rpp", A=j1.point, q=q, i=i, j=j, out=out))
     b.set_link(j, out, A, b.factor[q])
     b.set_link(i, na, A, b.factor[q])
     b.rate[j], b.rate[i] = q, q
