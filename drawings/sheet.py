@@ -419,12 +419,14 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str | None = "
 
     The drawing-wide panels (plan of positions) come first; then one bordered block per
     crank angle, in angle order, under a heading "Положение 3, φ = 90°" (``numbers`` maps an
-    angle to its position number).  Inside a block the panels go in reading order where they
-    keep the block's skyline lowest; a block goes below or right of the previous one, on the
-    same sheet while it fits, else on the next (sheet order = angle order).  A block that
-    cannot fit one sheet is split into parts ("continued").  Each block is packed in several
-    widths; the shape that keeps the sheet's skyline lowest is taken.  The legend sits above the
-    title block of sheet 1; spare height is shared out between the bands of blocks.
+    angle to its position number).  Each block is packed several ways (:mod:`.packing`) and
+    the sheet takes the shape that fits the room left: right of the previous block or wholly
+    below it (a row, then the next row), on the same sheet while it fits, else on the next
+    (sheet order = angle order).  A position too big for one sheet flows over the sheets in
+    parts ("continued").  The legend goes where there is room once the blocks are down,
+    above the title block where it can; spare height is shared out between the bands of
+    blocks.  ``scale_text`` fills the title block's Scale cell; None: each sheet's own
+    (:func:`sheet_scale`).
     """
     W, H = spec.size
     area = usable(W, H)
