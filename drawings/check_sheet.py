@@ -28,7 +28,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from plans.check.report import Finding, Item, Report, check_file
-from plans.check.wording import KINDS_RU
+from plans.check.wording import KINDS_RU, UNITS_RU
 from plans.errors import PlansError
 from plans.kinematics.plan import Plan
 
@@ -137,8 +137,7 @@ def plan_with_marks(report: Report, plan: Plan, lang: str = "ru", *, overlay: bo
 
 
 _NAME = re.compile(r"\b([A-Za-z]+)_([A-Za-z0-9_]+)(?:\^[nτk])?")
-_UNIT_RU = {"m/s": "м/с", "m/s^2": "м/с²", "rad/s": "рад/с", "rad/s^2": "рад/с²", "N": "Н", "N·m": "Н·м",
-            "N*m": "Н·м", "%": "%", "mm": "мм", "m": "м"}
+
 
 
 _SPECIAL = {
@@ -201,7 +200,7 @@ def findings_panel(report: Report, lang: str = "ru") -> Panel:
         mm = "" if it.error_mm is None else f", {fmt(it.error_mm, 3, lang)} {'мм' if lang == 'ru' else 'mm'}"
         where = f" ({it.where})" if it.where else ""
         exact = "точно" if lang == "ru" else "exact"
-        unit = _UNIT_RU.get(it.unit, it.unit) if lang == "ru" else it.unit.replace("^2", "²")
+        unit = UNITS_RU.get(it.unit, it.unit) if lang == "ru" else it.unit.replace("^2", "²")
         lines.append((f"φ = {fmt(it.phi_deg, 6, lang)}°  {it.quantity} = {fmt(it.student, 4, lang)}, "
                       f"{exact} {fmt(it.exact, 4, lang)} {unit}{pct}{mm}{where}", FAIL))
     lines = [(_markup(text, lang), color) for text, color in lines]

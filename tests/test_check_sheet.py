@@ -137,6 +137,7 @@ def test_russian_marked_sheet_has_no_english_finding_words(report):
     for raw in ("M_Phi", "Phi", "F_bal", "bal", "omega", "eps_", "diff_pct"):
         assert raw not in joined, raw
     assert "MΦ2" in joined and "Fур" in joined  # typeset: M_{Φ2}, F_{ур}
+    assert "Н·м" in joined and not re.search(r"\d (N|N m|m/s|kg|rad/s)\b", joined)  # units in Russian
     assert "записана по-разному" in joined and "вычислено с π = 3,14" in joined
 
 

@@ -69,8 +69,9 @@ SENTENCES: dict[str, tuple[str, str]] = {  # key: (English, Russian)
 KINDS_RU = {"duplicate": "повтор", "arithmetic": "арифметика", "relation": "формула", "percent": "проценты",
             "symmetry": "симметрия", "swapped": "перепутаны", "pi": "π", "scale": "масштаб"}
 PLANS_RU = {"velocity": "скоростей", "acceleration": "ускорений"}  # "план скоростей": genitive
-UNITS_RU = {"m/s": "м/с", "m/s^2": "м/с²", "rad/s": "рад/с", "rad/s^2": "рад/с²", "N": "Н", "N·m": "Н·м",
-            "N*m": "Н·м", "mm": "мм", "m": "м", "kg": "кг", "kg·m^2": "кг·м²", "kg*m^2": "кг·м²", "unit": "ед."}
+UNITS_RU = {"m/s": "м/с", "m/s^2": "м/с²", "rad/s": "рад/с", "rad/s^2": "рад/с²", "N": "Н", "N m": "Н·м",
+            "N·m": "Н·м", "N*m": "Н·м", "mm": "мм", "m": "м", "kg": "кг", "kg m^2": "кг·м²", "kg·m^2": "кг·м²",
+            "kg*m^2": "кг·м²", "%": "%", "unit": "ед."}
 _NAME = re.compile(r"(?<![\w])([A-Za-zΑ-Ωα-ω]+)_([A-Za-z0-9_]+)(?:\^[nτk])?")
 _DECIMAL = re.compile(r"(\d)\.(\d)")
 _NOTE = re.compile(r"(\([^)]*\))")
@@ -196,4 +197,4 @@ def _part(p: Part | Words, lang: str, name: Callable[[str], str] | None) -> str:
     return str(p.value)
 
 
-__all__ = ["KINDS_RU", "Part", "SENTENCES", "Words", "formula", "n", "plan", "q", "say", "t", "u", "w", "x"]
+__all__ = ["KINDS_RU", "UNITS_RU", "Part", "SENTENCES", "Words", "formula", "n", "plan", "q", "say", "t", "u", "w", "x"]
