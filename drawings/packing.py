@@ -161,12 +161,17 @@ def _part(flow: Flow, rest: list[Panel], n: int, area: Box, taken: Sequence[Box]
         if area[3] - y0 < MIN_BAND:
             continue
         full = area[2] - x0
+        tries: list[tuple[float, float, Box | None]] = []
         for f in FRACTIONS:
             w = full * f
             h = area[3] - y0 if x0 + w <= tb[0] - gap + 1e-9 else tb[1] - gap - y0
+            tries.append((w, h, None))
+        if tb[0] - gap > x0 + MIN_BAND and tb[1] - gap > y0 + MIN_BAND:  # the whole room, round the title block
+            tries.append((full, area[3] - y0, (tb[0] - gap / 2 - x0, tb[1] - gap / 2 - y0, full, area[3] - y0)))
+        for w, h, notch in tries:
             if h < MIN_BAND or w < 2 * MIN_BAND:
                 continue
-            blk, left = pack_block(rest, w, h, gap, spots, flow.titles(n))
+            blk, left = pack_block(rest, w, h, gap, spots, flow.titles(n), notch)
             if not blk.panels:
                 continue
             cost = (len(left), y0, blk.width * blk.height)

@@ -266,8 +266,7 @@ def _frames(rec: Recording, sh: Sheet) -> None:
         x0, y0, x1, y1 = f.box
         tag = f"{f.phi:.6g}".replace("-", "m")
         rec.begin(f"block-{tag}", "block")
-        rec.polygon([(x0, y0), (x1, y0), (x1, y1), (x0, y1)], Style(width=0.35, cls="block"),
-                    f"block-{tag}-border")
+        rec.polygon(f.outline(), Style(width=0.35, cls="block"), f"block-{tag}-border")
         rec.text(layout(f.heading, x0 + INSET, y0 + HEAD / 2 + 1.0, HEAD_SIZE, "start", "middle"),
                  "heading", f"block-{tag}-heading")
         rec.end()
