@@ -108,15 +108,14 @@ def pack_block(panels: Sequence[Panel], width: float, height: float, gap: float,
 
 def place_block(block: Block, area: Box, taken: Sequence[Box], prev: Box | None, free_spots,
                 gap: float) -> tuple[float, float] | None:
-    """Where a block goes on a sheet: right of the previous block (never above its top) or
-    wholly below it (reading order: along a row, then the next row), then the spot that keeps
-    the skyline lowest."""
+    """Where a block goes on a sheet: never above the previous block, nor left of it while
+    wholly beside it (reading order), then the spot that keeps the skyline lowest."""
     spots = free_spots(block.width, block.height, area, taken)
     if not len(spots):
         return None
     X, Y = spots[:, 0], spots[:, 1]
     if prev is not None:
-        ok = (Y >= prev[1] - 1e-9) & ((Y >= prev[3] + gap - 1e-9) | (X >= prev[2] + gap - 1e-9))
+        ok = (Y >= prev[1] - 1e-9) & ((Y + block.height > prev[3] + 1e-9) | (X >= prev[2] + gap - 1e-9))
         X, Y = X[ok], Y[ok]
         if not len(X):
             return None

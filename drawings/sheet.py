@@ -419,9 +419,9 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str | None = "
     The drawing-wide panels (plan of positions) come first; then one bordered block per
     crank angle, in angle order, under a heading "Положение 3, φ = 90°" (``numbers`` maps an
     angle to its position number).  Each block is packed several ways (:mod:`.packing`) and
-    the sheet takes the shape that fits the room left: right of the previous block or wholly
-    below it (a row, then the next row), on the same sheet while it fits, else on the next
-    (sheet order = angle order).  A position too big for one sheet flows over the sheets in
+    the sheet takes the shape that fits the room left, below or right of the previous block
+    (never above it), on the same sheet while it fits, else on the next (sheet order = angle
+    order).  A position too big for one sheet flows over the sheets in
     parts ("continued").  The legend goes where there is room once the blocks are down,
     above the title block where it can; spare height is shared out between the bands of
     blocks.  ``scale_text`` fills the title block's Scale cell; None: each sheet's own
