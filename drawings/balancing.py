@@ -129,6 +129,9 @@ def build_panels(b: Balance, lang: str) -> list[Panel]:
         for kind in KINDS:
             R = res[kind]
             panels.append(polygon_panel(R, lang))
+    from .balancing_banks import bank_panels
+
+    panels += bank_panels(b, lang)
     panels.append(results_panel(b, lang))
     panels.append(counterweights_panel(b, lang))
     return panels

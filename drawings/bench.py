@@ -1,10 +1,20 @@
-"""Stage times of drawing a scene (for the record, not a timed test)::
+"""Times of drawing a scene's sheets (for the record and ``plans bench``, never a timed test)::
 
-    python -m drawings.bench samples/v_engine.toml
+    python -m drawings.bench samples/v_engine.toml            # stages, as a table
+    python -m drawings.bench --json samples/v_engine.toml samples/v_engine_cycle.toml
+
+With ``--json`` (what ``plans bench`` runs in a fresh interpreter, the engine never
+importing the renderer): each sheet of the first scene written as SVG, PDF and PNG at
+150 dpi from its composed sheet (median of ``--repeat``), the sheets' build (engine,
+panels, layout) per sheet, and, for a second scene, its cycle diagrams sheet to SVG.
 """
 
 from __future__ import annotations
 
+import functools
+import json
+import os
+import statistics
 import sys
 import time
 from collections.abc import Callable
@@ -12,10 +22,12 @@ from typing import Any
 
 from plans.scene.model import load_scene
 
-from .export import pdf_bytes
+from .export import pdf_bytes, png_bytes, svg_bytes
 from .linkage import build_panels, draw
 from .panels import ratio_text
 from .sheet import compose, sheet_spec
+
+PNG_DPI = 150.0
 
 
 def _best(f: Callable[[], Any], n: int) -> tuple[float, Any]:
@@ -25,6 +37,20 @@ def _best(f: Callable[[], Any], n: int) -> tuple[float, Any]:
         out = f()
         best = min(best, time.perf_counter() - t)
     return best, out
+
+
+def _median(f: Callable[[], Any], n: int, cpu: list[float] | None = None) -> float:
+    """Median wall time of ``n`` calls; with ``cpu``, the median processor time is appended
+    to it (on a shared machine the load stretches the first, hardly the second)."""
+    ts, cs = [], []
+    for _ in range(max(1, n)):
+        c, t = time.process_time(), time.perf_counter()
+        f()
+        ts.append(time.perf_counter() - t)
+        cs.append(time.process_time() - c)
+    if cpu is not None:
+        cpu.append(statistics.median(cs))
+    return statistics.median(ts)
 
 
 def bench(path: str, repeat: int = 5) -> dict[str, float]:
@@ -41,8 +67,50 @@ def bench(path: str, repeat: int = 5) -> dict[str, float]:
             "panels_s": t_panels, "layout_s": t_layout, "svg_s": t_svg, "pdf_s": t_pdf}
 
 
+def sheet_seconds(path: str, repeat: int = 3) -> dict[str, Any]:
+    """Each sheet of ``path`` as SVG (serialised from the composed sheet), PDF and PNG at
+    :data:`PNG_DPI` (each from the SVG bytes, parsing included): medians of ``repeat``, per
+    sheet; the build of all the sheets (scene read, engine, panels, layout) once, median."""
+    draw(path)  # warm up: fonts, imports
+    build = _median(lambda: draw(path), repeat)
+    sheets = draw(path).sheets
+    out: dict[str, Any] = {"scene": str(path), "sheets": len(sheets),
+                           "format": sheets[0].spec.format if sheets else "",
+                           "build_s": build, "svg_s": [], "pdf_s": [], "png_s": [], "svg_bytes": [],
+                           "svg_cpu_s": [], "pdf_cpu_s": [], "png_cpu_s": []}
+    for sh in sheets:
+        svg = sh.svg().encode("utf-8")
+        out["svg_bytes"].append(len(svg))
+        out["svg_s"].append(_median(functools.partial(svg_bytes, sh), repeat, out["svg_cpu_s"]))
+        out["pdf_s"].append(_median(functools.partial(pdf_bytes, svg), repeat, out["pdf_cpu_s"]))
+        out["png_s"].append(_median(functools.partial(png_bytes, svg, PNG_DPI), repeat, out["png_cpu_s"]))
+    return out
+
+
+def figures(paths: list[str], repeat: int = 3) -> dict[str, Any]:
+    """What ``plans bench`` reads: the sheets of the first scene, the diagrams sheet of the
+    second (if given), and the machine's load average while they ran."""
+    load0 = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
+    out: dict[str, Any] = {"sheets": sheet_seconds(paths[0], repeat)}
+    if len(paths) > 1:
+        from .cycle import diagrams_sheet_seconds
+
+        ts = [diagrams_sheet_seconds(paths[1], 1) for _ in range(max(1, repeat))]
+        out["diagrams"] = {"scene": paths[1], "svg_s": statistics.median(ts)}
+    load1 = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
+    out["load"] = [load0, load1]
+    return out
+
+
 def main(argv: list[str] | None = None) -> int:
     args = sys.argv[1:] if argv is None else argv
+    if args and args[0] == "--json":
+        rest = args[1:]
+        repeat = 3
+        if rest[:1] == ["--repeat"]:
+            repeat, rest = int(rest[1]), rest[2:]
+        print(json.dumps(figures(rest or ["samples/v_engine.toml"], repeat)))
+        return 0
     path = args[0] if args else "samples/v_engine.toml"
     r = bench(path)
     total = r["panels_s"] + r["layout_s"] + r["svg_s"] + r["pdf_s"]

@@ -223,20 +223,17 @@
   let t = 0, playing = false, last = 0;
   const cycSize = fit($("cyc-scheme"), schemeBox(C.scheme), 10);
   $("cyc-scheme").dataset.muL = String(C.scheme.mu_l);
-  function planBox(images) {
-    const pts = [[0, 0]];
-    for (const nm in images) for (const p of images[nm]) pts.push(p);
-    return pts;
-  }
   $("cyc-vel").parentNode.hidden = !C.velocity;
   $("cyc-acc").parentNode.hidden = !C.acceleration;
   makeCharts();
-  const velSize = C.velocity ? fit($("cyc-vel"), planBox(C.velocity), 8) : 0;
-  const accSize = C.acceleration ? fit($("cyc-acc"), planBox(C.acceleration), 8) : 0;
-  function drawCyclePlan(svg, images, size, pole) {
+  // A plan's longest vector changes manyfold over a turn (a quick return's peak): each frame
+  // fills its panel, like the force polygons, with a scale bar of a round value.
+  function drawCyclePlan(svg, images, mu, un, pole) {
     clear(svg);
     defs(svg);
-    const u = size / 100;
+    const pts = [[0, 0]];
+    for (const nm in images) pts.push(at(images[nm], t));
+    const box = square(svg, pts), u = box[2] / 100;
     for (const lk of C.scheme.links) {
       const pts = lk.points.map((nm) => images[nm.toLowerCase()]).filter((x) => x).map((tr) => at(tr, t));
       if (pts.length < 2) continue;
@@ -246,13 +243,15 @@
     for (const nm in images) {
       const p = at(images[nm], t);
       if (Math.hypot(p[0], p[1]) > 1e-6) {
-        el(svg, "line", {x1: "0", y1: "0", x2: f3(p[0]), y2: f3(-p[1]), class: "seg abs", "stroke-width": f3(0.5 * u),
+        el(svg, "line", {id: svg.id + "-" + nm, x1: "0", y1: "0", x2: f3(p[0]), y2: f3(-p[1]), class: "seg abs",
+          "stroke-width": f3(0.5 * u),
           "marker-end": "url(#" + svg.id + "-arr)"});
       }
       el(svg, "text", {x: f3(p[0] + 1.5 * u), y: f3(-p[1] - 1.5 * u), "font-size": f3(4.5 * u), class: "label"}, nm);
     }
     el(svg, "circle", {cx: "0", cy: "0", r: f3(1.2 * u), class: "pt"});
     el(svg, "text", {x: f3(-6 * u), y: f3(5 * u), "font-size": f3(4.5 * u), class: "label"}, pole);
+    scaleBar(svg, box, mu, u, un);
   }
   function interp(xs, ys, x) {
     const n = xs.length;
@@ -344,7 +343,7 @@
     svg.setAttribute("viewBox", [cx - side / 2, cy - side / 2, side, side * 1.12].map(f3).join(" "));
     return [cx - side / 2, cy - side / 2, side];
   }
-  function scaleBar(svg, box, mu, u) {
+  function scaleBar(svg, box, mu, u, un = "N") {
     const want = 0.25 * box[2] / mu;  // a quarter of the panel, in newtons
     const k = Math.pow(10, Math.floor(Math.log10(want)));
     const F0 = [5, 2, 1].map((m) => m * k).find((x) => x <= want) || k;
@@ -352,7 +351,7 @@
     el(svg, "line", {x1: f3(x), y1: f3(y), x2: f3(x + F0 * mu), y2: f3(y), class: "seg", "stroke-width": f3(0.6 * u),
       "data-bar": String(F0)});
     el(svg, "text", {x: f3(x), y: f3(y - 1.5 * u), "font-size": f3(4.5 * u), class: "label"},
-      nf(F0, 6) + " " + unit("N"));
+      nf(F0, 6) + " " + unit(un));
   }
   function drawForces() {
     for (const fp of F) {
@@ -405,8 +404,8 @@
 
   function drawCycle() {
     drawScheme($("cyc-scheme"), C.scheme, t, [], [], cycSize);
-    if (C.velocity) drawCyclePlan($("cyc-vel"), C.velocity, velSize, "p_v");
-    if (C.acceleration) drawCyclePlan($("cyc-acc"), C.acceleration, accSize, "p_a");
+    if (C.velocity) drawCyclePlan($("cyc-vel"), C.velocity, C.mu_v, "m/s", "p_v");
+    if (C.acceleration) drawCyclePlan($("cyc-acc"), C.acceleration, C.mu_a, "m/s²", "p_a");
     drawCharts();
     drawForces();
     const phi = ((Math.floor(t) % N) + (t - Math.floor(t))) * (360 / N);

@@ -85,6 +85,15 @@ def _clipped(rec: Recording, pts: Sequence[complex], box: shapely.Geometry, styl
         rec.polyline([(x, -y) for x, y in g.coords], style, f"{eid}-{i}" if i else eid)
 
 
+def _on_field(z: complex, box: shapely.Geometry) -> tuple[complex, bool]:
+    """``z`` and True inside the field, else where the ray from P toward it leaves the field."""
+    if shapely.contains_xy(box, z.real, z.imag):
+        return z, True
+    part = shapely.LineString([(0.0, 0.0), (z.real, z.imag)]).intersection(box)
+    x, y = max(shapely.get_coordinates(part), key=lambda c: math.hypot(*c))
+    return complex(x, y), False
+
+
 def _circle(O: complex, r: float, n: int = 720) -> list[complex]:
     return [O + r * complex(math.cos(t), math.sin(t)) for t in np.linspace(0, 2 * math.pi, n + 1)]
 
@@ -135,7 +144,7 @@ def meshing_panel(mg: Meshing, lang: str) -> Panel:
     rec.begin("line-of-action", "line-of-action")
     u = (mg.N2 - mg.N1) / abs(mg.N2 - mg.N1)
     along = [((z - mg.N1) * u.conjugate()).real for z in (mg.N1, mg.N2, mg.B1, mg.B2)]
-    rec.line(_pt(mg.N1 + (min(along) - 12) * u), _pt(mg.N1 + (max(along) + 12) * u), MAIN, "N1N2")
+    _clipped(rec, [mg.N1 + (min(along) - 12) * u, mg.N1 + (max(along) + 12) * u], box, MAIN, "N1N2")
     rec.line(_pt(mg.B1), _pt(mg.B2), ACTIVE, "B1B2")
     nrm = 1j * u
     (d1a, d1b), (sa, sb), (d2a, d2b) = mg.zones()  # complex points on N1N2
@@ -147,13 +156,29 @@ def meshing_panel(mg: Meshing, lang: str) -> Panel:
     for i, z in enumerate((d1b, d2a)):
         rec.line(_pt(z - 2 * nrm), _pt(z + 6 * nrm), THIN, f"zone-tick-{i}")
     rec.end()
-    for name, z in (("N_1", mg.N1), ("N_2", mg.N2), ("B_1", mg.B1), ("B_2", mg.B2), ("P", 0j)):
-        dot(rec, _pt(z), 0.8, f"point-{name.replace('_', '')}")
-        placer.add_disc(_pt(z), 1.0)
-    placer.add_line([_pt(mg.N1), _pt(mg.N2)])
+    # a tangency point N off the field (an internal pair's N2 lies far out): an arrow at the
+    # field's edge toward it, labelled with its distance from P
+    shown = {name: _on_field(z, box) for name, z in (("N_1", mg.N1), ("N_2", mg.N2), ("B_1", mg.B1),
+                                                     ("B_2", mg.B2), ("P", 0j))}
+    for name, (z, inside) in shown.items():
+        if inside:
+            dot(rec, _pt(z), 0.8, f"point-{name.replace('_', '')}")
+            placer.add_disc(_pt(z), 1.0)
+        else:
+            arrow(rec, _pt(z - 10 * u * (1 if (z.conjugate() * u).real > 0 else -1)), _pt(z), THIN,
+                  f"to-{name.replace('_', '')}", "pointer")
+    placer.add_line([_pt(shown["N_1"][0]), _pt(shown["N_2"][0])])
     for name, z, pref in (("N_1", mg.N1, (-1.0, 0.0)), ("N_2", mg.N2, (1.0, 0.0)), ("B_1", mg.B1, (-1.0, 0.3)),
                           ("B_2", mg.B2, (1.0, -0.3)), ("P", 0j, (1.0, 0.4))):
-        rec.text(placer.place(name, _pt(z), LABEL, pref), "label", f"label-{name.replace('_', '')}")
+        at, inside = shown[name]
+        text = name if inside else (f"{name}: {fmt(abs(z), 4, lang)} " + ("мм" if lang == "ru" else "mm"))
+        if inside:
+            placed = placer.place(text, _pt(at), LABEL, pref)
+        else:  # inside the field, below the arrow's head, ending at the edge
+            right = at.real > 0
+            placed = layout(text, at.real + (-2.0 if right else 2.0), -at.imag + 5.0, LABEL,
+                            "end" if right else "start", "middle")
+        rec.text(placed, "label", f"label-{name.replace('_', '')}")
     mid_d = (d1a + d1b) / 2 - 14 * nrm
     rec.text(layout(tr("double", lang), *_pt(mid_d), SMALL, "middle", "middle"), "note", "zone-double-label")
     if abs(sb - sa) > 1e-6:

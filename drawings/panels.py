@@ -50,8 +50,10 @@ class Panel:
     def svg(self, debug: bool = False) -> str:
         """The panel alone as an SVG document in true millimetres."""
         from .backend import replay
-        from .svg import SvgBackend
+        from .svg import SvgBackend, document
 
+        if not debug:
+            return document(self.width, self.height, self.prims)
         be = SvgBackend(self.width, self.height, debug=debug)
         replay(self.prims, be)
         return be.tostring()
@@ -64,8 +66,9 @@ def finish(pid: str, kind: str, phi: float | None, body: Recording, title: str,
            scale_line: str | None = None, note: str | None = None, quantity: str | None = None,
            scale: float | None = None) -> Panel:
     """Title (and scale) above the body, everything shifted to start at (0, 0); labels that a
-    line of the finished figure crosses are moved clear of it (:func:`declutter`)."""
-    if kind not in ("table", "legend"):
+    line of the finished figure crosses are moved clear of it (:func:`declutter`); a table's
+    cells sit between its rules by construction and are not searched."""
+    if kind not in ("table", "legend", "cycle-table"):
         from .declutter import declutter
 
         body = Recording(declutter(body.prims))

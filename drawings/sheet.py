@@ -20,7 +20,7 @@ from .blocks import Frame, frame_of, spread
 from .i18n import tr
 from .packing import blocks_of, free_spots, place_blocks, place_note
 from .panels import Panel
-from .svg import SvgBackend
+from .svg import SvgBackend, document
 from .text import layout, wrap
 
 FORMATS: dict[str, tuple[float, float]] = {  # landscape width × height, mm (GOST 2.301)
@@ -243,6 +243,10 @@ class Sheet:
         return prims
 
     def svg(self, debug: bool = False) -> str:
+        """The sheet as SVG text (``debug``: through svgwrite with its validation on; the
+        same characters either way)."""
+        if not debug:
+            return document(self.width, self.height, self.prims or self.render())
         be = SvgBackend(self.width, self.height, debug=debug)
         replay(self.prims or self.render(), be)
         return be.tostring()

@@ -3,9 +3,7 @@ so a failure never leaves a half-written output."""
 
 from __future__ import annotations
 
-import json
 import os
-import tempfile
 import tomllib
 from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
@@ -30,6 +28,8 @@ def atomic_file(path: str | Path) -> Iterator[BinaryIO]:
     target = Path(path)
     folder = target.parent
     try:
+        import tempfile  # loaded when a file is written: reading a scene does not pay for it
+
         fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=folder)
     except OSError as exc:
         raise OutputError(f"cannot write to {folder}: {exc.strerror}") from None
@@ -56,6 +56,8 @@ def write_all(files: Mapping[Path, bytes | str]) -> list[Path]:
         for target, data in files.items():
             raw = data.encode("utf-8") if isinstance(data, str) else data
             try:
+                import tempfile
+
                 fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
             except OSError as exc:
                 raise OutputError(f"cannot write to {target.parent}: {exc.strerror}") from None
@@ -99,6 +101,8 @@ def refuse_input(output: str | Path | None, *inputs: str | Path | None) -> None:
 
 def dumps(data: Any) -> str:
     """Deterministic JSON; refuses NaN and inf (they must never reach an output)."""
+    import json
+
     return json.dumps(data, ensure_ascii=False, indent=2, allow_nan=False) + "\n"
 
 

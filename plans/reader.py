@@ -16,7 +16,6 @@ range, a name is a short plain string, an angle is reduced exactly.
 
 from __future__ import annotations
 
-import difflib
 import math
 from collections.abc import Iterable
 from typing import Any
@@ -41,6 +40,8 @@ def did_you_mean(word: str, choices: Iterable[str]) -> str:
     """``"; did you mean 'omega_rpm'?"`` when a choice is close to ``word``, else ``""``."""
     options = [c for c in choices if isinstance(c, str)]
     cutoff = 0.5 if len(str(word)) <= 3 else 0.6  # "S3" for "S2"
+    import difflib  # only when a key is misspelt
+
     match = difflib.get_close_matches(str(word), options, n=1, cutoff=cutoff)
     if not match:
         low = {c.lower(): c for c in options}

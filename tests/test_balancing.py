@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import cmath
 import json
 import math
 from dataclasses import replace
@@ -376,3 +377,183 @@ def test_counterweights_balance_the_rotating_masses(cyls, ref):
     if len(cyls) > 1:
         assert abs(T) < 1e-9 * scale
     assert len(cws) <= (2 if len(cyls) > 1 else 1)
+
+
+# --------------------------------------------------------------------------- V engines bank by bank
+
+
+def _piston_force(theta: np.ndarray, e) -> np.ndarray:
+    """m_j (−s'')/m_j per unit mass and ω²: the exact inertia force of a piston along its axis,
+    s = r cos θ + q, q = √(l² − r² sin² θ), differentiated twice by hand:
+    −s'' = r cos θ + r² cos 2θ / q + r⁴ sin² 2θ / (4 q³)."""
+    r, l = e.r, e.rod_length
+    q = np.sqrt(l * l - (r * np.sin(theta)) ** 2)
+    return r * np.cos(theta) + r * r * np.cos(2 * theta) / q + r**4 * np.sin(2 * theta) ** 2 / (4 * q**3)
+
+
+def _fourier(f: np.ndarray, k: int) -> complex:
+    """The coefficient c_k of e^{ikα} of a function sampled at α_n = 2πn/N."""
+    n = len(f)
+    alpha = 2 * np.pi * np.arange(n) / n
+    return complex(np.mean(f * np.exp(-1j * k * alpha)))
+
+
+V_ENGINES = {
+    "v_twin": lambda: load_engine(ROOT / "samples" / "engines" / "v_twin.toml"),
+    "v6_90": lambda: load_engine(ROOT / "samples" / "engines" / "v6_90.toml"),
+    # a 60° V6, cranks 120° apart, two rods per pin, unequal masses along the shaft
+    "v6_60": lambda: engine_from_dict({
+        "format": 1, "kind": "engine", "r": 43, "lambda": 0.31, "omega_rpm": 5200, "reference_z": 0,
+        "cylinders": [{"crank_deg": [0, 0, 120, 120, 240, 240][i], "z": 90.0 * (i // 2),
+                       "bank_deg": -30.0 if i % 2 == 0 else 30.0, "m_rot": 0.6, "m_rec": 0.8 + 0.05 * i}
+                      for i in range(6)]}, "v6"),
+    # a cross-plane-free 75° V4 with odd crank angles: every locus an ellipse
+    "v4_75": lambda: engine_from_dict({
+        "format": 1, "kind": "engine", "r": 38, "lambda": 0.27, "omega": 420, "reference_z": 35,
+        "cylinders": [{"crank_deg": b, "z": z, "bank_deg": g, "m_rot": 0.5, "m_rec": m}
+                      for b, z, g, m in ((0, 0, -37.5, 0.9), (70, 80, 37.5, 0.7), (200, 160, -37.5, 1.1),
+                                         (310, 240, 37.5, 0.8))]}, "v4"),
+}
+
+
+@pytest.mark.parametrize("name", sorted(V_ENGINES))
+def test_each_bank_against_its_exact_pistons(name):
+    """Per bank: the time-domain sum of the bank's exact piston inertia forces (closed-form
+    accelerations, no series), its harmonics taken by a DFT, against the bank's polygon.
+    The exact motion has no odd harmonic but the first, so the first order agrees to
+    round-off; its second harmonic is f₂·(the course's λ cos 2θ) with f₂ = 1 + λ²/4 + ...,
+    one factor for every cylinder, measured on one piston."""
+    e = V_ENGINES[name]()
+    b = balance(e)
+    n = 720
+    alpha = 2 * np.pi * np.arange(n) / n
+    f2 = 2 * _fourier(_piston_force(alpha, e), 2).real / (e.r * e.lam)
+    assert f2 == pytest.approx(1 + e.lam**2 / 4, rel=e.lam**4)
+    banks = b.banks.banks
+    assert len(banks) == 2
+    for bank in banks:
+        for c in bank.cylinders:
+            assert abs(c.bank - bank.axis) < 1e-12
+        for quantity, polys in (("force", bank.forces), ("moment", bank.moments)):
+            w = {c.number: 1.0 if quantity == "force" else c.z - e.reference_z for c in bank.cylinders}
+            along = sum(w[c.number] * c.m_rec * e.omega**2 * _piston_force(alpha + c.crank - c.bank, e)
+                        for c in bank.cylinders)
+            ref = sum(abs(w[c.number]) * c.m_rec for c in bank.cylinders) * e.r * e.omega**2 + 1e-300
+            for kind, k, factor in (("first_order", 1, 1.0), ("second_order", 2, f2)):
+                p = polys[kind]
+                S = p.closing * p.unit  # along the axis: Re(S e^{ikα}) -> c_k = S / 2
+                assert abs(2 * _fourier(along, k) - factor * S) <= 1e-9 * ref
+                # the amplitude and phase the report gives, from the exact sum
+                ck = 2 * _fourier(along, k) / factor
+                assert p.amplitude == pytest.approx(abs(ck), abs=1e-9 * ref)
+                if abs(ck) > 1e-6 * ref:
+                    assert cmath.exp(1j * p.phase) == pytest.approx(ck / abs(ck), abs=1e-9)
+
+
+@pytest.mark.parametrize("name", sorted(V_ENGINES))
+def test_banks_combined_against_the_with_and_against_rotation_decomposition(name):
+    """The banks added along their axes equal the forward/backward pair of the whole-engine
+    analysis, and the locus (max, min, direction) is the one sampled over a turn."""
+    e = V_ENGINES[name]()
+    b = balance(e)
+    fine = np.linspace(0.0, 2 * np.pi, 200001)
+    for quantity, loci, res in (("force", b.banks.forces, b.forces), ("moment", b.banks.moments, b.moments)):
+        for kind in ("first_order", "second_order"):
+            L, R = loci[kind], res[kind]
+            ref = max(R._ref, 1e-300)
+            assert abs(L.forward - R.forward) <= 1e-9 * ref
+            assert abs(L.backward - R.backward) <= 1e-9 * ref
+            assert L.maximum == pytest.approx(R.amplitude, abs=1e-9 * ref)
+            # the banks in the time domain, each along its axis
+            F = sum(((bk.forces if quantity == "force" else bk.moments)[kind].closing
+                     * (bk.forces if quantity == "force" else bk.moments)[kind].unit
+                     * np.exp(1j * L.order * fine)).real * bk.direction for bk in b.banks.banks)
+            mag = np.abs(F)
+            assert np.max(mag) == pytest.approx(L.maximum, abs=1e-6 * ref)
+            # a line passes through 0 between two samples: the step's share of the maximum
+            assert np.min(mag) == pytest.approx(L.minimum, abs=1e-6 * ref + L.maximum * L.order * np.pi / 100000)
+            if L.shape in ("line", "ellipse"):
+                top = F[np.argmax(mag)]
+                d = math.atan2(top.imag, top.real) % math.pi
+                assert min(abs(d - L.direction), math.pi - abs(d - L.direction)) < 1e-4
+
+
+def test_v_twin_banks_make_the_turning_vector():
+    """Seed 000's 90° V-twin bank by bank: each bank m_j r ω² along its axis, 45° and 315°
+    out of phase; together a circle of radius m_j r ω² turning with the crank (the
+    counterweight's 0.03377 kg·m at 180°); second order: a line, horizontal, √2 m_j r ω² λ."""
+    path = ROOT / "samples" / "engines" / "v_twin.toml"
+    data = read_toml(path)
+    b = balance(load_engine(path))
+    P1 = data["m_rec"] * data["r"] * 1e-3 * _omega(data) ** 2
+    for bank in b.banks.banks:
+        assert bank.forces["first_order"].amplitude == pytest.approx(P1, rel=1e-12)
+        assert bank.forces["second_order"].amplitude == pytest.approx(P1 * data["lambda"], rel=1e-12)
+    L1, L2 = b.banks.forces["first_order"], b.banks.forces["second_order"]
+    assert (L1.shape, L1.sense) == ("circle", "with")
+    assert L1.maximum == pytest.approx(P1, rel=1e-12) and L1.minimum == pytest.approx(P1, rel=1e-12)
+    assert (L2.shape, L2.sense) == ("line", "none")
+    assert L2.maximum == pytest.approx(math.sqrt(2) * P1 * data["lambda"], rel=1e-12)
+    assert math.degrees(L2.direction) == pytest.approx(90.0)
+    js = json.loads(json.dumps(b.to_json()))
+    assert [bk["axis_deg"] for bk in js["banks"]] == [315.0, 45.0]
+    assert js["banks_combined"]["forces"]["first_order"]["locus"] == "circle"
+    assert js["counterweights"][1]["mass_radius"] == pytest.approx(0.0337698, rel=1e-5)
+
+
+def test_v_twin_bank_against_the_kinetostatics():
+    """One bank alone (rotating masses removed) as a planar linkage solved by the force
+    analysis: the first harmonic of its frame force is the bank's polygon to round-off."""
+    from plans.balancing.exact import frame_force
+
+    e = load_engine(ROOT / "samples" / "engines" / "v_twin.toml")
+    b = balance(e)
+    for bank in b.banks.banks:
+        alone = replace(e, cylinders=tuple(replace(c, m_rot=0.0) for c in bank.cylinders))
+        F = frame_force(alone, 360)
+        p = bank.forces["first_order"]
+        S = p.closing * p.unit
+        # F = Re(S e^{iα}) u + higher even harmonics: the e^{iα} coefficient is S u / 2
+        assert abs(_fourier(F, 1) - S * bank.direction / 2) <= 1e-9 * p.unit
+
+
+def test_sheet_draws_each_bank_and_the_locus():
+    """The V-twin's sheet carries a bank panel per order (no moment panels: no arms), with
+    each bank's closing vector and the combined locus; an inline engine has none."""
+    from drawings.balancing import draw
+
+    d = draw(ROOT / "samples" / "engines" / "v_twin.toml")
+    ids = {p.pid for p in d.panels}
+    assert {"banks-force-first_order", "banks-force-second_order"} <= ids
+    assert not any(i.startswith("banks-moment") for i in ids)
+    svg = "".join(s.svg() for s in d.sheets)
+    for tag in ("banks-force-first_order-1-closing", "banks-force-first_order-2-closing",
+                "banks-force-first_order-sum-locus", "banks-force-second_order-sum-max"):
+        assert tag in svg
+    inline = draw(ROOT / "samples" / "engines" / "inline4.toml")
+    assert not any(p.pid.startswith("banks-") for p in inline.panels)
+
+
+def test_v6_banks_are_inline_threes_and_their_moments_turn_with_the_crank():
+    """The 90° V6 on three pins: each bank (an inline three) has its forces closed and a
+    first-order moment √3 m_j r ω² l_c; combined, a circle turning with the crank (taken by
+    two counterweights of √3 m_j r l_c / (plane spacing) each), the second order a line."""
+    path = ROOT / "samples" / "engines" / "v6_90.toml"
+    data = read_toml(path)
+    e = load_engine(path)
+    b = balance(e)
+    P1 = data["m_rec"] * data["r"] * 1e-3 * _omega(data) ** 2
+    lc = 0.1
+    for bank in b.banks.banks:
+        assert len(bank.cylinders) == 3
+        assert bank.forces["first_order"].closed and bank.forces["second_order"].closed
+        assert bank.moments["first_order"].amplitude == pytest.approx(math.sqrt(3) * P1 * lc, rel=1e-12)
+    M1, M2 = b.banks.moments["first_order"], b.banks.moments["second_order"]
+    assert (M1.shape, M1.sense) == ("circle", "with")
+    assert M1.maximum == pytest.approx(math.sqrt(3) * P1 * lc, rel=1e-12)
+    assert M2.shape == "line"
+    assert b.banks.forces["first_order"].shape == "zero" and b.banks.forces["second_order"].shape == "zero"
+    cw = [c for c in b.counterweights if c.of == "first_order"]
+    assert len(cw) == 2
+    for c in cw:
+        assert c.mass_radius == pytest.approx(math.sqrt(3) * data["m_rec"] * data["r"] * 1e-3 * lc / 0.2, rel=1e-12)

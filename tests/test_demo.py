@@ -501,3 +501,34 @@ def test_slider_moves_the_force_polygons_and_the_lever(browser, tmp_path):
     assert "Н" in pg.inner_text("#cyc-forces") and "mm/N" not in pg.inner_text("#cyc-forces")
     assert errors == []
     assert requests == [f.as_uri()]
+
+
+def test_cycle_plans_fill_their_panels_and_read_the_exact_velocities(browser, tmp_path):
+    # six_bar's quick return: one view for the whole turn would leave most frames a dot
+    scene = load_scene(SAMPLES / "six_bar.toml")
+    f = tmp_path / "p.html"
+    L = lesson(scene, frames=36)
+    f.write_text(page(scene, frames=36, language="en"), encoding="utf-8")
+    pg, errors, _ = _open(browser, f)
+    pg.click("#mode-cycle")
+    mu_v, mu_a = L["cycle"]["mu_v"], L["cycle"]["mu_a"]
+    kin = solve(scene, L["cycle"]["phi_deg"], order=2)
+    widths = set()
+    for k in (0, 9, 20, 27):
+        pg.fill("#phi", str(k))
+        pg.dispatch_event("#phi", "input")
+        for svg, mu, order in (("#cyc-vel", mu_v, 1), ("#cyc-acc", mu_a, 2)):
+            ln = pg.locator(f"{svg}-a")
+            drawn = complex(float(ln.get_attribute("x2")), -float(ln.get_attribute("y2"))) / mu
+            exact = complex(kin.point("A")[order][k])
+            assert abs(drawn - exact) <= 1e-3 * max(abs(exact), 1e-9) + 0.01 / mu, (k, svg)
+            # the scale bar is a round value at the same μ
+            bar = pg.locator(f"{svg} line[data-bar]")
+            length = float(bar.get_attribute("x2")) - float(bar.get_attribute("x1"))
+            assert length == pytest.approx(float(bar.get_attribute("data-bar")) * mu, rel=1e-3)
+            view = [float(v) for v in pg.get_attribute(svg, "viewBox").split()]
+            reach = max(abs(complex(float(x.get_attribute("x2")), float(x.get_attribute("y2"))))
+                        for x in pg.locator(f"{svg} line[id]").all())
+            assert reach >= 0.3 * view[2], (k, svg)  # the frame's plan fills its panel
+            widths.add(round(view[2], 3))
+    assert len(widths) > 2 and errors == []

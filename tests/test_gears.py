@@ -386,3 +386,156 @@ def test_meshing_drawing_of_any_pair(z1, z2, x1, x2):
              for dw in mg.wheels]
     assert polys[0].intersection(polys[1]).area < 1e-2
     assert mg.contact_ratio_drawn == pytest.approx(p.contact_ratio, abs=3e-3)
+
+
+# --------------------------------------------------------------------------- the ring's tip
+
+
+def _planetary(ring_tip: str | None = None):
+    import tomllib
+
+    text = open(PLANETARY, encoding="utf-8").read()
+    if ring_tip is not None:
+        text = text.replace("internal = true", f'internal = true\nring_tip = "{ring_tip}"')
+    return solve_gears(parse_gears(tomllib.loads(text), PLANETARY))
+
+
+def test_ring_tip_rules_and_the_planets_limit_point():
+    """The trimmed ring tip passes through the point where the planet's rack-cut involute
+    begins (the rack's tip line on the line of action, found here by coordinates), GOST's
+    first-order rule falls a hair short, the plain one 0.85 mm short; only the trimmed rule
+    passes the interference check."""
+    radii = {}
+    for rule in ("trimmed", "gost", "plain"):
+        p = _planetary(rule).pairs[1]
+        planet, ring = p.wheels
+        radii[rule] = ring.tip
+        ok = p.checks()["no_interference"]
+        assert ok == (rule == "trimmed"), rule
+        # the pair at its pitch position: P at the origin, the planet's centre below, the ring's
+        # centre below it; the rack tip line (h_a* − x) m inside the planet's pitch circle meets
+        # the line of action, which runs through P at α_w to the common tangent
+        O_ring = complex(0.0, -ring.working)
+        u = -np.exp(1j * p.alpha_w)  # from P towards N1 (down the tangent of both base circles)
+        L = (1.0 - planet.x) * p.m / math.sin(p.alpha) * u
+        assert abs(L - complex(0.0, -planet.working)) == pytest.approx(
+            math.hypot(planet.base, planet.limit), rel=1e-12)  # L is the limit circle's point
+        gap = (abs(L - O_ring) - ring.tip) * 1e3  # mm: > 0 the ring's tip reaches past L
+        if rule == "trimmed":
+            assert abs(gap) < 1e-9
+        elif rule == "gost":
+            assert 0.0 < gap < 0.01
+            # the printed rule: d_a2 = d2 − 2(h_a* − x2 − 7.55/z2) m, with 7.55 rounded
+            assert ring.tip == pytest.approx(ring.pitch - (1.0 - ring.x - 7.55 / ring.z) * p.m, rel=1e-6)
+        else:
+            assert ring.tip == pytest.approx(ring.pitch - p.m, rel=1e-14)
+            assert (planet.limit - p.rho_start) * 1e3 == pytest.approx(0.8546, abs=1e-4)
+    assert radii["plain"] < radii["gost"] < radii["trimmed"]
+    assert radii["trimmed"] * 1e3 == pytest.approx(68.22166, abs=1e-5)
+
+
+def test_trimmed_ring_contact_ratio_read_off_the_drawing():
+    p = _planetary().pairs[1]
+    assert p.contact_ratio == pytest.approx(_course_eps(p), rel=1e-13)
+    mg = meshing(p)
+    assert mg.contact_ratio_drawn == pytest.approx(p.contact_ratio, abs=1e-3)
+    assert p.contact_ratio == pytest.approx(1.79623, abs=1e-5)
+    # the drawn B1 is on the ring's tip circle and at the planet's limit circle
+    planet = mg.wheels[0]
+    r_l = math.hypot(p.wheels[0].base, p.wheels[0].limit) * 1e3 * mg.k
+    assert abs(mg.B1 - planet.centre) == pytest.approx(r_l, rel=2e-4)
+
+
+def _tip_contacts(p):
+    """Turn the drawn pair: each tip corner of the drawn ring, carried into the planet's frame,
+    and where it comes nearest the drawn planet's outline. Returns (radii from O1 of the
+    touching corners, paper mm; deepest penetration into the planet, mm; the scale)."""
+    mg = meshing(p)
+    planet, ring = mg.wheels
+    z1, z2 = p.wheels[0].z, p.wheels[1].z
+    outline = np.array(planet.outline)
+    line = shapely.LineString(np.column_stack([outline.real, outline.imag]))
+    body = shapely.Polygon(np.column_stack([outline.real, outline.imag]).tolist()
+                           + [(planet.centre.real, planet.centre.imag)]).buffer(0)
+    ro = np.array(ring.outline)
+    on_tip = np.abs(np.abs(ro - ring.centre) - ring.radii["tip"]) < 1e-6
+    # the ends of each tip land (the points on the tip circle next to a flank point)
+    ends = on_tip & ~(np.roll(on_tip, 1) & np.roll(on_tip, -1))
+    corners = ro[ends & (np.abs(ro - mg.B1) < 4 * math.pi * p.m * 1e3 * mg.k)]
+    phis = np.linspace(-2.5, 2.5, 1501) * 2 * math.pi / z1
+    O1, O2 = planet.centre, ring.centre
+    # same sense for an internal pair: the ring turns by φ z1/z2 while the planet turns by φ
+    q = O1 + ((corners[None, :] - O2) * np.exp(1j * phis[:, None] * z1 / z2) + O2 - O1) * np.exp(-1j * phis[:, None])
+    pts = shapely.points(q.real, q.imag)
+    d = shapely.distance(pts, line)
+    inside = shapely.contains(body, pts)
+    depth = float(np.max(np.where(inside, d, 0.0)))
+    low = (d[1:-1] <= d[:-2]) & (d[1:-1] <= d[2:]) & (d[1:-1] < 0.05)  # nearest approaches that touch
+    return [float(v) for v in np.abs(q[1:-1][low] - O1)], depth, mg.k
+
+
+def test_ring_tip_meets_the_planet_only_on_its_involute():
+    """A direct test by turning the drawn wheels: the ring's tip corners touch the planet's
+    drawn flank only outside the planet's limit circle (where its rack-cut flank is an
+    involute), and never enter it; with the plain tip they touch inside the limit circle."""
+    for rule in ("trimmed", "plain"):
+        p = _planetary(rule).pairs[1]
+        touch, depth, k = _tip_contacts(p)
+        planet = p.wheels[0]
+        r_l = math.hypot(planet.base, planet.limit) * 1e3 * k
+        assert touch, rule
+        assert depth < 0.05
+        if rule == "trimmed":
+            assert min(touch) >= r_l - 0.05  # paper mm at 10:1: 5 µm on the gear
+        else:
+            # ρ = 1.85 mm instead of 2.70 mm from N1: 0.082 mm lower on the flank, 0.82 mm drawn
+            assert min(touch) < r_l - 0.5
+
+
+def test_ring_root_has_fillets():
+    """The drawn ring meets its root circle through fillet arcs: along its outline the only
+    sharp corners left are at the tips (on the tip circle); at the root the direction turns
+    smoothly, and the spaces' outermost points lie on the root circle."""
+    p = _planetary().pairs[1]
+    ring = meshing(p).wheels[1]
+    ro = np.array(ring.outline)
+    seg = np.diff(ro)
+    turn = np.abs(np.angle(seg[1:] / seg[:-1]))  # at the points ro[1:-1]
+    r = np.abs(ro[1:-1] - ring.centre)
+    sharp = turn > math.radians(20)
+    assert np.all(np.abs(r[sharp] - ring.radii["tip"]) < 1e-6)
+    assert np.max(np.abs(ro - ring.centre)) == pytest.approx(ring.radii["root"], rel=1e-9)
+    # without the fillet the flank would meet the root circle at a corner of some 60°-90°
+    near_root = r > ring.radii["root"] - 0.38 * p.m * 1e3 * meshing(p).k
+    assert near_root.sum() >= 10 and np.max(turn[near_root]) < math.radians(20)
+
+
+@pytest.mark.parametrize("edit, field", [
+    (("internal = true", 'internal = true\nring_tip = "cut"'), "gears[2].ring_tip"),
+    (("addendum = 1.0", "addendum = 1.0\nring_tip = 3"), "ring_tip"),
+    (('z = 20\n', 'z = 20\nring_tip = "plain"\n'), "gears[0].ring_tip"),
+])
+def test_ring_tip_bad_input_names_the_key(edit, field):
+    import tomllib
+
+    text = open(PLANETARY, encoding="utf-8").read().replace(*edit, 1)
+    with pytest.raises(InputError) as exc:
+        parse_gears(tomllib.loads(text), "p.toml")
+    assert f"p.toml: {field}:" in str(exc.value) and "\n" not in str(exc.value)
+
+
+@pytest.mark.parametrize("language", ["ru", "en"])
+def test_meshing_panels_draw_nothing_outside_their_field(language):
+    # An internal pair's N2 lies far beyond the field: an arrow at the edge names it instead.
+    from drawings.gears import meshing_panel
+
+    pairs = solve_gears(load_gears(SEED)).drawn_pairs() + solve_gears(load_gears(PLANETARY)).drawn_pairs()
+    for p in pairs:
+        panel = meshing_panel(meshing(p), language)
+        for prim in panel.prims:
+            if prim.pts and prim.label is None:
+                xs, ys = zip(*prim.pts, strict=True)
+                assert -1e-6 <= min(xs) and max(xs) <= panel.width + 1e-6, prim.eid
+                assert -1e-6 <= min(ys) and max(ys) <= panel.height + 1e-6, prim.eid
+    labels = [pr.label.plain for pr in panel.prims if pr.label is not None]
+    assert any(t.startswith("N2:") or t.startswith("N_2:") for t in labels), labels

@@ -306,7 +306,7 @@ def run_bench(quick: bool = False, samples: Path | None = None, progress: Callab
     log("chain ...")
     records += bench_chain(tuple(chain_sizes or (QUICK_CHAIN_SIZES if quick else CHAIN_SIZES)), budget, log)
     log("speed goals and peers ...")
-    perf = speed.measure(samples, log)
+    perf = speed.measure(samples, log, quick=quick)
     records += bench_peers(perf)
     log("forces ...")
     records += bench_forces(cases + vcases, sizes, budget)

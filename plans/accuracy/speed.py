@@ -197,24 +197,97 @@ def forces_goal(cases: list[tuple[str, Scene]]) -> list[Goal]:
     return out
 
 
-def start_up_goals(samples: Path) -> list[Goal]:
-    """``plans --help`` and ``plans solve`` in a fresh interpreter (the interpreter's own
-    start included), median of 3."""
+def _interpreter_env() -> dict[str, str]:
+    """The environment of the fresh interpreters timed here: bytecode compiled and kept (in
+    a cache folder of its own, the source tree untouched), as an installed ``plans`` has it;
+    one BLAS thread, as the rest of the bench."""
+    import os
+    import tempfile
+
+    env = dict(os.environ)
+    env.pop("PYTHONDONTWRITEBYTECODE", None)
+    env["PYTHONPYCACHEPREFIX"] = str(Path(tempfile.gettempdir()) / "plans-bench-pycache")
+    env.setdefault("OPENBLAS_NUM_THREADS", "1")
+    return env
+
+
+def _command_seconds(args: list[str], root: Path, env: dict[str, str], reps: int) -> tuple[float, int]:
+    """Median wall time of ``python args`` in a fresh interpreter (after one run that
+    compiles its bytecode), and its exit status."""
+    p = subprocess.run([sys.executable, *args], cwd=root, capture_output=True, env=env)
+    ts = []
+    for _ in range(reps):
+        t0 = time.perf_counter()
+        p = subprocess.run([sys.executable, *args], cwd=root, capture_output=True, env=env)
+        ts.append(time.perf_counter() - t0)
+    return sorted(ts)[len(ts) // 2], p.returncode
+
+
+def start_up_goals(samples: Path, reps: int = 5) -> list[Goal]:
+    """``plans --help`` and ``plans solve`` of a small scene (to its table on stdout), each
+    in a fresh interpreter as the console command runs it (the interpreter's start
+    included, bytecode compiled), median of ``reps``; beside them the floor measured in
+    the same run: the interpreter importing numpy and nothing else."""
+    import importlib.util
+
     root = Path(__file__).resolve().parents[2]
+    env = _interpreter_env()
+    cli = "drawings.cli" if importlib.util.find_spec("drawings") is not None else "plans"
+    floor_s, _ = _command_seconds(["-c", "import numpy"], root, env, reps)
     out = []
     for what, args in (("plans --help", ["--help"]),
-                       ("plans solve", ["solve", str(samples / "four_bar.toml"), "--quiet"])):
-        ts = []
-        for _ in range(3):
-            t0 = time.perf_counter()
-            p = subprocess.run([sys.executable, "-m", "plans", *args], cwd=root, capture_output=True)
-            ts.append(time.perf_counter() - t0)
-        if p.returncode != 0:
-            out.append(Goal(f"{what} starts in ≤ {START_UP:g} s", f"skipped: exit status {p.returncode}",
+                       ("plans solve", ["solve", str(samples / "slider_crank.toml")])):
+        t, status = _command_seconds(["-m", cli, *args], root, env, reps)
+        if status != 0:
+            out.append(Goal(f"{what} starts in ≤ {START_UP:g} s", f"skipped: exit status {status}",
                             math.nan, None))
             continue
-        t = sorted(ts)[len(ts) // 2]
-        out.append(Goal(f"{what} starts in ≤ {START_UP:g} s", f"{t:.3f} s", t / START_UP, t <= START_UP))
+        out.append(Goal(f"{what} starts in ≤ {START_UP:g} s",
+                        f"{t:.3f} s, median of {reps} (python importing numpy alone: {floor_s:.3f} s)",
+                        t / START_UP, t <= START_UP))
+    return out
+
+
+#: Each A1 sheet of the V-engine (seconds, per sheet) and the cycle's diagrams sheet.
+SHEET_SVG, SHEET_PDF, SHEET_PNG, DIAGRAMS_SVG = 0.1, 0.4, 0.6, 0.2
+
+
+def sheet_goals(samples: Path, reps: int = 3) -> list[Goal]:
+    """The V-engine's sheets written as SVG, PDF and PNG at 150 dpi, per sheet, and the
+    cycle's diagrams sheet as SVG, timed by the renderer in a fresh interpreter
+    (``python -m drawings.bench --json``; the engine never imports it)."""
+    root = Path(__file__).resolve().parents[2]
+    scenes = [str(samples / "v_engine.toml"), str(samples / "v_engine_cycle.toml")]
+    scenes = [s for s in scenes if Path(s).is_file()]
+    if not scenes or not scenes[0].endswith("v_engine.toml"):
+        return [Goal("sheets", "skipped: samples/v_engine.toml missing", math.nan, None)]
+    p = subprocess.run([sys.executable, "-m", "drawings.bench", "--json", "--repeat", str(reps), *scenes],
+                       cwd=root, capture_output=True, text=True, env=_interpreter_env())
+    if p.returncode != 0:
+        why = (p.stderr.strip().splitlines() or [f"exit status {p.returncode}"])[-1]
+        return [Goal("sheets", f"skipped: {why}", math.nan, None)]
+    fig = json.loads(p.stdout)
+    sh = fig["sheets"]
+    n = sh["sheets"]
+    load = "/".join(f"{x:.1f}" for x in fig["load"])
+    out = []
+    for key, name, bound in (("svg_s", "SVG", SHEET_SVG), ("pdf_s", "PDF", SHEET_PDF),
+                             ("png_s", "PNG at 150 dpi", SHEET_PNG)):
+        ts = sh[key]
+        per = sum(ts) / n
+        cpu = sum(sh.get(key.replace("_s", "_cpu_s"), [math.nan])) / n
+        extra = f"; the sheets built (engine, panels, layout) in {sh['build_s'] / n:.3f} s per sheet" \
+            if key == "svg_s" else ""
+        out.append(Goal(f"V-engine, {n} {sh['format']} sheets: {name} ≤ {bound:g} s per sheet",
+                        f"{per:.3f} s per sheet (processor {cpu:.3f} s; slowest {max(ts):.3f} s), medians "
+                        f"of {reps}{extra}; "
+                        f"load {load}", per / bound, per <= bound))
+    d = fig.get("diagrams")
+    if d is not None:
+        t = d["svg_s"]
+        out.append(Goal(f"cycle diagrams sheet (V-engine): SVG ≤ {DIAGRAMS_SVG:g} s",
+                        f"{t:.3f} s, median of {reps} (engine, panels, layout and SVG); load {load}",
+                        t / DIAGRAMS_SVG, t <= DIAGRAMS_SVG))
     return out
 
 
@@ -246,7 +319,8 @@ def page_goals(samples: Path) -> list[Goal]:
     return out
 
 
-def measure(samples: Path, log: Callable[[str], None] | None = None, with_peers: bool = True) -> dict[str, Any]:
+def measure(samples: Path, log: Callable[[str], None] | None = None, with_peers: bool = True,
+            quick: bool = False) -> dict[str, Any]:
     """Every goal, and the peers' runs behind them (JSON-ready)."""
     log = log or (lambda s: None)
     cases = mechanisms(samples)
@@ -257,6 +331,8 @@ def measure(samples: Path, log: Callable[[str], None] | None = None, with_peers:
     goals += structure_goal()
     goals += forces_goal(cases)
     goals += start_up_goals(samples)
+    log("goals: sheets ...")
+    goals += sheet_goals(samples, 3 if quick else 5)
     log("goals: demonstration page ...")
     goals += page_goals(samples)
     return {"goals": [asdict(g) for g in goals],

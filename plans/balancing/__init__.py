@@ -4,6 +4,8 @@ found as a draftsman finds them, by phase diagrams and vector polygons.
 Owns: :mod:`.engine` (the engine file, ``kind = "engine"``), :mod:`.analysis` (phase
 diagrams of first and second order, polygons of the rotating and reciprocating inertia
 forces and of their moments, closing vectors, analytic tables, counterweights),
+:mod:`.banks` (a V engine bank by bank: each bank's polygons along its own axis, and the
+banks combined as a circle, line or ellipse),
 :mod:`.exact` (the check against exact physics: the shaking force and moment of the same
 engine built as planar linkages, one per crank throw, and solved by the kinetostatics of
 :mod:`plans.forces`), and

@@ -37,6 +37,7 @@ from typing import Any
 
 import numpy as np
 
+from plans.balancing.banks import BankAnalysis, analyse_banks
 from plans.balancing.engine import Engine
 
 KINDS = ("rotating", "first_order", "second_order")
@@ -168,6 +169,7 @@ class Balance:
     moments: dict[str, Resultant]
     counterweights: tuple[Counterweight, ...]
     notes: tuple[str, ...]
+    banks: BankAnalysis  # the reciprocating forces bank by bank, and the banks combined
 
     @property
     def P0(self) -> dict[str, float]:
@@ -184,6 +186,7 @@ class Balance:
 
     def to_json(self) -> dict[str, Any]:
         e = self.engine
+        banks, combined = self.banks.to_json()
         return {
             "engine": {"title": e.title, "file": e.path, "cylinders": e.n, "r": e.r, "lambda": e.lam,
                        "omega": e.omega, "strokes": e.strokes, "reference_z": e.reference_z,
@@ -201,6 +204,8 @@ class Balance:
             "moments": {k: self.moments[k].to_json() for k in KINDS},
             "counterweights": [c.to_json() for c in self.counterweights],
             "notes": list(self.notes),
+            "banks": banks,
+            "banks_combined": combined,
         }
 
 
@@ -222,7 +227,7 @@ def balance(engine: Engine) -> Balance:
     forces = {k: _resultant(engine, k, "force") for k in KINDS}
     moments = {k: _resultant(engine, k, "moment") for k in KINDS}
     cws, notes = _counterweights(engine, forces, moments)
-    return Balance(engine, forces, moments, cws, notes)
+    return Balance(engine, forces, moments, cws, notes, analyse_banks(engine))
 
 
 def _masses(engine: Engine, kind: str) -> list[float]:
@@ -378,6 +383,10 @@ def report(b: Balance) -> str:
             out.append(f"  amplitude {R.amplitude:.6g} {unit} ({R.dimensionless:.4g} units), "
                        f"phase {_deg(R.phase):.4g} deg")
             out.append("")
+    if not e.is_inline:
+        from plans.balancing.banks import report_lines
+
+        out += report_lines(b.banks) + [""]
     out.append("counterweights:" if b.counterweights else "counterweights: none needed")
     for c in b.counterweights:
         out.append(f"  {c.of:12s} plane z = {c.plane_z:.6g} m: m*r = {c.mass_radius:.6g} kg*m "

@@ -3,15 +3,17 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from plans.scene.model import Scene
 
-from .diagrams import Diagrams
-from .dynamics import Dynamics
 from .table import CycleTable, csv_text, plan_table, position_table, text
+
+if TYPE_CHECKING:  # loaded when a scene asks for them: a linkage's solve does not pay for them
+    from .diagrams import Diagrams
+    from .dynamics import Dynamics
 
 
 @dataclass(frozen=True)

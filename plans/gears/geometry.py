@@ -7,8 +7,20 @@ External pair (1, 2)::
     r = m z/2,  r_b = r cos α,  r_a = r + (h_a* + x − Δy) m,  r_f = r − (h_a* + c* − x) m.
 
 Internal pair (pinion 1, ring 2): the sums become differences (x2 − x1, z2 − z1), the ring's
-tip circle is inside, r_a2 = r2 − (h_a* − x2) m, r_f2 = r2 + (h_a* + c* + x2) m, and no tip
-is shortened (the clearances of an internal pair grow by Δy m instead of shrinking).
+tip circle is inside, r_f2 = r2 + (h_a* + c* + x2) m, and no tip is shortened by Δy (the
+clearances of an internal pair grow by Δy m instead of shrinking).
+
+The ring's tip circle (``ring_tip``).  By the plain rule r_a2 = r2 − (h_a* − x2) m its tip
+reaches, on the line of action, below where a rack-cut pinion's involute begins (the
+pinion's limit point, (h_a* − x1) m / sin α from P), and the pair interferes.  Rings cut by
+a shaper cutter have the tip circle enlarged (the tip trimmed).  ``"trimmed"`` (default)
+puts it through that limit point for a pinion with the ring's shift (x1 = x2, so α_w = α):
+
+    r_a2² = r_b2² + (r2 sin α − H/sin α)² = (r2 − H)² + (H cot α)²,   H = (h_a* − x2) m;
+
+``"gost"`` is its expansion to first order in 1/z2, the ring-gear rule of GOST 19274,
+d_a2 = d2 − 2(h_a* − x2 − Δh_a*) m with Δh_a* = h_a*²/(z2 tan² α) (7.55/z2 at α = 20°,
+h_a* = 1), a hair smaller; ``"plain"`` keeps r_a2 = r2 − (h_a* − x2) m.
 
 The line of action is measured from N1, where it touches the base circle of gear 1: the
 active part B1B2 runs from B1, where gear 2's tip circle cuts it, to B2, where gear 1's does;
@@ -29,6 +41,8 @@ from .involute import inv, inv_inverse, thickness_at
 MIN_CONTACT_RATIO = 1.2
 MIN_TIP_THICKNESS = 0.25  # × m, the least accepted
 GOOD_TIP_THICKNESS = 0.4  # × m, the usual requirement
+#: how a ring gear's tip circle is found (see the module's docstring)
+RING_TIPS = ("trimmed", "gost", "plain")
 
 
 @dataclass(frozen=True)
@@ -132,11 +146,11 @@ def sum_for_centre(z1: int, z2: int, m: float, alpha: float, internal: bool, a_w
 
 
 def wheel(name: str, z: int, x: float, internal: bool, m: float, alpha: float, ha: float, c: float,
-          alpha_w: float, dy_tip: float, where: str, file: str | None) -> Wheel:
+          alpha_w: float, dy_tip: float, where: str, file: str | None, ring_tip: str = "trimmed") -> Wheel:
     r = m * z / 2.0
     rb = r * math.cos(alpha)
     if internal:
-        ra, rf = r - (ha - x) * m, r + (ha + c + x) * m
+        ra, rf = ring_tip_radius(r, z, x, m, alpha, ha, ring_tip), r + (ha + c + x) * m
         s = m * (math.pi / 2.0 - 2.0 * x * math.tan(alpha))
     else:
         ra, rf = r + (ha + x - dy_tip) * m, r - (ha + c - x) * m
@@ -161,9 +175,19 @@ def wheel(name: str, z: int, x: float, internal: bool, m: float, alpha: float, h
     return Wheel(name, z, x, internal, r, rb, ra, rf, rw, aa, s, sa, limit)
 
 
+def ring_tip_radius(r: float, z: int, x: float, m: float, alpha: float, ha: float, rule: str) -> float:
+    """r_a of a ring gear by ``rule`` (one of RING_TIPS)."""
+    H = (ha - x) * m
+    if rule == "plain":
+        return r - H
+    if rule == "gost":
+        return r - H + ha * ha / (z * math.tan(alpha) ** 2) * m
+    return math.hypot(r - H, H / math.tan(alpha))
+
+
 def pair(names: tuple[str, str], z: tuple[int, int], x: tuple[float, float], internal: bool, m: float,
          alpha: float, ha: float, c: float, dy_tips: tuple[float, float], a_w_given: float | None = None,
-         where: str = "meshes", file: str | None = None) -> Pair:
+         where: str = "meshes", file: str | None = None, ring_tip: str = "trimmed") -> Pair:
     """The pair (gear 2 is the ring when ``internal``); ``dy_tips``: the Δy each tip is
     shortened by (the course takes the largest Δy of a gear's meshes)."""
     alpha_w, a, a_w, backlash = centre(z[0], z[1], x[0], x[1], m, alpha, internal, a_w_given, where, file)
@@ -173,7 +197,7 @@ def pair(names: tuple[str, str], z: tuple[int, int], x: tuple[float, float], int
     if abs(dy) < 1e-12:
         dy = 0.0
     w1 = wheel(names[0], z[0], x[0], False, m, alpha, ha, c, alpha_w, dy_tips[0], where, file)
-    w2 = wheel(names[1], z[1], x[1], internal, m, alpha, ha, c, alpha_w, dy_tips[1], where, file)
+    w2 = wheel(names[1], z[1], x[1], internal, m, alpha, ha, c, alpha_w, dy_tips[1], where, file, ring_tip)
     g = a_w * math.sin(alpha_w)
     rho_a1 = math.sqrt(w1.tip**2 - w1.base**2)
     rho_a2 = math.sqrt(w2.tip**2 - w2.base**2)

@@ -5,7 +5,8 @@ O1 straight below the pitch point P, gear 2's O2 above.  Each flank is the invol
 the draftsman's way (:func:`plans.gears.involute.rolled_points`: tangents to the base
 circle, the unrolled arc laid off on each), continued radially below the base circle and
 joined to the root circle by a fillet arc (radius 0.38 m, smaller where the space is
-narrow).  The line of action N1N2 touches both base circles; B1 and B2 are found on the
+narrow); a ring's flanks meet its root circle (outside) through the same fillet, drawn as
+the rounded corner of each space.  The line of action N1N2 touches both base circles; B1 and B2 are found on the
 drawing as the crossings of N1N2 with the tip circles drawn as polygons, so the contact
 ratio B1B2/p_b is *read off the drawing*, next to the exact one.
 """
@@ -127,6 +128,44 @@ def _filleted(flank: np.ndarray, rf: float, space_half: float, rho: float) -> np
     return np.concatenate([arc, rest])
 
 
+def _rounded_tip(flank: np.ndarray, ra: float, rho: float) -> np.ndarray:
+    """The flank ending in a fillet arc to the tip circle ``ra`` (a ring's root seen from its
+    space): centre at radius r_a − ρ inside the tooth, tangent to the circle and to the
+    flank (the largest ρ ≤ the given that fits the tooth's half-width there)."""
+    line = shapely.LineString(np.column_stack([flank.real, flank.imag]))
+    radius = np.abs(flank)
+    angle = np.unwrap(np.angle(flank))
+    for _ in range(30):
+        R = ra - rho
+        edge = float(np.interp(R, radius, angle))  # the flank's angle at the centre's radius
+        far = line.distance(shapely.Point(R, 0.0))  # from the tooth's middle (angle 0)
+        if far > rho and R > radius[0]:
+            break
+        rho *= 0.8
+    lo, hi = 0.0, edge  # the centre's angle, bisected to distance ρ from the flank
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        c = R * complex(math.cos(mid), math.sin(mid))
+        if line.distance(shapely.Point(c.real, c.imag)) > rho:
+            lo = mid
+        else:
+            hi = mid
+    ang = lo
+    c = R * complex(math.cos(ang), math.sin(ang))
+    touch = line.interpolate(line.project(shapely.Point(c.real, c.imag)))
+    t = complex(touch.x, touch.y)
+    top = ra * complex(math.cos(ang), math.sin(ang))
+    a0, a1 = float(np.angle(t - c)), float(np.angle(top - c))
+    if a1 > a0:  # the short way round, from the flank to the tip circle
+        a1 -= 2 * math.pi
+    if a0 - a1 > math.pi:
+        a1 += 2 * math.pi
+    arc = c + rho * np.exp(1j * np.linspace(a0, a1, 12))
+    along = line.project(touch)
+    dist = np.array([line.project(shapely.Point(p.real, p.imag)) for p in flank])
+    return np.concatenate([flank[dist < along - 1e-9], arc])
+
+
 def _as_spaces(w: Wheel, m: float) -> Wheel:
     """A ring gear seen from its spaces: each space is bounded like an external tooth of
     thickness e = πm − s, from the ring's tip circle (inside) to its root circle (outside)."""
@@ -137,13 +176,16 @@ def _as_spaces(w: Wheel, m: float) -> Wheel:
 def _outline(w: Wheel, m: float, alpha: float, k: float, centre: complex, axis: float,
              teeth: int) -> tuple[complex, ...]:
     """The teeth j = −teeth..teeth about the tooth centred on ``axis`` (paper angle, y up);
-    for a ring, its spaces about the space centred on ``axis`` (no fillet drawn there)."""
+    for a ring, its spaces about the space centred on ``axis``, the fillets at the ring's root
+    drawn as the rounded corners of the spaces."""
     ring = w.internal
     if ring:
         w = _as_spaces(w, m)
     flank, space_half = _flank(w, m, alpha, k)
     rf = w.root * 1e3 * k
-    if not ring:
+    if ring:
+        flank = _rounded_tip(flank, w.tip * 1e3 * k, 0.38 * m * 1e3 * k)
+    else:
         flank = _filleted(flank, rf, space_half, 0.38 * m * 1e3 * k)
     ra = w.tip * 1e3 * k
     a_tip = float(np.angle(flank[-1]))

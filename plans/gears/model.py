@@ -9,6 +9,10 @@
     pressure_angle_deg = 20  # α of the generating rack
     addendum = 1.0           # h_a*
     clearance = 0.25         # c*
+    ring_tip = "trimmed"     # a ring gear's tip circle: "trimmed" (through the rack-cut pinion's
+                             # limit point, the exact form of GOST 19274's rule), "gost"
+                             # (d_a2 = d2 − 2(h_a* − x2 − h_a*²/(z2 tan²α)) m) or "plain"
+                             # (r_a2 = r2 − (h_a* − x2) m)
     shift_rule = "minimum"   # how x = "auto" is chosen: "minimum" (x = h_a*(z_min − z)/z_min,
                              # z_min rounded as the course tabulates it), "no_undercut" (the exact
                              # x = h_a* − z sin²α/2), "equal_sliding" (a pair of "auto" gears:
@@ -18,6 +22,7 @@
     z = 26
     x = 0                    # or "auto"
     internal = false         # true: a ring gear (internal teeth)
+    ring_tip = "plain"       # a ring's own tip rule (default: the file's ring_tip)
     shaft = "1"              # gears on one shaft turn as one (default: the gear's own name)
     [[meshes]]
     gears = ["1", "2"]
@@ -54,8 +59,8 @@ SHIFT_RULES = ("minimum", "no_undercut", "equal_sliding")
 MAX_TEETH = 10_000
 
 _TOP_KEYS = ("format", "kind", "unit", "title", "module", "pressure_angle_deg", "addendum",
-             "clearance", "shift_rule", "gears", "meshes", "shafts", "synthesis", "sheet")
-_GEAR_KEYS = ("name", "z", "x", "internal", "shaft", "module")
+             "clearance", "shift_rule", "ring_tip", "gears", "meshes", "shafts", "synthesis", "sheet")
+_GEAR_KEYS = ("name", "z", "x", "internal", "shaft", "module", "ring_tip")
 _MESH_KEYS = ("gears", "centre_distance", "draw")
 _SHAFT_KEYS = ("name", "speed_rpm", "carrier")
 _SYNTH_KEYS = ("ratio", "planets", "tolerance", "z_min")
@@ -69,6 +74,7 @@ class Gear:
     internal: bool
     shaft: str
     module: float  # m, metres
+    ring_tip: str = "trimmed"  # a ring gear's tip rule (RING_TIPS)
 
 
 @dataclass(frozen=True)
@@ -106,6 +112,7 @@ class GearFile:
     meshes: tuple[Mesh, ...]
     shafts: dict[str, Shaft]
     synthesis: SynthesisSpec | None
+    ring_tip: str = "trimmed"  # the file's default tip rule for ring gears
     raw: dict[str, Any] = field(repr=False, default_factory=dict)
 
     @property
@@ -170,10 +177,11 @@ def parse_gears(data: dict[str, Any], path: str) -> GearFile:
     if rule not in SHIFT_RULES:
         raise InputError(f"expected one of {', '.join(repr(r) for r in SHIFT_RULES)}, got {rule!r}",
                          file=path, field="shift_rule")
+    ring_tip = _ring_tip(data, path, "ring_tip", "trimmed")
     title = data.get("title", "")
     if not isinstance(title, str):
         raise InputError("expected a string", file=path, field="title")
-    gears = _gears(data, path, m, k)
+    gears = _gears(data, path, m, k, ring_tip)
     if not gears:
         raise InputError("expected at least one [[gears]] table", file=path, field="gears")
     meshes = _meshes(data, path, gears, k)
@@ -206,7 +214,17 @@ def parse_gears(data: dict[str, Any], path: str) -> GearFile:
         raise InputError("expected at least one [[meshes]] table (or a [synthesis] request)", file=path,
                          field="meshes")
     return GearFile(path, title, unit, math.radians(alpha_deg), ha, c, rule, gears, tuple(meshes),
-                    shafts, synth, data)
+                    shafts, synth, ring_tip, data)
+
+
+def _ring_tip(t: dict[str, Any], path: str, field_: str, default: str) -> str:
+    from .geometry import RING_TIPS
+
+    v = t.get(field_.rsplit(".", 1)[-1], default)
+    if v not in RING_TIPS:
+        raise InputError(f"expected one of {', '.join(repr(r) for r in RING_TIPS)}, got {show(v)}",
+                         file=path, field=field_)
+    return str(v)
 
 
 def _synthesis(t: Any, path: str) -> SynthesisSpec | None:
@@ -233,7 +251,7 @@ def _synthesis(t: Any, path: str) -> SynthesisSpec | None:
     return SynthesisSpec(ratio, tuple(ks), tol, zmin)
 
 
-def _gears(data: dict[str, Any], path: str, m: float, k: float) -> dict[str, Gear]:
+def _gears(data: dict[str, Any], path: str, m: float, k: float, ring_tip: str) -> dict[str, Gear]:
     gears: dict[str, Gear] = {}
     for i, g in enumerate(_tables(data, "gears", path)):
         f = f"gears[{i}]."
@@ -261,7 +279,10 @@ def _gears(data: dict[str, Any], path: str, m: float, k: float) -> dict[str, Gea
             raise InputError("expected true or false", file=path, field=f + "internal")
         shaft = _name(g.get("shaft", name), path, f + "shaft")
         gm = _num(g["module"], path, f + "module", "a module m > 0", lo=0.0) * k if "module" in g else m
-        gears[name] = Gear(name, z, x, internal, shaft, gm)
+        tip = _ring_tip(g, path, f + "ring_tip", ring_tip)
+        if "ring_tip" in g and not internal:
+            raise InputError("ring_tip is for a ring gear (internal = true)", file=path, field=f + "ring_tip")
+        gears[name] = Gear(name, z, x, internal, shaft, gm, tip)
     return gears
 
 

@@ -81,7 +81,7 @@ def solve_gears(gf: GearFile) -> GearSolution:
         a, b = _ordered(gf, me.gears)
         ga, gb = gf.gears[a], gf.gears[b]
         first.append(pair((a, b), (ga.z, gb.z), (x[a], x[b]), gb.internal, ga.module, gf.alpha, gf.ha,
-                          gf.c, (0.0, 0.0), me.centre_distance, f"meshes[{i}]", gf.path))
+                          gf.c, (0.0, 0.0), me.centre_distance, f"meshes[{i}]", gf.path, gb.ring_tip))
     dy = {n: 0.0 for n in gf.gears}
     for p in first:
         if not p.internal:
@@ -93,7 +93,7 @@ def solve_gears(gf: GearFile) -> GearSolution:
         ga, gb = gf.gears[a], gf.gears[b]
         pairs.append(pair((a, b), (ga.z, gb.z), (x[a], x[b]), gb.internal, ga.module, gf.alpha, gf.ha,
                           gf.c, (dy[a], 0.0 if gb.internal else dy[b]), me.centre_distance,
-                          f"meshes[{i}]", gf.path))
+                          f"meshes[{i}]", gf.path, gb.ring_tip))
     omega, plan = None, None
     if gf.meshes and any(s.speed_rpm is not None for s in gf.shafts.values()):
         tm = train_meshes(gf, pairs)
@@ -161,6 +161,14 @@ def to_json(sol: GearSolution, contact_ratio_drawn: dict[tuple[str, str], float]
                                  for w, s in zip(p.wheels, p.sliding, strict=True)},
             "checks": p.checks(),
         })
+        if p.internal:
+            from .geometry import RING_TIPS, ring_tip_radius
+
+            ring = p.wheels[1]
+            g = gf.gears[ring.name]
+            meshes[-1]["ring_tip"] = {"rule": g.ring_tip} | {
+                rule: _r(ring_tip_radius(ring.pitch, ring.z, ring.x, p.m, p.alpha, gf.ha, rule) * k)
+                for rule in RING_TIPS}
     out: dict[str, Any] = {"unit": gf.unit, "x": {n: _r(sol.x[n]) for n in gf.gears}, "meshes": meshes}
     out["ratios"] = ratios(sol)
     if sol.omega is not None and sol.plan is not None:
@@ -207,6 +215,8 @@ def table(sol: GearSolution) -> str:
             lines.append(f"  gear {w.name}: r = {w.pitch * k:.4f}  r_b = {w.base * k:.4f}  r_a = {w.tip * k:.4f}"
                          f"  r_f = {w.root * k:.4f}  α_a = {math.degrees(w.tip_angle):.4f}°"
                          f"  s = {w.thickness * k:.4f}  s_a = {w.tip_thickness * k:.4f} {u}")
+        if p.internal:
+            lines.append(f"  ring {b}: tip circle by the rule {gf.gears[b].ring_tip!r}")
         lines.append(f"  ε = {p.contact_ratio:.6f}   checks: " +
                      ", ".join(f"{n} {'ok' if v else 'FAILS'}" for n, v in p.checks().items()))
     for n, v in ratios(sol).items():
