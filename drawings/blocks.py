@@ -30,6 +30,15 @@ class Frame:
     phi: float
     box: Box
     heading: str
+    notch: Box | None = None  # the corner the border goes round (the title block's)
+
+    def outline(self) -> list[tuple[float, float]]:
+        """The border: the box, less the notch at its bottom-right corner."""
+        x0, y0, x1, y1 = self.box
+        if self.notch is None:
+            return [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+        nx, ny = self.notch[0], self.notch[1]
+        return [(x0, y0), (x1, y0), (x1, ny), (nx, ny), (nx, y1), (x0, y1)]
 
 
 @dataclass(slots=True)
@@ -41,6 +50,7 @@ class Block:
     height: float
     phi: float | None
     heading: str = ""
+    notch: Box | None = None  # block coordinates: the corner kept clear (the title block)
 
     @property
     def framed(self) -> bool:
@@ -60,14 +70,17 @@ def heading(phi: float, number: int | None, lang: str, part: int = 0) -> str:
 
 
 def pack_block(panels: Sequence[Panel], width: float, height: float, gap: float,
-               free_spots, title: str = "") -> tuple[Block, list[Panel]]:
+               free_spots, title: str = "", notch: Box | None = None) -> tuple[Block, list[Panel]]:
     """Panels in reading order inside a ``width`` × ``height`` block, each where it keeps the
-    block's skyline lowest; returns the block (shrunk to its content) and what did not fit."""
+    block's skyline lowest; returns the block (shrunk to its content) and what did not fit.
+    ``notch`` (block coordinates, reaching the bottom-right corner) is kept clear."""
     framed = bool(title)
     top = HEAD if framed else 0.0
     inset = INSET if framed else 0.0
     area = (inset, top + inset, width - inset, height - inset)
     taken: list[Box] = []
+    if notch is not None:  # panels keep GAP from the notch's border, as from a panel
+        taken.append((notch[0] - inset + gap, notch[1] - inset + gap, width + gap, height + gap))
     placed: list[tuple[Panel, float, float]] = []
     rest: list[Panel] = []
     for p in panels:
@@ -82,11 +95,15 @@ def pack_block(panels: Sequence[Panel], width: float, height: float, gap: float,
         placed.append((p, x, y))
     if not placed:
         return Block([], 0.0, 0.0, None, title), rest
-    w = max(b[2] for b in taken) + inset
-    h = max(b[3] for b in taken) + inset
+    boxes = [(x, y, x + p.width, y + p.height) for p, x, y in placed]
+    w = max(b[2] for b in boxes) + inset
+    h = max(b[3] for b in boxes) + inset
     if framed:
         w = max(w, layout(title, 0, 0, HEAD_SIZE).box[2] + 2 * inset)
-    return Block(placed, w, h, placed[0][0].phi, title), rest
+    cut = None
+    if notch is not None and w > notch[0] and h > notch[1]:  # the content runs round the corner
+        cut = (notch[0], notch[1], w, h)
+    return Block(placed, w, h, placed[0][0].phi, title, cut), rest
 
 
 def place_block(block: Block, area: Box, taken: Sequence[Box], prev: Box | None, free_spots,
@@ -149,4 +166,6 @@ def widths(area_w: float, panels: Sequence[Panel]) -> list[float]:
 
 def frame_of(block: Block, x: float, y: float) -> Frame:
     assert block.phi is not None
-    return Frame(block.phi, (x, y, x + block.width, y + block.height), block.heading)
+    n = block.notch
+    notch = None if n is None else (x + n[0], y + n[1], x + n[2], y + n[3])
+    return Frame(block.phi, (x, y, x + block.width, y + block.height), block.heading, notch)

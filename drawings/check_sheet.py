@@ -28,6 +28,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from plans.check.report import Finding, Item, Report, check_file
+from plans.check.wording import KINDS_RU, UNITS_RU
 from plans.errors import PlansError
 from plans.kinematics.plan import Plan
 
@@ -136,8 +137,7 @@ def plan_with_marks(report: Report, plan: Plan, lang: str = "ru", *, overlay: bo
 
 
 _NAME = re.compile(r"\b([A-Za-z]+)_([A-Za-z0-9_]+)(?:\^[nτk])?")
-_UNIT_RU = {"m/s": "м/с", "m/s^2": "м/с²", "rad/s": "рад/с", "rad/s^2": "рад/с²", "N": "Н", "N·m": "Н·м",
-            "N*m": "Н·м", "%": "%", "mm": "мм", "m": "м"}
+
 
 
 _SPECIAL = {
@@ -159,6 +159,8 @@ def typeset(name: str, lang: str = "ru") -> str:
     parts = rest.split("_")
     if parts and parts[0] in _GREEK:  # M_Phi_2 -> M_{Φ2}
         return f"{head}_{{{_GREEK[parts[0]]}{''.join(parts[1:])}}}"
+    if parts and parts[0].startswith("Phi"):  # an arm: h_Phi2_B -> h_{Φ2,B}
+        return f"{head}_{{{','.join([_GREEK['Phi'] + parts[0][3:]] + parts[1:])}}}"
     sub, caret, sup = "_".join(parts).partition("^")
     return f"{head}_{{{sub}}}" + (f"^{sup}" if caret else "")
 
@@ -166,6 +168,14 @@ def typeset(name: str, lang: str = "ru") -> str:
 def _markup(text: str, lang: str = "ru") -> str:
     """Quantity names of the report as sheet markup, typeset (:func:`typeset`)."""
     return _NAME.sub(lambda m: typeset(m.group(0), lang), text)
+
+
+def finding_text(f: Finding, lang: str = "ru") -> str:
+    """A finding as the sheet writes it: in the sheet's language, quantities typeset."""
+    kind = KINDS_RU.get(f.kind, f.kind) if lang == "ru" else f.kind
+    if f.words is None:  # pragma: no cover - every finding of the check has its words
+        return f"[{kind}] {_markup(f.message, lang)}"
+    return f"[{kind}] {f.words.render(lang, lambda q: typeset(q, lang))}"
 
 
 def findings_panel(report: Report, lang: str = "ru") -> Panel:
@@ -190,14 +200,15 @@ def findings_panel(report: Report, lang: str = "ru") -> Panel:
         mm = "" if it.error_mm is None else f", {fmt(it.error_mm, 3, lang)} {'мм' if lang == 'ru' else 'mm'}"
         where = f" ({it.where})" if it.where else ""
         exact = "точно" if lang == "ru" else "exact"
-        unit = _UNIT_RU.get(it.unit, it.unit) if lang == "ru" else it.unit.replace("^2", "²")
+        unit = UNITS_RU.get(it.unit, it.unit) if lang == "ru" else it.unit.replace("^2", "²")
         lines.append((f"φ = {fmt(it.phi_deg, 6, lang)}°  {it.quantity} = {fmt(it.student, 4, lang)}, "
                       f"{exact} {fmt(it.exact, 4, lang)} {unit}{pct}{mm}{where}", FAIL))
+    lines = [(_markup(text, lang), color) for text, color in lines]
     f: Finding
     for f in report.findings:
-        lines.append((f"[{f.kind}] {f.message}", "#000"))
+        lines.append((finding_text(f, lang), "#000"))
     for k, (text, color) in enumerate(lines):
-        for part in wrap(_markup(text, lang), LIST_WIDTH, TEXT_SIZE):
+        for part in wrap(text, LIST_WIDTH, TEXT_SIZE):
             rec.text(layout(part, 0, y, TEXT_SIZE, "start", "top"), "check-line", f"check-list-{k}", fill=color)
             y += TEXT_SIZE * 1.45
     return _repack("check-findings", "table", None, rec.prims, title)

@@ -370,7 +370,7 @@ def dynamics_panels(d: Dynamics, tables: Sequence[CycleTable], lang: str) -> lis
 # --------------------------------------------------------------------------- the hook
 
 
-def extend(scene: Scene, spec: SheetSpec, sheets: list[Sheet], scale_text: str = "") -> list[Sheet]:
+def extend(scene: Scene, spec: SheetSpec, sheets: list[Sheet], scale_text: str | None = None) -> list[Sheet]:
     """The drawing's sheets and, when the scene asks, the diagrams and dynamics sheets after them,
     numbered on from the last."""
     if not (scene.wants("diagrams") or scene.wants("dynamics")):

@@ -20,6 +20,7 @@ from plans.forces.lever import force_rows, lever_plan
 from plans.forces.polygons import force_polygons
 from plans.forces.shared import nice_scale
 from plans.kinematics.plan import Plan
+from plans.kinematics.scales import fit
 
 from .backend import Pt, Recording, Style, Transform
 from .common import Placer, arrow, dot, fmt, ident, phi_tag
@@ -105,13 +106,13 @@ def build(scene, kin, spec, ks: Sequence[int], plans_at: dict[int, Any], mu_l: f
 # --------------------------------------------------------------------------- free bodies
 
 
-def _fbd_scale(values: Sequence[complex], cycle: float = 0.0) -> float:
+def _fbd_scale(values: Sequence[complex], cycle: float = 0.0, factor: float = 1.0) -> float:
     """μF of a free body: round, its longest force FBD_ARROW_MM at most; forces that are zero
     up to round-off against the cycle's largest (``cycle``) take the cycle's scale."""
     longest = max((abs(v) for v in values), default=0.0)
     if longest <= 1e-9 * cycle:
         longest = cycle
-    return nice_scale(longest, FBD_ARROW_MM)
+    return nice_scale(longest, FBD_ARROW_MM * factor)
 
 
 def _cycle(arrays) -> float:
@@ -231,7 +232,7 @@ def group_panel(scene, kin, gf, k: int, mu_l: float, lang: str, style: str) -> P
                     couples.append((rc.point, float(rc.M[k]), "M" + name[1:]))
             reacts.append((at, complex(rc.F[k]), name))
     values = [complex(f.F[k]) for f in loads] + [v for _, v, _ in reacts]
-    mu_f = _fbd_scale(values, _cycle([f.F for f in loads] + [rc.F for rc in gf.reactions]))
+    mu_f = _fbd_scale(values, _cycle([f.F for f in loads] + [rc.F for rc in gf.reactions]), fit(scene.scales))
     # arms of the moment equations
     for (eq, label), arm in gf.arms.items():
         h = float(arm[k])
@@ -282,7 +283,7 @@ def crank_panel(scene, kin, fa, k: int, mu_l: float, lang: str, style: str) -> P
     pts = _draw_links(rec, placer, scene, kin, k, [c.link], T, pid)
     bal = complex(c.F_bal[k] * c.e_bal[k]) if c.kind == "force" else 0j
     values = [complex(f.F[k]) for f in c.loads] + [bal, complex(c.frame.F[k])]
-    mu_f = _fbd_scale(values, _cycle([f.F for f in c.loads] + [c.frame.F]))
+    mu_f = _fbd_scale(values, _cycle([f.F for f in c.loads] + [c.frame.F]), fit(scene.scales))
     for f in c.loads:
         _force_at(rec, placer, T, complex(f.r[k]), complex(f.F[k]), mu_f, force_label(f.label, lang), LOAD,
                   f"{pid}-{ident(f.label)}")

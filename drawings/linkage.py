@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import math
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
 from plans.errors import InputError
 from plans.kinematics.exact import Kinematics, solve
+from plans.kinematics.scales import FIT
 from plans.scene.model import Scene, load_scene
 
 from .fonts import metrics
@@ -17,7 +19,6 @@ from .panels import (
     auto_length_scale,
     cycle_size,
     plan_panel,
-    ratio_text,
     scheme_panel,
     strokes_over_cycle,
     table_panel,
@@ -59,6 +60,7 @@ def _wants(spec: SheetSpec, kind: str) -> bool:
 def build_panels(scene: Scene, spec: SheetSpec) -> tuple[list[Panel], float]:
     """Every panel the scene asks for, in the order they go on the sheet."""
     metrics()  # fail early, with the font's name, if it is missing
+    scene = for_sheet(scene, spec)
     lang, style = spec.language, scene.scale_style
     kin = solve(scene)
     ks = _positions(scene, kin, spec)
@@ -101,6 +103,17 @@ def build_panels(scene: Scene, spec: SheetSpec) -> tuple[list[Panel], float]:
     return panels, mu_l
 
 
+def for_sheet(scene: Scene, spec: SheetSpec) -> Scene:
+    """The scene whose plans, polygons and lever are drawn for ``spec``'s paper: on a smaller
+    sheet every target length shrinks by the square root of the ratio of the sheets' sizes
+    (A3 about 0.7 of A1: smaller, still readable), the scales still round."""
+    w, h = spec.size
+    factor = min(1.0, math.sqrt(max(w, h) / 841.0))
+    if factor >= 1.0 or FIT in scene.scales:
+        return scene
+    return replace(scene, scales={**scene.scales, FIT: factor})
+
+
 def _rows(scene: Scene, readings) -> list:
     """Readings worth a row: not the rates of links that only slide on the frame."""
     fixed_sliders = {jt.slider for jt in scene.joints
@@ -134,9 +147,9 @@ def draw(scene: Scene | str | Path, *, format: str | None = None, orientation: s
                       orientation=orientation, language=language)
     panels, mu_l = build_panels(sc, spec)
     numbers = {float(phi): k for k, phi in enumerate(sc.driver.phis_deg)}
-    sheets = compose(panels, spec, ratio_text(mu_l), sc.path, numbers)
+    sheets = compose(panels, spec, None, sc.path, numbers)  # each sheet's scale: its main image's
     if sc.wants("diagrams") or sc.wants("dynamics"):  # the cycle's sheets follow
         from .cycle import extend
 
-        sheets = extend(sc, spec, sheets, ratio_text(mu_l))
+        sheets = extend(sc, spec, sheets, None)
     return Drawing(sc, spec, tuple(panels), tuple(sheets), mu_l)

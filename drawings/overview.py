@@ -329,7 +329,7 @@ def positions_panel(scene, kin, mu_l: float, lang: str, bold: Sequence[int], str
         note = f"{when}; bold: {bold_txt}" if bold_set else when
     title = tr("positions", lang)
     return finish(pid, "positions", None, rec, title,
-                  f"{scale_text('length', mu_l, scene.scale_style, lang)}  (M {ratio_text(mu_l)})", note,
+                  f"{scale_text('length', mu_l, scene.scale_style, lang)}  (M {ratio_text(mu_l, lang)})", note,
                   "length", mu_l)
 
 

@@ -112,12 +112,12 @@ def scale_text(quantity: str, mu: float, style: str, lang: str) -> str:
     return f"μ_{sub} = {fmt(mu, 4, lang)} {tr(mu_unit, lang)}"
 
 
-def ratio_text(mu_l: float) -> str:
-    """μl in mm/m as a drawing scale: 1000 -> ``1:1``, 250 -> ``1:4``, 2000 -> ``2:1``."""
+def ratio_text(mu_l: float, lang: str = "en") -> str:
+    """μl in mm/m as a drawing scale (GOST 2.302): 1000 -> ``1:1``, 250 -> ``1:4``,
+    2000 -> ``2:1``, 400 -> ``1:2,5`` on a Russian sheet (``1:2.5`` in English)."""
     r = mu_l / 1000.0
-    if r >= 1:
-        return f"{r:.4g}:1"
-    return f"1:{1 / r:.4g}"
+    text = f"{r:.4g}:1" if r >= 1 else f"1:{1 / r:.4g}"
+    return text.replace(".", ",") if lang == "ru" else text
 
 
 STANDARD_RATIOS = (10.0, 5.0, 4.0, 2.5, 2.0, 1.0, 1 / 2, 1 / 2.5, 1 / 4, 1 / 5, 1 / 10, 1 / 15, 1 / 20,
@@ -317,7 +317,7 @@ def scheme_panel(scene, kin, k: int, mu_l: float, lang: str, strokes: dict[str, 
     if dead:
         note = f"{tr('dead', lang)} {', '.join(dead)}"
     return finish(pid, "scheme", phi, rec, title,
-                  f"{scale_text('length', mu_l, scene.scale_style, lang)}  (M {ratio_text(mu_l)})", note,
+                  f"{scale_text('length', mu_l, scene.scale_style, lang)}  (M {ratio_text(mu_l, lang)})", note,
                   "length", mu_l)
 
 

@@ -12,14 +12,13 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
-import numpy as np
-
 from plans.errors import InputError
 from plans.reader import check_keys
 
 from .backend import Prim, Recording, Style, replay
-from .blocks import Block, Frame, frame_of, heading, pack_block, place_block, spread, widths
+from .blocks import Frame, frame_of, spread
 from .i18n import tr
+from .packing import blocks_of, free_spots, place_blocks, place_note
 from .panels import Panel
 from .svg import SvgBackend, document
 from .text import layout, wrap
@@ -215,7 +214,7 @@ class Sheet:
     width: float
     height: float
     placed: list[tuple[Panel, float, float]] = field(default_factory=list)
-    scale_text: str = ""  # for the title block's "Scale" cell
+    scale_text: str | None = ""  # the title block's "Scale" cell; None: the sheet's main image's
     prims: list[Prim] = field(default_factory=list)
     frames: list[Frame] = field(default_factory=list)  # borders and headings of position blocks
 
@@ -271,8 +270,7 @@ def _frames(rec: Recording, sh: Sheet) -> None:
         x0, y0, x1, y1 = f.box
         tag = f"{f.phi:.6g}".replace("-", "m")
         rec.begin(f"block-{tag}", "block")
-        rec.polygon([(x0, y0), (x1, y0), (x1, y1), (x0, y1)], Style(width=0.35, cls="block"),
-                    f"block-{tag}-border")
+        rec.polygon(f.outline(), Style(width=0.35, cls="block"), f"block-{tag}-border")
         rec.text(layout(f.heading, x0 + INSET, y0 + HEAD / 2 + 1.0, HEAD_SIZE, "start", "middle"),
                  "heading", f"block-{tag}-heading")
         rec.end()
@@ -356,7 +354,8 @@ def _title_block(rec: Recording, sh: Sheet) -> None:
     cell(tr("lit", lang), X0 + 135, Y0 + 17.5, 15, 2.5, "tb-h-lit", "middle")
     cell(tr("mass", lang), X0 + 150, Y0 + 17.5, 17, 2.5, "tb-h-mass", "middle")
     cell(tr("mscale", lang), X0 + 167, Y0 + 17.5, 18, 2.5, "tb-h-scale", "middle")
-    cell(sh.scale_text, X0 + 167, Y0 + 27.5, 18, 3.5, "tb-scale", "middle")
+    scale = sheet_scale(sh.placed, lang) if sh.scale_text is None else sh.scale_text
+    cell(scale, X0 + 167, Y0 + 27.5, 18, 3.5, "tb-scale", "middle")
     n = sh.spec.first_sheet + sh.number - 1
     m = sh.spec.total_sheets or (sh.spec.first_sheet - 1 + sh.count)
     cell(f"{tr('sheet', lang)} {n}", X0 + 135, Y0 + 37.5, 20, 2.5, "tb-sheet")
@@ -366,6 +365,18 @@ def _title_block(rec: Recording, sh: Sheet) -> None:
         cell(t, X0 + 135, Y0 + 47.5 + (i - (len(org) - 1) / 2) * 15.0 / len(org), 50, 3.5, f"tb-org-{i}",
              "middle", h=15.0 / len(org))
     rec.end()
+
+
+def sheet_scale(placed: Sequence[tuple[Panel, float, float]], lang: str) -> str:
+    """The "Scale" cell as GOST 2.104 fills it: the scale (GOST 2.302) of the sheet's main
+    image, its largest panel drawn at a length scale (the others say "M 1:4" under their
+    titles); a dash where nothing on the sheet is drawn at a length scale (plans, tables)."""
+    from .panels import ratio_text
+
+    drawn = [(p.width * p.height, p.scale) for p, _, _ in placed if p.quantity == "length" and p.scale]
+    if not drawn:
+        return "—"
+    return ratio_text(max(drawn, key=lambda t: t[0])[1], lang)
 
 
 def _cell_lines(text: str, width: float, height: float, size: float) -> list[tuple[str, float]]:
@@ -405,71 +416,20 @@ def _overlaps(a: Sequence[float], b: Sequence[float]) -> bool:
     return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
 
 
-def _grow(b: Sequence[float], g: float) -> tuple[float, float, float, float]:
-    return (b[0] - g, b[1] - g, b[2] + g, b[3] + g)
-
-
-def _free_spots(w: float, h: float, area: tuple[float, float, float, float],
-                taken: Sequence[tuple[float, float, float, float]]) -> np.ndarray:
-    """Every free top-left corner for a w × h box (k×2, may be empty): candidates where the
-    box touches the area's edges or sits GAP from a box already there, on both sides."""
-    T = np.asarray(taken, dtype=float).reshape(-1, 4)
-    xs = np.unique(np.concatenate([[area[0], area[2] - w], T[:, 2] + GAP, T[:, 0] - GAP - w]))
-    ys = np.unique(np.concatenate([[area[1], area[3] - h], T[:, 3] + GAP, T[:, 1] - GAP - h]))
-    xs = xs[(xs >= area[0] - 1e-9) & (xs + w <= area[2] + 1e-9)]
-    ys = ys[(ys >= area[1] - 1e-9) & (ys + h <= area[3] + 1e-9)]
-    if not len(xs) or not len(ys):
-        return np.zeros((0, 2))
-    X, Y = (a.ravel() for a in np.meshgrid(xs, ys))
-    if len(T):
-        g = GAP - 1e-9
-        hit = ((X[:, None] < T[None, :, 2] + g) & (T[None, :, 0] - g < X[:, None] + w)
-               & (Y[:, None] < T[None, :, 3] + g) & (T[None, :, 1] - g < Y[:, None] + h)).any(axis=1)
-        X, Y = X[~hit], Y[~hit]
-    return np.stack([X, Y], axis=1)
-
-
-def _best_spot(panel: Panel, area: tuple[float, float, float, float],
-               taken: Sequence[tuple[float, float, float, float]],
-               near: Sequence[tuple[float, float, float, float]] = (),
-               min_y: float = -math.inf) -> tuple[float, float] | None:
-    """Where ``panel`` goes on a sheet: the free spot with the lowest bottom edge (a skyline
-    kept low), then the leftmost; a spot next to ``near`` (the panels of the same crank
-    angle) counts as lower by the panel's height (at most 60 mm), so one position stays
-    together where it fits; no spot above ``min_y`` (the top of the previous position's
-    panels), so the positions still read top to bottom."""
-    spots = _free_spots(panel.width, panel.height, area, taken)
-    spots = spots[spots[:, 1] >= min_y - 1e-9]
-    if not len(spots):
-        return None
-    X, Y = spots[:, 0], spots[:, 1]
-    bottom = Y + panel.height
-    cost = bottom + 0.05 * X
-    if near:
-        N = np.asarray(near, dtype=float)
-        cx, cy = X + panel.width / 2, Y + panel.height / 2
-        dx = np.maximum(0.0, np.maximum(N[None, :, 0] - (cx[:, None] + panel.width / 2),
-                                        (cx[:, None] - panel.width / 2) - N[None, :, 2]))
-        dy = np.maximum(0.0, np.maximum(N[None, :, 1] - (cy[:, None] + panel.height / 2),
-                                        (cy[:, None] - panel.height / 2) - N[None, :, 3]))
-        touching = (np.hypot(dx, dy) <= 2 * GAP).any(axis=1)
-        cost = cost - touching * min(panel.height, 60.0)
-    i = int(np.lexsort((X, Y, cost))[0])
-    return float(X[i]), float(Y[i])
-
-
-def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str = "",
+def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str | None = "",
             path: str = "<scene>", numbers: dict[float, int] | None = None) -> list[Sheet]:
     """Place panels on sheets of ``spec.format`` (pins first), as a course lays them out.
 
     The drawing-wide panels (plan of positions) come first; then one bordered block per
     crank angle, in angle order, under a heading "Положение 3, φ = 90°" (``numbers`` maps an
-    angle to its position number).  Inside a block the panels go in reading order where they
-    keep the block's skyline lowest; a block goes below or right of the previous one, on the
-    same sheet while it fits, else on the next (sheet order = angle order).  A block that
-    cannot fit one sheet is split into parts ("continued").  Each block is packed in several
-    widths; the shape that keeps the sheet's skyline lowest is taken.  The legend sits above the
-    title block of sheet 1; spare height is shared out between the bands of blocks.
+    angle to its position number).  Each block is packed several ways (:mod:`.packing`) and
+    the sheet takes the shape that fits the room left, below or right of the previous block
+    (never above it), on the same sheet while it fits, else on the next (sheet order = angle
+    order).  A position too big for one sheet flows over the sheets in
+    parts ("continued").  The legend goes where there is room once the blocks are down,
+    above the title block where it can; spare height is shared out between the bands of
+    blocks.  ``scale_text`` fills the title block's Scale cell; None: each sheet's own
+    (:func:`sheet_scale`).
     """
     W, H = spec.size
     area = usable(W, H)
@@ -505,18 +465,31 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str = "",
         put(pin.sheet - 1, p, pin.x, pin.y)
     queue = [p for p in panels if p.pid not in pinned]
     legend = next((p for p in queue if p.kind == "legend"), None)
-    if legend is not None:  # notes go above the title block
-        x, y = area[2] - legend.width, tb[1] - GAP - legend.height
-        box = (x, y, x + legend.width, y + legend.height)
-        if y >= area[1] and not any(_overlaps(box, _grow(t, GAP - 1e-9)) for t in taken[0]):
-            put(0, legend, x, y)
-            queue.remove(legend)
+    if legend is not None:  # the notes go where there is room once the blocks are down
+        queue.remove(legend)
     groups: list[list[Panel]] = []  # one per crank angle (drawing-wide panels alone)
     for p in queue:
         if not groups or p.kind in _SINGLE or groups[-1][0].kind in _SINGLE or groups[-1][0].phi != p.phi:
             groups.append([])
         groups[-1].append(p)
-    best = _place_blocks(_blocks(groups, area, spec.language, numbers or {}), taken, area, path)
+    aw, ah = area[2] - area[0], area[3] - area[1]
+
+    def limit(w: float) -> float:  # a block beside the title block may run the full height
+        return ah if w <= aw - TB_W - GAP + 1e-9 else ah - TB_H - GAP
+
+    spots = free_spots(GAP)
+    blks = blocks_of(groups, area, spec.language, numbers or {}, limit, GAP, spots, _SINGLE)
+    best, tks = place_blocks(blks, taken, area, GAP, spots)
+    if legend is not None:
+        s, x, y = place_note(legend.width, legend.height, area, tks, GAP, spots)
+        while len(best) <= s:
+            best.append([])
+            tks.append([tb])
+        while len(sheets) <= s:
+            sheets.append([])
+            taken.append([tb])
+        sheets[s].append((legend, x, y))
+        taken[s].append((x, y, x + legend.width, y + legend.height))
     out = []
     order = {p.pid: k for k, p in enumerate(panels)}
     for n, bl in enumerate(best):
@@ -532,80 +505,6 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str = "",
         sh = Sheet(spec, n + 1, len(best), W, H, placed, scale_text, frames=frames)
         sh.render()
         out.append(sh)
-    return out
-
-
-def _blocks(groups: list[list[Panel]], area: Box, lang: str, numbers: dict[float, int]) -> list[list[Block]]:
-    """Each group as a block, in every shape worth trying (packed into widths from a quarter
-    to the whole sheet); a group that cannot fit one sheet is split into parts."""
-    aw, ah = area[2] - area[0], area[3] - area[1]
-
-    def limit(w: float) -> float:  # a block beside the title block may run the full height
-        return ah if w <= aw - TB_W - GAP + 1e-9 else ah - TB_H - GAP
-
-    out: list[list[Block]] = []
-    for grp in groups:
-        phi = grp[0].phi
-        if grp[0].kind in _SINGLE or phi is None:
-            out.extend([Block([(p, 0.0, 0.0)], p.width, p.height, p.phi)] for p in grp)
-            continue
-        rest, part = list(grp), 0
-        while rest:
-            title = heading(phi, numbers.get(phi), lang, part)
-            tried = [pack_block(rest, w, limit(w), GAP, _free_spots, title) for w in widths(aw, rest)]
-            fewest = min(len(t[1]) for t in tried)
-            if fewest == 0:
-                out.append([t[0] for t in tried if not t[1]])
-                break
-            blk, left = next(t for t in tried if len(t[1]) == fewest)
-            if not blk.panels:  # too big for a framed block: the panel alone, unframed
-                p = rest[0]
-                blk, left = Block([(p, 0.0, 0.0)], p.width, p.height, p.phi), rest[1:]
-            out.append([blk])
-            rest, part = left, part + 1
-    return out
-
-
-def _place_blocks(blks: list[list[Block]], taken: list[list[Box]], area: Box,
-                  path: str) -> list[list[tuple[Block, float, float]]]:
-    """Blocks one after another on the sheets (pinned panels already there): each in the
-    shape and spot that keep the current sheet's skyline lowest, else on the next sheet."""
-    tks = [list(t) for t in taken]
-    out: list[list[tuple[Block, float, float]]] = [[] for _ in tks]
-    tb = tks[0][0]
-    cur = 0
-    prev: Box | None = None
-    for n, shapes in enumerate(blks):
-        after = blks[n + 1] if n + 1 < len(blks) else []
-        while True:
-            best = None
-            for b in shapes:
-                spot = place_block(b, area, tks[cur], prev, _free_spots, GAP)
-                if spot is None:
-                    continue
-                box = (spot[0], spot[1], spot[0] + b.width, spot[1] + b.height)
-                # one step ahead: a shape that leaves room for the next block on this sheet wins
-                room = any(place_block(c, area, tks[cur] + [box], box, _free_spots, GAP) is not None
-                           for c in after)
-                cost = (not room, spot[1] + b.height + 0.05 * spot[0], spot[1], spot[0])
-                if best is None or cost < best[0]:
-                    best = (cost, b, spot)
-            if best is not None:
-                break
-            if not out[cur] and len(tks[cur]) == 1:  # pragma: no cover - blocks fit an empty sheet
-                raise InputError(f"a block of {shapes[0].width:.0f}×{shapes[0].height:.0f} mm does not fit",
-                                 file=path, field="sheet.format")
-            cur, prev = cur + 1, None
-            if cur == len(tks):
-                tks.append([tb])
-                out.append([])
-        _, b, spot = best
-        box = (spot[0], spot[1], spot[0] + b.width, spot[1] + b.height)
-        tks[cur].append(box)
-        out[cur].append((b, spot[0], spot[1]))
-        prev = box
-    while len(out) > 1 and not out[-1] and len(tks[-1]) == 1:
-        out.pop()
     return out
 
 

@@ -64,8 +64,8 @@ def test_marked_sheet_lists_failures_and_findings(report):
     sheets = marked_sheets(report, language="ru")
     assert sheets and (sheets[0].width, sheets[0].height) == (841.0, 594.0)
     texts = " ".join(p.label.plain for sh in sheets for p in sh.prims if p.op == "text" and p.label)
-    assert "[percent]" in texts and "[duplicate]" in texts and "[symmetry]" in texts
-    assert "δFур, % = 6.18" in texts  # quantities typeset, not raw keys
+    assert "[проценты]" in texts and "[повтор]" in texts and "[симметрия]" in texts  # the sheet's language
+    assert "δFур, % = 6,18" in texts  # quantities typeset, not raw keys; a decimal comma
     assert "F_bal" not in texts and "M_Phi" not in texts
     rings = [p for sh in sheets for p in sh.prims if p.op == "circle" and p.eid.endswith("-student")]
     assert len(rings) >= 30
@@ -112,6 +112,41 @@ def test_sheet_option_on_the_check_command(tmp_path, capsys):
 def test_overlay_has_no_student_rings(report):
     prims = [p for sh in overlay_sheets(report) for p in sh.prims]
     assert not any(p.eid.endswith("-student") for p in prims)
+
+
+def _texts(sheets) -> list[str]:
+    return [p.label.plain for sh in sheets for p in (sh.prims or sh.render()) if p.op == "text" and p.label is not None]
+
+
+def test_russian_marked_sheet_has_no_english_finding_words(report):
+    """One language per sheet: every finding, failed figure and title of the Russian marked
+    sheet in Russian, quantities typeset (M_Φ2, F_ур), never the report's keys."""
+    import re
+
+    from plans.check.wording import SENTENCES
+
+    english = {w.lower() for en, _ru in SENTENCES.values() for w in re.findall(r"[A-Za-z]{3,}", en)}
+    english |= {"exact", "findings", "figures", "pass", "fail", "duplicate", "relation", "symmetry", "swapped",
+                "arithmetic", "percent", "scale", "mechanism", "engine", "twin"}
+    assert report.findings and {"duplicate", "relation", "percent", "symmetry", "swapped", "pi"} <= \
+        {f.kind for f in report.findings}
+    texts = _texts(marked_sheets(report, language="ru"))
+    words = {w.lower() for t in texts for w in re.findall(r"[A-Za-z]{3,}", t)}
+    assert not words & english, sorted(words & english)
+    joined = "\n".join(texts)
+    for raw in ("M_Phi", "Phi", "F_bal", "bal", "omega", "eps_", "diff_pct"):
+        assert raw not in joined, raw
+    assert "MΦ2" in joined and "Fур" in joined  # typeset: M_{Φ2}, F_{ур}
+    assert "Н·м" in joined and not re.search(r"\d (N|N m|m/s|kg|rad/s)\b", joined)  # units in Russian
+    assert "записана по-разному" in joined and "вычислено с π = 3,14" in joined
+
+
+def test_english_report_keeps_its_words(report):
+    """The report's own text is the English rendering of the same words."""
+    for f in report.findings:
+        assert f.words is not None and f.words.render("en") == f.message
+    texts = "\n".join(_texts(marked_sheets(report, language="en")))
+    assert "is written as" in texts and "[duplicate]" in texts
 
 
 def test_a_folder_checked_again_keeps_no_stale_sheet_or_report(tmp_path, capsys):

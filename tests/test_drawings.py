@@ -203,7 +203,7 @@ def test_labels_do_not_overlap(v_engine):
 def test_title_block_filled(v_svgs, v_engine):
     root = v_svgs[0]
     got = {el.get("id"): _text(el) for el in root.iter(f"{SVG}text") if el.get("id", "").startswith("tb-")}
-    assert got["tb-title-0"].startswith("V-twin")
+    assert got["tb-title-0"].startswith("Механизм V-образного")  # the Russian title on a Russian sheet
     assert got["tb-sheet"] == "Лист 1"
     assert got["tb-sheets"] == f"Листов {len(v_engine.sheets)}"
     assert got["tb-scale"] == "1:1"

@@ -52,6 +52,30 @@ def test_positions_share_sheets(drawings, name):
         assert any(len(s) >= 2 for s in phis_per_sheet)
 
 
+def _fill(sh) -> float:
+    """The part of a sheet's free paper its panels cover."""
+    a = usable(sh.width, sh.height)
+    return sum(p.width * p.height for p, _, _ in sh.placed) / ((a[2] - a[0]) * (a[3] - a[1]))
+
+
+@pytest.mark.parametrize("name", TWELVE)
+def test_a1_sheets_are_used_but_the_last(drawings, name):
+    """Blocks share sheets: every A1 sheet but the last has at least 0.38 of its paper under
+    panels (the plan of positions shares sheet 1 with the first blocks)."""
+    fills = [_fill(sh) for sh in drawings[name].sheets]
+    assert min(fills[:-1]) >= 0.38, [round(f, 2) for f in fills]
+    assert any(p.phi is not None for p, _, _ in drawings[name].sheets[0].placed)
+
+
+@pytest.mark.parametrize("name", ["v_engine", "six_link"])
+def test_plan_of_positions_shares_the_first_sheet(name):
+    d = draw(SAMPLES / f"{name}.toml")
+    first = d.sheets[0]
+    assert first.placed[0][0].kind == "positions"
+    assert any(p.phi is not None for p, _, _ in first.placed)  # a position's block beside it
+    assert min(_fill(sh) for sh in d.sheets[:-1]) >= 0.38
+
+
 def _where(d) -> dict[float, set[int]]:
     out: dict[float, set[int]] = {}
     for i, sh in enumerate(d.sheets):
@@ -183,8 +207,9 @@ def test_random_panels_pack_without_overlap(seed, fmt):
     assert [sh.panel_boxes() for sh in sheets] == [sh.panel_boxes() for sh in again]
     used = sum(p.width * p.height for p in panels)
     free = (a[2] - a[0]) * (a[3] - a[1])
-    # whole bordered blocks in angle order leave more paper free than free packing did
-    assert used / (len(sheets) * free) > 0.25
+    # whole bordered blocks in angle order: on A3 a block of five panels of up to a third of
+    # the sheet each way often needs most of a sheet, so less paper can be used there
+    assert used / (len(sheets) * free) > (0.4 if fmt == "A1" else 0.3)
 
 
 def test_legend_sits_above_the_title_block(drawings):
@@ -330,3 +355,56 @@ def test_legend_in_the_sheets_language(tmp_path):
     assert not any("Coriolis" in q.label.plain for q in next(
         x for x in draw(SAMPLES / "slider_crank.toml", language="en").panels if x.kind == "legend").prims
         if q.op == "text")
+
+
+def test_plans_are_smaller_on_smaller_sheets(tmp_path):
+    """A3 draws every plan, polygon and lever at a round scale no larger than A1's, each
+    plan's longest vector within the A1 target times √(420/841) (about 106 mm)."""
+    from plans.kinematics.scales import LONGEST_MM, is_round
+
+    path = _scene_with(tmp_path, "six_bar", "")
+    text = path.read_text(encoding="utf-8")
+    path.write_text(text.replace("[sheet]", "[sheet]\npositions = [30, 240]") if "[sheet]" in text
+                    else text + "\n[sheet]\npositions = [30, 240]\n", encoding="utf-8")
+    by = {}
+    for fmt in ("A1", "A3"):
+        d = draw(path, format=fmt)
+        by[fmt] = {p.pid: p for p in d.panels if p.kind in ("velocity", "acceleration", "polygon", "lever")}
+    assert set(by["A1"]) == set(by["A3"]) and by["A1"]
+    smaller = 0
+    for pid, p1 in by["A1"].items():
+        p3 = by["A3"][pid]
+        assert p1.scale is not None and p3.scale is not None and is_round(p1.scale) and is_round(p3.scale)
+        assert p3.scale <= p1.scale * (1 + 1e-12), pid
+        smaller += p3.scale < p1.scale
+    assert smaller >= len(by["A1"]) // 2  # most of them get smaller, not just the same
+    from drawings.linkage import for_sheet
+    from plans.kinematics.construction import build_all
+    from plans.kinematics.exact import solve as solve_
+
+    scene = for_sheet(load_scene(path), sheet_spec({"sheet": {"format": "A3"}}, str(path)))
+    for pp in build_all(solve_(scene)):
+        for plan in (pp.velocity, pp.acceleration):
+            assert plan.extent <= LONGEST_MM * math.sqrt(420 / 841) + 1e-9
+
+
+def _cell(sh, eid: str) -> str:
+    return next(p.label.plain for p in sh.prims if p.eid == eid and p.label is not None)
+
+
+def test_scale_cell_is_the_scale_of_the_sheets_main_image(drawings):
+    """GOST 2.104: the "Scale" cell holds the scale of the sheet's main image, written as
+    GOST 2.302 writes it: the shaper's plan of positions is drawn at μl = 500 mm/m (1:2),
+    its schemes and groups at 400 mm/m (1:2,5, a decimal comma on a Russian sheet)."""
+    d = drawings["shaper"]
+    assert next(p for p in d.panels if p.kind == "positions").scale == 500.0
+    assert {p.scale for p in d.panels if p.kind in ("scheme", "group", "crank")} == {400.0}
+    assert _cell(d.sheets[0], "tb-scale") == "1:2"
+    assert {_cell(sh, "tb-scale") for sh in d.sheets[1:]} == {"1:2,5"}
+
+
+def test_scale_cell_is_a_dash_without_a_length_scale():
+    d = draw(SAMPLES / "v_engine_cycle.toml")
+    last = d.sheets[-1]
+    assert not any(p.quantity == "length" for p, _, _ in last.placed)
+    assert _cell(last, "tb-scale") == "—"

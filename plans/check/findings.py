@@ -12,6 +12,7 @@ from typing import Any
 
 import numpy as np
 
+from plans.check import wording as wd
 from plans.check.checkfile import CheckFile, StudentPosition, Written
 from plans.check.providers import Context, points_of
 
@@ -58,11 +59,17 @@ class Item:
 @dataclass(frozen=True, slots=True)
 class Finding:
     kind: str  # duplicate arithmetic relation symmetry pi scale swapped percent
-    message: str
+    message: str  # in English (the report); ``words`` writes it in any language
     phi_deg: float | None = None
     quantities: tuple[str, ...] = ()
     where: tuple[str, ...] = ()
     fields: tuple[str, ...] = ()
+    words: wd.Words | None = None
+
+    @classmethod
+    def of(cls, kind: str, words: wd.Words, phi_deg: float | None = None, quantities: tuple[str, ...] = (),
+           where: tuple[str, ...] = (), fields: tuple[str, ...] = ()) -> Finding:
+        return cls(kind, words.render("en"), phi_deg, quantities, where, fields, words)
 
     def to_json(self) -> dict:
         return {"kind": self.kind, "message": self.message, "phi_deg": self.phi_deg,
@@ -123,18 +130,19 @@ def duplicate_findings(cf: CheckFile, pos: StudentPosition) -> list[Finding]:
     rel = cf.tolerance.arithmetic_pct / 100.0
     for kind in ("value", "measured"):
         groups: dict[str, list[Written]] = {}
-        for w in (pos.values if kind == "value" else pos.measured):
-            groups.setdefault(w.quantity, []).append(w)
-        for q, ws in groups.items():
+        for x in (pos.values if kind == "value" else pos.measured):
+            groups.setdefault(x.quantity, []).append(x)
+        for qn, ws in groups.items():
             if len(ws) < 2:
                 continue
-            if all(_same(ws[0], w, rel) for w in ws[1:]):
+            if all(_same(ws[0], x, rel) for x in ws[1:]):
                 continue
-            unit = "mm" if kind == "measured" else ""
-            shown = " and ".join(f"{as_written(w)}{(' ' + unit) if unit else ''}{where_note(w)}" for w in ws)
-            what = f"the segment for {q}" if kind == "measured" else q
-            out.append(Finding("duplicate", f"φ = {pos.phi_deg:g}°: {what} is written as {shown}",
-                               pos.phi_deg, (q,), tuple(w.where for w in ws), tuple(w.field for w in ws)))
+            fig = "fig_mm" if kind == "measured" else "fig"
+            shown = [wd.say(fig, w=wd.w(as_written(x)), where=where_note(x)) for x in ws]
+            words = wd.say("duplicate_segment" if kind == "measured" else "duplicate", phi=wd.n(pos.phi_deg, "g"),
+                        q=wd.q(qn), shown=shown)
+            out.append(Finding.of("duplicate", words, pos.phi_deg, (qn,), tuple(x.where for x in ws),
+                                  tuple(x.field for x in ws)))
     return out
 
 
@@ -164,16 +172,16 @@ def across_positions_findings(cf: CheckFile) -> list[Finding]:
         for w in pos.values:
             if position_free(cf.scene, w.quantity):
                 seen.setdefault(w.quantity, []).append((pos.phi_deg, w))
-    for q, ws in seen.items():
+    for qn, ws in seen.items():
         phis = {p for p, _ in ws}
         if len(phis) < 2:
             continue
         first = ws[0][1]
-        bad = [(p, w) for p, w in ws if not _same(first, w, rel) and p != ws[0][0]]
+        bad = [(p, x) for p, x in ws if not _same(first, x, rel) and p != ws[0][0]]
         if bad:
-            shown = " and ".join(f"{as_written(w)} at {p:g}°{where_note(w)}" for p, w in ws)
-            out.append(Finding("duplicate", f"{q} does not depend on the crank angle but is written as {shown}",
-                               None, (q,), tuple(w.where for _, w in ws), tuple(w.field for _, w in ws)))
+            shown = [wd.say("fig_at", w=wd.w(as_written(x)), phi=wd.n(p, "g"), where=where_note(x)) for p, x in ws]
+            out.append(Finding.of("duplicate", wd.say("across", q=wd.q(qn), shown=shown),
+                                  None, (qn,), tuple(x.where for _, x in ws), tuple(x.field for _, x in ws)))
     return out
 
 
@@ -203,15 +211,13 @@ def symmetry_findings(cf: CheckFile, pos: StudentPosition, items: list[Item]) ->
         if ia.exact_mm and ib.exact_mm:  # read off the drawing (directly or through a segment)
             allow += 2 * seg_mm / (ia.exact_mm / ia.exact)
         if gap > allow * (1 + 1e-9):
-            mm = ""
+            mm: wd.Words | str = ""
             if ia.figure != "value" and ib.figure != "value" and ia.student_mm is not None \
                     and ib.student_mm is not None:
-                mm = f" ({fmt(ia.student_mm)} mm and {fmt(ib.student_mm)} mm)"
-            out.append(Finding("symmetry",
-                               f"φ = {pos.phi_deg:g}°: {a} and {b} are exactly equal at this position (both "
-                               f"{fmt(ia.exact)} {ia.unit}: symmetry), but the student has {fmt(ia.student)}{_at_item(ia)} "
-                               f"and {fmt(ib.student)}{_at_item(ib)} {ia.unit}{mm}",
-                               pos.phi_deg, (a, b), (ia.where, ib.where), (ia.field, ib.field)))
+                mm = wd.say("mm_pair", x=wd.n(ia.student_mm), y=wd.n(ib.student_mm))
+            words = wd.say("symmetry", phi=wd.n(pos.phi_deg, "g"), a=wd.q(a), b=wd.q(b), exact=wd.n(ia.exact), unit=wd.u(ia.unit),
+                        sa=wd.n(ia.student), wa=_at_item(ia), sb=wd.n(ib.student), wb=_at_item(ib), mm=mm)
+            out.append(Finding.of("symmetry", words, pos.phi_deg, (a, b), (ia.where, ib.where), (ia.field, ib.field)))
     return out
 
 
@@ -247,19 +253,16 @@ def swapped_findings(ctx: Context, pos: StudentPosition, items: list[Item]) -> l
             if partner is not None and partner.student_mm is not None and \
                     abs(partner.student_mm - it.exact_mm) <= (partner.tolerance_mm or own_tol):
                 done.add(pair)
-                out.append(Finding("swapped",
-                                   f"φ = {pos.phi_deg:g}°: {it.quantity} = {fmt(it.student_mm)} mm and {s.label} = "
-                                   f"{fmt(partner.student_mm)} mm are swapped: on the {it.plan} plan at the "
-                                   f"student's scale {it.quantity} is {fmt(it.exact_mm)} mm and {s.label} "
-                                   f"{fmt(s.length_mm)} mm",
-                                   pos.phi_deg, (it.quantity, s.label), (it.where, partner.where),
-                                   (it.field, partner.field)))
+                words = wd.say("swapped", phi=wd.n(pos.phi_deg, "g"), q=wd.q(it.quantity), smm=wd.n(it.student_mm),
+                            s=wd.q(s.label), pmm=wd.n(partner.student_mm), plan=wd.plan(it.plan), emm=wd.n(it.exact_mm),
+                            slen=wd.n(s.length_mm))
+                out.append(Finding.of("swapped", words, pos.phi_deg, (it.quantity, s.label),
+                                      (it.where, partner.where), (it.field, partner.field)))
             elif abs(it.student_mm - it.exact_mm) > 3 * own_tol:
-                out.append(Finding("swapped",
-                                   f"φ = {pos.phi_deg:g}°: {it.quantity} = {fmt(it.student_mm)} mm{_at_item(it)} is "
-                                   f"close to the length of {s.label} ({fmt(s.length_mm)} mm), not of {it.quantity} "
-                                   f"({fmt(it.exact_mm)} mm): was the wrong segment measured?",
-                                   pos.phi_deg, (it.quantity, s.label), (it.where,), (it.field,)))
+                words = wd.say("wrong_segment", phi=wd.n(pos.phi_deg, "g"), q=wd.q(it.quantity), smm=wd.n(it.student_mm),
+                            where=_at_item(it), s=wd.q(s.label), slen=wd.n(s.length_mm), emm=wd.n(it.exact_mm))
+                out.append(Finding.of("swapped", words, pos.phi_deg, (it.quantity, s.label), (it.where,),
+                                      (it.field,)))
             break
     return out
 
@@ -286,11 +289,9 @@ def pi_findings(cf: CheckFile, items: list[Item]) -> list[Finding]:
             if hu > 0.5 * abs(1 - f) * abs(it.exact):
                 continue  # the rounding hides the effect of π
             if abs(it.student - it.exact * f) <= hu:
-                out.append(Finding("pi", f"φ = {it.phi_deg:g}°: {it.quantity} = {fmt(it.student)}{_at_item(it)} "
-                                         f"is computed with π = 3.14: with π it is {fmt(it.exact)} {it.unit} "
-                                         f"({100 * (it.student / it.exact - 1):+.3f} %), and everything computed "
-                                         f"from it inherits the error",
-                                   it.phi_deg, (it.quantity,), (it.where,), (it.field,)))
+                words = wd.say("pi", phi=wd.n(it.phi_deg, "g"), q=wd.q(it.quantity), s=wd.n(it.student), where=_at_item(it),
+                            exact=wd.n(it.exact), unit=wd.u(it.unit), pct=wd.n(100 * (it.student / it.exact - 1), "+.3f"))
+                out.append(Finding.of("pi", words, it.phi_deg, (it.quantity,), (it.where,), (it.field,)))
                 break
     return out
 
@@ -309,12 +310,12 @@ def scale_findings(cf: CheckFile, items: list[Item]) -> list[Finding]:
     """A plan whose figures are all off by one factor: values divided by another μ than the
     sheet's, or segments drawn at another μ."""
     out = []
-    for plan in ("velocity", "acceleration"):
-        mu = cf.scales.get(plan)
+    for kind in ("velocity", "acceleration"):
+        mu = cf.scales.get(kind)
         if mu is None:
             continue
-        sym = "μv" if plan == "velocity" else "μa"
-        prefix = "v_" if plan == "velocity" else "a_"
+        sym = "μv" if kind == "velocity" else "μa"
+        prefix = "v_" if kind == "velocity" else "a_"
         ratios: list[float] = []
         names: list[str] = []
         for pos in cf.positions:
@@ -329,21 +330,17 @@ def scale_findings(cf: CheckFile, items: list[Item]) -> list[Finding]:
             r = float(np.median(ratios))
             members = [n for n, x in zip(names, ratios, strict=True) if abs(x / r - 1) < 0.005]
             if abs(r - 1) > 0.01 and len(members) >= max(2, 2 * len(ratios) // 3):
-                out.append(Finding("scale", f"the {plan} values are their measured segments divided by "
-                                            f"{mu / r:.3g} mm per unit, but the sheet's {sym} is {fmt(mu)}: "
-                                            f"the student divided by the wrong scale, the values are "
-                                            f"{100 * (r - 1):+.1f} % off",
-                                   None, tuple(dict.fromkeys(members))))
-        rows = [i for i in items if i.plan == plan and i.source == "plan" and i.figure != "value"
+                words = wd.say("scale_values", plan=wd.plan(kind), mu2=wd.n(mu / r, ".3g"), sym=sym, mu=wd.n(mu),
+                            pct=wd.n(100 * (r - 1), "+.1f"))
+                out.append(Finding.of("scale", words, None, tuple(dict.fromkeys(members))))
+        rows = [i for i in items if i.plan == kind and i.source == "plan" and i.figure != "value"
                 and i.exact_mm and i.exact_mm > 5 and i.student_mm]
         ratios = [(i.student_mm or 0.0) / (i.exact_mm or 1.0) for i in rows]
         if len(ratios) >= 3:
             r = float(np.median(ratios))
             if abs(r - 1) > 0.02 and max(abs(x / r - 1) for x in ratios) < 0.02:
-                out.append(Finding("scale", f"every measured segment of the {plan} plans is {r:.3f}× its exact "
-                                            f"length at {sym} = {fmt(mu)}: the plans look drawn at {sym} = "
-                                            f"{mu * r:.3g}, not at the scale written on the sheet",
-                                   None, tuple(dict.fromkeys(i.quantity for i in rows))))
+                words = wd.say("scale_drawn", plan=wd.plan(kind), r=wd.n(r, ".3f"), sym=sym, mu=wd.n(mu), mu2=wd.n(mu * r, ".3g"))
+                out.append(Finding.of("scale", words, None, tuple(dict.fromkeys(i.quantity for i in rows))))
     return out
 
 

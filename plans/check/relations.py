@@ -8,6 +8,7 @@ import re
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from plans.check import wording as wd
 from plans.check.checkfile import CheckFile, StudentPosition, Written
 from plans.check.findings import Finding, as_written, consistent, fmt, position_free, where_note
 from plans.check.providers import G_STANDARD, Context, exact_value, points_of
@@ -159,11 +160,10 @@ def relation_findings(ctx: Context, pos: StudentPosition) -> list[Finding]:
             continue
         m = measured[0]
         want = m.value / ex.mm_per_unit
-        out.append(Finding("arithmetic",
-                           f"φ = {pos.phi_deg:g}°: {w.quantity} = {as_written(w)}{where_note(w)}, but the segment "
-                           f"measured for it, {as_written(m)} mm{where_note(m)}, at the scale {ex.mm_per_unit:.4g} mm per "
-                           f"{ex.unit} gives {fmt(want)} {ex.unit}",
-                           pos.phi_deg, (w.quantity,), (w.where, m.where), (w.field, m.field)))
+        words = wd.say("arithmetic", phi=wd.n(pos.phi_deg, "g"), q=wd.q(w.quantity), w=wd.w(as_written(w)),
+                       where=where_note(w), m=wd.w(as_written(m)), mwhere=where_note(m),
+                       mu=wd.n(ex.mm_per_unit, ".4g"), unit=wd.u(ex.unit), want=wd.n(want))
+        out.append(Finding.of("arithmetic", words, pos.phi_deg, (w.quantity,), (w.where, m.where), (w.field, m.field)))
     for r in relations(ctx):
         targets = _written_any(pos, r.target, "value") or _written_any(pos, r.target, "measured")
         if not targets:
@@ -200,26 +200,24 @@ def relation_findings(ctx: Context, pos: StudentPosition) -> list[Finding]:
             if ok or not results:
                 continue
             want, combo = results[0]
-            used = ", ".join(f"{q} = {c.text}" for q, c in zip(r.inputs, combo, strict=True))
+            used = (", ", [wd.say("use", q=wd.q(q), w=wd.x(c.text)) for q, c in zip(r.inputs, combo, strict=True)])
             kind = "percent" if r.target == "F_bal_diff_pct" else "relation"
-            shown = as_written(w) + (" mm" if w.kind == "measured" else "")
-            msg = (f"φ = {pos.phi_deg:g}°: {r.target} = {shown}{where_note(w)}, but {r.formula} = "
-                   f"{fmt(want)} with {used}")
-            if kind == "percent":
-                msg += _percent_hint(cf, combo, value)
-            out.append(Finding(kind, msg, pos.phi_deg, (r.target,) + r.inputs, (w.where,), (w.field,)))
+            shown = wd.say("fig_mm" if w.kind == "measured" else "fig", w=wd.w(as_written(w)), where="")
+            hint = _percent_hint(cf, combo, value) if kind == "percent" else ""
+            words = wd.say("relation", phi=wd.n(pos.phi_deg, "g"), target=wd.q(r.target), shown=shown,
+                           where=where_note(w), formula=wd.formula(r.formula), want=wd.n(want), used=used,
+                           hint=hint)
+            out.append(Finding.of(kind, words, pos.phi_deg, (r.target,) + r.inputs, (w.where,), (w.field,)))
     return out
 
 
-def _percent_hint(cf: CheckFile, combo: tuple[_Input, ...], value: float) -> str:
+def _percent_hint(cf: CheckFile, combo: tuple[_Input, ...], value: float) -> wd.Words | str:
     lever, kin = combo[0].value, combo[1].value
     denominator = kin if cf.tolerance.balance_base == "lever" else lever
     if denominator == 0:  # a student's zero: no other denominator to suspect
         return ""
     other = 100 * abs(lever - kin) / denominator
     if abs(other - value) <= 0.01 * max(abs(value), 1e-9) + 0.005:
-        base = "the kinetostatic force F_bal" if cf.tolerance.balance_base == "lever" else "the lever's F_bal"
-        right = "the Zhukovsky lever's F_bal_lever" if cf.tolerance.balance_base == "lever" else "F_bal"
-        return (f"; the student's {fmt(value)} % divides by {base} ({fmt(other)} %): "
-                f"the wrong denominator, the course compares with {right}")
+        key = "hint_lever" if cf.tolerance.balance_base == "lever" else "hint_kin"
+        return wd.say(key, value=wd.n(value), other=wd.n(other), kin=wd.q("F_bal"), lever=wd.q("F_bal_lever"))
     return ""

@@ -9,6 +9,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from plans.kinematics import construction
+from plans.kinematics.scales import fit
 
 if TYPE_CHECKING:
     from plans.forces.polygons import ForceAnalysis
@@ -38,7 +39,7 @@ def mu_force(fa: ForceAnalysis, values: list[complex]) -> float:
     cycle = max((float(np.max(np.abs(rc.F))) for rc in fa.reactions()), default=0.0)
     if longest <= 1e-9 * cycle:  # zero up to round-off: a point, at the cycle's scale
         longest = cycle
-    return nice_scale(longest)
+    return nice_scale(longest, 100.0 * fit(fa.scene.scales))
 
 
 def unit_vector(z: C) -> C:
