@@ -21,6 +21,7 @@ from plans.forces.polygons import force_polygons
 from plans.forces.shared import nice_scale
 from plans.kinematics.plan import Plan
 from plans.kinematics.scales import fit
+from plans.units import DUST
 
 from .backend import Pt, Recording, Style, Transform
 from .common import Placer, arrow, dot, fmt, ident, phi_tag
@@ -510,8 +511,13 @@ class _Row:
 def forces_table(polys, lang: str, style: str, phi: float) -> Panel:
     """Every polygon vector: segment, mm, μF, value read to the ruler, exact, difference."""
     rows = []
+    whole = max((s.value for fp in polys for s in fp.plan.segments), default=0.0)
     for fp in polys:
         ref = max((s.value for s in fp.plan.segments), default=0.0)
+        if ref <= DUST * whole:
+            # a polygon of round-off only (the crank's in a dead position): its forces are
+            # zero against the position's, not -100 % against each other
+            ref = whole
         for s in fp.plan.segments:
             rows.append(_Row(force_label(s.label, lang), f"{s.start} {s.end}", s.length_mm, fp.scale,
                              fp.reading(s.label), s.value, "N", ref))

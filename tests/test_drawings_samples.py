@@ -176,3 +176,18 @@ def test_no_numerical_dust_on_the_sheets(drawn):
     for panel in d.panels:
         if panel.scale is not None:
             assert 1e-6 < panel.scale < 1e6, (panel.pid, panel.scale)
+
+
+def test_no_percent_difference_between_two_zeros(drawn):
+    """A table row whose reading and exact value are both 0 differs by 0: no "-100 %" from a
+    polygon made of round-off only (the crank's force polygon in a dead position)."""
+    _, d, _ = drawn
+    for panel in d.panels:
+        if panel.kind != "table":
+            continue
+        cells = [q.label.plain for q in panel.prims if q.op == "text" and q.label is not None and not q.eid]
+        assert len(cells) % 8 == 0, panel.pid
+        for i in range(0, len(cells), 8):
+            row = cells[i:i + 8]
+            if row[4] == "0" and row[5] == "0":
+                assert row[7] in ("0,00", "0.00", "—") or row[7].startswith("0 "), (panel.pid, row)
