@@ -59,11 +59,11 @@ class Block:
 
 def heading(phi: float, number: int | None, lang: str, part: int = 0) -> str:
     """``Положение 3, φ = 90°`` (``Position 3, φ = 90°``), ``(продолжение)`` on a second part."""
-    from .common import fmt
+    from .common import angle
 
-    angle = f"φ = {fmt(phi, 6, lang)}°"
+    at = f"φ = {angle(phi, lang)}°"
     word = "Положение" if lang == "ru" else "Position"
-    text = f"{word} {number}, {angle}" if number is not None else angle
+    text = f"{word} {number}, {at}" if number is not None else at
     if part:
         text += " (продолжение)" if lang == "ru" else " (continued)"
     return text

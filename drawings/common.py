@@ -50,6 +50,12 @@ def fmt(v: float, sig: int = 4, lang: str = "en") -> str:
     return s.replace(".", ",") if lang == "ru" else s
 
 
+def angle(phi: float, lang: str = "en") -> str:
+    """A crank angle, degrees, the same in a block's heading and in its panels' titles
+    (181,851° in both, not 181,9° under 181,851°)."""
+    return fmt(phi, 6, lang)
+
+
 def arrow(b: Backend, p0: Pt, p1: Pt, style: Style, eid: str, cls: str,
           head: float = HEAD_LEN, half: float = HEAD_HALF) -> None:
     """A vector from p0 to p1 (paper mm) as a group: the shaft ``line`` starts exactly at p0,

@@ -24,7 +24,7 @@ from plans.kinematics.scales import fit
 from plans.units import DUST
 
 from .backend import Pt, Recording, Style, Transform
-from .common import Placer, arrow, dot, fmt, ident, phi_tag
+from .common import Placer, angle, arrow, dot, fmt, ident, phi_tag
 from .i18n import tr
 from .panels import (
     JOINT_R,
@@ -267,7 +267,7 @@ def group_panel(scene, kin, gf, k: int, mu_l: float, lang: str, style: str) -> P
     for point, M, name in couples:
         _moment_arc(rec, placer, T.z(pts[point]), M, force_label(name, lang), f"{pid}-{ident(name)}", r=8.0)
     _label_points(rec, placer, pts, T, pid)
-    title = f"{tr('group', lang)} {g.name} ({g.kind}), φ = {fmt(phi, 4, lang)}°"
+    title = f"{tr('group', lang)} {g.name} ({g.kind}), φ = {angle(phi, lang)}°"
     sc = f"{scale_text('length', mu_l, style, lang)};  {scale_text('force', mu_f, style, lang)}"
     return finish(pid, "group", phi, rec, title, sc, quantity="length", scale=mu_l)
 
@@ -301,7 +301,7 @@ def crank_panel(scene, kin, fa, k: int, mu_l: float, lang: str, style: str) -> P
     _force_at(rec, placer, T, complex(c.frame.r[k]), complex(c.frame.F[k]), mu_f, force_label(name, lang),
               REACTION, f"{pid}-{ident(name)}")
     _label_points(rec, placer, pts, T, pid)
-    title = f"{tr('crank', lang)} {c.link}, φ = {fmt(phi, 4, lang)}°"
+    title = f"{tr('crank', lang)} {c.link}, φ = {angle(phi, lang)}°"
     sc = f"{scale_text('length', mu_l, style, lang)};  {scale_text('force', mu_f, style, lang)}"
     return finish(pid, "crank", phi, rec, title, sc, quantity="length", scale=mu_l)
 
@@ -367,7 +367,7 @@ def polygon_panel(plan: Plan, lang: str, style: str, pid: str, title: str) -> Pa
         st = VECTOR_STYLES["closing" if s.kind == "closing" else "force"]
         lab = placer.place(force_label(s.label, lang), mid, SMALL_SIZE + 0.5, prefer=(nx, ny), gap=0.8)
         rec.text(lab, "vector-label", f"{eid}-label", fill=st.stroke or "#000")
-    return finish(pid, "polygon", plan.phi_deg, rec, f"{title}, φ = {fmt(plan.phi_deg, 4, lang)}°",
+    return finish(pid, "polygon", plan.phi_deg, rec, f"{title}, φ = {angle(plan.phi_deg, lang)}°",
                   scale_text("force", plan.scale, style, lang), quantity="force", scale=plan.scale)
 
 
@@ -483,7 +483,7 @@ def lever_panel(lv, k: int, vplan: Plan | None, lang: str, style: str) -> Panel:
         rec.text(vl, "vector-label", f"{eid}-label", fill=st.stroke if st is REACTION and st.stroke else "#000")
     turn = ("90° " + ("против часовой" if lv.turn > 0 else "по часовой")) if lang == "ru" else (
         "turned 90° " + ("ccw" if lv.turn > 0 else "cw"))
-    title = f"{tr('lever', lang)}, φ = {fmt(phi, 4, lang)}° ({turn})"
+    title = f"{tr('lever', lang)}, φ = {angle(phi, lang)}° ({turn})"
     sc = f"{scale_text('velocity', lv.scale, style, lang)};  {scale_text('force', mu_f, style, lang)}"
     note = None
     if short:

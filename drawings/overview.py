@@ -14,7 +14,7 @@ import numpy as np
 from plans.errors import InputError, PlansError
 
 from .backend import Recording, Style, Transform
-from .common import Placer, arrow, dot, fmt, ident
+from .common import Placer, angle, arrow, dot, ident
 from .i18n import tr
 from .panels import (
     BLOCK_H,
@@ -319,9 +319,9 @@ def positions_panel(scene, kin, mu_l: float, lang: str, bold: Sequence[int], str
     phis = [float(x) for x in kin.phi_deg]
     steps = {round(b - a, 9) for a, b in zip(phis[:-1], phis[1:], strict=False)}
     if len(steps) == 1 and n > 2:
-        when = f"φ_0 = {fmt(phis[0], 4, lang)}°, Δφ = {fmt(steps.pop(), 4, lang)}°"
+        when = f"φ_0 = {angle(phis[0], lang)}°, Δφ = {angle(steps.pop(), lang)}°"
     else:
-        when = ", ".join(f"φ_{i} = {fmt(p, 4, lang)}°" for i, p in enumerate(phis))
+        when = ", ".join(f"φ_{i} = {angle(p, lang)}°" for i, p in enumerate(phis))
     bold_txt = ", ".join(str(k) for k in sorted(bold_set))
     if lang == "ru":
         note = f"{when}; жирно: {bold_txt}" if bold_set else when

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from plans.kinematics.plan import Plan
 
 from .backend import FILLED, HAIR, MAIN, THICK, THIN, Prim, Pt, Recording, Style, Transform
-from .common import Placer, arrow, dot, fmt, ident, phi_tag
+from .common import Placer, angle, arrow, dot, fmt, ident, phi_tag
 from .i18n import tr
 from .text import layout, point_label
 
@@ -312,7 +312,7 @@ def scheme_panel(scene, kin, k: int, mu_l: float, lang: str, strokes: dict[str, 
     rec.end()
 
     dead = _dead_points(scene, kin, k)
-    title = f"{tr('scheme', lang)}, φ = {fmt(phi, 4, lang)}°"
+    title = f"{tr('scheme', lang)}, φ = {angle(phi, lang)}°"
     note = None
     if dead:
         note = f"{tr('dead', lang)} {', '.join(dead)}"
@@ -547,7 +547,7 @@ def plan_panel(plan: Plan, lang: str, scale_style: str, pid: str | None = None) 
     rec.end()
 
     quantity = "velocity" if kind == "velocity" else "acceleration"
-    title = f"{tr(kind, lang)}, φ = {fmt(plan.phi_deg, 4, lang)}°"
+    title = f"{tr(kind, lang)}, φ = {angle(plan.phi_deg, lang)}°"
     return finish(pid, kind, plan.phi_deg, rec, title, scale_text(quantity, plan.scale, scale_style, lang),
                   quantity=quantity, scale=plan.scale)
 
@@ -665,7 +665,7 @@ def table_panel(rows: Sequence, lang: str, scale_style: str, phi: float, pid: st
             rec.text(lab, "td")
         rec.end()
     rec.end()
-    title = f"{tr(title_key, lang)}, φ = {fmt(phi, 4, lang)}°"
+    title = f"{tr(title_key, lang)}, φ = {angle(phi, lang)}°"
     return finish(pid, "table", phi, rec, title)
 
 

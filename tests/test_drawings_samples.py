@@ -191,3 +191,16 @@ def test_no_percent_difference_between_two_zeros(drawn):
             row = cells[i:i + 8]
             if row[4] == "0" and row[5] == "0":
                 assert row[7] in ("0,00", "0.00", "—") or row[7].startswith("0 "), (panel.pid, row)
+
+
+def test_panel_titles_give_the_angle_of_their_block_heading(drawn):
+    """"Положение 8, φ = 181,851°" heads panels titled "…, φ = 181,851°", not "181,9°"."""
+    _, d, _ = drawn
+    at = re.compile(r"(?<!Δ)φ = (-?[\d.,]+)°")
+    for sh in d.sheets:
+        texts = [p.label.plain for p in sh.prims if p.op == "text" and p.label is not None]
+        heads = {m.group(1) for t in texts if t.startswith(("Положение", "Position")) for m in at.finditer(t)}
+        if not heads:
+            continue
+        titled = {m.group(1) for t in texts if not t.startswith(("Положение", "Position")) for m in at.finditer(t)}
+        assert titled <= heads, sorted(titled - heads)
