@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import re
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -103,7 +104,7 @@ def diagram_panels(dg: Diagrams, lang: str) -> list[Panel]:
         ax.curve(cx, cy, GRAPH, f"diagram-{g.name}-graphical")
         ax.dots(xs, ys)
         how = tr(dg.spec.method, lang) if g.quantity != "s" else ""
-        err = (f"{tr('error', lang)}: max {fmt(g.error_max_pct, 2, lang)} %, rms {fmt(g.error_rms_pct, 2, lang)} %"
+        err = (f"{tr('error', lang)}: max {fmt(g.error_max_pct, 2, lang)} %, {_rms(lang)} {fmt(g.error_rms_pct, 2, lang)} %"
                if g.quantity != "s" else tr("exact_thin", lang))
         note = "; ".join(x for x in (how, err) if x)
         formula = g.scale_formula.replace(".", ",") if lang == "ru" else g.scale_formula
@@ -114,7 +115,7 @@ def diagram_panels(dg: Diagrams, lang: str) -> list[Panel]:
     rows = [[g.name, number(g.error_max_pct, lang, 3), number(g.error_rms_pct, lang, 3),
              "—" if g.integral_error_max_pct is None else number(g.integral_error_max_pct, lang, 3)]
             for g in dg.diagrams]
-    head = ["", "max", "rms", "∫ max"]
+    head = ["", "max", _rms(lang), "∫ max"]
     out.append(wide_table("diagram-errors", tr("errors", lang), head, rows, lang))
     return out
 
@@ -317,6 +318,11 @@ def _fly_table(d: Dynamics, lang: str) -> Panel:
     return wide_table("dyn-flywheel", f"{tr('fly', lang)}: δ = {fmt(fw.delta, 4, lang)}", head, rows, lang, note)
 
 
+def _rms(lang: str) -> str:
+    """The root-mean-square error's short name: "ср. кв." on a Russian sheet."""
+    return "ср. кв." if lang == "ru" else "rms"
+
+
 def table_panels(tables: Sequence[CycleTable], lang: str, prefix: str,
                  titles: Sequence[str] | None = None) -> list[Panel]:
     """Cycle tables as panels: positions as columns, split in halves when they are many."""
@@ -335,7 +341,8 @@ def table_panels(tables: Sequence[CycleTable], lang: str, prefix: str,
                                                           else r.values[k]) for k in ks]
                 u = _UNITS.get(r.unit, (r.unit, r.unit))[0 if lang == "ru" else 1]
                 unit = f", {u}" if u and u != "1" else ""
-                rows.append([f"{r.label}{unit}"] + [number(c, lang, 4) for c in cells])
+                label = re.sub(r"_pr\b", "_пр", r.label) if lang == "ru" else r.label  # I_пр, M_пр
+                rows.append([f"{label}{unit}"] + [number(c, lang, 4) for c in cells])
             out.append(wide_table(f"{prefix}-table-{i + 1}-{j + 1}", title, head, rows, lang))
     return out
 

@@ -204,3 +204,15 @@ def test_panel_titles_give_the_angle_of_their_block_heading(drawn):
             continue
         titled = {m.group(1) for t in texts if not t.startswith(("Положение", "Position")) for m in at.finditer(t)}
         assert titled <= heads, sorted(titled - heads)
+
+
+def test_no_english_abbreviations_on_a_russian_sheet(drawn):
+    """I_пр, M_пр and "ср. кв." on a Russian sheet: not the English I_pr, M_pr, rms."""
+    _, d, _ = drawn
+    english = re.compile(r"(?<![A-Za-z])(?:[IM]pr|rms)(?![a-z])")
+    for sh in d.sheets:
+        if sh.spec.language != "ru":
+            continue
+        for p in sh.prims:
+            if p.op == "text" and p.label is not None:
+                assert not english.search(p.label.plain), p.label.plain
