@@ -333,7 +333,7 @@ def table_panels(tables: Sequence[CycleTable], lang: str, prefix: str,
         chunks = [range(0, n)] if n <= 14 else [range(a, min(n, a + 12)) for a in range(0, n, 12)]
         for j, ks in enumerate(chunks):
             head = [tr("position", lang)] + [str(k + 1) for k in ks]
-            rows = [[tr("phi", lang)] + [number(t.phi_deg[k], lang, 5) for k in ks]]
+            rows = [[tr("phi", lang)] + [number(t.phi_deg[k], lang, 6) for k in ks]]
             for r in t.rows:
                 big = max([abs(v) for v in r.values if v is not None] + [0.0])
                 # a dead centre's 1e-8 is a zero on paper
