@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Sequence
+from typing import Any
 
 import svgwrite
 
@@ -29,6 +30,20 @@ def _path(pts: Sequence[Pt], closed: bool) -> str:
     d = "M" + " L".join(f"{num(x)},{num(y)}" for x, y in pts)
     return d + " Z" if closed else d
 
+
+
+def paint(target: Any, style: Style, fill: str | None = "none") -> None:
+    """The fill and stroke attributes of ``style`` set on ``target`` (an svgwrite element or
+    an attribute dict, for the two backends alike); ``fill=None`` leaves the fill out."""
+    if fill is not None:
+        target["fill"] = style.fill or fill
+    if style.stroke:
+        target["stroke"] = style.stroke
+        target["stroke-width"] = num(style.width)
+        if style.dash:
+            target["stroke-dasharray"] = " ".join(num(d) for d in style.dash)
+    else:
+        target["stroke"] = "none"
 
 class SvgBackend:
     """Draws onto an svgwrite Drawing of ``width`` × ``height`` mm."""
@@ -56,14 +71,7 @@ class SvgBackend:
 
     @staticmethod
     def _style(el, style: Style, *, fill_default: str = "none") -> None:
-        el["fill"] = style.fill or fill_default
-        if style.stroke:
-            el["stroke"] = style.stroke
-            el["stroke-width"] = num(style.width)
-            if style.dash:
-                el["stroke-dasharray"] = " ".join(num(d) for d in style.dash)
-        else:
-            el["stroke"] = "none"
+        paint(el, style, fill_default)
 
     # ---- Backend
 
@@ -154,15 +162,7 @@ class SvgWriter:
 
     @staticmethod
     def _paint(attrs: dict[str, str], style: Style, fill: bool = True) -> dict[str, str]:
-        if fill:
-            attrs["fill"] = style.fill or "none"
-        if style.stroke:
-            attrs["stroke"] = style.stroke
-            attrs["stroke-width"] = num(style.width)
-            if style.dash:
-                attrs["stroke-dasharray"] = " ".join(num(d) for d in style.dash)
-        else:
-            attrs["stroke"] = "none"
+        paint(attrs, style, "none" if fill else None)
         return attrs
 
     def begin(self, gid: str, cls: str = "") -> None:
