@@ -20,6 +20,7 @@ from plans.balancing.engine import Engine, load_engine
 from .backend import HAIR, MAIN, Pt, Recording, Style
 from .common import Placer, arrow, dot, fmt
 from .fonts import metrics
+from .i18n import lookup
 from .panels import LABEL_SIZE, SMALL_SIZE, VECTOR_STYLES, Panel, finish
 from .sheet import Sheet, SheetSpec, compose, sheet_spec
 from .text import layout
@@ -84,9 +85,7 @@ def _deg(a: float) -> float:
     return 0.0 if d >= 360.0 else d
 
 
-def _t(key: str, lang: str) -> str:
-    ru, en = _W[key]
-    return ru if lang == "ru" else en
+_t = lookup(_W)
 
 
 def _P(z: complex, s: float, o: Pt = (0.0, 0.0)) -> Pt:

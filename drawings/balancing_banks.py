@@ -17,6 +17,7 @@ from plans.balancing.banks import Bank, BankPolygon, Locus
 from .backend import HAIR, Recording, Style
 from .balancing import _P, AXIS, CLOSING, _deg, _nice_mm, _t
 from .common import Placer, arrow, dot, fmt
+from .i18n import lookup
 from .panels import SMALL_SIZE, VECTOR_STYLES, Panel, finish
 from .text import layout
 
@@ -38,9 +39,11 @@ LOCUS_MM = 32.0  # the largest combined vector on the sheet, mm
 ROMAN = {1: "I", 2: "II"}
 
 
+_word = lookup(_W)
+
+
 def _w(key: str, lang: str, **kw: object) -> str:
-    ru, en = _W[key]
-    return (ru if lang == "ru" else en).format(**kw)
+    return _word(key, lang).format(**kw)
 
 
 def bank_panels(b: Balance, lang: str) -> list[Panel]:

@@ -18,6 +18,7 @@ from plans.cams.model import Cam, load_cam
 
 from .backend import HAIR, MAIN, THICK, THIN, Pt, Recording, Style
 from .common import arrow, dot, fmt
+from .i18n import lookup
 from .panels import STANDARD_RATIOS, Panel, finish, ratio_text
 from .sheet import GAP, TB_H, Sheet, SheetSpec, compose, sheet_spec, usable
 from .text import layout
@@ -42,9 +43,7 @@ WORDS = {
 }
 
 
-def _w(key: str, lang: str) -> str:
-    ru, en = WORDS[key]
-    return ru if lang == "ru" else en
+_w = lookup(WORDS)
 
 
 @dataclass(frozen=True)

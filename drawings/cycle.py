@@ -25,6 +25,7 @@ from plans.scene.model import Scene
 from .backend import HAIR, MAIN, THIN, Recording, Style
 from .common import fmt
 from .cycle_plot import EXACT, GRAPH, Axes, number, plot_panel, wide_table
+from .i18n import lookup
 from .panels import Panel
 from .sheet import Sheet, SheetSpec, compose
 from .text import layout
@@ -73,9 +74,7 @@ _UNITS = {"N*m": ("Н·м", "N·m"), "kg*m^2": ("кг·м²", "kg·m²"), "m": (
           "rad/s": ("рад/с", "rad/s"), "rad/s^2": ("рад/с²", "rad/s²"), "deg": ("°", "°")}
 
 
-def tr(key: str, lang: str) -> str:
-    ru, en = WORDS[key]
-    return ru if lang == "ru" else en
+tr = lookup(WORDS)
 
 
 # --------------------------------------------------------------------------- kinematic diagrams

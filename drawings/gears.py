@@ -20,6 +20,7 @@ from plans.gears.solve import GearSolution, solve_gears
 
 from .backend import HAIR, MAIN, THICK, THIN, Recording, Style
 from .common import Placer, arrow, dot, fmt
+from .i18n import lookup
 from .panels import Panel, finish, ratio_text
 from .sheet import Sheet, SheetSpec, compose, sheet_spec
 from .text import layout
@@ -52,9 +53,7 @@ _WORDS = {
 }
 
 
-def tr(key: str, lang: str) -> str:
-    ru, en = _WORDS[key]
-    return ru if lang == "ru" else en
+tr = lookup(_WORDS)
 
 
 @dataclass(frozen=True)

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 WORDS: dict[str, tuple[str, str]] = {
     "scheme": ("Кинематическая схема", "Kinematic scheme"),
     "positions": ("План положений механизма", "Plan of positions"),
@@ -61,6 +63,15 @@ WORDS: dict[str, tuple[str, str]] = {
 }
 
 
-def tr(key: str, lang: str) -> str:
-    ru, en = WORDS[key]
-    return ru if lang == "ru" else en
+def lookup(table: dict[str, tuple[str, str]]) -> Callable[[str, str], str]:
+    """``tr(key, lang)`` over a table of (Russian, English) words: each sheet module keeps its
+    own words and reads them the same way."""
+
+    def tr(key: str, lang: str) -> str:
+        ru, en = table[key]
+        return ru if lang == "ru" else en
+
+    return tr
+
+
+tr = lookup(WORDS)
