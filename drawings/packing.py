@@ -29,14 +29,23 @@ MIN_BAND = 40.0
 FRACTIONS = (1.0, 0.9, 0.8, 0.75, 2 / 3, 0.6, 0.55, 0.5, 0.45, 0.4, 0.35, 1 / 3, 0.3, 0.25)
 
 
+def _unique(a: np.ndarray) -> np.ndarray:
+    """The distinct values of ``a`` in order: ``np.unique``'s own sort and comparison,
+    without the import of numpy.ma that ``np.unique`` costs."""
+    a = np.sort(a)
+    keep = np.ones(a.shape, dtype=bool)
+    keep[1:] = a[1:] != a[:-1]
+    return a[keep]
+
+
 def free_spots(gap: float) -> Spots:
     """The free top-left corners of a w × h box among ``taken`` (k×2, may be empty): where
     the box touches the area's edges or sits ``gap`` from a box already there."""
 
     def spots(w: float, h: float, area: Box, taken: Sequence[Box]) -> np.ndarray:
         T = np.asarray(taken, dtype=float).reshape(-1, 4)
-        xs = np.unique(np.concatenate([[area[0], area[2] - w], T[:, 2] + gap, T[:, 0] - gap - w]))
-        ys = np.unique(np.concatenate([[area[1], area[3] - h], T[:, 3] + gap, T[:, 1] - gap - h]))
+        xs = _unique(np.concatenate([[area[0], area[2] - w], T[:, 2] + gap, T[:, 0] - gap - w]))
+        ys = _unique(np.concatenate([[area[1], area[3] - h], T[:, 3] + gap, T[:, 1] - gap - h]))
         xs = xs[(xs >= area[0] - 1e-9) & (xs + w <= area[2] + 1e-9)]
         ys = ys[(ys >= area[1] - 1e-9) & (ys + h <= area[3] + 1e-9)]
         if not len(xs) or not len(ys):

@@ -7,14 +7,16 @@ textbook's Russian terms and units; F_bal and M_bal become F_ур and M_ур).  
 itself be a phrase, or a list of phrases written one after another.
 
 Format specifications are Python's, plus ``num``: zero up to round-off is 0, else six
-significant digits (how the force protocol prints a value).
+significant digits (how the force protocol prints a value).  A field is a plain name with
+an optional specification (no conversions, no nested fields): each sentence is parsed once
+and then written by joining its pieces, which a table of hundreds of steps feels.
 """
 
 from __future__ import annotations
 
 import re
-import string
-from collections.abc import Mapping, Sequence
+from _string import formatter_parser  # the parser of str.format and string.Formatter
+from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
@@ -204,8 +206,18 @@ class Phrase:
         self.key, self.args = key, dict(args)
 
     def say(self, lang: str = "en") -> str:
-        text = _Writer(lang).vformat(PHRASES[self.key][1 if lang == "ru" else 0], (), self.args)
-        return _BAL.sub(r"\1_ур", text) if lang == "ru" else text
+        ru = lang == "ru"
+        args = self.args
+        out = []
+        for literal, name, spec in _pieces(self.key, ru):
+            out.append(literal)
+            if name is not None:
+                value = args[name]
+                if ru and name.startswith("unit") and isinstance(value, str):
+                    value = UNITS_RU.get(value, value)
+                out.append(_field(value, spec, lang))
+        text = "".join(out)
+        return _BAL.sub(r"\1_ур", text) if ru else text
 
     def __str__(self) -> str:
         return self.say("en")
@@ -227,24 +239,32 @@ def number(x: Any, spec: str = "", lang: str = "en") -> str:
     return s.replace(".", ",") if lang == "ru" else s
 
 
-class _Writer(string.Formatter):
-    def __init__(self, lang: str) -> None:
-        self.lang = lang
+#: (key, Russian?) -> the sentence's pieces: (text before a field, the field's name or None, its spec)
+_PIECES: dict[tuple[str, bool], list[tuple[str, str | None, str]]] = {}
 
-    def get_value(self, key: int | str, args: Sequence[Any], kwargs: Mapping[str, Any]) -> Any:
-        value = kwargs[str(key)]
-        if self.lang == "ru" and str(key).startswith("unit") and isinstance(value, str):
-            return UNITS_RU.get(value, value)
-        return value
 
-    def format_field(self, value: Any, format_spec: str) -> str:
-        if isinstance(value, Phrase):
-            return value.say(self.lang)
-        if isinstance(value, list | tuple):
-            return " ".join(self.format_field(v, format_spec) for v in value)
-        if isinstance(value, float | int | np.floating | np.integer) and not isinstance(value, bool):
-            return number(value, format_spec, self.lang)
-        return format(value, format_spec)
+def _pieces(key: str, ru: bool) -> list[tuple[str, str | None, str]]:
+    got = _PIECES.get((key, ru))
+    if got is None:
+        got = []
+        for literal, name, spec, conversion in formatter_parser(PHRASES[key][1 if ru else 0]):
+            if name is not None and (conversion or not name.isidentifier() or "{" in (spec or "")):
+                raise ValueError(f"phrase {key!r}: field {{{name}}} is not a plain name with a format spec")
+            got.append((literal, name, spec or ""))
+        _PIECES[(key, ru)] = got
+    return got
+
+
+def _field(value: Any, spec: str, lang: str) -> str:
+    """One field written: a phrase in the same language, a list of them one after another,
+    a number as :func:`number` writes it, anything else by ``format``."""
+    if isinstance(value, Phrase):
+        return value.say(lang)
+    if isinstance(value, list | tuple):
+        return " ".join(_field(v, spec, lang) for v in value)
+    if isinstance(value, float | int | np.floating | np.integer) and not isinstance(value, bool):
+        return number(value, spec, lang)
+    return format(value, spec)
 
 
 __all__ = ["LANGUAGES", "PHRASES", "UNITS_RU", "Phrase", "number", "phrase"]

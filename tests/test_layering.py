@@ -51,6 +51,30 @@ def test_solve_runs_without_the_renderer():
     assert "p_v" in got.stdout or "v_" in got.stdout
 
 
+def test_plans_solve_of_every_linkage_sample_loads_no_shapely_and_no_renderer():
+    """``plans solve`` as the installed console command runs it (drawings.console), each
+    linkage sample with its table: the force polygons close in closed form, so neither
+    shapely nor the renderer's libraries nor the sheets are ever loaded."""
+    got = _run("import contextlib, io, sys\n"
+               "from pathlib import Path\n"
+               "from drawings.console import main\n"
+               "from plans.kinds import read_kind\n"
+               "for path in sorted(Path('samples').glob('*.toml')):\n"
+               "    if read_kind(path)[0] != 'linkage':\n"
+               "        continue\n"
+               "    sys.argv = ['plans', 'solve', str(path)]\n"
+               "    out = io.StringIO()\n"
+               "    with contextlib.redirect_stdout(out):\n"
+               "        assert main() == 0, path\n"
+               "    assert 'phi = ' in out.getvalue(), path\n"
+               "    loaded = [m for m in ('shapely', 'svgwrite', 'cairosvg', 'drawings.sheet') if m in sys.modules]\n"
+               "    print(path.name, 'loaded:', loaded)\n")
+    assert got.returncode == 0, got.stderr
+    lines = got.stdout.splitlines()
+    assert len(lines) >= 8 and any(line.startswith("v_engine.toml") for line in lines), got.stdout
+    assert all(line.endswith("loaded: []") for line in lines), got.stdout
+
+
 def test_plans_of_every_position_need_no_shapely():
     got = _run("import sys\n"
                "from plans.scene.model import load_scene\n"

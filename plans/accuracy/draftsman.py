@@ -11,7 +11,8 @@ import numpy as np
 from plans.accuracy.oracles import norms
 from plans.kinematics import exact as kinematics
 from plans.kinematics.construction import nice_scale
-from plans.kinematics.dyads import Builder, Scheme, cross, plans_of, unit
+from plans.kinematics.dyads import Builder, Scheme, plans_of, unit
+from plans.lines import meet
 from plans.scene.model import Scene
 
 if TYPE_CHECKING:  # mpmath is an optional dependency (the ``bench`` extra): imported where used
@@ -88,8 +89,7 @@ class NoisyPencil:
     def cut(self, b: Builder, l1: Any, l2: Any, out: str, exact_xy: Any, group: Any, point: str) -> np.ndarray:
         """Two drawn lines intersected, the point marked."""
         (p1, d1), (p2, d2) = l1, l2
-        t = cross(p2 - p1, d2) / cross(d1, d2)
-        return self.mark(p1 + t * d1)
+        return self.mark(meet(p1, d1, p2, d2))
 
 
 def draftsman_errors(scene: Scene, phi_deg: float, sheet: str | float = "A1",

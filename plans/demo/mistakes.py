@@ -14,6 +14,7 @@ from dataclasses import replace
 from typing import Any
 
 from plans.kinematics.exact import solve
+from plans.lines import cross, meet
 from plans.phrases import Phrase, phrase
 from plans.results import Solution
 
@@ -29,11 +30,10 @@ def page_xy(z: complex) -> list[float]:
 
 def _meet(p1: complex, d1: complex, p2: complex, d2: complex) -> complex | None:
     """Intersection of two lines (point, direction); None when they are parallel."""
-    den = (d1.conjugate() * d2).imag
+    den = cross(d1, d2)
     if abs(den) < 1e-12 * abs(d1) * abs(d2):
         return None
-    t = ((p2 - p1).conjugate() * d2).imag / den
-    return p1 + t * d1
+    return meet(p1, d1, p2, d2, den)
 
 
 def _pct(wrong: float, right: float) -> Phrase:

@@ -18,7 +18,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from plans.forces.loads import AppliedMoment
-from plans.forces.polygons import ForceAnalysis, force_polygons
+from plans.forces.polygons import ForceAnalysis, ForcePolygon, force_polygons
 from plans.forces.shared import RULER_MM, mu_force, nice_scale, safe_div, unit_vector
 from plans.kinematics.exact import cross
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step
@@ -339,14 +339,15 @@ class Reading:
                 f"{clean(self.exact, scale):.6g} {self.unit}", diff)
 
 
-def force_rows(lv: LeverAnalysis, k: int) -> list[Reading]:
+def force_rows(lv: LeverAnalysis, k: int, polygons: tuple[ForcePolygon, ...] | None = None) -> list[Reading]:
     """Readable rows of position k: every polygon vector (read at μF to the ruler), the lever's
-    arms, and the balancing load three ways with the coursework's % difference."""
+    arms, and the balancing load three ways with the coursework's % difference.  ``polygons``:
+    the position's force polygons when the caller has built them already."""
     fa = lv.fa
     rows: list[Reading] = []
     big = max([abs(complex(f.F[k])) for f in fa.applied.forces]
               + [abs(complex(rc.F[k])) for rc in fa.reactions()] + [1e-300])
-    for fp in force_polygons(fa, k):
+    for fp in force_polygons(fa, k) if polygons is None else polygons:
         ref = max((sg.value for sg in fp.plan.segments), default=0.0)
         for sg in fp.plan.segments:
             exact = clean(sg.value, big)  # rounding noise of a vanishing force
@@ -388,11 +389,12 @@ def table_lines(fa: ForceAnalysis, lv: LeverAnalysis, k: int) -> list[str]:
     unit = "N" if fa.crank.kind == "force" else "N·m"
     lines = [f"  force analysis (F_ij = force {'on link i from link j' if fa.scene.fij == 'on_i_from_j' else 'of link i on link j'}), "
              f"lever turned 90° {'ccw' if lv.turn > 0 else 'cw'}, μv = {lv.scale:g} mm/(m/s)"]
-    for fp in force_polygons(fa, k):
+    polygons = force_polygons(fa, k)
+    for fp in polygons:
         for note in fp.plan.degenerate:
             lines.append(f"    note (polygon {fp.group}): {note}")
     lines.append(f"  {'quantity':58s} {'drawing':>14s} {'exact':>16s} {'difference':>11s}")
-    for r in force_rows(lv, k):
+    for r in force_rows(lv, k, polygons):
         q, d, e, diff = r.cells()
         lines.append(f"  {q:58s} {d:>14s} {e:>16s} {diff:>11s}")
     b = lv.signed(lv.by_lever)[k] if lv.valid[k] else None

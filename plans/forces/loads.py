@@ -413,8 +413,11 @@ def _stroke(scene: Scene, joint_name: str, link: int) -> tuple[float, float]:
         # every tenth grid angle first, then the grid around the coarse extremes only
         coarse = np.arange(0, 3601, 10)
         t = _travel(scene, solve(scene, grid[coarse], order=0), joint_name, link)
-        near = np.unique(np.concatenate([(coarse[k] + np.arange(-10, 11)) % 3600 for k in
-                                         _extreme_indices(t)] + [np.array([0, 3600])]))
+        keep = np.zeros(3601, dtype=bool)  # the grid around the extremes, each index once, in order
+        keep[[0, 3600]] = True
+        for k in _extreme_indices(t):
+            keep[(coarse[k] + np.arange(-10, 11)) % 3600] = True
+        near = np.flatnonzero(keep)
         kin = solve(scene, grid[near], order=0)
     except ConstructionError as exc:
         raise InputError(f"an indicator diagram needs the crank to turn a full revolution ({exc})",

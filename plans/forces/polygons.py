@@ -52,6 +52,7 @@ from plans.forces.shared import RULER_MM, mu_force, safe_div, unit_vector
 from plans.kinematics.exact import Kinematics, cross
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step
 from plans.kinematics.structure import Group
+from plans.lines import along, meet
 from plans.phrases import Phrase, phrase
 from plans.scene.model import Joint, Scene
 from plans.units import clean
@@ -442,6 +443,20 @@ class ForcePolygon:
         return round(self.plan.segment(label).length_mm / RULER_MM) * RULER_MM / self.plan.scale
 
 
+def closing_point(e: complex, d_end: complex, s: complex, d_start: complex, reach: float) -> complex | None:
+    """Where the construction line through ``e`` along ``d_end`` meets the one through ``s``
+    along ``d_start``, each drawn ``reach`` (in units of its direction) either side of its
+    point; None where the drawn lines do not cross in one point (parallel, or so nearly
+    that they would meet beyond them): then the polygon's two closing reactions lie on
+    one line."""
+    if cross(d_end, d_start) == 0:
+        return None
+    t_e, t_s = along(e, d_end, s, d_start)
+    if not (abs(t_e) <= reach and abs(t_s) <= reach):
+        return None
+    return complex(meet(e, d_end, s, d_start))
+
+
 class _Poly:
     """Head-to-tail construction at one position, in plan mm."""
 
@@ -482,18 +497,12 @@ class _Poly:
     def intersect(self, label_end: str, d_end: complex, label_start: str, d_start: complex,
                   start: str = "o") -> str:
         """Close with two known directions: through the current end along d_end, through
-        ``start`` along d_start; shapely intersects the two construction lines."""
-        import shapely  # only when a polygon is closed: ``plans solve`` starts without it
-
+        ``start`` along d_start; the two construction lines intersected."""
         e, s = self.pts[self.cur], self.pts[start]
         reach = 10.0 * (max(abs(z) for z in self.pts.values()) + 100.0)
-        le = shapely.LineString([((e - reach * d_end).real, (e - reach * d_end).imag),
-                                 ((e + reach * d_end).real, (e + reach * d_end).imag)])
-        ls = shapely.LineString([((s - reach * d_start).real, (s - reach * d_start).imag),
-                                 ((s + reach * d_start).real, (s + reach * d_start).imag)])
-        hit = le.intersection(ls)
-        if isinstance(hit, shapely.Point) and not hit.is_empty:
-            x = complex(hit.x, hit.y)
+        hit = closing_point(e, d_end, s, d_start, reach)
+        if hit is not None:
+            x = hit
         else:  # coincident lines: the exact analysis already refused locked groups, so the
             x = s  # closing vectors vanish here (the known ones sum to zero along the line)
             self.notes.append(f"{label_end} and {label_start} lie on one line")

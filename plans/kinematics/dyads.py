@@ -36,6 +36,7 @@ from plans.errors import Locked
 from plans.kinematics.exact import Kinematics
 from plans.kinematics.plan import Step
 from plans.kinematics.structure import Group
+from plans.lines import meet as intersection
 from plans.phrases import Phrase, phrase
 from plans.scene.model import Joint
 from plans.tolerances import COINCIDE_REL, LOCK_SIN, NEAR_PARALLEL_SIN
@@ -158,9 +159,8 @@ class PerfectPencil:
                              group=f"{group.kind} {group.name}", point=point, phi_deg=float(b.snap.phi[k]))
             b.degenerate.append((out, near, np.abs(s)))
         if not near.any():
-            return p1 + cross(p2 - p1, d2) / s * d1
-        t = cross(p2 - p1, d2) / np.where(near, 1.0, s)
-        return np.where(near, exact_xy, p1 + t * d1)
+            return intersection(p1, d1, p2, d2, s)
+        return np.where(near, exact_xy, intersection(p1, d1, p2, d2, np.where(near, 1.0, s)))
 
 
 class Mixed(Exception):

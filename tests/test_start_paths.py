@@ -1,0 +1,166 @@
+"""What makes ``plans solve`` start and finish fast changes no reading: the closed-form
+intersection that closes a force polygon is shapely's (the independent oracle here) to the
+rounding of the drawn lines, with the same answer where the lines are (nearly) parallel;
+the polygons of every sample at every position are the ones shapely closes; the protocol's
+sentences are the ones Python's own ``string.Formatter`` writes, in both languages."""
+
+from __future__ import annotations
+
+import cmath
+import math
+import re
+import string
+from pathlib import Path
+
+import numpy as np
+import pytest
+import shapely
+
+from plans.forces import polygons
+from plans.forces.analysis import kinetostatics
+from plans.kinematics.exact import solve
+from plans.lines import along, cross, meet
+from plans.phrases import PHRASES, UNITS_RU, Phrase, number, phrase
+from plans.scene.model import load_scene
+
+SAMPLES = sorted((Path(__file__).resolve().parent.parent / "samples").glob("*.toml"))
+
+
+def _segment(p: complex, d: complex, reach: float) -> shapely.LineString:
+    a, b = p - reach * d, p + reach * d
+    return shapely.LineString([(a.real, a.imag), (b.real, b.imag)])
+
+
+def shapely_closing(e: complex, d_end: complex, s: complex, d_start: complex, reach: float) -> complex | None:
+    """The two construction lines drawn as segments ``reach`` either side of their points and
+    intersected by shapely; None where they do not cross in one point."""
+    hit = _segment(e, d_end, reach).intersection(_segment(s, d_start, reach))
+    if isinstance(hit, shapely.Point) and not hit.is_empty:
+        return complex(hit.x, hit.y)
+    return None
+
+
+def _lines(rng: np.random.Generator, n: int, near: bool) -> list[tuple[complex, complex, complex, complex, float]]:
+    """Random construction lines in plan mm: any two, or two nearly parallel (1e-12..1e-2 rad)
+    with the second point close to the first line, so that they still meet on the sheet."""
+    out = []
+    for _ in range(n):
+        e = complex(*rng.uniform(-150.0, 150.0, 2))
+        a = rng.uniform(0.0, 2 * math.pi)
+        d_end = cmath.exp(1j * a)
+        if near:
+            s = e + rng.uniform(-100.0, 100.0) * d_end + 1j * d_end * 10 ** rng.uniform(-10.0, 1.0)
+            d_start = cmath.exp(1j * (a + rng.choice([0.0, math.pi]) + rng.choice([-1.0, 1.0])
+                                      * 10 ** rng.uniform(-12.0, -2.0)))
+        else:
+            s = complex(*rng.uniform(-150.0, 150.0, 2))
+            d_start = cmath.exp(1j * rng.uniform(0.0, 2 * math.pi))
+        out.append((e, d_end, s, d_start, 10.0 * (max(abs(e), abs(s)) + 100.0)))
+    return out
+
+
+@pytest.mark.parametrize("near", [False, True], ids=["random", "nearly parallel"])
+def test_closing_point_is_shapelys_intersection(near):
+    met = 0
+    for e, d_end, s, d_start, reach in _lines(np.random.default_rng(7 + near), 3000, near):
+        ours, theirs = polygons.closing_point(e, d_end, s, d_start, reach), shapely_closing(e, d_end, s, d_start, reach)
+        assert (ours is None) == (theirs is None), (e, d_end, s, d_start)
+        if ours is None or theirs is None:
+            continue
+        met += 1
+        # shapely intersects the segments' rounded ends (|end| ~ reach): that rounding moves
+        # the point by ~1e-16·reach/sin(angle between the lines), no more
+        sin = abs(cross(d_end, d_start))
+        assert abs(ours - theirs) <= 1e-12 * reach * (1.0 if not near else 1e-3 / sin), (e, d_end, s, d_start)
+    assert met > 1000  # most pairs do meet on the sheet
+
+
+def test_parallel_and_coincident_lines_do_not_meet_in_a_point():
+    d = cmath.exp(0.3j)
+    for e, s, d2 in ((0j, 5j * d, d), (0j, 40 * d, d), (0j, 40 * d, -d), (1 + 1j, 1 + 1j + 1e-3j * d, d),
+                     (0j, 10 * d + 1j * d, d * cmath.exp(1e-9j))):  # the last meets far beyond the drawn lines
+        assert polygons.closing_point(e, d, s, d2, 1000.0) is None
+        assert shapely_closing(e, d, s, d2, 1000.0) is None
+
+
+def test_meet_over_arrays_is_shapelys_intersection():
+    rng = np.random.default_rng(3)
+    n = 200
+    p1, p2 = (rng.uniform(-1, 1, n) + 1j * rng.uniform(-1, 1, n) for _ in range(2))
+    d1, d2 = (np.exp(1j * rng.uniform(0, 2 * math.pi, n)) for _ in range(2))
+    t1, t2 = along(p1, d1, p2, d2)
+    x = meet(p1, d1, p2, d2)
+    assert np.allclose(p1 + t1 * d1, p2 + t2 * d2, rtol=0, atol=1e-9 * np.max(np.abs(x)))
+    for k in range(n):
+        if abs(cross(d1[k], d2[k])) < 1e-3:
+            continue
+        reach = 2.0 * (abs(x[k]) + 2.0)
+        hit = shapely_closing(complex(p1[k]), complex(d1[k]), complex(p2[k]), complex(d2[k]), reach)
+        assert hit is not None and abs(hit - x[k]) <= 1e-12 * reach
+
+
+@pytest.mark.parametrize("path", SAMPLES, ids=[p.stem for p in SAMPLES])
+def test_every_force_polygon_closes_where_shapely_closes_it(path, monkeypatch):
+    """Every polygon of every position: the same vertices (to the rounding of the drawn lines),
+    the same notes, the same vectors read off to the ruler."""
+    scene = load_scene(path)
+    if not scene.wants("force_polygons"):
+        pytest.skip("no force polygons asked for")
+    fa, _ = kinetostatics(scene, solve(scene))
+    ours = [polygons.force_polygons(fa, k) for k in range(fa.n)]
+    monkeypatch.setattr(polygons, "closing_point", shapely_closing)
+    theirs = [polygons.force_polygons(fa, k) for k in range(fa.n)]
+    for a_k, b_k in zip(ours, theirs, strict=True):
+        for a, b in zip(a_k, b_k, strict=True):
+            assert a.plan.degenerate == b.plan.degenerate
+            assert [p.name for p in a.plan.points] == [p.name for p in b.plan.points]
+            size = max(a.plan.extent, 1.0)
+            for p, q in zip(a.plan.points, b.plan.points, strict=True):
+                assert abs(complex(*p.xy) - complex(*q.xy)) <= 1e-12 * size
+            assert [a.reading(s.label) for s in a.plan.segments] == [b.reading(s.label) for s in b.plan.segments]
+            assert [s.text for s in a.plan.steps] == [s.text for s in b.plan.steps]
+
+
+class _Formatter(string.Formatter):
+    """A phrase written by Python's own formatter: units and decimal comma in Russian, a
+    phrase inside a phrase in the same language, a list of values one after another."""
+
+    def __init__(self, lang: str) -> None:
+        self.lang = lang
+
+    def get_value(self, key, args, kwargs):
+        value = kwargs[str(key)]
+        if self.lang == "ru" and str(key).startswith("unit") and isinstance(value, str):
+            return UNITS_RU.get(value, value)
+        return value
+
+    def format_field(self, value, format_spec):
+        if isinstance(value, Phrase):
+            return value.say(self.lang)
+        if isinstance(value, list | tuple):
+            return " ".join(self.format_field(v, format_spec) for v in value)
+        if isinstance(value, float | int | np.floating | np.integer) and not isinstance(value, bool):
+            return number(value, format_spec, self.lang)
+        return format(value, format_spec)
+
+
+def _written(p: Phrase, lang: str) -> str:
+    text = _Formatter(lang).vformat(PHRASES[p.key][1 if lang == "ru" else 0], (), p.args)
+    return re.sub(r"\b([FM])_bal\b", r"\1_ур", text) if lang == "ru" else text
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_every_phrase_is_written_as_pythons_formatter_writes_it(lang):
+    rng = np.random.default_rng(11)
+    values = [0.0, -0.0, 1e-13, 12.5, -3.25e-7, 123456.789, np.float64(2.5e5), np.int64(7), 3, "m/s", "N·m",
+              "F_bal", phrase("ccw"), [phrase("m_zero"), phrase("l_arm", a=1.5)]]
+    for key, (en, ru) in PHRASES.items():
+        names = {name for _, name, _, _ in string.Formatter().parse(en + ru) if name}
+        for trial in range(6):
+            args = {}
+            for name in names:
+                spec_numeric = any(name == nm and spec for _, nm, spec, _ in string.Formatter().parse(en + ru))
+                pool = [v for v in values if not isinstance(v, str | Phrase | list)] if spec_numeric else values
+                args[name] = pool[int(rng.integers(len(pool)))] if trial else float(rng.normal() * 100)
+            p = phrase(key, **args)
+            assert p.say(lang) == _written(p, lang), (key, args)
