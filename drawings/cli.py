@@ -6,19 +6,18 @@ from __future__ import annotations
 import argparse
 import importlib
 from collections.abc import Sequence
-from pathlib import Path
 
 from plans.cli import command_of, register_commands
 from plans.cli import main as plans_main
 from plans.errors import InputError
-
-from .export import FORMATS
 
 #: Commands that need the renderer, listed without importing them (see plans.cli).
 _DRAWING_NAMES = {"drawings.demo": ("demo", "a step-by-step demonstration page of a scene's analysis")}
 
 
 def _formats(text: str) -> list[str]:
+    from .export import FORMATS  # the renderer is loaded by ``draw`` alone
+
     out = [f.strip().lower() for f in text.split(",") if f.strip()]
     bad = [f for f in out if f not in FORMATS]
     if bad or not out:
@@ -44,6 +43,8 @@ def add_draw(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
 def draw_command(args: argparse.Namespace) -> int:
     """``plans draw``: build the sheets of any file of the family (linkage scene, engine,
     gears, cam: dispatched on its ``kind``), write them atomically, list what was written."""
+
+    from pathlib import Path
 
     from plans.kinds import KINDS, read_kind
     from plans.progress import Progress

@@ -9,7 +9,7 @@ import importlib.util
 import os
 import sys
 from collections.abc import Callable, Sequence
-from typing import NoReturn
+from typing import Any, NoReturn
 
 from plans.errors import InputError, PlansError, one_line
 
@@ -22,6 +22,9 @@ _COMMAND_MODULES = ("plans.check.report", "plans.accuracy.bench", "plans.balanci
 _COMMAND_NAMES = {
     "plans.check.report": ("check", "check a hand-drawn sheet (or a folder of them) against the exact analysis"),
     "plans.accuracy.bench": ("bench", "error against run time of every method; stability; hand-drawing error"),
+    "plans.balancing.cli": ("balance", "engine balancing: force and moment polygons, counterweights"),
+    "plans.gears.cli": ("gears", "involute gears and trains: geometry, checks, speeds (JSON)"),
+    "plans.cams.cli": ("cam", "a cam: motion laws, base radius, profile by inversion (JSON)"),
 }
 
 
@@ -30,8 +33,40 @@ def command_of(argv: Sequence[str] | None) -> str | None:
     return next((a for a in argv if not a.startswith("-")), None) if argv is not None else None
 
 
+def _columns() -> int:
+    """The terminal's width as ``shutil.get_terminal_size().columns`` gives it: $COLUMNS,
+    else the terminal's own, else 80."""
+    try:
+        columns = int(os.environ["COLUMNS"])
+    except (KeyError, ValueError):
+        columns = 0
+    if columns <= 0:
+        try:
+            columns = os.get_terminal_size(sys.__stdout__.fileno()).columns  # type: ignore[union-attr]
+        except (AttributeError, ValueError, OSError):
+            columns = 0
+        columns = columns or 80
+    return columns
+
+
+class Formatter(argparse.HelpFormatter):
+    """argparse's help formatter at the width it would pick itself, found without importing
+    shutil (and the compression modules it loads): argparse makes a formatter for every
+    option it adds, so every command would pay for them."""
+
+    def __init__(self, prog: str, *args: Any, **kwargs: Any) -> None:
+        if len(args) < 3 and kwargs.get("width") is None:
+            kwargs["width"] = _columns() - 2
+        super().__init__(prog, *args, **kwargs)
+
+
 class Parser(argparse.ArgumentParser):
-    """argparse with every usage error as one line, like every other error of ``plans``."""
+    """argparse with every usage error as one line, like every other error of ``plans``;
+    its subcommands' parsers are of this class too (argparse makes them so)."""
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        kwargs.setdefault("formatter_class", Formatter)
+        super().__init__(*args, **kwargs)
 
     def error(self, message: str) -> NoReturn:
         self.exit(2, f"plans: error: {self.prog.split(' ', 1)[-1] + ': ' if ' ' in self.prog else ''}"

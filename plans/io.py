@@ -7,10 +7,12 @@ import os
 import tomllib
 from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
-from pathlib import Path
-from typing import Any, BinaryIO
+from typing import TYPE_CHECKING, Any, BinaryIO
 
 from plans.errors import InputError, OutputError
+
+if TYPE_CHECKING:  # pathlib is loaded where a file is written: reading a scene does without it
+    from pathlib import Path
 
 
 def atomic_write(path: str | Path, data: bytes | str) -> None:
@@ -25,6 +27,8 @@ def atomic_write(path: str | Path, data: bytes | str) -> None:
 def atomic_file(path: str | Path) -> Iterator[BinaryIO]:
     """A binary file to write in pieces, renamed over ``path`` only when the block ends
     without an error; otherwise nothing is left behind (an OSError is one OutputError line)."""
+    from pathlib import Path
+
     target = Path(path)
     folder = target.parent
     try:
@@ -86,6 +90,8 @@ def refuse_input(output: str | Path | None, *inputs: str | Path | None) -> None:
     """An output path that names one of the inputs is refused before anything is written."""
     if output is None or str(output) == "-":
         return
+    from pathlib import Path
+
     out = Path(output)
     for src in inputs:
         if src is None:
@@ -109,7 +115,8 @@ def dumps(data: Any) -> str:
 def read_toml(path: str | Path) -> dict[str, Any]:
     """A TOML file as a dict; an unreadable or malformed file is one InputError line."""
     try:
-        raw = Path(path).read_bytes()
+        with open(path, "rb") as fh:
+            raw = fh.read()
     except OSError as exc:
         raise InputError(f"cannot read file ({exc.strerror})", file=str(path)) from None
     try:

@@ -11,20 +11,19 @@ value).  Keys appear only for what the scene asked for.
 
 from __future__ import annotations
 
-import json
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
 from typing import Any
 
 from plans.errors import ConstructionError
 from plans.kinematics.construction import PositionPlans, build_all
 from plans.kinematics.exact import Kinematics, solve
 from plans.kinematics.structure import Structure, analyse
+from plans.records import frozen
 from plans.scene.model import Scene
 from plans.tolerances import ILL_CONDITIONED
 
 
-@dataclass(frozen=True)
+@frozen(slots=False)
 class Solution:
     """Everything computed for a scene: only what its outputs ask for."""
 
@@ -148,6 +147,8 @@ def write_json(sol: Solution, write: Callable[[str], object]) -> None:
     """Write ``dumps(to_json(sol))`` in pieces, one position at a time: the text is the same
     to the byte, and memory holds one position's JSON, not the whole run's (3600 positions
     of a V-engine are over 100 MB of text)."""
+    import json
+
     from plans.io import dumps
 
     before, after = dumps(_head(sol)).split(json.dumps(_POSITIONS))

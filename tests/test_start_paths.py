@@ -164,3 +164,65 @@ def test_every_phrase_is_written_as_pythons_formatter_writes_it(lang):
                 args[name] = pool[int(rng.integers(len(pool)))] if trial else float(rng.normal() * 100)
             p = phrase(key, **args)
             assert p.say(lang) == _written(p, lang), (key, args)
+
+
+def _records():
+    import plans.cycle.results  # noqa: F401  (every module whose classes are records)
+    import plans.forces.protocol  # noqa: F401
+    import plans.results  # noqa: F401
+    from plans.records import MADE
+
+    return list(MADE)
+
+
+def _twin(cls):
+    """The same class made by dataclass itself, the reference."""
+    import dataclasses
+
+    spec = [(f.name, f.type, dataclasses.field(default=f.default, default_factory=f.default_factory, init=f.init,
+                                              repr=f.repr, hash=f.hash, compare=f.compare))
+            for f in dataclasses.fields(cls)]
+    ns = {"__post_init__": cls.__post_init__} if hasattr(cls, "__post_init__") else {}
+    twin = dataclasses.make_dataclass(cls.__name__, spec, namespace=ns, frozen=True, slots=hasattr(cls, "__slots__"))
+    twin.__qualname__ = cls.__qualname__
+    return twin
+
+
+def _hash(x):
+    try:
+        return hash(x)
+    except TypeError as exc:  # a field that is a dict or a list: unhashable, as with dataclass
+        return str(exc)
+
+
+@pytest.mark.parametrize("cls", _records(), ids=lambda c: f"{c.__module__}.{c.__name__}")
+def test_every_record_behaves_as_dataclass_makes_it(cls):
+    import copy
+    import dataclasses
+    import inspect
+    import pickle
+
+    twin = _twin(cls)
+    assert len(_records()) >= 30
+    assert str(inspect.signature(cls)) == str(inspect.signature(twin))
+    assert hasattr(cls, "__slots__") == hasattr(twin, "__slots__")
+    assert cls.__match_args__ == twin.__match_args__
+    fs = [f for f in dataclasses.fields(cls) if f.init]
+    required = [f for f in fs if f.default is dataclasses.MISSING and f.default_factory is dataclasses.MISSING]
+    args = {f.name: (k, k + 1) for k, f in enumerate(required)}
+    a, b = cls(**args), twin(**args)
+    assert repr(a) == repr(b) and a == cls(**args) and _hash(a) == _hash(cls(**args)) == _hash(b)
+    for f in dataclasses.fields(cls):
+        assert getattr(a, f.name) == getattr(b, f.name)
+        with pytest.raises(dataclasses.FrozenInstanceError):
+            setattr(a, f.name, 1)
+        with pytest.raises(dataclasses.FrozenInstanceError):
+            delattr(a, f.name)
+    for f in fs:  # one field changed: equal, hashed and shown as the twin has it
+        changed = {**args, f.name: (-2, -1)}
+        x, y = cls(**changed), twin(**changed)
+        assert (x == a) == (y == b) and (_hash(x) == _hash(a)) == (_hash(y) == _hash(b)) and repr(x) == repr(y)
+        assert dataclasses.replace(a, **{f.name: (-2, -1)}) == x
+    assert a != b and a.__eq__(b) is NotImplemented  # another class, as between two dataclasses
+    assert pickle.loads(pickle.dumps(a)) == a and copy.deepcopy(a) == a and copy.copy(a) == a
+    assert dataclasses.asdict(a) == dataclasses.asdict(b)

@@ -2,11 +2,11 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from plans.records import frozen
 from plans.scene.model import Scene
 
 from .table import CycleTable, csv_text, plan_table, position_table, text
@@ -16,7 +16,7 @@ if TYPE_CHECKING:  # loaded when a scene asks for them: a linkage's solve does n
     from .dynamics import Dynamics
 
 
-@dataclass(frozen=True)
+@frozen(slots=False)
 class CycleResult:
     tables: tuple[CycleTable, ...]
     dynamics: Dynamics | None

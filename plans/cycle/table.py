@@ -12,13 +12,14 @@ import csv
 import io
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
+from plans.records import frozen
 
-@dataclass(frozen=True, slots=True)
+
+@frozen
 class TableRow:
     key: str  # machine name: "v_B", "v_B:mm", "I_pr", ...
     label: str  # as printed: "p_v b", "v_B", "m_2 (v_S2/ω_1)^2"
@@ -26,7 +27,7 @@ class TableRow:
     values: tuple[float | None, ...]  # one per position (None: not at this position)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class CycleTable:
     title: str
     phi_deg: tuple[float, ...]

@@ -11,7 +11,6 @@ force ⟂ crank at its point follows from the moment sum about the pole.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -24,13 +23,14 @@ from plans.kinematics.exact import cross
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step
 from plans.kinematics.scales import round_scale
 from plans.phrases import phrase
+from plans.records import frozen
 from plans.units import clean, percent
 
 C = NDArray[np.complex128]
 R = NDArray[np.float64]
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class LeverForce:
     """A force on the lever: ``F`` (N) at the image ``w`` (plan mm) of its point."""
 
@@ -43,7 +43,7 @@ class LeverForce:
     arm: R  # |moment| / |F|, mm (0 for a zero force)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class LeverAnalysis:
     fa: ForceAnalysis
     scale: float  # μv of the plan, mm per m/s
@@ -308,7 +308,7 @@ def _drawn_balancing(lv: LeverAnalysis, k: int) -> tuple[float, float]:
     return lev, kin_read
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class Reading:
     """One row of the report: a quantity as read on the drawing next to its exact value."""
 

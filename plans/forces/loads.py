@@ -58,7 +58,6 @@ positive.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -67,6 +66,7 @@ from numpy.typing import NDArray
 from plans.errors import ConstructionError, InputError
 from plans.forces.shared import unit_vector
 from plans.reader import Reader, check_keys, did_you_mean
+from plans.records import frozen
 from plans.scene.model import Scene
 from plans.units import DUST, LENGTH_UNITS
 
@@ -78,7 +78,7 @@ AREA_UNITS = {"m2": 1.0, "cm2": 1e-4, "mm2": 1e-6}
 G_STANDARD = 9.81  # the textbooks' g
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class GasLoad:
     link: int
     joint: str  # the prismatic joint the piston slides in
@@ -92,7 +92,7 @@ class GasLoad:
     stroke: float = 0.0  # H, m (diagram only)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class ForceLoad:
     link: int
     point: str
@@ -103,7 +103,7 @@ class ForceLoad:
     name: str
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class MomentLoad:
     link: int
     value: float | None
@@ -111,13 +111,13 @@ class MomentLoad:
     name: str
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class Balancing:
     kind: str  # "force" | "moment"
     point: str  # on the driving link
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class Loads:
     """Everything the force analysis needs that is not geometry."""
 
@@ -458,7 +458,7 @@ def _travel(scene: Scene, kin: Any, joint_name: str, link: int) -> R:
 # --------------------------------------------------------------------------- loads at positions
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class AppliedForce:
     """A force bound to a point of a link (a sympy-style bound vector), over positions."""
 
@@ -471,7 +471,7 @@ class AppliedForce:
     kind: str  # "gravity" | "inertia" | "gas" | "external"
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class AppliedMoment:
     label: str  # "M_Phi2", "M_c4"
     link: int
@@ -479,7 +479,7 @@ class AppliedMoment:
     kind: str  # "inertia" | "external"
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class AppliedLoads:
     forces: tuple[AppliedForce, ...]
     moments: tuple[AppliedMoment, ...]

@@ -34,7 +34,7 @@ Plane vectors are complex numbers, ``cross(a, b) = Im(conj(a)·b)``.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import field
 
 import numpy as np
 from numpy.typing import NDArray
@@ -54,6 +54,7 @@ from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, St
 from plans.kinematics.structure import Group
 from plans.lines import along, meet
 from plans.phrases import Phrase, phrase
+from plans.records import frozen
 from plans.scene.model import Joint, Scene
 from plans.units import clean
 
@@ -63,7 +64,7 @@ R = NDArray[np.float64]
 # --------------------------------------------------------------------------- results
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class Reaction:
     """The reaction of one joint: force on link ``on`` from link ``frm``, over positions.
 
@@ -104,7 +105,7 @@ class Reaction:
         return safe_div(self.M, self.N)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class GroupForces:
     group: Group
     loads_i: tuple[AppliedForce, ...]  # known forces on i (reactions from farther groups included)
@@ -116,7 +117,7 @@ class GroupForces:
     arms: dict[tuple[str, str], R] = field(default_factory=dict)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class CrankForces:
     link: int
     loads: tuple[AppliedForce, ...]  # everything on the crank except the balancing load and the frame
@@ -131,7 +132,7 @@ class CrankForces:
     arms: dict[str, R] = field(default_factory=dict)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class ForceAnalysis:
     scene: Scene
     kin: Kinematics
@@ -422,7 +423,7 @@ def _crank(scene: Scene, kin: Kinematics, loads: Loads, forces, moments) -> Cran
 # --------------------------------------------------------------------------- force polygons (drawing)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class ForcePolygon:
     """The closed force polygon of one group (or of the crank) at one position.
 

@@ -10,16 +10,15 @@ equation with the arms on the turned plan.  The same steps feed ``plans solve
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from plans.forces.lever import LeverAnalysis, lever_plan
 from plans.forces.polygons import ForceAnalysis, GroupForces, force_polygons
 from plans.kinematics.exact import cross
 from plans.kinematics.plan import Plan, Step
 from plans.phrases import Phrase, phrase
+from plans.records import frozen
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class ForceStep:
     """One step of the force analysis: on which drawing (``plan``: "group 2-3", "crank",
     "lever") and the step itself (operation, inputs, output, sentence)."""

@@ -10,22 +10,23 @@ mm per SI unit (mm/(m/s), mm/(m/s²), mm/N).
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import field
 
 from plans.phrases import Phrase
+from plans.records import frozen
 
 #: Segment kinds, as the textbook distinguishes them.
 SEGMENT_KINDS = ("absolute", "relative", "normal", "tangential", "coriolis", "sliding", "force", "closing")
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class PlanPoint:
     name: str  # textbook label: "p_v", "a", "b", "s2", "a3", "n_BA", "k_A2A3"
     xy: tuple[float, float]  # plan mm
     coincides_with: str | None = None  # drawn on top of another point (e.g. b on the pole)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class Segment:
     """A vector drawn on the plan from ``start`` to ``end`` (point names)."""
 
@@ -37,7 +38,7 @@ class Segment:
     value: float  # the SI magnitude it stands for at the plan's scale (length_mm / scale)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class ConstructionLine:
     """A thin line through ``point`` along unit ``direction`` (plan mm)."""
 
@@ -46,7 +47,7 @@ class ConstructionLine:
     label: str  # "⟂ AB", "∥ guide of B"
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class Step:
     """One draftsman's step: operation, inputs, output, and a sentence for the protocol."""
 
@@ -66,7 +67,7 @@ class Step:
         return self.text if self.phrase is None or lang == "en" else self.phrase.say(lang)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class Plan:
     kind: str  # "velocity" | "acceleration" | "force" | "lever"
     phi_deg: float

@@ -8,15 +8,16 @@ p, J2 joins i to j, J3 joins j to a known link q.  Its kind is the letters of
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import field
 
 from plans.errors import InputError
+from plans.records import frozen
 from plans.scene.model import Joint, Scene
 
 KINDS = ("RRR", "RRP", "RPR", "PRP", "RPP")
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class Group:
     """One Assur group of class II, ready to solve: ``links = (i, j)``,
     ``joints = (J1, J2, J3)``, ``known = (p, q)``."""
@@ -38,7 +39,7 @@ class Group:
         return self.joints[1].point
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class Structure:
     n: int  # moving links
     p5: int  # lower pairs

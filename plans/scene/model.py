@@ -11,13 +11,17 @@ from __future__ import annotations
 
 import cmath
 import math
-from dataclasses import dataclass, field
-from pathlib import Path
-from typing import Any
+import os
+from dataclasses import field
+from typing import TYPE_CHECKING, Any
 
 from plans.io import loads_toml, read_toml
 from plans.reader import Reader, did_you_mean
+from plans.records import frozen
 from plans.units import LENGTH_UNITS, rpm_to_rad_s
+
+if TYPE_CHECKING:
+    from pathlib import Path
 
 #: What a scene may ask for, and what each one needs first.
 OUTPUTS: dict[str, tuple[str, ...]] = {
@@ -34,7 +38,7 @@ OUTPUTS: dict[str, tuple[str, ...]] = {
 FIJ_CONVENTIONS = ("on_i_from_j", "of_i_on_j")
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class Guide:
     """A straight line fixed to link ``link``: through local point ``origin``, at local angle ``angle``."""
 
@@ -47,7 +51,7 @@ class Guide:
         return cmath.exp(1j * self.angle)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class Joint:
     """A lower pair.  ``R``: links share ``point``.  ``P``: ``point`` of the slider link
     moves along ``guide`` (carried by the other link), and the two links keep their
@@ -72,7 +76,7 @@ class Joint:
         return self.other(self.guide.link)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class Link:
     id: int
     name: str
@@ -84,7 +88,7 @@ class Link:
     centre: str | None = None  # name of the centre of mass point (S2, ...)
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class Driver:
     """The initial link: θ1 = φ_ref + sense·φ (see :meth:`rotation`), ω1 = sense·|ω|, ε1 = sense·ε."""
 
@@ -109,7 +113,7 @@ class Driver:
         return quarter * np.exp(1j * np.radians(r))
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class Scene:
     path: str
     title: str
@@ -174,6 +178,14 @@ def load_scene(path: str | Path) -> Scene:
     return scene_from_dict(read_toml(path), str(path))
 
 
+def _stem(path: str) -> str:
+    """The file's name without its last suffix, as ``pathlib.PurePath.stem`` (without
+    loading pathlib on the way to a solve)."""
+    name = os.path.basename(path)
+    i = name.rfind(".")
+    return name[:i] if 0 < i < len(name) - 1 else name
+
+
 def parse_scene(text: str, path: str = "<scene>") -> Scene:
     return scene_from_dict(loads_toml(text, path), path)
 
@@ -193,7 +205,7 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
                              f"{command_for(kind)}expected kind = \"linkage\" or no kind")
     r.keys(data, TOP_KEYS, "")
     unit = r.choice(data, "unit", "", sorted(LENGTH_UNITS), "mm")
-    title, titles = _title(r, data.get("title", Path(path).stem))
+    title, titles = _title(r, data.get("title", _stem(path)))
     r.string(title, "title", limit=2000)
     for lang, text in titles.items():
         r.string(text, f"title.{lang}", limit=2000)
