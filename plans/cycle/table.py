@@ -8,7 +8,6 @@ inertia term by term (table 1.2) and the reduced moment of forces load by load (
 
 from __future__ import annotations
 
-import csv
 import io
 import math
 from collections.abc import Sequence
@@ -120,6 +119,8 @@ def text(table: CycleTable, columns: int = 7) -> str:
 
 def csv_text(tables: Sequence[CycleTable]) -> str:
     """One CSV: a header of crank angles per table, then one line per quantity."""
+    import csv  # loaded by ``--csv`` alone
+
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     for t in tables:

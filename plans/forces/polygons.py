@@ -34,7 +34,9 @@ Plane vectors are complex numbers, ``cross(a, b) = Im(conj(a)·b)``.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import field
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -50,7 +52,7 @@ from plans.forces.loads import (
 )
 from plans.forces.shared import RULER_MM, mu_force, safe_div, unit_vector
 from plans.kinematics.exact import Kinematics, cross
-from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step
+from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Written
 from plans.kinematics.structure import Group
 from plans.lines import along, meet
 from plans.phrases import Phrase, phrase
@@ -140,10 +142,27 @@ class ForceAnalysis:
     applied: AppliedLoads
     groups: tuple[GroupForces, ...]  # in solving order: farthest first
     crank: CrankForces
+    #: what every position's table and polygons read again, worked out once (read-only arrays)
+    memo: dict[str, Any] = field(default_factory=dict, init=False, repr=False, compare=False)
 
     @property
     def n(self) -> int:
         return self.kin.n
+
+    def _once(self, key: str, make: Callable[[], Any]) -> Any:
+        got = self.memo.get(key)
+        if got is None:
+            got = self.memo[key] = make()
+            if isinstance(got, np.ndarray):
+                got.flags.writeable = False
+        return got
+
+    @property
+    def largest_reaction(self) -> float:
+        """The largest reaction over the positions (N): what sets the scale of a polygon
+        whose forces all vanish."""
+        return self._once("largest", lambda: max((float(np.max(np.abs(rc.F))) for rc in self.reactions()),
+                                                 default=0.0))
 
     def reactions(self) -> list[Reaction]:
         """Every joint's reaction once, crank–frame first, then groups in attachment order."""
@@ -165,14 +184,13 @@ class ForceAnalysis:
     @property
     def sense(self) -> R:
         """+1 where the balancing point moves counter-clockwise about the pivot."""
-        w = self.kin.omega(self.scene.driver.link)
-        return np.where(w < 0, -1.0, 1.0)
+        return self._once("sense", lambda: np.where(self.kin.omega(self.scene.driver.link) < 0, -1.0, 1.0))
 
     @property
     def balancing(self) -> R:
         """The balancing load, positive along the motion of its point (N, or N·m for a moment)."""
         c = self.crank
-        return self.sense * (c.F_bal if c.kind == "force" else c.M_bal)
+        return self._once("balancing", lambda: self.sense * (c.F_bal if c.kind == "force" else c.M_bal))
 
 
 # --------------------------------------------------------------------------- analysis
@@ -468,7 +486,7 @@ class _Poly:
         self.cur = "o"
         self.segs: list[Segment] = []
         self.lines: list[ConstructionLine] = []
-        self.steps: list[Step] = []
+        self.steps: list[tuple[str, tuple[str, ...], str, Phrase]] = []  # written when read (Written)
         self.ends: dict[str, tuple[str, str]] = {}
         self.notes: list[str] = []
 
@@ -491,7 +509,7 @@ class _Poly:
         end = self._new(self.pts[start] + F * self.mu)
         self._seg(start, end, "force", label)
         shown = clean(abs(F), 100.0 / self.mu)  # against the polygon's size (its longest ≈ 100 mm)
-        self.steps.append(Step.of("lay off", (start,), end, phrase(
+        self.steps.append(("lay off", (start,), end, phrase(
             "f_lay", start=start, end=end, label=label, F=shown, mm=abs(F) * self.mu)))
         self.cur = end
 
@@ -514,7 +532,7 @@ class _Poly:
         xn = self._new(x)
         self._seg(end, xn, "closing", label_end)
         self._seg(xn, start, "closing", label_start)
-        self.steps.append(Step.of("intersect", (end, start), xn, phrase(
+        self.steps.append(("intersect", (end, start), xn, phrase(
             "f_meet", end=end, start=start, le=label_end, ls=label_start, xn=xn)))
         self.cur = xn
         return xn
@@ -524,13 +542,13 @@ class _Poly:
         if abs(self.pts[a] - self.pts[to]) == 0:
             self.notes.append(f"{label} = 0")
         self._seg(a, to, "closing", label)
-        self.steps.append(Step.of("closing", (a, to), label, phrase("f_close", label=label, a=a, to=to)))
+        self.steps.append(("closing", (a, to), label, phrase("f_close", label=label, a=a, to=to)))
         self.cur = to
 
     def join(self, label: str, a: str, b: str, why: str | Phrase) -> None:
         self._seg(a, b, "closing", label)
         words = why if isinstance(why, Phrase) else phrase("f_sum", x=why)
-        self.steps.append(Step.of("closing", (a, b), label, phrase("f_join", label=label, a=a, b=b, why=words)))
+        self.steps.append(("closing", (a, b), label, phrase("f_join", label=label, a=a, b=b, why=words)))
 
     def end_of(self, labels: list[str], default: str) -> str:
         for lab in reversed(labels):
@@ -547,7 +565,7 @@ class _Poly:
             pts.append(PlanPoint(nm, (z.real, z.imag), seen.get(key)))
             seen.setdefault(key, nm)
         return Plan("force", phi, self.mu, "o", tuple(pts), tuple(self.segs), tuple(self.lines),
-                    tuple(self.steps), tuple(self.notes))
+                    Written(self.steps), tuple(self.notes))
 
 
 def force_polygons(fa: ForceAnalysis, k: int) -> tuple[ForcePolygon, ...]:

@@ -36,7 +36,7 @@ def mu_force(fa: ForceAnalysis, values: list[complex]) -> float:
     if given:
         return given
     longest = max((abs(v) for v in values), default=0.0)
-    cycle = max((float(np.max(np.abs(rc.F))) for rc in fa.reactions()), default=0.0)
+    cycle = fa.largest_reaction
     if longest <= 1e-9 * cycle:  # zero up to round-off: a point, at the cycle's scale
         longest = cycle
     return nice_scale(longest, 100.0 * fit(fa.scene.scales))

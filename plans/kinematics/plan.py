@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import field
+from typing import Any
 
 from plans.phrases import Phrase
 from plans.records import frozen
@@ -65,6 +66,37 @@ class Step:
     def say(self, lang: str = "en") -> str:
         """The sentence in ``lang`` ("en" or "ru"), the same numbers either way."""
         return self.text if self.phrase is None or lang == "en" else self.phrase.say(lang)
+
+
+class Written(Sequence[Step]):
+    """Steps kept as (operation, inputs, output, phrase) and written (:meth:`Step.of`) when
+    first read: a sheet, a protocol or the JSON asks for them, a table of readings never does."""
+
+    __slots__ = ("_raw", "_steps")
+
+    def __init__(self, raw: Sequence[tuple[str, tuple[str, ...], str, Phrase]]) -> None:
+        self._raw = raw
+        self._steps: tuple[Step, ...] | None = None
+
+    def _get(self) -> tuple[Step, ...]:
+        if self._steps is None:
+            self._steps = tuple(Step.of(*r) for r in self._raw)
+        return self._steps
+
+    def __getitem__(self, i: Any) -> Any:
+        return self._get()[i]
+
+    def __len__(self) -> int:
+        return len(self._raw)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Sequence) and self._get() == tuple(other)
+
+    def __hash__(self) -> int:
+        return hash(self._get())
+
+    def __repr__(self) -> str:
+        return repr(self._get())
 
 
 @frozen
