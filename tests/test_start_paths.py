@@ -226,3 +226,25 @@ def test_every_record_behaves_as_dataclass_makes_it(cls):
     assert a != b and a.__eq__(b) is NotImplemented  # another class, as between two dataclasses
     assert pickle.loads(pickle.dumps(a)) == a and copy.deepcopy(a) == a and copy.copy(a) == a
     assert dataclasses.asdict(a) == dataclasses.asdict(b)
+
+
+def test_the_start_measure_stops_the_command_when_solving_begins():
+    """What ``plans bench`` times as the start of ``plans solve``: the installed console
+    command, stopped the moment the scene, read, is handed to the solver (nothing printed);
+    a scene that cannot be read is refused before that point, so its reading is counted."""
+    import subprocess
+    import sys
+
+    from plans.accuracy import speed
+
+    root = Path(__file__).resolve().parent.parent
+    code = speed._UNTIL_SOLVING.format(entry="drawings.console")
+    got = subprocess.run([sys.executable, "-c", code, "solve", "samples/slider_crank.toml"], cwd=root,
+                         capture_output=True, text=True, timeout=120)
+    assert got.returncode == 0 and got.stdout == "" and got.stderr == "", got
+    bad = subprocess.run([sys.executable, "-c", code, "solve", "samples/no_such_scene.toml"], cwd=root,
+                         capture_output=True, text=True, timeout=120)
+    assert bad.returncode == 2 and "no_such_scene.toml" in bad.stderr
+    whole = subprocess.run([sys.executable, "-c", speed._CONSOLE.format(entry="drawings.console"), "solve",
+                            "samples/slider_crank.toml"], cwd=root, capture_output=True, text=True, timeout=120)
+    assert whole.returncode == 0 and "phi = " in whole.stdout
