@@ -74,13 +74,13 @@ def frozen(cls: T | None = None, /, *, slots: bool = True) -> Any:
 
 def _init(cls: type, fs: tuple[Field, ...], slots: bool) -> Callable[..., None]:
     """``__init__`` as dataclass writes it for a frozen class: every field set through
-    ``object.__setattr__``, defaults and default factories, then ``__post_init__``."""
+    ``object.__setattr__``, defaults and default factories, then ``__post_init__``.  It is
+    compiled bare (no closure, the annotations put on afterwards): half the compiling."""
     me = "__dataclass_self__" if "self" in (f.name for f in fs) else "self"
     ns: dict[str, Any] = {"__dataclass_setattr__": object.__setattr__, "__dataclass_factory__": _FACTORY}
     params, body = [me], []
     seen_default = False
     for f in fs:
-        ns[f"__type_{f.name}"] = f.type
         has_factory = f.default_factory is not MISSING
         if has_factory:
             ns[f"__factory_{f.name}"] = f.default_factory
@@ -88,14 +88,14 @@ def _init(cls: type, fs: tuple[Field, ...], slots: bool) -> Callable[..., None]:
             ns[f"__default_{f.name}"] = f.default
         if f.init:
             if f.default is not MISSING:
-                params.append(f"{f.name}:__type_{f.name}=__default_{f.name}")
+                params.append(f"{f.name}=__default_{f.name}")
             elif has_factory:
-                params.append(f"{f.name}:__type_{f.name}=__dataclass_factory__")
+                params.append(f"{f.name}=__dataclass_factory__")
                 body.append(f"if {f.name} is __dataclass_factory__: {f.name} = __factory_{f.name}()")
             elif seen_default:
                 raise TypeError(f"non-default argument {f.name!r} follows default argument")
             else:
-                params.append(f"{f.name}:__type_{f.name}")
+                params.append(f.name)
             seen_default = seen_default or f.default is not MISSING or has_factory
             value = f.name
         elif has_factory:
@@ -107,14 +107,11 @@ def _init(cls: type, fs: tuple[Field, ...], slots: bool) -> Callable[..., None]:
         body.append(f"__dataclass_setattr__({me}, {f.name!r}, {value})")
     if hasattr(cls, "__post_init__"):
         body.append(f"{me}.__post_init__()")
-    src = (f"def __create_fn__({', '.join(ns)}):\n"
-           f" def __init__({', '.join(params)}) -> None:\n"
-           + "".join(f"  {line}\n" for line in body or ["pass"])
-           + " return __init__\n")
-    scope: dict[str, Any] = {}
-    exec(compile(src, "<record>", "exec", dont_inherit=True), {}, scope)  # annotations evaluated, as dataclass's
-    fn = scope["__create_fn__"](**ns)
+    src = f"def __init__({', '.join(params)}):\n" + "".join(f" {line}\n" for line in body or ["pass"])
+    exec(compile(src, "<record>", "exec", dont_inherit=True), ns)
+    fn = ns["__init__"]
     fn.__qualname__ = f"{cls.__qualname__}.__init__"
+    fn.__annotations__ = {**{f.name: f.type for f in fs if f.init}, "return": None}
     return fn
 
 
