@@ -18,6 +18,8 @@ if TYPE_CHECKING:  # loaded when a scene asks for them: a linkage's solve does n
 
 @frozen(slots=False)
 class CycleResult:
+    """What the cycle adds to a solve: its tables, dynamics and diagrams (as asked)."""
+
     tables: tuple[CycleTable, ...]
     dynamics: Dynamics | None
     diagrams: Diagrams | None

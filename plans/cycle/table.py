@@ -20,6 +20,8 @@ from plans.records import frozen
 
 @frozen
 class TableRow:
+    """One quantity across the positions of a cycle table."""
+
     key: str  # machine name: "v_B", "v_B:mm", "I_pr", ...
     label: str  # as printed: "p_v b", "v_B", "m_2 (v_S2/ω_1)^2"
     unit: str  # "mm", "m/s", "kg*m^2", ...
@@ -28,6 +30,8 @@ class TableRow:
 
 @frozen
 class CycleTable:
+    """A table of quantities across the positions of the cycle."""
+
     title: str
     phi_deg: tuple[float, ...]
     rows: tuple[TableRow, ...]

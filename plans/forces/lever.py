@@ -45,6 +45,8 @@ class LeverForce:
 
 @frozen
 class LeverAnalysis:
+    """Zhukovsky's lever: the velocity plan turned 90° with every load on it, over positions."""
+
     fa: ForceAnalysis
     scale: float  # μv of the plan, mm per m/s
     turn: int  # +1: velocity plan turned 90° ccw, −1: cw

@@ -80,6 +80,8 @@ G_STANDARD = 9.81  # the textbooks' g
 
 @frozen
 class GasLoad:
+    """The gas force on a piston: a constant pressure or an indicator diagram by stroke."""
+
     link: int
     joint: str  # the prismatic joint the piston slides in
     area: float  # m²
@@ -94,6 +96,8 @@ class GasLoad:
 
 @frozen
 class ForceLoad:
+    """An external force at a point of a link: fixed, or resisting the point's motion."""
+
     link: int
     point: str
     vector: complex | None  # N, fixed
@@ -105,6 +109,8 @@ class ForceLoad:
 
 @frozen
 class MomentLoad:
+    """An external moment on a link: fixed, or resisting its rotation."""
+
     link: int
     value: float | None
     resisting: float | None
@@ -113,6 +119,8 @@ class MomentLoad:
 
 @frozen
 class Balancing:
+    """Where the balancing load acts: a force at a point of the driving link, or a moment."""
+
     kind: str  # "force" | "moment"
     point: str  # on the driving link
 
@@ -473,6 +481,8 @@ class AppliedForce:
 
 @frozen
 class AppliedMoment:
+    """A moment on a link at every position (inertia or external)."""
+
     label: str  # "M_Phi2", "M_c4"
     link: int
     M: R  # N·m, ccw+
@@ -481,6 +491,8 @@ class AppliedMoment:
 
 @frozen
 class AppliedLoads:
+    """Every force and moment applied to the links at every position."""
+
     forces: tuple[AppliedForce, ...]
     moments: tuple[AppliedMoment, ...]
 

@@ -109,6 +109,8 @@ class Reaction:
 
 @frozen
 class GroupForces:
+    """One Assur group in equilibrium: its known loads and its three reactions over positions."""
+
     group: Group
     loads_i: tuple[AppliedForce, ...]  # known forces on i (reactions from farther groups included)
     loads_j: tuple[AppliedForce, ...]
@@ -121,6 +123,8 @@ class GroupForces:
 
 @frozen
 class CrankForces:
+    """The driving link in equilibrium: its loads, the balancing load and the frame's reaction."""
+
     link: int
     loads: tuple[AppliedForce, ...]  # everything on the crank except the balancing load and the frame
     moments: tuple[AppliedMoment, ...]
@@ -136,6 +140,8 @@ class CrankForces:
 
 @frozen
 class ForceAnalysis:
+    """The kinetostatics of a scene: every group and the crank, over the positions."""
+
     scene: Scene
     kin: Kinematics
     loads: Loads

@@ -22,6 +22,8 @@ SEGMENT_KINDS = ("absolute", "relative", "normal", "tangential", "coriolis", "sl
 
 @frozen
 class PlanPoint:
+    """A labelled point of a plan (plan mm)."""
+
     name: str  # textbook label: "p_v", "a", "b", "s2", "a3", "n_BA", "k_A2A3"
     xy: tuple[float, float]  # plan mm
     coincides_with: str | None = None  # drawn on top of another point (e.g. b on the pole)
@@ -101,6 +103,8 @@ class Written(Sequence[Step]):
 
 @frozen
 class Plan:
+    """A plan as drawn: points, vectors, construction lines and the steps that drew them."""
+
     kind: str  # "velocity" | "acceleration" | "force" | "lever"
     phi_deg: float
     scale: float  # mm per SI unit

@@ -41,6 +41,8 @@ class Group:
 
 @frozen
 class Structure:
+    """The mechanism's structure: the initial link and its Assur groups in the order they are solved."""
+
     n: int  # moving links
     p5: int  # lower pairs
     p4: int  # higher pairs

@@ -78,6 +78,8 @@ class Joint:
 
 @frozen
 class Link:
+    """A link of the mechanism: its points in its own coordinates, mass and inertia."""
+
     id: int
     name: str
     axis: tuple[str, ...]
@@ -115,6 +117,8 @@ class Driver:
 
 @frozen
 class Scene:
+    """A linkage scene as read from its file, in SI: links, joints, driver, positions, outputs."""
+
     path: str
     title: str
     frame: int
