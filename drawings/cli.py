@@ -7,7 +7,7 @@ import argparse
 import importlib
 from collections.abc import Sequence
 
-from plans.cli import command_of, register_commands
+from plans.cli import command_of, only_command, register_commands
 from plans.cli import main as plans_main
 from plans.errors import InputError
 
@@ -94,8 +94,9 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
         return parser
     parser = base(argv)
     sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
-    add_draw(sub)
-    register_commands(sub, _DRAWING_COMMANDS, argv, _DRAWING_NAMES)
+    if only_command(argv) is None:  # else one of the engine's commands comes first: it alone is built
+        add_draw(sub)
+        register_commands(sub, _DRAWING_COMMANDS, argv, _DRAWING_NAMES)
     if "bench" in sub.choices and (argv is None or command_of(argv) == "bench"):
         from .bench_plot import add_plot  # ``plans bench`` draws bench.svg with the sheets' backend
 

@@ -73,21 +73,34 @@ class Parser(argparse.ArgumentParser):
                      f"{' '.join(message.split())} (see plans -h)\n")
 
 
+def only_command(argv: Sequence[str] | None) -> str | None:
+    """The command asked for when it is the first word of ``argv`` and one of the engine's
+    (``plans solve FILE``): argparse then hands everything after it to that command's
+    parser and never consults the others (an error is one line without the list of
+    commands), so they are not built: each costs its gettext look-ups and options."""
+    if argv and argv[0] in {"solve", *(name for name, _ in _COMMAND_NAMES.values())}:
+        return argv[0]
+    return None
+
+
 def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     """The parser; with ``argv``, only the module of the command asked for is imported (the
-    others are listed by name), without it every command is complete."""
+    others are listed by name, or left out when the command comes first: :func:`only_command`),
+    without it every command is complete."""
     parser = Parser(
         prog="plans",
         description="Velocity and acceleration plans, force polygons and the Zhukovsky lever "
                     "of planar linkages, built as a draftsman builds them and checked exactly.")
     sub = parser.add_subparsers(dest="command", required=True)
-    s = sub.add_parser("solve", help="solve a scene: table per position, JSON")
-    s.add_argument("scene", help="scene file (TOML)")
-    s.add_argument("--json", metavar="PATH", help="write results as JSON ('-' for stdout)")
-    s.add_argument("--csv", metavar="PATH", help="write the tables over the positions as CSV ('-' for stdout)")
-    s.add_argument("--protocol", action="store_true", help="print the construction protocol")
-    s.add_argument("--quiet", action="store_true", help="no table on stdout")
-    s.set_defaults(func=_solve)
+    only = only_command(argv)
+    if only in (None, "solve"):
+        s = sub.add_parser("solve", help="solve a scene: table per position, JSON")
+        s.add_argument("scene", help="scene file (TOML)")
+        s.add_argument("--json", metavar="PATH", help="write results as JSON ('-' for stdout)")
+        s.add_argument("--csv", metavar="PATH", help="write the tables over the positions as CSV ('-' for stdout)")
+        s.add_argument("--protocol", action="store_true", help="print the construction protocol")
+        s.add_argument("--quiet", action="store_true", help="no table on stdout")
+        s.set_defaults(func=_solve)
     register_commands(sub, _COMMAND_MODULES, argv)
     return parser
 
@@ -96,10 +109,14 @@ def register_commands(sub: argparse._SubParsersAction, modules: Sequence[str],
                       argv: Sequence[str] | None = None, names: dict[str, tuple[str, str]] | None = None) -> None:
     """Let each module add its subcommand (``register(sub)``); an absent module is skipped.
     With ``argv``, a module whose command is known (``names``) and not the one asked for is
-    only listed, not imported."""
+    only listed, not imported; when the engine's command comes first (:func:`only_command`),
+    the others are left out."""
     names = _COMMAND_NAMES if names is None else names
     wanted = command_of(argv)
+    only = only_command(argv)
     for mod in modules:
+        if only is not None and (mod not in names or names[mod][0] != only):
+            continue
         if argv is not None and mod in names and names[mod][0] != wanted:
             if importlib.util.find_spec(mod) is not None:
                 sub.add_parser(names[mod][0], help=names[mod][1])
