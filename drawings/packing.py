@@ -125,8 +125,8 @@ class Flow:
 @dataclass(frozen=True, slots=True)
 class Whole:
     """A position's block in every shape worth trying.  On the small formats (A3, A4), where
-    no shape fits the room left on a sheet still largely empty, its panels flow instead
-    (continued on the next sheet): the sheet is not given up.  On A1 and A2 a position stays
+    no shape fits the room left on a sheet with much of it still free, its panels flow
+    instead (continued on the next sheet): the sheet is not given up.  On A1 and A2 a position stays
     whole on one sheet."""
 
     shapes: list[Block]
@@ -210,7 +210,7 @@ def place_blocks(blks: list[Whole | Flow], taken: list[list[Box]], area: Box, ga
     """Blocks one after another on the sheets (pinned panels already there): each in the
     shape and spot that keep the current sheet's skyline lowest (a shape that leaves room
     for the next block wins), else on the next sheet; a block that fits no room left on a
-    sheet still mostly empty flows over it and the next in parts.  Returns the blocks per
+    sheet with much of it free flows over it and the next in parts.  Returns the blocks per
     sheet and every sheet's taken boxes."""
     tks = [list(t) for t in taken]
     out: list[list[tuple[Block, float, float]]] = [[] for _ in tks]
