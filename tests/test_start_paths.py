@@ -248,3 +248,30 @@ def test_the_start_measure_stops_the_command_when_solving_begins():
     whole = subprocess.run([sys.executable, "-c", speed._CONSOLE.format(entry="drawings.console"), "solve",
                             "samples/slider_crank.toml"], cwd=root, capture_output=True, text=True, timeout=120)
     assert whole.returncode == 0 and "phi = " in whole.stdout
+
+
+def test_every_command_listed_by_name_is_the_one_its_module_registers():
+    """``plans`` lists (or leaves out) a command without importing its module: the name and
+    the help it lists are the module's own."""
+    import argparse
+    import importlib
+
+    from plans import cli
+
+    for mod, (name, text) in cli._COMMAND_NAMES.items():
+        sub = argparse.ArgumentParser().add_subparsers()
+        importlib.import_module(mod).register(sub)
+        assert [(a.dest, a.help) for a in sub._choices_actions] == [(name, text)], mod
+
+
+@pytest.mark.parametrize("argv", [["solve", "x.toml"], ["balance", "-h"], ["check", "DIR"], ["bench", "--quick"]])
+def test_a_command_that_comes_first_is_parsed_as_by_the_whole_parser(argv):
+    from drawings.cli import build_parser
+
+    alone, whole = build_parser(argv), build_parser()
+    assert set(alone._subparsers._group_actions[0].choices) == {argv[0]}
+    if "-h" not in argv:
+        def parsed(parser):
+            return {k: getattr(v, "__qualname__", v) for k, v in vars(parser.parse_args(argv)).items()}
+
+        assert parsed(alone) == parsed(whole)
