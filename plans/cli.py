@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import argparse
 import importlib
-import importlib.util
 import os
 import sys
 from collections.abc import Callable, Sequence
@@ -118,7 +117,10 @@ def register_commands(sub: argparse._SubParsersAction, modules: Sequence[str],
         if only is not None and (mod not in names or names[mod][0] != only):
             continue
         if argv is not None and mod in names and names[mod][0] != wanted:
-            if importlib.util.find_spec(mod) is not None:
+            # only to list the others: ``plans solve FILE`` lists none
+            from importlib.util import find_spec
+
+            if find_spec(mod) is not None:
                 sub.add_parser(names[mod][0], help=names[mod][1])
             continue
         try:
