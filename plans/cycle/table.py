@@ -60,11 +60,13 @@ def plan_table(plans: Sequence[Any], title: str = "Plans over the cycle") -> Cyc
     if len(plans) < 2:
         return None
     order: list[tuple[str, str | None, str]] = []
+    seen: set[str] = set()
     cells: dict[tuple[str, str], list[float | None]] = {}
     n = len(plans)
     for k, pp in enumerate(plans):
         for r in pp.readings:
-            if r.quantity not in [q for q, _, _ in order]:
+            if r.quantity not in seen:
+                seen.add(r.quantity)
                 order.append((r.quantity, r.segment, r.unit))
             if r.length_mm is not None:
                 cells.setdefault((r.quantity, "mm"), [None] * n)[k] = _clean(r.length_mm)
