@@ -192,7 +192,7 @@ PHRASES: dict[str, tuple[str, str]] = {
 UNITS_RU = {"N": "Н", "N·m": "Н·м", "m/s": "м/с", "m/s²": "м/с²", "rad/s": "рад/с", "rad/s²": "рад/с²",
             "mm": "мм", "m": "м", "J": "Дж", "kg·m²": "кг·м²"}
 
-_BAL = re.compile(r"\b([FM])_bal\b")
+_BAL = r"\b([FM])_bal\b"  # F_bal, M_bal as words (compiled by ``re`` when Russian is first written)
 
 
 class Phrase:
@@ -217,7 +217,7 @@ class Phrase:
                     value = UNITS_RU.get(value, value)
                 out.append(_field(value, spec, lang))
         text = "".join(out)
-        return _BAL.sub(r"\1_ур", text) if ru else text
+        return re.sub(_BAL, r"\1_ур", text) if ru else text
 
     def __str__(self) -> str:
         return self.say("en")

@@ -9,7 +9,8 @@ import math
 import re
 
 LENGTH_UNITS = {"m": 1.0, "mm": 1e-3, "cm": 1e-2}
-_QUANTITY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([a-zA-Z]*)\s*$")
+#: A length written as text, "35 mm" (compiled by ``re`` when first met: most files give numbers).
+_QUANTITY = r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([a-zA-Z]*)\s*$"
 
 
 def parse_length(value: object, default_unit: str) -> float:
@@ -26,7 +27,7 @@ def parse_length(value: object, default_unit: str) -> float:
             raise ValueError("expected a finite length")
         return float(value) * LENGTH_UNITS[default_unit]
     if isinstance(value, str):
-        m = _QUANTITY.match(value)
+        m = re.match(_QUANTITY, value)
         if m:
             unit = m.group(2) or default_unit
             if unit in LENGTH_UNITS:
