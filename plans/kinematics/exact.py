@@ -25,7 +25,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from plans.errors import Locked, NotAssemblable
-from plans.kinematics import fast
+from plans.kinematics import fast, fast_arrays
 from plans.kinematics.structure import Group, Structure, analyse
 from plans.scene.model import Joint, Scene
 from plans.tolerances import ASSEMBLY_REL, LOCK_SIN
@@ -155,8 +155,8 @@ class Kinematics:
 
 def _unpacked(kin: Kinematics, name: str) -> Any:
     """What the fast path solved, made into the readings' objects when first read: the
-    motions (and, at one position, the angle, slides and conditions as arrays; the solve
-    itself stays in Python numbers)."""
+    motions and the conditions (and, at one position, the angle and slides as arrays; the
+    solve itself stays in Python numbers)."""
     d = kin.__dict__
     if name == "phi_deg" and "_phi" in d:
         arr = d[name] = np.array((d["_phi"],))
@@ -169,8 +169,10 @@ def _unpacked(kin: Kinematics, name: str) -> Any:
         d[name] = _columns(len(kin.phi_deg), motion)
     elif name == "slides":
         d[name] = {nm: (np.array((sd,)), None if sdd is None else np.array((sdd,))) for nm, (sd, sdd) in slides.items()}
-    else:
+    elif "_phi" in d:
         d[name] = {g: np.array((c,)) for g, c in conditions.items()}
+    else:
+        d[name] = {g: c() if type(c) is fast.Later else c for g, c in conditions.items()}
     return d[name]
 
 
@@ -202,11 +204,11 @@ def solve(scene: Scene, phi_deg=None, order: int | None = None,
                 return kin
     phis = np.atleast_1d(np.asarray(phi_deg, dtype=float))
     if fp is not None:
-        res = _fast_runs(fp, phis, order) if len(phis) <= SCALAR_MAX else fast.solve_vec(fp, phis, order)
+        res = _fast_runs(fp, phis, order) if len(phis) <= SCALAR_MAX else fast_arrays.solve(fp, phis, order)
         if res is not None:
             kin = object.__new__(Kinematics)
-            kin.__dict__.update(scene=scene, structure=st, phi_deg=phis, order=order, slides=res[1],
-                                conditions=res[2], _points={}, _raw=res)
+            kin.__dict__.update(scene=scene, structure=st, phi_deg=phis, order=order, slides=res[1], _points={},
+                                _raw=res)
             return kin
     program = _program(scene, st)
     if len(phis) <= SCALAR_MAX:
@@ -425,7 +427,7 @@ class _Cols(_Motion):
         (lists of numbers made arrays first)."""
         vals = self._vals
         for i, v in enumerate(vals):
-            if type(v) is list:
+            if type(v) is list or type(v) is fast.Later:
                 self._get(i)
         return vals
 
@@ -433,7 +435,9 @@ class _Cols(_Motion):
         v = self._vals[i]
         if v is None or type(v) is np.ndarray:
             return v
-        if type(v) is list:
+        if type(v) is fast.Later:
+            v = v()
+        elif type(v) is list:
             v = np.array(v, dtype=_DTYPES[i])
         elif self._n == 1:
             v = np.array((v,), dtype=_DTYPES[i])
