@@ -87,7 +87,9 @@ def zhukovsky_lever(fa: ForceAnalysis, scale: float | None = None) -> LeverAnaly
         return v
 
     for f in fa.applied.forces:
-        v = add(f.label, f.link, _image_name(f.point), f.local, f.F)
+        # at a named point the same local coordinates at every position: its v read once
+        local = scene.links[f.link].points.get(f.point, f.local)
+        v = add(f.label, f.link, _image_name(f.point), local, f.F)
         power = power + (f.F.conjugate() * v).real  # F·v
     for m in fa.applied.moments:
         for label, link, pt, local, F in _couple(fa, m):

@@ -86,11 +86,17 @@ class Kinematics:
 
     def home(self, name: str) -> int:
         """The link a named point is read from (lowest number, frame last)."""
-        links = self.scene.point_links(name)
-        if not links:
-            raise KeyError(name)
-        moving = [k for k in links if k != self.scene.frame]
-        return min(moving) if moving else self.scene.frame
+        homes = self.scene.memo.get("homes")
+        if homes is None:
+            homes = self.scene.memo["homes"] = {}
+        got = homes.get(name)
+        if got is None:
+            links = self.scene.point_links(name)
+            if not links:
+                raise KeyError(name)
+            moving = [k for k in links if k != self.scene.frame]
+            got = homes[name] = min(moving) if moving else self.scene.frame
+        return got
 
     def local(self, link: int, name: str) -> complex:
         if link == self.scene.frame:
@@ -107,10 +113,13 @@ class Kinematics:
                 rot, r0, w, v0, e, a0 = m.raw()
             else:
                 rot, r0, w, v0, e, a0 = m.rot, m.r0, m.omega, m.v0, m.eps, m.a0
-            rel = rot * z
-            r = r0 + rel
-            v = None if w is None else v0 + 1j * w * rel
-            a = None if e is None else a0 + (1j * e - w * w) * rel
+            if key is not None and not z:  # the link's origin: its own motion
+                r, v, a = r0, None if w is None else v0, None if e is None else a0
+            else:
+                rel = rot * z
+                r = r0 + rel
+                v = None if w is None else v0 + 1j * w * rel
+                a = None if e is None else a0 + (1j * e - w * w) * rel
             done = (r, v, a) if type(r) is np.ndarray and (w is None or type(v) is np.ndarray) and \
                 (e is None or type(a) is np.ndarray) else self._arrays(r, v, a)
             if key is not None:
@@ -124,7 +133,7 @@ class Kinematics:
         def arr(x: Any) -> Any:
             if x is None or type(x) is np.ndarray:
                 return x
-            return np.array((x,), dtype=complex) if n == 1 else np.full(n, x, dtype=complex)
+            return np.array((x,), dtype=complex) if n == 1 else _full(n, x, complex)
         return arr(r), arr(v), arr(a)
 
     def point(self, name: str, link: int | None = None) -> tuple[C, C, C]:
@@ -143,6 +152,16 @@ class Kinematics:
 
     def theta(self, link: int) -> R:
         return self.motion[link].theta
+
+    def reach(self) -> float:
+        """The mechanism's reach from the origin (m) over the positions: the largest |r| of
+        its points (1 where all are at the origin), worked out once."""
+        d = self.__dict__
+        got = d.get("_reach")
+        if got is None:
+            got = d["_reach"] = max((float(np.maximum.reduce(np.abs(self.point(nm)[0]))) for nm in self.point_names()),
+                                    default=1.0) or 1.0
+        return got
 
     def point_names(self) -> list[str]:
         names: list[str] = []
@@ -406,6 +425,13 @@ def _stack(scene: Scene, st: Structure, phis: Any, order: int, runs: list) -> Ki
     return _kinematics(scene, st, order, motion, phis, slides, conditions)
 
 
+def _full(n: int, x: Any, dtype: Any) -> Any:
+    """np.full(n, x, dtype) without its Python wrapper."""
+    out = np.empty(n, dtype)
+    out.fill(x)
+    return out
+
+
 _FIELDS = ("rot", "r0", "omega", "v0", "eps", "a0")
 _WIDTH = (2, 4, 6)  # fields known at each order
 _DTYPES = (complex, complex, float, complex, float, complex)
@@ -442,7 +468,7 @@ class _Cols(_Motion):
         elif self._n == 1:
             v = np.array((v,), dtype=_DTYPES[i])
         else:
-            v = np.full(self._n, v, dtype=_DTYPES[i])
+            v = _full(self._n, v, _DTYPES[i])
         self._vals[i] = v
         return v
 
