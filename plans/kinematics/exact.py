@@ -221,7 +221,10 @@ def solve(scene: Scene, phi_deg=None, order: int | None = None,
                 kin = object.__new__(Kinematics)
                 kin.__dict__.update(scene=scene, structure=st, _phi=float(phi), order=order, _points={}, _raw=res)
                 return kin
-    phis = np.atleast_1d(np.asarray(phi_deg, dtype=float))
+    if type(phi_deg) is np.ndarray and phi_deg.dtype == float and phi_deg.ndim == 1:
+        phis = phi_deg  # as np.asarray gives it
+    else:
+        phis = np.atleast_1d(np.asarray(phi_deg, dtype=float))
     if fp is not None:
         res = _fast_runs(fp, phis, order) if len(phis) <= SCALAR_MAX else fast_arrays.solve(fp, phis, order)
         if res is not None:
