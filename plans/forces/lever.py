@@ -160,8 +160,9 @@ def _couple(fa: ForceAnalysis, m: AppliedMoment):
         nX, nY = link.axis[0], link.axis[0] + "'"
     X = kin.point_on(m.link, zX)[0]
     Y = kin.point_on(m.link, zY)[0]
-    l = np.abs(Y - X)
-    f = m.M / l * 1j * unit_vector(Y - X)  # cross(Y − X, f) = M
+    XY = Y - X
+    l = np.abs(XY)
+    f = m.M / l * 1j * unit_vector(XY)  # cross(Y − X, f) = M
     return ((f"{m.label}'", m.link, _image_name(nY), zY, f),
             (f"{m.label}''", m.link, _image_name(nX), zX, -f))
 
