@@ -34,7 +34,9 @@ Plane vectors are complex numbers, ``cross(a, b) = Im(conj(a)·b)``.
 
 from __future__ import annotations
 
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -112,7 +114,7 @@ class GroupForces:
     moments_j: tuple[AppliedMoment, ...]
     reactions: tuple[Reaction, Reaction, Reaction]  # J1 (on i from p), J2 (on i from j), J3 (on j from q)
     #: lever arms h (m) of the moment equations: (equation, label) -> |arm| over positions
-    arms: dict[tuple[str, str], R] = field(default_factory=dict)
+    arms: Mapping[tuple[str, str], R] = field(default_factory=dict)
 
 
 @dataclass(frozen=True, slots=True)
@@ -127,7 +129,7 @@ class CrankForces:
     F_bal: R  # along e_bal (force mode), N; 0 in moment mode
     M_bal: R  # balancing moment about the pivot, N·m ccw+ (F_bal·l in force mode)
     frame: Reaction  # on the crank from the frame
-    arms: dict[str, R] = field(default_factory=dict)
+    arms: Mapping[str, R] = field(default_factory=dict)
 
 
 @dataclass(frozen=True, slots=True)
@@ -230,6 +232,31 @@ def _moment(fs, ms, P: C, n: int) -> R:
     return out
 
 
+class _ArmsWhenRead(Mapping):
+    """Lever arms worked out when first read: a drawn, printed or checked position reads
+    them, the analysis never does."""
+
+    __slots__ = ("_make", "_done")
+
+    def __init__(self, make: Callable[[], dict]) -> None:
+        self._make = make
+        self._done: dict | None = None
+
+    def _arms(self) -> dict:
+        if self._done is None:
+            self._done = self._make()
+        return self._done
+
+    def __getitem__(self, key: Any) -> R:
+        return self._arms()[key]
+
+    def __iter__(self) -> Iterator:
+        return iter(self._arms())
+
+    def __len__(self) -> int:
+        return len(self._arms())
+
+
 def _arms(eq: str, fs, P: C) -> dict[tuple[str, str], R]:
     """Lever arms h = |cross(r − P, F)|/|F| of each force about P (0 for a zero force)."""
     out = {}
@@ -282,7 +309,8 @@ def _rrr(kin: Kinematics, g: Group, forces, moments) -> GroupForces:
     F_jq = t_j * ej + n_j * uj
     F_ij = -sum_i - F_ip
     zero = np.zeros(n)
-    arms = _arms(f"M_{j2.point}({i})", fi, B) | _arms(f"M_{j2.point}({j})", fj, B)
+    ti, tj = tuple(fi), tuple(fj)
+    arms = _ArmsWhenRead(lambda: _arms(f"M_{j2.point}({i})", ti, B) | _arms(f"M_{j2.point}({j})", tj, B))
     return GroupForces(g, tuple(fi), tuple(fj), tuple(mi), tuple(mj), (
         Reaction(j1, i, p, A, F_ip, zero, tau=t_i, n=n_i, e_tau=ei, e_n=ui),
         Reaction(j2, i, j, B, F_ij, zero),
@@ -313,8 +341,9 @@ def _rrp(kin: Kinematics, g: Group, forces, moments) -> GroupForces:
     F_ij = -sum_i - F_ip
     M_jq = -_moment(fj, mj, B, n)  # ΣM_B(j): the guide's couple; F_ji and N pass through B
     zero = np.zeros(n)
-    arms = _arms(f"M_{j2.point}({i})", fi, B)
-    return GroupForces(g, tuple(fi), tuple(fj), tuple(mi), tuple(mj), (
+    ti = tuple(fi)
+    arms = _ArmsWhenRead(lambda: _arms(f"M_{j2.point}({i})", ti, B))
+    return GroupForces(g, ti, tuple(fj), tuple(mi), tuple(mj), (
         Reaction(j1, i, p, A, F_ip, zero, tau=t_i, n=n_i, e_tau=ei, e_n=ui),
         Reaction(j2, i, j, B, F_ij, zero),
         Reaction(j3, j, q, B, N * n3, M_jq, guide=u3),
@@ -419,10 +448,15 @@ def _crank(scene: Scene, kin: Kinematics, loads: Loads, forces, moments) -> Cran
         F_frame = -_sum(f1, n)
     joint = next(jt for jt in scene.joints if set(jt.links) == {link, scene.frame})
     frame = Reaction(joint, link, scene.frame, O, F_frame, np.zeros(n))
-    arms = {f.label: safe_div(np.abs(cross(f.r - O, f.F)), np.abs(f.F)) for f in f1}
-    arms["F_bal"] = l
-    return CrankForces(link, tuple(f1), tuple(m1), loads.balancing.kind, loads.balancing.point, P, e,
-                       F_bal, M_bal, frame, arms)
+    t1 = tuple(f1)
+
+    def arms() -> dict[str, Any]:
+        out = {f.label: safe_div(np.abs(cross(f.r - O, f.F)), np.abs(f.F)) for f in t1}
+        out["F_bal"] = l
+        return out
+
+    return CrankForces(link, t1, tuple(m1), loads.balancing.kind, loads.balancing.point, P, e,
+                       F_bal, M_bal, frame, _ArmsWhenRead(arms))
 
 
 # --------------------------------------------------------------------------- force polygons (drawing)
