@@ -153,7 +153,7 @@ def _cut(snap: Scheme, l1, l2):
     g = snap.kin.structure.groups[0]
     L1 = b.line(l1[0], l1[1], 0.0, "⟂ AB")
     L2 = b.line(l2[0], l2[1], 0.0, "∥ guide of B")
-    return b.intersect(L1, L2, "b", 7 + 3j, g, "B"), b
+    return b.pencil.cut(b, L1, L2, "b", 7 + 3j, g, "B"), b
 
 
 @pytest.mark.parametrize("lines, expect", [

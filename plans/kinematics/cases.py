@@ -80,7 +80,7 @@ class Numbers:
 
     @staticmethod
     def sign(x: Any) -> float:
-        return 1.0 if x > 0 else -1.0 if x < 0 else 0.0 * x  # 0 (and NaN) as numpy gives them
+        return 1.0 if x > 0 else -1.0 if x < 0 else 0.0 if x == 0 else x  # ±0 -> 0, NaN -> NaN, as numpy
 
     @staticmethod
     def zeros(n: int, dtype: type = float) -> Any:

@@ -11,7 +11,8 @@ draftsman's answer where two construction lines are (nearly) parallel.
 
 :func:`build_all` builds the plans of all positions together, as arrays; each position's
 :class:`Plan` objects and readings are made when first asked for, and its protocol (the
-sentences of each step) only when read.
+sentences of each step) only when read.  One position (:func:`build`, a scene of one
+position, a protocol) is built by the same construction in Python numbers.
 """
 
 from __future__ import annotations

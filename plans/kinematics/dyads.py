@@ -2,8 +2,10 @@
 
 What the draftsman does for each class-II Assur group (RRR, RRP, RPR, PRP, RPP) is one
 function here, run over an array of cases at once: the positions of a cycle (the plans of
-360 positions built together) or the drawings of a Monte Carlo.  The hand that draws is
-a :class:`Pencil`:
+360 positions built together) or the drawings of a Monte Carlo.  One position drawn
+exactly runs the same functions on Python numbers (a :class:`Scheme` of one position:
+numpy's cost per call would be all of its cost; see :mod:`plans.kinematics.cases`).
+The hand that draws is a :class:`Pencil`:
 
 * :class:`PerfectPencil` draws exactly: closed-form line intersections, the exact point
   where two construction lines are (nearly) parallel, :class:`plans.errors.Locked` where
@@ -298,12 +300,13 @@ class Builder:
             if exact <= 1e-12 * ref:
                 exact = 0.0
         else:
+            xp = self.xp
             length = self.pencil.read(abs(self.pts[end] - self.pts[start]))
             small = length <= dust[1]
-            if small.any():
+            if xp.any(small):
                 length = np.where(small, 0.0, length)
             small = exact <= 1e-12 * ref
-            if np.any(small):
+            if xp.any(small):
                 exact = np.where(small, 0.0, exact)
         value = length / self.mu
         self.segments.append((start, end, kind, label, length, value))
@@ -319,9 +322,6 @@ class Builder:
         self.lines.append((through, u, label))
         self.line_labels.append(label)
         return through, u
-
-    def intersect(self, l1: Line, l2: Line, out: str, exact_xy: C, group: Group, point: str) -> C:
-        return self.pencil.cut(self, l1, l2, out, exact_xy, group, point)
 
 
 def lab(name: str) -> str:
