@@ -33,7 +33,7 @@ WORDS = {
         "mistakes": {"coriolis": "Coriolis vector reversed", "normal": "normal component from the wrong point",
                      "couple": "inertia couple with the wrong sign", "pi": "π = 3.14"},
         "position": "position", "forces": "Forces over the cycle", "decimal": ".",
-        "units": {}, "labels": {},
+        "units": {"m/s^2": "m/s²"}, "labels": {},
     },
     "ru": {
         "steps": "По шагам", "cycle": "Цикл", "back": "◀ Назад", "next": "Далее ▶", "play": "▶ Пуск",
@@ -49,8 +49,8 @@ WORDS = {
         "position": "положение", "forces": "Силы за цикл", "decimal": ",",
         "units": {"mm/(m/s)": "мм/(м/с)", "mm/(m/s²)": "мм/(м/с²)", "mm/N": "мм/Н", "N": "Н", "N·m": "Н·м",
                   "J": "Дж", "rad/s": "рад/с", "rad/s²": "рад/с²", "kg·m²": "кг·м²", "m": "м", "m/s": "м/с",
-                  "m/s²": "м/с²", "mm": "мм", "s": "с"},
-        "labels": {"F_bal": "F_ур", "M_bal": "M_ур"},
+                  "m/s²": "м/с²", "m/s^2": "м/с²", "mm": "мм", "s": "с"},
+        "labels": {"F_bal": "F_ур", "M_bal": "M_ур", "M_pr": "M_пр", "I_pr": "I_пр"},
     },
 }
 
@@ -68,6 +68,8 @@ button:disabled { opacity: .4; cursor: default; }
 main { padding: .4em .8em; }
 .stage { display: grid; grid-template-columns: 1fr 1fr; gap: .6em; }
 .cycle .stage { grid-template-columns: 1.3fr 1fr 1fr; }
+.cycle .stage.two { grid-template-columns: 1fr 1fr; }
+.cycle .stage.one { grid-template-columns: 1fr; }
 figure { margin: 0; border: 1px solid #ddd; background: #fff; }
 figcaption { font-size: .8em; padding: .1em .4em; border-bottom: 1px solid #eee; }
 svg { width: 100%; height: auto; max-height: 58vh; display: block; }
@@ -110,7 +112,7 @@ input[type=range] { flex: 1; min-width: 12em; }
 .wrongpt { fill: none; stroke: var(--bad); }
 .arrow { fill: var(--ink); } .arrow.hi { fill: var(--hi); } .arrow.bad { fill: var(--bad); }
 .axis { stroke: var(--thin); } .curve { stroke: #2c3e50; } .cursor { stroke: var(--hi); }
-@media (max-width: 900px) { .stage, .cycle .stage { grid-template-columns: 1fr; } }
+@media (max-width: 900px) { .stage, .cycle .stage, .cycle .stage.two { grid-template-columns: 1fr; } }
 @media print {
   header nav, .controls, #tabs, #mistakes, .keys, #cycle-view { display: none !important; }
   body { background: #fff; font-size: 11pt; }

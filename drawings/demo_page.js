@@ -18,7 +18,7 @@
   // numbers and words as the page's language writes them (decimal comma, F_ур, Н)
   const nf = (x, digits) => String(Number(x.toPrecision(digits))).replace(".", T.decimal);
   const fixed = (x, digits) => x.toFixed(digits).replace(".", T.decimal);
-  const lab = (s) => String(s).replace(/\b([FM])_bal\b/g, (m) => T.labels[m] || m).replace(/Phi/g, "Φ");
+  const lab = (s) => String(s).replace(/\b[FMI]_(bal|pr)\b/g, (m) => T.labels[m] || m).replace(/Phi/g, "Φ");
   const unit = (u) => T.units[u] || u;
   function fit(svg, boxes, pad) {
     let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
@@ -30,6 +30,16 @@
     return Math.max(w, h) + 2 * pad;
   }
   function clear(svg) { while (svg.lastChild) svg.removeChild(svg.lastChild); }
+  // Points drawn on one spot (b on the pole at a dead centre, a ≡ c ≡ s4 when a rod only
+  // translates) get one label "a, c, s4", as a draftsman writes them, not letters on letters.
+  function spots(entries, tol) {
+    const out = [];
+    for (const [nm, p, hi] of entries) {
+      const g = out.find((x) => Math.hypot(x.p[0] - p[0], x.p[1] - p[1]) <= tol);
+      if (g) { g.names.push(nm); g.hi = g.hi || hi; } else out.push({names: [nm], p: p, hi: hi});
+    }
+    return out;
+  }
   function defs(svg) {
     const d = el(svg, "defs", {});
     for (const [id, cls] of [["arr", "arrow"], ["arr-hi", "arrow hi"], ["arr-bad", "arrow bad"]]) {
@@ -127,12 +137,17 @@
       const m = [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
       el(svg, "text", {x: f3(m[0] + 1.5 * u), y: f3(-m[1] - 1.5 * u), "font-size": f3(3.2 * u), class: "seglabel"}, lab(s.label));
     }
+    const named = [];
     for (const nm of shown) {
       if (nm.endsWith(">")) continue;  // a force's tip on the lever: its arrow and label say it
       const p = panel.points[nm], hi = fresh.points.indexOf(nm) >= 0;
       el(svg, "circle", {cx: f3(p[0]), cy: f3(-p[1]), r: f3((hi ? 1.4 : 0.9) * u), class: "pt" + (hi ? " hi" : ""),
         "data-point": nm});
-      el(svg, "text", {x: f3(p[0] + 1.8 * u), y: f3(-p[1] + 4.2 * u), "font-size": f3(4 * u), class: "label" + (hi ? " hi" : "")}, nm);
+      named.push([nm, p, hi]);
+    }
+    for (const g of spots(named, 1.5 * u)) {
+      el(svg, "text", {x: f3(g.p[0] + 1.8 * u), y: f3(-g.p[1] + 4.2 * u), "font-size": f3(4 * u),
+        class: "label" + (g.hi ? " hi" : "")}, g.names.join(", "));
     }
     if (mistake) {
       for (const nm in mistake.moved) {
@@ -225,6 +240,10 @@
   $("cyc-scheme").dataset.muL = String(C.scheme.mu_l);
   $("cyc-vel").parentNode.hidden = !C.velocity;
   $("cyc-acc").parentNode.hidden = !C.acceleration;
+  {  // the panels the scene has share the row (no empty column where a plan is not asked for)
+    const n = 1 + !!C.velocity + !!C.acceleration;
+    if (n < 3) $("cyc-scheme").parentNode.parentNode.classList.add(n === 2 ? "two" : "one");
+  }
   makeCharts();
   // A plan's longest vector changes manyfold over a turn (a quick return's peak): each frame
   // fills its panel, like the force polygons, with a scale bar of a round value.
@@ -240,6 +259,7 @@
       const d = pts.map((p, k) => (k ? "L" : "M") + f3(p[0]) + "," + f3(-p[1])).join(" ") + (pts.length > 2 ? " Z" : "");
       el(svg, "path", {d: d, class: "seg rel", "stroke-width": f3(0.4 * u), fill: "none"});
     }
+    const named = [];
     for (const nm in images) {
       const p = at(images[nm], t);
       if (Math.hypot(p[0], p[1]) > 1e-6) {
@@ -247,7 +267,11 @@
           "stroke-width": f3(0.5 * u),
           "marker-end": "url(#" + svg.id + "-arr)"});
       }
-      el(svg, "text", {x: f3(p[0] + 1.5 * u), y: f3(-p[1] - 1.5 * u), "font-size": f3(4.5 * u), class: "label"}, nm);
+      named.push([nm, p, false]);
+    }
+    for (const g of spots(named, 1.5 * u)) {
+      el(svg, "text", {x: f3(g.p[0] + 1.5 * u), y: f3(-g.p[1] - 1.5 * u), "font-size": f3(4.5 * u), class: "label"},
+        g.names.join(", "));
     }
     el(svg, "circle", {cx: "0", cy: "0", r: f3(1.2 * u), class: "pt"});
     el(svg, "text", {x: f3(-6 * u), y: f3(5 * u), "font-size": f3(4.5 * u), class: "label"}, pole);
@@ -379,11 +403,16 @@
           const d = pts.map((p, k) => (k ? "L" : "M") + f3(p[0]) + "," + f3(-p[1])).join(" ") + (pts.length > 2 ? " Z" : "");
           el(svg, "path", {d: d, class: "lever", "stroke-width": f3(0.5 * u)});
         }
+        const named = [];
         for (const nm in P) {
           const p = P[nm];
           if (!p) continue;
           el(svg, "circle", {id: svg.id + "-pt-" + nm, cx: f3(p[0]), cy: f3(-p[1]), r: f3(0.9 * u), class: "pt"});
-          el(svg, "text", {x: f3(p[0] - 5.5 * u), y: f3(-p[1] - 1.5 * u), "font-size": f3(5.5 * u), class: "label"}, nm);
+          named.push([nm, p, false]);
+        }
+        for (const g of spots(named, 1.5 * u)) {
+          el(svg, "text", {x: f3(g.p[0] - 5.5 * u), y: f3(-g.p[1] - 1.5 * u), "font-size": f3(5.5 * u), class: "label"},
+            g.names.join(", "));
         }
       }
       fp.segments.forEach((s, k) => {

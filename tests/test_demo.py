@@ -532,3 +532,28 @@ def test_cycle_plans_fill_their_panels_and_read_the_exact_velocities(browser, tm
             assert reach >= 0.3 * view[2], (k, svg)  # the frame's plan fills its panel
             widths.add(round(view[2], 3))
     assert len(widths) > 2 and errors == []
+
+
+def test_cycle_charts_read_zero_where_the_value_is_round_off():
+    # at φ = 0 the V-engine's bank B is at its dead centre: v_B is zero, not 1e-15
+    charts = {c["label"]: c for c in lesson(load_scene(SAMPLES / "v_engine_cycle.toml"), frames=12)["cycle"]["charts"]}
+    assert charts["v_B"]["phi_deg"][0] == 0 and charts["v_B"]["values"][0] == 0.0
+    for c in charts.values():
+        size = max(abs(v) for v in c["values"])
+        assert all(v == 0.0 or abs(v) > 1e-9 * size for v in c["values"] + c.get("nodes", [])), c["label"]
+
+
+def test_russian_cycle_view_labels_and_coincident_plan_points(browser, tmp_path):
+    f = tmp_path / "c.html"
+    f.write_text(page(SAMPLES / "v_engine_cycle.toml", frames=12, language="ru"), encoding="utf-8")
+    pg, errors, _ = _open(browser, f)
+    pg.click("#mode-cycle")
+    captions = pg.inner_text("#cyc-charts")
+    assert "M_пр, Н·м" in captions and "I_пр" in captions and "м/с²" in captions
+    assert "m/s" not in captions and "M_pr" not in captions
+    # φ = 0: the rod AC only translates, so a, c and s4 are one point of the velocity plan, one label
+    labels = pg.evaluate("[...document.querySelectorAll('#cyc-vel text.label')].map((t) => t.textContent)")
+    assert "a, c, s4" in labels and "a" not in labels
+    # only the panels the scene asks for share the row
+    assert pg.evaluate("document.getElementById('cyc-vel').closest('.stage').classList.contains('two')")
+    assert errors == []

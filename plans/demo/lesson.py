@@ -24,6 +24,7 @@ from plans.kinematics.plan import Plan, Step
 from plans.phrases import LANGUAGES
 from plans.results import Solution, solve_scene
 from plans.scene.model import Scene
+from plans.units import clean
 
 if TYPE_CHECKING:  # the force rooms are loaded only for a scene with forces
     from plans.forces.lever import LeverAnalysis
@@ -290,11 +291,16 @@ def _chart(label: str, unit: str, phi_deg: Any, values: Any, nodes: tuple[Any, A
     y = np.asarray(values, float)
     step = max(1, int(np.ceil(len(phi) / CHART_SAMPLES)))
     keep = np.unique(np.append(np.arange(0, len(phi), step), len(phi) - 1))
+    size = float(np.max(np.abs(y))) if y.size else 0.0  # round-off against the curve's size reads 0
+
+    def value(v: float) -> float:
+        return float(f"{clean(float(v), size):.6g}") + 0.0
+
     out: dict[str, Any] = {"label": label, "unit": unit, "phi_deg": [page_mm(x) for x in phi[keep]],
-                           "values": [float(f"{v:.6g}") + 0.0 for v in y[keep]]}
+                           "values": [value(v) for v in y[keep]]}
     if nodes is not None:
         out["nodes_deg"] = [page_mm(x) for x in np.asarray(nodes[0], float)]
-        out["nodes"] = [float(f"{v:.6g}") + 0.0 for v in np.asarray(nodes[1], float)]
+        out["nodes"] = [value(v) for v in np.asarray(nodes[1], float)]
     return out
 
 
