@@ -464,7 +464,9 @@ def coincident(b: Builder, link: int, name: str, X: C) -> tuple[str, C]:
     if link == b.snap.scene.frame:
         return b.pole, b.zero
     lb = f"{lab(name)}{link}"
-    xy = b.pencil.mark(b.image_at(link, X), lambda: image_span(b, link))
+    xy = b.image_at(link, X)
+    if not b.one:
+        xy = b.pencil.mark(xy, lambda: image_span(b, link))
     b.add(lb, xy)
     b.step("similarity", (b.anchor[link][0],), lb,
            lambda: phrase("coincident", lb=lb, link=link, name=name))
