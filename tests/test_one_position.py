@@ -198,3 +198,25 @@ def test_a_noisy_pencil_at_one_position_draws_over_arrays():
         for ra, rb in zip(a.readings, b.readings, strict=True):
             assert np.allclose(np.broadcast_to(ra[4], (50,)), np.broadcast_to(rb[4], (50,)), rtol=1e-12,
                                atol=1e-12 * float(np.max(ra[7])))
+
+
+@pytest.mark.parametrize("name, ks", [("v_engine", None), ("shaper", [3, 7]), ("six_link", [0, 5, 11])])
+def test_a_few_positions_are_built_one_by_one_as_together(name, ks):
+    """Up to ``ALONE_MAX`` positions are built each alone in numbers (numpy's cost per call
+    over arrays would outweigh them): what is read is what the positions built together read."""
+    kin = solve(load_scene(SAMPLES[0].parent / f"{name}.toml"), order=2)
+    mv, ma = construction._scales(kin, *construction.default_scales(kin))
+    assert mv is not None
+    if ks is None:  # every position of the scene
+        ks, few = list(range(kin.n)), construction.build_all(kin)
+    else:
+        few = construction.build_many(kin, ks, velocity_scale=mv, acceleration_scale=ma)
+    assert len(ks) <= construction.ALONE_MAX
+    together = construction._Together(kin, ks, mv, ma)
+    for i, pp in enumerate(few):
+        assert pp._source is not None and type(pp._source.ks) is int  # built alone
+        ref = together.position(i)
+        assert [r.quantity for r in pp.readings] == [r.quantity for r in ref.readings]
+        for ra, rb in zip(ref.readings, pp.readings, strict=True):
+            scale = max(abs(ra.exact), ra.ref, 1e-300)
+            assert abs(ra.value - rb.value) <= TOL * scale and abs(ra.exact - rb.exact) <= TOL * scale, ra.quantity

@@ -267,19 +267,33 @@ def build(kin: Kinematics, k: int, *, velocity_scale: float | None = None,
     return build_many(kin, [k], velocity_scale=velocity_scale, acceleration_scale=acceleration_scale)[0]
 
 
+#: Up to this many positions are each built alone, in Python numbers: over arrays numpy's
+#: cost per call (about 1.5 ms for both plans of the V-engine) outweighs 0.2-0.3 ms a position.
+ALONE_MAX = 4
+
+
+def _alone(kin: Kinematics, ks: Sequence[int], mv: float, ma: float | None) -> tuple[list[PositionPlans], list[int]]:
+    """Each position of ``ks`` built alone, in Python numbers (a lock names the first
+    position, as drawn), and the indices of those whose plans may run past ``LONGEST_MM``."""
+    built = [_Together(kin, int(k), mv, ma) for k in ks]
+    return [t.position(0) for t in built], [i for i, t in enumerate(built) if t.may_run_past(LONGEST_MM)]
+
+
 def build_many(kin: Kinematics, ks: Sequence[int], *, velocity_scale: float | None = None,
                acceleration_scale: float | None = None) -> list[PositionPlans]:
-    """Both plans at each position of ``ks``, built together (one construction over arrays)."""
+    """Both plans at each position of ``ks``: built together (one construction over arrays),
+    a few positions, or where a label differs between positions or a group locks, one by one."""
     mv, ma = _scales(kin, velocity_scale, acceleration_scale)
     if mv is None:
         return [PositionPlans(float(kin.phi_deg[k]), None, None, ()) for k in ks]
-    if len(ks) > 1:
+    if len(ks) > ALONE_MAX:
         try:
             together = _Together(kin, list(ks), mv, ma)
-        except (Mixed, Locked):  # one by one: the error names the first position, as drawn
-            return [build(kin, k, velocity_scale=mv, acceleration_scale=ma) for k in ks]
-        return [together.position(i) for i in range(len(ks))]
-    return [_Together(kin, int(ks[0]), mv, ma).position(0)]
+        except (Mixed, Locked):
+            pass
+        else:
+            return [together.position(i) for i in range(len(ks))]
+    return _alone(kin, ks, mv, ma)[0]
 
 
 def default_scales(kin: Kinematics) -> tuple[float, float]:
@@ -290,18 +304,23 @@ def default_scales(kin: Kinematics) -> tuple[float, float]:
 
 def build_all(kin: Kinematics) -> list[PositionPlans]:
     """Plans at every position of the scene, with one round scale for all (as on one sheet;
-    a position whose plan would run too long gets a round one of its own), built together; position by position only where a label differs between positions or a group
-    locks (the error then names the first position, as drawn one by one)."""
+    a position whose plan would run too long gets a round one of its own), built together;
+    position by position for a few positions, or where a label differs between positions or
+    a group locks (the error then names the first position, as drawn one by one)."""
     mv, ma = default_scales(kin)
     want_mv, want_ma = _scales(kin, mv, ma)
     if want_mv is None:
         return [PositionPlans(float(phi), None, None, ()) for phi in kin.phi_deg]
-    try:
-        together = _Together(kin, 0 if kin.n == 1 else slice(None), want_mv, want_ma)
-    except (Mixed, Locked):
-        return refit(kin, [build(kin, k, velocity_scale=mv, acceleration_scale=ma) for k in range(kin.n)], build)
-    return refit(kin, [together.position(k) for k in range(kin.n)], build,
-                 only=together.may_run_past(LONGEST_MM))
+    if kin.n > ALONE_MAX:
+        try:
+            together = _Together(kin, slice(None), want_mv, want_ma)
+        except (Mixed, Locked):
+            pass
+        else:
+            return refit(kin, [together.position(k) for k in range(kin.n)], build,
+                         only=together.may_run_past(LONGEST_MM))
+    plans, far = _alone(kin, range(kin.n), want_mv, want_ma)
+    return refit(kin, plans, build, only=far)
 
 
 __all__ = ["Reading", "PositionPlans", "build", "build_all", "build_many", "default_scales", "nice_scale"]
