@@ -122,25 +122,42 @@ class Flow:
     titles: Callable[[int], str]  # the heading of part n
 
 
+@dataclass(frozen=True, slots=True)
+class Whole:
+    """A position's block in every shape worth trying.  On the small formats (A3, A4), where
+    no shape fits the room left on a sheet with much of it still free, its panels flow
+    instead (continued on the next sheet): the sheet is not given up.  On A1 and A2 a position stays
+    whole on one sheet."""
+
+    shapes: list[Block]
+    flow: Flow | None
+
+
+#: A sheet with more of its area free than this takes the first part of a block that does
+#: not fit it whole, rather than being left behind (formats where positions flow).
+FREE_TO_FLOW = 0.3
+
+
 def blocks_of(groups: list[list[Panel]], area: Box, lang: str, numbers: dict[float, int],
               limit: Callable[[float], float], gap: float, spots: Spots,
-              single: Sequence[str]) -> list[list[Block] | Flow]:
+              single: Sequence[str], keep_whole: bool = True) -> list[Whole | Flow]:
     """Each group as a block in every shape worth trying, or as a :class:`Flow` when it
-    cannot fit one sheet; drawing-wide panels (``single`` kinds) stand alone."""
+    cannot fit one sheet; drawing-wide panels (``single`` kinds) stand alone.  With
+    ``keep_whole`` a block that fits one sheet never flows."""
     aw = area[2] - area[0]
     # room beside a drawing-wide panel (the plan of positions) is a width worth trying
     extra = [aw - p.width - gap for grp in groups for p in grp if p.kind in single and p.width < aw]
-    out: list[list[Block] | Flow] = []
+    out: list[Whole | Flow] = []
     for grp in groups:
         phi = grp[0].phi
         if grp[0].kind in single or phi is None:
-            out.extend([Block([(p, 0.0, 0.0)], p.width, p.height, p.phi)] for p in grp)
+            out.extend(Whole([Block([(p, 0.0, 0.0)], p.width, p.height, p.phi)], None) for p in grp)
             continue
         found, left = shapes(grp, aw, limit, gap, spots, heading(phi, numbers.get(phi), lang), extra)
-        if left:
-            out.append(Flow(tuple(grp), partial(heading, phi, numbers.get(phi), lang)))
-        else:
-            out.append(found)
+        flow = Flow(tuple(grp), partial(heading, phi, numbers.get(phi), lang))
+        out.append(flow if left else Whole(found, flow if len(grp) > 1 else None))
+    if keep_whole:
+        out = [Whole(b.shapes, None) if isinstance(b, Whole) else b for b in out]
     return out
 
 
@@ -182,44 +199,59 @@ def _part(flow: Flow, rest: list[Panel], n: int, area: Box, taken: Sequence[Box]
     return best[1], best[2], best[3], best[4]
 
 
-def place_blocks(blks: list[list[Block] | Flow], taken: list[list[Box]], area: Box, gap: float,
+def _free(area: Box, taken: Sequence[Box]) -> float:
+    """The fraction of a sheet's area no box covers (the boxes do not overlap)."""
+    whole = (area[2] - area[0]) * (area[3] - area[1])
+    return 1.0 - sum((t[2] - t[0]) * (t[3] - t[1]) for t in taken) / whole
+
+
+def place_blocks(blks: list[Whole | Flow], taken: list[list[Box]], area: Box, gap: float,
                  spots: Spots) -> tuple[list[list[tuple[Block, float, float]]], list[list[Box]]]:
     """Blocks one after another on the sheets (pinned panels already there): each in the
     shape and spot that keep the current sheet's skyline lowest (a shape that leaves room
-    for the next block wins), else on the next sheet.  Returns the blocks per sheet and
-    every sheet's taken boxes."""
+    for the next block wins), else on the next sheet; a block that fits no room left on a
+    sheet with much of it free flows over it and the next in parts.  Returns the blocks per
+    sheet and every sheet's taken boxes."""
     tks = [list(t) for t in taken]
     out: list[list[tuple[Block, float, float]]] = [[] for _ in tks]
     tb = tks[0][0]
     cur = 0
     prev: Box | None = None
-    for n, options in enumerate(blks):
-        if isinstance(options, Flow):
-            rest, part = list(options.panels), 0
-            while rest:
-                got = _part(options, rest, part, area, tks[cur], prev, gap, spots)
-                if got is None and not out[cur] and len(tks[cur]) == 1:  # too big for a frame: alone
-                    p = rest[0]
-                    got = Block([(p, 0.0, 0.0)], p.width, p.height, p.phi), rest[1:], area[0], area[1]
-                if got is None:
-                    cur, prev = cur + 1, None
-                    if cur == len(tks):
-                        tks.append([tb])
-                        out.append([])
-                    continue
-                b, rest, x, y = got
-                box = (x, y, x + b.width, y + b.height)
-                tks[cur].append(box)
-                out[cur].append((b, x, y))
-                prev, part = box, part + 1
-                if rest:  # the part took what this sheet had for it: the next part, the next sheet
-                    cur, prev = cur + 1, None
-                    if cur == len(tks):
-                        tks.append([tb])
-                        out.append([])
+
+    def next_sheet() -> None:
+        nonlocal cur, prev
+        cur, prev = cur + 1, None
+        if cur == len(tks):
+            tks.append([tb])
+            out.append([])
+
+    def flow(f: Flow) -> None:
+        nonlocal prev
+        rest, part = list(f.panels), 0
+        while rest:
+            got = _part(f, rest, part, area, tks[cur], prev, gap, spots)
+            if got is None and not out[cur] and len(tks[cur]) == 1:  # too big for a frame: alone
+                p = rest[0]
+                got = Block([(p, 0.0, 0.0)], p.width, p.height, p.phi), rest[1:], area[0], area[1]
+            if got is None:
+                next_sheet()
+                continue
+            b, rest, x, y = got
+            box = (x, y, x + b.width, y + b.height)
+            tks[cur].append(box)
+            out[cur].append((b, x, y))
+            prev, part = box, part + 1
+            if rest:  # the part took what this sheet had for it: the next part, the next sheet
+                next_sheet()
+
+    for n, item in enumerate(blks):
+        if isinstance(item, Flow):
+            flow(item)
             continue
-        after = blks[n + 1] if n + 1 < len(blks) else []
-        after = [] if isinstance(after, Flow) else after
+        options = item.shapes
+        after_item = blks[n + 1] if n + 1 < len(blks) else None
+        after = after_item.shapes if isinstance(after_item, Whole) else []
+        flowed = False
         while True:
             best = None
             for b in options:
@@ -235,10 +267,14 @@ def place_blocks(blks: list[list[Block] | Flow], taken: list[list[Box]], area: B
                 break
             if not out[cur] and len(tks[cur]) == 1:  # pragma: no cover - blocks fit an empty sheet
                 raise ValueError(f"a block of {options[0].width:.0f}×{options[0].height:.0f} mm does not fit")
-            cur, prev = cur + 1, None
-            if cur == len(tks):
-                tks.append([tb])
-                out.append([])
+            if item.flow is not None and _free(area, tks[cur]) > FREE_TO_FLOW:
+                flow(item.flow)
+                flowed = True
+                break
+            next_sheet()
+        if flowed:
+            continue
+        assert best is not None
         _, b, spot = best
         box = (spot[0], spot[1], spot[0] + b.width, spot[1] + b.height)
         tks[cur].append(box)

@@ -478,7 +478,8 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str | None = "
         return ah if w <= aw - TB_W - GAP + 1e-9 else ah - TB_H - GAP
 
     spots = free_spots(GAP)
-    blks = blocks_of(groups, area, spec.language, numbers or {}, limit, GAP, spots, _SINGLE)
+    blks = blocks_of(groups, area, spec.language, numbers or {}, limit, GAP, spots, _SINGLE,
+                     keep_whole=spec.format in _WHOLE_POSITIONS)
     best, tks = place_blocks(blks, taken, area, GAP, spots)
     if legend is not None:
         s, x, y = place_note(legend.width, legend.height, area, tks, GAP, spots)
@@ -509,6 +510,7 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str | None = "
 
 
 _SINGLE = ("positions", "legend")  # drawing-wide panels: a block of their own
+_WHOLE_POSITIONS = ("A1", "A2")  # formats where each position stays whole on one sheet
 
 
 def _check_fits(p: Panel, spec: SheetSpec, path: str) -> None:

@@ -134,6 +134,19 @@ def test_a3_blocks_split_only_into_consecutive_parts_in_angle_order(name):
         assert len(heads) >= len(s) and all(h.endswith("(продолжение)") for h in heads[1:])
 
 
+@pytest.mark.parametrize("name", ["slider_crank", "scotch_yoke"])
+def test_a3_first_sheet_is_not_left_to_the_plan_of_positions(name):
+    """On A3 the first position's block does not fit whole beside the plan of positions: it
+    starts there and continues on the next sheet, instead of leaving sheet 1 nearly empty."""
+    d = draw(SAMPLES / f"{name}.toml", format="A3")
+    first = d.sheets[0]
+    assert first.placed[0][0].kind == "positions"
+    assert any(p.phi is not None for p, _, _ in first.placed)
+    assert _fill(first) >= 0.38
+    for sh in d.sheets:
+        _check_sheet(sh)
+
+
 def _check_sheet(sh) -> None:
     area = shapely.box(*usable(sh.width, sh.height))
     tb = shapely.box(*sh.title_box)
