@@ -150,11 +150,14 @@ class _Together:
     def may_run_past(self, longest_mm: float) -> list[int]:
         """The positions where a plan's largest distance from the pole (:attr:`Plan.extent`)
         may exceed ``longest_mm``, from the arrays (with a margin for rounding)."""
-        far: Any = np.zeros(len(self.phi), dtype=bool)
-        for b in (self.vb, self.ab):
-            if b is not None:
-                for name in b.order:
-                    far = far | (abs(b.pts[name]) > longest_mm * (1 - 1e-9))
+        limit = longest_mm * (1 - 1e-9)
+        plans = [b for b in (self.vb, self.ab) if b is not None]
+        if type(self.ks) is int:  # one position: numbers
+            return [0] if any(abs(b.pts[name]) > limit for b in plans for name in b.order) else []
+        far = np.zeros(len(self.phi), dtype=bool)
+        for b in plans:
+            for name in b.order:
+                far |= np.abs(b.pts[name]) > limit
         return np.flatnonzero(far).tolist()
 
     def readings(self, k: int) -> tuple[Reading, ...]:
@@ -272,11 +275,10 @@ def build(kin: Kinematics, k: int, *, velocity_scale: float | None = None,
 ALONE_MAX = 4
 
 
-def _alone(kin: Kinematics, ks: Sequence[int], mv: float, ma: float | None) -> tuple[list[PositionPlans], list[int]]:
+def _alone(kin: Kinematics, ks: Sequence[int], mv: float, ma: float | None) -> list[_Together]:
     """Each position of ``ks`` built alone, in Python numbers (a lock names the first
-    position, as drawn), and the indices of those whose plans may run past ``LONGEST_MM``."""
-    built = [_Together(kin, int(k), mv, ma) for k in ks]
-    return [t.position(0) for t in built], [i for i, t in enumerate(built) if t.may_run_past(LONGEST_MM)]
+    position, as drawn)."""
+    return [_Together(kin, int(k), mv, ma) for k in ks]
 
 
 def build_many(kin: Kinematics, ks: Sequence[int], *, velocity_scale: float | None = None,
@@ -293,7 +295,7 @@ def build_many(kin: Kinematics, ks: Sequence[int], *, velocity_scale: float | No
             pass
         else:
             return [together.position(i) for i in range(len(ks))]
-    return _alone(kin, ks, mv, ma)[0]
+    return [t.position(0) for t in _alone(kin, ks, mv, ma)]
 
 
 def default_scales(kin: Kinematics) -> tuple[float, float]:
@@ -319,8 +321,9 @@ def build_all(kin: Kinematics) -> list[PositionPlans]:
         else:
             return refit(kin, [together.position(k) for k in range(kin.n)], build,
                          only=together.may_run_past(LONGEST_MM))
-    plans, far = _alone(kin, range(kin.n), want_mv, want_ma)
-    return refit(kin, plans, build, only=far)
+    alone = _alone(kin, range(kin.n), want_mv, want_ma)
+    return refit(kin, [t.position(0) for t in alone], build,
+                 only=[k for k, t in enumerate(alone) if t.may_run_past(LONGEST_MM)])
 
 
 __all__ = ["Reading", "PositionPlans", "build", "build_all", "build_many", "default_scales", "nice_scale"]
