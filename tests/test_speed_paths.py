@@ -230,3 +230,52 @@ def test_one_position_reads_like_any_other():
         assert all(isinstance(x, np.ndarray) and x.shape == (1,) for x in k.point("B"))
         assert all(c.shape == (1,) for c in k.conditions.values())
     assert np.array_equal(one.point("B")[2], twin.point("B")[2])
+
+
+def test_what_waits_until_read_reads_as_the_general_solvers_give_it(monkeypatch):
+    """Over arrays the fast path leaves a link's rotation, a slider's v and a and a group's
+    condition until they are read: read after a copy, and after the points, they are
+    arrays over the positions equal to the general solvers', and the reach (the largest
+    |r| of the points) is theirs too."""
+    import copy
+
+    sc = load_scene(Path(__file__).resolve().parent.parent / "samples" / "v_engine.toml")
+    phis = np.linspace(0.0, 360.0, 360, endpoint=False) + 7.5
+    kin = exact.solve(sc, phis, order=2)
+    twin = copy.deepcopy(kin)
+    monkeypatch.setattr(exact.fast, "plan_for", lambda *a: None)
+    slow = exact.solve(sc, phis, order=2)
+    w = abs(sc.driver.omega)
+    for k in (kin, twin):
+        for nm in k.point_names():
+            k.point(nm)
+        for lid, m in slow.motion.items():
+            for f in FIELDS:
+                x, y = getattr(k.motion[lid], f), getattr(m, f)
+                assert isinstance(x, np.ndarray) and x.shape == (360,), (lid, f)
+                assert np.max(np.abs(x - y)) <= 1e-12 * _scale(sc, f), (lid, f)
+        for g, c in slow.conditions.items():
+            assert isinstance(k.conditions[g], np.ndarray) and np.allclose(k.conditions[g], c, rtol=1e-9, atol=0)
+        assert abs(k.reach() - slow.reach()) <= 1e-15 * slow.reach()
+        for nm in ("B", "C"):
+            assert np.max(np.abs(k.point(nm)[1] - slow.point(nm)[1])) <= 1e-12 * w
+    # the pistons are farthest from the crank's pivot (the origin) at their outer dead
+    # centres, OA + AB away; the positions pass within half a degree of them
+    r, l = 0.035, 0.1207
+    assert (r + l) * (1 - 1e-4) <= kin.reach() <= (r + l) * (1 + 1e-15)
+
+
+def test_the_lever_arm_read_when_asked_is_the_distance_from_the_pole():
+    """A lever force's arm (worked out where it is read) is the distance from the pole to
+    the force's line: |w × F| / |F| from the plane vectors' components."""
+    from plans.forces.analysis import kinetostatics
+
+    sc = load_scene(Path(__file__).resolve().parent.parent / "samples" / "v_engine.toml")
+    _, lv = kinetostatics(sc, exact.solve(sc, np.linspace(0.0, 360.0, 36, endpoint=False) + 2.5, order=2))
+    for it in lv.forces:
+        w = np.stack([it.w.real, it.w.imag], axis=-1)
+        F = np.stack([it.F.real, it.F.imag], axis=-1)
+        mag = np.hypot(F[:, 0], F[:, 1])
+        h = np.abs(w[:, 0] * F[:, 1] - w[:, 1] * F[:, 0]) / np.where(mag > 0, mag, 1.0)
+        assert np.allclose(it.arm, np.where(mag > 0, h, 0.0), rtol=1e-12, atol=1e-12 * np.max(np.abs(it.w)))
+        assert it.arm is it.arm  # worked out once

@@ -11,7 +11,7 @@ force ⟂ crank at its point follows from the moment sum about the pole.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -40,7 +40,15 @@ class LeverForce:
     w: C  # plan mm
     F: C  # N
     moment: R  # cross(w, F), N·mm about the pole
-    arm: R  # |moment| / |F|, mm (0 for a zero force)
+    #: the arm once worked out (it is read only where a position is drawn or printed)
+    _arm: list = field(default_factory=list, repr=False, compare=False)
+
+    @property
+    def arm(self) -> R:
+        """|moment| / |F|, mm (0 for a zero force)."""
+        if not self._arm:
+            self._arm.append(safe_div(np.abs(self.moment), np.abs(self.F)))
+        return self._arm[0]
 
 
 @dataclass(frozen=True, slots=True)
@@ -83,16 +91,18 @@ def zhukovsky_lever(fa: ForceAnalysis, scale: float | None = None) -> LeverAnaly
         assert v is not None
         w = rot * v
         mom = cross(w, F)
-        items.append(LeverForce(label, link, point, w, F, mom, safe_div(np.abs(mom), np.abs(F))))
+        items.append(LeverForce(label, link, point, w, F, mom))
         return v
 
     for f in fa.applied.forces:
-        v = add(f.label, f.link, _image_name(f.point), f.local, f.F)
-        power = power + (f.F.conjugate() * v).real  # F·v
+        # at a named point the same local coordinates at every position: its v read once
+        local = scene.links[f.link].points.get(f.point, f.local)
+        v = add(f.label, f.link, _image_name(f.point), local, f.F)
+        power += (f.F.conjugate() * v).real  # F·v
     for m in fa.applied.moments:
         for label, link, pt, local, F in _couple(fa, m):
             add(label, link, pt, local, F)
-        power = power + m.M * kin.omega(m.link)  # M·ω, not through the couple's forces
+        power += m.M * kin.omega(m.link)  # M·ω, not through the couple's forces
 
     crank = fa.crank
     link1 = scene.driver.link
@@ -102,7 +112,7 @@ def zhukovsky_lever(fa: ForceAnalysis, scale: float | None = None) -> LeverAnaly
     w_bal = rot * v_bal
     total = np.zeros(n)
     for it in items:
-        total = total + it.moment
+        total += it.moment
     omega1 = kin.omega(link1)
     valid = omega1 != 0
     arm_bal = np.abs(cross(w_bal, crank.e_bal))  # a moment is drawn as ±M/l at o and at this point
@@ -150,8 +160,9 @@ def _couple(fa: ForceAnalysis, m: AppliedMoment):
         nX, nY = link.axis[0], link.axis[0] + "'"
     X = kin.point_on(m.link, zX)[0]
     Y = kin.point_on(m.link, zY)[0]
-    l = np.abs(Y - X)
-    f = m.M / l * 1j * unit_vector(Y - X)  # cross(Y − X, f) = M
+    XY = Y - X
+    l = np.abs(XY)
+    f = m.M / l * 1j * unit_vector(XY)  # cross(Y − X, f) = M
     return ((f"{m.label}'", m.link, _image_name(nY), zY, f),
             (f"{m.label}''", m.link, _image_name(nX), zX, -f))
 

@@ -494,6 +494,9 @@ class AppliedLoads:
 
 def _extent(kin: Any) -> float:
     """The mechanism's reach from the origin (m) over the positions, for what counts as dust."""
+    reach = getattr(kin, "reach", None)  # worked out once by the exact analysis
+    if reach is not None:
+        return reach()
     return max((float(np.max(np.abs(kin.point(nm)[0]))) for nm in kin.point_names()), default=1.0) or 1.0
 
 
@@ -529,7 +532,7 @@ def apply_loads(scene: Scene, loads: Loads, kin: Any) -> AppliedLoads:
                 moments.append(AppliedMoment(f"M_Phi{lid}", lid, rest, "inertia"))
         else:
             if m > 0:
-                forces.append(AppliedForce(f"Phi{lid}", lid, s_name, r, np.full(n, z), phi, "inertia"))
+                forces.append(AppliedForce(f"Phi{lid}", lid, s_name, r, _same(n, z), phi, "inertia"))
             if inert > 0:
                 moments.append(AppliedMoment(f"M_Phi{lid}", lid, m_phi, "inertia"))
     for gl in loads.gas:
@@ -563,25 +566,36 @@ def apply_loads(scene: Scene, loads: Loads, kin: Any) -> AppliedLoads:
     return AppliedLoads(tuple(forces), tuple(moments))
 
 
+def _same(n: int, z: complex) -> C:
+    """A point's local coordinates at each of n positions (np.full without its Python wrapper)."""
+    out = np.empty(n, complex)
+    out.fill(z)
+    return out
+
+
 def _gas_force(scene: Scene, kin: Any, gl: GasLoad) -> AppliedForce:
     joint = next(j for j in scene.joints if j.name == gl.joint)
     assert joint.guide is not None
     z = scene.links[gl.link].points[joint.point]
     r, v, a = kin.point_on(gl.link, z)
-    carrier = kin.motion[joint.guide.link]
-    rot = carrier.rot
-    u = rot * joint.guide.direction
+    u: Any
+    if joint.guide.link == scene.frame:  # the same direction at every position
+        u = joint.guide.direction
+    else:
+        u = kin.motion[joint.guide.link].rot * joint.guide.direction
     e_down = _toward_pivot(scene, r, u)
     # stroke: the sign of the piston's velocity toward the pivot; at a dead centre (v = 0)
     # the acceleration says which stroke begins
-    vd = (v * np.conj(e_down)).real
-    ad = (a * np.conj(e_down)).real if a is not None else np.zeros_like(vd)
+    ce = np.conj(e_down)
+    vd = (v * ce).real
+    ad = (a * ce).real if a is not None else np.zeros_like(vd)
     # zero up to round-off against the mechanism's own speed (ω × its reach), not against the
     # positions asked for: a dead centre solved alone gives the same stroke as in the whole turn
     moving = np.abs(vd) > DUST * abs(scene.driver.omega) * _extent(kin)
     down = np.where(moving, vd > 0, ad >= 0)
+    p: Any
     if gl.pressure is not None:
-        p = np.full(kin.n, gl.pressure)
+        p = gl.pressure  # the same at every position
     else:
         # travel from the outer dead centre (the extreme position away from the pivot)
         s = np.clip(_travel(scene, kin, gl.joint, gl.link) - gl.outer, 0.0, gl.stroke)
@@ -590,12 +604,11 @@ def _gas_force(scene: Scene, kin: Any, gl: GasLoad) -> AppliedForce:
             if side in gl.diagram:
                 ts, ps = gl.diagram[side]
                 p = np.where(mask, np.interp(s, ts, ps), p)
-    active = np.zeros(kin.n, dtype=bool)
     if "down" in gl.strokes:
-        active |= down
-    if "up" in gl.strokes:
-        active |= ~down
+        active = np.ones(kin.n, dtype=bool) if "up" in gl.strokes else down
+    else:
+        active = ~down if "up" in gl.strokes else np.zeros(kin.n, dtype=bool)
     direction = e_down if gl.toward_pivot else -e_down
     F = np.where(active, p * gl.area, 0.0) * direction
-    return AppliedForce(gl.name, gl.link, joint.point, r, np.full(kin.n, z), F, "gas")
+    return AppliedForce(gl.name, gl.link, joint.point, r, _same(kin.n, z), F, "gas")
 

@@ -34,7 +34,9 @@ Plane vectors are complex numbers, ``cross(a, b) = Im(conj(a)·b)``.
 
 from __future__ import annotations
 
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -112,7 +114,7 @@ class GroupForces:
     moments_j: tuple[AppliedMoment, ...]
     reactions: tuple[Reaction, Reaction, Reaction]  # J1 (on i from p), J2 (on i from j), J3 (on j from q)
     #: lever arms h (m) of the moment equations: (equation, label) -> |arm| over positions
-    arms: dict[tuple[str, str], R] = field(default_factory=dict)
+    arms: Mapping[tuple[str, str], R] = field(default_factory=dict)
 
 
 @dataclass(frozen=True, slots=True)
@@ -127,7 +129,7 @@ class CrankForces:
     F_bal: R  # along e_bal (force mode), N; 0 in moment mode
     M_bal: R  # balancing moment about the pivot, N·m ccw+ (F_bal·l in force mode)
     frame: Reaction  # on the crank from the frame
-    arms: dict[str, R] = field(default_factory=dict)
+    arms: Mapping[str, R] = field(default_factory=dict)
 
 
 @dataclass(frozen=True, slots=True)
@@ -216,7 +218,7 @@ def _bound(kin: Kinematics, link: int, r: C, F: C, label: str, point: str) -> Ap
 def _sum(fs: list[AppliedForce] | tuple[AppliedForce, ...], n: int) -> C:
     out = np.zeros(n, complex)
     for f in fs:
-        out = out + f.F
+        out += f.F
     return out
 
 
@@ -224,10 +226,35 @@ def _moment(fs, ms, P: C, n: int) -> R:
     """ΣM about P of the forces (cross(r − P, F)) and couples, ccw+."""
     out = np.zeros(n)
     for f in fs:
-        out = out + cross(f.r - P, f.F)
+        out += cross(f.r - P, f.F)
     for m in ms:
-        out = out + m.M
+        out += m.M
     return out
+
+
+class _ArmsWhenRead(Mapping):
+    """Lever arms worked out when first read: a drawn, printed or checked position reads
+    them, the analysis never does."""
+
+    __slots__ = ("_make", "_done")
+
+    def __init__(self, make: Callable[[], dict]) -> None:
+        self._make = make
+        self._done: dict | None = None
+
+    def _arms(self) -> dict:
+        if self._done is None:
+            self._done = self._make()
+        return self._done
+
+    def __getitem__(self, key: Any) -> R:
+        return self._arms()[key]
+
+    def __iter__(self) -> Iterator:
+        return iter(self._arms())
+
+    def __len__(self) -> int:
+        return len(self._arms())
 
 
 def _arms(eq: str, fs, P: C) -> dict[tuple[str, str], R]:
@@ -244,7 +271,7 @@ def _guide(kin: Kinematics, jt: Joint) -> C:
     return kin.motion[jt.guide.link].rot * jt.guide.direction
 
 
-def _check(kin: Kinematics, g: Group, det: R, scale: R, point: str) -> None:
+def _check(kin: Kinematics, g: Group, det: R, scale: R | float, point: str) -> None:
     bad = np.abs(det) <= 1e-12 * scale
     if bad.any():
         k = int(np.flatnonzero(bad)[0])
@@ -252,8 +279,9 @@ def _check(kin: Kinematics, g: Group, det: R, scale: R, point: str) -> None:
                      group=f"{g.kind} {g.name}", point=point, phi_deg=float(kin.phi_deg[k]))
 
 
-def _solve2(c1: C, c2: C, rhs: C) -> tuple[R, R]:
-    det = cross(c1, c2)
+def _solve2(c1: C, c2: C, rhs: C, det: R | None = None) -> tuple[R, R]:
+    if det is None:
+        det = cross(c1, c2)
     return cross(rhs, c2) / det, cross(c1, rhs) / det
 
 
@@ -266,19 +294,23 @@ def _rrr(kin: Kinematics, g: Group, forces, moments) -> GroupForces:
     B = kin.point(j2.point, i)[0]
     Cc = kin.point(j3.point, j)[0]
     fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
-    ui, uj = unit_vector(B - A), unit_vector(B - Cc)
-    li, lj = np.abs(B - A), np.abs(B - Cc)
+    BA, BC = B - A, B - Cc
+    ui, uj = unit_vector(BA), unit_vector(BC)
+    li, lj = np.abs(BA), np.abs(BC)
     ei, ej = 1j * ui, 1j * uj
     t_i = _moment(fi, mi, B, n) / li  # ΣM_B(i): −l·F^τ + M_i(B) = 0
     t_j = _moment(fj, mj, B, n) / lj
-    rest = _sum(fi, n) + _sum(fj, n) + t_i * ei + t_j * ej
-    _check(kin, g, cross(ui, uj), np.ones(n), j2.point)
-    n_i, n_j = _solve2(ui, uj, -rest)
+    sum_i = _sum(fi, n)
+    rest = sum_i + _sum(fj, n) + t_i * ei + t_j * ej
+    det = cross(ui, uj)
+    _check(kin, g, det, 1.0, j2.point)
+    n_i, n_j = _solve2(ui, uj, -rest, det)
     F_ip = t_i * ei + n_i * ui
     F_jq = t_j * ej + n_j * uj
-    F_ij = -_sum(fi, n) - F_ip
+    F_ij = -sum_i - F_ip
     zero = np.zeros(n)
-    arms = _arms(f"M_{j2.point}({i})", fi, B) | _arms(f"M_{j2.point}({j})", fj, B)
+    ti, tj = tuple(fi), tuple(fj)
+    arms = _ArmsWhenRead(lambda: _arms(f"M_{j2.point}({i})", ti, B) | _arms(f"M_{j2.point}({j})", tj, B))
     return GroupForces(g, tuple(fi), tuple(fj), tuple(mi), tuple(mj), (
         Reaction(j1, i, p, A, F_ip, zero, tau=t_i, n=n_i, e_tau=ei, e_n=ui),
         Reaction(j2, i, j, B, F_ij, zero),
@@ -294,20 +326,24 @@ def _rrp(kin: Kinematics, g: Group, forces, moments) -> GroupForces:
     A = kin.point(j1.point, i)[0]
     B = kin.point(j2.point, i)[0]
     fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
-    ui, li = unit_vector(B - A), np.abs(B - A)
+    BA = B - A
+    ui, li = unit_vector(BA), np.abs(BA)
     ei = 1j * ui
     u3 = _guide(kin, j3)
     n3 = 1j * u3
     t_i = _moment(fi, mi, B, n) / li
-    rest = _sum(fi, n) + _sum(fj, n) + t_i * ei
-    _check(kin, g, cross(ui, n3), np.ones(n), j2.point)
-    n_i, N = _solve2(ui, n3, -rest)
+    sum_i = _sum(fi, n)
+    rest = sum_i + _sum(fj, n) + t_i * ei
+    det = cross(ui, n3)
+    _check(kin, g, det, 1.0, j2.point)
+    n_i, N = _solve2(ui, n3, -rest, det)
     F_ip = t_i * ei + n_i * ui
-    F_ij = -_sum(fi, n) - F_ip
+    F_ij = -sum_i - F_ip
     M_jq = -_moment(fj, mj, B, n)  # ΣM_B(j): the guide's couple; F_ji and N pass through B
     zero = np.zeros(n)
-    arms = _arms(f"M_{j2.point}({i})", fi, B)
-    return GroupForces(g, tuple(fi), tuple(fj), tuple(mi), tuple(mj), (
+    ti = tuple(fi)
+    arms = _ArmsWhenRead(lambda: _arms(f"M_{j2.point}({i})", ti, B))
+    return GroupForces(g, ti, tuple(fj), tuple(mi), tuple(mj), (
         Reaction(j1, i, p, A, F_ip, zero, tau=t_i, n=n_i, e_tau=ei, e_n=ui),
         Reaction(j2, i, j, B, F_ij, zero),
         Reaction(j3, j, q, B, N * n3, M_jq, guide=u3),
@@ -350,7 +386,7 @@ def _prp(kin: Kinematics, g: Group, forces, moments) -> GroupForces:
     fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
     u1, u3 = _guide(kin, j1), _guide(kin, j3)
     n1, n3 = 1j * u1, 1j * u3
-    _check(kin, g, cross(n1, n3), np.ones(n), j2.point)
+    _check(kin, g, cross(n1, n3), 1.0, j2.point)
     N1, N3 = _solve2(n1, n3, -(_sum(fi, n) + _sum(fj, n)))
     F_ij = -_sum(fi, n) - N1 * n1
     M1 = -_moment(fi, mi, B, n)
@@ -375,7 +411,7 @@ def _rpp(kin: Kinematics, g: Group, forces, moments) -> GroupForces:
     n2, n3 = 1j * u2, 1j * u3
     M_ij = -_moment(fi, mi, A, n)  # ΣM_A(block)
     # j's polygon: F_j − N2 n2 + N3 n3 = 0 (the slot's reaction on j is −F_ij)
-    _check(kin, g, cross(n2, n3), np.ones(n), j2.point)
+    _check(kin, g, cross(n2, n3), 1.0, j2.point)
     N2m, N3 = _solve2(-n2, n3, -_sum(fj, n))
     F_ij = N2m * n2
     # ΣM_K(j): M_j(K) + cross(A − K, −F_ij) − M_ij + M_jq = 0
@@ -412,10 +448,15 @@ def _crank(scene: Scene, kin: Kinematics, loads: Loads, forces, moments) -> Cran
         F_frame = -_sum(f1, n)
     joint = next(jt for jt in scene.joints if set(jt.links) == {link, scene.frame})
     frame = Reaction(joint, link, scene.frame, O, F_frame, np.zeros(n))
-    arms = {f.label: safe_div(np.abs(cross(f.r - O, f.F)), np.abs(f.F)) for f in f1}
-    arms["F_bal"] = l
-    return CrankForces(link, tuple(f1), tuple(m1), loads.balancing.kind, loads.balancing.point, P, e,
-                       F_bal, M_bal, frame, arms)
+    t1 = tuple(f1)
+
+    def arms() -> dict[str, Any]:
+        out = {f.label: safe_div(np.abs(cross(f.r - O, f.F)), np.abs(f.F)) for f in t1}
+        out["F_bal"] = l
+        return out
+
+    return CrankForces(link, t1, tuple(m1), loads.balancing.kind, loads.balancing.point, P, e,
+                       F_bal, M_bal, frame, _ArmsWhenRead(arms))
 
 
 # --------------------------------------------------------------------------- force polygons (drawing)

@@ -17,6 +17,8 @@ if TYPE_CHECKING:
 C = NDArray[np.complex128]
 R = NDArray[np.float64]
 
+_all = np.logical_and.reduce  # every element true (non-zero), without ndarray.all's Python wrapper
+
 #: What a draftsman reads off a ruler, mm (readings are rounded to this).
 RULER_MM = 0.5
 #: Round values of K = 1/μ (unit per mm), times powers of ten; the longest vector lands
@@ -47,15 +49,18 @@ def unit_vector(z: C) -> C:
     subnormal |z| overflows inside)."""
     mag = np.abs(z)
     some = mag > 0
-    if some.all():  # the usual case: no zero to leave out
-        return np.real(z) / mag + 1j * (np.imag(z) / mag)
+    if _all(some):  # the usual case: no zero to leave out (both parts divided in place)
+        out = np.empty(mag.shape, complex)
+        np.divide(np.real(z), mag, out=out.real)
+        np.divide(np.imag(z), mag, out=out.imag)
+        return out
     safe = np.where(some, mag, 1.0)
     return np.where(some, np.real(z) / safe + 1j * (np.imag(z) / safe), 1.0 + 0j)
 
 
 def safe_div(a: R, b: R) -> R:
     """a / b, and 0 where b = 0."""
-    nz = b != 0
-    if nz.all():  # the usual case, in one division
+    if _all(b):  # the usual case (nothing zero), in one division
         return a / b
+    nz = b != 0
     return np.where(nz, a / np.where(nz, b, 1.0), 0.0)

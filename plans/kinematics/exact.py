@@ -25,7 +25,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from plans.errors import Locked, NotAssemblable
-from plans.kinematics import fast
+from plans.kinematics import fast, fast_arrays
 from plans.kinematics.structure import Group, Structure, analyse
 from plans.scene.model import Joint, Scene
 from plans.tolerances import ASSEMBLY_REL, LOCK_SIN
@@ -86,11 +86,17 @@ class Kinematics:
 
     def home(self, name: str) -> int:
         """The link a named point is read from (lowest number, frame last)."""
-        links = self.scene.point_links(name)
-        if not links:
-            raise KeyError(name)
-        moving = [k for k in links if k != self.scene.frame]
-        return min(moving) if moving else self.scene.frame
+        homes = self.scene.memo.get("homes")
+        if homes is None:
+            homes = self.scene.memo["homes"] = {}
+        got = homes.get(name)
+        if got is None:
+            links = self.scene.point_links(name)
+            if not links:
+                raise KeyError(name)
+            moving = [k for k in links if k != self.scene.frame]
+            got = homes[name] = min(moving) if moving else self.scene.frame
+        return got
 
     def local(self, link: int, name: str) -> complex:
         if link == self.scene.frame:
@@ -107,10 +113,13 @@ class Kinematics:
                 rot, r0, w, v0, e, a0 = m.raw()
             else:
                 rot, r0, w, v0, e, a0 = m.rot, m.r0, m.omega, m.v0, m.eps, m.a0
-            rel = rot * z
-            r = r0 + rel
-            v = None if w is None else v0 + 1j * w * rel
-            a = None if e is None else a0 + (1j * e - w * w) * rel
+            if key is not None and not z:  # the link's origin: its own motion
+                r, v, a = r0, None if w is None else v0, None if e is None else a0
+            else:
+                rel = rot * z
+                r = r0 + rel
+                v = None if w is None else v0 + 1j * w * rel
+                a = None if e is None else a0 + (1j * e - w * w) * rel
             done = (r, v, a) if type(r) is np.ndarray and (w is None or type(v) is np.ndarray) and \
                 (e is None or type(a) is np.ndarray) else self._arrays(r, v, a)
             if key is not None:
@@ -124,7 +133,7 @@ class Kinematics:
         def arr(x: Any) -> Any:
             if x is None or type(x) is np.ndarray:
                 return x
-            return np.array((x,), dtype=complex) if n == 1 else np.full(n, x, dtype=complex)
+            return np.array((x,), dtype=complex) if n == 1 else _full(n, x, complex)
         return arr(r), arr(v), arr(a)
 
     def point(self, name: str, link: int | None = None) -> tuple[C, C, C]:
@@ -144,6 +153,16 @@ class Kinematics:
     def theta(self, link: int) -> R:
         return self.motion[link].theta
 
+    def reach(self) -> float:
+        """The mechanism's reach from the origin (m) over the positions: the largest |r| of
+        its points (1 where all are at the origin), worked out once."""
+        d = self.__dict__
+        got = d.get("_reach")
+        if got is None:
+            got = d["_reach"] = max((float(np.maximum.reduce(np.abs(self.point(nm)[0]))) for nm in self.point_names()),
+                                    default=1.0) or 1.0
+        return got
+
     def point_names(self) -> list[str]:
         names: list[str] = []
         for link in [self.scene.links[k] for k in sorted(self.scene.links)]:
@@ -155,8 +174,8 @@ class Kinematics:
 
 def _unpacked(kin: Kinematics, name: str) -> Any:
     """What the fast path solved, made into the readings' objects when first read: the
-    motions (and, at one position, the angle, slides and conditions as arrays; the solve
-    itself stays in Python numbers)."""
+    motions and the conditions (and, at one position, the angle and slides as arrays; the
+    solve itself stays in Python numbers)."""
     d = kin.__dict__
     if name == "phi_deg" and "_phi" in d:
         arr = d[name] = np.array((d["_phi"],))
@@ -169,8 +188,10 @@ def _unpacked(kin: Kinematics, name: str) -> Any:
         d[name] = _columns(len(kin.phi_deg), motion)
     elif name == "slides":
         d[name] = {nm: (np.array((sd,)), None if sdd is None else np.array((sdd,))) for nm, (sd, sdd) in slides.items()}
-    else:
+    elif "_phi" in d:
         d[name] = {g: np.array((c,)) for g, c in conditions.items()}
+    else:
+        d[name] = {g: c() if type(c) is fast.Later else c for g, c in conditions.items()}
     return d[name]
 
 
@@ -200,13 +221,16 @@ def solve(scene: Scene, phi_deg=None, order: int | None = None,
                 kin = object.__new__(Kinematics)
                 kin.__dict__.update(scene=scene, structure=st, _phi=float(phi), order=order, _points={}, _raw=res)
                 return kin
-    phis = np.atleast_1d(np.asarray(phi_deg, dtype=float))
+    if type(phi_deg) is np.ndarray and phi_deg.dtype == float and phi_deg.ndim == 1:
+        phis = phi_deg  # as np.asarray gives it
+    else:
+        phis = np.atleast_1d(np.asarray(phi_deg, dtype=float))
     if fp is not None:
-        res = _fast_runs(fp, phis, order) if len(phis) <= SCALAR_MAX else fast.solve_vec(fp, phis, order)
+        res = _fast_runs(fp, phis, order) if len(phis) <= SCALAR_MAX else fast_arrays.solve(fp, phis, order)
         if res is not None:
             kin = object.__new__(Kinematics)
-            kin.__dict__.update(scene=scene, structure=st, phi_deg=phis, order=order, slides=res[1],
-                                conditions=res[2], _points={}, _raw=res)
+            kin.__dict__.update(scene=scene, structure=st, phi_deg=phis, order=order, slides=res[1], _points={},
+                                _raw=res)
             return kin
     program = _program(scene, st)
     if len(phis) <= SCALAR_MAX:
@@ -404,6 +428,13 @@ def _stack(scene: Scene, st: Structure, phis: Any, order: int, runs: list) -> Ki
     return _kinematics(scene, st, order, motion, phis, slides, conditions)
 
 
+def _full(n: int, x: Any, dtype: Any) -> Any:
+    """np.full(n, x, dtype) without its Python wrapper."""
+    out = np.empty(n, dtype)
+    out.fill(x)
+    return out
+
+
 _FIELDS = ("rot", "r0", "omega", "v0", "eps", "a0")
 _WIDTH = (2, 4, 6)  # fields known at each order
 _DTYPES = (complex, complex, float, complex, float, complex)
@@ -425,7 +456,7 @@ class _Cols(_Motion):
         (lists of numbers made arrays first)."""
         vals = self._vals
         for i, v in enumerate(vals):
-            if type(v) is list:
+            if type(v) is list or type(v) is fast.Later:
                 self._get(i)
         return vals
 
@@ -433,12 +464,14 @@ class _Cols(_Motion):
         v = self._vals[i]
         if v is None or type(v) is np.ndarray:
             return v
-        if type(v) is list:
+        if type(v) is fast.Later:
+            v = v()
+        elif type(v) is list:
             v = np.array(v, dtype=_DTYPES[i])
         elif self._n == 1:
             v = np.array((v,), dtype=_DTYPES[i])
         else:
-            v = np.full(self._n, v, dtype=_DTYPES[i])
+            v = _full(self._n, v, _DTYPES[i])
         self._vals[i] = v
         return v
 

@@ -3,10 +3,11 @@ RRP's guide on the frame), in any chain.
 
 The same formulas as the general solvers of :mod:`plans.kinematics.exact`, in the same
 order, with everything that depends only on the scene worked out once (:func:`plan_for`) and
-no bookkeeping per group beyond local variables: one function per dyad kind that runs on
-numpy arrays over positions or on plain Python numbers for one position.  What is constant
-over the positions (the frame, the crank's ω and ε, a slider's angle) stays one number;
-:mod:`.exact` makes arrays of it only when it is read.
+no bookkeeping per group beyond local variables: one function per dyad kind on plain Python
+numbers for one position, and the same over numpy arrays of positions in
+:mod:`.fast_arrays`.  What is constant over the positions (the frame, the crank's ω and ε, a
+slider's angle) stays one number, and what the analysis never reads itself waits
+(:class:`Later`): :mod:`.exact` makes arrays of them only when they are read.
 
 Whatever is out of the ordinary (a group that does not assemble somewhere, an assembly at
 the tangent, a lock) is not handled here: the solve returns None and the general solvers
@@ -29,7 +30,24 @@ from plans.tolerances import ASSEMBLY_REL, LOCK_SIN
 Motion = list
 
 _QUARTER = np.array([1, 1j, -1, -1j])
-_low = np.minimum.reduce  # the least element of a 1-d array, without ndarray.min's Python wrapper
+#: i^k for k in [-4096, 4096) by k itself (numpy's negative indices): no k mod 4 to work out
+_QUARTERS = np.tile(_QUARTER, 1024)
+_NINETY, _MINUS_NINETY, _DEGREE = np.array(90.0), np.array(-90.0), np.array(1j * math.pi / 180.0)
+
+
+class Later:
+    """A quantity over the positions worked out when first read, from arrays that stay as
+    they are (a link's rotation, a group's condition number: the analysis does not read
+    them itself)."""
+
+    __slots__ = ("fn", "args")
+
+    def __init__(self, fn: Any, *args: Any) -> None:
+        self.fn = fn
+        self.args = args
+
+    def __call__(self) -> Any:
+        return self.fn(*self.args)
 
 
 def rotation(ref_deg: float, sense: int, phis: Any) -> Any:
@@ -37,11 +55,17 @@ def rotation(ref_deg: float, sense: int, phis: Any) -> Any:
     first (as :meth:`plans.scene.model.Driver.rotation`), so that a dead centre's small
     offset is kept exactly."""
     t = phis if sense == 1 and ref_deg == 0 else ref_deg + sense * phis
-    q = np.rint(t / 90.0)
-    quarter = _QUARTER[q.astype(np.intp) & 3]
-    q *= -90.0
+    q = t / _NINETY
+    np.rint(q, out=q)
+    k = q.astype(np.intp)
+    try:
+        quarter = _QUARTERS[k]
+    except IndexError:  # beyond ±368640°
+        k &= 3
+        quarter = _QUARTER[k]
+    q *= _MINUS_NINETY
     q += t  # the remainder in degrees, in place (the same numbers as t − 90·q)
-    z = q * (1j * math.pi / 180.0)
+    z = q * _DEGREE
     np.exp(z, out=z)
     z *= quarter
     return z
@@ -58,8 +82,8 @@ def rotation1(ref_deg: float, sense: int, phi: float) -> complex:
 class Plan:
     """What the fast path needs of a scene, worked out once."""
 
-    __slots__ = ("frame", "crank", "pivot", "zpivot", "W", "E", "omega", "eps", "ref_deg", "sense", "steps",
-                 "vsteps")
+    __slots__ = ("frame", "crank", "pivot", "zpivot", "W", "E", "W0", "E0", "omega", "eps", "ref_deg", "sense",
+                 "steps", "vsteps")
 
     def __init__(self, scene: Scene, steps: list) -> None:
         d = scene.driver
@@ -70,34 +94,11 @@ class Plan:
         self.omega, self.eps = d.omega, d.eps
         self.W = 1j * d.omega
         self.E = complex(-d.omega * d.omega, d.eps)
+        self.W0, self.E0 = np.array(self.W), np.array(self.E)  # numpy's own, for products with arrays
         self.ref_deg = math.degrees(d.phi_ref)
         self.sense = d.sense
         self.steps = steps
-        self.vsteps = _batches(steps)
-
-
-def _batches(steps: list) -> list:
-    """The steps over arrays: RRP groups one after another on the same pin (the cylinders of
-    a V or radial engine on the crank pin) solved together, one row of arrays each."""
-    out: list = []
-    run: list = []
-    for st in steps + [None]:
-        if run and (st is None or st[0] is not _rrp or st[3:5] != run[0][3:5]):
-            if len(run) == 1:
-                out.append(run[0])
-            else:
-                col = np.array
-                out.append((_rrp_many, run[0][3], run[0][4], tuple(run),
-                            col([[m[5]] for m in run]), col([[m[10]] for m in run]), col([[m[11]] for m in run]),
-                            col([[m[12]] for m in run]), col([[1.0 if m[13] > 0 else -1.0] for m in run]),
-                            col([[m[16]] for m in run]), max(m[17] for m in run)))
-            run = []
-        if st is not None:
-            if st[0] is _rrp:
-                run.append(st)
-            else:
-                out.append(st)
-    return out
+        self.vsteps: list | None = None  # the steps over arrays (plans.kinematics.fast_arrays)
 
 
 def plan_for(scene: Scene, st: Structure) -> Plan | None:
@@ -151,18 +152,12 @@ def _make_plan(scene: Scene, st: Structure) -> Plan | None:
 # --------------------------------------------------------------------------- the solve
 
 
-def solve_vec(plan: Plan, phis: Any, order: int) -> tuple[dict, dict, dict] | None:
-    """Motions, slides and conditions over the positions ``phis`` (an array), or None."""
-    rot1 = rotation(plan.ref_deg, plan.sense, phis)
-    return _run(plan, rot1, order, True, plan.vsteps)
-
-
 def solve_one(plan: Plan, phi: float, order: int) -> tuple[dict, dict, dict] | None:
     """The same at one position, in Python numbers, or None."""
-    return _run(plan, rotation1(plan.ref_deg, plan.sense, phi), order, False, plan.steps)
+    return _run(plan, rotation1(plan.ref_deg, plan.sense, phi), order, plan.steps)
 
 
-def _run(plan: Plan, rot1: Any, order: int, vec: bool, steps: list) -> tuple[dict, dict, dict] | None:
+def _run(plan: Plan, rot1: Any, order: int, steps: list) -> tuple[dict, dict, dict] | None:
     motion: dict[int, Motion] = {plan.frame: [1 + 0j, 0j, 0.0, 0j, 0.0, 0j]}
     z = plan.zpivot
     if z:
@@ -183,7 +178,7 @@ def _run(plan: Plan, rot1: Any, order: int, vec: bool, steps: list) -> tuple[dic
     slides: dict[str, tuple] = {}
     conditions: dict[str, Any] = {}
     for step in steps:
-        if not step[0](plan, motion, pins, slides, conditions, step, order, vec):
+        if not step[0](plan, motion, pins, slides, conditions, step, order):
             return None
     return motion, slides, conditions
 
@@ -233,8 +228,8 @@ def _placed(rot: Any, anchor: Any, z: complex, v: Any, a: Any, omega: Any, eps: 
     return m
 
 
-def _rrr(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k: tuple, order: int,
-         vec: bool) -> bool:
+def _rrr(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k: tuple, order: int) -> bool:
+    """An RRR group at one position (over arrays: :mod:`plans.kinematics.fast_arrays`)."""
     _, i, j, p, zp, q, zq, l1, l3, ci, cj, z1i, z3j, half_diff, branch, name, near, size = k
     P1: Any
     vP1: Any
@@ -249,18 +244,14 @@ def _rrr(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k
         P3, vP3, aP3 = _at(plan, motion, pins, q, zq, order)
     d = P3 - P1
     D = abs(d)
-    Dm = _low(D) if vec else D
-    if Dm <= near:
+    if D <= near:
         return False
     invD = 1.0 / D
     a = half_diff * invD + 0.5 * D
     x = (l1 - a) * (l1 + a)
-    xm = _low(x) if vec else x
-    # over arrays the lock (|r1 × r3| = h·D ≤ LOCK_SIN·l1·l3) is looked for here, with a margin
-    # (the general solvers decide at the limit)
-    if xm < 0 or (vec and order and xm <= (2 * LOCK_SIN * size / Dm) ** 2):
+    if x < 0:
         return False
-    h = np.sqrt(x) if vec else math.sqrt(x)
+    h = math.sqrt(x)
     r1 = (a + 1j * h if branch > 0 else a - 1j * h) * (d * invD)  # B − P1
     r3 = P1 + r1 - P3
     # |r1| = l1 to rounding (from a and h, no cancellation); r3 is normalised as drawn
@@ -274,7 +265,7 @@ def _rrr(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k
     c2 = -1j * r3
     cc1 = (1j * r1).conjugate()
     det = (cc1 * c2).imag
-    if not vec and abs(det) <= LOCK_SIN * size:
+    if abs(det) <= LOCK_SIN * size:
         return False
     inv = 1.0 / det
     cond = abs(inv)
@@ -298,8 +289,9 @@ def _rrr(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k
     return True
 
 
-def _rrp(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k: tuple, order: int,
-         vec: bool) -> bool:
+def _rrp(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k: tuple, order: int) -> bool:
+    """An RRP group (its guide on the frame) at one position (over arrays:
+    :mod:`plans.kinematics.fast_arrays`)."""
     _, i, j, p, zp, l1, ci, z1i, turn, zBj, G0, u, cu, branch, name, slide, K, lock = k
     P1, vP1, aP1 = _at(plan, motion, pins, p, zp, order)
     wu = (P1 - G0) * cu if G0 else P1 * cu  # t0 + i·e: P1 along and across the guide
@@ -307,20 +299,13 @@ def _rrp(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k
     x = (l1 - e) * (l1 + e)
     # the system's determinant below is ±√x to rounding: a lock is √x ≤ LOCK_SIN·l1 (looked
     # for here, with a margin: the general solvers decide at the limit)
-    xm = _low(x) if vec else x
-    if xm < 0 or (order and xm <= lock):
+    if x < 0 or (order and x <= lock):
         return False
-    if vec:
-        rt = np.sqrt(x)
-        root = rt if branch > 0 else -rt
-        # the rod B − P1 along and across the guide: q = ±√x − i·e (|q| = l1 to rounding,
-        # with no cancellation near a tangent assembly, unlike B − P1)
-        q = wu.conjugate()
-        q.real = root
-    else:
-        rt = math.sqrt(x)
-        root = rt if branch > 0 else -rt
-        q = complex(root, -e)
+    rt = math.sqrt(x)
+    root = rt if branch > 0 else -rt
+    # the rod B − P1 along and across the guide: q = ±√x − i·e (|q| = l1 to rounding,
+    # with no cancellation near a tangent assembly, unlike B − P1)
+    q = complex(root, -e)
     B = (t0 + root) * u
     if G0:
         B = G0 + B
@@ -348,50 +333,4 @@ def _rrp(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k
     motion[i] = _placed(mi_rot, P1, z1i, vP1, aP1, wi, ei, order)
     motion[j] = _placed(turn, B, zBj, sd * u, aB, 0.0, 0.0, order)
     slides[slide] = (sd, sdd)
-    return True
-
-
-def _rrp_many(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k: tuple, order: int,
-              vec: bool) -> bool:
-    """RRP groups on the same pin, each a row of (groups × positions) arrays: the formulas
-    of :func:`_rrp` with the constants as columns."""
-    _, p, zp, groups, l1, G0, u, cu, sgn, K, lock = k
-    P1, vP1, aP1 = _at(plan, motion, pins, p, zp, order)
-    wu = (P1 - G0) * cu
-    t0, e = wu.real, wu.imag
-    x = (l1 - e) * (l1 + e)
-    xm = x.min()
-    if xm < 0 or (order and xm <= lock):  # not assembled, or at or near a lock somewhere
-        return False
-    rt = np.sqrt(x)
-    root = rt * sgn
-    B = G0 + (t0 + root) * u
-    q = wu.conjugate()
-    q.real = root
-    rot = q * K
-    if order < 1:
-        for r, g in enumerate(groups):
-            motion[g[1]] = _placed(rot[r], P1, g[7], None, None, None, None, 0)
-            motion[g[2]] = _placed(g[8], B[r], g[9], None, None, None, None, 0)
-        return True
-    r1 = B - P1
-    cc1 = (1j * r1).conjugate()
-    det = (cc1 * -u).imag
-    cond = l1 / abs(det)
-    inv = 1.0 / det
-    k1 = cu * inv
-    k2 = cc1 * inv
-    nv = -vP1
-    wi, sd = (nv * k1).imag, (nv * k2).imag
-    vB = sd * u
-    ei = sdd = aB = None
-    if order >= 2:
-        rhs = wi * wi * r1 - aP1
-        ei, sdd = (rhs * k1).imag, (rhs * k2).imag
-        aB = sdd * u
-    for r, g in enumerate(groups):
-        motion[g[1]] = _placed(rot[r], P1, g[7], vP1, aP1, wi[r], None if ei is None else ei[r], order)
-        motion[g[2]] = _placed(g[8], B[r], g[9], vB[r], None if aB is None else aB[r], 0.0, 0.0, order)
-        conditions[g[14]] = cond[r]
-        slides[g[15]] = (sd[r], None if sdd is None else sdd[r])
     return True
