@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from plans.kinematics.cases import sign
 from plans.kinematics.dyads import (
     Builder,
     Pencil,
@@ -47,10 +48,10 @@ def acceleration_plan(snap: Scheme, mu: float, vb: Builder, pencil: Pencil, prot
     O, A_name = d.pivot, crank.axis[1]
     Opos, Apos = snap.pos(d.link, O), snap.pos(d.link, A_name)
     w1, e1 = d.omega, d.eps
-    l1 = np.abs(Apos - Opos)
+    l1 = abs(Apos - Opos)
     a_lab = lab(A_name)
     an = pencil.vector(mu * w1**2 * l1, Opos - Apos, l1, f"n_{A_name}{O}" if e1 != 0.0 else a_lab)
-    at = pencil.vector(mu * abs(e1) * l1, 1j * np.sign(e1) * (Apos - Opos), l1, a_lab) if e1 != 0.0 else 0 * an
+    at = pencil.vector(mu * abs(e1) * l1, 1j * sign(e1) * (Apos - Opos), l1, a_lab) if e1 != 0.0 else 0 * an
     if e1 != 0.0:
         b.add(f"n_{A_name}{O}", an)
         b.step("lay off", (b.pole,), f"n_{A_name}{O}", lambda: phrase(
@@ -66,9 +67,9 @@ def acceleration_plan(snap: Scheme, mu: float, vb: Builder, pencil: Pencil, prot
             "a_crank", A=A_name, O=O, an=w1**2 * b.s(l1), mm=abs(b.s(an)), mu=mu))
     b.labels[(d.link, A_name)] = a_lab
     b.labels[(d.link, O)] = b.pole
-    b.ref = np.abs(an + at) / mu
+    b.ref = abs(an + at) / mu
     b.set_link(d.link, a_lab, Apos, mu * (1j * e1 - w1**2) + 0 * Apos)
-    b.seg(b.pole, a_lab, "absolute", f"a_{A_name}", np.abs(snap.a(d.link, Apos)))
+    b.seg(b.pole, a_lab, "absolute", f"a_{A_name}", abs(snap.a(d.link, Apos)))
     link_points(b, d.link)
     for g in snap.kin.structure.groups:
         _ACC[g.kind](b, g, vr)
@@ -82,7 +83,7 @@ def _normal(b: Builder, vr: _VelReader, link: int, frm: str, frm_xy: np.ndarray,
             X: np.ndarray, Pn: str, Xn: str) -> tuple[str, np.ndarray]:
     """Lay off a_XP^n = ω²·l toward P from the image of P; ω read off the velocity plan."""
     w = vr.omega(link)
-    ln = np.abs(P - X)
+    ln = abs(P - X)
     lb = f"n_{Xn}{Pn}"
     vec = b.pencil.vector(b.mu * w * w * ln, P - X, ln, lb)
     b.add(lb, frm_xy + vec)
@@ -99,9 +100,9 @@ def _coriolis(b: Builder, vr: _VelReader, guide_link: int, v_rel: np.ndarray, fr
     v_rel are read off the velocity plan."""
     w = vr.omega(guide_link)
     muv = vr.vb.mu
-    v_read = b.pencil.read(np.abs(v_rel) * muv) / muv
+    v_read = b.pencil.read(abs(v_rel) * muv) / muv
     lb = f"k_{label}"
-    vec = b.pencil.vector(b.mu * 2 * np.abs(w) * v_read, 1j * np.sign(w) * v_rel, 0.0, lb)
+    vec = b.pencil.vector(b.mu * 2 * abs(w) * v_read, 1j * b.xp.sign(w) * v_rel, 0.0, lb)
     b.add(lb, frm_xy + vec)
     b.step("lay off", (frm,), lb, lambda: phrase(
         "a_coriolis", label=label, g=guide_link, w=abs(b.s(w)), v=clean(abs(b.s(v_rel)), b.s(vr.vb.ref)),
@@ -121,18 +122,18 @@ def _a_rrr(b: Builder, g: Group, vr: _VelReader) -> None:
     n3 = ensure(b, q, j3.point, x3)
     m1, y1 = _normal(b, vr, i, n1, x1, P1, B, j1.point, j2.point)
     m3, y3 = _normal(b, vr, j, n3, x3, P3, B, j3.point, j2.point)
-    L1 = b.line(y1, 1j * (B - P1), np.abs(B - P1), f"⟂ {j1.point}{j2.point}")
-    L3 = b.line(y3, 1j * (B - P3), np.abs(B - P3), f"⟂ {j3.point}{j2.point}")
+    L1 = b.line(y1, 1j * (B - P1), abs(B - P1), f"⟂ {j1.point}{j2.point}")
+    L3 = b.line(y3, 1j * (B - P3), abs(B - P3), f"⟂ {j3.point}{j2.point}")
     out = lab(j2.point)
     xb = meet(b, g, L1, L3, out, b.mu * snap.a(i, B), j2.point, (i, j))
     b.step("intersect", (m1, m3), out, lambda: phrase(
         "a_rrr", A=j1.point, B=j2.point, C=j3.point, m1=m1, m3=m3, out=out))
     b.set_link(i, out, B, (xb - x1) / (B - P1))
     b.set_link(j, out, B, (xb - x3) / (B - P3))
-    b.rate[i], b.rate[j] = (m1, out, np.abs(B - P1)), (m3, out, np.abs(B - P3))
-    b.seg(m1, out, "tangential", f"a_{j2.point}{j1.point}^τ", np.abs(snap.e[i]) * np.abs(B - P1))
-    b.seg(m3, out, "tangential", f"a_{j2.point}{j3.point}^τ", np.abs(snap.e[j]) * np.abs(B - P3))
-    b.seg(b.pole, out, "absolute", f"a_{j2.point}", np.abs(snap.a(i, B)))
+    b.rate[i], b.rate[j] = (m1, out, abs(B - P1)), (m3, out, abs(B - P3))
+    b.seg(m1, out, "tangential", f"a_{j2.point}{j1.point}^τ", abs(snap.e[i]) * abs(B - P1))
+    b.seg(m3, out, "tangential", f"a_{j2.point}{j3.point}^τ", abs(snap.e[j]) * abs(B - P3))
+    b.seg(b.pole, out, "absolute", f"a_{j2.point}", abs(snap.a(i, B)))
 
 
 def _a_rrp(b: Builder, g: Group, vr: _VelReader) -> None:
@@ -151,8 +152,8 @@ def _a_rrp(b: Builder, g: Group, vr: _VelReader) -> None:
         v_rel = vr.rel(f"{lab(j2.point)}{q}", lab(j2.point))
         sd, _ = snap.slide(j3)
         start, start_xy = _coriolis(b, vr, q, v_rel, nq, xq, f"{j2.point}{j}{j2.point}{q}",
-                                    np.abs(2 * snap.w[q] * sd))
-    L1 = b.line(y1, 1j * (B - P1), np.abs(B - P1), f"⟂ {j1.point}{j2.point}")
+                                    abs(2 * snap.w[q] * sd))
+    L1 = b.line(y1, 1j * (B - P1), abs(B - P1), f"⟂ {j1.point}{j2.point}")
     L3 = b.line(start_xy, u, span, f"∥ guide of {j2.point}")
     out = lab(j2.point)
     xb = meet(b, g, L1, L3, out, b.mu * snap.a(i, B), j2.point, (i, j))
@@ -160,12 +161,12 @@ def _a_rrp(b: Builder, g: Group, vr: _VelReader) -> None:
         "a_rrp", A=j1.point, B=j2.point, m1=m1, start=start, out=out))
     b.set_link(i, out, B, (xb - x1) / (B - P1))
     b.set_link(j, out, B, b.factor[q])
-    b.rate[i], b.rate[j] = (m1, out, np.abs(B - P1)), q
-    b.seg(m1, out, "tangential", f"a_{j2.point}{j1.point}^τ", np.abs(snap.e[i]) * np.abs(B - P1))
-    b.seg(b.pole, out, "absolute", f"a_{j2.point}", np.abs(snap.a(i, B)))
+    b.rate[i], b.rate[j] = (m1, out, abs(B - P1)), q
+    b.seg(m1, out, "tangential", f"a_{j2.point}{j1.point}^τ", abs(snap.e[i]) * abs(B - P1))
+    b.seg(b.pole, out, "absolute", f"a_{j2.point}", abs(snap.a(i, B)))
     if q != snap.scene.frame:
         _, sdd = snap.slide(j3)
-        b.seg(start, out, "sliding", f"a^r_{j2.point}{j}{j2.point}{q}", np.abs(sdd))
+        b.seg(start, out, "sliding", f"a^r_{j2.point}{j}{j2.point}{q}", abs(sdd))
 
 
 def _a_rpr(b: Builder, g: Group, vr: _VelReader) -> None:
@@ -183,8 +184,8 @@ def _a_rpr(b: Builder, g: Group, vr: _VelReader) -> None:
     # a_A3 = a_A2 + a^k_A3A2 + a^r_A3A2, v_A3A2 read from the velocity plan (a2 -> a3)
     v_rel = vr.rel(lab(j1.point), f"{lab(j1.point)}{j}")
     sd, sdd = snap.slide(j2)
-    mk, yk = _coriolis(b, vr, j, v_rel, na, xa, f"{j1.point}{j}{j1.point}{i}", np.abs(2 * snap.w[j] * sd))
-    L1 = b.line(yc, 1j * (A - Cq), np.abs(A - Cq), f"⟂ {j3.point}{j1.point}")
+    mk, yk = _coriolis(b, vr, j, v_rel, na, xa, f"{j1.point}{j}{j1.point}{i}", abs(2 * snap.w[j] * sd))
+    L1 = b.line(yc, 1j * (A - Cq), abs(A - Cq), f"⟂ {j3.point}{j1.point}")
     L2 = b.line(yk, u, span, f"∥ slot of link {j}")
     out = f"{lab(j1.point)}{j}"
     x3 = meet(b, g, L1, L2, out, b.mu * snap.a(j, A), j1.point, ())
@@ -193,11 +194,11 @@ def _a_rpr(b: Builder, g: Group, vr: _VelReader) -> None:
     f = (x3 - xc) / (A - Cq)
     b.set_link(j, out, A, f)
     b.set_link(i, na, A, f)
-    b.rate[j], b.rate[i] = (mc, out, np.abs(A - Cq)), j
+    b.rate[j], b.rate[i] = (mc, out, abs(A - Cq)), j
     b.labels[(i, j1.point)] = na
-    b.seg(mc, out, "tangential", f"a_{An}{j3.point}^τ", np.abs(snap.e[j]) * np.abs(A - Cq))
-    b.seg(mk, out, "sliding", f"a^r_{j1.point}{j}{j1.point}{i}", np.abs(sdd))
-    b.seg(b.pole, out, "absolute", f"a_{An}", np.abs(snap.a(j, A)))
+    b.seg(mc, out, "tangential", f"a_{An}{j3.point}^τ", abs(snap.e[j]) * abs(A - Cq))
+    b.seg(mk, out, "sliding", f"a^r_{j1.point}{j}{j1.point}{i}", abs(sdd))
+    b.seg(b.pole, out, "absolute", f"a_{An}", abs(snap.a(j, A)))
 
 
 def _a_prp(b: Builder, g: Group, vr: _VelReader) -> None:
@@ -216,7 +217,7 @@ def _a_prp(b: Builder, g: Group, vr: _VelReader) -> None:
             v_rel = vr.rel(f"{lab(j2.point)}{carrier}", out)
             sd, _ = snap.slide(jt)
             nm, xy = _coriolis(b, vr, carrier, v_rel, nm, xy, f"{j2.point}{link}{j2.point}{carrier}",
-                               np.abs(2 * snap.w[carrier] * sd))
+                               abs(2 * snap.w[carrier] * sd))
         ends.append((nm, xy))
     L1 = b.line(ends[0][1], u1, s1, f"∥ guide of link {i}")
     L3 = b.line(ends[1][1], u3, s3, f"∥ guide of link {j}")
@@ -226,11 +227,11 @@ def _a_prp(b: Builder, g: Group, vr: _VelReader) -> None:
     b.set_link(i, out, B, b.factor[p])
     b.set_link(j, out, B, b.factor[q])
     b.rate[i], b.rate[j] = p, q
-    b.seg(b.pole, out, "absolute", f"a_{j2.point}", np.abs(snap.a(i, B)))
+    b.seg(b.pole, out, "absolute", f"a_{j2.point}", abs(snap.a(i, B)))
     for (nm, _), jt, carrier, link in ((ends[0], j1, p, i), (ends[1], j3, q, j)):
         if nm != b.pole:
             _, sdd = snap.slide(jt)
-            b.seg(nm, out, "sliding", f"a^r_{j2.point}{link}{j2.point}{carrier}", np.abs(sdd))
+            b.seg(nm, out, "sliding", f"a^r_{j2.point}{link}{j2.point}{carrier}", abs(sdd))
 
 
 def _a_rpp(b: Builder, g: Group, vr: _VelReader) -> None:
@@ -249,13 +250,13 @@ def _a_rpp(b: Builder, g: Group, vr: _VelReader) -> None:
     if q != snap.scene.frame:
         v_rel = vr.rel(f"{lab(j1.point)}{q}", out)
         sd3, _ = snap.slide(j3)
-        s3, y3 = _coriolis(b, vr, q, v_rel, nq, xq, f"{j1.point}{j}{j1.point}{q}", np.abs(2 * snap.w[q] * sd3))
+        s3, y3 = _coriolis(b, vr, q, v_rel, nq, xq, f"{j1.point}{j}{j1.point}{q}", abs(2 * snap.w[q] * sd3))
     # a_Aj = a_Ai + a^k_AjAi + a^r_AjAi, v_AjAi from the velocity plan (a -> aj)
     v_rel2 = vr.rel(lab(j1.point), out)
     sd2, sdd2 = snap.slide(j2)
     s2, y2 = na, xa
-    if q != snap.scene.frame or np.any(snap.w.get(j, 0.0) != 0.0):
-        s2, y2 = _coriolis(b, vr, j, v_rel2, na, xa, f"{j1.point}{j}{j1.point}{i}", np.abs(2 * snap.w[j] * sd2))
+    if q != snap.scene.frame or b.xp.any(snap.w.get(j, 0.0) != 0.0):
+        s2, y2 = _coriolis(b, vr, j, v_rel2, na, xa, f"{j1.point}{j}{j1.point}{i}", abs(2 * snap.w[j] * sd2))
     L3 = b.line(y3, u3, sp3, f"∥ guide of link {j}")
     L2 = b.line(y2, u2, sp2, f"∥ slot of link {j}")
     meet(b, g, L3, L2, out, b.mu * snap.a(j, A), j1.point, ())
@@ -264,8 +265,8 @@ def _a_rpp(b: Builder, g: Group, vr: _VelReader) -> None:
     b.set_link(i, na, A, b.factor[q])
     b.rate[j], b.rate[i] = q, q
     b.labels[(i, j1.point)] = na
-    b.seg(b.pole, out, "absolute", f"a_{j1.point}{j}", np.abs(snap.a(j, A)))
-    b.seg(s2, out, "sliding", f"a^r_{j1.point}{j}{j1.point}{i}", np.abs(sdd2))
+    b.seg(b.pole, out, "absolute", f"a_{j1.point}{j}", abs(snap.a(j, A)))
+    b.seg(s2, out, "sliding", f"a^r_{j1.point}{j}{j1.point}{i}", abs(sdd2))
 
 
 _ACC = {"RRR": _a_rrr, "RRP": _a_rrp, "RPR": _a_rpr, "PRP": _a_prp, "RPP": _a_rpp}

@@ -11,7 +11,8 @@ draftsman's answer where two construction lines are (nearly) parallel.
 
 :func:`build_all` builds the plans of all positions together, as arrays; each position's
 :class:`Plan` objects and readings are made when first asked for, and its protocol (the
-sentences of each step) only when read.
+sentences of each step) only when read.  One position (:func:`build`, a scene of one
+position, a protocol) is built by the same construction in Python numbers.
 """
 
 from __future__ import annotations
@@ -27,6 +28,7 @@ from plans.errors import Locked
 from plans.kinematics.dyads import Builder, Mixed, PerfectPencil, Scheme, plans_of
 from plans.kinematics.exact import Kinematics
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step
+from plans.kinematics.scales import LONGEST_MM, common_scales, refit
 from plans.phrases import phrase
 from plans.tolerances import COINCIDE_REL
 from plans.units import clean, percent
@@ -125,17 +127,21 @@ _PERFECT = PerfectPencil()
 
 
 def _at(x: Any, k: int) -> Any:
+    if type(x) is not np.ndarray:  # a number: one position, or the same at every position
+        return x
     a = np.ravel(x)
     return a[k] if a.size > 1 else a[0]
 
 
 class _Together:
-    """The plans of the selected positions built together (arrays over positions)."""
+    """The plans of the selected positions built together (arrays over positions; one
+    position, ``ks`` an ``int``, in Python numbers)."""
 
     def __init__(self, kin: Kinematics, ks: Any, mv: float, ma: float | None) -> None:
         self.kin, self.ks, self.mv, self.ma = kin, ks, mv, ma
-        self.phi = np.asarray(kin.phi_deg, float)[ks]
-        self.vb, self.ab = plans_of(Scheme(kin, ks), mv, ma, _PERFECT)
+        snap = Scheme(kin, ks)
+        self.phi = [snap.phi] if snap.one else snap.phi
+        self.vb, self.ab = plans_of(snap, mv, ma, _PERFECT)
         self._columns: list[tuple] | None = None
 
     def position(self, k: int) -> PositionPlans:
@@ -144,14 +150,22 @@ class _Together:
     def may_run_past(self, longest_mm: float) -> list[int]:
         """The positions where a plan's largest distance from the pole (:attr:`Plan.extent`)
         may exceed ``longest_mm``, from the arrays (with a margin for rounding)."""
+        limit = longest_mm * (1 - 1e-9)
+        plans = [b for b in (self.vb, self.ab) if b is not None]
+        if type(self.ks) is int:  # one position: numbers
+            return [0] if any(abs(b.pts[name]) > limit for b in plans for name in b.order) else []
         far = np.zeros(len(self.phi), dtype=bool)
-        for b in (self.vb, self.ab):
-            if b is not None:
-                for name in b.order:
-                    far |= np.abs(b.pts[name]) > longest_mm * (1 - 1e-9)
+        for b in plans:
+            for name in b.order:
+                far |= np.abs(b.pts[name]) > limit
         return np.flatnonzero(far).tolist()
 
     def readings(self, k: int) -> tuple[Reading, ...]:
+        if type(self.ks) is int:  # one position: the readings are numbers already
+            return tuple(Reading(q, seg, None if mm is None else float(mm), mu, float(value), float(exact), unit,
+                                 float(ref))
+                         for b in (self.vb, self.ab) if b is not None
+                         for q, seg, mm, mu, value, exact, unit, ref, _ in b.readings)
         if self._columns is None:  # each reading's arrays as lists, once for all positions
             n = len(self.phi)
 
@@ -180,8 +194,8 @@ class _Together:
 
     def protocol(self, kind: str, k: int) -> tuple[Step, ...]:
         """The steps of one plan at one position, sentences written (built again for it alone)."""
-        kk = np.arange(self.kin.n)[self.ks][k]
-        vb, ab = plans_of(Scheme(self.kin, [kk]), self.mv, self.ma, _PERFECT, protocol=True)
+        kk = self.ks if type(self.ks) is int else int(np.arange(self.kin.n)[self.ks][k])
+        vb, ab = plans_of(Scheme(self.kin, kk), self.mv, self.ma, _PERFECT, protocol=True)
         b = vb if kind == "velocity" else ab
         assert b is not None
         _, coincide = _points(b, 0)
@@ -236,10 +250,17 @@ def _scales(kin: Kinematics, velocity_scale: float | None, acceleration_scale: f
     scene = kin.scene
     if not (scene.wants("velocity_plan") and kin.order >= 1):
         return None, None
-    mv = velocity_scale or scene.scales.get("velocity") or default_scales(kin)[0]
+    common: tuple[float, float] | None = None
+
+    def default(i: int) -> float:
+        nonlocal common
+        common = common or default_scales(kin)
+        return common[i]
+
+    mv = velocity_scale or scene.scales.get("velocity") or default(0)
     ma = None
     if scene.wants("acceleration_plan") and kin.order >= 2:
-        ma = acceleration_scale or scene.scales.get("acceleration") or default_scales(kin)[1]
+        ma = acceleration_scale or scene.scales.get("acceleration") or default(1)
     return mv, ma
 
 
@@ -249,45 +270,60 @@ def build(kin: Kinematics, k: int, *, velocity_scale: float | None = None,
     return build_many(kin, [k], velocity_scale=velocity_scale, acceleration_scale=acceleration_scale)[0]
 
 
+#: Up to this many positions are each built alone, in Python numbers: over arrays numpy's
+#: cost per call (about 1.5 ms for both plans of the V-engine) outweighs 0.2-0.3 ms a position.
+ALONE_MAX = 4
+
+
+def _alone(kin: Kinematics, ks: Sequence[int], mv: float, ma: float | None) -> list[_Together]:
+    """Each position of ``ks`` built alone, in Python numbers (a lock names the first
+    position, as drawn)."""
+    return [_Together(kin, int(k), mv, ma) for k in ks]
+
+
 def build_many(kin: Kinematics, ks: Sequence[int], *, velocity_scale: float | None = None,
                acceleration_scale: float | None = None) -> list[PositionPlans]:
-    """Both plans at each position of ``ks``, built together (one construction over arrays)."""
+    """Both plans at each position of ``ks``: built together (one construction over arrays),
+    a few positions, or where a label differs between positions or a group locks, one by one."""
     mv, ma = _scales(kin, velocity_scale, acceleration_scale)
     if mv is None:
         return [PositionPlans(float(kin.phi_deg[k]), None, None, ()) for k in ks]
-    if len(ks) > 1:
+    if len(ks) > ALONE_MAX:
         try:
             together = _Together(kin, list(ks), mv, ma)
-        except (Mixed, Locked):  # one by one: the error names the first position, as drawn
-            return [build(kin, k, velocity_scale=mv, acceleration_scale=ma) for k in ks]
-        return [together.position(i) for i in range(len(ks))]
-    return [_Together(kin, list(ks), mv, ma).position(0)]
+        except (Mixed, Locked):
+            pass
+        else:
+            return [together.position(i) for i in range(len(ks))]
+    return [t.position(0) for t in _alone(kin, ks, mv, ma)]
 
 
 def default_scales(kin: Kinematics) -> tuple[float, float]:
     """μv and μa as the course picks them: the crank pin's vector (the known one)
     drawn 50–100 mm at a round scale (or as ``[scales]`` says), the same at every position."""
-    from plans.kinematics.scales import common_scales
-
     return common_scales(kin)
 
 
 def build_all(kin: Kinematics) -> list[PositionPlans]:
     """Plans at every position of the scene, with one round scale for all (as on one sheet;
-    a position whose plan would run too long gets a round one of its own), built together; position by position only where a label differs between positions or a group
-    locks (the error then names the first position, as drawn one by one)."""
-    from plans.kinematics.scales import LONGEST_MM, refit
-
+    a position whose plan would run too long gets a round one of its own), built together;
+    position by position for a few positions, or where a label differs between positions or
+    a group locks (the error then names the first position, as drawn one by one)."""
     mv, ma = default_scales(kin)
     want_mv, want_ma = _scales(kin, mv, ma)
     if want_mv is None:
         return [PositionPlans(float(phi), None, None, ()) for phi in kin.phi_deg]
-    try:
-        together = _Together(kin, slice(None), want_mv, want_ma)
-    except (Mixed, Locked):
-        return refit(kin, [build(kin, k, velocity_scale=mv, acceleration_scale=ma) for k in range(kin.n)], build)
-    return refit(kin, [together.position(k) for k in range(kin.n)], build,
-                 only=together.may_run_past(LONGEST_MM))
+    if kin.n > ALONE_MAX:
+        try:
+            together = _Together(kin, slice(None), want_mv, want_ma)
+        except (Mixed, Locked):
+            pass
+        else:
+            return refit(kin, [together.position(k) for k in range(kin.n)], build,
+                         only=together.may_run_past(LONGEST_MM))
+    alone = _alone(kin, range(kin.n), want_mv, want_ma)
+    return refit(kin, [t.position(0) for t in alone], build,
+                 only=[k for k, t in enumerate(alone) if t.may_run_past(LONGEST_MM)])
 
 
 __all__ = ["Reading", "PositionPlans", "build", "build_all", "build_many", "default_scales", "nice_scale"]

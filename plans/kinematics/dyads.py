@@ -2,8 +2,10 @@
 
 What the draftsman does for each class-II Assur group (RRR, RRP, RPR, PRP, RPP) is one
 function here, run over an array of cases at once: the positions of a cycle (the plans of
-360 positions built together) or the drawings of a Monte Carlo.  The hand that draws is
-a :class:`Pencil`:
+360 positions built together) or the drawings of a Monte Carlo.  One position drawn
+exactly runs the same functions on Python numbers (a :class:`Scheme` of one position:
+numpy's cost per call would be all of its cost; see :mod:`plans.kinematics.cases`).
+The hand that draws is a :class:`Pencil`:
 
 * :class:`PerfectPencil` draws exactly: closed-form line intersections, the exact point
   where two construction lines are (nearly) parallel, :class:`plans.errors.Locked` where
@@ -33,39 +35,47 @@ import numpy as np
 from numpy.typing import NDArray
 
 from plans.errors import Locked
+from plans.kinematics.cases import Arrays, Numbers, cross, unit
 from plans.kinematics.exact import Kinematics
 from plans.kinematics.plan import Step
 from plans.kinematics.structure import Group
-from plans.lines import meet as intersection
 from plans.phrases import Phrase, phrase
 from plans.scene.model import Joint
 from plans.tolerances import COINCIDE_REL, LOCK_SIN, NEAR_PARALLEL_SIN
 
-C = NDArray[np.complex128]
-R = NDArray[np.float64]
-#: One construction line: a point it passes through and its unit direction (arrays).
+#: Values over the cases: numpy arrays (complex plane vectors, real lengths and rates), or
+#: Python ``complex`` and ``float`` at one position (see :mod:`plans.kinematics.cases`).
+C = NDArray[np.complex128] | Any
+R = NDArray[np.float64] | Any
+#: One construction line: a point it passes through and its unit direction.
 Line = tuple[C, C]
 
+__all__ = ["Builder", "Line", "Mixed", "Pencil", "PerfectPencil", "Scheme", "cross", "plans_of", "unit"]
 
-def cross(a: Any, b: Any) -> Any:
-    return (np.conjugate(a) * b).imag
-
-
-def unit(z: Any) -> Any:
-    """z / |z|, and 1 where z = 0."""
-    mag = np.abs(z)
-    if np.all(mag > 0):
-        return z / mag
-    return np.where(mag > 0, z / np.where(mag > 0, mag, 1.0), 1.0 + 0j)
+_FIELDS = ("rot", "r0", "omega", "v0", "eps", "a0")
 
 
 class Scheme:
     """The scheme at the selected positions (the drawing of the mechanism the plans are
-    built on), read from the exact positions, plus the exact rates for each reading."""
+    built on), read from the exact positions, plus the exact rates for each reading.
+
+    ``ks`` selects positions of ``kin`` (a slice or a list: every value an array over them);
+    one position as an ``int`` holds Python numbers instead (:attr:`xp` is
+    :class:`plans.kinematics.cases.Numbers`): one position pays no numpy call per step."""
 
     def __init__(self, kin: Kinematics, ks: Any = slice(None)) -> None:
         self.kin = kin
         self.scene = kin.scene
+        self.ks = ks
+        self.one = type(ks) is int
+        self.xp: type[Arrays] | type[Numbers] = Numbers if self.one else Arrays
+        self._pos: dict[tuple[int, str], C] = {}
+        self._slides: dict[str, tuple[Any, Any]] = {}
+        self.joint_points = {jt.point for jt in kin.scene.joints}
+        self._rated: list[tuple[int, float, str, str]] | None = None
+        if self.one:
+            self._numbers(kin, ks)
+            return
         self.phi = np.asarray(kin.phi_deg, float)[ks]
         mo = kin.motion.items()
         self.r0 = {lid: np.asarray(m.r0)[ks] for lid, m in mo}
@@ -74,8 +84,29 @@ class Scheme:
         self.e = {lid: np.asarray(m.eps)[ks] for lid, m in mo if m.eps is not None}
         self.v0 = {lid: np.asarray(m.v0)[ks] for lid, m in mo if m.v0 is not None}
         self.a0 = {lid: np.asarray(m.a0)[ks] for lid, m in mo if m.a0 is not None}
-        self.ks = ks
-        self._pos: dict[tuple[int, str], C] = {}
+
+    def _numbers(self, kin: Kinematics, k: int) -> None:
+        """Position ``k`` as Python numbers (a motion held as numbers stays numbers)."""
+        self.phi = float(kin.phi_deg[k])
+        R0, ROT, W, E, V0, A0 = self.r0, self.rot, self.w, self.e, self.v0, self.a0 = {}, {}, {}, {}, {}, {}
+        nd = np.ndarray
+        for lid, m in kin.motion.items():
+            raw = getattr(m, "raw", None)
+            rot, r0, w, v0, e, a0 = raw() if raw is not None else [getattr(m, f) for f in _FIELDS]
+            ROT[lid] = rot.item(k) if type(rot) is nd else rot
+            R0[lid] = r0.item(k) if type(r0) is nd else r0
+            if w is not None:
+                W[lid] = w.item(k) if type(w) is nd else w
+            if v0 is not None:
+                V0[lid] = v0.item(k) if type(v0) is nd else v0
+            if e is not None:
+                E[lid] = e.item(k) if type(e) is nd else e
+            if a0 is not None:
+                A0[lid] = a0.item(k) if type(a0) is nd else a0
+
+    def phi_at(self, k: int) -> float:
+        """The crank angle of case ``k`` (degrees)."""
+        return self.phi if self.one else float(self.phi[k])
 
     def local(self, link: int, name: str) -> complex:
         if link == self.scene.frame:
@@ -98,17 +129,35 @@ class Scheme:
         span = abs(link.length) if link is not None and link.length else 0.0
         return self.rot[g.link] * g.direction, span
 
+    def rated(self) -> list[tuple[int, float, str, str]]:
+        """Each link whose ω and ε are read: (link, the length they are referred to, the
+        names of its ω and ε readings), by link number."""
+        if self._rated is None:
+            crank = crank_length(self)
+            self._rated = [(lid, abs(link.length or crank), f"omega_{lid}", f"eps_{lid}")
+                           for lid, link in sorted(self.scene.links.items())]
+        return self._rated
+
     # exact rates of a point fixed to ``link`` at global position X
     def v(self, link: int, X: C) -> C:
         return self.v0[link] + 1j * self.w[link] * (X - self.r0[link])
 
     def a(self, link: int, X: C) -> C:
-        return self.a0[link] + (1j * self.e[link] - self.w[link] ** 2) * (X - self.r0[link])
+        w = self.w[link]
+        return self.a0[link] + (1j * self.e[link] - w * w) * (X - self.r0[link])
 
     def slide(self, jt: Joint) -> tuple[R, R]:
-        sd, sdd = self.kin.slides[jt.name]
-        sdd = np.zeros(np.shape(sd)) if sdd is None else sdd
-        return np.asarray(sd)[self.ks], np.asarray(sdd)[self.ks]
+        got = self._slides.get(jt.name)
+        if got is None:
+            sd, sdd = self.kin.slides[jt.name]
+            if self.one:
+                k = self.ks
+                got = (float(sd[k]), 0.0 if sdd is None else float(sdd[k]))
+            else:
+                sdd = np.zeros(np.shape(sd)) if sdd is None else sdd
+                got = (np.asarray(sd)[self.ks], np.asarray(sdd)[self.ks])
+            self._slides[jt.name] = got
+        return got
 
 
 class Pencil(Protocol):
@@ -145,22 +194,28 @@ class PerfectPencil:
         return length
 
     def cut(self, b: Builder, l1: Line, l2: Line, out: str, exact_xy: C, group: Group, point: str) -> C:
+        xp = b.xp
         (p1, d1), (p2, d2) = l1, l2
         s = cross(d1, d2)
-        near = np.abs(s) <= NEAR_PARALLEL_SIN
-        if near.any():
+        sin = abs(s)
+        if b.one and sin > NEAR_PARALLEL_SIN:
+            return p1 + cross(p2 - p1, d2) / s * d1
+        near = sin <= NEAR_PARALLEL_SIN
+        if not xp.any(near):
+            return p1 + cross(p2 - p1, d2) / s * d1
+        if xp.scalar:
+            extent = max(abs(p1), abs(p2), b.size, 1e-300)
+        else:
             extent = np.maximum.reduce([np.abs(p1), np.abs(p2), b.size, np.full(np.shape(s), 1e-300)])
-            gap = np.abs(cross(d1, p2 - p1))
-            locked = near & (np.abs(s) <= LOCK_SIN) & (gap > COINCIDE_REL * extent)
-            if locked.any():
-                k = int(np.argmax(locked))
-                raise Locked(f"the lines {b.line_labels[-2]} and {b.line_labels[-1]} of the "
-                             f"{b.kind} plan are parallel and apart",
-                             group=f"{group.kind} {group.name}", point=point, phi_deg=float(b.snap.phi[k]))
-            b.degenerate.append((out, near, np.abs(s)))
-        if not near.any():
-            return intersection(p1, d1, p2, d2, s)
-        return np.where(near, exact_xy, intersection(p1, d1, p2, d2, np.where(near, 1.0, s)))
+        gap = abs(cross(d1, p2 - p1))
+        locked = near & (sin <= LOCK_SIN) & (gap > COINCIDE_REL * extent)
+        if xp.any(locked):
+            raise Locked(f"the lines {b.line_labels[-2]} and {b.line_labels[-1]} of the "
+                         f"{b.kind} plan are parallel and apart", group=f"{group.kind} {group.name}",
+                         point=point, phi_deg=b.snap.phi_at(xp.argmax(locked)))
+        b.degenerate.append((out, near, sin))
+        t = cross(p2 - p1, d2) / xp.where(near, 1.0, s)
+        return xp.where(near, exact_xy, p1 + t * d1)
 
 
 class Mixed(Exception):
@@ -173,11 +228,14 @@ class Builder:
 
     def __init__(self, snap: Scheme, kind: str, scale: float, pencil: Pencil, protocol: bool = False) -> None:
         self.snap, self.kind, self.mu, self.pencil, self.protocol = snap, kind, scale, pencil, protocol
+        # Python numbers at one position drawn exactly; arrays wherever a pencil draws many cases
+        xp = self.xp = snap.xp if isinstance(pencil, PerfectPencil) else Arrays
+        self.one = xp.scalar  # one position in Python numbers, the perfect pencil
         self.sym = "v" if kind == "velocity" else "a"
         self.unit = "m/s" if kind == "velocity" else "m/s^2"
         self.pole = "p_v" if kind == "velocity" else "p_a"
-        n = np.size(snap.phi)
-        self.zero = np.zeros(n, complex)
+        n = 1 if snap.one else np.size(snap.phi)
+        self.zero = xp.zeros(n, complex)
         self.pts: dict[str, C] = {self.pole: self.zero}
         self.order: list[str] = [self.pole]
         self.segments: list[tuple[str, str, str, str, R, R]] = []  # start, end, kind, label, mm, value
@@ -195,21 +253,24 @@ class Builder:
         self.rate: dict[int, tuple[str, str, Any] | int] = {}
         self.rates: dict[int, R] = {}  # ω (ε) of each link as read off this plan
         self.ref: Any = 0.0  # the known vector's value: set when it is laid off
-        self.size: Any = np.zeros(n)  # the plan's extent so far (mm from the pole)
+        self.size: Any = xp.zeros(n)  # the plan's extent so far (mm from the pole)
         self._dust: tuple[Any, Any] | None = None
 
-    @staticmethod
-    def s(x: Any) -> Any:
+    def s(self, x: Any) -> Any:
         """One case's value, for the protocol's sentences."""
-        a = np.ravel(x)
-        return complex(a[0]) if np.iscomplexobj(a) else float(a[0])
+        return self.xp.first(x)
 
     # -- points and images
     def add(self, label: str, xy: C) -> None:
         if label not in self.pts:
             self.order.append(label)
         self.pts[label] = xy
-        self.size = np.maximum(self.size, np.abs(xy))
+        if self.one:
+            r = abs(xy)
+            if r > self.size:
+                self.size = r
+        else:
+            self.size = np.maximum(self.size, abs(xy))
 
     def image(self, link: int, name: str) -> C:
         """Image of point ``name`` of ``link`` by the similarity theorem."""
@@ -227,20 +288,29 @@ class Builder:
         self.factor[link] = factor
 
     def seg(self, start: str, end: str, kind: str, label: str, exact: Any) -> None:
-        length = self.pencil.read(np.abs(self.pts[end] - self.pts[start]))
+        ref, dust = self.ref, self._dust
         # rounding dust at a dead centre (1e-15 of the plan) is read as zero, as on paper
-        if self._dust is None or self._dust[0] is not self.ref:
-            self._dust = (self.ref, COINCIDE_REL * np.maximum(self.ref * self.mu, 1e-300))
-        dust = length <= self._dust[1]
-        if dust.any():
-            length = np.where(dust, 0.0, length)
-        exact = np.abs(exact)
-        small = exact <= 1e-12 * self.ref
-        if np.any(small):
-            exact = np.where(small, 0.0, exact)
+        if dust is None or dust[0] is not ref:
+            dust = self._dust = (ref, COINCIDE_REL * self.xp.maximum(ref * self.mu, 1e-300))
+        exact = abs(exact)
+        if self.one:  # the same reading in Python numbers (the perfect pencil reads what is drawn)
+            length = abs(self.pts[end] - self.pts[start])
+            if length <= dust[1]:
+                length = 0.0
+            if exact <= 1e-12 * ref:
+                exact = 0.0
+        else:
+            xp = self.xp
+            length = self.pencil.read(abs(self.pts[end] - self.pts[start]))
+            small = length <= dust[1]
+            if xp.any(small):
+                length = np.where(small, 0.0, length)
+            small = exact <= 1e-12 * ref
+            if xp.any(small):
+                exact = np.where(small, 0.0, exact)
         value = length / self.mu
         self.segments.append((start, end, kind, label, length, value))
-        self.readings.append((label, f"{start} {end}", length, self.mu, value, exact, self.unit, self.ref, True))
+        self.readings.append((label, f"{start} {end}", length, self.mu, value, exact, self.unit, ref, True))
 
     def step(self, op: str, inputs: tuple[str, ...], output: str, words: Callable[[], Phrase]) -> None:
         """A step of the protocol; its sentence is written only when a protocol is asked for."""
@@ -253,9 +323,6 @@ class Builder:
         self.line_labels.append(label)
         return through, u
 
-    def intersect(self, l1: Line, l2: Line, out: str, exact_xy: C, group: Group, point: str) -> C:
-        return self.pencil.cut(self, l1, l2, out, exact_xy, group, point)
-
 
 def lab(name: str) -> str:
     return name.lower()
@@ -267,7 +334,7 @@ def lab(name: str) -> str:
 def meet(b: Builder, g: Group, l1: Line, l2: Line, out: str, exact_xy: C, point: str,
          links: tuple[int, ...]) -> C:
     """The point ``out`` where two construction lines meet, labelled as ``point`` of ``links``."""
-    xy = b.intersect(l1, l2, out, exact_xy, g, point)
+    xy = b.pencil.cut(b, l1, l2, out, exact_xy, g, point)
     b.add(out, xy)
     for lk in links:
         b.labels[(lk, point)] = out
@@ -285,14 +352,14 @@ def image_span(b: Builder, link: int) -> C:
     if len(drawn) < 2:
         return b.factor[link]
     ends = max(((x, y) for ix, x in enumerate(drawn) for y in drawn[ix + 1:]),
-               key=lambda xy: float(np.abs(np.ravel(xy[1] - xy[0])[0])))
+               key=lambda xy: abs(b.s(xy[1] - xy[0])))
     return b.factor[link] * (ends[1] - ends[0])
 
 
 def link_points(b: Builder, link: int) -> None:
     """Similarity theorem: images of the link's other named points."""
     snap = b.snap
-    joints = {jt.point for jt in snap.scene.joints}
+    joints = snap.joint_points
     for name in snap.scene.links[link].points:
         if (link, name) in b.labels:
             continue
@@ -305,11 +372,12 @@ def link_points(b: Builder, link: int) -> None:
             continue
         X = snap.pos(link, name)
         xy = b.image(link, name)
-        b.add(lb, b.pencil.mark(xy, lambda link=link: image_span(b, link), joint=name in joints))
+        b.add(lb, xy if b.one else b.pencil.mark(xy, lambda link=link: image_span(b, link), joint=name in joints))
         b.labels[(link, name)] = lb
-        ref = b.anchor[link][0]
-        b.step("similarity", (ref,), lb, partial(phrase, "similarity", lb=lb, link=link, name=name, ref=ref))
-        exact = np.abs(snap.v(link, X)) if b.sym == "v" else np.abs(snap.a(link, X))
+        if b.protocol:
+            ref = b.anchor[link][0]
+            b.step("similarity", (ref,), lb, partial(phrase, "similarity", lb=lb, link=link, name=name, ref=ref))
+        exact = abs(snap.v(link, X)) if b.sym == "v" else abs(snap.a(link, X))
         b.seg(b.pole, lb, "absolute", f"{b.sym}_{name}", exact)
 
 
@@ -318,38 +386,45 @@ def read_rates(b: Builder) -> None:
     at μ, with the sense the plan shows; a block turns with its guide; the crank's is given."""
     snap = b.snap
     d = snap.scene.driver
-    n = np.size(snap.phi)
-    b.rates[snap.scene.frame] = np.zeros(n)
+    xp = b.xp
+    n = 1 if snap.one else np.size(snap.phi)
+    b.rates[snap.scene.frame] = xp.zeros(n)
 
     def rate(lid: int) -> R:
         if lid not in b.rates:
             how = b.rate.get(lid)
             if isinstance(how, tuple):
                 start, end, length = how
-                sense = np.sign(b.factor[lid].imag)
-                b.rates[lid] = sense * b.pencil.read(np.abs(b.pts[end] - b.pts[start])) / (b.mu * length)
+                sense = xp.sign(b.factor[lid].imag)
+                b.rates[lid] = sense * b.pencil.read(abs(b.pts[end] - b.pts[start])) / (b.mu * length)
             elif how is not None:
                 b.rates[lid] = rate(how)
             else:  # the crank: ω1 and ε1 are data
-                b.rates[lid] = np.full(n, float(d.omega if b.sym == "v" else d.eps))
+                b.rates[lid] = xp.full(n, float(d.omega if b.sym == "v" else d.eps))
         return b.rates[lid]
 
-    for lid in sorted(snap.scene.links):
+    velocity = b.sym == "v"
+    exacts = snap.w if velocity else snap.e
+    unit_ = "rad/s" if velocity else "rad/s^2"
+    for lid, size, omega, eps in snap.rated():
         if lid not in b.factor:
             continue
         drawn = isinstance(b.rate.get(lid), tuple)
         value = rate(lid)
-        exact = snap.w[lid] if b.sym == "v" else snap.e[lid]
-        q, unit_ = (f"omega_{lid}", "rad/s") if b.sym == "v" else (f"eps_{lid}", "rad/s^2")
-        link = snap.scene.links[lid]
-        size = abs(link.length) if link.length else crank_length(snap)
+        exact = exacts[lid]
+        q = omega if velocity else eps
         ref = b.ref / size
-        value, exact = _dust(value, 1e-12 * ref), _dust(exact, 1e-12 * ref)
+        if b.one:
+            floor = 1e-12 * ref
+            value = 0.0 if abs(value) <= floor else value
+            exact = 0.0 if abs(exact) <= floor else exact
+        else:
+            value, exact = _dust(value, 1e-12 * ref), _dust(exact, 1e-12 * ref)
         b.readings.append((q, None, None, None, value, exact, unit_, ref, drawn))
 
 
 def _dust(x: Any, floor: Any) -> Any:
-    """x with what is not above ``floor`` read as zero."""
+    """x with what is not above ``floor`` read as zero (arrays)."""
     small = np.abs(x) <= floor
     return np.where(small, 0.0, x) if small.any() else x
 
@@ -373,10 +448,11 @@ def ensure(b: Builder, link: int, name: str, xy: C) -> str:
             return b.pole
         lb = lab(name)
         if lb in b.pts:
-            apart = np.abs(b.pts[lb] - xy) > COINCIDE_REL * np.maximum(1.0, np.abs(xy))
-            if apart.any() and not apart.all() and b.pencil.exact:
+            xp = b.xp
+            apart = abs(b.pts[lb] - xy) > COINCIDE_REL * xp.maximum(1.0, abs(xy))
+            if xp.any(apart) and not xp.all(apart) and b.pencil.exact:
                 raise Mixed(lb)
-            if apart.any():
+            if xp.any(apart):
                 lb = f"{lb}{link}"
         b.add(lb, xy)
         b.labels[(link, name)] = lb
@@ -388,7 +464,9 @@ def coincident(b: Builder, link: int, name: str, X: C) -> tuple[str, C]:
     if link == b.snap.scene.frame:
         return b.pole, b.zero
     lb = f"{lab(name)}{link}"
-    xy = b.pencil.mark(b.image_at(link, X), lambda: image_span(b, link))
+    xy = b.image_at(link, X)
+    if not b.one:
+        xy = b.pencil.mark(xy, lambda: image_span(b, link))
     b.add(lb, xy)
     b.step("similarity", (b.anchor[link][0],), lb,
            lambda: phrase("coincident", lb=lb, link=link, name=name))
