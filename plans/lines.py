@@ -1,9 +1,10 @@
-"""Two straight lines intersected in closed form, the one formula every construction uses.
+"""Two straight lines intersected in closed form: the force polygons, the hand-drawing model
+and the demonstration's mistakes (the plans' own construction writes the same formula).
 
 A line is a point it passes through and a direction, both plane vectors coded as complex
 numbers (x + iy), as Python numbers or as numpy arrays over positions alike.  What to do
-where the lines are parallel is the caller's: the plans take the exact point, a force
-polygon notes that its two closing reactions lie on one line, the demonstration skips it.
+where the lines are parallel is the caller's: a force polygon notes that its two closing
+reactions lie on one line, the demonstration skips the mistake.
 """
 
 from __future__ import annotations
