@@ -46,6 +46,10 @@ CHAIN_DYADS = 200
 CHAIN_ONE_POSITION = 40e-3
 FORCES_360 = 2e-3
 START_UP = 0.15
+#: What ``START_UP`` leaves above the interpreter importing numpy (0.125 s where the bound was
+#: set): where numpy alone takes longer, ``plans solve`` is held to the floor plus this (no
+#: command that solves can start before numpy has).
+START_OWN = 0.025
 #: ``plans solve`` of the slider-crank whole (seconds of our own work over the interpreter importing numpy).
 SOLVE_BUDGET = 0.10
 
@@ -277,8 +281,9 @@ def start_up_goals(samples: Path, reps: int = 5) -> list[Goal]:
     numpy_alone = f"python importing numpy alone: {floor_s:.3f} s"
     out = []
     for key, what in (("help", f"plans --help starts in ≤ {START_UP:g} s"),
-                      ("start", f"plans solve starts in ≤ {START_UP:g} s (launch to solving begun: "
-                                "interpreter, imports, scene read)"),
+                      ("start", f"plans solve starts in ≤ {START_UP:g} s, or numpy floor + {START_OWN:g} s "
+                                "where numpy alone takes longer (launch to solving begun: interpreter, imports, "
+                                "scene read)"),
                       ("solve", f"plans solve whole, slider_crank.toml with its table: ≤ numpy floor + "
                                 f"{SOLVE_BUDGET:g} s")):
         took, took_cpu, status = t[key]
@@ -290,8 +295,10 @@ def start_up_goals(samples: Path, reps: int = 5) -> list[Goal]:
                                   f"of our own (processor {took_cpu - floor_cpu:.3f} s of our own), median of {reps}",
                             ours / SOLVE_BUDGET, ours <= SOLVE_BUDGET))
         else:
+            bound = max(START_UP, floor_s + START_OWN) if key == "start" else START_UP
             out.append(Goal(what, f"{took:.3f} s (processor {took_cpu:.3f} s), median of {reps} ({numpy_alone}, "
-                                  f"processor {floor_cpu:.3f} s)", took / START_UP, took <= START_UP))
+                                  f"processor {floor_cpu:.3f} s; {took - floor_s:+.3f} s over it)",
+                            took / bound, took <= bound))
     return out
 
 
