@@ -29,10 +29,9 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from functools import partial
-from typing import Any, Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
 import numpy as np
-from numpy.typing import NDArray
 
 from plans.errors import Locked
 from plans.kinematics.cases import Arrays, Numbers, cross, unit
@@ -45,12 +44,15 @@ from plans.tolerances import COINCIDE_REL, LOCK_SIN, NEAR_PARALLEL_SIN
 
 #: Values over the cases: numpy arrays (complex plane vectors, real lengths and rates), or
 #: Python ``complex`` and ``float`` at one position (see :mod:`plans.kinematics.cases`).
-C = NDArray[np.complex128] | Any
-R = NDArray[np.float64] | Any
-#: One construction line: a point it passes through and its unit direction.
-Line = tuple[C, C]
+if TYPE_CHECKING:  # numpy.typing only for the checker: it costs a command's start a millisecond
+    from numpy.typing import NDArray
 
-__all__ = ["Builder", "Line", "Mixed", "Pencil", "PerfectPencil", "Scheme", "cross", "plans_of", "unit"]
+    C = NDArray[np.complex128] | Any
+    R = NDArray[np.float64] | Any
+    #: One construction line: a point it passes through and its unit direction.
+    Line = tuple[C, C]
+
+__all__ = ["Builder", "Mixed", "Pencil", "PerfectPencil", "Scheme", "cross", "plans_of", "unit"]
 
 _FIELDS = ("rot", "r0", "omega", "v0", "eps", "a0")
 
