@@ -157,8 +157,9 @@ def solve_one(plan: Plan, phi: float, order: int) -> tuple[dict, dict, dict] | N
     return _run(plan, rotation1(plan.ref_deg, plan.sense, phi), order, plan.steps)
 
 
-def _run(plan: Plan, rot1: Any, order: int, steps: list) -> tuple[dict, dict, dict] | None:
-    motion: dict[int, Motion] = {plan.frame: [1 + 0j, 0j, 0.0, 0j, 0.0, 0j]}
+def crank_motion(plan: Plan, rot1: Any, order: int) -> Motion:
+    """The crank's motion from e^{iθ1} (a number or an array): its origin and rates where its
+    pivot is not at the origin; ω and ε stay the driver's numbers."""
     z = plan.zpivot
     if z:
         rel = -rot1 * z  # the crank's origin from its pivot
@@ -173,7 +174,12 @@ def _run(plan: Plan, rot1: Any, order: int, steps: list) -> tuple[dict, dict, di
             m1[2], m1[3] = plan.omega, 0j
             if order >= 2:
                 m1[4], m1[5] = plan.eps, 0j
-    motion[plan.crank] = m1
+    return m1
+
+
+def _run(plan: Plan, rot1: Any, order: int, steps: list) -> tuple[dict, dict, dict] | None:
+    motion: dict[int, Motion] = {plan.frame: [1 + 0j, 0j, 0.0, 0j, 0.0, 0j]}
+    motion[plan.crank] = crank_motion(plan, rot1, order)
     pins: dict[tuple[int, complex], tuple] = {}
     slides: dict[str, tuple] = {}
     conditions: dict[str, Any] = {}

@@ -20,7 +20,7 @@ from typing import Any
 
 import numpy as np
 
-from plans.kinematics.fast import Later, Motion, Plan, _rrp, _rrr, rotation
+from plans.kinematics.fast import Later, Motion, Plan, _rrp, _rrr, crank_motion, rotation
 from plans.tolerances import LOCK_SIN
 
 _low = np.minimum.reduce  # the least element, without ndarray.min's Python wrapper
@@ -39,21 +39,7 @@ def solve(plan: Plan, phis: Any, order: int) -> tuple[dict, dict, dict] | None:
     steps = plan.vsteps
     if steps is None:
         steps = plan.vsteps = _array_steps(plan)
-    rot1 = rotation(plan.ref_deg, plan.sense, phis)
-    z = plan.zpivot
-    if z:
-        rel = -rot1 * z  # the crank's origin from its pivot
-        m1 = [rot1, plan.pivot + rel, None, None, None, None]
-        if order >= 1:
-            m1[2], m1[3] = plan.omega, plan.W * rel
-            if order >= 2:
-                m1[4], m1[5] = plan.eps, plan.E * rel
-    elif order >= 2:
-        m1 = [rot1, plan.pivot, plan.omega, 0j, plan.eps, 0j]
-    elif order:
-        m1 = [rot1, plan.pivot, plan.omega, 0j, None, None]
-    else:
-        m1 = [rot1, plan.pivot, None, None, None, None]
+    m1 = crank_motion(plan, rotation(plan.ref_deg, plan.sense, phis), order)
     motion: dict[int, Motion] = {plan.frame: [1 + 0j, 0j, 0.0, 0j, 0.0, 0j], plan.crank: m1}
     pins: dict[tuple[int, complex], tuple] = {}
     slides: dict[str, tuple] = {}
@@ -265,6 +251,26 @@ def _rrr_arrays(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: 
     return True
 
 
+def _rrp_rates(r1: Any, su: Any, ncu: Any, vP1: Any, aP1: Any, order: int) -> tuple:
+    """An RRP group's rates: iωi r1 − ṡ u = −vP1 by Cramer's rule, as the one-position
+    formulas (numpy's fused products): det = Im(conj(i r1)·(−u)) is Im(ũ·r1), ũ = u_y + i·u_x;
+    the right-hand side's sign moved into k1, k2 = conj(r1)/det (ṡ a real part where it was
+    an imaginary one).  Returns det, ωi, ṡ and, at order 2, εi and s̈ (else None)."""
+    det = (su * r1).imag
+    inv = _ONE / det
+    k1 = ncu * inv
+    k2 = r1.conjugate()
+    k2 *= inv
+    wi, sd = (vP1 * k1).imag, (vP1 * k2).real
+    ei = sdd = None
+    if order >= 2:
+        t = wi * wi
+        rhs = t * r1
+        np.subtract(aP1, rhs, out=rhs)
+        ei, sdd = (rhs * k1).imag, (rhs * k2).real
+    return det, wi, sd, ei, sdd
+
+
 def _rrp_arrays(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k: tuple,
                 order: int) -> bool:
     """:func:`plans.kinematics.fast._rrp` over arrays."""
@@ -298,23 +304,9 @@ def _rrp_arrays(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: 
         motion[i] = _placed(rot, P1, z1i, None, None, None, None, 0)
         motion[j] = _placed(turn, B, zBj, None, None, None, None, 0)
         return True
-    # iωi r1 − ṡ u = −vP1 by Cramer's rule, as the one-position formulas (numpy's fused
-    # products): det = Im(conj(i r1)·(−u)) is Im(ũ·r1), ũ = u_y + i·u_x; the right-hand
-    # side's sign moved into k1, k2 = conj(r1)/det (ṡ a real part where it was an imaginary one)
     r1 = B - P1
-    det = (su * r1).imag
+    det, wi, sd, ei, sdd = _rrp_rates(r1, su, ncu, vP1, aP1, order)
     conditions[name] = Later(_condition_rrp, l1, det)
-    inv = _ONE / det
-    k1 = ncu * inv
-    k2 = r1.conjugate()
-    k2 *= inv
-    wi, sd = (vP1 * k1).imag, (vP1 * k2).real
-    ei = sdd = None
-    if order >= 2:
-        t = wi * wi
-        rhs = t * r1
-        np.subtract(aP1, rhs, out=rhs)
-        ei, sdd = (rhs * k1).imag, (rhs * k2).real
     if z1i or zBj:
         motion[i] = _placed(rot, P1, z1i, vP1, aP1, wi, ei, order)
         motion[j] = _placed(turn, B, zBj, sd * u, None if sdd is None else sdd * u, 0.0, 0.0, order)
@@ -357,18 +349,7 @@ def _rrp_many(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: di
             motion[g[2]] = _placed(g[8], B[r], g[9], None, None, None, None, 0)
         return True
     r1 = B - P1
-    det = (su * r1).imag
-    inv = _ONE / det
-    k1 = ncu * inv
-    k2 = r1.conjugate()
-    k2 *= inv
-    wi, sd = (vP1 * k1).imag, (vP1 * k2).real
-    ei = sdd = None
-    if order >= 2:
-        t = wi * wi
-        rhs = t * r1
-        np.subtract(aP1, rhs, out=rhs)
-        ei, sdd = (rhs * k1).imag, (rhs * k2).real
+    det, wi, sd, ei, sdd = _rrp_rates(r1, su, ncu, vP1, aP1, order)
     for r, g in enumerate(groups):
         rot = _rod(wu[r], root[r], g[16]) if g[7] else Later(_rod, wu[r], root[r], g[16])
         sdr, sddr = sd[r], None if sdd is None else sdd[r]
