@@ -154,7 +154,7 @@ def _make_plan(scene: Scene, st: Structure) -> Plan | None:
 
 def solve_one(plan: Plan, phi: float, order: int) -> tuple[dict, dict, dict] | None:
     """The same at one position, in Python numbers, or None."""
-    return _run(plan, rotation1(plan.ref_deg, plan.sense, phi), order, plan.steps)
+    return run_steps(plan, rotation1(plan.ref_deg, plan.sense, phi), order, plan.steps)
 
 
 def crank_motion(plan: Plan, rot1: Any, order: int) -> Motion:
@@ -177,7 +177,9 @@ def crank_motion(plan: Plan, rot1: Any, order: int) -> Motion:
     return m1
 
 
-def _run(plan: Plan, rot1: Any, order: int, steps: list) -> tuple[dict, dict, dict] | None:
+def run_steps(plan: Plan, rot1: Any, order: int, steps: list) -> tuple[dict, dict, dict] | None:
+    """The crank's motion, then each group's step (numbers or arrays alike), or None where a
+    step leaves it to the general solvers."""
     motion: dict[int, Motion] = {plan.frame: [1 + 0j, 0j, 0.0, 0j, 0.0, 0j]}
     motion[plan.crank] = crank_motion(plan, rot1, order)
     pins: dict[tuple[int, complex], tuple] = {}

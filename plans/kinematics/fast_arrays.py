@@ -20,7 +20,7 @@ from typing import Any
 
 import numpy as np
 
-from plans.kinematics.fast import Later, Motion, Plan, _rrp, _rrr, crank_motion, rotation
+from plans.kinematics.fast import Later, Motion, Plan, _rrp, _rrr, rotation, run_steps
 from plans.tolerances import LOCK_SIN
 
 _low = np.minimum.reduce  # the least element, without ndarray.min's Python wrapper
@@ -39,15 +39,7 @@ def solve(plan: Plan, phis: Any, order: int) -> tuple[dict, dict, dict] | None:
     steps = plan.vsteps
     if steps is None:
         steps = plan.vsteps = _array_steps(plan)
-    m1 = crank_motion(plan, rotation(plan.ref_deg, plan.sense, phis), order)
-    motion: dict[int, Motion] = {plan.frame: [1 + 0j, 0j, 0.0, 0j, 0.0, 0j], plan.crank: m1}
-    pins: dict[tuple[int, complex], tuple] = {}
-    slides: dict[str, tuple] = {}
-    conditions: dict[str, Any] = {}
-    for step in steps:
-        if not step[0](plan, motion, pins, slides, conditions, step, order):
-            return None
-    return motion, slides, conditions
+    return run_steps(plan, rotation(plan.ref_deg, plan.sense, phis), order, steps)
 
 
 def _array_steps(plan: Plan) -> list:
