@@ -222,11 +222,14 @@ def _at(plan: Plan, motion: dict, pins: dict, link: int, z: complex, order: int)
 
 def _placed(rot: Any, anchor: Any, z: complex, v: Any, a: Any, omega: Any, eps: Any, order: int) -> Motion:
     """A link placed by its rotation and one of its points (local z, velocity v, acceleration
-    a), with its ω and ε (as far as ordered)."""
+    a), with its ω and ε (as far as ordered); a rotation left until read (:class:`Later`,
+    over arrays) is worked out here when the origin needs it."""
     if not z:  # the point is the link's origin
         if order >= 2:
             return [rot, anchor, omega, v, eps, a]
         return [rot, anchor, omega, v, None, None] if order else [rot, anchor, None, None, None, None]
+    if type(rot) is Later:
+        rot = rot()
     rel = -rot * z  # the origin from the point
     m = [rot, anchor + rel, None, None, None, None]
     if order >= 1:

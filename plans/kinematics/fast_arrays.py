@@ -20,7 +20,7 @@ from typing import Any
 
 import numpy as np
 
-from plans.kinematics.fast import Later, Motion, Plan, _rrp, _rrr, rotation, run_steps
+from plans.kinematics.fast import Later, Plan, _placed, _rrp, _rrr, rotation, run_steps
 from plans.tolerances import LOCK_SIN
 
 _low = np.minimum.reduce  # the least element, without ndarray.min's Python wrapper
@@ -113,24 +113,6 @@ def _at(plan: Plan, motion: dict, pins: dict, link: int, z: complex, z0: Any, or
             done = (r0 + rel, v, a)
     pins[key] = done
     return done
-
-
-def _placed(rot: Any, anchor: Any, z: complex, v: Any, a: Any, omega: Any, eps: Any, order: int) -> Motion:
-    """A link placed by its rotation and one of its points (local z, velocity v, acceleration
-    a), with its ω and ε (as far as ordered), as :func:`plans.kinematics.fast._placed`."""
-    if not z:  # the point is the link's origin
-        if order >= 2:
-            return [rot, anchor, omega, v, eps, a]
-        return [rot, anchor, omega, v, None, None] if order else [rot, anchor, None, None, None, None]
-    if type(rot) is Later:
-        rot = rot()
-    rel = -rot * z  # the origin from the point
-    m = [rot, anchor + rel, None, None, None, None]
-    if order >= 1:
-        m[2], m[3] = omega, v + 1j * omega * rel
-        if order >= 2:
-            m[4], m[5] = eps, a + (1j * eps - omega * omega) * rel
-    return m
 
 
 # --------------------------------------------------------------------------- read when asked
