@@ -102,6 +102,10 @@ input[type=range] { flex: 1; min-width: 12em; }
 .seglabel { fill: #555; font-style: italic; }
 .cline { stroke: var(--thin); stroke-dasharray: 2 1.5; }
 .cline.hi { stroke: var(--hi); }
+.arm { stroke: var(--hi); stroke-dasharray: 1.5 1; }
+.armfoot { fill: var(--hi); }
+.armlabel { fill: var(--hi); font-style: italic; }
+.fline { stroke: var(--thin); stroke-dasharray: 4 1.5 1 1.5; }
 .seg { stroke: var(--ink); }
 .lever { fill: rgba(0,0,0,.04); stroke: var(--thin); stroke-linejoin: round; }
 .seg.rel, .seg.nrm, .seg.tan, .seg.cor, .seg.sld { stroke: #2c3e50; stroke-dasharray: 4 1.5; }

@@ -66,7 +66,7 @@
     while (a - b > 180) b += 360;
     return a + (b - a) * f;
   }
-  function drawScheme(svg, S, t, marks, links, size) {
+  function drawScheme(svg, S, t, marks, links, size, arms) {
     clear(svg);
     defs(svg);
     const u = size / 100;
@@ -101,11 +101,27 @@
         class: "joint" + (hi ? " hi" : ""), "stroke-width": f3(0.35 * u)});
       el(svg, "text", {x: f3(p[0] + 2 * u), y: f3(-p[1] - 2 * u), "font-size": f3(4 * u), class: "label" + (hi ? " hi" : "")}, nm);
     }
+    // a moment equation: each known force's line and its arm h from the point the moments are about
+    for (const a of arms || []) {
+      if (Math.hypot(a.foot[0] - a.at[0], a.foot[1] - a.at[1]) > 0.2 * u) {
+        el(svg, "line", {x1: f3(a.at[0]), y1: f3(-a.at[1]), x2: f3(a.foot[0]), y2: f3(-a.foot[1]), class: "fline",
+          "stroke-width": f3(0.3 * u)});
+      }
+      el(svg, "line", {x1: f3(a.about[0]), y1: f3(-a.about[1]), x2: f3(a.foot[0]), y2: f3(-a.foot[1]), class: "arm",
+        "stroke-width": f3(0.6 * u), "data-arm": a.label});
+      el(svg, "circle", {cx: f3(a.foot[0]), cy: f3(-a.foot[1]), r: f3(0.7 * u), class: "armfoot"});
+      // the label just past the foot, along the arm: arms from one point part their labels
+      const dx = a.foot[0] - a.about[0], dy = a.foot[1] - a.about[1], d = Math.hypot(dx, dy) || 1;
+      const m = [a.foot[0] + 2.5 * u * dx / d, a.foot[1] + 2.5 * u * dy / d];
+      el(svg, "text", {x: f3(m[0]), y: f3(-m[1]), "font-size": f3(3.6 * u), class: "armlabel",
+        "text-anchor": dx < 0 ? "end" : "start", "dominant-baseline": "middle"}, lab("h_" + a.label));
+    }
   }
-  function schemeBox(S) {
+  function schemeBox(S, withArms) {
     const pts = [];
     for (const nm in S.points) for (const p of S.points[nm]) pts.push(p);
     for (const g of S.guides) pts.push(g.from, g.to);
+    if (withArms) for (const s of L.steps) for (const a of s.arms || []) pts.push(a.foot);  // an arm may reach past the links
     return pts;
   }
 
@@ -166,7 +182,7 @@
   const steps = L.steps;
   const panelsById = {};
   for (const p of L.panels) panelsById[p.id] = p;
-  const schemeSize = fit($("scheme"), schemeBox(L.scheme), 12);
+  const schemeSize = fit($("scheme"), schemeBox(L.scheme, true), 12);
   let mistakeOn = null;
 
   function revealed(n) {
@@ -200,7 +216,7 @@
     const s = steps[cur], panel = panelsById[s.panel];
     const m = mistakeOn && mistakeOn.panel === s.panel ? mistakeOn : null;
     drawPanel($("panel"), panel, revealed(cur), s, m);
-    drawScheme($("scheme"), L.scheme, 0, s.scheme, s.links, schemeSize);
+    drawScheme($("scheme"), L.scheme, 0, s.scheme, s.links, schemeSize, s.arms);
     $("counter").textContent = (cur + 1) + " / " + steps.length;
     $("step-text").textContent = lab(s.text);
     $("panel-title").textContent = panelTitle(panel) + ", μ = " + nf(panel.scale, 4) + " " + unit(panel.unit);

@@ -557,3 +557,49 @@ def test_russian_cycle_view_labels_and_coincident_plan_points(browser, tmp_path)
     # only the panels the scene asks for share the row
     assert pg.evaluate("document.getElementById('cyc-vel').closest('.stage').classList.contains('two')")
     assert errors == []
+
+
+@pytest.mark.parametrize("name", ["v_engine", "six_bar", "shaper"])
+def test_moment_steps_draw_each_printed_arm_on_the_scheme(name):
+    """A moment equation's step carries each known force's arm on the page's scheme: the
+    foot is on the force's line, the arm ⟂ it, and its length is the h the step prints."""
+    scene = load_scene(SAMPLES / f"{name}.toml")
+    L = lesson(scene, frames=6, language="en")
+    mu_l = L["scheme"]["mu_l"]
+    drawn = 0
+    for s in L["steps"]:
+        if s["op"] != "moment":
+            continue
+        printed = {label: float(h) for _sign, label, h in
+                   re.findall(r"([+−])(\w+)·h \([\d.e+-]+ N × [\d.]+ mm = ([\d.e+-]+) m\)", s["text"].split(";")[0])}
+        for a in s.get("arms", []):
+            P, foot, at = (complex(*a[key]) for key in ("about", "foot", "at"))
+            arm, along = foot - P, foot - at
+            assert abs(arm) / mu_l == pytest.approx(printed[a["label"]], rel=2e-3, abs=2e-6), (s["text"], a)
+            if abs(along) > 1e-3:  # the arm ⟂ the force's line through its point
+                assert abs((arm.conjugate() * along).real) <= 2e-3 * abs(arm) * abs(along), a
+            drawn += 1
+        # every printed arm that a pencil can show is drawn
+        assert {a["label"] for a in s.get("arms", [])} == {k for k, h in printed.items() if h * mu_l >= 0.5}
+    assert drawn > 0
+
+
+def test_scheme_shows_the_arms_of_a_moment_step(browser, tmp_path):
+    f = tmp_path / "v.html"
+    L = lesson(load_scene(SAMPLES / "v_engine.toml"), frames=12, language="ru")
+    f.write_text(page(SAMPLES / "v_engine.toml", frames=12, language="ru"), encoding="utf-8")
+    pg, errors, _ = _open(browser, f)
+    k = next(n for n, s in enumerate(L["steps"]) if s.get("arms"))
+    assert pg.locator("#scheme [data-arm]").count() == 0  # the first step is the velocity plan's
+    for _ in range(k):
+        pg.click("#next")
+    arms = L["steps"][k]["arms"]
+    assert pg.locator("#scheme [data-arm]").count() == len(arms)
+    for a in arms:
+        ln = pg.locator(f"#scheme line[data-arm='{a['label']}']")
+        got = [float(ln.get_attribute(x)) for x in ("x1", "y1", "x2", "y2")]
+        want = [a["about"][0], -a["about"][1], a["foot"][0], -a["foot"][1]]
+        assert got == pytest.approx(want, abs=2e-3)
+    pg.click("#next")
+    assert pg.locator("#scheme [data-arm]").count() == len(L["steps"][k + 1].get("arms", []))
+    assert errors == []

@@ -29,6 +29,7 @@ from plans.units import clean
 if TYPE_CHECKING:  # the force rooms are loaded only for a scene with forces
     from plans.forces.lever import LeverAnalysis
     from plans.forces.polygons import ForceAnalysis
+    from plans.forces.protocol import Arm
 
 #: How many crank positions the cycle of a page holds by default (every 5°).
 FRAMES = 72
@@ -176,13 +177,26 @@ def _group_links(label: str) -> list[int]:
     return []
 
 
-def _steps(sol: Solution, k: int, lang: str) -> tuple[list[dict], list[dict]]:
+#: An arm shorter than this on the page's scheme (mm) is not drawn: the force passes through
+#: the point, up to what a pencil can show.
+ARM_MM = 0.5
+
+
+def _arms(arms: tuple[Arm, ...], mu_l: float) -> list[dict[str, Any]]:
+    """A moment equation's arms on the page's scheme (mm): the perpendicular from the point
+    the moments are taken about to each known force's line."""
+    return [{"label": a.label, "about": page_xy(a.about * mu_l), "foot": page_xy(a.foot * mu_l),
+             "at": page_xy(a.at * mu_l)} for a in arms if abs(a.foot - a.about) * mu_l >= ARM_MM]
+
+
+def _steps(sol: Solution, k: int, lang: str, mu_l: float) -> tuple[list[dict], list[dict]]:
     scene = sol.scene
     panels: list[dict] = []
     steps: list[dict] = []
     pp = sol.plans[k] if sol.plans else None
 
-    def add(panel: dict, plan_steps: list[Step], links: list[int] | None = None):
+    def add(panel: dict, plan_steps: list[Step], links: list[int] | None = None,
+            arms: list[tuple[Arm, ...]] | None = None):
         panel["found"] = [s.output for s in plan_steps if s.op == "intersect" and s.output in panel["points"]]
         panels.append(panel)
         reveal = _reveal(panel, plan_steps) if panel is not None else []
@@ -190,6 +204,8 @@ def _steps(sol: Solution, k: int, lang: str) -> tuple[list[dict], list[dict]]:
             steps.append({"panel": panel["id"], "text": s.say(lang),
                           "op": s.op, **reveal[n],
                           "scheme": _scheme_marks(scene, s, panel["kind"]), "links": links or []})
+            if arms and arms[n]:
+                steps[-1]["arms"] = _arms(arms[n], mu_l)
 
     if pp is not None and pp.velocity is not None:
         add(_panel("velocity", "velocity plan", pp.velocity, "mm/(m/s)"), list(pp.velocity.steps))
@@ -204,8 +220,10 @@ def _steps(sol: Solution, k: int, lang: str) -> tuple[list[dict], list[dict]]:
         polys = {("crank" if p.kind == "crank" else f"group {p.group}"): p for p in force_polygons(fa, k)}
         fsteps = force_steps(fa, lv, k)
         by_plan: dict[str, list[Step]] = {}
+        arms: dict[str, list[tuple[Arm, ...]]] = {}
         for f in fsteps:
             by_plan.setdefault(f.plan, []).append(f.step)
+            arms.setdefault(f.plan, []).append(f.arms)
         for name, st in by_plan.items():
             if name == "lever":
                 plan = lever_plan(lv, k)
@@ -214,7 +232,7 @@ def _steps(sol: Solution, k: int, lang: str) -> tuple[list[dict], list[dict]]:
                 plan = polys[name].plan
                 panel = _panel(name.replace(" ", "-"), f"force polygon, {name}", plan, "mm/N")
             links = _group_links(name) or ([scene.driver.link] if name == "crank" else [])
-            add(panel, st, links)
+            add(panel, st, links, arms[name])
     return panels, steps
 
 
@@ -264,7 +282,7 @@ def lesson(scene: Scene, *, phi_deg: float | None = None, frames: int = FRAMES,
         from plans.demo.cycle_forces import cycle_forces
 
         cycle["forces"] = cycle_forces(*forces)
-    panels, steps = _steps(sol, k, language)
+    panels, steps = _steps(sol, k, language, mu_l)
     at = solve(scene, [float(sol.kinematics.phi_deg[k])], order=order, structure=sol.structure)
     scheme = _scheme(scene, at, mu_l)
     scheme["guides"] = cycle["scheme"]["guides"]  # a guide is drawn over the whole stroke
