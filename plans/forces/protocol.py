@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from plans.forces.lever import LeverAnalysis, lever_plan
 from plans.forces.polygons import ForceAnalysis, GroupForces, force_polygons
-from plans.kinematics.exact import cross
+from plans.kinematics.assur import cross
 from plans.kinematics.plan import Plan, Step
 from plans.phrases import Phrase, phrase
 from plans.records import frozen

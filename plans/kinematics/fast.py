@@ -272,7 +272,7 @@ def _rrr(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k
         motion[i] = _placed(roti, P1, z1i, None, None, None, None, 0)
         motion[j] = _placed(rotj, P3, z3j, None, None, None, None, 0)
         return True
-    # iωi r1 − iωj r3 = vP3 − vP1, by Cramer's rule as exact._System
+    # iωi r1 − iωj r3 = vP3 − vP1, by Cramer's rule as assur._System
     c2 = -1j * r3
     cc1 = (1j * r1).conjugate()
     det = (cc1 * c2).imag
@@ -325,7 +325,7 @@ def _rrp(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k
         motion[i] = _placed(mi_rot, P1, z1i, None, None, None, None, 0)
         motion[j] = _placed(turn, B, zBj, None, None, None, None, 0)
         return True
-    # iωi r1 − ṡ u = −vP1 (the guide on the frame), by Cramer's rule with exact._System's
+    # iωi r1 − ṡ u = −vP1 (the guide on the frame), by Cramer's rule with assur._System's
     # numbers (a dead centre's exact zeros kept)
     r1 = B - P1
     cc1 = (1j * r1).conjugate()

@@ -1,0 +1,464 @@
+"""The exact solvers of the five class-II Assur groups (RRR, RRP, RPR, PRP, RPP), each
+written once for numpy arrays over positions and for plain Python numbers alike: positions
+in closed form per group, velocities and accelerations from the group's vector loop as a
+2×2 linear system (Cramer's rule).  :mod:`plans.kinematics.exact` runs them in the order
+of the structure analysis and holds the result.
+"""
+
+from __future__ import annotations
+
+import cmath
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from plans.errors import Locked, NotAssemblable
+from plans.kinematics.structure import Group, Structure
+from plans.scene.model import Joint, Scene
+from plans.tolerances import ASSEMBLY_REL, LOCK_SIN
+
+if TYPE_CHECKING:
+    from plans.kinematics.exact import _Ctx
+
+# numpy arrays over positions (or numbers at one position); typed loosely because numpy's
+# operator stubs do not follow Optional fields that the order of analysis fills in.
+C = Any  # complex128 array, shape (N,)
+R = Any  # float64 array, shape (N,)
+
+def cross(a, b):
+    """a × b (z component) for complex-coded plane vectors."""
+    return (a.conjugate() * b).imag
+
+
+@dataclass(slots=True)
+class _Motion:
+    rot: C  # e^{iθ}: kept as a unit complex, so no angle is ever taken in the solvers
+    r0: C
+    omega: R = None
+    v0: C = None
+    eps: R = None
+    a0: C = None
+
+    @property
+    def theta(self) -> R:
+        return np.angle(self.rot)
+
+
+# --------------------------------------------------------------------------- helpers
+
+
+def _program(scene: Scene, st: Structure) -> list:
+    """(solver, group, constants) per group, derived once per scene and structure."""
+    done = scene.memo.get("exact")
+    if done is None or done[0] is not st:
+        done = scene.memo["exact"] = (st, [(_SOLVERS[g.kind], g, _CONSTANTS[g.kind](scene, g))
+                                           for g in st.groups])
+    return done[1]
+
+
+def _fail(cls, ctx: _Ctx, g: Group, mask, point: str, why: str):
+    k = int(np.flatnonzero(np.atleast_1d(mask))[0])
+    return cls(why, group=f"{g.kind} {g.name}", point=point, phi_deg=float(ctx.phis[k]))
+
+
+def _at(ctx: _Ctx, link: int, z: complex) -> tuple[Any, Any, Any]:
+    """r, v, a of the point with local coordinates z on a known link (v, a only as ordered)."""
+    m = ctx.motion[link]
+    if link == ctx.frame:
+        return m.r0 + z, m.v0, m.a0
+    if link == ctx.crank and z != ctx.zpivot:
+        done = ctx.pins.get(z)  # the crank pin carries several groups (V-engine)
+        if done is None:
+            rel = m.rot * (z - ctx.zpivot)
+            done = ctx.pins[z] = (ctx.pivot + rel, ctx.W * rel, ctx.E * rel)
+        return done
+    if not z:
+        return m.r0, m.v0, m.a0
+    rel = m.rot * z
+    v = a = None
+    if ctx.order >= 1:
+        w = 1j * m.omega
+        v = m.v0 + w * rel
+        if ctx.order >= 2:
+            a = m.a0 + (1j * m.eps - m.omega * m.omega) * rel
+    return m.r0 + rel, v, a
+
+
+def _carried(ctx: _Ctx, link: int, X: C) -> tuple[C, C]:
+    """v and a of the point fixed to ``link`` that coincides with X now (zero on the frame)."""
+    m = ctx.motion[link]
+    if link == ctx.frame:
+        return m.v0, m.a0
+    rel = X - m.r0
+    v = m.v0 + 1j * m.omega * rel
+    a = None if m.eps is None else m.a0 + (1j * m.eps - m.omega * m.omega) * rel
+    return v, a
+
+
+def _guide_line(ctx: _Ctx, jt: Joint, constants: bool = False) -> tuple[C, C]:
+    """Global origin and unit direction of a joint's guide (with ``constants``: plain numbers
+    for a guide on the frame)."""
+    assert jt.guide is not None
+    if constants and jt.guide.link == ctx.frame:
+        return jt.guide.origin, jt.guide.direction
+    m = ctx.motion[jt.guide.link]
+    return m.r0 + m.rot * jt.guide.origin, m.rot * jt.guide.direction
+
+
+def _place(ctx: _Ctx, link: int, rot: C, anchor: C, z: complex) -> _Motion:
+    """A link placed by its rotation e^{iθ} and one of its points (local z)."""
+    m = _Motion(rot, anchor - rot * z if z else anchor)
+    ctx.motion[link] = m
+    return m
+
+
+def _rates(ctx: _Ctx, m: _Motion, anchor: C, v: C, a: C, omega: R, eps: R) -> None:
+    """Rates of a placed link from one point's v, a and the link's ω, ε."""
+    rel = m.r0 - anchor if m.r0 is not anchor else None
+    m.omega = omega
+    m.v0 = v if rel is None else v + 1j * omega * rel
+    if ctx.order >= 2:
+        m.eps = eps
+        m.a0 = a if rel is None else a + (1j * eps - omega * omega) * rel
+
+
+class _System:
+    """x1·c1 + x2·c2 = rhs for several right-hand sides with the same c1, c2 (Cramer);
+    ``det`` = c1 × c2 is read before solving (to check for a lock)."""
+
+    __slots__ = ("cc1", "c2", "det", "k1", "k2")
+
+    def __init__(self, c1: C, c2: C) -> None:
+        self.cc1 = c1.conjugate()
+        self.c2 = c2
+        self.det = (self.cc1 * c2).imag
+        self.k1 = None
+
+    def __call__(self, rhs: C) -> tuple[R, R]:
+        if self.k1 is None:
+            inv = 1.0 / self.det
+            self.k1 = (-self.c2).conjugate() * inv  # x1 = cross(rhs, c2)/det = −Im(rhs·conj(c2))/det
+            self.k2 = self.cc1 * inv  # x2 = cross(c1, rhs)/det = Im(conj(c1)·rhs)/det
+        return (rhs * self.k1).imag, (rhs * self.k2).imag
+
+
+def _lock(ctx: _Ctx, g: Group, det: R, size: Any, point: str) -> None:
+    """Condition number |c1||c2| / |c1 × c2|; parallel construction lines lock the group."""
+    adet = abs(det)
+    if (ctx.xp.low(adet) <= LOCK_SIN * size) if isinstance(size, float) else (ctx.xp.low(adet / size) <= LOCK_SIN):
+        raise _fail(Locked, ctx, g, adet <= LOCK_SIN * size, point,
+                    "the construction lines are parallel and do not coincide: the group locks here "
+                    "(velocities are unbounded)")
+    ctx.conditions[g.name] = size / adet
+
+
+def _root(ctx: _Ctx, g: Group, x: R, y: R, scale: Any, point: str, why: Any) -> R:
+    """sqrt(x·y) with x·y >= 0 up to rounding (relative to scale()²); below that not
+    assemblable (``why()`` says why)."""
+    xp = ctx.xp
+    x = x * y
+    if xp.low(x) < 0:
+        size = scale()
+        bad = x < -ASSEMBLY_REL * size * size
+        if (bad.any() if hasattr(bad, "any") else bad):
+            raise _fail(NotAssemblable, ctx, g, bad, point, why())
+        x = xp.maximum(x, 0.0)
+    return xp.sqrt(x)
+
+
+def _worst(D: Any, low: float, high: float) -> float:
+    """The distance farthest outside [low, high] (the one a group could not span)."""
+    d = np.atleast_1d(np.asarray(D, dtype=float))
+    return float(d.max()) if d.max() > high else float(d.min())
+
+
+def _branch_hint(g: Group) -> str:
+    """Which ``[branches]`` entry picks the group's other assembly (where there are two)."""
+    return (f"; the group has no assembly here on either branch ([branches] \"{g.name}\" = "
+            f"{-g.branch:+d} selects the other of two assemblies only where two exist)")
+
+
+_NAMES: dict[Joint, str] = {}
+
+
+def _name(jt: Joint) -> str:
+    """A P joint's name (formatted once)."""
+    nm = _NAMES.get(jt)
+    if nm is None:
+        nm = _NAMES[jt] = jt.name
+    return nm
+
+
+def _turn(jt: Joint) -> complex:
+    """e^{i(α − α_s)}: a slider's rotation relative to the link carrying its guide."""
+    assert jt.guide is not None
+    return cmath.exp(1j * (jt.guide.angle - jt.slider_angle))
+
+
+def _rotation_of(ctx: _Ctx, q: int, turn: complex) -> C:
+    """Rotation of a link that keeps its angle to link q."""
+    if q == ctx.frame:
+        return ctx.xp.full(ctx.n, turn)
+    return ctx.motion[q].rot * turn
+
+
+# --------------------------------------------------------------------------- the five dyads
+
+
+def _k_rrr(scene: Scene, g: Group) -> tuple:
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    p, q = g.known
+    Li, Lj = scene.links[i], scene.links[j]
+    zi = Li.points[j2.point] - Li.points[j1.point]
+    zj = Lj.points[j2.point] - Lj.points[j3.point]
+    l1, l3 = abs(zi), abs(zj)
+    return (_local(scene, p, j1.point), _local(scene, q, j3.point), l1, l3,
+            zi.conjugate() / l1, zj.conjugate() / l3,
+            Li.points[j1.point], Lj.points[j3.point], 0.5 * (l1 * l1 - l3 * l3))
+
+
+def _local(scene: Scene, link: int, name: str) -> complex:
+    return scene.frame_points[name] if link == scene.frame else scene.links[link].points[name]
+
+
+def _rrr(ctx: _Ctx, g: Group, k: tuple) -> None:
+    zp, zq, l1, l3, ci, cj, z1i, z3j, half_diff = k
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    p, q = g.known
+    P1, vP1, aP1 = _at(ctx, p, zp)
+    P3, vP3, aP3 = _at(ctx, q, zq)
+    d = P3 - P1
+    D = abs(d)
+    if ctx.xp.low(D) <= ASSEMBLY_REL * (l1 + l3):
+        raise _fail(NotAssemblable, ctx, g, D <= ASSEMBLY_REL * (l1 + l3), j2.point,
+                    f"{j1.point} and {j3.point} coincide: the position of {j2.point} is undefined")
+    # a along d, h across it; h² as (l1 − a)(l1 + a): no cancellation near a tangent assembly
+    a = (half_diff + 0.5 * D * D) / D
+    h = _root(ctx, g, l1 - a, l1 + a, lambda: l1 + l3 + D, j2.point,
+              lambda: f"{j1.point}{j2.point} = {l1 * 1e3:.6g} mm and {j3.point}{j2.point} = {l3 * 1e3:.6g} mm "
+                      f"cannot span {j1.point}{j3.point} = {_worst(D, abs(l1 - l3), l1 + l3) * 1e3:.6g} mm "
+                      f"(they span {abs(l1 - l3) * 1e3:.6g} to {(l1 + l3) * 1e3:.6g} mm)" + _branch_hint(g))
+    r1 = (a + 1j * h if g.branch > 0 else a - 1j * h) * (d / D)  # B − P1
+    B = P1 + r1
+    r3 = B - P3
+    # rotations from the unit vectors along the links (|r1| = l1 only to rounding, which
+    # a near-tangent assembly makes large)
+    mi = _place(ctx, i, r1 * (ci / abs(r1)), P1, z1i)
+    mj = _place(ctx, j, r3 * (cj / abs(r3)), P3, z3j)
+    if ctx.order < 1:
+        return
+    # iωi r1 − iωj r3 = vP3 − vP1
+    c1, c2 = 1j * r1, -1j * r3
+    sys2 = _System(c1, c2)
+    _lock(ctx, g, sys2.det, l1 * l3, j2.point)
+    wi, wj = sys2(vP3 - vP1)
+    ei = ej = None
+    if ctx.order >= 2:
+        ei, ej = sys2(aP3 - aP1 + wi * wi * r1 - wj * wj * r3)
+    _rates(ctx, mi, P1, vP1, aP1, wi, ei)
+    _rates(ctx, mj, P3, vP3, aP3, wj, ej)
+
+
+def _k_rrp(scene: Scene, g: Group) -> tuple:
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    Li, Lj = scene.links[i], scene.links[j]
+    zi = Li.points[j2.point] - Li.points[j1.point]
+    l1 = abs(zi)
+    return (_local(scene, g.known[0], j1.point), l1, zi.conjugate() / l1, Li.points[j1.point],
+            _turn(j3), Lj.points[j2.point])
+
+
+def _rrp(ctx: _Ctx, g: Group, k: tuple) -> None:
+    zp, l1, ci, z1i, turn, zBj = k
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    p, q = g.known
+    P1, vP1, aP1 = _at(ctx, p, zp)
+    G0, u = _guide_line(ctx, j3, constants=True)
+    wu = (P1 - G0) * u.conjugate()  # t0 + i·e: along and across the guide
+    t0, e = wu.real, wu.imag
+    root = _root(ctx, g, l1 - e, l1 + e, lambda: l1, j2.point,
+                 lambda: f"{j1.point}{j2.point} = {l1 * 1e3:.6g} mm is shorter than the distance "
+                         f"{float(np.max(np.abs(e))) * 1e3:.6g} mm from {j1.point} to the guide of {j2.point}"
+                         + _branch_hint(g))
+    B = G0 + (t0 + root if g.branch > 0 else t0 - root) * u
+    r1 = B - P1
+    mi = _place(ctx, i, r1 * (ci / abs(r1)), P1, z1i)
+    mj = _place(ctx, j, _rotation_of(ctx, q, turn), B, zBj)
+    if ctx.order < 1:
+        return
+    vBq, aBq = _carried(ctx, q, B)
+    c1, c2 = 1j * r1, -u
+    sys2 = _System(c1, c2)
+    _lock(ctx, g, sys2.det, l1, j2.point)
+    wi, sd = sys2(vBq - vP1)
+    vB = sd * u if q == ctx.frame else vBq + sd * u
+    mq = ctx.motion[q]
+    ei = sdd = aB = None
+    if ctx.order >= 2:
+        if q == ctx.frame:
+            ei, sdd = sys2(wi * wi * r1 - aP1)
+            aB = sdd * u
+        else:
+            cor = 2j * mq.omega * sd * u
+            ei, sdd = sys2(aBq + cor - aP1 + wi * wi * r1)
+            aB = aBq + cor + sdd * u
+    _rates(ctx, mi, P1, vP1, aP1, wi, ei)
+    _rates(ctx, mj, B, vB, aB, mq.omega, mq.eps)
+    ctx.slides[_name(j3)] = (sd, sdd)
+
+
+def _k_rpr(scene: Scene, g: Group) -> tuple:
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    Lj = scene.links[j]
+    guide = j2.guide
+    assert guide is not None
+    c0 = guide.origin - Lj.points[j3.point]
+    return (_local(scene, g.known[0], j1.point), _local(scene, g.known[1], j3.point),
+            cross(guide.direction, c0), Lj.points[j3.point], _turn(j2),
+            scene.links[i].points[j1.point])
+
+
+def _rpr(ctx: _Ctx, g: Group, k: tuple) -> None:
+    zp, zq, ecc, z3j, turn, z1i = k
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    p, q = g.known
+    xp = ctx.xp
+    A, vA, aA = _at(ctx, p, zp)
+    Cq, vC, aC = _at(ctx, q, zq)
+    guide = j2.guide
+    assert guide is not None
+    d = A - Cq
+    D = abs(d)
+    if xp.low(D) == 0 or xp.high(abs(ecc / xp.maximum(D, 1e-300))) > 1 + ASSEMBLY_REL:
+        sin_ = ecc / np.where(D > 0, D, 1.0)
+        bad = (D == 0) | (np.abs(sin_) > 1 + ASSEMBLY_REL)
+        raise _fail(NotAssemblable, ctx, g, bad, j2.point,
+                    f"the slot of link {j} (offset {abs(ecc):.6g} m from {j3.point}) cannot pass through "
+                    f"{j1.point}")
+    s = xp.arcsin(xp.clip(ecc / D, -1.0, 1.0))
+    psi = xp.angle(d)
+    # θ_j: the slot through C + e^{iθ}c0 along e^{i(θ+α)} holds A iff D sin(ψ − θ − α) = ecc;
+    # branch +1 puts A ahead along the slot
+    tj = psi - guide.angle - s if g.branch > 0 else psi - guide.angle - math.pi + s
+    mj = _place(ctx, j, xp.exp(1j * tj), Cq, z3j)
+    mi = _place(ctx, i, mj.rot * turn, A, z1i)
+    if ctx.order < 1:
+        return
+    u = mj.rot * guide.direction
+    c1, c2 = 1j * d, u
+    sys2 = _System(c1, c2)
+    _lock(ctx, g, sys2.det, D, j2.point)
+    wj, sd = sys2(vA - vC)
+    ej = sdd = None
+    if ctx.order >= 2:
+        cor = 2j * wj * sd * u
+        ej, sdd = sys2(aA - aC + wj * wj * d - cor)
+    _rates(ctx, mj, Cq, vC, aC, wj, ej)
+    _rates(ctx, mi, A, vA, aA, wj, ej)
+    ctx.slides[_name(j2)] = (sd, sdd)
+
+
+def _k_prp(scene: Scene, g: Group) -> tuple:
+    return (_turn(g.joints[0]), _turn(g.joints[2]), scene.links[g.links[0]].points[g.joints[1].point],
+            scene.links[g.links[1]].points[g.joints[1].point])
+
+
+def _prp(ctx: _Ctx, g: Group, k: tuple) -> None:
+    turn1, turn3, zBi, zBj = k
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    p, q = g.known
+    G1, u1 = _guide_line(ctx, j1)
+    G3, u3 = _guide_line(ctx, j3)
+    sys2 = _System(u1, -u3)
+    det = sys2.det
+    if ctx.xp.low(abs(det)) <= LOCK_SIN:
+        raise _fail(NotAssemblable, ctx, g, abs(det) <= LOCK_SIN, j2.point,
+                    "the two guides are parallel: they have no common point")
+    ctx.conditions[g.name] = 1.0 / abs(det)
+    s1, _ = sys2(G3 - G1)
+    B = G1 + s1 * u1
+    mp, mq = ctx.motion[p], ctx.motion[q]
+    mi = _place(ctx, i, _rotation_of(ctx, p, turn1), B, zBi)
+    mj = _place(ctx, j, _rotation_of(ctx, q, turn3), B, zBj)
+    if ctx.order < 1:
+        return
+    vBp, aBp = _carried(ctx, p, B)
+    vBq, aBq = _carried(ctx, q, B)
+    sd1, sd3 = sys2(vBq - vBp)
+    vB = vBp + sd1 * u1
+    sdd1 = sdd3 = aB = None
+    if ctx.order >= 2:
+        k1 = 2j * mp.omega * sd1 * u1
+        k3 = 2j * mq.omega * sd3 * u3
+        sdd1, sdd3 = sys2(aBq + k3 - aBp - k1)
+        aB = aBp + k1 + sdd1 * u1
+    _rates(ctx, mi, B, vB, aB, mp.omega, mp.eps)
+    _rates(ctx, mj, B, vB, aB, mq.omega, mq.eps)
+    ctx.slides[_name(j1)] = (sd1, sdd1)
+    ctx.slides[_name(j3)] = (sd3, sdd3)
+
+
+def _k_rpp(scene: Scene, g: Group) -> tuple:
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    guide = j2.guide
+    assert guide is not None
+    zK = scene.links[j].points[j3.point]
+    return (_local(scene, g.known[0], j1.point), _turn(j3), zK, zK - guide.origin, _turn(j2),
+            scene.links[i].points[j1.point])
+
+
+def _rpp(ctx: _Ctx, g: Group, k: tuple) -> None:
+    zp, turn3, zK, zKg, turn2, z1i = k
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    p, q = g.known
+    A, vA, aA = _at(ctx, p, zp)
+    G3, u3 = _guide_line(ctx, j3)
+    mq = ctx.motion[q]
+    rot = _rotation_of(ctx, q, turn3)
+    guide = j2.guide
+    assert guide is not None
+    u2 = rot * guide.direction
+    sys2 = _System(u2, u3)
+    det = sys2.det
+    if ctx.xp.low(abs(det)) <= LOCK_SIN:
+        raise _fail(NotAssemblable, ctx, g, abs(det) <= LOCK_SIN, j2.point,
+                    f"the slot of link {j} is parallel to its guide: {j2.point} cannot be reached")
+    ctx.conditions[g.name] = 1.0 / abs(det)
+    # r0_j = G3 + t u3 − rot zK ; A on slot: cross(u2, A − G3 − t u3 + rot (zK − g2)) = 0
+    t = cross(u2, A - G3 + rot * zKg) / det
+    ctx.motion[j] = _Motion(rot, G3 + t * u3 - rot * zK)
+    mi = _place(ctx, i, rot * turn2, A, z1i)
+    if ctx.order < 1:
+        return
+    vAq, aAq = _carried(ctx, q, A)
+    sd2, sd3 = sys2(vA - vAq)
+    vAj = vAq + sd3 * u3
+    sdd2 = sdd3 = aAj = None
+    if ctx.order >= 2:
+        if q == ctx.frame:
+            sdd2, sdd3 = sys2(aA)
+            aAj = sdd3 * u3
+        else:
+            k3 = 2j * mq.omega * sd3 * u3
+            k2 = 2j * mq.omega * sd2 * u2
+            sdd2, sdd3 = sys2(aA - aAq - k3 - k2)
+            aAj = aAq + k3 + sdd3 * u3
+    _rates(ctx, ctx.motion[j], A, vAj, aAj, mq.omega, mq.eps)
+    _rates(ctx, mi, A, vA, aA, mq.omega, mq.eps)
+    ctx.slides[_name(j2)] = (sd2, sdd2)
+    ctx.slides[_name(j3)] = (sd3, sdd3)
+
+
+_SOLVERS = {"RRR": _rrr, "RRP": _rrp, "RPR": _rpr, "PRP": _prp, "RPP": _rpp}
+_CONSTANTS = {"RRR": _k_rrr, "RRP": _k_rrp, "RPR": _k_rpr, "PRP": _k_prp, "RPP": _k_rpp}
