@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -30,6 +29,7 @@ from plans.kinematics.exact import Kinematics
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step
 from plans.kinematics.scales import LONGEST_MM, common_scales, refit
 from plans.phrases import phrase
+from plans.records import frozen
 from plans.tolerances import COINCIDE_REL
 from plans.units import clean, percent
 
@@ -52,7 +52,7 @@ def nice_scale(longest: float, target_mm: float = 100.0, mantissas: tuple[float,
     return 1.0 / (10.0 ** (e + 1))  # pragma: no cover
 
 
-@dataclass(frozen=True, slots=True)
+@frozen
 class Reading:
     """A value read off a plan next to the exact value."""
 

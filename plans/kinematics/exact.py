@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import cmath
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -29,6 +29,7 @@ import numpy as np
 from plans.kinematics import fast, fast_arrays
 from plans.kinematics.assur import _Motion, _program
 from plans.kinematics.structure import Structure, analyse
+from plans.records import frozen
 from plans.scene.model import Scene
 
 # numpy arrays over positions; typed loosely because numpy's operator stubs do not
@@ -40,7 +41,7 @@ R = Any  # float64 array, shape (N,)
 SCALAR_MAX = 4
 
 
-@dataclass(frozen=True)
+@frozen(slots=False)
 class Kinematics:
     """Positions (and, if asked, velocities and accelerations) of every link and point."""
 
