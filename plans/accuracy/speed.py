@@ -47,8 +47,9 @@ CHAIN_ONE_POSITION = 40e-3
 FORCES_360 = 2e-3
 START_UP = 0.15
 #: What ``START_UP`` leaves above the interpreter importing numpy (0.125 s where the bound was
-#: set): where numpy alone takes longer, ``plans solve`` is held to the floor plus this (no
-#: command that solves can start before numpy has).
+#: set): where numpy alone (stopped as the start is, without its clean-up at exit) takes
+#: longer, ``plans solve`` is held to that floor plus this (no command that solves can start
+#: before numpy has).
 START_OWN = 0.025
 #: ``plans solve`` of the slider-crank whole (seconds of our own work over the interpreter importing numpy).
 SOLVE_BUDGET = 0.10
@@ -273,6 +274,9 @@ def start_up_goals(samples: Path, reps: int = 5) -> list[Goal]:
     scene = str(samples / "slider_crank.toml")
     t = _commands_seconds({
         "floor": ["-c", "import numpy"],
+        # the floor of the start, stopped as the start is (no clean-up at exit, which costs numpy
+        # 8–17 ms here): like is compared with like
+        "floor_start": ["-c", "import os\nimport numpy\nos._exit(0)\n"],
         "help": ["-c", _CONSOLE.format(entry=entry), "--help"],
         "start": ["-c", _UNTIL_SOLVING.format(entry=entry), "solve", scene],
         "solve": ["-c", _CONSOLE.format(entry=entry), "solve", scene],
@@ -294,11 +298,15 @@ def start_up_goals(samples: Path, reps: int = 5) -> list[Goal]:
             out.append(Goal(what, f"{took:.3f} s = {floor_s:.3f} s ({numpy_alone.split(':')[0]}) + {ours:.3f} s "
                                   f"of our own (processor {took_cpu - floor_cpu:.3f} s of our own), median of {reps}",
                             ours / SOLVE_BUDGET, ours <= SOLVE_BUDGET))
+        elif key == "start":
+            base, base_cpu, _ = t["floor_start"]
+            bound = max(START_UP, base + START_OWN)
+            out.append(Goal(what, f"{took:.3f} s (processor {took_cpu:.3f} s), median of {reps} (python importing "
+                                  f"numpy alone, stopped the same way: {base:.3f} s, processor {base_cpu:.3f} s; "
+                                  f"{took - base:+.3f} s over it)", took / bound, took <= bound))
         else:
-            bound = max(START_UP, floor_s + START_OWN) if key == "start" else START_UP
             out.append(Goal(what, f"{took:.3f} s (processor {took_cpu:.3f} s), median of {reps} ({numpy_alone}, "
-                                  f"processor {floor_cpu:.3f} s; {took - floor_s:+.3f} s over it)",
-                            took / bound, took <= bound))
+                                  f"processor {floor_cpu:.3f} s)", took / START_UP, took <= START_UP))
     return out
 
 
