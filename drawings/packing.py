@@ -164,9 +164,7 @@ def blocks_of(groups: list[list[Panel]], area: Box, lang: str, numbers: dict[flo
             continue
         found, left = shapes(grp, aw, limit, gap, spots, heading(phi, numbers.get(phi), lang), extra)
         flow = Flow(tuple(grp), partial(heading, phi, numbers.get(phi), lang))
-        out.append(flow if left else Whole(found, flow if len(grp) > 1 else None))
-    if keep_whole:
-        out = [Whole(b.shapes, None) if isinstance(b, Whole) else b for b in out]
+        out.append(flow if left else Whole(found, None if keep_whole or len(grp) == 1 else flow))
     return out
 
 

@@ -20,9 +20,9 @@ from numpy.typing import NDArray
 from plans.forces.loads import AppliedMoment
 from plans.forces.polygons import ForceAnalysis, ForcePolygon, force_polygons
 from plans.forces.shared import RULER_MM, mu_force, nice_scale, safe_div, unit_vector
-from plans.kinematics.assur import cross
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step
 from plans.kinematics.scales import round_scale
+from plans.lines import cross
 from plans.phrases import phrase
 from plans.records import frozen
 from plans.units import clean, percent

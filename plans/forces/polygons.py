@@ -51,11 +51,10 @@ from plans.forces.loads import (
     parse_loads,
 )
 from plans.forces.shared import RULER_MM, mu_force, safe_div, unit_vector
-from plans.kinematics.assur import cross
 from plans.kinematics.exact import Kinematics
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Written
 from plans.kinematics.structure import Group
-from plans.lines import along, meet
+from plans.lines import along, cross, meet
 from plans.phrases import Phrase, phrase
 from plans.records import frozen
 from plans.scene.model import Joint, Scene

@@ -12,8 +12,8 @@ from __future__ import annotations
 
 from plans.forces.lever import LeverAnalysis, lever_plan
 from plans.forces.polygons import ForceAnalysis, GroupForces, force_polygons
-from plans.kinematics.assur import cross
 from plans.kinematics.plan import Plan, Step
+from plans.lines import cross
 from plans.phrases import Phrase, phrase
 from plans.records import frozen
 

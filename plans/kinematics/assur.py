@@ -16,6 +16,7 @@ import numpy as np
 
 from plans.errors import Locked, NotAssemblable
 from plans.kinematics.structure import Group, Structure
+from plans.lines import cross
 from plans.scene.model import Joint, Scene
 from plans.tolerances import ASSEMBLY_REL, LOCK_SIN
 
@@ -26,10 +27,6 @@ if TYPE_CHECKING:
 # operator stubs do not follow Optional fields that the order of analysis fills in.
 C = Any  # complex128 array, shape (N,)
 R = Any  # float64 array, shape (N,)
-
-def cross(a, b):
-    """a × b (z component) for complex-coded plane vectors."""
-    return (a.conjugate() * b).imag
 
 
 @dataclass(slots=True)

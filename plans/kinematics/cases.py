@@ -14,6 +14,8 @@ from typing import Any
 
 import numpy as np
 
+from plans.lines import cross
+
 
 class Arrays:
     """Cases as numpy arrays (each value an array over the cases, or a number the same for all)."""
@@ -102,11 +104,6 @@ class Numbers:
 def sign(x: float) -> float:
     """The sign of one number (a datum: ω1, ε1), as a Python float."""
     return 1.0 if x > 0 else -1.0 if x < 0 else 0.0
-
-
-def cross(a: Any, b: Any) -> Any:
-    """a × b (z component) of plane vectors coded as complex numbers, arrays or numbers."""
-    return (a.conjugate() * b).imag
 
 
 def unit(z: Any) -> Any:
