@@ -159,7 +159,7 @@ def _m_panel(d: Dynamics, lang: str) -> Panel:
     rad = np.radians(t.phi_deg - t.phi_deg[0])
     xs_s, ys_s = spline.sample(rad, t.M_pr, spline.slopes(rad, t.M_pr), 8)
     ye = d.exact.M_pr * s.M
-    L = 2 * math.pi * s.phi
+    L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
     ax.frame(L, float(min(ye.min(), t.M_pr.min() * s.M)), float(max(ye.max(), t.M_pr.max() * s.M)), "M_пр" if lang == "ru" else "M_pr")
     ax.positions(t.phi_deg[:-1])
     ax.curve(ax.x(d.exact.phi_deg), ye, EXACT)
@@ -182,7 +182,7 @@ def _a_panel(d: Dynamics, lang: str) -> Panel:
     t = d.table
     rec = Recording()
     ax = Axes(rec, "dyn-A", s.phi, float(t.phi_deg[0]), lang)
-    L = 2 * math.pi * s.phi
+    L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
     ya = np.concatenate([d.A_c, d.A_d]) * s.A
     ax.frame(L, float(ya.min()), float(ya.max()), "A")
     ax.positions(t.phi_deg[:-1])
@@ -205,7 +205,7 @@ def _t_panel(d: Dynamics, lang: str) -> Panel:
     t = d.table
     rec = Recording()
     ax = Axes(rec, "dyn-T", s.phi, float(t.phi_deg[0]), lang)
-    L = 2 * math.pi * s.phi
+    L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
     ye = d.dT_exact * s.A
     ax.frame(L, float(min(ye.min(), d.dT.min() * s.A)), float(max(ye.max(), d.dT.max() * s.A)), "ΔT")
     ax.positions(t.phi_deg[:-1])
@@ -224,7 +224,7 @@ def _i_panel(d: Dynamics, lang: str) -> Panel:
     t = d.table
     rec = Recording()
     ax = Axes(rec, "dyn-I", s.phi, float(t.phi_deg[0]), lang)
-    L = 2 * math.pi * s.phi
+    L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
     ye = d.exact.I_pr * s.I
     ax.frame(L, 0.0, float(ye.max()), "I_пр" if lang == "ru" else "I_pr")
     ax.positions(t.phi_deg[:-1])
@@ -280,7 +280,7 @@ def _omega_panel(d: Dynamics, lang: str) -> Panel:
     fw = d.flywheel
     rec = Recording()
     ax = Axes(rec, "dyn-w", s.phi, float(d.exact.phi_deg[0]), lang)
-    L = 2 * math.pi * s.phi
+    L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
     span = max(float(np.ptp(d.omega)), float(np.ptp(d.omega_exact)), 1e-300)
     mu_w = 40.0 / span
     y_g = (d.omega - fw.omega_mean) * mu_w

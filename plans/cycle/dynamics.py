@@ -356,7 +356,8 @@ def dynamics(scene: Scene, spec: DynamicsSpec | None = None, structure: Structur
     om_e, d_e = quadrature.motion(ext, ex.I_pr, dT_e, _usable(I_ex, ex.I_pr), omega_m)
     _, d_m = quadrature.motion(ext, ex.I_pr, dT_e, _usable(I_mer, ex.I_pr), omega_m)
     fw = Flywheel(delta, omega_m, I_ex, I_graph, I_mer, d_g, d_e, d_m, bound, work.bound)
-    mu_phi = axis_mm / (2 * math.pi)
+    # the φ axis of a four-stroke cycle is half as long again: 1 mm for every 2° of 720°
+    mu_phi = axis_mm * (1.5 if cycle == 720 else 1.0) / math.radians(cycle)
     mu_M = nice_scale(float(np.max(np.abs(tab.M_pr))) or 1.0, 50.0)
     A_range = float(max(np.max(np.abs(A_c)), np.max(np.abs(A_d)), np.ptp(dT)))
     H = spec.pole_mm or _pole(mu_M, mu_phi, A_range)
@@ -384,7 +385,7 @@ def _check_cycle(scene: Scene, loads: Loads, cycle: float) -> None:
     cannot close a cycle of one revolution."""
     if cycle == 720:
         return
-    for k, gl in enumerate(loads.gas):
+    for gl in loads.gas:
         if gl.fires is not None or gl.period == 720:
             raise InputError(f"{gl.name} is given over the four-stroke cycle (720°); set cycle_deg = 720",
                              file=scene.path, field="dynamics.cycle_deg")
