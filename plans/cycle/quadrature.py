@@ -73,7 +73,7 @@ class Machine:
             assert joint.guide is not None
             z = sc.links[gl.link].points[joint.point]
             r, v, _ = kin.point_on(gl.link, z)
-            u = joint.guide.direction if joint.guide.link == sc.frame else \
+            u: Any = joint.guide.direction if joint.guide.link == sc.frame else \
                 kin.motion[joint.guide.link].rot * joint.guide.direction
             if gl.phi_table is None:
                 cols.append((v * np.conj(_toward_pivot(sc, r, u))).real)  # the dead centres
