@@ -342,3 +342,36 @@ def test_console_refuses_a_bad_formula_in_one_line(tmp_path, capsys):
     assert main(["solve", str(f), "--quiet"]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and "loads.moment[0].expression" in err and str(f) in err
+
+
+# --------------------------------------------------------------------------- positions by travel
+
+
+@pytest.mark.parametrize("key, values, stroke", [
+    ("s_mm", [0, 20, 35, 70], "down"),
+    ("s_fraction", [0.25, 1.0], "up"),
+])
+def test_a_position_by_the_pistons_travel(key, values, stroke):
+    """The central slider-crank in closed form: x = r + l − s, cos θ = (x² + r² − l²)/(2xr)."""
+    raw = _raw(SINGLE)
+    raw["driver"].pop("positions")
+    raw["driver"][key] = values
+    raw["driver"]["s_stroke"] = stroke
+    sc = scene_from_dict(raw, "s.toml")
+    r, l = 0.035, 0.1207
+    want = []
+    for v in values:
+        s = v / 1000 if key == "s_mm" else v * 2 * r
+        x = r + l - s
+        th = math.degrees(math.acos(max(-1.0, min(1.0, (x * x + r * r - l * l) / (2 * x * r)))))
+        want.append(th if stroke == "down" else (360.0 - th) % 360.0)
+    assert sc.driver.phis_deg == pytest.approx(want, abs=1e-7)
+
+
+def test_a_travel_beyond_the_stroke_is_refused():
+    raw = _raw(SINGLE)
+    raw["driver"].pop("positions")
+    raw["driver"]["s_mm"] = 71
+    with pytest.raises(InputError) as exc:
+        scene_from_dict(raw, "s.toml")
+    assert exc.value.field == "driver.s_mm" and "0..70 mm" in str(exc.value)
