@@ -5,7 +5,8 @@ grid, each interval first cut where M_pr is not smooth: where a piston turns at 
 centre (a stroke's diagram ends, a stroke's pressure starts), where its travel crosses a
 row of an indicator diagram (the interpolant's kink), at the rows of a diagram over the
 crank angle, and where a resisting load turns with the velocity.  These points are found
-where their functions change sign on the grid, then by bisection to round-off.  Between
+where their functions change sign on the grid, then by subdivision and a last chord to
+round-off.  Between
 them M_pr is analytic: the three-point rule (exact for quintics) on intervals of a tenth of
 a degree errs by about h⁶ f⁽⁶⁾/2016000 ≈ 1e-20 of the integrand's scale, and the stated
 bound is Σ |Q₃ − Q₂| over the intervals (the two-point rule's error, far above the
@@ -26,7 +27,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from plans.forces.loads import Loads, _toward_pivot, _travel
+from plans.forces.loads import Loads, _toward_pivot, _travel, apply_loads
 from plans.kinematics.exact import solve
 from plans.kinematics.structure import Structure
 from plans.scene.model import Scene
@@ -36,7 +37,7 @@ R = NDArray[np.float64]
 _X3, _W3 = np.polynomial.legendre.leggauss(3)
 _X2, _W2 = np.polynomial.legendre.leggauss(2)
 FINE = 32  # samples per grid step of a window around an extreme
-BISECTIONS = 60
+SUBDIVIDE, ROUNDS = 32, 4  # a bracket of a cut is divided 32 times, four times over
 
 
 @dataclass
@@ -50,16 +51,32 @@ class Machine:
     phi0: float  # deg, start of the cycle
     cycle: float  # deg
 
-    def at(self, phis_deg: R) -> tuple[R, R]:
-        """I_pr and M_pr at the crank angles (deg)."""
-        from .dynamics import reduce
-
+    def at(self, phis_deg: R, inertia: bool = True) -> tuple[R, R]:
+        """I_pr (zeros unless ``inertia``) and M_pr at the crank angles (deg), as
+        :func:`.dynamics.reduce` sums them, without its rows and analogues."""
         phis = np.asarray(phis_deg, float)
         if len(phis) == 0:
             return np.zeros(0), np.zeros(0)
-        red = reduce(self.scene, self.loads, solve(self.scene, phis, order=2, structure=self.structure),
-                     self.rotor)
-        return red.I_pr, red.M_pr
+        sc, loads = self.scene, self.loads
+        kin = solve(sc, phis, order=2, structure=self.structure)
+        w = np.abs(kin.omega(sc.driver.link))
+        I = np.full(kin.n, self.rotor)
+        if inertia:
+            for lid in loads.centres:
+                m, inert = loads.masses[lid], loads.inertias[lid]
+                if m > 0:
+                    I = I + m * (np.abs(kin.point_on(lid, sc.links[lid].points[loads.centres[lid]])[1]) / w) ** 2
+                if inert > 0:
+                    I = I + inert * (kin.omega(lid) / w) ** 2
+        applied = apply_loads(sc, loads, kin)
+        M = np.zeros(kin.n)
+        for f in applied.forces:
+            if f.kind != "inertia":
+                M = M + (f.F * np.conj(kin.point_on(f.link, f.local)[1])).real / w
+        for mo in applied.moments:
+            if mo.kind != "inertia":
+                M = M + mo.M * kin.omega(mo.link) / w
+        return I, M
 
     # ------------------------------------------------------------------ where M_pr is not smooth
 
@@ -92,6 +109,26 @@ class Machine:
                 cols.append(kin.omega(ml.link))
         return np.array(cols).reshape(len(cols), kin.n)
 
+    def _roots(self, which: NDArray[np.intp], x0: R, x1: R) -> R:
+        """Where event ``which[j]`` changes sign in [x0[j], x1[j]]: the bracket cut 32 times
+        at a time (all brackets in one solve) to a millionth of the grid step, then the
+        chord through its ends (the function is smooth there: the chord errs by the square
+        of the bracket)."""
+        m = len(x0)
+        t = np.linspace(0.0, 1.0, SUBDIVIDE + 1)
+        f0 = f1 = np.zeros(m)
+        for _ in range(ROUNDS):
+            xs = x0[:, None] + (x1 - x0)[:, None] * t
+            vals = self._event_values(solve(self.scene, xs.ravel(), order=1, structure=self.structure))
+            f = vals[np.repeat(which, SUBDIVIDE + 1), np.arange(xs.size)].reshape(m, SUBDIVIDE + 1)
+            change = np.signbit(f[:, :-1]) != np.signbit(f[:, 1:])
+            k = np.argmax(change, axis=1)  # the first interval where the sign changes
+            rows = np.arange(m)
+            x0, x1 = xs[rows, k], xs[rows, k + 1]
+            f0, f1 = f[rows, k], f[rows, k + 1]
+        den = np.where(f1 != f0, f1 - f0, 1.0)
+        return np.where(f1 != f0, x0 - f0 * (x1 - x0) / den, 0.5 * (x0 + x1))
+
     def cuts(self, grid: R) -> R:
         """The crank angles (deg) inside the cycle where M_pr is not smooth."""
         out: list[float] = []
@@ -107,16 +144,7 @@ class Machine:
             a, b = ev[:, :-1], ev[:, 1:]
             which, cell = np.nonzero(a * b < 0)
             if len(cell):
-                x0, x1 = grid[cell].copy(), grid[cell + 1].copy()
-                f0 = a[which, cell]
-                for _ in range(BISECTIONS):
-                    mid = 0.5 * (x0 + x1)
-                    vals = self._event_values(solve(self.scene, mid, order=1, structure=self.structure))
-                    fm = vals[which, np.arange(len(mid))]
-                    left = fm * f0 > 0
-                    x0, x1 = np.where(left, mid, x0), np.where(left, x1, mid)
-                    f0 = np.where(left, fm, f0)
-                out += [float(x) for x in 0.5 * (x0 + x1)]
+                out += [float(x) for x in self._roots(which, grid[cell], grid[cell + 1])]
         return np.unique(np.asarray(out, float))
 
 
@@ -143,7 +171,7 @@ def integrate(machine: Machine, grid: R) -> Work:
     mid = 0.5 * (breaks[1:] + breaks[:-1])
     half = 0.5 * np.diff(breaks)
     pts = np.concatenate([(mid[:, None] + half[:, None] * _X3).ravel(), (mid[:, None] + half[:, None] * _X2).ravel()])
-    M = machine.at(pts)[1]
+    M = machine.at(pts, inertia=False)[1]
     m = len(mid)
     q3 = 0.5 * h * (M[:3 * m].reshape(m, 3) @ _W3)
     q2 = 0.5 * h * (M[3 * m:].reshape(m, 2) @ _W2)
