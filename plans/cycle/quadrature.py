@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 from numpy.typing import NDArray
@@ -72,7 +72,7 @@ class Machine:
         M = np.zeros(kin.n)
         for f in applied.forces:
             if f.kind != "inertia":
-                M = M + (f.F * np.conj(kin.point_on(f.link, f.local)[1])).real / w
+                M = M + (f.F * np.conj(kin.point_on(f.link, cast(Any, f.local))[1])).real / w
         for mo in applied.moments:
             if mo.kind != "inertia":
                 M = M + mo.M * kin.omega(mo.link) / w
