@@ -66,6 +66,14 @@ WORDS: dict[str, tuple[str, str]] = {
     "energy": ("Работы и кинетическая энергия, Дж", "Work and kinetic energy, J"),
     "with_graphical": ("с маховиком по Виттенбауэру", "with the Wittenbauer flywheel"),
     "with_exact": ("с точным маховиком", "with the exact flywheel"),
+    "indicator": ("Индикаторная диаграмма", "Indicator diagram"),
+    "intake": ("впуск", "intake"),
+    "compression": ("сжатие", "compression"),
+    "expansion": ("расширение", "expansion"),
+    "exhaust": ("выпуск", "exhaust"),
+    "down": ("ход к валу", "toward the crank"),
+    "up": ("ход от вала", "away from the crank"),
+    "fires": ("воспламенение при φ", "ignition at φ"),
 }
 
 
@@ -346,6 +354,53 @@ def table_panels(tables: Sequence[CycleTable], lang: str, prefix: str,
     return out
 
 
+def indicator_panels(d: Dynamics, lang: str) -> list[Panel]:
+    """Each cylinder's indicator diagram as given: the pressure against the piston's travel
+    from the outer dead centre, one line per stroke (the working stroke drawn main)."""
+    from plans.forces.loads import ignition, parse_loads
+
+    out = []
+    for k, gl in enumerate(parse_loads(d.scene).gas):
+        if not gl.diagram or gl.stroke <= 0:
+            continue
+        H_mm = gl.stroke * 1000
+        p_top = max(float(np.max(np.abs(p))) for _, p in gl.diagram.values()) or 1.0
+        mu_s = 100.0 / H_mm
+        mu_p = nice_scale_mm(p_top, 60.0)
+        rec = Recording()
+        ax = Axes(rec, f"ind-{k}", 1.0, 0.0, lang)
+        lows = [float(np.min(p)) for _, p in gl.diagram.values()]
+        ax.frame(100.0, min(lows + [0.0]) * mu_p, p_top * mu_p, "p", "s")
+        for side, (ts, ps) in gl.diagram.items():
+            style = MAIN if side in ("expansion", "down") else (THIN if side in ("compression", "up") else
+                                                                Style(width=0.25, dash=(3, 1.5)))
+            pts = [(float(t * 1000 * mu_s), float(-p * mu_p)) for t, p in zip(ts, ps, strict=True)]
+            rec.polyline(pts, style, f"ind-{k}-{side}")
+            # each stroke named at its own place along the travel, the low ones below their line
+            at = {"expansion": 0.3, "down": 0.3, "compression": 0.12, "up": 0.12, "exhaust": 0.55,
+                  "intake": 0.8}[side]
+            x = at * 100.0
+            y = -float(np.interp(at * gl.stroke, ts, ps)) * mu_p
+            below = side == "intake"
+            rec.text(layout(tr(side, lang), x + 1.0, y + (1.5 if below else -1.0), 2.5, "start",
+                            "top" if below else "bottom"), "note")
+        scale = (f"μ_s = {fmt(mu_s, 4, lang)} mm/mm (H = {fmt(H_mm, 4, lang)} mm); "
+                 f"μ_p = {fmt(mu_p * 1e6, 4, lang)} mm/MPa")
+        note = None
+        if gl.fires is not None:
+            note = f"{tr('fires', lang)} = {fmt(ignition(d.scene, gl), 5, lang)}°"
+        out.append(plot_panel(f"ind-{k}", "dynamics", f"{tr('indicator', lang)} {gl.name}", rec, scale, note,
+                              lang=lang))
+    return out
+
+
+def nice_scale_mm(top: float, target_mm: float) -> float:
+    """mm per unit drawing ``top`` at about ``target_mm``."""
+    from plans.kinematics.construction import nice_scale
+
+    return nice_scale(top, target_mm)
+
+
 def analogue_plans(d: Dynamics, lang: str) -> list[Panel]:
     """Plans of velocity analogues at the table's positions: velocity plans drawn at
     μ_v = μ/|ω1|, so that every segment is the analogue v/ω1 at μ (mm per m), the pole p."""
@@ -372,7 +427,8 @@ def dynamics_panels(d: Dynamics, tables: Sequence[CycleTable], lang: str) -> lis
               tr("Ipr", lang), f"{tr('Mpr', lang)}; {tr('sign', lang)}", tr("energy", lang)]
     plans = [] if d.scene.wants("velocity_plan") else analogue_plans(d, lang)  # else on the first sheet
     return ([_m_panel(d, lang), _a_panel(d, lang), _t_panel(d, lang), _i_panel(d, lang), _w_panel(d, lang),
-             _omega_panel(d, lang), _fly_table(d, lang)] + table_panels(tables, lang, "dyn", titles) + plans)
+             _omega_panel(d, lang), _fly_table(d, lang)] + indicator_panels(d, lang)
+            + table_panels(tables, lang, "dyn", titles) + plans)
 
 
 # --------------------------------------------------------------------------- the hook

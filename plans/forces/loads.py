@@ -526,17 +526,30 @@ def ignition(scene: Scene, gl: GasLoad) -> float:
     key = ("ignition", gl.joint, gl.link, gl.fires)
     if key in scene.memo:
         return scene.memo[key]
+    joint = next(j for j in scene.joints if j.name == gl.joint)
+    assert joint.guide is not None
+    z = scene.links[gl.link].points[joint.point]
+
+    def speed(at: Any) -> R:  # the piston's velocity toward the crank's pivot (its travel's rate)
+        kin = solve(scene, np.asarray(at, float), order=1)
+        r, v, _ = kin.point_on(gl.link, z)
+        u: Any = joint.guide.direction if joint.guide.link == scene.frame else \
+            kin.motion[joint.guide.link].rot * joint.guide.direction
+        return (v * np.conj(_toward_pivot(scene, r, u))).real * np.sign(scene.driver.omega)
+
     phis = gl.fires + np.linspace(-180.0, 180.0, 361)
     try:
         t = _travel(scene, solve(scene, phis, order=0), gl.joint, gl.link)
         k = int(np.argmin(t))
         lo, hi = float(phis[max(k - 1, 0)]), float(phis[min(k + 1, 360)])
-        for _ in range(8):  # 64 samples a step: the bracket shrinks 64 times
+        for _ in range(8):  # 64 samples a step: the bracket where the travel turns shrinks 64 times
             grid = np.linspace(lo, hi, 65)
-            tt = _travel(scene, solve(scene, grid, order=0), gl.joint, gl.link)
-            j = int(np.argmin(tt))
-            lo, hi = float(grid[max(j - 1, 0)]), float(grid[min(j + 1, 64)])
-            if hi - lo < 1e-12:
+            up = speed(grid) > 0
+            j = int(np.argmax(up)) if np.any(up) and not up[0] else 0
+            if j == 0:
+                break
+            lo, hi = float(grid[j - 1]), float(grid[j])
+            if hi - lo < 1e-13:
                 break
     except ConstructionError as exc:
         raise InputError(f"a four-stroke diagram needs the crank to turn a full revolution ({exc})",
