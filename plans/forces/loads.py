@@ -527,14 +527,14 @@ def ignition(scene: Scene, gl: GasLoad) -> float:
     if key in scene.memo:
         return scene.memo[key]
     joint = next(j for j in scene.joints if j.name == gl.joint)
-    assert joint.guide is not None
+    guide = joint.guide
+    assert guide is not None
     z = scene.links[gl.link].points[joint.point]
 
     def speed(at: Any) -> R:  # the piston's velocity toward the crank's pivot (its travel's rate)
         kin = solve(scene, np.asarray(at, float), order=1)
         r, v, _ = kin.point_on(gl.link, z)
-        u: Any = joint.guide.direction if joint.guide.link == scene.frame else \
-            kin.motion[joint.guide.link].rot * joint.guide.direction
+        u: Any = guide.direction if guide.link == scene.frame else kin.motion[guide.link].rot * guide.direction
         return (v * np.conj(_toward_pivot(scene, r, u))).real * np.sign(scene.driver.omega)
 
     phis = gl.fires + np.linspace(-180.0, 180.0, 361)
