@@ -26,7 +26,7 @@ from plans.scene.model import load_scene, scene_from_dict
 ROOT = Path(__file__).resolve().parent.parent
 SINGLE = ROOT / "samples" / "single_four_stroke.toml"
 VTWIN = ROOT / "samples" / "v_twin_four_stroke.toml"
-TURNING = ROOT / "samples" / "turning_moment.toml"
+TURNING = ROOT / "samples" / "flywheel" / "turning_moment.toml"
 STROKES = ("intake", "compression", "expansion", "exhaust")
 
 
