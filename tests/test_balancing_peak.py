@@ -38,3 +38,20 @@ def test_peak_of_a_force_whose_largest_sample_is_the_peak():
     e = load_engine(ROOT / "samples" / "engines" / "inline4.toml")
     chk = exact_check(e)
     assert chk.max_exact == pytest.approx(float(np.max(np.abs(chk.exact))), rel=1e-12)
+
+
+def test_an_engine_with_no_rotating_masses(tmp_path):
+    """The 90° V-twin with m_rot = 0: no rotating force; its first-order reciprocating force
+    is m_rec r ω² turning with the crank, taken by a counterweight of m·r = m_rec·r."""
+    from plans.balancing.analysis import balance
+
+    text = (ROOT / "samples" / "engines" / "v_twin.toml").read_text().replace("m_rot = 0.56615", "m_rot = 0")
+    f = tmp_path / "v0.toml"
+    f.write_text(text)
+    e = load_engine(f)
+    b = balance(e)
+    assert abs(b.forces["rotating"].forward) == 0
+    cw = [c for c in b.counterweights if c.of == "first_order"]
+    assert len(cw) == 1 and cw[0].mass_radius == pytest.approx(0.96485 * 0.035, rel=1e-12)
+    assert not [c for c in b.counterweights if c.of == "rotating"]
+    assert exact_check(e).max_exact > 0
