@@ -375,3 +375,19 @@ def test_a_travel_beyond_the_stroke_is_refused():
     with pytest.raises(InputError) as exc:
         scene_from_dict(raw, "s.toml")
     assert exc.value.field == "driver.s_mm" and "0..70 mm" in str(exc.value)
+
+
+def test_a_diagram_in_fractions_of_the_stroke_and_of_p_max():
+    """The course's standard diagram: s/H and p/p_max; the same cylinder as the sample's."""
+    raw = _raw(SINGLE)
+    gas = raw["loads"]["gas"][0]
+    gas["p_max"] = 500
+    gas["travel"] = "fraction"
+    gas["diagram"] = {k: [[s / 70, p / 500] for s, p in rows] for k, rows in gas["diagram"].items()}
+    got = dynamics(scene_from_dict(raw, "f.toml"))
+    want = dynamics(load_scene(SINGLE))
+    assert np.max(np.abs(got.exact.M_pr - want.exact.M_pr)) <= 1e-12 * np.max(np.abs(want.exact.M_pr))
+    raw["loads"]["gas"][0]["diagram"]["intake"] = [[0, 0], [0.5, 0]]
+    with pytest.raises(InputError) as exc:
+        dynamics(scene_from_dict(raw, "f.toml"))
+    assert exc.value.field == "loads.gas[0].diagram.intake"

@@ -39,6 +39,8 @@ lengths in the file's ``unit`` (or strings such as ``"82 mm"``).
     # of its ignition (the outer dead centre nearest to it; default 360, intake from 0)
     # diagram = { intake = [...], compression = [...], expansion = [...], exhaust = [...] }
     # fires_deg = 360
+    # the course's standard diagram: travel = "fraction" (s/H from 0 to 1) and p_max = 5
+    # (in pressure_unit): the tables' pressures are then fractions of p_max
 
     [[loads.force]]            # an external force at a named point of a link
     link = 3
@@ -319,7 +321,11 @@ def _parse_loads(scene: Scene) -> Loads:
         if not isinstance(body, dict):
             raise fail(f"loads.gas[{k}]", "expected a table")
         check_keys(body, ("link", "diameter", "area", "area_unit", "pressure", "pressure_unit", "strokes",
-                          "direction", "diagram", "name", "fires_deg"), file=path, where=where)
+                          "direction", "diagram", "name", "fires_deg", "p_max", "travel"), file=path, where=where)
+        for key in ("p_max", "travel"):
+            if key in body and "diagram" not in body:
+                raise fail(f"{where}{key}", "goes with an indicator diagram (diagram = {...})")
+        fraction = r.choice(body, "travel", where, ("length", "fraction"), "length") == "fraction"
         if "diameter" in body and "area" in body:
             raise fail(f"{where}area", "give diameter or area, not both")
         lid = moving_link(body, where)
@@ -362,13 +368,18 @@ def _parse_loads(scene: Scene) -> Loads:
                 raise fail(f"{where}diagram", "expected { down = [[s, p], ...], up = [[s, p], ...] } or the "
                                               "four strokes { intake, compression, expansion, exhaust }")
             outer, stroke_len = _stroke(scene, pj[0].name, lid)
+            # the pressures as given, or fractions of p_max (in pressure_unit)
+            unit_p = number(body, "p_max", where, positive=True) * scale if "p_max" in body else scale
             for side, table in diag.items():
                 f = f"{where}diagram.{side}"
                 if not (isinstance(table, list) and len(table) >= 2
                         and all(isinstance(row, list) and len(row) == 2 for row in table)):
                     raise fail(f, "expected at least two rows [travel, pressure]")
-                s = np.array([length(row[0], f, positive=False) for row in table])
-                p = np.array([number({"p": row[1]}, "p", f + ".") for row in table]) * scale
+                if fraction:  # the course's standard diagram: travel in fractions of H, p of p_max
+                    s = np.array([r.value(row[0], f, nonneg=True) for row in table]) * stroke_len
+                else:
+                    s = np.array([length(row[0], f, positive=False) for row in table])
+                p = np.array([number({"p": row[1]}, "p", f + ".") for row in table]) * unit_p
                 if np.any(np.diff(s) <= 0):
                     raise fail(f, "expected travel increasing from row to row")
                 tol = 1e-6 * stroke_len
@@ -451,8 +462,8 @@ def _parse_loads(scene: Scene) -> Loads:
         check_keys(body, ("link", "value", "resisting", "name", "table", "expression"), file=path, where=where)
         given = [key for key in ("value", "resisting", "table", "expression") if key in body]
         if len(given) > 1:
-            raise fail(f"{where}{given[1]}", f"give one of value, resisting, table or expression, not "
-                                             f"{' and '.join(given)}")
+            raise fail(f"{where}{given[1]}", f"give one of value, resisting, table or expression, not both "
+                                             f"{given[0]} and {given[1]}")
         lid = moving_link(body, where)
         if "table" in body:
             tab = _cycle_table(r, body["table"], f"{where}table", "M")
