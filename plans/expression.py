@@ -220,12 +220,49 @@ def parse(text: object, *, file: str | None = None, field: str = "expression") -
     return Expression(text, node)
 
 
-def check_finite(expr: Expression, phi: R, *, file: str | None, field: str, unit: str = "") -> R:
-    """The formula's values at ``phi`` (rad), refused where one is not a finite number."""
+def check_finite(expr: Expression, phi: R, *, file: str | None, field: str, limit: float = 1e12) -> R:
+    """The formula's values at ``phi`` (rad, increasing), refused where one is not a finite
+    number, exceeds ``limit`` in magnitude, or where the formula passes through a pole
+    between two angles: at every change of sign the bracket is halved 60 times keeping the
+    change, and a root ends near zero where a pole ends beyond both ends' values."""
     vals = expr(phi)
-    bad = ~np.isfinite(vals)
+    bad = ~np.isfinite(vals) | (np.abs(np.where(np.isfinite(vals), vals, 0.0)) > limit)
     if np.any(bad):
-        at = float(np.degrees(phi[int(np.argmax(bad))]))
-        raise InputError(f"{expr.text!r} is not a finite number at φ = {at:.6g}° (a pole, a root of a negative "
-                         f"number or an overflow){unit}", file=file, field=field)
+        k = int(np.argmax(bad))
+        what = "not a finite number" if not np.isfinite(vals[k]) else f"beyond {limit:g} in magnitude"
+        raise InputError(f"{expr.text!r} is {what} at φ = {float(np.degrees(phi[k])):.6g}° (a pole, a root of a "
+                         f"negative number or an overflow)", file=file, field=field)
+    cells = np.flatnonzero(np.signbit(vals[:-1]) != np.signbit(vals[1:]))
+    if len(cells):
+        lo, hi = phi[cells].copy(), phi[cells + 1].copy()
+        f_lo = vals[cells]
+        ends = np.maximum(np.abs(vals[cells]), np.abs(vals[cells + 1]))
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            fm = expr(mid)
+            left = np.signbit(fm) == np.signbit(f_lo)
+            lo, hi = np.where(left, mid, lo), np.where(left, hi, mid)
+            f_lo = np.where(left, fm, f_lo)
+        fm = expr(0.5 * (lo + hi))
+        pole = ~np.isfinite(fm) | (np.abs(np.where(np.isfinite(fm), fm, 0.0)) > ends)
+        if np.any(pole):
+            at = float(np.degrees(0.5 * (lo + hi))[int(np.argmax(pole))])
+            raise InputError(f"{expr.text!r} has a pole near φ = {at:.6g}° (it changes sign through infinity): "
+                             f"a moment must stay finite over the cycle", file=file, field=field)
+    # an even pole (1/x²) keeps its sign: climb every local peak of |f| to its top
+    mag = np.abs(vals)
+    peaks = np.flatnonzero((mag[1:-1] >= mag[:-2]) & (mag[1:-1] >= mag[2:])) + 1
+    if len(peaks):
+        lo, hi = phi[peaks - 1].copy(), phi[peaks + 1].copy()
+        for _ in range(80):
+            a, b = lo + (hi - lo) / 3, hi - (hi - lo) / 3
+            fa, fb = np.abs(expr(a)), np.abs(expr(b))
+            up = ~(fa > fb) | ~np.isfinite(fb)  # toward the larger (or the infinite) side
+            lo, hi = np.where(up, a, lo), np.where(up, hi, b)
+        top = np.abs(expr(0.5 * (lo + hi)))
+        pole = ~np.isfinite(top) | (top > limit)
+        if np.any(pole):
+            at = float(np.degrees(0.5 * (lo + hi))[int(np.argmax(pole))])
+            raise InputError(f"{expr.text!r} has a pole near φ = {at:.6g}° (it grows without bound there): "
+                             f"a moment must stay finite over the cycle", file=file, field=field)
     return vals

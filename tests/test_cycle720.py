@@ -306,6 +306,10 @@ def test_a_machine_of_reduced_quantities_and_no_masses_gets_its_flywheel():
     ("1/sin(phi)", "not a finite number at φ = 0°"),
     ("sqrt(sin(phi))", "not a finite number"),
     ("(" * 60 + "1" + ")" * 60, "deeper than"),
+    ("tan(phi)", "beyond 1e+12 in magnitude at φ = 90°"),
+    ("1/(phi-1)", "has a pole near φ = 57.2958°"),
+    ("1/(phi-1)^2", "has a pole near φ = 57.2958°"),
+    ("x" * 501, "longer than 500"),
 ])
 def test_the_formula_is_refused_in_one_line_naming_the_field(expression, words):
     with pytest.raises(InputError) as exc:
@@ -334,6 +338,12 @@ def test_four_stroke_input_refused_naming_the_field(change, field):
     with pytest.raises(InputError) as exc:
         dynamics(scene_from_dict(raw, "e.toml"))
     assert exc.value.field == field
+
+
+def test_a_moment_that_does_not_vary_is_refused():
+    with pytest.raises(InputError) as exc:
+        dynamics(scene_from_dict(_turning("2*pi"), "t.toml"))
+    assert exc.value.field == "loads" and "does not vary" in str(exc.value)
 
 
 def test_console_refuses_a_bad_formula_in_one_line(tmp_path, capsys):

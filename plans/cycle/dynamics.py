@@ -336,6 +336,9 @@ def dynamics(scene: Scene, spec: DynamicsSpec | None = None, structure: Structur
     A_c_e = work.A_c
     M_d_e = _driving(scene, spec, float(A_c_e[-1]), float(np.max(np.abs(ex.M_pr))), cycle)
     dT_e = A_c_e + M_d_e * rad_e
+    if np.ptp(dT_e) <= 1e-12 * float(np.max(np.abs(ex.M_pr))) * math.radians(cycle):
+        raise InputError("the loads' moment does not vary over the cycle: the kinetic energy does not change "
+                         "and there is nothing for a flywheel to smooth", file=scene.path, field="loads")
     # a given driving moment balances the exact work; the graphical one is read off A_c's end
     M_d = -float(A_c[-1]) / math.radians(cycle) if spec.driving is None else M_d_e
     A_d = M_d * rad
