@@ -8,7 +8,8 @@ The machine is reduced to the crank (the link of reduction, angle φ):
   the driving moment (gravity, gas and indicator diagrams, external forces and moments):
   the loads' power over |ω1|, **positive when the loads drive the crank** (seed 004's
   sheet prints the opposite sign for resisting loads; :data:`SIGN_RULE`);
-* the constant driving moment M_d = −(1/2π) ∮ M_pr dφ (the cycle's work balances);
+* the constant driving moment M_d = −(1/Φ) ∮ M_pr dφ over the working cycle Φ (2π, or 4π
+  for a four-stroke engine: ``[dynamics] cycle_deg = 720``; the cycle's work balances);
   A_c(φ) = ∫ M_pr dφ, A_d(φ) = M_d (φ − φ0), ΔT = A_c + A_d;
 * the flywheel: the Wittenbauer energy–mass diagram (ΔT against I_pr) with tangents at
   tan ψ = ω_m²(1 ± δ)/2, I_fw = kl/(ω_m² δ) (graphical: over the table's positions,
@@ -20,7 +21,8 @@ means 2E0 = ω_max² I_fw + min_φ (ω_max² I_pr − 2ΔT), and likewise for ω
 subtracting, I_fw = [max_φ(ω_min² I_pr − 2ΔT) − min_φ(ω_max² I_pr − 2ΔT)] / (ω_max² − ω_min²),
 the Wittenbauer construction with the exact slopes ω²/2 on the exact curve.  The motion
 ½ (I_fw + I_pr) ω² = E0 + ΔT is then integrated for any flywheel (E0 such that
-(ω_max + ω_min)/2 = ω_m) to give the achieved δ.
+(ω_max + ω_min)/2 = ω_m) to give the achieved δ.  The work is integrated and the extremes
+found by :mod:`.quadrature` (to 1e-9 and better, with the quadrature's stated bound).
 """
 
 from __future__ import annotations
