@@ -401,3 +401,16 @@ def test_a_diagram_in_fractions_of_the_stroke_and_of_p_max():
     with pytest.raises(InputError) as exc:
         dynamics(scene_from_dict(raw, "f.toml"))
     assert exc.value.field == "loads.gas[0].diagram.intake"
+
+
+def test_a_cycle_of_one_revolution_run_over_two_is_the_same_machine():
+    """Seed 004's compressor repeats every revolution: over 720° its driving moment, its
+    exact flywheel and the δ it gives are those of 360°."""
+    raw = _raw(ROOT / "samples" / "dynamics_slider_crank.toml")
+    one = dynamics(scene_from_dict(raw, "c.toml"))
+    raw["dynamics"]["cycle_deg"] = 720
+    raw["dynamics"]["phi_deg"] = raw["dynamics"]["phi_deg"] + [p + 360 for p in raw["dynamics"]["phi_deg"]]
+    two = dynamics(scene_from_dict(raw, "c.toml"))
+    assert two.M_driving_exact == pytest.approx(one.M_driving_exact, rel=1e-11)
+    assert two.flywheel.inertia_exact == pytest.approx(one.flywheel.inertia_exact, rel=1e-9)
+    assert two.flywheel.delta_achieved_exact == pytest.approx(0.05, rel=1e-9)
