@@ -112,6 +112,7 @@ class CheckFile:
     tolerance: Tolerance
     positions: tuple[StudentPosition, ...]
     sheet: str | None = None
+    rubric: tuple[tuple[str, float], ...] = ()  # deductions by kind of mistake (the teacher's)
 
 
 # --------------------------------------------------------------------------- names
@@ -162,7 +163,7 @@ def _fail(path: str, field: str, msg: str) -> InputError:
     return InputError(msg, file=path, field=field)
 
 
-_TOP = {"format", "student", "scene", "sheet", "scales", "tolerance", "positions", "title"}
+_TOP = {"format", "student", "scene", "sheet", "scales", "tolerance", "positions", "title", "rubric"}
 
 
 def check_from_dict(data: dict[str, Any], path: str = "<check>") -> CheckFile:
@@ -190,8 +191,25 @@ def check_from_dict(data: dict[str, Any], path: str = "<check>") -> CheckFile:
         if pos.phi_deg in seen:
             raise _fail(path, f"{pos.field}.phi_deg", f"position phi_deg = {pos.phi_deg:g} given twice")
         seen.add(pos.phi_deg)
+    rubric = read_rubric(path, data.get("rubric", {}), "rubric")
     return CheckFile(path=path, student=student, scene=scene, scales=scales, tolerance=tol,
-                     positions=positions, sheet=sheet)
+                     positions=positions, sheet=sheet, rubric=rubric)
+
+
+def read_rubric(path: str, raw: Any, where: str) -> tuple[tuple[str, float], ...]:
+    """A [rubric] table: ``full`` and the points each kind of mistake costs."""
+    from plans.check.diagnosis import RUBRIC_KEYS
+
+    if not isinstance(raw, dict):
+        raise _fail(path, where, "expected a table of deductions, e.g. coriolis_reversed = 15")
+    check_keys(raw, RUBRIC_KEYS, file=path, where=f"{where}.")
+    out = []
+    for key, value in raw.items():
+        if isinstance(value, bool) or not isinstance(value, int | float) or \
+                not (isinstance(value, int) or math.isfinite(value)) or not 0 <= value <= 1e6:
+            raise _fail(path, f"{where}.{key}", f"expected a number of points from 0 to 1e6, got {value!r}")
+        out.append((key, float(value)))
+    return tuple(out)
 
 
 #: Sheet sizes (landscape, mm) for the overlay.

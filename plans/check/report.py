@@ -52,6 +52,7 @@ from pathlib import Path
 from typing import Any
 
 from plans.check.checkfile import CheckFile, StudentPosition, Written, load_check
+from plans.check.diagnosis import Diagnosis, diagnose
 from plans.check.findings import (
     Finding,
     Item,
@@ -81,6 +82,26 @@ class Report:
     findings: tuple[Finding, ...]
     unchecked: tuple[Unchecked, ...]
     context: Context = field(repr=False)
+    diagnosis: Diagnosis | None = field(default=None, repr=False)
+
+    @property
+    def causes(self) -> tuple:
+        return self.diagnosis.causes if self.diagnosis is not None else ()
+
+    @property
+    def unexplained(self) -> list[Item]:
+        return [self.items[i] for i in self.diagnosis.unexplained] if self.diagnosis is not None else []
+
+    @property
+    def mark(self) -> float | None:
+        return self.diagnosis.mark if self.diagnosis is not None else None
+
+    @property
+    def findings_left(self) -> list[Finding]:
+        """Findings no cause accounts for."""
+        if self.diagnosis is None:
+            return list(self.findings)
+        return [self.findings[i] for i in self.diagnosis.findings_left]
 
     @property
     def passed(self) -> int:
@@ -111,12 +132,23 @@ class Report:
             "tolerance": {"model": t.model, "segment_mm": t.segment_mm, "direction_deg": t.direction_deg,
                           "rule_pct": t.rule_pct, "arithmetic_pct": t.arithmetic_pct,
                           "balance_base": t.balance_base},
+            "causes": [c.to_json() for c in self.causes],
+            "unexplained": list(dict.fromkeys(i.quantity for i in self.unexplained)),
+            "unexplained_items": [{"quantity": i.quantity, "phi_deg": i.phi_deg, "field": i.field}
+                                  for i in self.unexplained],
+            "mark": self.mark,
+            "rubric": dict(self.diagnosis.rubric) if self.diagnosis is not None else {},
             "items": [i.to_json() for i in self.items],
-            "findings": [f.to_json() for f in self.findings],
+            "findings": [{**f.to_json(), "cause": self._cause_of(n)} for n, f in enumerate(self.findings)],
             "unchecked": [u.to_json() for u in self.unchecked],
             "summary": {"items": len(self.items), "passed": self.passed, "failed": self.failed,
-                        "findings": len(self.findings), "unchecked": len(self.unchecked)},
+                        "findings": len(self.findings), "unchecked": len(self.unchecked),
+                        "causes": len(self.causes), "unexplained": len(self.unexplained),
+                        "findings_left": len(self.findings_left)},
         }
+
+    def _cause_of(self, n: int) -> str | None:
+        return next((c.kind for c in self.causes if n in c.findings), None)
 
 
 # --------------------------------------------------------------------------- comparison
@@ -163,7 +195,8 @@ def check(cf: CheckFile) -> Report:
     findings += across_positions_findings(cf)
     findings += pi_findings(cf, items)
     findings += scale_findings(cf, items)
-    return Report(cf, tuple(items), tuple(findings), tuple(unchecked), ctx)
+    its, fis = tuple(items), tuple(findings)
+    return Report(cf, its, fis, tuple(unchecked), ctx, diagnose(ctx, its, fis, dict(cf.rubric)))
 
 
 
@@ -179,11 +212,14 @@ def _items(cf: CheckFile, pos: StudentPosition, q: str, ex: Exact) -> list[Item]
         raise InputError(f"{q} is not read off a plan at a scale the check file gives: write it under values",
                          file=cf.path, field=measured[0].field)
     rel = cf.tolerance.arithmetic_pct / 100.0
+    # a value derived from a measured segment is as good as the reading (±segment_mm),
+    # however many digits were typed
+    read = cf.tolerance.segment_mm if cf.tolerance.model == "draftsman" else 0.0
     rows: list[tuple[Written | None, Written | None]] = []  # (measured, value)
     free = list(values)
     for meas in measured:
         assert mu
-        pair = next((w for w in free if consistent(w, meas, mu, rel)), None)
+        pair = next((w for w in free if consistent(w, meas, mu, rel, read)), None)
         if pair is not None:
             free.remove(pair)
         rows.append((meas, pair))

@@ -1,0 +1,216 @@
+"""Students with one planted mistake: the submissions the examiner's rates are measured on.
+
+A submission is what a student writes at two positions: every segment of both plans
+measured on a drawing made by the construction with the mistake in it (the perfect pencil
+with the slip, :mod:`plans.check.mistakes`) and read to a random ±``noise_mm`` (seeded),
+each value derived from its segment (4 significant digits), ω and ε from their segments,
+ω1, v_A and a_A computed from the data (5 digits), the weights and the reactions' components
+from the analysis.  The mistakes a construction does not make (a plan's values divided by
+another scale, a segment measured between the wrong points, a figure miscalculated, τ and
+n swapped, g = 10, π = 3.14) are made on the figures as a student makes them.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from plans.check.checkfile import check_from_dict
+from plans.check.mistakes import Slip, inventory, replay
+from plans.check.providers import Context, exact_value
+from plans.kinematics.construction import nice_scale
+from plans.scene.model import Scene, load_scene
+
+#: The mistakes the planted suite plants (kinds of :data:`plans.check.mistakes.KINDS`).
+PLANTED = ("coriolis_reversed", "normal_from_pole", "tangential_wrong_line", "scale", "similarity",
+           "wrong_segment", "reaction_swapped", "pi_rounded", "g_rounded", "arithmetic")
+
+
+def sig(x: float, n: int = 4) -> float:
+    return 0.0 if abs(x) < 1e-9 else float(f"{x:.{n}g}")
+
+
+@dataclass
+class Scenario:
+    """One scene prepared once: its exact analysis and a student's scales."""
+
+    path: Path
+    scene: Scene
+    mv: float
+    ma: float
+    mf: float | None
+    ctx: Context
+
+    @classmethod
+    def of(cls, path: str | Path, phis: tuple[float, ...] | None = None) -> Scenario:
+        path = Path(path)
+        scene = load_scene(path)
+        from plans.accuracy.oracles import norms
+
+        nm = norms(scene)
+        mv, ma = nice_scale(nm["v"], 80.0), nice_scale(nm["a"], 80.0)
+        phis = phis or tuple(scene.driver.phis_deg)
+        cf = check_from_dict(_skeleton(path, phis, mv, ma, None, {}), str(path.with_suffix(".check.toml")))
+        return cls(path, scene, mv, ma, None, Context(cf))
+
+
+def _skeleton(path: Path, phis: tuple[float, ...], mv: float, ma: float, mf: float | None,
+              body: dict[float, tuple[dict, dict]]) -> dict[str, Any]:
+    scales: dict[str, Any] = {"length": {"mu": 1000}, "velocity": {"mu": mv}, "acceleration": {"mu": ma}}
+    if mf:
+        scales["force"] = {"mu": mf}
+    positions = []
+    for phi in phis:
+        meas, vals = body.get(phi, ({}, {}))
+        if not meas and not vals:
+            vals = {"omega_1": 1.0}
+        positions.append({"phi_deg": phi, "measured": meas, "values": vals})
+    return {"format": 1, "student": "planted", "scene": str(path.resolve()), "scales": scales,
+            "positions": positions}
+
+
+def submission(sc: Scenario, phis: tuple[float, float], kind: str | None, rng: np.random.Generator,
+               noise_mm: float = 0.5) -> tuple[dict[str, Any], str]:
+    """A check file (as a dict) of a student who made the mistake ``kind`` (None: none),
+    and what was planted (in words, for a failing test's message)."""
+    ctx, scene = sc.ctx, sc.scene
+    d = scene.driver
+    crank = scene.links[d.link]
+    A = crank.axis[1]
+    mv, ma = sc.mv, sc.ma
+    where = int(rng.integers(2))  # the position a local slip is made at
+    slip: Slip | None = None
+    told = kind or "clean"
+    factor = 1.0
+    if kind == "scale":
+        factor = float(rng.choice([-1, 1]) * rng.uniform(0.06, 0.2) + 1)
+        plan = "velocity" if rng.random() < 0.5 else "acceleration"
+        if rng.random() < 0.5:
+            slip = Slip("scale", plan, "drawn", plan, factor=factor)
+            told = f"scale: {plan} plan drawn at {factor:.3f}×"
+            factor = 1.0
+        else:
+            told = f"scale: {plan} values × {factor:.3f}"
+    body: dict[float, tuple[dict, dict]] = {}
+    for n, phi in enumerate(phis):
+        k = next(i for i, p in enumerate(d.phis_deg) if abs(p - phi) < 1e-9)
+        slips: list[Slip] = []
+        if kind in ("coriolis_reversed", "normal_from_pole", "tangential_wrong_line", "similarity") and n == where:
+            options = [s for s in inventory(ctx.kin, k, mv, ma) if s.kind == kind]
+            if not options:
+                raise LookupError(f"no {kind} at {phi:g}° in {sc.path.name}")
+            slip = options[int(rng.integers(len(options)))]
+            told = f"{kind}: {slip.target} {slip.variant} at {phi:g}°"
+            slips = [slip]
+        elif slip is not None and slip.kind == "scale":
+            slips = [slip]
+        vp, ap = replay(ctx.kin, k, mv, ma, slips)
+        pts = {"velocity": vp, "acceleration": ap}
+        meas: dict[str, float] = {}
+        vals: dict[str, Any] = {}
+        own = f"a_{slip.target[2:]}^n" if slip is not None and slip.variant == "from_pole" else None
+        read: dict[str, float] = {}
+        for kind_ in ("velocity", "acceleration"):
+            plan = ctx.plan(k, kind_)
+            assert plan is not None
+            for sg in plan.segments:
+                got = pts[kind_]
+                mm = float(abs(got[sg.end][0] - got[sg.start][0])) if sg.label != own else sg.length_mm
+                r = max(0.0, round(mm + rng.uniform(-noise_mm, noise_mm), 1))
+                read[f"{kind_}:{sg.start}:{sg.end}"] = r
+                meas[sg.label] = r
+                scale_values = kind == "scale" and factor != 1.0 and told.startswith(f"scale: {kind_}")
+                vals[sg.label] = sig(r / plan.scale * (factor if scale_values else 1.0))
+        for lid in sorted(scene.links):
+            for q in (f"omega_{lid}", f"eps_{lid}"):
+                if lid == d.link:
+                    continue
+                ex = exact_value(ctx, k, q)
+                if ex is None or ex.segment is None or not ex.mm_per_unit or ex.plan is None:
+                    continue
+                r = read.get(f"{ex.plan}:{ex.segment[0]}:{ex.segment[1]}")
+                if r is None:
+                    continue
+                scale_values = kind == "scale" and factor != 1.0 and told.startswith(f"scale: {ex.plan}")
+                vals[q] = sig(r / ex.mm_per_unit * (factor if scale_values else 1.0))
+        w1 = abs(d.omega) * (3.14 / math.pi if kind == "pi_rounded" else 1.0)
+        l1 = abs(crank.points[A] - crank.points[crank.axis[0]])
+        vals[f"omega_{d.link}"] = sig(w1, 5)
+        vals[f"v_{A}"] = sig(w1 * l1, 5)
+        if d.eps == 0:
+            vals[f"a_{A}"] = sig(w1 * w1 * l1, 5)
+        _forces(ctx, k, vals, kind == "g_rounded")
+        body[phi] = (meas, vals)
+    if kind == "wrong_segment":
+        told = _wrong_segment(ctx, phis[where], body[phis[where]], rng)
+    elif kind == "arithmetic":
+        told = _arithmetic(phis[where], body[phis[where]], rng)
+    elif kind == "reaction_swapped":
+        told = _swap(phis[where], body[phis[where]], rng)
+    return _skeleton(sc.path, phis, mv, ma, sc.mf, body), told
+
+
+def _forces(ctx: Context, k: int, vals: dict[str, Any], g10: bool) -> None:
+    got = ctx.forces()
+    if got is None:
+        return
+    loads, fa = got
+    for lid, m in sorted(loads.masses.items()):
+        if m > 0:
+            vals[f"G_{lid}"] = sig(m * (10.0 if g10 else 9.81))
+    for rc in fa.reactions():
+        name = rc.name(ctx.scene.fij)[1:]
+        for comp in ("^τ", "^n"):
+            ex = exact_value(ctx, k, f"F_{name}{comp}")
+            if ex is not None:
+                vals[f"F_{name}{comp}"] = sig(ex.value)
+
+
+def _wrong_segment(ctx: Context, phi: float, body: tuple[dict, dict], rng: np.random.Generator) -> str:
+    meas, vals = body
+    k = next(pos.index for pos in ctx.cf.positions if pos.phi_deg == phi)
+    crank = ctx.scene.links[ctx.scene.driver.link]
+    crank_pin = crank.axis[1].lower()  # v_A, a_A: laid off from the data, not measured
+    options = []
+    for kind in ("velocity", "acceleration"):
+        plan = ctx.plan(k, kind)
+        assert plan is not None
+        names = [p.name for p in plan.points if not p.name.startswith(("n_", "k_"))]
+        for sg in plan.segments:
+            if sg.kind != "absolute" or sg.label not in meas or sg.start == plan.pole and sg.end == crank_pin:
+                continue
+            for i, a in enumerate(names):
+                for b in names[i + 1:]:
+                    d = abs(complex(*plan.xy(b)) - complex(*plan.xy(a)))
+                    if {a, b} != {sg.start, sg.end} and d > 5 and abs(d - sg.length_mm) > 4:
+                        options.append((sg.label, a, b, d, plan.scale))
+    label, a, b, d, mu = options[int(rng.integers(len(options)))]
+    r = round(d + rng.uniform(-0.5, 0.5), 1)
+    meas[label] = r
+    vals[label] = sig(r / mu)
+    return f"wrong_segment: {label} measured {a}–{b} at {phi:g}°"
+
+
+def _arithmetic(phi: float, body: tuple[dict, dict], rng: np.random.Generator) -> str:
+    meas, vals = body
+    options = [q for q in vals if q in meas and meas[q] > 10]
+    q = options[int(rng.integers(len(options)))]
+    f = float(rng.choice([-1, 1]) * rng.uniform(0.08, 0.4) + 1)
+    vals[q] = sig(vals[q] * f)
+    return f"arithmetic: {q} × {f:.3f} at {phi:g}°"
+
+
+def _swap(phi: float, body: tuple[dict, dict], rng: np.random.Generator) -> str:
+    _, vals = body
+    pairs = [q[:-2] for q in vals if q.startswith("F_") and q.endswith("^τ") and f"{q[:-2]}^n" in vals
+             and abs(vals[q] - vals[f"{q[:-2]}^n"]) > 0.2 * max(vals[q], vals[f"{q[:-2]}^n"])]
+    if not pairs:
+        raise LookupError("no reaction whose components differ")
+    q = pairs[int(rng.integers(len(pairs)))]
+    vals[f"{q}^τ"], vals[f"{q}^n"] = vals[f"{q}^n"], vals[f"{q}^τ"]
+    return f"reaction_swapped: {q} at {phi:g}°"
+
