@@ -230,6 +230,22 @@ def replay(kin: Kinematics, k: int, mv: float, ma: float | None,
     return vp, ap
 
 
+def effective(kin: Kinematics, k: int, mv: float, ma: float | None, slips: list[Slip],
+              floor_mm: float = 0.01) -> list[Slip]:
+    """The slips that move some point of a plan (a line turned onto its partner's
+    direction leaves the intersection undefined: the construction keeps the right point)."""
+    if not slips:
+        return []
+    vp, ap = replay(kin, k, mv, ma, slips)
+    clean_v, clean_a = replay(kin, k, mv, ma, [])
+    moved = np.zeros(len(slips), bool)
+    for got, ref in ((vp, clean_v), (ap, clean_a)):
+        for lb, z in got.items():
+            if lb in ref:
+                moved |= np.abs(z - ref[lb][0]) > floor_mm
+    return [s for s, m in zip(slips, moved, strict=True) if m]
+
+
 def describe(s: Slip) -> str:
     """The slip in a teacher's words (English; the report's)."""
     plan = f"the {s.phase} plan"

@@ -20,7 +20,7 @@ from typing import Any
 import numpy as np
 
 from plans.check.checkfile import check_from_dict
-from plans.check.mistakes import Slip, inventory, replay
+from plans.check.mistakes import Slip, effective, inventory, replay
 from plans.check.providers import Context, exact_value
 from plans.kinematics.construction import nice_scale
 from plans.scene.model import Scene, load_scene
@@ -100,7 +100,7 @@ def submission(sc: Scenario, phis: tuple[float, float], kind: str | None, rng: n
         k = next(i for i, p in enumerate(d.phis_deg) if abs(p - phi) < 1e-9)
         slips: list[Slip] = []
         if kind in ("coriolis_reversed", "normal_from_pole", "tangential_wrong_line", "similarity") and n == where:
-            options = [s for s in inventory(ctx.kin, k, mv, ma) if s.kind == kind]
+            options = effective(ctx.kin, k, mv, ma, [s for s in inventory(ctx.kin, k, mv, ma) if s.kind == kind])
             if not options:
                 raise LookupError(f"no {kind} at {phi:g}° in {sc.path.name}")
             slip = options[int(rng.integers(len(options)))]
@@ -186,7 +186,7 @@ def _wrong_segment(ctx: Context, phi: float, body: tuple[dict, dict], rng: np.ra
             for i, a in enumerate(names):
                 for b in names[i + 1:]:
                     d = abs(complex(*plan.xy(b)) - complex(*plan.xy(a)))
-                    if {a, b} != {sg.start, sg.end} and d > 5 and abs(d - sg.length_mm) > 4:
+                    if {a, b} != {sg.start, sg.end} and d > 5 and abs(d - sg.length_mm) > 8:
                         options.append((sg.label, a, b, d, plan.scale))
     label, a, b, d, mu = options[int(rng.integers(len(options)))]
     r = round(d + rng.uniform(-0.5, 0.5), 1)

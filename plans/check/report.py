@@ -281,20 +281,25 @@ def table(report: Report) -> str:
     lines = [f"Check of {cf.student} — {cf.scene.title}",
              f"  file {cf.path}; scales " + ", ".join(f"{k} {v:.4g} {_SCALE_UNIT.get(k, 'mm/unit')}" for k, v in cf.scales.items()),
              f"  tolerance: {model}"]
+    lines += _causes_text(report)
+    cause_no = {i: n for n, c in enumerate(report.causes, 1) for i in c.items}
     head = f"  {'quantity':<16}{'student':>14}{'exact':>14}{'error':>10}{'err mm':>9}{'tol mm':>8}{'tol %':>8}  verdict  where"
     for pos in cf.positions:
         lines.append("")
         lines.append(f"φ = {pos.phi_deg:g}°")
         lines.append(head)
-        for it in report.items:
+        for n, it in enumerate(report.items):
             if it.phi_deg != pos.phi_deg:
                 continue
             err = "—" if it.error_pct is None else f"{it.error_pct:+.1f} %"
             emm = "—" if it.error_mm is None else f"{it.error_mm:+.2f}"
             tmm = "—" if it.tolerance_mm is None else f"±{it.tolerance_mm:.2f}"
             tp = "—" if it.tolerance_pct is None else f"±{it.tolerance_pct:.1f}"
-            mark = "pass" if it.verdict == "pass" else "FAIL"
-            lines.append(f"  {it.quantity:<16}{_num(it.student):>14}{_num(it.exact):>14}{err:>10}{emm:>9}{tmm:>8}"
+            mark = "pass" if it.verdict == "pass" else (f"FAIL #{cause_no[n]}" if n in cause_no else "FAIL")
+            # only what the student wrote: a segment alone is shown in mm, its value is derived
+            shown = f"{fmt(it.student_mm)} mm" if it.figure == "measured" and it.student_mm is not None \
+                else _num(it.student)
+            lines.append(f"  {it.quantity:<16}{shown:>14}{_num(it.exact):>14}{err:>10}{emm:>9}{tmm:>8}"
                          f"{tp:>8}  {mark:<7}  {it.where}  [{it.unit}{', rule' if it.tolerance_model == 'rule' else ''}]")
     if report.unchecked:
         lines.append("")
@@ -302,31 +307,75 @@ def table(report: Report) -> str:
         for u in report.unchecked:
             lines.append(f"  φ = {u.phi_deg:g}°: {u.quantity} = {fmt(u.student)}{(' (' + u.where + ')') if u.where else ''}"
                          f": {u.reason}")
+    left = report.findings_left
+    if left:
+        lines.append("")
+        lines.append(f"Other findings ({len(left)}):")
+        for f in left:
+            lines.append(f"  [{f.kind}] {f.message}")
     lines.append("")
-    lines.append(f"Findings ({len(report.findings)}):")
-    for f in report.findings:
-        lines.append(f"  [{f.kind}] {f.message}")
-    lines.append("")
-    lines.append(f"Summary: {len(report.items)} figures, {report.passed} pass, {report.failed} fail, "
-                 f"{len(report.findings)} findings")
+    lines.append(f"Summary: {len(report.items)} figures, {report.passed} pass, {report.failed} fail; "
+                 f"{len(report.causes)} mistakes, {len(report.unexplained)} failures unexplained, "
+                 f"{len(left)} other findings; mark {_mark(report)}")
     return "\n".join(lines)
 
 
-CSV_FIELDS = ("file", "student", "status", "items", "passed", "failed", "findings", "worst", "worst_error_pct",
-              "message")
+def _mark(report: Report) -> str:
+    full = report.diagnosis.rubric.get("full", 100.0) if report.diagnosis is not None else 100.0
+    return f"{fmt(report.mark or 0.0)} of {fmt(full)}"
+
+
+def _causes_text(report: Report) -> list[str]:
+    """The mistakes found, each with the figures it explains; then the failures no
+    mistake explains."""
+    lines = ["", f"Mark: {_mark(report)}"]
+    if not report.causes and not report.unexplained:
+        lines.append("No mistakes found: every figure agrees with the exact analysis within the tolerance.")
+        return lines
+    lines.append(f"Mistakes ({len(report.causes)}):")
+    for n, c in enumerate(report.causes, 1):
+        at = ", ".join(f"{p:g}°" for p in c.positions)
+        lines.append(f"  #{n} [{c.kind}] {c.detail}" + (f" (φ = {at})" if at else "") + f"; −{fmt(c.deduction)}")
+        if c.explains:
+            lines.append(f"     explains {len(c.items) or len(c.explains)} figures: {', '.join(c.explains)}")
+        for fi in c.findings:
+            lines.append(f"     [{report.findings[fi].kind}] {report.findings[fi].message}")
+    if report.unexplained:
+        lines.append(f"Failures no mistake explains ({len(report.unexplained)}):")
+        for it in report.unexplained:
+            shown = f"{fmt(it.student_mm)} mm" if it.figure == "measured" and it.student_mm is not None \
+                else fmt(it.student)
+            lines.append(f"  φ = {it.phi_deg:g}°: {it.quantity} = {shown}{(' (' + it.where + ')') if it.where else ''}, "
+                         f"exact {fmt(it.exact)} {it.unit}")
+    return lines
+
+
+CSV_FIELDS = ("file", "student", "status", "mark", "causes", "unexplained", "items", "passed", "failed",
+              "findings", "worst", "worst_error_pct", "worst_tol", "message")
 
 
 def summary_row(path: str, report: Report | None, error: str | None = None) -> dict[str, Any]:
     if report is None:
-        return {"file": path, "student": "", "status": "error", "items": "", "passed": "", "failed": "",
-                "findings": "", "worst": "", "worst_error_pct": "", "message": error or ""}
-    worst = max((i for i in report.items if i.error_pct is not None), key=lambda i: abs(i.error_pct or 0.0),
-                default=None)
-    return {"file": path, "student": report.check.student, "status": "ok", "items": len(report.items),
-            "passed": report.passed, "failed": report.failed, "findings": len(report.findings),
+        return {"file": path, "student": "", "status": "error", "mark": "", "causes": "", "unexplained": "",
+                "items": "", "passed": "", "failed": "", "findings": "", "worst": "", "worst_error_pct": "",
+                "worst_tol": "", "message": error or ""}
+    # the worst figure in units of its own tolerance: 0 mm against a short exact segment is
+    # a fraction of a millimetre, not −100 %
+    worst = max((i for i in report.items if i.tolerance > 0), key=_in_tolerances, default=None)
+    causes = "; ".join(c.kind + (f" at {','.join(f'{p:g}' for p in c.positions)}°" if c.positions else "")
+                       for c in report.causes)
+    unexplained = "; ".join(f"{i.quantity} at {i.phi_deg:g}°" for i in report.unexplained)
+    return {"file": path, "student": report.check.student, "status": "ok",
+            "mark": "" if report.mark is None else fmt(report.mark), "causes": causes, "unexplained": unexplained,
+            "items": len(report.items), "passed": report.passed, "failed": report.failed,
+            "findings": len(report.findings_left),
             "worst": "" if worst is None else f"{worst.quantity} at {worst.phi_deg:g}°",
             "worst_error_pct": "" if worst is None or worst.error_pct is None else f"{worst.error_pct:.2f}",
-            "message": ""}
+            "worst_tol": "" if worst is None else f"{_in_tolerances(worst):.2f}", "message": ""}
+
+
+def _in_tolerances(it: Item) -> float:
+    return abs(it.student - it.exact) / it.tolerance if it.tolerance > 0 else 0.0
 
 
 def csv_text(rows: list[dict[str, Any]]) -> str:
