@@ -310,7 +310,7 @@ def table(report: Report) -> str:
     left = report.findings_left
     if left:
         lines.append("")
-        lines.append(f"Other findings ({len(left)}):")
+        lines.append(f"Findings no mistake accounts for ({len(left)}):")
         for f in left:
             lines.append(f"  [{f.kind}] {f.message}")
     lines.append("")
@@ -404,9 +404,17 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
         "check", help="check a hand-drawn sheet (or a folder of them) against the exact analysis",
         description="Compare what a student measured and computed on a hand-drawn sheet with the exact "
                     "values at the student's scales; find inconsistencies in the student's own work.")
-    p.add_argument("path", metavar="FILE|DIR", help="a check file (TOML) or a folder of check files")
+    p.add_argument("path", metavar="FILE|DIR", nargs="?",
+                   help="a check file (TOML), a CSV form (one student per column) or a folder of check files "
+                        "(a scene file beside them is the scene of those that name none)")
     p.add_argument("--json", metavar="PATH", help="write the report as JSON ('-' for stdout; single file only)")
-    p.add_argument("--csv", metavar="PATH", help="write the summary table as CSV")
+    p.add_argument("--csv", metavar="PATH", help="write the summary table as CSV ('-' for stdout)")
+    p.add_argument("--template", metavar="SCENE", help="write a blank check file of this scene to fill in")
+    p.add_argument("--phi", metavar="DEG,DEG", help="with --template: the positions (default: the scene's)")
+    p.add_argument("-o", "--output", metavar="FILE", help="with --template: write it here (default: stdout)")
+    p.add_argument("--form", choices=("toml", "csv"), default="toml",
+                   help="with --template: a check file (toml) or a CSV form, one column per student")
+    p.add_argument("--students", type=int, default=3, metavar="N", help="with --form csv: columns (default 3)")
     p.add_argument("--out", metavar="DIR", help="write <name>.json and <name>.txt per check file here "
                                                  "(batch default: DIR/reports)")
     p.add_argument("--quiet", action="store_true", help="no table on stdout")
@@ -436,10 +444,17 @@ def _after(args: argparse.Namespace, target: Path, written: bool) -> None:
 def run(args: argparse.Namespace) -> int:
     """``plans check``: 0 when every file was checked, 2 on a user error (one line on stderr).
     A single file's outputs (JSON, CSV, reports, sheets) are written all or none."""
+    if getattr(args, "template", None):
+        return _template(args)
+    if not args.path:
+        _err("expected a check file, a CSV form or a folder (or --template SCENE)")
+        return 2
     target = Path(args.path)
     try:
         if target.is_dir():
             return _batch(target, args)
+        if target.suffix.lower() == ".csv" and target.is_file():
+            return _form(target, args)
         if not target.exists():
             _err(f"{target}: no such file or folder")
             return 2
@@ -455,7 +470,7 @@ def run(args: argparse.Namespace) -> int:
         files: dict[Path, Any] = {}
         if args.json and args.json != "-":
             files[Path(args.json)] = dumps(report.to_json())
-        if args.csv:
+        if args.csv and args.csv != "-":
             files[Path(args.csv)] = csv_text([summary_row(str(target), report)])
         if args.out:
             out = Path(args.out)
@@ -471,7 +486,9 @@ def run(args: argparse.Namespace) -> int:
         _after(args, target, True)
         if args.json == "-":
             sys.stdout.write(dumps(report.to_json()))
-        if not args.quiet and args.json != "-":
+        elif args.csv == "-":
+            sys.stdout.write(csv_text([summary_row(str(target), report)]))
+        if not args.quiet and args.json != "-" and args.csv != "-":
             print(table(report))
             for p in written:
                 if p.suffix in (".svg", ".pdf", ".png"):
@@ -499,6 +516,18 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
         _err(f"{folder}: --json is for one file; a folder writes one report per file into --out")
         return 2
     files = sorted(p for p in folder.glob("*.toml") if p.is_file())
+    from plans.check.forms import is_scene
+    from plans.io import read_toml
+
+    scenes = []
+    for f in files:
+        try:
+            if is_scene(read_toml(f)):
+                scenes.append(f)
+        except PlansError:
+            continue  # reported as that file's error below
+    files = [f for f in files if f not in scenes]
+    beside = scenes[0] if len(scenes) == 1 else None
     if not files:
         _err(f"{folder}: no check files (*.toml)")
         return 2
@@ -519,7 +548,7 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
                 crep = cycle_check.check_cycle(f)
                 outputs, row = cycle_check.outputs(crep, f, out), cycle_check.summary_row(str(f), crep)
             else:
-                report = check_file(f)
+                report = _check_beside(f, beside)
                 outputs = {out / f"{f.stem}.json": dumps(report.to_json()),
                            out / f"{f.stem}.txt": table(report) + "\n"}
                 outputs.update(_extra(args, report, f))
@@ -537,12 +566,117 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
             continue
         _after(args, f, True)
         rows.append(row)
+    _summary(rows, args, out)
+    return 2 if bad else 0
+
+
+def _summary(rows: list[dict[str, Any]], args: argparse.Namespace, out: Path) -> None:
+    """summary.csv (or --csv, '-': stdout) and a line per file on the terminal."""
+    if args.csv == "-":
+        sys.stdout.write(csv_text(rows))
+        return
     atomic_write(Path(args.csv) if args.csv else out / "summary.csv", csv_text(rows))
     if not args.quiet:
         for r in rows:
             if r["status"] == "ok":
                 print(f"{r['file']}: {r['student']}: {r['passed']} pass, {r['failed']} fail, "
-                      f"{r['findings']} findings")
+                      f"{r['findings']} findings" + (f"; mark {r['mark']}" if r.get("mark") else "")
+                      + (f"; {r['causes']}" if r.get("causes") else ""))
             else:
                 print(f"{r['file']}: not checked: {r['message']}")
-    return 2 if bad else 0
+
+
+def _check_beside(path: Path, scene: Path | None) -> Report:
+    """A check file of a folder; one that names no scene uses the scene file beside it."""
+    from plans.check.checkfile import check_from_dict
+    from plans.io import read_toml
+
+    data = read_toml(path)
+    if scene is not None and "scene" not in data:
+        data = {**data, "scene": scene.name}
+    try:
+        return check(check_from_dict(data, str(path)))
+    except PlansError as exc:
+        exc.source = exc.source or str(path)
+        raise
+
+
+def _template(args: argparse.Namespace) -> int:
+    """``plans check --template SCENE``: a blank check file (or CSV form) to fill in."""
+    from plans.check.forms import template_csv, template_toml
+    from plans.scene.model import load_scene
+
+    try:
+        scene_path = Path(args.template)
+        if args.path:
+            raise InputError("--template writes a blank form: give no check file with it", file=args.path)
+        scene = load_scene(scene_path)
+        phis = None
+        if args.phi:
+            try:
+                phis = tuple(float(x) for x in args.phi.split(","))
+            except ValueError:
+                raise InputError(f"expected angles in degrees separated by commas, got {args.phi!r}",
+                                 field="--phi") from None
+            known = scene.driver.phis_deg
+            for p in phis:
+                if not any(abs(p - q) < 1e-9 for q in known):
+                    raise InputError(f"position {p:g}° is not in the scene (it has "
+                                     f"{', '.join(f'{q:g}°' for q in known)})", file=str(scene_path), field="--phi")
+        target = Path(args.output) if args.output else None
+        ref = str(scene_path.resolve()) if target is None else _relative(scene_path, target)
+        if args.form == "csv":
+            if not 1 <= args.students <= 500:
+                raise InputError(f"expected 1 to 500 student columns, got {args.students}", field="--students")
+            text = template_csv(scene, ref, phis, args.students)
+        else:
+            text = template_toml(scene, ref, phis)
+        if target is None:
+            sys.stdout.write(text)
+            return 0
+        refuse_input(str(target), scene_path)
+        if not target.parent.is_dir():
+            raise OutputError(f"{target}: no such folder {target.parent}")
+        write_all({target: text})
+        if not args.quiet:
+            print(target)
+        return 0
+    except PlansError as exc:
+        _err(one_line(exc))
+        return 2
+
+
+def _relative(scene: Path, target: Path) -> str:
+    """The scene's path as the form beside ``target`` names it."""
+    import os
+
+    try:
+        return Path(os.path.relpath(scene.resolve(), target.resolve().parent)).as_posix()
+    except ValueError:  # another drive
+        return str(scene.resolve())
+
+
+def _form(target: Path, args: argparse.Namespace) -> int:
+    """``plans check FORM.csv``: each filled column one submission, as a folder is checked."""
+    from plans.check.forms import read_form
+
+    if args.json:
+        _err(f"{target}: --json is for one check file; a form writes one report per student into --out")
+        return 2
+    subs = read_form(target)
+    out = Path(args.out) if args.out else target.parent / f"{target.stem}-reports"
+    files: dict[Path, Any] = {}
+    rows = []
+    for col, cf in subs:
+        report = check(cf)
+        stem = f"{target.stem}-{col}"
+        files[out / f"{stem}.json"] = dumps(report.to_json())
+        files[out / f"{stem}.txt"] = table(report) + "\n"
+        rows.append(summary_row(f"{target}[{col}]", report))
+        if not args.quiet and args.csv != "-":
+            print(table(report))
+            print()
+    _make_folder(out)
+    write_all(files)
+    _summary(rows, args, out)
+    return 0
