@@ -253,3 +253,77 @@ def test_rubric_from_the_check_file(scenarios):
     with pytest.raises(Exception, match="coriolis"):
         check_from_dict(data, "s.toml")
 
+
+
+# --------------------------------------------------------------------------- forms
+
+
+def test_template_lists_what_the_sheets_show_and_a_blank_reads_as_not_written(tmp_path, capsys):
+    scene = tmp_path / "shaper.toml"
+    scene.write_text((SAMPLES / "shaper.toml").read_text(encoding="utf-8"), encoding="utf-8")
+    form = tmp_path / "blank.toml"
+    assert main(["check", "--template", str(scene), "--phi", "30,210", "-o", str(form), "--quiet"]) == 0
+    import tomllib
+
+    data = tomllib.loads(form.read_text(encoding="utf-8"))
+    assert data["scene"] == "shaper.toml"
+    assert [p["phi_deg"] for p in data["positions"]] == [30, 210]
+    plan = construction.build(solve(load_scene(scene), order=2), 1, velocity_scale=100.0, acceleration_scale=10.0)
+    labels = {s.label for s in plan.velocity.segments} | {s.label for s in plan.acceleration.segments}
+    assert labels <= set(data["positions"][0]["measured"])
+    assert {"omega_3", "eps_3", "F_bal", "Phi_3"} <= set(data["positions"][0]["values"])
+    # the blank form names every quantity the checker reads: filled with one figure it checks
+    data["positions"][0]["values"]["omega_1"] = 6.2832
+    data["scales"]["velocity"] = {"mu": 100}
+    rep = check(check_from_dict(data, str(form)))
+    assert [i.quantity for i in rep.items] == ["omega_1"] and rep.causes == ()
+    assert main(["check", "--template", str(scene), "--phi", "31"]) == 2
+    assert "31" in capsys.readouterr().err
+
+
+def test_csv_form_one_submission_per_column(scenarios, tmp_path, capsys):
+    scene = tmp_path / "whitworth.toml"
+    scene.write_text((SAMPLES / "whitworth.toml").read_text(encoding="utf-8"), encoding="utf-8")
+    form = tmp_path / "group.csv"
+    assert main(["check", "--template", str(scene), "--phi", "30,120", "--form", "csv", "--students", "3",
+                 "-o", str(form), "--quiet"]) == 0
+    rows = list(csv.reader(form.open(encoding="utf-8")))
+    sc = scenarios["whitworth"]
+    planted = [submission(sc, (30.0, 120.0), kind, np.random.default_rng(seed))[0]
+               for kind, seed in ((None, 11), ("coriolis_reversed", 12))]
+    for col, data in enumerate(planted):  # the third column stays empty: no submission
+        for r in rows[1:]:
+            q, phi, fig = r[:3]
+            if q == "student":
+                r[3 + col] = f"student {col + 1}"
+            elif q.startswith("scales.") and q.split(".")[1] in ("velocity", "acceleration"):
+                r[3 + col] = str(data["scales"][q.split(".")[1]]["mu"])
+            elif phi:
+                pos = next(p for p in data["positions"] if p["phi_deg"] == float(phi))
+                figures = pos["measured" if fig == "mm" else "values"]
+                if q in figures:
+                    r[3 + col] = str(figures[q])
+    with form.open("w", encoding="utf-8", newline="") as fh:
+        csv.writer(fh, lineterminator="\n").writerows(rows)
+    capsys.readouterr()
+    assert main(["check", str(form), "--csv", "-", "--quiet"]) == 0
+    got = list(csv.DictReader(io.StringIO(capsys.readouterr().out)))
+    assert [r["student"] for r in got] == ["student 1", "student 2"]
+    assert got[0]["causes"] == "" and got[0]["mark"] == "100"
+    assert got[1]["causes"].startswith("coriolis_reversed")
+    assert sorted(p.name for p in (tmp_path / "group-reports").iterdir()) == \
+        ["group-1.json", "group-1.txt", "group-2.json", "group-2.txt"]
+
+
+def test_folder_with_its_scene_beside_the_check_files(scenarios, tmp_path, capsys):
+    import tomlkit
+
+    (tmp_path / "v_engine.toml").write_text((SAMPLES / "v_engine.toml").read_text(encoding="utf-8"),
+                                            encoding="utf-8")
+    data = submission(scenarios["v_engine"], (0.0, 45.0), None, np.random.default_rng(3))[0]
+    del data["scene"]
+    (tmp_path / "ivanov.toml").write_text(tomlkit.dumps(data), encoding="utf-8")
+    capsys.readouterr()
+    assert main(["check", str(tmp_path), "--csv", "-", "--quiet"]) == 0
+    got = list(csv.DictReader(io.StringIO(capsys.readouterr().out)))
+    assert len(got) == 1 and got[0]["status"] == "ok" and got[0]["mark"] == "100"

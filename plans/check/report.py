@@ -522,9 +522,10 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
     scenes = []
     for f in files:
         try:
-            if is_scene(read_toml(f)):
+            # a scene has a [driver]; a check file is read once, below, not twice
+            if "[driver]" in f.read_text(encoding="utf-8", errors="replace") and is_scene(read_toml(f)):
                 scenes.append(f)
-        except PlansError:
+        except (PlansError, OSError):
             continue  # reported as that file's error below
     files = [f for f in files if f not in scenes]
     beside = scenes[0] if len(scenes) == 1 else None
