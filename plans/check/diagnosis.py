@@ -20,7 +20,7 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from statistics import median
 from typing import TYPE_CHECKING, Any
 
@@ -57,6 +57,7 @@ class Cause:
     deduction: float
     items: tuple[int, ...] = ()  # indices of the report's items it explains
     findings: tuple[int, ...] = ()  # indices of the report's findings it accounts for
+    superseded: tuple[int, ...] = ()  # findings it makes moot ("was the wrong segment measured?")
 
     def to_json(self) -> dict:
         return {"kind": self.kind, "positions": list(self.positions), "explains": list(self.explains),
@@ -330,6 +331,7 @@ def diagnose(ctx: Context, items: tuple[Item, ...], findings: tuple[Finding, ...
     # findings: grouped under a cause that explains one of their figures at their position
     quantity_at = {(items[i].phi_deg, items[i].quantity): n for n, (_, ex) in enumerate(chosen) for i in ex}
     by_cause: dict[int, list[int]] = {}
+    hidden: dict[int, list[int]] = {}
     extra = _constants(ctx, items, open_)
     left: list[int] = []
 
@@ -357,6 +359,9 @@ def diagnose(ctx: Context, items: tuple[Item, ...], findings: tuple[Finding, ...
             continue
         owner = owner_of(f)
         if owner is not None:
+            if f.kind == "swapped" and chosen[owner][0].kind != "wrong_segment":
+                hidden.setdefault(owner, []).append(fi)  # "the wrong segment measured?": no, the mistake moved it
+                continue
             by_cause.setdefault(owner, []).append(fi)
             continue
         if f.kind in ("arithmetic", "relation") and f.quantities and f.quantities[0] in scaled:
@@ -375,6 +380,9 @@ def diagnose(ctx: Context, items: tuple[Item, ...], findings: tuple[Finding, ...
         extra.append((kind, key, detail, {phi} if phi is not None else set(), hits, [fi], ()))
         open_ -= hits
     causes = _merge(chosen, by_cause, extra, items, rub)
+    causes = [replace(c, superseded=tuple(sorted(fi for n, fis in hidden.items() for fi in fis
+                                                 if set(chosen[n][1]) & set(c.items))))
+              for c in causes]
     unexplained = tuple(sorted(open_))
     mark = rub["full"] - sum(c.deduction for c in causes) - rub["unexplained"] * len(unexplained) \
         - rub["finding"] * len(left)

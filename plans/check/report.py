@@ -148,7 +148,7 @@ class Report:
         }
 
     def _cause_of(self, n: int) -> str | None:
-        return next((c.kind for c in self.causes if n in c.findings), None)
+        return next((c.kind for c in self.causes if n in c.findings or n in c.superseded), None)
 
 
 # --------------------------------------------------------------------------- comparison
