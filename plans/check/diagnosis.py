@@ -274,6 +274,63 @@ def _force_models(sh: _Sheet) -> list[_Model]:
     return out
 
 
+def reversed_couple(ctx: Context, lid: int) -> Any:
+    """The force analysis with the inertia couple of link ``lid`` on the wrong side: the
+    analysis is linear in its loads, so with M_Φ reversed it is 2·(without M_Φ) − (with)."""
+    from plans.forces.polygons import analyse_forces
+
+    got = ctx.forces()
+    assert got is not None
+    loads, _ = got
+    return analyse_forces(ctx.scene, ctx.kin, replace(loads, inertias={**loads.inertias, lid: 0.0}))
+
+
+def couple_value(fa: Any, fa0: Any, q: str, k: int) -> float | None:
+    """|q| at position k with the couple reversed (``fa`` with it, ``fa0`` without)."""
+    if q in ("F_bal", "F_bal_lever"):
+        return abs(2 * float(fa0.balancing[k]) - float(fa.balancing[k]))
+    m = re.fullmatch(r"F_(\d)(\d)(\^[nτ])?", q)
+    if not m:
+        return None
+    try:
+        F, rc = fa.reaction(f"F{m.group(1)}{m.group(2)}")
+        F0, rc0 = fa0.reaction(f"F{m.group(1)}{m.group(2)}")
+    except KeyError:
+        return None
+    if m.group(3) is None:
+        return abs(2 * complex(F0[k]) - complex(F[k]))
+    arr, arr0 = (rc.tau, rc0.tau) if m.group(3) == "^τ" else (rc.n, rc0.n)
+    if arr is None or arr0 is None:
+        return None
+    return abs(2 * float(arr0[k]) - float(arr[k]))
+
+
+def _inertia_models(sh: _Sheet) -> list[_Model]:
+    """An inertia couple applied with the wrong sign: every reaction and the balancing force."""
+    ctx = sh.ctx
+    if not any(sh.items[i].source == "forces" for i in sh.fails):
+        return []
+    got = ctx.forces()
+    if got is None:
+        return []
+    loads, fa = got
+    out = []
+    for lid, inert in sorted(loads.inertias.items()):
+        if inert <= 0 or lid not in loads.centres:
+            continue
+        fa0 = reversed_couple(ctx, lid)
+        model = _Model("inertia_sign", ("inertia_sign", lid),
+                       f"the inertia couple M_Φ{lid} = I{lid}·ε{lid} applied with the wrong sense "
+                       f"(along ε{lid}, not against it)", {p.phi_deg for p in ctx.cf.positions})
+        for i, it in enumerate(sh.items):
+            if it.source == "forces":
+                v = couple_value(fa, fa0, it.quantity, sh.k_of[it.phi_deg])
+                if v is not None:
+                    model.pred[i] = (v, None)
+        out.append(model)
+    return out
+
+
 # --------------------------------------------------------------------------- choosing
 
 
@@ -311,7 +368,8 @@ def diagnose(ctx: Context, items: tuple[Item, ...], findings: tuple[Finding, ...
     open_ = set(sh.fails)
     if open_:
         builders: list[Callable[[_Sheet], list[_Model]]] = [_plan_models, _value_scale_models,
-                                                              _wrong_segment_models, _force_models]
+                                                              _wrong_segment_models, _force_models,
+                                                              _inertia_models]
         models = [m for build in builders for m in build(sh)]
         while open_:
             best = None
@@ -319,9 +377,9 @@ def diagnose(ctx: Context, items: tuple[Item, ...], findings: tuple[Finding, ...
                 ex, co, miss = _score(m, sh, open_)
                 if not ex or len(co) > len(ex) // 3 or (m.free and (len(ex) < 2 or co)):
                     continue  # a fitted factor must explain several figures
-                key = (len(ex) - 2 * len(co), -round(miss / len(ex), 1), -_RANK.get(m.kind, 99), -m.base)
-                if best is None or key > best[0]:
-                    best = (key, m, ex)
+                rank = (len(ex) - 2 * len(co), -round(miss / len(ex), 1), -_RANK.get(m.kind, 99), -m.base)
+                if best is None or rank > best[0]:
+                    best = (rank, m, ex)
             if best is None:
                 break
             _, m, ex = best
@@ -374,7 +432,7 @@ def diagnose(ctx: Context, items: tuple[Item, ...], findings: tuple[Finding, ...
         target = f.quantities[0] if f.quantities else ""
         phi = f.phi_deg
         hits = {i for i in open_ if items[i].quantity == target and (phi is None or items[i].phi_deg == phi)}
-        key = (kind,) if kind == "pi_rounded" else (kind, target, phi)
+        key: tuple = (kind,) if kind == "pi_rounded" else (kind, target, phi)
         detail = "ω1 = πn/30 computed with π = 3.14" if kind == "pi_rounded" else \
             f"{target} does not follow from the student's own figures: {f.message.split(': ', 1)[-1]}"
         extra.append((kind, key, detail, {phi} if phi is not None else set(), hits, [fi], ()))

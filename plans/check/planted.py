@@ -20,6 +20,7 @@ from typing import Any
 import numpy as np
 
 from plans.check.checkfile import check_from_dict
+from plans.check.diagnosis import couple_value, reversed_couple
 from plans.check.mistakes import Slip, effective, inventory, replay
 from plans.check.providers import Context, exact_value
 from plans.kinematics.construction import nice_scale
@@ -27,7 +28,7 @@ from plans.scene.model import Scene, load_scene
 
 #: The mistakes the planted suite plants (kinds of :data:`plans.check.mistakes.KINDS`).
 PLANTED = ("coriolis_reversed", "normal_from_pole", "tangential_wrong_line", "scale", "similarity",
-           "wrong_segment", "reaction_swapped", "pi_rounded", "g_rounded", "arithmetic")
+           "wrong_segment", "inertia_sign", "reaction_swapped", "pi_rounded", "g_rounded", "arithmetic")
 
 
 def sig(x: float, n: int = 4) -> float:
@@ -95,6 +96,15 @@ def submission(sc: Scenario, phis: tuple[float, float], kind: str | None, rng: n
             factor = 1.0
         else:
             told = f"scale: {plan} values × {factor:.3f}"
+    couple = None
+    if kind == "inertia_sign":
+        got = ctx.forces()
+        links = [lid for lid, i in sorted(got[0].inertias.items()) if i > 0 and lid in got[0].centres] if got else []
+        if not links:
+            raise LookupError(f"no inertia couple in {sc.path.name}")
+        lid = links[int(rng.integers(len(links)))]
+        couple = (got[1], reversed_couple(ctx, lid))
+        told = f"inertia_sign: M_Phi{lid}"
     body: dict[float, tuple[dict, dict]] = {}
     for n, phi in enumerate(phis):
         k = next(i for i, p in enumerate(d.phis_deg) if abs(p - phi) < 1e-9)
@@ -115,16 +125,16 @@ def submission(sc: Scenario, phis: tuple[float, float], kind: str | None, rng: n
         own = f"a_{slip.target[2:]}^n" if slip is not None and slip.variant == "from_pole" else None
         read: dict[str, float] = {}
         for kind_ in ("velocity", "acceleration"):
-            plan = ctx.plan(k, kind_)
-            assert plan is not None
-            for sg in plan.segments:
+            drawn = ctx.plan(k, kind_)
+            assert drawn is not None
+            for sg in drawn.segments:
                 got = pts[kind_]
                 mm = float(abs(got[sg.end][0] - got[sg.start][0])) if sg.label != own else sg.length_mm
                 r = max(0.0, round(mm + rng.uniform(-noise_mm, noise_mm), 1))
                 read[f"{kind_}:{sg.start}:{sg.end}"] = r
                 meas[sg.label] = r
                 scale_values = kind == "scale" and factor != 1.0 and told.startswith(f"scale: {kind_}")
-                vals[sg.label] = sig(r / plan.scale * (factor if scale_values else 1.0))
+                vals[sg.label] = sig(r / drawn.scale * (factor if scale_values else 1.0))
         for lid in sorted(scene.links):
             for q in (f"omega_{lid}", f"eps_{lid}"):
                 if lid == d.link:
@@ -132,18 +142,18 @@ def submission(sc: Scenario, phis: tuple[float, float], kind: str | None, rng: n
                 ex = exact_value(ctx, k, q)
                 if ex is None or ex.segment is None or not ex.mm_per_unit or ex.plan is None:
                     continue
-                r = read.get(f"{ex.plan}:{ex.segment[0]}:{ex.segment[1]}")
-                if r is None:
+                seen = read.get(f"{ex.plan}:{ex.segment[0]}:{ex.segment[1]}")
+                if seen is None:
                     continue
                 scale_values = kind == "scale" and factor != 1.0 and told.startswith(f"scale: {ex.plan}")
-                vals[q] = sig(r / ex.mm_per_unit * (factor if scale_values else 1.0))
+                vals[q] = sig(seen / ex.mm_per_unit * (factor if scale_values else 1.0))
         w1 = abs(d.omega) * (3.14 / math.pi if kind == "pi_rounded" else 1.0)
         l1 = abs(crank.points[A] - crank.points[crank.axis[0]])
         vals[f"omega_{d.link}"] = sig(w1, 5)
         vals[f"v_{A}"] = sig(w1 * l1, 5)
         if d.eps == 0:
             vals[f"a_{A}"] = sig(w1 * w1 * l1, 5)
-        _forces(ctx, k, vals, kind == "g_rounded")
+        _forces(ctx, k, vals, kind == "g_rounded", couple)
         body[phi] = (meas, vals)
     if kind == "wrong_segment":
         told = _wrong_segment(ctx, phis[where], body[phis[where]], rng)
@@ -154,7 +164,7 @@ def submission(sc: Scenario, phis: tuple[float, float], kind: str | None, rng: n
     return _skeleton(sc.path, phis, mv, ma, sc.mf, body), told
 
 
-def _forces(ctx: Context, k: int, vals: dict[str, Any], g10: bool) -> None:
+def _forces(ctx: Context, k: int, vals: dict[str, Any], g10: bool, couple: tuple[Any, Any] | None) -> None:
     got = ctx.forces()
     if got is None:
         return
@@ -162,12 +172,16 @@ def _forces(ctx: Context, k: int, vals: dict[str, Any], g10: bool) -> None:
     for lid, m in sorted(loads.masses.items()):
         if m > 0:
             vals[f"G_{lid}"] = sig(m * (10.0 if g10 else 9.81))
-    for rc in fa.reactions():
-        name = rc.name(ctx.scene.fij)[1:]
-        for comp in ("^τ", "^n"):
-            ex = exact_value(ctx, k, f"F_{name}{comp}")
-            if ex is not None:
-                vals[f"F_{name}{comp}"] = sig(ex.value)
+    names = [f"F_{rc.name(ctx.scene.fij)[1:]}{comp}" for rc in fa.reactions() for comp in ("", "^τ", "^n")]
+    for q in names + ["F_bal"]:
+        ex = exact_value(ctx, k, q)
+        if ex is None:
+            continue
+        value = ex.value
+        if couple is not None:
+            wrong = couple_value(couple[0], couple[1], q, k)
+            value = ex.value if wrong is None else wrong
+        vals[q] = sig(value)
 
 
 def _wrong_segment(ctx: Context, phi: float, body: tuple[dict, dict], rng: np.random.Generator) -> str:
