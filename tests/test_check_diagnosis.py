@@ -327,3 +327,24 @@ def test_folder_with_its_scene_beside_the_check_files(scenarios, tmp_path, capsy
     assert main(["check", str(tmp_path), "--csv", "-", "--quiet"]) == 0
     got = list(csv.DictReader(io.StringIO(capsys.readouterr().out)))
     assert len(got) == 1 and got[0]["status"] == "ok" and got[0]["mark"] == "100"
+
+
+def test_velocity_scale_written_45_drawn_at_49_75_is_one_scale_mistake():
+    """The Whitworth student whose sheet says μv = 45 while the plan is drawn at 49.75: one
+    short segment read to ±0.5 mm does not hide it, and the failures that follow from it
+    (ω read off the plan, the normal and Coriolis components computed from it) are its
+    consequences, not separate mistakes."""
+    sc = Scenario.of(SAMPLES / "whitworth.toml", mv=45.0)
+    slip = Slip("scale", "velocity", "drawn", "velocity", factor=49.75 / 45.0)
+    data, _ = submission(sc, (30.0, 210.0), "scale", np.random.default_rng(9), drawn=slip)
+    rep = check(check_from_dict(data, "w.toml"))
+    assert rep.failed >= 10
+    first = rep.causes[0]
+    import re
+
+    assert first.kind == "scale" and "μv = 45 is written" in first.detail
+    drawn_at = float(re.search(r"drawn at μv = ([\d.]+)", first.detail).group(1))
+    assert drawn_at == pytest.approx(49.75, rel=0.01)
+    assert len(first.items) >= 10
+    assert len(rep.unexplained) <= 2
+    assert not [f for f in rep.findings_left if f.kind == "swapped"]

@@ -173,8 +173,15 @@ def _plan_models(sh: _Sheet) -> list[_Model]:
 
 
 def _fit(pairs: list[tuple[Any, Any]]) -> float | None:
-    ratios = [s / e for s, e in pairs]
-    return float(median(ratios)) if len(ratios) >= 3 else None
+    """The factor a plan is drawn at: least squares over its segments (the long ones, read
+    to the same ±0.5 mm, weigh most), once more without those far off it (other slips)."""
+    if len(pairs) < 3:
+        return None
+    r = float(median(s / e for s, e in pairs))
+    for _ in range(2):
+        near = [(s, e) for s, e in pairs if abs(s - r * e) <= 0.05 * r * e + 1.0] or pairs
+        r = sum(s * e for s, e in near) / sum(e * e for _, e in near)
+    return r
 
 
 def _scale_drawn(s: Slip, scales: dict[str, float]) -> str:

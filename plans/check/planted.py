@@ -47,13 +47,15 @@ class Scenario:
     ctx: Context
 
     @classmethod
-    def of(cls, path: str | Path, phis: tuple[float, ...] | None = None) -> Scenario:
+    def of(cls, path: str | Path, phis: tuple[float, ...] | None = None, mv: float | None = None,
+           ma: float | None = None) -> Scenario:
+        """The scene at the student's scales (μv, μa; by default nice ones for 80 mm)."""
         path = Path(path)
         scene = load_scene(path)
         from plans.accuracy.oracles import norms
 
         nm = norms(scene)
-        mv, ma = nice_scale(nm["v"], 80.0), nice_scale(nm["a"], 80.0)
+        mv, ma = mv or nice_scale(nm["v"], 80.0), ma or nice_scale(nm["a"], 80.0)
         phis = phis or tuple(scene.driver.phis_deg)
         cf = check_from_dict(_skeleton(path, phis, mv, ma, None, {}), str(path.with_suffix(".check.toml")))
         return cls(path, scene, mv, ma, None, Context(cf))
@@ -75,9 +77,10 @@ def _skeleton(path: Path, phis: tuple[float, ...], mv: float, ma: float, mf: flo
 
 
 def submission(sc: Scenario, phis: tuple[float, float], kind: str | None, rng: np.random.Generator,
-               noise_mm: float = 0.5) -> tuple[dict[str, Any], str]:
+               noise_mm: float = 0.5, drawn: Slip | None = None) -> tuple[dict[str, Any], str]:
     """A check file (as a dict) of a student who made the mistake ``kind`` (None: none),
-    and what was planted (in words, for a failing test's message)."""
+    and what was planted (in words, for a failing test's message).  ``drawn``: a given
+    plan drawn at another scale than the one written (``kind`` "scale")."""
     ctx, scene = sc.ctx, sc.scene
     d = scene.driver
     crank = scene.links[d.link]
@@ -87,7 +90,9 @@ def submission(sc: Scenario, phis: tuple[float, float], kind: str | None, rng: n
     slip: Slip | None = None
     told = kind or "clean"
     factor = 1.0
-    if kind == "scale":
+    if kind == "scale" and drawn is not None:
+        slip, told = drawn, f"scale: {drawn.target} plan drawn at {drawn.factor:.4g}×"
+    elif kind == "scale":
         factor = float(rng.choice([-1, 1]) * rng.uniform(0.06, 0.2) + 1)
         plan = "velocity" if rng.random() < 0.5 else "acceleration"
         if rng.random() < 0.5:
