@@ -24,8 +24,11 @@ from dataclasses import dataclass, field, replace
 from statistics import median
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
+
 from plans.check.mistakes import KINDS, Slip, describe, inventory, replay
 from plans.check.providers import Context, exact_value
+from plans.errors import PlansError
 
 if TYPE_CHECKING:
     from plans.check.findings import Finding, Item
@@ -144,8 +147,12 @@ def _plan_models(sh: _Sheet) -> list[_Model]:
                 and not (it.figure == "value" and it.quantity in sh.data)]
         if not mine:
             continue
-        slips = inventory(ctx.kin, k, mv, ma) + drawn
-        vp, ap = replay(ctx.kin, k, mv, ma, slips)
+        try:
+            with np.errstate(all="ignore"):
+                slips = inventory(ctx.kin, k, mv, ma) + drawn
+                vp, ap = replay(ctx.kin, k, mv, ma, slips)
+        except (PlansError, ArithmeticError, ValueError, KeyError):
+            continue  # a construction that cannot be replayed here offers no model: the rest still do
         pts = {"velocity": vp, "acceleration": ap}
         for j, s in enumerate(slips):
             if s.kind == "scale":
