@@ -130,16 +130,16 @@ def submission(sc: Scenario, phis: tuple[float, float], kind: str | None, rng: n
         own = f"a_{slip.target[2:]}^n" if slip is not None and slip.variant == "from_pole" else None
         read: dict[str, float] = {}
         for kind_ in ("velocity", "acceleration"):
-            drawn = ctx.plan(k, kind_)
-            assert drawn is not None
-            for sg in drawn.segments:
+            right = ctx.plan(k, kind_)
+            assert right is not None
+            for sg in right.segments:
                 got = pts[kind_]
                 mm = float(abs(got[sg.end][0] - got[sg.start][0])) if sg.label != own else sg.length_mm
                 r = max(0.0, round(mm + rng.uniform(-noise_mm, noise_mm), 1))
                 read[f"{kind_}:{sg.start}:{sg.end}"] = r
                 meas[sg.label] = r
                 scale_values = kind == "scale" and factor != 1.0 and told.startswith(f"scale: {kind_}")
-                vals[sg.label] = sig(r / drawn.scale * (factor if scale_values else 1.0))
+                vals[sg.label] = sig(r / right.scale * (factor if scale_values else 1.0))
         for lid in sorted(scene.links):
             for q in (f"omega_{lid}", f"eps_{lid}"):
                 if lid == d.link:
