@@ -21,15 +21,18 @@ An empty cell is a figure not written; a column with no figure is no submission.
 
 from __future__ import annotations
 
+import argparse
 import csv
 import io
 import json
 import math
+import sys
 from pathlib import Path
 from typing import Any
 
 from plans.check.checkfile import SCALE_KINDS, CheckFile, check_from_dict
-from plans.errors import InputError
+from plans.errors import InputError, OutputError, PlansError, one_line
+from plans.io import dumps, refuse_input, write_all
 from plans.scene.model import Scene
 
 _FIXED = ("quantity", "phi_deg", "figure")
@@ -199,3 +202,87 @@ def read_form(path: str | Path) -> list[tuple[str, CheckFile]]:
 def is_scene(data: dict[str, Any]) -> bool:
     """A linkage scene (not a check file) lying in a folder of check files."""
     return data.get("kind", "linkage") == "linkage" and "links" in data and "positions" not in data
+
+
+# --------------------------------------------------------------------------- command line
+
+
+def run_template(args: argparse.Namespace) -> int:
+    """``plans check --template SCENE``: a blank check file (or CSV form) to fill in."""
+    from plans.check.report import _err
+    from plans.scene.model import load_scene
+
+    try:
+        scene_path = Path(args.template)
+        if args.path:
+            raise InputError("--template writes a blank form: give no check file with it", file=args.path)
+        scene = load_scene(scene_path)
+        phis = None
+        if args.phi:
+            try:
+                phis = tuple(float(x) for x in args.phi.split(","))
+            except ValueError:
+                raise InputError(f"expected angles in degrees separated by commas, got {args.phi!r}",
+                                 field="--phi") from None
+            known = scene.driver.phis_deg
+            for p in phis:
+                if not any(abs(p - q) < 1e-9 for q in known):
+                    raise InputError(f"position {p:g}° is not in the scene (it has "
+                                     f"{', '.join(f'{q:g}°' for q in known)})", file=str(scene_path), field="--phi")
+        target = Path(args.output) if args.output else None
+        ref = str(scene_path.resolve()) if target is None else _relative(scene_path, target)
+        if args.form == "csv":
+            if not 1 <= args.students <= 500:
+                raise InputError(f"expected 1 to 500 student columns, got {args.students}", field="--students")
+            text = template_csv(scene, ref, phis, args.students)
+        else:
+            text = template_toml(scene, ref, phis)
+        if target is None:
+            sys.stdout.write(text)
+            return 0
+        refuse_input(str(target), scene_path)
+        if not target.parent.is_dir():
+            raise OutputError(f"{target}: no such folder {target.parent}")
+        write_all({target: text})
+        if not args.quiet:
+            print(target)
+        return 0
+    except PlansError as exc:
+        _err(one_line(exc))
+        return 2
+
+
+def _relative(scene: Path, target: Path) -> str:
+    """The scene's path as the form beside ``target`` names it."""
+    import os
+
+    try:
+        return Path(os.path.relpath(scene.resolve(), target.resolve().parent)).as_posix()
+    except ValueError:  # another drive
+        return str(scene.resolve())
+
+
+def run_form(target: Path, args: argparse.Namespace) -> int:
+    """``plans check FORM.csv``: each filled column one submission, as a folder is checked."""
+    from plans.check.report import _err, _make_folder, _summary, check, summary_row, table
+
+    if args.json:
+        _err(f"{target}: --json is for one check file; a form writes one report per student into --out")
+        return 2
+    subs = read_form(target)
+    out = Path(args.out) if args.out else target.parent / f"{target.stem}-reports"
+    files: dict[Path, Any] = {}
+    rows = []
+    for col, cf in subs:
+        report = check(cf)
+        stem = f"{target.stem}-{col}"
+        files[out / f"{stem}.json"] = dumps(report.to_json())
+        files[out / f"{stem}.txt"] = table(report) + "\n"
+        rows.append(summary_row(f"{target}[{col}]", report))
+        if not args.quiet and args.csv != "-":
+            print(table(report))
+            print()
+    _make_folder(out)
+    write_all(files)
+    _summary(rows, args, out)
+    return 0

@@ -445,7 +445,9 @@ def run(args: argparse.Namespace) -> int:
     """``plans check``: 0 when every file was checked, 2 on a user error (one line on stderr).
     A single file's outputs (JSON, CSV, reports, sheets) are written all or none."""
     if getattr(args, "template", None):
-        return _template(args)
+        from plans.check.forms import run_template
+
+        return run_template(args)
     if not args.path:
         _err("expected a check file, a CSV form or a folder (or --template SCENE)")
         return 2
@@ -454,7 +456,9 @@ def run(args: argparse.Namespace) -> int:
         if target.is_dir():
             return _batch(target, args)
         if target.suffix.lower() == ".csv" and target.is_file():
-            return _form(target, args)
+            from plans.check.forms import run_form
+
+            return run_form(target, args)
         if not target.exists():
             _err(f"{target}: no such file or folder")
             return 2
@@ -600,84 +604,3 @@ def _check_beside(path: Path, scene: Path | None) -> Report:
     except PlansError as exc:
         exc.source = exc.source or str(path)
         raise
-
-
-def _template(args: argparse.Namespace) -> int:
-    """``plans check --template SCENE``: a blank check file (or CSV form) to fill in."""
-    from plans.check.forms import template_csv, template_toml
-    from plans.scene.model import load_scene
-
-    try:
-        scene_path = Path(args.template)
-        if args.path:
-            raise InputError("--template writes a blank form: give no check file with it", file=args.path)
-        scene = load_scene(scene_path)
-        phis = None
-        if args.phi:
-            try:
-                phis = tuple(float(x) for x in args.phi.split(","))
-            except ValueError:
-                raise InputError(f"expected angles in degrees separated by commas, got {args.phi!r}",
-                                 field="--phi") from None
-            known = scene.driver.phis_deg
-            for p in phis:
-                if not any(abs(p - q) < 1e-9 for q in known):
-                    raise InputError(f"position {p:g}° is not in the scene (it has "
-                                     f"{', '.join(f'{q:g}°' for q in known)})", file=str(scene_path), field="--phi")
-        target = Path(args.output) if args.output else None
-        ref = str(scene_path.resolve()) if target is None else _relative(scene_path, target)
-        if args.form == "csv":
-            if not 1 <= args.students <= 500:
-                raise InputError(f"expected 1 to 500 student columns, got {args.students}", field="--students")
-            text = template_csv(scene, ref, phis, args.students)
-        else:
-            text = template_toml(scene, ref, phis)
-        if target is None:
-            sys.stdout.write(text)
-            return 0
-        refuse_input(str(target), scene_path)
-        if not target.parent.is_dir():
-            raise OutputError(f"{target}: no such folder {target.parent}")
-        write_all({target: text})
-        if not args.quiet:
-            print(target)
-        return 0
-    except PlansError as exc:
-        _err(one_line(exc))
-        return 2
-
-
-def _relative(scene: Path, target: Path) -> str:
-    """The scene's path as the form beside ``target`` names it."""
-    import os
-
-    try:
-        return Path(os.path.relpath(scene.resolve(), target.resolve().parent)).as_posix()
-    except ValueError:  # another drive
-        return str(scene.resolve())
-
-
-def _form(target: Path, args: argparse.Namespace) -> int:
-    """``plans check FORM.csv``: each filled column one submission, as a folder is checked."""
-    from plans.check.forms import read_form
-
-    if args.json:
-        _err(f"{target}: --json is for one check file; a form writes one report per student into --out")
-        return 2
-    subs = read_form(target)
-    out = Path(args.out) if args.out else target.parent / f"{target.stem}-reports"
-    files: dict[Path, Any] = {}
-    rows = []
-    for col, cf in subs:
-        report = check(cf)
-        stem = f"{target.stem}-{col}"
-        files[out / f"{stem}.json"] = dumps(report.to_json())
-        files[out / f"{stem}.txt"] = table(report) + "\n"
-        rows.append(summary_row(f"{target}[{col}]", report))
-        if not args.quiet and args.csv != "-":
-            print(table(report))
-            print()
-    _make_folder(out)
-    write_all(files)
-    _summary(rows, args, out)
-    return 0
