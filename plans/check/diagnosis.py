@@ -348,11 +348,13 @@ def _inertia_models(sh: _Sheet) -> list[_Model]:
 # --------------------------------------------------------------------------- choosing
 
 
-def _score(model: _Model, sh: _Sheet, open_: set[int]) -> tuple[set[int], set[int], float]:
-    """The failures a model explains, the passing figures it contradicts, and how far the
-    explained figures lie from the model's (in their tolerances: the closer the likelier)."""
+def _score(model: _Model, sh: _Sheet, open_: set[int]) -> tuple[set[int], set[int], float, int]:
+    """The failures a model explains, the passing figures it contradicts, how far the
+    explained figures lie from the model's (in their tolerances: the closer the likelier),
+    and how many failing figures it moves elsewhere than the student has them."""
     explains, contra = set(), set()
     miss = 0.0
+    astray = 0
     for i, (value, mm) in model.pred.items():
         it = sh.items[i]
         ok = _ok(it, value, mm)
@@ -360,9 +362,18 @@ def _score(model: _Model, sh: _Sheet, open_: set[int]) -> tuple[set[int], set[in
             if ok and i in open_:
                 explains.add(i)
                 miss += _miss(it, value, mm)
+            elif not ok and i in open_ and _miss(it, value, mm) > 0 and _moves(it, value, mm):
+                astray += 1
         elif not ok:
             contra.add(i)
-    return explains, contra, miss
+    return explains, contra, miss, astray
+
+
+def _moves(it: Item, value: float | None, mm: float | None) -> bool:
+    """The model puts the figure out of its tolerance of the exact one."""
+    if it.figure != "value" and mm is not None and it.exact_mm is not None and it.tolerance_mm:
+        return abs(mm - it.exact_mm) > it.tolerance_mm
+    return value is not None and abs(value - it.exact) > it.tolerance
 
 
 def _miss(it: Item, value: float | None, mm: float | None) -> float:
@@ -388,9 +399,9 @@ def diagnose(ctx: Context, items: tuple[Item, ...], findings: tuple[Finding, ...
         while open_:
             best = None
             for m in models:
-                ex, co, miss = _score(m, sh, open_)
-                if not ex or len(co) > len(ex) // 3 or (m.free and (len(ex) < 2 or co)):
-                    continue  # a fitted factor must explain several figures
+                ex, co, miss, astray = _score(m, sh, open_)
+                if not ex or len(co) > len(ex) // 3 or (m.free and (len(ex) < 2 or co)) or astray > len(ex):
+                    continue  # a fitted factor must explain several figures; a mistake, most of what it moves
                 rank = (len(ex) - 2 * len(co), -round(miss / len(ex), 1), -_RANK.get(m.kind, 99), -m.base)
                 if best is None or rank > best[0]:
                     best = (rank, m, ex)
