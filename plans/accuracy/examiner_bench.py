@@ -31,8 +31,9 @@ SCENES = {"v_engine": (0.0, 45.0), "shaper": (30.0, 120.0, 210.0, 300.0),
           "six_bar": (30.0, 90.0, 150.0, 240.0), "whitworth": (30.0, 120.0, 210.0, 300.0)}
 
 
-def rates(samples: Path, per_kind: int, clean_per_scene: int, seed: int = 2024) -> dict[str, Any]:
-    """Planted and clean submissions on every scene of :data:`SCENES`; the counts."""
+def rates(samples: Path, per_kind: int, clean_per_scene: int, seed: int = 2024,
+          scenes: tuple[str, ...] = tuple(SCENES)) -> dict[str, Any]:
+    """Planted and clean submissions on the scenes of :data:`SCENES`; the counts."""
     from plans.check.checkfile import check_from_dict
     from plans.check.planted import PLANTED, Scenario, submission
     from plans.check.report import check
@@ -41,6 +42,8 @@ def rates(samples: Path, per_kind: int, clean_per_scene: int, seed: int = 2024) 
     by_kind: dict[str, list[int]] = {k: [0, 0] for k in PLANTED}
     misses: list[str] = []
     for s_ix, (name, phis) in enumerate(SCENES.items()):
+        if name not in scenes:
+            continue
         sc = Scenario.of(samples / f"{name}.toml")
         plan = [None] * clean_per_scene + [k for k in PLANTED for _ in range(per_kind)]
         for n, kind in enumerate(plan):
@@ -127,14 +130,16 @@ def examiner_goals(samples: Path, quick: bool = False) -> list[Goal]:
     if not all((samples / f"{n}.toml").exists() for n in SCENES):
         return [Goal("examiner", "the V-engine, shaper, six-bar and Whitworth samples are needed", float("nan"),
                      None)]
-    got = rates(samples, 2 if quick else 6, 3 if quick else 25)
+    # quick: two scenes, one submission per mistake (the rates are then indicative only)
+    got = rates(samples, 1, 2, scenes=("shaper", "whitworth")) if quick else rates(samples, 6, 25)
     c = got["counts"]
     shown, named = c.get("shown", 0), c.get("named", 0)
     clean, ok = c.get("clean", 0), c.get("clean ok", 0)
     named_rate = named / shown if shown else 0.0
     clean_rate = ok / clean if clean else 0.0
     kinds = ", ".join(f"{k} {a}/{b}" for k, (a, b) in got["by_kind"].items() if b)
-    out = [Goal(f"planted mistake named first (≥ {NAMED_RATE:.0%}), 4 scenes",
+    where = "shaper and Whitworth" if quick else "4 scenes"
+    out = [Goal(f"planted mistake named first (≥ {NAMED_RATE:.0%}), {where}",
                 f"{named} of {shown} ({named_rate:.1%}; {c.get('invisible', 0)} slips moved nothing beyond the "
                 f"tolerance); {kinds}", NAMED_RATE / max(named_rate, 1e-9), named_rate >= NAMED_RATE),
            Goal(f"clean submission with no finding (≥ {CLEAN_RATE:.0%})",
