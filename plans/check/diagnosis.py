@@ -7,9 +7,14 @@ reaction's components swapped, g = 10, π = 3.14, an arithmetic slip in one figu
 model *explains* a failing figure when the figure agrees with the model's sheet within
 the figure's own tolerance, and *contradicts* a passing one it moves out of tolerance.
 Causes are chosen greedily, the one explaining most new failures first (ties go to the
-kind listed first in :data:`plans.check.mistakes.KINDS`), as long as each explains more
-than it contradicts; every consequence is grouped under its cause and counted once.
-Failing figures no cause explains stay ``unexplained``.
+model the figures lie closest to, in their tolerances, then to the kind listed first in
+:data:`plans.check.mistakes.KINDS`), as long as each contradicts under a third of what it
+explains and moves no more failing figures elsewhere than the student has them than it
+explains; a factor fitted to the figures (a scale) must explain two and contradict none.
+Every consequence is grouped under its cause and counted once; the findings about the
+student's own work are grouped under the cause that explains their figures.  Failing
+figures no cause explains stay ``unexplained``.  Causes are listed most important first
+(the largest deduction, then the most figures explained).
 
 The mark: ``full`` less a deduction per cause (by kind), per unexplained figure and per
 remaining finding (:data:`RUBRIC`; a check file's ``[rubric]`` table overrides it).
