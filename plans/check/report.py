@@ -337,7 +337,8 @@ def _causes_text(report: Report) -> list[str]:
         at = ", ".join(f"{p:g}°" for p in c.positions)
         lines.append(f"  #{n} [{c.kind}] {c.detail}" + (f" (φ = {at})" if at else "") + f"; −{fmt(c.deduction)}")
         if c.explains:
-            lines.append(f"     explains {len(c.items) or len(c.explains)} figures: {', '.join(c.explains)}")
+            n_fig = len(c.items) or len(c.explains)
+            lines.append(f"     explains {n_fig} figure{'s' if n_fig != 1 else ''}: {', '.join(c.explains)}")
         for fi in c.findings:
             lines.append(f"     [{report.findings[fi].kind}] {report.findings[fi].message}")
     if report.unexplained:
