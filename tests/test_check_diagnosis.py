@@ -12,6 +12,7 @@ from __future__ import annotations
 import csv
 import io
 import json
+import math
 from pathlib import Path
 
 import numpy as np
@@ -348,3 +349,25 @@ def test_velocity_scale_written_45_drawn_at_49_75_is_one_scale_mistake():
     assert len(first.items) >= 10
     assert len(rep.unexplained) <= 2
     assert not [f for f in rep.findings_left if f.kind == "swapped"]
+
+
+def test_two_mistakes_are_two_causes(scenarios):
+    """A reversed Coriolis vector and ω1 computed with π = 3.14 and one velocity miscalculated:
+    three causes, the Coriolis one first, nothing unexplained."""
+    sc = scenarios["whitworth"]
+    for seed in range(20):
+        data, told = submission(sc, (30.0, 120.0), "coriolis_reversed", np.random.default_rng(seed))
+        if check(check_from_dict(data, "w.toml")).failed >= 3:
+            break
+    d = sc.scene.driver
+    w1 = abs(d.omega) * 3.14 / math.pi
+    for pos in data["positions"]:
+        pos["values"]["omega_1"] = float(f"{w1:.5g}")
+        pos["values"]["a_A"] = float(f"{w1 * w1 * 0.12:.5g}")
+    other = data["positions"][1] if "30" in told else data["positions"][0]
+    other["values"]["v_D"] = float(f"{other['values']['v_D'] * 1.3:.4g}")
+    rep = check(check_from_dict(data, "w.toml"))
+    kinds = [c.kind for c in rep.causes]
+    assert kinds[0] == "coriolis_reversed", (told, kinds)
+    assert {"pi_rounded", "arithmetic"} <= set(kinds), kinds
+    assert len(kinds) == 3 and rep.unexplained == []
