@@ -145,8 +145,11 @@ def _plan_models(sh: _Sheet) -> list[_Model]:
     scale_models = {s.target: _Model("scale", ("scale", "drawn", s.target), _scale_drawn(s, cf.scales), set(),
                                       free=True)
                     for s in drawn}
+    wrong = _wrong_pairs(sh)
     for pos in cf.positions:
         k = pos.index
+        # a segment read wrong and used on: ω of its link, the components computed from it
+        reads = [w for w in wrong if items[w[0]].phi_deg == pos.phi_deg]
         mine = [i for i, it in enumerate(items) if it.phi_deg == pos.phi_deg and it.segment is not None
                 and it.plan in ("velocity", "acceleration") and sh.mu[i]
                 and not (it.figure == "value" and it.quantity in sh.data)]
@@ -155,6 +158,13 @@ def _plan_models(sh: _Sheet) -> list[_Model]:
         try:
             with np.errstate(all="ignore"):
                 slips = inventory(ctx.kin, k, mv, ma) + drawn
+                for i, _, _, d in reads:
+                    seg = items[i].segment
+                    plan = ctx.plan(k, items[i].plan or "")
+                    assert seg is not None and plan is not None
+                    clean = abs(complex(*plan.xy(seg[1])) - complex(*plan.xy(seg[0])))
+                    slips.append(Slip("wrong_segment", items[i].quantity, "read", items[i].plan or "",
+                                      read_mm=(clean, d)))
                 vp, ap = replay(ctx.kin, k, mv, ma, slips)
         except (PlansError, ArithmeticError, ValueError, KeyError):
             continue  # a construction that cannot be replayed here offers no model: the rest still do
@@ -163,6 +173,11 @@ def _plan_models(sh: _Sheet) -> list[_Model]:
             if s.kind == "scale":
                 model = scale_models[s.target]
                 model.positions.add(pos.phi_deg)
+            elif s.kind == "wrong_segment":
+                w = next(w for w in reads if items[w[0]].quantity == s.target)
+                model = _Model("wrong_segment", ("wrong_segment", s.target, pos.phi_deg), "", {pos.phi_deg})
+                model.pred, model.detail = {}, _wrong_model(sh, *w).detail
+                out.append(model)
             else:
                 model = _Model(s.kind, (s.kind, s.target, s.variant, s.phase), describe(s), {pos.phi_deg},
                                base=2 if s.kind == "similarity" and s.variant == "inverted" else 1)
@@ -181,6 +196,9 @@ def _plan_models(sh: _Sheet) -> list[_Model]:
                 mu = sh.mu[i]
                 assert mu
                 model.pred[i] = (mm / mu, mm)
+            if s.kind == "wrong_segment":  # and the figures on the segment itself, as read
+                w = next(w for w in reads if items[w[0]].quantity == s.target)
+                model.pred.update(_wrong_model(sh, *w).pred)
     return out + list(scale_models.values())
 
 
@@ -232,8 +250,9 @@ def _value_scale_models(sh: _Sheet) -> list[_Model]:
     return out
 
 
-def _wrong_segment_models(sh: _Sheet) -> list[_Model]:
-    """A failing segment whose length is that of another pair of points of its plan."""
+def _wrong_pairs(sh: _Sheet) -> list[tuple[int, str, str, float]]:
+    """Failing segments whose length is that of another pair of points of their plan:
+    (item, the pair, its length in mm)."""
     out = []
     ctx = sh.ctx
     for i in sorted(sh.fails):
@@ -256,20 +275,31 @@ def _wrong_segment_models(sh: _Sheet) -> list[_Model]:
                 gap = abs(d - it.student_mm)
                 if d > 0 and gap <= it.tolerance_mm and (best is None or gap < best[0]):
                     best = (gap, a, b, d)
-        if best is None:
-            continue
-        _, a, b, d = best
-        m = _Model("wrong_segment", ("wrong_segment", it.quantity, it.phi_deg),
-                   f"{it.quantity} measured between {a} and {b} ({d:.1f} mm) instead of "
-                   f"{it.segment[0]} and {it.segment[1]} on the {it.plan} plan", {it.phi_deg}, base=0)
-        for j, other in enumerate(sh.items):
-            if other.phi_deg == it.phi_deg and other.segment == it.segment and other.plan == it.plan and sh.mu[j] \
-                    and (other.quantity == it.quantity or j in sh.fails):  # ω from it: if the student used it
-                mu = sh.mu[j]
-                assert mu
-                m.pred[j] = (d / mu, d)
-        out.append(m)
+        if best is not None:
+            out.append((i, best[1], best[2], best[3]))
     return out
+
+
+def _wrong_model(sh: _Sheet, i: int, a: str, b: str, d: float) -> _Model:
+    """The figures on the segment of item ``i`` read as the length ``d`` of the pair a–b
+    (ω of its link too, where the student took it from there)."""
+    it = sh.items[i]
+    assert it.segment is not None
+    m = _Model("wrong_segment", ("wrong_segment", it.quantity, it.phi_deg),
+               f"{it.quantity} measured between {a} and {b} ({d:.1f} mm) instead of "
+               f"{it.segment[0]} and {it.segment[1]} on the {it.plan} plan", {it.phi_deg}, base=0)
+    for j, other in enumerate(sh.items):
+        if other.phi_deg == it.phi_deg and other.segment == it.segment and other.plan == it.plan and sh.mu[j] \
+                and (other.quantity == it.quantity or j in sh.fails):  # ω from it: if the student used it
+            mu = sh.mu[j]
+            assert mu
+            m.pred[j] = (d / mu, d)
+    return m
+
+
+def _wrong_segment_models(sh: _Sheet) -> list[_Model]:
+    """A segment measured between the wrong points, its consequences on its own figures."""
+    return [_wrong_model(sh, *w) for w in _wrong_pairs(sh)]
 
 
 def _force_models(sh: _Sheet) -> list[_Model]:

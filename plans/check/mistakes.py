@@ -46,6 +46,7 @@ class Slip:
     factor: float = 1.0  # a plan drawn at factor × its written scale
     link: int = 0  # the link whose point is found by similarity
     point: str = ""
+    read_mm: tuple[float, float] = (0.0, 0.0)  # a segment of this length read as that one
 
 
 @dataclass
@@ -131,7 +132,17 @@ class SlipPencil:
         return out
 
     def read(self, length: Any) -> Any:
-        return length
+        """A length read with the ruler; a segment read between the wrong points gives the
+        other pair's length wherever it is read again (ω of its link, a^n = v²/l, a^k)."""
+        hits = [i for i, s in enumerate(self.slips) if s.kind == "wrong_segment"]
+        if not hits:
+            return length
+        out = np.array(np.broadcast_to(length, (self.m,)), float)
+        for i in hits:
+            clean, wrong = self.slips[i].read_mm
+            if abs(out[i] - clean) <= 1e-9 * max(clean, 1.0):
+                out[i] = wrong
+        return out
 
     def cut(self, b: Builder, l1: Any, l2: Any, out: str, exact_xy: Any, group: Any, point: str) -> Any:
         """Two lines intersected; where a slip makes them parallel the exact point stands

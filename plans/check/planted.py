@@ -110,6 +110,11 @@ def submission(sc: Scenario, phis: tuple[float, float], kind: str | None, rng: n
         lid = links[int(rng.integers(len(links)))]
         couple = (got[1], reversed_couple(ctx, lid))
         told = f"inertia_sign: M_Phi{lid}"
+    misread = None  # a segment read between the wrong points and used on (ω, a^n, a^k)
+    if kind == "wrong_segment" and rng.random() < 0.5:
+        misread = _misread(ctx, phis[where], rng)
+        if misread is not None:
+            told = f"wrong_segment: {misread[0].target} read as {misread[1]}, used on, at {phis[where]:g}°"
     body: dict[float, tuple[dict, dict]] = {}
     for n, phi in enumerate(phis):
         k = next(i for i, p in enumerate(d.phis_deg) if abs(p - phi) < 1e-9)
@@ -123,6 +128,8 @@ def submission(sc: Scenario, phis: tuple[float, float], kind: str | None, rng: n
             slips = [slip]
         elif slip is not None and slip.kind == "scale":
             slips = [slip]
+        elif misread is not None and n == where:
+            slips = [misread[0]]
         vp, ap = replay(ctx.kin, k, mv, ma, slips)
         pts = {"velocity": vp, "acceleration": ap}
         meas: dict[str, float] = {}
@@ -136,7 +143,10 @@ def submission(sc: Scenario, phis: tuple[float, float], kind: str | None, rng: n
                 got = pts[kind_]
                 mm = float(abs(got[sg.end][0] - got[sg.start][0])) if sg.label != own else sg.length_mm
                 r = max(0.0, round(mm + rng.uniform(-noise_mm, noise_mm), 1))
+                if misread is not None and n == where and sg.label == misread[0].target:
+                    r = max(0.0, round(misread[0].read_mm[1] + rng.uniform(-noise_mm, noise_mm), 1))
                 read[f"{kind_}:{sg.start}:{sg.end}"] = r
+                read[f"{kind_}:{sg.end}:{sg.start}"] = r
                 meas[sg.label] = r
                 scale_values = kind == "scale" and factor != 1.0 and told.startswith(f"scale: {kind_}")
                 vals[sg.label] = sig(r / right.scale * (factor if scale_values else 1.0))
@@ -160,7 +170,7 @@ def submission(sc: Scenario, phis: tuple[float, float], kind: str | None, rng: n
             vals[f"a_{A}"] = sig(w1 * w1 * l1, 5)
         _forces(ctx, k, vals, kind == "g_rounded", couple)
         body[phi] = (meas, vals)
-    if kind == "wrong_segment":
+    if kind == "wrong_segment" and misread is None:
         told = _wrong_segment(ctx, phis[where], body[phis[where]], rng)
     elif kind == "arithmetic":
         told = _arithmetic(phis[where], body[phis[where]], rng)
@@ -212,6 +222,31 @@ def _wrong_segment(ctx: Context, phi: float, body: tuple[dict, dict], rng: np.ra
     meas[label] = r
     vals[label] = sig(r / mu)
     return f"wrong_segment: {label} measured {a}–{b} at {phi:g}°"
+
+
+def _misread(ctx: Context, phi: float, rng: np.random.Generator) -> tuple[Slip, str] | None:
+    """A velocity segment ω of a link is read from, read between another pair of points."""
+    k = next(pos.index for pos in ctx.cf.positions if pos.phi_deg == phi)
+    plan = ctx.plan(k, "velocity")
+    assert plan is not None
+    names = [p.name for p in plan.points]
+    options = []
+    for lid in sorted(ctx.scene.links):
+        if lid == ctx.scene.driver.link:
+            continue
+        ex = exact_value(ctx, k, f"omega_{lid}")
+        if ex is None or ex.segment is None or ex.plan != "velocity":
+            continue
+        sg = next((s for s in plan.segments if {s.start, s.end} == set(ex.segment)), None)
+        if sg is None or sg.length_mm < 5:
+            continue
+        for i, a in enumerate(names):
+            for b in names[i + 1:]:
+                d = abs(complex(*plan.xy(b)) - complex(*plan.xy(a)))
+                if {a, b} != {sg.start, sg.end} and d > 5 and abs(d - sg.length_mm) > 8:
+                    options.append((Slip("wrong_segment", sg.label, "read", "velocity", read_mm=(sg.length_mm, d)),
+                                    f"{a}–{b}"))
+    return options[int(rng.integers(len(options)))] if options else None
 
 
 def _arithmetic(phi: float, body: tuple[dict, dict], rng: np.random.Generator) -> str:
