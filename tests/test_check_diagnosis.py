@@ -371,3 +371,17 @@ def test_two_mistakes_are_two_causes(scenarios):
     assert kinds[0] == "coriolis_reversed", (told, kinds)
     assert {"pi_rounded", "arithmetic"} <= set(kinds), kinds
     assert len(kinds) == 3 and rep.unexplained == []
+
+
+def test_a_segment_read_wrong_and_used_on_is_one_cause(scenarios):
+    """v_ED of the shaper read between the wrong points, ω4 taken from it and a_ED^n = ω4²·l
+    laid off: the acceleration plan's figures that follow are that one mistake's."""
+    sc = scenarios["shaper"]
+    for seed in range(60):
+        data, told = submission(sc, (30.0, 120.0), "wrong_segment", np.random.default_rng(seed))
+        if "used on" in told and "v_ED" in told:
+            break
+    rep = check(check_from_dict(data, "s.toml"))
+    assert [c.kind for c in rep.causes] == ["wrong_segment"], told
+    assert {"v_ED", "omega_4", "a_ED^n"} <= set(rep.causes[0].explains)
+    assert rep.unexplained == []
