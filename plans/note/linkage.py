@@ -93,7 +93,7 @@ def structure(item: Any, lang: str, sec: Section) -> None:
                    say(lang, "Присоединена к", "Attached to"), say(lang, "Класс, порядок", "Class, order")),
                   tuple(rows)))
     cls = "II" if st["groups"] else "I"
-    sec.para(say(lang, ff"Формула строения: I({il[0]}, {il[1]}) → " + " → ".join(f"II({g['name']})" for g in st["groups"])
+    sec.para(say(lang, f"Формула строения: I({il[0]}, {il[1]}) → " + " → ".join(f"II({g['name']})" for g in st["groups"])
                  + f". Механизм {cls} класса (таблица {{tab:{key}}}).",
                  f"Structure: I({il[0]}, {il[1]}) → " + " → ".join(f"II({g['name']})" for g in st["groups"])
                  + f"; a class {cls} mechanism (table {{tab:{key}}})."))
