@@ -162,6 +162,8 @@ def kinematics(item: Any, lang: str, sec: Section) -> list[Section]:
         sub = Section(say(lang, f"Планы скоростей и ускорений, φ = {phi}°",
                           f"Velocity and acceleration plans, φ = {phi}°"), 2, key=f"kinematics-{phi}")
         if item.solved.scene.wants("positions"):
+            sub.para(say(lang, f"Кинематическая схема механизма в этом положении — на рисунке {{fig:scheme-{item.index}-{phi}}}.",
+                         f"The kinematic scheme in this position is in figure {{fig:scheme-{item.index}-{phi}}}."))
             sub.add(Figure(f"scheme-{item.index}-{phi}", item.index, f"scheme-{phi}",
                            say(lang, f"Кинематическая схема, φ = {phi}°", f"Kinematic scheme, φ = {phi}°")))
         for kind in ("velocity", "acceleration"):

@@ -1,0 +1,300 @@
+"""The explanatory note read back from its DOCX (python-docx and the XML): sections as
+the files ask, numbers equal to the commands' JSON in the note's rounding, Office Math
+equations, numbered and referenced figures and tables, one language, the same bytes."""
+
+from __future__ import annotations
+
+import io
+import json
+import math
+import re
+import zipfile
+from pathlib import Path
+
+import pytest
+
+docx = pytest.importorskip("docx")
+
+from plans.cli import main as plans_main  # noqa: E402
+
+SAMPLES = Path(__file__).resolve().parent.parent / "samples"
+V_ENGINE = str(SAMPLES / "v_engine.toml")  # seed 000: φ = 45° and 0°, forces and lever
+PROJECT = str(SAMPLES / "v_engine_project.toml")  # 12 positions, forces, diagrams, dynamics
+SLIDER = str(SAMPLES / "slider_crank.toml")  # seed 001's slider-crank
+GEARS = str(SAMPLES / "gears" / "seed_train.toml")  # seed 001's gear train
+CAM = str(SAMPLES / "cams" / "seed001_valve_cam.toml")  # seed 001's valve cam
+DPI = 30.0  # the figures' resolution does not matter here: small and quick
+
+W = "{http://schemas.openxmlformats.org/wordprocessingml/2006/main}"
+M = "{http://schemas.openxmlformats.org/officeDocument/2006/math}"
+
+
+def _note(files: list[str], lang: str) -> bytes:
+    from drawings.note.cli import note_bytes
+
+    return note_bytes(files, lang, DPI)
+
+
+def _json(tmp: Path, *argv: str) -> dict:
+    out = tmp / f"{len(list(tmp.iterdir()))}.json"
+    assert plans_main([*argv, "--json", str(out)] + (["--quiet"] if argv[0] == "solve" else [])) == 0
+    return json.loads(out.read_text(encoding="utf-8"))
+
+
+@pytest.fixture(scope="module")
+def notes() -> dict[str, bytes]:
+    return {"engine_ru": _note([V_ENGINE], "ru"), "engine_en": _note([V_ENGINE], "en"),
+            "project_ru": _note([PROJECT], "ru"),
+            "seed001_ru": _note([SLIDER, GEARS, CAM], "ru"), "seed001_en": _note([SLIDER, GEARS, CAM], "en")}
+
+
+# --------------------------------------------------------------------------- reading back
+
+
+class Read:
+    """A note's body in order: (section heading, kind, text) with kind "p" (a paragraph's
+    own text), "math" (one m:oMath's text, its spaces dropped), "table" (rows of cells)."""
+
+    def __init__(self, data: bytes) -> None:
+        self.doc = docx.Document(io.BytesIO(data))
+        self.items: list[tuple[str, str, object]] = []
+        self.headings: list[tuple[int, str]] = []
+        heading = ""
+        for el in self.doc.element.body:
+            if el.tag == W + "p":
+                style = el.find(f"{W}pPr/{W}pStyle")
+                sid = style.get(W + "val") if style is not None else ""
+                text = "".join(t.text or "" for t in el.iter(W + "t"))
+                if sid.startswith("Heading"):
+                    heading = text
+                    self.headings.append((int(sid[-1]), text))
+                    continue
+                self.items.append((heading, "p", text))
+                for m in el.iter(M + "oMath"):
+                    self.items.append((heading, "math", "".join(t.text or "" for t in m.iter(M + "t")).replace(" ", "")))
+            elif el.tag == W + "tbl":
+                rows = [["".join(t.text or "" for t in tc.iter(W + "t")) for tc in tr.iter(W + "tc")]
+                        for tr in el.iter(W + "tr")]
+                self.items.append((heading, "table", rows))
+
+    def top(self) -> list[str]:
+        """The numbered level-1 headings without their numbers."""
+        return [re.sub(r"^\d+ ", "", t) for lvl, t in self.headings if lvl == 1]
+
+    def text(self) -> str:
+        return "\n".join(str(x) for _, k, x in self.items if k == "p") + "\n" + "\n".join(
+            c for _, k, rows in self.items if k == "table" for r in rows for c in r)  # type: ignore[union-attr]
+
+    def math(self, under: str = "") -> list[str]:
+        return [str(x) for h, k, x in self.items if k == "math" and under in h]
+
+    def table_after(self, caption: str) -> list[list[str]]:
+        seen = False
+        for _, k, x in self.items:
+            if k == "p" and caption in str(x):
+                seen = True
+            elif k == "table" and seen:
+                return x  # type: ignore[return-value]
+        raise AssertionError(f"no table captioned {caption!r}")
+
+
+def value(text: str) -> float:
+    """A number as the note writes it: a decimal comma in Russian, a typographic minus."""
+    return float(text.replace("−", "-").replace(",", ".").replace("\u2009", ""))
+
+
+def rounded_equal(note_text: str, exact: float) -> bool:
+    """The note's number is the engine's to its four significant figures (or more)."""
+    x = value(note_text)
+    if exact == 0:
+        return x == 0
+    e = math.floor(math.log10(abs(exact)))
+    return abs(x - exact) <= 0.5 * 10 ** (e - 3) * (1 + 1e-9) + 1e-12
+
+
+_NUM = r"−?\d+(?:[.,]\d+)?"
+
+
+def after_eq(math_text: str) -> str:
+    """The last number after the last '=' of an equation (its result)."""
+    tail = math_text.rsplit("=", 1)[1]
+    return re.findall(_NUM, tail)[0]
+
+
+# --------------------------------------------------------------------------- sections
+
+
+RU = {"task": "Задание и исходные данные", "structure": "Структурный анализ механизма",
+      "kinematics": "Кинематический анализ механизма", "forces": "Силовой анализ механизма",
+      "dynamics": "Динамика машины и маховик", "gears": "Зубчатые передачи", "cams": "Кулачковый механизм",
+      "balancing": "Уравновешивание двигателя", "conclusions": "Заключение"}
+
+
+def test_sections_as_the_files_ask(notes):
+    assert Read(notes["engine_ru"]).top() == [RU[k] for k in ("task", "structure", "kinematics", "forces",
+                                                                "conclusions")]
+    assert Read(notes["project_ru"]).top() == [RU[k] for k in ("task", "structure", "kinematics", "forces",
+                                                                 "dynamics", "conclusions")]
+    assert Read(notes["seed001_ru"]).top() == [RU[k] for k in ("task", "structure", "kinematics", "forces",
+                                                                 "gears", "cams", "conclusions")]
+    en = Read(notes["engine_en"]).top()
+    assert en[0] == "The task and its data" and "Machine dynamics and the flywheel" not in en
+
+
+def test_cam_alone_has_no_linkage_sections():
+    top = Read(_note([CAM], "ru")).top()
+    assert top == [RU["task"], RU["cams"], RU["conclusions"]]
+
+
+# --------------------------------------------------------------------------- numbers
+
+
+def test_velocity_at_45_equals_plans_solve(notes, tmp_path):
+    data = _json(tmp_path, "solve", V_ENGINE)
+    k = next(i for i, p in enumerate(data["positions"]) if p["phi_deg"] == 45.0)
+    want = {r["quantity"]: r["exact"] for r in data["positions"][k]["readings"]}
+    rows = Read(notes["engine_ru"]).table_after("Скорости точек и угловые скорости звеньев, φ = 45°")
+    got = {r[0]: r[3] for r in rows[1:]}
+    assert rounded_equal(got["v_B"], want["v_B"]), (got["v_B"], want["v_B"])
+    assert rounded_equal(got["v_BA"], want["v_BA"]) and rounded_equal(got["ω_2"], want["omega_2"])
+
+
+def test_balancing_force_three_ways_equals_plans_solve(notes, tmp_path):
+    data = _json(tmp_path, "solve", V_ENGINE)
+    k = next(i for i, p in enumerate(data["positions"]) if p["phi_deg"] == 45.0)
+    b = data["positions"][k]["balancing"]
+    rd = Read(notes["engine_ru"])
+    items = [(h, kd, x) for h, kd, x in rd.items if "φ = 45°" in h]
+    found = {}
+    for i, (_, kd, x) in enumerate(items):
+        for key, words in (("by_kinetostatics", "по планам сил: "), ("by_lever", "по рычагу Жуковского: "),
+                           ("by_power", "по балансу мощностей: ")):
+            if kd == "p" and str(x).startswith(words):
+                found[key] = str(items[i + 1][2])  # the paragraph's formula: F_ур = N Н
+    assert set(found) == {"by_kinetostatics", "by_lever", "by_power"}
+    for key, text in found.items():
+        assert text.startswith("Fур=") and rounded_equal(after_eq(text), b[key]), (key, text, b[key])
+    diff = [m for m in rd.math("φ = 45°") if m.startswith("Δ=")]
+    assert diff and abs(value(after_eq(diff[0])) - b["difference_percent"]) <= 0.005 * abs(b["difference_percent"]) + 1e-3
+
+
+def test_flywheel_equals_plans_solve(notes, tmp_path):
+    fw = _json(tmp_path, "solve", PROJECT)["dynamics"]["flywheel"]
+    eqs = [m for m in Read(notes["project_ru"]).math("Маховик") if m.startswith("IM=")]
+    assert len(eqs) == 3
+    graphical, exact, merkalov = (after_eq(m) for m in eqs)
+    assert rounded_equal(graphical, fw["inertia_graphical"])
+    assert rounded_equal(exact, fw["inertia_exact"])
+    assert rounded_equal(merkalov, fw["inertia_merkalov"])
+
+
+def test_working_pressure_angle_and_base_radius_equal_gears_and_cam(notes, tmp_path):
+    g = _json(tmp_path, "gears", GEARS)
+    c = _json(tmp_path, "cam", CAM)
+    rd = Read(notes["seed001_ru"])
+    alphas = [m for m in rd.math("Передача") if m.startswith("αw=")]
+    assert len(alphas) == len(g["meshes"])
+    for m, me in zip(alphas, g["meshes"], strict=True):
+        assert rounded_equal(after_eq(m), me["working_pressure_angle_deg"]), (m, me["working_pressure_angle_deg"])
+    r0 = [m for m in rd.math(RU["cams"]) if m.startswith("r0min=")]
+    assert r0 and rounded_equal(after_eq(r0[0]), c["min_base_radius"])
+
+
+def test_chebyshev_formula_with_the_numbers(notes, tmp_path):
+    st = _json(tmp_path, "solve", V_ENGINE)["structure"]
+    eq = next(m for m in Read(notes["engine_ru"]).math(RU["structure"]) if m.startswith("W="))
+    assert eq.endswith(f"3·{st['n']}−2·{st['p5']}−{st['p4']}={st['W']}")
+
+
+# --------------------------------------------------------------------------- form
+
+
+def test_equations_are_office_math(notes):
+    body = docx.Document(io.BytesIO(notes["engine_ru"])).element.body
+    maths = list(body.iter(M + "oMath"))
+    assert len(maths) > 20
+    assert len(list(body.iter(M + "f"))) > 3 and len(list(body.iter(M + "sSub"))) > 20
+    for m in maths:  # equations are never pictures
+        assert not list(m.iter(W + "drawing"))
+
+
+@pytest.mark.parametrize("name, fig, tab", [("engine_ru", "Рисунок", "Таблица"), ("seed001_en", "Figure", "Table")])
+def test_figures_and_tables_numbered_and_referenced(notes, name, fig, tab):
+    rd = Read(notes[name])
+    paras = [str(x) for _, k, x in rd.items if k == "p"]
+    figs = [int(m.group(1)) for p in paras if (m := re.match(rf"{fig} (\d+) – ", p))]
+    tabs = [int(m.group(1)) for p in paras if (m := re.match(rf"{tab} (\d+) – ", p))]
+    assert figs == list(range(1, len(figs) + 1)) and len(figs) >= 5
+    assert tabs == list(range(1, len(tabs) + 1)) and len(tabs) >= 3
+    body = rd.doc.element.body
+    assert len(list(body.iter(W + "drawing"))) == len(figs)
+    assert len(list(body.iter(W + "tbl"))) == len(tabs)
+    text = "\n".join(p for p in paras if not re.match(rf"({fig}|{tab}) \d+ – ", p))
+    refs_f = {int(n) for n in re.findall(r"(?:рисун\w*|figures?)\s+(\d+)", text, re.I)}
+    refs_f |= {int(n) for m in re.finditer(r"(?:рисунках|рисунки|figures)\s+([\d, и and]+)", text) for n in re.findall(r"\d+", m.group(1))}
+    refs_t = {int(n) for n in re.findall(r"(?:таблиц\w*|tables?)\s+(\d+)", text, re.I)}
+    assert set(figs) <= refs_f, sorted(set(figs) - refs_f)
+    assert set(tabs) <= refs_t, sorted(set(tabs) - refs_t)
+
+
+def test_one_language_per_note(notes):
+    for name in ("engine_ru", "project_ru", "seed001_ru"):
+        text = Read(notes[name]).text()
+        # a Latin word: three letters or more standing alone (v_BA, p_v, ab, S2 are symbols)
+        words = {m.group(0) for m in re.finditer(r"(?<![A-Za-z_^\d])[A-Za-z]{3,}(?![A-Za-z_\d])", text)}
+        assert not words, (name, sorted(words))
+    for name in ("engine_en", "seed001_en"):
+        text = Read(notes[name]).text()
+        assert not re.search(r"[А-Яа-яЁё]", text), name
+    assert "," in after_eq(next(m for m in Read(notes["engine_ru"]).math() if "μv" in m))  # decimal comma
+
+
+def test_a4_gost_margins_title_and_fields(notes):
+    d = docx.Document(io.BytesIO(notes["project_ru"]))
+    s = d.sections[0]
+    assert (round(s.page_width.mm), round(s.page_height.mm)) == (210, 297)
+    assert (round(s.left_margin.mm), round(s.right_margin.mm), round(s.top_margin.mm), round(s.bottom_margin.mm)) \
+        == (30, 15, 20, 20)
+    xml = d.element.xml
+    assert " TOC " in xml and "ПОЯСНИТЕЛЬНАЯ ЗАПИСКА" in xml and "ТММ.КП.07.00.00" in xml
+    assert " PAGE " in s.footer._element.xml and s.different_first_page_header_footer
+
+
+def test_same_bytes_twice(notes):
+    again = _note([V_ENGINE], "ru")
+    assert again == notes["engine_ru"]
+    z = zipfile.ZipFile(io.BytesIO(again))
+    assert {i.date_time for i in z.infolist()} == {(1980, 1, 1, 0, 0, 0)}
+    assert b"2000-01-01T00:00:00Z" in z.read("docProps/core.xml")
+
+
+# --------------------------------------------------------------------------- the command
+
+
+def test_command_writes_the_note_and_refuses_its_input(tmp_path, capsys):
+    from drawings.cli import main
+
+    out = tmp_path / "note.docx"
+    assert main(["note", CAM, "-o", str(out), "--language", "en", "--dpi", "30"]) == 0
+    assert zipfile.is_zipfile(out)
+    cam_copy = tmp_path / "cam.toml"
+    cam_copy.write_bytes(Path(CAM).read_bytes())
+    before = cam_copy.read_bytes()
+    assert main(["note", str(cam_copy), "-o", str(cam_copy)]) == 2
+    assert cam_copy.read_bytes() == before
+    bad = tmp_path / "bad.toml"
+    bad.write_text('format = 1\nkind = "gearbox"\n', encoding="utf-8")
+    assert main(["note", str(bad), "-o", str(tmp_path / "x.docx")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 2 and all(e.startswith("plans: error:") for e in err) and "kind" in err[-1]
+    assert not (tmp_path / "x.docx").exists()
+
+
+def test_content_needs_no_renderer():
+    import subprocess
+    import sys
+
+    code = (f"import sys; from plans.note.build import note; n = note([{CAM!r}], 'en'); "
+            "assert not [m for m in sys.modules if m == 'docx' or m.startswith('drawings') or m == 'svgwrite'], "
+            "sorted(m for m in sys.modules if m.startswith(('docx', 'drawings')))")
+    subprocess.run([sys.executable, "-c", code], check=True)
