@@ -90,3 +90,16 @@ def to_pdf(docx: bytes, timeout: float = 300.0) -> bytes:
             raise OutputError("LibreOffice wrote no PDF")
         with open(out, "rb") as fh:
             return fh.read()
+
+
+def note_seconds(path: str | Path, repeat: int = 3) -> float:
+    """Best time of a scene's whole note (``plans bench``): read, solve, content, figures, DOCX."""
+    import time
+
+    note_bytes([str(path)], "ru")  # the libraries loaded once, as a command pays for them once
+    best = float("inf")
+    for _ in range(max(1, repeat)):
+        t = time.perf_counter()
+        note_bytes([str(path)], "ru")
+        best = min(best, time.perf_counter() - t)
+    return best

@@ -120,6 +120,7 @@ def write_docx(note: Note, figure: Callable[[Figure], tuple[bytes, float]]) -> b
     doc.paragraphs[-1].add_run().add_break(WD_BREAK.PAGE)
 
     # ---- the sections
+    pictures = [0]  # the drawings' ids (python-docx's own search of the document costs a scan per picture)
     first = True
     for number, s in _walk(note.sections):
         level = number.count(".") + 1
@@ -146,7 +147,7 @@ def write_docx(note: Note, figure: Callable[[Figure], tuple[bytes, float]]) -> b
                 p.alignment = C
                 p.paragraph_format.first_line_indent = Mm(0)
                 p.paragraph_format.keep_with_next = True
-                p.add_run().add_picture(io.BytesIO(png), width=Mm(min(width, TEXT_WIDTH_MM)))
+                p.add_run()._r.add_drawing(_inline(doc, png, Mm(min(width, TEXT_WIDTH_MM)), pictures))
                 plain_para(f"{fig_word} {nums['fig:' + b.key]} – {b.caption}", C, indent=False)
             elif isinstance(b, Table):
                 cap = plain_para(f"{tab_word} {nums['tab:' + b.key]} – {b.caption}", WD_ALIGN_PARAGRAPH.LEFT,
@@ -154,9 +155,48 @@ def write_docx(note: Note, figure: Callable[[Figure], tuple[bytes, float]]) -> b
                 cap.paragraph_format.keep_with_next = True
                 _table(doc, b, Pt, Mm, qn, WD_TABLE_ALIGNMENT, C)
     _fix_core(doc, note)
-    buf = io.BytesIO()
-    doc.save(buf)
-    return deterministic_zip(buf.getvalue())
+    return package_bytes(doc)
+
+
+def _inline(doc: Any, png: bytes, width: Any, counter: list[int]) -> Any:
+    """A picture's ``wp:inline`` (as ``Run.add_picture`` makes it, with its own ids)."""
+    from docx.oxml.shape import CT_Inline
+
+    rId, image = doc.part.get_or_add_image(io.BytesIO(png))
+    cx, cy = image.scaled_dimensions(width, None)
+    counter[0] += 1
+    return CT_Inline.new_pic_inline(1000 + counter[0], rId, image.filename, cx, cy)
+
+
+def package_bytes(doc: Any) -> bytes:
+    """The document's package written as python-docx writes it (content types, the
+    package's relationships, every part and its relationships, in that order), every
+    entry dated 1980-01-01, the pictures stored as they are (PNG is compressed already)."""
+    from docx.opc.packuri import CONTENT_TYPES_URI, PACKAGE_URI
+    from docx.opc.pkgwriter import _ContentTypesItem
+
+    pkg = doc.part.package
+    parts = list(pkg.parts)
+    for part in parts:
+        part.before_marshal()
+    entries = [(CONTENT_TYPES_URI, _ContentTypesItem.from_parts(parts).blob), (PACKAGE_URI.rels_uri, pkg.rels.xml)]
+    for part in parts:
+        entries.append((part.partname, part.blob))
+        if len(part.rels):
+            entries.append((part.partname.rels_uri, part.rels.xml))
+    out = io.BytesIO()
+    with zipfile.ZipFile(out, "w") as z:
+        for uri, blob in entries:
+            _entry(z, uri.membername, blob)
+    return out.getvalue()
+
+
+def _entry(z: zipfile.ZipFile, name: str, blob: bytes) -> None:
+    zi = zipfile.ZipInfo(name, date_time=(1980, 1, 1, 0, 0, 0))
+    zi.compress_type = zipfile.ZIP_STORED if name.endswith((".png", ".jpeg", ".jpg")) else zipfile.ZIP_DEFLATED
+    zi.external_attr = 0o644 << 16
+    zi.create_system = 0
+    z.writestr(zi, blob)
 
 
 def _page(doc: Any, Mm: Any) -> None:
@@ -293,18 +333,3 @@ def _fix_core(doc: Any, note: Note) -> None:
     cp.keywords = ""
     cp.category = ""
     cp.language = "ru-RU" if note.lang == "ru" else "en-GB"
-
-
-def deterministic_zip(data: bytes) -> bytes:
-    """The same package with every entry dated 1980-01-01, in the order written."""
-    src = zipfile.ZipFile(io.BytesIO(data))
-    out = io.BytesIO()
-    with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as dst:
-        for info in src.infolist():
-            zi = zipfile.ZipInfo(info.filename, date_time=(1980, 1, 1, 0, 0, 0))
-            # pictures are compressed already: stored as they are (deflating them again is slow)
-            zi.compress_type = zipfile.ZIP_STORED if info.filename.endswith(".png") else zipfile.ZIP_DEFLATED
-            zi.external_attr = 0o644 << 16
-            zi.create_system = 0
-            dst.writestr(zi, src.read(info.filename))
-    return out.getvalue()
