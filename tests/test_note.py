@@ -195,6 +195,15 @@ def test_working_pressure_angle_and_base_radius_equal_gears_and_cam(notes, tmp_p
     assert r0 and rounded_equal(after_eq(r0[0]), c["min_base_radius"])
 
 
+def test_gear_speeds_table_equals_plans_gears(notes, tmp_path):
+    g = _json(tmp_path, "gears", GEARS)
+    rows = Read(notes["seed001_ru"]).table_after("Частоты вращения, об/мин")
+    assert [r[0] for r in rows[1:]] == list(g["speeds_rpm"])
+    for r in rows[1:]:
+        assert len(r) == 3
+        assert rounded_equal(r[1], g["speeds_rpm"][r[0]]) and rounded_equal(r[2], g["speeds_rpm_plan"][r[0]])
+
+
 def test_chebyshev_formula_with_the_numbers(notes, tmp_path):
     st = _json(tmp_path, "solve", V_ENGINE)["structure"]
     eq = next(m for m in Read(notes["engine_ru"]).math(RU["structure"]) if m.startswith("W="))

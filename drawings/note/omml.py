@@ -11,7 +11,8 @@ from plans.note.model import Formula, Frac, Num, Op, Root, Row, Sym, Text, Vec
 M = "http://schemas.openxmlformats.org/officeDocument/2006/math"
 W = "http://schemas.openxmlformats.org/wordprocessingml/2006/main"
 
-_FONT = '<w:rPr><w:rFonts w:ascii="Cambria Math" w:hAnsi="Cambria Math" w:cs="Cambria Math"/></w:rPr>'
+_FONT = ('<w:rPr><w:rFonts w:ascii="Cambria Math" w:hAnsi="Cambria Math" w:cs="Cambria Math"/>'
+         '<w:sz w:val="28"/><w:szCs w:val="28"/></w:rPr>')  # 14 pt, as the text
 _UPRIGHT = re.compile(r"[А-Яа-яЁё]|[a-z]{2,}|^(inv|tg|cos|sin)\b|\s")
 
 

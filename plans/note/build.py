@@ -99,9 +99,9 @@ def title_page(items: list[Item], lang: str) -> TitlePage:
     sheet: dict[str, Any] = {}
     title = ""
     for it in items:
-        s = it.raw.get("sheet")
-        if isinstance(s, dict) and not sheet:
-            sheet = s
+        table = it.raw.get("sheet")
+        if isinstance(table, dict) and not sheet:
+            sheet = table
         if not title:
             t = it.raw.get("title")
             if isinstance(t, dict):

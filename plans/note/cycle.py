@@ -36,12 +36,13 @@ def diagrams(item: Any, lang: str) -> Section | None:
                    Frac(row(num(prev_scale, lang), "·", num(H, lang)), row(num(d["mu_phi"], lang), "·", num(d["omega"], lang))),
                    "=", num(g["scale"], lang), unit(u, lang), f" ({pt})")
         key = f"diagram-{i}-{g['name']}"
+        sec.para(say(lang, f"{_diagram_caption(q, pt, lang)} — на рисунке {{fig:{key}}}.",
+                     f"{_diagram_caption(q, pt, lang)}: figure {{fig:{key}}}."))
         sec.add(Figure(key, i, f"diagram-{g['name']}", _diagram_caption(q, pt, lang)))
-    names = ", ".join(f"{{fig:diagram-{i}-{g['name']}}}" for g in d["diagrams"])
-    sec.para(say(lang, f"Диаграммы — на рисунках {names}. Наибольшая погрешность графического метода, % размаха "
-                       "диаграммы: " + "; ".join(f"{g['name']} — {fmt(g['error_max_pct'], lang, 2)}" for g in d["diagrams"]) + ".",
-                 f"The diagrams are in figures {names}. The largest error of the graphical method, % of the "
-                 "diagram's range: " + "; ".join(f"{g['name']}: {fmt(g['error_max_pct'], lang, 2)}" for g in d["diagrams"]) + "."))
+    sec.para(say(lang, "Наибольшая погрешность графического метода, % размаха диаграммы: "
+                 + "; ".join(f"{g['name']} — {fmt(g['error_max_pct'], lang, 2)}" for g in d["diagrams"]) + ".",
+                 "The largest error of the graphical method, % of the diagram's range: "
+                 + "; ".join(f"{g['name']}: {fmt(g['error_max_pct'], lang, 2)}" for g in d["diagrams"]) + "."))
     return sec
 
 
@@ -87,9 +88,8 @@ def dynamics(item: Any, lang: str) -> list[Section]:
                         ("dyn-M", "Диаграмма приведённого момента сил", "The reduced moment of forces"),
                         ("dyn-A", "Диаграммы работ", "The works"),
                         ("dyn-W", "Диаграмма энергомасс (Виттенбауэра)", "The energy–mass (Wittenbauer) diagram")):
+        sec.para(say(lang, f"{ru} — на рисунке {{fig:{pid}-{i}}}.", f"{en}: figure {{fig:{pid}-{i}}}."))
         sec.add(Figure(f"{pid}-{i}", i, pid, say(lang, ru, en)))
-    sec.para(say(lang, f"Диаграммы — на рисунках {{fig:dyn-I-{i}}}, {{fig:dyn-M-{i}}}, {{fig:dyn-A-{i}}}, {{fig:dyn-W-{i}}}.",
-                 f"The diagrams are in figures {{fig:dyn-I-{i}}}, {{fig:dyn-M-{i}}}, {{fig:dyn-A-{i}}}, {{fig:dyn-W-{i}}}."))
     out.append(sec)
     fw = dy["flywheel"]
     sec = Section(say(lang, "Маховик", "The flywheel"), 2, key="flywheel")
@@ -109,9 +109,9 @@ def dynamics(item: Any, lang: str) -> list[Section]:
                        f"δ = {fmt(fw['delta_achieved'], lang)}.",
                  f"With the flywheel from the energy–mass diagram the achieved coefficient of fluctuation is "
                  f"δ = {fmt(fw['delta_achieved'], lang)}."))
-    sec.add(Figure(f"dyn-omega-{i}", i, "dyn-w", say(lang, "Угловая скорость начального звена за цикл",
-                                                               "The initial link's angular velocity over the cycle")))
     sec.para(say(lang, f"Угловая скорость за цикл — на рисунке {{fig:dyn-omega-{i}}}.",
                  f"The angular velocity over the cycle is in figure {{fig:dyn-omega-{i}}}."))
+    sec.add(Figure(f"dyn-omega-{i}", i, "dyn-w", say(lang, "Угловая скорость начального звена за цикл",
+                                                      "The initial link's angular velocity over the cycle")))
     out.append(sec)
     return out

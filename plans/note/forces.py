@@ -124,7 +124,8 @@ def _three_ways(item: Any, pos: dict, phi: str, lang: str, sec: Section) -> None
     force = b["kind"] == "force"
     u = unit("N" if force else "N·m", lang)
     sym = quantity("F_bal" if force else "M_bal", lang)
-    sec.para(say(lang, "Уравновешивающая сила, найденная тремя способами:",
+    sec.para(say(lang, "Уравновешивающая сила, найденная тремя способами:" if force else
+                 "Уравновешивающий момент, найденный тремя способами:",
                  "The balancing force found three ways:" if force else "The balancing moment found three ways:"))
     for key, word in (("by_kinetostatics", "by_kin"), ("by_lever", "by_lever"), ("by_power", "by_power")):
         if b.get(key) is None:
@@ -166,9 +167,11 @@ def _balancing_over(item: Any, lang: str) -> Table | None:
         rows.append((deg(p["phi_deg"]), fmt(b["by_kinetostatics"], lang),
                      fmt(b["by_lever"], lang) if b["by_lever"] is not None else "—",
                      fmt(b["by_power"], lang) if b["by_power"] is not None else "—"))
-    sym = "F_ур" if lang == "ru" else "F_bal"
+    force = positions[0]["balancing"]["kind"] == "force"
+    sym = ("F_ур" if lang == "ru" else "F_bal") if force else ("M_ур" if lang == "ru" else "M_bal")
+    u = unit("N" if force else "N·m", lang)
     return Table(f"balancing-all-{item.index}", say(lang, "Уравновешивающая сила по положениям механизма",
                                                      "The balancing force over the positions"),
-                 (w("phi", lang), f"{sym} {w('by_kin', lang)}, {unit('N', lang)}",
-                  f"{sym} {w('by_lever', lang)}, {unit('N', lang)}", f"{sym} {w('by_power', lang)}, {unit('N', lang)}"),
+                 (w("phi", lang), f"{sym} {w('by_kin', lang)}, {u}", f"{sym} {w('by_lever', lang)}, {u}",
+                  f"{sym} {w('by_power', lang)}, {u}"),
                  tuple(rows))

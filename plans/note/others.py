@@ -67,21 +67,22 @@ def gears(item: Any, lang: str) -> Section:
                      "Не выполнены проверки: " + ", ".join(_check(f, lang) for f in fails) + ".",
                      "Every check passes." if not fails else "Checks failed: " + ", ".join(_check(f, lang) for f in fails) + "."))
         if n == 0:
-            sub.add(Figure(f"meshing-{i}", i, "kind:meshing", say(lang, f"Картина зацепления {a}–{b}", f"Meshing of {a}–{b}")))
             sub.para(say(lang, f"Картина зацепления — на рисунке {{fig:meshing-{i}}}.", f"The meshing is in figure {{fig:meshing-{i}}}."))
+            sub.add(Figure(f"meshing-{i}", i, "kind:meshing", say(lang, f"Картина зацепления {a}–{b}", f"Meshing of {a}–{b}")))
         sec.children.append(sub)
     if "speeds_rpm" in data:
         sub = Section(say(lang, "Частоты вращения", "Speeds"), 2, key="gear-speeds")
-        rows = [(g, fmt(v, lang), fmt(data["speeds_rpm_plan"].get(g, float("nan")), lang)) for g, v in data["speeds_rpm"].items()]
+        speeds = [(g, fmt(v, lang), fmt(data["speeds_rpm_plan"].get(g, float("nan")), lang))
+                  for g, v in data["speeds_rpm"].items()]
         key = f"speeds-{i}"
         sub.para(say(lang, f"Частоты вращения по формуле Виллиса и по плану скоростей — в таблице {{tab:{key}}}.",
                      f"Speeds by Willis's formula and by the velocity plan are in table {{tab:{key}}}."))
         sub.add(Table(key, say(lang, "Частоты вращения, об/мин", "Speeds, rpm"),
                       (say(lang, "Вал", "Shaft"), say(lang, "по Виллису", "by Willis"), say(lang, "по плану скоростей", "by the plan")),
-                      tuple(rows)))
-        sub.add(Figure(f"gear-plan-{i}", i, "kind:velocity-plan", say(lang, "План линейных скоростей", "Plan of linear velocities")))
+                      tuple(speeds)))
         sub.para(say(lang, f"План линейных скоростей — на рисунке {{fig:gear-plan-{i}}}.",
                      f"The plan of linear velocities is in figure {{fig:gear-plan-{i}}}."))
+        sub.add(Figure(f"gear-plan-{i}", i, "kind:velocity-plan", say(lang, "План линейных скоростей", "Plan of linear velocities")))
         sec.children.append(sub)
     return sec
 
@@ -110,7 +111,7 @@ def cam(item: Any, lang: str) -> Section:
     rows = []
     for ph in cm.phases:
         rows.append((say(lang, {"rise": "подъём", "dwell": "выстой", "return": "опускание"}.get(ph.kind, ph.kind),
-                         ph.kind), fmt(math.degrees(ph.angle), lang), getattr(ph, "law", "") or "—"))
+                         ph.kind), fmt(math.degrees(ph.angle), lang), ph.law_name if ph.kind != "dwell" else "—"))
     key = f"phases-{item.index}"
     sec.para(say(lang, f"Фазы движения толкателя — в таблице {{tab:{key}}}.", f"The follower's phases are in table {{tab:{key}}}."))
     sec.add(Table(key, say(lang, "Фазы движения толкателя", "Phases of the follower"),
@@ -130,19 +131,23 @@ def cam(item: Any, lang: str) -> Section:
                  f"{fmt(d['max_pressure_angle_return_deg'], lang)}°; the smallest radius of curvature "
                  f"{fmt(d['min_curvature_radius'], lang)} {u}" + ("; no undercut." if not d["undercut"] else "; the profile is undercut.")))
     i = item.index
-    sec.add(Figure(f"cam-motion-{i}", i, "kind:cam-motion", say(lang, "Диаграммы движения толкателя", "The follower's motion diagrams")),
-            Figure(f"cam-profile-{i}", i, "kind:cam-profile", say(lang, "Профиль кулачка", "The cam's profile")))
     sec.para(say(lang, f"Диаграммы движения — на рисунке {{fig:cam-motion-{i}}}, профиль кулачка — на рисунке {{fig:cam-profile-{i}}}.",
                  f"The motion diagrams are in figure {{fig:cam-motion-{i}}}, the profile in figure {{fig:cam-profile-{i}}}."))
+    sec.add(Figure(f"cam-motion-{i}", i, "kind:cam-motion", say(lang, "Диаграммы движения толкателя", "The follower's motion diagrams")),
+            Figure(f"cam-profile-{i}", i, "kind:cam-profile", say(lang, "Профиль кулачка", "The cam's profile")))
     return sec
 
 
 def _law(law: Any, lang: str) -> str:
     if not isinstance(law, str) or law in ("", "—"):
         return "—"
-    ru = {"harmonic": "косинусоидальный", "cycloidal": "синусоидальный", "parabolic": "параболический",
-          "linear": "линейный", "poly345": "полином 3-4-5", "trapezoid": "трапецеидальный"}
-    return ru.get(law, "—") if lang == "ru" else law
+    ru = {"harmonic": "косинусоидальный", "cycloidal": "синусоидальный",
+          "constant_acceleration": "равноускоренный (параболический)", "poly345": "полином 3-4-5",
+          "table": "по таблице"}
+    en = {"harmonic": "harmonic (cosine)", "cycloidal": "cycloidal (sine)",
+          "constant_acceleration": "constant acceleration (parabolic)", "poly345": "3-4-5 polynomial",
+          "table": "a table"}
+    return (ru if lang == "ru" else en).get(law, "—")
 
 
 def balancing(item: Any, lang: str) -> Section:
