@@ -302,3 +302,27 @@ def test_content_needs_no_renderer():
             "assert not [m for m in sys.modules if m == 'docx' or m.startswith('drawings') or m == 'svgwrite'], "
             "sorted(m for m in sys.modules if m.startswith(('docx', 'drawings')))")
     subprocess.run([sys.executable, "-c", code], check=True)
+
+
+def test_a_synthesis_file_gets_its_modules_section(tmp_path, monkeypatch):
+    """The design section comes from the synthesis room's own module (a hook), after the
+    structure and before the kinematics; without that module the file is one clear error."""
+    import sys
+    import types
+
+    from plans.errors import InputError
+    from plans.note.build import note
+    from plans.note.model import Section
+
+    syn = tmp_path / "syn.toml"
+    syn.write_text('format = 1\nkind = "synthesis"\n', encoding="utf-8")
+    monkeypatch.setitem(sys.modules, "plans.design.note", None)  # the room absent
+    with pytest.raises(InputError, match="kind"):
+        note([str(syn)], "en")
+    hook = types.ModuleType("plans.design.note")
+    hook.read = lambda path, raw: ("solved", {"k": 1})  # type: ignore[attr-defined]
+    hook.section = lambda item, lang: [Section("Design of the mechanism", key="design").para(  # type: ignore[attr-defined]
+        f"from {item.data['k']}")]
+    monkeypatch.setitem(sys.modules, "plans.design.note", hook)
+    keys = [s.key for s in note([V_ENGINE, str(syn)], "en").sections]
+    assert keys == ["task", "structure", "design", "kinematics", "forces", "conclusions"]

@@ -32,6 +32,16 @@ def forces(item: Any, lang: str) -> list[Section]:
             continue
         phi = deg(pos["phi_deg"])
         sec = Section(say(lang, f"Силовой расчёт, φ = {phi}°", f"Force analysis, φ = {phi}°"), 2, key=f"forces-{phi}")
+        # ---- gravity
+        weights = [(lb[1:], _abs(v)) for lb, v in pos.get("loads", {}).items()
+                   if lb.startswith("G") and lb[1:].isdigit() and int(lb[1:]) in scene.links]
+        if weights:
+            sec.para(say(lang, "Силы тяжести звеньев:", "The links' weights:"))
+        for lid_s, G in weights:
+            m = scene.links[int(lid_s)].mass
+            if m:
+                sec.eq(Sym("G", lid_s), "=", Sym("m", lid_s), "·", Sym("g"), "=", num(m, lang), "·",
+                       num(G / m, lang, 3), "=", num(G, lang), unit("N", lang))
         # ---- inertia
         sec.para(say(lang, "Силы инерции и моменты пар сил инерции звеньев:",
                      "The links' inertia forces and the moments of their inertia couples:"))
@@ -49,7 +59,8 @@ def forces(item: Any, lang: str) -> list[Section]:
                 eps = abs(pos["links"][lid_s]["eps"])
                 sec.eq(Sym("M", f"Φ{lid_s}"), "=", Sym("I", f"S{lid_s}"), "·", Sym("ε", lid_s), "=",
                        num(lk.inertia, lang), "·", num(eps, lang), "=", num(abs(M), lang), unit("N·m", lang))
-        loads = [(lb, _abs(v)) for lb, v in pos.get("loads", {}).items() if not lb.startswith("Phi")]
+        loads = [(lb, _abs(v)) for lb, v in pos.get("loads", {}).items()
+                 if not lb.startswith("Phi") and not (lb.startswith("G") and lb[1:] in dict(weights))]
         if loads:
             sec.para(say(lang, "Внешние силы: ", "The applied forces: ")
                      + "; ".join(f"{_label(lb, lang)} = {fmt(F, lang)} {unit('N', lang)}" for lb, F in loads) + ".")

@@ -178,9 +178,10 @@ class Note:
 
 
 def fmt(x: float, lang: str = "en", digits: int = 4) -> str:
-    """A value in the note's rounding: ``digits`` significant figures, never an exponent
-    (a value of a thousand or more as a whole number), a decimal comma in Russian, a
-    zero up to round-off written 0, a minus as the typographic minus."""
+    """A value in the note's rounding: ``digits`` significant figures (trailing zeros
+    dropped), never an exponent (a value of a thousand or more as a whole number), a
+    decimal comma in Russian, a zero up to round-off written 0, a minus as the
+    typographic minus."""
     x = float(x)
     if not math.isfinite(x):
         return "—"
@@ -189,6 +190,8 @@ def fmt(x: float, lang: str = "en", digits: int = 4) -> str:
     e = math.floor(math.log10(abs(x)))
     places = min(9, max(0, digits - 1 - e))
     s = f"{round(x, places):.{places}f}"
+    if "." in s:  # 6 kg, not 6,000: the figures a value has, not those it might have
+        s = s.rstrip("0").rstrip(".")
     if s.lstrip("-").strip("0.") == "":
         return "0"
     s = s.replace("-", "−")
