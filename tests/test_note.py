@@ -70,7 +70,7 @@ class Read:
                     continue
                 self.items.append((heading, "p", text))
                 for m in el.iter(M + "oMath"):
-                    self.items.append((heading, "math", "".join(t.text or "" for t in m.iter(M + "t")).replace(" ", "")))
+                    self.items.append((heading, "math", _math_text(m).replace(" ", "")))
             elif el.tag == W + "tbl":
                 rows = [["".join(t.text or "" for t in tc.iter(W + "t")) for tc in tr.iter(W + "tc")]
                         for tr in el.iter(W + "tr")]
@@ -95,6 +95,16 @@ class Read:
             elif k == "table" and seen:
                 return x  # type: ignore[return-value]
         raise AssertionError(f"no table captioned {caption!r}")
+
+
+def _math_text(el) -> str:
+    """An equation's text, a fraction written (num)/(den)."""
+    if el.tag == M + "t":
+        return el.text or ""
+    if el.tag == M + "f":
+        num, den = el.find(M + "num"), el.find(M + "den")
+        return f"({_math_text(num)})/({_math_text(den)})"
+    return "".join(_math_text(c) for c in el)
 
 
 def value(text: str) -> float:
@@ -250,7 +260,8 @@ def test_one_language_per_note(notes):
     for name in ("seed001_en",):
         text = Read(notes[name]).text()
         assert not re.search(r"[А-Яа-яЁё]", text), name
-    assert "," in after_eq(next(m for m in Read(notes["engine_ru"]).math() if "μv" in m))  # decimal comma
+    rows = Read(notes["engine_ru"]).table_after("Скорости точек и угловые скорости звеньев, φ = 45°")
+    assert re.fullmatch(r"\d+,\d+", rows[1][3]), rows[1]  # v_A with a decimal comma
 
 
 def test_a4_gost_margins_title_and_fields(notes):
@@ -326,3 +337,23 @@ def test_a_synthesis_file_gets_its_modules_section(tmp_path, monkeypatch):
     monkeypatch.setitem(sys.modules, "plans.design.note", hook)
     keys = [s.key for s in note([V_ENGINE, str(syn)], "en").sections]
     assert keys == ["task", "structure", "design", "kinematics", "forces", "conclusions"]
+
+
+def test_the_notes_arithmetic_holds(notes):
+    """Every product written out (Φ = m·a_S, M_Φ = I_S·ε, G = m·g, ω1 = π·n/30's numbers) and
+    every moment sum in numbers equals its result to the note's rounding."""
+    checked = 0
+    for name in ("engine_ru", "project_ru", "seed001_ru"):
+        for m in Read(notes[name]).math():
+            for a, b, c in re.findall(rf"=({_NUM})·({_NUM})=({_NUM})(?![\d·])", m):
+                x, y, z = value(a), value(b), value(c)
+                assert abs(x * y - z) <= 2e-3 * abs(z) + 1e-9, m
+                checked += 1
+            sums = re.fullmatch(rf".*?M\w*=((?:[−+]?{_NUM}·{_NUM})+)=({_NUM})Н·м", m)
+            if sums:
+                terms = re.findall(rf"([−+]?)({_NUM})·({_NUM})", sums.group(1))
+                total = sum((-1 if s == "−" else 1) * value(f) * value(h) for s, f, h in terms)
+                want = value(sums.group(2))
+                assert abs(total - want) <= 2e-3 * max(abs(want), max(value(f) * value(h) for _, f, h in terms)) + 1e-9, m
+                checked += 1
+    assert checked > 30

@@ -7,8 +7,9 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from .equations import moment
 from .linkage import deg, studied
-from .model import Figure, Section, Sym, Table, fmt, num
+from .model import Equation, Figure, Section, Sym, Table, fmt, num
 from .words import quantity, say, symbols, unit, w
 
 
@@ -71,6 +72,8 @@ def forces(item: Any, lang: str) -> list[Section]:
                 current = fs.plan
                 _heading(item, fs.plan, phi, lang, sec)
             sec.para(symbols(fs.step.say(lang), lang))
+            for f in moment(fs.step, lang):
+                sec.add(Equation(f))
         _reactions(item, k, pos, phi, lang, sec)
         _three_ways(item, pos, phi, lang, sec)
         out.append(sec)
