@@ -257,9 +257,11 @@ def test_one_language_per_note(notes):
         # a Latin word: three letters or more standing alone (v_BA, p_v, ab, S2 are symbols)
         words = {m.group(0) for m in re.finditer(r"(?<![A-Za-z_^\d])[A-Za-z]{3,}(?![A-Za-z_\d])", text)}
         assert not words, (name, sorted(words))
+        assert "Phi" not in text and "_bal" not in text, name  # the course's Φ and F_ур
     for name in ("seed001_en",):
         text = Read(notes[name]).text()
         assert not re.search(r"[А-Яа-яЁё]", text), name
+        assert "Phi" not in text, name
     rows = Read(notes["engine_ru"]).table_after("Скорости точек и угловые скорости звеньев, φ = 45°")
     assert re.fullmatch(r"\d+,\d+", rows[1][3]), rows[1]  # v_A with a decimal comma
 

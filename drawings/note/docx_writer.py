@@ -219,7 +219,20 @@ def _page(doc: Any, Mm: Any) -> None:
         p._p.append(parse_xml(x))
     # Word recomputes the fields (contents, pages) when the document opens
     settings = doc.settings.element
-    settings.append(parse_xml(f'<w:updateFields {W} w:val="true"/>'))
+    upd = parse_xml(f'<w:updateFields {W} w:val="true"/>')
+    later = next((c for c in settings if c.tag.rsplit("}", 1)[-1] in _AFTER_UPDATE_FIELDS), None)
+    if later is not None:  # the schema's order: Word refuses a settings part out of it
+        later.addprevious(upd)
+    else:
+        settings.append(upd)
+
+
+#: The elements of w:settings that come after w:updateFields in the schema's sequence.
+_AFTER_UPDATE_FIELDS = {"hdrShapeDefaults", "footnotePr", "endnotePr", "compat", "docVars", "rsids", "mathPr",
+                        "attachedSchema", "themeFontLang", "clrSchemeMapping", "doNotIncludeSubdocsInStats",
+                        "doNotAutoCompressPictures", "forceUpgrade", "captions", "readModeInkLockDown",
+                        "smartTagType", "schemaLibrary", "shapeDefaults", "doNotEmbedSmartTags", "decimalSymbol",
+                        "listSeparator"}
 
 
 def _styles(doc: Any, Pt: Any, Mm: Any, qn: Any, ru: bool) -> None:
@@ -294,6 +307,7 @@ def _table(doc: Any, t: Table, Pt: Any, Mm: Any, qn: Any, TA: Any, C: Any) -> No
     from docx.oxml import parse_xml
 
     ncol = len(t.header)
+    width = int(TEXT_WIDTH_MM / 25.4 * 1440) // ncol  # twips: equal columns Word then fits to their text
     half_points = 24 if ncol <= 6 else (20 if ncol <= 9 else 16)
     style = doc.styles["Table Grid"].style_id
     ppr = '<w:pPr><w:spacing w:line="240" w:lineRule="auto"/><w:ind w:firstLine="0"/>{jc}</w:pPr>'
@@ -303,12 +317,12 @@ def _table(doc: Any, t: Table, Pt: Any, Mm: Any, qn: Any, TA: Any, C: Any) -> No
         for c, text in enumerate(cells):
             jc = '<w:jc w:val="center"/>' if c else '<w:jc w:val="left"/>'
             bold = "<w:b/>" if r == 0 else ""
-            tcs.append(f'<w:tc><w:tcPr><w:tcW w:w="0" w:type="auto"/></w:tcPr><w:p>{ppr.format(jc=jc)}'
+            tcs.append(f'<w:tc><w:tcPr><w:tcW w:w="{width}" w:type="dxa"/></w:tcPr><w:p>{ppr.format(jc=jc)}'
                        f'<w:r><w:rPr>{bold}<w:sz w:val="{half_points}"/><w:szCs w:val="{half_points}"/></w:rPr>'
                        f'<w:t xml:space="preserve">{escape(text)}</w:t></w:r></w:p></w:tc>')
         trpr = "<w:trPr><w:tblHeader/></w:trPr>" if r == 0 else "<w:trPr><w:cantSplit/></w:trPr>"
         rows.append(f"<w:tr>{trpr}{''.join(tcs)}</w:tr>")
-    grid = "".join('<w:gridCol w:w="0"/>' for _ in range(ncol))
+    grid = "".join(f'<w:gridCol w:w="{width}"/>' for _ in range(ncol))
     xml = (f'<w:tbl {_W}><w:tblPr><w:tblStyle w:val="{style}"/><w:tblW w:w="0" w:type="auto"/>'
            f'<w:jc w:val="center"/><w:tblLook w:val="04A0" w:firstRow="1" w:lastRow="0" w:firstColumn="1" '
            f'w:lastColumn="0" w:noHBand="0" w:noVBand="1"/></w:tblPr><w:tblGrid>{grid}</w:tblGrid>'

@@ -19,7 +19,7 @@ _UPRIGHT = re.compile(r"[А-Яа-яЁё]|[a-z]{2,}|^(inv|tg|cos|sin)\b|\s")
 def _run(text: str, upright: bool) -> str:
     # m:nor: ordinary upright text (a unit, a word, a Cyrillic index), as Word and
     # LibreOffice's import both read it; numbers and operators are upright by themselves
-    sty = "<m:rPr><m:nor/></m:rPr>" if upright and any(ch.isalpha() for ch in text) else ""
+    sty = "<m:rPr><m:nor/></m:rPr>" if upright and (text.isspace() or any(ch.isalpha() for ch in text)) else ""
     return f'<m:r>{sty}{_FONT}<m:t xml:space="preserve">{escape(text)}</m:t></m:r>'
 
 
@@ -35,6 +35,10 @@ def _part(x: str | Formula) -> str:
 def xml(f: Formula) -> str:
     """The formula's OMML, without the enclosing ``m:oMath``."""
     if isinstance(f, Row):
+        if f.items and isinstance(f.items[0], Op) and f.items[0].text == "=":
+            # a line that goes on from the one above: an empty left side first (LibreOffice's
+            # formulas need something left of "=")
+            return _run("\u2002", True) + "".join(xml(x) for x in f.items)
         return "".join(xml(x) for x in f.items)
     if isinstance(f, Num):
         return _run(f.text, True)

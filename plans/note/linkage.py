@@ -39,7 +39,7 @@ def deg(x: float) -> str:
 def task(item: Any, lang: str, sec: Section) -> None:
     sol = item.solved
     scene = sol.scene
-    sec.para(say(lang, f"Механизм: {scene.title_in('ru')}.", f"The mechanism: {scene.title_in('en')}."))
+    sec.para(say(lang, f"Объект расчёта: {scene.title_in('ru')}.", f"The object of the analysis: {scene.title_in('en')}."))
     rows = []
     for lid in sorted(scene.links):
         lk = scene.links[lid]

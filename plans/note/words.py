@@ -74,7 +74,7 @@ def say(lang: str, ru: str, en: str) -> str:
     return ru if lang == "ru" else en
 
 
-_PHI = re.compile(r"\bPhi(?=\d)")
+_PHI = re.compile(r"(?<![A-Za-z])Phi(?=\d)")
 _BAL = re.compile(r"\b([FM])_bal\b")
 
 
