@@ -359,3 +359,14 @@ def test_the_notes_arithmetic_holds(notes):
                 assert abs(total - want) <= 2e-3 * max(abs(want), max(value(f) * value(h) for _, f, h in terms)) + 1e-9, m
                 checked += 1
     assert checked > 30
+
+
+def test_pdf_without_libreoffice_is_one_clear_line(tmp_path, capsys, monkeypatch):
+    from drawings.cli import main
+    from drawings.note import cli as note_cli
+
+    monkeypatch.setattr(note_cli, "soffice", lambda: None)
+    out = tmp_path / "note.pdf"
+    assert main(["note", CAM, "-o", str(out), "--dpi", "30"]) == 2  # .pdf: the PDF asked for
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "LibreOffice" in err[0] and not out.exists()
