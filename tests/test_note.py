@@ -370,3 +370,18 @@ def test_pdf_without_libreoffice_is_one_clear_line(tmp_path, capsys, monkeypatch
     assert main(["note", CAM, "-o", str(out), "--dpi", "30"]) == 2  # .pdf: the PDF asked for
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "LibreOffice" in err[0] and not out.exists()
+
+
+def test_an_engine_gets_its_balancing(tmp_path):
+    engine = str(SAMPLES / "engines" / "v_twin.toml")
+    data = _json(tmp_path, "balance", engine)
+    rd = Read(_note([engine], "ru"))
+    assert rd.top() == [RU["task"], RU["balancing"], RU["conclusions"]]
+    rows = rd.table_after("Неуравновешенные силы и моменты")
+    got = [value(r[1]) for r in rows[1:]]
+    want = [data["forces"][k]["amplitude"] for k in ("rotating", "first_order", "second_order")]
+    assert all(rounded_equal(r[1], w) for r, w in zip(rows[1:], want, strict=True)), (got, want)
+    cw = [m for m in rd.math(RU["balancing"]) if m.startswith("mпв·rпв=")]
+    assert len(cw) == len(data["counterweights"])
+    for m, c in zip(cw, data["counterweights"], strict=True):
+        assert rounded_equal(re.findall(_NUM, m.split("=")[1])[0], c["mass_radius"])

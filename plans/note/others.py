@@ -154,7 +154,7 @@ def balancing(item: Any, lang: str) -> Section:
     d = item.data
     e = d["engine"]
     sec = Section(w("balancing", lang), 1, key="balancing")
-    sec.para(say(lang, f"Двигатель: {e['cylinders']} цилиндров, радиус кривошипа r = {fmt(e['r'], lang)} м, λ = {fmt(e['lambda'], lang)}, "
+    sec.para(say(lang, f"Двигатель: число цилиндров {e['cylinders']}, радиус кривошипа r = {fmt(e['r'], lang)} м, λ = {fmt(e['lambda'], lang)}, "
                        f"ω = {fmt(e['omega'], lang)} рад/с.",
                  f"The engine: {e['cylinders']} cylinders, crank radius r = {fmt(e['r'], lang)} m, λ = {fmt(e['lambda'], lang)}, "
                  f"ω = {fmt(e['omega'], lang)} rad/s."))
@@ -172,7 +172,12 @@ def balancing(item: Any, lang: str) -> Section:
                   (say(lang, "Силы", "Forces"), say(lang, "Сила, Н", "Force, N"), say(lang, "Момент, Н·м", "Moment, N·m")),
                   tuple(rows)))
     for cw in d["counterweights"]:
-        sec.para(say(lang, "Противовес: ", "Counterweight: "),
-                 row(Sym("m", "пр" if lang == "ru" else "cw"), "·", Sym("r"), "=", num(cw["mass_radius"], lang),
-                     unit("kg", lang) + "·" + unit("m", lang)))
+        what = names.get(cw["for"], cw["for"])
+        sec.para(say(lang, f"Противовес для сил {what}: ", f"Counterweight ({what}): "),
+                 row(Sym("m", "пв" if lang == "ru" else "cw"), "·", Sym("r", "пв" if lang == "ru" else "cw"), "=",
+                     num(cw["mass_radius"], lang), unit("kg", lang) + "·" + unit("m", lang)),
+                 say(lang, f" (масса {fmt(cw['mass'], lang)} кг на радиусе {fmt(cw['radius'], lang)} м, "
+                           f"угол {fmt(cw['angle_deg'], lang)}°).",
+                     f" (mass {fmt(cw['mass'], lang)} kg at radius {fmt(cw['radius'], lang)} m, "
+                     f"angle {fmt(cw['angle_deg'], lang)}°)."))
     return sec
