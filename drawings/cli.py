@@ -105,7 +105,6 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
         from plans.accuracy import cycle_bench  # and times the cycle's sheet (a lazy reference)
 
         cycle_bench.SHEET_TIMERS.setdefault("cycle diagrams sheet", "drawings.cycle:diagrams_sheet_seconds")
-        cycle_bench.SHEET_TIMERS.setdefault("explanatory note", "drawings.note.cli:note_seconds@v_engine_project.toml")
     if "check" in sub.choices and (argv is None or command_of(argv) == "check"):  # ``plans check --sheet DIR``: the marked and overlay sheets
         try:
             from .check_sheet import add_sheet_options

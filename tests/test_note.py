@@ -19,7 +19,7 @@ from plans.cli import main as plans_main  # noqa: E402
 
 SAMPLES = Path(__file__).resolve().parent.parent / "samples"
 V_ENGINE = str(SAMPLES / "v_engine.toml")  # seed 000: φ = 45° and 0°, forces and lever
-PROJECT = str(SAMPLES / "v_engine_project.toml")  # 12 positions, forces, diagrams, dynamics
+PROJECT = str(SAMPLES / "projects" / "v_engine_project.toml")  # 12 positions, forces, diagrams, dynamics
 SLIDER = str(SAMPLES / "slider_crank.toml")  # seed 001's slider-crank
 GEARS = str(SAMPLES / "gears" / "seed_train.toml")  # seed 001's gear train
 CAM = str(SAMPLES / "cams" / "seed001_valve_cam.toml")  # seed 001's valve cam

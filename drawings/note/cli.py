@@ -92,14 +92,24 @@ def to_pdf(docx: bytes, timeout: float = 300.0) -> bytes:
             return fh.read()
 
 
-def note_seconds(path: str | Path, repeat: int = 3) -> float:
-    """Best time of a scene's whole note (``plans bench``): read, solve, content, figures, DOCX."""
+
+def note_figures(path: str, repeat: int = 3) -> dict[str, float]:
+    """The best of ``repeat`` builds of a scene's note (read, solve, content, figures, DOCX),
+    after one that loads the libraries as a command does once: wall and processor seconds."""
     import time
 
-    note_bytes([str(path)], "ru")  # the libraries loaded once, as a command pays for them once
-    best = float("inf")
+    note_bytes([path], "ru")
+    wall = cpu = float("inf")
+    size = 0
     for _ in range(max(1, repeat)):
-        t = time.perf_counter()
-        note_bytes([str(path)], "ru")
-        best = min(best, time.perf_counter() - t)
-    return best
+        t, c = time.perf_counter(), time.process_time()
+        size = len(note_bytes([path], "ru"))
+        wall, cpu = min(wall, time.perf_counter() - t), min(cpu, time.process_time() - c)
+    return {"seconds": wall, "cpu_seconds": cpu, "bytes": float(size)}
+
+
+if __name__ == "__main__":  # ``python -m drawings.note.cli SCENE [REPEAT]``: the note's build time as JSON (bench)
+    import json
+    import sys
+
+    print(json.dumps(note_figures(sys.argv[1], int(sys.argv[2]) if len(sys.argv) > 2 else 3)))

@@ -1,12 +1,10 @@
 """The cycle in ``plans bench``: the dynamics of 360 positions with the exact integration
 (goal: under 50 ms), the dynamics of the course's 14 positions, and the diagrams sheet
-to SVG (goal: under 0.2 s) and the explanatory note of the V-engine project (12 positions
-with their figures, goal: under 3 s) when the renderer has registered their timers.
+to SVG (goal: under 0.2 s) when the renderer has registered its timer.
 
 The renderer is not imported here (``plans`` never imports ``drawings``): the drawing
 package puts ``name -> "module:function"`` into :data:`SHEET_TIMERS` when it builds the
-command line (``"module:function@sample.toml"`` to time another sample than the V-engine's
-cycle); the function takes a scene path and a repeat count and returns seconds.
+command line; the function takes a scene path and returns seconds.
 """
 
 from __future__ import annotations
@@ -20,7 +18,7 @@ from typing import Any
 
 #: Timers of the cycle's sheets, registered by the renderer: name -> "module:function".
 SHEET_TIMERS: dict[str, str] = {}
-GOALS_S = {"cycle dynamics": 0.050, "cycle diagrams sheet": 0.2, "explanatory note": 3.0}
+GOALS_S = {"cycle dynamics": 0.050, "cycle diagrams sheet": 0.2}
 
 
 def _best(f: Callable[[], Any], n: int) -> float:
@@ -58,14 +56,12 @@ def records(samples: Path, quick: bool = False) -> list[Any]:
                                    f"({'met' if n != 360 or t < goal else 'missed'})"))
     veng = samples / "v_engine_cycle.toml"
     for name, ref in sorted(SHEET_TIMERS.items()):
-        ref, _, sample = ref.partition("@")
-        path = samples / sample if sample else veng
-        if not path.is_file():
-            continue
+        if not veng.is_file():
+            break
         mod, _, fn = ref.partition(":")
         timer = getattr(importlib.import_module(mod), fn)
-        t = float(timer(path, 2 if quick else 5) if not sample else timer(path, 1 if quick else 3))
+        t = float(timer(veng, 2 if quick else 5))
         goal = GOALS_S.get(name, 0.0)
-        out.append(Record(name, path.stem, 1, 0.0, t, t, param="docx" if sample else "svg",
+        out.append(Record(name, veng.stem, 1, 0.0, t, t, param="svg",
                           note=f"goal {goal:g} s ({'met' if t < goal else 'missed'})"))
     return out
