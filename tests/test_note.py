@@ -385,3 +385,24 @@ def test_an_engine_gets_its_balancing(tmp_path):
     assert len(cw) == len(data["counterweights"])
     for m, c in zip(cw, data["counterweights"], strict=True):
         assert rounded_equal(re.findall(_NUM, m.split("=")[1])[0], c["mass_radius"])
+
+
+def test_coriolis_acceleration_of_the_shaper(tmp_path):
+    """A slotted link (RPR group): its vector equations with the Coriolis term, and
+    a^k = 2·ω·v_rel with the plans' numbers, equal to plans solve's."""
+    from drawings.note.omml import plain
+    from plans.note.build import note
+    from plans.note.model import Equation
+
+    shaper = str(SAMPLES / "shaper.toml")
+    data = _json(tmp_path, "solve", shaper)
+    n = note([shaper], "ru")
+    kin = next(s for s in n.sections if s.key == "kinematics")
+    for k, sub in enumerate(kin.children[:2]):
+        eqs = [plain(b.formula).replace(" ", "") for b in sub.blocks if isinstance(b, Equation)]
+        assert "a_A3=a_A2+a_A3A2^k+a_A3A2^r=a_C+a_A3C^n+a_A3C^τ" in eqs
+        cor = next(e for e in eqs if e.startswith("a_A3A2^k=2·ω_3·"))
+        r = {x["quantity"]: x["exact"] for x in data["positions"][k]["readings"]}
+        two, w, v, ak = re.findall(_NUM, cor.split("=", 2)[2])[:4]
+        assert rounded_equal(w, abs(r["omega_3"])) and rounded_equal(ak, abs(r["a^k_A3A2"]))
+        assert abs(2 * value(w) * value(v) - value(ak)) <= 2e-3 * abs(value(ak)) + 1e-9

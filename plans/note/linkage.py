@@ -173,7 +173,7 @@ def kinematics(item: Any, lang: str, sec: Section) -> list[Section]:
             sub.para(say(lang, "Построение плана " + ("скоростей" if kind == "velocity" else "ускорений")
                          + " по векторным уравнениям групп:",
                          f"The {kind} plan is built from the groups' vector equations:"))
-            _vector_equations(item, kind, lang, sub)
+            _vector_equations(item, pos, kind, lang, sub)
             for s in item.plan_steps(k, kind):
                 sub.para(symbols(s.say(lang), lang))
             fig = f"{kind}-{item.index}-{phi}"
@@ -196,18 +196,42 @@ def kinematics(item: Any, lang: str, sec: Section) -> list[Section]:
     return out
 
 
-def _vector_equations(item: Any, kind: str, lang: str, sec: Section) -> None:
+def _vector_equations(item: Any, pos: dict, kind: str, lang: str, sec: Section) -> None:
     """Each group's vector equation as a formula: v̄_B = v̄_A + v̄_BA (the joint pins)."""
+    q = "v" if kind == "velocity" else "a"
     for g in item.solved.structure.groups:
-        if g.kind not in ("RRR", "RRP"):
-            continue  # the other groups' equations are in their steps' sentences
-        A, B = g.joints[0].point, g.joints[1].point
-        q = "v" if kind == "velocity" else "a"
-        if kind == "velocity":
-            rhs: list = [Vec(Sym(q, A)), "+", Vec(Sym(q, B + A))]
-        else:
-            rhs = [Vec(Sym(q, A)), "+", Vec(Sym(q, B + A, "n")), "+", Vec(Sym(q, B + A, "τ"))]
-        sec.eq(Vec(Sym(q, B)), "=", *rhs)
+        if g.kind in ("RRR", "RRP"):
+            A, B = g.joints[0].point, g.joints[1].point
+            if kind == "velocity":
+                rhs: list = [Vec(Sym(q, A)), "+", Vec(Sym(q, B + A))]
+            else:
+                rhs = [Vec(Sym(q, A)), "+", Vec(Sym(q, B + A, "n")), "+", Vec(Sym(q, B + A, "τ"))]
+            sec.eq(Vec(Sym(q, B)), "=", *rhs)
+        elif g.kind == "RPR":  # the slotted link j turns about C, the block i slides in it at A
+            A, C = g.joints[0].point, g.joints[2].point
+            i, j = g.links
+            Aj, Ai = f"{A}{j}", f"{A}{i}"
+            if kind == "velocity":
+                sec.eq(Vec(Sym(q, Aj)), "=", Vec(Sym(q, Ai)), "+", Vec(Sym(q, Aj + Ai)), "=",
+                       Vec(Sym(q, C)), "+", Vec(Sym(q, Aj + C)))
+            else:
+                sec.eq(Vec(Sym(q, Aj)), "=", Vec(Sym(q, Ai)), "+", Vec(Sym(q, Aj + Ai, "k")), "+",
+                       Vec(Sym(q, Aj + Ai, "r")), "=", Vec(Sym(q, C)), "+", Vec(Sym(q, Aj + C, "n")), "+",
+                       Vec(Sym(q, Aj + C, "τ")))
+                _coriolis(pos, lang, sec, Aj, Ai, j)
+        # PRP and RPP: their equations are in the steps' sentences
+
+
+def _coriolis(pos: dict, lang: str, sec: Section, Aj: str, Ai: str, j: int) -> None:
+    """a^k = 2·ω_j·v_rel with the numbers read off the plans (the exact values)."""
+    r = {x["quantity"]: x["exact"] for x in pos.get("readings", [])}
+    ak = r.get(f"a^k_{Aj}{Ai}")
+    w = r.get(f"omega_{j}")
+    v = r.get(f"v_{Aj}{Ai}", r.get(f"v_{Ai}{Aj}"))
+    if ak is None or w is None or v is None:
+        return
+    sec.eq(Sym("a", Aj + Ai, "k"), "=", Num("2"), "·", Sym("ω", str(j)), "·", Sym("v", Aj + Ai), "=", Num("2"), "·",
+           num(abs(w), lang), "·", num(abs(v), lang), "=", num(abs(ak), lang), unit("m/s^2", lang))
 
 
 def over_positions(item: Any, lang: str) -> list[Table]:
