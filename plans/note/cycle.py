@@ -98,12 +98,24 @@ def dynamics(item: Any, lang: str) -> list[Section]:
     sec.eq(Sym("ω", "m"), "=", num(fw["omega_mean"], lang), unit("rad/s", lang))
     sec.para(say(lang, "Момент инерции маховика по диаграмме энергомасс (касательные под углами ψ_max, ψ_min):",
                  "The flywheel's moment of inertia from the energy–mass diagram (tangents at ψ_max, ψ_min):"))
+    kl = item.wittenbauer()
+    with_numbers: list = []
+    if kl is not None:
+        k, l = kl
+        with_numbers = [Frac(row(num(k, lang), "−", "(", num(l, lang), ")"),
+                             row(num(fw["omega_mean"], lang), Sym("", None, "2"), "·", num(fw["delta"], lang))), "="]
+        sec.para(say(lang, "Касательные отсекают на оси ΔT отрезки k и l (в джоулях): ",
+                     "The tangents cut the ΔT axis at k and l (in joules): "),
+                 row(Sym("k"), "=", num(k, lang), unit("J", lang), ",", Sym("l"), "=", num(l, lang), unit("J", lang)))
     sec.eq(Sym("I", "M"), "=", Frac(row(Sym("k"), "−", Sym("l")), row(Sym("ω", "m", "2"), "·", Sym("δ"))), "=",
-           num(fw["inertia_graphical"], lang), unit("kg*m^2", lang))
+           *with_numbers, num(fw["inertia_graphical"], lang), unit("kg*m^2", lang))
     sec.para(say(lang, "Точным интегрированием уравнения движения:", "By exact integration of the equation of motion:"))
     sec.eq(Sym("I", "M"), "=", num(fw["inertia_exact"], lang), unit("kg*m^2", lang))
-    sec.para(say(lang, "По методу Мерцалова:", "By Merkalov's method:"))
-    sec.eq(Sym("I", "M"), "=", Frac(Sym("ΔT", "max"), row(Sym("ω", "m", "2"), "·", Sym("δ"))), "=",
+    sec.para(say(lang, "По методу Мерцалова (ΔT_I — изменение кинетической энергии звеньев постоянного "
+                       "приведённого момента инерции):",
+                 "By Merkalov's method (ΔT_I: the change of kinetic energy of the links of constant reduced "
+                 "moment of inertia):"))
+    sec.eq(Sym("I", "M"), "=", Frac(Sym("ΔT", "I max"), row(Sym("ω", "m", "2"), "·", Sym("δ"))), "=",
            num(fw["inertia_merkalov"], lang), unit("kg*m^2", lang))
     sec.para(say(lang, f"С маховиком по диаграмме энергомасс достигнутый коэффициент неравномерности "
                        f"δ = {fmt(fw['delta_achieved'], lang)}.",

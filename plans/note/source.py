@@ -48,6 +48,15 @@ class Item:
         return force_steps(sol.forces[0], sol.forces[1], k)
 
 
+    def wittenbauer(self) -> tuple[float, float] | None:
+        """The energy–mass diagram's tangents cut the ΔT axis at k and l (J)."""
+        cyc = getattr(self.solved, "cycle", None)
+        if cyc is None or cyc.dynamics is None:
+            return None
+        w = cyc.dynamics.wittenbauer
+        return float(w.k), float(w.l)
+
+
 #: A file kind the note knows a section for, read by a module of its own when installed
 #: (``read(path, raw) -> (solved, json)`` and ``section(item, lang) -> list[Section]``).
 HOOKS: dict[str, str] = {"synthesis": "plans.design.note"}
