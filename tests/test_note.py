@@ -277,9 +277,18 @@ def test_a4_gost_margins_title_and_fields(notes):
     assert " PAGE " in s.footer._element.xml and s.different_first_page_header_footer
 
 
-def test_same_bytes_twice(notes):
+def test_same_bytes_twice(notes, tmp_path):
     again = _note([CAM], "ru")
     assert again == notes["cam_ru"]
+    import os
+    import subprocess
+    import sys
+
+    out = tmp_path / "other.docx"  # another interpreter, another hash seed: the same bytes
+    env = {**os.environ, "PYTHONHASHSEED": "12345"}
+    subprocess.run([sys.executable, "-m", "drawings.cli", "note", CAM, "-o", str(out), "--language", "ru",
+                    "--dpi", str(DPI)], check=True, env=env, capture_output=True)
+    assert out.read_bytes() == again
     z = zipfile.ZipFile(io.BytesIO(again))
     assert {i.date_time for i in z.infolist()} == {(1980, 1, 1, 0, 0, 0)}
     assert b"2000-01-01T00:00:00Z" in z.read("docProps/core.xml")
