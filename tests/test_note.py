@@ -162,6 +162,10 @@ def test_velocity_at_45_equals_plans_solve(notes, tmp_path):
     got = {r[0]: r[3] for r in rows[1:]}
     assert rounded_equal(got["v_B"], want["v_B"]), (got["v_B"], want["v_B"])
     assert rounded_equal(got["v_BA"], want["v_BA"]) and rounded_equal(got["ω_2"], want["omega_2"])
+    omega = next(m for m in Read(notes["engine_ru"]).math("φ = 45°") if m.startswith("ω2=(vBA)/(lAB)="))
+    v, length = re.findall(_NUM, omega.split("=")[2])
+    assert rounded_equal(v, abs(want["v_BA"])) and rounded_equal(after_eq(omega), abs(want["omega_2"]))
+    assert abs(value(v) / value(length) - value(after_eq(omega))) <= 2e-3 * value(after_eq(omega))
 
 
 def test_balancing_force_three_ways_equals_plans_solve(notes, tmp_path):

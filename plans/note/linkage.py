@@ -176,6 +176,7 @@ def kinematics(item: Any, lang: str, sec: Section) -> list[Section]:
             _vector_equations(item, pos, kind, lang, sub)
             for s in item.plan_steps(k, kind):
                 sub.para(symbols(s.say(lang), lang))
+            _rates(item, pos, kind, lang, sub)
             fig = f"{kind}-{item.index}-{phi}"
             sub.add(Figure(fig, item.index, f"{kind}-{phi}",
                            say(lang, ("План скоростей" if kind == "velocity" else "План ускорений") + f", φ = {phi}°",
@@ -220,6 +221,39 @@ def _vector_equations(item: Any, pos: dict, kind: str, lang: str, sec: Section) 
                        Vec(Sym(q, Aj + C, "τ")))
                 _coriolis(pos, lang, sec, Aj, Ai, j)
         # PRP and RPP: their equations are in the steps' sentences
+
+
+def _rates(item: Any, pos: dict, kind: str, lang: str, sec: Section) -> None:
+    """The links' angular velocities ω = v_XY/l_XY (or accelerations ε = a^τ_XY/l_XY) from the
+    relative velocities read off the plan, where the plan has the link's two points."""
+    scene = item.solved.scene
+    r = {x["quantity"]: x["exact"] for x in pos.get("readings", [])}
+    first = True
+    for lid in sorted(scene.links):
+        lk = scene.links[lid]
+        if lid == scene.driver.link or len(lk.axis) != 2 or not lk.length:
+            continue
+        A, B = lk.axis
+        rate = r.get(f"omega_{lid}" if kind == "velocity" else f"eps_{lid}")
+        for X, Y in ((B, A), (A, B)):
+            key = f"v_{X}{Y}" if kind == "velocity" else f"a_{X}{Y}^τ"
+            if key in r and rate is not None:
+                break
+        else:
+            continue
+        rel = abs(r[key])
+        if abs(rel / lk.length - abs(rate)) > 1e-6 * max(abs(rate), 1.0):
+            continue  # the relative motion read is not the link's own turning
+        if first:
+            sec.para(say(lang, "Угловые " + ("скорости" if kind == "velocity" else "ускорения") + " звеньев:",
+                         "The links' angular " + ("velocities:" if kind == "velocity" else "accelerations:")))
+            first = False
+        if kind == "velocity":
+            sec.eq(Sym("ω", str(lid)), "=", Frac(Sym("v", X + Y), Sym("l", A + B)), "=",
+                   Frac(num(rel, lang), num(lk.length, lang)), "=", num(abs(rate), lang), unit("rad/s", lang))
+        else:
+            sec.eq(Sym("ε", str(lid)), "=", Frac(Sym("a", X + Y, "τ"), Sym("l", A + B)), "=",
+                   Frac(num(rel, lang), num(lk.length, lang)), "=", num(abs(rate), lang), unit("rad/s^2", lang))
 
 
 def _coriolis(pos: dict, lang: str, sec: Section, Aj: str, Ai: str, j: int) -> None:
