@@ -10,7 +10,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from .model import Formula, Frac, Sym, fmt, num, row
+from .model import Formula, Frac, Sym, num, row
 from .words import unit
 
 _NAME = re.compile(r"ΣM(?:_(\w+))?\((\d+)\)")
@@ -84,7 +84,7 @@ def moment(step: Any, lang: str) -> list[Formula]:
         n, lab = args["n"], Sym("l", args["A"] + args["B"])
         tau = float(args["tau"])
         s = sign_of(tau, float(args["l"]))
-        out.append(row(Sym(_n(n), _sub(n), "τ"), "=", *([s] if s else []), Frac(Mk, lab), "=",
+        out.append(row(Sym(n[0], n[1:], "τ"), "=", *([s] if s else []), Frac(Mk, lab), "=",
                        *([s] if s else []), Frac(num(total, lang), num(args["l"], lang)), "=", num(tau, lang),
                        unit("N", lang)))
     elif u.key == "m_crank_force":
@@ -159,12 +159,4 @@ def _plain(f: Formula) -> str:
     return ""
 
 
-def _n(name: str) -> str:
-    return name[0]
-
-
-def _sub(name: str) -> str:
-    return name[1:]
-
-
-__all__ = ["label", "lever", "moment", "fmt"]
+__all__ = ["label", "lever", "moment"]

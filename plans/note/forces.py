@@ -9,7 +9,7 @@ from typing import Any
 
 from .equations import moment
 from .linkage import deg, studied
-from .model import Equation, Figure, Section, Sym, Table, fmt, num
+from .model import Equation, Figure, Formula, Frac, Row, Section, Sym, Table, Text, fmt, num, row
 from .words import quantity, say, symbols, unit, w
 
 
@@ -144,7 +144,7 @@ def _three_ways(item: Any, pos: dict, phi: str, lang: str, sec: Section) -> None
     for key, word in (("by_kinetostatics", "by_kin"), ("by_lever", "by_lever"), ("by_power", "by_power")):
         if b.get(key) is None:
             continue
-        sec.para(w(word, lang) + ": ", _row(sym, "=", num(b[key], lang), u))
+        sec.para(w(word, lang) + ": ", row(sym, "=", num(b[key], lang), u))
     if b.get("difference_percent") is not None:
         sec.para(say(lang, "Расхождение значений по планам сил и по рычагу Жуковского (по отрезкам чертежей):",
                      "The difference between the force polygons and the lever (as read on the drawings):"))
@@ -155,16 +155,10 @@ def _three_ways(item: Any, pos: dict, phi: str, lang: str, sec: Section) -> None
                      f"By the exact values the difference is {fmt(b['exact_difference_percent'], lang, 3)} %."))
 
 
-def _row(*items):
-    from .model import row
+def _frac_diff(sym: Formula, lang: str) -> Formula:
+    """(F_ур(пс) − F_ур(Ж)) / F_ур(пс): the polygons' value against the lever's."""
 
-    return row(*items)
-
-
-def _frac_diff(sym, lang: str):
-    from .model import Frac, Row, Text, row
-
-    def s(tag: str):
+    def s(tag: str) -> Formula:
         return Row((sym, Text(f" ({tag})")))
 
     kin, lev = say(lang, "пс", "fp"), say(lang, "Ж", "Zh")
