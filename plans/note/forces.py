@@ -7,9 +7,23 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from .equations import moment
+from .equations import label, moment
 from .linkage import deg, studied
-from .model import Equation, Figure, Formula, Frac, Row, Section, Sym, Table, Text, fmt, num, row
+from .model import (
+    Equation,
+    Figure,
+    Formula,
+    Frac,
+    Num,
+    Row,
+    Section,
+    Sym,
+    Table,
+    Text,
+    fmt,
+    num,
+    row,
+)
 from .words import quantity, say, symbols, unit, w
 
 
@@ -60,8 +74,20 @@ def forces(item: Any, lang: str) -> list[Section]:
                 eps = abs(pos["links"][lid_s]["eps"])
                 sec.eq(Sym("M", f"Φ{lid_s}"), "=", Sym("I", f"S{lid_s}"), "·", Sym("ε", lid_s), "=",
                        num(lk.inertia, lang), "·", num(eps, lang), "=", num(abs(M), lang), unit("N·m", lang))
+        gas = item.gas()
+        for lb, v in pos.get("loads", {}).items():
+            if lb in gas and _abs(v) > 0:
+                area, p = gas[lb]
+                sec.para(say(lang, f"Сила давления газов на поршень {lb} (площадь поршня ",
+                             f"The gas force on piston {lb} (the piston's area "),
+                         row(Sym("F", "п" if lang == "ru" else "p"), "=", Frac(row("π", Sym("d", None, "2")), Num("4")),
+                             "=", num(area, lang), unit("m^2", lang)),
+                         say(lang, f", давление p = {fmt(p, lang)} Па):", f", pressure p = {fmt(p, lang)} Pa):"))
+                sec.eq(label(lb, lang), "=", Sym("p"), "·", Sym("F", "п" if lang == "ru" else "p"), "=", num(p, lang),
+                       "·", num(area, lang), "=", num(_abs(v), lang), unit("N", lang))
         loads = [(lb, _abs(v)) for lb, v in pos.get("loads", {}).items()
-                 if not lb.startswith("Phi") and not (lb.startswith("G") and lb[1:] in dict(weights))]
+                 if not lb.startswith("Phi") and not (lb.startswith("G") and lb[1:] in dict(weights))
+                 and not (lb in gas and _abs(v) > 0)]
         if loads:
             sec.para(say(lang, "Внешние силы: ", "The applied forces: ")
                      + "; ".join(f"{_label(lb, lang)} = {fmt(F, lang)} {unit('N', lang)}" for lb, F in loads) + ".")

@@ -48,6 +48,14 @@ class Item:
         return force_steps(sol.forces[0], sol.forces[1], k)
 
 
+    def gas(self) -> dict[str, tuple[float, float]]:
+        """The pistons' gas forces of constant pressure: name -> (piston area m², pressure Pa)."""
+        sol = self.solved
+        if getattr(sol, "forces", None) is None:
+            return {}
+        return {g.name: (float(g.area), float(g.pressure)) for g in sol.forces[0].loads.gas
+                if g.pressure is not None}
+
     def wittenbauer(self) -> tuple[float, float] | None:
         """The energy–mass diagram's tangents cut the ΔT axis at k and l (J)."""
         cyc = getattr(self.solved, "cycle", None)
