@@ -41,9 +41,12 @@ class Figures:
 
     def __call__(self, f: Figure) -> tuple[bytes, float]:
         from ..export import png_bytes
+        from .docx_writer import TEXT_WIDTH_MM
 
         hit = self.find(f)
-        return png_bytes(hit.svg().encode("utf-8"), self.dpi), float(hit.width)
+        # a panel wider than the text is shown smaller: drawn at the resolution it has on the page
+        dpi = self.dpi * min(1.0, TEXT_WIDTH_MM / max(float(hit.width), 1e-9))
+        return png_bytes(hit.svg().encode("utf-8"), dpi), float(hit.width)
 
 
 def _group(kind: str, panel: str) -> str:
