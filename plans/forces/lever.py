@@ -278,8 +278,13 @@ def force_json(lv: LeverAnalysis) -> list[dict]:
             if m.kind == "inertia":
                 inertia.setdefault(str(m.link), {"force": [0.0, 0.0], "moment": 0.0})["moment"] = float(m.M[k])
         loads = {f.label: _xy(complex(f.F[k])) for f in fa.applied.forces}
-        out.append({"reactions": reactions, "reaction_points": points, "balancing": bal,
-                    "inertia": inertia, "loads": loads})
+        entry = {"reactions": reactions, "reaction_points": points, "balancing": bal,
+                 "inertia": inertia, "loads": loads}
+        if fa.friction is not None:
+            from plans.forces.friction import friction_json
+
+            entry["friction"] = friction_json(fa.friction, fa, k)
+        out.append(entry)
     return out
 
 

@@ -148,6 +148,8 @@ class ForceAnalysis:
     applied: AppliedLoads
     groups: tuple[GroupForces, ...]  # in solving order: farthest first
     crank: CrankForces
+    #: the successive approximation with friction (plans.forces.friction.FrictionResult), or None
+    friction: Any = None
     #: what every position's table and polygons read again, worked out once (read-only arrays)
     memo: dict[str, Any] = field(default_factory=dict, init=False, repr=False, compare=False)
 
@@ -207,7 +209,12 @@ def analyse_forces(scene: Scene, kin: Kinematics, loads: Loads | None = None) ->
     if kin.order < 2:
         raise ValueError("force analysis needs accelerations: solve(scene, order=2)")
     loads = parse_loads(scene) if loads is None else loads
-    applied = apply_loads(scene, loads, kin)
+    return solve_applied(scene, kin, loads, apply_loads(scene, loads, kin))
+
+
+def solve_applied(scene: Scene, kin: Kinematics, loads: Loads, applied: AppliedLoads) -> ForceAnalysis:
+    """The groups and the crank in equilibrium under ``applied``.  Linear in the loads: a
+    load's arrays may carry a leading axis (several load cases at once, by superposition)."""
     forces: dict[int, list[AppliedForce]] = {k: [] for k in scene.links}
     moments: dict[int, list[AppliedMoment]] = {k: [] for k in scene.links}
     for f in applied.forces:
@@ -242,7 +249,7 @@ def _bound(kin: Kinematics, link: int, r: C, F: C, label: str, point: str) -> Ap
 def _sum(fs: list[AppliedForce] | tuple[AppliedForce, ...], n: int) -> C:
     out = np.zeros(n, complex)
     for f in fs:
-        out += f.F
+        out = out + f.F  # not in place: a load may carry several cases (a leading axis)
     return out
 
 
@@ -250,9 +257,9 @@ def _moment(fs, ms, P: C, n: int) -> R:
     """ΣM about P of the forces (cross(r − P, F)) and couples, ccw+."""
     out = np.zeros(n)
     for f in fs:
-        out += cross(f.r - P, f.F)
+        out = out + cross(f.r - P, f.F)
     for m in ms:
-        out += m.M
+        out = out + m.M
     return out
 
 
