@@ -25,6 +25,7 @@ from plans.units import DUST
 
 from .backend import Pt, Recording, Style, Transform
 from .common import Placer, angle, arrow, dot, fmt, ident, phi_tag
+from .friction_marks import efficiency_rows, friction_marks
 from .i18n import tr
 from .panels import (
     JOINT_R,
@@ -82,7 +83,7 @@ def build(scene, kin, spec, ks: Sequence[int], plans_at: dict[int, Any], mu_l: f
         if scene.wants("force_polygons"):
             for gf in reversed(fa.groups):  # attachment order: nearest the crank first
                 if want("group"):
-                    panels.append(group_panel(scene, kin, gf, k, mu_l, lang, style))
+                    panels.append(group_panel(scene, kin, gf, k, mu_l, lang, style, fa.friction))
                     fp = by_group.get(gf.group.name)
                     if fp is not None:
                         panels.append(polygon_panel(fp.plan, lang, style,
@@ -100,7 +101,7 @@ def build(scene, kin, spec, ks: Sequence[int], plans_at: dict[int, Any], mu_l: f
         if want("table") and polys:
             panels.append(forces_table(polys, lang, style, phi))
         out[k] = panels
-        out[("table", k)] = balancing_rows(lv, k, lang)
+        out[("table", k)] = balancing_rows(lv, k, lang) + efficiency_rows(fa, k, lang)
     return out
 
 
@@ -205,7 +206,7 @@ def _label_points(rec: Recording, placer: Placer, pts: dict[str, complex], T: Tr
         rec.text(lab, "label", f"{pid}-label-{ident(n)}")
 
 
-def group_panel(scene, kin, gf, k: int, mu_l: float, lang: str, style: str) -> Panel:
+def group_panel(scene, kin, gf, k: int, mu_l: float, lang: str, style: str, friction: Any = None) -> Panel:
     """The group cut free (appendices 4–5): loads at their points, the unknown reactions
     at the outer pairs (τ and n components at a revolute), arms h of the moment equations."""
     g = gf.group
@@ -266,6 +267,8 @@ def group_panel(scene, kin, gf, k: int, mu_l: float, lang: str, style: str) -> P
                     f"{pid}-{ident(m.label)}")
     for point, M, name in couples:
         _moment_arc(rec, placer, T.z(pts[point]), M, force_label(name, lang), f"{pid}-{ident(name)}", r=8.0)
+    friction_marks(rec, placer, T, friction, gf.reactions, k, mu_l, mu_f, pid,
+                   lambda rc: force_label(rc.name(scene.fij), lang))
     _label_points(rec, placer, pts, T, pid)
     title = f"{tr('group', lang)} {g.name} ({g.kind}), φ = {angle(phi, lang)}°"
     sc = f"{scale_text('length', mu_l, style, lang)};  {scale_text('force', mu_f, style, lang)}"
@@ -300,6 +303,8 @@ def crank_panel(scene, kin, fa, k: int, mu_l: float, lang: str, style: str) -> P
     name = c.frame.name(scene.fij)
     _force_at(rec, placer, T, complex(c.frame.r[k]), complex(c.frame.F[k]), mu_f, force_label(name, lang),
               REACTION, f"{pid}-{ident(name)}")
+    friction_marks(rec, placer, T, fa.friction, (c.frame,), k, mu_l, mu_f, pid,
+                   lambda rc: force_label(rc.name(scene.fij), lang))
     _label_points(rec, placer, pts, T, pid)
     title = f"{tr('crank', lang)} {c.link}, φ = {angle(phi, lang)}°"
     sc = f"{scale_text('length', mu_l, style, lang)};  {scale_text('force', mu_f, style, lang)}"

@@ -71,7 +71,12 @@ class FrictionResult:
     efficiency: R  # instantaneous η; NaN where undefined (no balancing load, or unconverged)
     power_bal: R  # the balancing load's power with friction, W
     losses: R  # Σ of the pairs' losses, W
-    self_locking: tuple[tuple[str, ...], ...]  # per position, the pairs that self-lock there
+    locking: NDArray[np.int64]  # per position, the index of the pair that self-locks there, or −1
+
+    def self_locking(self, k: int) -> list[str]:
+        """The pairs that self-lock at position k."""
+        q = int(self.locking[k])
+        return [] if q < 0 else [self.pairs[q].name]
 
     def undetermined(self, k: int) -> list[PairLoss]:
         return [p for p in self.pairs if p.sense[k] == 0 and p.friction.coefficient > 0]
@@ -109,7 +114,7 @@ def friction_analysis(scene: Scene, kin: Kinematics, loads: Loads, spec: Frictio
         G = np.zeros((len(reactions), 0, n), complex)
     # the approximations on the pairs' own reactions; every reaction's change is at most
     # Σ_p |G_qp|·|Δm_p| ≤ gain·max|Δm| (so the stop is never early)
-    Gf = G[idx]  # (P, P, n)
+    Gt = np.ascontiguousarray(G[idx].transpose(2, 0, 1))  # (n, P, P): one small product per position
     gain = np.max(np.sum(np.abs(G), axis=1), axis=0) if P else np.zeros(n)
     Rf0 = R0[idx]
     live = coef * (sense != 0)  # (P, n): what multiplies |R| (0 where the sense is undetermined)
@@ -130,7 +135,7 @@ def friction_analysis(scene: Scene, kin: Kinematics, loads: Loads, spec: Frictio
         m = np.where(bad, m, m_new)
         if np.all(done | bad):
             break
-        Rf = Rf0 + np.einsum("qpn,pn->qn", Gf, m)
+        Rf = Rf0 + np.matmul(Gt, m.T[:, :, None])[:, :, 0].T
     bad |= ~done
     m = np.where(bad, 0.0, m)
     fa = solve_applied(scene, kin, loads, _merge(applied, _friction_loads(fa0, pairs, labels, m * sense)))
@@ -142,7 +147,7 @@ def friction_analysis(scene: Scene, kin: Kinematics, loads: Loads, spec: Frictio
     losses = np.sum([pl.loss for pl in out], axis=0) if out else np.zeros(n)
     power = _balancing_power(fa)
     eta = _efficiency(fa0.balancing, fa.balancing, bad)
-    locking = _self_locking(out, growth, bad, eta, n)
+    locking = _self_locking(out, growth, bad, eta)
     result = FrictionResult(spec, fa0, tuple(out), iters, ~bad, eta, power, losses, locking)
     return ForceAnalysis(fa.scene, fa.kin, fa.loads, fa.applied, fa.groups, fa.crank, result)
 
@@ -217,18 +222,16 @@ def _efficiency(b0: R, bf: R, bad: NDArray[np.bool_]) -> R:
     return np.where(ok, num / np.where(ok, den, 1.0), np.nan)
 
 
-def _self_locking(pairs: list[PairLoss], growth: R, bad: NDArray[np.bool_], eta: R,
-                  n: int) -> tuple[tuple[str, ...], ...]:
-    """Per position the pairs that self-lock: where the approximations grow without end,
-    the pair whose friction grew most at the last one; where the loads drive and η ≤ 0,
-    the pair that loses most power there."""
+def _self_locking(pairs: list[PairLoss], growth: R, bad: NDArray[np.bool_], eta: R) -> NDArray[np.int64]:
+    """Per position the pair that self-locks (−1: none): where the approximations grow
+    without end, the pair whose friction grew most at the last one; where the loads drive
+    and η ≤ 0, the pair that loses most power there."""
+    n = len(bad)
     if not pairs:
-        return ((),) * n
-    names = [p.name for p in pairs]
+        return np.full(n, -1, np.int64)
     grew = np.argmax(growth, axis=0)
     lost = np.argmax(np.array([p.loss for p in pairs]), axis=0)
-    locked = eta <= 0
-    return tuple((names[grew[k]],) if bad[k] else (names[lost[k]],) if locked[k] else () for k in range(n))
+    return np.where(bad, grew, np.where(eta <= 0, lost, -1)).astype(np.int64)
 
 
 def cycle_efficiency(fa: ForceAnalysis) -> dict[str, Any] | None:
@@ -276,7 +279,7 @@ def friction_json(fr: FrictionResult, fa: ForceAnalysis, k: int) -> dict[str, An
         "undetermined": [p.name for p in und],
         "ranges": {p.name: {"load": p.label, "at_most": float(p.limit[k]),
                             "unit": "N*m" if p.reaction.guide is None else "N"} for p in und},
-        "self_locking": list(fr.self_locking[k]),
+        "self_locking": fr.self_locking(k),
     }
 
 
