@@ -107,15 +107,20 @@ def friction_analysis(scene: Scene, kin: Kinematics, loads: Loads, spec: Frictio
     scale = np.max(np.abs(R0), axis=0)
     scale = np.where(scale > 0, scale, max(float(np.max(scale)) if n else 0.0, 1e-300))
     # each pair's unit friction load solved once, all pairs along a leading axis
+    gain = np.zeros(n)
+    Gf = np.zeros((n, 0, 0), complex)
     if P:
         unit = solve_applied(scene, kin, loads, _friction_loads(fa0, pairs, labels, np.eye(P)[:, :, None] * sense))
-        G = np.array([np.broadcast_to(rc.F, (P, n)) for rc in unit.reactions()])  # (Q, P, n)
-    else:
-        G = np.zeros((len(reactions), 0, n), complex)
-    # the approximations on the pairs' own reactions; every reaction's change is at most
-    # Σ_p |G_qp|·|Δm_p| ≤ gain·max|Δm| (so the stop is never early)
-    Gt = np.ascontiguousarray(G[idx].transpose(2, 0, 1))  # (n, P, P): one small product per position
-    gain = np.max(np.sum(np.abs(G), axis=1), axis=0) if P else np.zeros(n)
+        own = {q: j for j, q in enumerate(idx)}
+        cols: list[Any] = [None] * P
+        for q, rc in enumerate(unit.reactions()):
+            g = np.broadcast_to(rc.F, (P, n))
+            gain = np.maximum(gain, np.sum(np.abs(g), axis=0))
+            if q in own:
+                cols[own[q]] = g
+        # (n, P, P): the pairs' reactions (rows) under each pair's unit load (columns), per position
+        Gf = np.ascontiguousarray(np.array(cols).transpose(2, 0, 1))
+    # every reaction's change is at most Σ_p |G_qp|·|Δm_p| ≤ gain·max|Δm| (the stop is never early)
     Rf0 = R0[idx]
     live = coef * (sense != 0)  # (P, n): what multiplies |R| (0 where the sense is undetermined)
     m = np.zeros((P, n))
@@ -124,18 +129,32 @@ def friction_analysis(scene: Scene, kin: Kinematics, loads: Loads, spec: Frictio
     done = np.zeros(n, bool)
     bad = np.zeros(n, bool)
     growth = np.zeros((P, n))
+    grew = np.zeros(n, np.int64)  # the pair whose friction grew most where it grows without end
     limit = spec.tolerance * scale
     for it in range(1, spec.max_iterations + 1):
         m_new = live * np.abs(Rf)
         growth = np.abs(m_new - m)
-        settled = gain * (np.max(growth, axis=0) if P else 0.0) <= limit
-        iters = np.where(done | bad, iters, it)
-        done |= settled & ~bad
-        bad |= ~done & (np.max(m_new, axis=0, initial=0.0) > DIVERGED * scale)
-        m = np.where(bad, m, m_new)
-        if np.all(done | bad):
-            break
-        Rf = Rf0 + np.matmul(Gt, m.T[:, :, None])[:, :, 0].T
+        m = m_new
+        fresh = ~done & (gain * np.max(growth, axis=0, initial=0.0) <= limit)
+        if fresh.any():
+            iters[fresh] = it
+            done |= fresh
+            if done.all():
+                break
+        if it % 8 == 0:  # growing without end: those positions stop here
+            grown = ~done & (np.max(m, axis=0, initial=0.0) > DIVERGED * scale)
+            if grown.any():
+                bad |= grown
+                grew[grown] = np.argmax(growth[:, grown], axis=0)
+                iters[grown] = it
+                done |= grown
+                live = np.where(grown, 0.0, live)
+                if done.all():
+                    break
+        Rf = Rf0 + np.matmul(Gf, m.T[:, :, None])[:, :, 0].T  # superposition
+    iters = np.where(done, iters, spec.max_iterations)
+    if P:
+        grew = np.where(done, grew, np.argmax(growth, axis=0))
     bad |= ~done
     m = np.where(bad, 0.0, m)
     fa = solve_applied(scene, kin, loads, _merge(applied, _friction_loads(fa0, pairs, labels, m * sense)))
@@ -147,7 +166,7 @@ def friction_analysis(scene: Scene, kin: Kinematics, loads: Loads, spec: Frictio
     losses = np.sum([pl.loss for pl in out], axis=0) if out else np.zeros(n)
     power = _balancing_power(fa)
     eta = _efficiency(fa0.balancing, fa.balancing, bad)
-    locking = _self_locking(out, growth, bad, eta)
+    locking = _self_locking(out, grew, bad, eta)
     result = FrictionResult(spec, fa0, tuple(out), iters, ~bad, eta, power, losses, locking)
     return ForceAnalysis(fa.scene, fa.kin, fa.loads, fa.applied, fa.groups, fa.crank, result)
 
@@ -222,14 +241,13 @@ def _efficiency(b0: R, bf: R, bad: NDArray[np.bool_]) -> R:
     return np.where(ok, num / np.where(ok, den, 1.0), np.nan)
 
 
-def _self_locking(pairs: list[PairLoss], growth: R, bad: NDArray[np.bool_], eta: R) -> NDArray[np.int64]:
+def _self_locking(pairs: list[PairLoss], grew: NDArray[np.int64], bad: NDArray[np.bool_], eta: R) -> NDArray[np.int64]:
     """Per position the pair that self-locks (−1: none): where the approximations grow
     without end, the pair whose friction grew most at the last one; where the loads drive
     and η ≤ 0, the pair that loses most power there."""
     n = len(bad)
     if not pairs:
         return np.full(n, -1, np.int64)
-    grew = np.argmax(growth, axis=0)
     lost = np.argmax(np.array([p.loss for p in pairs]), axis=0)
     return np.where(bad, grew, np.where(eta <= 0, lost, -1)).astype(np.int64)
 
