@@ -25,7 +25,7 @@ from plans.units import DUST
 
 from .backend import Pt, Recording, Style, Transform
 from .common import Placer, angle, arrow, dot, fmt, ident, phi_tag
-from .friction_marks import efficiency_rows, friction_marks
+from .friction_marks import efficiency_panels, efficiency_rows, friction_marks, friction_points
 from .i18n import tr
 from .panels import (
     JOINT_R,
@@ -102,6 +102,8 @@ def build(scene, kin, spec, ks: Sequence[int], plans_at: dict[int, Any], mu_l: f
             panels.append(forces_table(polys, lang, style, phi))
         out[k] = panels
         out[("table", k)] = balancing_rows(lv, k, lang) + efficiency_rows(fa, k, lang)
+    if fa.friction is not None and want("table"):  # η(φ) and its table go with the tables
+        out["efficiency"] = efficiency_panels(fa, lang)
     return out
 
 
@@ -260,9 +262,11 @@ def group_panel(scene, kin, gf, k: int, mu_l: float, lang: str, style: str, fric
                   f"{pid}-{ident(f.label)}")
     for at, F, name in reacts:
         _force_at(rec, placer, T, at, F, mu_f, force_label(name, lang), REACTION, f"{pid}-{ident(name)}")
+    at_pin = friction_points(friction)  # a friction couple is drawn at its pair's pin
     for m in list(gf.moments_i) + list(gf.moments_j):
         link = scene.links[m.link]
         centre = link.centre or next((n for n in link.points if n.startswith("S")), link.axis[0])
+        centre = at_pin.get(m.label, centre) if at_pin.get(m.label) in pts else centre
         _moment_arc(rec, placer, T.z(pts[centre]), float(m.M[k]), force_label(m.label, lang),
                     f"{pid}-{ident(m.label)}")
     for point, M, name in couples:

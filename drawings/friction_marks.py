@@ -58,6 +58,18 @@ def friction_marks(rec: Recording, placer: Placer, T: Transform, fr: Any, reacti
             rec.text(lab, "label", eid + "-label", fill=TOTAL.stroke or "#000")
 
 
+def friction_points(fr: Any) -> dict[str, str]:
+    """The pin of each friction couple by its label (both links' labels)."""
+    if fr is None:
+        return {}
+    out = {}
+    for p in fr.pairs:
+        if p.reaction.guide is None:
+            for lab in p.labels(fr.frictionless.scene):
+                out[lab] = p.friction.joint.point
+    return out
+
+
 def efficiency_rows(fa: Any, k: int, lang: str) -> list[tuple[str, ...]]:
     """η, the balancing load without and with friction, and the approximations, as table rows."""
     fr = fa.friction
@@ -87,3 +99,74 @@ def efficiency_rows(fa: Any, k: int, lang: str) -> list[tuple[str, ...]]:
         rows.append((("самоторможение: " if ru else "self-locking: ") + name_, dash, dash, dash, dash, dash,
                      dash, dash))
     return rows
+
+
+def efficiency_panels(fa: Any, lang: str) -> list[Any]:
+    """The diagram η(φ) over the turn with the cycle's η, and the table of the positions:
+    F_bal without and with friction, the power lost and η."""
+    from plans.forces.friction import efficiency_json
+
+    from .cycle_plot import GRAPH, Axes, number, plot_panel, wide_table
+
+    eff = efficiency_json(fa)
+    fr = fa.friction
+    if eff is None or fr is None or fa.n < 2:
+        return []
+    import numpy as np
+
+    ru = lang == "ru"
+    phis = np.asarray(eff["phi_deg"], float)
+    eta = np.asarray(fr.efficiency, float)
+    rec = Recording()
+    mu_phi = 180.0 / (2 * math.pi)  # the turn 180 mm long
+    finite = eta[np.isfinite(eta)]
+    big = float(np.max(np.abs(finite))) if finite.size else 1.0
+    mu_eta = min(50.0, 60.0 / max(big, 1e-9))
+    ax = Axes(rec, "friction-eta", mu_phi, float(phis[0]), lang)
+    lo = float(min(finite.min(), 0.0)) * mu_eta if finite.size else 0.0
+    hi = float(max(finite.max(), 1.0)) * mu_eta if finite.size else mu_eta
+    L = 2 * math.pi * mu_phi
+    ax.frame(L, lo, hi, "η")
+    ax.positions(phis)
+    # the curve through the positions (and on to the turn's end: η repeats), broken where undefined
+    phis = np.append(phis, phis[0] + 360.0)
+    eta = np.append(eta, eta[0])
+    xs = ax.x(phis)
+    run: list[int] = []
+    for k in list(range(len(phis))) + [-1]:
+        if k >= 0 and np.isfinite(eta[k]):
+            run.append(k)
+            continue
+        if len(run) > 1:
+            ax.curve(xs[run], eta[run] * mu_eta, GRAPH, f"friction-eta-curve-{run[0]}")
+        run = []
+    ok = np.isfinite(eta)
+    ax.dots(xs[ok], eta[ok] * mu_eta)
+    ax.hline(mu_eta, 0.0, L, Style(width=0.18, stroke="#777", dash=(1.5, 0.8)), "η = 1")
+    if eff.get("cycle") is not None:
+        c = float(eff["cycle"])
+        ax.hline(c * mu_eta, 0.0, L, Style(width=0.35, dash=(4, 1.5)),
+                 ("η_ц = " if ru else "η_cycle = ") + fmt(c, 3, lang))
+    scale = f"μ_η = {fmt(mu_eta, 3, lang)} mm; μ_φ = {fmt(mu_phi, 4, lang)} mm/rad"
+    title = "КПД по положениям η(φ)" if ru else "Efficiency over the turn η(φ)"
+    note = ("η = F_ур,0/F_ур (кривошип ведущий), F_ур/F_ур,0 (ведомый)" if ru
+            else "η = F_bal,0/F_bal (driving crank), F_bal/F_bal,0 (driven)")
+    panels = [plot_panel("friction-eta", "dynamics", title, rec, scale, note, lang=lang)]
+    force = fa.crank.kind == "force"
+    unit = ("Н" if force else "Н·м") if ru else ("N" if force else "N·m")
+    sym = ("F_ур" if ru else "F_bal") if force else ("M_ур" if ru else "M_bal")
+    header = ["", *(str(k + 1) for k in range(len(phis) - 1))]
+    rows = [
+        ["φ, °", *(number(float(p), lang, 4) for p in phis[:-1])],
+        [f"{sym},0, {unit}", *(number(float(b), lang) for b in fr.frictionless.balancing)],
+        [f"{sym}, {unit}", *(number(float(b), lang) if fr.converged[k] else "—" for k, b in enumerate(fa.balancing))],
+        [("ΣP_тр, Вт" if ru else "ΣP_f, W"), *(number(float(x), lang) for x in fr.losses)],
+        ["η", *(number(float(x), lang, 3) if np.isfinite(x) else "—" for x in eta[:-1])],
+    ]
+    cyc = eff.get("cycle")
+    note2 = None if cyc is None else (
+        f"{'η цикла' if ru else 'cycle η'} = A_{'пс' if ru else 'useful'}/A_{'дв' if ru else 'driving'} = "
+        f"{fmt(eff['A_useful'], 4, lang)}/{fmt(eff['A_driving'], 4, lang)} = {fmt(cyc, 3, lang)}")
+    panels.append(wide_table("friction-table", "КПД и потери на трение" if ru else "Efficiency and friction losses",
+                             header, rows, lang, note2))
+    return panels

@@ -58,6 +58,10 @@ class PairLoss:
     def name(self) -> str:
         return self.friction.joint.name
 
+    def labels(self, scene: Scene) -> tuple[str, str]:
+        """The load's labels on link ``on`` and on link ``frm``."""
+        return self.label, _label(scene, self.reaction, back=True)
+
 
 @frozen
 class FrictionResult:
@@ -186,8 +190,10 @@ def _relative(kin: Kinematics, rc: Reaction, omega1: R, reach: float) -> tuple[R
     return rel, np.abs(rel) <= DUST * omega1 * reach
 
 
-def _label(scene: Scene, rc: Reaction) -> str:
-    ij = f"{rc.on}{rc.frm}" if scene.fij == "on_i_from_j" else f"{rc.frm}{rc.on}"
+def _label(scene: Scene, rc: Reaction, back: bool = False) -> str:
+    """The friction load's label on link ``on`` (``back``: on ``frm``), named as F_ij is."""
+    on, frm = (rc.frm, rc.on) if back else (rc.on, rc.frm)
+    ij = f"{on}{frm}" if scene.fij == "on_i_from_j" else f"{frm}{on}"
     return ("Mf" if rc.guide is None else "Ff") + ij
 
 
@@ -201,8 +207,7 @@ def _friction_loads(fa0: ForceAnalysis, pairs: list[PairFriction], labels: list[
     moments: list[AppliedMoment] = []
     for p, lab, val in zip(pairs, labels, value, strict=True):
         rc = rows[p.joint.name]
-        back = "Mf" + lab[2:][::-1] if lab.startswith("Mf") else "Ff" + lab[2:][::-1]
-        for link, sign, name in ((rc.on, -1.0, lab), (rc.frm, 1.0, back)):
+        for link, sign, name in ((rc.on, -1.0, lab), (rc.frm, 1.0, _label(scene, rc, back=True))):
             if link == scene.frame:
                 continue
             if rc.guide is None:
