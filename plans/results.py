@@ -227,6 +227,12 @@ def table(sol: Solution, protocol: bool = False) -> str:
         from plans.cycle.results import cycle_text
 
         lines.append(cycle_text(sol.cycle))
+    if sol.forces is not None and sol.forces[0].friction is not None:
+        from plans.forces.friction import cycle_line
+
+        line = cycle_line(sol.forces[0])
+        if line:
+            lines.append(line)
     return "\n".join(lines)
 
 

@@ -314,3 +314,38 @@ def efficiency_json(fa: ForceAnalysis) -> dict[str, Any] | None:
         return None
     cyc = cycle_efficiency(fa) or {"cycle": None}
     return {**cyc, "phi_deg": [float(x) for x in fa.kin.phi_deg], "eta": [_num(x) for x in fr.efficiency]}
+
+
+def friction_lines(fa: ForceAnalysis, k: int) -> list[str]:
+    """The friction of position k as text lines for ``plans solve`` (indented two spaces)."""
+    fr: FrictionResult | None = fa.friction
+    if fr is None:
+        return []
+    unit = "N" if fa.crank.kind == "force" else "N·m"
+    eta = float(fr.efficiency[k])
+    settled = f"settled to {fr.spec.tolerance:g}" if fr.converged[k] else "did not settle: self-locking"
+    out = [f"  friction: {int(fr.iterations[k])} approximations ({settled}); balancing load "
+           f"{float(fr.frictionless.balancing[k]):.6g} {unit} without friction, "
+           + (f"{float(fa.balancing[k]):.6g} {unit} with it" if fr.converged[k] else "none with it")
+           + (f"; η = {eta:.4f}" if np.isfinite(eta) else "; η undefined")]
+    for p in fr.pairs:
+        kind = "couple" if p.reaction.guide is None else "force"
+        u = "N·m" if p.reaction.guide is None else "N"
+        if p.sense[k] == 0:
+            out.append(f"    {p.name:10s} {p.label:6s} sense undetermined (relative motion stops): "
+                       f"|{kind}| ≤ {float(p.limit[k]):.6g} {u}")
+        else:
+            out.append(f"    {p.name:10s} {p.label:6s} {kind} {float(p.load[k]):.6g} {u}, "
+                       f"loss {float(p.loss[k]):.6g} W")
+    for name in fr.self_locking(k):
+        out.append(f"    self-locking here: {name}")
+    return out
+
+
+def cycle_line(fa: ForceAnalysis) -> str | None:
+    """η over the cycle as one line, where the positions are a whole turn."""
+    eff = efficiency_json(fa)
+    if eff is None or eff.get("cycle") is None:
+        return None
+    return (f"efficiency over the cycle: η = A_useful / A_driving = {eff['A_useful']:.6g} / "
+            f"{eff['A_driving']:.6g} J = {eff['cycle']:.4f} (friction {eff['A_friction']:.6g} J)")

@@ -421,4 +421,8 @@ def table_lines(fa: ForceAnalysis, lv: LeverAnalysis, k: int) -> list[str]:
     lines.append(f"  balancing {fa.crank.kind}: by kinetostatics {clean(float(fa.balancing[k]), cyc):.6g} {unit}, "
                  f"by lever {'-' if b is None else f'{clean(float(b), cyc):.6g}'} {unit} (positive along the motion of "
                  f"{fa.crank.point})")
+    if fa.friction is not None:
+        from plans.forces.friction import friction_lines
+
+        lines += friction_lines(fa, k)
     return lines
