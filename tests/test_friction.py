@@ -319,3 +319,50 @@ def test_a_slide_has_no_pin_radius():
     scene = parse_scene(text, "bad.toml")
     with pytest.raises(InputError, match=r"joints\[3\]\.pin_radius"):
         kinetostatics(scene, solve(scene, order=2))
+
+
+def test_drawn_reaction_line_is_tangent_to_the_friction_circle_on_the_opposing_side():
+    """On the free body of each group: a circle about each pin with friction, and the
+    reaction's line at the circle's radius from the pin, on the side where the reaction's
+    moment about the pin opposes ω_ij (the sense read here from the link rates)."""
+    from drawings.forces_panels import crank_panel, group_panel
+
+    scene, kin, fa, _ = _solved("shaper_friction", phis=[40.0, 130.0])
+    fr = fa.friction
+    pins = {p.name: p for p in fr.pairs if p.reaction.guide is None}
+    seen = 0
+    for k in range(kin.n):
+        panels = [group_panel(scene, kin, gf, k, 400.0, "en", "mu", fr) for gf in fa.groups]
+        panels.append(crank_panel(scene, kin, fa, k, 400.0, "en", "mu"))
+        prims = {p.eid: p for pn in panels for p in pn.prims if p.eid}
+        for rc in fa.reactions():
+            p = pins.get(rc.joint.name)
+            if p is None:
+                continue
+            circle = next(v for e, v in prims.items() if e.endswith(f"friction-{p.label}-circle"))
+            line = next(v for e, v in prims.items() if e.endswith(f"friction-{p.label}-line"))
+            (c,) = circle.pts
+            (a, b) = line.pts
+            # distance of the pin from the line, and the side (paper y points down)
+            dx, dy = b[0] - a[0], b[1] - a[1]
+            side = (dx * (c[1] - a[1]) - dy * (c[0] - a[0])) / np.hypot(dx, dy)
+            assert abs(abs(side) - circle.r) <= 1e-9
+            w = kin.omega(rc.on)[k] - (kin.omega(rc.frm)[k] if rc.frm != scene.frame else 0.0)
+            F = complex(rc.F[k])
+            # the line's point nearest the pin, in model axes (y up) relative to the pin
+            t = ((c[0] - a[0]) * dx + (c[1] - a[1]) * dy) / (dx * dx + dy * dy)
+            foot = complex(a[0] + t * dx - c[0], -(a[1] + t * dy - c[1]))
+            moment = (np.conj(foot) * F).imag  # of F about the pin, ccw+
+            assert np.sign(moment) == -np.sign(w)
+            seen += 1
+    assert seen >= 6
+
+
+def test_sheet_panels_with_friction_have_the_efficiency_diagram():
+    from drawings.friction_marks import efficiency_panels
+
+    scene, kin, fa, _ = _solved("v_engine_friction")
+    panels = efficiency_panels(fa, "ru")
+    assert [p.pid for p in panels] == ["friction-eta", "friction-table"]
+    curve = [p for p in panels[0].prims if p.eid.startswith("friction-eta-curve")]
+    assert curve and len(curve[0].pts) == kin.n + 1  # the turn closed back to its first position
