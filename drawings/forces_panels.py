@@ -48,12 +48,16 @@ ARM = Style(width=0.18, stroke="#555", dash=(1.5, 1.0))
 FBD_ARROW_MM = 32.0
 
 _NAME = re.compile(r"^(Phi|M_Phi|[A-Z])(\d+)(.*)$")
+_FRICTION = re.compile(r"^([MF])f(\d+)$")
 
 
 def force_label(label: str, lang: str = "en") -> str:
     """``F21^τ`` -> ``F_21^τ``, ``Phi2`` -> ``Φ_2``, ``M_Phi2'`` -> ``M_Φ2'``, ``F_bal`` -> ``F_ур`` (ru)."""
     if label == "F_bal":
         return "F_ур" if lang == "ru" else "F_bal"
+    f = _FRICTION.match(label)
+    if f:  # a friction couple or force of a pair: M_f21, F_f36
+        return f"{f.group(1)}_{{f{f.group(2)}}}"
     if label.startswith("M_Phi"):
         return "M_{Φ" + label[5:].rstrip("'") + "}" + "'" * (len(label) - len(label.rstrip("'")))
     m = _NAME.match(label)

@@ -102,7 +102,7 @@ def zhukovsky_lever(fa: ForceAnalysis, scale: float | None = None) -> LeverAnaly
         local = scene.links[f.link].points.get(f.point, f.local)
         v = add(f.label, f.link, _image_name(f.point), local, f.F)
         power += (f.F.conjugate() * v).real  # F·v
-    for m in fa.applied.moments:
+    for m in _on_the_lever(fa.applied.moments, kin):
         for label, link, pt, local, F in _couple(fa, m):
             add(label, link, pt, local, F)
         power += m.M * kin.omega(m.link)  # M·ω, not through the couple's forces
@@ -149,6 +149,25 @@ def _auto_scale(fa: ForceAnalysis) -> float:
             assert v is not None
             fastest = max(fastest, float(np.max(np.abs(v))))
     return nice_scale(fastest)
+
+
+def _on_the_lever(moments: tuple[AppliedMoment, ...], kin: Any) -> list[AppliedMoment]:
+    """The couples as the lever takes them: a link's friction couples (one per pin) summed
+    into one, M_f of that link (the lever moment and the power are the sum's); none on a
+    link that only translates (ω = 0: no lever moment, no power)."""
+    out: list[AppliedMoment] = []
+    friction: dict[int, AppliedMoment] = {}
+    for m in moments:
+        if m.kind != "friction":
+            out.append(m)
+        elif not np.any(kin.omega(m.link)):
+            continue
+        elif m.link in friction:
+            was = friction[m.link]
+            friction[m.link] = AppliedMoment(was.label, m.link, was.M + m.M, "friction")
+        else:
+            friction[m.link] = AppliedMoment(f"M_f{m.link}", m.link, m.M, "friction")
+    return out + list(friction.values())
 
 
 def _couple(fa: ForceAnalysis, m: AppliedMoment):
