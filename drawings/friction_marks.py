@@ -82,7 +82,7 @@ def efficiency_rows(fa: Any, k: int, lang: str) -> list[tuple[str, ...]]:
     name = f"{letter}_ур" if ru else f"{letter}_bal"
     eta = float(fr.efficiency[k])
     dash = "—"
-    rows = [
+    rows: list[tuple[str, ...]] = [
         (f"{name} ({'без трения' if ru else 'no friction'})", dash, dash, dash, dash,
          fmt(float(fr.frictionless.balancing[k]), 5, lang), unit, dash),
         (f"{name} ({'с трением' if ru else 'with friction'})", dash, dash, dash, dash,
