@@ -63,19 +63,21 @@ def _friction_of(scene, kin, rc, coef):
         rel = kin.omega(rc.on) - (kin.omega(rc.frm) if rc.frm != scene.frame else 0.0)
         sense = np.where(np.abs(rel) > 1e-9 * w1, np.sign(rel), 0.0)
         M = -coef * np.abs(rc.F) * sense
-        return M, np.zeros(n, complex), np.abs(M * rel), rel
-    # the relative velocity of the two links at the contact point, from ω and a point's v
+        return M, np.zeros(n, complex), np.abs(M * rel), rel, rc.r
+    # the relative velocity of the two links at the slider's pin, from ω and a point's v
+    at = kin.point(rc.joint.point, rc.joint.slider)[0]
+
     def v_at(link):
         if link == scene.frame:
             return np.zeros(n, complex)
         pin = scene.links[link].axis[0]
         r0, v0, _ = kin.point(pin, link)
-        return v0 + 1j * kin.omega(link) * (rc.r - r0)
+        return v0 + 1j * kin.omega(link) * (at - r0)
 
     rel = ((v_at(rc.on) - v_at(rc.frm)) * np.conj(rc.guide)).real
     sense = np.where(np.abs(rel) > 1e-9 * w1 * kin.reach(), np.sign(rel), 0.0)
     F = -coef * np.abs(_cross(rc.guide, rc.F)) * sense * rc.guide
-    return np.zeros(n), F, np.abs(F) * np.abs(rel), rel
+    return np.zeros(n), F, np.abs(F) * np.abs(rel), rel, at
 
 
 def _residuals(scene, kin, fa):
@@ -93,12 +95,12 @@ def _residuals(scene, kin, fa):
         if m.kind != "friction":
             M[m.link] += m.M
     for rc in fa.reactions():
-        mf, ff, _, _ = _friction_of(scene, kin, rc, coefs[rc.joint.name])
+        mf, ff, _, _, at = _friction_of(scene, kin, rc, coefs[rc.joint.name])
         for link, s in ((rc.on, 1.0), (rc.frm, -1.0)):
             if link == scene.frame:
                 continue
             F[link] += s * (rc.F + ff)
-            M[link] += s * (_cross(rc.r, rc.F + ff) + rc.M + mf)
+            M[link] += s * (_cross(rc.r, rc.F) + _cross(at, ff) + rc.M + mf)
     c = fa.crank
     if c.kind == "force":
         F[c.link] += c.F_bal * c.e_bal
@@ -142,7 +144,7 @@ def test_power_balance_with_the_losses(stem):
     losses = np.zeros(n)
     data = json.loads(json.dumps(to_json(solve_scene(scene))))
     for rc in fa.reactions():
-        _, _, loss, _ = _friction_of(scene, kin, rc, coefs[rc.joint.name])
+        _, _, loss, _, _ = _friction_of(scene, kin, rc, coefs[rc.joint.name])
         assert np.all(loss >= 0)
         losses += loss
         if coefs[rc.joint.name] > 0:
@@ -366,3 +368,21 @@ def test_sheet_panels_with_friction_have_the_efficiency_diagram():
     assert [p.pid for p in panels] == ["friction-eta", "friction-table"]
     curve = [p for p in panels[0].prims if p.eid.startswith("friction-eta-curve")]
     assert curve and len(curve[0].pts) == kin.n + 1  # the turn closed back to its first position
+
+
+@pytest.mark.parametrize("stem", ["four_bar", "offset_slider_crank", "scotch_yoke", "six_bar", "six_link"])
+def test_every_kind_of_group_in_equilibrium_with_friction_and_the_lever_agrees(stem):
+    """RRR, RRP, RPR, PRP, RPP: friction in every pair, each link's equilibrium summed here, and
+    the lever (with the friction loads on it) giving the kinetostatic balancing load."""
+    scene = load_scene(_path(stem))
+    raw = dict(scene.raw)
+    raw["friction"] = {"f": 0.1, "pin_radius": 5}
+    scene = scene_from_dict(raw, scene.path)
+    kin = solve(scene, order=2)
+    fa, lv = kinetostatics(scene, kin)
+    assert fa.friction.converged.all() and fa.friction.pairs
+    wf, wm = _residuals(scene, kin, fa)
+    assert wf <= 1e-9 and wm <= 1e-9
+    big = np.max(np.abs(fa.balancing))
+    assert np.max(np.abs(lv.signed(lv.by_lever) - fa.balancing)) <= 1e-9 * big
+    assert np.max(np.abs(lv.signed(lv.by_power) - fa.balancing)) <= 1e-9 * big

@@ -182,12 +182,19 @@ def _relative(kin: Kinematics, rc: Reaction, omega1: R, reach: float) -> tuple[R
         rel = kin.omega(rc.on) - kin.omega(rc.frm)
         return rel, np.abs(rel) <= DUST * omega1
     v = []
+    at = contact(kin, rc)
     for link in (rc.on, rc.frm):
         m = kin.motion[link]
-        vl = kin.point_on(link, (rc.r - m.r0) * np.conj(m.rot))[1]
+        vl = kin.point_on(link, (at - m.r0) * np.conj(m.rot))[1]
         v.append(np.zeros(kin.n, complex) if vl is None else vl)
     rel = ((v[0] - v[1]) * np.conj(rc.guide)).real
     return rel, np.abs(rel) <= DUST * omega1 * reach
+
+
+def contact(kin: Kinematics, rc: Reaction) -> C:
+    """Where a slide's friction acts: its slider's pin on the guide (the joint's point)."""
+    jt = rc.joint
+    return kin.point(jt.point, jt.slider)[0]
 
 
 def _label(scene: Scene, rc: Reaction, back: bool = False) -> str:
@@ -214,7 +221,8 @@ def _friction_loads(fa0: ForceAnalysis, pairs: list[PairFriction], labels: list[
                 moments.append(AppliedMoment(name, link, sign * val, "friction"))
             else:
                 mo = kin.motion[link]
-                forces.append(AppliedForce(name, link, rc.point, rc.r, (rc.r - mo.r0) * np.conj(mo.rot),
+                at = contact(kin, rc)
+                forces.append(AppliedForce(name, link, rc.point, at, (at - mo.r0) * np.conj(mo.rot),
                                            sign * val * rc.guide, "friction"))
     return AppliedLoads(tuple(forces), tuple(moments))
 
