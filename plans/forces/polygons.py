@@ -602,6 +602,11 @@ class _Poly:
         words = why if isinstance(why, Phrase) else phrase("f_sum", x=why)
         self.steps.append(("closing", (a, b), label, phrase("f_join", label=label, a=a, b=b, why=words)))
 
+    def total(self, friction: str, normal: str, x: str) -> None:
+        """A slide's total reaction N + F_f where its friction was laid just before N."""
+        if friction in self.ends and self.ends[friction][1] == self.ends[normal][0]:
+            self.join(f"{normal}Σ", self.ends[friction][0], x, f"{normal} + {friction}")
+
     def end_of(self, labels: list[str], default: str) -> str:
         for lab in reversed(labels):
             if lab in self.ends:
@@ -632,6 +637,10 @@ def force_polygons(fa: ForceAnalysis, k: int) -> tuple[ForcePolygon, ...]:
         n1, n2, n3 = (rc.name(scene.fij) for rc in gf.reactions)
         li = [(f.label, complex(f.F[k])) for f in gf.loads_i]
         lj = [(f.label, complex(f.F[k])) for f in gf.loads_j]
+        # a slide's friction on j laid last: then it and the guide's normal reaction make the
+        # total reaction, leaning by the friction angle (F_ijΣ, drawn as their sum)
+        slide_f = f"Ff{n3[1:]}" if r3.guide is not None else ""
+        lj = [x for x in lj if x[0] != slide_f] + [x for x in lj if x[0] == slide_f]
         everything = [v for _, v in li + lj] + [complex(rc.F[k]) for rc in gf.reactions]
         poly = _Poly(mu_force(fa, everything))
         if g.kind in ("RRR", "RRP"):
@@ -653,6 +662,7 @@ def force_polygons(fa: ForceAnalysis, k: int) -> tuple[ForcePolygon, ...]:
             else:
                 assert r3.guide is not None
                 x = poly.intersect(n3, complex(1j * r3.guide[k]), f"{n1}^n", complex(r1.e_n[k]))
+                poly.total(slide_f, n3, x)
             poly.join(n1, x, poly.end_of([tau1], "o"), f"{n1}^n + {n1}^τ")
             poly.join(n2, end_i, x, phrase("f_closes_link", i=i))
         elif g.kind == "PRP":
@@ -663,6 +673,7 @@ def force_polygons(fa: ForceAnalysis, k: int) -> tuple[ForcePolygon, ...]:
             for lab, v in lj:
                 poly.lay(lab, v)
             x = poly.intersect(n3, complex(1j * r3.guide[k]), n1, complex(1j * r1.guide[k]))
+            poly.total(slide_f, n3, x)
             poly.join(n2, end_i, x, phrase("f_closes_link", i=i))
         elif g.kind == "RPP":
             assert r2.guide is not None and r3.guide is not None
