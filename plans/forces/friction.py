@@ -306,9 +306,9 @@ def friction_json(fr: FrictionResult, fa: ForceAnalysis, k: int) -> dict[str, An
         "tolerance": fr.spec.tolerance,
         "losses": {p.name: float(p.loss[k]) + 0.0 for p in fr.pairs},
         "F_bal": _num(fa.balancing[k]) if ok else None,
-        "F_bal_frictionless": float(fr.frictionless.balancing[k]),
+        "F_bal_frictionless": float(fr.frictionless.balancing[k]) + 0.0,
         "undetermined": [p.name for p in und],
-        "ranges": {p.name: {"load": p.label, "at_most": float(p.limit[k]),
+        "ranges": {p.name: {"load": p.label, "at_most": float(p.limit[k]) + 0.0,
                             "unit": "N*m" if p.reaction.guide is None else "N"} for p in und},
         "self_locking": fr.self_locking(k),
     }
