@@ -6,7 +6,7 @@
     f = 0.1                    # coefficient of friction: of a slide, and the reduced f' of a pin
     pin_radius = 10            # r of the pins (file unit); a pin's friction circle is ρ = f'·r
     friction_circle = 1        # or ρ itself for every turning pair (file unit)
-    tolerance = 1e-12          # the successive approximation stops when no reaction changes
+    tolerance = 1e-10          # the successive approximation stops when no reaction changes
                                # by more than this times the position's largest reaction
     max_iterations = 200
 
@@ -34,7 +34,7 @@ from plans.units import LENGTH_UNITS
 JOINT_FRICTION_KEYS = ("f", "pin_radius", "friction_circle")
 TABLE_KEYS = (*JOINT_FRICTION_KEYS, "tolerance", "max_iterations")
 #: The successive approximation's defaults.
-TOLERANCE = 1e-12
+TOLERANCE = 1e-10
 MAX_ITERATIONS = 200
 
 
