@@ -1,0 +1,169 @@
+"""One catalogue of the words and sentences ``plans`` writes, in English and in Russian.
+
+:data:`SHEET_WORDS` are the sheets' words, (Russian, English) as the sheets read them;
+:data:`TERMS` are the terminal's lines (``plans solve`` and its protocol, ``plans gears``,
+``plans cam``, ``plans balance``, ``plans check``), (English, Russian) as the protocol's
+sentences in :mod:`plans.phrases`, which merges them and writes them (:func:`plans.phrases.say`):
+a decimal comma in Russian, the textbook's Russian terms and symbols (F_ур, μ, π).
+
+One language per run: ``--language ru|en``, else the file's ``[sheet] language``, else English.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+SHEET_WORDS: dict[str, tuple[str, str]] = {
+    "scheme": ("Кинематическая схема", "Kinematic scheme"),
+    "positions": ("План положений механизма", "Plan of positions"),
+    "velocity": ("План скоростей", "Velocity plan"),
+    "acceleration": ("План ускорений", "Acceleration plan"),
+    "table": ("Результаты", "Results"),
+    "forces_table": ("Силы по планам сил", "Forces read off the polygons"),
+    "group": ("Группа", "Group"),
+    "group_polygon": ("План сил группы", "Force polygon of group"),
+    "crank": ("Начальное звено", "Initial link"),
+    "crank_polygon": ("План сил начального звена", "Force polygon of the initial link"),
+    "lever": ("Рычаг Жуковского", "Zhukovsky lever"),
+    "quantity": ("Величина", "Quantity"),
+    "segment": ("Отрезок", "Segment"),
+    "mm": ("мм", "mm"),
+    "scale": ("Масштаб", "Scale"),
+    "read": ("По чертежу", "Read"),
+    "exact": ("Точно", "Exact"),
+    "diff": ("Δ, %", "Δ, %"),
+    "unit": ("Ед.", "Unit"),
+    "m/s": ("м/с", "m/s"),
+    "m/s^2": ("м/с²", "m/s²"),
+    "rad/s": ("рад/с", "rad/s"),
+    "rad/s^2": ("рад/с²", "rad/s²"),
+    "N": ("Н", "N"),
+    "N*m": ("Н·м", "N·m"),
+    "mm/m": ("мм/м", "mm/m"),
+    "m/mm": ("м/мм", "m/mm"),
+    "mm/(m/s)": ("мм/(м/с)", "mm/(m/s)"),
+    "(m/s)/mm": ("(м/с)/мм", "(m/s)/mm"),
+    "mm/(m/s^2)": ("мм/(м/с²)", "mm/(m/s²)"),
+    "(m/s^2)/mm": ("(м/с²)/мм", "(m/s²)/mm"),
+    "mm/N": ("мм/Н", "mm/N"),
+    "N/mm": ("Н/мм", "N/mm"),
+    "dead": ("мёртвое положение", "dead position"),
+    "ccw": ("против часовой", "counter-clockwise"),
+    # title block (GOST 2.104, form 1)
+    "izm": ("Изм.", "Rev."),
+    "list": ("Лист", "Sheet"),
+    "ndoc": ("№ докум.", "Doc. No."),
+    "sign": ("Подп.", "Sign."),
+    "date": ("Дата", "Date"),
+    "author": ("Разраб.", "Drawn"),
+    "checked": ("Пров.", "Checked"),
+    "tcontr": ("Т.контр.", "Tech."),
+    "ncontr": ("Н.контр.", "Std."),
+    "approved": ("Утв.", "Approved"),
+    "lit": ("Лит.", "Lit."),
+    "mass": ("Масса", "Mass"),
+    "mscale": ("Масштаб", "Scale"),
+    "sheet": ("Лист", "Sheet"),
+    "sheets": ("Листов", "Sheets"),
+    "balancing": ("Уравновешивающая сила", "Balancing force"),
+    "by_groups": ("кинетостатика", "kinetostatics"),
+    "by_lever": ("рычаг Жуковского", "Zhukovsky lever"),
+    "by_power": ("баланс мощностей", "power balance"),
+}
+
+
+#: key -> (English, Russian): the terminal's lines.  Fields as in :mod:`plans.phrases`.
+TERMS: dict[str, tuple[str, str]] = {
+    # ---- plans solve
+    "t_position": ("phi = {phi:g} deg", "φ = {phi:g}°"),
+    "t_point": ("  {nm} x = {x:.6g} m  y = {y:.6g} m", "  {nm} x = {x:.6g} м  y = {y:.6g} м"),
+    "t_ill": ("  warning: group {g} is ill-conditioned here (condition number {c:.1e}: its construction lines "
+              "meet at {a:.1e} rad)",
+              "  внимание: группа {g} здесь плохо обусловлена (число обусловленности {c:.1e}: её линии построения "
+              "пересекаются под углом {a:.1e} рад)"),
+    "t_velocity": ("velocity", "скоростей"),
+    "t_acceleration": ("acceleration", "ускорений"),
+    "t_plan": ("  {kind} plan, {sc}", "  план {kind}, {sc}"),
+    "t_mu": ("mu = {mu:.6g} {unit}", "μ = {mu:.6g} {unit}"),
+    "t_k": ("K = {k:.6g} {unit}/mm", "K = {k:.6g} {unit}/мм"),
+    "t_note": ("    note: {d}", "    примечание: {d}"),
+    "w_quantity": ("quantity", "величина"),
+    "w_segment": ("segment", "отрезок"),
+    "w_read": ("read", "по чертежу"),
+    "w_drawing": ("drawing", "по чертежу"),
+    "w_exact": ("exact", "точно"),
+    "w_difference": ("difference", "разность"),
+    "w_unit": ("unit", "ед."),
+    "w_mm": ("mm", "мм"),
+    "t_construction": ("  construction of the {kind} plan:", "  построение плана {kind}:"),
+    "t_force_head": ("  force analysis (F_ij = force {fij}), lever turned 90° {sense}, μv = {mu:g} mm/(m/s)",
+                     "  силовой расчёт (F_ij — {fij}), рычаг повёрнут на 90° {sense}, μv = {mu:g} мм/(м/с)"),
+    "t_on_i": ("on link i from link j", "сила, действующая на звено i со стороны звена j"),
+    "t_of_i": ("of link i on link j", "сила, действующая со стороны звена i на звено j"),
+    "t_polygon_note": ("    note (polygon {g}): {d}", "    примечание (план сил {g}): {d}"),
+    "t_balancing": (
+        "  balancing {kind}: by kinetostatics {kin:.6g} {unit}, by lever {lev} {unit} (positive along the motion "
+        "of {pt})",
+        "  уравновешивающ{kind}: по кинетостатике {kin:.6g} {unit}, по рычагу Жуковского {lev} {unit} "
+        "({end} по направлению движения точки {pt})"),
+    "t_force_protocol": ("  force analysis, {plan}:", "  силовой расчёт, {plan}:"),
+    "t_crank": ("crank", "начальное звено"),
+    "t_lever": ("lever", "рычаг Жуковского"),
+    "r_polygon": ("{label} (polygon {g}, μF = {mu:g} mm/N)", "{label} (план сил {g}, μF = {mu:g} мм/Н)"),
+    "r_arm": ("h_{lab} in {eq} = 0 (μl = {mu:g} mm/m)", "h_{lab} в {eq} = 0 (μl = {mu:g} мм/м)"),
+    "r_lever_arm": ("h_{lab} on the lever (μv = {mu:g})", "h_{lab} на рычаге (μv = {mu:g})"),
+    "r_kin": ("{sym} by kinetostatics", "{sym} по кинетостатике"),
+    "r_lever": ("{sym} by Zhukovsky's lever", "{sym} по рычагу Жуковского"),
+    "r_power": ("{sym} by power balance", "{sym} по балансу мощностей"),
+    "r_delta": ("δ = ({l}_lever − {l}_kin)/{l}_kin (coursework, from the drawings)",
+                "δ = ({l}_рыч − {l}_кин)/{l}_кин (по чертежам)"),
+}
+
+#: Russian symbols of the terminal's English spellings (the textbook's letters; π is the
+#: acceleration pole, p the velocity pole).
+_SYMBOLS = ((r"\bp_a(?![A-Z_])", "π"), (r"\bp_v(?![A-Z_])", "p"), (r"\bomega_?(?=\w)", "ω"), (r"\beps_?(?=\w)", "ε"),
+            (r"(?<![A-Za-z])Phi(?=\w)", "Φ"), (r"\bmu\b", "μ"), (r"\^2\b", "²"), (r"\b([FM])_bal\b", r"\1_ур"),
+            (r"\brad/s", "рад/с"), (r"(?<![\w/])m/s", "м/с"), (r"\bmm\b", "мм"), (r"\bN·m\b", "Н·м"),
+            (r"(?<=\d )N\b", "Н"), (r"\bN\b(?= )", "Н"), (r"\binitial link\b", "начальное звено"),
+            (r"\b(RRR|RRP|RPR|PRP|RPP|PRR|PPR) group\b", r"группа \1"), (r"\bgroup\b", "группа"))
+
+
+def symbols(text: str, lang: str) -> str:
+    """``text`` with the textbook's Russian symbols and units in Russian (unchanged in English)."""
+    if lang != "ru":
+        return text
+    import re
+
+    for pattern, repl in _SYMBOLS:
+        text = re.sub(pattern, repl, text)
+    return text
+
+
+def choose(asked: str | None, data: Mapping[str, Any] | None = None) -> str:
+    """The run's language: the one asked for, else the file's ``[sheet] language``, else English."""
+    if asked in ("ru", "en"):
+        return asked
+    sheet = data.get("sheet") if isinstance(data, Mapping) else None
+    lang = sheet.get("language") if isinstance(sheet, Mapping) else None
+    return lang if lang in ("ru", "en") else "en"
+
+
+def file_language(asked: str | None, path: str) -> str:
+    """:func:`choose` for a file read by its own reader: its ``[sheet]`` table read again
+    (already validated by then, so a failure here just means English)."""
+    if asked in ("ru", "en"):
+        return asked
+    import tomllib
+
+    try:
+        with open(path, "rb") as fh:
+            return choose(None, tomllib.load(fh))
+    except (OSError, ValueError):
+        return "en"
+
+
+def add_option(parser: Any) -> None:
+    """``--language ru|en`` on a command."""
+    parser.add_argument("--language", choices=("ru", "en"),
+                        help="language of the output (default: the file's [sheet] language, else English)")
