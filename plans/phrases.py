@@ -194,7 +194,7 @@ PHRASES.update(TERMS)  # the terminal's lines: one catalogue, written one way
 
 #: Units written in Russian (a value named ``unit...`` is one of these).
 UNITS_RU = {"N": "Н", "N·m": "Н·м", "m/s": "м/с", "m/s²": "м/с²", "rad/s": "рад/с", "rad/s²": "рад/с²",
-            "mm": "мм", "m": "м", "J": "Дж", "kg·m²": "кг·м²"}
+            "mm": "мм", "cm": "см", "m": "м", "J": "Дж", "kg·m²": "кг·м²"}
 
 _BAL = r"\b([FM])_bal\b"  # F_bal, M_bal as words (compiled by ``re`` when Russian is first written)
 
