@@ -188,6 +188,69 @@ TERMS: dict[str, tuple[str, str]] = {
     "c_no_undercut": ("  no undercut", "  подрезания нет"),
     "c_raise": ("  PRESSURE ANGLE above the permissible: raise the base radius to at least {r:.4f} {u}",
                 "  УГОЛ ДАВЛЕНИЯ больше допускаемого: увеличьте радиус начальной шайбы хотя бы до {r:.4f} {u}"),
+    # ---- plans balance
+    "b_head": ("{n} cylinders, {strokes}-stroke, r = {r:.6g} m, lambda = {lam:.6g}, omega = {w:.6g} rad/s; "
+               "moments about z = {z:.6g} m, l_c = {l:.6g} m",
+               "цилиндров {n}, тактность {strokes}, r = {r:.6g} м, λ = {lam:.6g}, ω = {w:.6g} рад/с; "
+               "моменты относительно плоскости z = {z:.6g} м, l_c = {l:.6g} м"),
+    "b_force": ("force", "сила"),
+    "b_moment": ("moment", "момент"),
+    "b_rotating": ("rotating masses", "вращающихся масс"),
+    "b_first_order": ("reciprocating, first order", "возвратно-движущихся масс первого порядка"),
+    "b_second_order": ("reciprocating, second order", "возвратно-движущихся масс второго порядка"),
+    "b_branch_forward": (", forward polygon", ", прямой многоугольник"),
+    "b_branch_backward": (", backward polygon", ", обратный многоугольник"),
+    "b_polygon": ("{q} of the {kind} (phase diagram of order {order}{branch}), unit {unit:.6g} {u}",
+                  "{q} {kind} (фазовая диаграмма порядка {order}{branch}), единица {unit:.6g} {u}"),
+    "b_amplitude": ("  amplitude {a:.6g} {u} ({d:.4g} units), phase {ph:.4g} deg",
+                    "  амплитуда {a:.6g} {u} ({d:.4g} ед.), фаза {ph:.4g}°"),
+    "b_counterweights": ("counterweights:", "противовесы:"),
+    "b_no_counterweights": ("counterweights: none needed", "противовесы: не нужны"),
+    "b_cw_rotating": ("rotating", "вращ."),
+    "b_cw_first_order": ("first_order", "1-й порядок"),
+    "b_counterweight": ("  {of} plane z = {z:.6g} m: m*r = {mr:.6g} kg*m ({m:.6g} kg at {r:.6g} m), "
+                        "at {a:.4g} deg from crank 1",
+                        "  {of} плоскость z = {z:.6g} м: m·r = {mr:.6g} кг·м ({m:.6g} кг на {r:.6g} м), "
+                        "под углом {a:.4g}° к кривошипу 1"),
+    "b_note": ("note: {t}", "примечание: {t}"),
+    "b_note_against": (
+        "first-order reciprocating force or moment has a part turning against the crank: a counterweight on "
+        "the crankshaft cannot take it (it only moves it to the other plane); balancing shafts can",
+        "у силы или момента первого порядка есть часть, вращающаяся против кривошипа: противовес на "
+        "коленчатом валу её не уравновесит (лишь перенесёт в другую плоскость); это могут уравновешивающие валы"),
+    "b_note_second": (
+        "second-order reciprocating force or moment turns at twice the crank speed: no counterweight on the "
+        "crankshaft takes it (balancing shafts at 2 omega can)",
+        "сила или момент второго порядка вращается с удвоенной угловой скоростью: противовес на коленчатом "
+        "валу её не уравновесит (это могут уравновешивающие валы, вращающиеся с 2ω)"),
+    "b_exact": ("\nexact check (kinetostatics of {how}, {n} positions): largest shaking force {f:.6g} N, harmonic "
+                "truncation error {fe:.6g} N; largest shaking moment {m:.6g} N*m, truncation error {me:.6g} N*m",
+                "\nточная проверка (кинетостатика {how}, положений {n}): наибольшая неуравновешенная сила {f:.6g} Н, "
+                "погрешность отбрасывания гармоник {fe:.6g} Н; наибольший неуравновешенный момент {m:.6g} Н·м, "
+                "погрешность {me:.6g} Н·м"),
+    "b_one_linkage": ("the engine as one linkage", "двигателя как одного механизма"),
+    "b_linkages": ("{n} linkages, one per cylinder", "{n} механизмов, по одному на цилиндр"),
+    "k_bank": ("bank {n} (axis {axis:.4g} deg; cylinders {names}): resultants along its axis",
+               "ряд {n} (ось {axis:.4g}°; цилиндры {names}): равнодействующие вдоль его оси"),
+    "k_first_order": ("first order", "первого порядка"),
+    "k_second_order": ("second order", "второго порядка"),
+    "k_polygon": ("  {what}: polygon at [{angles}] deg, ", "  {what}: многоугольник при [{angles}]°, "),
+    "k_closes": ("closes: 0", "замыкается: 0"),
+    "k_closing": ("closing {c:.6g} units -> {a:.6g} {u} * cos({k}alpha + {ph:.4g} deg)",
+                  "замыкающая {c:.6g} ед. → {a:.6g} {u} · cos({k}α + {ph:.4g}°)"),
+    "k_combined": ("banks combined (the tip of the resultant over a turn):",
+                   "ряды вместе (конец равнодействующей за оборот):"),
+    "k_zero": ("balanced", "уравновешено"),
+    "k_circle": ("a circle", "окружность"),
+    "k_line": ("a line", "отрезок прямой"),
+    "k_ellipse": ("an ellipse", "эллипс"),
+    "k_locus_circle": (", max {mx:.6g} {u} at alpha = 0 along {d:.4g} deg, min {mn:.6g} {u}",
+                       ", max {mx:.6g} {u} при α = 0 в направлении {d:.4g}°, min {mn:.6g} {u}"),
+    "k_locus": (", max {mx:.6g} {u} along {d:.4g} deg, min {mn:.6g} {u}",
+                ", max {mx:.6g} {u} в направлении {d:.4g}°, min {mn:.6g} {u}"),
+    "k_turning": (", turning {s} the crank", ", вращается {s}"),
+    "k_with": ("with", "вместе с кривошипом"),
+    "k_against": ("against", "против вращения кривошипа"),
     "r_polygon": ("{label} (polygon {g}, μF = {mu:g} mm/N)", "{label} (план сил {g}, μF = {mu:g} мм/Н)"),
     "r_arm": ("h_{lab} in {eq} = 0 (μl = {mu:g} mm/m)", "h_{lab} в {eq} = 0 (μl = {mu:g} мм/м)"),
     "r_lever_arm": ("h_{lab} on the lever (μv = {mu:g})", "h_{lab} на рычаге (μv = {mu:g})"),
