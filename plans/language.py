@@ -251,6 +251,8 @@ TERMS: dict[str, tuple[str, str]] = {
     "k_turning": (", turning {s} the crank", ", вращается {s}"),
     "k_with": ("with", "вместе с кривошипом"),
     "k_against": ("against", "против вращения кривошипа"),
+    "y_plans": ("Plans over the cycle", "Планы за цикл"),
+    "y_positions": ("Positions over the cycle", "Положения за цикл"),
     "r_polygon": ("{label} (polygon {g}, μF = {mu:g} mm/N)", "{label} (план сил {g}, μF = {mu:g} мм/Н)"),
     "r_arm": ("h_{lab} in {eq} = 0 (μl = {mu:g} mm/m)", "h_{lab} в {eq} = 0 (μl = {mu:g} мм/м)"),
     "r_lever_arm": ("h_{lab} on the lever (μv = {mu:g})", "h_{lab} на рычаге (μv = {mu:g})"),
@@ -264,7 +266,7 @@ TERMS: dict[str, tuple[str, str]] = {
 #: Russian symbols of the terminal's English spellings (the textbook's letters; π is the
 #: acceleration pole, p the velocity pole).
 _SYMBOLS = ((r"\bp_a(?![A-Z_])", "π"), (r"\bp_v(?![A-Z_])", "p"), (r"\bomega_?(?=\w)", "ω"), (r"\beps_?(?=\w)", "ε"),
-            (r"(?<![A-Za-z])Phi(?=\w)", "Φ"), (r"\bmu\b", "μ"), (r"\^2\b", "²"), (r"\b([FM])_bal\b", r"\1_ур"),
+            (r"(?<![A-Za-z])Phi(?=\w)", "Φ"), (r"\bmu\b", "μ"), (r"\^2\b", "²"), (r"(?<![A-Za-z])([FM])_bal\b", r"\1_ур"),
             (r"\brad/s", "рад/с"), (r"(?<![\w/])m/s", "м/с"), (r"\bmm\b", "мм"), (r"\bN·m\b", "Н·м"),
             (r"(?<=\d )N\b", "Н"), (r"\bN\b(?= )", "Н"), (r"\binitial link\b", "начальное звено"),
             (r"\b(RRR|RRP|RPR|PRP|RPP|PRR|PPR) group\b", r"группа \1"), (r"\bgroup\b", "группа"))

@@ -244,7 +244,7 @@ def table(sol: Solution, protocol: bool = False, lang: str = "en") -> str:
     if sol.cycle is not None:
         from plans.cycle.results import cycle_text
 
-        lines.append(cycle_text(sol.cycle))
+        lines.append(cycle_text(sol.cycle, lang))
     if sol.forces is not None and sol.forces[0].friction is not None:
         from plans.forces.friction import cycle_line
 
