@@ -116,3 +116,15 @@ def test_the_scan_finds_english_words():
     assert _latin_words("v_BA = 1,2 mm/(m/s) at the pole") == {"mm", "at", "the", "pole"}
     assert _latin_words("h_Phi2 на рычаге, F_bal") == {"Phi", "bal"}
     assert not _latin_words("v_BA ⟂ AB, πa = 12,5 мм, n_BA, F21^τ, cos(2α), RRR")
+
+
+def test_demonstration_heading_in_the_page_language():
+    """A Russian page is headed by the scene's Russian title, an English page by the English one."""
+    from plans.demo.lesson import lesson
+    from plans.scene.model import load_scene
+
+    scene = load_scene(SAMPLES / "whitworth.toml")
+    with open(SAMPLES / "whitworth.toml", "rb") as fh:
+        titles = tomllib.load(fh)["title"]
+    assert lesson(scene, frames=2, language="ru")["title"] == titles["ru"]
+    assert lesson(scene, frames=2, language="en")["title"] == titles["en"]
