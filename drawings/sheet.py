@@ -251,6 +251,14 @@ class Sheet:
         replay(self.prims or self.render(), be)
         return be.tostring()
 
+    def dxf(self) -> bytes:
+        """The sheet as DXF bytes: the same primitives at 1:1 in millimetres, panels as
+        blocks, layers by content and line type (:mod:`drawings.dxf`)."""
+        from .dxf import document as dxf_document
+
+        return dxf_document(self.width, self.height, self.prims or self.render(), self.spec.language,
+                            self.spec.title)
+
     def _repr_svg_(self) -> str:
         return self.svg()
 
