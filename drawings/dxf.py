@@ -109,7 +109,7 @@ Ent = tuple[str, str, str, Any, Any, tuple]
 
 
 def _r(v: float) -> float:
-    return round(v, 4) + 0.0  # 0.1 µm; never -0.0
+    return round(float(v), 4) + 0.0  # 0.1 µm; a Python float (repr), never -0.0
 
 
 class DxfBackend:
@@ -123,12 +123,11 @@ class DxfBackend:
         self.bases = bases or {}
         self.blocks: dict[str, list[Ent]] = {}  # name -> entities, in order of appearance
         self.base_of: dict[str, tuple[float, float]] = {}
-        self.model: list[Ent] = []  # entities outside every group
         self.layers: dict[str, str] = {}  # name -> line kind
         self.linetypes: dict[str, tuple[float, ...]] = {}
         self.stack: list[tuple[str, str]] = []
         self._names: set[str] = set()
-        self._ents = self.model
+        self._ents: list[Ent] | None = None  # the open block's entities
         self._content = "frame"
         self._bx = 0.0
         self._by = 0.0
@@ -137,22 +136,32 @@ class DxfBackend:
 
     def begin(self, gid: str, cls: str = "") -> None:
         if not self.stack:
-            name = (gid or "group").translate(_BAD_NAME).lstrip("*") or "group"
-            k, base = 2, name
-            while name.casefold() in self._names:  # CAD block names ignore case (dyn-W, dyn-w)
-                name, k = f"{base}-{k}", k + 1
-            self._names.add(name.casefold())
-            self.blocks[name] = self._ents = []
-            bx, by = self.bases.get(gid, (0.0, self.height))
-            self._bx, self._by = _r(bx), _r(self.height - by)
-            self.base_of[name] = (self._bx, self._by)
+            self._open(gid)
         self.stack.append((gid, cls))
         self._content = self._content_now()
+
+    def _open(self, gid: str) -> list[Ent]:
+        """A new block for a top-level group (or for what is drawn outside every group,
+        named "sheet"): the sheet's drawing order is model space's order of INSERTs."""
+        name = (gid or "sheet").translate(_BAD_NAME).lstrip("*") or "sheet"
+        k, base = 2, name
+        while name.casefold() in self._names:  # CAD block names ignore case (dyn-W, dyn-w)
+            name, k = f"{base}-{k}", k + 1
+        self._names.add(name.casefold())
+        ents: list[Ent] = []
+        self.blocks[name] = self._ents = ents
+        bx, by = self.bases.get(gid, (0.0, self.height))
+        self._bx, self._by = _r(bx), _r(self.height - by)
+        self.base_of[name] = (self._bx, self._by)
+        return ents
+
+    def _list(self) -> list[Ent]:
+        return self._ents if self._ents is not None else self._open("")
 
     def end(self) -> None:
         self.stack.pop()
         if not self.stack:
-            self._ents = self.model
+            self._ents = None
             self._bx, self._by = 0.0, 0.0
         self._content = self._content_now()
 
@@ -196,7 +205,7 @@ class DxfBackend:
 
     def line(self, p0: Pt, p1: Pt, style: Style, eid: str = "") -> None:
         if style.stroke:
-            self._ents.append(("LINE", *self._stroke(style), (self._p(p0), self._p(p1))))
+            self._list().append(("LINE", *self._stroke(style), (self._p(p0), self._p(p1))))
 
     def polyline(self, pts: Sequence[Pt], style: Style, eid: str = "") -> None:
         self._poly(pts, style, closed=False)
@@ -210,19 +219,19 @@ class DxfBackend:
         if fill is not None and len(q) >= 3:
             layer, color = fill
             if len(q) == 3:
-                self._ents.append(("SOLID", layer, "", None, color, tuple(q)))
+                self._list().append(("SOLID", layer, "", None, color, tuple(q)))
             else:
-                self._ents.append(("HATCH", layer, "", None, color, ("poly", tuple(q))))
+                self._list().append(("HATCH", layer, "", None, color, ("poly", tuple(q))))
         if style.stroke and len(q) >= 2:
-            self._ents.append(("LWPOLYLINE", *self._stroke(style), (closed, tuple(q))))
+            self._list().append(("LWPOLYLINE", *self._stroke(style), (closed, tuple(q))))
 
     def circle(self, c: Pt, r: float, style: Style, eid: str = "") -> None:
         q, rr = self._p(c), _r(r)
         fill = self._fill(style)
         if fill is not None:
-            self._ents.append(("HATCH", fill[0], "", None, fill[1], ("circle", q, rr)))
+            self._list().append(("HATCH", fill[0], "", None, fill[1], ("circle", q, rr)))
         if style.stroke:
-            self._ents.append(("CIRCLE", *self._stroke(style), (q, rr)))
+            self._list().append(("CIRCLE", *self._stroke(style), (q, rr)))
 
     def arc(self, c: Pt, r: float, a0: float, a1: float, style: Style, eid: str = "") -> None:
         if not style.stroke:
@@ -233,7 +242,7 @@ class DxfBackend:
         # paper angles run clockwise (y down); DXF arcs run counter-clockwise from the start
         lo, hi = min(a0, a1), max(a0, a1)
         start, stop = math.degrees(-hi) % 360.0, math.degrees(-lo) % 360.0
-        self._ents.append(("ARC", *self._stroke(style), (self._p(c), _r(r), _r(start), _r(stop))))
+        self._list().append(("ARC", *self._stroke(style), (self._p(c), _r(r), _r(start), _r(stop))))
 
     def text(self, label: Any, cls: str = "", eid: str = "", fill: str = "#000") -> None:
         layer = self._layer("text")
@@ -241,7 +250,7 @@ class DxfBackend:
         for run in label.runs:
             if run.text.strip():
                 value = run.text.replace("%%", "%%%")
-                self._ents.append(("TEXT", layer, "", None, color,
+                self._list().append(("TEXT", layer, "", None, color,
                                    (self._p((run.x, run.y)), _r(run.size * CAP), value)))
 
     def hatch(self, p0: Pt, p1: Pt, side: int, style: Style, step: float = 2.5,
@@ -278,11 +287,14 @@ def _bases(prims: Sequence[Prim]) -> dict[str, Pt]:
     return out
 
 
-def collect(width: float, height: float, prims: Iterable[Prim], language: str = "en") -> DxfBackend:
+def collect(width: float, height: float, prims: Iterable[Prim], language: str = "en",
+            bases: dict[str, Pt] | None = None) -> DxfBackend:
+    """The entities of recorded primitives, by block (``bases``: a group's base point on the
+    paper, by its id; a group not named there: its box's lower-left corner)."""
     from .backend import replay
 
     prims = list(prims)
-    be = DxfBackend(width, height, language, _bases(prims))
+    be = DxfBackend(width, height, language, {**_bases(prims), **(bases or {})})
     replay(prims, be)
     return be
 
@@ -356,9 +368,10 @@ def _write(doc: Any) -> str:
 
 
 def document(width: float, height: float, prims: Iterable[Prim], language: str = "en",
-             title: str = "") -> bytes:
-    """The DXF bytes of recorded primitives on a ``width`` × ``height`` mm sheet."""
-    be = collect(width, height, prims, language)
+             title: str = "", bases: dict[str, Pt] | None = None) -> bytes:
+    """The DXF bytes of recorded primitives on a ``width`` × ``height`` mm sheet: each
+    top-level group a block (``bases``: see :func:`collect`)."""
+    be = collect(width, height, prims, language, bases)
     with _fixed():
         return _document(be, title)
 
@@ -372,8 +385,6 @@ def _document(be: DxfBackend, title: str) -> bytes:
         blk = doc.blocks.get(name)
         owner = blk.block_record_handle
         parts[blk.endblk.dxf.handle] = "".join(tags.entity(e, handles.next(), owner) for e in ents)
-    msp_owner = doc.modelspace().block_record_handle
-    model = "".join(tags.entity(e, handles.next(), msp_owner) for e in be.model)
     text = _write(doc)
     out: list[str] = []
     pos = 0
@@ -382,18 +393,14 @@ def _document(be: DxfBackend, title: str) -> bytes:
         i = text.index(mark, pos)
         out += [text[pos:i], body]
         pos = i
-    if model:
-        i = text.index("  0\nENDSEC\n", text.index("  2\nENTITIES\n", pos))
-        out += [text[pos:i], model]
-        pos = i
     out.append(text[pos:])
     return "".join(out).encode("utf-8")
 
 
 def document_ezdxf(width: float, height: float, prims: Iterable[Prim], language: str = "en",
-                   title: str = "") -> bytes:
+                   title: str = "", bases: dict[str, Pt] | None = None) -> bytes:
     """:func:`document` with every entity made through ezdxf's API (the reference)."""
-    be = collect(width, height, prims, language)
+    be = collect(width, height, prims, language, bases)
     with _fixed():
         return _document_ezdxf(be, title)
 
@@ -404,9 +411,6 @@ def _document_ezdxf(be: DxfBackend, title: str) -> bytes:
         blk = doc.blocks.get(name)
         for e in ents:
             _add(blk, e)
-    msp = doc.modelspace()
-    for e in be.model:
-        _add(msp, e)
     return _write(doc).encode("utf-8")
 
 
