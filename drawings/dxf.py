@@ -9,8 +9,9 @@ solid thin, dash-dot, dashed) with true lineweights; text is on one layer.
 
 Lines are LINE, joints and circles CIRCLE, arcs ARC, curves LWPOLYLINE, filled
 arrowheads SOLID, filled dots and areas solid HATCH, each run of a label (base,
-subscript, superscript) one TEXT at the run's own baseline, so ``a^n_BA`` reads
-as on the SVG.  White fills (a joint's paper-coloured disc) have no CAD
+subscript, superscript) one TEXT from the run's own baseline start to its end as
+measured in the SVG's font ("fit" alignment), so ``a^n_BA`` reads as on the SVG
+whatever font the CAD program draws it in.  White fills (a joint's paper-coloured disc) have no CAD
 counterpart and are left out; their outlines stay.
 
 ezdxf writes the document (header, tables, blocks, objects).  The entities are
@@ -245,13 +246,18 @@ class DxfBackend:
         self._list().append(("ARC", *self._stroke(style), (self._p(c), _r(r), _r(start), _r(stop))))
 
     def text(self, label: Any, cls: str = "", eid: str = "", fill: str = "#000") -> None:
+        from .fonts import metrics
+
         layer = self._layer("text")
         color = rgb(fill)
+        width = metrics().width
         for run in label.runs:
             if run.text.strip():
                 value = run.text.replace("%%", "%%%")
+                x, y = self._p((run.x, run.y))
+                end = _r(x + width(run.text, run.size))
                 self._list().append(("TEXT", layer, "", None, color,
-                                   (self._p((run.x, run.y)), _r(run.size * CAP), value)))
+                                     ((x, y), _r(run.size * CAP), value, (end, y))))
 
     def hatch(self, p0: Pt, p1: Pt, side: int, style: Style, step: float = 2.5,
               length: float = 2.5, eid: str = "") -> None:
@@ -440,9 +446,11 @@ def _add(layout: Any, e: Ent) -> None:
     elif kind == "SOLID":
         layout.add_solid(data, dxfattribs=a)
     elif kind == "TEXT":
-        a["insert"] = data[0]
+        from ezdxf.enums import TextEntityAlignment
+
         a["style"] = STYLE
-        layout.add_text(data[2], height=data[1], dxfattribs=a)
+        layout.add_text(data[2], height=data[1], dxfattribs=a).set_placement(
+            data[0], data[3], align=TextEntityAlignment.FIT)
     elif kind == "HATCH":
         h = layout.add_hatch(dxfattribs=a)
         h.dxf.discard("color")
@@ -498,9 +506,9 @@ class _Tags:
 
     @staticmethod
     def TEXT(d: tuple) -> str:
-        (x, y), h, value = d
+        (x, y), h, value, (x1, y1) = d
         return (f"100\nAcDbText\n 10\n{x!r}\n 20\n{y!r}\n 30\n0.0\n 40\n{h!r}\n  1\n{value}\n"
-                f"  7\n{STYLE}\n100\nAcDbText\n")
+                f"  7\n{STYLE}\n 72\n5\n 11\n{x1!r}\n 21\n{y1!r}\n 31\n0.0\n100\nAcDbText\n")
 
     @staticmethod
     def HATCH(d: tuple) -> str:

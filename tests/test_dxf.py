@@ -271,3 +271,22 @@ OTHER_SAMPLES = sorted(p for d in ("gears", "cams", "engines") for p in (SAMPLES
 def test_every_other_gears_cam_and_engine_sample_as_dxf(path):
     for sh in _draw(path):
         assert differences(svg_shapes(sh.svg()), dxf_tags_shapes(sh.dxf())[0]) == [], (path.name, sh.number)
+
+
+def test_a_labels_runs_are_fitted_end_to_end_so_scripts_sit_where_the_svg_has_them(first):
+    """Each run is a "fit" TEXT from its start to its end measured in the SVG's font: a
+    script (a^n_BA, F_ур) starts where its base ends, in any CAD font."""
+    from ezdxf.enums import TextEntityAlignment
+
+    sh, doc = first
+    joined = 0
+    for block in doc.blocks:
+        texts = [e for e in block if e.dxftype() == "TEXT"]
+        for a, b in zip(texts, texts[1:], strict=False):
+            assert a.get_placement()[0] == TextEntityAlignment.FIT
+            assert a.dxf.align_point.x > a.dxf.insert.x and a.dxf.align_point.y == a.dxf.insert.y
+            script = b.dxf.height < a.dxf.height and b.dxf.insert.y != a.dxf.insert.y
+            if script and abs(b.dxf.insert.x - a.dxf.align_point.x) < 1.0:
+                assert b.dxf.insert.x == pytest.approx(a.dxf.align_point.x, abs=0.01)
+                joined += 1
+    assert joined >= 20
