@@ -345,6 +345,10 @@ def _skeleton(be: DxfBackend, title: str = "") -> Any:
             layer.dxf.lineweight = LINES[kind]
             layer.dxf.linetype = LAYER_LINETYPE.get(kind, "Continuous")
     doc.set_modelspace_vport(height=H * 1.05, center=(W / 2, H / 2))
+    # the paper layout: the sheet's own paper, one viewport showing model space at 1:1
+    paper = doc.layouts.get("Layout1")
+    paper.page_setup(size=(W, H), margins=(0, 0, 0, 0), units="mm", scale=(1, 1), name="plans")
+    paper.add_viewport(center=(W / 2, H / 2), size=(W, H), view_center_point=(W / 2, H / 2), view_height=H)
     for name in be.blocks:
         doc.blocks.new(name)
     for name in be.blocks:
