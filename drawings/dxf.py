@@ -348,8 +348,9 @@ def _skeleton(be: DxfBackend, title: str = "") -> Any:
     # the paper layout: the sheet's own paper, one viewport showing model space at 1:1
     paper = doc.layouts.get("Layout1")
     paper.page_setup(size=(W, H), margins=(0, 0, 0, 0), units="mm", scale=(1, 1), name="plans")
-    paper.add_viewport(center=(W / 2, H / 2), size=(W, H), view_center_point=(W / 2, H / 2), view_height=H,
-                       dxfattribs={"layer": "Defpoints"})  # its border never prints
+    paper.add_viewport(center=(W / 2, H / 2), size=(W, H), view_center_point=(W / 2, H / 2), view_height=H)
+    for vp in paper.viewports():
+        vp.dxf.layer = "Defpoints"  # a viewport's border never prints
     for name in be.blocks:
         doc.blocks.new(name)
     for name in be.blocks:
