@@ -337,8 +337,8 @@ def _skeleton(be: DxfBackend, title: str = "") -> Any:
     for name, dash in sorted(be.linetypes.items()):
         pattern = [float(sum(dash))] + [float(d) if i % 2 == 0 else -float(d) for i, d in enumerate(dash)]
         doc.linetypes.add(name, pattern=pattern, description=name)
-    for name, pattern in LAYER_LINETYPES.items():
-        doc.linetypes.add(name, pattern=list(pattern), description=name)
+    for name, own in LAYER_LINETYPES.items():
+        doc.linetypes.add(name, pattern=list(own), description=name)
     for name, kind in sorted(be.layers.items()):
         layer = doc.layers.add(name, color=7)
         if kind != "text":  # what a line drawn on the layer in CAD gets; ours carry their own
@@ -346,7 +346,7 @@ def _skeleton(be: DxfBackend, title: str = "") -> Any:
             layer.dxf.linetype = LAYER_LINETYPE.get(kind, "Continuous")
     doc.set_modelspace_vport(height=H * 1.05, center=(W / 2, H / 2))
     # the paper layout: the sheet's own paper, one viewport showing model space at 1:1
-    paper = doc.layouts.get("Layout1")
+    paper: Any = doc.layouts.get("Layout1")  # a Paperspace
     paper.page_setup(size=(W, H), margins=(0, 0, 0, 0), units="mm", scale=(1, 1), name="plans")
     paper.add_viewport(center=(W / 2, H / 2), size=(W, H), view_center_point=(W / 2, H / 2), view_height=H)
     for vp in paper.viewports():
