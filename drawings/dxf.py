@@ -27,6 +27,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable, Iterator, Sequence
 from contextlib import contextmanager
+from functools import lru_cache
 from typing import Any
 
 from .backend import Prim, Pt, Style, hatch_segments
@@ -70,6 +71,7 @@ _WHITE = {"#fff", "#ffffff", "white"}
 _BAD_NAME = str.maketrans({c: "_" for c in '<>/\\":;?*|=,`'})
 
 
+@lru_cache(maxsize=256)
 def lineweight(width: float) -> int:
     """The DXF lineweight nearest a stroke width in mm (a tie: the heavier)."""
     w = width * 100.0
@@ -86,6 +88,7 @@ def line_kind(style: Style) -> str:
     return "main" if style.width >= 0.45 else "thin"
 
 
+@lru_cache(maxsize=256)
 def rgb(color: str | None) -> int | None:
     """A CSS ``#rgb``/``#rrggbb`` colour as a DXF true colour; None for black (by layer)."""
     if not color or not color.startswith("#"):

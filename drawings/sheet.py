@@ -266,9 +266,12 @@ class Sheet:
         prims = self.prims or self.render()
         sizes = [len(p.prims) for p, _, _ in self.placed]
         start = len(prims) - sum(sizes)
-        out, bases = list(prims[:start]), {}
+        out: list[Prim] = list(prims[:max(start, 0)])
+        bases: dict[str, tuple[float, float]] = {}
         for (panel, x, y), n in zip(self.placed, sizes, strict=True):
             part = prims[start:start + n]
+            if start < 0 or not part or part[0] != panel.prims[0].moved(x, y):
+                return list(prims), {}  # drawn otherwise than render() draws: blocks by groups
             start += n
             whole = n > 1 and part[0].op == "begin" and _closes_at_end(part)
             if not whole:
