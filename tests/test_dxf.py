@@ -220,6 +220,8 @@ def test_same_bytes_every_time_and_the_same_as_ezdxfs_own_entities(drawn):
     prims, bases = sh._dxf_blocks()
     assert document_ezdxf(sh.width, sh.height, prims, sh.spec.language, sh.spec.title, bases) == first
     assert b"$TDCREATE\n 40\n2451545.0\n" in first  # ezdxf's fixed date (2000-01-01), not today's
+    auditor = _read(first).audit()  # handles, owners, tables, references: all as CAD expects
+    assert not auditor.has_errors and not auditor.has_fixes, [str(e) for e in auditor.errors + auditor.fixes]
 
 
 def test_draw_writes_one_dxf_per_sheet_beside_the_other_formats(tmp_path, capsys):
