@@ -377,6 +377,10 @@ def _fixed() -> Iterator[None]:
 def _write(doc: Any) -> str:
     import io
 
+    # ezdxf adds the CLASS entries of the object types in use in a set's order (it changes
+    # with the process's string hashes): added first here, in one order, they stay put
+    doc.classes.add_required_classes(doc.dxfversion)
+    doc.classes.classes = dict(sorted(doc.classes.classes.items()))
     out = io.StringIO()
     doc.write(out)
     return out.getvalue()

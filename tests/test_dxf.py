@@ -242,12 +242,16 @@ def test_draw_writes_one_dxf_per_sheet_beside_the_other_formats(tmp_path, capsys
 
 
 def _run(code: str) -> str:
-    got = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, timeout=300)
+    import os
+
+    env = {**os.environ, "PYTHONHASHSEED": "7"}  # another process, other hashes: the same bytes
+    got = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, timeout=300,
+                         env=env)
     assert got.returncode == 0, got.stderr
     return got.stdout.strip()
 
 
-def test_ezdxf_is_loaded_only_when_dxf_is_asked_for(tmp_path):
+def test_ezdxf_is_loaded_only_when_dxf_is_asked_for(drawn, tmp_path):
     """Solving (``plans gears``; ``plans solve`` loads nothing of the renderer at all, see
     test_layering) and drawing SVG leave ezdxf unloaded; drawing DXF loads it."""
     code = ("import contextlib, io, sys\n"
@@ -263,6 +267,22 @@ def test_ezdxf_is_loaded_only_when_dxf_is_asked_for(tmp_path):
             " '--format', 'dxf']) == 0\n"
             "print('ezdxf' in sys.modules)\n")
     assert _run(code).split() == ["False", "False", "True"]
+    for sh in drawn["gears"]:  # written by another process with other string hashes
+        assert (tmp_path / f"seed_train-{sh.number}.dxf").read_bytes() == sh.dxf()
+
+
+def test_a4_portrait_sheet_is_210_by_297(tmp_path):
+    from drawings.cams import draw
+
+    sh = draw(SAMPLES / "cams" / "flat_face_poly345.toml", format="A4", orientation="portrait").sheets[0]
+    doc = _read(sh.dxf())
+    assert tuple(doc.header["$EXTMAX"])[:2] == (210.0, 297.0)
+    border = next(e for e in doc.blocks.get("frame") if e.dxftype() == "LWPOLYLINE")
+    ins = next(e for e in doc.modelspace() if e.dxf.name == "frame").dxf.insert
+    xs = sorted({x + ins.x for x, _ in border.get_points("xy")})
+    ys = sorted({y + ins.y for _, y in border.get_points("xy")})
+    assert (xs, ys) == ([20.0, 205.0], [5.0, 292.0])
+    assert differences(svg_shapes(sh.svg()), dxf_tags_shapes(sh.dxf())[0]) == []
 
 
 OTHER_SAMPLES = sorted(p for d in ("gears", "cams", "engines") for p in (SAMPLES / d).glob("*.toml")
