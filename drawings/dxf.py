@@ -272,23 +272,26 @@ class DxfBackend:
 # --------------------------------------------------------------------------- the document
 
 
-def _bases(prims: Sequence[Prim]) -> dict[str, Pt]:
-    """Each top-level group's base point: the lower-left corner of its box (paper mm)."""
-    out: dict[str, Pt] = {}
+def _bases(prims: Sequence[Prim], known: dict[str, Pt]) -> dict[str, Pt]:
+    """Each top-level group's base point: ``known``'s, else the lower-left corner of its
+    box, in whole millimetres (paper mm)."""
+    out: dict[str, Pt] = dict(known)
     depth = 0
     gid = ""
     box: list[float] = []
+    skip = False
     for p in prims:
         if p.op == "begin":
             if depth == 0:
                 gid, box = p.eid, [math.inf, -math.inf]
+                skip = gid in out
             depth += 1
         elif p.op == "end":
             depth -= 1
             if depth == 0 and gid not in out:
                 out[gid] = (math.floor(box[0]) if box[0] < math.inf else 0.0,
                             math.ceil(box[1]) if box[1] > -math.inf else 0.0)
-        elif depth:
+        elif depth and not skip:
             b = p.box()
             if b is not None:
                 box[0] = min(box[0], b[0])
@@ -303,7 +306,7 @@ def collect(width: float, height: float, prims: Iterable[Prim], language: str = 
     from .backend import replay
 
     prims = list(prims)
-    be = DxfBackend(width, height, language, {**_bases(prims), **(bases or {})})
+    be = DxfBackend(width, height, language, _bases(prims, bases or {}))
     replay(prims, be)
     return be
 
