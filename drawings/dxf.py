@@ -131,6 +131,7 @@ class DxfBackend:
         self.linetypes: dict[str, tuple[float, ...]] = {}
         self.stack: list[tuple[str, str]] = []
         self._names: set[str] = set()
+        self._strokes: dict[tuple[Style, str], tuple[str, str, int, int | None]] = {}
         self._ents: list[Ent] | None = None  # the open block's entities
         self._content = "frame"
         self._bx = 0.0
@@ -182,7 +183,7 @@ class DxfBackend:
     # ---- attributes
 
     def _p(self, p: Pt) -> tuple[float, float]:
-        return (_r(p[0] - self._bx), _r(self.height - p[1] - self._by))
+        return (round(float(p[0] - self._bx), 4) + 0.0, round(float(self.height - p[1] - self._by), 4) + 0.0)
 
     def _layer(self, kind: str) -> str:
         w = self.words
@@ -191,12 +192,16 @@ class DxfBackend:
         return name
 
     def _stroke(self, style: Style) -> tuple[str, str, int, int | None]:
-        kind = line_kind(style)
-        lt = ""
-        if style.dash:
-            lt = linetype_name(kind, style.dash)
-            self.linetypes.setdefault(lt, tuple(style.dash))
-        return self._layer(kind), lt, lineweight(style.width), rgb(style.stroke)
+        key = (style, self._content)
+        got = self._strokes.get(key)
+        if got is None:  # a sheet draws with a few dozen styles
+            kind = line_kind(style)
+            lt = ""
+            if style.dash:
+                lt = linetype_name(kind, style.dash)
+                self.linetypes.setdefault(lt, tuple(style.dash))
+            got = self._strokes[key] = (self._layer(kind), lt, lineweight(style.width), rgb(style.stroke))
+        return got
 
     def _fill(self, style: Style) -> tuple[str, int | None] | None:
         f = style.fill
