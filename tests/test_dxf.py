@@ -312,3 +312,20 @@ def test_a_labels_runs_are_fitted_end_to_end_so_scripts_sit_where_the_svg_has_th
                 assert b.dxf.insert.x == pytest.approx(a.dxf.align_point.x, abs=0.01)
                 joined += 1
     assert joined >= 20
+
+
+def test_ezdxfs_own_renderer_draws_the_sheet_on_its_paper(drawn):
+    """A third program's reading: ezdxf's drawing add-on renders the DXF (model space, mm)
+    onto the sheet's page, every block's lines and text included, without complaint."""
+    from ezdxf.addons.drawing import Frontend, RenderContext, layout
+    from ezdxf.addons.drawing.svg import SVGBackend
+
+    sh = drawn["gears"][-1]
+    doc = _read(sh.dxf())
+    backend = SVGBackend()
+    Frontend(RenderContext(doc), backend).draw_layout(doc.modelspace(), finalize=True)
+    page = layout.Page(sh.width, sh.height, layout.Units.mm, margins=layout.Margins.all(0))
+    svg = backend.get_string(page, settings=layout.Settings(fit_page=False, scale=1.0))
+    assert f'width="{sh.width:g}mm"' in svg and f'height="{sh.height:g}mm"' in svg
+    lines = sum(1 for s in svg_shapes(sh.svg()) if s[0] in ("LINE", "LWPOLYLINE"))
+    assert svg.count("<path") >= 1 and len(svg) > 20 * lines
