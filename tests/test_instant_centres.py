@@ -182,7 +182,7 @@ def test_json_names_and_plan_readings(name: str) -> None:
         for c in cs:
             assert set(c) >= {"links", "point", "direction", "from"}
             assert (c["point"] is None) != (c["direction"] is None) or c["undetermined"]
-            assert c["from"] == "pair" or (len(c["from"]) == 2 and all(len(p) == 2 for p in c["from"]))
+            assert c["from"] == "pair" or (c["from"] is None and c["undetermined"]) or (len(c["from"]) == 2 and all(len(p) == 2 for p in c["from"]))
         for v in pos["velocities_by_centres"]:
             if v["v_plan"] is not None:
                 assert math.isclose(v["v"], v["v_plan"], rel_tol=1e-9, abs_tol=1e-9 * (1 + v["v_exact"]))
