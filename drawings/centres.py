@@ -66,7 +66,7 @@ def _overlay(scene, kin, k: int, centres: dict, lang: str):
             if c.point is None or c.source in ("pair", None) or not inside(c.point):
                 continue
             for pair in (c.source, c.other):
-                ends = [centres[p].point for p in pair] + [c.point]
+                ends = [centres[tuple(sorted(p))].point for p in pair] + [c.point]
                 if any(e is None or not inside(e) for e in ends):
                     continue
                 u = ends[1] - ends[0] if abs(ends[1] - ends[0]) > 0 else c.point - ends[0]

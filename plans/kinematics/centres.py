@@ -41,7 +41,8 @@ class Centre:
     """P_ij: a point (m), or a direction at infinity (unit vector), or neither (undetermined).
 
     ``source`` is "pair" for a primary centre, else the two centres ((i, k), (k, j)) of the
-    first Kennedy line and ``other`` the two of the second."""
+    first Kennedy line (in that order, i < j; look a centre up by its sorted pair) and
+    ``other`` the two of the second."""
 
     links: tuple[int, int]
     point: complex | None
@@ -179,9 +180,8 @@ def kennedy(links: list[int], known: dict[tuple[int, int], Centre], size: float)
                     why[(i, j)] = "Kennedy's lines coincide"
                 continue
             _, kind, z, s1, s2 = best
-            s1 = tuple(_key(*c) for c in s1)
-            s2 = tuple(_key(*c) for c in s2)
-            found[(i, j)] = Centre((i, j), z if kind == "point" else None, z if kind == "direction" else None, s1, s2)
+            found[(i, j)] = Centre((i, j), z if kind == "point" else None, z if kind == "direction" else None,
+                                   s1, s2)  # as the circle diagram reads them: (i, k), (k, j)
             pending.remove((i, j))
             why.pop((i, j), None)
             progress = True
