@@ -182,7 +182,11 @@ def test_json_names_and_plan_readings(name: str) -> None:
         for c in cs:
             assert set(c) >= {"links", "point", "direction", "from"}
             assert (c["point"] is None) != (c["direction"] is None) or c["undetermined"]
-            assert c["from"] == "pair" or (c["from"] is None and c["undetermined"]) or (len(c["from"]) == 2 and all(len(p) == 2 for p in c["from"]))
+            if isinstance(c["from"], list):  # [[i, k], [k, j]]: the triangle i-k-j of the circle diagram
+                (a, k1), (k2, b) = c["from"]
+                assert [a, b] == c["links"] and k1 == k2 and k1 not in c["links"]
+            else:
+                assert c["from"] == "pair" or (c["from"] is None and c["undetermined"])
         open_ = any(c["point"] is None and c["direction"] is None for c in cs)
         for v in pos["velocities_by_centres"]:
             assert v["v"] is not None or open_
