@@ -6,12 +6,13 @@ from __future__ import annotations
 
 import cmath
 import math
+from types import SimpleNamespace
 
-from plans.kinematics.centres import Centre, all_links, centres_at
+from plans.kinematics.centres import Centre, all_links, centres_at, velocities_at
 
 from .backend import THIN, Recording, Style
 from .common import Placer, angle, arrow, fmt, ident, phi_tag
-from .panels import LABEL_SIZE, SMALL_SIZE, Panel, finish, scheme_panel
+from .panels import LABEL_SIZE, SMALL_SIZE, Panel, finish, scheme_panel, table_panel
 from .text import layout
 
 _WORDS = {
@@ -46,7 +47,27 @@ def centres_panels(scene, kin, k: int, mu_l: float, lang: str, strokes: dict) ->
     """The centres on the scheme at position k, and the circle diagram."""
     centres = centres_at(kin, k)
     return [scheme_panel(scene, kin, k, mu_l, lang, strokes, overlay=_overlay(scene, kin, k, centres, lang)),
-            diagram_panel(kin, k, centres, lang)]
+            diagram_panel(kin, k, centres, lang), velocity_table(scene, kin, k, centres, mu_l, lang)]
+
+
+def velocity_table(scene, kin, k: int, centres: dict, mu_l: float, lang: str) -> Panel:
+    """v = ω_j·|P_jf Q| for every named point, the arm measured on the scheme at μl, next to
+    the exact value (what the velocity plan reads too)."""
+    phi = float(kin.phi_deg[k])
+    ref = abs(scene.driver.omega) * kin.reach()
+    rows = []
+    for cv in velocities_at(kin, k, centres):
+        if cv.v is None:
+            continue
+        if cv.centre is None:  # a translating link: every point moves as P_1j
+            seg, mm, sc = None, None, None
+        else:
+            i, j = cv.centre
+            seg, mm, sc = f"P{i}{j} {cv.point}", (cv.distance or 0.0) * mu_l, mu_l
+        rows.append(SimpleNamespace(quantity=f"v_{cv.point}", segment=seg, length_mm=mm, scale=sc, value=abs(cv.v),
+                                    exact=abs(cv.exact), unit="m/s", ref=ref))
+    return table_panel(rows, lang, scene.scale_style, phi, pid=f"centre-table-{phi_tag(phi)}",
+                       title_key="centre_table")
 
 
 def _overlay(scene, kin, k: int, centres: dict, lang: str):

@@ -50,3 +50,16 @@ def test_same_scene_same_panels() -> None:
     p1, _ = _panels("slider_crank", 30.0)
     p2, _ = _panels("slider_crank", 30.0)
     assert p1["centres"].svg() == p2["centres"].svg()
+
+
+def test_velocity_table_reads_the_arm_on_the_scheme() -> None:
+    """The row of v_B: the arm |P_jf B| in mm at μl, the velocity ω_j·|P_jf B| next to the exact one."""
+    panels, mu_l = _panels("four_bar", 30.0)
+    table = panels["table"]
+    assert table.pid.startswith("centre-table-")
+    assert table.title.startswith("Скорости по мгновенным центрам") or table.title.startswith("Velocities by")
+    rows = [p.eid for p in table.prims if p.op == "begin" and p.eid.startswith(f"{table.pid}-row-")]
+    scene = load_scene(SAMPLES / "four_bar.toml")
+    kin = solve(scene, phi_deg=[30.0], order=1)
+    moving = [nm for nm in kin.point_names() if kin.home(nm) != scene.frame]
+    assert len(rows) == len(moving)
