@@ -192,3 +192,48 @@ def test_json_names_and_plan_readings(name: str) -> None:
             assert v["v"] is not None or open_
             if v["v_plan"] is not None and v["v"] is not None:
                 assert math.isclose(v["v"], v["v_plan"], rel_tol=1e-9, abs_tol=1e-9 * (1 + v["v_exact"]))
+
+
+def test_random_crank_rockers_and_offset_slider_cranks() -> None:
+    """Beyond the samples: random proportions (crank-rockers by Grashof, slider-cranks with
+    an offset and an inclined guide), random positions, every centre by its definition."""
+    import tomllib
+
+    from plans.scene.model import scene_from_dict
+
+    rng = np.random.default_rng(2024)
+    four = tomllib.loads((SAMPLES / "four_bar.toml").read_text(encoding="utf-8"))
+    slider = tomllib.loads((SAMPLES / "slider_crank.toml").read_text(encoding="utf-8"))
+    checked = 0
+    for _ in range(6):
+        d = dict(four)
+        crank = float(rng.uniform(30, 90))
+        frame_len, coupler, rocker = (float(x) for x in rng.uniform(200, 320, 3))
+        longest = max(frame_len, coupler, rocker)
+        if crank + longest > frame_len + coupler + rocker - longest:  # Grashof, the crank shortest
+            continue
+        d["points"] = {"O": [0, 0], "D": [frame_len, float(rng.uniform(-60, 60))]}
+        d["links"] = {**four["links"], "1": {**four["links"]["1"], "length": crank},
+                      "2": {**four["links"]["2"], "length": coupler}, "3": {**four["links"]["3"], "length": rocker}}
+        d.pop("loads", None)
+        scene = scene_from_dict(d, "random-four-bar")
+        kin = solve(scene, phi_deg=rng.uniform(0, 360, 10), order=1)
+        for k in range(kin.n):
+            _check(kin, k, kin.reach())
+            checked += 1
+    for _ in range(4):
+        d = dict(slider)
+        r = float(rng.uniform(50, 120))
+        joints = [dict(j) for j in slider["joints"]]
+        joints[3] = {**joints[3], "guide": {"link": 4, "through": [0, float(rng.uniform(-40, 40))],
+                                            "angle_deg": float(rng.uniform(-30, 30))}}
+        d["joints"] = joints
+        d["links"] = {**slider["links"], "1": {**slider["links"]["1"], "length": r},
+                      "2": {**slider["links"]["2"], "length": float(rng.uniform(3.2, 4.5)) * r}}
+        d.pop("loads", None)
+        scene = scene_from_dict(d, "random-slider-crank")
+        kin = solve(scene, phi_deg=rng.uniform(0, 360, 10), order=1)
+        for k in range(kin.n):
+            _check(kin, k, kin.reach())
+            checked += 1
+    assert checked >= 80
