@@ -1,0 +1,127 @@
+"""``plans design FILE [-o scene.toml] [--json PATH|-]``: size the mechanism of a synthesis
+file, prove it, write the linkage scene."""
+
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from .design import Design
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("design", help="design a mechanism from K, stroke, swing; prove it; write its scene")
+    p.add_argument("task", help="synthesis file (TOML, kind = \"synthesis\")")
+    p.add_argument("-o", "--output", metavar="SCENE", help="write the designed linkage scene (TOML) here")
+    p.add_argument("--json", metavar="PATH", help="write the design as JSON ('-' for stdout)")
+    p.set_defaults(func=_run)
+
+
+def _r(x: float, nd: int = 9) -> float:
+    y = round(float(x), nd)
+    return 0.0 if y == 0 else y
+
+
+def results(d: Design, scene: str) -> dict[str, Any]:
+    """The JSON document (lengths in the file's unit, angles in degrees; keys that do not
+    apply to the model are absent)."""
+    t = d.task
+    u = t.scale
+    m = d.measured[0]
+    out: dict[str, Any] = {"mechanism": t.mechanism, "model": d.model, "unit": t.unit,
+                           "lengths": {k: _r(v / u) for k, v in d.lengths.items()}}
+    if d.model != "three_positions":
+        out["theta_deg"] = _r(math.degrees(t.theta))
+        out["K"] = _r(t.K, 12)
+    out["K_measured"] = _r(m.K, 12)
+    if m.stroke is not None:
+        if d.model != "three_positions":
+            from .design import stroke_of
+
+            out["stroke"] = _r(stroke_of(t) / u)
+        out["stroke_measured"] = _r(m.stroke / u)
+    if m.swing is not None:
+        given = t.swing if t.mechanism == "crank_rocker" else t.theta if t.mechanism == "coulisse" else None
+        if given is not None and d.model != "three_positions":
+            out["swing_deg"] = _r(math.degrees(given))
+        out["swing_measured_deg"] = _r(math.degrees(m.swing))
+    out["gamma_min_deg"] = _r(math.degrees(min(x.gamma_min for x in d.measured)))
+    if t.mechanism != "crank_rocker":
+        out["pressure_angle_max_deg"] = _r(90.0 - out["gamma_min_deg"])
+    out["gamma_min_at_deg"] = _r(math.degrees(m.phi_gamma) % 360.0, 6)
+    out["extremes_deg"] = [_r(math.degrees(m.phi_start) % 360.0, 9), _r(math.degrees(m.phi_end) % 360.0, 9)]
+    out["full_rotation"] = all(x.full_rotation for x in d.measured)
+    if t.mechanism == "crank_rocker":
+        ls = sorted(d.lengths[k] for k in ("crank", "coupler", "rocker", "frame"))
+        out["grashof"] = ls[0] + ls[3] < ls[1] + ls[2]
+    if t.mechanism == "v_engine":
+        out["cylinders"] = [{"stroke_measured": _r(x.stroke / u), "K_measured": _r(x.K, 12)}  # type: ignore[operator]
+                            for x in d.measured]
+    if d.model == "three_positions":
+        from .numeric import wrap
+
+        fb = d.mechs[0]
+        assert t.positions is not None
+        out["positions_error_deg"] = _r(max(abs(math.degrees(wrap(fb.psi(phi) - psi))) for phi, psi in t.positions),
+                                        12)
+    if d.choice:
+        out["choice"] = d.choice
+    out["scene"] = scene
+    return out
+
+
+def summary(d: Design, res: dict[str, Any]) -> str:
+    t = d.task
+    u = t.unit
+    lines = [f"{t.title}: {t.mechanism.replace('_', ' ')} ({d.model.replace('_', ' ')})"]
+    lines.append("  " + ", ".join(f"{k} {v:.6g} {u}" for k, v in res["lengths"].items()))
+    if "K" in res:
+        lines.append(f"  K {res['K']:.6g} (θ {res['theta_deg']:.6g} deg), measured {res['K_measured']:.12g}")
+    else:
+        lines.append(f"  K measured {res['K_measured']:.12g}")
+    if "stroke_measured" in res:
+        given = f"stroke {res['stroke']:.6g} {u}, " if "stroke" in res else ""
+        lines.append(f"  {given}measured {res['stroke_measured']:.12g} {u}")
+    if "swing_measured_deg" in res:
+        given = f"swing {res['swing_deg']:.6g} deg, " if "swing_deg" in res else ""
+        lines.append(f"  {given}measured {res['swing_measured_deg']:.12g} deg")
+    line = f"  gamma_min {res['gamma_min_deg']:.6g} deg at phi {res['gamma_min_at_deg']:.6g} deg"
+    if "pressure_angle_max_deg" in res:
+        line += f"; pressure angle max {res['pressure_angle_max_deg']:.6g} deg"
+    lines.append(line)
+    if "positions_error_deg" in res:
+        lines.append(f"  the three positions met to {res['positions_error_deg']:.3g} deg")
+    lines.append("  the crank turns fully, one assembly branch" + ("; Grashof holds" if res.get("grashof") else ""))
+    if d.choice:
+        lines.append(f"  chosen: {d.choice}")
+    return "\n".join(lines)
+
+
+def _run(args: argparse.Namespace) -> int:
+    from plans.io import atomic_write, dumps, refuse_input
+
+    from .design import design
+    from .model import load_task
+    from .scene import scene_text
+
+    refuse_input(args.output, args.task)
+    refuse_input(args.json, args.task)
+    if args.output and args.json and args.json != "-" and args.output == args.json:
+        from plans.errors import OutputError
+
+        raise OutputError(f"{args.output}: the scene and the JSON would overwrite each other")
+    d = design(load_task(args.task))
+    text = scene_text(d)
+    res = results(d, args.output if args.output else text)
+    if args.output:
+        atomic_write(args.output, text)
+    if args.json == "-":
+        sys.stdout.write(dumps(res))
+        return 0
+    if args.json:
+        atomic_write(args.json, dumps(res))
+    print(summary(d, res))
+    return 0
