@@ -68,7 +68,9 @@ def results(d: Design, scene: str) -> dict[str, Any]:
         out["positions_error_deg"] = _r(max(abs(math.degrees(wrap(fb.psi(phi) - psi))) for phi, psi in t.positions),
                                         12)
     if d.choice:
-        out["choice"] = d.choice
+        from .design import choice_text
+
+        out["choice"] = choice_text(d.choice)
     out["scene"] = scene
     return out
 
@@ -96,7 +98,7 @@ def summary(d: Design, res: dict[str, Any]) -> str:
         lines.append(f"  the three positions met to {res['positions_error_deg']:.3g} deg")
     lines.append("  the crank turns fully, one assembly branch" + ("; Grashof holds" if res.get("grashof") else ""))
     if d.choice:
-        lines.append(f"  chosen: {d.choice}")
+        lines.append(f"  chosen: {res['choice']}")
     return "\n".join(lines)
 
 

@@ -37,13 +37,41 @@ class Design:
     working: str  # which stroke is the working one (see proof.measure)
     points: dict[str, complex]  # the construction's points: O, C1, C2, D, Oc, C, ...
     circle: tuple[complex, float] | None  # the construction's circle (centre, radius)
-    choice: str  # how a free choice was made ("" when none was left)
+    choice: tuple[str, float] | None  # how a free choice was made (see CHOICES), None when none was left
     measured: tuple[Measured, ...] = ()
     notes: tuple[str, ...] = field(default=())
 
     @property
     def theta(self) -> float:
         return self.task.theta
+
+
+#: The free choices a model makes, as said in English and in Russian ({} is an angle or λ).
+CHOICES = {
+    "least_pressure": ("the crank's pivot on the arc with the least maximum pressure angle ({})",
+                       "ось кривошипа на дуге — при наименьшем наибольшем угле давления ({})"),
+    "lambda_from_pressure": ("λ = sin[ϑ] = {}: the shortest rod within the permissible pressure angle",
+                             "λ = sin[ϑ] = {}: самый короткий шатун при допускаемом угле давления"),
+    "two_pivots": ("of the pivots the condition leaves, the one with the best γmin ({})",
+                   "из допустимых положений оси — с наибольшим γmin ({})"),
+    "shortest_frame": ("the shortest frame with γmin >= [γ] (γmin grows toward {} as the frame lengthens)",
+                       "самая короткая стойка с γmin >= [γ] (γmin растёт к {} с длиной стойки)"),
+    "best_gamma": ("the crank's pivot on the arc with the best γmin ({})",
+                   "ось кривошипа на дуге — при наибольшем γmin ({})"),
+    "mid_sagitta": ("the ram's guide through the middle of the sagitta of D's arc (pressure angle {})",
+                    "направляющая ползуна — через середину стрелки дуги точки D (угол давления {})"),
+}
+
+
+def choice_text(choice: tuple[str, float] | None, lang: str = "en") -> str:
+    """The sentence saying how the free choice was made ("" when there was none)."""
+    if choice is None:
+        return ""
+    key, v = choice
+    shown = f"{v:.6g}" if key == "lambda_from_pressure" else f"{math.degrees(v):.6g}°"
+    if lang == "ru":
+        shown = shown.replace(".", ",")
+    return CHOICES[key][1 if lang == "ru" else 0].format(shown)
 
 
 def fail(t: Task, key: str, message: str) -> InputError:
@@ -83,7 +111,7 @@ def slider_crank(t: Task) -> Design:
     Oc = complex(H / 2.0, hc)
     t_top = math.atan2(hc, -H / 2.0)  # the pivot right above C′ (AC′ ⟂ guide: a locked limit)
     t_low = math.atan2(-hc, -H / 2.0) + 2.0 * math.pi  # the pivot at C′ itself
-    choice = ""
+    choice = None
     if t.offset is not None:
         e = t.offset
         if not 0.0 < e < 2.0 * hc:
@@ -115,8 +143,7 @@ def slider_crank(t: Task) -> Design:
             raise fail(t, "pressure_angle_max_deg",
                        f"no crank pivot on the arc keeps the pressure angle within [ϑ] = "
                        f"{_deg(t.pressure_angle_max)} for K = {t.K:g}: the best is {_deg(best)}")
-        choice = ("the crank's pivot chosen on the arc for the least maximum pressure angle "
-                  f"({_deg(best)})")
+        choice = ("least_pressure", best)
     a, b = abs(A), abs(A - H)
     l1, l2, e = (b - a) / 2.0, (b + a) / 2.0, A.imag
     # to the scene's frame: O at the origin, the guide at y = −e (mirrored for cw)
@@ -146,10 +173,10 @@ def _central(t: Task, H: float) -> Design:
     r = H / 2.0
     if t.lam is not None:
         lam = t.lam
-        choice = ""
+        choice = None
     elif t.pressure_angle_max is not None:
         lam = math.sin(t.pressure_angle_max)
-        choice = f"λ = sin[ϑ] = {lam:.6g}: the shortest rod within the permissible pressure angle"
+        choice = ("lambda_from_pressure", lam)
     else:
         raise fail(t, "lambda", "missing; a central slider-crank needs λ = l1/l2 (or "
                                 "pressure_angle_max_deg)")
@@ -171,7 +198,7 @@ def v_engine(t: Task) -> Design:
     uC = cmath.exp(1j * (math.pi / 2 + half))
     mechs = (Slider(0j, r, l, 0j, uB), Slider(0j, r, l, 0j, uC))
     pts = {"O": 0j, "B1": (l - r) * uB, "B2": (l + r) * uB, "C1": (l - r) * uC, "C2": (l + r) * uC}
-    return Design(t, "v_engine", {"crank": r, "rod": l}, mechs, "away", pts, None, "")
+    return Design(t, "v_engine", {"crank": r, "rod": l}, mechs, "away", pts, None, None)
 
 
 # --------------------------------------------------------------------------- crank-rocker
@@ -237,7 +264,7 @@ def crank_rocker(t: Task) -> Design:
         return _candidate(A, C1, C2, l3, theta)
 
     picked: list[tuple[_Candidate, Any]] = []
-    choice = ""
+    choice: tuple[str, float] | None = None
     if t.frame is not None or t.frame_angle is not None:
         for f, lo, hi, circ in families:
             for A in _family_meets(f, lo, hi, circ, t):
@@ -251,11 +278,10 @@ def crank_rocker(t: Task) -> Design:
             raise fail(t, key, f"no crank-rocker with {what} gives the swing {_deg(psi)} at K = {t.K:g}: "
                                "the pivot's line misses the arc where the crank turns fully on one branch")
         if len(picked) > 1:
-            choice = "of the pivots the condition leaves, the one with the best γ_min"
+            choice = ("two_pivots", max(k.gamma for k, _ in picked))
     elif theta <= 1e-12:
         picked = [_k1_pick(t, families[0][0], cand)]
-        choice = (f"the shortest frame with γ_min >= [γ] (γ_min grows as the frame lengthens, toward "
-                  f"{_deg(math.pi / 2 - psi / 2)})")
+        choice = ("shortest_frame", math.pi / 2 - psi / 2)
     else:
         best: tuple[_Candidate, Any] | None = None
         peaks = []  # (γ, family, grid index): the grid's local maxima of γ_min
@@ -298,7 +324,7 @@ def crank_rocker(t: Task) -> Design:
             raise fail(t, "gamma_min_deg", f"γ_min >= [γ] = {_deg(t.gamma_min)} cannot be met for the swing "
                                            f"{_deg(psi)} at K = {t.K:g}: the best pivot gives {_deg(best[0].gamma)}")
         picked = [best]
-        choice = f"the crank's pivot chosen on the arc for the best γ_min ({_deg(best[0].gamma)})"
+        choice = ("best_gamma", best[0].gamma)
     k, circ = max(picked, key=lambda kc: kc[0].gamma)
     return _four_bar_design(t, "crank_rocker", k.A, k.l1, k.l2, l3, k.flip,
                             {"C1": C1, "C2": C2, **({"Oc": circ[0]} if circ else {})},
@@ -372,7 +398,7 @@ def _family_meets(f, lo: float, hi: float, circ: Any, t: Task) -> list[complex]:
 
 
 def _four_bar_design(t: Task, model: str, A: complex, l1: float, l2: float, l3: float, flip: bool,
-                     extra: dict[str, complex], R: float | None, choice: str) -> Design:
+                     extra: dict[str, complex], R: float | None, choice: tuple[str, float] | None) -> Design:
     """To the scene's frame: O at the origin, D on +x; mirrored for K's sense."""
     d = -A
     rot = abs(d) / d  # turns O→D onto +x
@@ -447,7 +473,7 @@ def three_positions(t: Task) -> Design:
         pts[f"B{i + 1}"] = D + c * cmath.exp(1j * psi)
     mech = FourBar(0j, D, a, b, c, branch)
     return Design(t, "three_positions", {"crank": a, "coupler": b, "rocker": c, "frame": d}, (mech,), "away",
-                  pts, None, "")
+                  pts, None, None)
 
 
 def _det3(m: list) -> float:
@@ -473,14 +499,14 @@ def coulisse(t: Task) -> Design:
                                 "larger stroke or a smaller centre distance")
     low = l3 * math.cos(half)  # D's height at the extremes
     sag = l3 - low
-    choice = ""
+    choice = None
     if t.guide_height is not None:
         h = t.guide_height
         dev = max(l3 - h, h - low)
     else:
         h = (l3 + low) / 2.0
         dev = sag / 2.0
-        choice = "the ram's guide through the middle of the sagitta of D's arc (the least pressure angle)"
+        choice = ("mid_sagitta", math.asin(dev / t.rod) if t.rod is not None else t.pressure_angle_max or 0.0)
     if t.rod is not None:
         l4 = t.rod
         if l4 <= dev:

@@ -22,7 +22,6 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from plans.errors import InputError
 from plans.io import read_toml
 from plans.reader import Reader
 from plans.units import LENGTH_UNITS
