@@ -220,6 +220,8 @@ def _candidate(A: complex, C1: complex, C2: complex, l3: float, theta: float) ->
     a, b = abs(A - C1), abs(A - C2)
     if not a < b or a <= 0:
         return None
+    if abs(abs(cmath.phase((C2 - A) / (C1 - A))) - theta) > 1e-7:
+        return None  # the circle's other arc: there the chord subtends 180° − θ
     l1, l2, l0 = (b - a) / 2.0, (b + a) / 2.0, abs(A)
     ls = sorted((l0, l1, l2, l3))
     if not (l1 == ls[0] and l1 < ls[1] and ls[0] + ls[3] < ls[1] + ls[2]):
@@ -533,12 +535,32 @@ def coulisse(t: Task) -> Design:
 MODELS = {"slider_crank": slider_crank, "crank_rocker": crank_rocker, "coulisse": coulisse, "v_engine": v_engine}
 
 
+def _met(t: Task, d: Design, measured: tuple[Measured, ...]) -> None:
+    """The task's K, stroke and swing as the designed mechanism measures them (to 1e-7: the
+    proof finds them to 1e-12 and better; a miss is a task the model cannot meet)."""
+    for m in measured:
+        if not m.full_rotation:
+            continue
+        if d.model != "three_positions" and abs(m.K - t.K) > 1e-7 * t.K:
+            raise fail(t, "K", f"the designed mechanism gives K = {m.K:.9g}, not {t.K:g}; the task has no "
+                               f"{t.mechanism.replace('_', '-')} with this K")
+        if t.mechanism == "crank_rocker" and d.model != "three_positions" and t.swing is not None \
+                and m.swing is not None and abs(m.swing - t.swing) > 1e-7:
+            raise fail(t, "swing_deg", f"the designed mechanism swings {_deg(m.swing)}, not {_deg(t.swing)}")
+        if m.stroke is not None and t.mechanism != "crank_rocker":
+            H = stroke_of(t)
+            if abs(m.stroke - H) > 1e-7 * H:
+                raise fail(t, "stroke", f"the designed mechanism's stroke is {m.stroke / t.scale:.9g} {t.unit}, "
+                                        f"not {H / t.scale:g}")
+
+
 def design(t: Task) -> Design:
     """Size the mechanism and prove it: the measured K, stroke or swing, γ_min; a design that
     does not turn fully on one branch is refused (it never is, when the model is right)."""
     d = MODELS[t.mechanism](t)
     sense = t.sense
     measured = tuple(measure(m, sense, d.working) for m in d.mechs)
+    _met(t, d, measured)
     for m in measured:
         if not m.full_rotation:
             raise InputError(f"the designed mechanism does not turn fully on one assembly branch (assembly "
