@@ -475,3 +475,11 @@ def test_synthesis_sheet(path):
     assert "gamma-min" in ids
     if dr.design.circle is not None:
         assert "construction-circle" in ids
+
+
+def test_bench_goals_listed_for_every_model():
+    from plans.accuracy.synthesis_bench import GOALS, synthesis_goals
+
+    goals = synthesis_goals(ROOT / "samples", 0.003)
+    assert [g["key"] for g in goals] == [k for k, _, _ in GOALS]
+    assert all(g["unit"] == "s" and g["limit"] == 5e-3 and g["value"] > 0 for g in goals)

@@ -17,7 +17,7 @@ from __future__ import annotations
 import cmath
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, NamedTuple
 
 from plans.errors import InputError
 
@@ -204,8 +204,7 @@ def v_engine(t: Task) -> Design:
 # --------------------------------------------------------------------------- crank-rocker
 
 
-@dataclass(frozen=True)
-class _Candidate:
+class _Candidate(NamedTuple):
     A: complex  # the crank's pivot in the construction's frame (D at 0)
     l1: float
     l2: float
@@ -289,7 +288,7 @@ def crank_rocker(t: Task) -> Design:
         peaks = []  # (γ, family, grid index): the grid's local maxima of γ_min
         grids = []
         for j, (f, lo, hi, _circ) in enumerate(families):
-            n = 64
+            n = 48
             ps = [lo + (hi - lo) * (i + 0.5) / n for i in range(n)]
             ks = [cand(f(p)) for p in ps]
             grids.append((ps, ks))
@@ -312,7 +311,7 @@ def crank_rocker(t: Task) -> Design:
                 kk = cand(f(p))
                 return -kk.gamma if kk is not None else 1.0
 
-            p, _ = golden(neg, a, b) if b > a else (ps[i], 0.0)
+            p, _ = golden(neg, a, b, xtol=1e-7) if b > a else (ps[i], 0.0)
             kk = cand(f(p))
             if kk is None or kk.gamma < k.gamma:
                 kk = k

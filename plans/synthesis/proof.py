@@ -11,9 +11,10 @@ construction that sized it).  From that alone:
 * the minimum transmission angle γ_min is a minimum over the whole turn (golden section
   from every local minimum of a grid), the maximum pressure angle 90° − γ_min where the
   output is a slider;
-* the assembly margin (how far every group stays from its limiting position) is minimised
-  the same way: positive over the whole turn means the crank turns fully and the groups
-  keep one assembly branch.
+* a group that cannot be assembled at some angle has its links in line there (γ = 0): so
+  γ_min > 0 over the whole turn means the crank turns fully and the groups keep one
+  assembly branch; the assembly margin (how far the groups stay from their limiting
+  positions) is read where γ is least.
 
 Crank angles φ are absolute (from +x, counter-clockwise), lengths in metres.
 """
@@ -56,8 +57,7 @@ class Slider:
         return dw.real - w.imag * dw.imag / root
 
     def gamma(self, phi: float) -> float:
-        """The transmission angle: between the rod and the normal to the guide... as the
-        course counts it, 90° minus the pressure angle (the rod against the guide)."""
+        """The transmission angle, 90° minus the pressure angle (the rod against the guide)."""
         h = ((self.O + self.l1 * cmath.exp(1j * phi) - self.G0) * self.u.conjugate()).imag
         return math.atan2(math.sqrt(max(self.l2 * self.l2 - h * h, 0.0)), abs(h))
 
@@ -179,7 +179,7 @@ class Measured:
     swing: float | None  # the rocker's or coulisse's swing (rad)
     gamma_min: float  # the least transmission angle over the turn (rad)
     phi_gamma: float  # where it is (crank angle, rad)
-    margin: float  # the least assembly margin over the turn (m): > 0 turns fully on one branch
+    margin: float  # the assembly margin where γ is least (m): > 0 turns fully on one branch
     extremes: int  # how many extreme positions the output has over one turn (2)
 
     @property
@@ -206,8 +206,12 @@ def measure(mech: Slider | FourBar | Coulisse, sense: int, working: str = "away"
         ex = _extremes(mech.dpsi)
     else:
         ex = _extremes(mech.ds)
-    margin = minimum(mech.margin)[1]
+    # a group that cannot be assembled has γ = 0 there (its links in line), so γ_min > 0 is
+    # the crank's full turn on one branch; the margin is read where γ is least
     phi_g, g = minimum(mech.gamma)
+    margin = mech.margin(phi_g) if g > 0 else 0.0
+    if isinstance(mech, Coulisse):  # and the block never reaches the coulisse's pivot
+        margin = min(margin, abs(mech.O - mech.C) - mech.l1)
     if len(ex) != 2:
         return Measured(math.nan, math.nan, math.nan, None, None, g, phi_g, margin, len(ex))
     a, b = ex
