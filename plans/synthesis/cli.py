@@ -51,8 +51,8 @@ def results(d: Design, scene: str) -> dict[str, Any]:
     out["gamma_min_deg"] = _r(math.degrees(min(x.gamma_min for x in d.measured)))
     if t.mechanism != "crank_rocker":
         out["pressure_angle_max_deg"] = _r(90.0 - out["gamma_min_deg"])
-    out["gamma_min_at_deg"] = _r(math.degrees(m.phi_gamma) % 360.0, 6)
-    out["extremes_deg"] = [_r(math.degrees(m.phi_start) % 360.0, 9), _r(math.degrees(m.phi_end) % 360.0, 9)]
+    out["gamma_min_at_deg"] = _r(round(math.degrees(m.phi_gamma), 6) % 360.0, 6)
+    out["extremes_deg"] = [_r(round(math.degrees(x), 9) % 360.0, 9) for x in (m.phi_start, m.phi_end)]
     out["full_rotation"] = all(x.full_rotation for x in d.measured)
     if t.mechanism == "crank_rocker":
         ls = sorted(d.lengths[k] for k in ("crank", "coupler", "rocker", "frame"))
@@ -78,7 +78,10 @@ def results(d: Design, scene: str) -> dict[str, Any]:
 def summary(d: Design, res: dict[str, Any]) -> str:
     t = d.task
     u = t.unit
-    lines = [f"{t.title}: {t.mechanism.replace('_', ' ')} ({d.model.replace('_', ' ')})"]
+    kind = t.mechanism.replace("_", " ")
+    if d.model in ("central", "offset", "three_positions"):
+        kind += f" ({d.model.replace('_', ' ')})"
+    lines = [f"{t.title}: {kind}"]
     lines.append("  " + ", ".join(f"{k} {v:.6g} {u}" for k, v in res["lengths"].items()))
     if "K" in res:
         lines.append(f"  K {res['K']:.6g} (θ {res['theta_deg']:.6g} deg), measured {res['K_measured']:.12g}")

@@ -409,7 +409,7 @@ def _four_bar_design(t: Task, model: str, A: complex, l1: float, l2: float, l3: 
         w = w.conjugate() if flip else w
         return _mirror(w, t.sense)
 
-    D = to(0j)
+    D = complex(abs(A), 0.0)  # on +x exactly
     pts = {"O": 0j, "D": D, **{k: to(v) for k, v in extra.items()}}
     C1 = pts["C1"]
     P1 = -l1 * C1 / abs(C1)

@@ -24,7 +24,9 @@ def _n(x: float) -> float:
 
 
 def _xy(z: complex, scale: float) -> list[float]:
-    return [_n(z.real / scale), _n(z.imag / scale)]
+    """A point in the file's unit; a coordinate within rounding of 0 written as 0."""
+    tiny = 1e-12 * abs(z) + 1e-300
+    return [_n(z.real / scale) if abs(z.real) > tiny else 0.0, _n(z.imag / scale) if abs(z.imag) > tiny else 0.0]
 
 
 def scene_dict(d: Design) -> dict[str, Any]:
