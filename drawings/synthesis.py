@@ -29,9 +29,8 @@ WORST = Style(width=0.35, stroke="#c00000", dash=(3.0, 1.2))
 FAR = Style(width=0.5, stroke="#555")
 
 WORDS = {
-    "construction": ("Проектирование механизма: крайние положения, угол перекрытия θ",
-                     "Design of the mechanism: extreme positions, overlap angle θ"),
-    "table": ("Параметры механизма: задано, найдено, проверено", "The design: given, found, measured back"),
+    "construction": ("Крайние положения, угол перекрытия θ", "Extreme positions, overlap angle θ"),
+    "table": ("Задано, найдено, проверено", "Given, found, measured back"),
     "quantity": ("Величина", "Quantity"),
     "given": ("Задано", "Given"),
     "found": ("Найдено", "Found"),
@@ -155,6 +154,11 @@ def construction_panel(d: Design, lang: str, target: float) -> Panel:
                     continue
                 dot(rec, P(z), 0.6)
                 _text(rec, f"{name}{mark}", (P(z)[0] + 1.8, P(z)[1] - 1.8), LABEL, valign="bottom")
+    for name, z in fixed.items():
+        if name != "O":  # the frame's line between the pivots
+            rec.line(P(0j), P(z), THIN, f"frame-O{name}")
+        dot(rec, P(z), 0.9, f"pivot-{name}")
+        _text(rec, name, (P(z)[0] - 1.8, P(z)[1] + 1.8), LABEL, "end", "top", eid=f"label-{name}")
     # the overlap angle θ at the crank's pivot: the rays to the output's extreme points
     out_pt = {"central": "B", "offset": "B", "v_engine": "B", "crank_rocker": "B", "three_positions": "B",
               "coulisse": "A"}[d.model]
@@ -290,7 +294,7 @@ def _rows(d: Design, lang: str) -> list[tuple[str, str, str, str]]:
 
 def table_panel(d: Design, lang: str) -> Panel:
     rows = [(_w("quantity", lang), _w("given", lang), _w("found", lang), _w("measured", lang)), *_rows(d, lang)]
-    widths = [44.0, 40.0, 40.0, 48.0]
+    widths = [40.0, 34.0, 34.0, 44.0]
     h = 7.0
     rec = Recording()
     x = [0.0]
@@ -304,14 +308,25 @@ def table_panel(d: Design, lang: str) -> Panel:
     rec.line((0, len(rows) * h), (x[-1], len(rows) * h), MAIN)
     for xx in x:
         rec.line((xx, 0), (xx, len(rows) * h), MAIN if xx in (0.0, x[-1]) else HAIR)
-    note = d.choice and (("выбор: " if lang == "ru" else "chosen: ") + choice_text(d.choice, lang))
-    return finish("design-table", "table", None, rec, _w("table", lang), note=note or None)
+    if d.choice:  # how the free choice was made, wrapped under the table
+        words = (("выбор: " if lang == "ru" else "chosen: ") + choice_text(d.choice, lang)).split()
+        room = int(x[-1] / (SMALL * 0.55))
+        lines = [""]
+        for w in words:
+            if lines[-1] and len(lines[-1]) + 1 + len(w) > room:
+                lines.append(w)
+            else:
+                lines[-1] = f"{lines[-1]} {w}".strip()
+        for i, line in enumerate(lines):
+            _text(rec, line, (0.0, len(rows) * h + 4.0 + 4.0 * i), SMALL, eid=f"choice-{i}")
+    return finish("design-table", "table", None, rec, _w("table", lang))
 
 
 def build_panels(d: Design, spec: SheetSpec) -> list[Panel]:
     W, H = spec.size
     x0, y0, x1, y1 = usable(W, H)
-    target = min((x1 - x0) * 0.62, (y1 - y0) - TB_H - GAP - 30.0)
+    wide = (x1 - x0) > (y1 - y0)
+    target = min((x1 - x0) * (0.62 if wide else 0.95), (y1 - y0) - TB_H - GAP - 30.0 - (0 if wide else 90.0))
     return [construction_panel(d, spec.language, target), table_panel(d, spec.language)]
 
 
