@@ -105,6 +105,23 @@ def summary(d: Design, res: dict[str, Any]) -> str:
     return "\n".join(lines)
 
 
+def _check_scene(text: str, task_path: str) -> None:
+    """The written scene read back and solved as ``plans solve`` does: what [task] carried
+    that a scene refuses is one line naming the task's key (nothing is written)."""
+    from plans.errors import InputError
+    from plans.io import loads_toml
+    from plans.results import solve_scene
+    from plans.scene.model import scene_from_dict
+
+    try:
+        solve_scene(scene_from_dict(loads_toml(text, task_path), task_path))  # loads, dynamics too
+    except InputError as exc:
+        field = exc.field or ""
+        if field.startswith("driver."):
+            field = field.split(".", 1)[1]
+        raise InputError(exc.detail, file=task_path, field=f"task.{field}" if field else "task") from None
+
+
 def _run(args: argparse.Namespace) -> int:
     from plans.io import atomic_write, dumps, refuse_input
 
@@ -120,6 +137,7 @@ def _run(args: argparse.Namespace) -> int:
         raise OutputError(f"{args.output}: the scene and the JSON would overwrite each other")
     d = design(load_task(args.task))
     text = scene_text(d)
+    _check_scene(text, args.task)
     res = results(d, args.output if args.output else text)
     if args.output:
         atomic_write(args.output, text)

@@ -492,6 +492,9 @@ def coulisse(t: Task) -> Design:
     assert t.stroke is not None and t.centre_distance is not None
     H, l0, theta = t.stroke, t.centre_distance, t.theta
     half = theta / 2.0
+    if math.sin(half) > 1.0 - 1e-9:
+        raise fail(t, "K", f"K = {t.K:g} puts the crank's circle through the coulisse's pivot (θ = {_deg(theta)}); "
+                           "expected a smaller K")
     l1 = l0 * math.sin(half)
     l3 = H / (2.0 * math.sin(half))
     if l3 < l0 + l1:
