@@ -483,3 +483,28 @@ def test_bench_goals_listed_for_every_model():
     goals = synthesis_goals(ROOT / "samples", 0.003)
     assert [g["key"] for g in goals] == [k for k, _, _ in GOALS]
     assert all(g["unit"] == "s" and g["limit"] == 5e-3 and g["value"] > 0 for g in goals)
+
+
+def test_construction_readings_crank_rocker_and_coulisse():
+    import cmath
+
+    for sense in ("ccw", "cw"):
+        d = design(task(mechanism="crank_rocker", rocker=200, swing_deg=40, K=1.2, task={"sense": sense}))
+        (c, R), p = d.circle, d.points
+        for name in ("O", "C1", "C2"):
+            assert abs(abs(p[name] - c) - R) < 1e-9 * R
+        O, C1, C2, D = p["O"], p["C1"], p["C2"], p["D"]
+        assert abs(abs(C1 - D) - 0.2) < 1e-12 and abs(abs(C2 - D) - 0.2) < 1e-12
+        assert abs(abs(cmath.phase((C2 - D) / (C1 - D))) - math.radians(40)) < 1e-9
+        assert abs(abs(cmath.phase((C2 - O) / (C1 - O))) - theta_of(1.2)) < 1e-9
+        assert abs(d.lengths["crank"] - (abs(C2 - O) - abs(C1 - O)) / 2) < 1e-12
+        assert abs(d.lengths["coupler"] - (abs(C2 - O) + abs(C1 - O)) / 2) < 1e-12
+        assert abs(d.lengths["frame"] - abs(D - O)) < 1e-12
+    d = design(task(mechanism="coulisse", stroke=400, K=1.6, centre_distance=300, pressure_angle_max_deg=10))
+    p, L = d.points, d.lengths
+    for a in ("A1", "A2"):  # the crank at the extremes: on its circle, ⟂ the coulisse
+        A = p[a]
+        assert abs(abs(A) - L["crank"]) < 1e-12
+        assert abs((A.conjugate() * (A - p["C"])).real) < 1e-12
+    assert abs(abs(cmath.phase((p["D2"] - p["C"]) / (p["D1"] - p["C"]))) - theta_of(1.6)) < 1e-12
+    assert abs(abs(p["D2"] - p["D1"]) - 0.4) < 1e-12  # the chord of D's arc is the ram's stroke
