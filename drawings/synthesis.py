@@ -139,7 +139,8 @@ def construction_panel(d: Design, lang: str, target: float) -> Panel:
             rec.line(P(g0 + min(s) * u), P(g0 + max(s) * u), AXIS, f"guide-{i}")
     # the extreme positions: the links thick, the far one grey; the points labelled ′ and ″
     # (a V-engine: each cylinder's own)
-    sets = [(pos1, pos2, _links(d, pos1), None)]
+    sets: list[tuple[dict[str, complex], dict[str, complex], list[tuple[str, str]], tuple[str, ...] | None]] = [
+        (pos1, pos2, _links(d, pos1), None)]
     if d.model == "v_engine":
         m1 = d.measured[1]
         sets = [(pos1, pos2, [("O", "A"), ("A", "B")], ("A", "B")),
@@ -286,9 +287,8 @@ def _rows(d: Design, lang: str) -> list[tuple[str, str, str, str]]:
 
         fb = d.mechs[0]
         assert t.positions is not None
-        for k, (phi, psi) in enumerate(t.positions, 1):
-            rows.append((f"φ{k} → ψ{k}", f"{deg(phi)} → {deg(psi)}", "—", deg(fb.psi(phi) % (2 * math.pi))
-                         if False else deg(psi + wrap(fb.psi(phi) - psi), 10)))
+        for i, (phi, psi) in enumerate(t.positions, 1):
+            rows.append((f"φ{i} → ψ{i}", f"{deg(phi)} → {deg(psi)}", "—", deg(psi + wrap(fb.psi(phi) - psi), 10)))
     return rows
 
 
@@ -298,8 +298,8 @@ def table_panel(d: Design, lang: str) -> Panel:
     h = 7.0
     rec = Recording()
     x = [0.0]
-    for w in widths:
-        x.append(x[-1] + w)
+    for width in widths:
+        x.append(x[-1] + width)
     for i, row in enumerate(rows):
         y = i * h
         for j, cell in enumerate(row):
@@ -311,13 +311,13 @@ def table_panel(d: Design, lang: str) -> Panel:
     if d.choice:  # how the free choice was made, wrapped under the table
         words = (("выбор: " if lang == "ru" else "chosen: ") + choice_text(d.choice, lang)).split()
         room = int(x[-1] / (SMALL * 0.55))
-        lines = [""]
+        wrapped = [""]
         for w in words:
-            if lines[-1] and len(lines[-1]) + 1 + len(w) > room:
-                lines.append(w)
+            if wrapped[-1] and len(wrapped[-1]) + 1 + len(w) > room:
+                wrapped.append(w)
             else:
-                lines[-1] = f"{lines[-1]} {w}".strip()
-        for i, line in enumerate(lines):
+                wrapped[-1] = f"{wrapped[-1]} {w}".strip()
+        for i, line in enumerate(wrapped):
             _text(rec, line, (0.0, len(rows) * h + 4.0 + 4.0 * i), SMALL, eid=f"choice-{i}")
     return finish("design-table", "table", None, rec, _w("table", lang))
 

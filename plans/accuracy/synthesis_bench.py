@@ -31,8 +31,12 @@ def synthesis_goals(samples: Path, budget: float) -> list[dict[str, Any]]:
         if not f.exists():
             continue
         task = load_task(f)
-        g = _goal(key, what, LIMIT, "s", timeit(lambda task=task: design(task), budget))
+
+        def run(task: Any = task) -> Any:
+            return design(task)
+
+        g = _goal(key, what, LIMIT, "s", timeit(run, budget))
         if not g["met"]:
-            g["profile"] = profile(lambda task=task: design(task), 50)
+            g["profile"] = profile(run, 50)
         out.append(g)
     return out

@@ -251,7 +251,7 @@ def crank_rocker(t: Task) -> Design:
     C2 = l3 * cmath.exp(1j * (math.pi / 2 - psi / 2))
     c = l3 * math.sin(psi / 2)
     y0 = l3 * math.cos(psi / 2)
-    families = []  # (point of the family at parameter p, lo, hi, circle)
+    families: list[tuple[Any, float, float, Any]] = []  # (point at parameter p, lo, hi, circle)
     if theta > 1e-12:
         R = c / math.sin(theta)
         for sgn in (-1.0, 1.0):

@@ -228,9 +228,9 @@ def _required(r: Reader, t: Task) -> None:
         else:
             need("rocker", t.rocker, "the rocker's length")
             need("swing_deg", t.swing, "the rocker's swing ψ")
-            third = [k for k in ("frame", "frame_angle_deg", "gamma_min_deg") if k in t.raw]
-            if len(third) > 1:
-                raise r.fail(third[1], f"give one third condition ({' or '.join(third)}), not {len(third)}")
+            given = [k for k in ("frame", "frame_angle_deg", "gamma_min_deg") if k in t.raw]
+            if len(given) > 1:
+                raise r.fail(given[1], f"give one third condition ({' or '.join(given)}), not {len(given)}")
     if t.mechanism == "coulisse":
         need("stroke", t.stroke, "the ram's stroke H")
         need("centre_distance", t.centre_distance, "the centre distance of the crank's and coulisse's pivots")

@@ -216,6 +216,7 @@ def measure(mech: Slider | FourBar | Coulisse, sense: int, working: str = "away"
         return Measured(math.nan, math.nan, math.nan, None, None, g, phi_g, margin, len(ex))
     a, b = ex
     if working == "away":
+        assert not isinstance(mech, Coulisse)
         start, end = (a, b) if mech.near(a) <= mech.near(b) else (b, a)
     else:
         sa, sb = mech.s(a), mech.s(b)  # type: ignore[union-attr]

@@ -35,13 +35,15 @@ def scene_dict(d: Design) -> dict[str, Any]:
     task = t.task
     title = task.get("title", t.raw.get("title", t.title))
     out: dict[str, Any] = {"format": 1, "title": title, "unit": t.unit}
+    links: dict[str, Any]
+    joints: list[dict[str, Any]]
     L = {k: _n(v / u) for k, v in d.lengths.items()}
     m = d.measured[0] if d.measured else None
     if d.model in ("central", "offset", "v_engine"):
         frame = 4 if d.model != "v_engine" else 6
         out["frame"] = frame
         out["points"] = {"O": [0.0, 0.0]}
-        links: dict[str, Any] = {
+        links = {
             "1": {"name": "crank OA", "axis": ["O", "A"], "length": L["crank"]},
             "2": {"name": "connecting rod AB", "axis": ["A", "B"], "length": L["rod"]},
             "3": {"name": "piston B" if d.model == "v_engine" else "slider B", "axis": ["B"]},
