@@ -25,6 +25,12 @@ def _r(x: float, nd: int = 9) -> float:
     return 0.0 if y == 0 else y
 
 
+def _deg360(x: float, nd: int) -> float:
+    """An angle in degrees, rounded, in [0, 360)."""
+    y = _r(math.degrees(x) % 360.0, nd)
+    return 0.0 if y >= 360.0 - 1e-5 else y  # a hair short of a full turn is 0°
+
+
 def results(d: Design, scene: str) -> dict[str, Any]:
     """The JSON document (lengths in the file's unit, angles in degrees; keys that do not
     apply to the model are absent)."""
@@ -51,8 +57,8 @@ def results(d: Design, scene: str) -> dict[str, Any]:
     out["gamma_min_deg"] = _r(math.degrees(min(x.gamma_min for x in d.measured)))
     if t.mechanism != "crank_rocker":
         out["pressure_angle_max_deg"] = _r(90.0 - out["gamma_min_deg"])
-    out["gamma_min_at_deg"] = _r(round(math.degrees(m.phi_gamma), 6) % 360.0, 6)
-    out["extremes_deg"] = [_r(round(math.degrees(x), 9) % 360.0, 9) for x in (m.phi_start, m.phi_end)]
+    out["gamma_min_at_deg"] = _deg360(m.phi_gamma, 6)
+    out["extremes_deg"] = [_deg360(x, 9) for x in (m.phi_start, m.phi_end)]
     out["full_rotation"] = all(x.full_rotation for x in d.measured)
     if t.mechanism == "crank_rocker":
         ls = sorted(d.lengths[k] for k in ("crank", "coupler", "rocker", "frame"))
@@ -88,11 +94,11 @@ def summary(d: Design, res: dict[str, Any]) -> str:
     else:
         lines.append(f"  K measured {res['K_measured']:.12g}")
     if "stroke_measured" in res:
-        given = f"stroke {res['stroke']:.6g} {u}, " if "stroke" in res else ""
-        lines.append(f"  {given}measured {res['stroke_measured']:.12g} {u}")
+        given = f"{res['stroke']:.6g} {u}, " if "stroke" in res else ""
+        lines.append(f"  stroke {given}measured {res['stroke_measured']:.12g} {u}")
     if "swing_measured_deg" in res:
-        given = f"swing {res['swing_deg']:.6g} deg, " if "swing_deg" in res else ""
-        lines.append(f"  {given}measured {res['swing_measured_deg']:.12g} deg")
+        given = f"{res['swing_deg']:.6g} deg, " if "swing_deg" in res else ""
+        lines.append(f"  swing {given}measured {res['swing_measured_deg']:.12g} deg")
     line = f"  gamma_min {res['gamma_min_deg']:.6g} deg at phi {res['gamma_min_at_deg']:.6g} deg"
     if "pressure_angle_max_deg" in res:
         line += f"; pressure angle max {res['pressure_angle_max_deg']:.6g} deg"
