@@ -508,3 +508,32 @@ def test_construction_readings_crank_rocker_and_coulisse():
         assert abs((A.conjugate() * (A - p["C"])).real) < 1e-12
     assert abs(abs(cmath.phase((p["D2"] - p["C"]) / (p["D1"] - p["C"]))) - theta_of(1.6)) < 1e-12
     assert abs(abs(p["D2"] - p["D1"]) - 0.4) < 1e-12  # the chord of D's arc is the ram's stroke
+
+
+def test_random_three_positions_recover_their_four_bar():
+    """A random Grashof crank-rocker placed by the circle intersection written here, three of its
+    positions, designed back by Freudenstein's equation."""
+    import cmath
+
+    rng = random.Random(7)
+    done = 0
+    while done < 150:
+        l1, l2, l3, l0 = 1.0, rng.uniform(1.5, 6), rng.uniform(1.5, 6), rng.uniform(1.5, 6)
+        ls = sorted((l0, l1, l2, l3))
+        if not (ls[0] == l1 and ls[0] + ls[3] < ls[1] + ls[2] - 0.05):
+            continue
+        pos = []
+        phi = rng.uniform(0, 60)
+        for _ in range(3):
+            A = l1 * cmath.exp(1j * math.radians(phi))
+            d = l0 - A
+            c = (l2 * l2 + abs(d) ** 2 - l3 * l3) / (2 * l2 * abs(d))
+            B = A + l2 * d / abs(d) * cmath.exp(1j * math.acos(c))
+            pos.append([phi, math.degrees(cmath.phase(B - l0))])
+            phi += rng.uniform(40, 100)
+        d = design(task(mechanism="crank_rocker", rocker=l3 * 100, positions=pos))
+        for k, v in {"crank": l1, "coupler": l2, "rocker": l3, "frame": l0}.items():
+            assert abs(d.lengths[k] - v / 10) < 1e-9 * l0 / 10, (k, d.lengths, (l0, l1, l2, l3), pos)
+        swing, _th, gmin = four_bar_dead_centres(l0, l1, l2, l3)
+        assert abs(d.measured[0].swing - swing) < 1e-9 and abs(d.measured[0].gamma_min - gmin) < 1e-9
+        done += 1
