@@ -129,7 +129,9 @@ def _check_scene(text: str, task_path: str) -> None:
 
 
 def _run(args: argparse.Namespace) -> int:
-    from plans.io import atomic_write, dumps, refuse_input
+    from pathlib import Path
+
+    from plans.io import dumps, refuse_input, write_all
 
     from .design import design
     from .model import load_task
@@ -145,12 +147,14 @@ def _run(args: argparse.Namespace) -> int:
     text = scene_text(d)
     _check_scene(text, args.task)
     res = results(d, args.output if args.output else text)
+    files: dict[Path, str] = {}
     if args.output:
-        atomic_write(args.output, text)
+        files[Path(args.output)] = text
+    if args.json and args.json != "-":
+        files[Path(args.json)] = dumps(res)
+    write_all(files)  # the scene and the JSON together, or neither
     if args.json == "-":
         sys.stdout.write(dumps(res))
         return 0
-    if args.json:
-        atomic_write(args.json, dumps(res))
     print(summary(d, res))
     return 0
