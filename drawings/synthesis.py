@@ -194,6 +194,13 @@ def construction_panel(d: Design, lang: str, target: float) -> Panel:
             mid = (z1 + z2) / 2
             H = m0.stroke or 0.0
             _text(rec, f"H = {fmt(H / t.scale, 4, lang)}", (P(mid)[0], P(mid)[1] + 2.0), SMALL, "middle", "top")
+    if d.model == "offset":  # the offset e: the pivot's perpendicular to the guide
+        s0 = d.mechs[0]
+        foot = s0.G0 + ((0j - s0.G0) * s0.u.conjugate()).real * s0.u
+        rec.line(P(0j), P(foot), THIN, "offset")
+        mid = P(foot / 2)
+        _text(rec, f"e = {fmt(d.lengths['offset'] / t.scale, 4, lang)}", (mid[0] - 1.5, mid[1]), SMALL, "end",
+              eid="label-offset")
     # the position of the least transmission angle, dashed red, with γ_min at its joint
     for a, b in _links(d, worst):
         rec.line(P(worst[a]), P(worst[b]), WORST, f"worst-{a}{b}")
