@@ -111,6 +111,7 @@ def task_from_dict(data: dict[str, Any], path: str) -> Task:
     for key in ("masses", "loads", "dynamics", "sheet", "scales", "diagrams"):
         if key in task and not isinstance(task[key], dict):
             raise r.fail(f"task.{key}", "expected a table")
+    _finite(r, task, "task")
     _masses(r, task, mech)
     if "sheet" in data and not isinstance(data["sheet"], dict):
         raise r.fail("sheet", "expected a table")
@@ -184,6 +185,18 @@ def _masses(r: Reader, task: dict[str, Any], mech: str) -> None:
                 raise r.fail(f"{where}centre", f"expected a ratio along the link between 0 and 1, got {c!r}")
         if "points" in body and not isinstance(body["points"], dict):
             raise r.fail(f"{where}points", "expected a table of points, as in a scene")
+
+
+def _finite(r: Reader, value: Any, where: str) -> None:
+    """No NaN or infinity anywhere in what [task] carries into the scene."""
+    if isinstance(value, float) and not math.isfinite(value):
+        raise r.fail(where, f"expected a finite number, got {value!r}")
+    if isinstance(value, dict):
+        for k, v in value.items():
+            _finite(r, v, f"{where}.{k}")
+    elif isinstance(value, list):
+        for i, v in enumerate(value):
+            _finite(r, v, f"{where}[{i}]")
 
 
 def _positions(r: Reader, raw: Any) -> tuple[tuple[float, float], ...]:
