@@ -540,3 +540,19 @@ def test_random_three_positions_recover_their_four_bar():
         swing, _th, gmin = four_bar_dead_centres(l0, l1, l2, l3)
         assert abs(d.measured[0].swing - swing) < 1e-9 and abs(d.measured[0].gamma_min - gmin) < 1e-9
         done += 1
+
+
+def test_task_dynamics_pass_into_a_scene_that_solves():
+    from plans.results import solve_scene
+
+    dyn = {"rotor_inertia": 2.0, "delta": 0.05, "driving": "constant"}
+    loads = {"gravity": True, "gas": [{"name": "P3", "link": 3, "diameter": 150, "pressure_unit": "MPa",
+                                       "diagram": {"down": [[0, 4.0], [245, 0.2]], "up": [[0, 1.2], [245, 0.1]]}}]}
+    t = task(mechanism="slider_crank", stroke=245, task={
+        "omega_rpm": 650, "positions": 12, "outputs": ["positions", "velocity_plan", "dynamics"],
+        "dynamics": dyn, "loads": loads, "masses": {"2": {"mass": 6.0, "inertia": 0.035, "centre": 0.35},
+                                                     "3": {"mass": 4.5}}}, **{"lambda": 0.5})
+    data = tomllib.loads(scene_text(design(t)))
+    assert data["dynamics"] == dyn and data["loads"] == loads
+    sol = solve_scene(scene_from_dict(data, "x.toml"))
+    assert sol.cycle is not None
