@@ -342,7 +342,10 @@ def _scene_extremes(sc, point, sense_u=None, rocker=None):
     return out
 
 
-@pytest.mark.parametrize("path", SAMPLES, ids=lambda p: p.stem)
+RPP = ROOT / "tests" / "data" / "synthesis_shaper_rpp.toml"
+
+
+@pytest.mark.parametrize("path", [*SAMPLES, RPP], ids=lambda p: p.stem)
 def test_each_sample_written_scene_solves_with_k_and_stroke(path, tmp_path):
     from plans.io import read_toml
     from plans.synthesis.model import load_task
@@ -398,7 +401,7 @@ def test_each_sample_written_scene_solves_with_k_and_stroke(path, tmp_path):
         assert abs(travel / (360 - travel) - t.K) < 1e-9
 
 
-@pytest.mark.parametrize("path", SAMPLES, ids=lambda p: p.stem)
+@pytest.mark.parametrize("path", [*SAMPLES, RPP], ids=lambda p: p.stem)
 def test_each_sample_written_scene_draws(path):
     """The written scene drawn as it is (at one crank angle here, to keep the test fast)."""
     from drawings.linkage import draw
@@ -467,7 +470,7 @@ def test_scene_dict_is_a_valid_scene_for_every_model():
 # --------------------------------------------------------------------------- the sheet
 
 
-@pytest.mark.parametrize("path", SAMPLES, ids=lambda p: p.stem)
+@pytest.mark.parametrize("path", [*SAMPLES, RPP], ids=lambda p: p.stem)
 def test_synthesis_sheet(path):
     from drawings.synthesis import draw
 
@@ -556,3 +559,14 @@ def test_task_dynamics_pass_into_a_scene_that_solves():
     assert data["dynamics"] == dyn and data["loads"] == loads
     sol = solve_scene(scene_from_dict(data, "x.toml"))
     assert sol.cycle is not None
+
+
+def test_coulisse_rpp_ram():
+    d = design(task(mechanism="coulisse", stroke=400, K=1.6, centre_distance=300, ram_group="RPP"))
+    m = d.measured[0]
+    th = theta_of(1.6)
+    assert abs(m.K - 1.6) < 1e-9 and abs(m.stroke - 0.4) < 1e-9 * 0.4
+    assert abs(m.gamma_min - (math.pi / 2 - th / 2)) < 1e-9  # the pressure angle is the coulisse's tilt
+    with pytest.raises(InputError, match="θ/2"):
+        design(task(mechanism="coulisse", stroke=400, K=1.6, centre_distance=300, ram_group="RPP",
+                    pressure_angle_max_deg=15))

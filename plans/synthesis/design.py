@@ -504,6 +504,8 @@ def coulisse(t: Task) -> Design:
     low = l3 * math.cos(half)  # D's height at the extremes
     sag = l3 - low
     choice = None
+    if t.ram_group == "RPP":
+        return _coulisse_rpp(t, l0, l1, l3, half, low)
     if t.guide_height is not None:
         h = t.guide_height
         dev = max(l3 - h, h - low)
@@ -529,6 +531,23 @@ def coulisse(t: Task) -> Design:
     mech = Coulisse(0j, C, l1, l3, l4, complex(0.0, h - l0), 1 + 0j)
     return Design(t, "coulisse", {"crank": l1, "centre_distance": l0, "coulisse": l3, "rod": l4,
                                   "guide_height": h}, (mech,), "+" if t.sense < 0 else "-", pts, None, choice)
+
+
+def _coulisse_rpp(t: Task, l0: float, l1: float, l3: float, half: float, low: float) -> Design:
+    """The RPP ram: a block at D slides in the ram's slot ⟂ its guide, so the ram follows D's
+    x; the force on the coulisse is along the guide, D's velocity ⟂ CD: the pressure angle is
+    the coulisse's tilt, θ/2 at the extremes, whatever the guide's height."""
+    if t.pressure_angle_max is not None and half > t.pressure_angle_max:
+        raise fail(t, "pressure_angle_max_deg", f"an RPP ram's pressure angle reaches θ/2 = {_deg(half)} > [ϑ] = "
+                                                f"{_deg(t.pressure_angle_max)}; expected a smaller K or the RRP ram")
+    h = t.guide_height if t.guide_height is not None else (l3 + low) / 2.0
+    C = complex(0.0, -l0)
+    pts = {"O": 0j, "C": C, "D1": C + l3 * cmath.exp(1j * (math.pi / 2 + half)),
+           "D2": C + l3 * cmath.exp(1j * (math.pi / 2 - half)),
+           "A1": l1 * cmath.exp(1j * (math.pi + half)), "A2": l1 * cmath.exp(-1j * half)}
+    mech = Coulisse(0j, C, l1, l3, 0.0, complex(0.0, h - l0), 1 + 0j)
+    return Design(t, "coulisse", {"crank": l1, "centre_distance": l0, "coulisse": l3, "guide_height": h},
+                  (mech,), "+" if t.sense < 0 else "-", pts, None, None)
 
 
 # --------------------------------------------------------------------------- all

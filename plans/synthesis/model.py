@@ -31,7 +31,7 @@ MECHANISMS = ("slider_crank", "crank_rocker", "coulisse", "v_engine")
 MODEL_KEYS = {
     "slider_crank": {"stroke", "K", "lambda", "offset", "pressure_angle_max_deg", "mean_speed"},
     "crank_rocker": {"K", "rocker", "swing_deg", "frame", "frame_angle_deg", "gamma_min_deg", "positions"},
-    "coulisse": {"K", "stroke", "centre_distance", "guide_height", "rod", "pressure_angle_max_deg"},
+    "coulisse": {"K", "stroke", "centre_distance", "guide_height", "rod", "pressure_angle_max_deg", "ram_group"},
     "v_engine": {"stroke", "lambda", "bank_deg", "mean_speed"},
 }
 COMMON_KEYS = {"format", "kind", "title", "unit", "mechanism", "task", "sheet"}
@@ -65,6 +65,7 @@ class Task:
     guide_height: float | None = None  # m
     rod: float | None = None  # m
     bank: float | None = None  # rad
+    ram_group: str = "RRP"  # the coulisse's ram: RRP (rod DE) or RPP (block D in the ram's slot)
     omega_rpm: float | None = None  # from [task]
     sense: int = 1
     task: dict[str, Any] = field(default_factory=dict)
@@ -158,6 +159,7 @@ def task_from_dict(data: dict[str, Any], path: str) -> Task:
              positions=positions, centre_distance=length("centre_distance"),
              guide_height=length("guide_height"), rod=length("rod"),
              bank=deg("bank_deg", 0, 180, "the bank angle between the cylinders"),
+             ram_group=r.choice(data, "ram_group", "", ("RRP", "RPP"), "RRP") if mech == "coulisse" else "RRP",
              omega_rpm=omega_rpm, sense=sense, task=task, raw=data)
     _required(r, t)
     return t
@@ -249,6 +251,8 @@ def _required(r: Reader, t: Task) -> None:
         need("centre_distance", t.centre_distance, "the centre distance of the crank's and coulisse's pivots")
         if t.K <= 1.0:
             raise r.fail("K", "a coulisse has K > 1 (the overlap angle θ is its swing); expected K > 1")
-        if t.rod is None and t.pressure_angle_max is None:
+        if t.ram_group == "RPP" and t.rod is not None:
+            raise r.fail("rod", "an RPP ram has no rod DE (a block at D slides in the ram's slot)")
+        if t.ram_group == "RRP" and t.rod is None and t.pressure_angle_max is None:
             raise r.fail("pressure_angle_max_deg", "missing; the ram's group is sized by its permissible "
                                                    "pressure angle (or give rod)")

@@ -119,7 +119,8 @@ class FourBar:
 @dataclass(frozen=True, slots=True)
 class Coulisse:
     """Crank O–A (l1), block A in the slot of the coulisse C–D (l3), rod D–E (l4), ram E on
-    the line through G0 along u, ahead of D's foot along u."""
+    the line through G0 along u, ahead of D's foot along u.  ``l4 = 0``: the RPP ram, a block
+    at D sliding in the ram's slot ⟂ u (E is D's foot on the guide)."""
 
     O: complex
     C: complex
@@ -134,6 +135,8 @@ class Coulisse:
         r = A - self.C
         D = self.C + self.l3 * r / abs(r)
         w = (D - self.G0) * self.u.conjugate()
+        if self.l4 == 0.0:
+            return A, D, self.G0 + w.real * self.u
         root = math.sqrt(max(self.l4 * self.l4 - w.imag * w.imag, 0.0))
         return A, D, self.G0 + (w.real + root) * self.u
 
@@ -148,6 +151,8 @@ class Coulisse:
         D = self.C + self.l3 * r / abs(r)
         w = (D - self.G0) * self.u.conjugate()
         dw = 1j * dbeta * (D - self.C) * self.u.conjugate()
+        if self.l4 == 0.0:
+            return dw.real
         root = math.sqrt(max(self.l4 * self.l4 - w.imag * w.imag, 1e-300))
         return dw.real - w.imag * dw.imag / root
 
@@ -155,8 +160,12 @@ class Coulisse:
         return cmath.phase(self.O + self.l1 * cmath.exp(1j * phi) - self.C)
 
     def gamma(self, phi: float) -> float:
-        """The ram group's transmission angle (90° − the rod's pressure angle on the ram)."""
+        """The ram group's transmission angle: 90° − the rod's pressure angle on the ram; of
+        an RPP ram, 90° − the angle between D's velocity (⟂ CD) and the guide."""
         _, D, _ = self.place(phi)
+        if self.l4 == 0.0:
+            t = (D - self.C) * (1j * self.u).conjugate()  # CD against the slot
+            return math.atan2(abs(t.real), abs(t.imag))
         h = ((D - self.G0) * self.u.conjugate()).imag
         return math.atan2(math.sqrt(max(self.l4 * self.l4 - h * h, 0.0)), abs(h))
 
@@ -165,7 +174,7 @@ class Coulisse:
         r = A - self.C
         D = self.C + self.l3 * r / abs(r)
         h = ((D - self.G0) * self.u.conjugate()).imag
-        return min(abs(r), self.l4 - abs(h))
+        return min(abs(r), self.l4 - abs(h)) if self.l4 > 0 else abs(r)
 
 
 @dataclass(frozen=True, slots=True)

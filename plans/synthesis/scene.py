@@ -80,6 +80,26 @@ def scene_dict(d: Design) -> dict[str, Any]:
                   {"kind": "R", "links": [3, frame], "point": "D"}]
         out["branches"] = {"2-3": fb.branch}
         phi_ref = math.degrees(m.phi_start) if m and d.model == "crank_rocker" else 0.0
+    elif d.mechs[0].l4 == 0.0:  # coulisse with the RPP ram: block D in the ram's slot
+        frame = 6
+        c = d.mechs[0]
+        out["frame"] = frame
+        out["points"] = {"O": [0.0, 0.0], "C": _xy(c.C, u)}
+        links = {"1": {"name": "crank OA", "axis": ["O", "A"], "length": L["crank"]},
+                 "2": {"name": "block A", "axis": ["A"]},
+                 "3": {"name": "coulisse CD", "axis": ["C", "D"], "length": L["coulisse"]},
+                 "4": {"name": "block D", "axis": ["D"]},
+                 "5": {"name": "ram E", "axis": ["E"]}}
+        joints = [{"kind": "R", "links": [frame, 1], "point": "O"},
+                  {"kind": "R", "links": [1, 2], "point": "A"},
+                  {"kind": "P", "links": [2, 3], "point": "A", "guide": {"link": 3, "through": "C", "toward": "D"}},
+                  {"kind": "R", "links": [3, frame], "point": "C"},
+                  {"kind": "R", "links": [3, 4], "point": "D"},
+                  {"kind": "P", "links": [4, 5], "point": "D", "guide": {"link": 5, "through": [0.0, 0.0],
+                                                                         "angle_deg": 90.0}},
+                  {"kind": "P", "links": [5, frame], "point": "E",
+                   "guide": {"link": frame, "through": _xy(c.G0, u), "angle_deg": 0.0}}]
+        phi_ref = math.degrees(m.phi_start) if m else 0.0
     else:  # coulisse
         frame = 6
         c = d.mechs[0]
