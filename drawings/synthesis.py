@@ -198,8 +198,8 @@ def construction_panel(d: Design, lang: str, target: float) -> Panel:
         s0 = d.mechs[0]
         foot = s0.G0 + ((0j - s0.G0) * s0.u.conjugate()).real * s0.u
         rec.line(P(0j), P(foot), THIN, "offset")
-        mid = P(foot / 2)
-        _text(rec, f"e = {fmt(d.lengths['offset'] / t.scale, 4, lang)}", (mid[0] - 1.5, mid[1]), SMALL, "end",
+        half = P(foot / 2)
+        _text(rec, f"e = {fmt(d.lengths['offset'] / t.scale, 4, lang)}", (half[0] - 1.5, half[1]), SMALL, "end",
               eid="label-offset")
     # the position of the least transmission angle, dashed red, with γ_min at its joint
     for a, b in _links(d, worst):
