@@ -287,6 +287,10 @@ def test_random_tasks_every_model():
      "stroke", "shorter than the block's reach"),
     ({"mechanism": "crank_rocker", "rocker": 200, "positions": [[0, 60], [40, 75], [90, 95]]},
      "positions", "negative link"),
+    ({"mechanism": "crank_rocker", "rocker": 200, "swing_deg": 40, "K": 1 + 1e-10}, "K", "so close to 1"),
+    ({"mechanism": "slider_crank", "stroke": 100, "lambda": 1e-9}, "mechanism", "between 1 µm and 10 km"),
+    ({"mechanism": "coulisse", "stroke": 400, "K": 1.6, "centre_distance": 300, "rod": 1e-3}, "rod",
+     "cannot reach the ram's guide"),
 ])
 def test_impossible_tasks_name_the_condition(kw, field, words):
     with pytest.raises(InputError) as e:

@@ -18,6 +18,7 @@ import cmath
 import math
 
 from plans.errors import InputError
+from plans.reader import LENGTH_FLOOR, LENGTH_LIMIT
 
 from .four_bar import crank_rocker, three_positions
 from .model import Task
@@ -66,6 +67,8 @@ def slider_crank(t: Task) -> Design:
         ac = (c2 - k * k * 0.0) / (1.0 - k * k)
         ar = k * H / abs(1.0 - k * k)
         A = _meet(Oc, R, ac, ar, upper=True)
+        if A is None:
+            raise fail(t, "lambda", f"λ = {lam:g} finds no crank pivot on the arc for K = {t.K:g}")
     else:
         def worst(tp: float) -> float:
             A = Oc + R * cmath.exp(1j * tp)
@@ -90,7 +93,7 @@ def slider_crank(t: Task) -> Design:
                   (pts["Oc"], R), choice)
 
 
-def _meet(c1: complex, r1: float, c2: complex, r2: float, upper: bool) -> complex:
+def _meet(c1: complex, r1: float, c2: complex, r2: float, upper: bool) -> complex | None:
     """The meeting point of two circles left of the chord's start (x < 0), above it."""
     d = c2 - c1
     D = abs(d)
@@ -99,7 +102,7 @@ def _meet(c1: complex, r1: float, c2: complex, r2: float, upper: bool) -> comple
     base = c1 + a * d / D
     cands = [base + h * 1j * d / D, base - h * 1j * d / D]
     cands = [z for z in cands if (z.imag > 0) == upper]
-    return min(cands, key=lambda z: z.real)
+    return min(cands, key=lambda z: z.real) if cands else None
 
 
 def _central(t: Task, H: float) -> Design:
@@ -167,7 +170,7 @@ def coulisse(t: Task) -> Design:
     else:
         h = (l3 + low) / 2.0
         dev = sag / 2.0
-        choice = ("mid_sagitta", math.asin(dev / t.rod) if t.rod is not None else t.pressure_angle_max or 0.0)
+        choice = ("mid_sagitta", 0.0)  # its pressure angle filled in once the rod is known
     if t.rod is not None:
         l4 = t.rod
         if l4 <= dev:
@@ -179,6 +182,8 @@ def coulisse(t: Task) -> Design:
     else:
         assert t.pressure_angle_max is not None
         l4 = dev / math.sin(t.pressure_angle_max) if dev > 0 else l3 / 4.0
+    if choice is not None:
+        choice = ("mid_sagitta", math.asin(min(dev / l4, 1.0)))
     C = complex(0.0, -l0)  # the scene's frame has O at the origin
     pts = {"O": 0j, "C": C, "D1": C + l3 * cmath.exp(1j * (math.pi / 2 + half)),
            "D2": C + l3 * cmath.exp(1j * (math.pi / 2 - half)),
@@ -233,7 +238,14 @@ def _met(t: Task, d: Design, measured: tuple[Measured, ...]) -> None:
 def design(t: Task) -> Design:
     """Size the mechanism and prove it: the measured K, stroke or swing, γ_min; a design that
     does not turn fully on one branch is refused (it never is, when the model is right)."""
+    if 0.0 < t.theta < 1e-6:  # the construction's circle would be a million strokes across
+        raise fail(t, "K", f"K = {t.K!r} is so close to 1 (θ < 1e-6 rad) that the construction's circle has no "
+                           "size a sheet or a float can hold; expected K = 1 (extremes 180° apart) or K >= 1.000001")
     d = MODELS[t.mechanism](t)
+    for name, v in d.lengths.items():
+        if v and not LENGTH_FLOOR <= v <= LENGTH_LIMIT:
+            raise fail(t, "mechanism", f"the design's {name} would be {v:.6g} m long; expected a length between "
+                                       "1 µm and 10 km (the task's numbers are out of proportion)")
     sense = t.sense
     measured = tuple(measure(m, sense, d.working) for m in d.mechs)
     _met(t, d, measured)
