@@ -193,7 +193,7 @@ def construction_panel(d: Design, lang: str, target: float) -> Panel:
             rec.line(P(z1), P(z2), CONSTRUCT, "stroke")
             mid = (z1 + z2) / 2
             H = m0.stroke or 0.0
-            _text(rec, f"H = {fmt(H / t.scale, 4, lang)}", (P(mid)[0], P(mid)[1] + 2.0), SMALL, "middle", "top")
+            _text(rec, f"H = {fmt(H / t.scale, 4, lang)}", (P(mid)[0], P(mid)[1] + 7.5), SMALL, "middle", "top")
     if d.model == "offset":  # the offset e: the pivot's perpendicular to the guide
         s0 = d.mechs[0]
         foot = s0.G0 + ((0j - s0.G0) * s0.u.conjugate()).real * s0.u
@@ -208,6 +208,7 @@ def construction_panel(d: Design, lang: str, target: float) -> Panel:
            "coulisse": "E"}[d.model]
     g = min(x.gamma_min for x in d.measured)
     q = P(worst[jpt])
+    _gamma_arc(rec, P, d, worst, jpt)
     _text(rec, f"γmin = {fmt(math.degrees(g), 4, lang)}°", (q[0] + 2.0, q[1] + 2.5), LABEL, valign="top",
           eid="gamma-min", fill="#c00000")
     # three positions: the given positions of the crank and the rocker
@@ -220,6 +221,32 @@ def construction_panel(d: Design, lang: str, target: float) -> Panel:
     note = f"{ratio_text(mu)}; " + ("штрих — положение γmin" if lang == "ru" else "dashed red: the position of γmin")
     return finish("construction", "synthesis-construction", None, rec, _w("construction", lang), note=note,
                   quantity="length", scale=mu)
+
+
+def _gamma_arc(rec: Recording, P, d: Design, pos: dict[str, complex], jpt: str) -> None:
+    """The least transmission angle as an arc at its joint: between the coupler and the rocker
+    (the acute one), or between the rod and the normal to the slider's guide."""
+    J = pos[jpt]
+    m = d.mechs[0]
+    if isinstance(m, FourBar):
+        a, b = pos["A"] - J, J - pos["D"]  # the rocker produced beyond B
+        if (a.conjugate() * b).real < 0:
+            b = -b
+    elif isinstance(m, Slider):
+        a = pos["A"] - J
+        n = 1j * m.u
+        b = n if (a.conjugate() * n).real > 0 else -n
+    elif m.l4 > 0:  # the coulisse's RRP ram: the rod against the guide's normal
+        a = pos["D"] - J
+        n = 1j * m.u
+        b = n if (a.conjugate() * n).real > 0 else -n
+    else:
+        return
+    r = 0.25 * abs(a)
+    n_ = 24
+    t0, t1 = cmath.phase(a), cmath.phase(a) + math.remainder(cmath.phase(b) - cmath.phase(a), 2 * math.pi)
+    rec.polyline([P(J + r * cmath.exp(1j * (t0 + (t1 - t0) * k / n_))) for k in range(n_ + 1)], WORST, "gamma-arc")
+    rec.line(P(J), P(J + 1.3 * r * b / abs(b)), Style(width=0.18, stroke="#c00000"), "gamma-ray")
 
 
 def _angle(rec: Recording, P, c: complex, z1: complex, z2: complex, r: float, label: str, eid: str,
