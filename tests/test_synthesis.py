@@ -574,3 +574,13 @@ def test_coulisse_rpp_ram():
     with pytest.raises(InputError, match="θ/2"):
         design(task(mechanism="coulisse", stroke=400, K=1.6, centre_distance=300, ram_group="RPP",
                     pressure_angle_max_deg=15))
+
+
+def test_json_construction_is_the_circle_through_the_pivot_and_the_extremes():
+    from plans.synthesis.cli import results
+
+    res = results(design(task(mechanism="slider_crank", stroke=120, K=1.2, **{"lambda": 0.3})), "s")
+    c = complex(*res["construction"]["circle"]["centre"])
+    R = res["construction"]["circle"]["radius"]
+    for name in ("O", "C1", "C2"):
+        assert abs(abs(complex(*res["construction"]["points"][name]) - c) - R) < 1e-6

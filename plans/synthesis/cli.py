@@ -73,6 +73,12 @@ def results(d: Design, scene: str) -> dict[str, Any]:
         assert t.positions is not None
         out["positions_error_deg"] = _r(max(abs(math.degrees(wrap(fb.psi(phi) - psi))) for phi, psi in t.positions),
                                         12)
+    # the construction as drawn: its points and circle, in the scene's frame and the file's unit
+    cons: dict[str, Any] = {"points": {k: [_r(z.real / u), _r(z.imag / u)] for k, z in d.points.items()}}
+    if d.circle is not None:
+        c, R = d.circle
+        cons["circle"] = {"centre": [_r(c.real / u), _r(c.imag / u)], "radius": _r(R / u)}
+    out["construction"] = cons
     if d.choice:
         from .design import choice_text
 
