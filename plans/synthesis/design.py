@@ -1,13 +1,14 @@
 """The models: each sizes a mechanism from a :class:`~plans.synthesis.model.Task` by the
 graphical construction a course draws (kept as data: the extreme positions C′, C″, the
 circle on whose arc the chord C′C″ subtends θ, the chosen pivot), then hands the designed
-mechanism to :mod:`plans.synthesis.proof` to be measured.
+mechanism to :mod:`plans.synthesis.proof` to be measured.  The slider-cranks, the coulisse
+and the V-engine are here, the crank-rocker in :mod:`plans.synthesis.four_bar`.
 
 Frames: the scene's.  The crank's pivot O is the origin; a slider-crank's guide runs along
 +x (an offset one at distance e on the side that makes the stroke away from O the slow
-one); a four-bar's frame O→D lies along +x; a coulisse's pivot C is the origin with O
-above it at the centre distance, the ram's guide horizontal.  A task with ``sense = "cw"``
-is the mirror image of the counter-clockwise design.
+one); a four-bar's frame O→D lies along +x; a coulisse's pivot C is below O at the centre
+distance, the ram's guide horizontal above.  A task with ``sense = "cw"`` is the mirror
+image of the counter-clockwise design.
 
 Impossible tasks raise :class:`~plans.errors.InputError` naming the condition not met.
 """
