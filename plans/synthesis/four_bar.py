@@ -34,8 +34,10 @@ def _candidate(A: complex, C1: complex, C2: complex, l3: float, theta: float) ->
     if abs(abs(cmath.phase((C2 - A) / (C1 - A))) - theta) > 1e-7:
         return None  # the circle's other arc: there the chord subtends 180° − θ
     l1, l2, l0 = (b - a) / 2.0, (b + a) / 2.0, abs(A)
-    ls = sorted((l0, l1, l2, l3))
-    if not (l1 == ls[0] and l1 < ls[1] and ls[0] + ls[3] < ls[1] + ls[2]):
+    # Grashof with the crank shortest: l1 + the longest < the other two
+    longest = l0 if l0 > l2 else l2
+    longest = longest if longest > l3 else l3
+    if not (l1 < l0 and l1 < l2 and l1 < l3 and 2.0 * longest + l1 < l0 + l2 + l3):
         return None
     P1 = A - l1 * (C1 - A) / a
     P2 = A + l1 * (C2 - A) / b
@@ -45,13 +47,12 @@ def _candidate(A: complex, C1: complex, C2: complex, l3: float, theta: float) ->
         return None
     travel = (cmath.phase((P2 - A) / (P1 - A))) % (2 * math.pi)
     flip = travel < math.pi - 1e-12 if theta > 1e-12 else False
-    lo, hi = abs(l0 - l1), l0 + l1
-    g = []
-    for d in (lo, hi):
-        c = (l2 * l2 + l3 * l3 - d * d) / (2 * l2 * l3)
-        x = math.acos(max(-1.0, min(1.0, c)))
-        g.append(min(x, math.pi - x))
-    return _Candidate(A, l1, l2, l0, min(g), flip)
+    # γ at the crank along the frame line (the diagonal AD least and greatest), acute
+    k = 2.0 * l2 * l3
+    c_lo = (l2 * l2 + l3 * l3 - (l0 - l1) ** 2) / k
+    c_hi = (l2 * l2 + l3 * l3 - (l0 + l1) ** 2) / k
+    worst = max(abs(c_lo), abs(c_hi))  # the largest |cos γ| is the least acute γ
+    return _Candidate(A, l1, l2, l0, math.acos(min(1.0, worst)), flip)
 
 
 def crank_rocker(t: Task) -> Design:

@@ -61,11 +61,16 @@ def brent(f: Callable[[float], float], a: float, b: float, fa: float, fb: float,
     return b
 
 
-def roots(f: Callable[[float], float], n: int = 48) -> list[float]:
+def grid(n: int = 48) -> list[float]:
+    """The turn's grid that :func:`roots` and :func:`minimum` bracket on."""
+    return [_START + TAU * k / n for k in range(n)]
+
+
+def roots(f: Callable[[float], float], n: int = 48, values: list[float] | None = None) -> list[float]:
     """Every root of the 2π-periodic ``f`` over one turn, in [0, 2π): a sign change between
-    neighbours of an ``n``-point grid, then Brent."""
+    neighbours of an ``n``-point grid (``values``: f on :func:`grid` already), then Brent."""
     xs = [_START + TAU * k / n for k in range(n + 1)]
-    ys = [f(x) for x in xs[:-1]]
+    ys = list(values) if values is not None else [f(x) for x in xs[:-1]]
     ys.append(ys[0])
     out = []
     for k in range(n):
@@ -148,13 +153,14 @@ def fmin(f: Callable[[float], float], a: float, b: float, xtol: float = 1e-10) -
 
 
 def minimum(f: Callable[[float], float], n: int = 48, lo: float = 0.0, hi: float = TAU,
-            periodic: bool = True) -> tuple[float, float]:
+            periodic: bool = True, values: list[float] | None = None) -> tuple[float, float]:
     """The smallest value of ``f`` over [lo, hi] (over the whole turn when ``periodic``):
-    every local minimum of the grid refined between its neighbours; (where, value)."""
+    every local minimum of the grid refined between its neighbours; (where, value).
+    ``values``: f on :func:`grid` already (periodic only)."""
     start = _START if periodic else lo
     step = (hi - lo) / n
     xs = [start + step * k for k in range(n + (0 if periodic else 1))]
-    ys = [f(x) for x in xs]
+    ys = list(values) if values is not None and periodic else [f(x) for x in xs]
     m = len(xs)
     best = (xs[0], ys[0])
     for k in range(m):

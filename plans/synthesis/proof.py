@@ -25,7 +25,7 @@ import cmath
 import math
 from dataclasses import dataclass
 
-from .numeric import TAU, minimum, roots, wrap
+from .numeric import TAU, grid, minimum, roots, wrap
 
 
 @dataclass(frozen=True, slots=True)
@@ -107,6 +107,15 @@ class FourBar:
         A, B = self.place(phi)
         t = (B - A) * (B - self.D).conjugate()
         return math.atan2(abs(t.imag), abs(t.real))
+
+    def rate_and_gamma(self, phi: float) -> tuple[float, float]:
+        """dψ/dφ and γ from one placing (the grid's values)."""
+        A, B = self.place(phi)
+        p2, p3 = cmath.phase(B - A), cmath.phase(B - self.D)
+        a = math.sin(p3 - p2)
+        t = (B - A) * (B - self.D).conjugate()
+        return (self.l1 * math.sin(phi - p2) / (self.l3 * (a if a != 0.0 else 1e-300)),
+                math.atan2(abs(t.imag), abs(t.real)))
 
     def margin(self, phi: float) -> float:
         delta = abs(self.D - self.O - self.l1 * cmath.exp(1j * phi))
@@ -211,13 +220,15 @@ def measure(mech: Slider | FourBar | Coulisse, sense: int, working: str = "away"
     ``working``: which stroke is the working one: ``"away"`` (the slider or the rocker from
     its position nearest the crank's pivot to the farthest), ``"+"``/``"-"`` (the ram toward
     +u or −u)."""
-    if isinstance(mech, FourBar):
-        ex = _extremes(mech.dpsi)
+    if isinstance(mech, FourBar):  # one placing per node gives both grids
+        both = [mech.rate_and_gamma(x) for x in grid()]
+        ex = roots(mech.dpsi, values=[r for r, _ in both])
+        phi_g, g = minimum(mech.gamma, values=[y for _, y in both])
     else:
         ex = _extremes(mech.ds)
+        phi_g, g = minimum(mech.gamma)
     # a group that cannot be assembled has γ = 0 there (its links in line), so γ_min > 0 is
     # the crank's full turn on one branch; the margin is read where γ is least
-    phi_g, g = minimum(mech.gamma)
     margin = mech.margin(phi_g) if g > 0 else 0.0
     if isinstance(mech, Coulisse):  # and the block never reaches the coulisse's pivot
         margin = min(margin, abs(mech.O - mech.C) - mech.l1)
