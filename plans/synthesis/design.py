@@ -65,11 +65,12 @@ def slider_crank(t: Task) -> Design:
         # Apollonius' circle of the points with AC″/AC′ = (1 + λ)/(1 − λ), met with the arc
         k = (1.0 + lam) / (1.0 - lam)
         c2 = complex(H, 0.0)
-        ac = (c2 - k * k * 0.0) / (1.0 - k * k)
+        ac = c2 / (1.0 - k * k)  # (C″ − k²·C′)/(1 − k²), C′ at 0
         ar = k * H / abs(1.0 - k * k)
-        A = _meet(Oc, R, ac, ar, upper=True)
-        if A is None:
+        met = _meet(Oc, R, ac, ar, upper=True)
+        if met is None:
             raise fail(t, "lambda", f"λ = {lam:g} finds no crank pivot on the arc for K = {t.K:g}")
+        A = met
     else:
         def worst(tp: float) -> float:
             A = Oc + R * cmath.exp(1j * tp)
