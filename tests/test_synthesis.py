@@ -584,3 +584,10 @@ def test_json_construction_is_the_circle_through_the_pivot_and_the_extremes():
     R = res["construction"]["circle"]["radius"]
     for name in ("O", "C1", "C2"):
         assert abs(abs(complex(*res["construction"]["points"][name]) - c) - R) < 1e-6
+
+
+def test_mean_speed_and_stroke_give_the_crank_speed():
+    # v_m = 2·H·n/60: H = 0.1 m at 4 m/s is n = 1200 rpm, written into the scene's driver
+    t = task(mechanism="slider_crank", stroke=100, mean_speed=4.0, **{"lambda": 0.25})
+    data = tomllib.loads(scene_text(design(t)))
+    assert abs(data["driver"]["omega_rpm"] - 1200) < 1e-9

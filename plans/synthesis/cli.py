@@ -109,6 +109,9 @@ def summary(d: Design, res: dict[str, Any]) -> str:
     if "pressure_angle_max_deg" in res:
         line += f"; pressure angle max {res['pressure_angle_max_deg']:.6g} deg"
     lines.append(line)
+    for i, c in enumerate(res.get("cylinders", [])):
+        lines.append(f"  cylinder {'BC'[i]}: stroke measured {c['stroke_measured']:.12g} {u}, K measured "
+                     f"{c['K_measured']:.12g}")
     if "positions_error_deg" in res:
         lines.append(f"  the three positions met to {res['positions_error_deg']:.3g} deg")
     lines.append("  the crank turns fully, one assembly branch" + ("; Grashof holds" if res.get("grashof") else ""))
