@@ -50,7 +50,7 @@ LAYER_LINETYPES = {"ESKD_CENTRE": (19.0, 12.0, -3.0, 1.0, -3.0), "ESKD_DASHED": 
 LAYER_LINETYPE = {"centre": "ESKD_CENTRE", "dashed": "ESKD_DASHED"}
 #: Panel kinds by the layer of their content (the frame, text and marks come from the groups).
 CONTENT = {
-    "scheme": ("positions", "scheme", "meshing", "train-scheme", "cam-profile"),
+    "scheme": ("positions", "scheme", "meshing", "train-scheme", "cam-profile", "synthesis-construction"),
     "velocity": ("velocity", "velocity-plan", "ray-diagram"),
     "acceleration": ("acceleration",),
     "forces": ("polygon", "group", "crank"),

@@ -25,6 +25,7 @@ KIND_SAMPLES = {  # one sample of every kind of file (the smallest that shows it
     "gears": SAMPLES / "gears" / "seed_train.toml",
     "cam": SAMPLES / "cams" / "seed001_valve_cam.toml",
     "engine": SAMPLES / "engines" / "v_twin.toml",
+    "synthesis": SAMPLES / "synthesis" / "crank_rocker.toml",
 }
 
 
