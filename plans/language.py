@@ -254,6 +254,28 @@ TERMS: dict[str, tuple[str, str]] = {
     "k_against": ("against", "против вращения кривошипа"),
     "y_plans": ("Plans over the cycle", "Планы за цикл"),
     "y_positions": ("Positions over the cycle", "Положения за цикл"),
+    # ---- friction (plans solve)
+    "fr_settled": ("settled to {tol:g}", "сошлись с точностью {tol:g}"),
+    "fr_locked": ("did not settle: self-locking", "не сошлись: самоторможение"),
+    "fr_head": ("  friction: {n} approximations ({settled}); balancing load {free:.6g} {unit} without friction, "
+                "{withit}{eta}",
+                "  трение: приближений {n} ({settled}); уравновешивающая нагрузка {free:.6g} {unit} без трения, "
+                "{withit}{eta}"),
+    "fr_with": ("{b:.6g} {unit} with it", "{b:.6g} {unit} с трением"),
+    "fr_none": ("none with it", "с трением не существует"),
+    "fr_eta": ("; η = {e:.4f}", "; η = {e:.4f}"),
+    "fr_no_eta": ("; η undefined", "; η не определён"),
+    "fr_couple": ("couple", "момент"),
+    "fr_force": ("force", "сила"),
+    "fr_stops": ("    {name} {label} sense undetermined (relative motion stops): |{kind}| ≤ {lim:.6g} {unit}",
+                 "    {name} {label} направление не определено (относительное движение останавливается): "
+                 "|{kind}| ≤ {lim:.6g} {unit}"),
+    "fr_pair": ("    {name} {label} {kind} {load:.6g} {unit}, loss {loss:.6g} W",
+                "    {name} {label} {kind} {load:.6g} {unit}, потери {loss:.6g} Вт"),
+    "fr_self_locking": ("    self-locking here: {name}", "    здесь самоторможение: {name}"),
+    "fr_cycle": ("efficiency over the cycle: η = A_useful / A_driving = {u:.6g} / {d:.6g} J = {e:.4f} "
+                 "(friction {f:.6g} J)",
+                 "КПД за цикл: η = A_пс / A_дв = {u:.6g} / {d:.6g} Дж = {e:.4f} (трение {f:.6g} Дж)"),
     "r_polygon": ("{label} (polygon {g}, μF = {mu:g} mm/N)", "{label} (план сил {g}, μF = {mu:g} мм/Н)"),
     "r_arm": ("h_{lab} in {eq} = 0 (μl = {mu:g} mm/m)", "h_{lab} в {eq} = 0 (μl = {mu:g} мм/м)"),
     "r_lever_arm": ("h_{lab} on the lever (μv = {mu:g})", "h_{lab} на рычаге (μv = {mu:g})"),
@@ -268,6 +290,7 @@ TERMS: dict[str, tuple[str, str]] = {
 #: acceleration pole, p the velocity pole).
 _SYMBOLS = ((r"\bp_a(?![A-Z_])", "π"), (r"\bp_v(?![A-Z_])", "p"), (r"\bomega_?(?=\w)", "ω"), (r"\beps_?(?=\w)", "ε"),
             (r"(?<![A-Za-z])Phi(?=\w)", "Φ"), (r"\bmu\b", "μ"), (r"\^2\b", "²"), (r"(?<![A-Za-z])([FM])_bal\b", r"\1_ур"),
+            (r"(?<![A-Za-z])([FM])f(?=\d)", r"\1_тр"),
             (r"\brad/s", "рад/с"), (r"(?<![\w/])m/s", "м/с"), (r"\bmm\b", "мм"), (r"\bN·m\b", "Н·м"),
             (r"(?<=\d )N\b", "Н"), (r"\bN\b(?= )", "Н"), (r"\binitial link\b", "начальное звено"),
             (r"\b(RRR|RRP|RPR|PRP|RPP|PRR|PPR) group\b", r"группа \1"), (r"\bgroup\b", "группа"))

@@ -252,7 +252,7 @@ def table(sol: Solution, protocol: bool = False, lang: str = "en") -> str:
     if sol.forces is not None and sol.forces[0].friction is not None:
         from plans.forces.friction import cycle_line
 
-        line = cycle_line(sol.forces[0])
+        line = cycle_line(sol.forces[0], lang)
         if line:
             lines.append(line)
     return "\n".join(lines)

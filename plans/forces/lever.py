@@ -455,5 +455,5 @@ def table_lines(fa: ForceAnalysis, lv: LeverAnalysis, k: int, lang: str = "en") 
     if fa.friction is not None:
         from plans.forces.friction import friction_lines
 
-        lines += friction_lines(fa, k)
+        lines += friction_lines(fa, k, lang)
     return lines
