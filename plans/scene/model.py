@@ -133,6 +133,16 @@ class Scene:
     fij: str
     raw: dict[str, Any] = field(repr=False, default_factory=dict)
     titles: dict[str, str] = field(default_factory=dict)  # per sheet language: {"ru": ..., "en": ...}
+    #: the target lengths of the plans, polygons and lever as a fraction of the A1 ones: a
+    #: smaller sheet's (``plans.solve(scene, fit=...)``; never read from a file)
+    fit: float = 1.0
+    #: the other tables, read and validated with the file (:mod:`plans.scene.tables`):
+    #: ``[sheet]`` (plans.scene.sheet.SheetSpec), ``[loads]`` (plans.forces.loads.Loads),
+    #: ``[dynamics]`` and ``[diagrams]`` (plans.cycle.spec); None where not given nor needed
+    sheet: Any = field(default=None, repr=False)
+    loads: Any = field(default=None, repr=False)
+    dynamics_spec: Any = field(default=None, repr=False)
+    diagrams_spec: Any = field(default=None, repr=False)
     #: what is derived once per scene (its structure, the solver's constants); not copied by
     #: dataclasses.replace, so a changed scene derives its own
     memo: dict[Any, Any] = field(init=False, repr=False, compare=False, default_factory=dict)
@@ -140,6 +150,17 @@ class Scene:
     def title_in(self, lang: str) -> str:
         """The title in a sheet's language (the plain title where none is given for it)."""
         return self.titles.get(lang, self.title)
+
+    def sheet_for(self, *, format: str | None = None, orientation: str | None = None,
+                  language: str | None = None) -> Any:
+        """The ``[sheet]`` with what a command overrides (``--sheet A3``, ``--language en``);
+        the title in the sheet's language."""
+        from plans.scene.sheet import sheet_spec
+
+        sheet = self.raw.get("sheet")
+        lang = language or (sheet.get("language") if isinstance(sheet, dict) else None)
+        return sheet_spec(self.raw, self.path, self.title_in(lang if lang in ("ru", "en") else "ru"),
+                          format=format, orientation=orientation, language=language)
 
     def wants(self, output: str) -> bool:
         return output in self.outputs
@@ -242,9 +263,11 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
     outputs = _outputs(r, data)
     scales, style = _scales(r, data)
     fij = r.choice(data, "fij", "", FIJ_CONVENTIONS, "on_i_from_j")
-    return Scene(path=path, title=title, frame=frame, frame_points=frame_points, links=links,
-                 joints=joints, driver=driver, branches=branches, outputs=outputs,
-                 scales=scales, scale_style=style, fij=fij, raw=data, titles=titles)
+    from plans.scene.tables import with_tables
+
+    return with_tables(Scene(path=path, title=title, frame=frame, frame_points=frame_points, links=links,
+                             joints=joints, driver=driver, branches=branches, outputs=outputs,
+                             scales=scales, scale_style=style, fij=fij, raw=data, titles=titles))
 
 
 def _link_id(r: Reader, key: str) -> int:
