@@ -12,16 +12,22 @@ value).  Keys appear only for what the scene asked for.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
+import plans.kinematics.construction  # noqa: F401  (the solve's own modules, loaded with the command:
+import plans.kinematics.exact  # noqa: F401  what ``plans bench`` times as the start of ``plans solve``)
 from plans.scene.model import Scene
-from plans.solution import Solution
+
+if TYPE_CHECKING:
+    from plans.solution import Solution
 from plans.tolerances import ILL_CONDITIONED
 
 
 def solve_scene(scene: Scene) -> Solution:
     """Everything the scene asks for, computed now (``plans solve``); a construction that has
     no answer names the file.  :func:`plans.solve` computes each part when it is first read."""
+    from plans.solution import Solution
+
     return Solution(scene).solve_all()
 
 

@@ -75,9 +75,13 @@ class Solution:
     __slots__ = ("scene", "fit", "_parts")
 
     def __init__(self, scene: Scene, fit: float = 1.0) -> None:
+        """``scene`` with its ``[loads]``, ``[dynamics]`` and ``[diagrams]`` read and validated now
+        (an InputError naming the field, before anything is solved), at the paper's ``fit``."""
+        from plans.scene.tables import with_tables
+
         if not (isinstance(fit, int | float) and not isinstance(fit, bool) and 0.0 < fit <= 1.0):
             raise ValueError(f"fit is the fraction of the A1 target lengths, 0 < fit <= 1; got {fit!r}")
-        self.scene: Scene = scene if fit == scene.fit else replace(scene, fit=float(fit))
+        self.scene: Scene = with_tables(scene, **({} if fit == scene.fit else {"fit": float(fit)}))
         self.fit = float(fit)
         self._parts: dict[Any, Any] = {}
 

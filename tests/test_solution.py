@@ -224,31 +224,58 @@ def test_a_bad_sheet_fails_solve_as_it_fails_draw(tmp_path):
 
 
 def test_every_table_is_held_typed_by_the_scene():
+    """[sheet] read with the file; [loads], [dynamics], [diagrams] when the scene is solved,
+    before anything is computed, whether or not its outputs use them."""
     scene = load_scene(SAMPLES / "v_engine_cycle.toml")
     assert scene.sheet.format in ("A1", "A2", "A3", "A4") and scene.sheet.size[0] > 0
-    assert scene.loads is not None and scene.loads.masses
-    assert scene.dynamics_spec is not None and scene.dynamics_spec.delta > 0
-    assert scene.diagrams_spec is not None and scene.diagrams_spec.quantities
-    plain = load_scene(SAMPLES / "four_bar.toml")
-    assert plain.dynamics_spec is None and plain.diagrams_spec is None
+    assert not scene.tables and scene.loads is None
+    solved = plans.solve(scene).scene
+    assert solved.tables and solved.loads is not None and solved.loads.masses
+    assert solved.dynamics_spec is not None and solved.dynamics_spec.delta > 0
+    assert solved.diagrams_spec is not None and solved.diagrams_spec.quantities
+    sol = plans.solve(SAMPLES / "four_bar.toml")
+    assert sol.scene.dynamics_spec is None and sol.scene.diagrams_spec is None and sol._parts == {}
     data = read_toml(SAMPLES / "four_bar.toml")
+    data["outputs"] = ["positions"]  # [loads] unused: a misspelt key in it fails all the same
     data["loads"]["gravty"] = True
     with pytest.raises(plans.InputError, match="loads.gravty"):
-        scene_from_dict(data, "typo.toml")
+        plans.solve(scene_from_dict(data, "typo.toml"))
+
+
+def test_a_bad_dynamics_table_fails_solve_as_it_fails_draw(tmp_path):
+    text = (SAMPLES / "four_bar.toml").read_text(encoding="utf-8").replace(
+        'outputs = ["positions", "velocity_plan", "acceleration_plan", "force_polygons", "lever"]',
+        'outputs = ["positions", "velocity_plan"]') + "\n[dynamics]\ndelt = 0.05\n"
+    bad = tmp_path / "bad_dynamics.toml"
+    bad.write_text(text, encoding="utf-8")
+    solve = _run("solve", str(bad))
+    draw = _run("draw", str(bad), "-o", str(tmp_path / "out"))
+    assert solve.returncode == draw.returncode == 2 and solve.stdout == ""
+    assert solve.stderr == draw.stderr and len(solve.stderr.splitlines()) == 1 and "dynamics.delt" in solve.stderr
 
 
 # --------------------------------------------------------------------------- draw only
 
 
-def test_a_notebook_solves_reads_and_draws_in_three_lines():
-    """As the README shows it: the sheet drawn from the Solution is the sheet ``plans draw`` writes."""
+def test_a_notebook_solves_reads_and_draws_in_three_lines(monkeypatch):
+    """The README's lines, run as written: F_12^τ at 45° read, and the sheet drawn from the
+    Solution is the sheet ``plans draw`` draws of the file."""
+    import re
+
     import drawings
 
-    sol = plans.solve("samples/v_engine.toml")
-    f12 = sol.value("F_12^τ", 45)
-    d = drawings.draw(sol)
-    assert f12 == pytest.approx(2111.2957824667, rel=1e-9)
-    assert [s.svg() for s in d.sheets] == [s.svg() for s in drawings.draw("samples/v_engine.toml").sheets]
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    code = re.search(r"### In Python \(a notebook\).*?```python\n(.*?)```", readme, re.S).group(1)
+    lines = [line for line in code.splitlines() if line.strip()]
+    assert len(lines) == 4 and lines[0].startswith("import")  # the import, then three lines
+    monkeypatch.chdir(ROOT)
+    ns: dict = {}
+    for line in lines[:-1]:
+        exec(line, ns)
+    assert eval(lines[2].split("#")[0], ns) == pytest.approx(2111.2957824667, rel=1e-9)
+    d = eval(lines[3].split("#")[0], ns)
+    assert d._repr_svg_() == d.sheets[0].svg()
+    assert [s.svg() for s in d.sheets] == [s.svg() for s in drawings.draw(V_ENGINE).sheets]
 
 
 def test_a_smaller_sheet_is_drawn_from_a_solution_at_its_fit():

@@ -29,14 +29,18 @@ def fit(scene: Any) -> float:
     return float(scene.fit)
 
 
-def round_scale(longest: float, target_mm: float = KNOWN_MM) -> float:
-    """μ (mm per unit), round in both directions, the largest that draws ``longest`` within
-    ``target_mm``; 1 for a zero or non-finite length (no scale from a zero vector)."""
+def round_scale(longest: float, target_mm: float = KNOWN_MM, mantissas: tuple[float, ...] = ROUND) -> float:
+    """μ (mm per unit), round in both directions (K = 1/μ one of ``mantissas`` × 10^k), the
+    largest that draws ``longest`` within ``target_mm``; 1 for a zero, subnormal or non-finite
+    length (no scale from a zero vector).  The one picker of the plans', polygons' and
+    lever's scales."""
     if not (longest > 0 and math.isfinite(longest)):
         return 1.0
-    k_min = longest / target_mm
+    k_min = longest / target_mm  # K may not be smaller than this
+    if k_min <= 0:  # a subnormal longest vector: nothing to draw at any scale
+        return 1.0
     e = math.floor(math.log10(k_min))
-    for m in ROUND + (10.0,):
+    for m in mantissas + (10.0,):
         K = m * 10.0**e
         if K >= k_min * (1 - 1e-12):
             return 1.0 / K

@@ -136,13 +136,15 @@ class Scene:
     #: the target lengths of the plans, polygons and lever as a fraction of the A1 ones: a
     #: smaller sheet's (``plans.solve(scene, fit=...)``; never read from a file)
     fit: float = 1.0
-    #: the other tables, read and validated with the file (:mod:`plans.scene.tables`):
-    #: ``[sheet]`` (plans.scene.sheet.SheetSpec), ``[loads]`` (plans.forces.loads.Loads),
-    #: ``[dynamics]`` and ``[diagrams]`` (plans.cycle.spec); None where not given nor needed
+    #: the other tables as typed records (:mod:`plans.scene.tables`): ``[sheet]``
+    #: (plans.scene.sheet.SheetSpec) read with the file; ``[loads]`` (plans.forces.loads.Loads),
+    #: ``[dynamics]`` and ``[diagrams]`` (plans.cycle.spec) read by ``plans.solve`` (then
+    #: ``tables`` is True), None where the file neither gives nor needs them
     sheet: Any = field(default=None, repr=False)
     loads: Any = field(default=None, repr=False)
     dynamics_spec: Any = field(default=None, repr=False)
     diagrams_spec: Any = field(default=None, repr=False)
+    tables: bool = field(default=False, repr=False)
     #: what is derived once per scene (its structure, the solver's constants); not copied by
     #: dataclasses.replace, so a changed scene derives its own
     memo: dict[Any, Any] = field(init=False, repr=False, compare=False, default_factory=dict)
@@ -263,11 +265,12 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
     outputs = _outputs(r, data)
     scales, style = _scales(r, data)
     fij = r.choice(data, "fij", "", FIJ_CONVENTIONS, "on_i_from_j")
-    from plans.scene.tables import with_tables
+    from plans.scene.sheet import sheet_of
 
-    return with_tables(Scene(path=path, title=title, frame=frame, frame_points=frame_points, links=links,
-                             joints=joints, driver=driver, branches=branches, outputs=outputs,
-                             scales=scales, scale_style=style, fij=fij, raw=data, titles=titles))
+    return Scene(path=path, title=title, frame=frame, frame_points=frame_points, links=links,
+                 joints=joints, driver=driver, branches=branches, outputs=outputs,
+                 scales=scales, scale_style=style, fij=fij, raw=data, titles=titles,
+                 sheet=sheet_of(data, path, title, titles))
 
 
 def _link_id(r: Reader, key: str) -> int:

@@ -182,3 +182,15 @@ def sheet_spec(raw: dict[str, Any], path: str, default_title: str = "", **overri
         out["pins"] = tuple(pins)
     out.setdefault("title", default_title)
     return SheetSpec(**out)
+
+
+def sheet_of(raw: dict[str, Any], path: str, title: str, titles: dict[str, str]) -> SheetSpec:
+    """The file's ``[sheet]``, its title in the sheet's language (InputError naming the field)."""
+    return sheet_spec(raw, path, titles.get(_language(raw), title))
+
+
+def _language(raw: dict) -> str:
+    """The sheet's language as the file gives it (its title is the scene's in that language)."""
+    sheet = raw.get("sheet")
+    lang = sheet.get("language") if isinstance(sheet, dict) else None
+    return lang if lang in ("ru", "en") else "ru"

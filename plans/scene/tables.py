@@ -1,28 +1,30 @@
-"""The scene's other tables, read once with the scene: ``[sheet]``, ``[loads]``, ``[dynamics]``,
-``[diagrams]``.  Each is validated when the file is read, so a bad table fails ``plans
-solve``, ``plans draw`` and ``plans check`` alike (one line, exit 2), and every reader takes
-the typed record the scene holds instead of reading the raw table again.
+"""The scene's other tables, each read once into the typed record the scene holds:
+``[sheet]`` when the file is read (:func:`plans.scene.sheet.sheet_of`), ``[loads]``, ``[dynamics]`` and
+``[diagrams]`` when the scene is solved (:func:`with_tables`, which ``plans.solve`` calls
+before anything is computed), whether or not the scene asks for what they feed.  So a bad
+table fails ``plans solve`` and ``plans draw`` alike (one line, exit 2), and every reader
+takes the scene's record instead of reading the raw table again.
 
 The parsers of ``[loads]`` and of the cycle's tables live with the rooms that use them
-(:mod:`plans.forces.loads`, :mod:`plans.cycle.spec`); they are imported here only when the
-file has such a table or asks for what needs it, so a scene of plans alone loads neither.
+(:mod:`plans.forces.loads`, :mod:`plans.cycle.spec`, with their numpy typing and
+dataclasses): loaded at the solve, not with the file, ``plans solve`` starts as fast as it did.
 """
 
 from __future__ import annotations
 
 from dataclasses import replace
-from typing import TYPE_CHECKING
-
-from plans.scene.sheet import sheet_spec
+from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
     from plans.scene.model import Scene
 
 
-def with_tables(scene: Scene) -> Scene:
-    """``scene`` holding its tables, each read and validated (InputError naming the field)."""
+def with_tables(scene: Scene, **changes: Any) -> Scene:
+    """``scene`` (with ``changes``) holding its ``[loads]``, ``[dynamics]`` and ``[diagrams]``,
+    each read and validated (InputError naming the field); read once (``tables``)."""
+    if scene.tables:
+        return replace(scene, **changes) if changes else scene
     raw = scene.raw
-    sheet = sheet_spec(raw, scene.path, scene.title_in(_language(raw)))
     loads = dynamics = diagrams = None
     if "loads" in raw or scene.wants("force_polygons") or scene.wants("lever") or scene.wants("dynamics"):
         from plans.forces.loads import parse_loads
@@ -42,17 +44,10 @@ def with_tables(scene: Scene) -> Scene:
             diagrams = spec.diagrams_spec(scene)
         else:
             spec.check_table(scene, "diagrams")
-    out = replace(scene, sheet=sheet, loads=loads, dynamics_spec=dynamics, diagrams_spec=diagrams)
+    out = replace(scene, loads=loads, dynamics_spec=dynamics, diagrams_spec=diagrams, tables=True, **changes)
     if loads is not None:
         out.memo["loads"] = loads  # what plans.forces.loads.parse_loads reads back: parsed once
     return out
-
-
-def _language(raw: dict) -> str:
-    """The sheet's language as the file gives it (its title is the scene's in that language)."""
-    sheet = raw.get("sheet")
-    lang = sheet.get("language") if isinstance(sheet, dict) else None
-    return lang if lang in ("ru", "en") else "ru"
 
 
 __all__ = ["with_tables"]
