@@ -6,7 +6,6 @@ sheets compute nothing of the mechanism themselves.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -106,10 +105,8 @@ def build_panels(sol: Solution, spec: SheetSpec) -> tuple[list[Panel], float]:
 
 def fit_for(spec: SheetSpec) -> float:
     """The fraction of the A1 target lengths the plans, polygons and lever are solved at for
-    ``spec``'s paper: on a smaller sheet the square root of the ratio of the sheets' sizes
-    (A3 about 0.7 of A1: smaller, still readable), the scales still round."""
-    w, h = spec.size
-    return min(1.0, math.sqrt(max(w, h) / 841.0))
+    ``spec``'s paper (:attr:`plans.scene.sheet.SheetSpec.fit`), the scales still round."""
+    return spec.fit
 
 
 def _rows(scene: Scene, readings) -> list:

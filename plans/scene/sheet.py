@@ -5,6 +5,7 @@ alike.  The sheets themselves are drawn by ``drawings``; this is only what the f
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 from plans.errors import InputError
@@ -86,6 +87,13 @@ class SheetSpec:
     def size(self) -> tuple[float, float]:
         w, h = FORMATS[self.format]
         return (w, h) if self.orientation == "landscape" else (h, w)
+
+    @property
+    def fit(self) -> float:
+        """The fraction of the A1 target lengths the plans, polygons and lever are drawn at on
+        this paper (``plans.solve(scene, fit=scene.sheet.fit)``): on a smaller sheet the square
+        root of the ratio of the sheets' sizes (A3 about 0.7 of A1: smaller, still readable)."""
+        return min(1.0, math.sqrt(max(self.size) / 841.0))
 
 
 PANEL_KINDS = ("positions", "scheme", "velocity", "acceleration", "table", "group", "crank", "lever", "legend")
