@@ -23,6 +23,16 @@ if TYPE_CHECKING:
 from plans.tolerances import ILL_CONDITIONED
 
 
+def __getattr__(name: str) -> Any:
+    """``from plans.results import Solution`` as before (loaded when asked for: the start of
+    ``plans solve`` does not pay for it)."""
+    if name == "Solution":
+        from plans.solution import Solution
+
+        return Solution
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
 def solve_scene(scene: Scene) -> Solution:
     """Everything the scene asks for, computed now (``plans solve``); a construction that has
     no answer names the file.  :func:`plans.solve` computes each part when it is first read."""
