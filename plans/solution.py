@@ -196,11 +196,12 @@ class Solution:
             return Revolution(_revolution(self, n), 1)
 
         step = (REVOLUTION - 1) // (n - 1) if n > 1 and (REVOLUTION - 1) % (n - 1) == 0 else 0
-        if not step:
+        if not step or self._parts.get("no revolution"):
             return self._part(("revolution", n), own)
         try:
             whole = self._part(("revolution", REVOLUTION), lambda: _revolution(self, REVOLUTION))
         except PlansError:  # it may turn through the coarser angles all the same
+            self._parts["no revolution"] = True  # (not tried again)
             return self._part(("revolution", n), own)
         return Revolution(whole, step)
 

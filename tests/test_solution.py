@@ -296,3 +296,23 @@ def test_a_smaller_sheet_is_drawn_from_a_solution_at_its_fit():
     assert a == [s.svg() for s in draw(V_ENGINE, format="A3").sheets]
     with pytest.raises(ValueError, match="fit"):
         plans.solve(scene, fit=0.0)
+
+
+def test_a_mechanism_that_does_not_turn_a_revolution_is_drawn_at_its_own_positions():
+    """A four-bar whose crank cannot go round (180 + 300 > 260 + 200): no revolution to read,
+    tried once; the sheets are drawn from the positions it has (no paths, no strokes)."""
+    from drawings.linkage import draw
+    from drawings.panels import cycle_size, strokes_over_cycle
+
+    data = read_toml(SAMPLES / "four_bar.toml")
+    data["links"]["1"]["length"] = 180
+    data["driver"].pop("positions")
+    data["driver"]["phi_deg"] = [0, 20]
+    sol = plans.solve(scene_from_dict(data, "locking.toml"))
+    with pytest.raises(plans.ConstructionError):
+        sol.revolution()
+    assert sol._parts["no revolution"] and strokes_over_cycle(sol) == {}
+    xs = [complex(sol.kinematics.point(p)[0][k]).real for p in ("O", "A", "B", "D", "E") for k in (0, 1)]
+    assert cycle_size(sol) >= max(xs) - min(xs) > 0
+    d = draw(sol)
+    assert d.sheets and "positions" in {p.kind for p in d.panels}
