@@ -160,7 +160,7 @@ def _language(scene: Scene, language: str | None) -> str:
         if language not in WORDS:
             raise InputError(f"expected one of {', '.join(WORDS)}, got {language!r}", field="--language")
         return language
-    lang = scene.sheet.language if scene.sheet is not None else "ru"  # the scene's [sheet], read with it
+    lang = scene.sheet.language  # the scene's [sheet], validated with it
     return lang if lang in WORDS else "ru"
 
 

@@ -136,11 +136,10 @@ class Scene:
     #: the target lengths of the plans, polygons and lever as a fraction of the A1 ones: a
     #: smaller sheet's (``plans.solve(scene, fit=...)``; never read from a file)
     fit: float = 1.0
-    #: the other tables as typed records (:mod:`plans.scene.tables`): ``[sheet]``
-    #: (plans.scene.sheet.SheetSpec) read with the file; ``[loads]`` (plans.forces.loads.Loads),
-    #: ``[dynamics]`` and ``[diagrams]`` (plans.cycle.spec) read by ``plans.solve`` (then
-    #: ``tables`` is True), None where the file neither gives nor needs them
-    sheet: Any = field(default=None, repr=False)
+    #: the other tables as typed records (:mod:`plans.scene.tables`): ``[loads]``
+    #: (plans.forces.loads.Loads), ``[dynamics]`` and ``[diagrams]`` (plans.cycle.spec) read by
+    #: ``plans.solve`` (then ``tables`` is True), None where the file neither gives nor needs
+    #: them; ``[sheet]`` is validated with the file and read as :attr:`sheet`
     loads: Any = field(default=None, repr=False)
     dynamics_spec: Any = field(default=None, repr=False)
     diagrams_spec: Any = field(default=None, repr=False)
@@ -152,6 +151,14 @@ class Scene:
     def title_in(self, lang: str) -> str:
         """The title in a sheet's language (the plain title where none is given for it)."""
         return self.titles.get(lang, self.title)
+
+    @property
+    def sheet(self) -> Any:
+        """The ``[sheet]`` table as a typed record (plans.scene.paper.SheetSpec), the title in
+        its language; validated when the file was read, so this never fails."""
+        from plans.scene.sheet import sheet_of
+
+        return sheet_of(self.raw, self.path, self.title, self.titles)
 
     def sheet_for(self, *, format: str | None = None, orientation: str | None = None,
                   language: str | None = None) -> Any:
@@ -265,12 +272,12 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
     outputs = _outputs(r, data)
     scales, style = _scales(r, data)
     fij = r.choice(data, "fij", "", FIJ_CONVENTIONS, "on_i_from_j")
-    from plans.scene.sheet import sheet_of
+    from plans.scene.sheet import check_sheet
 
+    check_sheet(data, path)  # the record is made when a reader asks for it (Scene.sheet)
     return Scene(path=path, title=title, frame=frame, frame_points=frame_points, links=links,
                  joints=joints, driver=driver, branches=branches, outputs=outputs,
-                 scales=scales, scale_style=style, fij=fij, raw=data, titles=titles,
-                 sheet=sheet_of(data, path, title, titles))
+                 scales=scales, scale_style=style, fij=fij, raw=data, titles=titles)
 
 
 def _link_id(r: Reader, key: str) -> int:

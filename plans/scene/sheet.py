@@ -1,16 +1,20 @@
 """The ``[sheet]`` table of a scene (and of an engine, gear or cam file): paper, title block,
 what is drawn, read and validated with the file, so a bad ``[sheet]`` fails every command
 alike.  The sheets themselves are drawn by ``drawings``; this is only what the file says.
+
+The typed record (:class:`plans.scene.paper.SheetSpec`) is made when a reader asks for it:
+``plans solve`` validates the table without defining the sheet's classes.
 """
 
 from __future__ import annotations
 
-import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from plans.errors import InputError
 from plans.reader import check_keys
-from plans.records import frozen
+
+if TYPE_CHECKING:
+    from plans.scene.paper import Pin, SheetSpec  # noqa: F401  (the records, typed where read)
 
 FORMATS: dict[str, tuple[float, float]] = {  # landscape width × height, mm (GOST 2.301)
     "A0": (1189.0, 841.0),
@@ -22,80 +26,6 @@ FORMATS: dict[str, tuple[float, float]] = {  # landscape width × height, mm (GO
 SHEET_FORMATS = ("A1", "A2", "A3", "A4")
 
 
-@frozen
-class Pin:
-    panel: str  # panel id: "velocity-45"
-    sheet: int  # 1-based
-    x: float  # top-left of the panel box, mm from the paper's top-left corner
-    y: float
-
-
-@frozen
-class SheetSpec:
-    """The ``[sheet]`` table of a scene (every key optional)::
-
-        [sheet]
-        format = "A1"                 # A1 | A2 | A3 | A4  (CLI --sheet overrides)
-        orientation = "landscape"     # or "portrait"
-        language = "ru"               # or "en"
-        title = "Механизм V-образного двигателя"   # name field (default: the scene's title);
-                                      # or one per language: { ru = "...", en = "..." }
-        designation = "ТММ.КП.07.00.00"
-        subtitle = "Кинематический и силовой анализ"
-        author = "Иванов И.И."
-        checked_by = "Петров П.П."
-        approved_by = ""
-        group = "гр. МТ-31"
-        organization = "МГТУ"
-        date = "21.11.26"             # written as given (no clock: same scene, same bytes)
-        first_sheet = 1               # number of this drawing's first sheet
-        total_sheets = 4              # "Sheets" cell (default: first_sheet - 1 + sheets drawn)
-        panels = ["positions", "scheme", "velocity", "acceleration", "table", "group", "crank", "lever",
-                  "legend"]           # kinds to draw (default: all the scene's outputs ask for)
-        positions = [45, 0]           # crank angles studied in detail: their schemes, plans, forces
-                                      # and tables (default: plans etc. at every position of the
-                                      # scene, schemes at the first two)
-        trace = ["S2"]                # points whose trajectory the plan of positions traces
-                                      # (default: the centres of mass of the connecting rods)
-        [[sheet.pins]]                # fix a panel: top-left corner in mm from the paper's corner
-        panel = "velocity-45"
-        sheet = 1
-        x = 300
-        y = 20
-    """
-
-    format: str = "A1"
-    orientation: str = "landscape"
-    language: str = "ru"
-    title: str = ""
-    designation: str = ""
-    subtitle: str = ""
-    author: str = ""
-    checked_by: str = ""
-    approved_by: str = ""
-    group: str = ""
-    organization: str = ""
-    date: str = ""
-    first_sheet: int = 1
-    total_sheets: int | None = None
-    panels: tuple[str, ...] | None = None  # kinds to draw (subset of what the scene asks)
-    positions: tuple[float, ...] | None = None  # crank angles to draw (subset of the scene's)
-    trace: tuple[str, ...] | None = None  # trajectories on the plan of positions
-    pins: tuple[Pin, ...] = ()
-
-    @property
-    def size(self) -> tuple[float, float]:
-        w, h = FORMATS[self.format]
-        return (w, h) if self.orientation == "landscape" else (h, w)
-
-    @property
-    def fit(self) -> float:
-        """The fraction of the A1 target lengths the plans, polygons and lever are drawn at on
-        this paper (``plans.solve(scene, fit=scene.sheet.fit)``): on a smaller sheet the square
-        root of the ratio of the sheets' sizes (A3 about 0.7 of A1: smaller, still readable)."""
-        return min(1.0, math.sqrt(max(self.size) / 841.0))
-
-
 PANEL_KINDS = ("positions", "scheme", "velocity", "acceleration", "table", "group", "crank", "lever", "legend")
 _KEYS = {"format", "orientation", "language", "title", "designation", "subtitle", "author",
          "checked_by", "approved_by", "group", "organization", "date", "first_sheet", "total_sheets",
@@ -104,6 +34,16 @@ _KEYS = {"format", "orientation", "language", "title", "designation", "subtitle"
 
 def sheet_spec(raw: dict[str, Any], path: str, default_title: str = "", **override: Any) -> SheetSpec:
     """Validate ``[sheet]`` (one-line InputError per problem); CLI options override it."""
+    from plans.scene.paper import Pin, SheetSpec  # noqa: F401  (the records, typed where read)
+
+    out = read_sheet(raw, path, default_title, **override)
+    if "pins" in out:
+        out["pins"] = tuple(Pin(*p) for p in out["pins"])
+    return SheetSpec(**out)
+
+
+def read_sheet(raw: dict[str, Any], path: str, default_title: str = "", **override: Any) -> dict[str, Any]:
+    """``[sheet]`` validated into the fields of a SheetSpec (pins as (panel, sheet, x, y))."""
     data = raw.get("sheet", {})
     if not isinstance(data, dict):
         raise InputError("expected a table [sheet]", file=path, field="sheet")
@@ -186,10 +126,10 @@ def sheet_spec(raw: dict[str, Any], path: str, default_title: str = "", **overri
             sh = p.get("sheet", 1)
             if isinstance(sh, bool) or not isinstance(sh, int) or not 1 <= sh <= 9999:
                 raise InputError("expected a sheet number >= 1", file=path, field=f"{f}.sheet")
-            pins.append(Pin(p["panel"], sh, float(p["x"]), float(p["y"])))
+            pins.append((p["panel"], sh, float(p["x"]), float(p["y"])))
         out["pins"] = tuple(pins)
     out.setdefault("title", default_title)
-    return SheetSpec(**out)
+    return out
 
 
 def sheet_of(raw: dict[str, Any], path: str, title: str, titles: dict[str, str]) -> SheetSpec:
@@ -197,8 +137,22 @@ def sheet_of(raw: dict[str, Any], path: str, title: str, titles: dict[str, str])
     return sheet_spec(raw, path, titles.get(_language(raw), title))
 
 
+def check_sheet(raw: dict[str, Any], path: str) -> None:
+    """The file's ``[sheet]`` validated, as :func:`sheet_of` reads it (InputError naming the field)."""
+    read_sheet(raw, path)
+
+
 def _language(raw: dict) -> str:
     """The sheet's language as the file gives it (its title is the scene's in that language)."""
     sheet = raw.get("sheet")
     lang = sheet.get("language") if isinstance(sheet, dict) else None
     return lang if lang in ("ru", "en") else "ru"
+
+
+def __getattr__(name: str) -> Any:
+    """``Pin`` and ``SheetSpec`` (:mod:`plans.scene.paper`) where they were, defined when first used."""
+    if name in ("Pin", "SheetSpec"):
+        from plans.scene import paper
+
+        return getattr(paper, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
