@@ -67,6 +67,11 @@ def reaction_label(i: int, j: int) -> str:
     return f"F_{i}{j}" if i < 10 and j < 10 else f"F_{i}_{j}"
 
 
+def name_of(rc: Reaction, fij: str) -> str:
+    """The name of a reaction in the scene's F_ij convention: ``F_21``, ``F_12_1``."""
+    return reaction_label(*((rc.on, rc.frm) if fij == "on_i_from_j" else (rc.frm, rc.on)))
+
+
 def reaction(fa: ForceAnalysis, i: int, j: int) -> tuple[Any, Reaction]:
     """F_ij over the positions and its reaction, in the scene's F_ij convention, either order
     (the other order reversed: F, the couple, F^τ and F^n of the other link).  KeyError where
@@ -139,8 +144,7 @@ def names(sol: Solution, k: int = 0) -> list[str]:
         out += [f"M_Phi_{m.link}" for m in fa.applied.moments if m.kind == "inertia"]
         out += [f"P_{f.link}" for f in fa.applied.forces if f.kind == "gas"]
         for rc in fa.reactions():
-            i, j = (rc.on, rc.frm) if scene.fij == "on_i_from_j" else (rc.frm, rc.on)
-            base = reaction_label(i, j)
+            base = name_of(rc, scene.fij)
             out += [base] + ([base + "^τ", base + "^n"] if rc.tau is not None else [])
         out += ["F_bal", "F_bal_lever"]
     return list(dict.fromkeys(out))
@@ -276,5 +280,5 @@ def _force_value(sol: Solution, name: str, k: int) -> float | None:
     return None if part is None else float(part[k])
 
 
-__all__ = ["G_STANDARD", "PATTERNS", "STUDENT_ONLY", "kind_of", "names", "points_of", "position", "reaction",
+__all__ = ["G_STANDARD", "PATTERNS", "STUDENT_ONLY", "kind_of", "name_of", "names", "points_of", "position", "reaction",
            "reaction_label", "reaction_name", "value", "values"]

@@ -135,15 +135,19 @@ def test_link_numbers_of_two_digits_read_as_one_digit_ones():
     from plans.check.providers import PROVIDERS
 
     assert next(kind for kind, pattern, _ in PROVIDERS if pattern.match("F_12_13^τ")) == "forces"
-    from plans.check.checkfile import CheckFile
-    from plans.check.providers import Context, exact_value
+    from plans.check.checkfile import check_from_dict
+    from plans.check.report import check
 
-    ctx = Context.__new__(Context)  # the checker's exact values of the renumbered mechanism
-    ctx.cf, ctx.scene, ctx.kin = CheckFile.__new__(CheckFile), two.scene, two.kinematics
-    ctx._forces, ctx._loaded, ctx._polygons = (two.scene.loads, two.forces.analysis), True, {}
-    object.__setattr__(ctx.cf, "scales", {})
-    got = exact_value(ctx, 0, "F_12_1^τ")
-    assert got is not None and got.value == pytest.approx(abs(one.value("F_21^τ", 0.0)), rel=1e-12)
+    def checked(scene: dict, name: str) -> float:  # the checker's exact value of one figure at 30°
+        cf = check_from_dict({"format": 1, "scene": scene, "scales": {"length": {"mu": 1000}},
+                              "positions": [{"phi_deg": 30, "values": {name: {"value": 100.0}}}]}, "c.toml")
+        return next(it.exact for it in check(cf).items if it.quantity == name)
+
+    renumbered = _renumbered(data, {1: 1, 2: 12, 3: 13, 4: 14})
+    assert checked(renumbered, "F_12_1^τ") == pytest.approx(abs(one.value("F_21^τ", 30)), rel=1e-12)
+    assert checked(renumbered, "F_13_14") == pytest.approx(checked(data, "F_34"), rel=1e-12)
+    with pytest.raises(plans.InputError, match="F_12_13"):  # the checker lists the names it knows
+        checked(renumbered, "F_21^τ")
 
 
 # --------------------------------------------------------------------------- solve once

@@ -503,7 +503,7 @@ def known_quantities(ctx: Context, k: int) -> list[str]:
         _, fa = got
         out += [f"Phi_{f.label[3:]}" for f in fa.applied.forces if f.label.startswith("Phi")]
         out += ["F_bal", "F_bal_lever"]
-        out += [f"F_{rc.name(ctx.scene.fij)[1:]}" for rc in fa.reactions()]
+        out += [quantities.name_of(rc, ctx.scene.fij) for rc in fa.reactions()]
     return out
 
 
