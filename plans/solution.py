@@ -244,7 +244,9 @@ class Solution:
             if d is None:
                 return ()
             scene = replace(d.scene, outputs=d.scene.outputs | {"velocity_plan"})
-            kin = solve(scene, np.asarray(d.spec.phi_deg, float), order=1)
+            phis = np.asarray(d.spec.phi_deg, float)
+            phis = phis[phis < phis[0] + 360.0 - 1e-9]  # the second revolution of 720° repeats the first's plans
+            kin = solve(scene, phis, order=1)
             mu_v = d.scales.analogue / abs(d.scene.driver.omega)
             out = []
             for k in range(kin.n):

@@ -154,22 +154,16 @@ class Scene:
 
     @property
     def sheet(self) -> Any:
-        """The ``[sheet]`` table as a typed record (plans.scene.paper.SheetSpec), the title in
-        its language; validated when the file was read, so this never fails."""
-        from plans.scene.sheet import sheet_of
+        """``[sheet]`` as a typed record (plans.scene.paper.SheetSpec), validated with the file."""
+        from plans.scene.sheet import sheet_for
 
-        return sheet_of(self.raw, self.path, self.title, self.titles)
+        return sheet_for(self)
 
-    def sheet_for(self, *, format: str | None = None, orientation: str | None = None,
-                  language: str | None = None) -> Any:
-        """The ``[sheet]`` with what a command overrides (``--sheet A3``, ``--language en``);
-        the title in the sheet's language."""
-        from plans.scene.sheet import sheet_spec
+    def sheet_for(self, **override: Any) -> Any:
+        """``[sheet]`` with what a command overrides (format, orientation, language = ...)."""
+        from plans.scene.sheet import sheet_for
 
-        sheet = self.raw.get("sheet")
-        lang = language or (sheet.get("language") if isinstance(sheet, dict) else None)
-        return sheet_spec(self.raw, self.path, self.title_in(lang if lang in ("ru", "en") else "ru"),
-                          format=format, orientation=orientation, language=language)
+        return sheet_for(self, **override)
 
     def wants(self, output: str) -> bool:
         return output in self.outputs
@@ -197,7 +191,8 @@ LINK_KEYS = {"name", "axis", "length", "points", "mass", "inertia", "centre"}
 JOINT_KEYS = {"kind", "links", "point", "guide", "slider_angle_deg",
               "f", "pin_radius", "friction_circle"}  # friction: plans.scene.friction
 GUIDE_KEYS = {"link", "through", "toward", "angle_deg", "offset"}
-DRIVER_KEYS = {"link", "omega", "omega_rpm", "sense", "eps", "phi_ref_deg", "phi_deg", "positions", "phi0_deg"}
+DRIVER_KEYS = {"link", "omega", "omega_rpm", "sense", "eps", "phi_ref_deg", "phi_deg", "positions", "phi0_deg",
+               "s_mm", "s_fraction", "s_stroke", "piston"}  # positions by the piston's travel: kinematics.travel
 #: ω at most 1e6 rad/s, and 0 or at least 1e-6 rad/s (a slower crank makes plan scales overflow).
 OMEGA_LIMIT = 1e6
 
@@ -277,9 +272,14 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
     from plans.scene.sheet import check_sheet
 
     check_sheet(data, path)  # the record is made when a reader asks for it (Scene.sheet)
-    return Scene(path=path, title=title, frame=frame, frame_points=frame_points, links=links,
-                 joints=joints, driver=driver, branches=branches, outputs=outputs,
-                 scales=scales, scale_style=style, fij=fij, raw=data, titles=titles)
+    scene = Scene(path=path, title=title, frame=frame, frame_points=frame_points, links=links,
+                  joints=joints, driver=driver, branches=branches, outputs=outputs,
+                  scales=scales, scale_style=style, fij=fij, raw=data, titles=titles)
+    if isinstance(data.get("driver"), dict) and ("s_mm" in data["driver"] or "s_fraction" in data["driver"]):
+        from plans.kinematics.travel import by_travel
+
+        scene = by_travel(scene, r)
+    return scene
 
 
 def _link_id(r: Reader, key: str) -> int:
@@ -485,6 +485,8 @@ def _driver(r: Reader, data: dict[str, Any], frame: int, frame_points: dict[str,
         phis = tuple(phi0 + 360.0 * k / n for k in range(n))
     else:
         raw = d.get("phi_deg")
+        if raw is None and ("s_mm" in d or "s_fraction" in d) and "phi_deg" not in d:
+            raw = 0.0  # placed by the piston's travel once the scene is built
         if raw is None:
             raise r.fail("driver.phi_deg", "missing crank angle(s): phi_deg = 45, a list, or positions = N")
         values = raw if isinstance(raw, list) else [raw]

@@ -137,6 +137,15 @@ def sheet_of(raw: dict[str, Any], path: str, title: str, titles: dict[str, str])
     return sheet_spec(raw, path, titles.get(_language(raw), title))
 
 
+def sheet_for(scene: Any, *, format: str | None = None, orientation: str | None = None,
+              language: str | None = None) -> SheetSpec:
+    """A scene's ``[sheet]`` with what a command overrides (``--sheet A3``, ``--language en``),
+    the title in the sheet's language."""
+    lang = language or _language(scene.raw)
+    return sheet_spec(scene.raw, scene.path, scene.title_in(lang), format=format, orientation=orientation,
+                      language=language)
+
+
 def check_sheet(raw: dict[str, Any], path: str) -> None:
     """The file's ``[sheet]`` validated, as :func:`sheet_of` reads it (InputError naming the field)."""
     read_sheet(raw, path)
