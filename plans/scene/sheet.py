@@ -26,7 +26,8 @@ FORMATS: dict[str, tuple[float, float]] = {  # landscape width × height, mm (GO
 SHEET_FORMATS = ("A1", "A2", "A3", "A4")
 
 
-PANEL_KINDS = ("positions", "scheme", "velocity", "acceleration", "table", "group", "crank", "lever", "legend")
+PANEL_KINDS = ("positions", "scheme", "velocity", "acceleration", "table", "group", "crank", "lever", "legend",
+               "centres")
 _KEYS = {"format", "orientation", "language", "title", "designation", "subtitle", "author",
          "checked_by", "approved_by", "group", "organization", "date", "first_sheet", "total_sheets",
          "panels", "positions", "trace", "pins"}
