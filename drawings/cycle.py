@@ -20,6 +20,7 @@ from plans.cycle import spline
 from plans.cycle.diagrams import Diagrams
 from plans.cycle.dynamics import Dynamics
 from plans.cycle.table import CycleTable, TableRow
+from plans.scene.model import Scene
 from plans.solution import Solution
 
 from .backend import HAIR, MAIN, THIN, Recording, Style
@@ -421,9 +422,13 @@ def dynamics_panels(d: Dynamics, tables: Sequence[CycleTable], lang: str, analog
 # --------------------------------------------------------------------------- the hook
 
 
-def extend(sol: Solution, spec: SheetSpec, sheets: list[Sheet], scale_text: str | None = None) -> list[Sheet]:
+def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_text: str | None = None) -> list[Sheet]:
     """The drawing's sheets and, when the scene asks, the diagrams and dynamics sheets after them,
-    numbered on from the last."""
+    numbered on from the last (a Scene is solved first, by plans.solve)."""
+    if not isinstance(sol, Solution):
+        from plans.solution import solve
+
+        sol = solve(sol)
     scene = sol.scene
     if not (scene.wants("diagrams") or scene.wants("dynamics")):
         return sheets
