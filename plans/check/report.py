@@ -69,6 +69,7 @@ from plans.check.providers import STUDENT_ONLY, Context, Exact, exact_value, kno
 from plans.check.relations import relation_findings
 from plans.errors import InputError, OutputError, PlansError, one_line
 from plans.io import atomic_write, dumps, refuse_input, write_all
+from plans.io import remove as remove_files
 from plans.units import DUST, percent
 
 _SCALE_UNIT = {"length": "mm/m", "velocity": "mm/(m/s)", "acceleration": "mm/(m/s²)", "force": "mm/N"}
@@ -446,8 +447,7 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
             bad += 1
             _err(one_line(exc))
             rows.append(summary_row(str(f), None, str(exc)))
-            for old in reports:  # a report of an earlier run would look current
-                old.unlink(missing_ok=True)
+            remove_files(reports)  # a report of an earlier run would look current
             _after(args, f, False)
             continue
         _after(args, f, True)
