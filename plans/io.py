@@ -173,6 +173,25 @@ def read_toml(path: str | Path) -> dict[str, Any]:
     return loads_toml(text, str(path))
 
 
+#: The deepest nesting of tables and arrays a file of the family may have (the deepest
+#: sample has 5): every reader walks a file recursively.
+MAX_DEPTH = 32
+
+
+def _check_depth(data: Any, path: str) -> None:
+    """Refuse tables and arrays nested deeper than MAX_DEPTH (walked without recursion)."""
+    stack = [(data, 0, "")]
+    while stack:
+        node, depth, where = stack.pop()
+        if depth > MAX_DEPTH:
+            raise InputError(f"tables or arrays nested more than {MAX_DEPTH} deep; expected a file of the family",
+                             file=path, field=where[:80] + ("..." if len(where) > 80 else ""))
+        if isinstance(node, dict):
+            stack.extend((v, depth + 1, f"{where}.{k}" if where else str(k)) for k, v in node.items())
+        elif isinstance(node, list):
+            stack.extend((v, depth + 1, f"{where}[{i}]") for i, v in enumerate(node))
+
+
 def loads_toml(text: str, path: str) -> dict[str, Any]:
     """TOML text as a dict; malformed TOML, or text a sheet cannot show (control characters,
     noncharacters), is one InputError line."""
@@ -184,5 +203,6 @@ def loads_toml(text: str, path: str) -> dict[str, Any]:
         raise InputError(f"malformed TOML: {exc}", file=path) from None
     except RecursionError:
         raise InputError("malformed TOML: nested too deeply", file=path) from None
+    _check_depth(data, path)
     check_text(data, file=path)
     return data

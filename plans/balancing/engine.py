@@ -38,7 +38,7 @@ from pathlib import Path
 from typing import Any
 
 from plans.io import loads_toml, read_toml
-from plans.reader import NUMBER_LIMIT, Reader, check_keys
+from plans.reader import NUMBER_LIMIT, Reader, check_keys, reduce_deg
 from plans.units import LENGTH_UNITS, rpm_to_rad_s
 
 TOP_KEYS = {"format", "kind", "title", "unit", "r", "lambda", "omega", "omega_rpm", "strokes",
@@ -141,15 +141,9 @@ def parse_engine(text: str, path: str = "<engine>") -> Engine:
 def engine_from_dict(data: dict[str, Any], path: str = "<engine>") -> Engine:
     """Validate an engine table; every problem is one InputError naming the key."""
     rd = _Reader(path)
-    if data.get("format") != 1:
-        raise rd.fail("format", "expected format = 1")
-    if data.get("kind") != "engine":
-        from plans.kinds import command_for
+    from plans.kinds import check_top
 
-        kind = data.get("kind", "linkage")
-        hint = command_for(kind) if isinstance(kind, str) else ""
-        raise rd.fail("kind", f"this is a {kind!r} file, not an engine; {hint}expected kind = \"engine\"")
-    check_keys(data, TOP_KEYS, file=path, where="")
+    check_top(data, path, "engine", TOP_KEYS)
     unit = rd.choice(data, "unit", "", LENGTH_UNITS, default="mm")
     title = data.get("title", Path(path).stem)
     if not isinstance(title, str):
@@ -246,9 +240,9 @@ def _cranks(rd: _Reader, data: dict[str, Any], raw: list[dict[str, Any]], banks:
         for k, v in enumerate(lst):
             if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
                 raise rd.fail(f"crank_deg[{k}]", f"expected a number of degrees, got {v!r}")
-            degs.append(float(v))
+            degs.append(reduce_deg(float(v)))  # any finite angle, reduced exactly
     elif len(per) == n:
-        degs = [rd.number(body, "crank_deg", f"cylinders[{k}].") for k, body in enumerate(raw)]
+        degs = [rd.angle(body, "crank_deg", f"cylinders[{k}].") for k, body in enumerate(raw)]
     elif n == 1:
         degs = [0.0]
     else:
