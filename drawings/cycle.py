@@ -392,13 +392,32 @@ def extend(scene: Scene, spec: SheetSpec, sheets: list[Sheet], scale_text: str |
     if cr is not None and cr.dynamics is not None:
         sub = dataclasses.replace(spec, subtitle=tr("dynamics", lang), pins=())
         tabs = cr.tables[-4:]  # the dynamics' own: analogues, I_pr, M_pr, work and energy
-        extra += compose(dynamics_panels(cr.dynamics, tabs, lang), sub, scale_text, scene.path)
+        extra += compose(_fitting_dynamics(scene, cr.dynamics, tabs, sub), sub, scale_text, scene.path)
     out = list(sheets) + extra
     for i, sh in enumerate(out):
         sh.number, sh.count = i + 1, len(out)
         sh.prims = []
         sh.render()
     return out
+
+
+def _fitting_dynamics(scene: Scene, d: Dynamics, tabs: Sequence[CycleTable], spec: SheetSpec) -> list[Panel]:
+    """The dynamics sheet's panels as they fit the sheet: on a small one the φ axis of the
+    diagrams is shortened (240 mm on A1 and A2) and their heights lowered until every
+    diagram fits, not refused."""
+    from .sheet import _fits_empty
+
+    panels = dynamics_panels(d, tabs, spec.language)
+    axis = 240.0
+    from plans.cycle.dynamics import dynamics
+
+    height = 1.0
+    while not all(_fits_empty(p, spec.format, spec.orientation) for p in panels) and axis > 60.0:
+        axis = max(60.0, math.floor(axis * 0.8 / 10.0) * 10.0)
+        height = max(0.4, height * 0.85)
+        d = dynamics(scene, axis_mm=axis, height=height)
+        panels = dynamics_panels(d, tabs, spec.language)
+    return panels
 
 
 def _kin(scene: Scene):

@@ -272,3 +272,14 @@ def test_a_parallelogram_at_its_change_point_is_indeterminate(tmp_path, capsys):
     f.write_text(text.replace("positions = 12", "phi_deg = [30, 60]"), encoding="utf-8")
     assert main(["solve", str(f), "--quiet"]) == 0  # beside the change point it is a parallelogram
     capsys.readouterr()
+
+
+def test_the_dynamics_sample_is_drawn_on_a4_at_smaller_scales(tmp_path, capsys):
+    """Where a smaller scale exists a sheet is scaled (the plan of positions, the diagrams'
+    φ axis and heights) and split, not refused."""
+    out = tmp_path / "a4"
+    assert main(["draw", str(SAMPLES / "dynamics_slider_crank.toml"), "-o", str(out), "--sheet", "A4"]) == 0
+    ids = " ".join(p.read_text(encoding="utf-8") for p in out.glob("*.svg"))
+    for pid in ('id="positions', 'id="dyn-M', 'id="dyn-A', 'id="dyn-I', 'id="dyn-W'):
+        assert pid in ids, pid
+    capsys.readouterr()
