@@ -103,8 +103,8 @@ numbers("cam", ("offset",), ("roller",), skip=("tiny",))  # an offset or roller 
 numbers("cam", ("base_radius",), ("omega_rpm",), ("pressure_angle_rise_deg",),
         ("pressure_angle_return_deg",), ("step_deg",), ("phases", 0, "angle_deg"), ("phases", 0, "stroke"))
 numbers("osc", ("arm",), ("pivot",), ("phases", 0, "swing_deg"))
-numbers("engine", ("r",), ("lambda",), ("omega_rpm",), ("m_rot",), ("m_rec",), ("cylinders", 1, "bank_deg"))
-numbers("engine", ("cylinders", 1, "z"), skip=("tiny",))  # a coordinate of dust is 0
+numbers("engine", ("r",), ("lambda",), ("omega_rpm",), ("m_rot",), ("m_rec",))
+numbers("engine", ("cylinders", 1, "z"), ("cylinders", 1, "bank_deg"), skip=("tiny",))  # dust is 0
 numbers("dynamics", ("dynamics", "rotor_inertia"), ("dynamics", "delta"), ("links", "2", "mass"),
         ("links", "2", "inertia"), ("driver", "omega"), ("loads", "gas", 0, "area"))
 numbers("cycle", ("cycle", "rule_pct"), ("cycle", "segment_mm"), ("cycle", "velocity_scale", "mu"),

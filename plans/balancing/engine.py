@@ -172,7 +172,7 @@ def engine_from_dict(data: dict[str, Any], path: str = "<engine>") -> Engine:
     n = len(raw)
     for k, body in enumerate(raw):
         check_keys(body, CYLINDER_KEYS, file=path, where=f"cylinders[{k}].")
-    banks = [math.radians(rd.number(body, "bank_deg", f"cylinders[{k}].", default=0.0))
+    banks = [math.radians(rd.number(body, "bank_deg", f"cylinders[{k}].", default=0.0, floor=0.0))
              for k, body in enumerate(raw)]
     for k, g in enumerate(banks):
         if not abs(g) < math.pi:

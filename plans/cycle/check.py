@@ -183,7 +183,7 @@ def check_cycle(path: str | Path) -> CycleReport:
     if not (isinstance(phis, list) and phis and all(isinstance(p, int | float) and not isinstance(p, bool)
                                                     for p in phis)):
         raise _fail(path, "cycle.phi_deg", "expected the student's crank angles, e.g. [0, 30, 60]")
-    phis_a = np.asarray([rd.value(p, "cycle.phi_deg", limit=ANGLE_LIMIT_DEG) for p in phis], float)
+    phis_a = np.asarray([rd.value(p, "cycle.phi_deg", limit=ANGLE_LIMIT_DEG, floor=0.0) for p in phis], float)
     n = len(phis)
     sign = cyc.get("sign", "driving")
     if sign not in ("driving", "resisting"):

@@ -84,8 +84,9 @@ def _table(scene: Scene, key: str, known: set[str]) -> dict[str, Any]:
     return raw
 
 
-def _number(scene: Scene, raw: dict[str, Any], key: str, where: str) -> float:
-    return Reader(scene.path).value(raw[key], f"{where}.{key}")
+def _number(scene: Scene, raw: dict[str, Any], key: str, where: str, floor: float | None = None) -> float:
+    """A number by the reader's rule (``floor=0`` where the caller checks a range of its own)."""
+    return Reader(scene.path).value(raw[key], f"{where}.{key}", floor=floor)
 
 
 def _positions(scene: Scene, raw: dict[str, Any], where: str, *, equal: bool) -> tuple[float, ...]:
@@ -99,7 +100,7 @@ def _positions(scene: Scene, raw: dict[str, Any], where: str, *, equal: bool) ->
         if not (isinstance(vals, list) and 4 <= len(vals) <= MAX_POSITIONS):
             raise _fail(scene, f"{where}.phi_deg", f"expected 4 to {MAX_POSITIONS} crank angles in degrees")
         rd = Reader(scene.path)
-        phis = [rd.value(v, f"{where}.phi_deg", limit=ANGLE_LIMIT_DEG) for v in vals]
+        phis = [rd.value(v, f"{where}.phi_deg", limit=ANGLE_LIMIT_DEG, floor=0.0) for v in vals]
         # Closer positions than MIN_STEP_DEG make the curve's chord slopes 0/0.
         if any(b - a < MIN_STEP_DEG for a, b in zip(phis, phis[1:], strict=False)):
             raise _fail(scene, f"{where}.phi_deg", "expected crank angles increasing from position to position "
@@ -143,7 +144,7 @@ def dynamics_spec(scene: Scene) -> DynamicsSpec:
     where = "dynamics"
     if "delta" not in raw:
         raise _fail(scene, "dynamics.delta", "missing the coefficient of fluctuation δ, e.g. delta = 0.05")
-    delta = _number(scene, raw, "delta", where)
+    delta = _number(scene, raw, "delta", where, floor=0.0)
     # Below DELTA_FLOOR ω_max² − ω_min² is lost to round-off (and no flywheel is that uniform).
     if not DELTA_FLOOR <= delta < 1.0:
         raise _fail(scene, "dynamics.delta", f"expected {DELTA_FLOOR:g} <= δ < 1, got {delta:g}")
@@ -196,7 +197,7 @@ def diagrams_spec(scene: Scene) -> DiagramsSpec:
         pole = _number(scene, raw, "pole_mm", "diagrams")
         if pole <= 0:
             raise _fail(scene, "diagrams.pole_mm", f"expected a positive pole distance in mm, got {pole:g}")
-    length = _number(scene, raw, "length_mm", "diagrams") if "length_mm" in raw else 240.0
+    length = _number(scene, raw, "length_mm", "diagrams", floor=0.0) if "length_mm" in raw else 240.0
     if not 60.0 <= length <= 700.0:
         raise _fail(scene, "diagrams.length_mm", f"expected a φ axis from 60 to 700 mm long, got {length:g}")
     if scene.driver.omega == 0:
