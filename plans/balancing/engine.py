@@ -38,7 +38,7 @@ from pathlib import Path
 from typing import Any
 
 from plans.io import loads_toml, read_toml
-from plans.reader import NUMBER_LIMIT, Reader, check_keys, reduce_deg
+from plans.reader import NUMBER_LIMIT, Reader, check_keys, reduce_deg, show
 from plans.units import LENGTH_UNITS, rpm_to_rad_s
 
 TOP_KEYS = {"format", "kind", "title", "unit", "r", "lambda", "omega", "omega_rpm", "strokes",
@@ -153,7 +153,7 @@ def engine_from_dict(data: dict[str, Any], path: str = "<engine>") -> Engine:
     r = rd.length(data["r"], "r", unit, positive=True)
     lam = rd.number(data, "lambda")
     if not 0.0 <= lam < 1.0:
-        raise rd.fail("lambda", f"expected 0 <= lambda = r/l < 1 (the rod longer than the crank), got {lam!r}")
+        raise rd.fail("lambda", f"expected 0 <= lambda = r/l < 1 (the rod longer than the crank), got {show(lam)}")
     if "omega" in data and "omega_rpm" in data:
         raise rd.fail("omega_rpm", "give omega (rad/s) or omega_rpm, not both")
     if "omega_rpm" in data:
@@ -162,7 +162,7 @@ def engine_from_dict(data: dict[str, Any], path: str = "<engine>") -> Engine:
         omega = rd.number(data, "omega", positive=True)
     strokes = data.get("strokes", 4)
     if strokes not in (2, 4) or isinstance(strokes, bool):
-        raise rd.fail("strokes", f"expected 2 or 4, got {strokes!r}")
+        raise rd.fail("strokes", f"expected 2 or 4, got {show(strokes)}")
     m_rot0 = rd.number(data, "m_rot", positive=True) if "m_rot" in data else None
     m_rec0 = rd.number(data, "m_rec", positive=True) if "m_rec" in data else None
 
@@ -223,9 +223,9 @@ def _cranks(rd: _Reader, data: dict[str, Any], raw: list[dict[str, Any]], banks:
         if (not isinstance(order, list) or any(isinstance(x, bool) or not isinstance(x, int) for x in order)
                 or sorted(order) != list(range(1, n + 1))):
             raise rd.fail("firing_order", f"expected the numbers 1..{n} of the {n} cylinders, each once, "
-                                          f"got {order!r}")
+                                          f"got {show(order)}")
         if order[0] != 1:
-            raise rd.fail("firing_order", f"expected the order to start with cylinder 1, got {order!r}")
+            raise rd.fail("firing_order", f"expected the order to start with cylinder 1, got {show(order)}")
         delta = math.radians((720.0 if strokes == 4 else 360.0) / n)
         out = [0.0] * n
         for k, cyl in enumerate(order):
@@ -235,11 +235,11 @@ def _cranks(rd: _Reader, data: dict[str, Any], raw: list[dict[str, Any]], banks:
         lst = data["crank_deg"]
         if not isinstance(lst, list) or len(lst) != n:
             got = len(lst) if isinstance(lst, list) else lst
-            raise rd.fail("crank_deg", f"expected one angle per cylinder ({n} cylinders), got {got!r}")
+            raise rd.fail("crank_deg", f"expected one angle per cylinder ({n} cylinders), got {show(got)}")
         degs = []
         for k, v in enumerate(lst):
             if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
-                raise rd.fail(f"crank_deg[{k}]", f"expected a number of degrees, got {v!r}")
+                raise rd.fail(f"crank_deg[{k}]", f"expected a number of degrees, got {show(v)}")
             degs.append(reduce_deg(float(v)))  # any finite angle, reduced exactly
     elif len(per) == n:
         degs = [rd.angle(body, "crank_deg", f"cylinders[{k}].") for k, body in enumerate(raw)]

@@ -129,7 +129,7 @@ def _choice(data: dict[str, Any], key: str, choices: Iterable[str], path: str, w
         raise InputError(f"missing; expected one of {', '.join(map(repr, choices))}", file=path,
                          field=f"{where}{key}")
     if v not in choices:
-        raise InputError(f"expected one of {', '.join(map(repr, choices))}, got {v!r}", file=path,
+        raise InputError(f"expected one of {', '.join(map(repr, choices))}, got {show(v)}", file=path,
                          field=f"{where}{key}")
     return str(v)
 
@@ -158,12 +158,12 @@ def cam_from_dict(data: dict[str, Any], path: str) -> Cam:
     else:
         roller = _length(data, "roller", unit, path, default=0.0, at_least=0.0)
         if roller >= r0:
-            raise InputError(f"the roller must be smaller than the base radius ({data['roller']!r} vs "
-                             f"{data['base_radius']!r})", file=path, field="roller")
+            raise InputError(f"the roller must be smaller than the base radius ({show(data['roller'])} vs "
+                             f"{show(data['base_radius'])})", file=path, field="roller")
     offset = _length(data, "offset", unit, path, default=0.0)
     if not osc and abs(offset) >= r0:
-        raise InputError(f"the offset must be smaller than the base radius ({data.get('offset')!r} "
-                         f"vs {data['base_radius']!r})", file=path, field="offset")
+        raise InputError(f"the offset must be smaller than the base radius ({show(data.get('offset'))} "
+                         f"vs {show(data['base_radius'])})", file=path, field="offset")
     arm = pivot = 0.0
     if osc:
         for key in ("arm", "pivot"):
@@ -191,7 +191,7 @@ def cam_from_dict(data: dict[str, Any], path: str) -> Cam:
         raise InputError("the swing must stay below 90°", file=path, field="phases")
     title = data.get("title", Path(path).stem)
     if not isinstance(title, str):
-        raise InputError(f"expected a string, got {title!r}", file=path, field="title")
+        raise InputError(f"expected a string, got {show(title)}", file=path, field="title")
     return Cam(path, title, unit, follower, r0, offset, roller, flat, arm,
                pivot, omega, 1 if sense == "ccw" else -1, math.radians(a_rise), math.radians(a_ret), step,
                phases, h, data)

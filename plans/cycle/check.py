@@ -187,7 +187,7 @@ def check_cycle(path: str | Path) -> CycleReport:
     n = len(phis)
     sign = cyc.get("sign", "driving")
     if sign not in ("driving", "resisting"):
-        raise _fail(path, "cycle.sign", f"expected \"driving\" or \"resisting\", got {sign!r}")
+        raise _fail(path, "cycle.sign", f"expected \"driving\" or \"resisting\", got {show(sign)}")
     mu_v = _scale(path, cyc["velocity_scale"], "cycle.velocity_scale") if "velocity_scale" in cyc else None
     mu_an = _scale(path, cyc["analogue_scale"], "cycle.analogue_scale") if "analogue_scale" in cyc else None
     seg_tol = rd.number(cyc, "segment_mm", "cycle.", default=1.0, positive=True)

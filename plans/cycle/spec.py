@@ -29,7 +29,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from plans.errors import InputError
-from plans.reader import Reader
+from plans.reader import Reader, show
 from plans.scene.model import Scene
 
 #: The widest step between the positions of a cycle (the graphical integration needs the
@@ -125,7 +125,7 @@ def _positions(scene: Scene, raw: dict[str, Any], where: str, *, equal: bool) ->
     n = raw.get("positions", 12)
     if isinstance(n, bool) or not isinstance(n, int) or n < 4 or n > MAX_POSITIONS:
         raise _fail(scene, f"{where}.positions", f"expected a whole number of positions from 4 to {MAX_POSITIONS}, "
-                                                 f"got {n!r}")
+                                                 f"got {show(n)}")
     return tuple(phi0 + 360.0 * k / n for k in range(n))
 
 
@@ -153,7 +153,7 @@ def dynamics_spec(scene: Scene) -> DynamicsSpec:
     d = raw.get("driving", "constant")
     if isinstance(d, str):
         if d != "constant":
-            raise _fail(scene, "dynamics.driving", f"expected \"constant\" or a moment in N·m, got {d!r}")
+            raise _fail(scene, "dynamics.driving", f"expected \"constant\" or a moment in N·m, got {show(d)}")
     else:
         driving = _number(scene, raw, "driving", where)
     pole = None
@@ -163,7 +163,7 @@ def dynamics_spec(scene: Scene) -> DynamicsSpec:
             raise _fail(scene, "dynamics.pole_mm", f"expected a positive pole distance in mm, got {pole:g}")
     steps = raw.get("exact_steps", 3600)
     if isinstance(steps, bool) or not isinstance(steps, int) or not 360 <= steps <= 200000:
-        raise _fail(scene, "dynamics.exact_steps", f"expected a whole number from 360 to 200000, got {steps!r}")
+        raise _fail(scene, "dynamics.exact_steps", f"expected a whole number from 360 to 200000, got {show(steps)}")
     if scene.driver.omega == 0:
         raise _fail(scene, "driver.omega", "the dynamics needs the mean angular velocity of the crank (ω ≠ 0)")
     return DynamicsSpec(rotor, delta, driving, _positions(scene, raw, where, equal=False), pole, steps)
@@ -188,10 +188,10 @@ def diagrams_spec(scene: Scene) -> DiagramsSpec:
         raise _fail(scene, "diagrams.points", "expected at least one point (or links = [...]) to draw")
     qs = raw.get("quantities", list(QUANTITIES))
     if not (isinstance(qs, list) and qs and all(q in QUANTITIES for q in qs)):
-        raise _fail(scene, "diagrams.quantities", f"expected some of {list(QUANTITIES)}, got {qs!r}")
+        raise _fail(scene, "diagrams.quantities", f"expected some of {list(QUANTITIES)}, got {show(qs)}")
     method = raw.get("method", "chords")
     if method not in METHODS:
-        raise _fail(scene, "diagrams.method", f"expected one of {list(METHODS)}, got {method!r}")
+        raise _fail(scene, "diagrams.method", f"expected one of {list(METHODS)}, got {show(method)}")
     pole = None
     if "pole_mm" in raw:
         pole = _number(scene, raw, "pole_mm", "diagrams")

@@ -128,9 +128,9 @@ def _num(v: Any, path: str, field_: str, what: str, lo: float | None = None,
     ranged = (lo is not None and lo > 0) or hi is not None  # its own range says more than the floor
     f = Reader(path).value(v, field_, positive=lo == 0.0 and strict, floor=0.0 if ranged else None)
     if lo is not None and (f <= lo if strict else f < lo):
-        raise InputError(f"expected {what}, got {v!r}", file=path, field=field_)
+        raise InputError(f"expected {what}, got {show(v)}", file=path, field=field_)
     if hi is not None and f >= hi:
-        raise InputError(f"expected {what}, got {v!r}", file=path, field=field_)
+        raise InputError(f"expected {what}, got {show(v)}", file=path, field=field_)
     return f
 
 
@@ -173,7 +173,7 @@ def parse_gears(data: dict[str, Any], path: str) -> GearFile:
     c = _num(data.get("clearance", 0.25), path, "clearance", "c* >= 0", lo=0.0, strict=False)
     rule = data.get("shift_rule", "minimum")
     if rule not in SHIFT_RULES:
-        raise InputError(f"expected one of {', '.join(repr(r) for r in SHIFT_RULES)}, got {rule!r}",
+        raise InputError(f"expected one of {', '.join(repr(r) for r in SHIFT_RULES)}, got {show(rule)}",
                          file=path, field="shift_rule")
     ring_tip = _ring_tip(data, path, "ring_tip", "trimmed")
     title = data.get("title", "")
