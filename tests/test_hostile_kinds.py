@@ -163,6 +163,30 @@ case("dynamics-delta-huge", "dynamics", _set(("dynamics", "delta"), 5.0), "dynam
 case("fourbar-phi-1.5e300", "fourbar", lambda d: d["driver"].update(phi_deg=[1.5e300]) or d["driver"].pop("positions"),
      "driver.phi_deg", "1e+300")
 
+# --------------------------------------------------------------------------- drawing and the demonstration
+_DRAW = ("draw", "{f}", "-o", "{dir}/sheets")
+_FIRST = {"gears": ("module",), "planetary": ("module",), "cam": ("base_radius",), "osc": ("arm",),
+          "flat": ("base_radius",), "engine": ("r",), "inline4": ("m_rot",), "dynamics": ("dynamics", "delta"),
+          "fourbar": ("links", "1", "length")}
+for base, path in _FIRST.items():
+    for name in ("text", "nan", "huge", "tiny"):
+        case(f"{base}-draw-{_field(path)}-{name}", base, _set(path, HOSTILE[name]), _field(path), argv=_DRAW)
+    case(f"{base}-draw-format-2", base, _set(("format",), 2), "format", argv=_DRAW)
+    case(f"{base}-draw-unknown-key", base, _set(("titel",), "x"), "titel", argv=_DRAW)
+    case(f"{base}-draw-sheet-A9", base, lambda d: None, "sheet", argv=(*_DRAW, "--sheet", "A9"))
+    case(f"{base}-draw-output-is-input", base, lambda d: None, "--output", argv=("draw", "{f}", "-o", "{f}"))
+for base in ("dynamics", "fourbar"):
+    _DEMO = ("demo", "{f}", "-o", "{dir}/page.html")
+    case(f"{base}-demo-format-2", base, _set(("format",), 2), "format", argv=_DEMO)
+    case(f"{base}-demo-driver-omega-nan", base, _set(("driver", "omega_rpm" if base == "fourbar" else "omega"),
+                                                     math.nan), "driver.omega", argv=_DEMO)
+    case(f"{base}-demo-is-input", base, lambda d: None, "input file", argv=("demo", "{f}", "-o", "{dotf}"))
+    case(f"{base}-demo-phi-nan", base, lambda d: None, "--phi", argv=(*_DEMO, "--phi", "nan"))
+    case(f"{base}-demo-phi-huge", base, lambda d: None, "--phi", argv=(*_DEMO, "--phi", "1e400"))
+for kind in ("gears", "cam", "engine"):
+    case(f"{kind}-demo-wrong-kind", kind, lambda d: None, "kind", argv=("demo", "{f}", "-o", "{dir}/page.html"))
+case("cycle-csv-is-input", "cycle", lambda d: None, "input file", argv=("check", "{f}", "--csv", "{dotf}"))
+
 # --------------------------------------------------------------------------- outputs
 for base, (_, argv) in BASES.items():
     case(f"{base}-json-is-input", base, lambda d: None, "input file", "refusing",
