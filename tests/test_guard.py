@@ -283,3 +283,28 @@ def test_the_dynamics_sample_is_drawn_on_a4_at_smaller_scales(tmp_path, capsys):
     for pid in ('id="positions', 'id="dyn-M', 'id="dyn-A', 'id="dyn-I', 'id="dyn-W'):
         assert pid in ids, pid
     capsys.readouterr()
+
+
+def test_every_file_is_written_through_the_guard():
+    """By construction: outside plans.io and plans.guard no module of plans/ or drawings/
+    writes, renames or removes a file itself (a new command that writes through plans.io is
+    guarded without further care).  The few exceptions write only into temporary folders
+    of their own."""
+    import re
+
+    root = Path(__file__).resolve().parent.parent
+    pattern = re.compile(r"\.write_text\(|\.write_bytes\(|\bos\.(replace|rename|remove|unlink)\(|\.unlink\(|"
+                         r"shutil\.(copy|copyfile|copy2|move|rmtree)\(|\bopen\([^)]*[\"'][wax]b?[\"']")
+    allowed = {"plans/io.py", "plans/guard.py",
+               "plans/accuracy/fuzz.py",  # its cases live in a temporary folder; failures kept on request
+               "drawings/demo.py"}  # the page timed in a browser, from a temporary folder
+    found = []
+    for folder in ("plans", "drawings"):
+        for p in sorted((root / folder).rglob("*.py")):
+            rel = p.relative_to(root).as_posix()
+            if rel in allowed:
+                continue
+            for n, line in enumerate(p.read_text(encoding="utf-8").splitlines(), 1):
+                if pattern.search(line.split("#")[0]):
+                    found.append(f"{rel}:{n}: {line.strip()}")
+    assert not found, "write through plans.io (atomic_write, atomic_file, write_all, remove):\n" + "\n".join(found)
