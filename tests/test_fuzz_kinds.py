@@ -57,3 +57,10 @@ def test_the_command_of_every_kind_keeps_the_promise(kind):
                                 over_input=over)
         assert res.ok, f"{sample.rel} ({over or other or ''}): {res.why}\n--- the file ---\n" \
                        f"{raw.decode('utf-8', 'replace')[:3000]}"
+
+
+def test_the_long_run_covers_every_kind():
+    """``plans bench --fuzz N`` fuzzes every kind of file (and says how many of each)."""
+    summary = fuzz.fuzz(40, seed=1, draw_every=0)
+    assert set(summary.kinds) == set(KINDS) and not summary.failures, fuzz.report(summary, 1)
+    assert "by kind: cam" in fuzz.report(summary, 1)

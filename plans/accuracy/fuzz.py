@@ -556,6 +556,7 @@ class Summary:
     failures: dict[str, str] = field(default_factory=dict)  # distinct reason -> first case file
     nonfinite: int = 0
     foreign: int = 0
+    kinds: dict[str, int] = field(default_factory=dict)  # cases per file kind
 
 
 def fuzz(n: int, seed: int = 0, draw_every: int = 50, keep: Path | None = None,
@@ -581,6 +582,7 @@ def fuzz(n: int, seed: int = 0, draw_every: int = 50, keep: Path | None = None,
             res = run_case(sample, raw, tmp, draw=draw_every > 0 and i % draw_every == 0, json_out=i % 8 == 0,
                            command=other, over_input=over)
             summary.cases += 1
+            summary.kinds[sample.kind] = summary.kinds.get(sample.kind, 0) + 1
             if res.ok:
                 summary.accepted += res.status == 0
                 summary.refused += res.status == 2
@@ -608,6 +610,8 @@ def report(summary: Summary, seed: int) -> str:
              f"in one line, {summary.cases - summary.accepted - summary.refused} broke the promise "
              f"({summary.foreign} foreign exceptions, {summary.nonfinite} non-finite outputs, "
              f"{len(summary.failures)} distinct)"]
+    if summary.kinds:
+        lines.append("  by kind: " + ", ".join(f"{k} {n}" for k, n in sorted(summary.kinds.items())))
     lines += [f"  {name}: {reason}" for reason, name in summary.failures.items()]
     return "\n".join(lines)
 
