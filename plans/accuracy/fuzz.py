@@ -216,7 +216,9 @@ def mutate(data: dict[str, Any], rng: random.Random, n: int | None = None) -> di
 def mutate_bytes(text: str, rng: random.Random) -> bytes:
     """Damage at the byte level: not UTF-8, truncated, a stray character."""
     raw = text.encode("utf-8")
-    how = rng.randrange(4)
+    how = rng.randrange(5)
+    if how == 4:  # tables nested deeper than any reader walks
+        return raw + b"\n[" + b".".join([b"a"] * rng.choice((33, 200, 20000))) + b"]\n"
     i = rng.randrange(len(raw) + 1)
     if how == 0:
         return raw[:i] + rng.choice((b"\xff", b"\xc3", b"\xed\xa0\x80", b"\x00")) + raw[i:]
