@@ -98,7 +98,7 @@ def _del(*path: Any) -> Callable[[dict[str, Any]], None]:
 numbers("gears", ("module",), ("pressure_angle_deg",), ("addendum",), ("clearance",), ("gears", 0, "z"),
         ("gears", 0, "x"), ("shafts", 0, "speed_rpm"))
 numbers("planetary", ("module",), ("gears", 2, "z"), ("synthesis", "ratio"), ("synthesis", "tolerance"),
-        ("shafts", 0, "speed_rpm"), skip=("tiny",))
+        ("shafts", 0, "speed_rpm"))
 numbers("cam", ("offset",), ("roller",), skip=("tiny",))  # an offset or roller of dust is 0
 numbers("cam", ("base_radius",), ("omega_rpm",), ("pressure_angle_rise_deg",),
         ("pressure_angle_return_deg",), ("step_deg",), ("phases", 0, "angle_deg"), ("phases", 0, "stroke"))

@@ -125,7 +125,7 @@ def _num(v: Any, path: str, field_: str, what: str, lo: float | None = None,
          hi: float | None = None, strict: bool = True) -> float:
     if isinstance(v, bool) or not isinstance(v, int | float):
         raise InputError(f"expected {what}, got {show(v)}", file=path, field=field_)
-    ranged = (lo is not None and lo > 0) or hi is not None  # its own range says more than the floor
+    ranged = lo is not None and lo > 0  # its own range says more than the floor
     f = Reader(path).value(v, field_, positive=lo == 0.0 and strict, floor=0.0 if ranged else None)
     if lo is not None and (f <= lo if strict else f < lo):
         raise InputError(f"expected {what}, got {show(v)}", file=path, field=field_)
