@@ -28,7 +28,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from plans.check.report import Finding, Item, Report, check_file
-from plans.check.wording import KINDS_RU, UNITS_RU
+from plans.check.wording import CAUSES, KINDS_RU, UNITS_RU
 from plans.errors import PlansError
 from plans.kinematics.plan import Plan
 
@@ -178,6 +178,16 @@ def finding_text(f: Finding, lang: str = "ru") -> str:
     return f"[{kind}] {f.words.render(lang, lambda q: typeset(q, lang))}"
 
 
+def _fail_line(it: Item, lang: str) -> str:
+    pct = "" if it.error_pct is None else f", {fmt(it.error_pct, 3, lang)} %"
+    mm = "" if it.error_mm is None else f", {fmt(it.error_mm, 3, lang)} {'мм' if lang == 'ru' else 'mm'}"
+    where = f" ({it.where})" if it.where else ""
+    exact = "точно" if lang == "ru" else "exact"
+    unit = UNITS_RU.get(it.unit, it.unit) if lang == "ru" else it.unit.replace("^2", "²")
+    return (f"φ = {fmt(it.phi_deg, 6, lang)}°  {it.quantity} = {fmt(it.student, 4, lang)}, "
+            f"{exact} {fmt(it.exact, 4, lang)} {unit}{pct}{mm}{where}")
+
+
 def findings_panel(report: Report, lang: str = "ru") -> Panel:
     """The failed figures and the consistency findings, as text."""
     rec = Recording()
@@ -185,27 +195,39 @@ def findings_panel(report: Report, lang: str = "ru") -> Panel:
     title = "Замечания" if lang == "ru" else "Findings"
     rec.text(layout(f"{title}: {report.check.student}", 0, y, TITLE_SIZE, "start", "top"), "title", "check-list-title")
     y += TITLE_SIZE + 3
-    fails: list[Item] = [i for i in report.items if i.verdict == "fail"]
+    fails: list[Item] = report.unexplained if report.diagnosis is not None else \
+        [i for i in report.items if i.verdict == "fail"]
+    mark = fmt(report.mark or 0.0, 4, lang) if report.mark is not None else "—"
     if lang == "ru":
         head = (f"Проверено величин: {len(report.items)}; в допуске {report.passed}, вне допуска "
-                f"{report.failed}; замечаний {len(report.findings)}")
+                f"{report.failed}; ошибок {len(report.causes)}; замечаний {len(report.findings_left)}; оценка {mark}")
     else:
         head = (f"{len(report.items)} figures: {report.passed} pass, {report.failed} fail; "
-                f"{len(report.findings)} findings")
+                f"{len(report.causes)} mistakes; {len(report.findings_left)} findings; mark {mark}")
     rec.text(layout(head, 0, y, TEXT_SIZE, "start", "top"), "note", "check-list-summary")
     y += TEXT_SIZE + 3
     lines: list[tuple[str, str]] = []
-    for it in fails:
-        pct = "" if it.error_pct is None else f", {fmt(it.error_pct, 3, lang)} %"
-        mm = "" if it.error_mm is None else f", {fmt(it.error_mm, 3, lang)} {'мм' if lang == 'ru' else 'mm'}"
-        where = f" ({it.where})" if it.where else ""
-        exact = "точно" if lang == "ru" else "exact"
-        unit = UNITS_RU.get(it.unit, it.unit) if lang == "ru" else it.unit.replace("^2", "²")
-        lines.append((f"φ = {fmt(it.phi_deg, 6, lang)}°  {it.quantity} = {fmt(it.student, 4, lang)}, "
-                      f"{exact} {fmt(it.exact, 4, lang)} {unit}{pct}{mm}{where}", FAIL))
-    lines = [(_markup(text, lang), color) for text, color in lines]
+    for n, c in enumerate(report.causes, 1):  # the mistakes first, each with what it explains
+        at = ", ".join(f"{fmt(p, 6, lang)}°" for p in c.positions)
+        names = ", ".join(typeset(q, lang) for q in c.explains)
+        if lang == "ru":
+            text = (f"Ошибка {n}: {CAUSES[c.kind][1] if c.kind in CAUSES else c.kind}"
+                    + (f" (φ = {at})" if at else "") + (f"; объясняет: {names}" if names else "")
+                    + f"; −{fmt(c.deduction, 3, lang)}")
+        else:
+            text = (f"Mistake {n}: {c.detail}" + (f" (φ = {at})" if at else "")
+                    + (f"; explains {names}" if names else "") + f"; −{fmt(c.deduction, 3, lang)}")
+        lines.append((text, FAIL))
+        for i in c.items:  # the figures it explains, under it
+            lines.append(("    " + _markup(_fail_line(report.items[i], lang), lang), FAIL))
+        for fi in c.findings:
+            lines.append(("    " + finding_text(report.findings[fi], lang), "#000"))
+    for it in fails:  # the failures no mistake explains
+        lines.append((_fail_line(it, lang), FAIL))
+    lines = [(text if text.startswith(("Ошибка", "Mistake", "    ")) else _markup(text, lang), color)
+             for text, color in lines]
     f: Finding
-    for f in report.findings:
+    for f in report.findings_left:
         lines.append((finding_text(f, lang), "#000"))
     for k, (text, color) in enumerate(lines):
         for part in wrap(text, LIST_WIDTH, TEXT_SIZE):

@@ -397,6 +397,10 @@ def measure(samples: Path, log: Callable[[str], None] | None = None, with_peers:
     goals += sheet_goals(samples, 3 if quick else 5)
     log("goals: demonstration page ...")
     goals += page_goals(samples)
+    log("goals: the examiner ...")
+    from plans.accuracy.examiner_bench import examiner_goals
+
+    goals += examiner_goals(samples, quick)
     return {"goals": [asdict(g) for g in goals],
             "peers": [{k: v for k, v in asdict(r).items() if k != "runner"} for r in runs]}
 

@@ -112,6 +112,7 @@ class CheckFile:
     tolerance: Tolerance
     positions: tuple[StudentPosition, ...]
     sheet: str | None = None
+    rubric: tuple[tuple[str, float], ...] = ()  # deductions by kind of mistake (the teacher's)
 
 
 # --------------------------------------------------------------------------- names
@@ -162,7 +163,7 @@ def _fail(path: str, field: str, msg: str) -> InputError:
     return InputError(msg, file=path, field=field)
 
 
-_TOP = {"format", "student", "scene", "sheet", "scales", "tolerance", "positions", "title"}
+_TOP = {"format", "student", "scene", "sheet", "scales", "tolerance", "positions", "title", "rubric"}
 
 
 def check_from_dict(data: dict[str, Any], path: str = "<check>") -> CheckFile:
@@ -185,14 +186,40 @@ def check_from_dict(data: dict[str, Any], path: str = "<check>") -> CheckFile:
     raw = data.get("positions")
     if not isinstance(raw, list) or not raw:
         raise _fail(path, "positions", "expected at least one [[positions]] with phi_deg")
-    positions = tuple(_position(path, k, body, scene) for k, body in enumerate(raw))
+    blank = [isinstance(b, dict) and _blank(b) for b in raw]
+    if all(blank):
+        raise _fail(path, "positions", "nothing written at any position: fill in the student's figures")
+    positions = tuple(_position(path, k, body, scene) for k, body in enumerate(raw) if not blank[k])
     seen: set[float] = set()
     for pos in positions:
         if pos.phi_deg in seen:
             raise _fail(path, f"{pos.field}.phi_deg", f"position phi_deg = {pos.phi_deg:g} given twice")
         seen.add(pos.phi_deg)
+    rubric = read_rubric(path, data.get("rubric", {}), "rubric")
     return CheckFile(path=path, student=student, scene=scene, scales=scales, tolerance=tol,
-                     positions=positions, sheet=sheet)
+                     positions=positions, sheet=sheet, rubric=rubric)
+
+
+def _blank(body: dict[str, Any]) -> bool:
+    """A position of a blank form: every figure "" (not written)."""
+    figures = [v for key in ("measured", "values") if isinstance(body.get(key), dict) for v in body[key].values()]
+    return ("measured" in body or "values" in body) and all(v == "" or v == [] for v in figures)
+
+
+def read_rubric(path: str, raw: Any, where: str) -> tuple[tuple[str, float], ...]:
+    """A [rubric] table: ``full`` and the points each kind of mistake costs."""
+    from plans.check.diagnosis import RUBRIC_KEYS
+
+    if not isinstance(raw, dict):
+        raise _fail(path, where, "expected a table of deductions, e.g. coriolis_reversed = 15")
+    check_keys(raw, RUBRIC_KEYS, file=path, where=f"{where}.")
+    out = []
+    for key, value in raw.items():
+        if isinstance(value, bool) or not isinstance(value, int | float) or \
+                not (isinstance(value, int) or math.isfinite(value)) or not 0 <= value <= 1e6:
+            raise _fail(path, f"{where}.{key}", f"expected a number of points from 0 to 1e6, got {value!r}")
+        out.append((key, float(value)))
+    return tuple(out)
 
 
 #: Sheet sizes (landscape, mm) for the overlay.
@@ -232,8 +259,8 @@ def _scales(path: str, raw: Any) -> dict[str, float]:
     check_keys(raw, ("style", *SCALE_KINDS), file=path, where="scales.")
     out: dict[str, float] = {}
     for key, value in raw.items():
-        if key == "style":
-            continue
+        if key == "style" or value == "" or (isinstance(value, dict) and list(value.values()) == [""]):
+            continue  # a blank of the form: not given
         if isinstance(value, dict):
             if len(value) != 1 or not ({"mu", "K"} & set(value)):
                 raise _fail(path, f"scales.{key}", "expected { mu = mm per unit } or { K = unit per mm }")
@@ -307,12 +334,14 @@ def _entries(path: str, where: str, raw: Any, kind: str, default_where: str) -> 
         raise _fail(path, where, "expected a table of quantity = figure")
     out = []
     for name, spec in raw.items():
+        if spec == "":
+            continue  # a blank of the form: not written
         if bad_character(name) or len(name) > 200:
             raise _fail(path, f"{where}.{name!r}", "not a quantity name (e.g. v_B, omega_2, a_BA^τ, F_12)")
         q = canonical(name)
         if not _NAME.match(q.replace("^τ", "^τ")):
             raise _fail(path, f"{where}.{name}", "not a quantity name (e.g. v_B, omega_2, a_BA^τ, F_12)")
-        items = spec if isinstance(spec, list) else [spec]
+        items = [x for x in spec if x != ""] if isinstance(spec, list) else [spec]
         if not items:
             raise _fail(path, f"{where}.{name}", "expected at least one figure")
         for j, item in enumerate(items):

@@ -89,10 +89,12 @@ class Unchecked:
                 "reason": self.reason, "where": self.where}
 
 
-def consistent(w: Written, m: Written, mm_per_unit: float, rel: float) -> bool:
-    """A value that is its measured segment over the scale, to the student's rounding."""
+def consistent(w: Written, m: Written, mm_per_unit: float, rel: float, read_mm: float = 0.0) -> bool:
+    """A value that is its measured segment over the scale, to the student's rounding and
+    to the reading of the segment (±``read_mm``: the digits typed do not narrow it)."""
     want = m.value / mm_per_unit
-    return abs(w.value - want) <= w.half_ulp + m.half_ulp / mm_per_unit + rel * abs(want) + 1e-12
+    slack = max(w.half_ulp + m.half_ulp / mm_per_unit, read_mm / mm_per_unit)
+    return abs(w.value - want) <= slack + rel * abs(want) + 1e-12
 
 
 # --------------------------------------------------------------------------- consistency

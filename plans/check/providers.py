@@ -67,6 +67,7 @@ class Context:
         self._forces: Any = None
         self._forces_error: str | None = None
         self._loaded = False
+        self._memo: dict[tuple[int, str], Exact | None] = {}  # exact_value, asked again and again
 
     # -- plans
     def plan(self, k: int, kind: str) -> Plan | None:
@@ -478,6 +479,15 @@ STUDENT_ONLY = re.compile(r"^(F_bal_diff_pct|h_\w+)$")
 def exact_value(ctx: Context, k: int, q: str) -> Exact | None:
     """The first provider whose pattern matches q and that knows it; a value that vanishes
     against the size of its plan (b on the pole) is exactly zero."""
+    key = (k, q)
+    if key in ctx._memo:
+        return ctx._memo[key]
+    got = _exact_value(ctx, k, q)
+    ctx._memo[key] = got
+    return got
+
+
+def _exact_value(ctx: Context, k: int, q: str) -> Exact | None:
     for _, pattern, fn in PROVIDERS:
         if pattern.match(q):
             got = fn(ctx, k, q)

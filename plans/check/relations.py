@@ -43,12 +43,16 @@ def _candidates(ctx: Context, pos: StudentPosition, q: str) -> list[_Input]:
     out = []
     k = pos.index
     ex = exact_value(ctx, k, q)
+    # a figure read off a drawing is as good as the reading (±segment_mm), whatever digits it has
+    read = 0.0
+    if ex is not None and ex.mm_per_unit and ex.tol_mm is not None and ex.plan in ("velocity", "acceleration"):
+        read = ctx.cf.tolerance.segment_mm / ex.mm_per_unit
     for w in _written_any(pos, q, "measured"):
         if ex is not None and ex.mm_per_unit:
             out.append(_Input(w.value / ex.mm_per_unit, f"{as_written(w)} mm{where_note(w)} / {ex.mm_per_unit:g}", True,
-                              w.half_ulp / ex.mm_per_unit))
+                              max(w.half_ulp / ex.mm_per_unit, read)))
     for w in _written_any(pos, q, "value"):
-        out.append(_Input(w.value, f"{as_written(w)}{where_note(w)}", True, w.half_ulp))
+        out.append(_Input(w.value, f"{as_written(w)}{where_note(w)}", True, max(w.half_ulp, read)))
     if not out and position_free(ctx.scene, q):  # a length or a mass written at another position
         for other in ctx.cf.positions:
             for w in other.written(q, "value"):
@@ -156,7 +160,8 @@ def relation_findings(ctx: Context, pos: StudentPosition) -> list[Finding]:
         ex = exact_value(ctx, pos.index, w.quantity)
         if ex is None or not ex.mm_per_unit:
             continue
-        if any(consistent(w, m, ex.mm_per_unit, rel_tol) for m in measured):
+        read = cf.tolerance.segment_mm if cf.tolerance.model == "draftsman" else 0.0
+        if any(consistent(w, m, ex.mm_per_unit, rel_tol, read) for m in measured):
             continue
         m = measured[0]
         want = m.value / ex.mm_per_unit
@@ -179,9 +184,12 @@ def relation_findings(ctx: Context, pos: StudentPosition) -> list[Finding]:
                     continue
                 value = w.value / ex.mm_per_unit
             slack_abs = w.half_ulp
+            ex = exact_value(ctx, pos.index, r.target)
             if w.kind == "measured":
-                ex = exact_value(ctx, pos.index, r.target)
                 slack_abs = w.half_ulp / (ex.mm_per_unit if ex is not None and ex.mm_per_unit else 1.0)
+            if ex is not None and ex.mm_per_unit and ex.tol_mm is not None and ex.plan in ("velocity", "acceleration") \
+                    and _written_any(pos, r.target, "measured"):  # the target read off its own segment
+                slack_abs = max(slack_abs, cf.tolerance.segment_mm / ex.mm_per_unit)
             results = []
             ok = False
             for combo in itertools.product(*cands):

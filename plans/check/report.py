@@ -52,6 +52,7 @@ from pathlib import Path
 from typing import Any
 
 from plans.check.checkfile import CheckFile, StudentPosition, Written, load_check
+from plans.check.diagnosis import Diagnosis, diagnose
 from plans.check.findings import (
     Finding,
     Item,
@@ -82,6 +83,26 @@ class Report:
     findings: tuple[Finding, ...]
     unchecked: tuple[Unchecked, ...]
     context: Context = field(repr=False)
+    diagnosis: Diagnosis | None = field(default=None, repr=False)
+
+    @property
+    def causes(self) -> tuple:
+        return self.diagnosis.causes if self.diagnosis is not None else ()
+
+    @property
+    def unexplained(self) -> list[Item]:
+        return [self.items[i] for i in self.diagnosis.unexplained] if self.diagnosis is not None else []
+
+    @property
+    def mark(self) -> float | None:
+        return self.diagnosis.mark if self.diagnosis is not None else None
+
+    @property
+    def findings_left(self) -> list[Finding]:
+        """Findings no cause accounts for."""
+        if self.diagnosis is None:
+            return list(self.findings)
+        return [self.findings[i] for i in self.diagnosis.findings_left]
 
     @property
     def passed(self) -> int:
@@ -112,12 +133,23 @@ class Report:
             "tolerance": {"model": t.model, "segment_mm": t.segment_mm, "direction_deg": t.direction_deg,
                           "rule_pct": t.rule_pct, "arithmetic_pct": t.arithmetic_pct,
                           "balance_base": t.balance_base},
+            "causes": [c.to_json() for c in self.causes],
+            "unexplained": list(dict.fromkeys(i.quantity for i in self.unexplained)),
+            "unexplained_items": [{"quantity": i.quantity, "phi_deg": i.phi_deg, "field": i.field}
+                                  for i in self.unexplained],
+            "mark": self.mark,
+            "rubric": dict(self.diagnosis.rubric) if self.diagnosis is not None else {},
             "items": [i.to_json() for i in self.items],
-            "findings": [f.to_json() for f in self.findings],
+            "findings": [{**f.to_json(), "cause": self._cause_of(n)} for n, f in enumerate(self.findings)],
             "unchecked": [u.to_json() for u in self.unchecked],
             "summary": {"items": len(self.items), "passed": self.passed, "failed": self.failed,
-                        "findings": len(self.findings), "unchecked": len(self.unchecked)},
+                        "findings": len(self.findings), "unchecked": len(self.unchecked),
+                        "causes": len(self.causes), "unexplained": len(self.unexplained),
+                        "findings_left": len(self.findings_left)},
         }
+
+    def _cause_of(self, n: int) -> str | None:
+        return next((c.kind for c in self.causes if n in c.findings or n in c.superseded), None)
 
 
 # --------------------------------------------------------------------------- comparison
@@ -164,7 +196,8 @@ def check(cf: CheckFile) -> Report:
     findings += across_positions_findings(cf)
     findings += pi_findings(cf, items)
     findings += scale_findings(cf, items)
-    return Report(cf, tuple(items), tuple(findings), tuple(unchecked), ctx)
+    its, fis = tuple(items), tuple(findings)
+    return Report(cf, its, fis, tuple(unchecked), ctx, diagnose(ctx, its, fis, dict(cf.rubric)))
 
 
 
@@ -180,11 +213,14 @@ def _items(cf: CheckFile, pos: StudentPosition, q: str, ex: Exact) -> list[Item]
         raise InputError(f"{q} is not read off a plan at a scale the check file gives: write it under values",
                          file=cf.path, field=measured[0].field)
     rel = cf.tolerance.arithmetic_pct / 100.0
+    # a value derived from a measured segment is as good as the reading (±segment_mm),
+    # however many digits were typed
+    read = cf.tolerance.segment_mm if cf.tolerance.model == "draftsman" else 0.0
     rows: list[tuple[Written | None, Written | None]] = []  # (measured, value)
     free = list(values)
     for meas in measured:
         assert mu
-        pair = next((w for w in free if consistent(w, meas, mu, rel)), None)
+        pair = next((w for w in free if consistent(w, meas, mu, rel, read)), None)
         if pair is not None:
             free.remove(pair)
         rows.append((meas, pair))
@@ -246,20 +282,25 @@ def table(report: Report) -> str:
     lines = [f"Check of {cf.student} — {cf.scene.title}",
              f"  file {cf.path}; scales " + ", ".join(f"{k} {v:.4g} {_SCALE_UNIT.get(k, 'mm/unit')}" for k, v in cf.scales.items()),
              f"  tolerance: {model}"]
+    lines += _causes_text(report)
+    cause_no = {i: n for n, c in enumerate(report.causes, 1) for i in c.items}
     head = f"  {'quantity':<16}{'student':>14}{'exact':>14}{'error':>10}{'err mm':>9}{'tol mm':>8}{'tol %':>8}  verdict  where"
     for pos in cf.positions:
         lines.append("")
         lines.append(f"φ = {pos.phi_deg:g}°")
         lines.append(head)
-        for it in report.items:
+        for n, it in enumerate(report.items):
             if it.phi_deg != pos.phi_deg:
                 continue
             err = "—" if it.error_pct is None else f"{it.error_pct:+.1f} %"
             emm = "—" if it.error_mm is None else f"{it.error_mm:+.2f}"
             tmm = "—" if it.tolerance_mm is None else f"±{it.tolerance_mm:.2f}"
             tp = "—" if it.tolerance_pct is None else f"±{it.tolerance_pct:.1f}"
-            mark = "pass" if it.verdict == "pass" else "FAIL"
-            lines.append(f"  {it.quantity:<16}{_num(it.student):>14}{_num(it.exact):>14}{err:>10}{emm:>9}{tmm:>8}"
+            mark = "pass" if it.verdict == "pass" else (f"FAIL #{cause_no[n]}" if n in cause_no else "FAIL")
+            # only what the student wrote: a segment alone is shown in mm, its value is derived
+            shown = f"{fmt(it.student_mm)} mm" if it.figure == "measured" and it.student_mm is not None \
+                else _num(it.student)
+            lines.append(f"  {it.quantity:<16}{shown:>14}{_num(it.exact):>14}{err:>10}{emm:>9}{tmm:>8}"
                          f"{tp:>8}  {mark:<7}  {it.where}  [{it.unit}{', rule' if it.tolerance_model == 'rule' else ''}]")
     if report.unchecked:
         lines.append("")
@@ -267,31 +308,76 @@ def table(report: Report) -> str:
         for u in report.unchecked:
             lines.append(f"  φ = {u.phi_deg:g}°: {u.quantity} = {fmt(u.student)}{(' (' + u.where + ')') if u.where else ''}"
                          f": {u.reason}")
+    left = report.findings_left
+    if left:
+        lines.append("")
+        lines.append(f"Findings no mistake accounts for ({len(left)}):")
+        for f in left:
+            lines.append(f"  [{f.kind}] {f.message}")
     lines.append("")
-    lines.append(f"Findings ({len(report.findings)}):")
-    for f in report.findings:
-        lines.append(f"  [{f.kind}] {f.message}")
-    lines.append("")
-    lines.append(f"Summary: {len(report.items)} figures, {report.passed} pass, {report.failed} fail, "
-                 f"{len(report.findings)} findings")
+    lines.append(f"Summary: {len(report.items)} figures, {report.passed} pass, {report.failed} fail; "
+                 f"{len(report.causes)} mistakes, {len(report.unexplained)} failures unexplained, "
+                 f"{len(left)} other findings; mark {_mark(report)}")
     return "\n".join(lines)
 
 
-CSV_FIELDS = ("file", "student", "status", "items", "passed", "failed", "findings", "worst", "worst_error_pct",
-              "message")
+def _mark(report: Report) -> str:
+    full = report.diagnosis.rubric.get("full", 100.0) if report.diagnosis is not None else 100.0
+    return f"{fmt(report.mark or 0.0)} of {fmt(full)}"
+
+
+def _causes_text(report: Report) -> list[str]:
+    """The mistakes found, each with the figures it explains; then the failures no
+    mistake explains."""
+    lines = ["", f"Mark: {_mark(report)}"]
+    if not report.causes and not report.unexplained:
+        lines.append("No mistakes found: every figure agrees with the exact analysis within the tolerance.")
+        return lines
+    lines.append(f"Mistakes ({len(report.causes)}):")
+    for n, c in enumerate(report.causes, 1):
+        at = ", ".join(f"{p:g}°" for p in c.positions)
+        lines.append(f"  #{n} [{c.kind}] {c.detail}" + (f" (φ = {at})" if at else "") + f"; −{fmt(c.deduction)}")
+        if c.explains:
+            n_fig = len(c.items) or len(c.explains)
+            lines.append(f"     explains {n_fig} figure{'s' if n_fig != 1 else ''}: {', '.join(c.explains)}")
+        for fi in c.findings:
+            lines.append(f"     [{report.findings[fi].kind}] {report.findings[fi].message}")
+    if report.unexplained:
+        lines.append(f"Failures no mistake explains ({len(report.unexplained)}):")
+        for it in report.unexplained:
+            shown = f"{fmt(it.student_mm)} mm" if it.figure == "measured" and it.student_mm is not None \
+                else fmt(it.student)
+            lines.append(f"  φ = {it.phi_deg:g}°: {it.quantity} = {shown}{(' (' + it.where + ')') if it.where else ''}, "
+                         f"exact {fmt(it.exact)} {it.unit}")
+    return lines
+
+
+CSV_FIELDS = ("file", "student", "status", "mark", "causes", "unexplained", "items", "passed", "failed",
+              "findings", "worst", "worst_error_pct", "worst_tol", "message")
 
 
 def summary_row(path: str, report: Report | None, error: str | None = None) -> dict[str, Any]:
     if report is None:
-        return {"file": path, "student": "", "status": "error", "items": "", "passed": "", "failed": "",
-                "findings": "", "worst": "", "worst_error_pct": "", "message": error or ""}
-    worst = max((i for i in report.items if i.error_pct is not None), key=lambda i: abs(i.error_pct or 0.0),
-                default=None)
-    return {"file": path, "student": report.check.student, "status": "ok", "items": len(report.items),
-            "passed": report.passed, "failed": report.failed, "findings": len(report.findings),
+        return {"file": path, "student": "", "status": "error", "mark": "", "causes": "", "unexplained": "",
+                "items": "", "passed": "", "failed": "", "findings": "", "worst": "", "worst_error_pct": "",
+                "worst_tol": "", "message": error or ""}
+    # the worst figure in units of its own tolerance: 0 mm against a short exact segment is
+    # a fraction of a millimetre, not −100 %
+    worst = max((i for i in report.items if i.tolerance > 0), key=_in_tolerances, default=None)
+    causes = "; ".join(c.kind + (f" at {','.join(f'{p:g}' for p in c.positions)}°" if c.positions else "")
+                       for c in report.causes)
+    unexplained = "; ".join(f"{i.quantity} at {i.phi_deg:g}°" for i in report.unexplained)
+    return {"file": path, "student": report.check.student, "status": "ok",
+            "mark": "" if report.mark is None else fmt(report.mark), "causes": causes, "unexplained": unexplained,
+            "items": len(report.items), "passed": report.passed, "failed": report.failed,
+            "findings": len(report.findings_left),
             "worst": "" if worst is None else f"{worst.quantity} at {worst.phi_deg:g}°",
             "worst_error_pct": "" if worst is None or worst.error_pct is None else f"{worst.error_pct:.2f}",
-            "message": ""}
+            "worst_tol": "" if worst is None else f"{_in_tolerances(worst):.2f}", "message": ""}
+
+
+def _in_tolerances(it: Item) -> float:
+    return abs(it.student - it.exact) / it.tolerance if it.tolerance > 0 else 0.0
 
 
 def csv_text(rows: list[dict[str, Any]]) -> str:
@@ -320,9 +406,17 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
         "check", help="check a hand-drawn sheet (or a folder of them) against the exact analysis",
         description="Compare what a student measured and computed on a hand-drawn sheet with the exact "
                     "values at the student's scales; find inconsistencies in the student's own work.")
-    p.add_argument("path", metavar="FILE|DIR", help="a check file (TOML) or a folder of check files")
+    p.add_argument("path", metavar="FILE|DIR", nargs="?",
+                   help="a check file (TOML), a CSV form (one student per column) or a folder of check files "
+                        "(a scene file beside them is the scene of those that name none)")
     p.add_argument("--json", metavar="PATH", help="write the report as JSON ('-' for stdout; single file only)")
-    p.add_argument("--csv", metavar="PATH", help="write the summary table as CSV")
+    p.add_argument("--csv", metavar="PATH", help="write the summary table as CSV ('-' for stdout)")
+    p.add_argument("--template", metavar="SCENE", help="write a blank check file of this scene to fill in")
+    p.add_argument("--phi", metavar="DEG,DEG", help="with --template: the positions (default: the scene's)")
+    p.add_argument("-o", "--output", metavar="FILE", help="with --template: write it here (default: stdout)")
+    p.add_argument("--form", choices=("toml", "csv"), default="toml",
+                   help="with --template: a check file (toml) or a CSV form, one column per student")
+    p.add_argument("--students", type=int, default=3, metavar="N", help="with --form csv: columns (default 3)")
     p.add_argument("--out", metavar="DIR", help="write <name>.json and <name>.txt per check file here "
                                                  "(batch default: DIR/reports)")
     p.add_argument("--quiet", action="store_true", help="no table on stdout")
@@ -352,10 +446,21 @@ def _after(args: argparse.Namespace, target: Path, written: bool) -> None:
 def run(args: argparse.Namespace) -> int:
     """``plans check``: 0 when every file was checked, 2 on a user error (one line on stderr).
     A single file's outputs (JSON, CSV, reports, sheets) are written all or none."""
+    if getattr(args, "template", None):
+        from plans.check.forms import run_template
+
+        return run_template(args)
+    if not args.path:
+        _err("expected a check file, a CSV form or a folder (or --template SCENE)")
+        return 2
     target = Path(args.path)
     try:
         if target.is_dir():
             return _batch(target, args)
+        if target.suffix.lower() == ".csv" and target.is_file():
+            from plans.check.forms import run_form
+
+            return run_form(target, args)
         if not target.exists():
             _err(f"{target}: no such file or folder")
             return 2
@@ -371,7 +476,7 @@ def run(args: argparse.Namespace) -> int:
         files: dict[Path, Any] = {}
         if args.json and args.json != "-":
             files[Path(args.json)] = dumps(report.to_json())
-        if args.csv:
+        if args.csv and args.csv != "-":
             files[Path(args.csv)] = csv_text([summary_row(str(target), report)])
         if args.out:
             out = Path(args.out)
@@ -387,7 +492,9 @@ def run(args: argparse.Namespace) -> int:
         _after(args, target, True)
         if args.json == "-":
             sys.stdout.write(dumps(report.to_json()))
-        if not args.quiet and args.json != "-":
+        elif args.csv == "-":
+            sys.stdout.write(csv_text([summary_row(str(target), report)]))
+        if not args.quiet and args.json != "-" and args.csv != "-":
             print(table(report))
             for p in written:
                 if p.suffix in (".svg", ".pdf", ".png"):
@@ -415,6 +522,19 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
         _err(f"{folder}: --json is for one file; a folder writes one report per file into --out")
         return 2
     files = sorted(p for p in folder.glob("*.toml") if p.is_file())
+    from plans.check.forms import is_scene
+    from plans.io import read_toml
+
+    scenes = []
+    for f in files:
+        try:
+            # a scene has a [driver]; a check file is read once, below, not twice
+            if "[driver]" in f.read_text(encoding="utf-8", errors="replace") and is_scene(read_toml(f)):
+                scenes.append(f)
+        except (PlansError, OSError):
+            continue  # reported as that file's error below
+    files = [f for f in files if f not in scenes]
+    beside = scenes[0] if len(scenes) == 1 else None
     if not files:
         _err(f"{folder}: no check files (*.toml)")
         return 2
@@ -435,7 +555,7 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
                 crep = cycle_check.check_cycle(f)
                 outputs, row = cycle_check.outputs(crep, f, out), cycle_check.summary_row(str(f), crep)
             else:
-                report = check_file(f)
+                report = _check_beside(f, beside)
                 outputs = {out / f"{f.stem}.json": dumps(report.to_json()),
                            out / f"{f.stem}.txt": table(report) + "\n"}
                 outputs.update(_extra(args, report, f))
@@ -452,12 +572,36 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
             continue
         _after(args, f, True)
         rows.append(row)
+    _summary(rows, args, out)
+    return 2 if bad else 0
+
+
+def _summary(rows: list[dict[str, Any]], args: argparse.Namespace, out: Path) -> None:
+    """summary.csv (or --csv, '-': stdout) and a line per file on the terminal."""
+    if args.csv == "-":
+        sys.stdout.write(csv_text(rows))
+        return
     atomic_write(Path(args.csv) if args.csv else out / "summary.csv", csv_text(rows))
     if not args.quiet:
         for r in rows:
             if r["status"] == "ok":
                 print(f"{r['file']}: {r['student']}: {r['passed']} pass, {r['failed']} fail, "
-                      f"{r['findings']} findings")
+                      f"{r['findings']} findings" + (f"; mark {r['mark']}" if r.get("mark") else "")
+                      + (f"; {r['causes']}" if r.get("causes") else ""))
             else:
                 print(f"{r['file']}: not checked: {r['message']}")
-    return 2 if bad else 0
+
+
+def _check_beside(path: Path, scene: Path | None) -> Report:
+    """A check file of a folder; one that names no scene uses the scene file beside it."""
+    from plans.check.checkfile import check_from_dict
+    from plans.io import read_toml
+
+    data = read_toml(path)
+    if scene is not None and "scene" not in data:
+        data = {**data, "scene": scene.name}
+    try:
+        return check(check_from_dict(data, str(path)))
+    except PlansError as exc:
+        exc.source = exc.source or str(path)
+        raise

@@ -68,6 +68,22 @@ SENTENCES: dict[str, tuple[str, str]] = {  # key: (English, Russian)
 
 KINDS_RU = {"duplicate": "повтор", "arithmetic": "арифметика", "relation": "формула", "percent": "проценты",
             "symmetry": "симметрия", "swapped": "перепутаны", "pi": "π", "scale": "масштаб"}
+#: The kinds of mistake (:data:`plans.check.mistakes.KINDS`) as a teacher names them.
+CAUSES = {
+    "coriolis_reversed": ("the Coriolis vector laid off the wrong way", "ускорение Кориолиса отложено в обратную сторону"),
+    "normal_from_pole": ("a normal component laid off from the pole or in the wrong sense",
+                         "нормальное ускорение отложено от полюса или не в ту сторону"),
+    "tangential_wrong_line": ("a tangential component on the wrong line", "касательное ускорение — не по той линии"),
+    "scale": ("a wrong scale", "ошибка масштаба"),
+    "similarity": ("a point found by similarity wrongly", "точка по подобию найдена неверно"),
+    "wrong_segment": ("the wrong segment measured", "измерен не тот отрезок"),
+    "inertia_sign": ("an inertia force or couple with the wrong sign", "знак силы или момента сил инерции"),
+    "reaction_swapped": ("a reaction's τ and n components swapped", "перепутаны составляющие реакции τ и n"),
+    "fij_reversed": ("F_ij read for F_ji", "F_ij вместо F_ji"),
+    "pi_rounded": ("π = 3.14", "π = 3,14"),
+    "g_rounded": ("g = 10", "g = 10"),
+    "arithmetic": ("an arithmetic slip", "ошибка в вычислении"),
+}
 PLANS_RU = {"velocity": "скоростей", "acceleration": "ускорений"}  # "план скоростей": genitive
 UNITS_RU = {"m/s": "м/с", "m/s^2": "м/с²", "rad/s": "рад/с", "rad/s^2": "рад/с²", "N": "Н", "N m": "Н·м",
             "N·m": "Н·м", "N*m": "Н·м", "mm": "мм", "m": "м", "kg": "кг", "kg m^2": "кг·м²", "kg·m^2": "кг·м²",

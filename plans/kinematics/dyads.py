@@ -257,6 +257,9 @@ class Builder:
         self.ref: Any = 0.0  # the known vector's value: set when it is laid off
         self.size: Any = xp.zeros(n)  # the plan's extent so far (mm from the pole)
         self._dust: tuple[Any, Any] | None = None
+        attach = getattr(pencil, "attach", None)
+        if attach is not None:  # a pencil that makes a student's slip looks at the plan it draws
+            attach(self)
 
     def s(self, x: Any) -> Any:
         """One case's value, for the protocol's sentences."""
