@@ -29,6 +29,14 @@ def current() -> Run | None:
     return _ACTIVE[-1] if _ACTIVE else None
 
 
+def abandon() -> None:
+    """Drop everything the command in progress has staged: a command that catches its own
+    error and answers with status 2 leaves nothing of its run."""
+    run = current()
+    if run is not None:
+        run.discard()
+
+
 def _identity(path: str) -> tuple[int, int] | None:
     try:
         st = os.stat(path)

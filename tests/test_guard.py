@@ -309,3 +309,21 @@ def test_every_file_is_written_through_the_guard():
                 if pattern.search(line.split("#")[0]):
                     found.append(f"{rel}:{n}: {line.strip()}")
     assert not found, "write through plans.io (atomic_write, atomic_file, write_all, remove):\n" + "\n".join(found)
+
+
+def test_a_command_that_answers_2_itself_leaves_nothing(tmp_path, monkeypatch, capsys):
+    """``plans check`` prints its own error and returns 2: what it staged before is dropped."""
+    import plans.check.report as report
+    from plans.errors import InputError
+
+    check = _copy("checks/v_engine_coursework.toml", tmp_path)
+
+    def late(args, target, written):
+        raise InputError("a failure after the reports were staged", file=str(target))
+
+    monkeypatch.setattr(report, "_after", late)
+    before = _state(tmp_path)
+    status = main(["check", str(check), "--json", str(tmp_path / "c.json")])
+    err = capsys.readouterr().err
+    assert status == 2 and "after the reports were staged" in err
+    assert _state(tmp_path) == before

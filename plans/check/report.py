@@ -69,6 +69,7 @@ from plans.check.findings import (
 from plans.check.providers import STUDENT_ONLY, Context, Exact, exact_value, known_quantities
 from plans.check.relations import relation_findings
 from plans.errors import InputError, OutputError, PlansError, one_line
+from plans.guard import abandon
 from plans.io import atomic_write, dumps, refuse_input, write_all
 from plans.io import remove as remove_files
 from plans.units import DUST, percent
@@ -501,11 +502,13 @@ def run(args: argparse.Namespace) -> int:
                     print(p)
         return 0
     except PlansError as exc:
+        abandon()  # nothing of the command is written (it answers 2 itself)
         _err(one_line(exc))
         return 2
     except BrokenPipeError:
         raise  # the runner ends quietly: the reader of the table has gone
     except OSError as exc:
+        abandon()
         _err(f"{exc.filename or ''}: {exc.strerror}")
         return 2
 
