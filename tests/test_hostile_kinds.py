@@ -159,6 +159,7 @@ case("gears-speed-on-no-shaft", "gears", lambda d: d["shafts"].append({"name": "
      "shafts")
 case("engine-crank-deg-text", "inline4", lambda d: d.update(crank_deg=[0, "x", 0, 0]) or d.pop("firing_order", None),
      "crank_deg")
+case("engine-lambda-dust", "engine", _set(("lambda",), 1e-11), "lambda", "rod")  # not links.2.length
 case("dynamics-delta-huge", "dynamics", _set(("dynamics", "delta"), 5.0), "dynamics.delta")
 case("fourbar-phi-1.5e300", "fourbar", lambda d: d["driver"].update(phi_deg=[1.5e300]) or d["driver"].pop("positions"),
      "driver.phi_deg", "1e+300")

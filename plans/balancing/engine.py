@@ -38,7 +38,7 @@ from pathlib import Path
 from typing import Any
 
 from plans.io import loads_toml, read_toml
-from plans.reader import NUMBER_LIMIT, Reader, check_keys, reduce_deg, show
+from plans.reader import LENGTH_LIMIT, NUMBER_LIMIT, Reader, check_keys, reduce_deg, show
 from plans.units import LENGTH_UNITS, rpm_to_rad_s
 
 TOP_KEYS = {"format", "kind", "title", "unit", "r", "lambda", "omega", "omega_rpm", "strokes",
@@ -154,6 +154,9 @@ def engine_from_dict(data: dict[str, Any], path: str = "<engine>") -> Engine:
     lam = rd.number(data, "lambda")
     if not 0.0 <= lam < 1.0:
         raise rd.fail("lambda", f"expected 0 <= lambda = r/l < 1 (the rod longer than the crank), got {show(lam)}")
+    if lam > 0 and r / lam > LENGTH_LIMIT:  # the rod l = r/λ is a length like any other
+        raise rd.fail("lambda", f"the rod l = r/lambda = {r / lam:.3g} m is longer than {LENGTH_LIMIT:g} m; expected "
+                                f"lambda = 0 (no rod) or at least {r / LENGTH_LIMIT:.3g}")
     if "omega" in data and "omega_rpm" in data:
         raise rd.fail("omega_rpm", "give omega (rad/s) or omega_rpm, not both")
     if "omega_rpm" in data:
