@@ -1,5 +1,7 @@
-"""Writing files the safe way: to a temporary file beside the target, then rename,
-so a failure never leaves a half-written output."""
+"""Reading and writing files the safe way: every file read is an input of the command in
+progress, every file written goes to a temporary file beside its target and is renamed
+only when the whole command has succeeded and no target is an input (:mod:`plans.guard`),
+so a failure never leaves a half-written output and no input is ever overwritten."""
 
 from __future__ import annotations
 
