@@ -22,6 +22,15 @@ KINDS: dict[str, tuple[str, str]] = {
     "cam": ("cam", "drawings.cams"),
 }
 
+#: kind -> the reader of its table ("module:function(data, path)"), which keeps the promise
+#: (every problem one InputError naming file and field); the fuzzer drives each one.
+READERS: dict[str, str] = {
+    "linkage": "plans.scene.model:scene_from_dict",
+    "engine": "plans.balancing.engine:engine_from_dict",
+    "gears": "plans.gears.model:parse_gears",
+    "cam": "plans.cams.model:cam_from_dict",
+}
+
 
 def kind_of(data: dict[str, Any], path: str) -> str:
     """The file's kind (``"linkage"`` when absent); an unknown kind is one InputError line."""

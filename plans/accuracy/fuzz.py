@@ -485,19 +485,14 @@ def _read(kind: str, data: dict[str, Any], path: str) -> None:
             from plans.cycle.spec import diagrams_spec
 
             diagrams_spec(scene)
-    elif kind == "engine":
-        from plans.balancing.engine import engine_from_dict
+    elif kind != "check":  # every other kind by the reader it registers (plans.kinds.READERS)
+        import importlib
 
-        engine_from_dict(data, path)
-    elif kind == "gears":
-        from plans.gears.model import parse_gears
+        from plans.kinds import READERS
 
-        parse_gears(data, path)
-    elif kind == "cam":
-        from plans.cams.model import cam_from_dict
-
-        cam_from_dict(data, path)
-    elif kind == "check" and isinstance(data.get("cycle"), dict) and "positions" not in data:
+        module, name = READERS[kind].split(":")
+        getattr(importlib.import_module(module), name)(data, path)
+    elif isinstance(data.get("cycle"), dict) and "positions" not in data:
         from plans.cycle.check import check_cycle
 
         check_cycle(path)
