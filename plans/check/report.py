@@ -463,7 +463,9 @@ def run(args: argparse.Namespace) -> int:
 
             return run_form(target, args)
         if not target.exists():
-            _err(f"{target}: no such file or folder")
+            why = "a symbolic link to no readable file (a loop, or its target gone)" if target.is_symlink() \
+                else "no such file or folder"
+            _err(f"{target}: {why}")
             return 2
         for out_path in (args.json, args.csv):
             refuse_input(out_path, target)
