@@ -12,7 +12,8 @@ from plans.cli import main as plans_main
 from plans.errors import InputError
 
 #: Commands that need the renderer, listed without importing them (see plans.cli).
-_DRAWING_NAMES = {"drawings.demo": ("demo", "a step-by-step demonstration page of a scene's analysis")}
+_DRAWING_NAMES = {"drawings.demo": ("demo", "a step-by-step demonstration page of a scene's analysis"),
+                  "drawings.note.cli": ("note", "the explanatory note of the project's files (DOCX, or PDF via LibreOffice)")}
 
 
 def _formats(text: str) -> list[str]:
@@ -78,7 +79,7 @@ def draw_command(args: argparse.Namespace) -> int:
 
 #: Commands that need the renderer, each module with ``register(subparsers)``; a module
 #: that is absent is simply not offered.
-_DRAWING_COMMANDS = ("drawings.demo",)
+_DRAWING_COMMANDS = ("drawings.demo", "drawings.note.cli")
 
 
 def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
