@@ -328,3 +328,16 @@ def test_a_command_that_answers_2_itself_leaves_nothing(tmp_path, monkeypatch, c
     err = capsys.readouterr().err
     assert status == 2 and "after the reports were staged" in err
     assert _state(tmp_path) == before
+
+
+def test_a_guide_longer_than_any_sheet_is_refused_without_billions_of_strokes(tmp_path, capsys):
+    """Found by the long fuzz: a fuzzed six-bar whose guide runs 1e8 mm hatched a stroke
+    every 2 mm (gigabytes) before the sheet refused it; now at most MAX_HATCH strokes."""
+    from drawings.backend import MAX_HATCH, hatch_segments
+
+    assert len(hatch_segments((0.0, 0.0), (1e12, 0.0), 1, 2.0, 3.0)) <= MAX_HATCH + 1
+    assert len(hatch_segments((0.0, 0.0), (10.0, 0.0), 1, 2.0, 3.0)) == 6  # a sheet's own hatch unchanged
+    data = Path(__file__).resolve().parent / "data" / "hostile" / "huge_guide.toml"
+    assert main(["draw", str(data), "-o", str(tmp_path / "s")]) == 2
+    err = capsys.readouterr().err.splitlines()
+    assert len(err) == 1 and "does not fit" in err[0]
