@@ -20,6 +20,7 @@ KINDS: dict[str, tuple[str, str]] = {
     "engine": ("balance", "drawings.balancing"),
     "gears": ("gears", "drawings.gears"),
     "cam": ("cam", "drawings.cams"),
+    "synthesis": ("design", "drawings.synthesis"),
 }
 
 #: kind -> the reader of its table ("module:function(data, path)"), which keeps the promise
