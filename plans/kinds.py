@@ -30,6 +30,7 @@ READERS: dict[str, str] = {
     "engine": "plans.balancing.engine:engine_from_dict",
     "gears": "plans.gears.model:parse_gears",
     "cam": "plans.cams.model:cam_from_dict",
+    "synthesis": "plans.synthesis.model:task_from_dict",
 }
 
 
@@ -62,6 +63,11 @@ _NAMES = {"linkage": "a linkage scene", "engine": "an engine file", "gears": "a 
           "check": "a check file"}
 
 
+def _name(kind: str) -> str:
+    """A kind as a message names it (a kind added later: "a synthesis file")."""
+    return _NAMES.get(kind, f"a {kind} file")
+
+
 def guess_kind(data: dict[str, Any]) -> str:
     """What a file is, for a message: its ``kind``, or a check file (a ``scene`` to check
     against), or a linkage scene."""
@@ -92,7 +98,7 @@ def check_top(data: dict[str, Any], path: str, kind: str, known: Any) -> None:
             raise InputError(f"expected one of {', '.join(repr(k) for k in KINDS)} (here {want}), "
                              f"got {show(kval)}{hint}", file=path, field="kind")
         other = guess_kind(data)
-        raise InputError(f"this is {_NAMES[other]}, not {_NAMES[kind]}; {command_for(other)}expected "
+        raise InputError(f"this is {_name(other)}, not {_name(kind)}; {command_for(other)}expected "
                          + ("a check file (scene = ..., no kind)" if kind == "check" else
                             "kind = \"linkage\" or no kind" if kind == "linkage" else f"kind = {kind!r}"),
                          file=path, field="kind")

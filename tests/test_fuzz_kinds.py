@@ -19,7 +19,7 @@ from plans.accuracy import fuzz
 POOL = fuzz.load_samples()
 KINDS = sorted({s.kind for s in POOL})
 #: cases per kind through the reader, and through the whole command
-READS = {"linkage": 2000, "engine": 2000, "gears": 2000, "cam": 2000, "check": 150}
+READS = {"linkage": 2000, "engine": 2000, "gears": 2000, "cam": 2000, "synthesis": 1000, "check": 150}
 RUNS = 40
 
 
