@@ -12,7 +12,9 @@ from plans.cli import main as plans_main
 from plans.errors import InputError
 
 #: Commands that need the renderer, listed without importing them (see plans.cli).
-_DRAWING_NAMES = {"drawings.demo": ("demo", "a step-by-step demonstration page of a scene's analysis")}
+_DRAWING_NAMES = {"drawings.demo": ("demo", "a step-by-step demonstration page of a scene's analysis"),
+                  "drawings.variants": ("variants", "a group's variants from a variant table: files, keys, "
+                                                    "forms, handouts")}
 
 
 def _formats(text: str) -> list[str]:
@@ -78,7 +80,7 @@ def draw_command(args: argparse.Namespace) -> int:
 
 #: Commands that need the renderer, each module with ``register(subparsers)``; a module
 #: that is absent is simply not offered.
-_DRAWING_COMMANDS = ("drawings.demo",)
+_DRAWING_COMMANDS = ("drawings.demo", "drawings.variants")
 
 
 def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:

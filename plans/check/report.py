@@ -419,6 +419,10 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--out", metavar="DIR", help="write <name>.json and <name>.txt per check file here "
                                                  "(batch default: DIR/reports)")
     p.add_argument("--quiet", action="store_true", help="no table on stdout")
+    p.add_argument("--xlsx", metavar="MARKS.xlsx", help="with a folder: every sheet under it checked, one row per "
+                                                         "student, one worksheet per group (the gradebook)")
+    p.add_argument("--rubric", metavar="RUBRIC.toml", help="with --xlsx: weights per sheet, pass threshold, marks")
+    p.add_argument("--jobs", type=int, default=1, metavar="N", help="with --xlsx: check in N processes")
     p.set_defaults(func=run)
     return p
 
@@ -445,6 +449,12 @@ def _after(args: argparse.Namespace, target: Path, written: bool) -> None:
 def run(args: argparse.Namespace) -> int:
     """``plans check``: 0 when every file was checked, 2 on a user error (one line on stderr).
     A single file's outputs (JSON, CSV, reports, sheets) are written all or none."""
+    if getattr(args, "xlsx", None) or getattr(args, "template", None):
+        from plans.group.cli import run_group
+
+        got = run_group(args)
+        if got is not None:
+            return got
     if getattr(args, "template", None):
         from plans.check.forms import run_template
 
