@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import io
 import math
+import re
 import sys
 import zipfile
 from collections import Counter
@@ -247,7 +248,10 @@ def _fixed_zip(raw: bytes) -> bytes:
             zi = zipfile.ZipInfo(info.filename, date_time=(1980, 1, 1, 0, 0, 0))
             zi.compress_type = zipfile.ZIP_DEFLATED
             zi.external_attr = 0o600 << 16
-            dst.writestr(zi, src.read(info.filename))
+            body = src.read(info.filename)
+            if info.filename == "docProps/core.xml":  # openpyxl dates the save itself
+                body = re.sub(rb"(<dcterms:modified[^>]*>)[^<]*", rb"\g<1>2000-01-01T00:00:00Z", body)
+            dst.writestr(zi, body)
     return out.getvalue()
 
 

@@ -1,0 +1,190 @@
+"""A group's course: variants from a table, keys proved by closed forms, keys fed back as
+full marks, planted slips found in the gradebook read back with openpyxl."""
+
+from __future__ import annotations
+
+import json
+import math
+import shutil
+from pathlib import Path
+
+import pytest
+import tomlkit
+
+from drawings.cli import main
+
+SAMPLE = Path(__file__).resolve().parents[1] / "samples" / "group"
+#: the students who make a slip, and the one finding each must get
+PLANTED = {"L02": ("scale", "linkage: scale"), "L03": ("coriolis_reversed", "linkage: coriolis_reversed"),
+           "L04": ("arithmetic", "linkage: arithmetic"), "G03": ("shift_coefficient", "gears: shift_coefficient"),
+           "C02": ("base_radius", "cam: base_radius")}
+
+
+@pytest.fixture(scope="module")
+def group(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    out = tmp_path_factory.mktemp("group") / "course"
+    assert main(["variants", str(SAMPLE / "group.csv"), "-o", str(out), "--no-sheets", "--quiet",
+                 "--students", str(SAMPLE / "roster.csv"), "--language", "en"]) == 0
+    return out
+
+
+def _csv_rows(path: Path) -> list[dict[str, str]]:
+    import csv
+
+    return list(csv.DictReader(path.open(encoding="utf-8")))
+
+
+def test_one_folder_per_variant_with_the_layout(group: Path) -> None:
+    rows = _csv_rows(SAMPLE / "group.csv")
+    assert len(rows) >= 25 and {r["template"] for r in rows} >= {"shaper.template.toml", "gears.template.toml",
+                                                                  "cam.template.toml"}
+    for r in rows:
+        folder = group / r["variant"]
+        key = json.loads((folder / "key.json").read_text(encoding="utf-8"))
+        assert key["variant"] == r["variant"] and key["values"]
+        assert all(isinstance(v, dict) and v for v in key["values"].values())
+        assert (folder / "check.toml").is_file() and (folder / key["file"]).is_file()
+        assert f'variant = "{r["variant"]}"' in (folder / "check.toml").read_text(encoding="utf-8")
+    roster = _csv_rows(SAMPLE / "roster.csv")
+    pdfs = sorted((group / "handouts").glob("*.pdf"))
+    assert len(pdfs) == len(roster) and all(p.read_bytes().startswith(b"%PDF") for p in pdfs)
+
+
+def test_gear_keys_follow_the_involute_closed_forms(group: Path) -> None:
+    for r in _csv_rows(SAMPLE / "group.csv"):
+        if r["template"] != "gears.template.toml":
+            continue
+        v = {q: d["0"] for q, d in json.loads((group / r["variant"] / "key.json").read_text())["values"].items()}
+        m, z1, z2, a = float(r["m"]), int(r["z1"]), int(r["z2"]), math.radians(20)
+        x1 = max(0.0, (17 - z1) / 17)  # the course's minimum-teeth rule, h_a* = 1 (no negative shift)
+        assert v["x_1"] == pytest.approx(x1, abs=1e-7) and v["x_2"] == 0
+        inv = math.tan(a) - a + 2 * math.tan(a) * x1 / (z1 + z2)
+        lo, hi = 0.0, 1.4  # inv α_w = inv α + 2 tan α (x1 + x2)/(z1 + z2), bisected here
+        for _ in range(80):
+            mid = (lo + hi) / 2
+            lo, hi = (mid, hi) if math.tan(mid) - mid < inv else (lo, mid)
+        assert v["alpha_w_12"] == pytest.approx(math.degrees(lo), abs=1e-6)
+        assert v["r_1"] == pytest.approx(m * z1 / 2) and v["r_b2"] == pytest.approx(m * z2 / 2 * math.cos(a))
+        assert v["a_w_12"] == pytest.approx(m * (z1 + z2) / 2 * math.cos(a) / math.cos(lo), rel=1e-8)
+        assert v["r_f1"] == pytest.approx(m * z1 / 2 - (1.25 - x1) * m, rel=1e-8)
+
+
+def test_cam_keys_follow_the_motion_law(group: Path) -> None:
+    for r in _csv_rows(SAMPLE / "group.csv"):
+        if r["template"] != "cam.template.toml":
+            continue
+        v = json.loads((group / r["variant"] / "key.json").read_text())["values"]
+        r0, e, h, rise = float(r["r0"]), float(r["e"]), float(r["h"]), float(r["phi_rise"])
+        s0 = math.sqrt(r0 * r0 - e * e)
+        for phi in (0.0, 30.0, 60.0):
+            t = min(phi / rise, 1.0)
+            s = {"harmonic": h * (1 - math.cos(math.pi * t)) / 2,
+                 "cycloidal": h * (t - math.sin(2 * math.pi * t) / (2 * math.pi)),
+                 "poly345": h * (10 * t**3 - 15 * t**4 + 6 * t**5)}[r["law"]]
+            assert v["s"][f"{phi:g}"] == pytest.approx(s, abs=1e-6)
+            assert v["R"][f"{phi:g}"] == pytest.approx(math.hypot(e, s0 + s), abs=1e-6)
+
+
+def test_linkage_key_gives_the_crank_from_its_data(group: Path) -> None:
+    r = next(r for r in _csv_rows(SAMPLE / "group.csv") if r["template"] == "shaper.template.toml")
+    v = json.loads((group / r["variant"] / "key.json").read_text())["values"]
+    w = math.pi * float(r["n_1"]) / 30
+    l1 = float(r["l_OA"]) / 1000
+    assert v["v_A"]["30"] == pytest.approx(w * l1, rel=1e-8)
+    assert v["a_A"]["120"] == pytest.approx(w * w * l1, rel=1e-8)
+    assert v["omega_1"]["30"] == pytest.approx(w, rel=1e-8)
+
+
+def _submissions(group: Path, folder: Path, planted: dict[str, tuple[str, str]]) -> None:
+    from plans.group.samples import key_submission
+
+    for d in sorted(p for p in group.iterdir() if p.name != "handouts"):
+        grp = "MT-31" if int(d.name[1:]) % 2 else "MT-32"
+        target = folder / grp / f"{d.name}.toml"
+        target.parent.mkdir(parents=True, exist_ok=True)
+        slip = planted.get(d.name, (None, ""))[0]
+        target.write_text(tomlkit.dumps(key_submission(d, target, f"Student {d.name}", grp, slip)), encoding="utf-8")
+
+
+def _read(xlsx: Path) -> dict[str, list[dict]]:
+    from openpyxl import load_workbook
+
+    wb = load_workbook(xlsx)
+    out = {}
+    for ws in wb.worksheets:
+        rows = list(ws.iter_rows(values_only=True))
+        assert ws.freeze_panes == "A2"
+        assert list(rows[0][:4]) == ["student", "group", "variant", "mark"]
+        assert list(rows[0][-3:-1]) == ["causes", "unexplained"]
+        assert ws.conditional_formatting, "scores are coloured against the pass threshold"
+        out[ws.title] = [dict(zip(rows[0], r, strict=True)) for r in rows[1:]]
+    return out
+
+
+def test_keys_fed_back_get_full_marks(group: Path, tmp_path: Path) -> None:
+    _submissions(group, tmp_path / "subs", {})
+    xlsx = tmp_path / "marks.xlsx"
+    assert main(["check", str(tmp_path / "subs"), "--xlsx", str(xlsx), "--quiet"]) == 0
+    book = _read(xlsx)
+    assert sorted(book) == ["MT-31", "MT-32"]
+    rows = [r for rs in book.values() for r in rs]
+    assert len(rows) == len(list(p for p in group.iterdir() if p.name != "handouts"))
+    for r in rows:
+        assert r["mark"] == 100 and not r["causes"] and not r["unexplained"], r
+        kind = {"L": "linkage", "G": "gears", "C": "cam"}[r["variant"][0]]
+        assert r[kind] == 100
+
+
+def test_planted_slips_are_found_exactly(group: Path, tmp_path: Path) -> None:
+    _submissions(group, tmp_path / "subs", PLANTED)
+    rubric = tmp_path / "rubric.toml"
+    rubric.write_text('format = 1\nkind = "rubric"\npass = 95\n[weights]\nlinkage = 1\n'
+                      '[marks]\n5 = 99\n4 = 80\n3 = 60\n2 = 0\n', encoding="utf-8")
+    xlsx = tmp_path / "marks.xlsx"
+    assert main(["check", str(tmp_path / "subs"), "--xlsx", str(xlsx), "--quiet", "--jobs", "2"]) == 0
+    rows = {r["variant"]: r for rs in _read(xlsx).values() for r in rs}
+    flagged = {v for v, r in rows.items() if r["causes"] or r["unexplained"] or r["mark"] != 100}
+    assert flagged == set(PLANTED)
+    for v, (_, finding) in PLANTED.items():
+        causes = [c.split(" at ")[0] for c in rows[v]["causes"].split("; ")]
+        assert causes == [finding], (v, rows[v])
+        assert not rows[v]["unexplained"], (v, rows[v])
+    # the rubric: only the linkage sheet weighs; a mark by thresholds
+    xlsx2 = tmp_path / "marks2.xlsx"
+    assert main(["check", str(tmp_path / "subs"), "--xlsx", str(xlsx2), "--rubric", str(rubric), "--quiet"]) == 0
+    rows2 = {r["variant"]: r for rs in _read(xlsx2).values() for r in rs}
+    assert rows2["L01"]["mark"] == 5 and rows2["L03"]["mark"] == 4 and rows2["G01"]["mark"] == 2
+    # the same rows, the same bytes
+    xlsx3 = tmp_path / "marks3.xlsx"
+    assert main(["check", str(tmp_path / "subs"), "--xlsx", str(xlsx3), "--quiet"]) == 0
+    assert xlsx3.read_bytes() == xlsx.read_bytes()
+
+
+def test_a_variant_that_cannot_be_built_is_named_and_the_others_made(tmp_path: Path,
+                                                                      capsys: pytest.CaptureFixture) -> None:
+    for name in ("shaper.template.toml", "gears.template.toml"):
+        shutil.copy(SAMPLE / name, tmp_path / name)
+    (tmp_path / "t.csv").write_text("variant,template,l_OA,l_CD,l_OC,n_1,m,z1,z2\n"
+                                    "A1,shaper.template.toml,90,520,280,50,,,\n"
+                                    "A2,shaper.template.toml,90,120,280,50,,,\n"
+                                    "A3,gears.template.toml,,,,,4,13,30\n", encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["variants", str(tmp_path / "t.csv"), "-o", str(out), "--quiet"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "variant A2 (t.csv, row 3)" in err[0]
+    assert sorted(p.name for p in out.iterdir()) == ["A1", "A3"]
+    assert (out / "A3" / "reference" / "gears.pdf").read_bytes().startswith(b"%PDF")
+    assert sorted(p.name for p in (out / "A1" / "reference").iterdir()) == ["scene-1.pdf", "scene-2.pdf"]
+
+
+def test_bad_tables_are_one_line(tmp_path: Path, capsys: pytest.CaptureFixture) -> None:
+    shutil.copy(SAMPLE / "gears.template.toml", tmp_path / "gears.template.toml")
+    (tmp_path / "t.csv").write_text("variant,m,z1\nB1,4,13\n", encoding="utf-8")
+    assert main(["variants", str(tmp_path / "t.csv"), "-o", str(tmp_path / "out"), "--quiet"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "z2" in err[0] and "row 2" in err[0]
+    (tmp_path / "u.csv").write_text("name,m\nB1,4\n", encoding="utf-8")
+    assert main(["variants", str(tmp_path / "u.csv"), "-o", str(tmp_path / "out2"), "--quiet"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "'variant' column" in err[0] and "u.csv" in err[0]
+    assert not (tmp_path / "out2").exists()
