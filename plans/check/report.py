@@ -479,6 +479,11 @@ def run(args: argparse.Namespace) -> int:
 
         if cycle_check.is_cycle_check(target):
             return cycle_check.run_file(target, args)
+        from plans.group.cli import run_sheet_file  # a gears or cam sheet
+
+        done = run_sheet_file(target, args)
+        if done is not None:
+            return done
         report = check_file(target)
         for out_path in (args.json, args.csv):
             refuse_input(out_path, report.check.scene.path)
@@ -560,9 +565,14 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
         reports = {out / f"{f.stem}.json", out / f"{f.stem}.txt"}
         try:
             outputs: dict[Path, Any]
+            from plans.group.sheets import sheet_check_of, sheet_outputs
+
+            srep = None if cycle_check.is_cycle_check(f) else sheet_check_of(f)
             if cycle_check.is_cycle_check(f):  # cycle tables: a report, no marked sheet
                 crep = cycle_check.check_cycle(f)
                 outputs, row = cycle_check.outputs(crep, f, out), cycle_check.summary_row(str(f), crep)
+            elif srep is not None:  # a gears or cam sheet
+                outputs, row = sheet_outputs(srep, f, out)
             else:
                 report = _check_beside(f, beside)
                 outputs = {out / f"{f.stem}.json": dumps(report.to_json()),

@@ -51,3 +51,31 @@ def _template(args: argparse.Namespace) -> int | None:
     if not args.quiet:
         print(target)
     return 0
+
+
+def run_sheet_file(target: Path, args: argparse.Namespace) -> int | None:
+    """``plans check SHEET.toml`` of a gears or cam sheet; None: another kind of file."""
+    from plans.check.report import csv_text
+    from plans.group.sheets import sheet_check_of, summary_row, table
+    from plans.io import dumps, write_all
+
+    rep = sheet_check_of(target)
+    if rep is None:
+        return None
+    files: dict[Path, str] = {}
+    if args.json and args.json != "-":
+        files[Path(args.json)] = dumps(rep.to_json())
+    if args.csv and args.csv != "-":
+        files[Path(args.csv)] = csv_text([summary_row(str(target), rep)])
+    if args.out:
+        Path(args.out).mkdir(parents=True, exist_ok=True)
+        files[Path(args.out) / f"{target.stem}.json"] = dumps(rep.to_json())
+        files[Path(args.out) / f"{target.stem}.txt"] = table(rep) + "\n"
+    write_all(files)
+    if args.json == "-":
+        sys.stdout.write(dumps(rep.to_json()))
+    elif args.csv == "-":
+        sys.stdout.write(csv_text([summary_row(str(target), rep)]))
+    elif not args.quiet:
+        print(table(rep))
+    return 0

@@ -366,3 +366,61 @@ def _diagnose(kind: str, part: dict[str, Any], src: str, items: list[SheetItem],
         left = [it for it in left if it not in expl]
         models = [m for m in models if m[0] != kind_]
     return causes, left
+
+
+def sheet_check_of(path: str | Path) -> SheetReport | None:
+    """The report of a gears or cam check file; None: the file is another kind."""
+    from plans.io import read_toml
+
+    try:
+        if "gears" not in Path(path).read_text(encoding="utf-8", errors="replace") and \
+                "cam" not in Path(path).read_text(encoding="utf-8", errors="replace"):
+            return None
+    except OSError:
+        return None
+    data = read_toml(path)
+    return check_sheet(data, str(path)) if is_sheet_check(data) else None
+
+
+def table(rep: SheetReport) -> str:
+    """The report on the terminal: the mark, the causes, what no cause explains, every figure."""
+    lines = [f"{rep.student or Path(rep.path).stem}: {rep.sheet} sheet" + (f", variant {rep.variant}" if rep.variant
+                                                                            else ""),
+             f"Mark: {rep.mark:g} of {rep.full:g}"]
+    if rep.causes:
+        lines.append("Mistakes:")
+        for n, c in enumerate(rep.causes, 1):
+            lines.append(f"  {n}. {c.kind}: {c.detail} (explains {', '.join(c.explains)}; −{c.deduction:g})")
+    else:
+        lines.append("No mistakes found" if not rep.unexplained else "No mistake explains the failures")
+    if rep.unexplained:
+        lines.append("Failures no mistake explains: " + ", ".join(i.quantity for i in rep.unexplained))
+    lines.append(f"{'quantity':<14}{'φ°':>6}{'student':>13}{'exact':>13}{'±':>10}  verdict")
+    for it in rep.items:
+        lines.append(f"{it.quantity:<14}{it.phi_deg:>6g}{it.student:>13.6g}{it.exact:>13.6g}{it.tolerance:>10.3g}  "
+                     f"{it.verdict}")
+    return "\n".join(lines)
+
+
+def summary_row(path: str, rep: SheetReport) -> dict[str, Any]:
+    """The row of ``summary.csv`` (the examiner's columns)."""
+    failed = [i for i in rep.items if i.verdict == "fail"]
+    worst = max(rep.items, key=lambda i: abs(i.student - i.exact) / i.tolerance if i.tolerance else 0.0,
+                default=None)
+    return {"file": path, "student": rep.student, "status": "ok", "mark": f"{rep.mark:g}",
+            "causes": "; ".join(c.kind for c in rep.causes),
+            "unexplained": "; ".join(f"{i.quantity} at {i.phi_deg:g}°" for i in rep.unexplained),
+            "items": len(rep.items), "passed": len(rep.items) - len(failed), "failed": len(failed), "findings": 0,
+            "worst": "" if worst is None else f"{worst.quantity} at {worst.phi_deg:g}°",
+            "worst_error_pct": "" if worst is None or not worst.exact else
+            f"{100 * (worst.student - worst.exact) / abs(worst.exact):.2f}",
+            "worst_tol": "" if worst is None or not worst.tolerance else
+            f"{abs(worst.student - worst.exact) / worst.tolerance:.2f}", "message": ""}
+
+
+def sheet_outputs(rep: SheetReport, path: Path, out: Path) -> tuple[dict[Path, Any], dict[str, Any]]:
+    """The report files of a folder's gears or cam sheet, and its summary row."""
+    from plans.io import dumps
+
+    return ({out / f"{path.stem}.json": dumps(rep.to_json()), out / f"{path.stem}.txt": table(rep) + "\n"},
+            summary_row(str(path), rep))
