@@ -31,7 +31,11 @@ _TEXT: dict[str, dict[str, Any]] = {
                      "Заполненный бланк check.toml"],
            "cam": ["Лист: закон движения, r0 и e по углу давления, профиль кулачка",
                    "Заполненный бланк check.toml: R, s через 30°, θmax"],
-           "engine": ["Лист: уравновешивание, многоугольники сил и моментов, противовесы"]},
+           "engine": ["Лист: уравновешивание, многоугольники сил и моментов, противовесы"],
+           "synthesis": ["Лист 1: синтез механизма по K (θ) и заданным условиям; длины звеньев, γmin",
+                         "Лист 2: планы положений, скоростей и ускорений в положениях {phis}",
+                         "Лист 3: силовой анализ (планы сил, рычаг Жуковского)",
+                         "Заполненные бланки synthesis.check.toml и check.toml"]},
     "en": {"task": "TMM course project: the task", "student": "Student", "group": "Group",
            "variant": "Variant", "data": "Data", "hand": "Hand in",
            "scheme": "The mechanism (position φ = {phi}°)",
@@ -41,7 +45,11 @@ _TEXT: dict[str, dict[str, Any]] = {
            "gears": ["Sheet: the meshing, x, α_w, a_w, radii, ε_α", "The check.toml form filled in"],
            "cam": ["Sheet: the motion law, r0 and e from the pressure angle, the cam profile",
                    "The check.toml form filled in: R, s every 30°, θ_max"],
-           "engine": ["Sheet: balancing, force and moment polygons, counterweights"]},
+           "engine": ["Sheet: balancing, force and moment polygons, counterweights"],
+           "synthesis": ["Sheet 1: the mechanism designed from K (θ) and the given conditions; lengths, γ_min",
+                         "Sheet 2: position, velocity and acceleration plans at {phis}",
+                         "Sheet 3: force analysis (force polygons, Zhukovsky lever)",
+                         "The synthesis.check.toml and check.toml forms filled in"]},
 }
 
 
@@ -87,13 +95,18 @@ def reference(got: Any) -> dict[str, bytes]:
 
     from .export import render
 
-    name = got.key["file"]
+    names = [(got.key["file"], got.kind)]
+    if "scene" in got.key:  # a synthesis: its construction and its scene's sheets
+        names.append((got.key["scene"], "linkage"))
+    out: dict[str, bytes] = {}
     with tempfile.TemporaryDirectory(prefix="plans-variant-") as tmp:
-        src = Path(tmp) / name
-        src.write_text(got.files[name], encoding="utf-8")
-        drawing = importlib.import_module(KINDS[got.kind][1]).draw(str(src))
-        rendered = render(drawing.sheets, Path("reference"), Path(name).stem, ["pdf"])
-    return {str(p): data for p, data in rendered.items()}
+        for name, kind in names:
+            src = Path(tmp) / name
+            src.write_text(got.files[name], encoding="utf-8")
+            drawing = importlib.import_module(KINDS[kind][1]).draw(str(src))
+            rendered = render(drawing.sheets, Path("reference"), Path(name).stem, ["pdf"])
+            out.update({str(p): data for p, data in rendered.items()})
+    return out
 
 
 def _make_star(args: tuple[Any, bool]) -> tuple[Any, dict[str, bytes]]:
@@ -180,6 +193,8 @@ def handout_svg(st: dict[str, str], got: Any, lang: str) -> str:
     text(18, 41, f"{t['group']}: {st['group']}    {t['variant']}: {got.row.variant}", 4.5)
     y = 52.0
     phis = ""
+    if got.kind == "synthesis":  # the design is the student's to find: no scheme, the positions only
+        phis = ", ".join(f"{float(q):g}°" for q in _scene_phis(got))
     if got.kind == "linkage":
         scheme, phi, phis = _scheme(got)
         text(18, y, t["scheme"].format(phi=f"{phi:g}"), 4.0, True)
@@ -202,14 +217,22 @@ def handout_svg(st: dict[str, str], got: Any, lang: str) -> str:
     return "\n".join(out)
 
 
+def _scene_phis(got: Any) -> tuple[float, ...]:
+    from plans.io import loads_toml
+    from plans.scene.model import scene_from_dict
+
+    name = got.key.get("scene", got.key["file"])
+    return tuple(scene_from_dict(loads_toml(got.files[name], name), name).driver.phis_deg)
+
+
 def _scheme(got: Any) -> tuple[str, float, str]:
     """The mechanism at its first position as a stick drawing fitted in 170 × 90 mm."""
     from plans.io import loads_toml
     from plans.kinematics.exact import solve
     from plans.scene.model import scene_from_dict
 
-    data = loads_toml(got.files[got.key["file"]], got.key["file"])
-    scene = scene_from_dict(data, got.key["file"])
+    name = got.key.get("scene", got.key["file"])
+    scene = scene_from_dict(loads_toml(got.files[name], name), name)
     kin = solve(scene, order=0)
     pts: dict[str, complex] = {}
     segs: list[tuple[str, str]] = []

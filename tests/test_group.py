@@ -37,7 +37,7 @@ def _csv_rows(path: Path) -> list[dict[str, str]]:
 def test_one_folder_per_variant_with_the_layout(group: Path) -> None:
     rows = _csv_rows(SAMPLE / "group.csv")
     assert len(rows) >= 25 and {r["template"] for r in rows} >= {"shaper.template.toml", "gears.template.toml",
-                                                                  "cam.template.toml"}
+                                                                  "cam.template.toml", "crank_rocker.template.toml"}
     for r in rows:
         folder = group / r["variant"]
         key = json.loads((folder / "key.json").read_text(encoding="utf-8"))
@@ -104,6 +104,10 @@ def _submissions(group: Path, folder: Path, planted: dict[str, tuple[str, str]])
         target.parent.mkdir(parents=True, exist_ok=True)
         slip = planted.get(d.name, (None, ""))[0]
         target.write_text(tomlkit.dumps(key_submission(d, target, f"Student {d.name}", grp, slip)), encoding="utf-8")
+        if (d / "synthesis.toml").exists():  # a synthesis variant: the design's sheet besides its scene's
+            target = target.with_suffix(".synthesis.toml")
+            target.write_text(tomlkit.dumps(key_submission(d, target, f"Student {d.name}", grp, sheet="synthesis")),
+                              encoding="utf-8")
 
 
 def _read(xlsx: Path) -> dict[str, list[dict]]:
@@ -130,9 +134,9 @@ def test_keys_fed_back_get_full_marks(group: Path, tmp_path: Path) -> None:
     rows = [r for rs in book.values() for r in rs]
     assert len(rows) == len(list(p for p in group.iterdir() if p.name != "handouts"))
     for r in rows:
-        assert r["mark"] == 100 and not r["causes"] and not r["unexplained"], r
-        kind = {"L": "linkage", "G": "gears", "C": "cam"}[r["variant"][0]]
-        assert r[kind] == 100
+        assert r["mark"] == 100 and not r["causes"] and not r["unexplained"] and not r["findings"], r
+        for kind in {"L": ["linkage"], "G": ["gears"], "C": ["cam"], "S": ["synthesis", "linkage"]}[r["variant"][0]]:
+            assert r[kind] == 100, (kind, r)
 
 
 def test_planted_slips_are_found_exactly(group: Path, tmp_path: Path) -> None:
@@ -188,3 +192,21 @@ def test_bad_tables_are_one_line(tmp_path: Path, capsys: pytest.CaptureFixture) 
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "'variant' column" in err[0] and "u.csv" in err[0]
     assert not (tmp_path / "out2").exists()
+
+
+def test_synthesis_keys_meet_the_task_by_the_extreme_positions(group: Path) -> None:
+    """A crank-rocker's extremes: A to B is b − a and b + a, θ apart, the chord B1B2 the
+    rocker's swing (cosine law); the key's K is the task's and θ = 180°(K − 1)/(K + 1)."""
+    rows = [r for r in _csv_rows(SAMPLE / "group.csv") if r["template"] == "crank_rocker.template.toml"]
+    assert rows
+    for r in rows:
+        key = json.loads((group / r["variant"] / "key.json").read_text())
+        v = {q: d["0"] for q, d in key["values"].items() if "0" in d and not q.startswith(("v_", "a_"))}
+        K, psi, c = float(r["K"]), float(r["psi"]), float(r["l_DB"])
+        assert v["K"] == pytest.approx(K, abs=1e-9) and v["psi"] == pytest.approx(psi, abs=1e-7)
+        assert v["theta"] == pytest.approx(180 * (K - 1) / (K + 1), abs=1e-7)
+        a, b, th = v["l_crank"], v["l_coupler"], math.radians(v["theta"])
+        chord2 = (b - a) ** 2 + (b + a) ** 2 - 2 * (b - a) * (b + a) * math.cos(th)
+        assert math.sqrt(chord2) == pytest.approx(2 * c * math.sin(math.radians(psi) / 2), rel=1e-7)
+        assert v["l_rocker"] == pytest.approx(c) and v["gamma_min"] >= 40 - 1e-9
+        assert (group / r["variant"] / "scene.toml").is_file() and key["scene"] == "scene.toml"

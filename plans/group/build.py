@@ -31,7 +31,8 @@ from plans.errors import InputError, PlansError, one_line
 #: ``{name}``: a placeholder (a TOML inline table has spaces or ``=`` inside its braces).
 PLACEHOLDER = re.compile(r"\{([A-Za-z_][A-Za-z0-9_]*)\}")
 #: The file a variant's folder holds, by kind.
-FILE_NAMES = {"linkage": "scene.toml", "gears": "gears.toml", "cam": "cam.toml", "engine": "engine.toml"}
+FILE_NAMES = {"linkage": "scene.toml", "gears": "gears.toml", "cam": "cam.toml", "engine": "engine.toml",
+              "synthesis": "synthesis.toml"}
 _VARIANT = re.compile(r"^[A-Za-z0-9][A-Za-z0-9_.-]{0,63}$")
 
 
@@ -157,19 +158,31 @@ def build(row: Row) -> Built:
         except OSError as exc:
             raise InputError(f"cannot read the template: {exc.strerror}", file=str(row.template)) from None
         text = fill(template, row)
-        name = None
+        syn: dict[str, float] = {}
         data = loads_toml(text, str(row.template))
         out.kind = kind_of(data, str(row.template))
         name = FILE_NAMES[out.kind]
         # the file is judged where it will stand: its relative paths are the variant folder's
         path = str(row.template.parent / row.variant / name)
         out.files[name] = text
-        values, scales = key_values(out.kind, data, path)
+        if out.kind == "synthesis":  # designed into its scene: the scene's figures and the design's
+            from plans.group.sheets import synthesis_values
+
+            scene_text, syn = synthesis_values(data, path)
+            out.files["scene.toml"] = scene_text
+            values, scales = linkage_key(loads_toml(scene_text, path), str(Path(path).with_name("scene.toml")))
+            out.files["synthesis.check.toml"] = _synthesis_form(name, syn, row.variant)
+            values = {**{q: {"0": v} for q, v in syn.items()}, **values}
+        else:
+            values, scales = key_values(out.kind, data, path)
         out.key = {"variant": row.variant, "kind": out.kind, "file": name, "values": values}
+        if out.kind == "synthesis":
+            out.key["scene"] = "scene.toml"
         if scales:
             out.key["scales"] = scales
-        if out.kind == "linkage":
-            out.files["check.toml"] = linkage_form(name, values, row.variant, "F_bal" in values)
+        if out.kind in ("linkage", "synthesis"):
+            scene_values = {q: v for q, v in values.items() if q not in syn}
+            out.files["check.toml"] = linkage_form("scene.toml", scene_values, row.variant, "F_bal" in values)
         elif out.kind in ("gears", "cam"):
             from plans.group.sheets import blank
 
@@ -194,6 +207,12 @@ def key_values(kind: str, data: dict[str, Any], path: str
         engine_from_dict(data, path)
         return {}, {}
     return linkage_key(data, path)
+
+
+def _synthesis_form(name: str, values: dict[str, float], variant: str) -> str:
+    from plans.group.sheets import blank
+
+    return blank("synthesis", name, {q: {"0": v} for q, v in values.items()}, variant)
 
 
 def linkage_form(scene_ref: str, values: dict[str, dict[str, float]], variant: str, force: bool) -> str:

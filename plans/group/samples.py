@@ -33,7 +33,8 @@ def _positions(values: dict[str, dict[str, float]]) -> list[dict[str, Any]]:
 
 
 def key_submission(variant_dir: str | Path, target: str | Path, student: str, group: str,
-                   slip: str | None = None, seed: int = 0) -> dict[str, Any]:
+                   slip: str | None = None, seed: int = 0, sheet: str | None = None) -> dict[str, Any]:
+    """``sheet``: of a synthesis variant, ``"synthesis"`` (the design) or None (its scene's sheets)."""
     from plans.io import read_toml
 
     folder, target = Path(variant_dir), Path(target)
@@ -42,6 +43,12 @@ def key_submission(variant_dir: str | Path, target: str | Path, student: str, gr
     src = folder / name
     head: dict[str, Any] = {"format": 1, "student": student, "group": group, "variant": key["variant"]}
     values = key["values"]
+    if kind == "synthesis" and sheet == "synthesis":
+        syn = {q: v for q, v in values.items() if q in _synthesis_names(folder)}
+        return {**head, "synthesis": _rel(src, target), "scales": {"length": {"mu": 1}}, "positions": _positions(syn)}
+    if kind == "synthesis":
+        kind, src = "linkage", folder / key["scene"]
+        values = {q: v for q, v in values.items() if q not in _synthesis_names(folder)}
     if kind == "linkage":
         if slip is not None:
             return _planted(src, target, head, slip, seed)
@@ -65,6 +72,13 @@ def key_submission(variant_dir: str | Path, target: str | Path, student: str, gr
     elif slip is not None:
         raise ValueError(f"no slip {slip!r} on a {kind} sheet")
     return {**head, kind: _rel(src, target), "scales": {"length": {"mu": 1}}, "positions": _positions(values)}
+
+
+def _synthesis_names(folder: Path) -> set[str]:
+    import re
+
+    form = (folder / "synthesis.check.toml").read_text(encoding="utf-8")
+    return set(re.findall(r'^"([^"]+)" = ""', form, flags=re.M))
 
 
 def _planted(src: Path, target: Path, head: dict[str, Any], slip: str, seed: int) -> dict[str, Any]:

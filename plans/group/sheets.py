@@ -49,7 +49,7 @@ CAM_ANGLES = tuple(float(a) for a in range(0, 360, 30))
 SHEET_RUBRIC = {"full": 100.0, "shift_coefficient": 10.0, "base_radius": 10.0, "scale": 10.0,
                 "unexplained": 2.0}
 #: Floors of the course rule where the exact value may be near zero.
-_FLOOR = {"x": 0.01, "alpha_w": 0.1, "theta": 0.5, "e": 0.5}
+_FLOOR = {"x": 0.01, "alpha_w": 0.1, "theta": 0.5, "e": 0.5, "K": 0.01}
 
 
 def _pair(a: str, b: str) -> str:
@@ -123,6 +123,38 @@ def cam_values(data: dict[str, Any], path: str, r0: float | None = None, e: floa
             out[("R_a", phi)] = float(np.hypot(*pr.actual[i])) / L
         out[("s", phi)] = float(pr.motion.s[i]) * lift
     return out
+
+
+def synthesis_values(data: dict[str, Any], path: str) -> tuple[str, dict[str, float]]:
+    """A synthesis task designed: the scene's text and the design's figures (lengths
+    ``l_<name>`` in the file's unit, ``theta`` in degrees, ``K``, the stroke ``H`` or the
+    swing ``psi`` in degrees, ``gamma_min`` in degrees, as measured back on the design)."""
+    from plans.synthesis.cli import _check_scene, results
+    from plans.synthesis.design import design
+    from plans.synthesis.model import task_from_dict
+    from plans.synthesis.scene import scene_text
+
+    d = design(task_from_dict(data, path))
+    text = scene_text(d)
+    _check_scene(text, path)
+    res = results(d, "scene.toml")
+    out = {f"l_{k}": float(v) for k, v in res["lengths"].items() if v}
+    out["K"] = float(res["K_measured"])
+    out["theta"] = 180.0 * (out["K"] - 1) / (out["K"] + 1)
+    if "stroke_measured" in res:
+        out["H"] = float(res["stroke_measured"])
+    if "swing_measured_deg" in res:
+        out["psi"] = float(res["swing_measured_deg"])
+    out["gamma_min"] = float(res["gamma_min_deg"])
+    return text, out
+
+
+def _synthesis_how(q: str) -> str:
+    if q in ("theta", "psi", "gamma_min"):
+        return "angle"
+    if q == "K":
+        return "rule"
+    return "drawn"
 
 
 def _cam_how(q: str, osc: bool) -> str:
@@ -226,15 +258,15 @@ class SheetReport:
 
 
 def is_sheet_check(data: dict[str, Any]) -> str | None:
-    """``gears`` or ``cam`` when the table is a check file of such a sheet."""
+    """``gears``, ``cam`` or ``synthesis`` when the table is a check file of such a sheet."""
     if "positions" in data and "student" in data:
-        for kind in ("gears", "cam"):
+        for kind in ("gears", "cam", "synthesis"):
             if isinstance(data.get(kind), str):
                 return kind
     return None
 
 
-_TOP = {"format", "student", "group", "variant", "gears", "cam", "scales", "tolerance", "positions", "title",
+_TOP = {"format", "student", "group", "variant", "gears", "cam", "synthesis", "scales", "tolerance", "positions", "title",
         "rubric"}
 
 
@@ -278,6 +310,9 @@ def check_sheet(data: dict[str, Any], path: str) -> SheetReport:
         vals, how = gears_values(part, str(src))
         exact = {(q, 0.0): v for q, v in vals.items()}
         hows = {(q, 0.0): h for q, h in how.items()}
+    elif kind == "synthesis":
+        exact = {(q, 0.0): v for q, v in synthesis_values(part, str(src))[1].items()}
+        hows = {key: _synthesis_how(key[0]) for key in exact}
     else:
         exact = cam_values(part, str(src))
         osc = part.get("follower") == "oscillating"
@@ -373,8 +408,8 @@ def sheet_check_of(path: str | Path) -> SheetReport | None:
     from plans.io import read_toml
 
     try:
-        if "gears" not in Path(path).read_text(encoding="utf-8", errors="replace") and \
-                "cam" not in Path(path).read_text(encoding="utf-8", errors="replace"):
+        text = Path(path).read_text(encoding="utf-8", errors="replace")
+        if not any(k in text for k in ("gears", "cam", "synthesis")):
             return None
     except OSError:
         return None
