@@ -135,7 +135,8 @@ def test_keys_fed_back_get_full_marks(group: Path, tmp_path: Path) -> None:
     assert len(rows) == len(list(p for p in group.iterdir() if p.name != "handouts"))
     for r in rows:
         assert r["mark"] == 100 and not r["causes"] and not r["unexplained"] and not r["findings"], r
-        for kind in {"L": ["linkage"], "G": ["gears"], "C": ["cam"], "S": ["synthesis", "linkage"]}[r["variant"][0]]:
+        for kind in {"L": ["linkage"], "G": ["gears"], "C": ["cam"], "S": ["synthesis", "linkage"],
+                     "E": ["engine"]}[r["variant"][0]]:
             assert r[kind] == 100, (kind, r)
 
 
@@ -210,3 +211,18 @@ def test_synthesis_keys_meet_the_task_by_the_extreme_positions(group: Path) -> N
         assert math.sqrt(chord2) == pytest.approx(2 * c * math.sin(math.radians(psi) / 2), rel=1e-7)
         assert v["l_rocker"] == pytest.approx(c) and v["gamma_min"] >= 40 - 1e-9
         assert (group / r["variant"] / "scene.toml").is_file() and key["scene"] == "scene.toml"
+
+
+def test_engine_keys_close_the_rotating_masses_polygon(group: Path) -> None:
+    """The rotating masses' polygon in units of cylinder 1's: |Σ m_i e^{iθ_i}| / m_1 (cranks at
+    0°, 180°, 90°, 270°); the first-order polygon of four equal reciprocating masses closes."""
+    rows = [r for r in _csv_rows(SAMPLE / "group.csv") if r["template"] == "engine.template.toml"]
+    assert rows
+    for r in rows:
+        v = json.loads((group / r["variant"] / "key.json").read_text())["values"]
+        m = (400.0, float(r["m_rot2"]), 600.0, 400.0)
+        z = sum(mi * complex(math.cos(math.radians(t)), math.sin(math.radians(t)))
+                for mi, t in zip(m, (0, 180, 90, 270), strict=True))
+        assert v["F_rot"]["0"] == pytest.approx(abs(z) / 400.0, abs=1e-8)
+        assert v["F_I"]["0"] == pytest.approx(0.0, abs=1e-9)
+        assert v["mr_cw1"]["0"] > 0 and 0 <= v["angle_cw2"]["0"] < 360

@@ -183,7 +183,7 @@ def build(row: Row) -> Built:
         if out.kind in ("linkage", "synthesis"):
             scene_values = {q: v for q, v in values.items() if q not in syn}
             out.files["check.toml"] = linkage_form("scene.toml", scene_values, row.variant, "F_bal" in values)
-        elif out.kind in ("gears", "cam"):
+        elif out.kind in ("gears", "cam", "engine"):
             from plans.group.sheets import blank
 
             out.files["check.toml"] = blank(out.kind, name, values, row.variant)
@@ -197,15 +197,10 @@ def build(row: Row) -> Built:
 def key_values(kind: str, data: dict[str, Any], path: str
                ) -> tuple[dict[str, dict[str, float]], dict[str, Any]]:
     """The key's values and (a linkage) the scales they are read at."""
-    if kind in ("gears", "cam"):
+    if kind in ("gears", "cam", "engine"):
         from plans.group.sheets import sheet_key
 
         return sheet_key(kind, data, path), {}
-    if kind == "engine":
-        from plans.balancing.engine import engine_from_dict
-
-        engine_from_dict(data, path)
-        return {}, {}
     return linkage_key(data, path)
 
 

@@ -71,7 +71,8 @@ def key_submission(variant_dir: str | Path, target: str | Path, student: str, gr
             values.setdefault(q, {})[f"{phi:g}"] = v
     elif slip is not None:
         raise ValueError(f"no slip {slip!r} on a {kind} sheet")
-    return {**head, kind: _rel(src, target), "scales": {"length": {"mu": 1}}, "positions": _positions(values)}
+    mu = 50 if kind == "engine" else 1
+    return {**head, kind: _rel(src, target), "scales": {"length": {"mu": mu}}, "positions": _positions(values)}
 
 
 def _synthesis_names(folder: Path) -> set[str]:

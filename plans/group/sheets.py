@@ -125,6 +125,40 @@ def cam_values(data: dict[str, Any], path: str, r0: float | None = None, e: floa
     return out
 
 
+#: The orders of a balancing sheet, as the quantities name them.
+_ORDERS = {"rotating": "rot", "first_order": "I", "second_order": "II"}
+
+
+def engine_values(data: dict[str, Any], path: str) -> dict[str, float]:
+    """An engine's balancing figures: the force and moment polygons' resultants
+    (``F_I``, ``M_II``, ``F_rot``: dimensionless, the closing side of the polygon of unit
+    vectors, and ``F_I_amp`` in N, ``M_I_amp`` in N·m), and each counterweight's
+    mass-radius product ``mr_cw1`` (kg·m) and angle ``angle_cw1`` (degrees)."""
+    from plans.balancing.analysis import balance
+    from plans.balancing.engine import engine_from_dict
+
+    got = balance(engine_from_dict(data, path)).to_json()
+    out: dict[str, float] = {}
+    for what, letter in (("forces", "F"), ("moments", "M")):
+        for order, tag in _ORDERS.items():
+            r = got.get(what, {}).get(order)
+            if r is not None:
+                out[f"{letter}_{tag}"] = float(r["dimensionless"])
+                out[f"{letter}_{tag}_amp"] = float(r["amplitude"])
+    for i, cw in enumerate(got.get("counterweights") or [], 1):
+        out[f"mr_cw{i}"] = float(cw["mass_radius"])
+        out[f"angle_cw{i}"] = float(cw["angle_deg"]) % 360.0
+    return out
+
+
+def _engine_how(q: str) -> str:
+    if q.startswith("angle_"):
+        return "angle"
+    if q.endswith("_amp") or q.startswith("mr_"):
+        return "rule"
+    return "drawn"
+
+
 def synthesis_values(data: dict[str, Any], path: str) -> tuple[str, dict[str, float]]:
     """A synthesis task designed: the scene's text and the design's figures (lengths
     ``l_<name>`` in the file's unit, ``theta`` in degrees, ``K``, the stroke ``H`` or the
@@ -168,8 +202,8 @@ def _cam_how(q: str, osc: bool) -> str:
 def sheet_key(kind: str, data: dict[str, Any], path: str) -> dict[str, dict[str, float]]:
     """The key's values of a gears or cam file: {quantity: {φ: value}}."""
     out: dict[str, dict[str, float]] = {}
-    if kind == "gears":
-        vals, _ = gears_values(data, path)
+    if kind in ("gears", "engine"):
+        vals = gears_values(data, path)[0] if kind == "gears" else engine_values(data, path)
         for q, v in vals.items():
             out[q] = {"0": _round(v)}
     else:
@@ -191,9 +225,11 @@ def blank(kind: str, file_ref: str, key: dict[str, dict[str, float]], variant: s
 
     lines = ["# A blank check file: type in what the student wrote; leave \"\" where nothing is written.",
              "# Lengths in the file's unit (mm), angles in degrees.  Check it with: plans check THIS_FILE",
-             "format = 1", 'student = ""', 'group = ""', f"variant = {q(variant)}", f"{kind} = {q(file_ref)}", "",
-             "[scales]  # the student's drawing: mm on the sheet per mm of the part",
-             "length = { mu = 1 }"]
+             "format = 1", 'student = ""', 'group = ""', f"variant = {q(variant)}", f"{kind} = {q(file_ref)}", ""]
+    if kind == "engine":
+        lines += ["[scales]  # the student's polygons: mm per unit vector", "length = { mu = 50 }"]
+    else:
+        lines += ["[scales]  # the student's drawing: mm on the sheet per mm of the part", "length = { mu = 1 }"]
     phis = sorted({float(p) for vals in key.values() for p in vals})
     for phi in phis:
         lines += ["", "[[positions]]", f"phi_deg = {phi:g}", "", "[positions.values]"]
@@ -260,13 +296,13 @@ class SheetReport:
 def is_sheet_check(data: dict[str, Any]) -> str | None:
     """``gears``, ``cam`` or ``synthesis`` when the table is a check file of such a sheet."""
     if "positions" in data and "student" in data:
-        for kind in ("gears", "cam", "synthesis"):
+        for kind in ("gears", "cam", "synthesis", "engine"):
             if isinstance(data.get(kind), str):
                 return kind
     return None
 
 
-_TOP = {"format", "student", "group", "variant", "gears", "cam", "synthesis", "scales", "tolerance", "positions", "title",
+_TOP = {"format", "student", "group", "variant", "gears", "cam", "synthesis", "engine", "scales", "tolerance", "positions", "title",
         "rubric"}
 
 
@@ -289,7 +325,7 @@ def check_sheet(data: dict[str, Any], path: str) -> SheetReport:
     check_keys(data, _TOP, file=path, where="")
     src = Path(path).parent / data[kind]
     part = read_toml(src)
-    mu = 1.0
+    mu = 50.0 if kind == "engine" else 1.0  # a polygon's unit vector drawn 50 mm long
     scales = data.get("scales", {})
     if isinstance(scales, dict) and isinstance(scales.get("length"), dict):
         got = _number(scales["length"].get("mu", 1), path, "scales.length.mu")
@@ -310,6 +346,9 @@ def check_sheet(data: dict[str, Any], path: str) -> SheetReport:
         vals, how = gears_values(part, str(src))
         exact = {(q, 0.0): v for q, v in vals.items()}
         hows = {(q, 0.0): h for q, h in how.items()}
+    elif kind == "engine":
+        exact = {(q, 0.0): v for q, v in engine_values(part, str(src)).items()}
+        hows = {key: _engine_how(key[0]) for key in exact}
     elif kind == "synthesis":
         exact = {(q, 0.0): v for q, v in synthesis_values(part, str(src))[1].items()}
         hows = {key: _synthesis_how(key[0]) for key in exact}
@@ -328,14 +367,17 @@ def check_sheet(data: dict[str, Any], path: str) -> SheetReport:
             return max(2 * dir_deg, rule * abs(value), floor)
         if h.startswith("ratio:"):
             return 2 * seg_mm / mu / float(h.split(":", 1)[1])
-        return max(rule * abs(value), floor)
+        return max(rule * abs(value), floor, 1e-9 * big)
 
+    big = max((abs(v) for v in exact.values()), default=0.0)  # a balanced order's 0 is 0 to rounding
     items = []
     for key, s in written.items():
         if key not in exact:
             raise InputError(f"{key[0]} at {key[1]:g}° is not a figure of this {kind} sheet "
                              f"(expected one of {', '.join(sorted({q for q, _ in exact}))})", file=path,
                              field="positions")
+        if key[0].startswith("angle_"):  # a direction: 359.9° is 0.1° from 0°
+            s = exact[key] + ((s - exact[key] + 180.0) % 360.0 - 180.0)
         items.append(SheetItem(key[0], key[1], s, exact[key], tolerance(key, exact[key]), hows[key]))
     items.sort(key=lambda it: (it.phi_deg, it.quantity))
     causes, left = _diagnose(kind, part, str(src), items, written, tolerance, rubric)
@@ -409,7 +451,7 @@ def sheet_check_of(path: str | Path) -> SheetReport | None:
 
     try:
         text = Path(path).read_text(encoding="utf-8", errors="replace")
-        if not any(k in text for k in ("gears", "cam", "synthesis")):
+        if not any(k in text for k in ("gears", "cam", "synthesis", "engine")):
             return None
     except OSError:
         return None
