@@ -226,3 +226,20 @@ def test_engine_keys_close_the_rotating_masses_polygon(group: Path) -> None:
         assert v["F_rot"]["0"] == pytest.approx(abs(z) / 400.0, abs=1e-8)
         assert v["F_I"]["0"] == pytest.approx(0.0, abs=1e-9)
         assert v["mr_cw1"]["0"] > 0 and 0 <= v["angle_cw2"]["0"] < 360
+
+
+def test_a_gears_sheet_alone_and_its_blank_form(group: Path, tmp_path: Path, capsys: pytest.CaptureFixture) -> None:
+    from plans.group.samples import key_submission
+
+    target = tmp_path / "g.toml"
+    target.write_text(tomlkit.dumps(key_submission(group / "G03", target, "Ivanov", "MT-31", "shift_coefficient")),
+                      encoding="utf-8")
+    assert main(["check", str(target), "--json", str(tmp_path / "g.json"), "--quiet"]) == 0
+    got = json.loads((tmp_path / "g.json").read_text(encoding="utf-8"))
+    assert [c["kind"] for c in got["causes"]] == ["shift_coefficient"] and got["unexplained"] == []
+    assert "x_1" in got["causes"][0]["explains"] and "a_w_12" in got["causes"][0]["explains"]
+    assert main(["check", "--template", str(group / "G03" / "gears.toml"), "-o", str(tmp_path / "blank.toml"),
+                 "--quiet"]) == 0
+    blank = tomlkit.parse((tmp_path / "blank.toml").read_text(encoding="utf-8"))
+    key = json.loads((group / "G03" / "key.json").read_text(encoding="utf-8"))
+    assert set(blank["positions"][0]["values"]) == set(key["values"])
