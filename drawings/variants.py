@@ -200,6 +200,9 @@ def handout_svg(st: dict[str, str], got: Any, lang: str) -> str:
         text(18, y, t["scheme"].format(phi=f"{phi:g}"), 4.0, True)
         out.append(f'<g transform="translate(20,{y + 4:g})">{scheme}</g>')
         y += 100
+    elif got.kind in ("gears", "cam"):
+        out.append(f'<g transform="translate(20,{y + 2:g})">{_sketch(got)}</g>')
+        y += 80
     text(18, y, t["data"], 4.5, True)
     y += 7
     rows = [(k, v) for k, v in got.row.data.items() if v]
@@ -263,6 +266,26 @@ def _scheme(got: Any) -> tuple[str, float, str]:
     phi = float(kin.phi_deg[0])
     phis = ", ".join(f"{float(q):g}°" for q in kin.phi_deg)
     return "".join(body), phi if math.isfinite(phi) else 0.0, phis
+
+
+def _sketch(got: Any) -> str:
+    """A gear pair as its pitch circles, a cam as its base circle and a roller follower:
+    what the task is about, not its answer (nothing measured off it)."""
+    line = 'stroke="black" stroke-width="0.5" fill="none"'
+    if got.kind == "gears":
+        z1, z2 = (float(got.row.data.get(k) or n) for k, n in (("z1", 12), ("z2", 30)))
+        k = min(160.0 / (z1 + z2), 60.0 / max(z1, z2)) / 2  # both circles within 160 × 60 mm
+        r1, r2 = z1 * k, z2 * k
+        cx = 85 - (r1 + r2)
+        return (f'<circle cx="{cx + r1:.2f}" cy="35" r="{r1:.2f}" {line}/>'
+                f'<circle cx="{cx + 2 * r1 + r2:.2f}" cy="35" r="{r2:.2f}" {line}/>'
+                f'<circle cx="{cx + r1:.2f}" cy="35" r="0.8"/><circle cx="{cx + 2 * r1 + r2:.2f}" cy="35" r="0.8"/>'
+                f'<text x="{cx + r1 - 2:.2f}" y="{31 - r1:.2f}" font-size="3.5">z1</text>'
+                f'<text x="{cx + 2 * r1 + r2 - 2:.2f}" y="{31 - r2:.2f}" font-size="3.5">z2</text>')
+    return (f'<circle cx="85" cy="45" r="25" {line}/><circle cx="85" cy="45" r="0.8"/>'
+            f'<circle cx="85" cy="16" r="4" {line}/><line x1="85" y1="12" x2="85" y2="-2" {line}/>'
+            '<text x="90" y="47" font-size="3.5">r0</text><line x1="85" y1="45" x2="85" y2="20" '
+            'stroke="black" stroke-width="0.3" stroke-dasharray="1,1"/>')
 
 
 def handout_pdf(st: dict[str, str], got: Any, lang: str) -> bytes:
