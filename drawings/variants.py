@@ -61,14 +61,15 @@ def register(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("-o", "--output", required=True, metavar="DIR", help="the group's folder")
     p.add_argument("--students", metavar="ROSTER.csv", help="roster: name, group, variant; writes DIR/handouts/")
     p.add_argument("--jobs", type=int, default=1, metavar="N", help="variants made in N processes (default 1)")
-    p.add_argument("--language", choices=("ru", "en"), default="ru", help="of the handouts (default ru)")
+    p.add_argument("--language", choices=("ru", "en"), default="ru",
+                   help="of the handouts and the reference sheets (default ru)")
     p.add_argument("--no-sheets", action="store_true", help="no reference sheets (files, keys, forms only)")
     p.add_argument("--quiet", action="store_true", help="no progress lines")
     p.set_defaults(func=run)
     return p
 
 
-def make(row: Any, sheets: bool) -> tuple[Any, dict[str, bytes]]:
+def make(row: Any, sheets: bool, language: str | None = None) -> tuple[Any, dict[str, bytes]]:
     """One variant: built (:func:`plans.group.build.build`) and its reference sheets drawn,
     nothing written: (built, {path in its folder: bytes})."""
     from plans.group.build import build
@@ -80,15 +81,16 @@ def make(row: Any, sheets: bool) -> tuple[Any, dict[str, bytes]]:
     files["key.json"] = (json.dumps(got.key, ensure_ascii=False, indent=1, sort_keys=False) + "\n").encode("utf-8")
     if sheets and got.kind:
         try:
-            files.update(reference(got))
+            files.update(reference(got, language))
         except PlansError as exc:
             got.error = f"reference sheets: {one_line(exc)}"
             return got, {}
     return got, files
 
 
-def reference(got: Any) -> dict[str, bytes]:
-    """The variant's sheets as PDF, drawn from its file laid in a scratch folder."""
+def reference(got: Any, language: str | None = None) -> dict[str, bytes]:
+    """The variant's sheets as PDF, drawn from its file laid in a scratch folder (in
+    ``language``; None: the file's own)."""
     import importlib
 
     from plans.kinds import KINDS
@@ -103,13 +105,13 @@ def reference(got: Any) -> dict[str, bytes]:
         for name, kind in names:
             src = Path(tmp) / name
             src.write_text(got.files[name], encoding="utf-8")
-            drawing = importlib.import_module(KINDS[kind][1]).draw(str(src))
+            drawing = importlib.import_module(KINDS[kind][1]).draw(str(src), language=language)
             rendered = render(drawing.sheets, Path("reference"), Path(name).stem, ["pdf"])
             out.update({str(p): data for p, data in rendered.items()})
     return out
 
 
-def _make_star(args: tuple[Any, bool]) -> tuple[Any, dict[str, bytes]]:
+def _make_star(args: tuple[Any, bool, str | None]) -> tuple[Any, dict[str, bytes]]:
     return make(*args)
 
 
@@ -128,7 +130,7 @@ def run(args: argparse.Namespace) -> int:
         raise InputError(f"expected 1 to 64 jobs, got {args.jobs}", field="--jobs")
     rows = read_table(table)
     roster = read_roster(args.students, {r.variant for r in rows}) if args.students else []
-    work = [(r, not args.no_sheets) for r in rows]
+    work = [(r, not args.no_sheets, args.language) for r in rows]
     if args.jobs > 1 and len(rows) > 1:
         from concurrent.futures import ProcessPoolExecutor
 

@@ -243,3 +243,27 @@ def test_a_gears_sheet_alone_and_its_blank_form(group: Path, tmp_path: Path, cap
     blank = tomlkit.parse((tmp_path / "blank.toml").read_text(encoding="utf-8"))
     key = json.loads((group / "G03" / "key.json").read_text(encoding="utf-8"))
     assert set(blank["positions"][0]["values"]) == set(key["values"])
+
+
+def test_a_toml_table_and_a_bad_rubric(tmp_path: Path, capsys: pytest.CaptureFixture) -> None:
+    shutil.copy(SAMPLE / "cam.template.toml", tmp_path / "cam.template.toml")
+    (tmp_path / "t.toml").write_text(
+        'format = 1\nkind = "variants"\ntemplate = "cam.template.toml"\n'
+        '[[variants]]\nvariant = "K1"\nr0 = 50\ne = 0\nh = 10\nphi_rise = 60\nphi_dwell = 220\nlaw = "harmonic"\n'
+        '[[variants]]\nvariant = "K2"\nr0 = 55.5\ne = 5\nh = 12\nphi_rise = 70\nphi_dwell = 200\nlaw = "poly345"\n',
+        encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["variants", str(tmp_path / "t.toml"), "-o", str(out), "--no-sheets", "--quiet"]) == 0
+    key = json.loads((out / "K2" / "key.json").read_text(encoding="utf-8"))
+    assert key["values"]["r0"]["0"] == 55.5 and key["values"]["e"]["0"] == 5
+    subs = tmp_path / "subs"
+    subs.mkdir()
+    from plans.group.samples import key_submission
+
+    (subs / "a.toml").write_text(tomlkit.dumps(key_submission(out / "K1", subs / "a.toml", "A", "G")), encoding="utf-8")
+    (tmp_path / "r.toml").write_text('format = 1\nkind = "rubric"\n[weights]\ncam = "two"\n', encoding="utf-8")
+    capsys.readouterr()
+    assert main(["check", str(subs), "--xlsx", str(tmp_path / "m.xlsx"), "--rubric", str(tmp_path / "r.toml")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "weights.cam" in err[0] and "r.toml" in err[0]
+    assert not (tmp_path / "m.xlsx").exists()
