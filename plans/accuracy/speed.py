@@ -353,6 +353,29 @@ def sheet_goals(samples: Path, reps: int = 3) -> list[Goal]:
     return out
 
 
+#: The explanatory note of the V-engine project (12 positions, 32 figures), seconds.
+NOTE_BUILD = 3.0
+
+
+def note_goals(samples: Path, reps: int = 3) -> list[Goal]:
+    """The explanatory note of the V-engine project built as a DOCX with its figures, timed
+    by the renderer in a fresh interpreter (``python -m drawings.note.cli``)."""
+    scene = samples / "projects" / "v_engine_project.toml"
+    if not scene.is_file():
+        return [Goal("explanatory note", "skipped: samples/projects/v_engine_project.toml missing", math.nan, None)]
+    root = Path(__file__).resolve().parents[2]
+    p = subprocess.run([sys.executable, "-m", "drawings.note.cli", str(scene), str(reps)], cwd=root,
+                       capture_output=True, text=True, env=_interpreter_env())
+    if p.returncode != 0:
+        why = (p.stderr.strip().splitlines() or [f"exit status {p.returncode}"])[-1]
+        return [Goal("explanatory note", f"skipped: {why}", math.nan, None)]
+    fig = json.loads(p.stdout)
+    t = fig["seconds"]
+    return [Goal(f"V-engine project's explanatory note, 12 positions and its figures: DOCX ≤ {NOTE_BUILD:g} s",
+                 f"{t:.3f} s (processor {fig['cpu_seconds']:.3f} s), best of {reps}; {fig['bytes'] / 1e6:.2f} MB",
+                 t / NOTE_BUILD, t <= NOTE_BUILD)]
+
+
 #: The demonstration page of the V-engine, 72 positions a turn.
 PAGE_BYTES, PAGE_BUILD, PAGE_FIRST_STEP = 1.5e6, 2.0, 1.0
 
@@ -401,6 +424,8 @@ def measure(samples: Path, log: Callable[[str], None] | None = None, with_peers:
     from plans.accuracy.examiner_bench import examiner_goals
 
     goals += examiner_goals(samples, quick)
+    log("goals: explanatory note ...")
+    goals += note_goals(samples, 1 if quick else 3)
     log("goals: a group's course ...")
     from plans.accuracy.group_bench import group_goals
 
