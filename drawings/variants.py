@@ -147,7 +147,10 @@ def run(args: argparse.Namespace) -> int:
             continue
         folder = out / got.row.variant
         (folder / "reference").mkdir(parents=True, exist_ok=True)
-        write_all({folder / n: data for n, data in sorted(files.items())})
+        written = set(write_all({folder / n: data for n, data in sorted(files.items())}))
+        for old in (folder / "reference").glob("*.pdf"):  # a sheet of an earlier run the new set lacks
+            if old not in written:
+                old.unlink()
         made[got.row.variant] = got
         if not args.quiet:
             print(f"{folder}: {got.kind}, {sum(len(v) for v in got.key['values'].values())} figures in the key")
