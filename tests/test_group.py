@@ -36,8 +36,8 @@ def _csv_rows(path: Path) -> list[dict[str, str]]:
 
 def test_one_folder_per_variant_with_the_layout(group: Path) -> None:
     rows = _csv_rows(SAMPLE / "group.csv")
-    assert len(rows) >= 25 and {r["template"] for r in rows} >= {"shaper.template.toml", "gears.template.toml",
-                                                                  "cam.template.toml", "crank_rocker.template.toml"}
+    assert len(rows) >= 25 and {r["template"] for r in rows} >= {"shaper.template", "gears.template",
+                                                                  "cam.template", "crank_rocker.template"}
     for r in rows:
         folder = group / r["variant"]
         key = json.loads((folder / "key.json").read_text(encoding="utf-8"))
@@ -52,7 +52,7 @@ def test_one_folder_per_variant_with_the_layout(group: Path) -> None:
 
 def test_gear_keys_follow_the_involute_closed_forms(group: Path) -> None:
     for r in _csv_rows(SAMPLE / "group.csv"):
-        if r["template"] != "gears.template.toml":
+        if r["template"] != "gears.template":
             continue
         v = {q: d["0"] for q, d in json.loads((group / r["variant"] / "key.json").read_text())["values"].items()}
         m, z1, z2, a = float(r["m"]), int(r["z1"]), int(r["z2"]), math.radians(20)
@@ -71,7 +71,7 @@ def test_gear_keys_follow_the_involute_closed_forms(group: Path) -> None:
 
 def test_cam_keys_follow_the_motion_law(group: Path) -> None:
     for r in _csv_rows(SAMPLE / "group.csv"):
-        if r["template"] != "cam.template.toml":
+        if r["template"] != "cam.template":
             continue
         v = json.loads((group / r["variant"] / "key.json").read_text())["values"]
         r0, e, h, rise = float(r["r0"]), float(r["e"]), float(r["h"]), float(r["phi_rise"])
@@ -86,7 +86,7 @@ def test_cam_keys_follow_the_motion_law(group: Path) -> None:
 
 
 def test_linkage_key_gives_the_crank_from_its_data(group: Path) -> None:
-    r = next(r for r in _csv_rows(SAMPLE / "group.csv") if r["template"] == "shaper.template.toml")
+    r = next(r for r in _csv_rows(SAMPLE / "group.csv") if r["template"] == "shaper.template")
     v = json.loads((group / r["variant"] / "key.json").read_text())["values"]
     w = math.pi * float(r["n_1"]) / 30
     l1 = float(r["l_OA"]) / 1000
@@ -167,12 +167,12 @@ def test_planted_slips_are_found_exactly(group: Path, tmp_path: Path) -> None:
 
 def test_a_variant_that_cannot_be_built_is_named_and_the_others_made(tmp_path: Path,
                                                                       capsys: pytest.CaptureFixture) -> None:
-    for name in ("shaper.template.toml", "gears.template.toml"):
+    for name in ("shaper.template", "gears.template"):
         shutil.copy(SAMPLE / name, tmp_path / name)
     (tmp_path / "t.csv").write_text("variant,template,l_OA,l_CD,l_OC,n_1,m,z1,z2\n"
-                                    "A1,shaper.template.toml,90,520,280,50,,,\n"
-                                    "A2,shaper.template.toml,90,120,280,50,,,\n"
-                                    "A3,gears.template.toml,,,,,4,13,30\n", encoding="utf-8")
+                                    "A1,shaper.template,90,520,280,50,,,\n"
+                                    "A2,shaper.template,90,120,280,50,,,\n"
+                                    "A3,gears.template,,,,,4,13,30\n", encoding="utf-8")
     out = tmp_path / "out"
     assert main(["variants", str(tmp_path / "t.csv"), "-o", str(out), "--quiet"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
@@ -183,7 +183,7 @@ def test_a_variant_that_cannot_be_built_is_named_and_the_others_made(tmp_path: P
 
 
 def test_bad_tables_are_one_line(tmp_path: Path, capsys: pytest.CaptureFixture) -> None:
-    shutil.copy(SAMPLE / "gears.template.toml", tmp_path / "gears.template.toml")
+    shutil.copy(SAMPLE / "gears.template", tmp_path / "gears.template")
     (tmp_path / "t.csv").write_text("variant,m,z1\nB1,4,13\n", encoding="utf-8")
     assert main(["variants", str(tmp_path / "t.csv"), "-o", str(tmp_path / "out"), "--quiet"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
@@ -198,7 +198,7 @@ def test_bad_tables_are_one_line(tmp_path: Path, capsys: pytest.CaptureFixture) 
 def test_synthesis_keys_meet_the_task_by_the_extreme_positions(group: Path) -> None:
     """A crank-rocker's extremes: A to B is b − a and b + a, θ apart, the chord B1B2 the
     rocker's swing (cosine law); the key's K is the task's and θ = 180°(K − 1)/(K + 1)."""
-    rows = [r for r in _csv_rows(SAMPLE / "group.csv") if r["template"] == "crank_rocker.template.toml"]
+    rows = [r for r in _csv_rows(SAMPLE / "group.csv") if r["template"] == "crank_rocker.template"]
     assert rows
     for r in rows:
         key = json.loads((group / r["variant"] / "key.json").read_text())
@@ -216,7 +216,7 @@ def test_synthesis_keys_meet_the_task_by_the_extreme_positions(group: Path) -> N
 def test_engine_keys_close_the_rotating_masses_polygon(group: Path) -> None:
     """The rotating masses' polygon in units of cylinder 1's: |Σ m_i e^{iθ_i}| / m_1 (cranks at
     0°, 180°, 90°, 270°); the first-order polygon of four equal reciprocating masses closes."""
-    rows = [r for r in _csv_rows(SAMPLE / "group.csv") if r["template"] == "engine.template.toml"]
+    rows = [r for r in _csv_rows(SAMPLE / "group.csv") if r["template"] == "engine.template"]
     assert rows
     for r in rows:
         v = json.loads((group / r["variant"] / "key.json").read_text())["values"]
@@ -246,9 +246,9 @@ def test_a_gears_sheet_alone_and_its_blank_form(group: Path, tmp_path: Path, cap
 
 
 def test_a_toml_table_and_a_bad_rubric(tmp_path: Path, capsys: pytest.CaptureFixture) -> None:
-    shutil.copy(SAMPLE / "cam.template.toml", tmp_path / "cam.template.toml")
+    shutil.copy(SAMPLE / "cam.template", tmp_path / "cam.template")
     (tmp_path / "t.toml").write_text(
-        'format = 1\nkind = "variants"\ntemplate = "cam.template.toml"\n'
+        'format = 1\nkind = "variants"\ntemplate = "cam.template"\n'
         '[[variants]]\nvariant = "K1"\nr0 = 50\ne = 0\nh = 10\nphi_rise = 60\nphi_dwell = 220\nlaw = "harmonic"\n'
         '[[variants]]\nvariant = "K2"\nr0 = 55.5\ne = 5\nh = 12\nphi_rise = 70\nphi_dwell = 200\nlaw = "poly345"\n',
         encoding="utf-8")
@@ -267,3 +267,18 @@ def test_a_toml_table_and_a_bad_rubric(tmp_path: Path, capsys: pytest.CaptureFix
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "weights.cam" in err[0] and "r.toml" in err[0]
     assert not (tmp_path / "m.xlsx").exists()
+
+
+def test_the_same_table_gives_the_same_bytes_in_parallel(tmp_path: Path) -> None:
+    for name in ("gears.template", "cam.template"):
+        shutil.copy(SAMPLE / name, tmp_path / name)
+    (tmp_path / "t.csv").write_text("variant,template,m,z1,z2,r0,e,h,phi_rise,phi_dwell,law\n"
+                                    "A,gears.template,4,13,30,,,,,,\n"
+                                    "B,cam.template,,,,50,5,10,60,220,cycloidal\n"
+                                    "C,gears.template,5,15,40,,,,,,\n", encoding="utf-8")
+    for jobs, out in (("1", "one"), ("2", "two")):
+        assert main(["variants", str(tmp_path / "t.csv"), "-o", str(tmp_path / out), "--jobs", jobs,
+                     "--no-sheets", "--quiet"]) == 0
+    one = {p.relative_to(tmp_path / "one"): p.read_bytes() for p in (tmp_path / "one").rglob("*") if p.is_file()}
+    two = {p.relative_to(tmp_path / "two"): p.read_bytes() for p in (tmp_path / "two").rglob("*") if p.is_file()}
+    assert one == two and len(one) == 9

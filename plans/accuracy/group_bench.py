@@ -25,7 +25,7 @@ SLIPS = {1: "scale", 2: "coriolis_reversed", 3: "arithmetic"}
 def _table(samples: Path, folder: Path, n: int = 30) -> Path:
     """The sample group's table grown to ``n`` rows (its rows again, under new names)."""
     src = samples / "group"
-    for t in src.glob("*.template.toml"):
+    for t in src.glob("*.template"):
         shutil.copy(t, folder / t.name)
     with (src / "group.csv").open(encoding="utf-8") as fh:
         rows = list(csv.DictReader(fh))

@@ -4,10 +4,10 @@ The table (CSV or TOML) has one row per variant; its columns are the ``{placehol
 a template file (a scene, gears, cam or engine file) standing beside it.  CSV::
 
     variant,template,l_AB,l_BC,n_1
-    01,shaper.template.toml,0.10,0.40,60
-    02,gears.template.toml,,,          # a column a template does not name is left empty
+    01,shaper.template,0.10,0.40,60
+    02,gears.template,,,          # a column a template does not name is left empty
 
-``template`` may be left out when one ``*.template.toml`` stands beside the table.
+``template`` may be left out when one ``*.template`` stands beside the table.
 TOML: ``format = 1``, ``kind = "variants"``, ``template = "…"`` and ``[[variants]]``
 tables with the same keys.
 
@@ -95,7 +95,7 @@ def read_table(path: str | Path) -> list[Row]:
         for n, r in enumerate(reader, 2):
             raws.append(({k.strip(): (v or "").strip() for k, v in r.items() if k}, f"row {n}"))
     if default is None:
-        beside = sorted(path.parent.glob("*.template.toml"))
+        beside = sorted(path.parent.glob("*.template"))
         default = beside[0].name if len(beside) == 1 else None
     out: list[Row] = []
     seen: set[str] = set()
@@ -109,7 +109,7 @@ def read_table(path: str | Path) -> list[Row]:
         seen.add(v)
         tmpl = data.pop("template", "") or default
         if not tmpl:
-            raise InputError("expected a 'template' column (or one *.template.toml beside the table)",
+            raise InputError("expected a 'template' column (or one *.template beside the table)",
                              file=str(path), field=f"{where}.template")
         out.append(Row(v, path.parent / tmpl, data, f"{path.name}, {where}"))
     return out
