@@ -154,6 +154,13 @@ def test_planted_slips_are_found_exactly(group: Path, tmp_path: Path) -> None:
         causes = [c.split(" at ")[0] for c in rows[v]["causes"].split("; ")]
         assert causes == [finding], (v, rows[v])
         assert not rows[v]["unexplained"], (v, rows[v])
+    # beside the gradebook: a report per sheet and the examiner's summary.csv
+    reports = tmp_path / "subs" / "reports"
+    summary = _csv_rows(reports / "summary.csv")
+    assert len(summary) == len(list((tmp_path / "subs").rglob("*.toml")))
+    assert {r["causes"].split(" at ")[0] for r in summary if r["causes"]} == {k for k, _ in PLANTED.values()}
+    got = json.loads((reports / "MT-31_L03.json").read_text(encoding="utf-8"))
+    assert [c["kind"] for c in got["causes"]] == ["coriolis_reversed"]
     # the rubric: only the linkage sheet weighs; a mark by thresholds
     xlsx2 = tmp_path / "marks2.xlsx"
     assert main(["check", str(tmp_path / "subs"), "--xlsx", str(xlsx2), "--rubric", str(rubric), "--quiet"]) == 0

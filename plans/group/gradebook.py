@@ -5,7 +5,8 @@ are passed over) is checked; the sheets of one student (the same ``student`` and
 ``group``) make one row: the mark by the teacher's rubric, each sheet's score (its mark out
 of 100), the causes found (``kind at φ°``, by sheet), the failing figures no cause
 explains and the findings left, counted by kind.  One worksheet per group, header frozen,
-the marks and scores coloured against the pass threshold.
+the marks and scores coloured against the pass threshold.  Beside it, each sheet's report
+and ``summary.csv`` in ``--out`` (default ``DIR/reports``), as ``plans check DIR`` writes.
 
 The rubric (``--rubric RUBRIC.toml``)::
 
@@ -58,6 +59,9 @@ class Sheet:
     unexplained: list[str] = field(default_factory=list)
     findings: dict[str, int] = field(default_factory=dict)
     error: str = ""
+    report: str = ""  # the report as JSON text
+    text: str = ""  # the report as the terminal shows it
+    row: dict[str, Any] = field(default_factory=dict)  # its summary.csv row
 
 
 @dataclass(frozen=True)
@@ -106,9 +110,11 @@ def _sheet_of(path: Path) -> Sheet | None:
     try:
         if kind == "linkage":
             from plans.check.checkfile import check_from_dict
-            from plans.check.report import check
+            from plans.check.report import check, summary_row, table
+            from plans.io import dumps
 
             rep = check(check_from_dict(data, str(path)))
+            sh.report, sh.text, sh.row = dumps(rep.to_json()), table(rep) + "\n", summary_row(str(path), rep)
             full = (rep.diagnosis.rubric.get("full", 100.0) if rep.diagnosis is not None else 100.0) or 100.0
             sh.score = 100.0 * (rep.mark if rep.mark is not None else full) / full
             sh.causes = [c.kind + (f" at {','.join(f'{p:g}' for p in c.positions)}°" if c.positions else "")
@@ -116,12 +122,20 @@ def _sheet_of(path: Path) -> Sheet | None:
             sh.unexplained = list(dict.fromkeys(f"{i.quantity} at {i.phi_deg:g}°" for i in rep.unexplained))
             sh.findings = dict(Counter(f.kind for f in rep.findings_left))
         else:
+            from plans.group.sheets import summary_row as sheet_row
+            from plans.group.sheets import table as sheet_table
+            from plans.io import dumps
+
             srep = check_sheet(data, str(path))
+            sh.report, sh.text, sh.row = dumps(srep.to_json()), sheet_table(srep) + "\n", sheet_row(str(path), srep)
             sh.score = 100.0 * srep.mark / (srep.full or 100.0)
             sh.causes = [c.kind for c in srep.causes]
             sh.unexplained = list(dict.fromkeys(i.quantity for i in srep.unexplained))
     except PlansError as exc:
         sh.error = one_line(exc)
+        from plans.check.report import summary_row
+
+        sh.row = summary_row(str(path), None, sh.error)
     return sh
 
 
@@ -280,6 +294,17 @@ def run_gradebook(args: Any) -> int:
     files: dict[Path, bytes | str] = {target: data}
     if args.csv and args.csv != "-":
         files[Path(args.csv)] = csv_text(kinds, groups)
+    # beside the gradebook, the examiner's outputs: a report per sheet and summary.csv
+    out = Path(args.out) if args.out else folder / "reports"
+    from plans.check.report import csv_text as summary_csv
+
+    for s in sheets:
+        stem = "_".join(Path(s.path).resolve().relative_to(folder.resolve()).with_suffix("").parts)
+        if s.report:
+            files[out / f"{stem}.json"] = s.report
+            files[out / f"{stem}.txt"] = s.text
+    files[out / "summary.csv"] = summary_csv([s.row for s in sheets])
+    out.mkdir(parents=True, exist_ok=True)
     write_all(files)
     if args.csv == "-":
         sys.stdout.write(csv_text(kinds, groups))
