@@ -122,12 +122,13 @@ def run(args: argparse.Namespace) -> int:
     out = Path(args.output)
     table = Path(args.table)
     if out.exists() and not out.is_dir():
-        raise InputError(f"{out} is a file; expected a folder for the variants", field="--output")
+        raise InputError(f"{out} is a file; expected a folder for the variants", file=str(table),
+                         field="--output")
     if out.resolve() == table.resolve().parent:
         raise InputError("the output folder is the table's: the variants would stand among the templates",
                          file=str(table), field="--output")
     if not 1 <= args.jobs <= 64:
-        raise InputError(f"expected 1 to 64 jobs, got {args.jobs}", field="--jobs")
+        raise InputError(f"expected 1 to 64 jobs, got {args.jobs}", file=str(table), field="--jobs")
     rows = read_table(table)
     roster = read_roster(args.students, {r.variant for r in rows}) if args.students else []
     work = [(r, not args.no_sheets, args.language) for r in rows]

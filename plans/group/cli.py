@@ -35,7 +35,7 @@ def _template(args: argparse.Namespace) -> int | None:
     if kind not in ("gears", "cam"):
         return None
     if args.form != "toml":
-        raise InputError(f"the CSV form is for linkage scenes; a {kind} sheet has a check file", field="--form")
+        raise InputError(f"the CSV form is for linkage scenes; a {kind} sheet has a check file", file=str(src), field="--form")
     from plans.group.sheets import blank, sheet_key
 
     target = Path(args.output) if args.output else None

@@ -278,13 +278,13 @@ def run_gradebook(args: Any) -> int:
         raise InputError("expected a folder of check files with --xlsx", file=args.path, field="--xlsx")
     target = Path(args.xlsx)
     if target.suffix.lower() != ".xlsx":
-        raise InputError(f"expected a .xlsx file, got {target.name}", field="--xlsx")
+        raise InputError(f"expected a .xlsx file, got {target.name}", file=str(folder), field="--xlsx")
     refuse_input(str(target), *(str(p) for p in folder.rglob("*.toml")))
     if not target.parent.is_dir():
-        raise InputError(f"no such folder {target.parent}", field="--xlsx")
+        raise InputError(f"no such folder {target.parent}", file=str(folder), field="--xlsx")
     jobs = getattr(args, "jobs", 1) or 1
     if not 1 <= jobs <= 64:
-        raise InputError(f"expected 1 to 64 jobs, got {jobs}", field="--jobs")
+        raise InputError(f"expected 1 to 64 jobs, got {jobs}", file=str(folder), field="--jobs")
     rubric = read_rubric(getattr(args, "rubric", None))
     sheets = check_all(folder, jobs)
     if not sheets:
