@@ -289,3 +289,35 @@ def test_the_same_table_gives_the_same_bytes_in_parallel(tmp_path: Path) -> None
     one = {p.relative_to(tmp_path / "one"): p.read_bytes() for p in (tmp_path / "one").rglob("*") if p.is_file()}
     two = {p.relative_to(tmp_path / "two"): p.read_bytes() for p in (tmp_path / "two").rglob("*") if p.is_file()}
     assert one == two and len(one) == 9
+
+
+def test_sheets_read_as_a_student_reads_them_stay_clean(group: Path) -> None:
+    """Lengths read to ±0.4 mm and written to 0.1 mm, angles within ±0.5°, x and K to three
+    decimals, ε to two: within the draftsman's tolerance and the course rule, no mistake."""
+    import random
+
+    from plans.group.samples import key_submission
+    from plans.group.sheets import check_sheet
+
+    rng = random.Random(7)
+    names = [p.name for p in sorted(group.iterdir()) if p.name[0] in "GCSE"]
+    assert len(names) >= 15
+    for v in names:
+        target = group / v / "student.toml"
+        data = key_submission(group / v, target, "A", "G", sheet="synthesis" if v[0] == "S" else None)
+        for pos in data["positions"]:
+            for q, val in pos["values"].items():
+                if q.startswith(("x_", "K")):
+                    pos["values"][q] = round(val, 3)
+                elif q.startswith("eps"):
+                    pos["values"][q] = round(val, 2)
+                elif q.startswith(("alpha", "theta", "psi", "gamma", "angle")):
+                    pos["values"][q] = round(val + rng.uniform(-0.5, 0.5), 1)
+                elif q.endswith("_amp") or q.startswith("mr_"):
+                    pos["values"][q] = float(f"{val:.3g}")
+                elif q.startswith(("F_", "M_")):  # a polygon's side at 50 mm per unit vector
+                    pos["values"][q] = round(val + rng.uniform(-0.4, 0.4) / 50, 3)
+                else:
+                    pos["values"][q] = round(val + rng.uniform(-0.4, 0.4), 1)
+        rep = check_sheet(data, str(target))
+        assert not rep.causes and not rep.unexplained and rep.mark == rep.full, (v, rep.unexplained)
