@@ -321,3 +321,19 @@ def test_sheets_read_as_a_student_reads_them_stay_clean(group: Path) -> None:
                     pos["values"][q] = round(val + rng.uniform(-0.4, 0.4), 1)
         rep = check_sheet(data, str(target))
         assert not rep.causes and not rep.unexplained and rep.mark == rep.full, (v, rep.unexplained)
+
+
+def test_a_drawing_read_at_the_wrong_scale_is_one_cause(group: Path) -> None:
+    from plans.group.samples import key_submission
+    from plans.group.sheets import check_sheet
+
+    for v in ("G02", "C03", "S02"):
+        target = group / v / "student.toml"
+        data = key_submission(group / v, target, "A", "G", sheet="synthesis" if v[0] == "S" else None)
+        for pos in data["positions"]:  # every length measured off the drawing, read at 1.1×
+            for q, val in pos["values"].items():
+                if q.startswith(("r_", "a_w", "R", "s", "l_", "H")):
+                    pos["values"][q] = val * 1.1
+        rep = check_sheet(data, str(target))
+        assert [c.kind for c in rep.causes] == ["scale"] and not rep.unexplained, v
+        assert "1.1×" in rep.causes[0].detail
