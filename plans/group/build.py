@@ -104,6 +104,9 @@ def read_table(path: str | Path) -> list[Row]:
         if not _VARIANT.match(v):
             raise InputError(f"expected a variant name (letters, digits, '-', '_', '.'), got {v!r}",
                              file=str(path), field=f"{where}.variant")
+        if v == "handouts":
+            raise InputError("'handouts' is the folder of the handouts; expected another variant name",
+                             file=str(path), field=f"{where}.variant")
         if v in seen:
             raise InputError(f"variant {v!r} is given twice", file=str(path), field=f"{where}.variant")
         seen.add(v)
