@@ -161,9 +161,11 @@ MAX_POSITIONS = 3600
 
 #: Keys of each table of a linkage scene (the readers of loads and [sheet] check their own).
 TOP_KEYS = {"format", "kind", "title", "unit", "frame", "points", "links", "joints", "driver", "branches",
-            "outputs", "scales", "fij", "loads", "sheet", "diagrams", "dynamics"}
+            "outputs", "scales", "fij", "loads", "sheet", "diagrams", "dynamics",
+            "friction"}  # [friction]: plans.scene.friction
 LINK_KEYS = {"name", "axis", "length", "points", "mass", "inertia", "centre"}
-JOINT_KEYS = {"kind", "links", "point", "guide", "slider_angle_deg"}
+JOINT_KEYS = {"kind", "links", "point", "guide", "slider_angle_deg",
+              "f", "pin_radius", "friction_circle"}  # friction: plans.scene.friction
 GUIDE_KEYS = {"link", "through", "toward", "angle_deg", "offset"}
 DRIVER_KEYS = {"link", "omega", "omega_rpm", "sense", "eps", "phi_ref_deg", "phi_deg", "positions", "phi0_deg"}
 #: ω at most 1e6 rad/s, and 0 or at least 1e-6 rad/s (a slower crank makes plan scales overflow).
