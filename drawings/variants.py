@@ -204,7 +204,7 @@ def handout_svg(st: dict[str, str], got: Any, lang: str) -> str:
     if got.kind == "linkage":
         scheme, phi, phis = _scheme(got)
         text(18, y, t["scheme"].format(phi=f"{phi:g}"), 4.0, True)
-        out.append(f'<g transform="translate(20,{y + 4:g})">{scheme}</g>')
+        out.append(f'<g transform="translate(20,{y + 8:g})">{scheme}</g>')
         y += 100
     elif got.kind in ("gears", "cam"):
         out.append(f'<g transform="translate(20,{y + 2:g})">{_sketch(got)}</g>')
@@ -256,7 +256,7 @@ def _scheme(got: Any) -> tuple[str, float, str]:
     xs = [z.real for z in pts.values()]
     ys = [z.imag for z in pts.values()]
     span = max(max(xs) - min(xs), max(ys) - min(ys) * 1.0, 1e-9)
-    k = min(170 / max(max(xs) - min(xs), 1e-9), 90 / max(max(ys) - min(ys), 1e-9), 170 / span)
+    k = min(170 / max(max(xs) - min(xs), 1e-9), 78 / max(max(ys) - min(ys), 1e-9), 170 / span)  # supports below
 
     def p(z: complex) -> tuple[float, float]:
         return (z.real - min(xs)) * k, (max(ys) - z.imag) * k
@@ -265,6 +265,21 @@ def _scheme(got: Any) -> tuple[str, float, str]:
     for a, b in segs:
         (x1, y1), (x2, y2) = p(pts[a]), p(pts[b])
         body.append(f'<line x1="{x1:.2f}" y1="{y1:.2f}" x2="{x2:.2f}" y2="{y2:.2f}" stroke="black" stroke-width="0.7"/>')
+    for j in scene.joints:  # the frame: a hatched support under a pivot, a block on a guide
+        if scene.frame not in j.links or j.point not in pts:
+            continue
+        x, y = p(pts[j.point])
+        if j.kind == "R":
+            body.append(f'<path d="M{x:.2f},{y:.2f} l-3,5 h6 z" fill="none" stroke="black" stroke-width="0.4"/>'
+                        f'<line x1="{x - 5:.2f}" y1="{y + 5:.2f}" x2="{x + 5:.2f}" y2="{y + 5:.2f}" '
+                        'stroke="black" stroke-width="0.5"/>'
+                        + "".join(f'<line x1="{x - 4 + 2 * i:.2f}" y1="{y + 5:.2f}" x2="{x - 5 + 2 * i:.2f}" '
+                                  f'y2="{y + 6.5:.2f}" stroke="black" stroke-width="0.3"/>' for i in range(5)))
+        else:
+            body.append(f'<rect x="{x - 4:.2f}" y="{y - 2.5:.2f}" width="8" height="5" fill="white" '
+                        'stroke="black" stroke-width="0.5"/>'
+                        f'<line x1="{x - 12:.2f}" y1="{y + 2.5:.2f}" x2="{x + 12:.2f}" y2="{y + 2.5:.2f}" '
+                        'stroke="black" stroke-width="0.5"/>')
     for n, z in sorted(pts.items()):
         x, y = p(z)
         body.append(f'<circle cx="{x:.2f}" cy="{y:.2f}" r="1.2" fill="white" stroke="black" stroke-width="0.4"/>')
