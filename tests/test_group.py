@@ -337,3 +337,16 @@ def test_a_drawing_read_at_the_wrong_scale_is_one_cause(group: Path) -> None:
         rep = check_sheet(data, str(target))
         assert [c.kind for c in rep.causes] == ["scale"] and not rep.unexplained, v
         assert "1.1×" in rep.causes[0].detail
+
+
+def test_a_gears_figure_that_does_not_follow_from_the_students_own_is_arithmetic(group: Path) -> None:
+    """a_w written 2 % off while the student's α_w is right: a_w ≠ a cos α / cos α_w."""
+    from plans.group.samples import key_submission
+    from plans.group.sheets import check_sheet
+
+    target = group / "G04" / "student.toml"
+    data = key_submission(group / "G04", target, "A", "G")
+    data["positions"][0]["values"]["a_w_12"] *= 1.02
+    rep = check_sheet(data, str(target))
+    assert [(c.kind, c.explains) for c in rep.causes] == [("arithmetic", ("a_w_12",))] and not rep.unexplained
+    assert rep.mark == rep.full - 3

@@ -47,7 +47,7 @@ from plans.errors import InputError
 CAM_ANGLES = tuple(float(a) for a in range(0, 360, 30))
 #: Deductions of the sheet causes (points out of ``full``), beside the examiner's RUBRIC.
 SHEET_RUBRIC = {"full": 100.0, "shift_coefficient": 10.0, "base_radius": 10.0, "scale": 10.0,
-                "unexplained": 2.0}
+                "arithmetic": 3.0, "unexplained": 2.0}
 #: Floors of the course rule where the exact value may be near zero.
 _FLOOR = {"x": 0.01, "alpha_w": 0.1, "theta": 0.5, "e": 0.5, "K": 0.01}
 
@@ -442,7 +442,43 @@ def _diagnose(kind: str, part: dict[str, Any], src: str, items: list[SheetItem],
                                  rubric.get(kind_, 10.0)))
         left = [it for it in left if it not in expl]
         models = [m for m in models if m[0] != kind_]
+    if kind == "gears" and left:  # a figure that does not follow from the student's own figures
+        own = _gears_own(part, written, items)
+        for it in list(left):
+            if it.quantity in own:
+                causes.append(SheetCause("arithmetic", (it.phi_deg,), (it.quantity,),
+                                         f"{it.quantity} = {it.student:g} does not follow from the student's own "
+                                         f"figures ({own[it.quantity]:.5g})", rubric.get("arithmetic", 3.0)))
+                left.remove(it)
     return causes, left
+
+
+def _gears_own(part: dict[str, Any], written: dict[tuple[str, float], float], items: list[SheetItem]
+               ) -> dict[str, float]:
+    """What the student's own passing figures give (external pairs of one module): r = m z/2,
+    r_b = r cos α, and from the student's α_w: a_w = a cos α / cos α_w, r_w = r cos α / cos α_w."""
+    ok = {it.quantity for it in items if it.verdict == "pass"}
+    try:
+        m = float(part["module"])
+        alpha = math.radians(float(part.get("pressure_angle_deg", 20)))
+        z = {str(g["name"]): int(g["z"]) for g in part["gears"] if not g.get("internal")}
+    except (KeyError, TypeError, ValueError):
+        return {}
+    out: dict[str, float] = {}
+    for n, zn in z.items():
+        out[f"r_{n}"] = m * zn / 2
+        out[f"r_b{n}"] = m * zn / 2 * math.cos(alpha)
+    for a_ in z:
+        for b_ in z:
+            tag = _pair(a_, b_)
+            aw = written.get((f"alpha_w_{tag}", 0.0))
+            if a_ == b_ or aw is None or f"alpha_w_{tag}" not in ok or not 0 < aw < 89:
+                continue
+            k = math.cos(alpha) / math.cos(math.radians(aw))
+            out[f"a_w_{tag}"] = m * (z[a_] + z[b_]) / 2 * k
+            out.setdefault(f"r_w{a_}", m * z[a_] / 2 * k)
+            out.setdefault(f"r_w{b_}", m * z[b_] / 2 * k)
+    return out
 
 
 def sheet_check_of(path: str | Path) -> SheetReport | None:
