@@ -350,3 +350,18 @@ def test_a_gears_figure_that_does_not_follow_from_the_students_own_is_arithmetic
     rep = check_sheet(data, str(target))
     assert [(c.kind, c.explains) for c in rep.causes] == [("arithmetic", ("a_w_12",))] and not rep.unexplained
     assert rep.mark == rep.full - 3
+
+
+def test_a_handout_speaks_one_language(group: Path) -> None:
+    from drawings.variants import handout_svg
+    from plans.group.build import build, read_table
+
+    rows = {r.variant: r for r in read_table(SAMPLE / "group.csv")}
+    student = {"name": "Иванов И. И.", "group": "МТ-31", "variant": "L01"}
+    for v in ("L01", "G01", "C01", "S01"):
+        got = build(rows[v])
+        ru, en = handout_svg({**student, "variant": v}, got, "ru"), handout_svg({**student, "variant": v}, got, "en")
+        assert "Сдать" in ru and "Hand in" not in ru and "Вариант" in ru
+        assert "Hand in" in en and "Сдать" not in en and "Исходные" not in en
+        assert ("30°, 120°" in ru) == (v[0] in "LS")  # the positions to draw, where there are any
+        assert ("<circle" in ru) == (v[0] != "S")  # a synthesis shows no scheme: the design is the task
