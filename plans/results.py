@@ -138,6 +138,10 @@ def _position(sol: Solution, k: int, forces: dict | None) -> dict[str, Any]:
         if pp.acceleration is not None:
             pos["plans"]["acceleration"] = pp.acceleration.to_json()
         pos["readings"] = [r.to_json() for r in pp.readings]
+    if scene.wants("instant_centres"):
+        from plans.kinematics.centres import centres_json
+
+        pos.update(centres_json(kin, k, sol.plans[k].readings if sol.plans else ()))
     if forces is not None:
         pos.update(forces)
     if sol.plans or sol.forces is not None:
