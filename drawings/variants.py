@@ -236,23 +236,10 @@ def _scene_phis(got: Any) -> tuple[float, ...]:
 
 def _scheme(got: Any) -> tuple[str, float, str]:
     """The mechanism at its first position as a stick drawing fitted in 170 × 90 mm."""
-    from plans.io import loads_toml
-    from plans.kinematics.exact import solve
-    from plans.scene.model import scene_from_dict
+    from plans.group.build import scheme
 
     name = got.key.get("scene", got.key["file"])
-    scene = scene_from_dict(loads_toml(got.files[name], name), name)
-    kin = solve(scene, order=0)
-    pts: dict[str, complex] = {}
-    segs: list[tuple[str, str]] = []
-    for lid, link in sorted(scene.links.items()):
-        names = list(dict.fromkeys([*link.axis, *link.points]))
-        for n in names:
-            pts.setdefault(n, complex(kin.point_on(lid, link.points[n])[0][0]))
-        if len(link.axis) == 2:
-            segs.append((link.axis[0], link.axis[1]))
-    for n, z in scene.frame_points.items():
-        pts.setdefault(n, complex(z))
+    pts, segs, frame_joints, phis_deg = scheme(got.files[name], name)
     xs = [z.real for z in pts.values()]
     ys = [z.imag for z in pts.values()]
     span = max(max(xs) - min(xs), max(ys) - min(ys) * 1.0, 1e-9)
@@ -265,11 +252,9 @@ def _scheme(got: Any) -> tuple[str, float, str]:
     for a, b in segs:
         (x1, y1), (x2, y2) = p(pts[a]), p(pts[b])
         body.append(f'<line x1="{x1:.2f}" y1="{y1:.2f}" x2="{x2:.2f}" y2="{y2:.2f}" stroke="black" stroke-width="0.7"/>')
-    for j in scene.joints:  # the frame: a hatched support under a pivot, a block on a guide
-        if scene.frame not in j.links or j.point not in pts:
-            continue
-        x, y = p(pts[j.point])
-        if j.kind == "R":
+    for kind, point in frame_joints:  # the frame: a hatched support under a pivot, a block on a guide
+        x, y = p(pts[point])
+        if kind == "R":
             body.append(f'<path d="M{x:.2f},{y:.2f} l-3,5 h6 z" fill="none" stroke="black" stroke-width="0.4"/>'
                         f'<line x1="{x - 5:.2f}" y1="{y + 5:.2f}" x2="{x + 5:.2f}" y2="{y + 5:.2f}" '
                         'stroke="black" stroke-width="0.5"/>'
@@ -284,8 +269,8 @@ def _scheme(got: Any) -> tuple[str, float, str]:
         x, y = p(z)
         body.append(f'<circle cx="{x:.2f}" cy="{y:.2f}" r="1.2" fill="white" stroke="black" stroke-width="0.4"/>')
         body.append(f'<text x="{x + 1.8:.2f}" y="{y - 1.5:.2f}" font-size="3.5">{html.escape(n)}</text>')
-    phi = float(kin.phi_deg[0])
-    phis = ", ".join(f"{float(q):g}°" for q in kin.phi_deg)
+    phi = float(phis_deg[0])
+    phis = ", ".join(f"{float(q):g}°" for q in phis_deg)
     return "".join(body), phi if math.isfinite(phi) else 0.0, phis
 
 

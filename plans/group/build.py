@@ -265,3 +265,27 @@ def linkage_key(data: dict[str, Any], path: str) -> tuple[dict[str, dict[str, fl
             if ex is not None:
                 values.setdefault(q, {})[f"{phi:g}"] = float(f"{ex.value:.9g}")
     return values, scales
+
+
+def scheme(text: str, name: str) -> tuple[dict[str, complex], list[tuple[str, str]], list[tuple[str, str]],
+                                          tuple[float, ...]]:
+    """A scene at its first position, for the handout's stick drawing: every point (m), the
+    links' axes as pairs of points, the joints with the frame (``R`` or ``P``, the point) and
+    the positions the student draws (degrees)."""
+    from plans.io import loads_toml
+    from plans.kinematics.exact import solve
+    from plans.scene.model import scene_from_dict
+
+    scene = scene_from_dict(loads_toml(text, name), name)
+    kin = solve(scene, order=0)
+    pts: dict[str, complex] = {}
+    segs: list[tuple[str, str]] = []
+    for lid, link in sorted(scene.links.items()):
+        for n in dict.fromkeys([*link.axis, *link.points]):
+            pts.setdefault(n, complex(kin.point_on(lid, link.points[n])[0][0]))
+        if len(link.axis) == 2:
+            segs.append((link.axis[0], link.axis[1]))
+    for n, z in scene.frame_points.items():
+        pts.setdefault(n, complex(z))
+    frame = [(j.kind, j.point) for j in scene.joints if scene.frame in j.links and j.point in pts]
+    return pts, segs, frame, tuple(float(q) for q in kin.phi_deg)
