@@ -1,0 +1,437 @@
+"use strict";
+// The workbench page: the scene's data as a form, every edit sent to the server (the TOML is
+// edited there, keeping comments and order), solved there, and drawn here. The page computes
+// no mechanics: every coordinate it draws comes from /api/solve.
+(function () {
+  const NS = "http://www.w3.org/2000/svg";
+  const $ = (id) => document.getElementById(id);
+  const S = {path: null, name: null, text: "", data: null, sol: null, k: 0, last: null, seq: 0, shown: 0,
+    busy: false, again: null};
+  const KIND = {absolute: "abs", relative: "rel", normal: "nrm", tangential: "tan", coriolis: "cor",
+    sliding: "sld", closing: "cls"};
+  const f3 = (x) => (Math.round(x * 1000) / 1000).toString();
+  const num = (x) => (x === undefined || x === null ? "" : Number(x.toPrecision(5)).toString());
+
+  function status(text, bad) { const s = $("status"); s.textContent = text; s.className = bad ? "bad" : ""; }
+  async function api(method, url, body, type) {
+    const opt = {method: method, headers: {}};
+    if (body !== undefined) { opt.body = body; opt.headers["Content-Type"] = type || "text/plain; charset=utf-8"; }
+    let r;
+    try { r = await fetch(url, opt); } catch (e) { return {ok: false, status: 0, data: {error: "the server does not answer"}}; }
+    const ct = r.headers.get("Content-Type") || "";
+    const data = ct.startsWith("application/json") ? await r.json() : await r.blob();
+    return {ok: r.ok, status: r.status, data: data};
+  }
+  function el(parent, tag, attrs, text) {
+    const e = document.createElementNS(NS, tag);
+    for (const k in attrs) e.setAttribute(k, attrs[k]);
+    if (text !== undefined) e.textContent = text;
+    parent.appendChild(e);
+    return e;
+  }
+  function h(parent, tag, attrs, text) {
+    const e = document.createElement(tag);
+    for (const k in attrs || {}) e.setAttribute(k, attrs[k]);
+    if (text !== undefined) e.textContent = text;
+    if (parent) parent.appendChild(e);
+    return e;
+  }
+  function clear(x) { while (x.lastChild) x.removeChild(x.lastChild); }
+
+  // ------------------------------------------------------------------ the gallery
+  async function gallery() {
+    $("gallery").hidden = false; $("editor").hidden = true;
+    $("save-box").hidden = true; $("downloads").hidden = true;
+    $("doc-title").textContent = "workbench"; $("doc-path").textContent = "";
+    const [sm, fl] = await Promise.all([api("GET", "/api/samples"), api("GET", "/api/files")]);
+    const cards = $("samples"); clear(cards);
+    for (const s of sm.ok ? sm.data : []) {
+      const c = h(cards, "div", {class: "card", "data-sample": s.name});
+      h(c, "b", {}, s.title); h(c, "small", {}, s.name + ".toml");
+      h(c, "button", {}, "Create").addEventListener("click", () => open(null, s.name + ".toml", s.text));
+    }
+    const folder = $("folder"); clear(folder);
+    if (fl.ok) {
+      $("folder-name").textContent = fl.data.folder;
+      const kinds = Object.keys(fl.data.files).sort();
+      if (!kinds.length) h(folder, "p", {}, "No TOML files yet: create one above and save it.");
+      for (const kind of kinds) {
+        h(folder, "h3", {}, kind);
+        const ul = h(folder, "ul");
+        for (const f of fl.data.files[kind]) {
+          const li = h(ul, "li");
+          const a = h(li, "a", {"data-path": f.path}, f.path);
+          a.addEventListener("click", () => openFile(f.path));
+          h(li, "span", {}, " — " + f.title);
+        }
+      }
+    }
+    document.body.dataset.ready = "gallery";
+  }
+  async function openFile(path) {
+    const r = await api("GET", "/api/file?path=" + encodeURIComponent(path));
+    if (!r.ok) { status(r.data.error, true); return; }
+    open(path, path, r.data.text, r.data.data);
+  }
+  async function open(path, name, text, data) {
+    S.path = path; S.name = name; S.text = text; S.k = 0; S.sol = null;
+    if (!data) {
+      const r = await api("POST", "/api/edit", JSON.stringify({text: text, set: []}), "application/json");
+      if (!r.ok) { status(r.data.error, true); return; }
+      data = r.data.data;
+    }
+    S.data = data;
+    $("gallery").hidden = true; $("editor").hidden = false;
+    $("save-box").hidden = false; $("downloads").hidden = false;
+    $("save-path").value = path || name;
+    $("doc-path").textContent = path || "(not saved)";
+    if (path) history.replaceState(null, "", "#file=" + encodeURIComponent(path));
+    else history.replaceState(null, "", "#");
+    form();
+    await solve();
+  }
+
+  // ------------------------------------------------------------------ the form
+  const UNITS = {mass: "kg", inertia: "kg·m²", omega_rpm: "rpm", omega: "rad/s", resisting: "N or N·m",
+    phi_ref_deg: "°", angle_deg: "°", positions: "", ratio: "", pressure: "Pa", diameter: "len"};
+  function unitOf(keys) {
+    const last = String(keys[keys.length - 1]);
+    const u = S.data.unit || "m";
+    if (keys[0] === "points" || ["length", "along", "across", "through", "offset", "diameter"].indexOf(last) >= 0) return u;
+    if (/_deg$/.test(last)) return "°";
+    if (keys[0] === "loads" && (last === "vector")) return "N";
+    return UNITS[last] !== undefined ? UNITS[last] : "";
+  }
+  const SKIP = {format: 1, kind: 1, outputs: 1, title: 1, frame: 1, unit: 1, sheet: 1, scales: 1};
+  function form() {
+    const f = $("form"); clear(f);
+    const t = S.data.title;
+    $("doc-title").textContent = typeof t === "string" ? t : (t && (t.en || t.ru)) || S.name;
+    for (const top of Object.keys(S.data)) {
+      if (SKIP[top]) continue;
+      const v = S.data[top];
+      if (top === "links" && v && typeof v === "object") {
+        for (const id of Object.keys(v)) section(f, "link " + id + (v[id].name ? " — " + v[id].name : ""), v[id], ["links", id]);
+      } else if (top === "joints" && Array.isArray(v)) {
+        v.forEach((j, i) => { if (j.guide && typeof j.guide === "object") section(f, "guide at " + j.point, j.guide, ["joints", i, "guide"]); });
+      } else if (v && typeof v === "object") {
+        section(f, top, v, [top]);
+      }
+    }
+  }
+  function section(f, title, obj, keys) {
+    const fs = h(f, "fieldset"); h(fs, "legend", {}, title);
+    walk(fs, obj, keys, "");
+    if (!fs.querySelector(".row")) f.removeChild(fs);
+  }
+  function walk(fs, obj, keys, prefix) {
+    if (Array.isArray(obj)) {
+      obj.forEach((o, i) => { if (o && typeof o === "object") walk(fs, o, keys.concat([i]), prefix + (i + 1) + "."); });
+      return;
+    }
+    for (const key of Object.keys(obj)) {
+      const v = obj[key], path = keys.concat([key]);
+      if (typeof v === "number") row(fs, prefix + key, path, [v]);
+      else if (Array.isArray(v) && v.length && v.length <= 3 && v.every((x) => typeof x === "number")) row(fs, prefix + key, path, v);
+      else if (key === "sense" && typeof v === "string") row(fs, prefix + key, path, v, ["ccw", "cw"]);
+      else if (key === "kind" && keys[0] === "loads" && typeof v === "string") continue;
+      else if (v && typeof v === "object") walk(fs, v, path, prefix + key + ".");
+    }
+  }
+  function row(fs, label, keys, values, choices) {
+    const id = keys.join(".");
+    const r = h(fs, "div", {class: "row"});
+    h(r, "label", {for: "f-" + id + (choices ? "" : "-0"), title: id}, label);
+    const box = h(r, "span", {class: "inputs"});
+    if (choices) {
+      const s = h(box, "select", {id: "f-" + id, "data-key": id});
+      for (const c of choices) { const o = h(s, "option", {value: c}, c); if (c === values) o.selected = true; }
+      s.addEventListener("change", () => edit(keys, s.value, id));
+    } else {
+      const inputs = values.map((x, i) => h(box, "input", {id: "f-" + id + "-" + i, "data-key": id, type: "text",
+        inputmode: "decimal", value: String(x)}));
+      const send = () => {
+        const vals = inputs.map((e) => Number(e.value.replace(",", ".").trim()));
+        if (inputs.some((e) => e.value.trim() === "") || vals.some((x) => !isFinite(x))) {
+          mark(id, "expected a number, got " + JSON.stringify(inputs.map((e) => e.value).join(", ")));
+          return;
+        }
+        edit(keys, values.length === 1 && !Array.isArray(valueAt(keys)) ? vals[0] : vals, id);
+      };
+      for (const e of inputs) {
+        e.addEventListener("change", send);
+        e.addEventListener("keydown", (ev) => { if (ev.key === "Enter") send(); });
+      }
+    }
+    h(r, "span", {class: "unit"}, unitOf(keys));
+    h(r, "span", {class: "err", id: "e-" + id});
+  }
+  function valueAt(keys) { let o = S.data; for (const k of keys) o = o == null ? undefined : o[k]; return o; }
+  function mark(id, message) {
+    for (const e of document.querySelectorAll(".row .err")) e.textContent = "";
+    for (const e of document.querySelectorAll(".row input.bad")) e.classList.remove("bad");
+    $("general-error").textContent = "";
+    if (!message) return;
+    let target = id ? $("e-" + id) : null;
+    if (!target) $("general-error").textContent = message;
+    else {
+      target.textContent = message;
+      for (const e of target.parentNode.querySelectorAll("input")) e.classList.add("bad");
+    }
+  }
+
+  // ------------------------------------------------------------------ edit, solve
+  async function edit(keys, value, id) {
+    S.last = id;
+    const r = await api("POST", "/api/edit", JSON.stringify({text: S.text, set: [[keys, value]]}), "application/json");
+    if (!r.ok) { mark(r.data.field || id, r.data.error); status("not changed", true); return; }
+    S.text = r.data.text; S.data = r.data.data;
+    $("doc-path").textContent = (S.path || "(not saved)") + " •";
+    await solve();
+  }
+  async function solve() {
+    const seq = ++S.seq;
+    const t0 = performance.now();
+    status("solving…");
+    const r = await api("POST", "/api/solve" + (S.path ? "?path=" + encodeURIComponent(S.path) : ""), S.text);
+    if (seq < S.shown) return;  // an older answer after a newer one: keep the newer
+    S.shown = seq;
+    if (!r.ok) {
+      // the field the engine names, else the field just edited (a construction names its group)
+      const field = r.data.field && fieldId(r.data.field);
+      mark(field || S.last, r.data.error);
+      status("error", true);
+      document.body.dataset.solved = String(seq);
+      return;
+    }
+    mark(null);
+    S.sol = r.data;
+    const n = S.sol.positions.length;
+    $("phi").max = String(Math.max(n - 1, 0));
+    if (S.k >= n) S.k = 0;
+    $("phi").value = String(S.k);
+    draw();
+    status("solved in " + Math.round(performance.now() - t0) + " ms");
+    document.body.dataset.solved = String(seq);
+  }
+  function fieldId(field) {
+    // "links.1.length" or "points.O" name a row; an array element or a sub-key names its row
+    let f = String(field).replace(/\[(\d+)\]/g, ".$1");
+    while (f) {
+      if ($("e-" + f)) return f;
+      const cut = f.lastIndexOf(".");
+      if (cut < 0) break;
+      f = f.slice(0, cut);
+    }
+    const prefix = String(field) + ".";
+    const e = Array.from(document.querySelectorAll(".row .err")).find((x) => x.id.slice(2).startsWith(prefix));
+    return e ? e.id.slice(2) : null;
+  }
+
+  // ------------------------------------------------------------------ drawing
+  function fit(svg, pts, pad) {
+    let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+    for (const [x, y] of pts) { x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, -y); y1 = Math.max(y1, -y); }
+    if (!isFinite(x0)) { x0 = -10; x1 = 10; y0 = -10; y1 = 10; }
+    const w = Math.max(x1 - x0, 20), hh = Math.max(y1 - y0, 20), p = pad * Math.max(w, hh);
+    svg.setAttribute("viewBox", [x0 - p, y0 - p, w + 2 * p, hh + 2 * p].map(f3).join(" "));
+    svg.setAttribute("preserveAspectRatio", "xMidYMid meet");
+    return Math.max(w, hh) * (1 + 2 * pad);
+  }
+  function defs(svg) {
+    const d = el(svg, "defs", {});
+    const m = el(d, "marker", {id: svg.id + "-arr", viewBox: "0 0 10 10", refX: "10", refY: "5", markerWidth: "6",
+      markerHeight: "6", orient: "auto-start-reverse", markerUnits: "strokeWidth"});
+    el(m, "path", {d: "M0,1 L10,5 L0,9 z", class: "arrow"});
+  }
+  const mm = (p) => [p[0] * 1000, p[1] * 1000];
+  function draw() {
+    const pos = S.sol.positions[S.k];
+    $("phi-out").textContent = "φ = " + num(pos.phi_deg) + "°  (" + (S.k + 1) + " of " + S.sol.positions.length + ")";
+    scheme(pos);
+    const pl = pos.plans || {};
+    plan($("vel"), pl.velocity, $("vel-scale"), "mm/(m/s)");
+    plan($("acc"), pl.acceleration, $("acc-scale"), "mm/(m/s²)");
+    table(pos);
+  }
+  function links() {
+    const out = [];
+    const L = S.data.links || {};
+    for (const id of Object.keys(L)) {
+      const axis = Array.isArray(L[id].axis) ? L[id].axis : [];
+      const extra = L[id].points && typeof L[id].points === "object" ? Object.keys(L[id].points) : [];
+      out.push({id: id, axis: axis, names: axis.concat(extra)});
+    }
+    return out;
+  }
+  function scheme(pos) {
+    const svg = $("scheme"); clear(svg);
+    const P = (nm) => (pos.points[nm] ? mm(pos.points[nm].r) : null);
+    const all = [];
+    for (const q of S.sol.positions) for (const nm in q.points) all.push(mm(q.points[nm].r));
+    const size = fit(svg, all, 0.08), u = size / 100;
+    const frame = String(S.data.frame);
+    const joints = Array.isArray(S.data.joints) ? S.data.joints : [];
+    const unit = S.data.unit === "mm" ? 1 : 1000;
+    for (const j of joints) {  // guides fixed to the frame: a long dashed line
+      const g = j.guide;
+      if (j.kind !== "P" || !g || String(g.link) !== frame) continue;
+      let o = null;
+      if (Array.isArray(g.through)) o = [g.through[0] * unit, g.through[1] * unit];
+      else if (typeof g.through === "string") o = P(g.through);
+      if (!o) continue;
+      let a = typeof g.angle_deg === "number" ? g.angle_deg * Math.PI / 180 : null;
+      if (a === null && typeof g.toward === "string" && P(g.toward)) { const t = P(g.toward); a = Math.atan2(t[1] - o[1], t[0] - o[0]); }
+      if (a === null) continue;
+      const R = size;
+      el(svg, "line", {x1: f3(o[0] - R * Math.cos(a)), y1: f3(-(o[1] - R * Math.sin(a))), x2: f3(o[0] + R * Math.cos(a)),
+        y2: f3(-(o[1] + R * Math.sin(a))), class: "guide", "stroke-width": f3(0.3 * u)});
+    }
+    for (const lk of links()) {
+      if (lk.id === frame) continue;
+      const pts = lk.names.map(P).filter((p) => p);
+      if (pts.length < 2) continue;
+      const d = pts.map((p, i) => (i ? "L" : "M") + f3(p[0]) + "," + f3(-p[1])).join(" ") + (pts.length > 2 ? " Z" : "");
+      el(svg, "path", {d: d, class: "link", "stroke-width": f3(0.7 * u), "data-link": lk.id});
+    }
+    for (const j of joints) {  // sliders: a block along its guide
+      if (j.kind !== "P" || !P(j.point)) continue;
+      const p = P(j.point), g = j.guide || {};
+      let a = 0;
+      if (String(g.link) === frame && typeof g.angle_deg === "number") a = g.angle_deg;
+      else if (g.link !== undefined && pos.links[String(g.link)]) a = pos.links[String(g.link)].theta * 180 / Math.PI;
+      el(svg, "rect", {x: f3(p[0] - 5 * u), y: f3(-p[1] - 3 * u), width: f3(10 * u), height: f3(6 * u), class: "slider",
+        "stroke-width": f3(0.5 * u), transform: "rotate(" + f3(-a) + " " + f3(p[0]) + " " + f3(-p[1]) + ")"});
+    }
+    const pivots = {};
+    for (const j of joints) {
+      if (j.kind === "R" && Array.isArray(j.links) && j.links.map(String).indexOf(frame) >= 0 && P(j.point)) {
+        const p = P(j.point); pivots[j.point] = 1;
+        el(svg, "path", {d: "M" + f3(p[0]) + "," + f3(-p[1]) + " l" + f3(-3 * u) + "," + f3(5 * u) + " h" + f3(6 * u) + " z",
+          class: "ground", "stroke-width": f3(0.4 * u)});
+      }
+    }
+    const axisNames = {};
+    for (const lk of links()) for (const nm of lk.axis) axisNames[nm] = 1;
+    for (const nm in pos.points) {
+      const p = P(nm);
+      const draggable = pivots[nm] && S.data.points && Array.isArray(S.data.points[nm]);
+      if (axisNames[nm] || draggable) {
+        const c = el(svg, "circle", {cx: f3(p[0]), cy: f3(-p[1]), r: f3((draggable ? 1.6 : 1.1) * u),
+          class: draggable ? "pivot" : "joint", "stroke-width": f3(0.35 * u), "data-point": nm});
+        if (draggable) dragPivot(svg, c, nm, unit);
+      } else {
+        el(svg, "circle", {cx: f3(p[0]), cy: f3(-p[1]), r: f3(0.6 * u), class: "dot", "data-point": nm});
+      }
+      el(svg, "text", {x: f3(p[0] + 2 * u), y: f3(-p[1] - 2 * u), "font-size": f3(3.6 * u), class: "label"}, nm);
+    }
+    $("scheme-scale").textContent = "(at scale, lengths in mm)";
+  }
+  function dragPivot(svg, c, nm, unit) {
+    c.addEventListener("pointerdown", (ev) => {
+      ev.preventDefault();
+      c.setPointerCapture(ev.pointerId);
+      c.classList.add("drag");
+      const ctm = svg.getScreenCTM().inverse();
+      const at = (e) => { const q = new DOMPoint(e.clientX, e.clientY).matrixTransform(ctm); return [q.x, -q.y]; };
+      let pending = null;
+      const send = async () => {
+        if (S.busy || !pending) return;
+        S.busy = true;
+        const v = pending; pending = null;
+        await edit(["points", nm], [Math.round(v[0]) / unit, Math.round(v[1]) / unit], "points." + nm);
+        S.busy = false;
+        if (pending) send();
+      };
+      const move = (e) => {
+        const p = at(e);
+        c.setAttribute("cx", f3(p[0])); c.setAttribute("cy", f3(-p[1]));
+        pending = p; send();
+      };
+      const up = (e) => {
+        c.removeEventListener("pointermove", move); c.removeEventListener("pointerup", up);
+        pending = at(e); send();
+      };
+      c.addEventListener("pointermove", move);
+      c.addEventListener("pointerup", up);
+    });
+  }
+  function plan(svg, p, cap, unit) {
+    clear(svg); defs(svg);
+    if (!p) { cap.textContent = "(not asked for)"; return; }
+    cap.textContent = "μ = " + num(p.scale) + " " + unit;
+    svg.dataset.scale = String(p.scale);
+    const names = Object.keys(p.points);
+    const size = fit(svg, names.map((k) => p.points[k]), 0.12), u = size / 100;
+    for (const s of p.segments || []) {
+      const a = p.points[s.from], b = p.points[s.to];
+      if (!a || !b || Math.hypot(b[0] - a[0], b[1] - a[1]) < 1e-9) continue;
+      el(svg, "line", {x1: f3(a[0]), y1: f3(-a[1]), x2: f3(b[0]), y2: f3(-b[1]), class: "seg " + (KIND[s.kind] || ""),
+        "stroke-width": f3(0.5 * u), "marker-end": "url(#" + svg.id + "-arr)", "data-label": s.label});
+    }
+    for (const nm of names) {
+      const q = p.points[nm];
+      el(svg, "circle", {cx: f3(q[0]), cy: f3(-q[1]), r: f3(0.7 * u), class: "ppt", "data-name": nm});
+      el(svg, "text", {x: f3(q[0] + 1.5 * u), y: f3(-q[1] - 1.5 * u), "font-size": f3(4 * u), class: "label"}, nm);
+    }
+  }
+  function table(pos) {
+    const tb = $("table").tBodies[0]; clear(tb);
+    for (const r of pos.readings || []) {
+      const tr = h(tb, "tr");
+      for (const x of [r.quantity, r.segment || "", num(r.length_mm), num(r.value), num(r.exact), num(r.difference), r.unit]) h(tr, "td", {}, String(x));
+    }
+    const bal = pos.balancing;
+    if (bal && typeof bal === "object") {
+      for (const k of Object.keys(bal)) {
+        const v = bal[k];
+        if (typeof v !== "number") continue;
+        const tr = h(tb, "tr");
+        for (const x of ["balancing " + k, "", "", "", num(v), "", ""]) h(tr, "td", {}, x);
+      }
+    }
+    for (const id of Object.keys(pos.links)) {
+      const lk = pos.links[id];
+      if (lk.omega === undefined) continue;
+      const tr = h(tb, "tr");
+      for (const x of ["ω" + id + ", ε" + id, "", "", "", num(lk.omega) + ", " + num(lk.eps === undefined ? NaN : lk.eps), "", "rad/s, rad/s²"]) h(tr, "td", {}, x);
+    }
+  }
+
+  // ------------------------------------------------------------------ save, downloads
+  async function save() {
+    const path = $("save-path").value.trim();
+    if (!path) { status("a file name is needed", true); return; }
+    const r = await api("PUT", "/api/file?path=" + encodeURIComponent(path), S.text);
+    if (!r.ok) { status(r.data.error, true); return; }
+    S.path = r.data.path;
+    $("doc-path").textContent = S.path;
+    history.replaceState(null, "", "#file=" + encodeURIComponent(S.path));
+    status("saved " + S.path);
+    document.body.dataset.saved = S.path;
+  }
+  function download(blob, name) {
+    const a = h(document.body, "a", {href: URL.createObjectURL(blob), download: name});
+    a.click();
+    setTimeout(() => { URL.revokeObjectURL(a.href); a.remove(); }, 1000);
+  }
+  async function sheets(fmt) {
+    status("drawing " + fmt.toUpperCase() + "…");
+    const stem = (S.path || S.name || "scene").replace(/\.toml$/, "");
+    const r = await api("POST", "/api/draw?format=" + fmt + "&path=" + encodeURIComponent(stem + ".toml"), S.text);
+    if (!r.ok) { status(r.data.error, true); return; }
+    download(r.data, stem + (r.data.type === "application/zip" ? "-" + fmt + ".zip" : "." + fmt));
+    status(fmt.toUpperCase() + " ready");
+  }
+
+  $("to-gallery").addEventListener("click", () => { history.replaceState(null, "", "#"); gallery(); });
+  $("save").addEventListener("click", save);
+  for (const b of document.querySelectorAll("#downloads button[data-format]")) b.addEventListener("click", () => sheets(b.dataset.format));
+  $("dl-json").addEventListener("click", () => {
+    if (S.sol) download(new Blob([JSON.stringify(S.sol, null, 2)], {type: "application/json"}),
+      (S.path || S.name || "scene").replace(/\.toml$/, "") + ".json");
+  });
+  $("phi").addEventListener("input", () => { S.k = Number($("phi").value); if (S.sol) draw(); });
+  const m = /^#file=(.+)$/.exec(location.hash);
+  if (m) openFile(decodeURIComponent(m[1])); else gallery();
+})();
