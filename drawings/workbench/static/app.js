@@ -158,13 +158,18 @@
         }
         edit(keys, values.length === 1 && !Array.isArray(valueAt(keys)) ? vals[0] : vals, id);
       };
-      for (const e of inputs) {
-        e.addEventListener("change", send);
-        e.addEventListener("keydown", (ev) => { if (ev.key === "Enter") send(); });
-      }
+      for (const e of inputs) e.addEventListener("change", send);  // on Enter or on leaving the field
     }
     h(r, "span", {class: "unit"}, unitOf(keys));
     h(r, "span", {class: "err", id: "e-" + id});
+  }
+  function refresh() {  // the form's values from the data (a dragged pivot), the focused field left alone
+    for (const e of document.querySelectorAll("#form input[data-key]")) {
+      if (e === document.activeElement) continue;
+      const v = valueAt(e.dataset.key.split(".")), i = Number(e.id.slice(e.id.lastIndexOf("-") + 1));
+      const x = Array.isArray(v) ? v[i] : v;
+      if (typeof x === "number" && Number(e.value) !== x) e.value = String(x);
+    }
   }
   function valueAt(keys) { let o = S.data; for (const k of keys) o = o == null ? undefined : o[k]; return o; }
   function mark(id, message) {
@@ -186,6 +191,7 @@
     const r = await api("POST", "/api/edit", JSON.stringify({text: S.text, set: [[keys, value]]}), "application/json");
     if (!r.ok) { mark(r.data.field || id, r.data.error); status("not changed", true); return; }
     S.text = r.data.text; S.data = r.data.data;
+    refresh();
     $("doc-path").textContent = (S.path || "(not saved)") + " •";
     await solve();
   }
@@ -334,7 +340,8 @@
       c.classList.add("drag");
       const ctm = svg.getScreenCTM().inverse();
       const at = (e) => { const q = new DOMPoint(e.clientX, e.clientY).matrixTransform(ctm); return [q.x, -q.y]; };
-      let pending = null;
+      let pending = null, released = false;
+      document.body.dataset.drag = "on";
       const send = async () => {
         if (S.busy || !pending) return;
         S.busy = true;
@@ -342,6 +349,7 @@
         await edit(["points", nm], [Math.round(v[0]) / unit, Math.round(v[1]) / unit], "points." + nm);
         S.busy = false;
         if (pending) send();
+        else if (released) document.body.dataset.drag = "done";
       };
       const move = (e) => {
         const p = at(e);
@@ -350,6 +358,7 @@
       };
       const up = (e) => {
         c.removeEventListener("pointermove", move); c.removeEventListener("pointerup", up);
+        released = true; c.classList.remove("drag");
         pending = at(e); send();
       };
       c.addEventListener("pointermove", move);
