@@ -71,16 +71,17 @@
   async function openFile(path) {
     const r = await api("GET", "/api/file?path=" + encodeURIComponent(path));
     if (!r.ok) { status(r.data.error, true); return; }
-    open(path, path, r.data.text, r.data.data);
+    open(path, path, r.data.text, r.data.data, r.data.kind);
   }
-  async function open(path, name, text, data) {
+  async function open(path, name, text, data, kind) {
     S.path = path; S.name = name; S.text = text; S.k = 0; S.sol = null;
     if (!data) {
       const r = await api("POST", "/api/edit", JSON.stringify({text: text, set: []}), "application/json");
       if (!r.ok) { status(r.data.error, true); return; }
-      data = r.data.data;
+      data = r.data.data; kind = r.data.kind;
     }
-    S.data = data;
+    S.data = data; S.kind = kind || "linkage";
+    $("checkview").hidden = S.kind !== "check"; $("stage").hidden = S.kind === "check";
     $("gallery").hidden = true; $("editor").hidden = false;
     $("save-box").hidden = false; $("downloads").hidden = false;
     $("save-path").value = path || name;
@@ -96,13 +97,16 @@
     phi_ref_deg: "°", angle_deg: "°", positions: "", ratio: "", pressure: "Pa", diameter: "len"};
   function unitOf(keys) {
     const last = String(keys[keys.length - 1]);
+    if (S.kind === "check" && keys.indexOf("measured") >= 0) return "mm";
+    if (S.kind === "check" && keys.indexOf("values") >= 0) return "SI";
     const u = S.data.unit || "m";
     if (keys[0] === "points" || ["length", "along", "across", "through", "offset", "diameter"].indexOf(last) >= 0) return u;
     if (/_deg$/.test(last)) return "°";
     if (keys[0] === "loads" && (last === "vector")) return "N";
     return UNITS[last] !== undefined ? UNITS[last] : "";
   }
-  const SKIP = {format: 1, kind: 1, outputs: 1, title: 1, frame: 1, unit: 1, sheet: 1, scales: 1};
+  const SKIP = {format: 1, kind: 1, outputs: 1, title: 1, frame: 1, unit: 1, sheet: 1};
+  const IDS = {link: 1, links: 1, format: 1};  // link numbers name the structure: not a form's figure
   function form() {
     const f = $("form"); clear(f);
     const t = S.data.title;
@@ -126,11 +130,19 @@
   }
   function walk(fs, obj, keys, prefix) {
     if (Array.isArray(obj)) {
-      obj.forEach((o, i) => { if (o && typeof o === "object") walk(fs, o, keys.concat([i]), prefix + (i + 1) + "."); });
+      obj.forEach((o, i) => {
+        if (!o || typeof o !== "object") return;
+        if (keys.length === 1) {  // a table per position: its own box, named by its angle
+          const sub = h(fs, "fieldset");
+          h(sub, "legend", {}, typeof o.phi_deg === "number" ? "φ = " + o.phi_deg + "°" : "#" + (i + 1));
+          walk(sub, o, keys.concat([i]), "");
+        } else walk(fs, o, keys.concat([i]), prefix + (i + 1) + ".");
+      });
       return;
     }
     for (const key of Object.keys(obj)) {
       const v = obj[key], path = keys.concat([key]);
+      if (IDS[key]) continue;
       if (typeof v === "number") row(fs, prefix + key, path, [v]);
       else if (Array.isArray(v) && v.length && v.length <= 3 && v.every((x) => typeof x === "number")) row(fs, prefix + key, path, v);
       else if (key === "sense" && typeof v === "string") row(fs, prefix + key, path, v, ["ccw", "cw"]);
@@ -141,7 +153,9 @@
   function row(fs, label, keys, values, choices) {
     const id = keys.join(".");
     const r = h(fs, "div", {class: "row"});
-    h(r, "label", {for: "f-" + id + (choices ? "" : "-0"), title: id}, label);
+    // a student's figure reads as its quantity ("v_A", "a_A.2"), its unit beside it
+    const short = label.replace(/^(measured|values|written)\./, "").replace(/\.(mm|value)$/, "");
+    h(r, "label", {for: "f-" + id + (choices ? "" : "-0"), title: id}, short);
     const box = h(r, "span", {class: "inputs"});
     if (choices) {
       const s = h(box, "select", {id: "f-" + id, "data-key": id});
@@ -196,6 +210,7 @@
     await solve();
   }
   async function solve() {
+    if (S.kind === "check") return checkRun();
     const seq = ++S.seq;
     const t0 = performance.now();
     status("solving…");
@@ -229,9 +244,48 @@
       if (cut < 0) break;
       f = f.slice(0, cut);
     }
-    const prefix = String(field) + ".";
+    const prefix = String(field).replace(/\[(\d+)\]/g, ".$1") + ".";
     const e = Array.from(document.querySelectorAll(".row .err")).find((x) => x.id.slice(2).startsWith(prefix));
     return e ? e.id.slice(2) : null;
+  }
+
+  // ------------------------------------------------------------------ the check mode
+  async function checkRun() {
+    const seq = ++S.seq;
+    status("checking…");
+    const r = await api("POST", "/api/check" + (S.path ? "?path=" + encodeURIComponent(S.path) : ""), S.text);
+    if (seq < S.shown) return;
+    S.shown = seq;
+    for (const e of document.querySelectorAll(".row.pass, .row.fail")) e.classList.remove("pass", "fail");
+    const tb = $("check-table").tBodies[0];
+    if (!r.ok) {
+      mark((r.data.field && fieldId(r.data.field)) || S.last, r.data.error);
+      $("check-error").textContent = r.data.error;
+      status("error", true);
+      document.body.dataset.solved = String(seq);
+      return;
+    }
+    mark(null); $("check-error").textContent = "";
+    S.sol = r.data;
+    const R = r.data, sm = R.summary || {};
+    $("check-summary").textContent = (R.student ? R.student + ": " : "") + sm.passed + " of " + sm.items +
+      " figures within tolerance, " + sm.failed + " off" + (R.mark !== null && R.mark !== undefined ? "; mark " + num(R.mark) : "");
+    const ul = $("check-causes"); clear(ul);
+    for (const c of R.causes || []) h(ul, "li", {}, c.kind.replace(/_/g, " ") + ": " + c.detail);
+    clear(tb);
+    for (const it of R.items || []) {
+      const tr = h(tb, "tr", {class: it.verdict, "data-field": it.field || ""});
+      for (const x of [num(it.phi_deg), it.quantity, it.where || "", num(it.student), num(it.exact), num(it.error_pct),
+        num(it.tolerance_pct), it.verdict === "pass" ? "✓ within" : "✗ off"]) h(tr, "td", {}, String(x));
+      const id = it.field && fieldId(it.field);
+      const row = id && $("e-" + id) && $("e-" + id).parentNode;
+      if (row) {
+        if (!row.classList.contains("fail")) row.classList.add(it.verdict === "pass" ? "pass" : "fail");
+        if (it.verdict !== "pass") { row.classList.remove("pass"); row.title = it.quantity + ": exact " + num(it.exact) + " " + it.unit; }
+      }
+    }
+    status("checked");
+    document.body.dataset.solved = String(seq);
   }
 
   // ------------------------------------------------------------------ drawing
@@ -440,7 +494,7 @@
     if (S.sol) download(new Blob([JSON.stringify(S.sol, null, 2)], {type: "application/json"}),
       (S.path || S.name || "scene").replace(/\.toml$/, "") + ".json");
   });
-  $("phi").addEventListener("input", () => { S.k = Number($("phi").value); if (S.sol) draw(); });
+  $("phi").addEventListener("input", () => { S.k = Number($("phi").value); if (S.sol && S.kind !== "check") draw(); });
   const m = /^#file=(.+)$/.exec(location.hash);
   if (m) openFile(decodeURIComponent(m[1])); else gallery();
 })();
