@@ -148,13 +148,6 @@ def test_edit_keeps_comments_and_order(server):
     assert new == text.replace("length = 80\n", "length = 100\n", 1).replace("D = [300, 0]", "D = [310, 5]")
 
 
-def test_draw_answers_the_sheets(server):
-    _, url = server
-    text = (SAMPLES / "slider_crank.toml").read_bytes()
-    status, ctype, body = _req(url + "/api/draw?format=svg&path=slider_crank.toml", "POST", text)
-    assert status == 200 and ctype in ("image/svg+xml", "application/zip") and len(body) > 1000
-
-
 # ------------------------------------------------------------------ the page in Chromium
 @pytest.fixture(scope="module")
 def browser():
@@ -260,3 +253,67 @@ def test_page_builds_edits_saves_and_reloads_a_four_bar(browser, server):
     assert all(r.startswith(url) for r in requests), "the page reached outside its server"
     assert errors == []
     pg.close()
+
+
+def test_check_answers_plans_check_and_keeps_to_the_folder(server):
+    root, url = server
+    text = (SAMPLES / "checks" / "v_engine_coursework.toml").read_text(encoding="utf-8")
+    status, _, body = _req(url + "/api/check?path=coursework.toml", "POST", text.encode())
+    assert status == 403 and json.loads(body)["field"] == "scene"  # ../v_engine.toml is outside
+    status, _, body = _req(url + "/api/check?path=sub/coursework.toml", "POST",
+                           text.replace('"../v_engine.toml"', '"../../v_engine.toml"').encode())
+    assert status == 403
+    shutil.copy(SAMPLES / "v_engine.toml", root / "v_engine.toml")
+    (root / "checks").mkdir(exist_ok=True)
+    (root / "checks" / "coursework.toml").write_text(text, encoding="utf-8")
+    status, _, body = _req(url + "/api/check?path=checks/coursework.toml", "POST", text.encode())
+    from plans.check.report import check_file
+
+    assert status == 200
+    assert json.loads(body) == json.loads(json.dumps(check_file(root / "checks" / "coursework.toml").to_json()))
+
+
+def test_page_check_mode_marks_a_wrong_row_and_downloads_open(browser, server):
+    root, url = server
+    (root / "checks").mkdir(exist_ok=True)
+    shutil.copy(SAMPLES / "v_engine.toml", root / "v_engine.toml")
+    text = (SAMPLES / "checks" / "v_engine_coursework.toml").read_text(encoding="utf-8")
+    (root / "checks" / "coursework.toml").write_text(text, encoding="utf-8")
+    from plans.check.report import check_file
+
+    exact = check_file(root / "checks" / "coursework.toml")
+    item = exact.item("v_S2A", 45.0)
+    assert item.verdict == "pass" and item.field == "positions[0].measured.v_S2A"
+    pg = browser.new_page(viewport={"width": 1366, "height": 768})
+    errors: list[str] = []
+    pg.on("pageerror", lambda e: errors.append(str(e)))
+    pg.goto(url + "/")
+    pg.wait_for_selector("body[data-ready='gallery']")
+    pg.click("a[data-path='checks/coursework.toml']")
+    seq = _solved(pg, None)
+    row = pg.locator("tr[data-field='positions[0].measured.v_S2A']")
+    assert row.get_attribute("class") == "pass"
+    # ab·AS2/AB measured 19.8 mm: 40 mm is far off the exact segment
+    field = pg.locator("#f-positions\\.0\\.measured\\.v_S2A\\.mm-0")
+    assert field.input_value() == "19.8"
+    field.fill("40")
+    field.press("Enter")
+    _solved(pg, seq)
+    assert row.get_attribute("class") == "fail"
+    assert "fail" in pg.locator("#e-positions\\.0\\.measured\\.v_S2A\\.mm").locator("..").get_attribute("class")
+    with pg.expect_download() as dl:
+        pg.click("#dl-json")
+    report = json.loads(Path(dl.value.path()).read_text(encoding="utf-8"))
+    assert report["summary"]["failed"] == exact.failed + 1
+    pg.close()
+
+    # the sheets of a scene download as the draw command writes them
+    pg = browser.new_page(viewport={"width": 1366, "height": 768})
+    pg.goto(url + "/#file=slider_crank.toml")
+    _solved(pg, None)
+    with pg.expect_download(timeout=30000) as dl:
+        pg.click("#downloads button[data-format='svg']")
+    data = Path(dl.value.path()).read_bytes()
+    assert data.startswith(b"PK") or b"<svg" in data[:2000]
+    pg.close()
+    assert errors == []
