@@ -73,7 +73,12 @@ def test_solve_answers_the_json_of_plans_solve(server):
     text = (SAMPLES / "four_bar.toml").read_text(encoding="utf-8")
     status, ctype, body = _req(url + "/api/solve", "POST", text.encode())
     assert status == 200 and ctype.startswith("application/json")
-    assert json.loads(body) == json.loads(json.dumps(to_json(solve_scene(parse_scene(text)))))
+    full = json.loads(json.dumps(to_json(solve_scene(parse_scene(text)))))
+    assert json.loads(body) == full
+    status, _, body = _req(url + "/api/solve?steps=0", "POST", text.encode())  # the page's: no protocol text
+    for pos in full["positions"]:
+        del pos["steps"]
+    assert status == 200 and json.loads(body) == full
 
 
 def test_solve_errors_are_the_engines_line_and_the_field_it_names(server):

@@ -16,6 +16,8 @@ folder (resolved, symlinks followed), bodies and files are bounded, and every fa
 from __future__ import annotations
 
 import json
+import threading
+import time
 import tomllib
 from importlib import resources
 from pathlib import Path
@@ -206,11 +208,15 @@ class Workbench:
                 raise TypeError
         except (ValueError, KeyError, TypeError):
             raise Refused(400, 'expected {"text": TOML text, "set": [[key path, value], ...]}') from None
-        return JSONResponse(await run_in_threadpool(_edit, text, sets))
+        t0 = time.perf_counter()
+        return JSONResponse(await run_in_threadpool(_edit, text, sets), headers=_timing(t0))
 
     async def solve(self, request: Request) -> Response:
         text, name = await self.text(request), self.source_name(request)
-        return Response(await run_in_threadpool(_solve, text, name), media_type="application/json")
+        steps = request.query_params.get("steps", "1") != "0"
+        t0 = time.perf_counter()
+        data = await run_in_threadpool(_solve, text, name, steps)
+        return Response(data, media_type="application/json", headers=_timing(t0))
 
     async def check(self, request: Request) -> Response:
         text = await self.text(request)
@@ -304,15 +310,24 @@ def _samples() -> list[dict[str, Any]]:
     return out
 
 
+#: tomlkit documents by the text they print: the next edit of a page starts from the text the
+#: last one answered, and parsing it again would be most of the edit's time.
+_DOCS: dict[str, Any] = {}
+_DOCS_LOCK = threading.Lock()
+
+
 def _edit(text: str, sets: list) -> dict[str, Any]:
     """Set each ``[key path, value]`` in the TOML text with tomlkit: the comments, the order
     and the layout of everything else stay as they were."""
     import tomlkit
 
-    try:
-        doc = tomlkit.parse(text)
-    except Exception as exc:  # tomlkit's parse errors have no common public base
-        raise Refused(422, f"not TOML: {' '.join(str(exc).split())}") from None
+    with _DOCS_LOCK:
+        doc = _DOCS.pop(text, None)  # the text the last edit answered: its document, parsed
+    if doc is None:
+        try:
+            doc = tomlkit.parse(text)
+        except Exception as exc:  # tomlkit's parse errors have no common public base
+            raise Refused(422, f"not TOML: {' '.join(str(exc).split())}") from None
     for item in sets:
         if not (isinstance(item, list) and len(item) == 2 and isinstance(item[0], list) and item[0]):
             raise Refused(400, "each edit is [key path, value]")
@@ -342,15 +357,25 @@ def _edit(text: str, sets: list) -> dict[str, Any]:
         except (IndexError, ValueError, TypeError):
             raise Refused(422, f"{'.'.join(map(str, keys))}: no such key in the file") from None
     new = tomlkit.dumps(doc)
+    with _DOCS_LOCK:
+        _DOCS[new] = doc
+        while len(_DOCS) > 16:  # a few tabs' documents; the oldest goes first
+            _DOCS.pop(next(iter(_DOCS)))
     return _parsed(new, "<scene>")
 
 
-def _solve(text: str, name: str) -> bytes:
+def _timing(t0: float) -> dict[str, str]:
+    """The server's share of the answer (the browser's devtools and the bench read it)."""
+    return {"Server-Timing": f"app;dur={(time.perf_counter() - t0) * 1000:.2f}"}
+
+
+def _solve(text: str, name: str, steps: bool = True) -> bytes:
     from plans.results import solve_scene, to_json
     from plans.scene.model import parse_scene
 
     sol = solve_scene(parse_scene(text, name))
-    return json.dumps(to_json(sol), ensure_ascii=False, allow_nan=False, separators=(",", ":")).encode("utf-8")
+    return json.dumps(to_json(sol, steps), ensure_ascii=False, allow_nan=False,
+                      separators=(",", ":")).encode("utf-8")
 
 
 def _draw(text: str, stem: str, fmt: str) -> tuple[bytes, str]:
@@ -437,6 +462,7 @@ def bind(host: str, port: int) -> Any:
     except OSError as exc:
         sock.close()
         raise InputError(f"cannot listen on {host}:{port}: {exc.strerror}", field="--port") from None
+    sock.listen(128)  # a browser's first request waits in the queue while the server starts
     return sock
 
 

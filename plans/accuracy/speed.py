@@ -426,6 +426,10 @@ def measure(samples: Path, log: Callable[[str], None] | None = None, with_peers:
     goals += examiner_goals(samples, quick)
     log("goals: explanatory note ...")
     goals += note_goals(samples, 1 if quick else 3)
+    log("goals: the workbench ...")
+    from plans.accuracy.workbench_bench import workbench_goals
+
+    goals += workbench_goals(samples)
     return {"goals": [asdict(g) for g in goals],
             "peers": [{k: v for k, v in asdict(r).items() if k != "runner"} for r in runs]}
 

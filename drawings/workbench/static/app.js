@@ -214,7 +214,8 @@
     const seq = ++S.seq;
     const t0 = performance.now();
     status("solving…");
-    const r = await api("POST", "/api/solve" + (S.path ? "?path=" + encodeURIComponent(S.path) : ""), S.text);
+    // steps=0: the construction protocol's text is left out (the page draws, it reads no protocol)
+    const r = await api("POST", "/api/solve?steps=0" + (S.path ? "&path=" + encodeURIComponent(S.path) : ""), S.text);
     if (seq < S.shown) return;  // an older answer after a newer one: keep the newer
     S.shown = seq;
     if (!r.ok) {
