@@ -322,3 +322,20 @@ def test_page_check_mode_marks_a_wrong_row_and_downloads_open(browser, server):
     assert data.startswith(b"PK") or b"<svg" in data[:2000]
     pg.close()
     assert errors == []
+
+
+def test_serve_is_listed_without_loading_the_server_and_bad_arguments_are_one_line(tmp_path):
+    import subprocess
+    import sys
+
+    code = ("import sys; from drawings.cli import build_parser; build_parser(['draw', 'x.toml']); "
+            "build_parser(None); "
+            "assert not [m for m in sys.modules if m.split('.')[0] in ('starlette', 'uvicorn', 'tomlkit')], "
+            "sorted(m for m in sys.modules if m.split('.')[0] in ('starlette', 'uvicorn', 'tomlkit'))")
+    root = Path(__file__).resolve().parents[1]
+    p = subprocess.run([sys.executable, "-c", code], cwd=root, capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    for argv in (["serve", str(tmp_path / "absent")], ["serve", str(tmp_path), "--port", "70000"]):
+        p = subprocess.run([sys.executable, "-c", "from drawings.cli import main; raise SystemExit(main())", *argv],
+                           cwd=root, capture_output=True, text=True, timeout=30)
+        assert p.returncode == 2 and len(p.stderr.strip().splitlines()) == 1 and "Traceback" not in p.stderr

@@ -384,14 +384,13 @@
       } else {
         el(svg, "circle", {cx: f3(p[0]), cy: f3(-p[1]), r: f3(0.6 * u), class: "dot", "data-point": nm});
       }
-      el(svg, "text", {x: f3(p[0] + 2 * u), y: f3(-p[1] - 2 * u), "font-size": f3(3.6 * u), class: "label"}, nm);
+      el(svg, "text", {x: f3(p[0] + 2 * u), y: f3(-p[1] - 2 * u), "font-size": f3(3.2 * u), class: "label"}, nm);
     }
     $("scheme-scale").textContent = "(at scale, lengths in mm)";
   }
   function dragPivot(svg, c, nm, unit) {
     c.addEventListener("pointerdown", (ev) => {
       ev.preventDefault();
-      c.setPointerCapture(ev.pointerId);
       c.classList.add("drag");
       const ctm = svg.getScreenCTM().inverse();
       const at = (e) => { const q = new DOMPoint(e.clientX, e.clientY).matrixTransform(ctm); return [q.x, -q.y]; };
@@ -411,13 +410,14 @@
         c.setAttribute("cx", f3(p[0])); c.setAttribute("cy", f3(-p[1]));
         pending = p; send();
       };
+      // on the window: the scheme is drawn again after each solve and this circle goes with it
       const up = (e) => {
-        c.removeEventListener("pointermove", move); c.removeEventListener("pointerup", up);
+        window.removeEventListener("pointermove", move); window.removeEventListener("pointerup", up);
         released = true; c.classList.remove("drag");
         pending = at(e); send();
       };
-      c.addEventListener("pointermove", move);
-      c.addEventListener("pointerup", up);
+      window.addEventListener("pointermove", move);
+      window.addEventListener("pointerup", up);
     });
   }
   function plan(svg, p, cap, unit) {
@@ -433,10 +433,17 @@
       el(svg, "line", {x1: f3(a[0]), y1: f3(-a[1]), x2: f3(b[0]), y2: f3(-b[1]), class: "seg " + (KIND[s.kind] || ""),
         "stroke-width": f3(0.5 * u), "marker-end": "url(#" + svg.id + "-arr)", "data-label": s.label});
     }
+    // points on one spot (b on the pole at a dead centre) get one label "p_v, b, s4"
+    const spots = [];
     for (const nm of names) {
       const q = p.points[nm];
       el(svg, "circle", {cx: f3(q[0]), cy: f3(-q[1]), r: f3(0.7 * u), class: "ppt", "data-name": nm});
-      el(svg, "text", {x: f3(q[0] + 1.5 * u), y: f3(-q[1] - 1.5 * u), "font-size": f3(4 * u), class: "label"}, nm);
+      const g = spots.find((x) => Math.hypot(x.q[0] - q[0], x.q[1] - q[1]) <= 0.8 * u);
+      if (g) g.names.push(nm); else spots.push({q: q, names: [nm]});
+    }
+    for (const g of spots) {
+      el(svg, "text", {x: f3(g.q[0] + 1.5 * u), y: f3(-g.q[1] - 1.5 * u), "font-size": f3(4.5 * u), class: "label"},
+        g.names.join(", "));
     }
   }
   function table(pos) {
