@@ -143,6 +143,18 @@ def test_bad_requests_are_4xx_with_one_line(server):
     assert (root / "slider_crank.toml").read_bytes() == (SAMPLES / "slider_crank.toml").read_bytes()
 
 
+def test_two_tabs_solve_at_once(server):
+    from concurrent.futures import ThreadPoolExecutor
+
+    _, url = server
+    texts = [(SAMPLES / n).read_text(encoding="utf-8") for n in ("four_bar.toml", "shaper.toml")] * 2
+    with ThreadPoolExecutor(4) as ex:
+        answers = list(ex.map(lambda t: _req(url + "/api/solve?steps=0", "POST", t.encode()), texts))
+    assert [a[0] for a in answers] == [200] * 4
+    assert [json.loads(a[2])["title"] for a in answers] == [
+        json.loads(json.dumps(to_json(solve_scene(parse_scene(t)))))["title"] for t in texts]
+
+
 def test_edit_keeps_comments_and_order(server):
     _, url = server
     text = (SAMPLES / "four_bar.toml").read_text(encoding="utf-8")
@@ -320,6 +332,10 @@ def test_page_check_mode_marks_a_wrong_row_and_downloads_open(browser, server):
         pg.click("#downloads button[data-format='svg']")
     data = Path(dl.value.path()).read_bytes()
     assert data.startswith(b"PK") or b"<svg" in data[:2000]
+    with pg.expect_download(timeout=30000) as dl:
+        pg.click("#dl-demo")
+    page = Path(dl.value.path()).read_text(encoding="utf-8")
+    assert page.startswith("<!DOCTYPE html>") and 'id="lesson"' in page
     pg.close()
     assert errors == []
 

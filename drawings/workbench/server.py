@@ -4,7 +4,8 @@
 ``{"error": the engine's one-line message, "field": the key it names}``; ``GET /api/files``
 lists the folder's files by kind; ``GET``/``PUT /api/file?path=`` read and write one;
 ``POST /api/check`` answers the JSON of ``plans check --json``; ``POST /api/draw?format=``
-answers the sheets (one file, or a zip of several); ``POST /api/edit`` sets values in a TOML
+answers the sheets (one file, or a zip of several); ``POST /api/demo`` the demonstration
+page (``plans demo``); ``POST /api/edit`` sets values in a TOML
 text keeping its comments and order (the form's edits); ``GET /api/samples`` is the gallery.
 
 Safe as a local server: only the Host names it listens as are answered (DNS rebinding), a
@@ -239,6 +240,14 @@ class Workbench:
         report = check(check_from_dict(data, str(where)))
         return json.dumps(report.to_json(), ensure_ascii=False, allow_nan=False).encode("utf-8")
 
+    async def demo(self, request: Request) -> Response:
+        text = await self.text(request)
+        name = self.source_name(request)
+        stem = Path(name).stem.strip("<>") or "scene"
+        page = await run_in_threadpool(_demo, text, name)
+        return Response(page, media_type="text/html; charset=utf-8",
+                        headers={"Content-Disposition": f'attachment; filename="{stem}.html"'})
+
     async def draw(self, request: Request) -> Response:
         fmt = request.query_params.get("format", "svg").lower()
         from drawings.export import FORMATS
@@ -378,6 +387,13 @@ def _solve(text: str, name: str, steps: bool = True) -> bytes:
                       separators=(",", ":")).encode("utf-8")
 
 
+def _demo(text: str, name: str) -> bytes:
+    from drawings.demo import page
+    from plans.scene.model import parse_scene
+
+    return page(parse_scene(text, name)).encode("utf-8")
+
+
 def _draw(text: str, stem: str, fmt: str) -> tuple[bytes, str]:
     import importlib
     import tempfile
@@ -446,6 +462,7 @@ def make_app(root: str | Path, hosts: set[str]) -> Any:
         Route("/api/solve", _handler(wb.solve), methods=["POST"]),
         Route("/api/check", _handler(wb.check), methods=["POST"]),
         Route("/api/draw", _handler(wb.draw), methods=["POST"]),
+        Route("/api/demo", _handler(wb.demo), methods=["POST"]),
     ]
     app = Starlette(routes=routes)
     return Guard(app, hosts)

@@ -84,6 +84,7 @@
     $("checkview").hidden = S.kind !== "check"; $("stage").hidden = S.kind === "check";
     $("gallery").hidden = true; $("editor").hidden = false;
     $("save-box").hidden = false; $("downloads").hidden = false;
+    $("dl-demo").hidden = S.kind === "check";
     $("save-path").value = path || name;
     $("doc-path").textContent = path || "(not saved)";
     if (path) history.replaceState(null, "", "#file=" + encodeURIComponent(path));
@@ -501,6 +502,14 @@
   $("dl-json").addEventListener("click", () => {
     if (S.sol) download(new Blob([JSON.stringify(S.sol, null, 2)], {type: "application/json"}),
       (S.path || S.name || "scene").replace(/\.toml$/, "") + ".json");
+  });
+  $("dl-demo").addEventListener("click", async () => {
+    status("building the page…");
+    const stem = (S.path || S.name || "scene").replace(/\.toml$/, "");
+    const r = await api("POST", "/api/demo?path=" + encodeURIComponent(stem + ".toml"), S.text);
+    if (!r.ok) { status(r.data.error, true); return; }
+    download(r.data, stem + ".html");
+    status("page ready");
   });
   $("phi").addEventListener("input", () => { S.k = Number($("phi").value); if (S.sol && S.kind !== "check") draw(); });
   const m = /^#file=(.+)$/.exec(location.hash);
