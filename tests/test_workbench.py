@@ -257,6 +257,15 @@ def test_page_builds_edits_saves_and_reloads_a_four_bar(browser, server):
     dx = float(pg.input_value("#f-points\\.D-0"))
     assert 300 < dx < 360
 
+    # the force polygons of the current position: the coupler's weight m2·g straight down at μF
+    pg.click("#show-forces")
+    pg.wait_for_selector("#force-panels figure[data-panel='group-2-3'] line")
+    mu_f = float(pg.get_attribute("#force-group-2-3", "data-scale"))
+    x1, y1, x2, y2 = pg.eval_on_selector(
+        "#force-group-2-3 line[data-label='G2']", "l => ['x1', 'y1', 'x2', 'y2'].map(a => Number(l.getAttribute(a)))")
+    assert abs(x2 - x1) < 0.01 and abs((y2 - y1) - 2.6 * 9.81 * mu_f) < 0.01  # SVG's y points down
+    pg.click("#show-plans")
+
     # save, reload, the same scene (and the sample's comments kept)
     pg.fill("#save-path", "mine.toml")
     pg.click("#save")

@@ -5,7 +5,8 @@
 lists the folder's files by kind; ``GET``/``PUT /api/file?path=`` read and write one;
 ``POST /api/check`` answers the JSON of ``plans check --json``; ``POST /api/draw?format=``
 answers the sheets (one file, or a zip of several); ``POST /api/demo`` the demonstration
-page (``plans demo``); ``POST /api/edit`` sets values in a TOML
+page (``plans demo``); ``POST /api/forces`` the force polygons and the lever over the turn;
+``POST /api/edit`` sets values in a TOML
 text keeping its comments and order (the form's edits); ``GET /api/samples`` is the gallery.
 
 Safe as a local server: only the Host names it listens as are answered (DNS rebinding), a
@@ -240,6 +241,10 @@ class Workbench:
         report = check(check_from_dict(data, str(where)))
         return json.dumps(report.to_json(), ensure_ascii=False, allow_nan=False).encode("utf-8")
 
+    async def forces(self, request: Request) -> Response:
+        text, name = await self.text(request), self.source_name(request)
+        return Response(await run_in_threadpool(_forces, text, name), media_type="application/json")
+
     async def demo(self, request: Request) -> Response:
         text = await self.text(request)
         name = self.source_name(request)
@@ -387,6 +392,19 @@ def _solve(text: str, name: str, steps: bool = True) -> bytes:
                       separators=(",", ":")).encode("utf-8")
 
 
+def _forces(text: str, name: str) -> bytes:
+    """The force polygons of every group and the crank, and the lever, at every position of
+    the scene (the demonstration page's drawings: one scale over the turn), or [] when the
+    scene asks for no force analysis."""
+    from plans.demo.cycle_forces import cycle_forces
+    from plans.results import solve_scene
+    from plans.scene.model import parse_scene
+
+    sol = solve_scene(parse_scene(text, name))
+    panels = [] if sol.forces is None else cycle_forces(*sol.forces)
+    return json.dumps(panels, ensure_ascii=False, allow_nan=False, separators=(",", ":")).encode("utf-8")
+
+
 def _demo(text: str, name: str) -> bytes:
     from drawings.demo import page
     from plans.scene.model import parse_scene
@@ -463,6 +481,7 @@ def make_app(root: str | Path, hosts: set[str]) -> Any:
         Route("/api/check", _handler(wb.check), methods=["POST"]),
         Route("/api/draw", _handler(wb.draw), methods=["POST"]),
         Route("/api/demo", _handler(wb.demo), methods=["POST"]),
+        Route("/api/forces", _handler(wb.forces), methods=["POST"]),
     ]
     app = Starlette(routes=routes)
     return Guard(app, hosts)

@@ -74,7 +74,7 @@
     open(path, path, r.data.text, r.data.data, r.data.kind);
   }
   async function open(path, name, text, data, kind) {
-    S.path = path; S.name = name; S.text = text; S.k = 0; S.sol = null;
+    S.path = path; S.name = name; S.text = text; S.k = 0; S.sol = null; S.forces = null;
     if (!data) {
       const r = await api("POST", "/api/edit", JSON.stringify({text: text, set: []}), "application/json");
       if (!r.ok) { status(r.data.error, true); return; }
@@ -235,6 +235,7 @@
     $("phi").value = String(S.k);
     draw();
     status("solved in " + Math.round(performance.now() - t0) + " ms");
+    if (S.showForces) loadForces();
     document.body.dataset.solved = String(seq);
   }
   function fieldId(field) {
@@ -315,6 +316,7 @@
     plan($("vel"), pl.velocity, $("vel-scale"), "mm/(m/s)");
     plan($("acc"), pl.acceleration, $("acc-scale"), "mm/(m/s²)");
     table(pos);
+    if (S.showForces && S.forces) drawForces();
   }
   function links() {
     const out = [];
@@ -447,6 +449,50 @@
         g.names.join(", "));
     }
   }
+  // ------------------------------------------------------------------ forces (on demand)
+  async function loadForces() {
+    if (!S.showForces || S.kind === "check" || !S.sol) return;
+    const text = S.text;
+    const r = await api("POST", "/api/forces" + (S.path ? "?path=" + encodeURIComponent(S.path) : ""), text);
+    if (text !== S.text) return;  // edited meanwhile: the next solve asks again
+    S.forces = r.ok ? r.data : [];
+    drawForces();
+    document.body.dataset.forces = String(S.seq);
+  }
+  function drawForces() {
+    const box = $("force-panels"); clear(box);
+    if (!S.forces || !S.forces.length) { h(box, "p", {}, "The scene asks for no force analysis (outputs: force_polygons, lever)."); return; }
+    for (const pn of S.forces) {
+      const fig = h(box, "figure", {"data-panel": pn.id});
+      h(fig, "figcaption", {}, pn.name + ", μ = " + num(pn.scale) + " " + pn.unit);
+      const svg = el(fig, "svg", {id: "force-" + pn.id, role: "img", "data-scale": String(pn.scale)});
+      defs(svg);
+      const segs = pn.segments.map((g) => [g, g.track[S.k]]).filter((x) => x[1]);
+      const pts = [];
+      for (const [, t] of segs) pts.push([t[0], t[1]], [t[2], t[3]]);
+      for (const nm in pn.points || {}) if (pn.points[nm][S.k]) pts.push(pn.points[nm][S.k]);
+      const size = fit(svg, pts, 0.12), u = size / 100;
+      for (const nm in pn.points || {}) {
+        const q = pn.points[nm][S.k];
+        if (!q) continue;
+        el(svg, "circle", {cx: f3(q[0]), cy: f3(-q[1]), r: f3(0.7 * u), class: "ppt"});
+        el(svg, "text", {x: f3(q[0] + 1.5 * u), y: f3(-q[1] + 4 * u), "font-size": f3(4 * u), class: "label"}, nm);
+      }
+      for (const [g, t] of segs) {
+        if (Math.hypot(t[2] - t[0], t[3] - t[1]) < 1e-9) continue;
+        el(svg, "line", {x1: f3(t[0]), y1: f3(-t[1]), x2: f3(t[2]), y2: f3(-t[3]), class: "seg " + (g.kind === "force" ? "frc" : KIND[g.kind] || ""),
+          "stroke-width": f3(0.5 * u), "marker-end": "url(#" + svg.id + "-arr)", "data-label": g.label});
+        el(svg, "text", {x: f3((t[0] + t[2]) / 2 + u), y: f3(-(t[1] + t[3]) / 2 - u), "font-size": f3(3.6 * u), class: "label"}, g.label);
+      }
+    }
+  }
+  function showForces(on) {
+    S.showForces = on;
+    $("forces").hidden = !on;
+    for (const f of document.querySelectorAll("#stage figure.plan")) f.hidden = on;
+    if (on) loadForces();
+  }
+
   function table(pos) {
     const tb = $("table").tBodies[0]; clear(tb);
     for (const r of pos.readings || []) {
@@ -503,6 +549,8 @@
     if (S.sol) download(new Blob([JSON.stringify(S.sol, null, 2)], {type: "application/json"}),
       (S.path || S.name || "scene").replace(/\.toml$/, "") + ".json");
   });
+  $("show-forces").addEventListener("click", () => showForces(true));
+  $("show-plans").addEventListener("click", () => showForces(false));
   $("dl-demo").addEventListener("click", async () => {
     status("building the page…");
     const stem = (S.path || S.name || "scene").replace(/\.toml$/, "");
