@@ -345,6 +345,17 @@ def test_page_check_mode_marks_a_wrong_row_and_downloads_open(browser, server):
         pg.click("#dl-demo")
     page = Path(dl.value.path()).read_text(encoding="utf-8")
     assert page.startswith("<!DOCTYPE html>") and 'id="lesson"' in page
+
+    # a blank check file for the scene: the student's v_A typed in is checked at once
+    seq = pg.get_attribute("body", "data-solved")
+    pg.click("#new-check")
+    seq = _solved(pg, seq)
+    assert pg.input_value("#save-path") == "slider_crank_check.toml"
+    for sel, value in (("#f-scales\\.velocity\\.mu-0", "50"), ("#f-positions\\.0\\.measured\\.v_A-0", "500")):
+        pg.fill(sel, value)
+        pg.press(sel, "Enter")
+        seq = _solved(pg, seq)
+    assert pg.get_attribute("tr[data-field='positions[0].measured.v_A']", "class") == "fail"
     pg.close()
     assert errors == []
 

@@ -6,6 +6,7 @@ lists the folder's files by kind; ``GET``/``PUT /api/file?path=`` read and write
 ``POST /api/check`` answers the JSON of ``plans check --json``; ``POST /api/draw?format=``
 answers the sheets (one file, or a zip of several); ``POST /api/demo`` the demonstration
 page (``plans demo``); ``POST /api/forces`` the force polygons and the lever over the turn;
+``GET /api/template?path=`` a blank check file for a scene;
 ``POST /api/edit`` sets values in a TOML
 text keeping its comments and order (the form's edits); ``GET /api/samples`` is the gallery.
 
@@ -240,6 +241,24 @@ class Workbench:
                 raise Refused(403, f"refused: the scene {scene!r} is outside the project folder", "scene")
         report = check(check_from_dict(data, str(where)))
         return json.dumps(report.to_json(), ensure_ascii=False, allow_nan=False).encode("utf-8")
+
+    async def template(self, request: Request) -> Response:
+        """A blank check file for a scene of the folder (``plans check --template``), to sit
+        beside it: ``{"path": suggested name, "text"}``."""
+        scene = self.path(request.query_params.get("path"))
+        return JSONResponse(await run_in_threadpool(self._template, scene))
+
+    def _template(self, scene: Path) -> dict[str, Any]:
+        from plans.check.forms import template_toml
+        from plans.scene.model import load_scene
+
+        text = template_toml(load_scene(scene), scene.name)
+        name = scene.with_name(f"{scene.stem}_check.toml")
+        n = 2
+        while name.exists():
+            name = scene.with_name(f"{scene.stem}_check{n}.toml")
+            n += 1
+        return {"path": self.rel(name), **_parsed(text, self.rel(name))}
 
     async def forces(self, request: Request) -> Response:
         text, name = await self.text(request), self.source_name(request)
@@ -482,6 +501,7 @@ def make_app(root: str | Path, hosts: set[str]) -> Any:
         Route("/api/draw", _handler(wb.draw), methods=["POST"]),
         Route("/api/demo", _handler(wb.demo), methods=["POST"]),
         Route("/api/forces", _handler(wb.forces), methods=["POST"]),
+        Route("/api/template", _handler(wb.template), methods=["GET"]),
     ]
     app = Starlette(routes=routes)
     return Guard(app, hosts)

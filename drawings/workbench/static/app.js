@@ -84,7 +84,8 @@
     $("checkview").hidden = S.kind !== "check"; $("stage").hidden = S.kind === "check";
     $("gallery").hidden = true; $("editor").hidden = false;
     $("save-box").hidden = false; $("downloads").hidden = false;
-    $("dl-demo").hidden = S.kind === "check";
+    $("dl-demo").hidden = S.kind === "check"; $("new-check").hidden = S.kind !== "linkage";
+    for (const b of document.querySelectorAll("#downloads button[data-format]")) b.hidden = S.kind === "check";
     $("save-path").value = path || name;
     $("doc-path").textContent = path || "(not saved)";
     if (path) history.replaceState(null, "", "#file=" + encodeURIComponent(path));
@@ -147,11 +148,13 @@
       if (typeof v === "number") row(fs, prefix + key, path, [v]);
       else if (Array.isArray(v) && v.length && v.length <= 3 && v.every((x) => typeof x === "number")) row(fs, prefix + key, path, v);
       else if (key === "sense" && typeof v === "string") row(fs, prefix + key, path, v, ["ccw", "cw"]);
+      else if (S.kind === "check" && typeof v === "string" && keys.some((k) => k === "measured" || k === "values" || k === "scales"))
+        row(fs, prefix + key, path, [v], null, true);  // a student's figure: blank, a number or "65 mm"
       else if (key === "kind" && keys[0] === "loads" && typeof v === "string") continue;
       else if (v && typeof v === "object") walk(fs, v, path, prefix + key + ".");
     }
   }
-  function row(fs, label, keys, values, choices) {
+  function row(fs, label, keys, values, choices, text) {
     const id = keys.join(".");
     const r = h(fs, "div", {class: "row"});
     // a student's figure reads as its quantity ("v_A", "a_A.2"), its unit beside it
@@ -166,6 +169,11 @@
       const inputs = values.map((x, i) => h(box, "input", {id: "f-" + id + "-" + i, "data-key": id, type: "text",
         inputmode: "decimal", value: String(x)}));
       const send = () => {
+        if (text) {  // a number when it reads as one, else the text as typed ("" leaves it blank)
+          const t = inputs[0].value.trim(), x = Number(t.replace(",", "."));
+          edit(keys, t !== "" && isFinite(x) ? x : t, id);
+          return;
+        }
         const vals = inputs.map((e) => Number(e.value.replace(",", ".").trim()));
         if (inputs.some((e) => e.value.trim() === "") || vals.some((x) => !isFinite(x))) {
           mark(id, "expected a number, got " + JSON.stringify(inputs.map((e) => e.value).join(", ")));
@@ -256,7 +264,8 @@
   async function checkRun() {
     const seq = ++S.seq;
     status("checking…");
-    const r = await api("POST", "/api/check" + (S.path ? "?path=" + encodeURIComponent(S.path) : ""), S.text);
+    const where = S.path || S.name;  // an unsaved check file finds its scene from the name it will have
+    const r = await api("POST", "/api/check" + (where ? "?path=" + encodeURIComponent(where) : ""), S.text);
     if (seq < S.shown) return;
     S.shown = seq;
     for (const e of document.querySelectorAll(".row.pass, .row.fail")) e.classList.remove("pass", "fail");
@@ -548,6 +557,13 @@
   $("dl-json").addEventListener("click", () => {
     if (S.sol) download(new Blob([JSON.stringify(S.sol, null, 2)], {type: "application/json"}),
       (S.path || S.name || "scene").replace(/\.toml$/, "") + ".json");
+  });
+  $("new-check").addEventListener("click", async () => {
+    if (!S.path) { status("save the scene first: a check file names its scene's file", true); return; }
+    const r = await api("GET", "/api/template?path=" + encodeURIComponent(S.path));
+    if (!r.ok) { status(r.data.error, true); return; }
+    showForces(false);
+    open(null, r.data.path, r.data.text, r.data.data, r.data.kind);
   });
   $("show-forces").addEventListener("click", () => showForces(true));
   $("show-plans").addEventListener("click", () => showForces(false));
