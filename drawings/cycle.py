@@ -66,6 +66,14 @@ WORDS: dict[str, tuple[str, str]] = {
     "energy": ("Работы и кинетическая энергия, Дж", "Work and kinetic energy, J"),
     "with_graphical": ("с маховиком по Виттенбауэру", "with the Wittenbauer flywheel"),
     "with_exact": ("с точным маховиком", "with the exact flywheel"),
+    "indicator": ("Индикаторная диаграмма", "Indicator diagram"),
+    "intake": ("впуск", "intake"),
+    "compression": ("сжатие", "compression"),
+    "expansion": ("расширение", "expansion"),
+    "exhaust": ("выпуск", "exhaust"),
+    "down": ("ход к валу", "toward the crank"),
+    "up": ("ход от вала", "away from the crank"),
+    "fires": ("воспламенение при φ", "ignition at φ"),
 }
 
 
@@ -159,7 +167,7 @@ def _m_panel(d: Dynamics, lang: str) -> Panel:
     rad = np.radians(t.phi_deg - t.phi_deg[0])
     xs_s, ys_s = spline.sample(rad, t.M_pr, spline.slopes(rad, t.M_pr), 8)
     ye = d.exact.M_pr * s.M
-    L = 2 * math.pi * s.phi
+    L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
     ax.frame(L, float(min(ye.min(), t.M_pr.min() * s.M)), float(max(ye.max(), t.M_pr.max() * s.M)), "M_пр" if lang == "ru" else "M_pr")
     ax.positions(t.phi_deg[:-1])
     ax.curve(ax.x(d.exact.phi_deg), ye, EXACT)
@@ -182,7 +190,7 @@ def _a_panel(d: Dynamics, lang: str) -> Panel:
     t = d.table
     rec = Recording()
     ax = Axes(rec, "dyn-A", s.phi, float(t.phi_deg[0]), lang)
-    L = 2 * math.pi * s.phi
+    L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
     ya = np.concatenate([d.A_c, d.A_d]) * s.A
     ax.frame(L, float(ya.min()), float(ya.max()), "A")
     ax.positions(t.phi_deg[:-1])
@@ -205,7 +213,7 @@ def _t_panel(d: Dynamics, lang: str) -> Panel:
     t = d.table
     rec = Recording()
     ax = Axes(rec, "dyn-T", s.phi, float(t.phi_deg[0]), lang)
-    L = 2 * math.pi * s.phi
+    L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
     ye = d.dT_exact * s.A
     ax.frame(L, float(min(ye.min(), d.dT.min() * s.A)), float(max(ye.max(), d.dT.max() * s.A)), "ΔT")
     ax.positions(t.phi_deg[:-1])
@@ -224,7 +232,7 @@ def _i_panel(d: Dynamics, lang: str) -> Panel:
     t = d.table
     rec = Recording()
     ax = Axes(rec, "dyn-I", s.phi, float(t.phi_deg[0]), lang)
-    L = 2 * math.pi * s.phi
+    L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
     ye = d.exact.I_pr * s.I
     ax.frame(L, 0.0, float(ye.max()), "I_пр" if lang == "ru" else "I_pr")
     ax.positions(t.phi_deg[:-1])
@@ -280,7 +288,7 @@ def _omega_panel(d: Dynamics, lang: str) -> Panel:
     fw = d.flywheel
     rec = Recording()
     ax = Axes(rec, "dyn-w", s.phi, float(d.exact.phi_deg[0]), lang)
-    L = 2 * math.pi * s.phi
+    L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
     span = max(float(np.ptp(d.omega)), float(np.ptp(d.omega_exact)), 1e-300)
     mu_w = 40.0 / span
     y_g = (d.omega - fw.omega_mean) * mu_w
@@ -346,6 +354,53 @@ def table_panels(tables: Sequence[CycleTable], lang: str, prefix: str,
     return out
 
 
+def indicator_panels(d: Dynamics, lang: str) -> list[Panel]:
+    """Each cylinder's indicator diagram as given: the pressure against the piston's travel
+    from the outer dead centre, one line per stroke (the working stroke drawn main)."""
+    from plans.forces.loads import ignition, parse_loads
+
+    out = []
+    for k, gl in enumerate(parse_loads(d.scene).gas):
+        if not gl.diagram or gl.stroke <= 0:
+            continue
+        H_mm = gl.stroke * 1000
+        p_top = max(float(np.max(np.abs(p))) for _, p in gl.diagram.values()) or 1.0
+        mu_s = 100.0 / H_mm
+        mu_p = nice_scale_mm(p_top, 60.0)
+        rec = Recording()
+        ax = Axes(rec, f"ind-{k}", 1.0, 0.0, lang)
+        lows = [float(np.min(p)) for _, p in gl.diagram.values()]
+        ax.frame(100.0, min(lows + [0.0]) * mu_p, p_top * mu_p, "p", "s")
+        for side, (ts, ps) in gl.diagram.items():
+            style = MAIN if side in ("expansion", "down") else (THIN if side in ("compression", "up") else
+                                                                Style(width=0.25, dash=(3, 1.5)))
+            pts = [(float(t * 1000 * mu_s), float(-p * mu_p)) for t, p in zip(ts, ps, strict=True)]
+            rec.polyline(pts, style, f"ind-{k}-{side}")
+            # each stroke named at its own place along the travel, the low ones below their line
+            at = {"expansion": 0.3, "down": 0.3, "compression": 0.12, "up": 0.12, "exhaust": 0.55,
+                  "intake": 0.8}[side]
+            x = at * 100.0
+            y = -float(np.interp(at * gl.stroke, ts, ps)) * mu_p
+            below = side == "intake"
+            rec.text(layout(tr(side, lang), x + 1.0, y + (1.5 if below else -1.0), 2.5, "start",
+                            "top" if below else "bottom"), "note")
+        scale = (f"μ_s = {fmt(mu_s, 4, lang)} mm/mm (H = {fmt(H_mm, 4, lang)} mm); "
+                 f"μ_p = {fmt(mu_p * 1e6, 4, lang)} mm/MPa")
+        note = None
+        if gl.fires is not None:
+            note = f"{tr('fires', lang)} = {fmt(ignition(d.scene, gl), 5, lang)}°"
+        out.append(plot_panel(f"ind-{k}", "dynamics", f"{tr('indicator', lang)} {gl.name}", rec, scale, note,
+                              lang=lang))
+    return out
+
+
+def nice_scale_mm(top: float, target_mm: float) -> float:
+    """mm per unit drawing ``top`` at about ``target_mm``."""
+    from plans.kinematics.construction import nice_scale
+
+    return nice_scale(top, target_mm)
+
+
 def analogue_plans(d: Dynamics, lang: str) -> list[Panel]:
     """Plans of velocity analogues at the table's positions: velocity plans drawn at
     μ_v = μ/|ω1|, so that every segment is the analogue v/ω1 at μ (mm per m), the pole p."""
@@ -355,7 +410,9 @@ def analogue_plans(d: Dynamics, lang: str) -> list[Panel]:
     from .panels import plan_panel
 
     scene = dataclasses.replace(d.scene, outputs=d.scene.outputs | {"velocity_plan"})
-    kin = solve(scene, np.asarray(d.spec.phi_deg, float), order=1)
+    phis = np.asarray(d.spec.phi_deg, float)
+    phis = phis[phis < phis[0] + 360.0 - 1e-9]  # the second revolution of 720° repeats the first's plans
+    kin = solve(scene, phis, order=1)
     mu_v = d.scales.analogue / abs(d.scene.driver.omega)
     out = []
     for k in range(kin.n):
@@ -370,7 +427,8 @@ def dynamics_panels(d: Dynamics, tables: Sequence[CycleTable], lang: str) -> lis
               tr("Ipr", lang), f"{tr('Mpr', lang)}; {tr('sign', lang)}", tr("energy", lang)]
     plans = [] if d.scene.wants("velocity_plan") else analogue_plans(d, lang)  # else on the first sheet
     return ([_m_panel(d, lang), _a_panel(d, lang), _t_panel(d, lang), _i_panel(d, lang), _w_panel(d, lang),
-             _omega_panel(d, lang), _fly_table(d, lang)] + table_panels(tables, lang, "dyn", titles) + plans)
+             _omega_panel(d, lang), _fly_table(d, lang)] + indicator_panels(d, lang)
+            + table_panels(tables, lang, "dyn", titles) + plans)
 
 
 # --------------------------------------------------------------------------- the hook

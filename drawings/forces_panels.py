@@ -25,6 +25,7 @@ from plans.units import DUST
 
 from .backend import Pt, Recording, Style, Transform
 from .common import Placer, angle, arrow, dot, fmt, ident, phi_tag
+from .friction_marks import efficiency_panels, efficiency_rows, friction_marks, friction_points
 from .i18n import tr
 from .panels import (
     JOINT_R,
@@ -47,12 +48,16 @@ ARM = Style(width=0.18, stroke="#555", dash=(1.5, 1.0))
 FBD_ARROW_MM = 32.0
 
 _NAME = re.compile(r"^(Phi|M_Phi|[A-Z])(\d+)(.*)$")
+_FRICTION = re.compile(r"^([MF])f(\d+)$")
 
 
 def force_label(label: str, lang: str = "en") -> str:
     """``F21^τ`` -> ``F_21^τ``, ``Phi2`` -> ``Φ_2``, ``M_Phi2'`` -> ``M_Φ2'``, ``F_bal`` -> ``F_ур`` (ru)."""
     if label == "F_bal":
         return "F_ур" if lang == "ru" else "F_bal"
+    f = _FRICTION.match(label)
+    if f:  # a friction couple or force of a pair: M_f21, F_f36
+        return f"{f.group(1)}_{{f{f.group(2)}}}"
     if label.startswith("M_Phi"):
         return "M_{Φ" + label[5:].rstrip("'") + "}" + "'" * (len(label) - len(label.rstrip("'")))
     m = _NAME.match(label)
@@ -82,7 +87,7 @@ def build(scene, kin, spec, ks: Sequence[int], plans_at: dict[int, Any], mu_l: f
         if scene.wants("force_polygons"):
             for gf in reversed(fa.groups):  # attachment order: nearest the crank first
                 if want("group"):
-                    panels.append(group_panel(scene, kin, gf, k, mu_l, lang, style))
+                    panels.append(group_panel(scene, kin, gf, k, mu_l, lang, style, fa.friction))
                     fp = by_group.get(gf.group.name)
                     if fp is not None:
                         panels.append(polygon_panel(fp.plan, lang, style,
@@ -100,7 +105,9 @@ def build(scene, kin, spec, ks: Sequence[int], plans_at: dict[int, Any], mu_l: f
         if want("table") and polys:
             panels.append(forces_table(polys, lang, style, phi))
         out[k] = panels
-        out[("table", k)] = balancing_rows(lv, k, lang)
+        out[("table", k)] = balancing_rows(lv, k, lang) + efficiency_rows(fa, k, lang)
+    if fa.friction is not None and want("table"):  # η(φ) and its table go with the tables
+        out["efficiency"] = efficiency_panels(fa, lang)
     return out
 
 
@@ -205,7 +212,7 @@ def _label_points(rec: Recording, placer: Placer, pts: dict[str, complex], T: Tr
         rec.text(lab, "label", f"{pid}-label-{ident(n)}")
 
 
-def group_panel(scene, kin, gf, k: int, mu_l: float, lang: str, style: str) -> Panel:
+def group_panel(scene, kin, gf, k: int, mu_l: float, lang: str, style: str, friction: Any = None) -> Panel:
     """The group cut free (appendices 4–5): loads at their points, the unknown reactions
     at the outer pairs (τ and n components at a revolute), arms h of the moment equations."""
     g = gf.group
@@ -259,13 +266,17 @@ def group_panel(scene, kin, gf, k: int, mu_l: float, lang: str, style: str) -> P
                   f"{pid}-{ident(f.label)}")
     for at, F, name in reacts:
         _force_at(rec, placer, T, at, F, mu_f, force_label(name, lang), REACTION, f"{pid}-{ident(name)}")
+    at_pin = friction_points(friction)  # a friction couple is drawn at its pair's pin
     for m in list(gf.moments_i) + list(gf.moments_j):
         link = scene.links[m.link]
         centre = link.centre or next((n for n in link.points if n.startswith("S")), link.axis[0])
+        centre = at_pin.get(m.label, centre) if at_pin.get(m.label) in pts else centre
         _moment_arc(rec, placer, T.z(pts[centre]), float(m.M[k]), force_label(m.label, lang),
                     f"{pid}-{ident(m.label)}")
     for point, M, name in couples:
         _moment_arc(rec, placer, T.z(pts[point]), M, force_label(name, lang), f"{pid}-{ident(name)}", r=8.0)
+    friction_marks(rec, placer, T, friction, gf.reactions, k, mu_l, mu_f, pid,
+                   lambda rc: force_label(rc.name(scene.fij), lang))
     _label_points(rec, placer, pts, T, pid)
     title = f"{tr('group', lang)} {g.name} ({g.kind}), φ = {angle(phi, lang)}°"
     sc = f"{scale_text('length', mu_l, style, lang)};  {scale_text('force', mu_f, style, lang)}"
@@ -300,6 +311,8 @@ def crank_panel(scene, kin, fa, k: int, mu_l: float, lang: str, style: str) -> P
     name = c.frame.name(scene.fij)
     _force_at(rec, placer, T, complex(c.frame.r[k]), complex(c.frame.F[k]), mu_f, force_label(name, lang),
               REACTION, f"{pid}-{ident(name)}")
+    friction_marks(rec, placer, T, fa.friction, (c.frame,), k, mu_l, mu_f, pid,
+                   lambda rc: force_label(rc.name(scene.fij), lang))
     _label_points(rec, placer, pts, T, pid)
     title = f"{tr('crank', lang)} {c.link}, φ = {angle(phi, lang)}°"
     sc = f"{scale_text('length', mu_l, style, lang)};  {scale_text('force', mu_f, style, lang)}"

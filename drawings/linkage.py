@@ -97,6 +97,7 @@ def build_panels(scene: Scene, spec: SheetSpec) -> tuple[list[Panel], float]:
             extra = forces.get(("table", k), [])
             panels.append(table_panel(_rows(scene, pp.readings), lang, style, float(kin.phi_deg[k]),
                                       extra=extra))
+    panels.extend(forces.get("efficiency", []))  # η(φ) and its table, with friction over a turn
     kinds = legend_kinds(panels)
     if _wants(spec, "legend") and any(k not in ("trace",) for k in kinds):
         panels.append(legend_panel(kinds, lang))

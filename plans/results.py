@@ -91,6 +91,12 @@ def _head(sol: Solution) -> dict[str, Any]:
         from plans.cycle.results import cycle_json
 
         out.update(cycle_json(sol.cycle))
+    if sol.forces is not None and sol.forces[0].friction is not None:
+        from plans.forces.friction import efficiency_json
+
+        eff = efficiency_json(sol.forces[0])
+        if eff is not None:
+            out["efficiency"] = eff
     return out
 
 
@@ -222,6 +228,12 @@ def table(sol: Solution, protocol: bool = False) -> str:
         from plans.cycle.results import cycle_text
 
         lines.append(cycle_text(sol.cycle))
+    if sol.forces is not None and sol.forces[0].friction is not None:
+        from plans.forces.friction import cycle_line
+
+        line = cycle_line(sol.forces[0])
+        if line:
+            lines.append(line)
     return "\n".join(lines)
 
 

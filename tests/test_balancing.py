@@ -282,7 +282,7 @@ def _base() -> dict:
 BAD = [
     ("lambda", lambda d: d.update({"lambda": 1.0})),
     ("lambda", lambda d: d.update({"lambda": 1.7})),
-    ("cylinders[1].m_rot", lambda d: d["cylinders"][1].update({"m_rot": 0})),
+    ("cylinders[1].m_rot", lambda d: d["cylinders"][1].update({"m_rot": -1})),
     ("cylinders[0].m_rec", lambda d: d["cylinders"][0].update({"m_rec": -1.0})),
     ("firing_order", lambda d: [c.pop("crank_deg") for c in d["cylinders"]] and d.update({"firing_order": [1, 2, 3]})),
     ("crank_deg", lambda d: [c.pop("crank_deg") for c in d["cylinders"]] and d.update({"crank_deg": [0, 90, 180]})),

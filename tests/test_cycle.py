@@ -347,7 +347,9 @@ def test_cycle_table_columns_are_the_positions_readings(tmp_path):
                 assert rows[r["quantity"] + ":mm"][k] == pytest.approx(r["length_mm"], abs=1e-12)
 
 
-def test_a_machine_without_inertia_is_one_line():
+def test_a_machine_without_inertia_gets_the_flywheel_that_is_all_its_inertia():
+    """No masses, no rotor: I_fw = (ΔT_max − ΔT_min)/(ω_m² δ); the force at S2 is constant,
+    so ΔT = F·(r_S2 − r_S2(φ0)) (a potential, M_d = 0) and its range is F·(y_max − y_min)."""
     data = _seed_dict()
     for lid in ("2", "3"):
         data["links"][lid].pop("mass", None)
@@ -356,9 +358,19 @@ def test_a_machine_without_inertia_is_one_line():
     data["dynamics"]["rotor_inertia"] = 0.0
     data["loads"] = {"gravity": False, "moment": [{"link": 1, "value": 0.0}],
                      "force": [{"link": 2, "point": "S2", "vector": [0, -100]}]}
-    with pytest.raises(InputError) as exc:
-        dynamics(scene_from_dict(data, "bare.toml"))
-    assert exc.value.field == "dynamics.rotor_inertia"
+    scene = scene_from_dict(data, "bare.toml")
+    d = dynamics(scene)
+    assert np.all(d.exact.I_pr == 0)
+    assert abs(d.M_driving_exact) < 1e-9
+    phis = np.linspace(0.0, 360.0, 36001)
+    y = solve(scene, phis, order=0).point("S2")[0].imag
+    ext = []
+    for k in (int(np.argmax(y)), int(np.argmin(y))):  # refine each extreme on a 1e-5° grid
+        fine = np.linspace(phis[k] - 0.01, phis[k] + 0.01, 2001)
+        yf = solve(scene, fine, order=0).point("S2")[0].imag
+        ext.append(float(yf.max() if k == int(np.argmax(y)) else yf.min()))
+    w = abs(scene.driver.omega)
+    assert d.flywheel.inertia_exact == pytest.approx(100 * (ext[0] - ext[1]) / (w**2 * 0.05), rel=1e-9)
 
 
 CHECK = ROOT / "samples" / "checks" / "dynamics_seed004.toml"

@@ -150,6 +150,8 @@ def goal_line(g: dict[str, Any]) -> str:
     """``goal: <what> ≤ 300 µs: 212 µs, met`` (a time) or ``≥ 20×: 31×, met`` (a speed-up)."""
     if g["unit"] == "s":
         want, got = f"≤ {fmt(g['limit'], 's')}", fmt(g["value"], "s")
+    elif g["unit"] == "× cost":
+        want, got = f"≤ {g['limit']:g}×", f"{g['value']:.2f}×"
     else:
         want, got = f"≥ {g['limit']:g}×", f"{g['value']:.1f}×"
     return f"goal: {g['goal']} {want}: {got}, {'met' if g['met'] else 'not met'}"
@@ -165,6 +167,8 @@ def goals_section(goals: list[dict[str, Any]]) -> list[str]:
         if g["unit"] == "s":
             out.append(f"| {g['goal']} | ≤ {fmt(g['limit'], 's')} | {fmt(g['value'], 's')} | "
                        f"{'yes' if g['met'] else 'no'} |")
+        elif g["unit"] == "× cost":
+            out.append(f"| {g['goal']} | ≤ {g['limit']:g}× | {g['value']:.2f}× | {'yes' if g['met'] else 'no'} |")
         else:
             out.append(f"| {g['goal']} | ≥ {g['limit']:g}× | {g['value']:.1f}× | {'yes' if g['met'] else 'no'} |")
     out.append("")

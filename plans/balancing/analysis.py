@@ -238,9 +238,12 @@ def _resultant(engine: Engine, kind: str, quantity: str) -> Resultant:
     """The polygon(s) of one kind and their resultant in N (or N·m)."""
     ms = _masses(engine, kind)
     k = 2 if kind == "second_order" else 1
-    P0 = ms[0] * engine.r * engine.omega**2 * (engine.lam if k == 2 else 1.0)
+    # the polygon's unit is the first cylinder's force (the first with a mass: an engine may
+    # have no rotating masses at all, whose polygon is then of zero sides at 1 kg's unit)
+    m0 = next((m for m in ms if m > 0), 1.0)
+    P0 = m0 * engine.r * engine.omega**2 * (engine.lam if k == 2 else 1.0)
     unit = P0 * (engine.arm_unit if quantity == "moment" else 1.0)
-    ps = [m / ms[0] for m in ms]
+    ps = [m / m0 for m in ms]
     ls = [(c.z - engine.reference_z) / engine.arm_unit if quantity == "moment" else 1.0
           for c in engine.cylinders]
     cyl = engine.cylinders

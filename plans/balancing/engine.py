@@ -169,7 +169,8 @@ def engine_from_dict(data: dict[str, Any], path: str = "<engine>") -> Engine:
     strokes = data.get("strokes", 4)
     if strokes not in (2, 4) or isinstance(strokes, bool):
         raise rd.fail("strokes", f"expected 2 or 4, got {strokes!r}")
-    m_rot0 = rd.number(data, "m_rot", positive=True) if "m_rot" in data else None
+    # an engine with no rotating masses (a balanced crank, a crosshead engine's analysis) is allowed
+    m_rot0 = rd.number(data, "m_rot", nonneg=True) if "m_rot" in data else None
     m_rec0 = rd.number(data, "m_rec", positive=True) if "m_rec" in data else None
 
     raw = data.get("cylinders")
@@ -193,7 +194,7 @@ def engine_from_dict(data: dict[str, Any], path: str = "<engine>") -> Engine:
             z = 0.0
         else:
             raise rd.fail(f"{where}z", "missing the cylinder's position along the shaft")
-        m_rot = rd.number(body, "m_rot", where, positive=True) if "m_rot" in body else m_rot0
+        m_rot = rd.number(body, "m_rot", where, nonneg=True) if "m_rot" in body else m_rot0
         m_rec = rd.number(body, "m_rec", where, positive=True) if "m_rec" in body else m_rec0
         if m_rot is None:
             raise rd.fail(f"{where}m_rot", "missing rotating mass (kg), here or as m_rot at the top")

@@ -8,7 +8,8 @@ The machine is reduced to the crank (the link of reduction, angle φ):
   the driving moment (gravity, gas and indicator diagrams, external forces and moments):
   the loads' power over |ω1|, **positive when the loads drive the crank** (seed 004's
   sheet prints the opposite sign for resisting loads; :data:`SIGN_RULE`);
-* the constant driving moment M_d = −(1/2π) ∮ M_pr dφ (the cycle's work balances);
+* the constant driving moment M_d = −(1/Φ) ∮ M_pr dφ over the working cycle Φ (2π, or 4π
+  for a four-stroke engine: ``[dynamics] cycle_deg = 720``; the cycle's work balances);
   A_c(φ) = ∫ M_pr dφ, A_d(φ) = M_d (φ − φ0), ΔT = A_c + A_d;
 * the flywheel: the Wittenbauer energy–mass diagram (ΔT against I_pr) with tangents at
   tan ψ = ω_m²(1 ± δ)/2, I_fw = kl/(ω_m² δ) (graphical: over the table's positions,
@@ -20,7 +21,8 @@ means 2E0 = ω_max² I_fw + min_φ (ω_max² I_pr − 2ΔT), and likewise for ω
 subtracting, I_fw = [max_φ(ω_min² I_pr − 2ΔT) − min_φ(ω_max² I_pr − 2ΔT)] / (ω_max² − ω_min²),
 the Wittenbauer construction with the exact slopes ω²/2 on the exact curve.  The motion
 ½ (I_fw + I_pr) ω² = E0 + ΔT is then integrated for any flywheel (E0 such that
-(ω_max + ω_min)/2 = ω_m) to give the achieved δ.
+(ω_max + ω_min)/2 = ω_m) to give the achieved δ.  The work is integrated and the extremes
+found by :mod:`.quadrature` (to 1e-9 and better, with the quadrature's stated bound).
 """
 
 from __future__ import annotations
@@ -39,7 +41,7 @@ from plans.kinematics.exact import Kinematics, solve
 from plans.kinematics.structure import Structure, analyse
 from plans.scene.model import Scene
 
-from . import spline
+from . import quadrature, spline
 from .spec import DynamicsSpec, dynamics_spec
 
 R = NDArray[np.float64]
@@ -84,6 +86,8 @@ class Flywheel:
     delta_achieved: float  # by the graphical flywheel, exact integration of the motion
     delta_achieved_exact: float  # by the exact flywheel (= delta, to the integration's accuracy)
     delta_achieved_merkalov: float
+    graphical_bound: float = 0.0  # kg·m², |I_graphical − I_exact| stays within it (Wittenbauer's own)
+    work_bound: float = 0.0  # J, of the exact integration of the loads' work over the cycle
 
     @property
     def graphical_error(self) -> float:
@@ -214,8 +218,8 @@ def cumulative(phi_rad: R, y: R) -> R:
     return out
 
 
-def _driving(scene: Scene, spec: DynamicsSpec, A_end: float, scale: float) -> float:
-    need = -A_end / (2.0 * math.pi)
+def _driving(scene: Scene, spec: DynamicsSpec, A_end: float, scale: float, cycle: float = 360.0) -> float:
+    need = -A_end / math.radians(cycle)
     if spec.driving is None:
         return need
     given = spec.driving * (1 if scene.driver.omega > 0 else -1)
@@ -311,9 +315,10 @@ def dynamics(scene: Scene, spec: DynamicsSpec | None = None, structure: Structur
     spec = spec or dynamics_spec(scene)
     loads = loads if loads is not None else parse_loads(scene)
     st = structure or analyse(scene)
-    phi0 = spec.phi_deg[0]
-    nodes = np.append(np.asarray(spec.phi_deg, float), phi0 + 360.0)
-    grid = phi0 + np.linspace(0.0, 360.0, spec.exact_steps + 1)
+    phi0, cycle = spec.phi_deg[0], spec.cycle_deg
+    _check_cycle(scene, loads, cycle)
+    nodes = np.append(np.asarray(spec.phi_deg, float), phi0 + cycle)
+    grid = phi0 + np.linspace(0.0, cycle, spec.exact_steps + 1)
     kin = solve(scene, np.concatenate([nodes, grid]), order=2, structure=st)
     both = reduce(scene, loads, kin, spec.rotor_inertia)
     m = len(nodes)
@@ -321,9 +326,6 @@ def dynamics(scene: Scene, spec: DynamicsSpec | None = None, structure: Structur
     if not np.any(ex.M_pr != 0):
         raise InputError("the scene applies no load to the machine (no gravity, gas or external force): "
                          "there is no fluctuation for a flywheel to smooth", file=scene.path, field="loads")
-    if not np.all(ex.I_pr > 0):
-        raise InputError("the machine has no inertia at the crank (no masses, no rotor): give the links' masses "
-                         "or the rotor's own inertia", file=scene.path, field="dynamics.rotor_inertia")
     omega_m = abs(scene.driver.omega)
     delta = spec.delta
     rad = np.radians(nodes - phi0)
@@ -331,27 +333,36 @@ def dynamics(scene: Scene, spec: DynamicsSpec | None = None, structure: Structur
     # the curve's, and the tangents of the energy–mass diagram touch the curve
     A_c = np.append(0.0, np.cumsum(spline.interval_integrals(rad, tab.M_pr, spline.slopes(rad, tab.M_pr))))
     rad_e = np.radians(grid - phi0)
-    A_c_e = cumulative(rad_e, ex.M_pr)
-    M_d_e = _driving(scene, spec, float(A_c_e[-1]), float(np.max(np.abs(ex.M_pr))))
+    machine = quadrature.Machine(scene, loads, st, spec.rotor_inertia, phi0, cycle)
+    work = quadrature.integrate(machine, grid)
+    A_c_e = work.A_c
+    M_d_e = _driving(scene, spec, float(A_c_e[-1]), float(np.max(np.abs(ex.M_pr))), cycle)
     dT_e = A_c_e + M_d_e * rad_e
+    if np.ptp(dT_e) <= 1e-12 * float(np.max(np.abs(ex.M_pr))) * math.radians(cycle):
+        raise InputError("the loads' moment does not vary over the cycle: the kinetic energy does not change "
+                         "and there is nothing for a flywheel to smooth", file=scene.path, field="loads")
     # a given driving moment balances the exact work; the graphical one is read off A_c's end
-    M_d = -float(A_c[-1]) / (2 * math.pi) if spec.driving is None else M_d_e
+    M_d = -float(A_c[-1]) / math.radians(cycle) if spec.driving is None else M_d_e
     A_d = M_d * rad
     dT = A_c + A_d
     per = max(1, 240 // len(rad))
     _, I_curve = spline.sample(rad, tab.I_pr, spline.slopes(rad, tab.I_pr), per)
     _, T_curve = spline.sample(rad, dT, spline.slopes(rad, dT), per)
     wit, I_graph = wittenbauer(I_curve, T_curve, omega_m, delta)
-    I_ex = exact_flywheel(ex.I_pr, dT_e, omega_m, delta)
+    ext = quadrature.Extremes(machine, work, M_d_e)
+    I_ex, hi, lo = quadrature.flywheel(ext, ex.I_pr, dT_e, omega_m, delta)
     I_mer = merkalov(I_curve, tab.constant_inertia, T_curve, omega_m, delta)
+    phi_curve = phi0 + np.degrees(spline.sample(rad, dT, spline.slopes(rad, dT), per)[0])
+    bound = quadrature.wittenbauer_bound(ext, phi_curve, I_curve, T_curve, omega_m, delta, hi, lo)
     notes: list[str] = []
     if I_ex < 0:
         notes.append(f"the machine's own inertia already keeps δ below {delta:g}: no flywheel is needed")
-    om_g, d_g = motion(ex.I_pr, dT_e, max(I_graph, 0.0), omega_m)
-    om_e, d_e = motion(ex.I_pr, dT_e, max(I_ex, 0.0), omega_m)
-    _, d_m = motion(ex.I_pr, dT_e, max(I_mer, 0.0), omega_m)
-    fw = Flywheel(delta, omega_m, I_ex, I_graph, I_mer, d_g, d_e, d_m)
-    mu_phi = axis_mm / (2 * math.pi)
+    om_g, d_g = quadrature.motion(ext, ex.I_pr, dT_e, _usable(I_graph, ex.I_pr), omega_m)
+    om_e, d_e = quadrature.motion(ext, ex.I_pr, dT_e, _usable(I_ex, ex.I_pr), omega_m)
+    _, d_m = quadrature.motion(ext, ex.I_pr, dT_e, _usable(I_mer, ex.I_pr), omega_m)
+    fw = Flywheel(delta, omega_m, I_ex, I_graph, I_mer, d_g, d_e, d_m, bound, work.bound)
+    # the φ axis of a four-stroke cycle is half as long again: 1 mm for every 2° of 720°
+    mu_phi = axis_mm * (1.5 if cycle == 720 else 1.0) / math.radians(cycle)
     mu_M = nice_scale(float(np.max(np.abs(tab.M_pr))) or 1.0, 50.0)
     A_range = float(max(np.max(np.abs(A_c)), np.max(np.abs(A_d)), np.ptp(dT)))
     H = spec.pole_mm or _pole(mu_M, mu_phi, A_range)
@@ -363,6 +374,30 @@ def dynamics(scene: Scene, spec: DynamicsSpec | None = None, structure: Structur
                    Scales(mu_phi, mu_M, H, mu_A, mu_I, mu_an), tuple(notes))
     spline.freeze(out)
     return out
+
+
+def _usable(I_fw: float, I_pr: R) -> float:
+    """A flywheel the motion can be integrated with: none when it comes out negative, and
+    never a machine with no inertia at all somewhere in the cycle."""
+    I_fw = max(I_fw, 0.0)
+    if I_fw + float(np.min(I_pr)) <= 0:
+        I_fw = 1e-12 * max(float(np.max(I_pr)), 1e-300)
+    return I_fw
+
+
+def _check_cycle(scene: Scene, loads: Loads, cycle: float) -> None:
+    """Loads given over a four-stroke cycle need the 720° dynamics, and a diagram over 720°
+    cannot close a cycle of one revolution."""
+    if cycle == 720:
+        return
+    for gl in loads.gas:
+        if gl.fires is not None or gl.period == 720:
+            raise InputError(f"{gl.name} is given over the four-stroke cycle (720°); set cycle_deg = 720",
+                             file=scene.path, field="dynamics.cycle_deg")
+    for ml in loads.moments:
+        if ml.period == 720 and (ml.table is not None or ml.expression is not None):
+            raise InputError(f"{ml.name} is given over 720°; set cycle_deg = 720", file=scene.path,
+                             field="dynamics.cycle_deg")
 
 
 def _split(red: Reduced, sl: slice) -> Reduced:

@@ -47,7 +47,9 @@ def dynamics_json(d: Dynamics) -> dict[str, Any]:
                      "inertia_graphical": f.inertia_graphical, "delta_achieved": f.delta_achieved,
                      "inertia_merkalov": f.inertia_merkalov, "delta_achieved_exact": f.delta_achieved_exact,
                      "delta_achieved_merkalov": f.delta_achieved_merkalov,
-                     "graphical_error": f.graphical_error},
+                     "graphical_error": f.graphical_error, "graphical_bound": f.graphical_bound,
+                     "work_bound": f.work_bound},
+        "cycle_deg": d.spec.cycle_deg,
         "M_driving": d.M_driving,
         "M_driving_exact": d.M_driving_exact,
         "sign_rule": SIGN_RULE,
@@ -96,7 +98,7 @@ def dynamics_tables(d: Dynamics) -> list[CycleTable]:
 def dynamics_text(d: Dynamics) -> str:
     f, s = d.flywheel, d.scales
     lines = [
-        "Machine dynamics over the steady cycle",
+        "Machine dynamics over the steady cycle" + (" of 720° (two revolutions)" if d.spec.cycle_deg == 720 else ""),
         f"  {SIGN_RULE}",
         f"  driving moment M_d = {d.M_driving:.6g} N·m (graphical), {d.M_driving_exact:.6g} N·m (exact)",
         f"  scales: μφ = {s.phi:.4g} mm/rad, μM = {s.M:.4g} mm/(N·m), H = {s.H:.4g} mm, "
@@ -107,6 +109,8 @@ def dynamics_text(d: Dynamics) -> str:
         f"    Merkalov                 I = {f.inertia_merkalov:.6g} kg·m²  -> achieved δ = "
         f"{f.delta_achieved_merkalov:.6g}",
         f"    exact                    I = {f.inertia_exact:.6g} kg·m²  -> achieved δ = {f.delta_achieved_exact:.6g}",
+        f"  Wittenbauer's flywheel is within {f.graphical_bound:.3g} kg·m² of the exact one (its own bound); "
+        f"the work of the loads is integrated to {f.work_bound:.2g} J",
     ]
     lines += [f"  note: {x}" for x in d.notes]
     return "\n".join(lines)

@@ -11,7 +11,8 @@
                              # or a number (N·m, in the crank's sense) that must balance it
     positions = 12           # or phi_deg = [...] (extra positions such as the dead centres)
     pole_mm = 40             # pole distance H of the graphical integration (default: chosen)
-    exact_steps = 3600       # steps of the exact integration over 0..360°
+    exact_steps = 3600       # steps of the exact integration per revolution
+    cycle_deg = 720          # the working cycle: 360 (default) or 720 (a four-stroke engine)
 
     [diagrams]
     points = ["B"]           # s along the guide (a slider) or the path (any other point)
@@ -25,6 +26,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Any
 
@@ -50,7 +52,8 @@ class DynamicsSpec:
     driving: float | None  # None: constant, from the work balance
     phi_deg: tuple[float, ...]  # the table's positions (closing 360° added by the method)
     pole_mm: float | None
-    exact_steps: int
+    exact_steps: int  # over the whole cycle
+    cycle_deg: float = 360.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -64,7 +67,8 @@ class DiagramsSpec:
     length_mm: float
 
 
-_DYN_KEYS = {"rotor_inertia", "delta", "driving", "positions", "phi_deg", "pole_mm", "exact_steps"}
+_DYN_KEYS = {"rotor_inertia", "delta", "driving", "positions", "phi_deg", "pole_mm", "exact_steps", "cycle_deg"}
+CYCLES = (360, 720)
 _DIA_KEYS = {"points", "links", "quantities", "positions", "phi_deg", "method", "pole_mm", "length_mm"}
 QUANTITIES = ("s", "v", "a")
 METHODS = ("chords", "tangents")
@@ -88,9 +92,11 @@ def _number(scene: Scene, raw: dict[str, Any], key: str, where: str) -> float:
     return Reader(scene.path).value(raw[key], f"{where}.{key}")
 
 
-def _positions(scene: Scene, raw: dict[str, Any], where: str, *, equal: bool) -> tuple[float, ...]:
+def _positions(scene: Scene, raw: dict[str, Any], where: str, *, equal: bool,
+               cycle: float = 360.0) -> tuple[float, ...]:
     """The positions of a cycle: ``positions = N`` equal steps from the driver's first angle, or
-    ``phi_deg = [...]`` increasing within one revolution with no step over MAX_STEP_DEG."""
+    ``phi_deg = [...]`` increasing within one cycle (one revolution or two) with no step over
+    MAX_STEP_DEG."""
     phi0 = scene.driver.phis_deg[0] if scene.driver.phis_deg else 0.0
     if "positions" in raw and "phi_deg" in raw:
         raise _fail(scene, f"{where}.phi_deg", "give positions or phi_deg, not both")
@@ -104,28 +110,30 @@ def _positions(scene: Scene, raw: dict[str, Any], where: str, *, equal: bool) ->
         if any(b - a < MIN_STEP_DEG for a, b in zip(phis, phis[1:], strict=False)):
             raise _fail(scene, f"{where}.phi_deg", "expected crank angles increasing from position to position "
                                                    f"by at least {MIN_STEP_DEG:g}°")
-        if abs(phis[-1] - phis[0] - 360.0) < 1e-9:
+        if abs(phis[-1] - phis[0] - cycle) < 1e-9:
             phis = phis[:-1]  # the closing position is the first one again
         span = phis[-1] - phis[0]
-        gap = max([b - a for a, b in zip(phis, phis[1:], strict=False)] + [360.0 - span])
-        if span >= 360.0 or gap > MAX_STEP_DEG + 1e-9:
+        gap = max([b - a for a, b in zip(phis, phis[1:], strict=False)] + [cycle - span])
+        if span >= cycle or gap > MAX_STEP_DEG + 1e-9:
+            within = "one revolution" if cycle == 360 else f"one cycle of {cycle:g}°"
             raise _fail(scene, f"{where}.phi_deg",
-                        f"the positions do not close the cycle: they must lie within one revolution "
-                        f"(from {phis[0]:g}° to {phis[0] + 360:g}°) with no step over {MAX_STEP_DEG:g}° "
+                        f"the positions do not close the cycle: they must lie within {within} "
+                        f"(from {phis[0]:g}° to {phis[0] + cycle:g}°) with no step over {MAX_STEP_DEG:g}° "
                         f"(the widest here is {gap:g}°)")
         if equal:
-            closed = phis + [phis[0] + 360.0]
+            closed = phis + [phis[0] + cycle]
             steps = [b - a for a, b in zip(closed, closed[1:], strict=False)]
             if max(steps) - min(steps) > 1e-6:
                 raise _fail(scene, f"{where}.phi_deg",
                             "the diagram does not cover the stroke in equal steps: graphical differentiation "
                             "needs equal steps over the whole revolution (use positions = N)")
         return tuple(phis)
-    n = raw.get("positions", 12)
-    if isinstance(n, bool) or not isinstance(n, int) or n < 4 or n > MAX_POSITIONS:
-        raise _fail(scene, f"{where}.positions", f"expected a whole number of positions from 4 to {MAX_POSITIONS}, "
-                                                 f"got {n!r}")
-    return tuple(phi0 + 360.0 * k / n for k in range(n))
+    n = raw.get("positions", round(12 * cycle / 360))
+    least = max(4, math.ceil(cycle / MAX_STEP_DEG))
+    if isinstance(n, bool) or not isinstance(n, int) or n < least or n > MAX_POSITIONS:
+        raise _fail(scene, f"{where}.positions", f"expected a whole number of positions from {least} to "
+                                                 f"{MAX_POSITIONS}, got {n!r}")
+    return tuple(phi0 + cycle * k / n for k in range(n))
 
 
 def rotor_inertia(scene: Scene) -> float:
@@ -163,9 +171,14 @@ def dynamics_spec(scene: Scene) -> DynamicsSpec:
     steps = raw.get("exact_steps", 3600)
     if isinstance(steps, bool) or not isinstance(steps, int) or not 360 <= steps <= 200000:
         raise _fail(scene, "dynamics.exact_steps", f"expected a whole number from 360 to 200000, got {steps!r}")
+    cycle = raw.get("cycle_deg", 360)
+    if isinstance(cycle, bool) or cycle not in CYCLES:
+        raise _fail(scene, "dynamics.cycle_deg", f"expected 360 (one revolution) or 720 (the four-stroke "
+                                                 f"engine's cycle), got {cycle!r}")
     if scene.driver.omega == 0:
         raise _fail(scene, "driver.omega", "the dynamics needs the mean angular velocity of the crank (ω ≠ 0)")
-    return DynamicsSpec(rotor, delta, driving, _positions(scene, raw, where, equal=False), pole, steps)
+    phis = _positions(scene, raw, where, equal=False, cycle=float(cycle))
+    return DynamicsSpec(rotor, delta, driving, phis, pole, steps * int(cycle) // 360, float(cycle))
 
 
 def diagrams_spec(scene: Scene) -> DiagramsSpec:

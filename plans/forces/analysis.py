@@ -10,6 +10,7 @@ from plans.forces.lever import LeverAnalysis, zhukovsky_lever
 from plans.forces.loads import parse_loads
 from plans.forces.polygons import ForceAnalysis, analyse_forces
 from plans.kinematics.exact import Kinematics
+from plans.scene.friction import parse_friction
 from plans.scene.model import Scene
 
 
@@ -18,5 +19,11 @@ def kinetostatics(scene: Scene, kin: Kinematics) -> tuple[ForceAnalysis, LeverAn
     if not (scene.wants("force_polygons") or scene.wants("lever")):
         return None
     loads = parse_loads(scene)
-    fa = analyse_forces(scene, kin, loads)
+    spec = parse_friction(scene)
+    if spec is not None:  # the successive approximation with friction in the pairs
+        from plans.forces.friction import friction_analysis
+
+        fa = friction_analysis(scene, kin, loads, spec)
+    else:
+        fa = analyse_forces(scene, kin, loads)
     return fa, zhukovsky_lever(fa)

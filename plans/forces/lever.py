@@ -102,7 +102,7 @@ def zhukovsky_lever(fa: ForceAnalysis, scale: float | None = None) -> LeverAnaly
         local = scene.links[f.link].points.get(f.point, f.local)
         v = add(f.label, f.link, _image_name(f.point), local, f.F)
         power += (f.F.conjugate() * v).real  # F·v
-    for m in fa.applied.moments:
+    for m in _on_the_lever(fa.applied.moments, kin):
         for label, link, pt, local, F in _couple(fa, m):
             add(label, link, pt, local, F)
         power += m.M * kin.omega(m.link)  # M·ω, not through the couple's forces
@@ -149,6 +149,25 @@ def _auto_scale(fa: ForceAnalysis) -> float:
             assert v is not None
             fastest = max(fastest, float(np.max(np.abs(v))))
     return nice_scale(fastest)
+
+
+def _on_the_lever(moments: tuple[AppliedMoment, ...], kin: Any) -> list[AppliedMoment]:
+    """The couples as the lever takes them: a link's friction couples (one per pin) summed
+    into one, M_f of that link (the lever moment and the power are the sum's); none on a
+    link that only translates (ω = 0: no lever moment, no power)."""
+    out: list[AppliedMoment] = []
+    friction: dict[int, AppliedMoment] = {}
+    for m in moments:
+        if m.kind != "friction":
+            out.append(m)
+        elif not np.any(kin.omega(m.link)):
+            continue
+        elif m.link in friction:
+            was = friction[m.link]
+            friction[m.link] = AppliedMoment(was.label, m.link, was.M + m.M, "friction")
+        else:
+            friction[m.link] = AppliedMoment(f"M_f{m.link}", m.link, m.M, "friction")
+    return out + list(friction.values())
 
 
 def _couple(fa: ForceAnalysis, m: AppliedMoment):
@@ -278,8 +297,13 @@ def force_json(lv: LeverAnalysis) -> list[dict]:
             if m.kind == "inertia":
                 inertia.setdefault(str(m.link), {"force": [0.0, 0.0], "moment": 0.0})["moment"] = float(m.M[k])
         loads = {f.label: _xy(complex(f.F[k])) for f in fa.applied.forces}
-        out.append({"reactions": reactions, "reaction_points": points, "balancing": bal,
-                    "inertia": inertia, "loads": loads})
+        entry = {"reactions": reactions, "reaction_points": points, "balancing": bal,
+                 "inertia": inertia, "loads": loads}
+        if fa.friction is not None:
+            from plans.forces.friction import friction_json
+
+            entry["friction"] = friction_json(fa.friction, fa, k)
+        out.append(entry)
     return out
 
 
@@ -416,4 +440,8 @@ def table_lines(fa: ForceAnalysis, lv: LeverAnalysis, k: int) -> list[str]:
     lines.append(f"  balancing {fa.crank.kind}: by kinetostatics {clean(float(fa.balancing[k]), cyc):.6g} {unit}, "
                  f"by lever {'-' if b is None else f'{clean(float(b), cyc):.6g}'} {unit} (positive along the motion of "
                  f"{fa.crank.point})")
+    if fa.friction is not None:
+        from plans.forces.friction import friction_lines
+
+        lines += friction_lines(fa, k)
     return lines

@@ -35,6 +35,12 @@ lengths in the file's ``unit`` (or strings such as ``"82 mm"``).
     # indicator diagram instead of `pressure`: pressure over piston travel s measured
     # from the outer dead centre (file unit), one table per stroke; must cover 0..H
     # diagram = { down = [[0, 50], [35, 20], [70, 2]], up = [[0, 8], [70, 0]] }
+    # a four-stroke cylinder: one table per stroke of the 720° cycle, and the crank angle
+    # of its ignition (the outer dead centre nearest to it; default 360, intake from 0)
+    # diagram = { intake = [...], compression = [...], expansion = [...], exhaust = [...] }
+    # fires_deg = 360
+    # the course's standard diagram: travel = "fraction" (s/H from 0 to 1) and p_max = 5
+    # (in pressure_unit): the tables' pressures are then fractions of p_max
 
     [[loads.force]]            # an external force at a named point of a link
     link = 3
@@ -44,10 +50,16 @@ lengths in the file's ``unit`` (or strings such as ``"82 mm"``).
                                #   (along = deg: only the velocity's sign along that axis counts;
                                #    stroke = "positive" | "negative": act only on that stroke)
     name = "F_c"               # label on the polygons and the lever (default F_ext<k>)
+    # or a gas force by its pressure over the cycle's crank angle, on a piston along its
+    # guide toward the crank: area = 0.00528 (m²) or bore = 82 (file unit), and
+    # pressure_table = [[0, 0], [360, 5e6], ..., [720, 0]]  (φ deg over 0..360 or 0..720, Pa)
 
     [[loads.moment]]           # an external moment on a link
     link = 4
-    value = -20                # N·m ccw+; or resisting = 20 (opposite ω of the link)
+    value = -20                # N·m ccw+; or resisting = 20 (opposite ω of the link);
+                               # or a turning-moment diagram over the cycle (φ the crank's):
+                               # table = [[0, 0], [90, 600], ..., [360, 0]]  (φ deg, N·m)
+                               # expression = "600*sin(2*phi) - 500*sin(phi)"  (φ in rad)
     name = "M_c"
 
 Sign of the balancing force in the results: positive along the velocity of
@@ -92,6 +104,9 @@ class GasLoad:
     name: str
     outer: float = 0.0  # travel coordinate of the outer dead centre (diagram only), m
     stroke: float = 0.0  # H, m (diagram only)
+    fires: float | None = None  # four-stroke: crank angle given for the ignition, deg
+    phi_table: tuple[R, R] | None = None  # pressure over the cycle's crank angle (deg, Pa)
+    period: float = 360.0  # the cycle of phi_table, deg
 
 
 @frozen
@@ -115,6 +130,9 @@ class MomentLoad:
     value: float | None
     resisting: float | None
     name: str
+    table: tuple[R, R] | None = None  # a turning-moment diagram (φ deg, N·m)
+    expression: Any = None  # or a formula of φ (rad), plans.expression.Expression
+    period: float = 360.0  # the cycle the diagram covers, deg
 
 
 @frozen
@@ -142,6 +160,28 @@ class Loads:
 
 
 _LOAD_KEYS = {"gravity", "inertia", "lever_turn", "balancing", "mass_rule", "gas", "force", "moment"}
+FOUR_STROKES = ("intake", "compression", "expansion", "exhaust")
+
+
+def cycle_of(scene: Scene) -> float:
+    """The working cycle in crank degrees: 720 when ``[dynamics] cycle_deg = 720``, else 360
+    (the dynamics' reader checks the value itself)."""
+    dyn = scene.raw.get("dynamics")
+    return 720.0 if isinstance(dyn, dict) and dyn.get("cycle_deg") == 720 else 360.0
+
+
+def _cycle_table(r: Reader, rows: Any, field: str, what: str, scale: float = 1.0) -> tuple[R, R]:
+    """A diagram over the cycle's crank angle: rows [φ deg, value] from 0 to 360 or 720."""
+    if not (isinstance(rows, list) and len(rows) >= 2 and all(isinstance(x, list) and len(x) == 2 for x in rows)):
+        raise r.fail(field, f"expected at least two rows [phi_deg, {what}] from 0 to 360 (or 720)")
+    phi = np.array([r.value(x[0], field) for x in rows])
+    val = np.array([r.value(x[1], field) for x in rows]) * scale
+    if np.any(np.diff(phi) <= 0):
+        raise r.fail(field, "expected crank angles increasing from row to row")
+    if phi[0] != 0 or phi[-1] not in (360.0, 720.0):
+        raise r.fail(field, f"the table covers {phi[0]:g}..{phi[-1]:g}°; expected the whole cycle, from 0 to 360 "
+                            f"(or to 720 for a four-stroke cycle)")
+    return phi, val
 
 
 def parse_loads(scene: Scene) -> Loads:
@@ -281,7 +321,11 @@ def _parse_loads(scene: Scene) -> Loads:
         if not isinstance(body, dict):
             raise fail(f"loads.gas[{k}]", "expected a table")
         check_keys(body, ("link", "diameter", "area", "area_unit", "pressure", "pressure_unit", "strokes",
-                          "direction", "diagram", "name"), file=path, where=where)
+                          "direction", "diagram", "name", "fires_deg", "p_max", "travel"), file=path, where=where)
+        for key in ("p_max", "travel"):
+            if key in body and "diagram" not in body:
+                raise fail(f"{where}{key}", "goes with an indicator diagram (diagram = {...})")
+        fraction = r.choice(body, "travel", where, ("length", "fraction"), "length") == "fraction"
         if "diameter" in body and "area" in body:
             raise fail(f"{where}area", "give diameter or area, not both")
         lid = moving_link(body, where)
@@ -312,16 +356,30 @@ def _parse_loads(scene: Scene) -> Loads:
             pressure = number(body, "pressure", where) * scale
         elif "diagram" in body:
             diag = body["diagram"]
-            if not isinstance(diag, dict) or not diag or not set(diag) <= {"down", "up"}:
-                raise fail(f"{where}diagram", "expected { down = [[s, p], ...], up = [[s, p], ...] }")
+            four = isinstance(diag, dict) and bool(diag) and set(diag) <= set(FOUR_STROKES)
+            if four:
+                lost = [k for k in FOUR_STROKES if k not in diag]
+                if lost:
+                    raise fail(f"{where}diagram", f"a four-stroke diagram needs a table for each stroke; "
+                                                  f"{lost[0]} is missing")
+                if "strokes" in body:
+                    raise fail(f"{where}strokes", "a four-stroke diagram acts on every stroke; drop strokes")
+            elif not isinstance(diag, dict) or not diag or not set(diag) <= {"down", "up"}:
+                raise fail(f"{where}diagram", "expected { down = [[s, p], ...], up = [[s, p], ...] } or the "
+                                              "four strokes { intake, compression, expansion, exhaust }")
             outer, stroke_len = _stroke(scene, pj[0].name, lid)
+            # the pressures as given, or fractions of p_max (in pressure_unit)
+            unit_p = number(body, "p_max", where, positive=True) * scale if "p_max" in body else scale
             for side, table in diag.items():
                 f = f"{where}diagram.{side}"
                 if not (isinstance(table, list) and len(table) >= 2
                         and all(isinstance(row, list) and len(row) == 2 for row in table)):
                     raise fail(f, "expected at least two rows [travel, pressure]")
-                s = np.array([length(row[0], f, positive=False) for row in table])
-                p = np.array([number({"p": row[1]}, "p", f + ".") for row in table]) * scale
+                if fraction:  # the course's standard diagram: travel in fractions of H, p of p_max
+                    s = np.array([r.value(row[0], f, nonneg=True) for row in table]) * stroke_len
+                else:
+                    s = np.array([length(row[0], f, positive=False) for row in table])
+                p = np.array([number({"p": row[1]}, "p", f + ".") for row in table]) * unit_p
                 if np.any(np.diff(s) <= 0):
                     raise fail(f, "expected travel increasing from row to row")
                 tol = 1e-6 * stroke_len
@@ -329,14 +387,22 @@ def _parse_loads(scene: Scene) -> Loads:
                     raise fail(f, f"the table covers travel {s[0] * 1e3:.6g}..{s[-1] * 1e3:.6g} mm but the "
                                   f"stroke is 0..{stroke_len * 1e3:.6g} mm")
                 diagram[side] = (s, p)
-            missing = [s for s in strokes if s not in diagram]
+            missing = [] if four else [s for s in strokes if s not in diagram]
             if missing:
                 raise fail(f"{where}diagram", f"no table for the {missing[0]!r} stroke listed in strokes")
         else:
             raise fail(f"{where}pressure", "missing pressure (or an indicator diagram)")
+        fires = None
+        if "fires_deg" in body:
+            if not (diagram and set(diagram) == set(FOUR_STROKES)):
+                raise fail(f"{where}fires_deg", "the ignition angle belongs to a four-stroke diagram "
+                                                "{ intake, compression, expansion, exhaust }")
+            fires = r.value(body["fires_deg"], f"{where}fires_deg", limit=1e6)
+        elif diagram and set(diagram) == set(FOUR_STROKES):
+            fires = 360.0  # the course's cycle: intake from 0°, ignition at 360°
         gas.append(GasLoad(link=lid, joint=pj[0].name, area=area, pressure=pressure, diagram=diagram,
                            strokes=tuple(strokes), toward_pivot=direction == "toward_pivot",
-                           name=label(body, where, f"P{lid}"), outer=outer, stroke=stroke_len))
+                           name=label(body, where, f"P{lid}"), outer=outer, stroke=stroke_len, fires=fires))
 
     # ---- external forces and moments
     forces = []
@@ -348,7 +414,10 @@ def _parse_loads(scene: Scene) -> Loads:
         if not isinstance(body, dict):
             raise fail(f"loads.force[{k}]", "expected a table")
         check_keys(body, ("link", "point", "vector", "magnitude", "angle_deg", "resisting", "along", "stroke",
-                          "name"), file=path, where=where)
+                          "name", "area", "bore", "pressure_table"), file=path, where=where)
+        if "pressure_table" in body or "area" in body or "bore" in body:
+            gas.append(_pressure_force(scene, r, body, where, k, moving_link, length))
+            continue
         given = [key for key in ("vector", "magnitude", "resisting") if key in body]
         if len(given) > 1:
             raise fail(f"{where}{given[1]}", f"give one of vector, magnitude or resisting, not {' and '.join(given)}")
@@ -390,22 +459,114 @@ def _parse_loads(scene: Scene) -> Loads:
         where = f"loads.moment[{k}]."
         if not isinstance(body, dict):
             raise fail(f"loads.moment[{k}]", "expected a table")
-        check_keys(body, ("link", "value", "resisting", "name"), file=path, where=where)
-        if "value" in body and "resisting" in body:
-            raise fail(f"{where}resisting", "give value or resisting, not both")
+        check_keys(body, ("link", "value", "resisting", "name", "table", "expression"), file=path, where=where)
+        given = [key for key in ("value", "resisting", "table", "expression") if key in body]
+        if len(given) > 1:
+            raise fail(f"{where}{given[1]}", f"give one of value, resisting, table or expression, not both "
+                                             f"{given[0]} and {given[1]}")
         lid = moving_link(body, where)
+        if "table" in body:
+            tab = _cycle_table(r, body["table"], f"{where}table", "M")
+            moments.append(MomentLoad(lid, None, None, label(body, where, f"M{lid}"), table=tab,
+                                      period=float(tab[0][-1])))
+            continue
+        if "expression" in body:
+            from plans.expression import check_finite, parse
+
+            expr = parse(body["expression"], file=path, field=f"{where}expression")
+            period = cycle_of(scene)
+            check_finite(expr, np.radians(np.linspace(0.0, period, 7201)), file=path, field=f"{where}expression")
+            moments.append(MomentLoad(lid, None, None, label(body, where, f"M{lid}"), expression=expr,
+                                      period=period))
+            continue
         if "value" in body:
             moments.append(MomentLoad(lid, number(body, "value", where), None, label(body, where, f"M{lid}")))
         elif "resisting" in body:
             moments.append(MomentLoad(lid, None, number(body, "resisting", where, nonneg=True),
                                       label(body, where, f"M_c{lid}")))
         else:
-            raise fail(f"{where}value", "expected value = N·m (ccw+) or resisting = N·m")
+            raise fail(f"{where}value", "expected value = N·m (ccw+), resisting = N·m, table = [[phi_deg, M], ...] "
+                                        "or expression = \"...\"")
 
     return Loads(masses=masses, inertias=inertias, centres=centres, g=g,
                  offset_inertia=inertia_mode == "offset_force", lever_turn=1 if turn == "ccw" else -1,
                  balancing=Balancing(kind, bpoint), gas=tuple(gas), forces=tuple(forces),
                  moments=tuple(moments))
+
+
+def _pressure_force(scene: Scene, r: Reader, body: dict[str, Any], where: str, k: int, moving_link: Any,
+                    length: Any) -> GasLoad:
+    """``[[loads.force]]`` given by its pressure over the cycle's crank angle: a gas force on a
+    piston, along its guide toward the crank, F = p(φ)·A."""
+    for key in ("vector", "magnitude", "angle_deg", "resisting", "along", "stroke"):
+        if key in body:
+            raise r.fail(f"{where}{key}", "a force by pressure_table acts along the piston's guide; give "
+                                          "area (or bore) and pressure_table alone")
+    if "pressure_table" not in body:
+        raise r.fail(f"{where}pressure_table", "expected pressure_table = [[phi_deg, p_Pa], ...] with area or bore")
+    if ("area" in body) == ("bore" in body):
+        raise r.fail(f"{where}area", "expected the piston's area = m² or its bore (one of them)")
+    lid = moving_link(body, where)
+    pj = [j for j in scene.joints if j.kind == "P" and j.guide is not None and j.slider == lid]
+    if len(pj) != 1:
+        raise r.fail(f"{where}link", f"link {lid} is not a piston: it must slide on exactly one guide")
+    if "point" in body and body["point"] != pj[0].point:
+        raise r.fail(f"{where}point", f"a pressure acts on the piston at its joint point {pj[0].point!r}")
+    if "area" in body:
+        area = r.number(body, "area", where, positive=True)
+    else:
+        area = math.pi * length(body["bore"], f"{where}bore") ** 2 / 4
+    tab = _cycle_table(r, body["pressure_table"], f"{where}pressure_table", "p_Pa")
+    return GasLoad(link=lid, joint=pj[0].name, area=area, pressure=None, diagram={}, strokes=("down", "up"),
+                   toward_pivot=True, name=r.name(body.get("name", f"P{lid}"), f"{where}name"),
+                   phi_table=tab, period=float(tab[0][-1]))
+
+
+def _cycle_phase(scene: Scene, kin: Any, period: float) -> R:
+    """The crank angle within the cycle, 0 <= φ < period (deg)."""
+    return np.mod(np.asarray(kin.phi_deg, float), period)
+
+
+def ignition(scene: Scene, gl: GasLoad) -> float:
+    """The crank angle (deg) of a four-stroke cylinder's ignition: the piston's outer dead
+    centre nearest to ``fires_deg``, found where its velocity along the guide turns toward
+    the crank (to round-off)."""
+    from plans.kinematics.exact import solve  # late import: only four-stroke diagrams need it
+
+    assert gl.fires is not None
+    key = ("ignition", gl.joint, gl.link, gl.fires)
+    if key in scene.memo:
+        return scene.memo[key]
+    joint = next(j for j in scene.joints if j.name == gl.joint)
+    guide = joint.guide
+    assert guide is not None
+    z = scene.links[gl.link].points[joint.point]
+
+    def speed(at: Any) -> R:  # the piston's velocity toward the crank's pivot (its travel's rate)
+        kin = solve(scene, np.asarray(at, float), order=1)
+        r, v, _ = kin.point_on(gl.link, z)
+        u: Any = guide.direction if guide.link == scene.frame else kin.motion[guide.link].rot * guide.direction
+        return (v * np.conj(_toward_pivot(scene, r, u))).real * np.sign(scene.driver.omega)
+
+    phis = gl.fires + np.linspace(-180.0, 180.0, 361)
+    try:
+        t = _travel(scene, solve(scene, phis, order=0), gl.joint, gl.link)
+        k = int(np.argmin(t))
+        lo, hi = float(phis[max(k - 1, 0)]), float(phis[min(k + 1, 360)])
+        for _ in range(8):  # 64 samples a step: the bracket where the travel turns shrinks 64 times
+            grid = np.linspace(lo, hi, 65)
+            up = speed(grid) > 0
+            j = int(np.argmax(up)) if np.any(up) and not up[0] else 0
+            if j == 0:
+                break
+            lo, hi = float(grid[j - 1]), float(grid[j])
+            if hi - lo < 1e-13:
+                break
+    except ConstructionError as exc:
+        raise InputError(f"a four-stroke diagram needs the crank to turn a full revolution ({exc})",
+                         file=scene.path, field="loads.gas") from None
+    out = scene.memo[key] = 0.5 * (lo + hi)
+    return out
 
 
 def _stroke(scene: Scene, joint_name: str, link: int) -> tuple[float, float]:
@@ -572,7 +733,11 @@ def apply_loads(scene: Scene, loads: Loads, kin: Any) -> AppliedLoads:
                 F = -fl.resisting * sv * e
         forces.append(AppliedForce(fl.name, fl.link, fl.point, r, np.full(n, z), F.astype(complex), "external"))
     for ml in loads.moments:
-        if ml.value is not None:
+        if ml.table is not None:
+            M = np.interp(_cycle_phase(scene, kin, ml.period), ml.table[0], ml.table[1])
+        elif ml.expression is not None:
+            M = ml.expression(np.radians(_cycle_phase(scene, kin, ml.period)))
+        elif ml.value is not None:
             M = np.full(n, ml.value)
         else:
             assert ml.resisting is not None
@@ -609,7 +774,11 @@ def _gas_force(scene: Scene, kin: Any, gl: GasLoad) -> AppliedForce:
     moving = np.abs(vd) > DUST * abs(scene.driver.omega) * _extent(kin)
     down = np.where(moving, vd > 0, ad >= 0)
     p: Any
-    if gl.pressure is not None:
+    if gl.phi_table is not None:
+        p = np.interp(_cycle_phase(scene, kin, gl.period), gl.phi_table[0], gl.phi_table[1])
+    elif gl.fires is not None:
+        p = _four_stroke(scene, kin, gl, down)
+    elif gl.pressure is not None:
         p = gl.pressure  # the same at every position
     else:
         # travel from the outer dead centre (the extreme position away from the pivot)
@@ -619,7 +788,9 @@ def _gas_force(scene: Scene, kin: Any, gl: GasLoad) -> AppliedForce:
             if side in gl.diagram:
                 ts, ps = gl.diagram[side]
                 p = np.where(mask, np.interp(s, ts, ps), p)
-    if "down" in gl.strokes:
+    if gl.fires is not None or gl.phi_table is not None:
+        active = np.ones(kin.n, dtype=bool)  # the diagram says the pressure on every stroke
+    elif "down" in gl.strokes:
         active = np.ones(kin.n, dtype=bool) if "up" in gl.strokes else down
     else:
         active = ~down if "up" in gl.strokes else np.zeros(kin.n, dtype=bool)
@@ -627,3 +798,24 @@ def _gas_force(scene: Scene, kin: Any, gl: GasLoad) -> AppliedForce:
     F = np.where(active, p * gl.area, 0.0) * direction
     return AppliedForce(gl.name, gl.link, joint.point, r, _same(kin.n, z), F, "gas")
 
+
+
+def stroke_index(scene: Scene, kin: Any, gl: GasLoad, down: Any) -> Any:
+    """Which of the four strokes each position is in (0 intake, 1 compression, 2 expansion,
+    3 exhaust): the revolution after the ignition's outer dead centre is expansion (toward
+    the crank) then exhaust, the next intake then compression."""
+    psi = np.mod(np.asarray(kin.phi_deg, float) - ignition(scene, gl), 720.0)
+    # a dead centre met to round-off is the one the angle names: 360 begins the intake, 720 the expansion
+    psi = np.where(np.abs(psi - 360.0) < 1e-7, 360.0, np.where(psi > 720.0 - 1e-7, 0.0, psi))
+    first = psi < 360.0
+    return np.where(first, np.where(down, 2, 3), np.where(down, 0, 1))
+
+
+def _four_stroke(scene: Scene, kin: Any, gl: GasLoad, down: Any) -> R:
+    s = np.clip(_travel(scene, kin, gl.joint, gl.link) - gl.outer, 0.0, gl.stroke)
+    k = stroke_index(scene, kin, gl, down)
+    p = np.zeros(kin.n)
+    for j, name in enumerate(FOUR_STROKES):
+        ts, ps = gl.diagram[name]
+        p = np.where(k == j, np.interp(s, ts, ps), p)
+    return p

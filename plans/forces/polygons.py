@@ -148,6 +148,8 @@ class ForceAnalysis:
     applied: AppliedLoads
     groups: tuple[GroupForces, ...]  # in solving order: farthest first
     crank: CrankForces
+    #: the successive approximation with friction (plans.forces.friction.FrictionResult), or None
+    friction: Any = None
     #: what every position's table and polygons read again, worked out once (read-only arrays)
     memo: dict[str, Any] = field(default_factory=dict, init=False, repr=False, compare=False)
 
@@ -207,7 +209,12 @@ def analyse_forces(scene: Scene, kin: Kinematics, loads: Loads | None = None) ->
     if kin.order < 2:
         raise ValueError("force analysis needs accelerations: solve(scene, order=2)")
     loads = parse_loads(scene) if loads is None else loads
-    applied = apply_loads(scene, loads, kin)
+    return solve_applied(scene, kin, loads, apply_loads(scene, loads, kin))
+
+
+def solve_applied(scene: Scene, kin: Kinematics, loads: Loads, applied: AppliedLoads) -> ForceAnalysis:
+    """The groups and the crank in equilibrium under ``applied``.  Linear in the loads: a
+    load's arrays may carry a leading axis (several load cases at once, by superposition)."""
     forces: dict[int, list[AppliedForce]] = {k: [] for k in scene.links}
     moments: dict[int, list[AppliedMoment]] = {k: [] for k in scene.links}
     for f in applied.forces:
@@ -242,7 +249,7 @@ def _bound(kin: Kinematics, link: int, r: C, F: C, label: str, point: str) -> Ap
 def _sum(fs: list[AppliedForce] | tuple[AppliedForce, ...], n: int) -> C:
     out = np.zeros(n, complex)
     for f in fs:
-        out += f.F
+        out = out + f.F  # not in place: a load may carry several cases (a leading axis)
     return out
 
 
@@ -250,9 +257,9 @@ def _moment(fs, ms, P: C, n: int) -> R:
     """ΣM about P of the forces (cross(r − P, F)) and couples, ccw+."""
     out = np.zeros(n)
     for f in fs:
-        out += cross(f.r - P, f.F)
+        out = out + cross(f.r - P, f.F)
     for m in ms:
-        out += m.M
+        out = out + m.M
     return out
 
 
@@ -595,6 +602,11 @@ class _Poly:
         words = why if isinstance(why, Phrase) else phrase("f_sum", x=why)
         self.steps.append(("closing", (a, b), label, phrase("f_join", label=label, a=a, b=b, why=words)))
 
+    def total(self, friction: str, normal: str, x: str) -> None:
+        """A slide's total reaction N + F_f where its friction was laid just before N."""
+        if friction in self.ends and self.ends[friction][1] == self.ends[normal][0]:
+            self.join(f"{normal}Σ", self.ends[friction][0], x, f"{normal} + {friction}")
+
     def end_of(self, labels: list[str], default: str) -> str:
         for lab in reversed(labels):
             if lab in self.ends:
@@ -625,6 +637,10 @@ def force_polygons(fa: ForceAnalysis, k: int) -> tuple[ForcePolygon, ...]:
         n1, n2, n3 = (rc.name(scene.fij) for rc in gf.reactions)
         li = [(f.label, complex(f.F[k])) for f in gf.loads_i]
         lj = [(f.label, complex(f.F[k])) for f in gf.loads_j]
+        # a slide's friction on j laid last: then it and the guide's normal reaction make the
+        # total reaction, leaning by the friction angle (F_ijΣ, drawn as their sum)
+        slide_f = f"Ff{n3[1:]}" if r3.guide is not None else ""
+        lj = [x for x in lj if x[0] != slide_f] + [x for x in lj if x[0] == slide_f]
         everything = [v for _, v in li + lj] + [complex(rc.F[k]) for rc in gf.reactions]
         poly = _Poly(mu_force(fa, everything))
         if g.kind in ("RRR", "RRP"):
@@ -646,6 +662,7 @@ def force_polygons(fa: ForceAnalysis, k: int) -> tuple[ForcePolygon, ...]:
             else:
                 assert r3.guide is not None
                 x = poly.intersect(n3, complex(1j * r3.guide[k]), f"{n1}^n", complex(r1.e_n[k]))
+                poly.total(slide_f, n3, x)
             poly.join(n1, x, poly.end_of([tau1], "o"), f"{n1}^n + {n1}^τ")
             poly.join(n2, end_i, x, phrase("f_closes_link", i=i))
         elif g.kind == "PRP":
@@ -656,6 +673,7 @@ def force_polygons(fa: ForceAnalysis, k: int) -> tuple[ForcePolygon, ...]:
             for lab, v in lj:
                 poly.lay(lab, v)
             x = poly.intersect(n3, complex(1j * r3.guide[k]), n1, complex(1j * r1.guide[k]))
+            poly.total(slide_f, n3, x)
             poly.join(n2, end_i, x, phrase("f_closes_link", i=i))
         elif g.kind == "RPP":
             assert r2.guide is not None and r3.guide is not None

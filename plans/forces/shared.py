@@ -17,7 +17,9 @@ if TYPE_CHECKING:
 C = NDArray[np.complex128]
 R = NDArray[np.float64]
 
-_all = np.logical_and.reduce  # every element true (non-zero), without ndarray.all's Python wrapper
+def _all(x: np.ndarray) -> bool:
+    """Every element true (non-zero), without ndarray.all's Python wrapper (any shape)."""
+    return bool(np.logical_and.reduce(x, axis=None))
 
 #: What a draftsman reads off a ruler, mm (readings are rounded to this).
 RULER_MM = 0.5

@@ -161,11 +161,14 @@ MAX_POSITIONS = 3600
 
 #: Keys of each table of a linkage scene (the readers of loads and [sheet] check their own).
 TOP_KEYS = {"format", "kind", "title", "unit", "frame", "points", "links", "joints", "driver", "branches",
-            "outputs", "scales", "fij", "loads", "sheet", "diagrams", "dynamics"}
+            "outputs", "scales", "fij", "loads", "sheet", "diagrams", "dynamics",
+            "friction"}  # [friction]: plans.scene.friction
 LINK_KEYS = {"name", "axis", "length", "points", "mass", "inertia", "centre"}
-JOINT_KEYS = {"kind", "links", "point", "guide", "slider_angle_deg"}
+JOINT_KEYS = {"kind", "links", "point", "guide", "slider_angle_deg",
+              "f", "pin_radius", "friction_circle"}  # friction: plans.scene.friction
 GUIDE_KEYS = {"link", "through", "toward", "angle_deg", "offset"}
-DRIVER_KEYS = {"link", "omega", "omega_rpm", "sense", "eps", "phi_ref_deg", "phi_deg", "positions", "phi0_deg"}
+DRIVER_KEYS = {"link", "omega", "omega_rpm", "sense", "eps", "phi_ref_deg", "phi_deg", "positions", "phi0_deg",
+               "s_mm", "s_fraction", "s_stroke", "piston"}  # positions by the piston's travel: kinematics.travel
 #: ω at most 1e6 rad/s, and 0 or at least 1e-6 rad/s (a slower crank makes plan scales overflow).
 OMEGA_LIMIT = 1e6
 
@@ -242,9 +245,14 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
     outputs = _outputs(r, data)
     scales, style = _scales(r, data)
     fij = r.choice(data, "fij", "", FIJ_CONVENTIONS, "on_i_from_j")
-    return Scene(path=path, title=title, frame=frame, frame_points=frame_points, links=links,
-                 joints=joints, driver=driver, branches=branches, outputs=outputs,
-                 scales=scales, scale_style=style, fij=fij, raw=data, titles=titles)
+    scene = Scene(path=path, title=title, frame=frame, frame_points=frame_points, links=links,
+                  joints=joints, driver=driver, branches=branches, outputs=outputs,
+                  scales=scales, scale_style=style, fij=fij, raw=data, titles=titles)
+    if isinstance(data.get("driver"), dict) and ("s_mm" in data["driver"] or "s_fraction" in data["driver"]):
+        from plans.kinematics.travel import by_travel
+
+        scene = by_travel(scene, r)
+    return scene
 
 
 def _link_id(r: Reader, key: str) -> int:
@@ -450,6 +458,8 @@ def _driver(r: Reader, data: dict[str, Any], frame: int, frame_points: dict[str,
         phis = tuple(phi0 + 360.0 * k / n for k in range(n))
     else:
         raw = d.get("phi_deg")
+        if raw is None and ("s_mm" in d or "s_fraction" in d) and "phi_deg" not in d:
+            raw = 0.0  # placed by the piston's travel once the scene is built
         if raw is None:
             raise r.fail("driver.phi_deg", "missing crank angle(s): phi_deg = 45, a list, or positions = N")
         values = raw if isinstance(raw, list) else [raw]

@@ -1,0 +1,114 @@
+"""A position given by the piston's travel from its dead centre, as textbooks state it.
+
+``[driver] s_mm = 20`` (or a list), or ``s_fraction = 0.25`` of the stroke H: the crank
+angle at which the piston has travelled that far from its outer dead centre (the one
+away from the crank), on the stroke toward the crank (``s_stroke = "down"``, the
+default) or on the way back (``"up"``).  ``piston = 3`` names the piston when the
+mechanism has several.  The angle is found where the exact travel crosses the value, by
+bisection to round-off; the outer dead centre likewise, where the travel is least.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from typing import Any
+
+import numpy as np
+
+from plans.errors import ConstructionError, InputError
+from plans.reader import Reader
+from plans.scene.model import Scene
+
+KEYS = ("s_mm", "s_fraction", "s_stroke", "piston")
+
+
+def wanted(data: dict[str, Any]) -> bool:
+    d = data.get("driver")
+    return isinstance(d, dict) and ("s_mm" in d or "s_fraction" in d)
+
+
+def by_travel(scene: Scene, r: Reader) -> Scene:
+    """The scene with its driver's positions at the travels asked for."""
+    from plans.forces.loads import _toward_pivot, _travel
+    from plans.kinematics.exact import solve
+
+    d = scene.raw["driver"]
+    if "s_mm" in d and "s_fraction" in d:
+        raise r.fail("driver.s_fraction", "give s_mm or s_fraction, not both")
+    for other in ("phi_deg", "positions"):
+        if other in d:
+            raise r.fail(f"driver.{other}", "the positions are given by the piston's travel (s_mm or s_fraction); "
+                                            f"drop {other}")
+    key = "s_mm" if "s_mm" in d else "s_fraction"
+    raw = d[key] if isinstance(d[key], list) else [d[key]]
+    if not raw or len(raw) > 360:
+        raise r.fail(f"driver.{key}", "expected 1 to 360 travels")
+    values = [r.value(v, f"driver.{key}", nonneg=True) for v in raw]
+    stroke = r.choice(d, "s_stroke", "driver.", ("down", "up"), "down")
+    pistons = [j for j in scene.joints if j.kind == "P" and j.guide is not None and j.guide.link == scene.frame]
+    if "piston" in d:
+        pistons = [j for j in pistons if j.slider == d["piston"] and not isinstance(d["piston"], bool)]
+        if not pistons:
+            raise r.fail("driver.piston", f"link {d['piston']!r} is not a piston sliding on a guide of the frame")
+    elif len({j.slider for j in pistons}) != 1:
+        raise r.fail("driver.piston" if pistons else f"driver.{key}",
+                     "name the piston: piston = link number" if pistons else
+                     "a position by travel needs a piston sliding on a guide of the frame")
+    joint = pistons[0]
+    guide = joint.guide
+    assert guide is not None
+    probe = dataclasses.replace(scene, driver=dataclasses.replace(scene.driver, phis_deg=(0.0,)))
+    grid = np.linspace(0.0, 360.0, 721)
+    try:
+        t = _travel(probe, solve(probe, grid, order=0), joint.name, joint.slider)
+        lo_k, hi_k = int(np.argmin(t[:-1])), int(np.argmax(t[:-1]))
+
+        def travel(phis: Any) -> Any:
+            return _travel(probe, solve(probe, np.asarray(phis, float), order=0), joint.name, joint.slider)
+
+        def speed(phis: Any) -> Any:  # along the guide, toward the crank's pivot
+            kin = solve(probe, np.asarray(phis, float), order=1)
+            B, v = kin.point(joint.point, joint.slider)[:2]
+            u: Any = guide.direction
+            return (v * np.conj(_toward_pivot(probe, B, u))).real * np.sign(probe.driver.omega)
+
+        odc = _dead_centre(speed, grid[lo_k])
+        idc = _dead_centre(speed, grid[hi_k])
+        t0, H = float(travel([odc])[0]), float(travel([idc])[0]) - float(travel([odc])[0])
+        a, b = (odc, idc if idc > odc else idc + 360.0) if stroke == "down" else \
+            (idc, odc if odc > idc else odc + 360.0)
+        want = np.array([v / 1000.0 if key == "s_mm" else v * H for v in values])
+        if np.any(want > H * (1 + 1e-12)):
+            top = H * 1000 if key == "s_mm" else 1.0
+            raise r.fail(f"driver.{key}", f"expected a travel within the stroke, 0..{top:.6g}"
+                                          f"{' mm' if key == 's_mm' else ''}")
+        lo, hi = np.full(len(want), a), np.full(len(want), b)
+        sign = 1.0 if stroke == "down" else -1.0
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            below = sign * (travel(mid) - t0 - want) < 0
+            lo, hi = np.where(below, mid, lo), np.where(below, hi, mid)
+    except ConstructionError as exc:
+        raise InputError(f"a position by the piston's travel needs the crank to turn a full revolution ({exc})",
+                         file=scene.path, field=f"driver.{key}") from None
+    # the ends of the stroke are the dead centres themselves (the travel is flat there)
+    inner, outer = (b, a) if stroke == "down" else (a, b)
+    at = np.where(want >= H * (1 - 1e-12), inner, np.where(want <= 1e-12 * H, outer, 0.5 * (lo + hi)))
+    phis = tuple(float(x) for x in np.mod(at, 360.0))
+    return dataclasses.replace(scene, driver=dataclasses.replace(scene.driver, phis_deg=phis))
+
+
+def _dead_centre(speed: Any, near: float) -> float:
+    """The crank angle near ``near`` (within 0.5°) where the piston's speed changes sign."""
+    lo, hi = near - 0.5, near + 0.5
+    f_lo = float(speed([lo])[0])
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        f = float(speed([mid])[0])
+        if f == 0:
+            return mid % 360.0
+        if (f > 0) == (f_lo > 0):
+            lo, f_lo = mid, f
+        else:
+            hi = mid
+    return float(0.5 * (lo + hi)) % 360.0
