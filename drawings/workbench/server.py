@@ -173,7 +173,8 @@ class Workbench:
             except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError):
                 continue
             kind = _kind(data)
-            out.setdefault(kind, []).append({"path": self.rel(p), "title": _title(data, p.stem)})
+            out.setdefault(kind, []).append({"path": self.rel(p), "title": _title(data, p.stem),
+                                             "titles": _titles(data)})
         return {"folder": self.root.name, "files": out}
 
     async def samples(self, request: Request) -> Response:
@@ -305,6 +306,11 @@ def _title(data: dict[str, Any], default: str) -> str:
     return t if isinstance(t, str) else default
 
 
+def _titles(data: dict[str, Any]) -> dict[str, str] | None:
+    t = data.get("title")
+    return {str(k): v for k, v in t.items() if isinstance(v, str)} if isinstance(t, dict) else None
+
+
 def _jsonable(x: Any) -> Any:
     if isinstance(x, dict):
         return {str(k): _jsonable(v) for k, v in x.items()}
@@ -339,7 +345,7 @@ def _samples() -> list[dict[str, Any]]:
             continue
         text = p.read_text(encoding="utf-8")
         data = tomllib.loads(text)
-        out.append({"name": name, "title": _title(data, name), "text": text})
+        out.append({"name": name, "title": _title(data, name), "titles": _titles(data), "text": text})
     return out
 
 

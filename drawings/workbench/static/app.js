@@ -12,12 +12,67 @@
   const f3 = (x) => (Math.round(x * 1000) / 1000).toString();
   const num = (x) => (x === undefined || x === null ? "" : Number(x.toPrecision(5)).toString());
 
+  // ------------------------------------------------------------------ the page's language
+  const WORDS = {
+    en: {gallery: "the gallery", workbench: "workbench", save: "Save", page: "Page", check: "Check…",
+      page_tip: "the demonstration page (plans demo)", check_tip: "a blank check file for this scene: type in a student's figures",
+      start: "Start from a course mechanism", files_of: "Files of", scheme: "Scheme", velocity_plan: "Velocity plan",
+      acceleration_plan: "Acceleration plan", forces: "Forces ▸", forces_tip: "the force polygons and the Zhukovsky lever",
+      plans: "◂ Plans", forces_title: "Force polygons and the Zhukovsky lever", quantity: "quantity", segment: "segment",
+      mm: "mm", read: "read", exact: "exact", difference: "difference", unit: "unit", where: "where", student: "student",
+      error_pct: "error, %", tolerance_pct: "tolerance, %", verdict: "verdict", create: "Create",
+      no_files: "No TOML files yet: create one above and save it.", not_saved: "(not saved)", solving: "solving…",
+      solved: "solved in", error: "error", not_changed: "not changed", saved: "saved", checking: "checking…",
+      checked: "checked", within: "✓ within", off: "✗ off", of: "of", figures_within: "figures within tolerance",
+      figures_off: "off", mark: "mark", link: "link", guide: "guide at", at_scale: "(at scale, lengths in mm)",
+      not_asked: "(not asked for)", balancing: "balancing", expected_number: "expected a number, got",
+      no_answer: "the server does not answer", drawing: "drawing", ready: "ready", building: "building the page…",
+      save_first: "save the scene first: a check file names its scene's file", name_needed: "a file name is needed",
+      no_forces: "The scene asks for no force analysis (outputs: force_polygons, lever).",
+      kinds: {linkage: "linkages", engine: "engines", gears: "gears", cam: "cams", check: "check files"},
+      sections: {}},
+    ru: {gallery: "галерея", workbench: "верстак", save: "Сохранить", page: "Страница", check: "Проверка…",
+      page_tip: "демонстрационная страница (plans demo)", check_tip: "пустой файл проверки для этой схемы: введите цифры студента",
+      start: "Начать с механизма курса", files_of: "Файлы папки", scheme: "Схема", velocity_plan: "План скоростей",
+      acceleration_plan: "План ускорений", forces: "Силы ▸", forces_tip: "планы сил и рычаг Жуковского",
+      plans: "◂ Планы", forces_title: "Планы сил и рычаг Жуковского", quantity: "величина", segment: "отрезок",
+      mm: "мм", read: "по плану", exact: "точно", difference: "разность", unit: "ед.", where: "где", student: "студент",
+      error_pct: "ошибка, %", tolerance_pct: "допуск, %", verdict: "итог", create: "Создать",
+      no_files: "Файлов TOML пока нет: создайте схему выше и сохраните её.", not_saved: "(не сохранён)",
+      solving: "расчёт…", solved: "рассчитано за", error: "ошибка", not_changed: "не изменено", saved: "сохранён",
+      checking: "проверка…", checked: "проверено", within: "✓ в допуске", off: "✗ вне допуска", of: "из",
+      figures_within: "величин в допуске", figures_off: "вне допуска", mark: "оценка", link: "звено", guide: "направляющая",
+      at_scale: "(в масштабе, длины в мм)", not_asked: "(не запрошен)", balancing: "уравновешивающая",
+      expected_number: "ожидалось число, введено", no_answer: "сервер не отвечает", drawing: "чертёж", ready: "готов",
+      building: "строится страница…", save_first: "сначала сохраните схему: файл проверки ссылается на её файл",
+      name_needed: "нужно имя файла", no_forces: "Силовой расчёт в схеме не запрошен (outputs: force_polygons, lever).",
+      kinds: {linkage: "механизмы", engine: "двигатели", gears: "зубчатые передачи", cam: "кулачки", check: "файлы проверки"},
+      sections: {points: "точки стойки", driver: "начальное звено", loads: "нагрузки", branches: "сборки",
+        positions: "положения", scales: "масштабы", tolerance: "допуски", cycle: "цикл", dynamics: "динамика"}},
+  };
+  let LANG = localStorage.getItem("plans-lang") || ((navigator.language || "").startsWith("ru") ? "ru" : "en");
+  const t = (k) => (WORDS[LANG][k] !== undefined ? WORDS[LANG][k] : WORDS.en[k]);
+  function translate() {
+    document.documentElement.lang = LANG;
+    for (const e of document.querySelectorAll("[data-t]")) e.textContent = t(e.dataset.t);
+    for (const e of document.querySelectorAll("[data-t-title]")) e.title = t(e.dataset.tTitle);
+    $("lang").textContent = LANG === "ru" ? "EN" : "RU";
+  }
+  const RU_UNITS = {"mm": "мм", "m": "м", "kg": "кг", "kg·m²": "кг·м²", "rpm": "об/мин", "rad/s": "рад/с",
+    "N or N·m": "Н или Н·м", "N": "Н", "N·m": "Н·м", "Pa": "Па", "SI": "СИ", "m/s": "м/с", "m/s^2": "м/с²",
+    "m/s²": "м/с²", "rad/s²": "рад/с²", "mm/N": "мм/Н", "mm/(m/s)": "мм/(м/с)", "mm/(m/s²)": "мм/(м/с²)",
+    "rad/s, rad/s²": "рад/с, рад/с²"};
+  const un = (u) => (LANG === "ru" && RU_UNITS[u] ? RU_UNITS[u] : u);
+  const panelName = (nm) => (LANG !== "ru" ? nm : nm === "crank" ? "начальное звено" : nm === "lever" ? "рычаг Жуковского"
+    : nm.replace(/^group /, "группа "));
+  const titleOf = (tt, fallback) => (typeof tt === "string" ? tt : (tt && (tt[LANG] || tt.ru || tt.en)) || fallback);
+
   function status(text, bad) { const s = $("status"); s.textContent = text; s.className = bad ? "bad" : ""; }
   async function api(method, url, body, type) {
     const opt = {method: method, headers: {}};
     if (body !== undefined) { opt.body = body; opt.headers["Content-Type"] = type || "text/plain; charset=utf-8"; }
     let r;
-    try { r = await fetch(url, opt); } catch (e) { return {ok: false, status: 0, data: {error: "the server does not answer"}}; }
+    try { r = await fetch(url, opt); } catch (e) { return {ok: false, status: 0, data: {error: t("no_answer")}}; }
     const ct = r.headers.get("Content-Type") || "";
     const data = ct.startsWith("application/json") ? await r.json() : await r.blob();
     return {ok: r.ok, status: r.status, data: data};
@@ -42,27 +97,27 @@
   async function gallery() {
     $("gallery").hidden = false; $("editor").hidden = true;
     $("save-box").hidden = true; $("downloads").hidden = true;
-    $("doc-title").textContent = "workbench"; $("doc-path").textContent = "";
+    $("doc-title").textContent = t("workbench"); $("doc-path").textContent = "";
     const [sm, fl] = await Promise.all([api("GET", "/api/samples"), api("GET", "/api/files")]);
     const cards = $("samples"); clear(cards);
     for (const s of sm.ok ? sm.data : []) {
       const c = h(cards, "div", {class: "card", "data-sample": s.name});
-      h(c, "b", {}, s.title); h(c, "small", {}, s.name + ".toml");
-      h(c, "button", {}, "Create").addEventListener("click", () => open(null, s.name + ".toml", s.text));
+      h(c, "b", {}, titleOf(s.titles, s.title)); h(c, "small", {}, s.name + ".toml");
+      h(c, "button", {}, t("create")).addEventListener("click", () => open(null, s.name + ".toml", s.text));
     }
     const folder = $("folder"); clear(folder);
     if (fl.ok) {
       $("folder-name").textContent = fl.data.folder;
       const kinds = Object.keys(fl.data.files).sort();
-      if (!kinds.length) h(folder, "p", {}, "No TOML files yet: create one above and save it.");
+      if (!kinds.length) h(folder, "p", {}, t("no_files"));
       for (const kind of kinds) {
-        h(folder, "h3", {}, kind);
+        h(folder, "h3", {}, t("kinds")[kind] || kind);
         const ul = h(folder, "ul");
         for (const f of fl.data.files[kind]) {
           const li = h(ul, "li");
           const a = h(li, "a", {"data-path": f.path}, f.path);
           a.addEventListener("click", () => openFile(f.path));
-          h(li, "span", {}, " — " + f.title);
+          h(li, "span", {}, " — " + titleOf(f.titles, f.title));
         }
       }
     }
@@ -87,7 +142,7 @@
     $("dl-demo").hidden = S.kind === "check"; $("new-check").hidden = S.kind !== "linkage";
     for (const b of document.querySelectorAll("#downloads button[data-format]")) b.hidden = S.kind === "check";
     $("save-path").value = path || name;
-    $("doc-path").textContent = path || "(not saved)";
+    $("doc-path").textContent = path || t("not_saved");
     if (path) history.replaceState(null, "", "#file=" + encodeURIComponent(path));
     else history.replaceState(null, "", "#");
     form();
@@ -111,17 +166,17 @@
   const IDS = {link: 1, links: 1, format: 1};  // link numbers name the structure: not a form's figure
   function form() {
     const f = $("form"); clear(f);
-    const t = S.data.title;
-    $("doc-title").textContent = typeof t === "string" ? t : (t && (t.en || t.ru)) || S.name;
+    const tt = S.data.title;
+    $("doc-title").textContent = titleOf(tt, S.name);
     for (const top of Object.keys(S.data)) {
       if (SKIP[top]) continue;
       const v = S.data[top];
       if (top === "links" && v && typeof v === "object") {
-        for (const id of Object.keys(v)) section(f, "link " + id + (v[id].name ? " — " + v[id].name : ""), v[id], ["links", id]);
+        for (const id of Object.keys(v)) section(f, t("link") + " " + id + (v[id].name ? " — " + v[id].name : ""), v[id], ["links", id]);
       } else if (top === "joints" && Array.isArray(v)) {
-        v.forEach((j, i) => { if (j.guide && typeof j.guide === "object") section(f, "guide at " + j.point, j.guide, ["joints", i, "guide"]); });
+        v.forEach((j, i) => { if (j.guide && typeof j.guide === "object") section(f, t("guide") + " " + j.point, j.guide, ["joints", i, "guide"]); });
       } else if (v && typeof v === "object") {
-        section(f, top, v, [top]);
+        section(f, t("sections")[top] || top, v, [top]);
       }
     }
   }
@@ -176,14 +231,14 @@
         }
         const vals = inputs.map((e) => Number(e.value.replace(",", ".").trim()));
         if (inputs.some((e) => e.value.trim() === "") || vals.some((x) => !isFinite(x))) {
-          mark(id, "expected a number, got " + JSON.stringify(inputs.map((e) => e.value).join(", ")));
+          mark(id, t("expected_number") + " " + JSON.stringify(inputs.map((e) => e.value).join(", ")));
           return;
         }
         edit(keys, values.length === 1 && !Array.isArray(valueAt(keys)) ? vals[0] : vals, id);
       };
       for (const e of inputs) e.addEventListener("change", send);  // on Enter or on leaving the field
     }
-    h(r, "span", {class: "unit"}, unitOf(keys));
+    h(r, "span", {class: "unit"}, un(unitOf(keys)));
     h(r, "span", {class: "err", id: "e-" + id});
   }
   function refresh() {  // the form's values from the data (a dragged pivot), the focused field left alone
@@ -212,17 +267,17 @@
   async function edit(keys, value, id) {
     S.last = id;
     const r = await api("POST", "/api/edit", JSON.stringify({text: S.text, set: [[keys, value]]}), "application/json");
-    if (!r.ok) { mark(r.data.field || id, r.data.error); status("not changed", true); return; }
+    if (!r.ok) { mark(r.data.field || id, r.data.error); status(t("not_changed"), true); return; }
     S.text = r.data.text; S.data = r.data.data;
     refresh();
-    $("doc-path").textContent = (S.path || "(not saved)") + " •";
+    $("doc-path").textContent = (S.path || t("not_saved")) + " •";
     await solve();
   }
   async function solve() {
     if (S.kind === "check") return checkRun();
     const seq = ++S.seq;
     const t0 = performance.now();
-    status("solving…");
+    status(t("solving"));
     // steps=0: the construction protocol's text is left out (the page draws, it reads no protocol)
     const r = await api("POST", "/api/solve?steps=0" + (S.path ? "&path=" + encodeURIComponent(S.path) : ""), S.text);
     if (seq < S.shown) return;  // an older answer after a newer one: keep the newer
@@ -242,7 +297,7 @@
     if (S.k >= n) S.k = 0;
     $("phi").value = String(S.k);
     draw();
-    status("solved in " + Math.round(performance.now() - t0) + " ms");
+    status(t("solved") + " " + Math.round(performance.now() - t0) + " ms");
     if (S.showForces) loadForces();
     document.body.dataset.solved = String(seq);
   }
@@ -263,7 +318,7 @@
   // ------------------------------------------------------------------ the check mode
   async function checkRun() {
     const seq = ++S.seq;
-    status("checking…");
+    status(t("checking"));
     const where = S.path || S.name;  // an unsaved check file finds its scene from the name it will have
     const r = await api("POST", "/api/check" + (where ? "?path=" + encodeURIComponent(where) : ""), S.text);
     if (seq < S.shown) return;
@@ -280,15 +335,15 @@
     mark(null); $("check-error").textContent = "";
     S.sol = r.data;
     const R = r.data, sm = R.summary || {};
-    $("check-summary").textContent = (R.student ? R.student + ": " : "") + sm.passed + " of " + sm.items +
-      " figures within tolerance, " + sm.failed + " off" + (R.mark !== null && R.mark !== undefined ? "; mark " + num(R.mark) : "");
+    $("check-summary").textContent = (R.student ? R.student + ": " : "") + sm.passed + " " + t("of") + " " + sm.items +
+      " " + t("figures_within") + ", " + sm.failed + " " + t("figures_off") + (R.mark !== null && R.mark !== undefined ? "; " + t("mark") + " " + num(R.mark) : "");
     const ul = $("check-causes"); clear(ul);
     for (const c of R.causes || []) h(ul, "li", {}, c.kind.replace(/_/g, " ") + ": " + c.detail);
     clear(tb);
     for (const it of R.items || []) {
       const tr = h(tb, "tr", {class: it.verdict, "data-field": it.field || ""});
       for (const x of [num(it.phi_deg), it.quantity, it.where || "", num(it.student), num(it.exact), num(it.error_pct),
-        num(it.tolerance_pct), it.verdict === "pass" ? "✓ within" : "✗ off"]) h(tr, "td", {}, String(x));
+        num(it.tolerance_pct), it.verdict === "pass" ? t("within") : t("off")]) h(tr, "td", {}, String(x));
       const id = it.field && fieldId(it.field);
       const row = id && $("e-" + id) && $("e-" + id).parentNode;
       if (row) {
@@ -296,7 +351,7 @@
         if (it.verdict !== "pass") { row.classList.remove("pass"); row.title = it.quantity + ": exact " + num(it.exact) + " " + it.unit; }
       }
     }
-    status("checked");
+    status(t("checked"));
     document.body.dataset.solved = String(seq);
   }
 
@@ -319,7 +374,7 @@
   const mm = (p) => [p[0] * 1000, p[1] * 1000];
   function draw() {
     const pos = S.sol.positions[S.k];
-    $("phi-out").textContent = "φ = " + num(pos.phi_deg) + "°  (" + (S.k + 1) + " of " + S.sol.positions.length + ")";
+    $("phi-out").textContent = "φ = " + num(pos.phi_deg) + "°  (" + (S.k + 1) + " " + t("of") + " " + S.sol.positions.length + ")";
     scheme(pos);
     const pl = pos.plans || {};
     plan($("vel"), pl.velocity, $("vel-scale"), "mm/(m/s)");
@@ -398,7 +453,7 @@
       }
       el(svg, "text", {x: f3(p[0] + 2 * u), y: f3(-p[1] - 2 * u), "font-size": f3(3.2 * u), class: "label"}, nm);
     }
-    $("scheme-scale").textContent = "(at scale, lengths in mm)";
+    $("scheme-scale").textContent = t("at_scale");
   }
   function dragPivot(svg, c, nm, unit) {
     c.addEventListener("pointerdown", (ev) => {
@@ -434,8 +489,8 @@
   }
   function plan(svg, p, cap, unit) {
     clear(svg); defs(svg);
-    if (!p) { cap.textContent = "(not asked for)"; return; }
-    cap.textContent = "μ = " + num(p.scale) + " " + unit;
+    if (!p) { cap.textContent = t("not_asked"); return; }
+    cap.textContent = "μ = " + num(p.scale) + " " + un(unit);
     svg.dataset.scale = String(p.scale);
     const names = Object.keys(p.points);
     const size = fit(svg, names.map((k) => p.points[k]), 0.12), u = size / 100;
@@ -470,10 +525,10 @@
   }
   function drawForces() {
     const box = $("force-panels"); clear(box);
-    if (!S.forces || !S.forces.length) { h(box, "p", {}, "The scene asks for no force analysis (outputs: force_polygons, lever)."); return; }
+    if (!S.forces || !S.forces.length) { h(box, "p", {}, t("no_forces")); return; }
     for (const pn of S.forces) {
       const fig = h(box, "figure", {"data-panel": pn.id});
-      h(fig, "figcaption", {}, pn.name + ", μ = " + num(pn.scale) + " " + pn.unit);
+      h(fig, "figcaption", {}, panelName(pn.name) + ", μ = " + num(pn.scale) + " " + un(pn.unit));
       const svg = el(fig, "svg", {id: "force-" + pn.id, role: "img", "data-scale": String(pn.scale)});
       defs(svg);
       const segs = pn.segments.map((g) => [g, g.track[S.k]]).filter((x) => x[1]);
@@ -506,7 +561,7 @@
     const tb = $("table").tBodies[0]; clear(tb);
     for (const r of pos.readings || []) {
       const tr = h(tb, "tr");
-      for (const x of [r.quantity, r.segment || "", num(r.length_mm), num(r.value), num(r.exact), num(r.difference), r.unit]) h(tr, "td", {}, String(x));
+      for (const x of [r.quantity, r.segment || "", num(r.length_mm), num(r.value), num(r.exact), num(r.difference), un(r.unit)]) h(tr, "td", {}, String(x));
     }
     const bal = pos.balancing;
     if (bal && typeof bal === "object") {
@@ -514,27 +569,27 @@
         const v = bal[k];
         if (typeof v !== "number") continue;
         const tr = h(tb, "tr");
-        for (const x of ["balancing " + k, "", "", "", num(v), "", ""]) h(tr, "td", {}, x);
+        for (const x of [t("balancing") + " " + k, "", "", "", num(v), "", ""]) h(tr, "td", {}, x);
       }
     }
     for (const id of Object.keys(pos.links)) {
       const lk = pos.links[id];
       if (lk.omega === undefined) continue;
       const tr = h(tb, "tr");
-      for (const x of ["ω" + id + ", ε" + id, "", "", "", num(lk.omega) + ", " + num(lk.eps === undefined ? NaN : lk.eps), "", "rad/s, rad/s²"]) h(tr, "td", {}, x);
+      for (const x of ["ω" + id + ", ε" + id, "", "", "", num(lk.omega) + ", " + num(lk.eps === undefined ? NaN : lk.eps), "", un("rad/s, rad/s²")]) h(tr, "td", {}, x);
     }
   }
 
   // ------------------------------------------------------------------ save, downloads
   async function save() {
     const path = $("save-path").value.trim();
-    if (!path) { status("a file name is needed", true); return; }
+    if (!path) { status(t("name_needed"), true); return; }
     const r = await api("PUT", "/api/file?path=" + encodeURIComponent(path), S.text);
     if (!r.ok) { status(r.data.error, true); return; }
     S.path = r.data.path;
     $("doc-path").textContent = S.path;
     history.replaceState(null, "", "#file=" + encodeURIComponent(S.path));
-    status("saved " + S.path);
+    status(t("saved") + " " + S.path);
     document.body.dataset.saved = S.path;
   }
   function download(blob, name) {
@@ -543,12 +598,12 @@
     setTimeout(() => { URL.revokeObjectURL(a.href); a.remove(); }, 1000);
   }
   async function sheets(fmt) {
-    status("drawing " + fmt.toUpperCase() + "…");
+    status(t("drawing") + " " + fmt.toUpperCase() + "…");
     const stem = (S.path || S.name || "scene").replace(/\.toml$/, "");
     const r = await api("POST", "/api/draw?format=" + fmt + "&path=" + encodeURIComponent(stem + ".toml"), S.text);
     if (!r.ok) { status(r.data.error, true); return; }
     download(r.data, stem + (r.data.type === "application/zip" ? "-" + fmt + ".zip" : "." + fmt));
-    status(fmt.toUpperCase() + " ready");
+    status(fmt.toUpperCase() + " " + t("ready"));
   }
 
   $("to-gallery").addEventListener("click", () => { history.replaceState(null, "", "#"); gallery(); });
@@ -559,7 +614,7 @@
       (S.path || S.name || "scene").replace(/\.toml$/, "") + ".json");
   });
   $("new-check").addEventListener("click", async () => {
-    if (!S.path) { status("save the scene first: a check file names its scene's file", true); return; }
+    if (!S.path) { status(t("save_first"), true); return; }
     const r = await api("GET", "/api/template?path=" + encodeURIComponent(S.path));
     if (!r.ok) { status(r.data.error, true); return; }
     showForces(false);
@@ -568,14 +623,21 @@
   $("show-forces").addEventListener("click", () => showForces(true));
   $("show-plans").addEventListener("click", () => showForces(false));
   $("dl-demo").addEventListener("click", async () => {
-    status("building the page…");
+    status(t("building"));
     const stem = (S.path || S.name || "scene").replace(/\.toml$/, "");
     const r = await api("POST", "/api/demo?path=" + encodeURIComponent(stem + ".toml"), S.text);
     if (!r.ok) { status(r.data.error, true); return; }
     download(r.data, stem + ".html");
-    status("page ready");
+    status(t("ready"));
   });
   $("phi").addEventListener("input", () => { S.k = Number($("phi").value); if (S.sol && S.kind !== "check") draw(); });
+  $("lang").addEventListener("click", () => {
+    LANG = LANG === "ru" ? "en" : "ru";
+    localStorage.setItem("plans-lang", LANG);
+    translate();
+    if (!$("gallery").hidden) gallery(); else if (S.data) { form(); if (S.sol && S.kind !== "check") draw(); else if (S.sol) checkRun(); }
+  });
+  translate();
   const m = /^#file=(.+)$/.exec(location.hash);
   if (m) openFile(decodeURIComponent(m[1])); else gallery();
 })();
