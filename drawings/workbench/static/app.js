@@ -18,6 +18,7 @@
       page_tip: "the demonstration page (plans demo)", check_tip: "a blank check file for this scene: type in a student's figures",
       start: "Start from a course mechanism", files_of: "Files of", scheme: "Scheme", velocity_plan: "Velocity plan",
       acceleration_plan: "Acceleration plan", forces: "Forces ▸", forces_tip: "the force polygons and the Zhukovsky lever",
+      cycle: "Cycle ▸", cycle_tip: "the tables over the cycle as diagrams", cycle_title: "Over the cycle",
       plans: "◂ Plans", forces_title: "Force polygons and the Zhukovsky lever", quantity: "quantity", segment: "segment",
       mm: "mm", read: "read", exact: "exact", difference: "difference", unit: "unit", where: "where", student: "student",
       error_pct: "error, %", tolerance_pct: "tolerance, %", verdict: "verdict", create: "Create",
@@ -35,6 +36,7 @@
       page_tip: "демонстрационная страница (plans demo)", check_tip: "пустой файл проверки для этой схемы: введите цифры студента",
       start: "Начать с механизма курса", files_of: "Файлы папки", scheme: "Схема", velocity_plan: "План скоростей",
       acceleration_plan: "План ускорений", forces: "Силы ▸", forces_tip: "планы сил и рычаг Жуковского",
+      cycle: "Цикл ▸", cycle_tip: "таблицы за цикл в виде диаграмм", cycle_title: "За цикл",
       plans: "◂ Планы", forces_title: "Планы сил и рычаг Жуковского", quantity: "величина", segment: "отрезок",
       mm: "мм", read: "по плану", exact: "точно", difference: "разность", unit: "ед.", where: "где", student: "студент",
       error_pct: "ошибка, %", tolerance_pct: "допуск, %", verdict: "итог", create: "Создать",
@@ -381,6 +383,7 @@
     plan($("acc"), pl.acceleration, $("acc-scale"), "mm/(m/s²)");
     table(pos);
     if (S.showForces && S.forces) drawForces();
+    if (S.showCycle) drawCycle();
   }
   function links() {
     const out = [];
@@ -550,11 +553,49 @@
       }
     }
   }
-  function showForces(on) {
-    S.showForces = on;
-    $("forces").hidden = !on;
-    for (const f of document.querySelectorAll("#stage figure.plan")) f.hidden = on;
-    if (on) loadForces();
+  function showForces(on) { show(on ? "forces" : "plans"); }
+  function show(view) {  // the right column: the plans, the forces, or the diagrams over the cycle
+    S.showForces = view === "forces"; S.showCycle = view === "cycle";
+    $("forces").hidden = !S.showForces; $("cycle").hidden = !S.showCycle;
+    for (const f of document.querySelectorAll("#stage figure.plan")) f.hidden = view !== "plans";
+    if (S.showForces) loadForces();
+    if (S.showCycle) drawCycle();
+  }
+  function cycleRows() {
+    const out = [];
+    const tabs = S.sol && S.sol.cycle && Array.isArray(S.sol.cycle.tables) ? S.sol.cycle.tables : [];
+    for (const tb of tabs) for (const r of tb.rows || []) out.push({table: tb, row: r});
+    return out;
+  }
+  function drawCycle() {
+    const rows = cycleRows(), sel = $("cycle-row"), keep = sel.value;
+    clear(sel);
+    rows.forEach((x, i) => h(sel, "option", {value: String(i)}, x.row.label + (x.row.unit ? ", " + un(x.row.unit) : "") + " — " + x.table.title));
+    const svg = $("cycle-chart"); clear(svg);
+    const tb = $("cycle-table").tBodies[0]; clear(tb);
+    if (!rows.length) return;
+    sel.value = keep && Number(keep) < rows.length ? keep : "0";
+    const {table, row} = rows[Number(sel.value)];
+    const phis = table.phi_deg, vals = row.values.map((v) => (typeof v === "number" ? v : NaN));
+    const ok = vals.filter((v) => isFinite(v));
+    let lo = Math.min(0, ...ok), hi = Math.max(0, ...ok);
+    if (hi - lo < 1e-12) { hi += 1; lo -= 1; }
+    const W = 360, H = 160, x = (p) => 30 + (W - 40) * p / 360, y = (v) => H - 15 - (H - 30) * (v - lo) / (hi - lo);
+    svg.setAttribute("viewBox", "0 0 " + W + " " + H);
+    el(svg, "line", {x1: 30, y1: f3(y(0)), x2: W - 10, y2: f3(y(0)), class: "axis", "stroke-width": 0.6});
+    el(svg, "line", {x1: 30, y1: 10, x2: 30, y2: H - 15, class: "axis", "stroke-width": 0.6});
+    for (const p of [0, 90, 180, 270, 360]) el(svg, "text", {x: f3(x(p)), y: H - 3, "font-size": 8, "text-anchor": "middle", class: "label"}, p + "°");
+    el(svg, "text", {x: 2, y: 14, "font-size": 8, class: "label"}, num(hi));
+    el(svg, "text", {x: 2, y: H - 16, "font-size": 8, class: "label"}, num(lo));
+    const d = phis.map((p, i) => (isFinite(vals[i]) ? (i && isFinite(vals[i - 1]) ? "L" : "M") + f3(x(p)) + "," + f3(y(vals[i])) : "")).join(" ");
+    el(svg, "path", {d: d, class: "curve", "stroke-width": 1.2, "data-key": row.key});
+    phis.forEach((p, i) => { if (isFinite(vals[i])) el(svg, "circle", {cx: f3(x(p)), cy: f3(y(vals[i])), r: 1.8, class: "ppt"}); });
+    const cur = S.sol.positions[S.k].phi_deg;
+    el(svg, "line", {x1: f3(x(cur)), y1: 10, x2: f3(x(cur)), y2: H - 15, class: "cursor", "stroke-width": 0.8});
+    phis.forEach((p, i) => {
+      const tr = h(tb, "tr", {class: Math.abs(p - cur) < 1e-9 ? "on" : ""});
+      h(tr, "td", {}, "φ = " + num(p) + "°"); h(tr, "td", {}, num(vals[i]));
+    });
   }
 
   function table(pos) {
@@ -622,6 +663,9 @@
   });
   $("show-forces").addEventListener("click", () => showForces(true));
   $("show-plans").addEventListener("click", () => showForces(false));
+  $("show-plans2").addEventListener("click", () => show("plans"));
+  $("show-cycle").addEventListener("click", () => show("cycle"));
+  $("cycle-row").addEventListener("change", drawCycle);
   $("dl-demo").addEventListener("click", async () => {
     status(t("building"));
     const stem = (S.path || S.name || "scene").replace(/\.toml$/, "");
