@@ -265,8 +265,9 @@ def test_page_builds_edits_saves_and_reloads_a_four_bar(browser, server):
         "#force-group-2-3 line[data-label='G2']", "l => ['x1', 'y1', 'x2', 'y2'].map(a => Number(l.getAttribute(a)))")
     assert abs(x2 - x1) < 0.01 and abs((y2 - y1) - 2.6 * 9.81 * mu_f) < 0.01  # SVG's y points down
     # the diagrams over the cycle: one node per position of the scene
+    pg.click("#show-plans")
     pg.click("#show-cycle")
-    pg.wait_for_selector("#cycle-chart path.curve")
+    pg.wait_for_selector("#cycle-chart path.curve", state="attached")
     assert pg.locator("#cycle-chart circle").count() == 12
     pg.click("#show-plans2")
 
