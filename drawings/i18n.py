@@ -10,6 +10,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "velocity": ("План скоростей", "Velocity plan"),
     "acceleration": ("План ускорений", "Acceleration plan"),
     "table": ("Результаты", "Results"),
+    "centre_table": ("Скорости по мгновенным центрам", "Velocities by the instant centres"),
     "forces_table": ("Силы по планам сил", "Forces read off the polygons"),
     "group": ("Группа", "Group"),
     "group_polygon": ("План сил группы", "Force polygon of group"),

@@ -86,6 +86,10 @@ def build_panels(scene: Scene, spec: SheetSpec) -> tuple[list[Panel], float]:
     for k in ks:
         if scene.wants("positions") and _wants(spec, "scheme") and k in schemes:
             panels.append(scheme_panel(scene, kin, k, mu_l, lang, strokes))
+        if scene.wants("instant_centres") and _wants(spec, "centres") and k in schemes:
+            from .centres import centres_panels
+
+            panels.extend(centres_panels(scene, kin, k, mu_l, lang, strokes))
         pp = plans_at.get(k)
         if pp is not None:
             if pp.velocity is not None and _wants(spec, "velocity"):

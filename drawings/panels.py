@@ -151,10 +151,13 @@ class SchemeGeometry:
 
 
 def scheme_panel(scene, kin, k: int, mu_l: float, lang: str, strokes: dict[str, tuple[float, float]],
-                 ) -> Panel:
-    """The mechanism at position k at μl: links, joints, sliders, guides, frame, S points, ω1."""
+                 overlay=None) -> Panel:
+    """The mechanism at position k at μl: links, joints, sliders, guides, frame, S points, ω1.
+
+    ``overlay(rec, T, placer, pid)``, where given, draws more on the scheme (the instant
+    centres) and returns the panel's (kind, title, note) in place of the scheme's."""
     phi = float(kin.phi_deg[k])
-    pid = f"scheme-{phi_tag(phi)}"
+    pid = f"scheme-{phi_tag(phi)}" if overlay is None else f"centres-{phi_tag(phi)}"
     T = Transform(mu_l)
     frame = scene.frame
     rec = Recording()
@@ -316,7 +319,11 @@ def scheme_panel(scene, kin, k: int, mu_l: float, lang: str, strokes: dict[str, 
     note = None
     if dead:
         note = f"{tr('dead', lang)} {', '.join(dead)}"
-    return finish(pid, "scheme", phi, rec, title,
+    kind = "scheme"
+    if overlay is not None:
+        kind, title, more = overlay(rec, T, placer, pid)
+        note = "; ".join(x for x in (note, more) if x) or None
+    return finish(pid, kind, phi, rec, title,
                   f"{scale_text('length', mu_l, scene.scale_style, lang)}  (M {ratio_text(mu_l, lang)})", note,
                   "length", mu_l)
 

@@ -105,7 +105,8 @@ class SheetSpec:
         return (w, h) if self.orientation == "landscape" else (h, w)
 
 
-PANEL_KINDS = ("positions", "scheme", "velocity", "acceleration", "table", "group", "crank", "lever", "legend")
+PANEL_KINDS = ("positions", "scheme", "velocity", "acceleration", "table", "group", "crank", "lever", "legend",
+               "centres")
 _KEYS = {"format", "orientation", "language", "title", "designation", "subtitle", "author",
          "checked_by", "approved_by", "group", "organization", "date", "first_sheet", "total_sheets",
          "panels", "positions", "trace", "pins"}

@@ -139,6 +139,10 @@ def _position(sol: Solution, k: int, forces: dict | None, steps: bool = True) ->
         if pp.acceleration is not None:
             pos["plans"]["acceleration"] = pp.acceleration.to_json()
         pos["readings"] = [r.to_json() for r in pp.readings]
+    if scene.wants("instant_centres"):
+        from plans.kinematics.centres import centres_json
+
+        pos.update(centres_json(kin, k, sol.plans[k].readings if sol.plans else ()))
     if forces is not None:
         pos.update(forces)
     if steps and (sol.plans or sol.forces is not None):

@@ -32,6 +32,7 @@ OUTPUTS: dict[str, tuple[str, ...]] = {
     "lever": ("acceleration_plan",),
     "diagrams": ("positions",),  # kinematic diagrams over the cycle ([diagrams], plans.cycle)
     "dynamics": ("positions",),  # machine dynamics and the flywheel ([dynamics], plans.cycle)
+    "instant_centres": ("velocity_plan",),  # Kennedy's centres (plans.kinematics.centres)
 }
 
 #: F_ij conventions: seed 003 (force on link i from link j) or seed 000 (of link i on link j).

@@ -1,0 +1,200 @@
+"""The class-III Assur group of the third order (a triad), exactly and by Assur's special point.
+
+A base link carries three inner pairs D, E, F; three leashes join them to outer pairs A, B,
+C of links already known: |AD| = l1, |BE| = l2, |CF| = l3.  The base link's place (D and
+its angle θ) has no closed form: a Newton solve on the three leash equations, started from
+the previous position (the branch is the one the group is assembled in, kept by
+continuation).  Velocities and accelerations are then linear: three equations
+(P − Q)·(v_P − v_Q) = 0, and their derivative.
+
+The graphical route (the textbook's): the axes of leashes AD and BE meet at Assur's special
+point S, taken as a point of the base link.  v_S − v_A ⟂ AD and v_S − v_B ⟂ BE (each the sum
+of the leash's turn and the base's turn about a point of that leash's axis): two lines of the
+velocity plan meet at s.  Then f: v_F = v_S + ω·(F − S)⊥ with v_F − v_C ⟂ CF fixes ω, and d,
+e follow by similarity.  The acceleration plan is built the same way, with the normal terms
+along the leashes (−ω_leash²·QP) and along the axis through S (−ω²·PS).  Parallel axes AD ∥ BE take the other pair's point; all three axes
+through one point (or all parallel) is the group's special position: ω is then not fixed.
+
+Plane vectors are complex numbers; the base link's local frame has its origin at D.
+"""
+
+from __future__ import annotations
+
+import cmath
+import math
+
+from plans.records import frozen
+
+
+def _dot(a: complex, b: complex) -> float:
+    return (a.conjugate() * b).real
+
+
+def _cross(a: complex, b: complex) -> float:
+    return (a.conjugate() * b).imag
+
+
+@frozen
+class Triad:
+    """E and F in the base link's frame (origin D, x axis at angle θ), the leash lengths."""
+
+    zE: complex
+    zF: complex
+    l1: float
+    l2: float
+    l3: float
+    name: str = "triad"
+
+    def inner(self, rD: complex, theta: float) -> tuple[complex, complex, complex]:
+        rot = cmath.exp(1j * theta)
+        return rD, rD + rot * self.zE, rD + rot * self.zF
+
+    @property
+    def size(self) -> float:
+        return max(abs(self.zE), abs(self.zF), self.l1, self.l2, self.l3)
+
+
+class SpecialPosition(ValueError):
+    """The group has no unique velocity state (or no place) at this position."""
+
+
+def place(t: Triad, outer: tuple[complex, complex, complex], guess: tuple[complex, float],
+          tol: float = 1e-13, iterations: int = 60) -> tuple[complex, float]:
+    """(r_D, θ) with every leash at its length, by Newton from ``guess``."""
+    rD, th = guess
+    lengths = (t.l1, t.l2, t.l3)
+    for _ in range(iterations):
+        P = t.inner(rD, th)
+        rot = cmath.exp(1j * th)
+        arms = (0j, rot * t.zE, rot * t.zF)
+        f = [abs(P[k] - outer[k]) ** 2 - lengths[k] ** 2 for k in range(3)]
+        J = [[2 * (P[k] - outer[k]).real, 2 * (P[k] - outer[k]).imag, 2 * _dot(P[k] - outer[k], 1j * arms[k])]
+             for k in range(3)]
+        step = _solve3(J, [-x for x in f])
+        if step is None:
+            raise SpecialPosition(f"group {t.name}: the leashes' equations are singular here")
+        rD += complex(step[0], step[1])
+        th += step[2]
+        if max(abs(step[0]), abs(step[1]), abs(step[2]) * t.size) <= tol * t.size:
+            return rD, th
+    raise SpecialPosition(f"group {t.name}: no place with the leashes at their lengths near the previous one")
+
+
+def _solve3(J: list[list[float]], b: list[float]) -> list[float] | None:
+    """Cramer's rule; None where the system is singular to rounding."""
+    def det(m: list[list[float]]) -> float:
+        return (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+                + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]))
+    D = det(J)
+    scale = max(abs(x) for row in J for x in row) ** 3
+    if abs(D) <= 1e-14 * scale:
+        return None
+    out = []
+    for c in range(3):
+        m = [[b[r] if cc == c else J[r][cc] for cc in range(3)] for r in range(3)]
+        out.append(det(m) / D)
+    return out
+
+
+def rates(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta: float,
+          v_outer: tuple[complex, complex, complex],
+          a_outer: tuple[complex, complex, complex] | None = None) -> tuple[complex, float, complex | None, float | None]:
+    """(v_D, ω, a_D, ε) of the base link from the leash equations (exact, not graphical)."""
+    P = t.inner(rD, theta)
+    arms = [P[k] - rD for k in range(3)]
+    d = [P[k] - outer[k] for k in range(3)]
+    J = [[d[k].real, d[k].imag, _dot(d[k], 1j * arms[k])] for k in range(3)]
+    x = _solve3(J, [_dot(d[k], v_outer[k]) for k in range(3)])
+    if x is None:
+        raise SpecialPosition(f"group {t.name}: the velocity state is not fixed (special position)")
+    vD, w = complex(x[0], x[1]), x[2]
+    if a_outer is None:
+        return vD, w, None, None
+    vP = [vD + 1j * w * arms[k] for k in range(3)]
+    rhs = [_dot(d[k], a_outer[k] + w * w * arms[k]) - abs(vP[k] - v_outer[k]) ** 2 for k in range(3)]
+    y = _solve3(J, rhs)
+    assert y is not None  # the same matrix
+    return vD, w, complex(y[0], y[1]), y[2]
+
+
+def _meet(p1: complex, d1: complex, p2: complex, d2: complex) -> complex | None:
+    s = _cross(d1, d2)
+    if abs(s) <= 1e-12 * abs(d1) * abs(d2):
+        return None
+    return p1 + d1 * _cross(p2 - p1, d2) / s
+
+
+@frozen
+class SpecialPoint:
+    """The velocity plan of the group by Assur's point: which leashes' axes gave S, S itself,
+    v_S, the base's ω and the inner pairs' velocities."""
+
+    leashes: tuple[int, int]  # 0-based: the two leashes whose axes meet at S
+    S: complex
+    vS: complex
+    omega: float
+    v_inner: tuple[complex, complex, complex]
+
+
+def special_point_velocities(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta: float,
+                             v_outer: tuple[complex, complex, complex]) -> SpecialPoint:
+    """The textbook's construction: s where the lines through a ⟂ AD and through b ⟂ BE meet,
+    then f from v_F − v_C ⟂ CF, then d and e."""
+    P = t.inner(rD, theta)
+    axis = [P[k] - outer[k] for k in range(3)]
+    for i, j in ((0, 1), (1, 2), (0, 2)):  # parallel axes: the other pair's point
+        S = _meet(outer[i], axis[i], outer[j], axis[j])
+        if S is None:
+            continue
+        # s: v_S − v_Qi ⟂ axis i and v_S − v_Qj ⟂ axis j, two lines of the velocity plan
+        vS = _meet(v_outer[i], 1j * axis[i], v_outer[j], 1j * axis[j])
+        if vS is None:
+            raise SpecialPosition(f"group {t.name}: the lines of s are parallel")
+        m = 3 - i - j  # the third leash fixes ω: v_S + ω (P_m − S)⊥ − v_Qm ⟂ axis m
+        den = _dot(axis[m], 1j * (P[m] - S))
+        if abs(den) <= 1e-12 * abs(axis[m]) * max(abs(P[m] - S), t.size):
+            raise SpecialPosition(f"group {t.name}: all three leashes' axes pass through one point "
+                                  f"(special position)")
+        w = _dot(axis[m], v_outer[m] - vS) / den
+        v_inner = tuple(vS + 1j * w * (P[k] - S) for k in range(3))
+        return SpecialPoint((i, j), S, vS, w, (v_inner[0], v_inner[1], v_inner[2]))
+    raise SpecialPosition(f"group {t.name}: the three leashes are parallel (special position)")
+
+
+def leash_angles(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta: float) -> tuple[float, ...]:
+    P = t.inner(rD, theta)
+    return tuple(math.atan2((P[k] - outer[k]).imag, (P[k] - outer[k]).real) for k in range(3))
+
+
+@frozen
+class SpecialPointAcc:
+    """The acceleration plan by the same point: a_S, the base's ε, the inner pairs' a."""
+
+    S: complex
+    aS: complex
+    eps: float
+    a_inner: tuple[complex, complex, complex]
+
+
+def special_point_accelerations(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta: float,
+                                v_outer: tuple[complex, complex, complex],
+                                a_outer: tuple[complex, complex, complex]) -> SpecialPointAcc:
+    """a_S = a_Q + (normal terms along the leash: −ω_leash²·QP − ω²·PS) + a term ⟂ QP, for two
+    leashes: two lines of the acceleration plan meet at s; the third leash's normal
+    acceleration −ω_leash²·|QP| along its axis fixes ε; then d, e, f."""
+    sp = special_point_velocities(t, outer, rD, theta, v_outer)
+    i, j = sp.leashes
+    P = t.inner(rD, theta)
+    axis = [P[k] - outer[k] for k in range(3)]
+    w = sp.omega
+    w_leash = [_cross(axis[k], sp.v_inner[k] - v_outer[k]) / abs(axis[k]) ** 2 for k in range(3)]
+    known = [a_outer[k] - w_leash[k] ** 2 * axis[k] - w * w * (sp.S - P[k]) for k in range(3)]
+    aS = _meet(known[i], 1j * axis[i], known[j], 1j * axis[j])
+    if aS is None:
+        raise SpecialPosition(f"group {t.name}: the lines of s are parallel")
+    m = 3 - i - j
+    arm = P[m] - sp.S
+    den = _dot(axis[m], 1j * arm)  # not zero: special_point_velocities has checked it
+    eps = (-w_leash[m] ** 2 * abs(axis[m]) ** 2 - _dot(axis[m], aS - w * w * arm - a_outer[m])) / den
+    a_inner = tuple(aS + (1j * eps - w * w) * (P[k] - sp.S) for k in range(3))
+    return SpecialPointAcc(sp.S, aS, eps, (a_inner[0], a_inner[1], a_inner[2]))
