@@ -380,3 +380,26 @@ def test_serve_is_listed_without_loading_the_server_and_bad_arguments_are_one_li
         p = subprocess.run([sys.executable, "-c", "from drawings.cli import main; raise SystemExit(main())", *argv],
                            cwd=root, capture_output=True, text=True, timeout=30)
         assert p.returncode == 2 and len(p.stderr.strip().splitlines()) == 1 and "Traceback" not in p.stderr
+
+
+def test_page_designs_a_crank_rocker_from_the_gallery(browser, server):
+    """A synthesis model: the task in the form, the designed mechanism drawn; its rocker's
+    swing, read off the drawn scheme's extreme positions, is the task's 40°."""
+    _, url = server
+    pg = browser.new_page(viewport={"width": 1366, "height": 768})
+    pg.goto(url + "/")
+    pg.wait_for_selector("body[data-ready='gallery']")
+    pg.click("[data-sample='synthesis_crank_rocker'] button")
+    _solved(pg, None)
+    assert "K = 1.2" in pg.text_content("#design-summary")
+    angles = []
+    n = int(pg.get_attribute("#phi", "max")) + 1
+    for k in range(n):
+        pg.eval_on_selector("#phi", f"e => {{ e.value = {k}; e.dispatchEvent(new Event('input')); }}")
+        bx, by = pg.eval_on_selector("#scheme circle[data-point='B']", "c => [Number(c.getAttribute('cx')), -Number(c.getAttribute('cy'))]")
+        dx, dy = pg.eval_on_selector("#scheme circle[data-point='D']", "c => [Number(c.getAttribute('cx')), -Number(c.getAttribute('cy'))]")
+        angles.append(math.degrees(math.atan2(by - dy, bx - dx)))
+    # the design starts the turn at an extreme position: the first position is one end of the swing
+    swing = max(abs(a - angles[0]) for a in angles)
+    assert abs(swing - 40.0) < 2.0  # 12 positions sample the far end to within a few degrees
+    pg.close()

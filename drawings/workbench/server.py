@@ -6,7 +6,8 @@ lists the folder's files by kind; ``GET``/``PUT /api/file?path=`` read and write
 ``POST /api/check`` answers the JSON of ``plans check --json``; ``POST /api/draw?format=``
 answers the sheets (one file, or a zip of several); ``POST /api/demo`` the demonstration
 page (``plans demo``); ``POST /api/forces`` the force polygons and the lever over the turn;
-``GET /api/template?path=`` a blank check file for a scene;
+``GET /api/template?path=`` a blank check file for a scene; ``POST /api/design`` a synthesis
+file designed (the scene and ``plans design --json``);
 ``POST /api/edit`` sets values in a TOML
 text keeping its comments and order (the form's edits); ``GET /api/samples`` is the gallery.
 
@@ -40,7 +41,8 @@ MAX_BODY = 1 << 20
 MAX_FILES = 2000
 #: The gallery: the course's mechanisms as the samples show them.
 GALLERY = ("slider_crank", "offset_slider_crank", "v_engine", "four_bar", "shaper", "six_bar",
-           "scotch_yoke")
+           "scotch_yoke", "synthesis/offset_slider_crank", "synthesis/crank_rocker", "synthesis/shaper",
+           "synthesis/seed000_v_engine")
 _STATIC = {"app.js": "text/javascript; charset=utf-8", "app.css": "text/css; charset=utf-8"}
 _CSP = ("default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self' data:; "
         "connect-src 'self'; base-uri 'none'; form-action 'none'; frame-ancestors 'none'")
@@ -261,6 +263,10 @@ class Workbench:
             n += 1
         return {"path": self.rel(name), **_parsed(text, self.rel(name))}
 
+    async def design(self, request: Request) -> Response:
+        text, name = await self.text(request), self.source_name(request)
+        return Response(await run_in_threadpool(_design, text, name), media_type="application/json")
+
     async def forces(self, request: Request) -> Response:
         text, name = await self.text(request), self.source_name(request)
         return Response(await run_in_threadpool(_forces, text, name), media_type="application/json")
@@ -345,7 +351,8 @@ def _samples() -> list[dict[str, Any]]:
             continue
         text = p.read_text(encoding="utf-8")
         data = tomllib.loads(text)
-        out.append({"name": name, "title": _title(data, name), "titles": _titles(data), "text": text})
+        out.append({"name": name.replace("/", "_"), "title": _title(data, name), "titles": _titles(data),
+                    "text": text, "kind": _kind(data)})
     return out
 
 
@@ -415,6 +422,23 @@ def _solve(text: str, name: str, steps: bool = True) -> bytes:
     sol = solve_scene(parse_scene(text, name))
     return json.dumps(to_json(sol, steps), ensure_ascii=False, allow_nan=False,
                       separators=(",", ":")).encode("utf-8")
+
+
+def _design(text: str, name: str) -> bytes:
+    """A synthesis file designed (``plans design``): the scene written and the JSON of
+    ``plans design --json`` (its ``scene`` the scene's text)."""
+    from plans.io import loads_toml
+    from plans.synthesis.cli import _check_scene, results
+    from plans.synthesis.design import design
+    from plans.synthesis.model import task_from_dict
+    from plans.synthesis.scene import scene_text
+
+    d = design(task_from_dict(loads_toml(text, name), name))
+    scene = scene_text(d)
+    _check_scene(scene, name)
+    return json.dumps({"scene": scene, "data": _jsonable(tomllib.loads(scene)), "design": results(d, scene)},
+                      ensure_ascii=False,
+                      allow_nan=False, separators=(",", ":")).encode("utf-8")
 
 
 def _forces(text: str, name: str) -> bytes:
@@ -507,6 +531,7 @@ def make_app(root: str | Path, hosts: set[str]) -> Any:
         Route("/api/draw", _handler(wb.draw), methods=["POST"]),
         Route("/api/demo", _handler(wb.demo), methods=["POST"]),
         Route("/api/forces", _handler(wb.forces), methods=["POST"]),
+        Route("/api/design", _handler(wb.design), methods=["POST"]),
         Route("/api/template", _handler(wb.template), methods=["GET"]),
     ]
     app = Starlette(routes=routes)

@@ -19,6 +19,7 @@
       start: "Start from a course mechanism", files_of: "Files of", scheme: "Scheme", velocity_plan: "Velocity plan",
       acceleration_plan: "Acceleration plan", forces: "Forces ▸", forces_tip: "the force polygons and the Zhukovsky lever",
       cycle: "Cycle ▸", cycle_tip: "the tables over the cycle as diagrams", cycle_title: "Over the cycle",
+      open_designed: "Open the designed scene", designed: "Designed:",
       plans: "◂ Plans", forces_title: "Force polygons and the Zhukovsky lever", quantity: "quantity", segment: "segment",
       mm: "mm", read: "read", exact: "exact", difference: "difference", unit: "unit", where: "where", student: "student",
       error_pct: "error, %", tolerance_pct: "tolerance, %", verdict: "verdict", create: "Create",
@@ -30,13 +31,14 @@
       no_answer: "the server does not answer", drawing: "drawing", ready: "ready", building: "building the page…",
       save_first: "save the scene first: a check file names its scene's file", name_needed: "a file name is needed",
       no_forces: "The scene asks for no force analysis (outputs: force_polygons, lever).",
-      kinds: {linkage: "linkages", engine: "engines", gears: "gears", cam: "cams", check: "check files"},
-      sections: {}},
+      kinds: {linkage: "linkages", engine: "engines", gears: "gears", cam: "cams", check: "check files", synthesis: "synthesis"},
+      sections: {task: "task"}},
     ru: {gallery: "галерея", workbench: "верстак", save: "Сохранить", page: "Страница", check: "Проверка…",
       page_tip: "демонстрационная страница (plans demo)", check_tip: "пустой файл проверки для этой схемы: введите цифры студента",
       start: "Начать с механизма курса", files_of: "Файлы папки", scheme: "Схема", velocity_plan: "План скоростей",
       acceleration_plan: "План ускорений", forces: "Силы ▸", forces_tip: "планы сил и рычаг Жуковского",
       cycle: "Цикл ▸", cycle_tip: "таблицы за цикл в виде диаграмм", cycle_title: "За цикл",
+      open_designed: "Открыть спроектированную схему", designed: "Спроектировано:",
       plans: "◂ Планы", forces_title: "Планы сил и рычаг Жуковского", quantity: "величина", segment: "отрезок",
       mm: "мм", read: "по плану", exact: "точно", difference: "разность", unit: "ед.", where: "где", student: "студент",
       error_pct: "ошибка, %", tolerance_pct: "допуск, %", verdict: "итог", create: "Создать",
@@ -48,9 +50,10 @@
       expected_number: "ожидалось число, введено", no_answer: "сервер не отвечает", drawing: "чертёж", ready: "готов",
       building: "строится страница…", save_first: "сначала сохраните схему: файл проверки ссылается на её файл",
       name_needed: "нужно имя файла", no_forces: "Силовой расчёт в схеме не запрошен (outputs: force_polygons, lever).",
-      kinds: {linkage: "механизмы", engine: "двигатели", gears: "зубчатые передачи", cam: "кулачки", check: "файлы проверки"},
+      kinds: {linkage: "механизмы", engine: "двигатели", gears: "зубчатые передачи", cam: "кулачки", check: "файлы проверки", synthesis: "проектирование"},
       sections: {points: "точки стойки", driver: "начальное звено", loads: "нагрузки", branches: "сборки",
-        positions: "положения", scales: "масштабы", tolerance: "допуски", cycle: "цикл", dynamics: "динамика"}},
+        positions: "положения", scales: "масштабы", tolerance: "допуски", cycle: "цикл", dynamics: "динамика",
+        task: "задание"}},
   };
   let LANG = localStorage.getItem("plans-lang") || ((navigator.language || "").startsWith("ru") ? "ru" : "en");
   const t = (k) => (WORDS[LANG][k] !== undefined ? WORDS[LANG][k] : WORDS.en[k]);
@@ -141,7 +144,9 @@
     $("checkview").hidden = S.kind !== "check"; $("stage").hidden = S.kind === "check";
     $("gallery").hidden = true; $("editor").hidden = false;
     $("save-box").hidden = false; $("downloads").hidden = false;
-    $("dl-demo").hidden = S.kind === "check"; $("new-check").hidden = S.kind !== "linkage";
+    $("dl-demo").hidden = S.kind !== "linkage"; $("new-check").hidden = S.kind !== "linkage";
+    $("design-box").hidden = S.kind !== "synthesis"; S.designed = null; S.designedData = null;
+    $("design-summary").textContent = "";
     for (const b of document.querySelectorAll("#downloads button[data-format]")) b.hidden = S.kind === "check";
     $("save-path").value = path || name;
     $("doc-path").textContent = path || t("not_saved");
@@ -170,6 +175,11 @@
     const f = $("form"); clear(f);
     const tt = S.data.title;
     $("doc-title").textContent = titleOf(tt, S.name);
+    const scalars = Object.keys(S.data).filter((k) => !SKIP[k] && typeof S.data[k] === "number");
+    if (scalars.length) {  // a synthesis file's task: the stroke, K, the swing, λ at the top level
+      const fs = h(f, "fieldset"); h(fs, "legend", {}, t("sections").task || "task");
+      for (const k of scalars) row(fs, k, [k], [S.data[k]]);
+    }
     for (const top of Object.keys(S.data)) {
       if (SKIP[top]) continue;
       const v = S.data[top];
@@ -280,8 +290,26 @@
     const seq = ++S.seq;
     const t0 = performance.now();
     status(t("solving"));
+    let text = S.text;
+    if (S.kind === "synthesis") {  // designed first (plans design), then its scene solved and drawn
+      const d = await api("POST", "/api/design" + (S.path ? "?path=" + encodeURIComponent(S.path) : ""), S.text);
+      if (d.ok) {
+        S.designed = d.data.scene; S.designedData = d.data.data;
+        $("general-error").textContent = "";
+        $("design-summary").textContent = designSummary(d.data.design);
+        text = d.data.scene;
+      } else text = null;
+      if (!d.ok) {
+        if (seq < S.shown) return;
+        S.shown = seq;
+        mark((d.data.field && fieldId(d.data.field)) || S.last, d.data.error);
+        status(t("error"), true);
+        document.body.dataset.solved = String(seq);
+        return;
+      }
+    }
     // steps=0: the construction protocol's text is left out (the page draws, it reads no protocol)
-    const r = await api("POST", "/api/solve?steps=0" + (S.path ? "&path=" + encodeURIComponent(S.path) : ""), S.text);
+    const r = await api("POST", "/api/solve?steps=0" + (S.path && S.kind !== "synthesis" ? "&path=" + encodeURIComponent(S.path) : ""), text);
     if (seq < S.shown) return;  // an older answer after a newer one: keep the newer
     S.shown = seq;
     if (!r.ok) {
@@ -302,6 +330,15 @@
     status(t("solved") + " " + Math.round(performance.now() - t0) + " ms");
     if (S.showForces) loadForces();
     document.body.dataset.solved = String(seq);
+  }
+  function designSummary(D) {
+    const parts = [];
+    for (const k in D.lengths || {}) parts.push(k + " = " + num(D.lengths[k]));
+    if (D.K_measured !== undefined) parts.push("K = " + num(D.K_measured));
+    if (D.stroke_measured !== undefined) parts.push("H = " + num(D.stroke_measured));
+    if (D.swing_measured_deg !== undefined) parts.push("ψ = " + num(D.swing_measured_deg) + "°");
+    if (D.gamma_min_deg !== undefined) parts.push("γmin = " + num(D.gamma_min_deg) + "°");
+    return parts.join(", ");
   }
   function fieldId(field) {
     // "links.1.length" or "points.O" name a row; an array element or a sub-key names its row
@@ -385,9 +422,10 @@
     if (S.showForces && S.forces) drawForces();
     if (S.showCycle) drawCycle();
   }
+  function sceneData() { return S.kind === "synthesis" && S.designedData ? S.designedData : S.data; }
   function links() {
     const out = [];
-    const L = S.data.links || {};
+    const L = sceneData().links || {};
     for (const id of Object.keys(L)) {
       const axis = Array.isArray(L[id].axis) ? L[id].axis : [];
       const extra = L[id].points && typeof L[id].points === "object" ? Object.keys(L[id].points) : [];
@@ -401,9 +439,10 @@
     const all = [];
     for (const q of S.sol.positions) for (const nm in q.points) all.push(mm(q.points[nm].r));
     const size = fit(svg, all, 0.08), u = size / 100;
-    const frame = String(S.data.frame);
-    const joints = Array.isArray(S.data.joints) ? S.data.joints : [];
-    const unit = S.data.unit === "mm" ? 1 : 1000;
+    const D = sceneData();
+    const frame = String(D.frame);
+    const joints = Array.isArray(D.joints) ? D.joints : [];
+    const unit = D.unit === "mm" ? 1 : 1000;
     for (const j of joints) {  // guides fixed to the frame: a long dashed line
       const g = j.guide;
       if (j.kind !== "P" || !g || String(g.link) !== frame) continue;
@@ -446,7 +485,7 @@
     for (const lk of links()) for (const nm of lk.axis) axisNames[nm] = 1;
     for (const nm in pos.points) {
       const p = P(nm);
-      const draggable = pivots[nm] && S.data.points && Array.isArray(S.data.points[nm]);
+      const draggable = D === S.data && pivots[nm] && S.data.points && Array.isArray(S.data.points[nm]);
       if (axisNames[nm] || draggable) {
         const c = el(svg, "circle", {cx: f3(p[0]), cy: f3(-p[1]), r: f3((draggable ? 1.6 : 1.1) * u),
           class: draggable ? "pivot" : "joint", "stroke-width": f3(0.35 * u), "data-point": nm});
@@ -660,6 +699,12 @@
     if (!r.ok) { status(r.data.error, true); return; }
     showForces(false);
     open(null, r.data.path, r.data.text, r.data.data, r.data.kind);
+  });
+  $("open-designed").addEventListener("click", () => {
+    if (!S.designed) return;
+    const stem = (S.path || S.name || "design").replace(/\.toml$/, "").replace(/.*\//, "");
+    showForces(false);
+    open(null, stem + "_scene.toml", S.designed);
   });
   $("show-forces").addEventListener("click", () => showForces(true));
   $("show-plans").addEventListener("click", () => showForces(false));
