@@ -164,7 +164,7 @@ class Workbench:
         return JSONResponse(await run_in_threadpool(self._files))
 
     def _files(self) -> dict[str, Any]:
-        out: dict[str, list[dict[str, str]]] = {}
+        out: dict[str, list[dict[str, Any]]] = {}
         for n, p in enumerate(sorted(self.root.rglob("*.toml"))):
             if n >= MAX_FILES:
                 break
