@@ -403,3 +403,13 @@ def test_page_designs_a_crank_rocker_from_the_gallery(browser, server):
     swing = max(abs(a - angles[0]) for a in angles)
     assert abs(swing - 40.0) < 2.0  # 12 positions sample the far end to within a few degrees
     pg.close()
+
+
+def test_the_host_names_answered_are_the_servers_own():
+    import socket
+
+    assert hosts_for("127.0.0.1", 8765) == {"127.0.0.1:8765", "localhost:8765", "[::1]:8765"}
+    every = hosts_for("0.0.0.0", 8765)
+    assert f"{socket.gethostname().lower()}:8765" in every and "127.0.0.1:8765" in every
+    assert not any(h.startswith("evil") for h in every)
+    assert hosts_for("192.168.1.5", 80) == {"192.168.1.5:80"}

@@ -510,10 +510,22 @@ def _handler(fn: Any) -> Any:
 
 
 def hosts_for(host: str, port: int) -> set[str]:
-    """The Host headers a browser sends for this server."""
-    names = {"127.0.0.1", "localhost", "[::1]"} if host in ("127.0.0.1", "localhost", "::1") else set()
-    names.add(f"[{host}]" if ":" in host else host)
-    return {f"{n}:{port}".lower() for n in names}
+    """The Host headers a browser sends for this server: its own names and addresses, never
+    another domain's (a name that resolves here only by DNS rebinding)."""
+    names = {"127.0.0.1", "localhost", "[::1]"} if host in ("127.0.0.1", "localhost", "::1", "0.0.0.0", "::") \
+        else set()
+    if host in ("0.0.0.0", "::"):  # every address of this computer, and its name
+        import socket
+
+        me = socket.gethostname()
+        names |= {me, socket.getfqdn()}
+        try:
+            names |= {i[4][0] for i in socket.getaddrinfo(me, None)}
+        except OSError:
+            pass
+    else:
+        names.add(host)
+    return {f"[{n}]:{port}".lower() if ":" in n and not n.startswith("[") else f"{n}:{port}".lower() for n in names}
 
 
 def make_app(root: str | Path, hosts: set[str]) -> Any:
@@ -559,7 +571,8 @@ def serve(root: str | Path, *, host: str = "127.0.0.1", port: int = 8765, open_b
     sock = bind(host, port)
     port = sock.getsockname()[1]
     app = make_app(root, hosts_for(host, port))
-    url = f"http://{'[' + host + ']' if ':' in host else host}:{port}/"
+    shown = "127.0.0.1" if host in ("0.0.0.0", "::") else host
+    url = f"http://{'[' + shown + ']' if ':' in shown else shown}:{port}/"
     print(f"plans serve: {Path(root).resolve()} at {url} (Ctrl-C stops)", flush=True)
     if open_browser:
         import webbrowser
