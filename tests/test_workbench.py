@@ -143,6 +143,25 @@ def test_bad_requests_are_4xx_with_one_line(server):
     assert (root / "slider_crank.toml").read_bytes() == (SAMPLES / "slider_crank.toml").read_bytes()
 
 
+def test_draw_passes_the_format_through_to_the_sheets(server):
+    from drawings.export import FORMATS
+
+    _, url = server
+    if "dxf" not in FORMATS:
+        pytest.skip("DXF sheets not in this installation")
+    text = (SAMPLES / "slider_crank.toml").read_bytes()
+    status, ctype, body = _req(url + "/api/draw?format=dxf&path=slider_crank.toml", "POST", text)
+    assert status == 200
+    if ctype == "application/zip":
+        import io
+        import zipfile
+
+        names = zipfile.ZipFile(io.BytesIO(body)).namelist()
+        assert names and all(n.endswith(".dxf") for n in names)
+    else:
+        assert b"SECTION" in body[:2000] and b"EOF" in body[-100:]
+
+
 def test_two_tabs_solve_at_once(server):
     from concurrent.futures import ThreadPoolExecutor
 
