@@ -520,7 +520,7 @@ def hosts_for(host: str, port: int) -> set[str]:
         me = socket.gethostname()
         names |= {me, socket.getfqdn()}
         try:
-            names |= {i[4][0] for i in socket.getaddrinfo(me, None)}
+            names |= {str(i[4][0]) for i in socket.getaddrinfo(me, None)}
         except OSError:
             pass
     else:
