@@ -69,7 +69,9 @@ from plans.check.findings import (
 from plans.check.providers import STUDENT_ONLY, Context, Exact, exact_value, known_quantities
 from plans.check.relations import relation_findings
 from plans.errors import InputError, OutputError, PlansError, one_line
+from plans.guard import abandon
 from plans.io import atomic_write, dumps, refuse_input, write_all
+from plans.io import remove as remove_files
 from plans.units import DUST, percent
 
 _SCALE_UNIT = {"length": "mm/m", "velocity": "mm/(m/s)", "acceleration": "mm/(m/s²)", "force": "mm/N"}
@@ -461,7 +463,9 @@ def run(args: argparse.Namespace) -> int:
 
             return run_form(target, args)
         if not target.exists():
-            _err(f"{target}: no such file or folder")
+            why = "a symbolic link to no readable file (a loop, or its target gone)" if target.is_symlink() \
+                else "no such file or folder"
+            _err(f"{target}: {why}")
             return 2
         for out_path in (args.json, args.csv):
             refuse_input(out_path, target)
@@ -500,11 +504,13 @@ def run(args: argparse.Namespace) -> int:
                     print(p)
         return 0
     except PlansError as exc:
+        abandon()  # nothing of the command is written (it answers 2 itself)
         _err(one_line(exc))
         return 2
     except BrokenPipeError:
         raise  # the runner ends quietly: the reader of the table has gone
     except OSError as exc:
+        abandon()
         _err(f"{exc.filename or ''}: {exc.strerror}")
         return 2
 
@@ -566,8 +572,7 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
             bad += 1
             _err(one_line(exc))
             rows.append(summary_row(str(f), None, str(exc)))
-            for old in reports:  # a report of an earlier run would look current
-                old.unlink(missing_ok=True)
+            remove_files(reports)  # a report of an earlier run would look current
             _after(args, f, False)
             continue
         _after(args, f, True)

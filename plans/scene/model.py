@@ -134,6 +134,17 @@ class Scene:
     fij: str
     raw: dict[str, Any] = field(repr=False, default_factory=dict)
     titles: dict[str, str] = field(default_factory=dict)  # per sheet language: {"ru": ..., "en": ...}
+    #: the target lengths of the plans, polygons and lever as a fraction of the A1 ones: a
+    #: smaller sheet's (``plans.solve(scene, fit=...)``; never read from a file)
+    fit: float = 1.0
+    #: the other tables as typed records (:mod:`plans.scene.tables`): ``[loads]``
+    #: (plans.forces.loads.Loads), ``[dynamics]`` and ``[diagrams]`` (plans.cycle.spec) read by
+    #: ``plans.solve`` (then ``tables`` is True), None where the file neither gives nor needs
+    #: them; ``[sheet]`` is validated with the file and read as :attr:`sheet`
+    loads: Any = field(default=None, repr=False)
+    dynamics_spec: Any = field(default=None, repr=False)
+    diagrams_spec: Any = field(default=None, repr=False)
+    tables: bool = field(default=False, repr=False)
     #: what is derived once per scene (its structure, the solver's constants); not copied by
     #: dataclasses.replace, so a changed scene derives its own
     memo: dict[Any, Any] = field(init=False, repr=False, compare=False, default_factory=dict)
@@ -141,6 +152,19 @@ class Scene:
     def title_in(self, lang: str) -> str:
         """The title in a sheet's language (the plain title where none is given for it)."""
         return self.titles.get(lang, self.title)
+
+    @property
+    def sheet(self) -> Any:
+        """``[sheet]`` as a typed record (plans.scene.paper.SheetSpec), validated with the file."""
+        from plans.scene.sheet import sheet_for
+
+        return sheet_for(self)
+
+    def sheet_for(self, **override: Any) -> Any:
+        """``[sheet]`` with what a command overrides (format, orientation, language = ...)."""
+        from plans.scene.sheet import sheet_for
+
+        return sheet_for(self, **override)
 
     def wants(self, output: str) -> bool:
         return output in self.outputs
@@ -200,18 +224,9 @@ def parse_scene(text: str, path: str = "<scene>") -> Scene:
 
 def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
     r = Reader(path)
-    check_format(r, data)
-    kind = data.get("kind", "linkage")
-    if kind != "linkage":
-        from plans.kinds import KINDS, command_for
+    from plans.kinds import check_top
 
-        if not isinstance(kind, str) or kind not in KINDS:
-            hint = did_you_mean(kind, KINDS) if isinstance(kind, str) else ""
-            raise r.fail("kind", f"expected one of {', '.join(repr(k) for k in KINDS)}, got {kind!r}{hint}")
-
-        raise r.fail("kind", f"this is a {kind!r} file, not a linkage scene; "
-                             f"{command_for(kind)}expected kind = \"linkage\" or no kind")
-    r.keys(data, TOP_KEYS, "")
+    check_top(data, path, "linkage", TOP_KEYS)
     unit = r.choice(data, "unit", "", sorted(LENGTH_UNITS), "mm")
     title, titles = _title(r, data.get("title", _stem(path)))
     r.string(title, "title", limit=2000)
@@ -246,6 +261,9 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
     outputs = _outputs(r, data)
     scales, style = _scales(r, data)
     fij = r.choice(data, "fij", "", FIJ_CONVENTIONS, "on_i_from_j")
+    from plans.scene.sheet import check_sheet
+
+    check_sheet(data, path)  # the record is made when a reader asks for it (Scene.sheet)
     scene = Scene(path=path, title=title, frame=frame, frame_points=frame_points, links=links,
                   joints=joints, driver=driver, branches=branches, outputs=outputs,
                   scales=scales, scale_style=style, fij=fij, raw=data, titles=titles)
@@ -444,7 +462,8 @@ def _driver(r: Reader, data: dict[str, Any], frame: int, frame_points: dict[str,
     else:
         raise r.fail("driver.omega", "missing crank speed: omega = rad/s or omega_rpm = rev/min")
     sense = 1 if r.choice(d, "sense", "driver.", ("ccw", "cw"), "ccw") == "ccw" else -1
-    eps = r.number(d, "eps", "driver.", default=0.0)
+    # ε of dust is ε = 0 to rounding (it scales with ω², 1e-12 at the slowest crank): no floor
+    eps = r.number(d, "eps", "driver.", default=0.0, floor=0.0)
     phi_ref = math.radians(r.angle(d, "phi_ref_deg", "driver."))
     if "phi_deg" in d and "positions" in d:
         raise r.fail("driver.phi_deg", "give phi_deg or positions, not both")
