@@ -163,7 +163,8 @@ def _fail(path: str, field: str, msg: str) -> InputError:
     return InputError(msg, file=path, field=field)
 
 
-_TOP = {"format", "student", "scene", "sheet", "scales", "tolerance", "positions", "title", "rubric"}
+_TOP = {"format", "student", "group", "variant", "scene", "sheet", "scales", "tolerance", "positions", "title",
+        "rubric"}
 
 
 def check_from_dict(data: dict[str, Any], path: str = "<check>") -> CheckFile:

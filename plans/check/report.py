@@ -421,6 +421,10 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--out", metavar="DIR", help="write <name>.json and <name>.txt per check file here "
                                                  "(batch default: DIR/reports)")
     p.add_argument("--quiet", action="store_true", help="no table on stdout")
+    p.add_argument("--xlsx", metavar="MARKS.xlsx", help="with a folder: every sheet under it checked, one row per "
+                                                         "student, one worksheet per group (the gradebook)")
+    p.add_argument("--rubric", metavar="RUBRIC.toml", help="with --xlsx: weights per sheet, pass threshold, marks")
+    p.add_argument("--jobs", type=int, default=1, metavar="N", help="with --xlsx: check in N processes")
     p.set_defaults(func=run)
     return p
 
@@ -447,6 +451,12 @@ def _after(args: argparse.Namespace, target: Path, written: bool) -> None:
 def run(args: argparse.Namespace) -> int:
     """``plans check``: 0 when every file was checked, 2 on a user error (one line on stderr).
     A single file's outputs (JSON, CSV, reports, sheets) are written all or none."""
+    if getattr(args, "xlsx", None) or getattr(args, "template", None):
+        from plans.group.cli import run_group
+
+        got = run_group(args)
+        if got is not None:
+            return got
     if getattr(args, "template", None):
         from plans.check.forms import run_template
 
@@ -473,6 +483,11 @@ def run(args: argparse.Namespace) -> int:
 
         if cycle_check.is_cycle_check(target):
             return cycle_check.run_file(target, args)
+        from plans.group.cli import run_sheet_file  # a gears or cam sheet
+
+        done = run_sheet_file(target, args)
+        if done is not None:
+            return done
         report = check_file(target)
         for out_path in (args.json, args.csv):
             refuse_input(out_path, report.check.scene.path)
@@ -556,9 +571,14 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
         reports = {out / f"{f.stem}.json", out / f"{f.stem}.txt"}
         try:
             outputs: dict[Path, Any]
+            from plans.group.sheets import sheet_check_of, sheet_outputs
+
+            srep = None if cycle_check.is_cycle_check(f) else sheet_check_of(f)
             if cycle_check.is_cycle_check(f):  # cycle tables: a report, no marked sheet
                 crep = cycle_check.check_cycle(f)
                 outputs, row = cycle_check.outputs(crep, f, out), cycle_check.summary_row(str(f), crep)
+            elif srep is not None:  # a gears or cam sheet
+                outputs, row = sheet_outputs(srep, f, out)
             else:
                 report = _check_beside(f, beside)
                 outputs = {out / f"{f.stem}.json": dumps(report.to_json()),
