@@ -170,3 +170,16 @@ def test_refusals_are_one_line(tmp_path, capsys, old, new, words):
     assert code == 2
     assert err.count("\n") == 1 and words in err and str(f) in err
     assert not out.exists()
+
+
+def test_one_position_equals_the_turn(scene):
+    """A few positions are solved in Python numbers, a turn on arrays: the same numbers."""
+    many = solve(scene, np.arange(0.0, 360.0, 30.0), order=2)
+    for phi in (30.0, 211.0):
+        few = solve(scene, [phi, 90.0], order=2)
+        ref = solve(scene, np.array([phi, 90.0, 0.0, 0.0, 0.0]), order=2)
+        for n in "DEFK":
+            for x, y in zip(few.point(n), ref.point(n), strict=True):
+                assert np.max(np.abs(x - y[:2])) <= 1e-12
+        assert abs(few.omega(3)[0] - ref.omega(3)[0]) <= 1e-12
+    assert abs(many.eps(3)[1] - solve(scene, [30.0], order=2).eps(3)[0]) <= 1e-9

@@ -9,6 +9,7 @@ p, J2 joins i to j, J3 joins j to a known link q.  Its kind is the letters of
 from __future__ import annotations
 
 from dataclasses import field
+from typing import Any, cast
 
 from plans.errors import InputError
 from plans.records import frozen
@@ -99,7 +100,8 @@ class Structure:
         }
 
     def triads(self) -> list[TriadGroup]:
-        return [g for g in self.groups if isinstance(g, TriadGroup)]
+        # the groups are typed as dyads for the many readers that handle only those
+        return [g for g in cast(tuple[Any, ...], self.groups) if isinstance(g, TriadGroup)]
 
     def no_triad(self, path: str, what: str) -> None:
         """Refuse, in one line, what is not yet done for a class-III group."""
@@ -163,7 +165,7 @@ def _groups(scene: Scene, known: set[int]) -> list[Group]:
             if found is not None:
                 break
         if found is None:
-            found = _triad(scene, known, remaining, by_link, between)
+            found = cast(Group, _triad(scene, known, remaining, by_link, between))
         if found is None:
             raise _failer(scene.path)("joints", f"links {sorted(remaining)} do not form class-II Assur "
                                                 f"groups attached to links {sorted(known)}")

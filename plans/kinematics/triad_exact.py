@@ -65,7 +65,7 @@ def _track(scene: Scene, st: Structure, g: TriadGroup, t: Triad, outer_of) -> tu
     grid = np.arange(0.0, 360.0 + STEP_DEG / 2, STEP_DEG)
     kin = solve(scene, grid, order=0, structure=before)
     outs = [kin.point_on(p, z)[0] for p, z in outer_of]
-    state = _assemble(t, tuple(complex(o[0]) for o in outs), g)
+    state = _assemble(t, (complex(outs[0][0]), complex(outs[1][0]), complex(outs[2][0])), g)
     states = []
     for k, phi in enumerate(grid.tolist()):
         outer = (complex(outs[0][k]), complex(outs[1][k]), complex(outs[2][k]))
@@ -107,12 +107,12 @@ def solve_group(ctx: _Ctx, g: TriadGroup, k: tuple) -> None:
     phis = [float(x) for x in np.atleast_1d(np.asarray(ctx.phis, dtype=float))]
     n = len(phis)
 
-    def col(x: Any) -> np.ndarray:
+    def col(x: Any) -> Any:
         return np.broadcast_to(np.asarray(x, dtype=complex), (n,)) if x is not None else None
 
     R = [col(r) for r, _, _ in got]
-    V = [col(v) for _, v, _ in got] if ctx.order >= 1 else None
-    A = [col(a) for _, _, a in got] if ctx.order >= 2 else None
+    V: Any = [col(v) for _, v, _ in got] if ctx.order >= 1 else None
+    A: Any = [col(a) for _, _, a in got] if ctx.order >= 2 else None
     rD = np.empty(n, complex)
     th = np.empty(n)
     vD = np.empty(n, complex)

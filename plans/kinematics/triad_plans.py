@@ -11,7 +11,7 @@ point is the group's special position: the lines of f are then parallel and the 
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 
@@ -63,14 +63,14 @@ def v_triad(b: Builder, g: TriadGroup) -> None:
     Li = b.line(xs[i], 1j * (P[i] - Q[i]), abs(P[i] - Q[i]), f"⟂ {names[i][0]}{names[i][1]}")
     Lj = b.line(xs[j], 1j * (P[j] - Q[j]), abs(P[j] - Q[j]), f"⟂ {names[j][0]}{names[j][1]}")
     s_lab = _label(b, "s")
-    xS = meet(b, g, Li, Lj, s_lab, b.mu * snap.v(base, S), "S", ())
+    xS = meet(b, cast(Any, g), Li, Lj, s_lab, b.mu * snap.v(base, S), "S", ())
     b.step("intersect", (ns[i], ns[j]), s_lab, lambda: phrase(
         "v_triad_s", A=names[i][0], D=names[i][1], B=names[j][0], E=names[j][1], n1=ns[i], n2=ns[j], out=s_lab))
     Pm, Cn, Fn = P[m], names[m][0], names[m][1]
     Lc = b.line(xs[m], 1j * (Pm - Q[m]), abs(Pm - Q[m]), f"⟂ {Cn}{Fn}")
     Ls = b.line(xS, 1j * (Pm - S), abs(Pm - S), f"⟂ S{Fn}")
     out = lab(Fn)
-    xF = meet(b, g, Lc, Ls, out, b.mu * snap.v(base, Pm), Fn, (base, g.links[1 + m]))
+    xF = meet(b, cast(Any, g), Lc, Ls, out, b.mu * snap.v(base, Pm), Fn, (base, g.links[1 + m]))
     b.step("intersect", (ns[m], s_lab), out, lambda: phrase(
         "v_triad_f", C=Cn, F=Fn, n3=ns[m], s=s_lab, out=out))
     b.set_link(base, s_lab, S, (xF - xS) / (Pm - S))
@@ -105,7 +105,7 @@ def a_triad(b: Builder, g: TriadGroup, vr: Any) -> None:
         x = b.image(g.known[k], names[k][0])
         xs.append(x)
         ns.append(ensure(b, g.known[k], names[k][0], x))
-    ends = {}
+    ends: dict[Any, tuple[str, Any]] = {}
     for k in (i, j):  # a_S = a_Q + a_PQ^n + a_SP^n + (a_PQ^τ + a_SP^τ) ⟂ QP
         leash = g.links[1 + k]
         m1, y1 = _normal(b, vr, leash, ns[k], xs[k], Q[k], P[k], names[k][0], names[k][1])
@@ -116,7 +116,7 @@ def a_triad(b: Builder, g: TriadGroup, vr: Any) -> None:
     Li = b.line(yi, 1j * (P[i] - Q[i]), abs(P[i] - Q[i]), f"⟂ {names[i][0]}{names[i][1]}")
     Lj = b.line(yj, 1j * (P[j] - Q[j]), abs(P[j] - Q[j]), f"⟂ {names[j][0]}{names[j][1]}")
     s_lab = _label(b, "s")
-    xS = meet(b, g, Li, Lj, s_lab, b.mu * snap.a(base, S), "S", ())
+    xS = meet(b, cast(Any, g), Li, Lj, s_lab, b.mu * snap.a(base, S), "S", ())
     b.step("intersect", (mi, mj), s_lab, lambda: phrase(
         "a_triad_s", A=names[i][0], D=names[i][1], B=names[j][0], E=names[j][1], m1=mi, m2=mj, out=s_lab))
     Pm, Cn, Fn = P[m], names[m][0], names[m][1]
@@ -126,7 +126,7 @@ def a_triad(b: Builder, g: TriadGroup, vr: Any) -> None:
     Lc = b.line(yc, 1j * (Pm - Q[m]), abs(Pm - Q[m]), f"⟂ {Cn}{Fn}")
     Ls = b.line(ys, 1j * (Pm - S), abs(Pm - S), f"⟂ S{Fn}")
     out = lab(Fn)
-    xF = meet(b, g, Lc, Ls, out, b.mu * snap.a(base, Pm), Fn, (base, leash_m))
+    xF = meet(b, cast(Any, g), Lc, Ls, out, b.mu * snap.a(base, Pm), Fn, (base, leash_m))
     b.step("intersect", (mc, ms), out, lambda: phrase(
         "a_triad_f", C=Cn, F=Fn, m3=mc, ms=ms, out=out))
     b.set_link(base, s_lab, S, (xF - xS) / (Pm - S))
