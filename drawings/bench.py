@@ -5,7 +5,7 @@
 
 With ``--json`` (what ``plans bench`` runs in a fresh interpreter, the engine never
 importing the renderer): each sheet of the first scene written as SVG, PDF and PNG at
-150 dpi from its composed sheet (median of ``--repeat``), the sheets' build (engine,
+150 dpi and as DXF from its composed sheet (median of ``--repeat``), the sheets' build (engine,
 panels, layout) per sheet, and, for a second scene, its cycle diagrams sheet to SVG.
 """
 
@@ -22,7 +22,7 @@ from typing import Any
 
 from plans.scene.model import load_scene
 
-from .export import pdf_bytes, png_bytes, svg_bytes
+from .export import dxf_bytes, pdf_bytes, png_bytes, svg_bytes
 from .linkage import build_panels, draw
 from .panels import ratio_text
 from .sheet import compose, sheet_spec
@@ -77,13 +77,16 @@ def sheet_seconds(path: str, repeat: int = 3) -> dict[str, Any]:
     out: dict[str, Any] = {"scene": str(path), "sheets": len(sheets),
                            "format": sheets[0].spec.format if sheets else "",
                            "build_s": build, "svg_s": [], "pdf_s": [], "png_s": [], "svg_bytes": [],
-                           "svg_cpu_s": [], "pdf_cpu_s": [], "png_cpu_s": []}
+                           "svg_cpu_s": [], "pdf_cpu_s": [], "png_cpu_s": [], "dxf_s": [], "dxf_cpu_s": []}
+    if sheets:
+        dxf_bytes(sheets[0])  # warm up: ezdxf's import
     for sh in sheets:
         svg = sh.svg().encode("utf-8")
         out["svg_bytes"].append(len(svg))
         out["svg_s"].append(_median(functools.partial(svg_bytes, sh), repeat, out["svg_cpu_s"]))
         out["pdf_s"].append(_median(functools.partial(pdf_bytes, svg), repeat, out["pdf_cpu_s"]))
         out["png_s"].append(_median(functools.partial(png_bytes, svg, PNG_DPI), repeat, out["png_cpu_s"]))
+        out["dxf_s"].append(_median(functools.partial(dxf_bytes, sh), repeat, out["dxf_cpu_s"]))
     return out
 
 

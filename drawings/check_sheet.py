@@ -304,7 +304,7 @@ def add_sheet_options(check_parser: argparse.ArgumentParser) -> argparse.Argumen
     overlay sheets of every file checked are written to DIR (a bad file has none)."""
     check_parser.add_argument("--sheet", metavar="DIR",
                               help="also write the marked sheet and the 1:1 overlay of each file here")
-    check_parser.add_argument("--sheet-format", default="svg", metavar="svg,pdf,png",
+    check_parser.add_argument("--sheet-format", default="svg", metavar="svg,pdf,png,dxf",
                               help="formats of the sheets (default svg)")
     check_parser.add_argument("--sheet-language", choices=("ru", "en"), default="ru")
     inner = check_parser.get_default("func")

@@ -27,10 +27,10 @@ def _formats(text: str) -> list[str]:
 
 
 def add_draw(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = sub.add_parser("draw", help="draw the scene's sheets (A1..A4) as SVG, PDF, PNG")
+    p = sub.add_parser("draw", help="draw the scene's sheets (A1..A4) as SVG, PDF, PNG, DXF")
     p.add_argument("scene", help="scene file (TOML)")
     p.add_argument("-o", "--output", required=True, metavar="DIR", help="output folder")
-    p.add_argument("--format", type=_formats, default=["svg"], metavar="svg,pdf,png",
+    p.add_argument("--format", type=_formats, default=["svg"], metavar="svg,pdf,png,dxf",
                    help="comma-separated output formats (default svg)")
     p.add_argument("--sheet", metavar="A1", help="sheet format A1..A4 (overrides [sheet] format)")
     p.add_argument("--orientation", choices=("landscape", "portrait"), help="overrides [sheet] orientation")

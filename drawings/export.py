@@ -1,4 +1,5 @@
-"""Writing sheets: SVG text, PDF and PNG (cairosvg, through :mod:`drawings.convert`), each file atomically."""
+"""Writing sheets: SVG text, PDF and PNG (cairosvg, through :mod:`drawings.convert`), DXF
+(ezdxf, through :mod:`drawings.dxf`), each file atomically."""
 
 from __future__ import annotations
 
@@ -13,11 +14,16 @@ from plans.io import atomic_write  # noqa: F401  (re-exported by drawings)
 if TYPE_CHECKING:  # the sheet's modules (svgwrite, numpy) load only when a sheet is drawn
     from .sheet import Sheet
 
-FORMATS = ("svg", "pdf", "png")
+FORMATS = ("svg", "pdf", "png", "dxf")
 
 
 def svg_bytes(sheet: Sheet) -> bytes:
     return sheet.svg().encode("utf-8")
+
+
+def dxf_bytes(sheet: Sheet) -> bytes:
+    """The sheet as DXF (R2010, mm, 1:1; ezdxf is loaded here, when DXF is asked for)."""
+    return sheet.dxf()
 
 
 #: A fixed creation date: the same sheet gives the same PDF bytes.
@@ -136,8 +142,8 @@ def render(sheets: Sequence[Sheet], outdir: str | Path, stem: str, formats: Sequ
         doc = None  # parsed once for both PDF and PNG
         for f in formats:
             p = out / f"{name}.{f}"
-            if f == "svg":
-                files[p] = svg
+            if f in ("svg", "dxf"):
+                files[p] = svg if f == "svg" else dxf_bytes(sh)
                 continue
             if doc is None:
                 from .convert import tree

@@ -252,8 +252,47 @@ class Sheet:
         replay(self.prims or self.render(), be)
         return be.tostring()
 
+    def dxf(self) -> bytes:
+        """The sheet as DXF bytes: the same primitives at 1:1 in millimetres, panels as
+        blocks, layers by content and line type (:mod:`drawings.dxf`)."""
+        from .dxf import document as dxf_document
+
+        prims, bases = self._dxf_blocks()
+        return dxf_document(self.width, self.height, prims, self.spec.language, self.spec.title, bases)
+
+    def _dxf_blocks(self) -> tuple[list[Prim], dict[str, tuple[float, float]]]:
+        """The sheet's primitives with each placed panel one group (its block in CAD, with
+        whatever was drawn beside the panel's own group, such as a checked plan's marks),
+        and each panel's base point: its box's lower-left corner on the paper."""
+        prims = self.prims or self.render()
+        sizes = [len(p.prims) for p, _, _ in self.placed]
+        start = len(prims) - sum(sizes)
+        out: list[Prim] = list(prims[:max(start, 0)])
+        bases: dict[str, tuple[float, float]] = {}
+        for (panel, x, y), n in zip(self.placed, sizes, strict=True):
+            part = prims[start:start + n]
+            if start < 0 or not part or part[0] != panel.prims[0].moved(x, y):
+                return list(prims), {}  # drawn otherwise than render() draws: blocks by groups
+            start += n
+            whole = n > 1 and part[0].op == "begin" and _closes_at_end(part)
+            if not whole:
+                part = [Prim("begin", eid=panel.pid, cls=f"panel {panel.kind}"), *part, Prim("end")]
+            out.extend(part)
+            bases[panel.pid] = (x, y + panel.height)
+        return out, bases
+
     def _repr_svg_(self) -> str:
         return self.svg()
+
+
+def _closes_at_end(prims: Sequence[Prim]) -> bool:
+    """Whether the group opened by the first primitive closes at the last one."""
+    depth = 0
+    for k, p in enumerate(prims):
+        depth += (p.op == "begin") - (p.op == "end")
+        if depth == 0:
+            return k == len(prims) - 1
+    return False
 
 
 def _frame(rec: Recording, sh: Sheet) -> None:

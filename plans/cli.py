@@ -15,7 +15,7 @@ from plans.errors import InputError, PlansError, one_line
 #: Pure commands living in their own modules, each with ``register(subparsers)``; a module
 #: that is absent is simply not offered.
 _COMMAND_MODULES = ("plans.check.report", "plans.accuracy.bench", "plans.balancing.cli",
-                    "plans.gears.cli", "plans.cams.cli")
+                    "plans.gears.cli", "plans.cams.cli", "plans.synthesis.cli")
 #: The command each module adds and its one-line help, to list it (``plans --help``) or to
 #: run another command without importing it: start-up stays a fraction of a second.
 _COMMAND_NAMES = {
@@ -24,6 +24,7 @@ _COMMAND_NAMES = {
     "plans.balancing.cli": ("balance", "engine balancing: force and moment polygons, counterweights"),
     "plans.gears.cli": ("gears", "involute gears and trains: geometry, checks, speeds (JSON)"),
     "plans.cams.cli": ("cam", "a cam: motion laws, base radius, profile by inversion (JSON)"),
+    "plans.synthesis.cli": ("design", "design a mechanism from K, stroke, swing; prove it; write its scene"),
 }
 
 

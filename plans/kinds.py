@@ -19,6 +19,7 @@ KINDS: dict[str, tuple[str, str]] = {
     "engine": ("balance", "drawings.balancing"),
     "gears": ("gears", "drawings.gears"),
     "cam": ("cam", "drawings.cams"),
+    "synthesis": ("design", "drawings.synthesis"),
 }
 
 

@@ -216,3 +216,13 @@ def test_no_english_abbreviations_on_a_russian_sheet(drawn):
         for p in sh.prims:
             if p.op == "text" and p.label is not None:
                 assert not english.search(p.label.plain), p.label.plain
+
+
+def test_dxf_holds_the_svgs_shapes_in_every_sample(drawn):
+    """The first and the last sheet of every sample as DXF: every shape of its SVG, in order,
+    to 0.01 mm, and nothing else (the other sheets and kinds: tests/test_dxf.py)."""
+    from tests.dxf_sheets import differences, dxf_tags_shapes, svg_shapes
+
+    _, d, _ = drawn
+    for sh in {id(s): s for s in (d.sheets[0], d.sheets[-1])}.values():
+        assert differences(svg_shapes(sh.svg()), dxf_tags_shapes(sh.dxf())[0]) == [], sh.number

@@ -45,7 +45,8 @@ def test_solve_runs_without_the_renderer():
                "sys.argv = ['plans', 'solve', 'samples/slider_crank.toml']\n"
                "try:\n    runpy.run_module('plans', run_name='__main__')\n"
                "except SystemExit as exc:\n    assert not exc.code, exc.code\n"
-               "print('loaded:', sorted(m for m in ('svgwrite', 'cairosvg', 'drawings') if m in sys.modules))")
+               "print('loaded:', sorted(m for m in ('svgwrite', 'cairosvg', 'drawings', 'ezdxf') "
+               "if m in sys.modules))")
     assert got.returncode == 0, got.stderr
     assert got.stdout.rstrip().endswith("loaded: []"), got.stdout[-300:]
     assert "p_v" in got.stdout or "v_" in got.stdout

@@ -349,6 +349,9 @@ def run_bench(quick: bool = False, samples: Path | None = None, progress: Callab
     stiff = stiff_load_records(samples)
     log("performance goals ...")
     goals = speed.performance_goals(samples, budget)
+    from plans.accuracy.synthesis_bench import synthesis_goals  # one design per model, proven
+
+    goals += synthesis_goals(samples, budget)
     warnings = [f"{r.method} on {r.scene} ({r.positions} positions, {r.param}): condition number "
                 f"{r.cond:.3g} > {newton.COND_WARN:.0e}" for r in records
                 if r.cond is not None and math.isfinite(r.cond) and r.cond > newton.COND_WARN]

@@ -312,6 +312,8 @@ def start_up_goals(samples: Path, reps: int = 5) -> list[Goal]:
 
 #: Each A1 sheet of the V-engine (seconds, per sheet) and the cycle's diagrams sheet.
 SHEET_SVG, SHEET_PDF, SHEET_PNG, DIAGRAMS_SVG = 0.1, 0.4, 0.6, 0.2
+#: The same sheets as DXF: seconds per sheet, and at most this many times the SVG's time.
+SHEET_DXF, SHEET_DXF_PER_SVG = 0.1, 5.0
 
 
 def sheet_goals(samples: Path, reps: int = 3) -> list[Goal]:
@@ -344,6 +346,15 @@ def sheet_goals(samples: Path, reps: int = 3) -> list[Goal]:
                         f"{per:.3f} s per sheet (processor {cpu:.3f} s; slowest {max(ts):.3f} s), medians "
                         f"of {reps}{extra}; "
                         f"load {load}", per / bound, per <= bound))
+    if sh.get("dxf_s"):  # the DXF of the same sheets: a bound of its own and the SVG's time × 5
+        per, svg_per = sum(sh["dxf_s"]) / n, sum(sh["svg_s"]) / n
+        cpu = sum(sh.get("dxf_cpu_s", [math.nan])) / n
+        bound = min(SHEET_DXF, SHEET_DXF_PER_SVG * svg_per) if svg_per > 0 else SHEET_DXF
+        out.append(Goal(f"V-engine, {n} {sh['format']} sheets: DXF ≤ {SHEET_DXF:g} s per sheet and ≤ SVG × "
+                        f"{SHEET_DXF_PER_SVG:g}",
+                        f"{per:.3f} s per sheet (processor {cpu:.3f} s; slowest {max(sh['dxf_s']):.3f} s; "
+                        f"SVG × {per / svg_per if svg_per > 0 else math.nan:.2f}), medians of {reps}; load {load}",
+                        per / bound, per <= bound))
     d = fig.get("diagrams")
     if d is not None:
         t = d["svg_s"]

@@ -1,0 +1,380 @@
+"""The synthesis sheet: the construction (the extreme positions, the overlap angle θ, the
+circle on whose arc the chord subtends θ and the chosen pivot, the position of the least
+transmission angle) and the table of the design (given, found, measured back)."""
+
+from __future__ import annotations
+
+import cmath
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+from plans.synthesis.design import Design, choice_text, design, stroke_of
+from plans.synthesis.model import load_task
+from plans.synthesis.proof import Coulisse, FourBar, Slider
+
+from .backend import HAIR, MAIN, THICK, THIN, Pt, Recording, Style
+from .common import dot, fmt
+from .i18n import lookup
+from .panels import STANDARD_RATIOS, Panel, finish, ratio_text
+from .sheet import GAP, TB_H, Sheet, SheetSpec, compose, sheet_spec, usable
+from .text import layout
+
+SMALL = 2.5
+LABEL = 3.5
+CONSTRUCT = Style(width=0.25, stroke="#1f5fbf")
+CIRCLE = Style(width=0.25, stroke="#1f5fbf", dash=(6.0, 1.5, 1.0, 1.5))
+AXIS = Style(width=0.18, stroke="#333", dash=(6.0, 1.0, 1.0, 1.0), cls="axis")
+WORST = Style(width=0.35, stroke="#c00000", dash=(3.0, 1.2))
+FAR = Style(width=0.5, stroke="#555")
+
+WORDS = {
+    "construction": ("Крайние положения, угол перекрытия θ", "Extreme positions, overlap angle θ"),
+    "table": ("Задано, найдено, проверено", "Given, found, measured back"),
+    "quantity": ("Величина", "Quantity"),
+    "given": ("Задано", "Given"),
+    "found": ("Найдено", "Found"),
+    "measured": ("Проверено по механизму", "Measured back"),
+}
+_w = lookup(WORDS)
+
+
+@dataclass(frozen=True)
+class Drawing:
+    design: Design
+    spec: SheetSpec
+    panels: tuple[Panel, ...]
+    sheets: tuple[Sheet, ...]
+
+
+def _scale(size_m: float, target_mm: float) -> float:
+    """The largest standard scale (paper mm per m) drawing ``size_m`` within ``target_mm``."""
+    for r in STANDARD_RATIOS:
+        if r * 1000.0 * size_m <= target_mm:
+            return r * 1000.0
+    return STANDARD_RATIOS[-1] * 1000.0
+
+
+def _text(rec: Recording, s: str, p: Pt, size: float = LABEL, anchor: str = "start", valign: str = "middle",
+          eid: str = "", fill: str = "#000") -> None:
+    rec.text(layout(s, p[0], p[1], size, anchor, valign), "label", eid, fill=fill)
+
+
+def _positions(d: Design, phi: float) -> dict[str, complex]:
+    """The mechanism's joints at the crank angle φ (world, m)."""
+    out: dict[str, complex] = {}
+    for i, m in enumerate(d.mechs):
+        if isinstance(m, Slider):
+            A, B = m.place(phi)
+            out["A"] = A
+            out["B" if i == 0 else "C"] = B
+        elif isinstance(m, FourBar):
+            out["A"], out["B"] = m.place(phi)
+        else:
+            out["A"], out["D"], out["E"] = m.place(phi)
+    return out
+
+
+def _links(d: Design, p: dict[str, complex]) -> list[tuple[str, str]]:
+    if d.model == "v_engine":
+        return [("O", "A"), ("A", "B"), ("A", "C")]
+    if d.model in ("crank_rocker", "three_positions"):
+        return [("O", "A"), ("A", "B"), ("D", "B")]
+    if d.model == "coulisse":
+        return [("O", "A"), ("C", "D"), ("D", "E")]
+    return [("O", "A"), ("A", "B")]
+
+
+def construction_panel(d: Design, lang: str, target: float) -> Panel:
+    t = d.task
+    m0 = d.measured[0]
+    fixed = {"O": 0j, **{k: v for k, v in d.points.items() if k in ("D", "C")}}
+    pos1 = {**fixed, **_positions(d, m0.phi_start)}
+    pos2 = {**fixed, **_positions(d, m0.phi_end)}
+    worst = {**fixed, **_positions(d, m0.phi_gamma)}
+    pts = list(pos1.values()) + list(pos2.values()) + list(worst.values())
+    xs = [z.real for z in pts]
+    ys = [z.imag for z in pts]
+    box = (min(xs), min(ys), max(xs), max(ys))
+    span = max(box[2] - box[0], box[3] - box[1], 1e-9)
+    circ = d.circle
+    if circ is not None and circ[1] < 1.2 * span:  # the circle whole when it is not far bigger
+        c, R = circ
+        box = (min(box[0], c.real - R), min(box[1], c.imag - R), max(box[2], c.real + R), max(box[3], c.imag + R))
+        span = max(box[2] - box[0], box[3] - box[1])
+    mu = _scale(span * 1.15, target)
+    rec = Recording()
+
+    def P(z: complex) -> Pt:
+        return (mu * z.real, -mu * z.imag)
+
+    pad = 0.08 * span
+    lo = complex(box[0] - pad, box[1] - pad)
+    hi = complex(box[2] + pad, box[3] + pad)
+    # the construction's circle (the part within the drawing when it is large) and its centre
+    if circ is not None:
+        c, R = circ
+        n = 720
+        run: list[Pt] = []
+        for k in range(n + 1):
+            z = c + R * cmath.exp(2j * math.pi * k / n)
+            if lo.real <= z.real <= hi.real and lo.imag <= z.imag <= hi.imag:
+                run.append(P(z))
+            elif run:
+                if len(run) > 1:
+                    rec.polyline(run, CIRCLE, "construction-circle")
+                run = []
+        if len(run) > 1:
+            rec.polyline(run, CIRCLE, "construction-circle")
+        if lo.real <= c.real <= hi.real and lo.imag <= c.imag <= hi.imag:
+            dot(rec, P(c), 0.5, "circle-centre")
+            _text(rec, "O₁", (P(c)[0] + 1.5, P(c)[1] + 1.5), SMALL, valign="top")
+    # the guides and the crank's circle
+    l1 = d.lengths["crank"]
+    rec.circle(P(0j), mu * l1, HAIR, "crank-circle")
+    for i, m in enumerate(d.mechs):
+        if isinstance(m, Slider | Coulisse):
+            g0, u = m.G0, m.u
+            s = [((z - g0) * u.conjugate()).real for z in (lo, hi, complex(lo.real, hi.imag), complex(hi.real, lo.imag))]
+            rec.line(P(g0 + min(s) * u), P(g0 + max(s) * u), AXIS, f"guide-{i}")
+    # the extreme positions: the links thick, the far one grey; the points labelled ′ and ″
+    # (a V-engine: each cylinder's own)
+    sets: list[tuple[dict[str, complex], dict[str, complex], list[tuple[str, str]], tuple[str, ...] | None]] = [
+        (pos1, pos2, _links(d, pos1), None)]
+    if d.model == "v_engine":
+        m1 = d.measured[1]
+        sets = [(pos1, pos2, [("O", "A"), ("A", "B")], ("A", "B")),
+                ({**fixed, **_positions(d, m1.phi_start)}, {**fixed, **_positions(d, m1.phi_end)},
+                 [("O", "A"), ("A", "C")], ("C",))]
+    for i, (p1, p2, links, names) in enumerate(sets):
+        for pos, style, mark in ((p1, THICK, "′"), (p2, FAR, "″")):
+            for a, b in links:
+                rec.line(P(pos[a]), P(pos[b]), style, f"link-{a}{b}-{i}{'1' if mark == '′' else '2'}")
+            for name, z in pos.items():
+                if name in fixed or (names is not None and name not in names):
+                    continue
+                dot(rec, P(z), 0.6)
+                _text(rec, f"{name}{mark}", (P(z)[0] + 1.8, P(z)[1] - 1.8), LABEL, valign="bottom")
+    for name, z in fixed.items():
+        if name != "O":  # the frame's line between the pivots
+            rec.line(P(0j), P(z), THIN, f"frame-O{name}")
+        dot(rec, P(z), 0.9, f"pivot-{name}")
+        _text(rec, name, (P(z)[0] - 1.8, P(z)[1] + 1.8), LABEL, "end", "top", eid=f"label-{name}")
+    # the overlap angle θ at the crank's pivot: the rays to the output's extreme points
+    out_pt = {"central": "B", "offset": "B", "v_engine": "B", "crank_rocker": "B", "three_positions": "B",
+              "coulisse": "A"}[d.model]
+    z1, z2 = pos1[out_pt], pos2[out_pt]
+    if d.model == "v_engine":
+        rec.line(P(z1), P(z2), CONSTRUCT, "stroke-C")
+        q1, q2 = sets[1][0]["C"], sets[1][1]["C"]
+        rec.line(P(q1), P(q2), CONSTRUCT, "stroke-C")
+    if d.model == "coulisse":  # the coulisse at its extremes (tangent to the crank circle)
+        C = d.points["C"]
+        for z in (z1, z2):
+            rec.line(P(C), P(C + (z - C) * (d.lengths["coulisse"] / abs(z - C))), CONSTRUCT)
+        _angle(rec, P, C, z1, z2, 0.35 * abs(z1 - C),
+               f"ψ = θ = {fmt(math.degrees(m0.swing or 0.0), 4, lang)}°", "psi")
+        for z in (z1, z2):  # the crank at the extremes: ⟂ the coulisse
+            rec.line(P(0j), P(z), CONSTRUCT, "crank-extreme")
+    else:
+        a1, a2 = cmath.phase(z1), cmath.phase(z2)
+        if t.theta > 1e-9:
+            for z in (z1, z2):
+                rec.line(P(0j), P(z), CONSTRUCT, "ray")
+            _angle(rec, P, 0j, z1, z2, 0.45 * min(abs(z1), abs(z2)), f"θ = {fmt(math.degrees(t.theta), 4, lang)}°",
+                   "theta")
+        del a1, a2
+        if isinstance(d.mechs[0], FourBar):
+            D = d.points["D"]
+            rec.line(P(z1), P(z2), CONSTRUCT, "chord")
+            _angle(rec, P, D, z1, z2, 0.3 * d.lengths["rocker"], f"ψ = {fmt(math.degrees(m0.swing or 0.0), 4, lang)}°",
+                   "psi")
+        else:
+            rec.line(P(z1), P(z2), CONSTRUCT, "stroke")
+            mid = (z1 + z2) / 2
+            H = m0.stroke or 0.0
+            _text(rec, f"H = {fmt(H / t.scale, 4, lang)}", (P(mid)[0], P(mid)[1] + 7.5), SMALL, "middle", "top")
+    if d.model == "offset":  # the offset e: the pivot's perpendicular to the guide
+        s0 = d.mechs[0]
+        foot = s0.G0 + ((0j - s0.G0) * s0.u.conjugate()).real * s0.u
+        rec.line(P(0j), P(foot), THIN, "offset")
+        half = P(foot / 2)
+        _text(rec, f"e = {fmt(d.lengths['offset'] / t.scale, 4, lang)}", (half[0] - 1.5, half[1]), SMALL, "end",
+              eid="label-offset")
+    # the position of the least transmission angle, dashed red, with γ_min at its joint
+    for a, b in _links(d, worst):
+        rec.line(P(worst[a]), P(worst[b]), WORST, f"worst-{a}{b}")
+    jpt = {"central": "B", "offset": "B", "v_engine": "B", "crank_rocker": "B", "three_positions": "B",
+           "coulisse": "E"}[d.model]
+    g = min(x.gamma_min for x in d.measured)
+    q = P(worst[jpt])
+    _gamma_arc(rec, P, d, worst, jpt)
+    _text(rec, f"γmin = {fmt(math.degrees(g), 4, lang)}°", (q[0] + 2.0, q[1] + 2.5), LABEL, valign="top",
+          eid="gamma-min", fill="#c00000")
+    # three positions: the given positions of the crank and the rocker
+    if d.model == "three_positions":
+        for k in (1, 2, 3):
+            A, B = d.points[f"A{k}"], d.points[f"B{k}"]
+            rec.line(P(0j), P(A), CONSTRUCT, f"given-crank-{k}")
+            rec.line(P(d.points["D"]), P(B), CONSTRUCT, f"given-rocker-{k}")
+            _text(rec, str(k), (P(B)[0] + 1.2, P(B)[1] - 1.2), SMALL, valign="bottom")
+    note = f"{ratio_text(mu)}; " + ("штрих — положение γmin" if lang == "ru" else "dashed red: the position of γmin")
+    return finish("construction", "synthesis-construction", None, rec, _w("construction", lang), note=note,
+                  quantity="length", scale=mu)
+
+
+def _gamma_arc(rec: Recording, P, d: Design, pos: dict[str, complex], jpt: str) -> None:
+    """The least transmission angle as an arc at its joint: between the coupler and the rocker
+    (the acute one), or between the rod and the normal to the slider's guide."""
+    J = pos[jpt]
+    m = d.mechs[0]
+    if isinstance(m, FourBar):
+        a, b = pos["A"] - J, J - pos["D"]  # the rocker produced beyond B
+        if (a.conjugate() * b).real < 0:
+            b = -b
+    elif isinstance(m, Slider):
+        a = pos["A"] - J
+        n = 1j * m.u
+        b = n if (a.conjugate() * n).real > 0 else -n
+    elif m.l4 > 0:  # the coulisse's RRP ram: the rod against the guide's normal
+        a = pos["D"] - J
+        n = 1j * m.u
+        b = n if (a.conjugate() * n).real > 0 else -n
+    else:
+        return
+    r = 0.25 * abs(a)
+    n_ = 24
+    t0, t1 = cmath.phase(a), cmath.phase(a) + math.remainder(cmath.phase(b) - cmath.phase(a), 2 * math.pi)
+    rec.polyline([P(J + r * cmath.exp(1j * (t0 + (t1 - t0) * k / n_))) for k in range(n_ + 1)], WORST, "gamma-arc")
+    rec.line(P(J), P(J + 1.3 * r * b / abs(b)), Style(width=0.18, stroke="#c00000"), "gamma-ray")
+
+
+def _angle(rec: Recording, P, c: complex, z1: complex, z2: complex, r: float, label: str, eid: str,
+           reflex: bool = False) -> None:
+    """An arc at ``c`` between the rays to z1 and z2 (the smaller angle, or the larger), labelled."""
+    a1, a2 = cmath.phase(z1 - c), cmath.phase(z2 - c)
+    d = math.remainder(a2 - a1, 2 * math.pi)
+    if reflex:
+        d = d - math.copysign(2 * math.pi, d)
+    n = 40
+    pts = [P(c + r * cmath.exp(1j * (a1 + d * k / n))) for k in range(n + 1)]
+    rec.polyline(pts, THIN, f"arc-{eid}")
+    mid = P(c + (r + 0.0) * cmath.exp(1j * (a1 + d / 2)))
+    _text(rec, label, (mid[0] + 1.0, mid[1]), LABEL, "start", "middle", eid=f"label-{eid}")
+
+
+def _rows(d: Design, lang: str) -> list[tuple[str, str, str, str]]:
+    t = d.task
+    u = {"mm": "мм", "cm": "см", "m": "м"}.get(t.unit, t.unit) if lang == "ru" else t.unit
+    L = t.scale
+    m = d.measured[0]
+    ru = lang == "ru"
+
+    def n(x: float, sig: int = 6) -> str:
+        return fmt(x, sig, lang)
+
+    def ln(x: float) -> str:
+        return f"{n(x / L)} {u}"
+
+    def deg(x: float, sig: int = 6) -> str:
+        return f"{n(math.degrees(x), sig)}°"
+
+    rows: list[tuple[str, str, str, str]] = []
+    if d.model != "three_positions":
+        rows.append(("K", n(t.K), f"θ = {deg(t.theta)}", n(m.K, 10)))
+    else:
+        rows.append(("K", "—", "—", n(m.K, 10)))
+    if m.stroke is not None:
+        given = ln(stroke_of(t)) if t.stroke is not None or t.mean_speed is not None else "—"
+        rows.append(("H", given, "—", f"{n(m.stroke / L, 10)} {u}"))
+    if m.swing is not None:
+        given = deg(t.swing) if t.swing is not None and d.model == "crank_rocker" else "—"
+        found = deg(t.theta) if d.model == "coulisse" else "—"
+        rows.append(("ψ", given, found, f"{n(math.degrees(m.swing), 10)}°"))
+    names = {"crank": ("l1 (OA)", "кривошип l1 (OA)"), "rod": ("l2 (AB)" if d.model != "coulisse" else "DE", "шатун")
+             , "offset": ("e", "e"), "coupler": ("l2 (AB)", "шатун l2 (AB)"), "rocker": ("l3 (DB)", "коромысло l3 (DB)"),
+             "frame": ("l0 (OD)", "стойка l0 (OD)"), "centre_distance": ("l0 (OC)", "l0 (OC)"),
+             "coulisse": ("CD", "кулиса CD"), "guide_height": ("h", "h")}
+    given_keys = {"offset": t.offset, "rocker": t.rocker, "frame": t.frame, "centre_distance": t.centre_distance,
+                  "guide_height": t.guide_height, "rod": t.rod}
+    for k, v in d.lengths.items():
+        label = names.get(k, (k, k))[1 if ru else 0]
+        if k == "rod" and d.model != "coulisse":
+            label = "шатун l2 (AB)" if ru else "l2 (AB)"
+        if k == "rod" and d.model == "coulisse":
+            label = "шатун DE" if ru else "rod DE"
+        g = given_keys.get(k)
+        rows.append((label, ln(g) if g is not None else "—", ln(v) if g is None else "—", "—"))
+    if d.model in ("central", "offset", "v_engine"):
+        lam = d.lengths["crank"] / d.lengths["rod"]
+        rows.append(("λ = l1/l2", n(t.lam) if t.lam is not None else "—", n(lam) if t.lam is None else "—", "—"))
+    g = min(x.gamma_min for x in d.measured)
+    if t.mechanism != "crank_rocker":
+        given = deg(t.pressure_angle_max) if t.pressure_angle_max is not None else "—"
+        rows.append(("ϑmax" if not ru else "ϑmax (угол давления)", given, "—", deg(math.pi / 2 - g)))
+    given = deg(t.gamma_min) if t.gamma_min is not None else "—"
+    rows.append(("γmin", given, "—", deg(g)))
+    rows.append(("Grashof / полный оборот" if ru else "full turn, one branch",
+                 "—", "—", "да" if ru else "yes"))
+    if d.model == "three_positions":
+        from plans.synthesis.numeric import wrap
+
+        fb = d.mechs[0]
+        assert t.positions is not None
+        for i, (phi, psi) in enumerate(t.positions, 1):
+            rows.append((f"φ{i} → ψ{i}", f"{deg(phi)} → {deg(psi)}", "—", deg(psi + wrap(fb.psi(phi) - psi), 10)))
+    return rows
+
+
+def table_panel(d: Design, lang: str) -> Panel:
+    rows = [(_w("quantity", lang), _w("given", lang), _w("found", lang), _w("measured", lang)), *_rows(d, lang)]
+    widths = [40.0, 34.0, 34.0, 44.0]
+    h = 7.0
+    rec = Recording()
+    x = [0.0]
+    for width in widths:
+        x.append(x[-1] + width)
+    for i, row in enumerate(rows):
+        y = i * h
+        for j, cell in enumerate(row):
+            _text(rec, cell, (x[j] + 1.5, y + h / 2), SMALL, eid=f"cell-{i}-{j}")
+        rec.line((0, y), (x[-1], y), MAIN if i <= 1 else HAIR)
+    rec.line((0, len(rows) * h), (x[-1], len(rows) * h), MAIN)
+    for xx in x:
+        rec.line((xx, 0), (xx, len(rows) * h), MAIN if xx in (0.0, x[-1]) else HAIR)
+    if d.choice:  # how the free choice was made, wrapped under the table
+        words = (("выбор: " if lang == "ru" else "chosen: ") + choice_text(d.choice, lang)).split()
+        room = int(x[-1] / (SMALL * 0.55))
+        wrapped = [""]
+        for w in words:
+            if wrapped[-1] and len(wrapped[-1]) + 1 + len(w) > room:
+                wrapped.append(w)
+            else:
+                wrapped[-1] = f"{wrapped[-1]} {w}".strip()
+        for i, line in enumerate(wrapped):
+            _text(rec, line, (0.0, len(rows) * h + 4.0 + 4.0 * i), SMALL, eid=f"choice-{i}")
+    return finish("design-table", "table", None, rec, _w("table", lang))
+
+
+def build_panels(d: Design, spec: SheetSpec) -> list[Panel]:
+    W, H = spec.size
+    x0, y0, x1, y1 = usable(W, H)
+    wide = (x1 - x0) > (y1 - y0)
+    target = min((x1 - x0) * (0.62 if wide else 0.95), (y1 - y0) - TB_H - GAP - 30.0 - (0 if wide else 90.0))
+    return [construction_panel(d, spec.language, target), table_panel(d, spec.language)]
+
+
+def draw(path: str | Path, *, format: str | None = None, orientation: str | None = None,
+         language: str | None = None) -> Drawing:
+    """The synthesis sheet of a synthesis file."""
+    t = load_task(path)
+    d = design(t)
+    raw = t.raw if "sheet" in t.raw else {"sheet": t.task.get("sheet", {})}
+    lang = language or raw.get("sheet", {}).get("language", "ru")
+    title = t.raw.get("title", t.title)
+    if isinstance(title, dict):
+        title = title.get(lang) or t.title
+    spec = sheet_spec(raw, t.path, str(title), format=format, orientation=orientation, language=language)
+    panels = build_panels(d, spec)
+    sheets = compose(panels, spec, ratio_text(panels[0].scale or 1000.0), t.path)
+    return Drawing(d, spec, tuple(panels), tuple(sheets))
