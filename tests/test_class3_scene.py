@@ -183,3 +183,15 @@ def test_one_position_equals_the_turn(scene):
                 assert np.max(np.abs(x - y[:2])) <= 1e-12
         assert abs(few.omega(3)[0] - ref.omega(3)[0]) <= 1e-12
     assert abs(many.eps(3)[1] - solve(scene, [30.0], order=2).eps(3)[0]) <= 1e-9
+
+
+def test_pencils_and_positions_built_together():
+    """The noisy pencil without noise reads what the perfect one reads; positions built
+    together read what each built alone reads (the same checks as for the class-II samples)."""
+    from .test_pencils import (
+        test_noisy_pencil_without_noise_draws_the_plans,
+        test_positions_built_together_are_the_positions_built_one_by_one,
+    )
+
+    test_noisy_pencil_without_noise_draws_the_plans(SAMPLE)
+    test_positions_built_together_are_the_positions_built_one_by_one(SAMPLE)

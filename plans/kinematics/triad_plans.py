@@ -4,8 +4,8 @@ The axes of two leashes (AD and BE) meet at S, taken as a point of the base link
 s is where the lines through a ⟂ AD and through b ⟂ BE meet (on the acceleration plan,
 after the normal terms along the leash and along SD, SE).  Then f, the third inner pair,
 where the line through c ⟂ CF meets the line through s ⟂ SF; d and e by similarity on the
-base link.  Of the three pairs of axes the one farthest from parallel over the positions
-built together gives S (parallel axes: the other pair's point).  All three axes through one
+base link.  S is where AD and BE meet unless they are nearly parallel; then BE and CF,
+then AD and CF (parallel axes: the other pair's point).  All three axes through one
 point is the group's special position: the lines of f are then parallel and the plan says so.
 """
 
@@ -16,10 +16,13 @@ from typing import Any, cast
 import numpy as np
 
 from plans.errors import Locked
-from plans.kinematics.dyads import Builder, ensure, lab, link_points, meet, rel_seg
+from plans.kinematics.dyads import Builder, Mixed, ensure, lab, link_points, meet, rel_seg
 from plans.kinematics.structure import TriadGroup
 from plans.lines import cross
 from plans.phrases import phrase
+
+#: sin of the angle between two leashes' axes above which their meeting point is taken as S
+FAR_FROM_PARALLEL = 0.05
 
 
 def _geometry(b: Builder, g: TriadGroup) -> tuple[list, list, tuple[int, int, int], Any]:
@@ -29,16 +32,18 @@ def _geometry(b: Builder, g: TriadGroup) -> tuple[list, list, tuple[int, int, in
     Q = [snap.pos(p, o.point) for p, (o, _) in zip(g.known, g.joints, strict=True)]
     P = [snap.pos(base, i.point) for _, i in g.joints]
     axis = [P[k] - Q[k] for k in range(3)]
-    best = None
-    for i, j in ((0, 1), (1, 2), (0, 2)):
-        sin = np.min(np.abs(cross(axis[i], axis[j])) / (np.abs(axis[i]) * np.abs(axis[j])))
-        if best is None or sin > best[0] + 1e-12:
-            best = (sin, i, j)
-    assert best is not None
-    if best[0] <= 1e-12:
+    pairs = ((0, 1), (1, 2), (0, 2))
+    sins = [np.atleast_1d(np.abs(cross(axis[i], axis[j])) / (np.abs(axis[i]) * np.abs(axis[j]))) for i, j in pairs]
+    # per position: AD and BE unless nearly parallel (then the next pair), so a position reads
+    # the same whichever positions are built with it
+    choice = np.where(sins[0] >= FAR_FROM_PARALLEL, 0, np.where(sins[1] >= FAR_FROM_PARALLEL, 1,
+                      np.where(sins[2] >= FAR_FROM_PARALLEL, 2, np.argmax(np.stack(sins), axis=0))))
+    if np.any(choice != choice[0]):
+        raise Mixed("s")
+    i, j = pairs[int(choice[0])]
+    if np.any(sins[int(choice[0])] <= 1e-12):
         raise Locked("the three leashes' axes are parallel (special position)", group=f"{g.kind} {g.name}",
-                     point=g.point, phi_deg=b.snap.phi_at(0))
-    _, i, j = best
+                     point=g.point, phi_deg=b.snap.phi_at(int(np.argmin(sins[int(choice[0])]))))
     s = cross(Q[j] - Q[i], axis[j]) / cross(axis[i], axis[j])
     S = Q[i] + s * axis[i]
     return Q, P, (i, j, 3 - i - j), S
