@@ -195,3 +195,37 @@ def test_pencils_and_positions_built_together():
 
     test_noisy_pencil_without_noise_draws_the_plans(SAMPLE)
     test_positions_built_together_are_the_positions_built_one_by_one(SAMPLE)
+
+
+def test_parallel_axes_take_the_other_pair(tmp_path):
+    """The leash CF numbered second: at the angle where AD ∥ CF Assur's point is where the
+    axes of CF and BE meet, and the plans still read the exact rates."""
+    text = SAMPLE.read_text(encoding="utf-8")
+    for old, new in (("[links.4]", "[links.X]"), ("[links.5]", "[links.4]"), ("[links.X]", "[links.5]"),
+                     ("links = [3, 4]", "links = [3, Y]"), ("links = [4, 6]", "links = [Y, 6]"),
+                     ("links = [3, 5]", "links = [3, 4]"), ("links = [5, 6]", "links = [4, 6]"),
+                     ("Y", "5"), ('"2-3-4-5" = 1', '"2-3-4-5" = 1')):
+        assert old in text
+        text = text.replace(old, new)
+    f = tmp_path / "renumbered.toml"
+    f.write_text(text, encoding="utf-8")
+    sc = load_scene(str(f))
+    assert [o.point for o, _ in analyse(sc).groups[0].joints] == ["A", "C", "B"]
+
+    def sin(phi: float) -> float:
+        k = solve(sc, [phi], order=0)
+        A, D, C, F = (complex(k.point(n)[0][0]) for n in "ADCF")
+        return ((D - A).conjugate() * (F - C)).imag / abs(D - A) / abs(F - C)
+    lo, hi = 340.0, 355.0
+    assert sin(lo) * sin(hi) < 0
+    for _ in range(50):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if sin(lo) * sin(mid) > 0 else (lo, mid)
+    kin = solve(sc, [lo], order=2)
+    (pp,) = build_many(kin, [0])
+    for r in pp.readings:
+        assert abs(abs(r.value) - abs(r.exact)) <= 1e-9 * max(1.0, abs(r.exact)), r.quantity
+    labels = [ln.label for ln in pp.velocity.lines]
+    assert labels[:4] == ["⟂ CF", "⟂ BE", "⟂ AD", "⟂ SD"]  # s from CF and BE, then d from a and s
+    far = build_many(solve(sc, [300.0], order=2), [0])[0]
+    assert [ln.label for ln in far.velocity.lines][:4] == ["⟂ AD", "⟂ CF", "⟂ BE", "⟂ SE"]
