@@ -1,10 +1,12 @@
 """Sheets of a planar-linkage analysis: A1–A4 plates in SVG, PDF and PNG.
 
-``drawings`` reads the frozen objects of :mod:`plans` (scene, kinematics, plans,
-forces, lever) and never the reverse.  Typical use::
+``drawings`` draws what :func:`plans.solve` solved (a :class:`plans.solution.Solution`:
+kinematics, plans, forces, lever, cycle) and never the reverse; it calls no solver.
+Typical use::
 
+    import plans
     from drawings import draw, save
-    d = draw("samples/v_engine.toml")            # a Drawing: .sheets, .panels
+    d = draw(plans.solve("samples/v_engine.toml"))   # or a Scene, or the path: a Drawing
     save(d.sheets, "out", "v_engine", ("svg", "pdf", "png"), dpi=150)
 
 In Jupyter a :class:`Drawing`, a :class:`Sheet`, a :class:`Panel` and

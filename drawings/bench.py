@@ -21,11 +21,12 @@ from collections.abc import Callable
 from typing import Any
 
 from plans.scene.model import load_scene
+from plans.solution import solve
 
 from .export import dxf_bytes, pdf_bytes, png_bytes, svg_bytes
-from .linkage import build_panels, draw
+from .linkage import build_panels, draw, fit_for
 from .panels import ratio_text
-from .sheet import compose, sheet_spec
+from .sheet import compose
 
 PNG_DPI = 150.0
 
@@ -58,8 +59,8 @@ def bench(path: str, repeat: int = 5) -> dict[str, float]:
     layout, SVG serialisation, SVG -> PDF; plus counts."""
     scene = load_scene(path)
     draw(scene)  # warm up: font, imports
-    spec = sheet_spec(scene.raw, scene.path, scene.title)
-    t_panels, (panels, mu_l) = _best(lambda: build_panels(scene, spec), repeat)
+    spec = scene.sheet_for()
+    t_panels, (panels, mu_l) = _best(lambda: build_panels(solve(scene, fit=fit_for(spec)), spec), repeat)
     t_layout, sheets = _best(lambda: compose(panels, spec, ratio_text(mu_l), scene.path), repeat)
     t_svg, svgs = _best(lambda: [s.svg() for s in sheets], repeat)
     t_pdf, _ = _best(lambda: [pdf_bytes(s.encode()) for s in svgs], max(1, repeat // 2))

@@ -21,6 +21,7 @@ from plans.cycle.diagrams import Diagrams
 from plans.cycle.dynamics import Dynamics
 from plans.cycle.table import CycleTable, TableRow
 from plans.scene.model import Scene
+from plans.solution import Solution
 
 from .backend import HAIR, MAIN, THIN, Recording, Style
 from .common import fmt
@@ -401,31 +402,18 @@ def nice_scale_mm(top: float, target_mm: float) -> float:
     return nice_scale(top, target_mm)
 
 
-def analogue_plans(d: Dynamics, lang: str) -> list[Panel]:
-    """Plans of velocity analogues at the table's positions: velocity plans drawn at
-    μ_v = μ/|ω1|, so that every segment is the analogue v/ω1 at μ (mm per m), the pole p."""
-    from plans.kinematics.construction import build
-    from plans.kinematics.exact import solve
-
+def analogue_plans(plans: Sequence, lang: str, style: str) -> list[Panel]:
+    """The plans of velocity analogues at the table's positions (``Solution.analogue_plans``:
+    velocity plans at μ_v = μ/|ω1|, each segment the analogue v/ω1 at μ, mm per m), drawn."""
     from .panels import plan_panel
 
-    scene = dataclasses.replace(d.scene, outputs=d.scene.outputs | {"velocity_plan"})
-    phis = np.asarray(d.spec.phi_deg, float)
-    phis = phis[phis < phis[0] + 360.0 - 1e-9]  # the second revolution of 720° repeats the first's plans
-    kin = solve(scene, phis, order=1)
-    mu_v = d.scales.analogue / abs(d.scene.driver.omega)
-    out = []
-    for k in range(kin.n):
-        pp = build(kin, k, velocity_scale=mu_v)
-        if pp.velocity is not None:
-            out.append(plan_panel(pp.velocity, lang, d.scene.scale_style, pid=f"analogue-{k + 1}"))
-    return out
+    return [plan_panel(p, lang, style, pid=f"analogue-{k + 1}") for k, p in enumerate(plans)]
 
 
-def dynamics_panels(d: Dynamics, tables: Sequence[CycleTable], lang: str) -> list[Panel]:
+def dynamics_panels(d: Dynamics, tables: Sequence[CycleTable], lang: str, analogues: Sequence = ()) -> list[Panel]:
     titles = [f"{tr('analogues', lang)}, μ = {fmt(d.scales.analogue, 4, lang)} mm/m (ω_1 = 1)",
               tr("Ipr", lang), f"{tr('Mpr', lang)}; {tr('sign', lang)}", tr("energy", lang)]
-    plans = [] if d.scene.wants("velocity_plan") else analogue_plans(d, lang)  # else on the first sheet
+    plans = analogue_plans(analogues, lang, d.scene.scale_style)  # none where the first sheet has the plans
     return ([_m_panel(d, lang), _a_panel(d, lang), _t_panel(d, lang), _i_panel(d, lang), _w_panel(d, lang),
              _omega_panel(d, lang), _fly_table(d, lang)] + indicator_panels(d, lang)
             + table_panels(tables, lang, "dyn", titles) + plans)
@@ -434,15 +422,18 @@ def dynamics_panels(d: Dynamics, tables: Sequence[CycleTable], lang: str) -> lis
 # --------------------------------------------------------------------------- the hook
 
 
-def extend(scene: Scene, spec: SheetSpec, sheets: list[Sheet], scale_text: str | None = None) -> list[Sheet]:
+def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_text: str | None = None) -> list[Sheet]:
     """The drawing's sheets and, when the scene asks, the diagrams and dynamics sheets after them,
-    numbered on from the last."""
+    numbered on from the last (a Scene is solved first, by plans.solve)."""
+    if not isinstance(sol, Solution):
+        from plans.solution import solve
+
+        sol = solve(sol)
+    scene = sol.scene
     if not (scene.wants("diagrams") or scene.wants("dynamics")):
         return sheets
-    from plans.cycle.results import solve_cycle
-
     lang = spec.language
-    cr = solve_cycle(scene, _kin(scene), ())
+    cr = sol.cycle
     extra: list[Sheet] = []
     if cr is not None and cr.diagrams is not None:
         sub = dataclasses.replace(spec, subtitle=tr("diagrams", lang), pins=())
@@ -450,7 +441,8 @@ def extend(scene: Scene, spec: SheetSpec, sheets: list[Sheet], scale_text: str |
     if cr is not None and cr.dynamics is not None:
         sub = dataclasses.replace(spec, subtitle=tr("dynamics", lang), pins=())
         tabs = cr.tables[-4:]  # the dynamics' own: analogues, I_pr, M_pr, work and energy
-        extra += compose(dynamics_panels(cr.dynamics, tabs, lang), sub, scale_text, scene.path)
+        analogues = () if scene.wants("velocity_plan") else sol.analogue_plans()  # else on the first sheet
+        extra += compose(dynamics_panels(cr.dynamics, tabs, lang, analogues), sub, scale_text, scene.path)
     out = list(sheets) + extra
     for i, sh in enumerate(out):
         sh.number, sh.count = i + 1, len(out)
@@ -459,27 +451,21 @@ def extend(scene: Scene, spec: SheetSpec, sheets: list[Sheet], scale_text: str |
     return out
 
 
-def _kin(scene: Scene):
-    from plans.kinematics.exact import solve
-
-    return solve(scene, order=0)
-
-
 def diagrams_sheet_seconds(path: str | Path, repeat: int = 5) -> float:
     """Best time of the diagrams sheet of a scene to SVG text: engine, panels, layout, SVG."""
     import time
 
-    from plans.cycle.diagrams import diagrams
     from plans.scene.model import load_scene
-
-    from .sheet import sheet_spec
+    from plans.solution import solve
 
     scene = load_scene(path)
-    spec = dataclasses.replace(sheet_spec(scene.raw, scene.path, scene.title), pins=())
+    spec = dataclasses.replace(scene.sheet_for(), pins=())
     best = float("inf")
     for _ in range(max(1, repeat)):
         t = time.perf_counter()
-        sheets = compose(diagram_panels(diagrams(scene), spec.language), spec, "", scene.path)
+        dia = solve(scene).diagrams
+        assert dia is not None, f"{path} asks for no kinematic diagrams"
+        sheets = compose(diagram_panels(dia, spec.language), spec, "", scene.path)
         for sh in sheets:
             sh.svg()
         best = min(best, time.perf_counter() - t)

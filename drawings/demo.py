@@ -160,8 +160,7 @@ def _language(scene: Scene, language: str | None) -> str:
         if language not in WORDS:
             raise InputError(f"expected one of {', '.join(WORDS)}, got {language!r}", field="--language")
         return language
-    sheet = scene.raw.get("sheet", {})
-    lang = sheet.get("language", "ru") if isinstance(sheet, dict) else "ru"
+    lang = scene.sheet.language  # the scene's [sheet], validated with it
     return lang if lang in WORDS else "ru"
 
 

@@ -15,9 +15,6 @@ from typing import Any
 
 import numpy as np
 
-from plans.forces.analysis import kinetostatics
-from plans.forces.lever import force_rows, lever_plan
-from plans.forces.polygons import force_polygons
 from plans.forces.shared import nice_scale
 from plans.kinematics.plan import Plan
 from plans.kinematics.scales import fit
@@ -67,12 +64,12 @@ def force_label(label: str, lang: str = "en") -> str:
     return label.replace("Phi", "Φ")
 
 
-def build(scene, kin, spec, ks: Sequence[int], plans_at: dict[int, Any], mu_l: float) -> dict:
+def build(sol, spec, ks: Sequence[int], plans_at: dict[int, Any], mu_l: float) -> dict:
     """Panels per position k, and ("table", k) -> extra rows for the results table."""
-    res = kinetostatics(scene, kin)
-    if res is None:
+    if sol.forces is None:
         return {}
-    fa, lv = res
+    scene, kin = sol.scene, sol.kinematics
+    fa, lv = sol.forces
     lang, style = spec.language, scene.scale_style
 
     def want(kind: str) -> bool:
@@ -82,7 +79,7 @@ def build(scene, kin, spec, ks: Sequence[int], plans_at: dict[int, Any], mu_l: f
     for k in ks:
         phi = float(kin.phi_deg[k])
         panels: list[Panel] = []
-        polys = force_polygons(fa, k) if scene.wants("force_polygons") else ()
+        polys = sol.force_polygons(k) if scene.wants("force_polygons") else ()
         by_group = {fp.group: fp for fp in polys}
         if scene.wants("force_polygons"):
             for gf in reversed(fa.groups):  # attachment order: nearest the crank first
@@ -101,11 +98,11 @@ def build(scene, kin, spec, ks: Sequence[int], plans_at: dict[int, Any], mu_l: f
                                                 tr("crank_polygon", lang)))
         if scene.wants("lever") and want("lever") and bool(lv.valid[k]):
             vplan = plans_at[k].velocity if k in plans_at else None
-            panels.append(lever_panel(lv, k, vplan, lang, style))
+            panels.append(lever_panel(sol, k, vplan, lang, style))
         if want("table") and polys:
             panels.append(forces_table(polys, lang, style, phi))
         out[k] = panels
-        out[("table", k)] = balancing_rows(lv, k, lang) + efficiency_rows(fa, k, lang)
+        out[("table", k)] = balancing_rows(sol, k, lang) + efficiency_rows(fa, k, lang)
     if fa.friction is not None and want("table"):  # η(φ) and its table go with the tables
         out["efficiency"] = efficiency_panels(fa, lang)
     return out
@@ -240,7 +237,7 @@ def group_panel(scene, kin, gf, k: int, mu_l: float, lang: str, style: str, fric
                     couples.append((rc.point, float(rc.M[k]), "M" + name[1:]))
             reacts.append((at, complex(rc.F[k]), name))
     values = [complex(f.F[k]) for f in loads] + [v for _, v, _ in reacts]
-    mu_f = _fbd_scale(values, _cycle([f.F for f in loads] + [rc.F for rc in gf.reactions]), fit(scene.scales))
+    mu_f = _fbd_scale(values, _cycle([f.F for f in loads] + [rc.F for rc in gf.reactions]), fit(scene))
     # arms of the moment equations
     for (eq, label), arm in gf.arms.items():
         h = float(arm[k])
@@ -295,7 +292,7 @@ def crank_panel(scene, kin, fa, k: int, mu_l: float, lang: str, style: str) -> P
     pts = _draw_links(rec, placer, scene, kin, k, [c.link], T, pid)
     bal = complex(c.F_bal[k] * c.e_bal[k]) if c.kind == "force" else 0j
     values = [complex(f.F[k]) for f in c.loads] + [bal, complex(c.frame.F[k])]
-    mu_f = _fbd_scale(values, _cycle([f.F for f in c.loads] + [c.frame.F]), fit(scene.scales))
+    mu_f = _fbd_scale(values, _cycle([f.F for f in c.loads] + [c.frame.F]), fit(scene))
     for f in c.loads:
         _force_at(rec, placer, T, complex(f.r[k]), complex(f.F[k]), mu_f, force_label(f.label, lang), LOAD,
                   f"{pid}-{ident(f.label)}")
@@ -403,10 +400,11 @@ def _collinear_overlap(a: Pt, b: Pt, c: Pt, d: Pt) -> bool:
 MIN_ARROW_MM = 4.0  # a force drawn shorter than this on the lever is lengthened and marked
 
 
-def lever_panel(lv, k: int, vplan: Plan | None, lang: str, style: str) -> Panel:
+def lever_panel(sol, k: int, vplan: Plan | None, lang: str, style: str) -> Panel:
     """The velocity plan turned 90° as a rigid lever about the pole, every force at the image of
     its point parallel to itself, the arms h from the pole, and the balancing force."""
-    plan = lever_plan(lv, k)
+    lv = sol.lever
+    plan = sol.lever_plan(k)
     phi = plan.phi_deg
     pid = f"lever-{phi_tag(phi)}"
     T = Transform(1.0)
@@ -539,9 +537,10 @@ def forces_table(polys, lang: str, style: str, phi: float) -> Panel:
     return p
 
 
-def balancing_rows(lv, k: int, lang: str) -> list[tuple[str, ...]]:
+def balancing_rows(sol, k: int, lang: str) -> list[tuple[str, ...]]:
     """The balancing load three ways (kinetostatics, lever, power) and δ, as table rows."""
-    rows = force_rows(lv, k)[-4:]
+    lv = sol.lever
+    rows = sol.force_rows(k)[-4:]
     keys = ("by_groups", "by_lever", "by_power")
     force = lv.fa.crank.kind == "force"
     letter = "F" if force else "M"

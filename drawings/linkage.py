@@ -1,16 +1,20 @@
-"""From a scene to sheets: which panels the scene asks for, built and laid out."""
+"""From a solved scene to sheets: which panels the scene asks for, drawn and laid out.
+
+Everything drawn is read off one :class:`plans.solution.Solution` (``plans.solve``): the
+sheets compute nothing of the mechanism themselves.
+"""
 
 from __future__ import annotations
 
-import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from plans.errors import InputError
-from plans.kinematics.exact import Kinematics, solve
-from plans.kinematics.scales import FIT
+from plans.kinematics.exact import Kinematics
 from plans.scene.model import Scene, load_scene
+from plans.solution import Solution
+from plans.solution import solve as solve_scene
 
 from .fonts import metrics
 from .overview import legend_kinds, legend_panel, positions_panel
@@ -23,7 +27,7 @@ from .panels import (
     strokes_over_cycle,
     table_panel,
 )
-from .sheet import Sheet, SheetSpec, compose, sheet_spec
+from .sheet import Sheet, SheetSpec, compose
 
 
 @dataclass(frozen=True)
@@ -57,23 +61,19 @@ def _wants(spec: SheetSpec, kind: str) -> bool:
     return spec.panels is None or kind in spec.panels
 
 
-def build_panels(scene: Scene, spec: SheetSpec) -> tuple[list[Panel], float]:
+def build_panels(sol: Solution, spec: SheetSpec) -> tuple[list[Panel], float]:
     """Every panel the scene asks for, in the order they go on the sheet."""
     metrics()  # fail early, with the font's name, if it is missing
-    scene = for_sheet(scene, spec)
+    scene = sol.scene
     lang, style = spec.language, scene.scale_style
-    kin = solve(scene)
+    kin = sol.kinematics
     ks = _positions(scene, kin, spec)
-    size = cycle_size(scene)
+    size = cycle_size(sol)
     w, _h = spec.size  # schemes about 230 mm across on A1, proportionally less on smaller sheets
     mu_l = scene.scales.get("length") or auto_length_scale(size, 230.0 * min(1.0, max(w, _h) / 841.0))
-    strokes = strokes_over_cycle(scene)
-    plans_at: dict[int, Any] = {}
-    if scene.wants("velocity_plan"):
-        from plans.kinematics.construction import build_all
-
-        plans_at = dict(enumerate(build_all(kin)))
-    forces = _force_panels(scene, kin, spec, ks, plans_at, mu_l) if (
+    strokes = strokes_over_cycle(sol)
+    plans_at: dict[int, Any] = dict(enumerate(sol.plans))
+    forces = _force_panels(sol, spec, ks, plans_at, mu_l) if (
         scene.wants("force_polygons") or scene.wants("lever")) else {}
     panels: list[Panel] = []
     # Many positions: one plan of positions (all of them overlaid) and schemes of its own
@@ -82,7 +82,7 @@ def build_panels(scene: Scene, spec: SheetSpec) -> tuple[list[Panel], float]:
     schemes = set(ks if spec.positions is not None or not overlay else ks[:2])
     if overlay:  # the plan of positions at the largest standard scale that fits 2/5 of the sheet
         mu_pos = scene.scales.get("length") or auto_length_scale(size, 0.4 * (w - 37.0))
-        panels.append(positions_panel(scene, kin, mu_pos, lang, sorted(schemes), strokes, spec.trace))
+        panels.append(positions_panel(sol, mu_pos, lang, sorted(schemes), strokes, spec.trace))
     for k in ks:
         if scene.wants("positions") and _wants(spec, "scheme") and k in schemes:
             panels.append(scheme_panel(scene, kin, k, mu_l, lang, strokes))
@@ -108,15 +108,10 @@ def build_panels(scene: Scene, spec: SheetSpec) -> tuple[list[Panel], float]:
     return panels, mu_l
 
 
-def for_sheet(scene: Scene, spec: SheetSpec) -> Scene:
-    """The scene whose plans, polygons and lever are drawn for ``spec``'s paper: on a smaller
-    sheet every target length shrinks by the square root of the ratio of the sheets' sizes
-    (A3 about 0.7 of A1: smaller, still readable), the scales still round."""
-    w, h = spec.size
-    factor = min(1.0, math.sqrt(max(w, h) / 841.0))
-    if factor >= 1.0 or FIT in scene.scales:
-        return scene
-    return replace(scene, scales={**scene.scales, FIT: factor})
+def fit_for(spec: SheetSpec) -> float:
+    """The fraction of the A1 target lengths the plans, polygons and lever are solved at for
+    ``spec``'s paper (:attr:`plans.scene.sheet.SheetSpec.fit`), the scales still round."""
+    return spec.fit
 
 
 def _rows(scene: Scene, readings) -> list:
@@ -133,28 +128,33 @@ def _rows(scene: Scene, readings) -> list:
     return out
 
 
-def _force_panels(scene: Scene, kin: Kinematics, spec: SheetSpec, ks: list[int], plans_at,
-                  mu_l: float) -> dict:
+def _force_panels(sol: Solution, spec: SheetSpec, ks: list[int], plans_at, mu_l: float) -> dict:
     """Force panels (group free bodies and polygons, crank, lever) when plans.forces exists."""
     try:
         from . import forces_panels
     except ImportError:  # pragma: no cover - the force panels are optional
         return {}
-    return forces_panels.build(scene, kin, spec, ks, plans_at, mu_l)
+    return forces_panels.build(sol, spec, ks, plans_at, mu_l)
 
 
-def draw(scene: Scene | str | Path, *, format: str | None = None, orientation: str | None = None,
+def draw(source: Solution | Scene | str | Path, *, format: str | None = None, orientation: str | None = None,
          language: str | None = None) -> Drawing:
-    """Build the sheets of a scene (a Scene or a path to its TOML file)."""
-    sc = scene if isinstance(scene, Scene) else load_scene(scene)
-    lang = language or (sc.raw.get("sheet", {}).get("language") if isinstance(sc.raw.get("sheet"), dict) else None)
-    spec = sheet_spec(sc.raw, sc.path, sc.title_in(lang if lang in ("ru", "en") else "ru"), format=format,
-                      orientation=orientation, language=language)
-    panels, mu_l = build_panels(sc, spec)
+    """The sheets of a solved scene (a :class:`Solution`), or of a Scene or the path of its
+    file, solved once here at the paper's fit.  A Solution is drawn at the scales it was
+    solved with (``plans.solve(scene, fit=...)``)."""
+    if isinstance(source, Solution):
+        sol = source
+        spec = sol.scene.sheet_for(format=format, orientation=orientation, language=language)
+    else:
+        sc = source if isinstance(source, Scene) else load_scene(source)
+        spec = sc.sheet_for(format=format, orientation=orientation, language=language)
+        sol = solve_scene(sc, fit=fit_for(spec))
+    panels, mu_l = build_panels(sol, spec)
+    sc = sol.scene
     numbers = {float(phi): k for k, phi in enumerate(sc.driver.phis_deg)}
     sheets = compose(panels, spec, None, sc.path, numbers)  # each sheet's scale: its main image's
     if sc.wants("diagrams") or sc.wants("dynamics"):  # the cycle's sheets follow
         from .cycle import extend
 
-        sheets = extend(sc, spec, sheets, None)
+        sheets = extend(sol, spec, sheets, None)
     return Drawing(sc, spec, tuple(panels), tuple(sheets), mu_l)

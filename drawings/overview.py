@@ -162,29 +162,29 @@ def default_trace(scene) -> list[str]:
     return out
 
 
-def _trajectories(scene, names: Sequence[str], n: int = 145) -> dict[str, list[complex]]:
-    """World paths of ``names`` over one revolution (empty where the mechanism locks)."""
-    from plans.kinematics.exact import solve
-
+def _trajectories(sol, names: Sequence[str]) -> dict[str, list[complex]]:
+    """World paths of ``names`` over one revolution, every 2.5° (empty where the mechanism locks)."""
+    scene = sol.scene
     try:
-        kin = solve(scene, phi_deg=np.linspace(0.0, 360.0, n), order=0)
+        rev = sol.revolution()
     except PlansError:
         return {}
     out = {}
     for name in names:
         for lid in sorted(scene.links):
             if name in scene.links[lid].points:
-                out[name] = [complex(z) for z in np.asarray(kin.point_on(lid, scene.links[lid].points[name])[0])]
+                out[name] = [complex(z) for z in rev.point_on(lid, scene.links[lid].points[name])]
                 break
     return out
 
 
-def positions_panel(scene, kin, mu_l: float, lang: str, bold: Sequence[int], strokes: dict[str, tuple[float, float]],
+def positions_panel(sol, mu_l: float, lang: str, bold: Sequence[int], strokes: dict[str, tuple[float, float]],
                     trace: Sequence[str] | None = None) -> Panel:
     """The plan of positions: the mechanism at the positions in ``bold`` (thick), the crank
     alone at the others (thin); positions numbered 0, 1, … at the crank pin and the other
     moving pins on their trajectories; the trajectory of the ``trace`` points (default: the
     rods' centres of mass); the guides' axes and the fixed pivots once."""
+    scene, kin = sol.scene, sol.kinematics
     pid = "positions"
     T = Transform(mu_l)
     rec = Recording()
@@ -236,7 +236,7 @@ def positions_panel(scene, kin, mu_l: float, lang: str, bold: Sequence[int], str
     # circle nor a fixed guide's axis (the links themselves only at the bold positions)
     on_axis = {jt.point for jt in scene.joints if jt.kind == "P" and jt.guide is not None and jt.guide.link == frame}
     pins = [m for m in numbered_points(scene) if m != pin and m not in on_axis and m not in trace]
-    paths = _trajectories(scene, list(trace) + pins)
+    paths = _trajectories(sol, list(trace) + pins)
     rec.begin(f"{pid}-traces", "traces")
     for name in list(trace) + pins:
         path = paths.get(name)

@@ -413,42 +413,47 @@ def _quarter(c: Pt, r: float, q: int) -> list[Pt]:
                   for i in range(7)]
 
 
-def strokes_over_cycle(scene) -> dict[str, tuple[float, float]]:
-    """Travel of every slider pin along its fixed guide over one revolution (world m)."""
+def strokes_over_cycle(sol) -> dict[str, tuple[float, float]]:
+    """Travel of every slider pin along its fixed guide over one revolution (world m), every 5°
+    (none where the mechanism does not turn a whole revolution)."""
     import numpy as np
 
     from plans.errors import PlansError
-    from plans.kinematics.exact import solve
 
+    scene = sol.scene
     try:
-        kin = solve(scene, phi_deg=np.linspace(0.0, 360.0, 73), order=0)
+        rev = sol.revolution(73)
     except PlansError:
         return {}
     out = {}
     for jt in scene.joints:
         if jt.kind == "P" and jt.guide is not None and jt.guide.link == scene.frame:
-            r = kin.point(jt.point)[0]
+            r = rev.point(jt.point)
             s = ((r - jt.guide.origin) * np.conj(jt.guide.direction)).real
             out[jt.name] = (float(s.min()), float(s.max()))
     return out
 
 
-def cycle_size(scene) -> float:
-    """Largest extent of the mechanism (world m) over a revolution, for the auto scale."""
+def cycle_size(sol) -> float:
+    """Largest extent of the mechanism (world m) over a revolution (every 10°; the scene's own
+    positions where it does not turn a whole one), for the auto scale."""
     import numpy as np
 
     from plans.errors import PlansError
-    from plans.kinematics.exact import solve
 
-    phis = np.linspace(0.0, 360.0, 37)
+    scene = sol.scene
     try:
-        kin = solve(scene, phi_deg=phis, order=0)
+        rev = sol.revolution(37)
+        at = rev.point_on
     except PlansError:
-        kin = solve(scene, order=0)
+        kin = sol.kinematics
+
+        def at(lid, z):
+            return kin.point_on(lid, z)[0]
     pts = [np.asarray(list(scene.frame_points.values()), dtype=complex)]
     for lid in scene.links:
         for z in scene.links[lid].points.values():
-            pts.append(np.asarray(kin.point_on(lid, z)[0]))
+            pts.append(np.asarray(at(lid, z)))
     allp = np.concatenate([np.ravel(p) for p in pts])
     return float(max(np.ptp(allp.real), np.ptp(allp.imag), 1e-9))
 

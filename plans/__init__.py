@@ -16,8 +16,9 @@ reading, atomic writing, JSON), :mod:`plans.units`, :mod:`plans.tolerances`, and
 
 ``plans`` never imports ``drawings``, svgwrite or cairosvg.  Typical use::
 
-    from plans import load_scene, solve_scene
-    sol = solve_scene(load_scene("samples/v_engine.toml"))
+    import plans
+    sol = plans.solve("samples/v_engine.toml")       # a Solution: parts computed when read
+    sol.value("F_12^τ", 45)                            # N, signed as docs/quantities.md says
 """
 
 from __future__ import annotations
@@ -27,9 +28,10 @@ from typing import Any
 _LAZY = {
     "load_scene": "plans.scene",
     "Scene": "plans.scene",
+    "solve": "plans.solution",
     "solve_scene": "plans.results",
     "to_json": "plans.results",
-    "Solution": "plans.results",
+    "Solution": "plans.solution",
     "PlansError": "plans.errors",
     "InputError": "plans.errors",
     "ConstructionError": "plans.errors",

@@ -12,50 +12,33 @@ value).  Keys appear only for what the scene asked for.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from plans.errors import ConstructionError
-from plans.kinematics.construction import PositionPlans, build_all
-from plans.kinematics.exact import Kinematics, solve
-from plans.kinematics.structure import Structure, analyse
-from plans.records import frozen
+import plans.kinematics.construction  # noqa: F401  (the solve's own modules, loaded with the command:
+import plans.kinematics.exact  # noqa: F401  what ``plans bench`` times as the start of ``plans solve``)
 from plans.scene.model import Scene
+
+if TYPE_CHECKING:
+    from plans.solution import Solution
 from plans.tolerances import ILL_CONDITIONED
 
 
-@frozen(slots=False)
-class Solution:
-    """Everything computed for a scene: only what its outputs ask for."""
+def __getattr__(name: str) -> Any:
+    """``from plans.results import Solution`` as before (loaded when asked for: the start of
+    ``plans solve`` does not pay for it)."""
+    if name == "Solution":
+        from plans.solution import Solution
 
-    scene: Scene
-    structure: Structure
-    kinematics: Kinematics
-    plans: tuple[PositionPlans, ...]
-    forces: Any = None  # (ForceAnalysis, LeverAnalysis) from plans.forces when asked
-    cycle: Any = None  # plans.cycle.results.CycleResult: tables over the positions, dynamics, diagrams
+        return Solution
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def solve_scene(scene: Scene) -> Solution:
-    """Everything the scene asks for; a construction that has no answer names the file."""
-    try:
-        return _solve_scene(scene)
-    except ConstructionError as exc:
-        exc.source = scene.path
-        raise
+    """Everything the scene asks for, computed now (``plans solve``); a construction that has
+    no answer names the file.  :func:`plans.solve` computes each part when it is first read."""
+    from plans.solution import Solution
 
-
-def _solve_scene(scene: Scene) -> Solution:
-    st = analyse(scene)
-    kin = solve(scene, structure=st)
-    plans = tuple(build_all(kin)) if scene.wants("velocity_plan") else ()
-    forces: Any = None
-    if scene.wants("force_polygons") or scene.wants("lever"):
-        from plans.forces import analysis as _forces  # loaded only when asked for
-
-        forces = _forces.kinetostatics(scene, kin)
-    from plans.cycle.results import solve_cycle
-
-    return Solution(scene, st, kin, plans, forces, solve_cycle(scene, kin, plans))
+    return Solution(scene).solve_all()
 
 
 def _xy(z: complex) -> list[float]:

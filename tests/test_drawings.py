@@ -28,6 +28,7 @@ from plans.errors import InputError
 from plans.kinematics.exact import solve
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment
 from plans.scene.model import load_scene
+from plans.solution import Solution
 
 ROOT = Path(__file__).resolve().parents[1]
 V_ENGINE = ROOT / "samples" / "v_engine.toml"
@@ -409,7 +410,7 @@ def test_plan_panel_on_a_recording_backend():
 def test_scheme_panel_draws_what_the_textbook_draws():
     scene = load_scene(V_ENGINE)
     kin = solve(scene)
-    panel = scheme_panel(scene, kin, 0, 1000.0, "ru", strokes_over_cycle(scene))
+    panel = scheme_panel(scene, kin, 0, 1000.0, "ru", strokes_over_cycle(Solution(scene)))
     ids = [p.eid for p in panel.prims if p.eid]
     assert {"scheme-45-slider-B", "scheme-45-slider-C", "scheme-45-support-O", "scheme-45-omega-arc",
             "scheme-45-omega-head", "scheme-45-hatch-B", "scheme-45-hatch-C", "scheme-45-centre-S2",
@@ -431,7 +432,7 @@ def test_no_import_of_the_renderer_in_the_core():
 
 def test_stroke_range_of_the_pistons():
     scene = load_scene(V_ENGINE)
-    st = strokes_over_cycle(scene)
+    st = strokes_over_cycle(Solution(scene))
     for lo, hi in st.values():
         assert hi - lo == pytest.approx(0.070, rel=1e-3)  # H = 2·OA
     assert np.isfinite(list(st.values())).all()

@@ -19,6 +19,7 @@ from drawings.sheet import GAP, compose, sheet_spec, usable
 from plans.errors import InputError
 from plans.kinematics.exact import solve
 from plans.scene.model import load_scene
+from plans.solution import Solution
 
 ROOT = Path(__file__).resolve().parents[1]
 SAMPLES = ROOT / "samples"
@@ -240,7 +241,8 @@ def slider_positions():
     scene = load_scene(SAMPLES / "slider_crank.toml")
     kin = solve(scene)
     mu_l = 400.0
-    return scene, kin, mu_l, positions_panel(scene, kin, mu_l, "ru", [0, 1], strokes_over_cycle(scene))
+    sol = Solution(scene)
+    return scene, kin, mu_l, positions_panel(sol, mu_l, "ru", [0, 1], strokes_over_cycle(sol))
 
 
 def test_positions_panel_one_polyline_per_position(slider_positions):
@@ -276,7 +278,8 @@ def test_plan_of_positions_links_only_at_bold_positions():
     """four_bar: the coupler triangle at the bold positions only; B and E on trajectories."""
     scene = load_scene(SAMPLES / "four_bar.toml")
     kin = solve(scene)
-    panel = positions_panel(scene, kin, 500.0, "ru", [0], strokes_over_cycle(scene))
+    sol = Solution(scene)
+    panel = positions_panel(sol, 500.0, "ru", [0], strokes_over_cycle(sol))
     lines = {p.eid: p for p in panel.prims if p.op == "polyline" and p.eid.startswith("positions-pos-")}
     assert len(lines["positions-pos-0"].pts) > 2
     assert all(len(lines[f"positions-pos-{k}"].pts) == 2 for k in range(1, kin.n))
@@ -391,12 +394,10 @@ def test_plans_are_smaller_on_smaller_sheets(tmp_path):
         assert p3.scale <= p1.scale * (1 + 1e-12), pid
         smaller += p3.scale < p1.scale
     assert smaller >= len(by["A1"]) // 2  # most of them get smaller, not just the same
-    from drawings.linkage import for_sheet
-    from plans.kinematics.construction import build_all
-    from plans.kinematics.exact import solve as solve_
+    from drawings.linkage import fit_for
 
-    scene = for_sheet(load_scene(path), sheet_spec({"sheet": {"format": "A3"}}, str(path)))
-    for pp in build_all(solve_(scene)):
+    fit = fit_for(sheet_spec({"sheet": {"format": "A3"}}, str(path)))
+    for pp in Solution(load_scene(path), fit).plans:
         for plan in (pp.velocity, pp.acceleration):
             assert plan.extent <= LONGEST_MM * math.sqrt(420 / 841) + 1e-9
 

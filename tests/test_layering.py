@@ -106,3 +106,33 @@ def test_lever_depends_on_polygons_never_the_reverse():
     for node in ast.walk(tree):
         if isinstance(node, ast.ImportFrom) and node.module:
             assert node.module not in ("plans.forces.lever", "plans.forces.analysis"), node.module
+
+
+#: What solves a linkage (the exact analysis, the plans' construction, the force analysis,
+#: the lever, the cycle): the engine's, read by the sheets off one plans.solve.
+SOLVERS = {
+    "plans.kinematics.exact": {"solve"},
+    "plans.kinematics.construction": {"build", "build_all", "build_many"},
+    "plans.kinematics.structure": {"analyse"},
+    "plans.forces.analysis": {"kinetostatics"},
+    "plans.forces.polygons": {"analyse_forces", "force_polygons"},
+    "plans.forces.lever": {"zhukovsky_lever", "lever_plan", "force_rows"},
+    "plans.cycle.results": {"solve_cycle"},
+    "plans.cycle.diagrams": {"diagrams"},
+    "plans.cycle.dynamics": {"dynamics"},
+}
+
+
+def test_drawings_call_no_solver():
+    """The sheets draw what plans.solve solved: no module under drawings/ imports a solver
+    of a linkage (lazy imports inside functions included)."""
+    root = Path(__file__).resolve().parent.parent / "drawings"
+    found = []
+    for path in sorted(root.rglob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.ImportFrom) and node.module in SOLVERS:
+                bad = SOLVERS[node.module] & {a.name for a in node.names}
+                found += [f"{path.name}: {node.module}.{n}" for n in sorted(bad)]
+            elif isinstance(node, ast.Import):
+                found += [f"{path.name}: {a.name}" for a in node.names if a.name in SOLVERS]
+    assert found == []

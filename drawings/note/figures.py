@@ -87,11 +87,15 @@ def _build(item: Any, group: str, lang: str) -> list[Any]:
         make = {"dyn-M": cycle._m_panel, "dyn-A": cycle._a_panel, "dyn-T": cycle._t_panel,
                 "dyn-I": cycle._i_panel, "dyn-W": cycle._w_panel, "dyn-w": cycle._omega_panel}[group]
         return [make(cyc.dynamics, lang)]
-    from ..linkage import build_panels
-    from ..sheet import sheet_spec
+    from ..linkage import build_panels, fit_for
 
-    scene = item.solved.scene
-    spec = sheet_spec(scene.raw, scene.path, scene.title_in(lang), language=lang)
+    sol = item.solved
+    scene = sol.scene
+    spec = scene.sheet_for(language=lang)
     phis = tuple(float(item.data["positions"][k]["phi_deg"]) for k in studied(item))
     spec = replace(spec, positions=phis, pins=(), panels=NOTE_PANELS)
-    return build_panels(scene, spec)[0]
+    if sol.fit != fit_for(spec):  # drawn at the paper's fit, as plans draw draws them
+        from plans.solution import solve
+
+        sol = solve(scene, fit=fit_for(spec))
+    return build_panels(sol, spec)[0]

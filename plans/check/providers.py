@@ -16,6 +16,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, replace
 from typing import Any
 
+from plans import quantities
 from plans.check.checkfile import CheckFile
 from plans.check.tolerance import Linearised, Propagation
 from plans.errors import PlansError
@@ -23,7 +24,7 @@ from plans.kinematics.construction import PositionPlans, build_many
 from plans.kinematics.exact import Kinematics, solve
 from plans.kinematics.plan import Plan
 
-G_STANDARD = 9.81
+G_STANDARD = quantities.G_STANDARD
 #: An exact value below this fraction of its plan's size is zero (a point on the pole).
 ZERO_REL = 1e-9
 
@@ -206,12 +207,7 @@ def _label(ctx: Context, plan: Plan, point: str) -> str | None:
     return None
 
 
-_POINT = re.compile(r"[A-Z][a-z0-9]*")
-
-
-def points_of(token: str) -> list[str]:
-    pts = _POINT.findall(token)
-    return pts if "".join(pts) == token else []
+points_of = quantities.points_of
 
 
 def _plan_segment(ctx: Context, k: int, q: str) -> Exact | None:
@@ -420,14 +416,13 @@ def _force(ctx: Context, k: int, q: str) -> Exact | None:
         if q == "F_bal_lever" or fa.crank.kind != "force":
             return Exact(q, value, unit, mu_f, None, "forces")
         return drawn(value, unit, ("F_bal",))
-    m = re.fullmatch(r"F_(\d)(\d)(\^[nτ])?", q)
-    assert m
-    name = f"F{m.group(1)}{m.group(2)}"
+    got = quantities.reaction_name(q)
+    assert got
+    i, j, comp = got
     try:
-        F, rc = fa.reaction(name)
+        F, rc = quantities.reaction(fa, i, j)
     except KeyError:
         return None
-    comp = m.group(3)
     if comp is None:
         value = abs(complex(F[k]))
     else:
@@ -436,7 +431,7 @@ def _force(ctx: Context, k: int, q: str) -> Exact | None:
             return None
         value = abs(float(arr[k]))
     sfx = comp or ""
-    return drawn(value, "N", (f"F{m.group(1)}{m.group(2)}{sfx}", f"F{m.group(2)}{m.group(1)}{sfx}"))
+    return drawn(value, "N", (f"F{i}{j}{sfx}", f"F{j}{i}{sfx}"))
 
 
 def _arm(ctx: Context, k: int, q: str) -> Exact | None:
@@ -462,18 +457,15 @@ def _arm(ctx: Context, k: int, q: str) -> Exact | None:
     return None
 
 
-#: Exact value providers keyed by quantity name (first match wins).
-PROVIDERS: tuple[tuple[str, re.Pattern[str], Callable[[Context, int, str], Exact | None]], ...] = (
-    ("plan", re.compile(r"^[va]_[A-Za-z0-9]+(\^[nτ])?$|^a\^[kr]_\w+$"), _plan_segment),
-    ("angular", re.compile(r"^(omega|eps)_\d+$"), _angular),
-    ("length", re.compile(r"^l_[A-Z][A-Za-z0-9]*$"), _length),
-    ("loads", re.compile(r"^(m|I|G|Phi|M_Phi|P)_\d+$"), _loads),
-    ("forces", re.compile(r"^F_\d\d(\^[nτ])?$|^F_bal(_lever)?$"), _force),
-    ("arms", re.compile(r"^h_\w+$"), _arm),
-)
+#: Exact value providers keyed by quantity name (first match wins; the names are
+#: :data:`plans.quantities.PATTERNS`, the engine's one table of them).
+PROVIDERS: tuple[tuple[str, re.Pattern[str], Callable[[Context, int, str], Exact | None]], ...] = tuple(
+    (kind, quantities.PATTERNS[kind], fn) for kind, fn in (
+        ("plan", _plan_segment), ("angular", _angular), ("length", _length), ("loads", _loads),
+        ("forces", _force), ("arms", _arm)))
 
 #: Quantities that are the student's own and have no exact counterpart.
-STUDENT_ONLY = re.compile(r"^(F_bal_diff_pct|h_\w+)$")
+STUDENT_ONLY = quantities.STUDENT_ONLY
 
 
 def exact_value(ctx: Context, k: int, q: str) -> Exact | None:
@@ -511,7 +503,7 @@ def known_quantities(ctx: Context, k: int) -> list[str]:
         _, fa = got
         out += [f"Phi_{f.label[3:]}" for f in fa.applied.forces if f.label.startswith("Phi")]
         out += ["F_bal", "F_bal_lever"]
-        out += [f"F_{rc.name(ctx.scene.fij)[1:]}" for rc in fa.reactions()]
+        out += [quantities.name_of(rc, ctx.scene.fij) for rc in fa.reactions()]
     return out
 
 

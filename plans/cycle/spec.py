@@ -217,3 +217,9 @@ def diagrams_spec(scene: Scene) -> DiagramsSpec:
     phis = _positions(scene, raw, "diagrams", equal=True)
     return DiagramsSpec(tuple(pts), tuple(links), tuple(q for q in QUANTITIES if q in qs), phis, method,
                         pole, length)
+
+
+def check_table(scene: Scene, key: str) -> None:
+    """``[dynamics]`` or ``[diagrams]`` given where the scene does not ask for it: its keys
+    checked all the same (a misspelt key fails as it would where it is used)."""
+    _table(scene, key, _DYN_KEYS if key == "dynamics" else _DIA_KEYS)

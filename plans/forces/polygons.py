@@ -35,7 +35,7 @@ Plane vectors are complex numbers, ``cross(a, b) = Im(conj(a)·b)``.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator, Mapping
-from dataclasses import field
+from dataclasses import field, replace
 from typing import Any
 
 import numpy as np
@@ -92,6 +92,12 @@ class Reaction:
     def name(self, fij: str) -> str:
         """F_ij in the scene's convention: on_i_from_j → F{on}{frm}, of_i_on_j → F{frm}{on}."""
         return f"F{self.on}{self.frm}" if fij == "on_i_from_j" else f"F{self.frm}{self.on}"
+
+    def reversed(self) -> Reaction:
+        """The same joint's reaction on the other link (F_ji = −F_ij): F, the couple, F^τ and F^n
+        change sign, e_τ and e_n stay (so F_12^τ = −F_21^τ along the same e_τ)."""
+        return replace(self, on=self.frm, frm=self.on, F=-self.F, M=-self.M,
+                       tau=None if self.tau is None else -self.tau, n=None if self.n is None else -self.n)
 
     @property
     def N(self) -> R:
@@ -180,13 +186,14 @@ class ForceAnalysis:
         return out
 
     def reaction(self, name: str) -> tuple[C, Reaction]:
-        """A reaction by its F_ij name in the scene's convention, either order (F_ij = −F_ji)."""
+        """A reaction by its F_ij name in the scene's convention, either order (F_ij = −F_ji):
+        the force and the reaction so named (the other order :meth:`Reaction.reversed`)."""
         for rc in self.reactions():
             if rc.name(self.scene.fij) == name:
                 return rc.F, rc
             rev = rc.name("of_i_on_j" if self.scene.fij == "on_i_from_j" else "on_i_from_j")
             if rev == name:
-                return -rc.F, rc
+                return -rc.F, rc.reversed()
         raise KeyError(name)
 
     @property

@@ -43,7 +43,7 @@ def mu_force(fa: ForceAnalysis, values: list[complex]) -> float:
     cycle = fa.largest_reaction
     if longest <= 1e-9 * cycle:  # zero up to round-off: a point, at the cycle's scale
         longest = cycle
-    return nice_scale(longest, 100.0 * fit(fa.scene.scales))
+    return nice_scale(longest, 100.0 * fit(fa.scene))
 
 
 def unit_vector(z: C) -> C:

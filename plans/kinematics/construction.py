@@ -17,7 +17,6 @@ position, a protocol) is built by the same construction in Python numbers.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 from typing import Any
 
@@ -27,29 +26,20 @@ from plans.errors import Locked
 from plans.kinematics.dyads import Builder, Mixed, PerfectPencil, Scheme, plans_of
 from plans.kinematics.exact import Kinematics
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step
-from plans.kinematics.scales import LONGEST_MM, common_scales, refit
+from plans.kinematics.scales import LONGEST_MM, ROUND, common_scales, refit, round_scale
 from plans.phrases import phrase
 from plans.records import frozen
 from plans.tolerances import COINCIDE_REL
 from plans.units import clean, percent
 
-_NICE = (1.0, 2.0, 2.5, 4.0, 5.0)  # round both ways: μ and K = 1/μ
+_NICE = ROUND  # round both ways: μ and K = 1/μ
 
 
 def nice_scale(longest: float, target_mm: float = 100.0, mantissas: tuple[float, ...] = _NICE) -> float:
     """μ (mm per unit) with K = 1/μ a round number, so that ``longest`` is drawn as
-    the longest vector not above ``target_mm`` (75–100 mm): how a draftsman picks it."""
-    if not (longest > 0 and math.isfinite(longest)):
-        return 1.0
-    k_min = longest / target_mm  # K may not be smaller than this
-    if k_min <= 0:  # a subnormal longest vector: nothing to draw at any scale
-        return 1.0
-    e = math.floor(math.log10(k_min))
-    for m in mantissas + (10.0,):
-        K = m * 10.0**e
-        if K >= k_min * (1 - 1e-12):
-            return 1.0 / K
-    return 1.0 / (10.0 ** (e + 1))  # pragma: no cover
+    the longest vector not above ``target_mm`` (75–100 mm): how a draftsman picks it
+    (:func:`plans.kinematics.scales.round_scale`)."""
+    return round_scale(longest, target_mm, mantissas)
 
 
 @frozen

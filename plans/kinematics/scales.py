@@ -4,8 +4,9 @@ Every default scale is 1, 2, 2.5, 4 or 5 × 10^k (this set is closed under 1/x, 
 K = 1/μ are both round).  One scale serves every position while the longest vector of
 each plan stays within ``LONGEST_MM``; a position whose plan would run longer gets a round
 scale of its own.  ``[scales] velocity = { known_mm = 100 }`` keeps the course habit of a
-given length for the known vector (pa = 100 mm) instead.  A drawing on a smaller sheet
-sets ``FIT`` in the scene's scales: every target length is that fraction of the A1 one.
+given length for the known vector (pa = 100 mm) instead.  A drawing on a smaller sheet is
+solved with ``plans.solve(scene, fit=...)`` (the scene's ``fit``): every target length is that
+fraction of the A1 one.
 """
 
 from __future__ import annotations
@@ -21,24 +22,25 @@ ROUND = (1.0, 2.0, 2.5, 4.0, 5.0)
 KNOWN_MM = 100.0
 #: No plan's longest vector runs longer than this (mm); longer ones get their own scale.
 LONGEST_MM = 150.0
-#: Key of the scene's scales a drawing sets for a smaller sheet (never read from a file):
-#: the target lengths of the plans, polygons and lever times this factor.
-FIT = "fit"
 
 
-def fit(scales: dict[str, float]) -> float:
-    """The factor of the target lengths (1 on A1)."""
-    return float(scales.get(FIT, 1.0))
+def fit(scene: Any) -> float:
+    """The factor of the target lengths (1 on A1): the scene's ``fit``, as it was solved."""
+    return float(scene.fit)
 
 
-def round_scale(longest: float, target_mm: float = KNOWN_MM) -> float:
-    """μ (mm per unit), round in both directions, the largest that draws ``longest`` within
-    ``target_mm``; 1 for a zero or non-finite length (no scale from a zero vector)."""
+def round_scale(longest: float, target_mm: float = KNOWN_MM, mantissas: tuple[float, ...] = ROUND) -> float:
+    """μ (mm per unit), round in both directions (K = 1/μ one of ``mantissas`` × 10^k), the
+    largest that draws ``longest`` within ``target_mm``; 1 for a zero, subnormal or non-finite
+    length (no scale from a zero vector).  The one picker of the plans', polygons' and
+    lever's scales."""
     if not (longest > 0 and math.isfinite(longest)):
         return 1.0
-    k_min = longest / target_mm
+    k_min = longest / target_mm  # K may not be smaller than this
+    if k_min <= 0:  # a subnormal longest vector: nothing to draw at any scale
+        return 1.0
     e = math.floor(math.log10(k_min))
-    for m in ROUND + (10.0,):
+    for m in mantissas + (10.0,):
         K = m * 10.0**e
         if K >= k_min * (1 - 1e-12):
             return 1.0 / K
@@ -72,7 +74,7 @@ def common_scales(kin: Kinematics) -> tuple[float, float]:
         elif f"{key}_known_mm" in sc and known > 0:
             out.append(sc[f"{key}_known_mm"] / known)
         else:
-            out.append(round_scale(known, KNOWN_MM * fit(sc)))
+            out.append(round_scale(known, KNOWN_MM * fit(kin.scene)))
     return out[0], out[1]
 
 
@@ -82,7 +84,7 @@ def refit(kin: Kinematics, plans: list, build, only: Any = None) -> list:
     ``only``: the positions that may run past it (the others are not looked at, so their
     plan objects are not made)."""
     sc = kin.scene.scales
-    longest = LONGEST_MM * fit(sc)
+    longest = LONGEST_MM * fit(kin.scene)
     out = list(plans)
     for k in range(len(plans)) if only is None else only:
         pp = plans[k]
@@ -108,7 +110,7 @@ def fitted(kin: Kinematics, k: int, mv: float, ma: float, build):
     where a plan's longest vector would exceed ``LONGEST_MM`` (a scale the scene gives is kept)."""
     pp = build(kin, k, velocity_scale=mv, acceleration_scale=ma)
     sc = kin.scene.scales
-    longest = LONGEST_MM * fit(sc)
+    longest = LONGEST_MM * fit(kin.scene)
     mv2, ma2 = mv, ma
     if pp.velocity is not None and not _given(sc, "velocity") and pp.velocity.extent > longest:
         mv2 = round_scale(pp.velocity.extent / mv, longest)
@@ -119,4 +121,4 @@ def fitted(kin: Kinematics, k: int, mv: float, ma: float, build):
     return pp
 
 
-__all__ = ["FIT", "ROUND", "fit", "round_scale", "is_round", "common_scales", "fitted", "refit", "known_vectors"]
+__all__ = ["ROUND", "fit", "round_scale", "is_round", "common_scales", "fitted", "refit", "known_vectors"]

@@ -134,6 +134,17 @@ class Scene:
     fij: str
     raw: dict[str, Any] = field(repr=False, default_factory=dict)
     titles: dict[str, str] = field(default_factory=dict)  # per sheet language: {"ru": ..., "en": ...}
+    #: the target lengths of the plans, polygons and lever as a fraction of the A1 ones: a
+    #: smaller sheet's (``plans.solve(scene, fit=...)``; never read from a file)
+    fit: float = 1.0
+    #: the other tables as typed records (:mod:`plans.scene.tables`): ``[loads]``
+    #: (plans.forces.loads.Loads), ``[dynamics]`` and ``[diagrams]`` (plans.cycle.spec) read by
+    #: ``plans.solve`` (then ``tables`` is True), None where the file neither gives nor needs
+    #: them; ``[sheet]`` is validated with the file and read as :attr:`sheet`
+    loads: Any = field(default=None, repr=False)
+    dynamics_spec: Any = field(default=None, repr=False)
+    diagrams_spec: Any = field(default=None, repr=False)
+    tables: bool = field(default=False, repr=False)
     #: what is derived once per scene (its structure, the solver's constants); not copied by
     #: dataclasses.replace, so a changed scene derives its own
     memo: dict[Any, Any] = field(init=False, repr=False, compare=False, default_factory=dict)
@@ -141,6 +152,19 @@ class Scene:
     def title_in(self, lang: str) -> str:
         """The title in a sheet's language (the plain title where none is given for it)."""
         return self.titles.get(lang, self.title)
+
+    @property
+    def sheet(self) -> Any:
+        """``[sheet]`` as a typed record (plans.scene.paper.SheetSpec), validated with the file."""
+        from plans.scene.sheet import sheet_for
+
+        return sheet_for(self)
+
+    def sheet_for(self, **override: Any) -> Any:
+        """``[sheet]`` with what a command overrides (format, orientation, language = ...)."""
+        from plans.scene.sheet import sheet_for
+
+        return sheet_for(self, **override)
 
     def wants(self, output: str) -> bool:
         return output in self.outputs
@@ -246,6 +270,9 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
     outputs = _outputs(r, data)
     scales, style = _scales(r, data)
     fij = r.choice(data, "fij", "", FIJ_CONVENTIONS, "on_i_from_j")
+    from plans.scene.sheet import check_sheet
+
+    check_sheet(data, path)  # the record is made when a reader asks for it (Scene.sheet)
     scene = Scene(path=path, title=title, frame=frame, frame_points=frame_points, links=links,
                   joints=joints, driver=driver, branches=branches, outputs=outputs,
                   scales=scales, scale_style=style, fij=fij, raw=data, titles=titles)

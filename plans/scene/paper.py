@@ -1,0 +1,88 @@
+"""The ``[sheet]`` table as typed records: the paper (format, orientation, the drawing's fit),
+the title block's fields, what is drawn, the pinned panels.  Read and validated by
+:mod:`plans.scene.sheet`; these classes are defined only when a reader asks for the record.
+"""
+
+from __future__ import annotations
+
+import math
+
+from plans.records import frozen
+from plans.scene.sheet import FORMATS
+
+
+@frozen
+class Pin:
+    panel: str  # panel id: "velocity-45"
+    sheet: int  # 1-based
+    x: float  # top-left of the panel box, mm from the paper's top-left corner
+    y: float
+
+
+@frozen
+class SheetSpec:
+    """The ``[sheet]`` table of a scene (every key optional)::
+
+        [sheet]
+        format = "A1"                 # A1 | A2 | A3 | A4  (CLI --sheet overrides)
+        orientation = "landscape"     # or "portrait"
+        language = "ru"               # or "en"
+        title = "Механизм V-образного двигателя"   # name field (default: the scene's title);
+                                      # or one per language: { ru = "...", en = "..." }
+        designation = "ТММ.КП.07.00.00"
+        subtitle = "Кинематический и силовой анализ"
+        author = "Иванов И.И."
+        checked_by = "Петров П.П."
+        approved_by = ""
+        group = "гр. МТ-31"
+        organization = "МГТУ"
+        date = "21.11.26"             # written as given (no clock: same scene, same bytes)
+        first_sheet = 1               # number of this drawing's first sheet
+        total_sheets = 4              # "Sheets" cell (default: first_sheet - 1 + sheets drawn)
+        panels = ["positions", "scheme", "velocity", "acceleration", "table", "group", "crank", "lever",
+                  "legend"]           # kinds to draw (default: all the scene's outputs ask for)
+        positions = [45, 0]           # crank angles studied in detail: their schemes, plans, forces
+                                      # and tables (default: plans etc. at every position of the
+                                      # scene, schemes at the first two)
+        trace = ["S2"]                # points whose trajectory the plan of positions traces
+                                      # (default: the centres of mass of the connecting rods)
+        [[sheet.pins]]                # fix a panel: top-left corner in mm from the paper's corner
+        panel = "velocity-45"
+        sheet = 1
+        x = 300
+        y = 20
+    """
+
+    format: str = "A1"
+    orientation: str = "landscape"
+    language: str = "ru"
+    title: str = ""
+    designation: str = ""
+    subtitle: str = ""
+    author: str = ""
+    checked_by: str = ""
+    approved_by: str = ""
+    group: str = ""
+    organization: str = ""
+    date: str = ""
+    first_sheet: int = 1
+    total_sheets: int | None = None
+    panels: tuple[str, ...] | None = None  # kinds to draw (subset of what the scene asks)
+    positions: tuple[float, ...] | None = None  # crank angles to draw (subset of the scene's)
+    trace: tuple[str, ...] | None = None  # trajectories on the plan of positions
+    pins: tuple[Pin, ...] = ()
+
+    @property
+    def size(self) -> tuple[float, float]:
+        w, h = FORMATS[self.format]
+        return (w, h) if self.orientation == "landscape" else (h, w)
+
+    @property
+    def fit(self) -> float:
+        """The fraction of the A1 target lengths the plans, polygons and lever are drawn at on
+        this paper (``plans.solve(scene, fit=scene.sheet.fit)``): on a smaller sheet the square
+        root of the ratio of the sheets' sizes (A3 about 0.7 of A1: smaller, still readable)."""
+        return min(1.0, math.sqrt(max(self.size) / 841.0))
+
+
+__all__ = ["Pin", "SheetSpec"]

@@ -1,0 +1,168 @@
+"""The ``[sheet]`` table of a scene (and of an engine, gear or cam file): paper, title block,
+what is drawn, read and validated with the file, so a bad ``[sheet]`` fails every command
+alike.  The sheets themselves are drawn by ``drawings``; this is only what the file says.
+
+The typed record (:class:`plans.scene.paper.SheetSpec`) is made when a reader asks for it:
+``plans solve`` validates the table without defining the sheet's classes.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from plans.errors import InputError
+from plans.reader import check_keys
+
+if TYPE_CHECKING:
+    from plans.scene.paper import Pin, SheetSpec  # noqa: F401  (the records, typed where read)
+
+FORMATS: dict[str, tuple[float, float]] = {  # landscape width × height, mm (GOST 2.301)
+    "A0": (1189.0, 841.0),
+    "A1": (841.0, 594.0),
+    "A2": (594.0, 420.0),
+    "A3": (420.0, 297.0),
+    "A4": (297.0, 210.0),
+}
+SHEET_FORMATS = ("A1", "A2", "A3", "A4")
+
+
+PANEL_KINDS = ("positions", "scheme", "velocity", "acceleration", "table", "group", "crank", "lever", "legend",
+               "centres")
+_KEYS = {"format", "orientation", "language", "title", "designation", "subtitle", "author",
+         "checked_by", "approved_by", "group", "organization", "date", "first_sheet", "total_sheets",
+         "panels", "positions", "trace", "pins"}
+
+
+def sheet_spec(raw: dict[str, Any], path: str, default_title: str = "", **override: Any) -> SheetSpec:
+    """Validate ``[sheet]`` (one-line InputError per problem); CLI options override it."""
+    from plans.scene.paper import Pin, SheetSpec  # noqa: F401  (the records, typed where read)
+
+    out = read_sheet(raw, path, default_title, **override)
+    if "pins" in out:
+        out["pins"] = tuple(Pin(*p) for p in out["pins"])
+    return SheetSpec(**out)
+
+
+def read_sheet(raw: dict[str, Any], path: str, default_title: str = "", **override: Any) -> dict[str, Any]:
+    """``[sheet]`` validated into the fields of a SheetSpec (pins as (panel, sheet, x, y))."""
+    data = raw.get("sheet", {})
+    if not isinstance(data, dict):
+        raise InputError("expected a table [sheet]", file=path, field="sheet")
+    check_keys(data, _KEYS, file=path, where="sheet.")
+    out: dict[str, Any] = {}
+
+    def string(key: str) -> None:
+        if key in data:
+            if not isinstance(data[key], str):
+                raise InputError("expected a string", file=path, field=f"sheet.{key}")
+            out[key] = data[key]
+
+    for key in ("designation", "subtitle", "author", "checked_by", "approved_by", "group",
+                "organization", "date"):
+        string(key)
+    fmt = str(override.get("format") or data.get("format", "A1"))
+    if fmt.upper() not in SHEET_FORMATS:
+        raise InputError(f"unknown sheet format {fmt!r}; expected one of {', '.join(SHEET_FORMATS)}",
+                         file=path, field="sheet.format")
+    out["format"] = fmt.upper()
+    ori = override.get("orientation") or data.get("orientation", "landscape")
+    if ori not in ("landscape", "portrait"):
+        raise InputError(f"expected \"landscape\" or \"portrait\", got {ori!r}", file=path,
+                         field="sheet.orientation")
+    out["orientation"] = ori
+    lang = override.get("language") or data.get("language", "ru")
+    if lang not in ("ru", "en"):
+        raise InputError(f"expected \"ru\" or \"en\", got {lang!r}", file=path, field="sheet.language")
+    out["language"] = lang
+    if "title" in data:  # a string, or one per language: { ru = "...", en = "..." }
+        t = data["title"]
+        if isinstance(t, dict) and t and all(k in ("ru", "en") and isinstance(v, str) for k, v in t.items()):
+            t = t.get(lang, t.get("en", t.get("ru")))
+        if not isinstance(t, str):
+            raise InputError("expected a string or { ru = \"...\", en = \"...\" }", file=path, field="sheet.title")
+        out["title"] = t
+    for key in ("first_sheet", "total_sheets"):
+        if key in data:
+            v = data[key]
+            if isinstance(v, bool) or not isinstance(v, int) or not 1 <= v <= 9999:
+                raise InputError(f"expected a whole number 1..9999, got {v!r}", file=path, field=f"sheet.{key}")
+            out[key] = v
+    if "panels" in data:
+        v = data["panels"]
+        if not isinstance(v, list) or not all(isinstance(x, str) and x in PANEL_KINDS for x in v):
+            raise InputError(f"expected a list of panel kinds from {list(PANEL_KINDS)}", file=path,
+                             field="sheet.panels")
+        out["panels"] = tuple(v)
+    if "positions" in data:
+        v = data["positions"]
+        v = v if isinstance(v, list) else [v]
+        if not v or not all(isinstance(x, int | float) and not isinstance(x, bool) and abs(x) <= 1e300
+                            and x == x for x in v):
+            raise InputError("expected crank angles in degrees, e.g. positions = [45, 0]", file=path,
+                             field="sheet.positions")
+        out["positions"] = tuple(float(x) for x in v)
+    if "trace" in data:
+        v = data["trace"]
+        v = v if isinstance(v, list) else [v]
+        if not all(isinstance(x, str) and x for x in v):
+            raise InputError("expected point names, e.g. trace = [\"S2\"] (or [] for none)", file=path,
+                             field="sheet.trace")
+        out["trace"] = tuple(v)
+    if "pins" in data:
+        pins = []
+        v = data["pins"]
+        if not isinstance(v, list):
+            raise InputError("expected an array of tables [[sheet.pins]]", file=path, field="sheet.pins")
+        for i, p in enumerate(v):
+            f = f"sheet.pins[{i}]"
+            if not isinstance(p, dict) or not isinstance(p.get("panel"), str):
+                raise InputError("expected { panel = \"velocity-45\", x = mm, y = mm, sheet = 1 }", file=path,
+                                 field=f)
+            check_keys(p, ("panel", "x", "y", "sheet"), file=path, where=f"{f}.")
+            for key in ("x", "y"):
+                if not isinstance(p.get(key), int | float) or isinstance(p.get(key), bool) or \
+                        not abs(p[key]) <= 10_000:
+                    raise InputError(f"expected {key} in mm from the sheet's top-left corner", file=path,
+                                     field=f"{f}.{key}")
+            sh = p.get("sheet", 1)
+            if isinstance(sh, bool) or not isinstance(sh, int) or not 1 <= sh <= 9999:
+                raise InputError("expected a sheet number >= 1", file=path, field=f"{f}.sheet")
+            pins.append((p["panel"], sh, float(p["x"]), float(p["y"])))
+        out["pins"] = tuple(pins)
+    out.setdefault("title", default_title)
+    return out
+
+
+def sheet_of(raw: dict[str, Any], path: str, title: str, titles: dict[str, str]) -> SheetSpec:
+    """The file's ``[sheet]``, its title in the sheet's language (InputError naming the field)."""
+    return sheet_spec(raw, path, titles.get(_language(raw), title))
+
+
+def sheet_for(scene: Any, *, format: str | None = None, orientation: str | None = None,
+              language: str | None = None) -> SheetSpec:
+    """A scene's ``[sheet]`` with what a command overrides (``--sheet A3``, ``--language en``),
+    the title in the sheet's language."""
+    lang = language or _language(scene.raw)
+    return sheet_spec(scene.raw, scene.path, scene.title_in(lang), format=format, orientation=orientation,
+                      language=language)
+
+
+def check_sheet(raw: dict[str, Any], path: str) -> None:
+    """The file's ``[sheet]`` validated, as :func:`sheet_of` reads it (InputError naming the field)."""
+    read_sheet(raw, path)
+
+
+def _language(raw: dict) -> str:
+    """The sheet's language as the file gives it (its title is the scene's in that language)."""
+    sheet = raw.get("sheet")
+    lang = sheet.get("language") if isinstance(sheet, dict) else None
+    return lang if lang in ("ru", "en") else "ru"
+
+
+def __getattr__(name: str) -> Any:
+    """``Pin`` and ``SheetSpec`` (:mod:`plans.scene.paper`) where they were, defined when first used."""
+    if name in ("Pin", "SheetSpec"):
+        from plans.scene import paper
+
+        return getattr(paper, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

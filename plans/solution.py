@@ -1,0 +1,300 @@
+"""One solved scene that every reader takes: the JSON, the table, the sheets, the checker.
+
+``plans.solve(scene_or_path, fit=...)`` makes a :class:`Solution`; each part (structure,
+kinematics, plans, forces, lever, cycle, dynamics, diagrams, and what the sheets read: the
+mechanism over a revolution, the force polygons and the lever at a position, the plans of
+velocity analogues) is computed the first time it is read and kept, so a part the scene does
+not ask for costs nothing and none is computed twice.  Readers never call a solver: they
+read the Solution.
+
+``fit`` is the drawing's paper: the target lengths of the plans, polygons and lever as a
+fraction of the A1 ones (``drawings`` passes √(sheet / A1) for a smaller sheet, the scales
+still round).  It changes only scales, never a value.
+
+Values by their textbook names (``F_12^τ``, ``v_B``, ``omega_3``...) are read with
+:meth:`Solution.value`, signed as :mod:`plans.quantities` documents (docs/quantities.md).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import replace
+from pathlib import PurePath
+from typing import TYPE_CHECKING, Any, NamedTuple
+
+from plans.errors import ConstructionError, PlansError
+
+if TYPE_CHECKING:
+    from plans.cycle.diagrams import Diagrams
+    from plans.cycle.dynamics import Dynamics
+    from plans.cycle.results import CycleResult
+    from plans.forces.lever import LeverAnalysis, Reading
+    from plans.forces.polygons import ForceAnalysis, ForcePolygon
+    from plans.kinematics.construction import PositionPlans
+    from plans.kinematics.exact import Kinematics
+    from plans.kinematics.plan import Plan
+    from plans.kinematics.structure import Structure
+    from plans.scene.model import Scene
+
+#: The crank angles of "a revolution" the sheets read (the plan of positions' paths every
+#: 2.5°, the sliders' strokes every 5°, the mechanism's size every 10°: every 2nd and 4th).
+REVOLUTION = 145
+
+
+class Forces(NamedTuple):
+    """The force analysis of a scene: the Bruevich polygons' reactions and the Zhukovsky lever."""
+
+    analysis: ForceAnalysis
+    lever: LeverAnalysis
+
+
+class Revolution(NamedTuple):
+    """The mechanism's positions over a revolution: every ``step``-th angle of ``kinematics``."""
+
+    kinematics: Kinematics
+    step: int
+
+    @property
+    def phi_deg(self) -> Any:
+        return self.kinematics.phi_deg[::self.step]
+
+    def point(self, name: str) -> Any:
+        """r of a named point at each angle (m, complex)."""
+        return self.kinematics.point(name)[0][::self.step]
+
+    def point_on(self, link: int, z: complex) -> Any:
+        """r of the point at local ``z`` on ``link`` at each angle (m, complex)."""
+        import numpy as np
+
+        return np.asarray(self.kinematics.point_on(link, z)[0])[::self.step]
+
+
+class Solution:
+    """Everything computed for a scene, each part once, when first read."""
+
+    __slots__ = ("scene", "fit", "_parts")
+
+    def __init__(self, scene: Scene, fit: float = 1.0) -> None:
+        """``scene`` with its ``[loads]``, ``[dynamics]`` and ``[diagrams]`` read and validated now
+        (an InputError naming the field, before anything is solved), at the paper's ``fit``."""
+        from plans.scene.tables import with_tables
+
+        if not (isinstance(fit, int | float) and not isinstance(fit, bool) and 0.0 < fit <= 1.0):
+            raise ValueError(f"fit is the fraction of the A1 target lengths, 0 < fit <= 1; got {fit!r}")
+        self.scene: Scene = with_tables(scene, **({} if fit == scene.fit else {"fit": float(fit)}))
+        self.fit = float(fit)
+        self._parts: dict[Any, Any] = {}
+
+    def __repr__(self) -> str:
+        return f"Solution({self.scene.path!r}, fit={self.fit:g}, outputs={sorted(self.scene.outputs)})"
+
+    def _part(self, key: Any, make: Callable[[], Any]) -> Any:
+        """A part made once; a construction without an answer names the scene's file."""
+        try:
+            return self._parts[key]
+        except KeyError:
+            pass
+        try:
+            got = make()
+        except ConstructionError as exc:
+            exc.source = self.scene.path
+            raise
+        self._parts[key] = got
+        return got
+
+    # -- the parts the scene asks for
+    @property
+    def structure(self) -> Structure:
+        """The initial link and the Assur groups."""
+        from plans.kinematics.structure import analyse
+
+        return self._part("structure", lambda: analyse(self.scene))
+
+    @property
+    def kinematics(self) -> Kinematics:
+        """Exact positions (and velocities, accelerations as the outputs need) at the scene's angles."""
+        from plans.kinematics.exact import solve
+
+        return self._part("kinematics", lambda: solve(self.scene, structure=self.structure))
+
+    @property
+    def plans(self) -> tuple[PositionPlans, ...]:
+        """The velocity and acceleration plans of every position (none unless asked for)."""
+        def make() -> tuple[PositionPlans, ...]:
+            if not self.scene.wants("velocity_plan"):
+                return ()
+            from plans.kinematics.construction import build_all
+
+            return tuple(build_all(self.kinematics))
+
+        return self._part("plans", make)
+
+    @property
+    def forces(self) -> Forces | None:
+        """The force analysis and the lever (None unless the scene asks for polygons or the lever);
+        ``fa, lv = sol.forces`` as before."""
+        def make() -> Forces | None:
+            if not (self.scene.wants("force_polygons") or self.scene.wants("lever")):
+                return None
+            from plans.forces.analysis import kinetostatics
+
+            got = kinetostatics(self.scene, self.kinematics)
+            return None if got is None else Forces(*got)
+
+        return self._part("forces", make)
+
+    @property
+    def lever(self) -> LeverAnalysis | None:
+        f = self.forces
+        return None if f is None else f.lever
+
+    @property
+    def cycle(self) -> CycleResult | None:
+        """Tables over the positions, the dynamics and the kinematic diagrams (as asked)."""
+        def make() -> CycleResult | None:
+            from plans.cycle.results import solve_cycle
+
+            return solve_cycle(self.scene, self.kinematics, self.plans)
+
+        return self._part("cycle", make)
+
+    @property
+    def dynamics(self) -> Dynamics | None:
+        """Machine dynamics and the flywheel (None unless asked for): the cycle's, or alone
+        when the cycle's tables have not been read."""
+        if "cycle" in self._parts or not self.scene.wants("dynamics"):
+            c = self.cycle if self.scene.wants("dynamics") else None
+            return None if c is None else c.dynamics
+        from plans.cycle.dynamics import dynamics
+
+        return self._part("dynamics", lambda: dynamics(self.scene))
+
+    @property
+    def diagrams(self) -> Diagrams | None:
+        """Kinematic diagrams by graphical differentiation (None unless asked for): the
+        cycle's, or alone when the cycle's tables have not been read."""
+        if "cycle" in self._parts or not self.scene.wants("diagrams"):
+            c = self.cycle if self.scene.wants("diagrams") else None
+            return None if c is None else c.diagrams
+        from plans.cycle.diagrams import diagrams
+
+        return self._part("diagrams", lambda: diagrams(self.scene))
+
+    def solve_all(self) -> Solution:
+        """Every part the scene asks for, now, in the order of the method (the first part
+        without an answer stops it, before anything is written)."""
+        for part in ("plans", "forces", "cycle"):
+            getattr(self, part)
+        return self
+
+    # -- what the sheets read besides
+    def revolution(self, n: int = REVOLUTION) -> Revolution:
+        """Positions only at ``n`` crank angles evenly over one revolution, 0° and 360° both
+        included; where ``n - 1`` divides :data:`REVOLUTION`'s steps they are read off that one
+        solve.  PlansError where the mechanism does not turn through them all."""
+        def own() -> Revolution:
+            return Revolution(_revolution(self, n), 1)
+
+        step = (REVOLUTION - 1) // (n - 1) if n > 1 and (REVOLUTION - 1) % (n - 1) == 0 else 0
+        if not step or self._parts.get("no revolution"):
+            return self._part(("revolution", n), own)
+        try:
+            whole = self._part(("revolution", REVOLUTION), lambda: _revolution(self, REVOLUTION))
+        except PlansError:  # it may turn through the coarser angles all the same
+            self._parts["no revolution"] = True  # (not tried again)
+            return self._part(("revolution", n), own)
+        return Revolution(whole, step)
+
+    def force_polygons(self, k: int) -> tuple[ForcePolygon, ...]:
+        """The Bruevich polygons of position ``k`` (groups, then the crank), at μF for the paper."""
+        def make() -> tuple[ForcePolygon, ...]:
+            from plans.forces.polygons import force_polygons
+
+            f = self.forces
+            return () if f is None else force_polygons(f.analysis, k)
+
+        return self._part(("polygons", k), make)
+
+    def lever_plan(self, k: int) -> Plan:
+        """The Zhukovsky lever of position ``k`` (the velocity plan turned 90°, loads at their images)."""
+        from plans.forces.lever import lever_plan
+
+        lv = self.lever
+        assert lv is not None, "the scene asks for no lever"
+        return self._part(("lever", k), lambda: lever_plan(lv, k))
+
+    def force_rows(self, k: int) -> list[Reading]:
+        """The balancing load three ways and δ at position ``k`` (rows of the results table)."""
+        from plans.forces.lever import force_rows
+
+        lv = self.lever
+        assert lv is not None, "the scene asks for no lever"
+        return self._part(("rows", k), lambda: force_rows(lv, k))
+
+    def analogue_plans(self) -> tuple[Plan, ...]:
+        """Plans of velocity analogues at the dynamics table's positions: velocity plans at
+        μ_v = μ/|ω1|, so that each segment is the analogue v/ω1 at μ (mm per m)."""
+        def make() -> tuple[Plan, ...]:
+            import numpy as np
+
+            from plans.kinematics.construction import build
+            from plans.kinematics.exact import solve
+
+            d = self.dynamics
+            if d is None:
+                return ()
+            scene = replace(d.scene, outputs=d.scene.outputs | {"velocity_plan"})
+            phis = np.asarray(d.spec.phi_deg, float)
+            phis = phis[phis < phis[0] + 360.0 - 1e-9]  # the second revolution of 720° repeats the first's plans
+            kin = solve(scene, phis, order=1)
+            mu_v = d.scales.analogue / abs(d.scene.driver.omega)
+            out = []
+            for k in range(kin.n):
+                pp = build(kin, k, velocity_scale=mu_v)
+                if pp.velocity is not None:
+                    out.append(pp.velocity)
+            return tuple(out)
+
+        return self._part("analogues", make)
+
+    # -- values by their textbook names (plans.quantities)
+    def value(self, name: str, phi: float | None = None) -> float:
+        """The quantity ``name`` (``"F_12^τ"``, ``"v_B"``, ``"omega_3"``, ``"F_bal"``...) at the
+        crank angle ``phi`` in degrees (one of the scene's; None: its only or first one), in SI,
+        signed as docs/quantities.md says.  KeyError naming what is known for an unknown name."""
+        from plans.quantities import value
+
+        return value(self, name, phi)
+
+    def values(self, name: str) -> list[float]:
+        """The quantity ``name`` at every position of the scene, in order."""
+        from plans.quantities import values
+
+        return values(self, name)
+
+    def names(self) -> list[str]:
+        """Every quantity name this solution can read."""
+        from plans.quantities import names
+
+        return names(self)
+
+
+def _revolution(sol: Solution, n: int) -> Kinematics:
+    import numpy as np
+
+    from plans.kinematics.exact import solve
+
+    return solve(sol.scene, phi_deg=np.linspace(0.0, 360.0, n), order=0, structure=sol.structure)
+
+
+def solve(scene: Scene | str | PurePath, *, fit: float = 1.0) -> Solution:
+    """A scene (or the path of its file) solved: a :class:`Solution` whose parts are computed
+    when first read.  ``fit`` < 1 draws the plans, polygons and lever shorter, for a smaller sheet."""
+    if not hasattr(scene, "driver"):
+        from plans.scene.model import load_scene
+
+        scene = load_scene(str(scene))
+    return Solution(scene, fit)  # type: ignore[arg-type]
+
+
+__all__ = ["Forces", "REVOLUTION", "Revolution", "Solution", "solve"]
