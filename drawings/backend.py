@@ -129,6 +129,11 @@ def arc_points(c: Pt, r: float, a0: float, a1: float, n: int = 24) -> list[Pt]:
             for k in range(n + 1)]
 
 
+#: The most strokes one hatched line gets (an A1 sheet's width at 0.4 mm): a guide of an
+#: absurd length (a fuzzed file) is drawn, then refused as too big, without billions of strokes.
+MAX_HATCH = 2000
+
+
 def hatch_segments(p0: Pt, p1: Pt, side: int, step: float, length: float) -> list[tuple[Pt, Pt]]:
     """Short strokes at 45° along p0–p1 on ``side`` (+1 left of p0→p1 as seen on the sheet)."""
     dx, dy = p1[0] - p0[0], p1[1] - p0[1]
@@ -139,7 +144,9 @@ def hatch_segments(p0: Pt, p1: Pt, side: int, step: float, length: float) -> lis
     nx, ny = uy * side, -ux * side  # on a y-down sheet the left normal of (ux, uy) is (uy, −ux)
     k = length / math.sqrt(2)
     ex, ey = (nx - ux) * k, (ny - uy) * k
-    count = max(1, int(L / step) + 1)
+    count = max(1, int(min(L / step, MAX_HATCH)) + 1)
+    if count > MAX_HATCH:  # a guide longer than any sheet: as many strokes as a sheet can show, spaced out
+        step = L / (count - 1)
     gap = (L - (count - 1) * step) / 2
     out = []
     for i in range(count):

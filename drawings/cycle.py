@@ -442,13 +442,31 @@ def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_te
         sub = dataclasses.replace(spec, subtitle=tr("dynamics", lang), pins=())
         tabs = cr.tables[-4:]  # the dynamics' own: analogues, I_pr, M_pr, work and energy
         analogues = () if scene.wants("velocity_plan") else sol.analogue_plans()  # else on the first sheet
-        extra += compose(dynamics_panels(cr.dynamics, tabs, lang, analogues), sub, scale_text, scene.path)
+        extra += compose(_fitting_dynamics(sol, cr.dynamics, tabs, sub, analogues), sub, scale_text, scene.path)
     out = list(sheets) + extra
     for i, sh in enumerate(out):
         sh.number, sh.count = i + 1, len(out)
         sh.prims = []
         sh.render()
     return out
+
+
+def _fitting_dynamics(sol: Solution, d: Dynamics, tabs: Sequence[CycleTable], spec: SheetSpec,
+                      analogues: Sequence = ()) -> list[Panel]:
+    """The dynamics sheet's panels as they fit the sheet: on a small one the φ axis of the
+    diagrams is shortened (240 mm on A1 and A2) and their heights lowered until every
+    diagram fits, not refused."""
+    from .sheet import _fits_empty
+
+    panels = dynamics_panels(d, tabs, spec.language, analogues)
+    axis = 240.0
+    height = 1.0
+    while not all(_fits_empty(p, spec.format, spec.orientation) for p in panels) and axis > 60.0:
+        axis = max(60.0, math.floor(axis * 0.8 / 10.0) * 10.0)
+        height = max(0.4, height * 0.85)
+        d = sol.dynamics_drawn(axis, height)
+        panels = dynamics_panels(d, tabs, spec.language, analogues)
+    return panels
 
 
 def diagrams_sheet_seconds(path: str | Path, repeat: int = 5) -> float:

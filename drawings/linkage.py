@@ -61,6 +61,28 @@ def _wants(spec: SheetSpec, kind: str) -> bool:
     return spec.panels is None or kind in spec.panels
 
 
+def _fitting_positions(sol: Solution, mu: float, lang: str, bold: list[int], strokes: Any,
+                       spec: SheetSpec) -> Any:
+    """The plan of positions as it fits the sheet: in full; else with its angles in brief; else
+    (when its scale is not the file's own) at the next smaller standard scales."""
+    from .sheet import _fits_empty
+
+    panel = positions_panel(sol, mu, lang, bold, strokes, spec.trace)
+    if _fits_empty(panel, spec.format, spec.orientation):
+        return panel
+    panel = positions_panel(sol, mu, lang, bold, strokes, spec.trace, brief=True)
+    if sol.scene.scales.get("length"):
+        return panel  # the student's scale is kept: a panel that does not fit says so
+    from .panels import STANDARD_RATIOS
+
+    for r in STANDARD_RATIOS:
+        if _fits_empty(panel, spec.format, spec.orientation):
+            break
+        if 1000.0 * r < mu:
+            panel = positions_panel(sol, 1000.0 * r, lang, bold, strokes, spec.trace, brief=True)
+    return panel
+
+
 def build_panels(sol: Solution, spec: SheetSpec) -> tuple[list[Panel], float]:
     """Every panel the scene asks for, in the order they go on the sheet."""
     metrics()  # fail early, with the font's name, if it is missing
@@ -82,7 +104,7 @@ def build_panels(sol: Solution, spec: SheetSpec) -> tuple[list[Panel], float]:
     schemes = set(ks if spec.positions is not None or not overlay else ks[:2])
     if overlay:  # the plan of positions at the largest standard scale that fits 2/5 of the sheet
         mu_pos = scene.scales.get("length") or auto_length_scale(size, 0.4 * (w - 37.0))
-        panels.append(positions_panel(sol, mu_pos, lang, sorted(schemes), strokes, spec.trace))
+        panels.append(_fitting_positions(sol, mu_pos, lang, sorted(schemes), strokes, spec))
     for k in ks:
         if scene.wants("positions") and _wants(spec, "scheme") and k in schemes:
             panels.append(scheme_panel(scene, kin, k, mu_l, lang, strokes))

@@ -11,19 +11,20 @@ before anything is written.  Files the manifest does not list are never removed.
 from __future__ import annotations
 
 import json
-import os
 from collections.abc import Iterable
 from pathlib import Path
 
 from plans.errors import OutputError
-from plans.io import write_all
+from plans.io import remove as remove_files
+from plans.io import staged_bytes, write_all
 
 NAME = ".plans-manifest.json"
 
 
 def _load(folder: Path) -> dict[str, list[str]]:
     try:
-        data = json.loads((folder / NAME).read_text(encoding="utf-8"))
+        raw = staged_bytes(folder / NAME)  # this command's own manifest, written a sheet ago
+        data = json.loads(raw if raw is not None else (folder / NAME).read_bytes())
     except (OSError, ValueError):
         return {}
     if not isinstance(data, dict) or not isinstance(data.get("sources"), dict):
@@ -80,9 +81,5 @@ def forget(folder: Path, source: str | Path) -> None:
 
 
 def remove(paths: Iterable[Path]) -> None:
-    """Remove old sheets (already gone is fine)."""
-    for p in paths:
-        try:
-            os.unlink(p)
-        except OSError:
-            pass
+    """Remove old sheets (already gone is fine; when the command has succeeded)."""
+    remove_files(paths)

@@ -179,7 +179,7 @@ def _trajectories(sol, names: Sequence[str]) -> dict[str, list[complex]]:
 
 
 def positions_panel(sol, mu_l: float, lang: str, bold: Sequence[int], strokes: dict[str, tuple[float, float]],
-                    trace: Sequence[str] | None = None) -> Panel:
+                    trace: Sequence[str] | None = None, brief: bool = False) -> Panel:
     """The plan of positions: the mechanism at the positions in ``bold`` (thick), the crank
     alone at the others (thin); positions numbered 0, 1, … at the crank pin and the other
     moving pins on their trajectories; the trajectory of the ``trace`` points (default: the
@@ -320,6 +320,8 @@ def positions_panel(sol, mu_l: float, lang: str, bold: Sequence[int], strokes: d
     steps = {round(b - a, 9) for a, b in zip(phis[:-1], phis[1:], strict=False)}
     if len(steps) == 1 and n > 2:
         when = f"φ_0 = {angle(phis[0], lang)}°, Δφ = {angle(steps.pop(), lang)}°"
+    elif brief and n > 2:  # a small sheet: the first and the last angle (every one is in the tables)
+        when = f"φ_0 = {angle(phis[0], lang)}°, …, φ_{n - 1} = {angle(phis[-1], lang)}°"
     else:
         when = ", ".join(f"φ_{i} = {angle(p, lang)}°" for i, p in enumerate(phis))
     bold_txt = ", ".join(str(k) for k in sorted(bold_set))

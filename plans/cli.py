@@ -161,9 +161,14 @@ def _solve(args: argparse.Namespace) -> int:
 
 def run(args: argparse.Namespace) -> int:
     """Run a parsed command; user errors become one line on stderr and status 2; Ctrl-C
-    stops quietly with 130; a closed pipe (``plans solve ... | head``) ends with 0."""
+    stops quietly with 130; a closed pipe (``plans solve ... | head``) ends with 0.  Every
+    command runs inside one guard of its inputs and outputs (:mod:`plans.guard`): its files
+    are renamed into place only when it has returned, none over an input."""
+    from plans.guard import Run
+
     try:
-        return int(args.func(args))
+        with Run():
+            return int(args.func(args))
     except PlansError as exc:
         if exc.source is None and not isinstance(exc, InputError):
             exc.source = getattr(args, "scene", None) or getattr(args, "path", None)

@@ -71,3 +71,7 @@ class NotAssemblable(ConstructionError):
 
 class Locked(ConstructionError):
     """The group is at a locking position: its velocity equations are singular."""
+
+
+class Indeterminate(Locked):
+    """The group's construction lines coincide (a change point): its plan has no single answer."""

@@ -1,11 +1,13 @@
-"""Writing files the safe way: to a temporary file beside the target, then rename,
-so a failure never leaves a half-written output."""
+"""Reading and writing files the safe way: every file read is an input of the command in
+progress, every file written goes to a temporary file beside its target and is renamed
+only when the whole command has succeeded and no target is an input (:mod:`plans.guard`),
+so a failure never leaves a half-written output and no input is ever overwritten."""
 
 from __future__ import annotations
 
 import os
 import tomllib
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterable, Iterator, Mapping
 from contextlib import contextmanager
 from typing import TYPE_CHECKING, Any, BinaryIO
 
@@ -26,83 +28,121 @@ def atomic_write(path: str | Path, data: bytes | str) -> None:
 @contextmanager
 def atomic_file(path: str | Path) -> Iterator[BinaryIO]:
     """A binary file to write in pieces, renamed over ``path`` only when the block ends
-    without an error; otherwise nothing is left behind (an OSError is one OutputError line)."""
-    from pathlib import Path
+    without an error (inside a command: when the whole command has succeeded, see
+    :mod:`plans.guard`); otherwise nothing is left behind (an OSError is one OutputError line)."""
+    from plans import guard
 
-    target = Path(path)
-    folder = target.parent
-    try:
-        import tempfile  # loaded when a file is written: reading a scene does not pay for it
-
-        fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=folder)
-    except OSError as exc:
-        raise OutputError(f"cannot write to {folder}: {exc.strerror}") from None
+    run = guard.current()
+    target = os.fspath(path)
+    if run is not None:
+        run.refuse_input(target)
+    tmp, fd = _temporary(target)
     try:
         with os.fdopen(fd, "wb") as fh:
             yield fh
         os.chmod(tmp, 0o644)
-        os.replace(tmp, target)
+        if run is not None:
+            run.stage(tmp, target)
+        else:
+            os.replace(tmp, target)
     except BaseException as exc:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
+        if run is None or tmp not in (t for t, _ in run.staged.values()):
+            _unlink(tmp)
         if isinstance(exc, OSError):
             raise OutputError(f"cannot write {target}: {exc.strerror}") from None
         raise
 
 
+def _temporary(target: str) -> tuple[str, int]:
+    """A new temporary file beside ``target`` (its path and descriptor)."""
+    folder = os.path.dirname(target) or "."
+    if os.path.isdir(target):
+        raise OutputError(f"{target}: is a folder; expected a path for a file")
+    try:
+        import tempfile  # loaded when a file is written: reading a scene does not pay for it
+
+        fd, tmp = tempfile.mkstemp(prefix=f".{os.path.basename(target)}.", suffix=".tmp", dir=folder)
+    except OSError as exc:
+        raise OutputError(f"cannot write to {folder}: {exc.strerror}") from None
+    return tmp, fd
+
+
+def _unlink(path: str) -> None:
+    try:
+        os.unlink(path)
+    except OSError:
+        pass
+
+
 def write_all(files: Mapping[Path, bytes | str]) -> list[Path]:
-    """Write several files as one: every temporary first, then the renames, so an error
-    (or Ctrl-C) before the renames leaves none of them and none of the old ones changed."""
-    staged: list[tuple[str, Path]] = []
+    """Write several files as one: every temporary first, then (every target checked: not an
+    input, not a folder) the renames, so an error (or Ctrl-C) before the renames leaves none
+    of them and none of the old ones changed.  Inside a command the renames wait for the
+    end of the whole command (:mod:`plans.guard`)."""
+    from plans import guard
+
+    run = guard.current()
+    own = run is None
+    if own:
+        run = guard.Run()
+    assert run is not None
     try:
         for target, data in files.items():
             raw = data.encode("utf-8") if isinstance(data, str) else data
-            try:
-                import tempfile
-
-                fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
-            except OSError as exc:
-                raise OutputError(f"cannot write to {target.parent}: {exc.strerror}") from None
-            staged.append((tmp, target))
+            t = os.fspath(target)
+            run.refuse_input(t)
+            tmp, fd = _temporary(t)
             try:
                 with os.fdopen(fd, "wb") as fh:
                     fh.write(raw)
                 os.chmod(tmp, 0o644)
-            except OSError as exc:
-                raise OutputError(f"cannot write {target}: {exc.strerror}") from None
-        for tmp, target in staged:
-            try:
-                os.replace(tmp, target)
-            except OSError as exc:
-                raise OutputError(f"cannot write {target}: {exc.strerror}") from None
+            except BaseException as exc:
+                _unlink(tmp)
+                if isinstance(exc, OSError):
+                    raise OutputError(f"cannot write {t}: {exc.strerror}") from None
+                raise
+            run.stage(tmp, t)
+        if own:
+            run.commit()
     finally:
-        for tmp, _ in staged:
-            try:
-                os.unlink(tmp)
-            except OSError:
-                pass
-    return [target for _, target in staged]
+        if own:
+            run.discard()
+    return [target for target in files]
+
+
+def remove(paths: Iterable[str | Path]) -> None:
+    """Remove old outputs (already gone is fine; an input is never removed); inside a
+    command only when the whole command has succeeded."""
+    from plans import guard
+
+    run = guard.current()
+    if run is not None:
+        run.remove(paths)
+        return
+    for p in paths:
+        _unlink(os.fspath(p))
+
+
+def staged_bytes(path: str | Path) -> bytes | None:
+    """What the command in progress has written for ``path`` so far (None: nothing)."""
+    from plans import guard
+
+    run = guard.current()
+    return None if run is None else run.staged_bytes(path)
 
 
 def refuse_input(output: str | Path | None, *inputs: str | Path | None) -> None:
-    """An output path that names one of the inputs is refused before anything is written."""
+    """An output path that names one of the inputs (by any spelling: links, relative or
+    absolute, a hard link) is refused before anything is written."""
     if output is None or str(output) == "-":
         return
-    from pathlib import Path
+    from plans import guard
 
-    out = Path(output)
+    check = guard.Run()
     for src in inputs:
-        if src is None:
-            continue
-        try:
-            same = out.exists() and Path(src).exists() and out.samefile(src)
-        except OSError:
-            same = False
-        if same or out.resolve() == Path(src).resolve():
-            raise OutputError(f"{output}: is the input file {src}; refusing to overwrite it "
-                              f"(expected another path for the output)")
+        if src is not None:
+            check.read(src)
+    check.refuse_input(output)
 
 
 def dumps(data: Any) -> str:
@@ -114,11 +154,18 @@ def dumps(data: Any) -> str:
 
 def read_toml(path: str | Path) -> dict[str, Any]:
     """A TOML file as a dict; an unreadable or malformed file is one InputError line."""
+    from plans import guard
+
     try:
         with open(path, "rb") as fh:
             raw = fh.read()
     except OSError as exc:
-        raise InputError(f"cannot read file ({exc.strerror})", file=str(path)) from None
+        raise InputError(f"cannot read file ({exc.strerror or exc})", file=str(path)) from None
+    except ValueError as exc:  # a path holding a NUL
+        raise InputError(f"cannot read file ({exc})", file=str(path)) from None
+    run = guard.current()
+    if run is not None:
+        run.read(path)
     try:
         text = raw.decode("utf-8")
     except UnicodeDecodeError as exc:
@@ -126,6 +173,25 @@ def read_toml(path: str | Path) -> dict[str, Any]:
         raise InputError(f"not UTF-8 text (byte 0x{raw[exc.start]:02x}); expected a TOML file saved as UTF-8",
                          file=str(path), line=line) from None
     return loads_toml(text, str(path))
+
+
+#: The deepest nesting of tables and arrays a file of the family may have (the deepest
+#: sample has 5): every reader walks a file recursively.
+MAX_DEPTH = 32
+
+
+def _check_depth(data: Any, path: str) -> None:
+    """Refuse tables and arrays nested deeper than MAX_DEPTH (walked without recursion)."""
+    stack = [(data, 0, "")]
+    while stack:
+        node, depth, where = stack.pop()
+        if depth > MAX_DEPTH:
+            raise InputError(f"tables or arrays nested more than {MAX_DEPTH} deep; expected a file of the family",
+                             file=path, field=where[:80] + ("..." if len(where) > 80 else ""))
+        if isinstance(node, dict):
+            stack.extend((v, depth + 1, f"{where}.{k}" if where else str(k)) for k, v in node.items())
+        elif isinstance(node, list):
+            stack.extend((v, depth + 1, f"{where}[{i}]") for i, v in enumerate(node))
 
 
 def loads_toml(text: str, path: str) -> dict[str, Any]:
@@ -139,5 +205,6 @@ def loads_toml(text: str, path: str) -> dict[str, Any]:
         raise InputError(f"malformed TOML: {exc}", file=path) from None
     except RecursionError:
         raise InputError("malformed TOML: nested too deeply", file=path) from None
+    _check_depth(data, path)
     check_text(data, file=path)
     return data

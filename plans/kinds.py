@@ -12,6 +12,7 @@ from typing import Any
 
 from plans.errors import InputError
 from plans.io import read_toml
+from plans.reader import check_keys, did_you_mean, show
 
 #: kind -> (the pure command that solves it, the module of drawings that draws it)
 KINDS: dict[str, tuple[str, str]] = {
@@ -20,6 +21,16 @@ KINDS: dict[str, tuple[str, str]] = {
     "gears": ("gears", "drawings.gears"),
     "cam": ("cam", "drawings.cams"),
     "synthesis": ("design", "drawings.synthesis"),
+}
+
+#: kind -> the reader of its table ("module:function(data, path)"), which keeps the promise
+#: (every problem one InputError naming file and field); the fuzzer drives each one.
+READERS: dict[str, str] = {
+    "linkage": "plans.scene.model:scene_from_dict",
+    "engine": "plans.balancing.engine:engine_from_dict",
+    "gears": "plans.gears.model:parse_gears",
+    "cam": "plans.cams.model:cam_from_dict",
+    "synthesis": "plans.synthesis.model:task_from_dict",
 }
 
 
@@ -40,6 +51,58 @@ def read_kind(path: str | Path) -> tuple[str, dict[str, Any]]:
 
 def command_for(kind: str) -> str:
     """A hint naming the command for a file of this kind ("" when unknown)."""
+    if kind == "check":
+        return "use 'plans check' for it; "
     if isinstance(kind, str) and kind in KINDS:
         return f"use 'plans {KINDS[kind][0]}' for it; "
     return ""
+
+
+#: How each kind is named in a message.
+_NAMES = {"linkage": "a linkage scene", "engine": "an engine file", "gears": "a gears file", "cam": "a cam file",
+          "check": "a check file"}
+
+
+def _name(kind: str) -> str:
+    """A kind as a message names it (a kind added later: "a synthesis file")."""
+    return _NAMES.get(kind, f"a {kind} file")
+
+
+def guess_kind(data: dict[str, Any]) -> str:
+    """What a file is, for a message: its ``kind``, or a check file (a ``scene`` to check
+    against), or a linkage scene."""
+    kind = data.get("kind")
+    if isinstance(kind, str) and kind in KINDS:
+        return kind
+    if kind is None and isinstance(data.get("scene"), str):
+        return "check"
+    return "linkage"
+
+
+def check_top(data: dict[str, Any], path: str, kind: str, known: Any) -> None:
+    """The top level of a file of ``kind`` (``"check"`` for a check file, which has no
+    ``kind``): ``format = 1`` exactly, the right kind (a file of another kind is named as
+    such, with its command), and no unknown key ("did you mean ...")."""
+    fmt = data.get("format")
+    kval = data.get("kind")
+    if kind == "check":
+        right = "kind" not in data and ("scene" in data or not {"links", "joints", "driver"} & set(data))
+    elif kind == "linkage":
+        right = kval == "linkage" or ("kind" not in data and guess_kind(data) == "linkage")
+    else:
+        right = kval == kind
+    if not right:
+        if "kind" in data and not (isinstance(kval, str) and kval in KINDS):
+            hint = did_you_mean(kval, KINDS) if isinstance(kval, str) else ""
+            want = "no kind" if kind == "check" else f"kind = {kind!r}"
+            raise InputError(f"expected one of {', '.join(repr(k) for k in KINDS)} (here {want}), "
+                             f"got {show(kval)}{hint}", file=path, field="kind")
+        other = guess_kind(data)
+        raise InputError(f"this is {_name(other)}, not {_name(kind)}; {command_for(other)}expected "
+                         + ("a check file (scene = ..., no kind)" if kind == "check" else
+                            "kind = \"linkage\" or no kind" if kind == "linkage" else f"kind = {kind!r}"),
+                         file=path, field="kind")
+    if isinstance(fmt, bool) or not isinstance(fmt, int) or fmt != 1:
+        raise InputError(f"expected format = 1, got {'nothing' if fmt is None else show(fmt)}", file=path,
+                         field="format")
+    check_keys(data, known, file=path, where="")

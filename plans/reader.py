@@ -131,9 +131,9 @@ class Reader:
 
     def value(self, value: Any, field: str, *, positive: bool = False, nonneg: bool = False,
               limit: float = NUMBER_LIMIT, floor: float | None = None) -> float:
-        """A plain number: finite, |x| <= limit, and 0 or |x| >= floor (by default a floor
-        only for positive quantities, which become scales)."""
-        floor = (NUMBER_FLOOR if positive else 0.0) if floor is None else floor
+        """A plain number: finite, |x| <= limit, and 0 or |x| >= floor (1e-12 by default:
+        below it squares vanish, and positive quantities become infinite scales)."""
+        floor = NUMBER_FLOOR if floor is None else floor
         if isinstance(value, bool) or not isinstance(value, int | float):
             raise self.fail(field, f"expected a number, got {show(value)}")
         if isinstance(value, float) and not math.isfinite(value):
@@ -141,11 +141,12 @@ class Reader:
         if abs(value) > limit:
             raise self.fail(field, f"expected a number of magnitude at most {limit:g}, got {show(value)}")
         if positive and value <= 0:
-            raise self.fail(field, f"expected a positive number, got {value!r}")
+            raise self.fail(field, f"expected a positive number, got {show(value)}")
         if nonneg and value < 0:
-            raise self.fail(field, f"expected a number >= 0, got {value!r}")
+            raise self.fail(field, f"expected a number >= 0, got {show(value)}")
         if value != 0 and abs(value) < floor:
-            raise self.fail(field, f"expected 0 or a magnitude of at least {floor:g}, got {value!r}")
+            raise self.fail(field, f"expected a number from {floor:g} to {limit:g}, got {show(value)}" if positive
+                            else f"expected 0 or a magnitude of at least {floor:g}, got {show(value)}")
         return float(value)
 
     def number(self, data: dict[str, Any], key: str, where: str, *, default: float | None = None,
@@ -237,14 +238,17 @@ class Reader:
             raise self.fail(field, f"expected a length of at most {LENGTH_LIMIT:g} m, got {show(value)}")
         if positive and out <= 0:
             raise self.fail(field, f"expected a positive length, got {show(value)}")
-        if positive and abs(out) < LENGTH_FLOOR:
-            raise self.fail(field, f"expected 0 or a length of at least 1 µm, got {show(value)}")
+        if positive and abs(out) < LENGTH_FLOOR:  # a size; a coordinate or offset of dust is kept
+            raise self.fail(field, f"expected a length of at least 1 µm, got {show(value)}")
         return out
 
 
 def show(value: Any) -> str:
-    """A value for a message, shortened (a 400-digit integer is not repeated in full)."""
+    """A value for a message, shortened (a 400-digit integer is not repeated in full, a
+    float is shown with at most 6 significant digits)."""
     if isinstance(value, int) and not isinstance(value, bool) and abs(value) > 10**15:
         return f"an integer of {len(str(abs(value)))} digits"
+    if isinstance(value, float):
+        return f"{value:.6g}"
     text = repr(value)
     return text if len(text) <= 60 else text[:57] + "..."

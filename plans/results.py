@@ -45,11 +45,12 @@ def _xy(z: complex) -> list[float]:
     return [float(z.real), float(z.imag)]
 
 
-def to_json(sol: Solution) -> dict[str, Any]:
+def to_json(sol: Solution, steps: bool = True) -> dict[str, Any]:
     """The whole result as one dict (``plans solve --json``); :func:`write_json` writes the
-    same text position by position."""
+    same text position by position.  ``steps=False`` leaves out the construction protocol's
+    text (most of the time taken), for a page that draws the plans and reads no protocol."""
     out = _head(sol)
-    out["positions"] = list(_positions(sol))
+    out["positions"] = list(_positions(sol, steps))
     return out
 
 
@@ -82,17 +83,17 @@ def _head(sol: Solution) -> dict[str, Any]:
     return out
 
 
-def _positions(sol: Solution) -> Iterator[dict[str, Any]]:
+def _positions(sol: Solution, steps: bool = True) -> Iterator[dict[str, Any]]:
     forces: list[dict] | None = None
     if sol.forces is not None:
         from plans.forces.lever import force_json
 
         forces = force_json(sol.forces[1])
     for k in range(sol.kinematics.n):
-        yield _position(sol, k, None if forces is None else forces[k])
+        yield _position(sol, k, None if forces is None else forces[k], steps)
 
 
-def _position(sol: Solution, k: int, forces: dict | None) -> dict[str, Any]:
+def _position(sol: Solution, k: int, forces: dict | None, steps: bool = True) -> dict[str, Any]:
     kin, scene = sol.kinematics, sol.scene
     pos: dict[str, Any] = {"phi_deg": float(kin.phi_deg[k]), "points": {}, "links": {}}
     for nm in kin.point_names():
@@ -127,12 +128,12 @@ def _position(sol: Solution, k: int, forces: dict | None) -> dict[str, Any]:
         pos.update(centres_json(kin, k, sol.plans[k].readings if sol.plans else ()))
     if forces is not None:
         pos.update(forces)
-    if sol.plans or sol.forces is not None:
+    if steps and (sol.plans or sol.forces is not None):
         from plans.forces.protocol import force_steps, steps_json
 
         plans = (sol.plans[k].velocity, sol.plans[k].acceleration) if sol.plans else ()
-        steps = force_steps(sol.forces[0], sol.forces[1], k) if sol.forces is not None else ()
-        pos["steps"] = steps_json(plans, steps)
+        drawn = force_steps(sol.forces[0], sol.forces[1], k) if sol.forces is not None else ()
+        pos["steps"] = steps_json(plans, drawn)
     return pos
 
 

@@ -169,6 +169,15 @@ class Solution:
 
         return self._part("dynamics", lambda: dynamics(self.scene))
 
+    def dynamics_drawn(self, axis_mm: float, height: float) -> Dynamics:
+        """The dynamics with its graphical part (Wittenbauer's diagram, the flywheel read off
+        it) drawn at a shorter φ axis and lower diagrams, for a sheet too small for the
+        default; made once per size."""
+        from plans.cycle.dynamics import dynamics
+
+        return self._part(("dynamics", axis_mm, height),
+                          lambda: dynamics(self.scene, axis_mm=axis_mm, height=height))
+
     @property
     def diagrams(self) -> Diagrams | None:
         """Kinematic diagrams by graphical differentiation (None unless asked for): the

@@ -374,7 +374,9 @@ def test_gas_force_at_a_dead_centre_solved_alone_is_the_one_of_the_whole_turn():
 
 
 def test_a_ram_of_subnormal_mass_keeps_the_promise(tmp_path):
-    # Its inertia force is a subnormal number of newtons: the offset force divides by it.
+    # A subnormal mass is refused by the number rule (0 or at least 1e-12); at the smallest
+    # mass accepted its inertia force is dust of newtons: the offset force divides by it.
+    from plans.errors import InputError
     from plans.results import solve_scene, table
     from plans.scene.model import load_scene
 
@@ -382,6 +384,9 @@ def test_a_ram_of_subnormal_mass_keeps_the_promise(tmp_path):
     assert text.count("mass = 20.0") == 1
     path = tmp_path / "six_bar.toml"
     path.write_text(text.replace("mass = 20.0", "mass = 5e-324"), encoding="utf-8")
+    with pytest.raises(InputError, match="links.5.mass"):
+        load_scene(path)
+    path.write_text(text.replace("mass = 20.0", "mass = 1e-12"), encoding="utf-8")
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         sol = solve_scene(load_scene(path))

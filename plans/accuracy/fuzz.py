@@ -216,7 +216,9 @@ def mutate(data: dict[str, Any], rng: random.Random, n: int | None = None) -> di
 def mutate_bytes(text: str, rng: random.Random) -> bytes:
     """Damage at the byte level: not UTF-8, truncated, a stray character."""
     raw = text.encode("utf-8")
-    how = rng.randrange(4)
+    how = rng.randrange(5)
+    if how == 4:  # tables nested deeper than any reader walks
+        return raw + b"\n[" + b".".join([b"a"] * rng.choice((33, 200, 20000))) + b"]\n"
     i = rng.randrange(len(raw) + 1)
     if how == 0:
         return raw[:i] + rng.choice((b"\xff", b"\xc3", b"\xed\xa0\x80", b"\x00")) + raw[i:]
@@ -239,6 +241,7 @@ class Sample:
     argv: Callable[[str, str | None], list[str]]  # (input file, JSON output or None) -> the command line
     rel: str
     json: bool = True  # the command takes --json PATH
+    kind: str = "linkage"  # the file's kind ("check" for a check file)
 
 
 def _kind_argv(kind: str, is_check: bool) -> Callable[[str, str | None], list[str]]:
@@ -283,7 +286,7 @@ def load_samples(root: Path = SAMPLES) -> list[Sample]:
             continue
         is_check = "checks" in p.relative_to(root).parts or ("student" in data and "positions" in data)
         sample = Sample(p, _few_positions(_absolute_paths(data, p.parent)), _kind_argv(kind, is_check),
-                        str(p.relative_to(root)))
+                        str(p.relative_to(root)), kind="check" if is_check else kind)
         for with_json in (True, False):  # a command of another kind may have no --json
             sample.json = with_json
             with tempfile.TemporaryDirectory() as tmp:
@@ -317,7 +320,8 @@ def _finite_json(text: str) -> bool:
 
 
 def _snapshot(folder: Path) -> dict[str, bytes]:
-    return {str(p.relative_to(folder)): p.read_bytes() for p in sorted(folder.rglob("*")) if p.is_file()}
+    return {str(p.relative_to(folder)): p.read_bytes() for p in sorted(folder.rglob("*"))
+            if p.is_file() and not p.is_symlink()}
 
 
 _PARSERS: dict[str, argparse.ArgumentParser] = {}
@@ -339,17 +343,52 @@ def _main() -> Callable[[list[str]], int]:
     return main
 
 
-def run_case(sample: Sample, raw: bytes, tmp: Path, draw: bool = False, json_out: bool = True) -> Result:
-    """Run the sample's command on ``raw`` in-process; whether the promise was kept (with
-    ``draw``, and the renderer loaded, its SVG sheets are drawn and checked too)."""
+#: The spellings of the input file a hostile ``--json`` may give (none may overwrite it).
+SPELLINGS = ("same", "dot", "absolute", "symlink", "hardlink", "folder-link")
+#: Every command that reads a file of the family, to run one kind's file through another's.
+COMMANDS = ("solve", "check", "balance", "gears", "cam")
+
+
+def _spelling(src: Path, how: str) -> str:
+    """``src`` spelt another way: ./x, x/../x, a symbolic or hard link, a linked folder."""
+    folder = src.parent
+    if how == "dot":
+        return f"{folder}/./out/../{src.name}"
+    if how == "absolute":
+        return str(src.resolve())
+    if how == "symlink":
+        link = folder / "link.json"
+        link.symlink_to(src.name)
+        return str(link)
+    if how == "hardlink":
+        link = folder / "hard.json"
+        os.link(src, link)
+        return str(link)
+    if how == "folder-link":
+        link = folder / "here"
+        link.symlink_to(".", target_is_directory=True)
+        return str(link / src.name)
+    return str(src)
+
+
+def run_case(sample: Sample, raw: bytes, tmp: Path, draw: bool = False, json_out: bool = True,
+             command: str | None = None, over_input: str | None = None) -> Result:
+    """Run the sample's command (or ``command``) on ``raw`` in-process; whether the promise was
+    kept (with ``draw``, and the renderer loaded, its SVG sheets are drawn and checked too;
+    with ``over_input``, ``--json`` names the input file spelt that way: it must be refused)."""
     main = _main()
 
     src = tmp / sample.path.name
     src.write_bytes(raw)
     out_json = tmp / "out" / "result.json"
     out_json.parent.mkdir(exist_ok=True)
+    target = str(out_json) if json_out and sample.json else None
+    if over_input is not None:
+        target = _spelling(src, over_input)
     before = _snapshot(tmp)
-    argv = sample.argv(str(src), str(out_json) if json_out and sample.json else None)
+    argv = sample.argv(str(src), target)
+    if command is not None:
+        argv = [command, str(src), *(["--json", target] if target else [])]
     stdout, stderr = io.StringIO(), io.StringIO()
     with warnings.catch_warnings(record=True) as caught, contextlib.redirect_stdout(stdout), \
             contextlib.redirect_stderr(stderr):
@@ -375,6 +414,8 @@ def run_case(sample: Sample, raw: bytes, tmp: Path, draw: bool = False, json_out
         return Result(True, 2)
     if status != 0:
         return Result(False, status, f"status {status}: {err[:300]!r}")
+    if over_input is not None:
+        return Result(False, status, f"--json spelt as the input ({over_input}) was accepted")
     if err.strip():
         return Result(False, status, f"accepted, but printed on stderr: {err[:300]!r}")
     if src.read_bytes() != raw:
@@ -426,6 +467,74 @@ def _draw(src: Path, tmp: Path, main: Callable[[list[str]], int]) -> Result:
     return Result(True, 0)
 
 
+def _read(kind: str, data: dict[str, Any], path: str) -> None:
+    """The reader of a file of ``kind`` (what its command reads before it solves)."""
+    if kind == "linkage":
+        from plans.scene.model import scene_from_dict
+
+        scene = scene_from_dict(data, path)
+        if "loads" in data:
+            from plans.forces.loads import parse_loads
+
+            parse_loads(scene)
+        if "dynamics" in data:
+            from plans.cycle.spec import dynamics_spec
+
+            dynamics_spec(scene)
+        if "diagrams" in data:
+            from plans.cycle.spec import diagrams_spec
+
+            diagrams_spec(scene)
+    elif kind != "check":  # every other kind by the reader it registers (plans.kinds.READERS)
+        import importlib
+
+        from plans.kinds import READERS
+
+        module, name = READERS[kind].split(":")
+        getattr(importlib.import_module(module), name)(data, path)
+    elif isinstance(data.get("cycle"), dict) and "positions" not in data:
+        from plans.cycle.check import check_cycle
+
+        check_cycle(path)
+    else:
+        from plans.check.checkfile import check_from_dict
+
+        check_from_dict(data, path)
+
+
+def read_case(sample: Sample, raw: bytes, tmp: Path) -> Result:
+    """The fast half of a case: only the reader of the file's kind.  It keeps the promise when
+    it accepts the file or refuses it with one InputError naming the file, and prints no
+    warning; anything else is a failure."""
+    from plans.errors import InputError, PlansError, one_line
+    from plans.io import loads_toml
+
+    src = tmp / sample.path.name
+    src.write_bytes(raw)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            try:
+                text = raw.decode("utf-8")
+            except UnicodeDecodeError:
+                return Result(True, 2)
+            _read(sample.kind, loads_toml(text, str(src)), str(src))
+        except InputError as exc:
+            line = one_line(exc)
+            if "\n" in line or not line.startswith(str(src)):
+                return Result(False, 2, f"refusal does not name the file in one line: {line[:200]!r}")
+            return Result(True, 2)
+        except PlansError:  # a construction error found while reading (strokes of loads)
+            return Result(True, 2)
+        except Exception as exc:  # noqa: BLE001 - this is what the fuzzer looks for
+            tb = traceback.extract_tb(exc.__traceback__)[-1]
+            return Result(False, None, f"{type(exc).__name__}: {exc} (at {Path(tb.filename).name}:{tb.lineno})")
+    if caught:
+        w = caught[0]
+        return Result(False, 0, f"warning printed: {w.category.__name__}: {w.message}")
+    return Result(True, 0)
+
+
 def case_bytes(sample: Sample, rng: random.Random) -> bytes:
     """One fuzzed file: mostly a mutated table, sometimes damaged bytes."""
     if rng.random() < 0.08:
@@ -444,6 +553,7 @@ class Summary:
     failures: dict[str, str] = field(default_factory=dict)  # distinct reason -> first case file
     nonfinite: int = 0
     foreign: int = 0
+    kinds: dict[str, int] = field(default_factory=dict)  # cases per file kind
 
 
 def fuzz(n: int, seed: int = 0, draw_every: int = 50, keep: Path | None = None,
@@ -464,8 +574,12 @@ def fuzz(n: int, seed: int = 0, draw_every: int = 50, keep: Path | None = None,
             tmp = Path(base) / f"case{i % 4}"
             shutil.rmtree(tmp, ignore_errors=True)
             tmp.mkdir()
-            res = run_case(sample, raw, tmp, draw=draw_every > 0 and i % draw_every == 0, json_out=i % 8 == 0)
+            over = SPELLINGS[(i // 16) % len(SPELLINGS)] if i % 16 == 5 else None
+            other = rng.choice(COMMANDS) if i % 16 == 9 else None
+            res = run_case(sample, raw, tmp, draw=draw_every > 0 and i % draw_every == 0, json_out=i % 8 == 0,
+                           command=other, over_input=over)
             summary.cases += 1
+            summary.kinds[sample.kind] = summary.kinds.get(sample.kind, 0) + 1
             if res.ok:
                 summary.accepted += res.status == 0
                 summary.refused += res.status == 2
@@ -493,6 +607,8 @@ def report(summary: Summary, seed: int) -> str:
              f"in one line, {summary.cases - summary.accepted - summary.refused} broke the promise "
              f"({summary.foreign} foreign exceptions, {summary.nonfinite} non-finite outputs, "
              f"{len(summary.failures)} distinct)"]
+    if summary.kinds:
+        lines.append("  by kind: " + ", ".join(f"{k} {n}" for k, n in sorted(summary.kinds.items())))
     lines += [f"  {name}: {reason}" for reason, name in summary.failures.items()]
     return "\n".join(lines)
 

@@ -437,6 +437,17 @@ def measure(samples: Path, log: Callable[[str], None] | None = None, with_peers:
     goals += examiner_goals(samples, quick)
     log("goals: explanatory note ...")
     goals += note_goals(samples, 1 if quick else 3)
+    log("goals: a group's course ...")
+    from plans.accuracy.group_bench import group_goals
+
+    log("goals: the workbench ...")
+    from plans.accuracy.workbench_bench import workbench_goals
+
+    if quick:  # a minute of a whole group and a browser: the full bench measures them
+        goals += [Goal("a group's course", "skipped: measured by the full bench", math.nan, None),
+                  Goal("workbench", "skipped: measured by the full bench", math.nan, None)]
+    else:
+        goals += group_goals(samples) + workbench_goals(samples)
     return {"goals": [asdict(g) for g in goals],
             "peers": [{k: v for k, v in asdict(r).items() if k != "runner"} for r in runs]}
 

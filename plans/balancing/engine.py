@@ -38,7 +38,7 @@ from pathlib import Path
 from typing import Any
 
 from plans.io import loads_toml, read_toml
-from plans.reader import NUMBER_LIMIT, Reader, check_keys
+from plans.reader import LENGTH_LIMIT, NUMBER_LIMIT, Reader, check_keys, reduce_deg, show
 from plans.units import LENGTH_UNITS, rpm_to_rad_s
 
 TOP_KEYS = {"format", "kind", "title", "unit", "r", "lambda", "omega", "omega_rpm", "strokes",
@@ -141,15 +141,9 @@ def parse_engine(text: str, path: str = "<engine>") -> Engine:
 def engine_from_dict(data: dict[str, Any], path: str = "<engine>") -> Engine:
     """Validate an engine table; every problem is one InputError naming the key."""
     rd = _Reader(path)
-    if data.get("format") != 1:
-        raise rd.fail("format", "expected format = 1")
-    if data.get("kind") != "engine":
-        from plans.kinds import command_for
+    from plans.kinds import check_top
 
-        kind = data.get("kind", "linkage")
-        hint = command_for(kind) if isinstance(kind, str) else ""
-        raise rd.fail("kind", f"this is a {kind!r} file, not an engine; {hint}expected kind = \"engine\"")
-    check_keys(data, TOP_KEYS, file=path, where="")
+    check_top(data, path, "engine", TOP_KEYS)
     unit = rd.choice(data, "unit", "", LENGTH_UNITS, default="mm")
     title = data.get("title", Path(path).stem)
     if not isinstance(title, str):
@@ -159,7 +153,10 @@ def engine_from_dict(data: dict[str, Any], path: str = "<engine>") -> Engine:
     r = rd.length(data["r"], "r", unit, positive=True)
     lam = rd.number(data, "lambda")
     if not 0.0 <= lam < 1.0:
-        raise rd.fail("lambda", f"expected 0 <= lambda = r/l < 1 (the rod longer than the crank), got {lam!r}")
+        raise rd.fail("lambda", f"expected 0 <= lambda = r/l < 1 (the rod longer than the crank), got {show(lam)}")
+    if lam > 0 and r / lam > LENGTH_LIMIT:  # the rod l = r/λ is a length like any other
+        raise rd.fail("lambda", f"the rod l = r/lambda = {r / lam:.3g} m is longer than {LENGTH_LIMIT:g} m; expected "
+                                f"lambda = 0 (no rod) or at least {r / LENGTH_LIMIT:.3g}")
     if "omega" in data and "omega_rpm" in data:
         raise rd.fail("omega_rpm", "give omega (rad/s) or omega_rpm, not both")
     if "omega_rpm" in data:
@@ -168,7 +165,7 @@ def engine_from_dict(data: dict[str, Any], path: str = "<engine>") -> Engine:
         omega = rd.number(data, "omega", positive=True)
     strokes = data.get("strokes", 4)
     if strokes not in (2, 4) or isinstance(strokes, bool):
-        raise rd.fail("strokes", f"expected 2 or 4, got {strokes!r}")
+        raise rd.fail("strokes", f"expected 2 or 4, got {show(strokes)}")
     # an engine with no rotating masses (a balanced crank, a crosshead engine's analysis) is allowed
     m_rot0 = rd.number(data, "m_rot", nonneg=True) if "m_rot" in data else None
     m_rec0 = rd.number(data, "m_rec", positive=True) if "m_rec" in data else None
@@ -179,7 +176,7 @@ def engine_from_dict(data: dict[str, Any], path: str = "<engine>") -> Engine:
     n = len(raw)
     for k, body in enumerate(raw):
         check_keys(body, CYLINDER_KEYS, file=path, where=f"cylinders[{k}].")
-    banks = [math.radians(rd.number(body, "bank_deg", f"cylinders[{k}].", default=0.0))
+    banks = [math.radians(rd.number(body, "bank_deg", f"cylinders[{k}].", default=0.0, floor=0.0))
              for k, body in enumerate(raw)]
     for k, g in enumerate(banks):
         if not abs(g) < math.pi:
@@ -230,9 +227,9 @@ def _cranks(rd: _Reader, data: dict[str, Any], raw: list[dict[str, Any]], banks:
         if (not isinstance(order, list) or any(isinstance(x, bool) or not isinstance(x, int) for x in order)
                 or sorted(order) != list(range(1, n + 1))):
             raise rd.fail("firing_order", f"expected the numbers 1..{n} of the {n} cylinders, each once, "
-                                          f"got {order!r}")
+                                          f"got {show(order)}")
         if order[0] != 1:
-            raise rd.fail("firing_order", f"expected the order to start with cylinder 1, got {order!r}")
+            raise rd.fail("firing_order", f"expected the order to start with cylinder 1, got {show(order)}")
         delta = math.radians((720.0 if strokes == 4 else 360.0) / n)
         out = [0.0] * n
         for k, cyl in enumerate(order):
@@ -242,14 +239,14 @@ def _cranks(rd: _Reader, data: dict[str, Any], raw: list[dict[str, Any]], banks:
         lst = data["crank_deg"]
         if not isinstance(lst, list) or len(lst) != n:
             got = len(lst) if isinstance(lst, list) else lst
-            raise rd.fail("crank_deg", f"expected one angle per cylinder ({n} cylinders), got {got!r}")
+            raise rd.fail("crank_deg", f"expected one angle per cylinder ({n} cylinders), got {show(got)}")
         degs = []
         for k, v in enumerate(lst):
             if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
-                raise rd.fail(f"crank_deg[{k}]", f"expected a number of degrees, got {v!r}")
-            degs.append(float(v))
+                raise rd.fail(f"crank_deg[{k}]", f"expected a number of degrees, got {show(v)}")
+            degs.append(reduce_deg(float(v)))  # any finite angle, reduced exactly
     elif len(per) == n:
-        degs = [rd.number(body, "crank_deg", f"cylinders[{k}].") for k, body in enumerate(raw)]
+        degs = [rd.angle(body, "crank_deg", f"cylinders[{k}].") for k, body in enumerate(raw)]
     elif n == 1:
         degs = [0.0]
     else:

@@ -169,7 +169,14 @@ def nearest_centre(b: Bounds) -> tuple[float, float]:
             det = a1 * b2 - a2 * b1
             if abs(det) > 1e-14:
                 cand.append(((c1 * b2 - c2 * b1) / det, (a1 * c2 - a2 * c1) / det))
-    ok = [p for p in cand if _allowed(b, *p, tol=1e-12) and p[1] < 0]
+    tol = 1e-12 * max([1.0] + [abs(c) for _, _, c in rows])  # relative: a huge lift's bounds round too
+    ok = [p for p in cand if _allowed(b, *p, tol=tol) and p[1] < 0]
+    if not ok:  # rounding still shut every corner out: the one that breaks the bounds least
+
+        def excess(p: tuple[float, float]) -> float:
+            return max(max(c1 - (p[0] - p[1] * t), p[0] + p[1] * t - c2) for t, c1, c2 in b.lines)
+
+        ok = [min((p for p in cand if p[1] < 0), key=excess, default=min(cand, key=excess))]
     return min(ok, key=lambda p: math.hypot(*p))
 
 

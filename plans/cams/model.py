@@ -31,7 +31,7 @@ from typing import Any
 
 from plans.errors import InputError
 from plans.io import read_toml
-from plans.reader import Reader, check_keys
+from plans.reader import Reader, check_keys, show
 from plans.units import LENGTH_UNITS, rpm_to_rad_s
 
 from .laws import LAWS, Law, table_law
@@ -99,9 +99,9 @@ def _number(data: dict[str, Any], key: str, path: str, where: str = "", *, defau
         if default is None:
             raise InputError("missing; expected a number", file=path, field=f"{where}{key}")
         return default
-    v = Reader(path).value(data[key], f"{where}{key}", floor=0.0)  # finite, at most 1e12
-    if positive and v <= 0:
-        raise InputError(f"expected a positive number, got {v:g}", file=path, field=f"{where}{key}")
+    # finite, at most 1e12 and, when positive, at least 1e-12
+    v = Reader(path).value(data[key], f"{where}{key}", positive=positive,
+                           floor=0.0 if at_least is not None else None)
     if at_least is not None and v < at_least:
         raise InputError(f"expected at least {at_least:g}, got {v:g}", file=path, field=f"{where}{key}")
     if below is not None and v >= below:
@@ -115,11 +115,9 @@ def _length(data: dict[str, Any], key: str, unit: str, path: str, where: str = "
         if default is None:
             raise InputError("missing; expected a length", file=path, field=f"{where}{key}")
         return default
-    v = Reader(path).length(data[key], f"{where}{key}", unit)  # finite, 1 µm .. 10 km (or 0)
-    if positive and v <= 0:
-        raise InputError(f"expected a positive length, got {data[key]!r}", file=path, field=f"{where}{key}")
+    v = Reader(path).length(data[key], f"{where}{key}", unit, positive=positive)  # finite, 1 µm .. 10 km (or 0)
     if at_least is not None and v < at_least:
-        raise InputError(f"expected at least {at_least:g}, got {data[key]!r}", file=path, field=f"{where}{key}")
+        raise InputError(f"expected at least {at_least:g}, got {show(data[key])}", file=path, field=f"{where}{key}")
     return v
 
 
@@ -131,18 +129,16 @@ def _choice(data: dict[str, Any], key: str, choices: Iterable[str], path: str, w
         raise InputError(f"missing; expected one of {', '.join(map(repr, choices))}", file=path,
                          field=f"{where}{key}")
     if v not in choices:
-        raise InputError(f"expected one of {', '.join(map(repr, choices))}, got {v!r}", file=path,
+        raise InputError(f"expected one of {', '.join(map(repr, choices))}, got {show(v)}", file=path,
                          field=f"{where}{key}")
     return str(v)
 
 
 def cam_from_dict(data: dict[str, Any], path: str) -> Cam:
     """Validate a cam file's table: every problem is one InputError line naming the key."""
-    check_keys(data, TOP_KEYS, file=path, where="")
-    if data.get("format") != 1:
-        raise InputError(f"expected 1, got {data.get('format')!r}", file=path, field="format")
-    if data.get("kind") != "cam":
-        raise InputError(f"expected \"cam\", got {data.get('kind')!r}", file=path, field="kind")
+    from plans.kinds import check_top
+
+    check_top(data, path, "cam", TOP_KEYS)
     unit = _choice(data, "unit", LENGTH_UNITS, path, default="mm")
     follower = _choice(data, "follower", ("translating", "oscillating"), path)
     osc = follower == "oscillating"
@@ -162,12 +158,12 @@ def cam_from_dict(data: dict[str, Any], path: str) -> Cam:
     else:
         roller = _length(data, "roller", unit, path, default=0.0, at_least=0.0)
         if roller >= r0:
-            raise InputError(f"the roller must be smaller than the base radius ({data['roller']!r} vs "
-                             f"{data['base_radius']!r})", file=path, field="roller")
+            raise InputError(f"the roller must be smaller than the base radius ({show(data['roller'])} vs "
+                             f"{show(data['base_radius'])})", file=path, field="roller")
     offset = _length(data, "offset", unit, path, default=0.0)
     if not osc and abs(offset) >= r0:
-        raise InputError(f"the offset must be smaller than the base radius ({data.get('offset')!r} "
-                         f"vs {data['base_radius']!r})", file=path, field="offset")
+        raise InputError(f"the offset must be smaller than the base radius ({show(data.get('offset'))} "
+                         f"vs {show(data['base_radius'])})", file=path, field="offset")
     arm = pivot = 0.0
     if osc:
         for key in ("arm", "pivot"):
@@ -179,7 +175,8 @@ def cam_from_dict(data: dict[str, Any], path: str) -> Cam:
         if not abs(arm - r0) < pivot < arm + r0:
             raise InputError("the base circle cannot reach the roller: need |arm − base_radius| < pivot "
                              "< arm + base_radius", file=path, field="pivot")
-    omega = rpm_to_rad_s(_number(data, "omega_rpm", path, positive=True, below=1e7))  # ω² stays finite
+    # ω from 1e-6 to 1e6 rad/s, as every crank's (ω² stays finite, 1/ω too)
+    omega = rpm_to_rad_s(_number(data, "omega_rpm", path, positive=True, at_least=1e-5, below=1e7))
     sense = _choice(data, "sense", ("ccw", "cw"), path, default="ccw")
     a_rise = _number(data, "pressure_angle_rise_deg", path, default=45.0 if osc else 30.0,
                      positive=True, at_least=1.0, below=90)  # below 1° tan α vanishes in the bounds
@@ -194,7 +191,7 @@ def cam_from_dict(data: dict[str, Any], path: str) -> Cam:
         raise InputError("the swing must stay below 90°", file=path, field="phases")
     title = data.get("title", Path(path).stem)
     if not isinstance(title, str):
-        raise InputError(f"expected a string, got {title!r}", file=path, field="title")
+        raise InputError(f"expected a string, got {show(title)}", file=path, field="title")
     return Cam(path, title, unit, follower, r0, offset, roller, flat, arm,
                pivot, omega, 1 if sense == "ccw" else -1, math.radians(a_rise), math.radians(a_ret), step,
                phases, h, data)
@@ -282,6 +279,10 @@ def _table(ph: dict[str, Any], path: str, where: str, stroke: float, angle_deg: 
     lift = [float(r[1]) * scale for r in rows]
     if any(b <= a for a, b in zip(ang, ang[1:], strict=False)):
         raise InputError("the angles must increase", file=path, field=field)
+    gap = 1e-6 * angle_deg  # closer rows make the spline's equations singular
+    if any(b - a < gap for a, b in zip(ang, ang[1:], strict=False)):
+        raise InputError(f"rows closer than {gap:g}°; expected the angles at least {gap:g}° apart",
+                         file=path, field=field)
     if abs(ang[0]) > 1e-9 or abs(ang[-1] - angle_deg) > 1e-9:
         raise InputError(f"the table must run from 0 to the phase's {angle_deg:g}°", file=path, field=field)
     if abs(lift[0]) > 1e-12:

@@ -60,7 +60,7 @@ from typing import Any
 from plans.errors import InputError
 from plans.io import loads_toml, read_toml
 from plans.reader import NUMBER_FLOOR, NUMBER_LIMIT, Reader, bad_character, check_keys, did_you_mean
-from plans.scene.model import Scene, check_format, load_scene, scene_from_dict
+from plans.scene.model import Scene, load_scene, scene_from_dict
 from plans.units import LENGTH_UNITS
 
 SCALE_KINDS = ("length", "velocity", "acceleration", "force")
@@ -163,12 +163,14 @@ def _fail(path: str, field: str, msg: str) -> InputError:
     return InputError(msg, file=path, field=field)
 
 
-_TOP = {"format", "student", "scene", "sheet", "scales", "tolerance", "positions", "title", "rubric"}
+_TOP = {"format", "student", "group", "variant", "scene", "sheet", "scales", "tolerance", "positions", "title",
+        "rubric"}
 
 
 def check_from_dict(data: dict[str, Any], path: str = "<check>") -> CheckFile:
-    check_format(Reader(path), data)
-    check_keys(data, _TOP, file=path, where="")
+    from plans.kinds import check_top
+
+    check_top(data, path, "check", _TOP)
     student = data.get("student", Path(path).stem)
     if not isinstance(student, str):
         raise _fail(path, "student", "expected a string (the student's name)")

@@ -248,6 +248,9 @@ def run_template(args: argparse.Namespace) -> int:
             print(target)
         return 0
     except PlansError as exc:
+        from plans.guard import abandon
+
+        abandon()  # nothing of the command is written (it answers 2 itself)
         _err(one_line(exc))
         return 2
 

@@ -69,7 +69,9 @@ from plans.check.findings import (
 from plans.check.providers import STUDENT_ONLY, Context, Exact, exact_value, known_quantities
 from plans.check.relations import relation_findings
 from plans.errors import InputError, OutputError, PlansError, one_line
+from plans.guard import abandon
 from plans.io import atomic_write, dumps, refuse_input, write_all
+from plans.io import remove as remove_files
 from plans.units import DUST, percent
 
 _SCALE_UNIT = {"length": "mm/m", "velocity": "mm/(m/s)", "acceleration": "mm/(m/s²)", "force": "mm/N"}
@@ -419,6 +421,10 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--out", metavar="DIR", help="write <name>.json and <name>.txt per check file here "
                                                  "(batch default: DIR/reports)")
     p.add_argument("--quiet", action="store_true", help="no table on stdout")
+    p.add_argument("--xlsx", metavar="MARKS.xlsx", help="with a folder: every sheet under it checked, one row per "
+                                                         "student, one worksheet per group (the gradebook)")
+    p.add_argument("--rubric", metavar="RUBRIC.toml", help="with --xlsx: weights per sheet, pass threshold, marks")
+    p.add_argument("--jobs", type=int, default=1, metavar="N", help="with --xlsx: check in N processes")
     p.set_defaults(func=run)
     return p
 
@@ -445,6 +451,12 @@ def _after(args: argparse.Namespace, target: Path, written: bool) -> None:
 def run(args: argparse.Namespace) -> int:
     """``plans check``: 0 when every file was checked, 2 on a user error (one line on stderr).
     A single file's outputs (JSON, CSV, reports, sheets) are written all or none."""
+    if getattr(args, "xlsx", None) or getattr(args, "template", None):
+        from plans.group.cli import run_group
+
+        got = run_group(args)
+        if got is not None:
+            return got
     if getattr(args, "template", None):
         from plans.check.forms import run_template
 
@@ -461,7 +473,9 @@ def run(args: argparse.Namespace) -> int:
 
             return run_form(target, args)
         if not target.exists():
-            _err(f"{target}: no such file or folder")
+            why = "a symbolic link to no readable file (a loop, or its target gone)" if target.is_symlink() \
+                else "no such file or folder"
+            _err(f"{target}: {why}")
             return 2
         for out_path in (args.json, args.csv):
             refuse_input(out_path, target)
@@ -469,6 +483,11 @@ def run(args: argparse.Namespace) -> int:
 
         if cycle_check.is_cycle_check(target):
             return cycle_check.run_file(target, args)
+        from plans.group.cli import run_sheet_file  # a gears or cam sheet
+
+        done = run_sheet_file(target, args)
+        if done is not None:
+            return done
         report = check_file(target)
         for out_path in (args.json, args.csv):
             refuse_input(out_path, report.check.scene.path)
@@ -500,11 +519,13 @@ def run(args: argparse.Namespace) -> int:
                     print(p)
         return 0
     except PlansError as exc:
+        abandon()  # nothing of the command is written (it answers 2 itself)
         _err(one_line(exc))
         return 2
     except BrokenPipeError:
         raise  # the runner ends quietly: the reader of the table has gone
     except OSError as exc:
+        abandon()
         _err(f"{exc.filename or ''}: {exc.strerror}")
         return 2
 
@@ -550,9 +571,14 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
         reports = {out / f"{f.stem}.json", out / f"{f.stem}.txt"}
         try:
             outputs: dict[Path, Any]
+            from plans.group.sheets import sheet_check_of, sheet_outputs
+
+            srep = None if cycle_check.is_cycle_check(f) else sheet_check_of(f)
             if cycle_check.is_cycle_check(f):  # cycle tables: a report, no marked sheet
                 crep = cycle_check.check_cycle(f)
                 outputs, row = cycle_check.outputs(crep, f, out), cycle_check.summary_row(str(f), crep)
+            elif srep is not None:  # a gears or cam sheet
+                outputs, row = sheet_outputs(srep, f, out)
             else:
                 report = _check_beside(f, beside)
                 outputs = {out / f"{f.stem}.json": dumps(report.to_json()),
@@ -566,8 +592,7 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
             bad += 1
             _err(one_line(exc))
             rows.append(summary_row(str(f), None, str(exc)))
-            for old in reports:  # a report of an earlier run would look current
-                old.unlink(missing_ok=True)
+            remove_files(reports)  # a report of an earlier run would look current
             _after(args, f, False)
             continue
         _after(args, f, True)

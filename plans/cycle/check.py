@@ -49,6 +49,10 @@ from .spec import ANGLE_LIMIT_DEG, rotor_inertia
 
 _KEYS = {"phi_deg", "sign", "velocity_scale", "analogue_scale", "segment_mm", "rule_pct", "measured", "values",
          "flywheel"}
+#: The error of a figure is judged against at least this (where every exact value of its row
+#: vanishes): a student's 1e12 against 0 is a finite, huge percentage, never infinite.
+PCT_FLOOR = 1e-12
+_TOP = {"format", "student", "scene", "cycle", "title"}
 VANISH = 0.05  # a value is judged against 5 % of its row's largest where it vanishes
 
 
@@ -122,13 +126,13 @@ def _rows(path: str, raw: Any, where: str, n: int) -> dict[str, list[float | Non
         if not (isinstance(vals, list) and len(vals) == n):
             raise _fail(path, f, f"expected {n} figures, one per position of cycle.phi_deg")
         row: list[float | None] = []
-        for v in vals:
+        for k, v in enumerate(vals):
             if v == "" or v == "-":
                 row.append(None)
             elif isinstance(v, bool) or not isinstance(v, int | float):
-                raise _fail(path, f, f"expected numbers (or \"-\" for none), got {show(v)}")
+                raise _fail(path, f"{f}[{k}]", f"expected numbers (or \"-\" for none), got {show(v)}")
             else:
-                row.append(Reader(path).value(v, f))
+                row.append(Reader(path).value(v, f"{f}[{k}]"))
         out[name] = row
     return out
 
@@ -162,10 +166,12 @@ def _segment(scene: Scene, name: str) -> tuple[str | None, str] | None:
 def check_cycle(path: str | Path) -> CycleReport:
     path = str(path)
     data = read_toml(path)
-    cyc = data["cycle"]
-    for key in cyc:
-        if key not in _KEYS:
-            raise _fail(path, f"cycle.{key}", f"unknown key; expected some of {sorted(_KEYS)}")
+    from plans.kinds import check_top
+
+    check_top(data, path, "check", _TOP)
+    rd = Reader(path)
+    cyc = rd.table(data, "cycle", "")
+    rd.keys(cyc, _KEYS, "cycle.")
     scene_ref = data.get("scene")
     if not isinstance(scene_ref, str):
         raise _fail(path, "scene", "expected the path of the scene file")
@@ -177,12 +183,11 @@ def check_cycle(path: str | Path) -> CycleReport:
     if not (isinstance(phis, list) and phis and all(isinstance(p, int | float) and not isinstance(p, bool)
                                                     for p in phis)):
         raise _fail(path, "cycle.phi_deg", "expected the student's crank angles, e.g. [0, 30, 60]")
-    rd = Reader(path)
-    phis_a = np.asarray([rd.value(p, "cycle.phi_deg", limit=ANGLE_LIMIT_DEG) for p in phis], float)
+    phis_a = np.asarray([rd.value(p, "cycle.phi_deg", limit=ANGLE_LIMIT_DEG, floor=0.0) for p in phis], float)
     n = len(phis)
     sign = cyc.get("sign", "driving")
     if sign not in ("driving", "resisting"):
-        raise _fail(path, "cycle.sign", f"expected \"driving\" or \"resisting\", got {sign!r}")
+        raise _fail(path, "cycle.sign", f"expected \"driving\" or \"resisting\", got {show(sign)}")
     mu_v = _scale(path, cyc["velocity_scale"], "cycle.velocity_scale") if "velocity_scale" in cyc else None
     mu_an = _scale(path, cyc["analogue_scale"], "cycle.analogue_scale") if "analogue_scale" in cyc else None
     seg_tol = rd.number(cyc, "segment_mm", "cycle.", default=1.0, positive=True)
@@ -219,7 +224,7 @@ def check_cycle(path: str | Path) -> CycleReport:
                 continue
             err = abs(s - mm[k])
             items.append(CycleItem(name, float(phis_a[k]), s, float(mm[k]), "mm",
-                                   100 * err / max(abs(mm[k]), VANISH * float(np.max(mm)), 1e-300), err,
+                                   100 * err / max(abs(mm[k]), VANISH * float(np.max(mm)), PCT_FLOOR), err,
                                    f"±{seg_tol:g} mm", "pass" if err <= seg_tol + 1e-9 else "fail",
                                    f"cycle.measured.{name}[{k}]"))
     values = _rows(path, cyc.get("values", {}), "cycle.values", n)
@@ -234,21 +239,23 @@ def check_cycle(path: str | Path) -> CycleReport:
             if s is None:
                 continue
             e = float(vals[k])
-            pct = 100 * abs(s - e) / max(abs(e), ref, 1e-300)
+            pct = 100 * abs(s - e) / max(abs(e), ref, PCT_FLOOR)
             items.append(CycleItem(name, float(phis_a[k]), s, e, unit, pct, None, f"±{rule:g} %",
                                    "pass" if pct <= rule else "fail", f"cycle.values.{name}[{k}]"))
     fly = cyc.get("flywheel", {})
     if fly:
         if not isinstance(fly, dict) or set(fly) - {"inertia"} or "inertia" not in fly:
             raise _fail(path, "cycle.flywheel", "expected { inertia = kg·m² }")
+        s = rd.value(fly["inertia"], "cycle.flywheel.inertia", positive=True)
         d = dynamics(scene)
-        s = float(fly["inertia"])
         e = d.flywheel.inertia_exact
-        pct = 100 * abs(s - e) / abs(e)
+        pct = 100 * abs(s - e) / max(abs(e), PCT_FLOOR)
         items.append(CycleItem("I_fw", None, s, e, "kg*m^2", pct, None, f"±{rule:g} %",
                                "pass" if pct <= rule else "fail", "cycle.flywheel.inertia"))
-    student = data.get("student", Path(path).stem)
-    return CycleReport(path, str(student), scene, tuple(items))
+    student = rd.string(data.get("student", Path(path).stem), "student")
+    if "title" in data:
+        rd.string(data["title"], "title", limit=2000)
+    return CycleReport(path, student, scene, tuple(items))
 
 
 def _exact_value(scene: Scene, kin: Any, name: str, rows: dict[str, tuple[np.ndarray, str]]):

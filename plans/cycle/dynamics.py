@@ -310,7 +310,7 @@ def _pole(mu_M: float, mu_phi: float, A_range: float, target_mm: float = 60.0) -
 
 
 def dynamics(scene: Scene, spec: DynamicsSpec | None = None, structure: Structure | None = None,
-             loads: Loads | None = None, axis_mm: float = 240.0) -> Dynamics:
+             loads: Loads | None = None, axis_mm: float = 240.0, height: float = 1.0) -> Dynamics:
     """Everything of the dynamics sheet for a scene with ``[dynamics]``."""
     spec = spec or dynamics_spec(scene)
     loads = loads if loads is not None else parse_loads(scene)
@@ -363,11 +363,11 @@ def dynamics(scene: Scene, spec: DynamicsSpec | None = None, structure: Structur
     fw = Flywheel(delta, omega_m, I_ex, I_graph, I_mer, d_g, d_e, d_m, bound, work.bound)
     # the φ axis of a four-stroke cycle is half as long again: 1 mm for every 2° of 720°
     mu_phi = axis_mm * (1.5 if cycle == 720 else 1.0) / math.radians(cycle)
-    mu_M = nice_scale(float(np.max(np.abs(tab.M_pr))) or 1.0, 50.0)
+    mu_M = nice_scale(float(np.max(np.abs(tab.M_pr))) or 1.0, 50.0 * height)  # height: < 1 on small sheets
     A_range = float(max(np.max(np.abs(A_c)), np.max(np.abs(A_d)), np.ptp(dT)))
-    H = spec.pole_mm or _pole(mu_M, mu_phi, A_range)
+    H = spec.pole_mm or _pole(mu_M, mu_phi, A_range, 60.0 * height)
     mu_A = mu_M * mu_phi / H
-    mu_I = nice_scale(float(np.max(tab.I_pr)), 120.0)
+    mu_I = nice_scale(float(np.max(tab.I_pr)), 120.0 * height)
     crank = scene.links[scene.driver.link]
     mu_an = nice_scale(crank.length or 1.0, 70.0)
     out = Dynamics(scene, spec, tab, ex, M_d, M_d_e, A_c, A_d, dT, A_c_e, dT_e, wit, fw, om_g, om_e,

@@ -110,7 +110,8 @@ def dynamics_text(d: Dynamics) -> str:
         f"{f.delta_achieved_merkalov:.6g}",
         f"    exact                    I = {f.inertia_exact:.6g} kg·m²  -> achieved δ = {f.delta_achieved_exact:.6g}",
         f"  Wittenbauer's flywheel is within {f.graphical_bound:.3g} kg·m² of the exact one (its own bound); "
-        f"the work of the loads is integrated to {f.work_bound:.2g} J",
+        "the work of the loads is integrated to " + (f"{f.work_bound:.2g} J" if f.work_bound >= 1e-9
+                                                      else "better than 1e-9 J"),  # no round-off dust
     ]
     lines += [f"  note: {x}" for x in d.notes]
     return "\n".join(lines)

@@ -31,7 +31,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from plans.errors import InputError
-from plans.reader import Reader
+from plans.reader import Reader, show
 from plans.scene.model import Scene
 
 #: The widest step between the positions of a cycle (the graphical integration needs the
@@ -88,8 +88,9 @@ def _table(scene: Scene, key: str, known: set[str]) -> dict[str, Any]:
     return raw
 
 
-def _number(scene: Scene, raw: dict[str, Any], key: str, where: str) -> float:
-    return Reader(scene.path).value(raw[key], f"{where}.{key}")
+def _number(scene: Scene, raw: dict[str, Any], key: str, where: str, floor: float | None = None) -> float:
+    """A number by the reader's rule (``floor=0`` where the caller checks a range of its own)."""
+    return Reader(scene.path).value(raw[key], f"{where}.{key}", floor=floor)
 
 
 def _positions(scene: Scene, raw: dict[str, Any], where: str, *, equal: bool,
@@ -105,7 +106,7 @@ def _positions(scene: Scene, raw: dict[str, Any], where: str, *, equal: bool,
         if not (isinstance(vals, list) and 4 <= len(vals) <= MAX_POSITIONS):
             raise _fail(scene, f"{where}.phi_deg", f"expected 4 to {MAX_POSITIONS} crank angles in degrees")
         rd = Reader(scene.path)
-        phis = [rd.value(v, f"{where}.phi_deg", limit=ANGLE_LIMIT_DEG) for v in vals]
+        phis = [rd.value(v, f"{where}.phi_deg", limit=ANGLE_LIMIT_DEG, floor=0.0) for v in vals]
         # Closer positions than MIN_STEP_DEG make the curve's chord slopes 0/0.
         if any(b - a < MIN_STEP_DEG for a, b in zip(phis, phis[1:], strict=False)):
             raise _fail(scene, f"{where}.phi_deg", "expected crank angles increasing from position to position "
@@ -132,7 +133,7 @@ def _positions(scene: Scene, raw: dict[str, Any], where: str, *, equal: bool,
     least = max(4, math.ceil(cycle / MAX_STEP_DEG))
     if isinstance(n, bool) or not isinstance(n, int) or n < least or n > MAX_POSITIONS:
         raise _fail(scene, f"{where}.positions", f"expected a whole number of positions from {least} to "
-                                                 f"{MAX_POSITIONS}, got {n!r}")
+                                                 f"{MAX_POSITIONS}, got {show(n)}")
     return tuple(phi0 + cycle * k / n for k in range(n))
 
 
@@ -151,7 +152,7 @@ def dynamics_spec(scene: Scene) -> DynamicsSpec:
     where = "dynamics"
     if "delta" not in raw:
         raise _fail(scene, "dynamics.delta", "missing the coefficient of fluctuation δ, e.g. delta = 0.05")
-    delta = _number(scene, raw, "delta", where)
+    delta = _number(scene, raw, "delta", where, floor=0.0)
     # Below DELTA_FLOOR ω_max² − ω_min² is lost to round-off (and no flywheel is that uniform).
     if not DELTA_FLOOR <= delta < 1.0:
         raise _fail(scene, "dynamics.delta", f"expected {DELTA_FLOOR:g} <= δ < 1, got {delta:g}")
@@ -160,7 +161,7 @@ def dynamics_spec(scene: Scene) -> DynamicsSpec:
     d = raw.get("driving", "constant")
     if isinstance(d, str):
         if d != "constant":
-            raise _fail(scene, "dynamics.driving", f"expected \"constant\" or a moment in N·m, got {d!r}")
+            raise _fail(scene, "dynamics.driving", f"expected \"constant\" or a moment in N·m, got {show(d)}")
     else:
         driving = _number(scene, raw, "driving", where)
     pole = None
@@ -170,11 +171,11 @@ def dynamics_spec(scene: Scene) -> DynamicsSpec:
             raise _fail(scene, "dynamics.pole_mm", f"expected a positive pole distance in mm, got {pole:g}")
     steps = raw.get("exact_steps", 3600)
     if isinstance(steps, bool) or not isinstance(steps, int) or not 360 <= steps <= 200000:
-        raise _fail(scene, "dynamics.exact_steps", f"expected a whole number from 360 to 200000, got {steps!r}")
+        raise _fail(scene, "dynamics.exact_steps", f"expected a whole number from 360 to 200000, got {show(steps)}")
     cycle = raw.get("cycle_deg", 360)
     if isinstance(cycle, bool) or cycle not in CYCLES:
         raise _fail(scene, "dynamics.cycle_deg", f"expected 360 (one revolution) or 720 (the four-stroke "
-                                                 f"engine's cycle), got {cycle!r}")
+                                                 f"engine's cycle), got {show(cycle)}")
     if scene.driver.omega == 0:
         raise _fail(scene, "driver.omega", "the dynamics needs the mean angular velocity of the crank (ω ≠ 0)")
     phis = _positions(scene, raw, where, equal=False, cycle=float(cycle))
@@ -200,16 +201,16 @@ def diagrams_spec(scene: Scene) -> DiagramsSpec:
         raise _fail(scene, "diagrams.points", "expected at least one point (or links = [...]) to draw")
     qs = raw.get("quantities", list(QUANTITIES))
     if not (isinstance(qs, list) and qs and all(q in QUANTITIES for q in qs)):
-        raise _fail(scene, "diagrams.quantities", f"expected some of {list(QUANTITIES)}, got {qs!r}")
+        raise _fail(scene, "diagrams.quantities", f"expected some of {list(QUANTITIES)}, got {show(qs)}")
     method = raw.get("method", "chords")
     if method not in METHODS:
-        raise _fail(scene, "diagrams.method", f"expected one of {list(METHODS)}, got {method!r}")
+        raise _fail(scene, "diagrams.method", f"expected one of {list(METHODS)}, got {show(method)}")
     pole = None
     if "pole_mm" in raw:
         pole = _number(scene, raw, "pole_mm", "diagrams")
         if pole <= 0:
             raise _fail(scene, "diagrams.pole_mm", f"expected a positive pole distance in mm, got {pole:g}")
-    length = _number(scene, raw, "length_mm", "diagrams") if "length_mm" in raw else 240.0
+    length = _number(scene, raw, "length_mm", "diagrams", floor=0.0) if "length_mm" in raw else 240.0
     if not 60.0 <= length <= 700.0:
         raise _fail(scene, "diagrams.length_mm", f"expected a φ axis from 60 to 700 mm long, got {length:g}")
     if scene.driver.omega == 0:

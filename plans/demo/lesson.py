@@ -246,7 +246,9 @@ def _position_index(sol: Solution, phi_deg: float | None) -> int:
     for k, p in enumerate(phis):
         if abs(p - phi_deg) < 1e-9:
             return k
-    raise InputError(f"crank angle {phi_deg:g}° is not among the scene's positions {phis}", field="--phi")
+    shown = ", ".join(f"{p:g}" for p in phis[:8]) + (f", … ({len(phis)} positions)" if len(phis) > 8 else "")
+    raise InputError(f"crank angle {phi_deg:g}° is not among the scene's positions [{shown}]", file=sol.scene.path,
+                     field="--phi")
 
 
 def lesson(scene: Scene, *, phi_deg: float | None = None, frames: int = FRAMES,

@@ -51,7 +51,7 @@ from typing import Any
 
 from plans.errors import InputError
 from plans.io import read_toml
-from plans.reader import Reader, check_keys, show
+from plans.reader import LENGTH_FLOOR, LENGTH_LIMIT, Reader, check_keys, show
 from plans.units import LENGTH_UNITS
 
 SHIFT_RULES = ("minimum", "no_undercut", "equal_sliding")
@@ -125,11 +125,12 @@ def _num(v: Any, path: str, field_: str, what: str, lo: float | None = None,
          hi: float | None = None, strict: bool = True) -> float:
     if isinstance(v, bool) or not isinstance(v, int | float):
         raise InputError(f"expected {what}, got {show(v)}", file=path, field=field_)
-    f = Reader(path).value(v, field_, positive=lo == 0.0 and strict)
+    ranged = lo is not None and lo > 0  # its own range says more than the floor
+    f = Reader(path).value(v, field_, positive=lo == 0.0 and strict, floor=0.0 if ranged else None)
     if lo is not None and (f <= lo if strict else f < lo):
-        raise InputError(f"expected {what}, got {v!r}", file=path, field=field_)
+        raise InputError(f"expected {what}, got {show(v)}", file=path, field=field_)
     if hi is not None and f >= hi:
-        raise InputError(f"expected {what}, got {v!r}", file=path, field=field_)
+        raise InputError(f"expected {what}, got {show(v)}", file=path, field=field_)
     return f
 
 
@@ -152,21 +153,18 @@ def load_gears(path: str | Path) -> GearFile:
 
 
 def parse_gears(data: dict[str, Any], path: str) -> GearFile:
-    from plans.kinds import command_for, kind_of
+    from plans.kinds import check_top
 
-    kind = kind_of(data, path)
-    if kind != "gears":
-        raise InputError(f"this is a {kind!r} file, not a gear file; {command_for(kind)}expected "
-                         "kind = \"gears\"", file=path, field="kind")
-    if data.get("format") != 1:
-        raise InputError(f"expected format = 1, got {data.get('format')!r}", file=path, field="format")
-    check_keys(data, _TOP_KEYS, file=path, where="")
+    check_top(data, path, "gears", _TOP_KEYS)
     unit = Reader(path).choice(data, "unit", "", LENGTH_UNITS, default="mm")
     k = LENGTH_UNITS[unit]
     if "module" not in data:
         raise InputError("missing; expected the module m in the file's unit, e.g. module = 4",
                          file=path, field="module")
     m = _num(data["module"], path, "module", "a module m > 0", lo=0.0) * k
+    if not LENGTH_FLOOR <= m <= LENGTH_LIMIT:
+        raise InputError(f"expected a module from 1 µm to {LENGTH_LIMIT:g} m, got {show(data['module'])} {unit}",
+                         file=path, field="module")
     alpha_deg = _num(data.get("pressure_angle_deg", 20), path, "pressure_angle_deg",
                      "a pressure angle between 5 and 45 degrees", lo=5.0, hi=45.0, strict=False)
     # h_a* below 0.5 leaves no tooth to cut and z_min rounds to nothing.
@@ -175,7 +173,7 @@ def parse_gears(data: dict[str, Any], path: str) -> GearFile:
     c = _num(data.get("clearance", 0.25), path, "clearance", "c* >= 0", lo=0.0, strict=False)
     rule = data.get("shift_rule", "minimum")
     if rule not in SHIFT_RULES:
-        raise InputError(f"expected one of {', '.join(repr(r) for r in SHIFT_RULES)}, got {rule!r}",
+        raise InputError(f"expected one of {', '.join(repr(r) for r in SHIFT_RULES)}, got {show(rule)}",
                          file=path, field="shift_rule")
     ring_tip = _ring_tip(data, path, "ring_tip", "trimmed")
     title = data.get("title", "")
@@ -209,6 +207,14 @@ def parse_gears(data: dict[str, Any], path: str) -> GearFile:
             if shafts[s.carrier].carrier is not None:
                 raise InputError(f"carrier {s.carrier!r} rides on another carrier; expected a carrier "
                                  "on a fixed axis", file=path, field="shafts")
+    carriers = {s.carrier for s in shafts.values() if s.carrier is not None}
+    riding = {g.shaft for g in gears.values()}
+    for i, t in enumerate(_tables(data, "shafts", path)):
+        name = str(t["name"])
+        if name not in riding and name not in carriers:
+            raise InputError(f"no gear rides on shaft {name!r} and no shaft rides on it; expected one of "
+                             f"{', '.join(repr(s) for s in sorted(riding | carriers))}", file=path,
+                             field=f"shafts[{i}].name")
     synth = _synthesis(data.get("synthesis"), path)
     if not meshes and synth is None:
         raise InputError("expected at least one [[meshes]] table (or a [synthesis] request)", file=path,
@@ -273,7 +279,7 @@ def _gears(data: dict[str, Any], path: str, m: float, k: float, ring_tip: str) -
             if isinstance(xv, bool) or not isinstance(xv, int | float) or not abs(xv) <= 5:  # NaN fails too
                 raise InputError(f"expected a shift coefficient (a number, |x| <= 5) or \"auto\", got {show(xv)}",
                                  file=path, field=f + "x")
-            x = float(xv)
+            x = Reader(path).value(xv, f + "x")  # 0 or at least 1e-12, as every number
         internal = g.get("internal", False)
         if not isinstance(internal, bool):
             raise InputError("expected true or false", file=path, field=f + "internal")

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from plans.errors import Locked, NotAssemblable
+from plans.errors import Indeterminate, Locked, NotAssemblable
 from plans.kinematics.structure import Group, Structure, TriadGroup
 from plans.lines import cross
 from plans.scene.model import Joint, Scene
@@ -148,11 +148,23 @@ class _System:
         return (rhs * self.k1).imag, (rhs * self.k2).imag
 
 
-def _lock(ctx: _Ctx, g: Group, det: R, size: Any, point: str) -> None:
-    """Condition number |c1||c2| / |c1 × c2|; parallel construction lines lock the group."""
+def _lock(ctx: _Ctx, g: Group, det: R, size: Any, point: str, system: _System | None = None,
+          rhs: Any = None) -> None:
+    """Condition number |c1||c2| / |c1 × c2|; parallel construction lines lock the group, or,
+    where they coincide (the known velocity lies along them: a change point, such as a
+    parallelogram's crank along its frame), leave the plan indeterminate."""
     adet = abs(det)
     if (ctx.xp.low(adet) <= LOCK_SIN * size) if isinstance(size, float) else (ctx.xp.low(adet / size) <= LOCK_SIN):
-        raise _fail(Locked, ctx, g, adet <= LOCK_SIN * size, point,
+        bad = adet <= LOCK_SIN * size
+        if system is not None and rhs is not None:
+            k = int(np.flatnonzero(np.atleast_1d(bad))[0])
+            c1 = complex(np.atleast_1d(system.cc1)[k if np.size(system.cc1) > 1 else 0]).conjugate()
+            w = complex(np.atleast_1d(rhs)[k if np.size(rhs) > 1 else 0])
+            if abs((c1.conjugate() * w).imag) <= LOCK_SIN * abs(c1) * abs(w) or abs(w) == 0:
+                raise _fail(Indeterminate, ctx, g, bad, point,
+                            "the construction lines coincide: the plan is indeterminate here (a change "
+                            "point: the group may move on either way; give angles beside it)")
+        raise _fail(Locked, ctx, g, bad, point,
                     "the construction lines are parallel and do not coincide: the group locks here "
                     "(velocities are unbounded)")
     ctx.conditions[g.name] = size / adet
@@ -160,22 +172,23 @@ def _lock(ctx: _Ctx, g: Group, det: R, size: Any, point: str) -> None:
 
 def _root(ctx: _Ctx, g: Group, x: R, y: R, scale: Any, point: str, why: Any) -> R:
     """sqrt(x·y) with x·y >= 0 up to rounding (relative to scale()²); below that not
-    assemblable (``why()`` says why)."""
+    assemblable (``why(k)`` says why at the position k the error names)."""
     xp = ctx.xp
     x = x * y
     if xp.low(x) < 0:
         size = scale()
         bad = x < -ASSEMBLY_REL * size * size
         if (bad.any() if hasattr(bad, "any") else bad):
-            raise _fail(NotAssemblable, ctx, g, bad, point, why())
+            k = int(np.flatnonzero(np.atleast_1d(bad))[0])
+            raise _fail(NotAssemblable, ctx, g, bad, point, why(k))
         x = xp.maximum(x, 0.0)
     return xp.sqrt(x)
 
 
-def _worst(D: Any, low: float, high: float) -> float:
-    """The distance farthest outside [low, high] (the one a group could not span)."""
-    d = np.atleast_1d(np.asarray(D, dtype=float))
-    return float(d.max()) if d.max() > high else float(d.min())
+def _nth(x: Any, k: int) -> float:
+    """The value at the position k an error names (a number alone is every position's)."""
+    a = np.atleast_1d(np.asarray(x, dtype=float))
+    return float(a[k] if a.size > 1 else a[0])
 
 
 def _branch_hint(g: Group) -> str:
@@ -243,9 +256,9 @@ def _rrr(ctx: _Ctx, g: Group, k: tuple) -> None:
     # a along d, h across it; h² as (l1 − a)(l1 + a): no cancellation near a tangent assembly
     a = (half_diff + 0.5 * D * D) / D
     h = _root(ctx, g, l1 - a, l1 + a, lambda: l1 + l3 + D, j2.point,
-              lambda: f"{j1.point}{j2.point} = {l1 * 1e3:.6g} mm and {j3.point}{j2.point} = {l3 * 1e3:.6g} mm "
-                      f"cannot span {j1.point}{j3.point} = {_worst(D, abs(l1 - l3), l1 + l3) * 1e3:.6g} mm "
-                      f"(they span {abs(l1 - l3) * 1e3:.6g} to {(l1 + l3) * 1e3:.6g} mm)" + _branch_hint(g))
+              lambda k: f"{j1.point}{j2.point} = {l1 * 1e3:.6g} mm and {j3.point}{j2.point} = {l3 * 1e3:.6g} mm "
+                        f"cannot span {j1.point}{j3.point} = {_nth(D, k) * 1e3:.6g} mm "
+                        f"(they span {abs(l1 - l3) * 1e3:.6g} to {(l1 + l3) * 1e3:.6g} mm)" + _branch_hint(g))
     r1 = (a + 1j * h if g.branch > 0 else a - 1j * h) * (d / D)  # B − P1
     B = P1 + r1
     r3 = B - P3
@@ -258,7 +271,7 @@ def _rrr(ctx: _Ctx, g: Group, k: tuple) -> None:
     # iωi r1 − iωj r3 = vP3 − vP1
     c1, c2 = 1j * r1, -1j * r3
     sys2 = _System(c1, c2)
-    _lock(ctx, g, sys2.det, l1 * l3, j2.point)
+    _lock(ctx, g, sys2.det, l1 * l3, j2.point, sys2, vP3 - vP1)
     wi, wj = sys2(vP3 - vP1)
     ei = ej = None
     if ctx.order >= 2:
@@ -287,8 +300,8 @@ def _rrp(ctx: _Ctx, g: Group, k: tuple) -> None:
     wu = (P1 - G0) * u.conjugate()  # t0 + i·e: along and across the guide
     t0, e = wu.real, wu.imag
     root = _root(ctx, g, l1 - e, l1 + e, lambda: l1, j2.point,
-                 lambda: f"{j1.point}{j2.point} = {l1 * 1e3:.6g} mm is shorter than the distance "
-                         f"{float(np.max(np.abs(e))) * 1e3:.6g} mm from {j1.point} to the guide of {j2.point}"
+                 lambda k: f"{j1.point}{j2.point} = {l1 * 1e3:.6g} mm is shorter than the distance "
+                           f"{abs(_nth(e, k)) * 1e3:.6g} mm from {j1.point} to the guide of {j2.point}"
                          + _branch_hint(g))
     B = G0 + (t0 + root if g.branch > 0 else t0 - root) * u
     r1 = B - P1
@@ -299,7 +312,7 @@ def _rrp(ctx: _Ctx, g: Group, k: tuple) -> None:
     vBq, aBq = _carried(ctx, q, B)
     c1, c2 = 1j * r1, -u
     sys2 = _System(c1, c2)
-    _lock(ctx, g, sys2.det, l1, j2.point)
+    _lock(ctx, g, sys2.det, l1, j2.point, sys2, vBq - vP1)
     wi, sd = sys2(vBq - vP1)
     vB = sd * u if q == ctx.frame else vBq + sd * u
     mq = ctx.motion[q]
@@ -359,7 +372,7 @@ def _rpr(ctx: _Ctx, g: Group, k: tuple) -> None:
     u = mj.rot * guide.direction
     c1, c2 = 1j * d, u
     sys2 = _System(c1, c2)
-    _lock(ctx, g, sys2.det, D, j2.point)
+    _lock(ctx, g, sys2.det, D, j2.point, sys2, vA - vC)
     wj, sd = sys2(vA - vC)
     ej = sdd = None
     if ctx.order >= 2:

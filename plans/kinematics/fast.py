@@ -54,6 +54,7 @@ def rotation(ref_deg: float, sense: int, phis: Any) -> Any:
     """e^{iθ1} over positions, θ1 = ref + sense·φ reduced by whole quarter turns in degrees
     first (as :meth:`plans.scene.model.Driver.rotation`), so that a dead centre's small
     offset is kept exactly."""
+    phis = np.fmod(phis, 360.0)  # exact for every float (the remainder is representable)
     t = phis if sense == 1 and ref_deg == 0 else ref_deg + sense * phis
     q = t / _NINETY
     np.rint(q, out=q)
@@ -73,7 +74,7 @@ def rotation(ref_deg: float, sense: int, phis: Any) -> Any:
 
 def rotation1(ref_deg: float, sense: int, phi: float) -> complex:
     """e^{iθ1} of one position, reduced by quarter turns like :func:`rotation`."""
-    t = ref_deg + sense * phi
+    t = ref_deg + sense * math.fmod(phi, 360.0)  # exact for every float
     q = round(t / 90.0)
     r = t - 90.0 * q
     return (1, 1j, -1, -1j)[int(q) % 4] * cmath.exp(1j * math.radians(r))

@@ -224,18 +224,9 @@ def parse_scene(text: str, path: str = "<scene>") -> Scene:
 
 def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
     r = Reader(path)
-    check_format(r, data)
-    kind = data.get("kind", "linkage")
-    if kind != "linkage":
-        from plans.kinds import KINDS, command_for
+    from plans.kinds import check_top
 
-        if not isinstance(kind, str) or kind not in KINDS:
-            hint = did_you_mean(kind, KINDS) if isinstance(kind, str) else ""
-            raise r.fail("kind", f"expected one of {', '.join(repr(k) for k in KINDS)}, got {kind!r}{hint}")
-
-        raise r.fail("kind", f"this is a {kind!r} file, not a linkage scene; "
-                             f"{command_for(kind)}expected kind = \"linkage\" or no kind")
-    r.keys(data, TOP_KEYS, "")
+    check_top(data, path, "linkage", TOP_KEYS)
     unit = r.choice(data, "unit", "", sorted(LENGTH_UNITS), "mm")
     title, titles = _title(r, data.get("title", _stem(path)))
     r.string(title, "title", limit=2000)
@@ -471,7 +462,8 @@ def _driver(r: Reader, data: dict[str, Any], frame: int, frame_points: dict[str,
     else:
         raise r.fail("driver.omega", "missing crank speed: omega = rad/s or omega_rpm = rev/min")
     sense = 1 if r.choice(d, "sense", "driver.", ("ccw", "cw"), "ccw") == "ccw" else -1
-    eps = r.number(d, "eps", "driver.", default=0.0)
+    # ε of dust is ε = 0 to rounding (it scales with ω², 1e-12 at the slowest crank): no floor
+    eps = r.number(d, "eps", "driver.", default=0.0, floor=0.0)
     phi_ref = math.radians(r.angle(d, "phi_ref_deg", "driver."))
     if "phi_deg" in d and "positions" in d:
         raise r.fail("driver.phi_deg", "give phi_deg or positions, not both")

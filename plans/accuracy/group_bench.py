@@ -1,0 +1,96 @@
+"""The group's goals: a group of 30 variants made (files, keys, forms, reference sheets)
+with ``plans variants --jobs 2``, and their 30 submissions checked into the gradebook.
+
+Run alone with ``python -m plans.accuracy.group_bench``.
+"""
+
+from __future__ import annotations
+
+import csv
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+from plans.accuracy.speed import Goal
+
+VARIANTS_S = 60.0  # 30 variants, sheets included, on 2 cores with --jobs 2
+CHECK_S = 5.0  # 30 submissions checked, the gradebook written
+SLIPS = {1: "scale", 2: "coriolis_reversed", 3: "arithmetic"}
+
+
+def _table(samples: Path, folder: Path, n: int = 30) -> Path:
+    """The sample group's table grown to ``n`` rows (its rows again, under new names)."""
+    src = samples / "group"
+    for t in src.glob("*.template"):
+        shutil.copy(t, folder / t.name)
+    with (src / "group.csv").open(encoding="utf-8") as fh:
+        rows = list(csv.DictReader(fh))
+    out = folder / "group.csv"
+    with out.open("w", encoding="utf-8", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=list(rows[0]), lineterminator="\n")
+        w.writeheader()
+        for i in range(n):
+            w.writerow({**rows[i % len(rows)], "variant": f"V{i + 1:02d}"})
+    return out
+
+
+def _variants(table: Path, out: Path) -> tuple[float, str]:
+    """Seconds for the whole command (its start-up included), and its complaint ("" if none)."""
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(Path(__file__).resolve().parents[2]),
+                                                         os.environ.get("PYTHONPATH", "")])}
+    t0 = time.perf_counter()
+    got = subprocess.run([sys.executable, "-c", "import sys; from drawings.console import main; sys.exit(main())", "variants", str(table), "-o", str(out),
+                          "--jobs", "2", "--quiet"], env=env, capture_output=True, check=False)
+    took = time.perf_counter() - t0
+    return took, "" if got.returncode == 0 else f"exit {got.returncode}: {got.stderr.decode()[:300]}"
+
+
+def _check(course: Path, subs: Path) -> float:
+    import tomlkit
+
+    from plans.cli import main
+    from plans.group.samples import key_submission
+
+    for n, d in enumerate(sorted(p for p in course.iterdir() if p.name != "handouts")):
+        target = subs / f"{d.name}.toml"
+        slip = SLIPS.get(n) if (d / "scene.toml").exists() else None
+        target.write_text(tomlkit.dumps(key_submission(d, target, f"student {n:02d}", "G-1", slip)),
+                          encoding="utf-8")
+    t0 = time.perf_counter()
+    main(["check", str(subs), "--xlsx", str(subs.parent / "marks.xlsx"), "--quiet"])
+    return time.perf_counter() - t0
+
+
+def group_goals(samples: Path) -> list[Goal]:
+    if not (samples / "group" / "group.csv").exists():
+        return [Goal("group", "samples/group is needed", float("nan"), None)]
+    with tempfile.TemporaryDirectory(prefix="plans-group-bench-") as tmp:
+        root = Path(tmp)
+        table = _table(samples, root)
+        made, complaint = _variants(table, root / "course")
+        out = [Goal(f"a group of 30 variants (files, keys, forms, reference sheets), --jobs 2 (≤ {VARIANTS_S:g} s)",
+                    f"{made:.1f} s" + (f" ({complaint})" if complaint else ""), made / VARIANTS_S,
+                    made <= VARIANTS_S and not complaint)]
+        if complaint:
+            return out
+        subs = root / "subs"
+        subs.mkdir()
+        took = _check(root / "course", subs)
+        out.append(Goal(f"30 submissions checked into the gradebook (≤ {CHECK_S:g} s)", f"{took:.2f} s",
+                        took / CHECK_S, took <= CHECK_S))
+    return out
+
+
+def main() -> int:
+    samples = Path(__file__).resolve().parents[2] / "samples"
+    for g in group_goals(samples):
+        print(g.line())
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
