@@ -14,12 +14,9 @@ from plans.errors import InputError
 #: Commands that need the renderer, listed without importing them (see plans.cli).
 _DRAWING_NAMES = {"drawings.demo": ("demo", "a step-by-step demonstration page of a scene's analysis"),
                   "drawings.note.cli": ("note", "the explanatory note of the project's files (DOCX, or PDF via LibreOffice)"),
-<<<<<<< HEAD
                   "drawings.variants": ("variants", "a group's variants from a variant table: files, keys, "
-                                                    "forms, handouts")}
-=======
+                                                    "forms, handouts"),
                   "drawings.workbench": ("serve", "the workbench: edit, solve, check and export a mechanism in the browser")}
->>>>>>> workbench
 
 
 def _formats(text: str) -> list[str]:
@@ -85,11 +82,7 @@ def draw_command(args: argparse.Namespace) -> int:
 
 #: Commands that need the renderer, each module with ``register(subparsers)``; a module
 #: that is absent is simply not offered.
-<<<<<<< HEAD
-_DRAWING_COMMANDS = ("drawings.demo", "drawings.note.cli", "drawings.variants")
-=======
-_DRAWING_COMMANDS = ("drawings.demo", "drawings.note.cli", "drawings.workbench")
->>>>>>> workbench
+_DRAWING_COMMANDS = ("drawings.demo", "drawings.note.cli", "drawings.variants", "drawings.workbench")
 
 
 def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
