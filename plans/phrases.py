@@ -55,6 +55,15 @@ PHRASES: dict[str, tuple[str, str]] = {
     "v_rpp": (
         "v_{A}{j} = v_{A}{q} + v_rel ∥ guide = v_{A}{i} + v_rel ∥ slot: they meet at {out}",
         "v_{A}{j} = v_{A}{q} + v_r ∥ направляющей = v_{A}{i} + v_r ∥ кулисе: точка {out} — пересечение этих прямых"),
+    "v_triad_s": (
+        "Assur's point S (axes {A}{D} and {B}{E} meet), a point of the base link: line through {n1} ⟂ {A}{D}, "
+        "line through {n2} ⟂ {B}{E}; they meet at {out}",
+        "особая точка Ассура S (пересечение осей {A}{D} и {B}{E}), точка базисного звена: через {n1} проводим "
+        "прямую ⟂ {A}{D}, через {n2} — прямую ⟂ {B}{E}; точка {out} — их пересечение"),
+    "v_triad_f": (
+        "v_{F} = v_S + v_{F}S = v_{C} + v_{F}{C}: line through {s} ⟂ S{F}, line through {n3} ⟂ {C}{F}; they meet at {out}",
+        "v_{F} = v_S + v_{F}S = v_{C} + v_{F}{C}: через {s} проводим прямую ⟂ S{F}, через {n3} — прямую ⟂ {C}{F}; "
+        "точка {out} — их пересечение"),
     "similarity": (
         "{lb}: similarity theorem on link {link} ({name} of link {link} from {ref})",
         "{lb}: по теореме подобия на звене {link} (точка {name} звена {link} от {ref})"),
@@ -85,6 +94,14 @@ PHRASES: dict[str, tuple[str, str]] = {
         "v_r turned 90° in the sense of ω{g}",
         "кориолисово ускорение a^k_{label} = 2·ω{g}·v_r = 2·{w:.5g}·{v:.5g} = {ak:.6g} м/с²: {mm:.3f} мм, "
         "вектор v_r повёрнут на 90° в сторону ω{g}"),
+    "a_triad_s": (
+        "a_S: line ⟂ {A}{D} through {m1} and line ⟂ {B}{E} through {m2} (after the normal terms) meet at {out}",
+        "a_S: через {m1} проводим прямую ⟂ {A}{D}, через {m2} — прямую ⟂ {B}{E} (после нормальных ускорений); "
+        "точка {out} — их пересечение"),
+    "a_triad_f": (
+        "a_{F}S^τ ⟂ S{F} through {ms} and a_{F}{C}^τ ⟂ {C}{F} through {m3} meet at {out}",
+        "через {ms} проводим прямую a_{F}S^τ ⟂ S{F}, через {m3} — прямую a_{F}{C}^τ ⟂ {C}{F}; "
+        "точка {out} — их пересечение"),
     "a_rrr": (
         "a_{B}{A}^τ ⟂ {A}{B} through {m1} and a_{B}{C}^τ ⟂ {C}{B} through {m3} meet at {out}",
         "через {m1} проводим прямую a_{B}{A}^τ ⟂ {A}{B}, через {m3} — прямую a_{B}{C}^τ ⟂ {C}{B}; "

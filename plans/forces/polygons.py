@@ -229,6 +229,7 @@ def solve_applied(scene: Scene, kin: Kinematics, loads: Loads, applied: AppliedL
     for m in applied.moments:
         moments[m.link].append(m)
     solved: list[GroupForces] = []
+    kin.structure.no_triad(scene.path, "force analysis")
     for g in reversed(kin.structure.groups):
         gf = _SOLVERS[g.kind](kin, g, forces, moments)
         solved.append(gf)

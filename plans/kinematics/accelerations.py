@@ -21,7 +21,7 @@ from plans.kinematics.dyads import (
     meet,
     read_rates,
 )
-from plans.kinematics.structure import Group
+from plans.kinematics.structure import Group, TriadGroup
 from plans.phrases import phrase
 from plans.units import clean
 
@@ -72,7 +72,12 @@ def acceleration_plan(snap: Scheme, mu: float, vb: Builder, pencil: Pencil, prot
     b.seg(b.pole, a_lab, "absolute", f"a_{A_name}", abs(snap.a(d.link, Apos)))
     link_points(b, d.link)
     for g in snap.kin.structure.groups:
-        _ACC[g.kind](b, g, vr)
+        if isinstance(g, TriadGroup):  # class III: by Assur's special point
+            from plans.kinematics.triad_plans import a_triad
+
+            a_triad(b, g, vr)
+        else:
+            _ACC[g.kind](b, g, vr)
         for lid in g.links:
             link_points(b, lid)
     read_rates(b)

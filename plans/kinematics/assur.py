@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from plans.errors import Indeterminate, Locked, NotAssemblable
-from plans.kinematics.structure import Group, Structure
+from plans.kinematics.structure import Group, Structure, TriadGroup
 from plans.lines import cross
 from plans.scene.model import Joint, Scene
 from plans.tolerances import ASSEMBLY_REL, LOCK_SIN
@@ -50,9 +50,16 @@ def _program(scene: Scene, st: Structure) -> list:
     """(solver, group, constants) per group, derived once per scene and structure."""
     done = scene.memo.get("exact")
     if done is None or done[0] is not st:
-        done = scene.memo["exact"] = (st, [(_SOLVERS[g.kind], g, _CONSTANTS[g.kind](scene, g))
-                                           for g in st.groups])
+        done = scene.memo["exact"] = (st, [_step(scene, g) for g in st.groups])
     return done[1]
+
+
+def _step(scene: Scene, g: Any) -> tuple:
+    if isinstance(g, TriadGroup):
+        from plans.kinematics import triad_exact  # only mechanisms with a class-III group
+
+        return triad_exact.solve_group, g, triad_exact.constants(scene, g)
+    return _SOLVERS[g.kind], g, _CONSTANTS[g.kind](scene, g)
 
 
 def _fail(cls, ctx: _Ctx, g: Group, mask, point: str, why: str):

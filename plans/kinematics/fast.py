@@ -120,6 +120,8 @@ def _real(z: complex) -> complex | float:
 
 
 def _make_plan(scene: Scene, st: Structure) -> Plan | None:
+    if st.triads():  # a class-III group is placed by Newton: general path
+        return None
     steps: list[tuple] = []
     frame = scene.frame
     for g in st.groups:

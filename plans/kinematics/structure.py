@@ -9,6 +9,7 @@ p, J2 joins i to j, J3 joins j to a known link q.  Its kind is the letters of
 from __future__ import annotations
 
 from dataclasses import field
+from typing import Any, cast
 
 from plans.errors import InputError
 from plans.records import frozen
@@ -40,6 +41,34 @@ class Group:
 
 
 @frozen
+class TriadGroup:
+    """A class-III group of the third order: a base link with three inner pairs D, E, F and
+    three leashes joining them to pairs A, B, C of known links (all pairs R).
+    ``links = (base, l1, l2, l3)``, ``joints = ((A, D), (B, E), (C, F))`` as (outer, inner)
+    pairs of each leash, ``known = (p1, p2, p3)`` the links carrying A, B, C."""
+
+    kind: str  # "RRR": every leash is a revolute dyad's image
+    links: tuple[int, int, int, int]
+    joints: tuple[tuple[Joint, Joint], tuple[Joint, Joint], tuple[Joint, Joint]]
+    known: tuple[int, int, int]
+    branch: int
+    name: str = field(init=False, compare=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "name", "-".join(str(k) for k in sorted(self.links)))
+
+    @property
+    def point(self) -> str:
+        """The base link's first inner pair (the point its place is found from)."""
+        return self.joints[0][1].point
+
+    def to_json(self) -> dict:
+        return {"name": self.name, "kind": self.kind, "class": 3, "order": 3, "links": list(self.links),
+                "attached_to": list(self.known), "point": self.point, "branch": self.branch,
+                "base": self.links[0], "leashes": [[o.point, i.point] for o, i in self.joints]}
+
+
+@frozen
 class Structure:
     """The mechanism's structure: the initial link and its Assur groups in the order they are solved."""
 
@@ -57,16 +86,28 @@ class Structure:
     def formula(self) -> str:
         return (f"W = 3n - 2p5 - p4 = 3*{self.n} - 2*{self.p5} - {self.p4} = {self.mobility}; "
                 f"initial link {self.initial[0]}-{self.initial[1]}"
-                + "".join(f" + {g.kind} group {g.name}" for g in self.groups))
+                + "".join(f" + {'class-III ' if isinstance(g, TriadGroup) else ''}{g.kind} group {g.name}"
+                          for g in self.groups))
 
     def to_json(self) -> dict:
         return {
             "n": self.n, "p5": self.p5, "p4": self.p4, "W": self.mobility,
             "initial_link": list(self.initial),
-            "groups": [{"name": g.name, "kind": g.kind, "links": list(g.links),
+            "groups": [g.to_json() if isinstance(g, TriadGroup) else
+                       {"name": g.name, "kind": g.kind, "links": list(g.links),
                         "attached_to": list(g.known), "point": g.point, "branch": g.branch}
                        for g in self.groups],
         }
+
+    def triads(self) -> list[TriadGroup]:
+        # the groups are typed as dyads for the many readers that handle only those
+        return [g for g in cast(tuple[Any, ...], self.groups) if isinstance(g, TriadGroup)]
+
+    def no_triad(self, path: str, what: str) -> None:
+        """Refuse, in one line, what is not yet done for a class-III group."""
+        for g in self.triads():
+            raise InputError(f"{what} of a class III group is not supported yet: group {g.kind} {g.name}",
+                             file=path, field="outputs")
 
 
 def analyse(scene: Scene) -> Structure:
@@ -124,6 +165,8 @@ def _groups(scene: Scene, known: set[int]) -> list[Group]:
             if found is not None:
                 break
         if found is None:
+            found = cast(Group, _triad(scene, known, remaining, by_link, between))
+        if found is None:
             raise _failer(scene.path)("joints", f"links {sorted(remaining)} do not form class-II Assur "
                                                 f"groups attached to links {sorted(known)}")
         groups.append(found)
@@ -141,6 +184,34 @@ def _groups(scene: Scene, known: set[int]) -> list[Group]:
                     else:
                         ready.discard(m)
     return groups
+
+
+def _triad(scene: Scene, known: set[int], remaining: set[int], by_link: dict, between: dict) -> TriadGroup | None:
+    """The first triad among the unknown links: a base link b (no pair with a known link)
+    joined by one pair each to three leashes, each leash joined by one pair to a known
+    link and having no other pair yet."""
+    for b in sorted(remaining):
+        if any(jt.other(b) in known for jt in by_link.get(b, ())):
+            continue
+        leashes = []
+        for k in sorted({jt.other(b) for jt in by_link.get(b, ())} & remaining):
+            outer = [jt for jt in by_link[k] if jt.other(k) in known]
+            if len(outer) == 1 and len(between[(min(b, k), max(b, k))]) == 1:
+                leashes.append((k, outer[0], between[(min(b, k), max(b, k))][0]))
+        if len(leashes) < 3:
+            continue
+        leashes = leashes[:3]
+        name = "-".join(str(x) for x in sorted([b] + [k for k, _, _ in leashes]))
+        for k, o, i in leashes:
+            if o.kind != "R" or i.kind != "R":
+                raise _failer(scene.path)(f"joints (triad {name})", "a class-III group is solved with revolute "
+                                                                    f"pairs only; link {k} has a prismatic pair")
+        branch = scene.branches.get(name, scene.branches.get(leashes[0][2].point, 1))
+        return TriadGroup(kind="RRR", links=(b, leashes[0][0], leashes[1][0], leashes[2][0]),
+                          joints=tuple((o, i) for _, o, i in leashes),  # type: ignore[arg-type]
+                          known=tuple(o.other(k) for k, o, _ in leashes),  # type: ignore[arg-type]
+                          branch=branch)
+    return None
 
 
 def _failer(path: str):

@@ -21,7 +21,7 @@ from plans.kinematics.dyads import (
     read_rates,
     rel_seg,
 )
-from plans.kinematics.structure import Group
+from plans.kinematics.structure import Group, TriadGroup
 from plans.phrases import phrase
 
 
@@ -45,7 +45,12 @@ def velocity_plan(snap: Scheme, mu: float, pencil: Pencil, protocol: bool = Fals
     b.seg(b.pole, lab(A_name), "absolute", f"v_{A_name}", abs(snap.v(d.link, Apos)))
     link_points(b, d.link)
     for g in snap.kin.structure.groups:
-        _VEL[g.kind](b, g)
+        if isinstance(g, TriadGroup):  # class III: by Assur's special point
+            from plans.kinematics.triad_plans import v_triad
+
+            v_triad(b, g)
+        else:
+            _VEL[g.kind](b, g)
         for lid in g.links:
             link_points(b, lid)
     read_rates(b)

@@ -8,6 +8,8 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from plans.kinematics.structure import TriadGroup
+
 from .model import Figure, Frac, Num, Section, Sym, Table, Text, Vec, fmt, num, row
 from .words import quantity, say, symbols, unit, w
 
@@ -201,6 +203,8 @@ def _vector_equations(item: Any, pos: dict, kind: str, lang: str, sec: Section) 
     """Each group's vector equation as a formula: v̄_B = v̄_A + v̄_BA (the joint pins)."""
     q = "v" if kind == "velocity" else "a"
     for g in item.solved.structure.groups:
+        if isinstance(g, TriadGroup):  # class III: its equations are in the steps' sentences
+            continue
         if g.kind in ("RRR", "RRP"):
             A, B = g.joints[0].point, g.joints[1].point
             if kind == "velocity":

@@ -1,0 +1,172 @@
+"""The exact analysis of a class-III group (triad) inside the mechanism: its place by
+:func:`plans.kinematics.triad.place`, its rates by :func:`plans.kinematics.triad.rates`.
+
+The place has no closed form, so the branch is kept by continuation: the group is assembled
+once at φ = 0 (of all its assemblies there, the first with the base's pair D on the side
+``branch`` of the line AB: +1 left, −1 right, the base's angle breaking ties) and carried
+round the crank's turn in 1° steps; each asked-for angle starts its Newton solve from the
+nearest step.  The steps are worked out once per scene.
+"""
+
+from __future__ import annotations
+
+import cmath
+import math
+from dataclasses import replace
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from plans.errors import Locked, NotAssemblable
+from plans.kinematics.assur import _at, _Motion, _place
+from plans.kinematics.structure import Structure, TriadGroup, analyse
+from plans.kinematics.triad import SpecialPosition, Triad, place, rates
+from plans.scene.model import Scene
+
+if TYPE_CHECKING:
+    from plans.kinematics.exact import _Ctx
+
+STEP_DEG = 1.0
+
+
+def constants(scene: Scene, g: TriadGroup) -> tuple:
+    """The group's triad (base frame: the base link's own, origin moved to D), the local
+    coordinates of A, B, C on their links and of the leashes' ends."""
+    base = scene.links[g.links[0]]
+    (oA, iD), (oB, iE), (oC, iF) = g.joints
+    zD = base.points[iD.point]
+    lengths = []
+    for k, (o, i) in zip(g.links[1:], g.joints, strict=True):
+        leash = scene.links[k]
+        lengths.append(abs(leash.points[i.point] - leash.points[o.point]))
+    t = Triad(base.points[iE.point] - zD, base.points[iF.point] - zD, lengths[0], lengths[1], lengths[2],
+              name=f"{g.kind} {g.name}")
+    outer = tuple((p, _local(scene, p, o.point)) for p, (o, _) in zip(g.known, g.joints, strict=True))
+    return t, zD, outer
+
+
+def _local(scene: Scene, link: int, name: str) -> complex:
+    return scene.frame_points[name] if link == scene.frame else scene.links[link].points[name]
+
+
+def _phase(phi: float) -> float:
+    return phi % 360.0
+
+
+def _track(scene: Scene, st: Structure, g: TriadGroup, t: Triad, outer_of) -> tuple[np.ndarray, list]:
+    """(step angles, (r_D, θ) at each) over one turn from φ = 0, computed once per scene."""
+    key = ("triad", g.name)
+    done = scene.memo.get(key)
+    if done is not None:
+        return done
+    from plans.kinematics.exact import solve
+
+    before = replace(st, groups=st.groups[:st.groups.index(g)])
+    grid = np.arange(0.0, 360.0 + STEP_DEG / 2, STEP_DEG)
+    kin = solve(scene, grid, order=0, structure=before)
+    outs = [kin.point_on(p, z)[0] for p, z in outer_of]
+    state = _assemble(t, (complex(outs[0][0]), complex(outs[1][0]), complex(outs[2][0])), g)
+    states = []
+    for k, phi in enumerate(grid.tolist()):
+        outer = (complex(outs[0][k]), complex(outs[1][k]), complex(outs[2][k]))
+        try:
+            state = place(t, outer, state)
+        except SpecialPosition as exc:
+            raise NotAssemblable(str(exc).split(": ", 1)[-1], group=t.name, point=g.point, phi_deg=phi) from None
+        states.append(state)
+    done = scene.memo[key] = (grid, states)
+    return done
+
+
+def _assemble(t: Triad, outer: tuple[complex, complex, complex], g: TriadGroup) -> tuple[complex, float]:
+    """The group's assembly at φ = 0 chosen by its branch, from Newton solves started all round."""
+    A, B = outer[0], outer[1]
+    found: list[tuple[complex, float]] = []
+    for a in range(12):
+        for b in range(12):
+            guess = (A + t.l1 * cmath.exp(1j * math.pi * a / 6), math.pi * b / 6)
+            try:
+                rD, th = place(t, outer, guess)
+            except SpecialPosition:
+                continue
+            th = math.remainder(th, 2 * math.pi)
+            if all(abs(rD - r) > 1e-7 * t.size or abs(math.remainder(th - h, 2 * math.pi)) > 1e-7 for r, h in found):
+                found.append((rD, th))
+    if not found:
+        raise NotAssemblable("the leashes cannot reach the base link's pairs", group=t.name, point=g.point, phi_deg=0.0)
+    side = [s for s in found if ((B - A).conjugate() * (s[0] - A)).imag * g.branch > 0] or found
+    return min(side, key=lambda s: (round(s[1], 9), s[0].real, s[0].imag))
+
+
+def solve_group(ctx: _Ctx, g: TriadGroup, k: tuple) -> None:
+    t, zD, outer_of = k
+    st = analyse(ctx.scene)
+    grid, states = _track(ctx.scene, st, g, t, outer_of)
+    got = [_at(ctx, p, z) for p, z in outer_of]
+    scalar = type(got[0][0]) is not np.ndarray
+    phis = [float(x) for x in np.atleast_1d(np.asarray(ctx.phis, dtype=float))]
+    n = len(phis)
+
+    def col(x: Any) -> Any:
+        return np.broadcast_to(np.asarray(x, dtype=complex), (n,)) if x is not None else None
+
+    R = [col(r) for r, _, _ in got]
+    V: Any = [col(v) for _, v, _ in got] if ctx.order >= 1 else None
+    A: Any = [col(a) for _, _, a in got] if ctx.order >= 2 else None
+    rD = np.empty(n, complex)
+    th = np.empty(n)
+    vD = np.empty(n, complex)
+    w = np.empty(n)
+    aD = np.empty(n, complex)
+    e = np.empty(n)
+    for m, phi in enumerate(phis):
+        outer = (complex(R[0][m]), complex(R[1][m]), complex(R[2][m]))
+        start = states[int(round(_phase(phi) / STEP_DEG))]
+        try:
+            rD[m], th[m] = place(t, outer, start)
+            if V is not None:
+                vo = (complex(V[0][m]), complex(V[1][m]), complex(V[2][m]))
+                ao = None if A is None else (complex(A[0][m]), complex(A[1][m]), complex(A[2][m]))
+                x = rates(t, outer, complex(rD[m]), float(th[m]), vo, ao)
+                vD[m], w[m] = x[0], x[1]
+                if ao is not None:
+                    aD[m], e[m] = x[2], x[3]
+        except SpecialPosition as exc:
+            raise Locked(str(exc).split(": ", 1)[-1], group=t.name, point=g.point, phi_deg=phi) from None
+
+    def out(x: np.ndarray) -> Any:
+        return complex(x[0]) if scalar and x.dtype == complex else float(x[0]) if scalar else x
+
+    base = g.links[0]
+    rot = np.exp(1j * th)
+    mb = _place(ctx, base, out(rot), out(rD), zD)
+    if ctx.order >= 1:
+        _set_rates(ctx, mb, out(rD), out(vD), out(aD), out(w), out(e))
+    inner = (rD, rD + rot * t.zE, rD + rot * t.zF)
+    for leash, (o, i), Q in zip(g.links[1:], g.joints, range(3), strict=True):
+        L = ctx.scene.links[leash]
+        zq, zp = L.points[o.point], L.points[i.point]
+        P = inner[Q]
+        d = P - R[Q]
+        rot_l = d / abs(d) / ((zp - zq) / abs(zp - zq))
+        ml = _place(ctx, leash, out(rot_l), out(R[Q]), zq)
+        if ctx.order >= 1:
+            arm = P - rD
+            vP = vD + 1j * w * arm
+            wl = (d.conjugate() * (vP - V[Q])).imag / abs(d) ** 2
+            el = aPl = None
+            if ctx.order >= 2:
+                aPl = aD + (1j * e - w * w) * arm
+                el = (d.conjugate() * (aPl - A[Q])).imag / abs(d) ** 2
+            _set_rates(ctx, ml, out(R[Q]), out(V[Q]), None if A is None else out(A[Q]), out(wl),
+                       None if el is None else out(el))
+
+
+def _set_rates(ctx: _Ctx, m: _Motion, anchor: Any, v: Any, a: Any, omega: Any, eps: Any) -> None:
+    """Rates of a placed link from one point's v, a and its ω, ε."""
+    rel = m.r0 - anchor
+    m.omega = omega
+    m.v0 = v + 1j * omega * rel
+    if ctx.order >= 2:
+        m.eps = eps
+        m.a0 = a + (1j * eps - omega * omega) * rel
