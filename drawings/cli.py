@@ -15,7 +15,8 @@ from plans.errors import InputError
 _DRAWING_NAMES = {"drawings.demo": ("demo", "a step-by-step demonstration page of a scene's analysis"),
                   "drawings.note.cli": ("note", "the explanatory note of the project's files (DOCX, or PDF via LibreOffice)"),
                   "drawings.variants": ("variants", "a group's variants from a variant table: files, keys, "
-                                                    "forms, handouts")}
+                                                    "forms, handouts"),
+                  "drawings.workbench": ("serve", "the workbench: edit, solve, check and export a mechanism in the browser")}
 
 
 def _formats(text: str) -> list[str]:
@@ -81,7 +82,7 @@ def draw_command(args: argparse.Namespace) -> int:
 
 #: Commands that need the renderer, each module with ``register(subparsers)``; a module
 #: that is absent is simply not offered.
-_DRAWING_COMMANDS = ("drawings.demo", "drawings.note.cli", "drawings.variants")
+_DRAWING_COMMANDS = ("drawings.demo", "drawings.note.cli", "drawings.variants", "drawings.workbench")
 
 
 def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:

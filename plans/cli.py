@@ -100,6 +100,9 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
         s.add_argument("--csv", metavar="PATH", help="write the tables over the positions as CSV ('-' for stdout)")
         s.add_argument("--protocol", action="store_true", help="print the construction protocol")
         s.add_argument("--quiet", action="store_true", help="no table on stdout")
+        from plans.language import add_option
+
+        add_option(s)
         s.set_defaults(func=_solve)
     register_commands(sub, _COMMAND_MODULES, argv)
     return parser
@@ -139,7 +142,8 @@ def _solve(args: argparse.Namespace) -> int:
     from plans.scene.model import load_scene
 
     refuse_input(args.json, args.scene)
-    sol = solve_scene(load_scene(args.scene))
+    scene = load_scene(args.scene)
+    sol = solve_scene(scene)
     if getattr(args, "csv", None):
         from plans.cycle.results import cycle_csv
 
@@ -155,7 +159,9 @@ def _solve(args: argparse.Namespace) -> int:
         with atomic_file(args.json) as fh:
             write_json(sol, lambda text: fh.write(text.encode("utf-8")))
     if not args.quiet:
-        print(table(sol, protocol=args.protocol))
+        from plans.language import choose
+
+        print(table(sol, protocol=args.protocol, lang=choose(getattr(args, "language", None), scene.raw)))
     return 0
 
 

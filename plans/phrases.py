@@ -21,6 +21,8 @@ from typing import Any
 
 import numpy as np
 
+from plans.language import TERMS
+
 #: The languages a protocol can be written in.
 LANGUAGES = ("en", "ru")
 
@@ -116,8 +118,8 @@ PHRASES: dict[str, tuple[str, str]] = {
     "f_sum": ("{x}", "{x}"),
     "f_closes_link": ("closes the polygon of link {i}", "замыкает многоугольник сил звена {i}"),
     # ---- moment equations (the force protocol)
-    "m_term_force": ("{sign}{label}·h ({F:num} N × {mm:.2f} mm = {h:num} m)",
-                     "{sign}{label}·h ({F:num} Н × {mm:.2f} мм = {h:num} м)"),
+    "m_term_force": ("{sign}{label}·h (h = {mm:.2f} mm: {F:num} N × {h:num} m = {M:num} N·m)",
+                     "{sign}{label}·h (h = {mm:.2f} мм: {F:num} Н × {h:num} м = {M:num} Н·м)"),
     "m_term_couple": ("{sign}{label} ({M:num} N·m)", "{sign}{label} ({M:num} Н·м)"),
     "m_equation": (
         "{name} = 0: {known}; known moments sum to {total:num} N·m (ccw +), so {unknown}.",
@@ -188,9 +190,11 @@ PHRASES: dict[str, tuple[str, str]] = {
                    " F_bal = {w:.5g} {unit} вместо {r:.5g} {unit} ({pct})."),
 }
 
+PHRASES.update(TERMS)  # the terminal's lines: one catalogue, written one way
+
 #: Units written in Russian (a value named ``unit...`` is one of these).
 UNITS_RU = {"N": "Н", "N·m": "Н·м", "m/s": "м/с", "m/s²": "м/с²", "rad/s": "рад/с", "rad/s²": "рад/с²",
-            "mm": "мм", "m": "м", "J": "Дж", "kg·m²": "кг·м²"}
+            "mm": "мм", "cm": "см", "m": "м", "J": "Дж", "kg·m²": "кг·м²"}
 
 _BAL = r"\b([FM])_bal\b"  # F_bal, M_bal as words (compiled by ``re`` when Russian is first written)
 
@@ -230,6 +234,11 @@ def phrase(key: str, **args: Any) -> Phrase:
     return Phrase(key, args)
 
 
+def say(key: str, lang: str = "en", **args: Any) -> str:
+    """A line of the catalogue written at once in ``lang``."""
+    return Phrase(key, args).say(lang)
+
+
 def number(x: Any, spec: str = "", lang: str = "en") -> str:
     """One value as a protocol writes it (``spec`` as in a phrase; decimal comma in Russian)."""
     if spec == "num":
@@ -267,4 +276,4 @@ def _field(value: Any, spec: str, lang: str) -> str:
     return format(value, spec)
 
 
-__all__ = ["LANGUAGES", "PHRASES", "UNITS_RU", "Phrase", "number", "phrase"]
+__all__ = ["LANGUAGES", "PHRASES", "UNITS_RU", "Phrase", "number", "phrase", "say"]

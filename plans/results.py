@@ -45,11 +45,12 @@ def _xy(z: complex) -> list[float]:
     return [float(z.real), float(z.imag)]
 
 
-def to_json(sol: Solution) -> dict[str, Any]:
+def to_json(sol: Solution, steps: bool = True) -> dict[str, Any]:
     """The whole result as one dict (``plans solve --json``); :func:`write_json` writes the
-    same text position by position."""
+    same text position by position.  ``steps=False`` leaves out the construction protocol's
+    text (most of the time taken), for a page that draws the plans and reads no protocol."""
     out = _head(sol)
-    out["positions"] = list(_positions(sol))
+    out["positions"] = list(_positions(sol, steps))
     return out
 
 
@@ -82,17 +83,17 @@ def _head(sol: Solution) -> dict[str, Any]:
     return out
 
 
-def _positions(sol: Solution) -> Iterator[dict[str, Any]]:
+def _positions(sol: Solution, steps: bool = True) -> Iterator[dict[str, Any]]:
     forces: list[dict] | None = None
     if sol.forces is not None:
         from plans.forces.lever import force_json
 
         forces = force_json(sol.forces[1])
     for k in range(sol.kinematics.n):
-        yield _position(sol, k, None if forces is None else forces[k])
+        yield _position(sol, k, None if forces is None else forces[k], steps)
 
 
-def _position(sol: Solution, k: int, forces: dict | None) -> dict[str, Any]:
+def _position(sol: Solution, k: int, forces: dict | None, steps: bool = True) -> dict[str, Any]:
     kin, scene = sol.kinematics, sol.scene
     pos: dict[str, Any] = {"phi_deg": float(kin.phi_deg[k]), "points": {}, "links": {}}
     for nm in kin.point_names():
@@ -127,12 +128,12 @@ def _position(sol: Solution, k: int, forces: dict | None) -> dict[str, Any]:
         pos.update(centres_json(kin, k, sol.plans[k].readings if sol.plans else ()))
     if forces is not None:
         pos.update(forces)
-    if sol.plans or sol.forces is not None:
+    if steps and (sol.plans or sol.forces is not None):
         from plans.forces.protocol import force_steps, steps_json
 
         plans = (sol.plans[k].velocity, sol.plans[k].acceleration) if sol.plans else ()
-        steps = force_steps(sol.forces[0], sol.forces[1], k) if sol.forces is not None else ()
-        pos["steps"] = steps_json(plans, steps)
+        drawn = force_steps(sol.forces[0], sol.forces[1], k) if sol.forces is not None else ()
+        pos["steps"] = steps_json(plans, drawn)
     return pos
 
 
@@ -160,64 +161,82 @@ def _fmt(x: float | None, width: int = 12) -> str:
     return f"{x:{width}.6g}"
 
 
-def table(sol: Solution, protocol: bool = False) -> str:
-    """Per position: quantity, segment on the plan (mm), value read, exact value, difference."""
+def table(sol: Solution, protocol: bool = False, lang: str = "en") -> str:
+    """Per position: quantity, segment on the plan (mm), value read, exact value, difference;
+    in ``lang`` (a decimal comma and the textbook's symbols in Russian)."""
+    from plans.language import symbols
+    from plans.phrases import number, say
+
+    ru = lang == "ru"
+
+    def num(x: float, spec: str) -> str:
+        return number(x, spec, lang) if ru else format(x, spec)
+
     kin, scene = sol.kinematics, sol.scene
-    lines = [scene.title, sol.structure.formula(), ""]
+    title = scene.titles.get(lang, scene.title) if ru else scene.title
+    lines = [title, symbols(sol.structure.formula(), lang), ""]
     for k in range(kin.n):
-        lines.append(f"phi = {kin.phi_deg[k]:g} deg")
+        lines.append(say("t_position", lang, phi=float(kin.phi_deg[k])))
         if not sol.plans:
             for nm in kin.point_names():
                 r = kin.point(nm)[0][k]
-                lines.append(f"  {nm:6s} x = {r.real:.6g} m  y = {r.imag:.6g} m")
+                lines.append(say("t_point", lang, nm=f"{nm:6s}", x=r.real, y=r.imag))
             lines.append("")
             continue
         pp = sol.plans[k]
         for g, c in kin.conditions.items():
             if c[k] > ILL_CONDITIONED:
-                lines.append(f"  warning: group {g} is ill-conditioned here (condition number {c[k]:.1e}: "
-                             f"its construction lines meet at {1 / c[k]:.1e} rad)")
+                lines.append(say("t_ill", lang, g=g, c=float(c[k]), a=float(1 / c[k])))
         for plan in (pp.velocity, pp.acceleration):
             if plan is None:
                 continue
             unit = "mm/(m/s)" if plan.kind == "velocity" else "mm/(m/s^2)"
             style = scene.scale_style
-            sc = f"mu = {plan.scale:.6g} {unit}" if style == "mu" else \
-                f"K = {1 / plan.scale:.6g} {unit.split('/', 1)[1].strip('()')}/mm"
-            lines.append(f"  {plan.kind} plan, {sc}")
+            sc = say("t_mu", lang, mu=plan.scale, unit=unit) if style == "mu" else \
+                say("t_k", lang, k=1 / plan.scale, unit=unit.split('/', 1)[1].strip('()'))
+            lines.append(symbols(say("t_plan", lang, kind=say("t_" + plan.kind, lang) if ru else plan.kind,
+                                     sc=sc), lang))
             if plan.degenerate:
-                lines += [f"    note: {d}" for d in plan.degenerate]
-        lines.append(f"  {'quantity':14s} {'segment':>10s} {'mm':>10s} {'read':>12s} {'exact':>12s} "
-                     f"{'difference':>12s}  unit")
+                lines += [symbols(say("t_note", lang, d=d), lang) for d in plan.degenerate]
+        w = {key: say("w_" + key, lang) for key in ("quantity", "segment", "mm", "read", "exact", "difference",
+                                                     "unit")}
+        lines.append(f"  {w['quantity']:14s} {w['segment']:>10s} {w['mm']:>10s} "
+                     f"{w['read']:>12s} {w['exact']:>12s} {w['difference']:>12s}  {w['unit']}")
         for r in pp.readings:
             seg = r.segment or ""
-            mm = f"{r.length_mm:10.3f}" if r.length_mm is not None else " " * 9 + "-"
-            lines.append(f"  {r.quantity:14s} {seg:>10s} {mm} {_fmt(r.value)} {_fmt(r.exact)} "
-                         f"{r.difference:12.2e}  {r.unit}")
+            mm = f"{num(r.length_mm, '10.3f')}" if r.length_mm is not None else " " * 9 + "-"
+            if ru:
+                q, seg, u = symbols(r.quantity, lang), symbols(seg, lang), symbols(r.unit, lang)
+                lines.append(f"  {q:14s} {seg:>10s} {mm} {_fmt(r.value)} {_fmt(r.exact)} "
+                             f"{r.difference:12.2e}  {u}".replace(".", ","))
+            else:
+                lines.append(f"  {r.quantity:14s} {seg:>10s} {mm} {_fmt(r.value)} {_fmt(r.exact)} "
+                             f"{r.difference:12.2e}  {r.unit}")
         if sol.forces is not None:
             from plans.forces import lever as _lever
 
             if hasattr(_lever, "table_lines"):
-                lines += _lever.table_lines(sol.forces[0], sol.forces[1], k)
+                lines += _lever.table_lines(sol.forces[0], sol.forces[1], k, lang)
         if protocol:
             for plan in (pp.velocity, pp.acceleration):
                 if plan is not None:
-                    lines.append(f"  construction of the {plan.kind} plan:")
-                    lines += ["   " + s for s in plan.protocol().splitlines()]
+                    lines.append(say("t_construction", lang, kind=say("t_" + plan.kind, lang) if ru else plan.kind))
+                    lines += ["   " + symbols(s, lang) for s in plan.protocol(lang).splitlines()]
             if sol.forces is not None:
                 from plans.forces import protocol as _protocol
 
                 fa, lv = sol.forces
-                lines += _protocol.protocol_lines(_protocol.force_steps(fa, lv, k))
+                lines += [symbols(s, lang) for s in
+                          _protocol.protocol_lines(_protocol.force_steps(fa, lv, k), lang)]
         lines.append("")
     if sol.cycle is not None:
         from plans.cycle.results import cycle_text
 
-        lines.append(cycle_text(sol.cycle))
+        lines.append(cycle_text(sol.cycle, lang))
     if sol.forces is not None and sol.forces[0].friction is not None:
         from plans.forces.friction import cycle_line
 
-        line = cycle_line(sol.forces[0])
+        line = cycle_line(sol.forces[0], lang)
         if line:
             lines.append(line)
     return "\n".join(lines)

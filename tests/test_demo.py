@@ -89,7 +89,7 @@ def test_lesson_is_deterministic_json():
 # --------------------------------------------------------------------------- the force protocol
 
 
-_TERM = re.compile(r"([+−])[^\s(]+ \(([-\d.e+]+) N × ([\d.]+) mm = ([-\d.e+]+) m\)")
+_TERM = re.compile(r"([+−])[^\s(]+ \(h = ([\d.]+) mm: ([-\d.e+]+) N × ([-\d.e+]+) m = ([-\d.e+]+) N·m\)")
 
 
 def test_printed_moment_equations_balance():
@@ -107,8 +107,10 @@ def test_printed_moment_equations_balance():
                 if not m or "ΣM_" not in text:
                     continue
                 moment = 0.0
-                for sign, F, _mm, h in _TERM.findall(text.split(";")[0]):
+                for sign, _mm, F, h, M in _TERM.findall(text.split(";")[0]):
                     moment += (1 if sign == "+" else -1) * float(F) * float(h)
+                    # force × arm is printed as a moment (N·m), not as a length
+                    assert float(M) == pytest.approx(float(F) * float(h), rel=2e-5, abs=1e-9), text
                 for sign, M in re.findall(r"([+−])M_\w+ \(([\d.e+-]+) N·m\)", text.split(";")[0]):
                     moment += (1 if sign == "+" else -1) * float(M)
                 l, tau = float(m.group(1)), float(m.group(3))
@@ -571,7 +573,8 @@ def test_moment_steps_draw_each_printed_arm_on_the_scheme(name):
         if s["op"] != "moment":
             continue
         printed = {label: float(h) for _sign, label, h in
-                   re.findall(r"([+−])(\w+)·h \([\d.e+-]+ N × [\d.]+ mm = ([\d.e+-]+) m\)", s["text"].split(";")[0])}
+                   re.findall(r"([+−])(\w+)·h \(h = [\d.]+ mm: [\d.e+-]+ N × ([\d.e+-]+) m = [\d.e+-]+ N·m\)",
+                              s["text"].split(";")[0])}
         for a in s.get("arms", []):
             P, foot, at = (complex(*a[key]) for key in ("about", "foot", "at"))
             arm, along = foot - P, foot - at

@@ -440,7 +440,14 @@ def measure(samples: Path, log: Callable[[str], None] | None = None, with_peers:
     log("goals: a group's course ...")
     from plans.accuracy.group_bench import group_goals
 
-    goals += group_goals(samples)
+    log("goals: the workbench ...")
+    from plans.accuracy.workbench_bench import workbench_goals
+
+    if quick:  # a minute of a whole group and a browser: the full bench measures them
+        goals += [Goal("a group's course", "skipped: measured by the full bench", math.nan, None),
+                  Goal("workbench", "skipped: measured by the full bench", math.nan, None)]
+    else:
+        goals += group_goals(samples) + workbench_goals(samples)
     return {"goals": [asdict(g) for g in goals],
             "peers": [{k: v for k, v in asdict(r).items() if k != "runner"} for r in runs]}
 

@@ -342,24 +342,26 @@ def _n(x: float, width: int = 9, digits: int = 4) -> str:
     return f"{x:{width}.{digits}g}"
 
 
-def table_lines(poly: Polygon) -> list[str]:
+def table_lines(poly: Polygon, lang: str = "en") -> list[str]:
     """The seed's analytic table: β_i, cos, sin, p_i, (l_i,) p_i l_i cos, p_i l_i sin, Σ."""
+    ru = lang == "ru"
     moment = poly.quantity == "moment"
-    angle = "beta_i" if poly.order == 1 else "2beta_i"
-    head = f"  {'No':>3} {angle:>9} {'cos':>9} {'sin':>9} {'p_i':>9}"
+    angle = ("beta_i" if poly.order == 1 else "2beta_i") if not ru else ("β_i" if poly.order == 1 else "2β_i")
+    head = f"  {'No' if not ru else '№':>3} {angle:>9} {'cos':>9} {'sin':>9} {'p_i':>9}"
     head += f" {'l_i':>9} {'p l cos':>9} {'p l sin':>9}" if moment else f" {'p cos':>9} {'p sin':>9}"
-    head += f" {'N*m' if moment else 'N':>11}"
+    head += f" {('N*m' if moment else 'N') if not ru else ('Н·м' if moment else 'Н'):>11}"
     lines = [head]
     for r in poly.rows:
         c, s = math.cos(r.angle), math.sin(r.angle)
         line = f"  {r.cylinder:>3} {_n(_deg(r.angle))} {_n(c)} {_n(s)} {_n(r.p)}"
         line += f" {_n(r.l)}" if moment else ""
         line += f" {_n(r.p * r.l * c)} {_n(r.p * r.l * s)} {_n(r.p * r.l * poly.unit, 11, 7)}"
-        lines.append(line)
+        lines.append(line.replace(".", ",") if ru else line)
     z = poly.closing
     pad = 10 * (5 if moment else 4)
     total = 0.0 if poly.closed else abs(z) * poly.unit
-    lines.append(f"  {'sum':>3}{' ' * (pad - 3)} {_n(z.real)} {_n(z.imag)} {_n(total, 11, 7)}")
+    line = f"  {'sum' if not ru else 'Σ':>3}{' ' * (pad - 3)} {_n(z.real)} {_n(z.imag)} {_n(total, 11, 7)}"
+    lines.append(line.replace(".", ",") if ru else line)
     return lines
 
 
@@ -367,32 +369,45 @@ _NAMES = {"rotating": "rotating masses", "first_order": "reciprocating, first or
           "second_order": "reciprocating, second order"}
 
 
-def report(b: Balance) -> str:
-    """What ``plans balance`` prints: tables, resultants, counterweights."""
+def _note(text: str, lang: str) -> str:
+    """A note of the analysis in ``lang`` (a fixed sentence of the catalogue where it is one)."""
+    if lang == "en":
+        return text
+    from plans.language import TERMS
+
+    for key in ("b_note_against", "b_note_second"):
+        if text == TERMS[key][0]:
+            return TERMS[key][1]
+    return text
+
+
+def report(b: Balance, lang: str = "en") -> str:
+    """What ``plans balance`` prints: tables, resultants, counterweights, in ``lang``."""
+    from plans.phrases import say
+
+    ru = lang == "ru"
     e = b.engine
     out = [e.title,
-           f"{e.n} cylinders, {e.strokes}-stroke, r = {e.r:.6g} m, lambda = {e.lam:.6g}, "
-           f"omega = {e.omega:.6g} rad/s; moments about z = {e.reference_z:.6g} m, l_c = {e.arm_unit:.6g} m",
+           say("b_head", lang, n=e.n, strokes=e.strokes, r=e.r, lam=e.lam, w=e.omega, z=e.reference_z, l=e.arm_unit),
            ""]
     for quantity, res in (("force", b.forces), ("moment", b.moments)):
+        unit = ("N*m" if quantity == "moment" else "N") if not ru else ("Н·м" if quantity == "moment" else "Н")
         for kind in KINDS:
             R = res[kind]
             for poly in R.polygons:
-                branch = f", {poly.branch} polygon" if poly.branch else ""
-                out.append(f"{quantity} of the {_NAMES[kind]} (phase diagram of order {poly.order}{branch}), "
-                           f"unit {poly.unit:.6g} {'N*m' if quantity == 'moment' else 'N'}")
-                out += table_lines(poly)
-            unit = "N*m" if quantity == "moment" else "N"
-            out.append(f"  amplitude {R.amplitude:.6g} {unit} ({R.dimensionless:.4g} units), "
-                       f"phase {_deg(R.phase):.4g} deg")
+                branch = say("b_branch_" + poly.branch, lang) if poly.branch else ""
+                out.append(say("b_polygon", lang, q=say("b_" + quantity, lang), kind=say("b_" + kind, lang) if ru
+                               else _NAMES[kind], order=poly.order, branch=branch, unit=poly.unit, u=unit))
+                out += table_lines(poly, lang)
+            out.append(say("b_amplitude", lang, a=R.amplitude, u=unit, d=R.dimensionless, ph=_deg(R.phase)))
             out.append("")
     if not e.is_inline:
         from plans.balancing.banks import report_lines
 
-        out += report_lines(b.banks) + [""]
-    out.append("counterweights:" if b.counterweights else "counterweights: none needed")
+        out += report_lines(b.banks, lang) + [""]
+    out.append(say("b_counterweights" if b.counterweights else "b_no_counterweights", lang))
     for c in b.counterweights:
-        out.append(f"  {c.of:12s} plane z = {c.plane_z:.6g} m: m*r = {c.mass_radius:.6g} kg*m "
-                   f"({c.mass:.6g} kg at {c.radius:.6g} m), at {_deg(c.angle):.4g} deg from crank 1")
-    out += [f"note: {t}" for t in b.notes]
+        out.append(say("b_counterweight", lang, of=f"{c.of if not ru else say('b_cw_' + c.of, lang):12s}",
+                       z=c.plane_z, mr=c.mass_radius, m=c.mass, r=c.radius, a=_deg(c.angle)))
+    out += [say("b_note", lang, t=_note(t, lang)) for t in b.notes]
     return "\n".join(out)

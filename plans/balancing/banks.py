@@ -241,32 +241,39 @@ def analyse_banks(engine: Engine) -> BankAnalysis:
 _SHAPES = {"zero": "balanced", "circle": "a circle", "line": "a line", "ellipse": "an ellipse"}
 
 
-def report_lines(a: BankAnalysis) -> list[str]:
-    """What ``plans balance`` prints for the banks."""
+def report_lines(a: BankAnalysis, lang: str = "en") -> list[str]:
+    """What ``plans balance`` prints for the banks, in ``lang``."""
+    from plans.phrases import say
+
+    ru = lang == "ru"
     out: list[str] = []
     for b in a.banks:
         names = ", ".join(c.name for c in b.cylinders)
-        out.append(f"bank {b.number} (axis {_deg(b.axis):.4g} deg; cylinders {names}): resultants along its axis")
+        out.append(say("k_bank", lang, n=b.number, axis=_deg(b.axis), names=names))
         for quantity, polys in (("force", b.forces), ("moment", b.moments)):
-            unit = "N*m" if quantity == "moment" else "N"
+            unit = ("N*m" if quantity == "moment" else "N") if not ru else ("Н·м" if quantity == "moment" else "Н")
             for kind, p in polys.items():
-                angles = ", ".join(f"{_deg(r[1]):.4g}" for r in p.rows)
-                head = f"  {quantity} {kind.replace('_', ' ')}: polygon at [{angles}] deg, "
+                angles = ", ".join(f"{_deg(r[1]):.4g}".replace(".", "," if ru else ".") for r in p.rows)
+                what = f"{quantity} {kind.replace('_', ' ')}" if not ru else \
+                    f"{say('b_' + quantity, lang)} {say('k_' + kind, lang)}"
+                head = say("k_polygon", lang, what=what, angles=angles)
                 if p.closed:
-                    out.append(head + "closes: 0")
+                    out.append(head + say("k_closes", lang))
                     continue
                 k = "" if p.order == 1 else "2"
-                out.append(head + f"closing {abs(p.closing):.6g} units -> {p.amplitude:.6g} {unit} "
-                           f"* cos({k}alpha + {_deg(p.phase):.4g} deg)")
-    out.append("banks combined (the tip of the resultant over a turn):")
+                out.append(head + say("k_closing", lang, c=abs(p.closing), a=p.amplitude, u=unit, k=k,
+                                      ph=_deg(p.phase)))
+    out.append(say("k_combined", lang))
     for quantity, loci in (("force", a.forces), ("moment", a.moments)):
-        unit = "N*m" if quantity == "moment" else "N"
+        unit = ("N*m" if quantity == "moment" else "N") if not ru else ("Н·м" if quantity == "moment" else "Н")
         for kind, L in loci.items():
-            text = f"  {quantity} {kind.replace('_', ' ')}: {_SHAPES[L.shape]}"
+            what = f"{quantity} {kind.replace('_', ' ')}" if not ru else \
+                f"{say('b_' + quantity, lang)} {say('k_' + kind, lang)}"
+            text = f"  {what}: {_SHAPES[L.shape] if not ru else say('k_' + L.shape, lang)}"
             if L.shape != "zero":
-                where = "at alpha = 0 along" if L.shape == "circle" else "along"
-                text += (f", max {L.maximum:.6g} {unit} {where} {_deg(L.direction):.4g} deg, "
-                         f"min {L.minimum:.6g} {unit}"
-                         + ("" if L.sense == "none" else f", turning {L.sense} the crank"))
+                text += say("k_locus_circle" if L.shape == "circle" else "k_locus", lang, mx=L.maximum, u=unit,
+                            d=_deg(L.direction), mn=L.minimum)
+                text += "" if L.sense == "none" else say("k_turning", lang, s=say("k_" + L.sense, lang) if ru
+                                                         else L.sense)
             out.append(text)
     return out

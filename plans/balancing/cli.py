@@ -13,26 +13,31 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("engine", help="engine file (TOML, kind = \"engine\")")
     p.add_argument("--json", metavar="PATH", help="write the results as JSON ('-' for stdout)")
     p.add_argument("--quiet", action="store_true", help="no tables on stdout")
+    from plans.language import add_option
+
+    add_option(p)
     p.set_defaults(func=_balance)
 
 
 def _balance(args: argparse.Namespace) -> int:
     from plans.balancing.analysis import balance, report
     from plans.balancing.engine import load_engine
+    from plans.language import file_language
+    from plans.phrases import say
 
     engine = load_engine(args.engine)
     b = balance(engine)
     data = b.to_json()
-    text = report(b)
+    lang = file_language(getattr(args, "language", None), args.engine)
+    text = report(b, lang)
     if engine.lam > 0:
         from plans.balancing.exact import exact_check
 
         chk = exact_check(engine)
         data["exact_check"] = chk.to_json()
-        how = "the engine as one linkage" if chk.linkages == 1 else f"{chk.linkages} linkages, one per cylinder"
-        text += (f"\nexact check (kinetostatics of {how}, {len(chk.alpha)} positions): largest shaking force "
-                 f"{chk.max_exact:.6g} N, harmonic truncation error {chk.max_error:.6g} N; largest shaking "
-                 f"moment {chk.max_moment:.6g} N*m, truncation error {chk.max_moment_error:.6g} N*m")
+        how = say("b_one_linkage", lang) if chk.linkages == 1 else say("b_linkages", lang, n=chk.linkages)
+        text += say("b_exact", lang, how=how, n=len(chk.alpha), f=chk.max_exact, fe=chk.max_error, m=chk.max_moment,
+                    me=chk.max_moment_error)
     if args.json == "-":
         sys.stdout.write(dumps(data))
         return 0

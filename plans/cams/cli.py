@@ -19,6 +19,9 @@ def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("cam", help="a cam: motion laws, base radius, profile by inversion (JSON)")
     p.add_argument("cam", help="cam file (TOML, kind = \"cam\")")
     p.add_argument("--json", metavar="PATH", help="write the results as JSON ('-' for stdout)")
+    from plans.language import add_option
+
+    add_option(p)
     p.set_defaults(func=_run)
 
 
@@ -85,58 +88,55 @@ def results(cam: Cam) -> dict[str, Any]:
     return out
 
 
-def summary(cam: Cam, res: dict[str, Any]) -> str:
-    u = cam.unit
+def summary(cam: Cam, res: dict[str, Any], lang: str = "en") -> str:
+    """What ``plans cam`` prints, in ``lang`` (decimal comma in Russian)."""
+    from plans.phrases import UNITS_RU, say
+
+    ru = lang == "ru"
+    u = UNITS_RU.get(cam.unit, cam.unit) if ru else cam.unit
     osc = cam.follower == "oscillating"
-    lines = [f"{cam.title}: {cam.follower} follower, "
-             + ("flat face" if cam.flat else f"roller {cam.roller / cam.scale:g} {u}")
-             + f", base radius {cam.base_radius / cam.scale:g} {u}, {'ccw' if cam.sense > 0 else 'cw'}"]
+    lines = [say("c_head", lang, title=cam.title, follower=say("c_" + cam.follower, lang),
+                 face=say("c_flat", lang) if cam.flat else say("c_roller", lang, r=cam.roller / cam.scale, u=u),
+                 r0=cam.base_radius / cam.scale, u=u, sense=say("c_ccw" if cam.sense > 0 else "c_cw", lang))]
     h = max(res["s"])
-    lines.append(f"  lift {h:.4g} {'deg' if osc else u}; max |v| {max(map(abs, res['v'])):.4g} "
-                 f"{'rad/s' if osc else u + '/s'}; max |a| {max(map(abs, res['a'])):.4g} "
-                 f"{'rad/s^2' if osc else u + '/s^2'}")
-    lines.append(f"  pressure angle: rise max {res['max_pressure_angle_rise_deg']:.3f} deg "
-                 f"(permissible {math.degrees(cam.alpha_rise):g}), return max "
-                 f"{res['max_pressure_angle_return_deg']:.3f} deg (permissible {math.degrees(cam.alpha_return):g})")
+    lines.append(say("c_lift", lang, h=h, hu=say("c_deg", lang) if osc else u, v=max(map(abs, res["v"])),
+                     vu=say("c_rad_s", lang) if osc else say("c_per_s", lang, u=u), a=max(map(abs, res["a"])),
+                     au=say("c_rad_s2", lang) if osc else say("c_per_s2", lang, u=u)))
+    lines.append(say("c_pressure", lang, rise=res["max_pressure_angle_rise_deg"], prise=math.degrees(cam.alpha_rise),
+                     ret=res["max_pressure_angle_return_deg"], pret=math.degrees(cam.alpha_return)))
     if cam.flat:
-        lines.append(f"  minimum base radius (convex profile): {res['min_base_radius']:.4f} {u}")
+        lines.append(say("c_min_flat", lang, r=res["min_base_radius"], u=u))
     else:
-        where = "" if osc else f" at offset {cam.offset / cam.scale:g} {u}"
+        where = "" if osc else say("c_at_offset", lang, e=cam.offset / cam.scale, u=u)
         if res["min_base_radius"] is None:
-            line = ("  NO BASE RADIUS keeps the pressure angle within the permissible with this arm "
-                    "and pivot")
+            line = say("c_no_radius", lang)
         else:
-            line = f"  minimum base radius{where}: {res['min_base_radius']:.4f} {u} exactly"
+            line = say("c_min", lang, where=where, r=res["min_base_radius"], u=u)
         if res["min_base_radius_graphical"] is not None:
-            line += f", {res['min_base_radius_graphical']:.4f} {u} from the diagram's division points"
+            line += say("c_graphical", lang, r=res["min_base_radius_graphical"], u=u)
         lines.append(line)
         if res["min_base_radius_roller"] is not None:
-            lines.append(f"  with the roller ({cam.roller / cam.scale:g} {u}) fitting every convex part: base radius "
-                         f"{res['min_base_radius_roller']:.4f} {u} at least")
+            lines.append(say("c_roller_fit", lang, rr=cam.roller / cam.scale, r=res["min_base_radius_roller"], u=u))
         if res["best_offset"] is not None:
-            line = (f"  with the offset chosen: base radius {res['best_base_radius']:.4f} {u} "
-                    f"at offset {res['best_offset']:.4f} {u}")
+            line = say("c_best_offset", lang, r=res["best_base_radius"], e=res["best_offset"], u=u)
             fit = res["best_base_radius_roller"]
             if fit is not None and fit > res["best_base_radius"] * (1 + 1e-9):
-                line += f" ({fit:.4f} {u} for the roller to fit)"
+                line += say("c_best_fit", lang, r=fit, u=u)
             lines.append(line)
         if res["best_pivot"] is not None:
-            lines.append(f"  with the pivot moved: base radius {res['best_base_radius']:.4f} {u} "
-                         f"at pivot distance {res['best_pivot']:.4f} {u}")
-    lines.append(f"  smallest convex radius of curvature: {res['min_curvature_radius']:.4f} {u}")
+            lines.append(say("c_best_pivot", lang, r=res["best_base_radius"], d=res["best_pivot"], u=u))
+    lines.append(say("c_curvature", lang, r=res["min_curvature_radius"], u=u))
     if res["undercut"]:
         for c in res["undercut"]:
-            what = ("the flat face cannot follow: r0 + s + s'' <= 0" if cam.flat else
-                    f"the roller ({cam.roller / cam.scale:g} {u}) is bigger than the profile's radius "
-                    f"{c['min_curvature_radius']:.4f} {u}: the actual profile undercuts")
-            lines.append(f"  UNDERCUT at phi {c['from_deg']:g}..{c['to_deg']:g} deg: {what}")
+            what = (say("c_flat_fails", lang) if cam.flat else
+                    say("c_roller_big", lang, rr=cam.roller / cam.scale, r=c["min_curvature_radius"], u=u))
+            lines.append(say("c_undercut", lang, a=c["from_deg"], b=c["to_deg"], what=what))
     else:
-        lines.append("  no undercut")
+        lines.append(say("c_no_undercut", lang))
     if res["min_base_radius"] is not None and (
             res["max_pressure_angle_rise_deg"] > math.degrees(cam.alpha_rise) + 1e-9
             or res["max_pressure_angle_return_deg"] > math.degrees(cam.alpha_return) + 1e-9):
-        lines.append("  PRESSURE ANGLE above the permissible: raise the base radius to at least "
-                     f"{res['min_base_radius']:.4f} {u}")
+        lines.append(say("c_raise", lang, r=res["min_base_radius"], u=u))
     return "\n".join(lines)
 
 
@@ -152,5 +152,7 @@ def _run(args: argparse.Namespace) -> int:
         return 0
     if args.json:
         atomic_write(args.json, dumps(res))
-    print(summary(cam, res))
+    from plans.language import file_language
+
+    print(summary(cam, res, file_language(getattr(args, "language", None), args.cam)))
     return 0

@@ -82,8 +82,8 @@ def cycle_json(cr: CycleResult) -> dict[str, Any]:
     return out
 
 
-def cycle_text(cr: CycleResult) -> str:
-    parts = [text(t) for t in cr.tables]
+def cycle_text(cr: CycleResult, lang: str = "en") -> str:
+    parts = [text(t, lang=lang) for t in cr.tables]
     if cr.diagrams is not None:
         d = cr.diagrams
         lines = [f"Kinematic diagrams ({d.spec.method}, H1 = {d.pole_mm:g} mm, H2 = {d.pole2_mm:g} mm, "

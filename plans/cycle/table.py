@@ -105,22 +105,34 @@ def _cell(v: float | None) -> str:
     return f"{v:.3e}"
 
 
-def text(table: CycleTable, columns: int = 7) -> str:
-    """Blocks of ``columns`` positions, numbered 1..N as the course numbers them."""
-    lines = [table.title]
+def text(table: CycleTable, columns: int = 7, lang: str = "en") -> str:
+    """Blocks of ``columns`` positions, numbered 1..N as the course numbers them; in ``lang``."""
+    ru = lang == "ru"
+    if ru:
+        from plans.language import TERMS, symbols
+
+        known = {en: r for en, r in (TERMS["y_plans"], TERMS["y_positions"])}
+    lines = [known.get(table.title, table.title) if ru else table.title]
     n = len(table.phi_deg)
+    heads = [f"{r.label}, {r.unit}" if r.unit else r.label for r in table.rows]
+    if ru:
+        heads = [symbols(h, lang) for h in heads]
     wlab = max([len(f"{r.label}, {r.unit}") for r in table.rows] + [14])
     for start in range(0, n, columns):
         ks = range(start, min(n, start + columns))
-        lines.append(f"  {'position':<{wlab}}" + "".join(f"{k + 1:>11d}" for k in ks))
-        lines.append(f"  {'phi, deg':<{wlab}}" + "".join(f"{table.phi_deg[k]:>11.6g}" for k in ks))
-        for r in table.rows:
+        lines.append(f"  {'position' if not ru else 'положение':<{wlab}}" + "".join(f"{k + 1:>11d}" for k in ks))
+        lines.append(f"  {'phi, deg' if not ru else 'φ, °':<{wlab}}"
+                     + "".join(_comma(f"{table.phi_deg[k]:>11.6g}", ru) for k in ks))
+        for r, head in zip(table.rows, heads, strict=True):
             big = max([abs(v) for v in r.values if v is not None] + [0.0])
             cells = [None if v is None else (0.0 if abs(v) <= 1e-9 * big else v) for v in r.values]
-            head = f"{r.label}, {r.unit}" if r.unit else r.label
-            lines.append(f"  {head:<{wlab}}" + "".join(f"{_cell(cells[k]):>11s}" for k in ks))
+            lines.append(f"  {head:<{wlab}}" + "".join(_comma(f"{_cell(cells[k]):>11s}", ru) for k in ks))
         lines.append("")
     return "\n".join(lines)
+
+
+def _comma(cell: str, ru: bool) -> str:
+    return cell.replace(".", ",") if ru else cell
 
 
 def csv_text(tables: Sequence[CycleTable]) -> str:

@@ -289,7 +289,7 @@ def lesson(scene: Scene, *, phi_deg: float | None = None, frames: int = FRAMES,
     scheme = _scheme(scene, at, mu_l)
     scheme["guides"] = cycle["scheme"]["guides"]  # a guide is drawn over the whole stroke
     return {
-        "title": scene.title,
+        "title": scene.title_in(language) if language == "ru" else scene.title,
         "phi_deg": float(sol.kinematics.phi_deg[k]),
         "scheme": scheme,
         "panels": panels,

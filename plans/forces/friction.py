@@ -324,36 +324,42 @@ def efficiency_json(fa: ForceAnalysis) -> dict[str, Any] | None:
     return {**cyc, "phi_deg": [float(x) for x in fa.kin.phi_deg], "eta": [_num(x) for x in fr.efficiency]}
 
 
-def friction_lines(fa: ForceAnalysis, k: int) -> list[str]:
-    """The friction of position k as text lines for ``plans solve`` (indented two spaces)."""
+def friction_lines(fa: ForceAnalysis, k: int, lang: str = "en") -> list[str]:
+    """The friction of position k as text lines for ``plans solve`` (indented two spaces), in ``lang``."""
+    from plans.language import symbols
+    from plans.phrases import say
+
     fr: FrictionResult | None = fa.friction
     if fr is None:
         return []
     unit = "N" if fa.crank.kind == "force" else "N·m"
     eta = float(fr.efficiency[k])
-    settled = f"settled to {fr.spec.tolerance:g}" if fr.converged[k] else "did not settle: self-locking"
-    out = [f"  friction: {int(fr.iterations[k])} approximations ({settled}); balancing load "
-           f"{float(fr.frictionless.balancing[k]):.6g} {unit} without friction, "
-           + (f"{float(fa.balancing[k]):.6g} {unit} with it" if fr.converged[k] else "none with it")
-           + (f"; η = {eta:.4f}" if np.isfinite(eta) else "; η undefined")]
+    settled = say("fr_settled", lang, tol=fr.spec.tolerance) if fr.converged[k] else say("fr_locked", lang)
+    out = [symbols(say("fr_head", lang, n=int(fr.iterations[k]), settled=settled,
+                       free=float(fr.frictionless.balancing[k]), unit=unit,
+                       withit=say("fr_with", lang, b=float(fa.balancing[k]), unit=unit) if fr.converged[k]
+                       else say("fr_none", lang),
+                       eta=say("fr_eta", lang, e=eta) if np.isfinite(eta) else say("fr_no_eta", lang)), lang)]
     for p in fr.pairs:
-        kind = "couple" if p.reaction.guide is None else "force"
+        kind = say("fr_couple" if p.reaction.guide is None else "fr_force", lang)
         u = "N·m" if p.reaction.guide is None else "N"
+        name, label = f"{p.name:10s}", f"{symbols(p.label, lang):6s}"
         if p.sense[k] == 0:
-            out.append(f"    {p.name:10s} {p.label:6s} sense undetermined (relative motion stops): "
-                       f"|{kind}| ≤ {float(p.limit[k]):.6g} {u}")
+            out.append(symbols(say("fr_stops", lang, name=name, label=label, kind=kind, lim=float(p.limit[k]),
+                                   unit=u), lang))
         else:
-            out.append(f"    {p.name:10s} {p.label:6s} {kind} {float(p.load[k]):.6g} {u}, "
-                       f"loss {float(p.loss[k]):.6g} W")
+            out.append(symbols(say("fr_pair", lang, name=name, label=label, kind=kind, load=float(p.load[k]), unit=u,
+                                   loss=float(p.loss[k])), lang))
     for name in fr.self_locking(k):
-        out.append(f"    self-locking here: {name}")
+        out.append(say("fr_self_locking", lang, name=name))
     return out
 
 
-def cycle_line(fa: ForceAnalysis) -> str | None:
+def cycle_line(fa: ForceAnalysis, lang: str = "en") -> str | None:
     """η over the cycle as one line, where the positions are a whole turn."""
+    from plans.phrases import say
+
     eff = efficiency_json(fa)
     if eff is None or eff.get("cycle") is None:
         return None
-    return (f"efficiency over the cycle: η = A_useful / A_driving = {eff['A_useful']:.6g} / "
-            f"{eff['A_driving']:.6g} J = {eff['cycle']:.4f} (friction {eff['A_friction']:.6g} J)")
+    return say("fr_cycle", lang, u=eff["A_useful"], d=eff["A_driving"], e=eff["cycle"], f=eff["A_friction"])

@@ -23,7 +23,7 @@ from plans.forces.shared import RULER_MM, mu_force, nice_scale, safe_div, unit_v
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step
 from plans.kinematics.scales import round_scale
 from plans.lines import cross
-from plans.phrases import phrase
+from plans.phrases import phrase, say
 from plans.records import frozen
 from plans.units import clean, percent
 
@@ -377,7 +377,8 @@ class Reading:
                 f"{clean(self.exact, scale):.6g} {self.unit}", diff)
 
 
-def force_rows(lv: LeverAnalysis, k: int, polygons: tuple[ForcePolygon, ...] | None = None) -> list[Reading]:
+def force_rows(lv: LeverAnalysis, k: int, polygons: tuple[ForcePolygon, ...] | None = None,
+               lang: str = "en") -> list[Reading]:
     """Readable rows of position k: every polygon vector (read at μF to the ruler), the lever's
     arms, and the balancing load three ways with the coursework's % difference.  ``polygons``:
     the position's force polygons when the caller has built them already."""
@@ -389,7 +390,7 @@ def force_rows(lv: LeverAnalysis, k: int, polygons: tuple[ForcePolygon, ...] | N
         ref = max((sg.value for sg in fp.plan.segments), default=0.0)
         for sg in fp.plan.segments:
             exact = clean(sg.value, big)  # rounding noise of a vanishing force
-            rows.append(Reading(f"{sg.label} (polygon {fp.group}, μF = {fp.scale:g} mm/N)",
+            rows.append(Reading(say("r_polygon", lang, label=sg.label, g=fp.group, mu=fp.scale),
                                 fp.reading(sg.label), exact, "N", ref=ref))
     mu_l = fa.scene.scales.get("length", 1000.0)  # the mechanism's drawing, 1:1 unless the scene says
     arms = [(eq, lab, h) for gf in fa.groups for (eq, lab), h in gf.arms.items()]
@@ -397,51 +398,62 @@ def force_rows(lv: LeverAnalysis, k: int, polygons: tuple[ForcePolygon, ...] | N
     for eq, lab, h in arms:
         mm = float(h[k]) * mu_l
         if mm > NOISE_MM:
-            rows.append(Reading(f"h_{lab} in {eq} = 0 (μl = {mu_l:g} mm/m)", _ruler(mm), mm, "mm"))
+            rows.append(Reading(say("r_arm", lang, lab=lab, eq=eq, mu=mu_l), _ruler(mm), mm, "mm"))
     for it in lv.forces:
         a = float(it.arm[k])
         if a > NOISE_MM:
-            rows.append(Reading(f"h_{it.label} on the lever (μv = {lv.scale:g})", _ruler(a), a, "mm"))
+            rows.append(Reading(say("r_lever_arm", lang, lab=it.label, mu=lv.scale), _ruler(a), a, "mm"))
     unit = "N" if fa.crank.kind == "force" else "N·m"
     exact = float(fa.balancing[k])
     lev_read, kin_read = _drawn_balancing(lv, k)
     cycle = float(np.max(np.abs(fa.balancing))) if fa.n else 0.0
     exact = clean(exact, cycle)
     sym = "F_bal" if fa.crank.kind == "force" else "M_bal"
-    rows.append(Reading(f"{sym} by kinetostatics", clean(kin_read, cycle), exact, unit))
+    rows.append(Reading(say("r_kin", lang, sym=sym), clean(kin_read, cycle), exact, unit))
     ok = bool(lv.valid[k])
-    rows.append(Reading(f"{sym} by Zhukovsky's lever", clean(lev_read, cycle) if ok else None,
+    rows.append(Reading(say("r_lever", lang, sym=sym), clean(lev_read, cycle) if ok else None,
                         clean(float(lv.signed(lv.by_lever)[k]), cycle), unit))
-    rows.append(Reading(f"{sym} by power balance", None, clean(float(lv.signed(lv.by_power)[k]), cycle), unit))
+    rows.append(Reading(say("r_power", lang, sym=sym), None, clean(float(lv.signed(lv.by_power)[k]), cycle), unit))
     # δ against a balancing load that vanishes here is not a percentage: left out
     pct = percent(lev_read, kin_read) if ok and exact else None
     ex_pct = percent(float(lv.signed(lv.by_lever)[k]), exact) if exact else None
     letter = sym[0]
-    rows.append(Reading(f"δ = ({letter}_lever − {letter}_kin)/{letter}_kin (coursework, from the drawings)",
+    rows.append(Reading(say("r_delta", lang, l=letter),
                         pct, 0.0 if ex_pct is None else ex_pct, "%", False))
     return rows
 
 
-def table_lines(fa: ForceAnalysis, lv: LeverAnalysis, k: int) -> list[str]:
-    """The force analysis of position k as text lines for ``plans solve`` (indented two spaces)."""
+def table_lines(fa: ForceAnalysis, lv: LeverAnalysis, k: int, lang: str = "en") -> list[str]:
+    """The force analysis of position k as text lines for ``plans solve`` (indented two spaces),
+    in ``lang``."""
+    from plans.language import symbols
+    from plans.phrases import number, say
+
+    ru = lang == "ru"
     unit = "N" if fa.crank.kind == "force" else "N·m"
-    lines = [f"  force analysis (F_ij = force {'on link i from link j' if fa.scene.fij == 'on_i_from_j' else 'of link i on link j'}), "
-             f"lever turned 90° {'ccw' if lv.turn > 0 else 'cw'}, μv = {lv.scale:g} mm/(m/s)"]
+    lines = [say("t_force_head", lang, fij=say("t_on_i" if fa.scene.fij == "on_i_from_j" else "t_of_i", lang),
+                 sense=say("ccw" if lv.turn > 0 else "cw", lang), mu=lv.scale)]
     polygons = force_polygons(fa, k)
     for fp in polygons:
         for note in fp.plan.degenerate:
-            lines.append(f"    note (polygon {fp.group}): {note}")
-    lines.append(f"  {'quantity':58s} {'drawing':>14s} {'exact':>16s} {'difference':>11s}")
-    for r in force_rows(lv, k, polygons):
+            lines.append(symbols(say("t_polygon_note", lang, g=fp.group, d=note), lang))
+    w = {key: say("w_" + key, lang) for key in ("quantity", "drawing", "exact", "difference")}
+    lines.append(f"  {w['quantity']:58s} {w['drawing']:>14s} {w['exact']:>16s} {w['difference']:>11s}")
+    for r in force_rows(lv, k, polygons, lang):
         q, d, e, diff = r.cells()
+        if ru:
+            d, e, diff = (symbols(c.replace(".", ","), lang) for c in (d, e, diff))
+            q = symbols(q, lang)
         lines.append(f"  {q:58s} {d:>14s} {e:>16s} {diff:>11s}")
     b = lv.signed(lv.by_lever)[k] if lv.valid[k] else None
     cyc = float(np.max(np.abs(fa.balancing)))
-    lines.append(f"  balancing {fa.crank.kind}: by kinetostatics {clean(float(fa.balancing[k]), cyc):.6g} {unit}, "
-                 f"by lever {'-' if b is None else f'{clean(float(b), cyc):.6g}'} {unit} (positive along the motion of "
-                 f"{fa.crank.point})")
+    force = fa.crank.kind == "force"
+    lines.append(symbols(say(
+        "t_balancing", lang, kind=("ая сила" if force else "ий момент") if ru else fa.crank.kind,
+        end="положительна" if force else "положителен", kin=clean(float(fa.balancing[k]), cyc), unit=unit,
+        lev="-" if b is None else number(clean(float(b), cyc), ".6g", lang), pt=fa.crank.point), lang))
     if fa.friction is not None:
         from plans.forces.friction import friction_lines
 
-        lines += friction_lines(fa, k)
+        lines += friction_lines(fa, k, lang)
     return lines

@@ -57,7 +57,8 @@ def _moment_terms(forces, moments, P: complex, k: int, mu_l: float) -> tuple[lis
         else:
             d = F / abs(F)
             arms.append(Arm(f.label, P, r + d * ((P - r) * d.conjugate()).real, r))
-        terms.append(phrase("m_term_force", sign="+" if m >= 0 else "−", label=f.label, F=abs(F), mm=h * mu_l, h=h))
+        terms.append(phrase("m_term_force", sign="+" if m >= 0 else "−", label=f.label, F=abs(F), mm=h * mu_l, h=h,
+                            M=abs(F) * h))
         total += m
     for mo in moments:
         M = float(mo.M[k])
@@ -191,16 +192,21 @@ def steps_json(plans: tuple[Plan | None, ...], forces: tuple[ForceStep, ...]) ->
     return out
 
 
-def protocol_lines(forces: tuple[ForceStep, ...]) -> list[str]:
-    """The force analysis for ``plans solve --protocol``, numbered per drawing."""
+def protocol_lines(forces: tuple[ForceStep, ...], lang: str = "en") -> list[str]:
+    """The force analysis for ``plans solve --protocol``, numbered per drawing, in ``lang``."""
+    from plans.phrases import say
+
     lines: list[str] = []
     current, n = None, 0
     for f in forces:
         if f.plan != current:
             current, n = f.plan, 0
-            lines.append(f"  force analysis, {f.plan}:")
+            plan = f.plan
+            if lang == "ru":
+                plan = say("t_" + plan, lang) if plan in ("crank", "lever") else plan.replace("group", "группа")
+            lines.append(say("t_force_protocol", lang, plan=plan))
         n += 1
-        lines.append(f"   {n:2d}. {f.step.text}")
+        lines.append(f"   {n:2d}. {f.step.say(lang)}")
     return lines
 
 

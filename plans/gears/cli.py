@@ -11,6 +11,9 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("file", help="gear file (TOML, kind = \"gears\")")
     p.add_argument("--json", metavar="PATH", help="write results as JSON ('-' for stdout)")
     p.add_argument("--quiet", action="store_true", help="no table on stdout")
+    from plans.language import add_option
+
+    add_option(p)
     p.set_defaults(func=_run)
 
 
@@ -29,5 +32,7 @@ def _run(args: argparse.Namespace) -> int:
     if args.json:
         atomic_write(args.json, data)
     if not args.quiet:
-        print(table(sol))
+        from plans.language import file_language
+
+        print(table(sol, file_language(getattr(args, "language", None), args.file)))
     return 0

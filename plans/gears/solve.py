@@ -199,33 +199,47 @@ def ratios(sol: GearSolution) -> dict[str, float]:
     return out
 
 
-def table(sol: GearSolution) -> str:
-    """The course's table of results as text."""
+def _check_name(name: str, lang: str) -> str:
+    """A check's name as the table prints it (its JSON name in English)."""
+    if lang == "en":
+        return name
+    from plans.phrases import say
+
+    for key in ("no_undercut", "tip_thickness"):
+        if name.startswith(key + "_"):
+            return say("g_" + key, lang, n=name[len(key) + 1:])
+    return say("g_" + name, lang)
+
+
+def table(sol: GearSolution, lang: str = "en") -> str:
+    """The course's table of results as text, in ``lang`` (decimal comma in Russian)."""
+    from plans.phrases import UNITS_RU, say
+
     gf = sol.file
     k = gf.to_unit
-    u = gf.unit
+    u = gf.unit if lang == "en" else UNITS_RU.get(gf.unit, gf.unit)
     lines = []
     for p in sol.pairs:
         a, b = p.gears
-        lines.append(f"pair {a}-{b} ({'internal' if p.internal else 'external'}): "
-                     f"x = {p.wheels[0].x:.5f}, {p.wheels[1].x:.5f}")
-        lines.append(f"  α_w = {math.degrees(p.alpha_w):.6f}°   a = {p.a * k:.6g} {u}   "
-                     f"a_w = {p.a_w * k:.6f} {u}   y = {p.y:.5f}   Δy = {p.delta_y:.5f}")
+        lines.append(say("g_pair", lang, a=a, b=b, kind=say("g_internal" if p.internal else "g_external", lang),
+                         x1=p.wheels[0].x, x2=p.wheels[1].x))
+        lines.append(say("g_centre", lang, aw=math.degrees(p.alpha_w), a=p.a * k, a_w=p.a_w * k, u=u, y=p.y,
+                         dy=p.delta_y))
         for w in p.wheels:
-            lines.append(f"  gear {w.name}: r = {w.pitch * k:.4f}  r_b = {w.base * k:.4f}  r_a = {w.tip * k:.4f}"
-                         f"  r_f = {w.root * k:.4f}  α_a = {math.degrees(w.tip_angle):.4f}°"
-                         f"  s = {w.thickness * k:.4f}  s_a = {w.tip_thickness * k:.4f} {u}")
+            lines.append(say("g_wheel", lang, n=w.name, r=w.pitch * k, rb=w.base * k, ra=w.tip * k, rf=w.root * k,
+                             al=math.degrees(w.tip_angle), s=w.thickness * k, sa=w.tip_thickness * k, u=u))
         if p.internal:
-            lines.append(f"  ring {b}: tip circle by the rule {gf.gears[b].ring_tip!r}")
-        lines.append(f"  ε = {p.contact_ratio:.6f}   checks: " +
-                     ", ".join(f"{n} {'ok' if v else 'FAILS'}" for n, v in p.checks().items()))
+            rule = gf.gears[b].ring_tip
+            lines.append(say("g_ring", lang, b=b, rule=repr(rule) if lang == "en" else say("g_rule_" + rule, lang)))
+        lines.append(say("g_checks", lang, e=p.contact_ratio, checks=", ".join(
+            say("g_check", lang, n=_check_name(n, lang), v=say("g_ok" if v else "g_fails", lang))
+            for n, v in p.checks().items())))
     for n, v in ratios(sol).items():
-        lines.append(f"i_{n} = {v:.6f}")
+        lines.append(say("g_ratio", lang, n=n, v=v))
     if sol.omega is not None and sol.plan is not None:
         for n, om in sol.omega.items():
-            lines.append(f"n_{n} = {om * 30 / math.pi:.6f} rpm (Willis), "
-                         f"{sol.plan.lines[n].omega * 30 / math.pi:.6f} rpm (velocity plan)")
+            lines.append(say("g_speed", lang, n=n, w=om * 30 / math.pi, p=sol.plan.lines[n].omega * 30 / math.pi))
     if sol.synthesis is not None:
         t = sol.synthesis
-        lines.append(f"synthesis: z1 = {t.z1}, z2 = {t.z2}, z3 = {t.z3}, k = {t.planets}, i_1H = {t.ratio:.6f}")
+        lines.append(say("g_synthesis", lang, z1=t.z1, z2=t.z2, z3=t.z3, k=t.planets, i=t.ratio))
     return "\n".join(lines)

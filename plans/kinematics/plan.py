@@ -135,8 +135,8 @@ class Plan:
         """Largest distance of a plan point from the pole (mm)."""
         return max((abs(complex(*p.xy)) for p in self.points), default=0.0)
 
-    def protocol(self) -> str:
-        return "\n".join(f"{k + 1:2d}. {s.text}" for k, s in enumerate(self.steps))
+    def protocol(self, lang: str = "en") -> str:
+        return "\n".join(f"{k + 1:2d}. {s.say(lang)}" for k, s in enumerate(self.steps))
 
     def to_json(self) -> dict:
         return {

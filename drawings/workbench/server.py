@@ -1,0 +1,583 @@
+"""The workbench's server: the page and a small JSON API over one project folder.
+
+``POST /api/solve`` (a scene's TOML) answers the JSON of ``plans solve --json``, or 422 with
+``{"error": the engine's one-line message, "field": the key it names}``; ``GET /api/files``
+lists the folder's files by kind; ``GET``/``PUT /api/file?path=`` read and write one;
+``POST /api/check`` answers the JSON of ``plans check --json``; ``POST /api/draw?format=``
+answers the sheets (one file, or a zip of several); ``POST /api/demo`` the demonstration
+page (``plans demo``); ``POST /api/forces`` the force polygons and the lever over the turn;
+``GET /api/template?path=`` a blank check file for a scene; ``POST /api/design`` a synthesis
+file designed (the scene and ``plans design --json``);
+``POST /api/edit`` sets values in a TOML
+text keeping its comments and order (the form's edits); ``GET /api/samples`` is the gallery.
+
+Safe as a local server: only the Host names it listens as are answered (DNS rebinding), a
+request from another site's page is refused (Origin, Sec-Fetch-Site), no path leaves the
+folder (resolved, symlinks followed), bodies and files are bounded, and every failure is a
+4xx with one line of text, never a traceback.
+"""
+
+from __future__ import annotations
+
+import json
+import threading
+import time
+import tomllib
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+from starlette.applications import Starlette
+from starlette.concurrency import run_in_threadpool
+from starlette.requests import Request
+from starlette.responses import JSONResponse, Response
+from starlette.routing import Route
+
+from plans.errors import ConstructionError, InputError, PlansError, one_line
+
+#: Largest request body and largest file read or written (a scene is a few kilobytes).
+MAX_BODY = 1 << 20
+#: At most this many files listed (a folder of a whole group's checks stays well below).
+MAX_FILES = 2000
+#: The gallery: the course's mechanisms as the samples show them.
+GALLERY = ("slider_crank", "offset_slider_crank", "v_engine", "four_bar", "shaper", "six_bar",
+           "scotch_yoke", "synthesis/offset_slider_crank", "synthesis/crank_rocker", "synthesis/shaper",
+           "synthesis/seed000_v_engine")
+_STATIC = {"app.js": "text/javascript; charset=utf-8", "app.css": "text/css; charset=utf-8"}
+_CSP = ("default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self' data:; "
+        "connect-src 'self'; base-uri 'none'; form-action 'none'; frame-ancestors 'none'")
+
+
+class Refused(Exception):
+    """A request answered with a 4xx and one line."""
+
+    def __init__(self, status: int, message: str, field: str | None = None) -> None:
+        super().__init__(message)
+        self.status, self.message, self.field = status, message, field
+
+
+def _error(status: int, message: str, field: str | None = None, **extra: Any) -> JSONResponse:
+    return JSONResponse({"error": message, "field": field, **extra}, status_code=status)
+
+
+def engine_error(exc: PlansError) -> JSONResponse:
+    """The engine's one-line error and the key it names (a construction names its group,
+    point and angle instead)."""
+    extra: dict[str, Any] = {}
+    if isinstance(exc, ConstructionError):
+        extra = {"group": exc.group, "point": exc.point, "phi_deg": exc.phi_deg}
+    return _error(422, one_line(exc), getattr(exc, "field", None), **extra)
+
+
+class Guard:
+    """ASGI middleware: Host and Origin checked before anything else runs."""
+
+    def __init__(self, app: Any, hosts: set[str]) -> None:
+        self.app, self.hosts = app, hosts
+
+    async def __call__(self, scope: dict, receive: Any, send: Any) -> None:
+        if scope["type"] != "http":
+            await self.app(scope, receive, send)
+            return
+        headers = {k.decode("latin-1").lower(): v.decode("latin-1") for k, v in scope["headers"]}
+        host = headers.get("host", "")
+        origin = headers.get("origin")
+        why = None
+        if host.lower() not in self.hosts:
+            why = f"refused: Host {host!r} is not this server (expected one of {', '.join(sorted(self.hosts))})"
+        elif origin is not None and origin.lower() not in {f"http://{h}" for h in self.hosts}:
+            why = f"refused: a page from {origin!r} may not use this server"
+        elif headers.get("sec-fetch-site") == "cross-site":
+            why = "refused: a request from another site may not use this server"
+        if why is not None:
+            await _error(403, why)(scope, receive, send)
+            return
+        await self.app(scope, receive, send)
+
+
+class Workbench:
+    """The routes over one folder."""
+
+    def __init__(self, root: str | Path) -> None:
+        self.root = Path(root).resolve()
+
+    # ----------------------------------------------------------------- helpers
+    def path(self, rel: str | None, *, must_exist: bool = True) -> Path:
+        """The file ``rel`` names inside the folder; anything leading outside is refused."""
+        if not rel:
+            raise Refused(400, "missing ?path=: expected a file of the folder", "path")
+        if "\x00" in rel or len(rel) > 1000:
+            raise Refused(400, "the path is not a file name", "path")
+        target = (self.root / rel).resolve()
+        if not target.is_relative_to(self.root):
+            raise Refused(403, f"refused: {rel} is outside the project folder", "path")
+        if target.suffix.lower() != ".toml":
+            raise Refused(400, f"{rel}: expected a .toml file of the family", "path")
+        if must_exist and not target.is_file():
+            raise Refused(404, f"{rel}: no such file in the project folder", "path")
+        return target
+
+    def rel(self, p: Path) -> str:
+        return p.relative_to(self.root).as_posix()
+
+    async def body(self, request: Request) -> bytes:
+        size = request.headers.get("content-length")
+        if size is not None and (not size.isdigit() or int(size) > MAX_BODY):
+            raise Refused(413, f"the request is larger than {MAX_BODY} bytes")
+        chunks, total = [], 0
+        async for chunk in request.stream():
+            total += len(chunk)
+            if total > MAX_BODY:
+                raise Refused(413, f"the request is larger than {MAX_BODY} bytes")
+            chunks.append(chunk)
+        return b"".join(chunks)
+
+    async def text(self, request: Request) -> str:
+        try:
+            return (await self.body(request)).decode("utf-8")
+        except UnicodeDecodeError:
+            raise Refused(400, "the body is not UTF-8 text") from None
+
+    def source_name(self, request: Request) -> str:
+        """The name errors give the text: its file when the page says which, else <scene>."""
+        rel = request.query_params.get("path")
+        if rel:
+            try:
+                return self.rel(self.path(rel, must_exist=False))
+            except Refused:
+                return "<scene>"
+        return "<scene>"
+
+    # ----------------------------------------------------------------- routes
+    async def index(self, request: Request) -> Response:
+        text = resources.files(__package__).joinpath("static/index.html").read_text(encoding="utf-8")
+        return Response(text, media_type="text/html; charset=utf-8", headers={"Content-Security-Policy": _CSP})
+
+    async def static(self, request: Request) -> Response:
+        name = request.path_params["name"]
+        if name not in _STATIC:
+            raise Refused(404, f"{name}: no such file")
+        data = resources.files(__package__).joinpath("static", name).read_bytes()
+        return Response(data, media_type=_STATIC[name], headers={"Cache-Control": "no-cache"})
+
+    async def files(self, request: Request) -> Response:
+        return JSONResponse(await run_in_threadpool(self._files))
+
+    def _files(self) -> dict[str, Any]:
+        out: dict[str, list[dict[str, Any]]] = {}
+        for n, p in enumerate(sorted(self.root.rglob("*.toml"))):
+            if n >= MAX_FILES:
+                break
+            try:
+                if not p.resolve().is_relative_to(self.root) or p.stat().st_size > MAX_BODY:
+                    continue
+                data = tomllib.loads(p.read_text(encoding="utf-8"))
+            except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError):
+                continue
+            kind = _kind(data)
+            out.setdefault(kind, []).append({"path": self.rel(p), "title": _title(data, p.stem),
+                                             "titles": _titles(data)})
+        return {"folder": self.root.name, "files": out}
+
+    async def samples(self, request: Request) -> Response:
+        return JSONResponse(await run_in_threadpool(_samples))
+
+    async def read(self, request: Request) -> Response:
+        p = self.path(request.query_params.get("path"))
+        if p.stat().st_size > MAX_BODY:
+            raise Refused(413, f"{self.rel(p)} is larger than {MAX_BODY} bytes")
+        try:
+            text = p.read_text(encoding="utf-8")
+        except UnicodeDecodeError:
+            raise Refused(422, f"{self.rel(p)}: not UTF-8 text") from None
+        return JSONResponse({"path": self.rel(p), **_parsed(text, self.rel(p))})
+
+    async def write(self, request: Request) -> Response:
+        p = self.path(request.query_params.get("path"), must_exist=False)
+        text = await self.text(request)
+        try:
+            tomllib.loads(text)
+        except tomllib.TOMLDecodeError as exc:
+            raise Refused(422, f"{self.rel(p)}: not TOML ({exc}); nothing written") from None
+        if not p.parent.is_dir():
+            raise Refused(404, f"{self.rel(p.parent)}: no such folder in the project folder", "path")
+        from plans.io import atomic_write
+
+        await run_in_threadpool(atomic_write, p, text.encode("utf-8"))
+        return JSONResponse({"path": self.rel(p), "bytes": len(text.encode("utf-8"))})
+
+    async def edit(self, request: Request) -> Response:
+        try:
+            req = json.loads(await self.body(request))
+            text, sets = req["text"], req["set"]
+            if not isinstance(text, str) or not isinstance(sets, list):
+                raise TypeError
+        except (ValueError, KeyError, TypeError):
+            raise Refused(400, 'expected {"text": TOML text, "set": [[key path, value], ...]}') from None
+        t0 = time.perf_counter()
+        return JSONResponse(await run_in_threadpool(_edit, text, sets), headers=_timing(t0))
+
+    async def solve(self, request: Request) -> Response:
+        text, name = await self.text(request), self.source_name(request)
+        steps = request.query_params.get("steps", "1") != "0"
+        t0 = time.perf_counter()
+        data = await run_in_threadpool(_solve, text, name, steps)
+        return Response(data, media_type="application/json", headers=_timing(t0))
+
+    async def check(self, request: Request) -> Response:
+        text = await self.text(request)
+        rel = request.query_params.get("path")
+        where = self.path(rel, must_exist=False) if rel else self.root / "check.toml"
+        return Response(await run_in_threadpool(self._check, text, where), media_type="application/json")
+
+    def _check(self, text: str, where: Path) -> bytes:
+        from plans.check.checkfile import check_from_dict
+        from plans.check.report import check
+        from plans.io import loads_toml
+
+        name = self.rel(where)
+        data = loads_toml(text, name)
+        scene = data.get("scene")
+        if isinstance(scene, str):  # the scene it names must be a file of the folder too
+            target = (where.parent / scene).resolve()
+            if not target.is_relative_to(self.root):
+                raise Refused(403, f"refused: the scene {scene!r} is outside the project folder", "scene")
+        report = check(check_from_dict(data, str(where)))
+        return json.dumps(report.to_json(), ensure_ascii=False, allow_nan=False).encode("utf-8")
+
+    async def template(self, request: Request) -> Response:
+        """A blank check file for a scene of the folder (``plans check --template``), to sit
+        beside it: ``{"path": suggested name, "text"}``."""
+        scene = self.path(request.query_params.get("path"))
+        return JSONResponse(await run_in_threadpool(self._template, scene))
+
+    def _template(self, scene: Path) -> dict[str, Any]:
+        from plans.check.forms import template_toml
+        from plans.scene.model import load_scene
+
+        text = template_toml(load_scene(scene), scene.name)
+        name = scene.with_name(f"{scene.stem}_check.toml")
+        n = 2
+        while name.exists():
+            name = scene.with_name(f"{scene.stem}_check{n}.toml")
+            n += 1
+        return {"path": self.rel(name), **_parsed(text, self.rel(name))}
+
+    async def design(self, request: Request) -> Response:
+        text, name = await self.text(request), self.source_name(request)
+        return Response(await run_in_threadpool(_design, text, name), media_type="application/json")
+
+    async def forces(self, request: Request) -> Response:
+        text, name = await self.text(request), self.source_name(request)
+        return Response(await run_in_threadpool(_forces, text, name), media_type="application/json")
+
+    async def demo(self, request: Request) -> Response:
+        text = await self.text(request)
+        name = self.source_name(request)
+        stem = Path(name).stem.strip("<>") or "scene"
+        page = await run_in_threadpool(_demo, text, name)
+        return Response(page, media_type="text/html; charset=utf-8",
+                        headers={"Content-Disposition": f'attachment; filename="{stem}.html"'})
+
+    async def draw(self, request: Request) -> Response:
+        fmt = request.query_params.get("format", "svg").lower()
+        from drawings.export import FORMATS
+
+        if fmt not in FORMATS:
+            raise Refused(400, f"format {fmt!r}: expected one of {', '.join(FORMATS)}", "format")
+        text = await self.text(request)
+        stem = Path(self.source_name(request)).stem.strip("<>") or "scene"
+        data, name = await run_in_threadpool(_draw, text, stem, fmt)
+        return Response(data, media_type=_MEDIA.get(name.rsplit(".", 1)[-1], "application/octet-stream"),
+                        headers={"Content-Disposition": f'attachment; filename="{name}"'})
+
+
+_MEDIA = {"svg": "image/svg+xml", "pdf": "application/pdf", "png": "image/png", "zip": "application/zip",
+          "dxf": "image/vnd.dxf"}
+
+
+def _kind(data: dict[str, Any]) -> str:
+    kind = data.get("kind")
+    if isinstance(kind, str):
+        return kind
+    if "student" in data or ("scene" in data and "links" not in data):
+        return "check"
+    return "linkage"
+
+
+def _title(data: dict[str, Any], default: str) -> str:
+    t = data.get("title")
+    if isinstance(t, dict):
+        t = t.get("ru") or t.get("en") or next(iter(t.values()), None)
+    return t if isinstance(t, str) else default
+
+
+def _titles(data: dict[str, Any]) -> dict[str, str] | None:
+    t = data.get("title")
+    return {str(k): v for k, v in t.items() if isinstance(v, str)} if isinstance(t, dict) else None
+
+
+def _jsonable(x: Any) -> Any:
+    if isinstance(x, dict):
+        return {str(k): _jsonable(v) for k, v in x.items()}
+    if isinstance(x, list | tuple):
+        return [_jsonable(v) for v in x]
+    if isinstance(x, float) and x != x:
+        return None
+    if isinstance(x, str | int | float | bool) or x is None:
+        return x
+    return str(x)  # TOML dates and times
+
+
+def _parsed(text: str, name: str) -> dict[str, Any]:
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        return {"text": text, "data": None, "kind": None, "error": f"{name}: not TOML: {exc}"}
+    return {"text": text, "data": _jsonable(data), "kind": _kind(data)}
+
+
+def _samples_dir() -> Path | None:
+    here = Path(__file__).resolve().parents[2] / "samples"
+    return here if here.is_dir() else None
+
+
+def _samples() -> list[dict[str, Any]]:
+    folder = _samples_dir()
+    out = []
+    for name in GALLERY:
+        p = folder / f"{name}.toml" if folder else None
+        if p is None or not p.is_file():
+            continue
+        text = p.read_text(encoding="utf-8")
+        data = tomllib.loads(text)
+        out.append({"name": name.replace("/", "_"), "title": _title(data, name), "titles": _titles(data),
+                    "text": text, "kind": _kind(data)})
+    return out
+
+
+#: tomlkit documents by the text they print: the next edit of a page starts from the text the
+#: last one answered, and parsing it again would be most of the edit's time.
+_DOCS: dict[str, Any] = {}
+_DOCS_LOCK = threading.Lock()
+
+
+def _edit(text: str, sets: list) -> dict[str, Any]:
+    """Set each ``[key path, value]`` in the TOML text with tomlkit: the comments, the order
+    and the layout of everything else stay as they were."""
+    import tomlkit
+
+    with _DOCS_LOCK:
+        doc = _DOCS.pop(text, None)  # the text the last edit answered: its document, parsed
+    if doc is None:
+        try:
+            doc = tomlkit.parse(text)
+        except Exception as exc:  # tomlkit's parse errors have no common public base
+            raise Refused(422, f"not TOML: {' '.join(str(exc).split())}") from None
+    for item in sets:
+        if not (isinstance(item, list) and len(item) == 2 and isinstance(item[0], list) and item[0]):
+            raise Refused(400, "each edit is [key path, value]")
+        keys, value = item
+        node: Any = doc
+        for k in keys[:-1]:
+            try:
+                node = node[k if isinstance(node, dict) else int(k)]
+            except (KeyError, IndexError, ValueError, TypeError):
+                raise Refused(422, f"{'.'.join(map(str, keys))}: no such key in the file",
+                              ".".join(map(str, keys))) from None
+        last = keys[-1]
+        if not isinstance(value, str | int | float | bool | list):
+            raise Refused(400, f"{'.'.join(map(str, keys))}: expected a number, text or list")
+        if isinstance(value, float) and value.is_integer():
+            value = int(value)  # 120, not 120.0, as a person writes it
+        try:
+            if isinstance(node, dict):
+                old = node.get(last)
+                if isinstance(old, list) and isinstance(value, list) and len(old) == len(value):
+                    for i, v in enumerate(value):  # in place: an inline array keeps its layout
+                        old[i] = v
+                else:
+                    node[last] = value
+            else:
+                node[int(last)] = value
+        except (IndexError, ValueError, TypeError):
+            raise Refused(422, f"{'.'.join(map(str, keys))}: no such key in the file") from None
+    new = tomlkit.dumps(doc)
+    with _DOCS_LOCK:
+        _DOCS[new] = doc
+        while len(_DOCS) > 16:  # a few tabs' documents; the oldest goes first
+            _DOCS.pop(next(iter(_DOCS)))
+    return _parsed(new, "<scene>")
+
+
+def _timing(t0: float) -> dict[str, str]:
+    """The server's share of the answer (the browser's devtools and the bench read it)."""
+    return {"Server-Timing": f"app;dur={(time.perf_counter() - t0) * 1000:.2f}"}
+
+
+def _solve(text: str, name: str, steps: bool = True) -> bytes:
+    from plans.results import solve_scene, to_json
+    from plans.scene.model import parse_scene
+
+    sol = solve_scene(parse_scene(text, name))
+    return json.dumps(to_json(sol, steps), ensure_ascii=False, allow_nan=False,
+                      separators=(",", ":")).encode("utf-8")
+
+
+def _design(text: str, name: str) -> bytes:
+    """A synthesis file designed (``plans design``): the scene written and the JSON of
+    ``plans design --json`` (its ``scene`` the scene's text)."""
+    from plans.io import loads_toml
+    from plans.synthesis.cli import _check_scene, results
+    from plans.synthesis.design import design
+    from plans.synthesis.model import task_from_dict
+    from plans.synthesis.scene import scene_text
+
+    d = design(task_from_dict(loads_toml(text, name), name))
+    scene = scene_text(d)
+    _check_scene(scene, name)
+    return json.dumps({"scene": scene, "data": _jsonable(tomllib.loads(scene)), "design": results(d, scene)},
+                      ensure_ascii=False,
+                      allow_nan=False, separators=(",", ":")).encode("utf-8")
+
+
+def _forces(text: str, name: str) -> bytes:
+    """The force polygons of every group and the crank, and the lever, at every position of
+    the scene (the demonstration page's drawings: one scale over the turn), or [] when the
+    scene asks for no force analysis."""
+    from plans.demo.cycle_forces import cycle_forces
+    from plans.results import solve_scene
+    from plans.scene.model import parse_scene
+
+    sol = solve_scene(parse_scene(text, name))
+    panels = [] if sol.forces is None else cycle_forces(*sol.forces)
+    return json.dumps(panels, ensure_ascii=False, allow_nan=False, separators=(",", ":")).encode("utf-8")
+
+
+def _demo(text: str, name: str) -> bytes:
+    from drawings.demo import page
+    from plans.scene.model import parse_scene
+
+    return page(parse_scene(text, name)).encode("utf-8")
+
+
+def _draw(text: str, stem: str, fmt: str) -> tuple[bytes, str]:
+    import importlib
+    import tempfile
+    import zipfile
+
+    from drawings.export import save
+    from plans.io import loads_toml
+    from plans.kinds import KINDS, kind_of
+
+    kind = kind_of(loads_toml(text, f"{stem}.toml"), f"{stem}.toml")
+    module = importlib.import_module(KINDS[kind][1])
+    with tempfile.TemporaryDirectory() as tmp:
+        src = Path(tmp) / f"{stem}.toml"
+        src.write_text(text, encoding="utf-8")
+        drawing = module.draw(str(src))
+        written = save(drawing.sheets, Path(tmp) / "out", stem, [fmt], source=str(src))
+        if len(written) == 1:
+            return written[0].read_bytes(), written[0].name
+        import io
+
+        buf = io.BytesIO()
+        with zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as z:
+            for p in sorted(written):
+                info = zipfile.ZipInfo(p.name, date_time=(2000, 1, 1, 0, 0, 0))
+                z.writestr(info, p.read_bytes(), zipfile.ZIP_DEFLATED)
+        return buf.getvalue(), f"{stem}-{fmt}.zip"
+
+
+def _handler(fn: Any) -> Any:
+    """Every failure as a 4xx with one line: never a traceback."""
+
+    async def run(request: Request) -> Response:
+        try:
+            return await fn(request)
+        except Refused as exc:
+            return _error(exc.status, exc.message, exc.field)
+        except PlansError as exc:
+            return engine_error(exc)
+        except RecursionError:
+            return _error(422, "the file is nested too deeply")
+        except OSError as exc:
+            return _error(500, f"cannot read or write: {exc.strerror or exc}")
+        except Exception as exc:  # noqa: BLE001 - the page shows one line, never a traceback
+            return _error(500, f"internal error: {type(exc).__name__}: {' '.join(str(exc).split())[:300]}")
+
+    return run
+
+
+def hosts_for(host: str, port: int) -> set[str]:
+    """The Host headers a browser sends for this server: its own names and addresses, never
+    another domain's (a name that resolves here only by DNS rebinding)."""
+    names = {"127.0.0.1", "localhost", "[::1]"} if host in ("127.0.0.1", "localhost", "::1", "0.0.0.0", "::") \
+        else set()
+    if host in ("0.0.0.0", "::"):  # every address of this computer, and its name
+        import socket
+
+        me = socket.gethostname()
+        names |= {me, socket.getfqdn()}
+        try:
+            names |= {str(i[4][0]) for i in socket.getaddrinfo(me, None)}
+        except OSError:
+            pass
+    else:
+        names.add(host)
+    return {f"[{n}]:{port}".lower() if ":" in n and not n.startswith("[") else f"{n}:{port}".lower() for n in names}
+
+
+def make_app(root: str | Path, hosts: set[str]) -> Any:
+    wb = Workbench(root)
+    routes = [
+        Route("/", _handler(wb.index), methods=["GET"]),
+        Route("/static/{name}", _handler(wb.static), methods=["GET"]),
+        Route("/api/files", _handler(wb.files), methods=["GET"]),
+        Route("/api/samples", _handler(wb.samples), methods=["GET"]),
+        Route("/api/file", _handler(wb.read), methods=["GET"]),
+        Route("/api/file", _handler(wb.write), methods=["PUT"]),
+        Route("/api/edit", _handler(wb.edit), methods=["POST"]),
+        Route("/api/solve", _handler(wb.solve), methods=["POST"]),
+        Route("/api/check", _handler(wb.check), methods=["POST"]),
+        Route("/api/draw", _handler(wb.draw), methods=["POST"]),
+        Route("/api/demo", _handler(wb.demo), methods=["POST"]),
+        Route("/api/forces", _handler(wb.forces), methods=["POST"]),
+        Route("/api/design", _handler(wb.design), methods=["POST"]),
+        Route("/api/template", _handler(wb.template), methods=["GET"]),
+    ]
+    app = Starlette(routes=routes)
+    return Guard(app, hosts)
+
+
+def bind(host: str, port: int) -> Any:
+    import socket
+
+    family = socket.AF_INET6 if ":" in host else socket.AF_INET
+    sock = socket.socket(family, socket.SOCK_STREAM)
+    sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+    try:
+        sock.bind((host, port))
+    except OSError as exc:
+        sock.close()
+        raise InputError(f"cannot listen on {host}:{port}: {exc.strerror}", field="--port") from None
+    sock.listen(128)  # a browser's first request waits in the queue while the server starts
+    return sock
+
+
+def serve(root: str | Path, *, host: str = "127.0.0.1", port: int = 8765, open_browser: bool = False) -> None:
+    import uvicorn
+
+    sock = bind(host, port)
+    port = sock.getsockname()[1]
+    app = make_app(root, hosts_for(host, port))
+    shown = "127.0.0.1" if host in ("0.0.0.0", "::") else host
+    url = f"http://{'[' + shown + ']' if ':' in shown else shown}:{port}/"
+    print(f"plans serve: {Path(root).resolve()} at {url} (Ctrl-C stops)", flush=True)
+    if open_browser:
+        import webbrowser
+
+        webbrowser.open(url)
+    server = uvicorn.Server(uvicorn.Config(app, log_level="warning", access_log=False,
+                                           limit_concurrency=64, timeout_keep_alive=5))
+    server.run(sockets=[sock])
