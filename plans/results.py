@@ -1,6 +1,6 @@
 """The solved scene as data (JSON) and as readable tables.
 
-JSON contract (README documents it): ``positions[i].phi_deg``;
+JSON contract (docs/guide/json.md documents it): ``positions[i].phi_deg``;
 ``positions[i].points[NAME]`` with ``r``, ``v``, ``a`` as ``[x, y]`` in SI;
 ``positions[i].links["N"]`` with ``theta``, ``omega``, ``eps`` (rad, rad/s,
 rad/s², counter-clockwise positive); ``positions[i].plans.velocity`` /
