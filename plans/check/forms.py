@@ -237,22 +237,28 @@ def run_template(args: argparse.Namespace) -> int:
             text = template_csv(scene, ref, phis, args.students)
         else:
             text = template_toml(scene, ref, phis)
-        if target is None:
-            sys.stdout.write(text)
-            return 0
-        refuse_input(str(target), scene_path)
-        if not target.parent.is_dir():
-            raise OutputError(f"{target}: no such folder {target.parent}")
-        write_all({target: text})
-        if not args.quiet:
-            print(target)
-        return 0
+        return put_form(text, target, scene_path, args.quiet)
     except PlansError as exc:
         from plans.guard import abandon
 
         abandon()  # nothing of the command is written (it answers 2 itself)
         _err(one_line(exc))
         return 2
+
+
+def put_form(text: str, target: Path | None, source: str | Path, quiet: bool) -> int:
+    """A blank form to standard output (no target) or to its file, never over the file it
+    was made from, into a folder that exists."""
+    if target is None:
+        sys.stdout.write(text)
+        return 0
+    refuse_input(str(target), source)
+    if not target.parent.is_dir():
+        raise OutputError(f"{target}: no such folder {target.parent}")
+    write_all({target: text})
+    if not quiet:
+        print(target)
+    return 0
 
 
 def _relative(scene: Path, target: Path) -> str:

@@ -7,7 +7,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from plans.errors import InputError, OutputError, PlansError, one_line
+from plans.errors import InputError, PlansError, one_line
 
 
 def run_group(args: argparse.Namespace) -> int | None:
@@ -25,7 +25,7 @@ def run_group(args: argparse.Namespace) -> int | None:
 
 def _template(args: argparse.Namespace) -> int | None:
     from plans.check.forms import _relative
-    from plans.io import read_toml, refuse_input, write_all
+    from plans.io import read_toml
 
     src = Path(args.template)
     if not src.is_file():
@@ -41,16 +41,9 @@ def _template(args: argparse.Namespace) -> int | None:
     target = Path(args.output) if args.output else None
     ref = str(src.resolve()) if target is None else _relative(src, target)
     text = blank(kind, ref, sheet_key(kind, data, str(src)), "")
-    if target is None:
-        sys.stdout.write(text)
-        return 0
-    refuse_input(str(target), src)
-    if not target.parent.is_dir():
-        raise OutputError(f"{target}: no such folder {target.parent}")
-    write_all({target: text})
-    if not args.quiet:
-        print(target)
-    return 0
+    from plans.check.forms import put_form
+
+    return put_form(text, target, src, args.quiet)
 
 
 def run_sheet_file(target: Path, args: argparse.Namespace) -> int | None:
