@@ -104,7 +104,7 @@ def reference(got: Any, language: str | None = None) -> dict[str, bytes]:
     with tempfile.TemporaryDirectory(prefix="plans-variant-") as tmp:
         for name, kind in names:
             src = Path(tmp) / name
-            src.write_text(got.files[name], encoding="utf-8")
+            src.write_text(got.files[name], encoding="utf-8")  # guard: a temporary folder
             drawing = importlib.import_module(KINDS[kind][1]).draw(str(src), language=language)
             rendered = render(drawing.sheets, Path("reference"), Path(name).stem, ["pdf"])
             out.update({str(p): data for p, data in rendered.items()})
@@ -117,7 +117,7 @@ def _make_star(args: tuple[Any, bool, str | None]) -> tuple[Any, dict[str, bytes
 
 def run(args: argparse.Namespace) -> int:
     from plans.group.build import read_roster, read_table
-    from plans.io import write_all
+    from plans.io import remove, write_all
 
     out = Path(args.output)
     table = Path(args.table)
@@ -149,9 +149,8 @@ def run(args: argparse.Namespace) -> int:
         folder = out / got.row.variant
         (folder / "reference").mkdir(parents=True, exist_ok=True)
         written = set(write_all({folder / n: data for n, data in sorted(files.items())}))
-        for old in (folder / "reference").glob("*.pdf"):  # a sheet of an earlier run the new set lacks
-            if old not in written:
-                old.unlink()
+        # a sheet of an earlier run that the new set lacks
+        remove(old for old in (folder / "reference").glob("*.pdf") if old not in written)
         made[got.row.variant] = got
         if not args.quiet:
             print(f"{folder}: {got.kind}, {sum(len(v) for v in got.key['values'].values())} figures in the key")

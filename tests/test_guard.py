@@ -289,7 +289,7 @@ def test_every_file_is_written_through_the_guard():
     """By construction: outside plans.io and plans.guard no module of plans/ or drawings/
     writes, renames or removes a file itself (a new command that writes through plans.io is
     guarded without further care).  The few exceptions write only into temporary folders
-    of their own."""
+    of their own, whole modules or lines marked "# guard: a temporary folder"."""
     import re
 
     root = Path(__file__).resolve().parent.parent
@@ -299,7 +299,9 @@ def test_every_file_is_written_through_the_guard():
                "plans/accuracy/fuzz.py",  # its cases live in a temporary folder; failures kept on request
                "plans/accuracy/examiner_bench.py",  # the submissions it times, in a temporary folder
                "drawings/demo.py",  # the page timed in a browser, from a temporary folder
-               "drawings/note/cli.py"}  # the DOCX handed to LibreOffice in a temporary folder
+               "drawings/note/cli.py",  # the DOCX handed to LibreOffice in a temporary folder
+               "plans/accuracy/group_bench.py",  # the group it times, in a temporary folder
+               "drawings/workbench/bench.py"}  # the scene it edits while timing, in a temporary folder
     found = []
     for folder in ("plans", "drawings"):
         for p in sorted((root / folder).rglob("*.py")):
@@ -307,7 +309,7 @@ def test_every_file_is_written_through_the_guard():
             if rel in allowed:
                 continue
             for n, line in enumerate(p.read_text(encoding="utf-8").splitlines(), 1):
-                if pattern.search(line.split("#")[0]):
+                if pattern.search(line.split("#")[0]) and "# guard: a temporary folder" not in line:
                     found.append(f"{rel}:{n}: {line.strip()}")
     assert not found, "write through plans.io (atomic_write, atomic_file, write_all, remove):\n" + "\n".join(found)
 

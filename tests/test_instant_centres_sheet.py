@@ -8,6 +8,7 @@ from pathlib import Path
 
 import pytest
 
+import plans
 from drawings.linkage import build_panels
 from drawings.sheet import sheet_spec
 from plans.kinematics.centres import centres_at
@@ -20,7 +21,7 @@ SAMPLES = Path(__file__).resolve().parent.parent / "samples" / "centres"
 def _panels(name: str, phi: float):
     path = SAMPLES / f"{name}.toml"
     spec = sheet_spec({"sheet": {"positions": [phi], "panels": ["scheme", "centres"]}}, str(path))
-    panels, mu_l = build_panels(load_scene(path), spec)
+    panels, mu_l = build_panels(plans.solve(path, fit=spec.fit), spec)
     return {p.kind: p for p in panels}, mu_l
 
 

@@ -474,7 +474,7 @@ def _draw(text: str, stem: str, fmt: str) -> tuple[bytes, str]:
     module = importlib.import_module(KINDS[kind][1])
     with tempfile.TemporaryDirectory() as tmp:
         src = Path(tmp) / f"{stem}.toml"
-        src.write_text(text, encoding="utf-8")
+        src.write_text(text, encoding="utf-8")  # guard: a temporary folder
         drawing = module.draw(str(src))
         written = save(drawing.sheets, Path(tmp) / "out", stem, [fmt], source=str(src))
         if len(written) == 1:

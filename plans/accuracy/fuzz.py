@@ -564,7 +564,12 @@ def fuzz(n: int, seed: int = 0, draw_every: int = 50, keep: Path | None = None,
     if not pool:
         raise SystemExit("plans bench --fuzz: no samples to fuzz")
     # a check file costs ten linkage cases: fuzzed a third as often, so the run covers more
-    schedule = [s for s in pool for _ in range(1 if s.argv("f", None)[0] == "check" else 3)]
+    by_kind: dict[str, list[Sample]] = {}
+    for s in pool:
+        by_kind.setdefault(s.kind, []).extend([s] * (1 if s.argv("f", None)[0] == "check" else 3))
+    # the kinds in turn, so that any run as long as the number of kinds fuzzes every kind
+    rounds = max(len(v) for v in by_kind.values())
+    schedule = [v[j] for j in range(rounds) for v in by_kind.values() if j < len(v)]
     summary = Summary()
     t0 = time.perf_counter()
     with tempfile.TemporaryDirectory(prefix="plans-fuzz-") as base:
