@@ -55,16 +55,23 @@ def _label(b: Builder, name: str) -> str:
     return name
 
 
-def v_triad(b: Builder, g: TriadGroup) -> None:
-    snap = b.snap
-    base = g.links[0]
-    Q, P, (i, j, m), S = _geometry(b, g)
+def _leash_ends(b: Builder, g: TriadGroup) -> tuple[list[tuple[str, str]], list[Any], list[Any]]:
+    """Each leash's (outer, inner) point names, and its outer end's image on the plan as
+    the known link gives it (laid off where the plan has no such point yet)."""
     names = [(o.point, d.point) for o, d in g.joints]
     xs, ns = [], []
     for k in range(3):
         x = b.image(g.known[k], names[k][0])
         xs.append(x)
         ns.append(ensure(b, g.known[k], names[k][0], x))
+    return names, xs, ns
+
+
+def v_triad(b: Builder, g: TriadGroup) -> None:
+    snap = b.snap
+    base = g.links[0]
+    Q, P, (i, j, m), S = _geometry(b, g)
+    names, xs, ns = _leash_ends(b, g)
     Li = b.line(xs[i], 1j * (P[i] - Q[i]), abs(P[i] - Q[i]), f"⟂ {names[i][0]}{names[i][1]}")
     Lj = b.line(xs[j], 1j * (P[j] - Q[j]), abs(P[j] - Q[j]), f"⟂ {names[j][0]}{names[j][1]}")
     s_lab = _label(b, "s")
@@ -104,12 +111,7 @@ def a_triad(b: Builder, g: TriadGroup, vr: Any) -> None:
     snap = b.snap
     base = g.links[0]
     Q, P, (i, j, m), S = _geometry(b, g)
-    names = [(o.point, d.point) for o, d in g.joints]
-    xs, ns = [], []
-    for k in range(3):
-        x = b.image(g.known[k], names[k][0])
-        xs.append(x)
-        ns.append(ensure(b, g.known[k], names[k][0], x))
+    names, xs, ns = _leash_ends(b, g)
     ends: dict[Any, tuple[str, Any]] = {}
     for k in (i, j):  # a_S = a_Q + a_PQ^n + a_SP^n + (a_PQ^τ + a_SP^τ) ⟂ QP
         leash = g.links[1 + k]
