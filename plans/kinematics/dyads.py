@@ -41,6 +41,7 @@ from plans.kinematics.structure import Group
 from plans.phrases import Phrase, phrase
 from plans.scene.model import Joint
 from plans.tolerances import COINCIDE_REL, LOCK_SIN, NEAR_PARALLEL_SIN
+from plans.units import clean
 
 #: Values over the cases: numpy arrays (complex plane vectors, real lengths and rates), or
 #: Python ``complex`` and ``float`` at one position (see :mod:`plans.kinematics.cases`).
@@ -52,7 +53,7 @@ if TYPE_CHECKING:  # numpy.typing only for the checker: it costs a command's sta
     #: One construction line: a point it passes through and its unit direction.
     Line = tuple[C, C]
 
-__all__ = ["Builder", "Mixed", "Pencil", "PerfectPencil", "Scheme", "cross", "plans_of", "unit"]
+__all__ = ["Builder", "Mixed", "Pencil", "PerfectPencil", "Scheme", "cross", "unit"]
 
 _FIELDS = ("rot", "r0", "omega", "v0", "eps", "a0")
 
@@ -478,11 +479,17 @@ def coincident(b: Builder, link: int, name: str, X: C) -> tuple[str, C]:
     return lb, xy
 
 
-def plans_of(snap: Scheme, mv: float, ma: float | None, pencil: Pencil,
-             protocol: bool = False) -> tuple[Builder, Builder | None]:
-    """Both plans over the cases of ``snap`` (the acceleration plan when ``ma`` is given)."""
-    from plans.kinematics import accelerations, velocities
-
-    vb = velocities.velocity_plan(snap, mv, pencil, protocol)
-    ab = accelerations.acceleration_plan(snap, ma, vb, pencil, protocol) if ma is not None else None
-    return vb, ab
+def lay_normal(b: Builder, vr: Any, link: int, frm: str, frm_xy: np.ndarray, P: np.ndarray,
+            X: np.ndarray, Pn: str, Xn: str) -> tuple[str, np.ndarray]:
+    """Lay off a_XP^n = ω²·l toward P from the image of P on the acceleration plan; ω read off
+    the velocity plan (``vr.omega``)."""
+    w = vr.omega(link)
+    ln = abs(P - X)
+    lb = f"n_{Xn}{Pn}"
+    vec = b.pencil.vector(b.mu * w * w * ln, P - X, ln, lb)
+    b.add(lb, frm_xy + vec)
+    b.step("lay off", (frm,), lb, lambda: phrase(
+        "a_normal", X=Xn, P=Pn, v=clean(abs(b.s(w * ln)), b.s(vr.vb.ref)), l=b.s(ln), an=clean(b.s(w * w * ln), b.s(b.ref)),
+        mm=abs(b.s(vec)), frm=frm))
+    b.seg(frm, lb, "normal", f"a_{Xn}{Pn}^n", b.snap.w[link] ** 2 * ln)
+    return lb, frm_xy + vec

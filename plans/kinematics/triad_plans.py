@@ -16,7 +16,16 @@ from typing import Any, cast
 import numpy as np
 
 from plans.errors import Locked
-from plans.kinematics.dyads import Builder, Mixed, ensure, lab, link_points, meet, rel_seg
+from plans.kinematics.dyads import (
+    Builder,
+    Mixed,
+    ensure,
+    lab,
+    lay_normal,
+    link_points,
+    meet,
+    rel_seg,
+)
 from plans.kinematics.structure import TriadGroup
 from plans.lines import cross
 from plans.phrases import phrase
@@ -106,8 +115,6 @@ def _leashes(b: Builder, g: TriadGroup, Q: list, P: list, xs: list, ns: list) ->
 
 
 def a_triad(b: Builder, g: TriadGroup, vr: Any) -> None:
-    from plans.kinematics.accelerations import _normal
-
     snap = b.snap
     base = g.links[0]
     Q, P, (i, j, m), S = _geometry(b, g)
@@ -115,9 +122,9 @@ def a_triad(b: Builder, g: TriadGroup, vr: Any) -> None:
     ends: dict[Any, tuple[str, Any]] = {}
     for k in (i, j):  # a_S = a_Q + a_PQ^n + a_SP^n + (a_PQ^τ + a_SP^τ) ⟂ QP
         leash = g.links[1 + k]
-        m1, y1 = _normal(b, vr, leash, ns[k], xs[k], Q[k], P[k], names[k][0], names[k][1])
+        m1, y1 = lay_normal(b, vr, leash, ns[k], xs[k], Q[k], P[k], names[k][0], names[k][1])
         ends[k] = (m1, y1)
-        m2, y2 = _normal(b, vr, base, m1, y1, P[k], S, names[k][1], "S")
+        m2, y2 = lay_normal(b, vr, base, m1, y1, P[k], S, names[k][1], "S")
         ends[(k, "S")] = (m2, y2)
     (mi, yi), (mj, yj) = ends[(i, "S")], ends[(j, "S")]
     Li = b.line(yi, 1j * (P[i] - Q[i]), abs(P[i] - Q[i]), f"⟂ {names[i][0]}{names[i][1]}")
@@ -128,8 +135,8 @@ def a_triad(b: Builder, g: TriadGroup, vr: Any) -> None:
         "a_triad_s", A=names[i][0], D=names[i][1], B=names[j][0], E=names[j][1], m1=mi, m2=mj, out=s_lab))
     Pm, Cn, Fn = P[m], names[m][0], names[m][1]
     leash_m = g.links[1 + m]
-    mc, yc = _normal(b, vr, leash_m, ns[m], xs[m], Q[m], Pm, Cn, Fn)
-    ms, ys = _normal(b, vr, base, s_lab, xS, S, Pm, "S", Fn)
+    mc, yc = lay_normal(b, vr, leash_m, ns[m], xs[m], Q[m], Pm, Cn, Fn)
+    ms, ys = lay_normal(b, vr, base, s_lab, xS, S, Pm, "S", Fn)
     Lc = b.line(yc, 1j * (Pm - Q[m]), abs(Pm - Q[m]), f"⟂ {Cn}{Fn}")
     Ls = b.line(ys, 1j * (Pm - S), abs(Pm - S), f"⟂ S{Fn}")
     out = lab(Fn)
