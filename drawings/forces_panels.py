@@ -30,7 +30,7 @@ from .panels import (
     SMALL_SIZE,
     VECTOR_STYLES,
     Panel,
-    _clip,
+    clip_line,
     finish,
     link_outline,
     link_shape,
@@ -330,7 +330,7 @@ def polygon_panel(plan: Plan, lang: str, style: str, pid: str, title: str) -> Pa
     ys = [p[1] for p in xy.values()]
     box = (min(xs) - 8, min(ys) - 8, max(xs) + 8, max(ys) + 8)
     for i, cl in enumerate(plan.lines):
-        seg = _clip(T(*cl.point), T.direction(*cl.direction), box)
+        seg = clip_line(T(*cl.point), T.direction(*cl.direction), box)
         if seg is not None:
             rec.line(seg[0], seg[1], Style(width=0.18, stroke="#666", cls="construction"), f"{pid}-line-{i}")
             placer.add_line(list(seg))

@@ -247,7 +247,7 @@ def scheme_panel(scene, kin, k: int, mu_l: float, lang: str, strokes: dict[str, 
         drawn.add(jt.point)
         c = T.z(glob[jt.point])
         if frame in jt.links:
-            _support(rec, c, f"{pid}-support-{ident(jt.point)}")
+            fixed_pivot(rec, c, f"{pid}-support-{ident(jt.point)}")
             placer.add_disc((c[0], c[1] + 4.0), 4.0)
         rec.circle(c, JOINT_R, Style(width=0.35, fill="#fff", cls="joint"), f"{pid}-joint-{ident(jt.point)}")
         placer.add_disc(c, JOINT_R + 0.3)
@@ -399,7 +399,7 @@ def _dead_points(scene, kin, k: int) -> list[str]:
     return out
 
 
-def _support(rec: Recording, c: Pt, eid: str) -> None:
+def fixed_pivot(rec: Recording, c: Pt, eid: str) -> None:
     """A fixed pivot: triangle to a hatched base, as the textbook draws the frame."""
     x, y = c
     rec.polyline([(x - 3.2, y + 5.5), (x, y), (x + 3.2, y + 5.5)], Style(width=0.5, cls="frame"), eid)
@@ -490,7 +490,7 @@ def plan_panel(plan: Plan, lang: str, scale_style: str, pid: str | None = None) 
     for i, cl in enumerate(plan.lines):
         p0 = T(*cl.point)
         d = T.direction(*cl.direction)
-        seg = _clip(p0, d, box)
+        seg = clip_line(p0, d, box)
         if seg is None:
             continue
         rec.line(seg[0], seg[1], Style(width=0.18, stroke="#666", cls="construction"), f"{pid}-line-{i}")
@@ -548,7 +548,7 @@ def plan_panel(plan: Plan, lang: str, scale_style: str, pid: str | None = None) 
                  fill=VECTOR_STYLES[s.kind].stroke or "#000")
     for i, cl in enumerate(plan.lines):
         p0 = T(*cl.point)
-        seg = _clip(p0, T.direction(*cl.direction), box)
+        seg = clip_line(p0, T.direction(*cl.direction), box)
         if seg is None or not cl.label:
             continue
         text = line_label(cl.label, lang)
@@ -578,7 +578,7 @@ def line_label(label: str, lang: str) -> str:
     return label
 
 
-def _clip(p: Pt, d: Pt, box: tuple[float, float, float, float]) -> tuple[Pt, Pt] | None:
+def clip_line(p: Pt, d: Pt, box: tuple[float, float, float, float]) -> tuple[Pt, Pt] | None:
     """The part of the line p + t·d inside ``box`` (Liang–Barsky)."""
     t0, t1 = -1e12, 1e12
     for pi, di, lo, hi in ((p[0], d[0], box[0], box[2]), (p[1], d[1], box[1], box[3])):
