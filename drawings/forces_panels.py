@@ -115,7 +115,7 @@ def _fbd_scale(values: Sequence[complex], cycle: float = 0.0, factor: float = 1.
     """μF of a free body: round, its longest force FBD_ARROW_MM at most; forces that are zero
     up to round-off against the cycle's largest (``cycle``) take the cycle's scale."""
     longest = max((abs(v) for v in values), default=0.0)
-    if longest <= 1e-9 * cycle:
+    if longest <= DUST * cycle:
         longest = cycle
     return nice_scale(longest, FBD_ARROW_MM * factor)
 

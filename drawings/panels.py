@@ -14,6 +14,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from plans.kinematics.plan import Plan
+from plans.units import DUST
 
 from .backend import FILLED, HAIR, MAIN, THICK, THIN, Prim, Pt, Recording, Style, Transform
 from .common import Placer, angle, arrow, dot, fmt, ident, phi_tag
@@ -362,7 +363,7 @@ def link_shape(scene, lid: int) -> tuple[str, list[str]]:
     size = max(abs(v - z[names[0]]) for v in z.values()) or 1.0
     u = base / abs(base) if abs(base) else 1.0
     rel = {n: (v - z[names[0]]) * u.conjugate() for n, v in z.items()}
-    if all(abs(r.imag) <= 1e-9 * size for r in rel.values()):
+    if all(abs(r.imag) <= DUST * size for r in rel.values()):
         lo = min(names, key=lambda n: rel[n].real)
         hi = max(names, key=lambda n: rel[n].real)
         return "line", [lo, hi]
@@ -394,7 +395,7 @@ def _dead_points(scene, kin, k: int) -> list[str]:
     for jt in scene.joints:
         if jt.kind == "P" and jt.guide is not None and jt.guide.link == scene.frame:
             v = complex(kin.point(jt.point)[1][k])
-            if abs(v) <= 1e-9 * max(va, 1e-300):
+            if abs(v) <= DUST * max(va, 1e-300):
                 out.append(jt.point)
     return out
 
@@ -698,7 +699,7 @@ def _diff_cell(r, unit: str, lang: str) -> str:
 
 def _clean(v: float, ref: float) -> float:
     """Round-off noise of a vanishing quantity shown as 0."""
-    return 0.0 if abs(v) <= 1e-9 * max(abs(ref), 1e-300) else v
+    return 0.0 if abs(v) <= DUST * max(abs(ref), 1e-300) else v
 
 
 def single(prims: Sequence[Prim]) -> None:  # pragma: no cover - debugging aid

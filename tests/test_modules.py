@@ -188,3 +188,19 @@ def test_the_checks_see_what_they_forbid(name, tmp_path, monkeypatch):
         assert _cycles(_graph()) == [["plans.room.a", "plans.room.b"]]
     else:
         assert _imports("plans.room.a", pkg / "a.py") == [("plans.room.b", "_hidden", 1)]
+
+
+#: The exact solver's ways to run (closed forms over arrays, the same in Python numbers, the
+#: usual crank's fast paths, the triads), behind one entry: :func:`plans.kinematics.exact.solve`.
+EXACT_SOLVERS = {"plans.kinematics.assur", "plans.kinematics.context", "plans.kinematics.fast",
+                 "plans.kinematics.fast_arrays", "plans.kinematics.triad_exact"}
+
+
+def test_the_exact_solvers_have_one_entry():
+    """Nothing but :mod:`plans.kinematics.exact` (and the solvers among themselves) imports
+    the exact solvers: every reader solves through ``exact.solve``."""
+    outside = sorted(f"{m} imports {dep}" for m, p in MODULES.items()
+                     if m not in EXACT_SOLVERS | {"plans.kinematics.exact"}
+                     for dep in {_ours(mod) for mod, _, _ in _imports(m, p)} & EXACT_SOLVERS)
+    assert outside == []
+    assert EXACT_SOLVERS <= set(MODULES)

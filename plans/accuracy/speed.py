@@ -218,21 +218,24 @@ SHEET_SVG, SHEET_PDF, SHEET_PNG, DIAGRAMS_SVG = 0.1, 0.4, 0.6, 0.2
 SHEET_DXF, SHEET_DXF_PER_SVG = 0.1, 5.0
 
 
+#: The renderer's timer of a scene's sheets, registered by the drawing package when it builds
+#: ``plans bench`` (``plans`` never imports ``drawings``): (scene paths, repeats) -> figures
+#: (:func:`drawings.bench.figures`: the sheets drawn through ``drawings.draw``).
+SHEET_FIGURES: list[Callable[[list[str], int], dict[str, Any]]] = []
+
+
 def sheet_goals(samples: Path, reps: int = 3) -> list[Goal]:
     """The V-engine's sheets written as SVG, PDF and PNG at 150 dpi, per sheet, and the
-    cycle's diagrams sheet as SVG, timed by the renderer in a fresh interpreter
-    (``python -m drawings.bench --json``; the engine never imports it)."""
-    root = Path(__file__).resolve().parents[2]
+    cycle's diagrams sheet as SVG, timed by the renderer's public API in this process
+    (:data:`SHEET_FIGURES`); skipped where the renderer is not installed."""
     scenes = [str(samples / "v_engine.toml"), str(samples / "v_engine_cycle.toml")]
     scenes = [s for s in scenes if Path(s).is_file()]
     if not scenes or not scenes[0].endswith("v_engine.toml"):
         return [Goal("sheets", "skipped: samples/v_engine.toml missing", math.nan, None)]
-    p = subprocess.run([sys.executable, "-m", "drawings.bench", "--json", "--repeat", str(reps), *scenes],
-                       cwd=root, capture_output=True, text=True, env=interpreter_env())
-    if p.returncode != 0:
-        why = (p.stderr.strip().splitlines() or [f"exit status {p.returncode}"])[-1]
-        return [Goal("sheets", f"skipped: {why}", math.nan, None)]
-    fig = json.loads(p.stdout)
+    if not SHEET_FIGURES:
+        return [Goal("sheets", "skipped: the renderer is not installed (plans bench of the drawings package)",
+                      math.nan, None)]
+    fig = SHEET_FIGURES[0](scenes, reps)
     sh = fig["sheets"]
     n = sh["sheets"]
     load = "/".join(f"{x:.1f}" for x in fig["load"])

@@ -11,6 +11,7 @@ from numpy.typing import NDArray
 from plans.kinematics import construction
 from plans.kinematics.scales import fit
 from plans.scene.model import Scene
+from plans.units import DUST
 
 C = NDArray[np.complex128]
 R = NDArray[np.float64]
@@ -50,7 +51,7 @@ def mu_force(fa: Forces, values: list[complex]) -> float:
         return given
     longest = max((abs(v) for v in values), default=0.0)
     cycle = fa.largest_reaction
-    if longest <= 1e-9 * cycle:  # zero up to round-off: a point, at the cycle's scale
+    if longest <= DUST * cycle:  # zero up to round-off: a point, at the cycle's scale
         longest = cycle
     return nice_scale(longest, 100.0 * fit(fa.scene))
 

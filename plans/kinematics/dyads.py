@@ -40,7 +40,7 @@ from plans.kinematics.plan import Step
 from plans.kinematics.structure import Group
 from plans.phrases import Phrase, phrase
 from plans.scene.model import Joint
-from plans.tolerances import COINCIDE_REL, LOCK_SIN, NEAR_PARALLEL_SIN
+from plans.tolerances import COINCIDE_REL, EXACT_ZERO_REL, LOCK_SIN, NEAR_PARALLEL_SIN
 from plans.units import clean
 
 #: Values over the cases: numpy arrays (complex plane vectors, real lengths and rates), or
@@ -303,7 +303,7 @@ class Builder:
             length = abs(self.pts[end] - self.pts[start])
             if length <= dust[1]:
                 length = 0.0
-            if exact <= 1e-12 * ref:
+            if exact <= EXACT_ZERO_REL * ref:
                 exact = 0.0
         else:
             xp = self.xp
@@ -311,7 +311,7 @@ class Builder:
             small = length <= dust[1]
             if xp.any(small):
                 length = np.where(small, 0.0, length)
-            small = exact <= 1e-12 * ref
+            small = exact <= EXACT_ZERO_REL * ref
             if xp.any(small):
                 exact = np.where(small, 0.0, exact)
         value = length / self.mu
@@ -421,11 +421,11 @@ def read_rates(b: Builder) -> None:
         q = omega if velocity else eps
         ref = b.ref / size
         if b.one:
-            floor = 1e-12 * ref
+            floor = EXACT_ZERO_REL * ref
             value = 0.0 if abs(value) <= floor else value
             exact = 0.0 if abs(exact) <= floor else exact
         else:
-            value, exact = _dust(value, 1e-12 * ref), _dust(exact, 1e-12 * ref)
+            value, exact = _dust(value, EXACT_ZERO_REL * ref), _dust(exact, EXACT_ZERO_REL * ref)
         b.readings.append((q, None, None, None, value, exact, unit_, ref, drawn))
 
 
