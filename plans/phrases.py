@@ -152,6 +152,11 @@ PHRASES: dict[str, tuple[str, str]] = {
                "{n} ⟂ кулисе, её плечо {mm:.2f} мм: |{n}| = {F:num} Н"),
     "m_name": ("{n}", "{n}"),
     "m_couple_of": ("the couple of {n} is {M:num} N·m", "момент пары {n} равен {M:num} Н·м"),
+    "m_triad_n": (
+        "S is where the axes {A}{D} and {B}{E} meet ({n1}^n and {n2}^n pass through it); {n}^n along {C}{F}, its arm "
+        "h = {mm:.2f} mm ({h:.5g} m), balances them: {n}^n = {N:num} N",
+        "S — точка пересечения осей {A}{D} и {B}{E} (через неё проходят {n1}^n и {n2}^n); {n}^n вдоль {C}{F} "
+        "с плечом h = {mm:.2f} мм ({h:.5g} м) их уравновешивает: {n}^n = {N:num} Н"),
     "m_crank_force": (
         "F_bal ⟂ O{pt} with the arm l = {mm:.2f} mm ({l:.5g} m) balances them: F_bal = {F:num} N "
         "along the motion of {pt}",

@@ -32,21 +32,34 @@ def _geometry(b: Builder, g: TriadGroup) -> tuple[list, list, tuple[int, int, in
     Q = [snap.pos(p, o.point) for p, (o, _) in zip(g.known, g.joints, strict=True)]
     P = [snap.pos(base, i.point) for _, i in g.joints]
     axis = [P[k] - Q[k] for k in range(3)]
-    pairs = ((0, 1), (1, 2), (0, 2))
-    sins = [np.atleast_1d(np.abs(cross(axis[i], axis[j])) / (np.abs(axis[i]) * np.abs(axis[j]))) for i, j in pairs]
-    # per position: AD and BE unless nearly parallel (then the next pair), so a position reads
-    # the same whichever positions are built with it
-    choice = np.where(sins[0] >= FAR_FROM_PARALLEL, 0, np.where(sins[1] >= FAR_FROM_PARALLEL, 1,
-                      np.where(sins[2] >= FAR_FROM_PARALLEL, 2, np.argmax(np.stack(sins), axis=0))))
+    sins = _sins(axis)
+    choice = pair_choice(axis)
     if np.any(choice != choice[0]):
         raise Mixed("s")
-    i, j = pairs[int(choice[0])]
+    i, j = PAIRS[int(choice[0])]
     if np.any(sins[int(choice[0])] <= 1e-12):
         raise Locked("the three leashes' axes are parallel (special position)", group=f"{g.kind} {g.name}",
                      point=g.point, phi_deg=b.snap.phi_at(int(np.argmin(sins[int(choice[0])]))))
     s = cross(Q[j] - Q[i], axis[j]) / cross(axis[i], axis[j])
     S = Q[i] + s * axis[i]
     return Q, P, (i, j, 3 - i - j), S
+
+
+#: the pairs of leashes whose axes may give S, in the order they are tried
+PAIRS = ((0, 1), (1, 2), (0, 2))
+
+
+def _sins(axis: list) -> list:
+    return [np.atleast_1d(np.abs(cross(axis[i], axis[j])) / (np.abs(axis[i]) * np.abs(axis[j]))) for i, j in PAIRS]
+
+
+def pair_choice(axis: list) -> np.ndarray:
+    """Per position, the index in :data:`PAIRS` of the leashes whose axes give S: AD and BE
+    unless nearly parallel (then the next pair), so a position reads the same whichever
+    positions are built with it (and the force analysis takes the plan's S)."""
+    sins = _sins(axis)
+    return np.where(sins[0] >= FAR_FROM_PARALLEL, 0, np.where(sins[1] >= FAR_FROM_PARALLEL, 1,
+                    np.where(sins[2] >= FAR_FROM_PARALLEL, 2, np.argmax(np.stack(sins), axis=0))))
 
 
 def _label(b: Builder, name: str) -> str:
@@ -151,3 +164,22 @@ def a_triad(b: Builder, g: TriadGroup, vr: Any) -> None:
         else:
             b.rate[leash] = (mc, out, abs(P[k] - Q[k]))
         b.seg(start, inner, "tangential", f"a_{names[k][1]}{names[k][0]}^τ", abs(snap.e[leash]) * abs(P[k] - Q[k]))
+
+
+def assur_point(kin: Any, g: TriadGroup) -> tuple[Any, Any]:
+    """Assur's point S of the group over the positions of ``kin`` (the plans' choice of the two
+    leashes), and that choice (index in :data:`PAIRS`); S is NaN-free: where all three axes
+    are parallel the caller has been stopped already, a pair never parallel is taken."""
+    base = g.links[0]
+    Q = [kin.point(o.point, p)[0] for p, (o, _) in zip(g.known, g.joints, strict=True)]
+    P = [kin.point(d.point, base)[0] for _, d in g.joints]
+    axis = [P[k] - Q[k] for k in range(3)]
+    choice = pair_choice(axis)
+    ii = np.array([p[0] for p in PAIRS])[choice]
+    jj = np.array([p[1] for p in PAIRS])[choice]
+    cols = np.arange(len(choice))
+    Qs, ax = np.stack(Q), np.stack(axis)
+    Qi, Qj, ui, uj = Qs[ii, cols], Qs[jj, cols], ax[ii, cols], ax[jj, cols]
+    s = cross(ui, uj)
+    safe = np.where(s == 0, 1.0, s)
+    return Qi + cross(Qj - Qi, uj) / safe * ui, choice
