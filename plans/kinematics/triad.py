@@ -161,6 +161,26 @@ def special_point_velocities(t: Triad, outer: tuple[complex, complex, complex], 
     raise SpecialPosition(f"group {t.name}: the three leashes are parallel (special position)")
 
 
+def special_kind(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta: float,
+                 tol: float = 1e-3) -> str | None:
+    """What makes this position special, or None: the three leashes' axes parallel, or
+    passing through one point (the leash equations' matrix singular to ``tol``)."""
+    P = t.inner(rD, theta)
+    axis = [P[k] - outer[k] for k in range(3)]
+    u = [a / abs(a) for a in axis]
+    if max(abs(_cross(u[i], u[j])) for i, j in ((0, 1), (1, 2), (0, 2))) <= tol:
+        return "the three leashes' axes are parallel (special position of the group)"
+    for i, j in ((0, 1), (1, 2), (0, 2)):
+        S = _meet(outer[i], axis[i], outer[j], axis[j])
+        if S is None:
+            continue
+        m = 3 - i - j
+        if abs(_cross(u[m], S - outer[m])) <= tol * max(t.size, abs(S - outer[m])):
+            return "the three leashes' axes pass through one point (special position of the group)"
+        return None
+    return None
+
+
 def leash_angles(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta: float) -> tuple[float, ...]:
     P = t.inner(rD, theta)
     return tuple(math.atan2((P[k] - outer[k]).imag, (P[k] - outer[k]).real) for k in range(3))

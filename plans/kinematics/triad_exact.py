@@ -20,7 +20,7 @@ import numpy as np
 from plans.errors import Locked, NotAssemblable
 from plans.kinematics.assur import _at, _Motion, _place
 from plans.kinematics.structure import Structure, TriadGroup, analyse
-from plans.kinematics.triad import SpecialPosition, Triad, place, rates
+from plans.kinematics.triad import SpecialPosition, Triad, place, rates, special_kind
 from plans.scene.model import Scene
 
 if TYPE_CHECKING:
@@ -72,10 +72,36 @@ def _track(scene: Scene, st: Structure, g: TriadGroup, t: Triad, outer_of) -> tu
         try:
             state = place(t, outer, state)
         except SpecialPosition as exc:
+            if k:  # the group may have run into its special position between two steps
+                _special_between(scene, before, g, t, outer_of, float(grid[k - 1]), phi, state)
             raise NotAssemblable(str(exc).split(": ", 1)[-1], group=t.name, point=g.point, phi_deg=phi) from None
         states.append(state)
     done = scene.memo[key] = (grid, states)
     return done
+
+
+def _special_between(scene: Scene, before: Structure, g: TriadGroup, t: Triad, outer_of, lo: float, hi: float,
+                     state: tuple[complex, float]) -> None:
+    """Where the group cannot be carried from ``lo`` to ``hi``: bisect to the last angle it
+    reaches; if its leashes' axes pass through one point there (or are parallel), that is
+    the group's special position (a dead position of the triad): say so, with the angle."""
+    from plans.kinematics.exact import solve
+
+    def outer_at(phi: float) -> tuple[complex, complex, complex]:
+        kin = solve(scene, [phi], order=0, structure=before)
+        got = [complex(np.atleast_1d(kin.point_on(p, z)[0])[0]) for p, z in outer_of]
+        return got[0], got[1], got[2]
+
+    for _ in range(40):
+        mid = 0.5 * (lo + hi)
+        try:
+            state = place(t, outer_at(mid), state)
+            lo = mid
+        except SpecialPosition:
+            hi = mid
+    kind = special_kind(t, outer_at(lo), *state)
+    if kind is not None:
+        raise Locked(kind, group=t.name, point=g.point, phi_deg=round(lo, 3))
 
 
 def _assemble(t: Triad, outer: tuple[complex, complex, complex], g: TriadGroup) -> tuple[complex, float]:
