@@ -7,7 +7,7 @@ from typing import Any
 
 import numpy as np
 
-from plans.kinematics.triad_plans import PAIRS, assur_point
+from plans.kinematics.triad_plans import PAIRS, assur_point, axes_of
 
 from .backend import Recording, Style, Transform
 from .common import Placer, dot, ident
@@ -48,8 +48,9 @@ def scheme_points(rec: Recording, placer: Placer, T: Transform, scene: Any, kin:
     triads = kin.structure.triads()
     for n, g in enumerate(triads):
         S, choice = assur_point(kin, g)
-        Q = [complex(kin.point(o.point, p)[0][k]) for p, (o, _) in zip(g.known, g.joints, strict=True)]
-        P = [complex(kin.point(d.point, g.links[0])[0][k]) for _, d in g.joints]
+        Qs, _, Ps = axes_of(kin, g)
+        Q = [complex(np.broadcast_to(x, np.shape(Ps[0]))[k]) for x in Qs]
+        P = [complex(x[k]) for x in Ps]
         _mark(rec, placer, T, complex(S[k]), Q, P, PAIRS[int(choice[k])], f"{pid}-{ident(g.name)}",
               "S" if len(triads) == 1 else f"S{'′' * n}")
 

@@ -56,7 +56,16 @@ class TriadForces:
     pair: NDArray[np.int_]
     #: ΣM_S of the whole group's known loads and the τ components (N·m): what R_m^n balances
     moment_S: R
+    #: per leash: the unit direction of its axis (outer → inner pair, or the guide's normal for
+    #: a slider), R^τ along i·axis and R^n along the axis (a slider's τ is 0: its guide's
+    #: reaction is N along the normal through the pin and the guide's couple)
+    axes: tuple[C, C, C]
+    tau: tuple[R, R, R]
+    normal: tuple[R, R, R]
     arms: Mapping[tuple[str, str], R] = field(default_factory=dict)
+
+    def slider(self, k: int) -> bool:
+        return self.group.joints[k][0].kind == "P"
 
     def leashes(self, k: int) -> tuple[int, int, int]:
         """(i, j, m) at position k: the leashes giving S, then the third."""
@@ -83,21 +92,23 @@ def _moment(fs, ms, P: C, n: int) -> R:
 def solve_triad(kin: Kinematics, g: TriadGroup, forces: dict, moments: dict) -> TriadForces:
     """The six reactions of the group, exact, vectorised over the positions of ``kin``."""
     from plans.forces.polygons import Reaction
+    from plans.kinematics.triad_plans import axes_of
 
     n = kin.n
     base = g.links[0]
     leashes = g.links[1:]
-    Q = [kin.point(o.point, leashes[k])[0] for k, (o, _) in enumerate(g.joints)]
-    P = [kin.point(d.point, leashes[k])[0] for k, (_, d) in enumerate(g.joints)]
-    axis = [P[k] - Q[k] for k in range(3)]
-    u = [unit_vector(a) for a in axis]  # along the leash, outer → inner
+    Q, axis, P = axes_of(kin, g)
+    Q = [np.broadcast_to(x, (n,)) for x in Q]
+    u = [unit_vector(np.broadcast_to(a, (n,))) for a in axis]  # along the leash, outer → inner
     length = [np.abs(a) for a in axis]
     e = [1j * x for x in u]
     links = g.links
     fl = [tuple(forces[x]) for x in links]
     ml = [tuple(moments[x]) for x in links]
-    # ΣM_P(leash k) = 0: −l·R^τ + M_k(P) = 0
-    tau = [_moment(fl[1 + k], ml[1 + k], P[k], n) / length[k] for k in range(3)]
+    slider = [o.kind == "P" for o, _ in g.joints]
+    # ΣM_P(leash k) = 0: −l·R^τ + M_k(P) = 0; a slider: the guide's couple −M_k(P), no τ
+    tau = [np.zeros(n) if slider[k] else _moment(fl[1 + k], ml[1 + k], P[k], n) / length[k] for k in range(3)]
+    couple = [-_moment(fl[1 + k], ml[1 + k], P[k], n) if slider[k] else np.zeros(n) for k in range(3)]
     pair = pair_choice(axis)
     ii = np.array([PAIRS[c][0] for c in range(3)])[pair]
     jj = np.array([PAIRS[c][1] for c in range(3)])[pair]
@@ -115,7 +126,7 @@ def solve_triad(kin: Kinematics, g: TriadGroup, forces: dict, moments: dict) -> 
     everything_m = [m for ms in ml for m in ms]
     known_S = _moment(everything_f, everything_m, S, n)
     for k in range(3):
-        known_S = known_S + cross(Q[k] - S, tau[k] * e[k])
+        known_S = known_S + cross(Q[k] - S, tau[k] * e[k]) + couple[k]
     arm_m = cross(Qm - S, um)  # R_m^n·arm_m + known_S = 0
     size = max(float(np.max(np.abs(a))) for a in axis)
     bad = np.abs(arm_m) <= 1e-9 * size
@@ -134,11 +145,16 @@ def solve_triad(kin: Kinematics, g: TriadGroup, forces: dict, moments: dict) -> 
     outer, inner = [], []
     for k, (o, d) in enumerate(g.joints):
         Rk = tau[k] * e[k] + nrm[k] * u[k]
-        outer.append(Reaction(o, leashes[k], g.known[k], Q[k], Rk, zero, tau=tau[k], n=nrm[k], e_tau=e[k], e_n=u[k]))
+        if slider[k]:  # N ⟂ the guide at the pin and the guide's couple
+            outer.append(Reaction(o, leashes[k], g.known[k], P[k], Rk, couple[k], guide=-1j * u[k]))
+        else:
+            outer.append(Reaction(o, leashes[k], g.known[k], Q[k], Rk, zero, tau=tau[k], n=nrm[k], e_tau=e[k],
+                                  e_n=u[k]))
         # leash k in equilibrium: the base's reaction on it is −(R_k + its loads)
         inner.append(Reaction(d, base, leashes[k], P[k], Rk + _sum(fl[1 + k], n), zero))
     arms = _Arms(g, fl, P, S, Qm, um)
-    return TriadForces(g, tuple(fl), tuple(ml), tuple(outer) + tuple(inner), S, pair, known_S, arms)
+    return TriadForces(g, tuple(fl), tuple(ml), tuple(outer) + tuple(inner), S, pair, known_S,
+                       (u[0], u[1], u[2]), (tau[0], tau[1], tau[2]), (nrm[0], nrm[1], nrm[2]), arms)
 
 
 class _Arms(Mapping):

@@ -36,7 +36,12 @@ def _cross(a: complex, b: complex) -> float:
 
 @frozen
 class Triad:
-    """E and F in the base link's frame (origin D, x axis at angle θ), the leash lengths."""
+    """E and F in the base link's frame (origin D, x axis at angle θ), the leash lengths.
+
+    A leash may be a slider instead (``guides[k]`` its guide's unit direction, fixed to the
+    frame): its inner pair then moves along the guide through its outer point (the guide's
+    origin, passed as the outer point), and its "axis" (the line the special point is taken
+    on) is the normal to the guide through the inner pair."""
 
     zE: complex
     zF: complex
@@ -44,6 +49,7 @@ class Triad:
     l2: float
     l3: float
     name: str = "triad"
+    guides: tuple[complex | None, complex | None, complex | None] = (None, None, None)
 
     def inner(self, rD: complex, theta: float) -> tuple[complex, complex, complex]:
         rot = cmath.exp(1j * theta)
@@ -62,14 +68,15 @@ def place(t: Triad, outer: tuple[complex, complex, complex], guess: tuple[comple
           tol: float = 1e-13, iterations: int = 60) -> tuple[complex, float]:
     """(r_D, θ) with every leash at its length, by Newton from ``guess``."""
     rD, th = guess
-    lengths = (t.l1, t.l2, t.l3)
     for _ in range(iterations):
         P = t.inner(rD, th)
         rot = cmath.exp(1j * th)
         arms = (0j, rot * t.zE, rot * t.zF)
-        f = [abs(P[k] - outer[k]) ** 2 - lengths[k] ** 2 for k in range(3)]
-        J = [[2 * (P[k] - outer[k]).real, 2 * (P[k] - outer[k]).imag, 2 * _dot(P[k] - outer[k], 1j * arms[k])]
-             for k in range(3)]
+        f, J = [], []
+        for k in range(3):
+            n = _normal(t, k, P[k], outer[k])  # the row is n·(δr_D + δθ·i·arm)
+            J.append([n.real, n.imag, _dot(n, 1j * arms[k])])
+            f.append(_residual(t, k, P[k], outer[k]))
         step = _solve3(J, [-x for x in f])
         if step is None:
             raise SpecialPosition(f"group {t.name}: the leashes' equations are singular here")
@@ -78,6 +85,24 @@ def place(t: Triad, outer: tuple[complex, complex, complex], guess: tuple[comple
         if max(abs(step[0]), abs(step[1]), abs(step[2]) * t.size) <= tol * t.size:
             return rD, th
     raise SpecialPosition(f"group {t.name}: no place with the leashes at their lengths near the previous one")
+
+
+def _lengths(t: Triad) -> tuple[float, float, float]:
+    return t.l1, t.l2, t.l3
+
+
+def _normal(t: Triad, k: int, P: complex, Q: complex) -> complex:
+    """The gradient of leash k's equation in the inner pair's position: P − Q for a revolute
+    leash (|P − Q|² = l², halved), i·g for a slider on the guide g through Q."""
+    g = t.guides[k]
+    return P - Q if g is None else 1j * g
+
+
+def _residual(t: Triad, k: int, P: complex, Q: complex) -> float:
+    g = t.guides[k]
+    if g is None:
+        return (abs(P - Q) ** 2 - _lengths(t)[k] ** 2) / 2
+    return _dot(1j * g, P - Q)  # the pin's distance from the guide's line
 
 
 def _solve3(J: list[list[float]], b: list[float]) -> list[float] | None:
@@ -102,7 +127,7 @@ def rates(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta:
     """(v_D, ω, a_D, ε) of the base link from the leash equations (exact, not graphical)."""
     P = t.inner(rD, theta)
     arms = [P[k] - rD for k in range(3)]
-    d = [P[k] - outer[k] for k in range(3)]
+    d = [_normal(t, k, P[k], outer[k]) for k in range(3)]
     J = [[d[k].real, d[k].imag, _dot(d[k], 1j * arms[k])] for k in range(3)]
     x = _solve3(J, [_dot(d[k], v_outer[k]) for k in range(3)])
     if x is None:
@@ -111,7 +136,10 @@ def rates(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta:
     if a_outer is None:
         return vD, w, None, None
     vP = [vD + 1j * w * arms[k] for k in range(3)]
-    rhs = [_dot(d[k], a_outer[k] + w * w * arms[k]) - abs(vP[k] - v_outer[k]) ** 2 for k in range(3)]
+    # a slider on a fixed guide: n·a_P = 0 (n constant); a revolute leash: the derivative
+    # of (P − Q)·(v_P − v_Q) = 0 brings |v_P − v_Q|²
+    rhs = [_dot(d[k], a_outer[k] + w * w * arms[k])
+           - (abs(vP[k] - v_outer[k]) ** 2 if t.guides[k] is None else 0.0) for k in range(3)]
     y = _solve3(J, rhs)
     assert y is not None  # the same matrix
     return vD, w, complex(y[0], y[1]), y[2]
@@ -136,14 +164,25 @@ class SpecialPoint:
     v_inner: tuple[complex, complex, complex]
 
 
+def _axis(t: Triad, k: int, P: complex, Q: complex) -> complex:
+    """The direction of leash k's axis: along the leash, or the guide's normal for a slider."""
+    return _normal(t, k, P, Q)
+
+
+def _on_axis(t: Triad, k: int, P: complex, Q: complex) -> complex:
+    """A point of leash k's axis: its outer pair, or the slider's pin."""
+    return Q if t.guides[k] is None else P
+
+
 def special_point_velocities(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta: float,
                              v_outer: tuple[complex, complex, complex]) -> SpecialPoint:
     """The textbook's construction: s where the lines through a ⟂ AD and through b ⟂ BE meet,
     then f from v_F − v_C ⟂ CF, then d and e."""
     P = t.inner(rD, theta)
-    axis = [P[k] - outer[k] for k in range(3)]
+    axis = [_axis(t, k, P[k], outer[k]) for k in range(3)]
+    on = [_on_axis(t, k, P[k], outer[k]) for k in range(3)]
     for i, j in ((0, 1), (1, 2), (0, 2)):  # parallel axes: the other pair's point
-        S = _meet(outer[i], axis[i], outer[j], axis[j])
+        S = _meet(on[i], axis[i], on[j], axis[j])
         if S is None:
             continue
         # s: v_S − v_Qi ⟂ axis i and v_S − v_Qj ⟂ axis j, two lines of the velocity plan
@@ -166,16 +205,17 @@ def special_kind(t: Triad, outer: tuple[complex, complex, complex], rD: complex,
     """What makes this position special, or None: the three leashes' axes parallel, or
     passing through one point (the leash equations' matrix singular to ``tol``)."""
     P = t.inner(rD, theta)
-    axis = [P[k] - outer[k] for k in range(3)]
+    axis = [_axis(t, k, P[k], outer[k]) for k in range(3)]
+    on = [_on_axis(t, k, P[k], outer[k]) for k in range(3)]
     u = [a / abs(a) for a in axis]
     if max(abs(_cross(u[i], u[j])) for i, j in ((0, 1), (1, 2), (0, 2))) <= tol:
         return "the three leashes' axes are parallel (special position of the group)"
     for i, j in ((0, 1), (1, 2), (0, 2)):
-        S = _meet(outer[i], axis[i], outer[j], axis[j])
+        S = _meet(on[i], axis[i], on[j], axis[j])
         if S is None:
             continue
         m = 3 - i - j
-        if abs(_cross(u[m], S - outer[m])) <= tol * max(t.size, abs(S - outer[m])):
+        if abs(_cross(u[m], S - on[m])) <= tol * max(t.size, abs(S - on[m])):
             return "the three leashes' axes pass through one point (special position of the group)"
         return None
     return None
@@ -205,9 +245,11 @@ def special_point_accelerations(t: Triad, outer: tuple[complex, complex, complex
     sp = special_point_velocities(t, outer, rD, theta, v_outer)
     i, j = sp.leashes
     P = t.inner(rD, theta)
-    axis = [P[k] - outer[k] for k in range(3)]
+    axis = [_axis(t, k, P[k], outer[k]) for k in range(3)]
     w = sp.omega
-    w_leash = [_cross(axis[k], sp.v_inner[k] - v_outer[k]) / abs(axis[k]) ** 2 for k in range(3)]
+    # a slider on a fixed guide does not turn: no normal term along its axis
+    w_leash = [0.0 if t.guides[k] is not None else _cross(axis[k], sp.v_inner[k] - v_outer[k]) / abs(axis[k]) ** 2
+               for k in range(3)]
     known = [a_outer[k] - w_leash[k] ** 2 * axis[k] - w * w * (sp.S - P[k]) for k in range(3)]
     aS = _meet(known[i], 1j * axis[i], known[j], 1j * axis[j])
     if aS is None:

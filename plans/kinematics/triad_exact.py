@@ -35,14 +35,23 @@ def constants(scene: Scene, g: TriadGroup) -> tuple:
     base = scene.links[g.links[0]]
     (oA, iD), (oB, iE), (oC, iF) = g.joints
     zD = base.points[iD.point]
-    lengths = []
-    for k, (o, i) in zip(g.links[1:], g.joints, strict=True):
+    lengths: list[float] = []
+    guides: list[complex | None] = []
+    outer = []
+    for k, p, (o, i) in zip(g.links[1:], g.known, g.joints, strict=True):
         leash = scene.links[k]
+        if o.kind == "P":  # a slider on a guide of the frame: the guide's origin, its direction
+            assert o.guide is not None
+            lengths.append(0.0)
+            guides.append(o.guide.direction)
+            outer.append((p, o.guide.origin))
+            continue
         lengths.append(abs(leash.points[i.point] - leash.points[o.point]))
+        guides.append(None)
+        outer.append((p, _local(scene, p, o.point)))
     t = Triad(base.points[iE.point] - zD, base.points[iF.point] - zD, lengths[0], lengths[1], lengths[2],
-              name=f"{g.kind} {g.name}")
-    outer = tuple((p, _local(scene, p, o.point)) for p, (o, _) in zip(g.known, g.joints, strict=True))
-    return t, zD, outer
+              name=f"{g.kind} {g.name}", guides=(guides[0], guides[1], guides[2]))
+    return t, zD, tuple(outer)
 
 
 def _local(scene: Scene, link: int, name: str) -> complex:
@@ -171,6 +180,9 @@ def solve_group(ctx: _Ctx, g: TriadGroup, k: tuple) -> None:
     inner = (rD, rD + rot * t.zE, rD + rot * t.zF)
     for leash, (o, i), Q in zip(g.links[1:], g.joints, range(3), strict=True):
         L = ctx.scene.links[leash]
+        if o.kind == "P":
+            _slider(ctx, leash, o, L.points[i.point], inner[Q], rD, vD, aD, w, e, out)
+            continue
         zq, zp = L.points[o.point], L.points[i.point]
         P = inner[Q]
         d = P - R[Q]
@@ -186,6 +198,28 @@ def solve_group(ctx: _Ctx, g: TriadGroup, k: tuple) -> None:
                 el = (d.conjugate() * (aPl - A[Q])).imag / abs(d) ** 2
             _set_rates(ctx, ml, out(R[Q]), out(V[Q]), None if A is None else out(A[Q]), out(wl),
                        None if el is None else out(el))
+
+
+def _slider(ctx: _Ctx, leash: int, o: Any, zp: complex, P: Any, rD: Any, vD: Any, aD: Any, w: Any, e: Any,
+            out: Any) -> None:
+    """A leash that slides on a guide of the frame: it keeps its angle, its pin is the base's
+    inner pair; its slide ṡ, s̈ along the guide."""
+    from plans.kinematics.assur import _name, _turn
+
+    n = len(P)
+    turn = _turn(o)
+    m = _place(ctx, leash, out(np.full(n, turn)), out(P), zp)
+    if ctx.order < 1:
+        return
+    arm = P - rD
+    vP = vD + 1j * w * arm
+    g = o.guide.direction
+    aP = aD + (1j * e - w * w) * arm if ctx.order >= 2 else None
+    _set_rates(ctx, m, out(P), out(vP), None if aP is None else out(aP), out(np.zeros(n)),
+               None if aP is None else out(np.zeros(n)))
+    sd = (vP * np.conj(g)).real
+    sdd = None if aP is None else (aP * np.conj(g)).real
+    ctx.slides[_name(o)] = (out(sd), None if sdd is None else out(sdd))
 
 
 def _set_rates(ctx: _Ctx, m: _Motion, anchor: Any, v: Any, a: Any, omega: Any, eps: Any) -> None:

@@ -25,13 +25,26 @@ from plans.phrases import phrase
 FAR_FROM_PARALLEL = 0.05
 
 
-def _geometry(b: Builder, g: TriadGroup) -> tuple[list, list, tuple[int, int, int], Any]:
-    """Outer and inner pairs on the scheme, the leashes (i, j) whose axes give S, the third, S."""
+def _slider(o: Any) -> bool:
+    """A leash that is a slider on a guide of the frame (its outer pair P at its inner pin)."""
+    return o.kind == "P"
+
+
+def _geometry(b: Builder, g: TriadGroup) -> tuple[list, list, list, tuple[int, int, int], Any]:
+    """Per leash a point of its axis (the outer pair, or a slider's pin) and the axis' direction
+    (along the leash, or the guide's normal); the inner pairs; the leashes (i, j) whose axes
+    give S, the third; S."""
     snap = b.snap
     base = g.links[0]
-    Q = [snap.pos(p, o.point) for p, (o, _) in zip(g.known, g.joints, strict=True)]
     P = [snap.pos(base, i.point) for _, i in g.joints]
-    axis = [P[k] - Q[k] for k in range(3)]
+    Q, axis = [], []
+    for k, (p, (o, _)) in enumerate(zip(g.known, g.joints, strict=True)):
+        if _slider(o):
+            Q.append(P[k])
+            axis.append(1j * snap.guide(o)[0])
+        else:
+            Q.append(snap.pos(p, o.point))
+            axis.append(P[k] - Q[k])
     sins = _sins(axis)
     choice = pair_choice(axis)
     if np.any(choice != choice[0]):
@@ -42,7 +55,7 @@ def _geometry(b: Builder, g: TriadGroup) -> tuple[list, list, tuple[int, int, in
                      point=g.point, phi_deg=b.snap.phi_at(int(np.argmin(sins[int(choice[0])]))))
     s = cross(Q[j] - Q[i], axis[j]) / cross(axis[i], axis[j])
     S = Q[i] + s * axis[i]
-    return Q, P, (i, j, 3 - i - j), S
+    return Q, P, axis, (i, j, 3 - i - j), S
 
 
 #: the pairs of leashes whose axes may give S, in the order they are tried
@@ -70,34 +83,68 @@ def _label(b: Builder, name: str) -> str:
 
 def _leash_ends(b: Builder, g: TriadGroup) -> tuple[list[tuple[str, str]], list[Any], list[Any]]:
     """Each leash's (outer, inner) point names, and its outer end's image on the plan as
-    the known link gives it (laid off where the plan has no such point yet)."""
+    the known link gives it (laid off where the plan has no such point yet; a slider's: the
+    frame's point under its pin, the pole)."""
     names = [(o.point, d.point) for o, d in g.joints]
     xs, ns = [], []
-    for k in range(3):
+    for k, (o, _) in enumerate(g.joints):
+        if _slider(o):
+            xs.append(b.zero)
+            ns.append(b.pole)
+            continue
         x = b.image(g.known[k], names[k][0])
         xs.append(x)
         ns.append(ensure(b, g.known[k], names[k][0], x))
     return names, xs, ns
 
 
+def _words(g: TriadGroup, names: list, k: int) -> tuple[Any, Any]:
+    """(the axis, the line through the leash's outer image) of leash k, as the protocol says them."""
+    o, _ = g.joints[k]
+    A, D = names[k]
+    if _slider(o):
+        return phrase("t_axis_guide", F=D), phrase("t_par_guide", F=D)
+    return phrase("t_axis_leash", A=A, D=D), phrase("t_perp", A=A, D=D)
+
+
+def _label_of(g: TriadGroup, names: list, k: int) -> str:
+    o, _ = g.joints[k]
+    return f"∥ guide of {names[k][1]}" if _slider(o) else f"⟂ {names[k][0]}{names[k][1]}"
+
+
+def _span(Q: Any, P: Any, o: Any) -> Any:
+    return 0.0 if _slider(o) else abs(P - Q)
+
+
 def v_triad(b: Builder, g: TriadGroup) -> None:
     snap = b.snap
     base = g.links[0]
-    Q, P, (i, j, m), S = _geometry(b, g)
+    Q, P, axis, (i, j, m), S = _geometry(b, g)
     names, xs, ns = _leash_ends(b, g)
-    Li = b.line(xs[i], 1j * (P[i] - Q[i]), abs(P[i] - Q[i]), f"⟂ {names[i][0]}{names[i][1]}")
-    Lj = b.line(xs[j], 1j * (P[j] - Q[j]), abs(P[j] - Q[j]), f"⟂ {names[j][0]}{names[j][1]}")
+    oi, om, oj = g.joints[i][0], g.joints[m][0], g.joints[j][0]
+    Li = b.line(xs[i], 1j * axis[i], _span(Q[i], P[i], oi), _label_of(g, names, i))
+    Lj = b.line(xs[j], 1j * axis[j], _span(Q[j], P[j], oj), _label_of(g, names, j))
     s_lab = _label(b, "s")
     xS = meet(b, cast(Any, g), Li, Lj, s_lab, b.mu * snap.v(base, S), "S", ())
-    b.step("intersect", (ns[i], ns[j]), s_lab, lambda: phrase(
-        "v_triad_s", A=names[i][0], D=names[i][1], B=names[j][0], E=names[j][1], n1=ns[i], n2=ns[j], out=s_lab))
+    plain = not any(_slider(o) for o, _ in g.joints)
+    if plain:
+        b.step("intersect", (ns[i], ns[j]), s_lab, lambda: phrase(
+            "v_triad_s", A=names[i][0], D=names[i][1], B=names[j][0], E=names[j][1], n1=ns[i], n2=ns[j], out=s_lab))
+    else:
+        b.step("intersect", (ns[i], ns[j]), s_lab, lambda: phrase(
+            "v_triad_sg", ax1=_words(g, names, i)[0], ax2=_words(g, names, j)[0], l1=_words(g, names, i)[1],
+            l2=_words(g, names, j)[1], n1=ns[i], n2=ns[j], out=s_lab))
     Pm, Cn, Fn = P[m], names[m][0], names[m][1]
-    Lc = b.line(xs[m], 1j * (Pm - Q[m]), abs(Pm - Q[m]), f"⟂ {Cn}{Fn}")
+    Lc = b.line(xs[m], 1j * axis[m], _span(Q[m], Pm, om), _label_of(g, names, m))
     Ls = b.line(xS, 1j * (Pm - S), abs(Pm - S), f"⟂ S{Fn}")
     out = lab(Fn)
     xF = meet(b, cast(Any, g), Lc, Ls, out, b.mu * snap.v(base, Pm), Fn, (base, g.links[1 + m]))
-    b.step("intersect", (ns[m], s_lab), out, lambda: phrase(
-        "v_triad_f", C=Cn, F=Fn, n3=ns[m], s=s_lab, out=out))
+    if plain:
+        b.step("intersect", (ns[m], s_lab), out, lambda: phrase(
+            "v_triad_f", C=Cn, F=Fn, n3=ns[m], s=s_lab, out=out))
+    else:
+        b.step("intersect", (ns[m], s_lab), out, lambda: phrase(
+            "v_triad_fg", F=Fn, n3=ns[m], s=s_lab, out=out, l3=_words(g, names, m)[1]))
     b.set_link(base, s_lab, S, (xF - xS) / (Pm - S))
     b.rate[base] = (s_lab, out, abs(Pm - S))
     b.seg(b.pole, out, "absolute", f"v_{Fn}", abs(snap.v(base, Pm)))
@@ -112,6 +159,10 @@ def _leashes(b: Builder, g: TriadGroup, Q: list, P: list, xs: list, ns: list) ->
         leash = g.links[1 + k]
         inner = b.labels[(base, d.point)]
         b.labels[(leash, d.point)] = inner
+        if _slider(o):  # it slides on the frame: it does not turn
+            b.set_link(leash, inner, P[k], b.factor[g.known[k]])
+            b.rate[leash] = g.known[k]
+            continue
         b.set_link(leash, inner, P[k], (b.pts[inner] - xs[k]) / (P[k] - Q[k]))
         if b.sym == "v":
             b.rate[leash] = (ns[k], inner, abs(P[k] - Q[k]))
@@ -123,32 +174,49 @@ def a_triad(b: Builder, g: TriadGroup, vr: Any) -> None:
 
     snap = b.snap
     base = g.links[0]
-    Q, P, (i, j, m), S = _geometry(b, g)
+    Q, P, axis, (i, j, m), S = _geometry(b, g)
     names, xs, ns = _leash_ends(b, g)
     ends: dict[Any, tuple[str, Any]] = {}
     for k in (i, j):  # a_S = a_Q + a_PQ^n + a_SP^n + (a_PQ^τ + a_SP^τ) ⟂ QP
         leash = g.links[1 + k]
-        m1, y1 = _normal(b, vr, leash, ns[k], xs[k], Q[k], P[k], names[k][0], names[k][1])
+        o = g.joints[k][0]
+        if _slider(o):  # a_P ∥ guide: from the pole, only the base's normal term a_SP^n
+            m1, y1 = b.pole, b.zero
+        else:
+            m1, y1 = _normal(b, vr, leash, ns[k], xs[k], Q[k], P[k], names[k][0], names[k][1])
         ends[k] = (m1, y1)
         m2, y2 = _normal(b, vr, base, m1, y1, P[k], S, names[k][1], "S")
         ends[(k, "S")] = (m2, y2)
     (mi, yi), (mj, yj) = ends[(i, "S")], ends[(j, "S")]
-    Li = b.line(yi, 1j * (P[i] - Q[i]), abs(P[i] - Q[i]), f"⟂ {names[i][0]}{names[i][1]}")
-    Lj = b.line(yj, 1j * (P[j] - Q[j]), abs(P[j] - Q[j]), f"⟂ {names[j][0]}{names[j][1]}")
+    oi, om, oj = g.joints[i][0], g.joints[m][0], g.joints[j][0]
+    Li = b.line(yi, 1j * axis[i], _span(Q[i], P[i], oi), _label_of(g, names, i))
+    Lj = b.line(yj, 1j * axis[j], _span(Q[j], P[j], oj), _label_of(g, names, j))
     s_lab = _label(b, "s")
     xS = meet(b, cast(Any, g), Li, Lj, s_lab, b.mu * snap.a(base, S), "S", ())
-    b.step("intersect", (mi, mj), s_lab, lambda: phrase(
-        "a_triad_s", A=names[i][0], D=names[i][1], B=names[j][0], E=names[j][1], m1=mi, m2=mj, out=s_lab))
+    plain = not any(_slider(o) for o, _ in g.joints)
+    if plain:
+        b.step("intersect", (mi, mj), s_lab, lambda: phrase(
+            "a_triad_s", A=names[i][0], D=names[i][1], B=names[j][0], E=names[j][1], m1=mi, m2=mj, out=s_lab))
+    else:
+        b.step("intersect", (mi, mj), s_lab, lambda: phrase(
+            "a_triad_sg", l1=_words(g, names, i)[1], l2=_words(g, names, j)[1], m1=mi, m2=mj, out=s_lab))
     Pm, Cn, Fn = P[m], names[m][0], names[m][1]
     leash_m = g.links[1 + m]
-    mc, yc = _normal(b, vr, leash_m, ns[m], xs[m], Q[m], Pm, Cn, Fn)
+    if _slider(om):
+        mc, yc = b.pole, b.zero
+    else:
+        mc, yc = _normal(b, vr, leash_m, ns[m], xs[m], Q[m], Pm, Cn, Fn)
     ms, ys = _normal(b, vr, base, s_lab, xS, S, Pm, "S", Fn)
-    Lc = b.line(yc, 1j * (Pm - Q[m]), abs(Pm - Q[m]), f"⟂ {Cn}{Fn}")
+    Lc = b.line(yc, 1j * axis[m], _span(Q[m], Pm, om), _label_of(g, names, m))
     Ls = b.line(ys, 1j * (Pm - S), abs(Pm - S), f"⟂ S{Fn}")
     out = lab(Fn)
     xF = meet(b, cast(Any, g), Lc, Ls, out, b.mu * snap.a(base, Pm), Fn, (base, leash_m))
-    b.step("intersect", (mc, ms), out, lambda: phrase(
-        "a_triad_f", C=Cn, F=Fn, m3=mc, ms=ms, out=out))
+    if plain:
+        b.step("intersect", (mc, ms), out, lambda: phrase(
+            "a_triad_f", C=Cn, F=Fn, m3=mc, ms=ms, out=out))
+    else:
+        b.step("intersect", (mc, ms), out, lambda: phrase(
+            "a_triad_fg", F=Fn, m3=mc, ms=ms, out=out, l3=_words(g, names, m)[1]))
     b.set_link(base, s_lab, S, (xF - xS) / (Pm - S))
     b.rate[base] = (ms, out, abs(Pm - S))
     b.seg(ms, out, "tangential", f"a_{Fn}S^τ", abs(snap.e[base]) * abs(Pm - S))
@@ -157,6 +225,8 @@ def a_triad(b: Builder, g: TriadGroup, vr: Any) -> None:
     _leashes(b, g, Q, P, xs, ns)
     for k in range(3):
         leash = g.links[1 + k]
+        if _slider(g.joints[k][0]):
+            continue
         start = ends[k][0] if k in ends else mc
         inner = b.labels[(base, names[k][1])]
         if k != m:  # the leash's own tangential term: from its normal term to its inner pair's image
@@ -166,14 +236,28 @@ def a_triad(b: Builder, g: TriadGroup, vr: Any) -> None:
         b.seg(start, inner, "tangential", f"a_{names[k][1]}{names[k][0]}^τ", abs(snap.e[leash]) * abs(P[k] - Q[k]))
 
 
+def axes_of(kin: Any, g: TriadGroup) -> tuple[list, list, list]:
+    """Over the positions of ``kin``: per leash a point of its axis (the outer pair, or a
+    slider's pin), the axis' direction (along the leash, or the guide's normal), the inner pair."""
+    base = g.links[0]
+    P = [kin.point(d.point, base)[0] for _, d in g.joints]
+    Q, axis = [], []
+    for k, (p, (o, _)) in enumerate(zip(g.known, g.joints, strict=True)):
+        if _slider(o):
+            Q.append(P[k])
+            assert o.guide is not None
+            axis.append(np.broadcast_to(1j * o.guide.direction, np.shape(P[k])))
+        else:
+            Q.append(kin.point(o.point, p)[0])
+            axis.append(P[k] - Q[k])
+    return Q, axis, P
+
+
 def assur_point(kin: Any, g: TriadGroup) -> tuple[Any, Any]:
     """Assur's point S of the group over the positions of ``kin`` (the plans' choice of the two
     leashes), and that choice (index in :data:`PAIRS`); S is NaN-free: where all three axes
     are parallel the caller has been stopped already, a pair never parallel is taken."""
-    base = g.links[0]
-    Q = [kin.point(o.point, p)[0] for p, (o, _) in zip(g.known, g.joints, strict=True)]
-    P = [kin.point(d.point, base)[0] for _, d in g.joints]
-    axis = [P[k] - Q[k] for k in range(3)]
+    Q, axis, _ = axes_of(kin, g)
     choice = pair_choice(axis)
     ii = np.array([p[0] for p in PAIRS])[choice]
     jj = np.array([p[1] for p in PAIRS])[choice]
