@@ -167,6 +167,12 @@ def test_json_and_sheet_carry_the_group(tmp_path):
     pos = data["positions"][3]
     for name in ("F21", "F46", "F56", "F32", "F34", "F35", "F23"):
         assert name in pos["reactions"]
+    (sp,) = pos["assur_points"]  # S on the axes of the two leashes it names
+    assert sp["group"] == "2-3-4-5"
+    S = complex(*sp["point"])
+    for a, b in sp["leashes"]:
+        A_, B_ = complex(*pos["points"][a]["r"]), complex(*pos["points"][b]["r"])
+        assert abs(_cross(B_ - A_, S - A_)) <= 1e-12 * abs(B_ - A_) * max(abs(S - A_), 1.0)
     bal = pos["balancing"]
     assert abs(bal["by_kinetostatics"] - bal["by_power"]) <= 1e-9 * abs(bal["by_power"])
     assert abs(bal["by_lever"] - bal["by_power"]) <= 1e-9 * abs(bal["by_power"])

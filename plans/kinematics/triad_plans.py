@@ -267,3 +267,20 @@ def assur_point(kin: Any, g: TriadGroup) -> tuple[Any, Any]:
     s = cross(ui, uj)
     safe = np.where(s == 0, 1.0, s)
     return Qi + cross(Qj - Qi, uj) / safe * ui, choice
+
+
+def assur_points_json(kin: Any, k: int) -> list[dict]:
+    """``positions[i].assur_points``: per class-III group its special point S (m, the scene's
+    frame) and the two leashes whose axes give it ([outer, inner] point names)."""
+    memo = kin.__dict__.setdefault("_assur", {})
+    out = []
+    for g in kin.structure.triads():
+        got = memo.get(g.name)
+        if got is None:
+            got = memo[g.name] = assur_point(kin, g)
+        S, choice = got
+        i, j = PAIRS[int(choice[k])]
+        z = complex(S[k])
+        out.append({"group": g.name, "point": [z.real, z.imag],
+                    "leashes": [[g.joints[x][0].point, g.joints[x][1].point] for x in (i, j)]})
+    return out
