@@ -203,3 +203,39 @@ def test_assur_point_drawn_on_the_scheme_and_the_group():
         (d_xy,) = [xy for eid, xy in marks.items() if eid.endswith("joint-D")]
         assert abs(math.dist(s_xy, d_xy) - mu_l * abs(S - D)) < 1e-6
         assert any(p.op == "text" and p.eid.endswith("label-assur-S") for p in panel.prims)
+
+
+def test_parallel_leashes_take_the_other_pairs_point(tmp_path):
+    """The leash CF numbered second: where AD ∥ CF the force analysis takes S where CF and BE
+    meet (as the plans do); the reactions still satisfy every link's equations and the
+    balancing force still agrees with the power balance."""
+    text = SAMPLE.read_text(encoding="utf-8")
+    for old, new in (("[links.4]", "[links.X]"), ("[links.5]", "[links.4]"), ("[links.X]", "[links.5]"),
+                     ("links = [3, 4]", "links = [3, Y]"), ("links = [4, 6]", "links = [Y, 6]"),
+                     ("links = [3, 5]", "links = [3, 4]"), ("links = [5, 6]", "links = [4, 6]"), ("Y", "5")):
+        assert old in text
+        text = text.replace(old, new)
+    f = tmp_path / "renumbered.toml"
+    f.write_text(text, encoding="utf-8")
+    sc = load_scene(str(f))
+
+    def sin(phi: float) -> float:
+        k = solve(sc, [phi], order=0)
+        A, D, C, F = (complex(k.point(n)[0][0]) for n in "ADCF")
+        return _cross(D - A, F - C) / abs(D - A) / abs(F - C)
+    lo, hi = 340.0, 355.0
+    for _ in range(50):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if sin(lo) * sin(mid) > 0 else (lo, mid)
+    kin = solve(sc, [lo, 300.0], order=2)
+    fa, lv = kinetostatics(sc, kin)
+    (gf,) = [g for g in fa.groups if isinstance(g, TriadForces)]
+    assert gf.leashes(0) == (1, 2, 0) and gf.leashes(1) == (0, 1, 2)
+    for k in range(2):
+        x = _all_link_equations(fa, gf, k)
+        got = [complex(rc.F[k]) for rc in gf.reactions[3:]] + [complex(rc.F[k]) for rc in gf.reactions[:3]]
+        mine = np.array([c for z in got for c in (z.real, z.imag)])
+        assert np.max(np.abs(mine - x)) <= 1e-9 * max(np.max(np.abs(x)), 1.0)
+        assert np.all(np.isfinite(mine))
+    bal = lv.signed(lv.by_power)
+    assert np.max(np.abs(fa.balancing - bal)) <= 1e-9 * max(float(np.max(np.abs(bal))), 1.0)

@@ -238,3 +238,19 @@ def test_slider_leash_giving_assurs_point(tmp_path):
     # the same mechanism: the same balancing force as numbered in the sample
     same = kinetostatics(load_scene(str(SAMPLE)), solve(load_scene(str(SAMPLE)), [0.0, 47.0, 133.0, 250.0], order=2))
     assert np.max(np.abs(same[0].balancing - fa.balancing)) <= 1e-9 * ref
+
+
+def test_a_slider_on_a_moving_guide_is_refused_in_one_line(tmp_path, capsys):
+    from plans.cli import main
+
+    text = SAMPLE.read_text(encoding="utf-8")
+    old = 'links = [5, 6]\npoint = "F"\nguide = { link = 6, through = "G", angle_deg = 90 }'
+    assert old in text
+    f = tmp_path / "moving_guide.toml"
+    f.write_text(text.replace(old, 'links = [5, 1]\npoint = "F"\nguide = { link = 1, through = "O", toward = "A" }'),
+                 encoding="utf-8")
+    out = tmp_path / "out.json"
+    assert main(["solve", str(f), "--json", str(out), "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and str(f) in err and "guide of the frame" in err
+    assert not out.exists()
