@@ -101,3 +101,20 @@ def test_special_kind_names_parallel_and_concurrent_axes():
     assert "one point" in special_kind(t, through, D, 0.0)
     ordinary = (D - 0.2j, E + 0.15, F + 0.25j)
     assert special_kind(t, ordinary, D, 0.0) is None
+
+
+def test_instant_centres_of_the_class_3_samples():
+    """Kennedy's theorem on the crusher and the press (a triad, a slider leash): every centre
+    against its definition at random positions."""
+    from pathlib import Path
+
+    from plans.kinematics.exact import solve
+    from plans.scene.model import load_scene
+
+    from .test_instant_centres import _check
+
+    root = Path(__file__).resolve().parent.parent / "samples" / "class3"
+    for name in ("triad_crusher", "triad_press"):
+        kin = solve(load_scene(root / f"{name}.toml"), np.random.default_rng(5).uniform(0.0, 360.0, 12), order=1)
+        size = kin.reach()
+        assert max(_check(kin, k, size) for k in range(kin.n)) < 1e-9
