@@ -50,6 +50,10 @@ class Triad:
     l3: float
     name: str = "triad"
     guides: tuple[complex | None, complex | None, complex | None] = (None, None, None)
+    #: a leash that is a block pinned at its outer pair and sliding in a slot of the base link:
+    #: the slot's unit direction in the base's frame (its origin is the leash's inner point:
+    #: D, E or F above); the "inner pair" is then the pin itself, where the slot passes
+    slots: tuple[complex | None, complex | None, complex | None] = (None, None, None)
 
     def inner(self, rD: complex, theta: float) -> tuple[complex, complex, complex]:
         rot = cmath.exp(1j * theta)
@@ -74,9 +78,12 @@ def place(t: Triad, outer: tuple[complex, complex, complex], guess: tuple[comple
         arms = (0j, rot * t.zE, rot * t.zF)
         f, J = [], []
         for k in range(3):
-            n = _normal(t, k, P[k], outer[k])  # the row is n·(δr_D + δθ·i·arm)
-            J.append([n.real, n.imag, _dot(n, 1j * arms[k])])
-            f.append(_residual(t, k, P[k], outer[k]))
+            n = _normal(t, k, P[k], outer[k], rot)  # the row is n·(δr_D + δθ·i·arm)
+            turn = _dot(n, 1j * arms[k])
+            if t.slots[k] is not None:  # the slot's normal turns with the base too
+                turn += _dot(1j * n, P[k] - outer[k])
+            J.append([n.real, n.imag, turn])
+            f.append(_residual(t, k, P[k], outer[k], rot))
         step = _solve3(J, [-x for x in f])
         if step is None:
             raise SpecialPosition(f"group {t.name}: the leashes' equations are singular here")
@@ -91,18 +98,29 @@ def _lengths(t: Triad) -> tuple[float, float, float]:
     return t.l1, t.l2, t.l3
 
 
-def _normal(t: Triad, k: int, P: complex, Q: complex) -> complex:
+def _normal(t: Triad, k: int, P: complex, Q: complex, rot: complex = 1) -> complex:
     """The gradient of leash k's equation in the inner pair's position: P − Q for a revolute
-    leash (|P − Q|² = l², halved), i·g for a slider on the guide g through Q."""
-    g = t.guides[k]
+    leash (|P − Q|² = l², halved), i·g for a slider on the guide g through Q, the slot's
+    normal (turned with the base) for a block in a slot of the base."""
+    g, sl = t.guides[k], t.slots[k]
+    if sl is not None:
+        return 1j * rot * sl
     return P - Q if g is None else 1j * g
 
 
-def _residual(t: Triad, k: int, P: complex, Q: complex) -> float:
+def _residual(t: Triad, k: int, P: complex, Q: complex, rot: complex = 1) -> float:
     g = t.guides[k]
+    if t.slots[k] is not None:  # the pin's distance from the slot's line (P: the slot's origin)
+        return _dot(_normal(t, k, P, Q, rot), P - Q)
     if g is None:
         return (abs(P - Q) ** 2 - _lengths(t)[k] ** 2) / 2
     return _dot(1j * g, P - Q)  # the pin's distance from the guide's line
+
+
+def pair_points(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta: float) -> list[complex]:
+    """Where each leash meets the base link: its inner pair, or the pin of a block in a slot."""
+    P = t.inner(rD, theta)
+    return [outer[k] if t.slots[k] is not None else P[k] for k in range(3)]
 
 
 def _solve3(J: list[list[float]], b: list[float]) -> list[float] | None:
@@ -125,9 +143,10 @@ def rates(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta:
           v_outer: tuple[complex, complex, complex],
           a_outer: tuple[complex, complex, complex] | None = None) -> tuple[complex, float, complex | None, float | None]:
     """(v_D, ω, a_D, ε) of the base link from the leash equations (exact, not graphical)."""
-    P = t.inner(rD, theta)
+    P = pair_points(t, outer, rD, theta)
+    rot = cmath.exp(1j * theta)
     arms = [P[k] - rD for k in range(3)]
-    d = [_normal(t, k, P[k], outer[k]) for k in range(3)]
+    d = [_normal(t, k, P[k], outer[k], rot) for k in range(3)]
     J = [[d[k].real, d[k].imag, _dot(d[k], 1j * arms[k])] for k in range(3)]
     x = _solve3(J, [_dot(d[k], v_outer[k]) for k in range(3)])
     if x is None:
@@ -137,9 +156,16 @@ def rates(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta:
         return vD, w, None, None
     vP = [vD + 1j * w * arms[k] for k in range(3)]
     # a slider on a fixed guide: n·a_P = 0 (n constant); a revolute leash: the derivative
-    # of (P − Q)·(v_P − v_Q) = 0 brings |v_P − v_Q|²
-    rhs = [_dot(d[k], a_outer[k] + w * w * arms[k])
-           - (abs(vP[k] - v_outer[k]) ** 2 if t.guides[k] is None else 0.0) for k in range(3)]
+    # of (P − Q)·(v_P − v_Q) = 0 brings |v_P − v_Q|²; a block in a slot: the Coriolis term
+    # 2ω × v_rel of the pin relative to the base
+    rhs = []
+    for k in range(3):
+        r = _dot(d[k], a_outer[k] + w * w * arms[k])
+        if t.slots[k] is not None:
+            r -= 2 * w * _dot(d[k], 1j * (v_outer[k] - vP[k]))
+        elif t.guides[k] is None:
+            r -= abs(vP[k] - v_outer[k]) ** 2
+        rhs.append(r)
     y = _solve3(J, rhs)
     assert y is not None  # the same matrix
     return vD, w, complex(y[0], y[1]), y[2]
@@ -164,22 +190,23 @@ class SpecialPoint:
     v_inner: tuple[complex, complex, complex]
 
 
-def _axis(t: Triad, k: int, P: complex, Q: complex) -> complex:
-    """The direction of leash k's axis: along the leash, or the guide's normal for a slider."""
-    return _normal(t, k, P, Q)
+def _axis(t: Triad, k: int, P: complex, Q: complex, rot: complex = 1) -> complex:
+    """The direction of leash k's axis: along the leash, or the guide's (slot's) normal."""
+    return _normal(t, k, P, Q, rot)
 
 
 def _on_axis(t: Triad, k: int, P: complex, Q: complex) -> complex:
     """A point of leash k's axis: its outer pair, or the slider's pin."""
-    return Q if t.guides[k] is None else P
+    return P if t.guides[k] is not None else Q
 
 
 def special_point_velocities(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta: float,
                              v_outer: tuple[complex, complex, complex]) -> SpecialPoint:
     """The textbook's construction: s where the lines through a ⟂ AD and through b ⟂ BE meet,
     then f from v_F − v_C ⟂ CF, then d and e."""
-    P = t.inner(rD, theta)
-    axis = [_axis(t, k, P[k], outer[k]) for k in range(3)]
+    P = pair_points(t, outer, rD, theta)
+    rot = cmath.exp(1j * theta)
+    axis = [_axis(t, k, P[k], outer[k], rot) for k in range(3)]
     on = [_on_axis(t, k, P[k], outer[k]) for k in range(3)]
     for i, j in ((0, 1), (1, 2), (0, 2)):  # parallel axes: the other pair's point
         S = _meet(on[i], axis[i], on[j], axis[j])
@@ -204,8 +231,9 @@ def special_kind(t: Triad, outer: tuple[complex, complex, complex], rD: complex,
                  tol: float = 1e-3) -> str | None:
     """What makes this position special, or None: the three leashes' axes parallel, or
     passing through one point (the leash equations' matrix singular to ``tol``)."""
-    P = t.inner(rD, theta)
-    axis = [_axis(t, k, P[k], outer[k]) for k in range(3)]
+    P = pair_points(t, outer, rD, theta)
+    rot = cmath.exp(1j * theta)
+    axis = [_axis(t, k, P[k], outer[k], rot) for k in range(3)]
     on = [_on_axis(t, k, P[k], outer[k]) for k in range(3)]
     u = [a / abs(a) for a in axis]
     if max(abs(_cross(u[i], u[j])) for i, j in ((0, 1), (1, 2), (0, 2))) <= tol:
@@ -244,12 +272,16 @@ def special_point_accelerations(t: Triad, outer: tuple[complex, complex, complex
     acceleration −ω_leash²·|QP| along its axis fixes ε; then d, e, f."""
     sp = special_point_velocities(t, outer, rD, theta, v_outer)
     i, j = sp.leashes
-    P = t.inner(rD, theta)
-    axis = [_axis(t, k, P[k], outer[k]) for k in range(3)]
+    P = pair_points(t, outer, rD, theta)
+    rot = cmath.exp(1j * theta)
+    axis = [_axis(t, k, P[k], outer[k], rot) for k in range(3)]
     w = sp.omega
-    # a slider on a fixed guide does not turn: no normal term along its axis
-    w_leash = [0.0 if t.guides[k] is not None else _cross(axis[k], sp.v_inner[k] - v_outer[k]) / abs(axis[k]) ** 2
-               for k in range(3)]
+    # a slider on a fixed guide does not turn, a block turns with the base: no normal term
+    # along its axis; the block's pin has the Coriolis term relative to the base instead
+    w_leash = [0.0 if t.guides[k] is not None or t.slots[k] is not None
+               else _cross(axis[k], sp.v_inner[k] - v_outer[k]) / abs(axis[k]) ** 2 for k in range(3)]
+    a_outer = tuple(a_outer[k] - (2j * w * (v_outer[k] - sp.v_inner[k]) if t.slots[k] is not None else 0)
+                    for k in range(3))  # type: ignore[assignment]
     known = [a_outer[k] - w_leash[k] ** 2 * axis[k] - w * w * (sp.S - P[k]) for k in range(3)]
     aS = _meet(known[i], 1j * axis[i], known[j], 1j * axis[j])
     if aS is None:
