@@ -77,6 +77,8 @@ PHRASES: dict[str, tuple[str, str]] = {
     "t_axis_guide": ("the normal to the guide at {F}", "нормаль к направляющей в точке {F}"),
     "t_perp": ("⟂ {A}{D}", "⟂ {A}{D}"),
     "t_par_guide": ("∥ guide of {F}", "∥ направляющей {F}"),
+    "t_axis_slot": ("the normal to the slot of link {j} at {C}", "нормаль к кулисе звена {j} в точке {C}"),
+    "t_par_slot": ("∥ slot of link {j}", "∥ кулисе звена {j}"),
     "similarity": (
         "{lb}: similarity theorem on link {link} ({name} of link {link} from {ref})",
         "{lb}: по теореме подобия на звене {link} (точка {name} звена {link} от {ref})"),
@@ -177,6 +179,9 @@ PHRASES: dict[str, tuple[str, str]] = {
         "h = {mm:.2f} mm ({h:.5g} m), balances them: {n}^n = {N:num} N",
         "S — точка пересечения осей {A}{D} и {B}{E} (через неё проходят {n1}^n и {n2}^n); {n}^n вдоль {C}{F} "
         "с плечом h = {mm:.2f} мм ({h:.5g} м) их уравновешивает: {n}^n = {N:num} Н"),
+    "f_block_tau": (
+        "ΣF = 0 along the slot of link {j} for block {k}: {n}^τ (∥ the slot) = {tau:num} N",
+        "ΣF = 0 вдоль кулисы звена {j} для камня {k}: {n}^τ (∥ кулисе) = {tau:num} Н"),
     "m_triad_ng": (
         "S is where {ax1} and {ax2} meet ({n1} and {n2} pass through it); {n} along {ax3}, its arm "
         "h = {mm:.2f} mm ({h:.5g} m), balances them: {n} = {N:num} N",

@@ -77,7 +77,7 @@ def scene():
 
 def test_structure_names_the_slider_leash(scene):
     (g,) = analyse(scene).triads()
-    assert g.kind == "RRP" and g.to_json()["class"] == 3
+    assert g.kind == "RR-RR-PR" and g.to_json()["class"] == 3
     assert [o.kind for o, _ in g.joints] == ["R", "R", "P"]
 
 
@@ -225,7 +225,7 @@ def test_slider_leash_giving_assurs_point(tmp_path):
     f.write_text(text, encoding="utf-8")
     sc = load_scene(str(f))
     (g,) = analyse(sc).triads()
-    assert g.kind == "PRR" and [o.point for o, _ in g.joints] == ["F", "B", "A"]
+    assert g.kind == "PR-RR-RR" and [o.point for o, _ in g.joints] == ["F", "B", "A"]
     kin = solve(sc, [0.0, 47.0, 133.0, 250.0], order=2)
     for pp in build_many(kin, range(kin.n)):
         for r in pp.readings:

@@ -106,8 +106,16 @@ def solve_triad(kin: Kinematics, g: TriadGroup, forces: dict, moments: dict) -> 
     fl = [tuple(forces[x]) for x in links]
     ml = [tuple(moments[x]) for x in links]
     slider = [o.kind == "P" for o, _ in g.joints]
-    # ΣM_P(leash k) = 0: −l·R^τ + M_k(P) = 0; a slider: the guide's couple −M_k(P), no τ
-    tau = [np.zeros(n) if slider[k] else _moment(fl[1 + k], ml[1 + k], P[k], n) / length[k] for k in range(3)]
+    block = [d.kind == "P" for _, d in g.joints]
+
+    def tau_of(k: int) -> R:
+        if slider[k]:  # the guide's reaction is all along the normal (and a couple)
+            return np.zeros(n)
+        if block[k]:  # the block along the slot: R^τ (∥ slot) balances its loads there
+            return -(np.conj(e[k]) * _sum(fl[1 + k], n)).real
+        return _moment(fl[1 + k], ml[1 + k], P[k], n) / length[k]  # ΣM_P(leash) = 0: −l·R^τ + M(P) = 0
+    # a slider: the guide's couple −M_k(P), no τ
+    tau = [tau_of(k) for k in range(3)]
     couple = [-_moment(fl[1 + k], ml[1 + k], P[k], n) if slider[k] else np.zeros(n) for k in range(3)]
     pair = pair_choice(axis)
     ii = np.array([PAIRS[c][0] for c in range(3)])[pair]
@@ -150,8 +158,13 @@ def solve_triad(kin: Kinematics, g: TriadGroup, forces: dict, moments: dict) -> 
         else:
             outer.append(Reaction(o, leashes[k], g.known[k], Q[k], Rk, zero, tau=tau[k], n=nrm[k], e_tau=e[k],
                                   e_n=u[k]))
-        # leash k in equilibrium: the base's reaction on it is −(R_k + its loads)
-        inner.append(Reaction(d, base, leashes[k], P[k], Rk + _sum(fl[1 + k], n), zero))
+        # leash k in equilibrium: the base's reaction on it is −(R_k + its loads); a block's
+        # slot takes its loads' moment about the pin as the slot's couple
+        if block[k]:
+            inner.append(Reaction(d, base, leashes[k], P[k], Rk + _sum(fl[1 + k], n),
+                                  _moment(fl[1 + k], ml[1 + k], P[k], n), guide=-1j * u[k]))
+        else:
+            inner.append(Reaction(d, base, leashes[k], P[k], Rk + _sum(fl[1 + k], n), zero))
     arms = _Arms(g, fl, P, S, Qm, um)
     return TriadForces(g, tuple(fl), tuple(ml), tuple(outer) + tuple(inner), S, pair, known_S,
                        (u[0], u[1], u[2]), (tau[0], tau[1], tau[2]), (nrm[0], nrm[1], nrm[2]), arms)

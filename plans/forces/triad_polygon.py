@@ -77,13 +77,18 @@ def triad_steps(fa: ForceAnalysis, gf: TriadForces, k: int, mu_l: float) -> list
     i, j, m = gf.leashes(k)
     outer = gf.reactions[:3]
     names = [rc.name(scene.fij) for rc in outer]
-    out = []
+    out: list[tuple[Step, tuple[Any, ...]]] = []
     taus = []
     couples = []
     for x, (o, d) in enumerate(g.joints):
         rc = outer[x]
         P = complex(fa.kin.point(d.point, g.links[1 + x])[0][k])
         known = _moment_terms(gf.loads[1 + x], gf.moments[1 + x], P, k, mu_l)
+        if d.kind == "P":  # a block in the base's slot: its loads along the slot give R^τ
+            out.append((Step.of("sum", (), f"{names[x]}^τ", phrase(
+                "f_block_tau", n=names[x], k=g.links[1 + x], j=g.links[0], tau=float(rc.tau[k]))), ()))
+            taus.append(AppliedForce(f"{names[x]}^τ", rc.on, o.point, rc.r, rc.r * 0, rc.tau * rc.e_tau, "reaction"))
+            continue
         if gf.slider(x):  # the guide's couple on the slider
             out.append(_equation("moment", (d.point,), names[x], f"ΣM_{d.point}({g.links[1 + x]})", known,
                                  phrase("m_couple_of", n=names[x], M=float(rc.M[k]))))
@@ -101,11 +106,13 @@ def triad_steps(fa: ForceAnalysis, gf: TriadForces, k: int, mu_l: float) -> list
     um = complex(gf.axes[m][k])
     h = abs(((complex(rm.r[k]) - S).conjugate() * um).imag)
     ax = [(o.point, d.point) for o, d in g.joints]
-    if not any(gf.slider(x) for x in range(3)):
+    if all(o.kind == "R" and d.kind == "R" for o, d in g.joints):
         what = phrase("m_triad_n", n=names[m], n1=names[i], n2=names[j], A=ax[i][0], D=ax[i][1], B=ax[j][0],
                       E=ax[j][1], C=ax[m][0], F=ax[m][1], mm=h * mu_l, h=h, N=float(gf.normal[m][k]))
     else:
         def axis(x: int) -> Any:
+            if g.joints[x][1].kind == "P":
+                return phrase("t_axis_slot", C=ax[x][0], j=g.links[0])
             return (phrase("t_axis_guide", F=ax[x][1]) if gf.slider(x)
                     else phrase("t_axis_leash", A=ax[x][0], D=ax[x][1]))
 

@@ -123,6 +123,22 @@ def pair_points(t: Triad, outer: tuple[complex, complex, complex], rD: complex, 
     return [outer[k] if t.slots[k] is not None else P[k] for k in range(3)]
 
 
+def determinant(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta: float) -> float:
+    """The determinant of the leash equations' matrix (the velocity equations), each row scaled
+    to unit length: its sign marks the branch, zero the group's special position."""
+    P = pair_points(t, outer, rD, theta)
+    rot = cmath.exp(1j * theta)
+    rows = []
+    for k in range(3):
+        n = _normal(t, k, P[k], outer[k], rot)
+        row = [n.real, n.imag, _dot(n, 1j * (P[k] - rD)) / t.size]
+        size = math.sqrt(sum(x * x for x in row)) or 1.0
+        rows.append([x / size for x in row])
+    m = rows
+    return (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]))
+
+
 def _solve3(J: list[list[float]], b: list[float]) -> list[float] | None:
     """Cramer's rule; None where the system is singular to rounding."""
     def det(m: list[list[float]]) -> float:

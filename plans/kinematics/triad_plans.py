@@ -16,7 +16,16 @@ from typing import Any, cast
 import numpy as np
 
 from plans.errors import Locked
-from plans.kinematics.dyads import Builder, Mixed, ensure, lab, link_points, meet, rel_seg
+from plans.kinematics.dyads import (
+    Builder,
+    Mixed,
+    coincident,
+    ensure,
+    lab,
+    link_points,
+    meet,
+    rel_seg,
+)
 from plans.kinematics.structure import TriadGroup
 from plans.lines import cross
 from plans.phrases import phrase
@@ -30,21 +39,31 @@ def _slider(o: Any) -> bool:
     return o.kind == "P"
 
 
+def _block(d: Any) -> bool:
+    """A leash that is a block pinned at its outer pair, sliding in a slot of the base."""
+    return d.kind == "P"
+
+
 def _geometry(b: Builder, g: TriadGroup) -> tuple[list, list, list, tuple[int, int, int], Any]:
     """Per leash a point of its axis (the outer pair, or a slider's pin) and the axis' direction
-    (along the leash, or the guide's normal); the inner pairs; the leashes (i, j) whose axes
-    give S, the third; S."""
+    (along the leash, or the guide's or slot's normal); where it meets the base (its inner
+    pair, or a block's pin); the leashes (i, j) whose axes give S, the third; S."""
     snap = b.snap
     base = g.links[0]
-    P = [snap.pos(base, i.point) for _, i in g.joints]
-    Q, axis = [], []
-    for k, (p, (o, _)) in enumerate(zip(g.known, g.joints, strict=True)):
+    P, Q, axis = [], [], []
+    for p, (o, d) in zip(g.known, g.joints, strict=True):
         if _slider(o):
-            Q.append(P[k])
+            P.append(snap.pos(base, d.point))
+            Q.append(P[-1])
             axis.append(1j * snap.guide(o)[0])
-        else:
+        elif _block(d):
             Q.append(snap.pos(p, o.point))
-            axis.append(P[k] - Q[k])
+            P.append(Q[-1])
+            axis.append(1j * snap.guide(d)[0])
+        else:
+            P.append(snap.pos(base, d.point))
+            Q.append(snap.pos(p, o.point))
+            axis.append(P[-1] - Q[-1])
     sins = _sins(axis)
     choice = pair_choice(axis)
     if np.any(choice != choice[0]):
@@ -100,20 +119,33 @@ def _leash_ends(b: Builder, g: TriadGroup) -> tuple[list[tuple[str, str]], list[
 
 def _words(g: TriadGroup, names: list, k: int) -> tuple[Any, Any]:
     """(the axis, the line through the leash's outer image) of leash k, as the protocol says them."""
-    o, _ = g.joints[k]
+    o, d = g.joints[k]
     A, D = names[k]
     if _slider(o):
         return phrase("t_axis_guide", F=D), phrase("t_par_guide", F=D)
+    if _block(d):
+        return phrase("t_axis_slot", C=A, j=g.links[0]), phrase("t_par_slot", j=g.links[0])
     return phrase("t_axis_leash", A=A, D=D), phrase("t_perp", A=A, D=D)
 
 
 def _label_of(g: TriadGroup, names: list, k: int) -> str:
-    o, _ = g.joints[k]
+    o, d = g.joints[k]
+    if _block(d):
+        return f"∥ slot of link {g.links[0]}"
     return f"∥ guide of {names[k][1]}" if _slider(o) else f"⟂ {names[k][0]}{names[k][1]}"
 
 
 def _span(Q: Any, P: Any, o: Any) -> Any:
-    return 0.0 if _slider(o) else abs(P - Q)
+    return 0.0 if _slider(o) or Q is P else abs(P - Q)
+
+
+def _plain(g: TriadGroup) -> bool:
+    return all(o.kind == "R" and d.kind == "R" for o, d in g.joints)
+
+
+def _under_pin(b: Builder, g: TriadGroup, k: int) -> str:
+    """The label of the base's point under a block's pin (c3): where the plan has it."""
+    return f"{lab(g.joints[k][0].point)}{g.links[0]}"
 
 
 def v_triad(b: Builder, g: TriadGroup) -> None:
@@ -126,7 +158,7 @@ def v_triad(b: Builder, g: TriadGroup) -> None:
     Lj = b.line(xs[j], 1j * axis[j], _span(Q[j], P[j], oj), _label_of(g, names, j))
     s_lab = _label(b, "s")
     xS = meet(b, cast(Any, g), Li, Lj, s_lab, b.mu * snap.v(base, S), "S", ())
-    plain = not any(_slider(o) for o, _ in g.joints)
+    plain = _plain(g)
     if plain:
         b.step("intersect", (ns[i], ns[j]), s_lab, lambda: phrase(
             "v_triad_s", A=names[i][0], D=names[i][1], B=names[j][0], E=names[j][1], n1=ns[i], n2=ns[j], out=s_lab))
@@ -137,8 +169,9 @@ def v_triad(b: Builder, g: TriadGroup) -> None:
     Pm, Cn, Fn = P[m], names[m][0], names[m][1]
     Lc = b.line(xs[m], 1j * axis[m], _span(Q[m], Pm, om), _label_of(g, names, m))
     Ls = b.line(xS, 1j * (Pm - S), abs(Pm - S), f"⟂ S{Fn}")
-    out = lab(Fn)
-    xF = meet(b, cast(Any, g), Lc, Ls, out, b.mu * snap.v(base, Pm), Fn, (base, g.links[1 + m]))
+    block_m = _block(g.joints[m][1])
+    out = _under_pin(b, g, m) if block_m else lab(Fn)
+    xF = meet(b, cast(Any, g), Lc, Ls, out, b.mu * snap.v(base, Pm), Fn, () if block_m else (base, g.links[1 + m]))
     if plain:
         b.step("intersect", (ns[m], s_lab), out, lambda: phrase(
             "v_triad_f", C=Cn, F=Fn, n3=ns[m], s=s_lab, out=out))
@@ -147,7 +180,7 @@ def v_triad(b: Builder, g: TriadGroup) -> None:
             "v_triad_fg", F=Fn, n3=ns[m], s=s_lab, out=out, l3=_words(g, names, m)[1]))
     b.set_link(base, s_lab, S, (xF - xS) / (Pm - S))
     b.rate[base] = (s_lab, out, abs(Pm - S))
-    b.seg(b.pole, out, "absolute", f"v_{Fn}", abs(snap.v(base, Pm)))
+    b.seg(b.pole, out, "absolute", f"v_{Fn}{base}" if block_m else f"v_{Fn}", abs(snap.v(base, Pm)))
     link_points(b, base)
     _leashes(b, g, Q, P, xs, ns)
 
@@ -157,6 +190,17 @@ def _leashes(b: Builder, g: TriadGroup, Q: list, P: list, xs: list, ns: list) ->
     base = g.links[0]
     for k, (o, d) in enumerate(g.joints):
         leash = g.links[1 + k]
+        if _block(d):  # it turns with the base; its pin is the known link's point
+            under = _under_pin(b, g, k)
+            if under not in b.pts:
+                coincident(b, base, o.point, P[k])
+            b.labels[(leash, o.point)] = ns[k]
+            b.set_link(leash, ns[k], P[k], b.factor[base])
+            b.rate[leash] = base
+            if b.sym == "v":
+                sd, _ = snap.slide(d)
+                b.seg(under, ns[k], "sliding", f"v_{o.point}{leash}{o.point}{base}", abs(sd))
+            continue
         inner = b.labels[(base, d.point)]
         b.labels[(leash, d.point)] = inner
         if _slider(o):  # it slides on the frame: it does not turn
@@ -182,6 +226,8 @@ def a_triad(b: Builder, g: TriadGroup, vr: Any) -> None:
         o = g.joints[k][0]
         if _slider(o):  # a_P ∥ guide: from the pole, only the base's normal term a_SP^n
             m1, y1 = b.pole, b.zero
+        elif _block(g.joints[k][1]):  # the base under the pin: a_C + a^k (+ a^r ∥ slot)
+            m1, y1 = _coriolis_at(b, vr, g, k, ns[k], xs[k])
         else:
             m1, y1 = _normal(b, vr, leash, ns[k], xs[k], Q[k], P[k], names[k][0], names[k][1])
         ends[k] = (m1, y1)
@@ -193,7 +239,7 @@ def a_triad(b: Builder, g: TriadGroup, vr: Any) -> None:
     Lj = b.line(yj, 1j * axis[j], _span(Q[j], P[j], oj), _label_of(g, names, j))
     s_lab = _label(b, "s")
     xS = meet(b, cast(Any, g), Li, Lj, s_lab, b.mu * snap.a(base, S), "S", ())
-    plain = not any(_slider(o) for o, _ in g.joints)
+    plain = _plain(g)
     if plain:
         b.step("intersect", (mi, mj), s_lab, lambda: phrase(
             "a_triad_s", A=names[i][0], D=names[i][1], B=names[j][0], E=names[j][1], m1=mi, m2=mj, out=s_lab))
@@ -202,15 +248,18 @@ def a_triad(b: Builder, g: TriadGroup, vr: Any) -> None:
             "a_triad_sg", l1=_words(g, names, i)[1], l2=_words(g, names, j)[1], m1=mi, m2=mj, out=s_lab))
     Pm, Cn, Fn = P[m], names[m][0], names[m][1]
     leash_m = g.links[1 + m]
+    block_m = _block(g.joints[m][1])
     if _slider(om):
         mc, yc = b.pole, b.zero
+    elif block_m:
+        mc, yc = _coriolis_at(b, vr, g, m, ns[m], xs[m])
     else:
         mc, yc = _normal(b, vr, leash_m, ns[m], xs[m], Q[m], Pm, Cn, Fn)
     ms, ys = _normal(b, vr, base, s_lab, xS, S, Pm, "S", Fn)
     Lc = b.line(yc, 1j * axis[m], _span(Q[m], Pm, om), _label_of(g, names, m))
     Ls = b.line(ys, 1j * (Pm - S), abs(Pm - S), f"⟂ S{Fn}")
-    out = lab(Fn)
-    xF = meet(b, cast(Any, g), Lc, Ls, out, b.mu * snap.a(base, Pm), Fn, (base, leash_m))
+    out = _under_pin(b, g, m) if block_m else lab(Fn)
+    xF = meet(b, cast(Any, g), Lc, Ls, out, b.mu * snap.a(base, Pm), Fn, () if block_m else (base, leash_m))
     if plain:
         b.step("intersect", (mc, ms), out, lambda: phrase(
             "a_triad_f", C=Cn, F=Fn, m3=mc, ms=ms, out=out))
@@ -220,12 +269,12 @@ def a_triad(b: Builder, g: TriadGroup, vr: Any) -> None:
     b.set_link(base, s_lab, S, (xF - xS) / (Pm - S))
     b.rate[base] = (ms, out, abs(Pm - S))
     b.seg(ms, out, "tangential", f"a_{Fn}S^τ", abs(snap.e[base]) * abs(Pm - S))
-    b.seg(b.pole, out, "absolute", f"a_{Fn}", abs(snap.a(base, Pm)))
+    b.seg(b.pole, out, "absolute", f"a_{Fn}{base}" if block_m else f"a_{Fn}", abs(snap.a(base, Pm)))
     link_points(b, base)
     _leashes(b, g, Q, P, xs, ns)
     for k in range(3):
         leash = g.links[1 + k]
-        if _slider(g.joints[k][0]):
+        if _slider(g.joints[k][0]) or _block(g.joints[k][1]):
             continue
         start = ends[k][0] if k in ends else mc
         inner = b.labels[(base, names[k][1])]
@@ -236,20 +285,42 @@ def a_triad(b: Builder, g: TriadGroup, vr: Any) -> None:
         b.seg(start, inner, "tangential", f"a_{names[k][1]}{names[k][0]}^τ", abs(snap.e[leash]) * abs(P[k] - Q[k]))
 
 
+def _coriolis_at(b: Builder, vr: Any, g: TriadGroup, k: int, frm: str, frm_xy: Any) -> tuple[str, Any]:
+    """From the image of a block's pin (c), the Coriolis term of the base's point under it:
+    a_C3 = a_C + a^k_C3C + a^r (∥ slot), v_C3C read off the velocity plan."""
+    from plans.kinematics.accelerations import _coriolis
+
+    base = g.links[0]
+    pin = g.joints[k][0].point
+    vb = vr.vb
+    known = g.known[k]
+    at_pin = vb.pole if known == vb.snap.scene.frame else vb.labels.get((known, pin), lab(pin))
+    v_rel = vr.rel(at_pin, f"{lab(pin)}{base}")
+    sd, _ = b.snap.slide(g.joints[k][1])
+    return _coriolis(b, vr, base, v_rel, frm, frm_xy, f"{pin}{base}{pin}{g.links[1 + k]}",
+                     abs(2 * b.snap.w[base] * sd))
+
+
 def axes_of(kin: Any, g: TriadGroup) -> tuple[list, list, list]:
     """Over the positions of ``kin``: per leash a point of its axis (the outer pair, or a
     slider's pin), the axis' direction (along the leash, or the guide's normal), the inner pair."""
     base = g.links[0]
-    P = [kin.point(d.point, base)[0] for _, d in g.joints]
-    Q, axis = [], []
-    for k, (p, (o, _)) in enumerate(zip(g.known, g.joints, strict=True)):
+    P, Q, axis = [], [], []
+    for p, (o, d) in zip(g.known, g.joints, strict=True):
         if _slider(o):
-            Q.append(P[k])
+            P.append(kin.point(d.point, base)[0])
+            Q.append(P[-1])
             assert o.guide is not None
-            axis.append(np.broadcast_to(1j * o.guide.direction, np.shape(P[k])))
-        else:
+            axis.append(np.broadcast_to(1j * o.guide.direction, np.shape(P[-1])))
+        elif _block(d):
+            assert d.guide is not None
             Q.append(kin.point(o.point, p)[0])
-            axis.append(P[k] - Q[k])
+            P.append(Q[-1])
+            axis.append(1j * kin.motion[base].rot * d.guide.direction * np.ones(np.shape(Q[-1])))
+        else:
+            P.append(kin.point(d.point, base)[0])
+            Q.append(kin.point(o.point, p)[0])
+            axis.append(P[-1] - Q[-1])
     return Q, axis, P
 
 
