@@ -123,7 +123,7 @@ def _cross(a: complex, b: complex) -> float:
 
 class _TwoAngles:
     """Unknowns: the angles α of AD and β of BE; equations |E − D| = |DE| and the pin C on the
-    jaw's slot through F (at 135° to DE); Newton with a difference Jacobian."""
+    jaw's slot through F (at 165° to DE); Newton with a difference Jacobian."""
 
     def __init__(self, scene) -> None:
         L = scene.links
@@ -133,7 +133,7 @@ class _TwoAngles:
         zD, zE, zF = L[3].points["D"], L[3].points["E"], L[3].points["F"]
         self.de = abs(zE - zD)
         self.shape = (zF - zD) / (zE - zD)
-        self.turn = cmath.exp(1j * math.radians(135.0)) * abs(zE - zD) / (zE - zD)  # the slot from DE
+        self.turn = cmath.exp(1j * math.radians(165.0)) * abs(zE - zD) / (zE - zD)  # the slot from DE
         self.O, self.B, self.C = (scene.frame_points[n] for n in "OBC")
 
     def A(self, phi: float) -> complex:
@@ -188,7 +188,7 @@ def test_full_turn_against_a_separate_solver_and_finite_differences(scene):
     rD, rE, rF = (kin.point(n)[0] for n in "DEF")
     ab = (round(cmath.phase(rD[0] - one.A(0.0)), 2), round(cmath.phase(rE[0] - one.B), 2))
     w = scene.driver.omega
-    h = 1e-3  # crank angle step of the seven-point stencils (rad)
+    h = 3e-3  # crank angle step of the seven-point stencils (rad): truncation and rounding both < 1e-9
     vmax = max(float(np.max(np.abs(kin.point(n)[1]))) for n in "DEF")
     amax = max(float(np.max(np.abs(kin.point(n)[2]))) for n in "DEF")
     for k, phi_deg in enumerate(phis):
@@ -283,7 +283,8 @@ def test_a_fold_is_named_not_jumped_over(tmp_path, capsys):
     from plans.cli import main
     from plans.scene.model import load_scene
 
-    text = SAMPLE.read_text(encoding="utf-8").replace("angle_deg = 135 }", "angle_deg = 75 }")
+    text = SAMPLE.read_text(encoding="utf-8").replace("angle_deg = 165 }", "angle_deg = 75 }")
+    text = text.replace("C = [250, 450]", "C = [150, 450]")
     f = tmp_path / "fold.toml"
     f.write_text(text, encoding="utf-8")
     assert main(["solve", str(f), "--quiet"]) == 2
@@ -293,7 +294,7 @@ def test_a_fold_is_named_not_jumped_over(tmp_path, capsys):
     stop = float(m.group(1))
     assert 86.0 < stop < 88.0
     one = _TwoAngles(load_scene(str(f)))
-    one.turn *= cmath.exp(1j * math.radians(75.0 - 135.0))
+    one.turn *= cmath.exp(1j * math.radians(75.0 - 165.0))
     ab = _start(one)
     sign = math.copysign(1.0, _jacobian(one, 0.0, ab))
     flipped = None
