@@ -298,6 +298,10 @@ def scheme_panel(scene, kin, k: int, mu_l: float, lang: str, strokes: dict[str, 
         rec.text(lab, "label", f"{pid}-{tag}-label")
     rec.end()
 
+    if any(len(g.links) == 4 for g in kin.structure.groups):  # class III: Assur's point S
+        from .triad_marks import scheme_points
+
+        scheme_points(rec, placer, T, scene, kin, k, pid)
     rec.begin(f"{pid}-labels", "labels")
     names = list(scene.frame_points) + [n for lid in sorted(scene.links) for n in scene.links[lid].points]
     seen: set[str] = set()

@@ -114,6 +114,10 @@ def _position(sol: Solution, k: int, forces: dict | None, steps: bool = True) ->
         pos["links"][str(lid)] = le
     if kin.conditions:
         pos["conditioning"] = {g: float(c[k]) for g, c in kin.conditions.items()}
+    if kin.structure.triads():  # class III: Assur's special point of each group
+        from plans.kinematics.triad_plans import assur_points_json
+
+        pos["assur_points"] = assur_points_json(kin, k)
     if sol.plans:
         pp = sol.plans[k]
         pos["plans"] = {}

@@ -170,7 +170,12 @@ def force_steps(fa: ForceAnalysis, lv: LeverAnalysis, k: int) -> tuple[ForceStep
     out: list[ForceStep] = []
     for gf, poly in zip(fa.groups, polys, strict=False):
         name = f"group {gf.group.name}"
-        out += [ForceStep(name, s, arms) for s, arms in _group_steps(fa, gf, k, mu_l)]
+        if hasattr(gf, "S"):  # class III: the leashes' and the group's moments about Assur's point
+            from plans.forces.triad_polygon import triad_steps
+
+            out += [ForceStep(name, s, arms) for s, arms in triad_steps(fa, gf, k, mu_l)]  # type: ignore[arg-type]
+        else:
+            out += [ForceStep(name, s, arms) for s, arms in _group_steps(fa, gf, k, mu_l)]
         out += [ForceStep(name, s) for s in poly.plan.steps]
     crank_poly = polys[-1]
     out += [ForceStep("crank", s, arms) for s, arms in _crank_steps(fa, k, mu_l)]
