@@ -70,6 +70,8 @@ def _head(sol: Solution) -> dict[str, Any]:
         "structure": sol.structure.to_json(),
         "positions": _POSITIONS,
     }
+    if scene.driver.start:  # the positions from the output's extreme: where, and the strokes
+        out["phi_start"] = scene.driver.strokes.to_json(scene.driver.start)
     if sol.cycle is not None:
         from plans.cycle.results import cycle_json
 
@@ -175,6 +177,10 @@ def table(sol: Solution, protocol: bool = False, lang: str = "en") -> str:
     kin, scene = sol.kinematics, sol.scene
     title = scene.titles.get(lang, scene.title) if ru else scene.title
     lines = [title, symbols(sol.structure.formula(), lang), ""]
+    if scene.driver.start:
+        from plans.kinematics.extreme import start_line
+
+        lines[-1:-1] = [start_line(scene, lang)]
     for k in range(kin.n):
         lines.append(say("t_position", lang, phi=float(kin.phi_deg[k])))
         if not sol.plans:

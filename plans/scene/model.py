@@ -102,6 +102,10 @@ class Driver:
     phi_ref: float
     sense: int
     phis_deg: tuple[float, ...]
+    #: ``phi_start``: the positions start at the output's extreme ("extreme", "extreme_idle"),
+    #: whose strokes are ``strokes`` (plans.kinematics.extreme.Strokes); "" and None otherwise
+    start: str = ""
+    strokes: Any = None
 
     def rotation(self, phi_deg: Any) -> Any:
         """e^{iθ1}, with θ1 reduced in degrees by whole quarter turns first, so that the
@@ -193,7 +197,8 @@ JOINT_KEYS = {"kind", "links", "point", "guide", "slider_angle_deg",
               "f", "pin_radius", "friction_circle"}  # friction: plans.scene.friction
 GUIDE_KEYS = {"link", "through", "toward", "angle_deg", "offset"}
 DRIVER_KEYS = {"link", "omega", "omega_rpm", "sense", "eps", "phi_ref_deg", "phi_deg", "positions", "phi0_deg",
-               "s_mm", "s_fraction", "s_stroke", "piston"}  # positions by the piston's travel: kinematics.travel
+               "s_mm", "s_fraction", "s_stroke", "piston",  # positions by the piston's travel: kinematics.travel
+               "phi_start", "extreme_of"}  # positions from the output's extreme: kinematics.extreme
 #: ω at most 1e6 rad/s, and 0 or at least 1e-6 rad/s (a slower crank makes plan scales overflow).
 OMEGA_LIMIT = 1e6
 
@@ -271,6 +276,10 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
         from plans.kinematics.travel import by_travel
 
         scene = by_travel(scene, r)
+    if isinstance(data.get("driver"), dict) and "phi_start" in data["driver"]:
+        from plans.kinematics.extreme import start_scene
+
+        scene = start_scene(scene, r)
     return scene
 
 
