@@ -339,6 +339,7 @@ def add_option(parser: Any) -> None:
 # ---- task semantics: the positions from the extreme, the strokes of the loads, the course's notation
 TERMS.update({
     "x_slider": ("slider", "ползун"),
+    "x_mu_per_mm": ("mu = {k:.6g} {unit}/mm", "μ = {k:.6g} {unit}/мм"),
     "x_rocker": ("rocker", "коромысло"),
     "x_start_working": (
         "positions from the extreme position of link {link} ({kind} {point}) where the working stroke begins: "

@@ -197,9 +197,7 @@ def table(sol: Solution, protocol: bool = False, lang: str = "en") -> str:
             if plan is None:
                 continue
             unit = "mm/(m/s)" if plan.kind == "velocity" else "mm/(m/s^2)"
-            style = scene.scale_style
-            sc = say("t_mu", lang, mu=plan.scale, unit=unit) if style == "mu" else \
-                say("t_k", lang, k=1 / plan.scale, unit=unit.split('/', 1)[1].strip('()'))
+            sc = _scale_phrase(scene.scale_style, plan.scale, unit, lang)
             lines.append(symbols(say("t_plan", lang, kind=say("t_" + plan.kind, lang) if ru else plan.kind,
                                      sc=sc), lang))
             if plan.degenerate:
@@ -246,6 +244,23 @@ def table(sol: Solution, protocol: bool = False, lang: str = "en") -> str:
         if line:
             lines.append(line)
     return "\n".join(lines)
+
+
+def _scale_phrase(style: str, mu: float, unit: str, lang: str) -> str:
+    """A plan's scale in the protocol: the scene's letter and direction (plans.scene.notation)."""
+    from plans.phrases import say  # the old "mu" and "K" as they always were
+
+    per = unit.split('/', 1)[1].strip('()')
+    if style == "mu":
+        return say("t_mu", lang, mu=mu, unit=unit)
+    if style == "K":
+        return say("t_k", lang, k=1 / mu, unit=per)
+    from plans.scene.notation import resolve
+
+    letter, per_mm, _ = resolve(style, lang)
+    if not per_mm:
+        return say("t_mu", lang, mu=mu, unit=unit)
+    return say("t_k" if letter == "K" else "x_mu_per_mm", lang, k=1 / mu, unit=f"({per})")
 
 
 def load_and_solve(path: str) -> Solution:

@@ -134,7 +134,7 @@ class Scene:
     branches: dict[str, int]
     outputs: frozenset[str]
     scales: dict[str, float]  # "length", "velocity", "acceleration", "force": mm per SI unit
-    scale_style: str  # "mu" (mm per unit) or "K" (unit per mm)
+    scale_style: str  # the notation's token (plans.scene.notation): the scales' letter and direction, the pole
     fij: str
     raw: dict[str, Any] = field(repr=False, default_factory=dict)
     titles: dict[str, str] = field(default_factory=dict)  # per sheet language: {"ru": ..., "en": ...}
@@ -582,11 +582,16 @@ _SCALE_UNITS = {"length": "mm/m", "velocity": "mm/(m/s)", "acceleration": "mm/(m
 
 def _scales(r: Reader, data: dict[str, Any]) -> tuple[dict[str, float], str]:
     raw = r.table(data, "scales", "", required=False)
-    style = r.choice(raw, "style", "scales.", ("mu", "K"), "mu")
-    r.keys(raw, {"style", *_SCALE_UNITS}, "scales.")
+    r.keys(raw, {"style", "symbol", "direction", *_SCALE_UNITS}, "scales.")
+    style = "||"  # the scales' letter, their direction, the pole: the language's (plans.scene.notation)
+    sheet = data.get("sheet")
+    if {"style", "symbol", "direction"} & set(raw) or (isinstance(sheet, dict) and "acceleration_pole" in sheet):
+        from plans.scene.notation import read
+
+        style = read(r, raw, sheet)
     out = {}
     for key, value in raw.items():
-        if key == "style":
+        if key in ("style", "symbol", "direction"):
             continue
         if isinstance(value, dict) and set(value) == {"known_mm"} and key in ("velocity", "acceleration"):
             # the course habit: the known vector (crank pin) drawn this long, e.g. pa = 100 mm
