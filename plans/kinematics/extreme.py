@@ -197,21 +197,30 @@ def _bisect(probe: Scene, out: Output, lo: float, hi: float) -> float:
     return lo if abs(f_lo) <= abs(_rate(probe, out, hi)) else hi
 
 
-def strokes(scene: Scene, field: str = "driver.phi_start", *, closed: bool = True) -> Strokes:
-    """The output's extremes and strokes (computed once per scene)."""
-    if closed and scene.driver.strokes is not None:
+def strokes(scene: Scene, field: str = "driver.phi_start", *, closed: bool = True,
+            output: Output | None = None) -> Strokes:
+    """The extremes and strokes of the scene's output, or of ``output`` (computed once per scene)."""
+    if closed and output is None and scene.driver.strokes is not None:
         return scene.driver.strokes
-    key = ("strokes", closed)
+    key = ("strokes", closed, None if output is None else (output.link, output.point))
     done = scene.memo.get(key)
     if done is None:
-        done = scene.memo[key] = _strokes(scene, field, closed)
+        done = scene.memo[key] = _strokes(scene, field, closed, output)
     return done
 
 
-def _strokes(scene: Scene, field: str, closed: bool) -> Strokes:
+def slider(scene: Scene, point: str) -> Output | None:
+    """The slider on a guide of the frame whose pin is ``point`` (None: no such slider)."""
+    for j in scene.joints:
+        if j.kind == "P" and j.guide is not None and j.guide.link == scene.frame and j.point == point:
+            return Output("slider", j.slider, point, j)
+    return None
+
+
+def _strokes(scene: Scene, field: str, closed: bool, output: Output | None) -> Strokes:
     from plans.kinematics.exact import solve
 
-    out = output_of(scene)
+    out = output or output_of(scene)
     probe = _probe(scene)
     grid = np.arange(GRID + 1) * (360.0 / GRID)
     try:
