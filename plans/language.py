@@ -357,6 +357,11 @@ TERMS.update({
         "внимание: {file}: {field}: сила сопротивления {name} действует и на холостом (быстром) ходу; "
         "укажите stroke = \"working\", если она действует только на рабочем ходу (или stroke = \"both\", "
         "если так и задумано)"),
+    "x_warn_idle_only": (
+        "warning: {file}: {field}: the resisting force {name} acts on the idle (fast) stroke only (stroke = "
+        "\"{stroke}\"); give stroke = \"working\" for the working (slow) stroke",
+        "внимание: {file}: {field}: сила сопротивления {name} действует только на холостом (быстром) ходу "
+        "(stroke = \"{stroke}\"); для рабочего (медленного) хода укажите stroke = \"working\""),
     "x_warn_idle_moment": (
         "warning: {file}: {field}: the resisting moment {name} acts on the idle (fast) stroke too; give "
         "stroke = \"working\" if it resists the working stroke only (or stroke = \"both\" to say so)",

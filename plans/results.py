@@ -243,7 +243,23 @@ def table(sol: Solution, protocol: bool = False, lang: str = "en") -> str:
         line = cycle_line(sol.forces[0], lang)
         if line:
             lines.append(line)
-    return "\n".join(lines)
+    text = "\n".join(lines)
+    if not scene.scale_style.endswith(("|", "mu", "K")):  # the acceleration pole as the scene names it
+        text = _pole_named(text, scene.scale_style, lang)
+    return text
+
+
+def _pole_named(text: str, style: str, lang: str) -> str:
+    """The protocol with the acceleration pole written as ``[sheet] acceleration_pole`` says (the
+    solve's protocol writes no other π)."""
+    import re
+
+    from plans.scene.notation import resolve
+
+    pole = resolve(style, lang)[2]
+    if lang == "ru":
+        return text.replace("π", pole) if pole != "π" else text
+    return re.sub(r"\bp_a(?![A-Z_])", pole, text) if pole != "p_a" else text
 
 
 def _scale_phrase(style: str, mu: float, unit: str, lang: str) -> str:

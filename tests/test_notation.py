@@ -108,3 +108,13 @@ def test_english_sheets_keep_their_notation():
     """The English defaults are what the sheets always wrote: μ in mm per unit, p_a."""
     scene = _scene()
     assert resolve(scene.scale_style, "en") == resolve("mu", "en") == ("μ", False, "p_a")
+
+
+@pytest.mark.parametrize("sheet, lang, want, not_want", [
+    (None, "ru", "π a", "p_a a"), (None, "en", "p_a a", "π a"),
+    ({"acceleration_pole": "p_a"}, "ru", "p_a a", "π"), ({"acceleration_pole": "π"}, "en", "π a", "p_a")])
+def test_the_protocol_names_the_pole_as_asked(sheet, lang, want, not_want):
+    from plans.results import table
+
+    text = table(plans.solve(_scene(sheet=sheet)), protocol=True, lang=lang)
+    assert want in text and not_want not in text

@@ -168,3 +168,13 @@ def test_stroke_bad_input():
     with pytest.raises(InputError) as exc:
         _forces(scene_from_dict(data, "whitworth.toml"))
     assert "turns all the way round" in str(exc.value)
+
+
+def test_a_force_by_the_sign_of_its_velocity_on_the_fast_stroke_only_warns(capsys):
+    """The Whitworth ram cuts while moving to −x (its slow stroke): stroke = "positive" would
+    put the cutting force on the quick return."""
+    for stroke, warned in (("positive", True), ("negative", False), ("working", False)):
+        _forces(_scene("whitworth", force={"name": "F_c", "link": 5, "point": "E", "resisting": 1500, "along": 0,
+                                           "stroke": stroke}))
+        err = capsys.readouterr().err
+        assert ("idle (fast) stroke only" in err and "loads.force[0].stroke" in err) == warned, (stroke, err)

@@ -502,10 +502,11 @@ def _parse_loads(scene: Scene) -> Loads:
         from plans.forces.strokes import on_stroke
 
         on_stroke(scene, "working", [], limited[0])
-    if any("resisting" in body and "stroke" not in body for body in (*f_raw, *m_raw)):
+    if any("resisting" in body and body.get("stroke", "positive") in ("positive", "negative")
+           for body in (*f_raw, *m_raw)):  # no stroke given, or one by the sign of the velocity
         from plans.forces.strokes import warn_idle
 
-        warn_idle(scene, raw)
+        warn_idle(scene, raw, forces)
     return Loads(masses=masses, inertias=inertias, centres=centres, g=g,
                  offset_inertia=inertia_mode == "offset_force", lever_turn=1 if turn == "ccw" else -1,
                  balancing=Balancing(kind, bpoint), gas=tuple(gas), forces=tuple(forces),

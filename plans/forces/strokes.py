@@ -37,15 +37,18 @@ def on_stroke(scene: Scene, stroke: str, phi_deg: Any, field: str = "loads") -> 
     return working if stroke == "working" else ~working
 
 
-def warn_idle(scene: Scene, raw: dict[str, Any]) -> None:
-    """On stderr: each resisting load given without ``stroke`` that also acts on the idle stroke."""
+def warn_idle(scene: Scene, raw: dict[str, Any], forces: Any = ()) -> None:
+    """On stderr: each resisting load given without ``stroke`` that also acts on the idle
+    stroke, and each one limited by the sign of its velocity (``stroke = "positive"`` or
+    ``"negative"``) that acts on the idle stroke only."""
     suspects = []
     for key, what in (("force", "x_warn_idle"), ("moment", "x_warn_idle_moment")):
         bodies = raw.get(key, [])
         for k, body in enumerate(bodies if isinstance(bodies, list) else []):
             if isinstance(body, dict) and "resisting" in body and "stroke" not in body:
                 suspects.append((key, k, what, body.get("name", "")))
-    if not suspects:
+    signed = [(k, fl) for k, fl in enumerate(forces) if fl.resisting is not None and fl.stroke in ("positive", "negative")]
+    if not suspects and not signed:
         return
     from plans.kinematics.extreme import strokes
 
@@ -59,6 +62,11 @@ def warn_idle(scene: Scene, raw: dict[str, Any]) -> None:
     from plans.phrases import say
 
     lang = choose(None, scene.raw)
+    for k, fl in signed:
+        if _idle_only(scene, st, fl):
+            text = say("x_warn_idle_only", lang, file=scene.path, field=f"loads.force[{k}].stroke", name=fl.name,
+                       stroke=fl.stroke)
+            print(f"plans: {text}", file=sys.stderr)
     for key, k, what, name in suspects:
         text = say(what, lang, file=scene.path, field=f"loads.{key}[{k}].resisting", name=name or f"#{k + 1}")
         print(f"plans: {text}", file=sys.stderr)
@@ -70,3 +78,17 @@ def mask(scene: Scene, kin: Any, stroke: str, values: Any) -> Any:
         return values
     keep = on_stroke(scene, stroke, kin.phi_deg)
     return np.where(keep, values, 0)
+
+
+def _idle_only(scene: Scene, st: Any, fl: Any) -> bool:
+    """The force acts somewhere on the revolution, and only on the idle stroke (sampled every 0.5°)."""
+    import math
+
+    from plans.kinematics.exact import solve
+    from plans.kinematics.extreme import GRID, _probe
+
+    grid = np.arange(GRID) * (360.0 / GRID)
+    v = solve(_probe(scene), grid, order=1).point_on(fl.link, scene.links[fl.link].points[fl.point])[1]
+    along = (v * complex(math.cos(fl.along), -math.sin(fl.along))).real
+    acts = along > 0 if fl.stroke == "positive" else along < 0
+    return bool(acts.any()) and not bool((acts & st.working(grid)).any())
