@@ -340,6 +340,10 @@ def add_option(parser: Any) -> None:
 TERMS.update({
     "x_slider": ("slider", "ползун"),
     "x_mu_per_mm": ("mu = {k:.6g} {unit}/mm", "μ = {k:.6g} {unit}/мм"),
+    "x_r_polygon": ("{label} (polygon {g}, {sc})", "{label} (план сил {g}, {sc})"),
+    "x_r_arm": ("h_{lab} in {eq} = 0 ({sc})", "h_{lab} в {eq} = 0 ({sc})"),
+    "x_force_head": ("  force analysis (F_ij = force {fij}), lever turned 90° {sense}, {sc}",
+                     "  силовой расчёт (F_ij — {fij}), рычаг повёрнут на 90° {sense}, {sc}"),
     "x_rocker": ("rocker", "коромысло"),
     "x_start_working": (
         "positions from the extreme position of link {link} ({kind} {point}) where the working stroke begins: "

@@ -118,3 +118,23 @@ def test_the_protocol_names_the_pole_as_asked(sheet, lang, want, not_want):
 
     text = table(plans.solve(_scene(sheet=sheet)), protocol=True, lang=lang)
     assert want in text and not_want not in text
+
+
+def test_the_force_protocol_writes_its_scales_in_the_notation():
+    """μF, μl and the lever's μv in the force analysis follow the plans' notation: read back, each
+    is the polygon's own scale (its mm per newton) the other way round."""
+    from plans.results import table
+
+    data = read_toml(ROOT / "samples" / "shaper.toml")
+    sol = plans.solve(scene_from_dict(data, "shaper.toml"))
+    ru, en = table(sol, lang="ru"), table(sol, lang="en")
+    from plans.forces.polygons import force_polygons
+
+    fa = sol.forces[0]
+    scales = {fp.group: fp.scale for fp in force_polygons(fa, 0)}
+    for group, mu in scales.items():
+        m = re.search(rf"план сил {group}, μF = ([\d,]+) Н/мм", ru)
+        assert m and float(m.group(1).replace(",", ".")) == pytest.approx(1 / mu), group
+        assert re.search(rf"polygon {group}, μF = [\d.]+ mm/N", en), group
+    assert "мм/Н" not in ru and "N/mm" not in en
+    assert re.search(r"рычаг повёрнут на 90° [^,]+, μv = [\d,]+ \(м/с\)/мм", ru)

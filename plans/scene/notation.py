@@ -59,3 +59,20 @@ def resolve(style: str, lang: str) -> tuple[str, bool, str]:
 def pole_label(name: str, style: str, lang: str) -> str:
     """A plan point's name as the sheet writes it: the acceleration pole per the notation."""
     return resolve(style, lang)[2] if name == "p_a" else name
+
+
+_UNITS_RU = {"N/mm": "Н/мм", "m/mm": "м/мм", "(m/s)/mm": "(м/с)/мм", "(m/s^2)/mm": "(м/с²)/мм",
+             "mm/N": "мм/Н", "mm/m": "мм/м", "mm/(m/s)": "мм/(м/с)", "mm/(m/s^2)": "мм/(м/с²)"}
+_PER_MM = {"mm/N": "N/mm", "mm/m": "m/mm", "mm/(m/s)": "(m/s)/mm", "mm/(m/s^2)": "(m/s^2)/mm"}
+
+
+def scale_words(style: str, lang: str, sub: str, mu: float, mm_per: str) -> str | None:
+    """``μF = 25 Н/мм`` as the notation writes a scale of ``mu`` mm per unit in a protocol's
+    line; None where it is the old μ in mm per unit (the caller's own phrase then)."""
+    letter, per_mm, _ = resolve(style, lang)
+    if not per_mm and letter == "μ":
+        return None
+    from plans.phrases import number
+
+    value, unit = (1.0 / mu, _PER_MM[mm_per]) if per_mm else (mu, mm_per)
+    return f"{letter}{sub} = {number(value, 'g', lang)} {_UNITS_RU[unit] if lang == 'ru' else unit}"
