@@ -178,3 +178,27 @@ def test_a_force_by_the_sign_of_its_velocity_on_the_fast_stroke_only_warns(capsy
                                            "stroke": stroke}))
         err = capsys.readouterr().err
         assert ("idle (fast) stroke only" in err and "loads.force[0].stroke" in err) == warned, (stroke, err)
+
+
+@pytest.mark.parametrize("load", [
+    {"force": {"name": "F_c", "link": 5, "point": "E", "resisting": 2000, "stroke": "working"}},
+    {"force": {"name": "F_c", "link": 5, "point": "E", "resisting": 2000, "along": 0, "stroke": "both"}},
+])
+def test_no_resisting_force_at_the_extreme_where_the_ram_stops(load):
+    """At the exact extreme the ram's velocity is round-off (1e-17 m/s): it resists nothing there,
+    not the full force in the direction of the dust."""
+    data = read_toml(ROOT / "samples" / "shaper.toml")
+    data["driver"]["phi_start"] = "extreme"
+    data["loads"]["force"] = [load["force"]]
+    fa = _forces(scene_from_dict(data, "shaper.toml"))[0]
+    F = next(f for f in fa.applied.forces if f.label == "F_c").F
+    assert F[0] == 0 and np.all(np.abs(F[1:4]) == 2000)
+
+
+def test_no_resisting_moment_at_the_rockers_extreme():
+    data = read_toml(ROOT / "samples" / "four_bar.toml")
+    data["driver"].pop("phi_deg", None)
+    data["driver"].update(positions=12, phi_start="extreme")
+    fa = _forces(scene_from_dict(data, "four_bar.toml"))[0]
+    M = next(m for m in fa.applied.moments if m.label == "M_c").M
+    assert M[0] == 0 and np.all(np.abs(M[1:5]) == 40)

@@ -739,12 +739,15 @@ def apply_loads(scene: Scene, loads: Loads, kin: Any) -> AppliedLoads:
             F = np.full(n, fl.vector, dtype=complex)
         else:
             assert fl.resisting is not None and v is not None
+            # at rest up to round-off (an extreme position): no motion to resist, no force
+            still = DUST * abs(scene.driver.omega) * _extent(kin)
             if fl.along is None:
                 speed = np.abs(v)
-                F = np.where(speed > 0, -fl.resisting * unit_vector(v), 0)
+                F = np.where(speed > still, -fl.resisting * unit_vector(v), 0)
             else:
                 e = complex(math.cos(fl.along), math.sin(fl.along))
-                sv = np.sign((v * np.conj(e)).real)
+                ve = (v * np.conj(e)).real
+                sv = np.where(np.abs(ve) > still, np.sign(ve), 0.0)
                 if fl.stroke == "positive":
                     sv = np.where(sv > 0, sv, 0.0)
                 elif fl.stroke == "negative":
@@ -764,7 +767,8 @@ def apply_loads(scene: Scene, loads: Loads, kin: Any) -> AppliedLoads:
             M = np.full(n, ml.value)
         else:
             assert ml.resisting is not None
-            M = -ml.resisting * np.sign(kin.omega(ml.link))
+            w = kin.omega(ml.link)
+            M = -ml.resisting * np.where(np.abs(w) > DUST * abs(scene.driver.omega), np.sign(w), 0.0)
         if ml.stroke != "both":
             from plans.forces.strokes import mask
 
