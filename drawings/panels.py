@@ -105,11 +105,15 @@ _SCALE_UNITS = {
 
 
 def scale_text(quantity: str, mu: float, style: str, lang: str) -> str:
-    """``μ_v = 6.667 mm/(m/s)`` or ``K_v = 0.15 (m/s)/mm``, as the course writes scales."""
+    """``μ_v = 6.667 mm/(m/s)``, ``μ_v = 0,15 (м/с)/мм`` or ``K_v = 0.15 (m/s)/mm``: the letter
+    and the direction of the scene's notation in the sheet's language (plans.scene.notation)."""
+    from plans.scene.notation import resolve
+
     sub, mu_unit, k_unit = _SCALE_UNITS[quantity]
-    if style == "K":
-        return f"K_{sub} = {fmt(1.0 / mu, 4, lang)} {tr(k_unit, lang)}"
-    return f"μ_{sub} = {fmt(mu, 4, lang)} {tr(mu_unit, lang)}"
+    letter, per_mm, _ = resolve(style, lang)
+    if per_mm:
+        return f"{letter}_{sub} = {fmt(1.0 / mu, 4, lang)} {tr(k_unit, lang)}"
+    return f"{letter}_{sub} = {fmt(mu, 4, lang)} {tr(mu_unit, lang)}"
 
 
 def ratio_text(mu_l: float, lang: str = "en") -> str:
@@ -479,6 +483,8 @@ _LABELLED = ("normal", "tangential", "coriolis", "sliding")
 
 def plan_panel(plan: Plan, lang: str, scale_style: str, pid: str | None = None) -> Panel:
     """A velocity or acceleration plan at true size (plan mm): pole, vectors, points, lines."""
+    from plans.scene.notation import pole_label
+
     kind = plan.kind
     pid = pid or f"{kind}-{phi_tag(plan.phi_deg)}"
     T = Transform(1.0)
@@ -538,7 +544,7 @@ def plan_panel(plan: Plan, lang: str, scale_style: str, pid: str | None = None) 
                     vy -= (there[1] - here[1]) / L
         L = math.hypot(vx, vy)
         prefer = (vx / L, vy / L) if L > 1e-9 else None
-        text = ", ".join(point_label(n) for n in names)
+        text = ", ".join(point_label(pole_label(n, scale_style, lang)) for n in names)
         lab = placer.place(text, c, LABEL_SIZE, prefer=prefer, gap=0.8)
         rec.text(lab, "label", f"{pid}-label-{ident(root)}")
     for s, a, b in seg_geoms:
@@ -618,18 +624,21 @@ def table_panel(rows: Sequence, lang: str, scale_style: str, phi: float, pid: st
     ``rows`` are readings (``plans.construction.Reading``-like); ``extra`` are ready rows of
     eight cells (the balancing force three ways).
     """
+    from plans.scene.notation import pole_label, resolve
+
     pid = pid or f"table-{phi_tag(phi)}"
     header: tuple[str, ...] = (tr("quantity", lang), tr("segment", lang), tr("mm", lang), tr("scale", lang),
               tr("read", lang), tr("exact", lang), tr("unit", lang), tr("diff", lang))
     body: list[tuple[str, tuple[str, ...]]] = []
     for r in rows:
-        seg = " ".join(point_label(t) for t in r.segment.split()) if r.segment else "—"
+        seg = " ".join(point_label(pole_label(t, scale_style, lang)) for t in r.segment.split()) if r.segment \
+            else "—"
         mm = "—"
         if r.length_mm is not None:
             mm = fmt(_clean(r.length_mm, r.ref * (r.scale or 1.0)), 4, lang)
         if r.scale is None:
             sc = "—"
-        elif scale_style == "K":
+        elif resolve(scale_style, lang)[1]:  # units per mm
             sc = fmt(1.0 / r.scale, 4, lang)
         else:
             sc = fmt(r.scale, 4, lang)

@@ -49,6 +49,8 @@ lengths in the file's ``unit`` (or strings such as ``"82 mm"``).
                                # or resisting = 1000: opposite the point's velocity
                                #   (along = deg: only the velocity's sign along that axis counts;
                                #    stroke = "positive" | "negative": act only on that stroke)
+                               # stroke = "working" | "idle": act only on that stroke of the output
+                               #   (the slow one / the fast return; plans.forces.strokes), any force
     name = "F_c"               # label on the polygons and the lever (default F_ext<k>)
     # or a gas force by its pressure over the cycle's crank angle, on a piston along its
     # guide toward the crank: area = 0.00528 (m²) or bore = 82 (file unit), and
@@ -60,6 +62,7 @@ lengths in the file's ``unit`` (or strings such as ``"82 mm"``).
                                # or a turning-moment diagram over the cycle (φ the crank's):
                                # table = [[0, 0], [90, 600], ..., [360, 0]]  (φ deg, N·m)
                                # expression = "600*sin(2*phi) - 500*sin(phi)"  (φ in rad)
+    stroke = "working"         # or "idle": act only on that stroke of the output (default both)
     name = "M_c"
 
 Sign of the balancing force in the results: positive along the velocity of
@@ -133,6 +136,7 @@ class MomentLoad:
     table: tuple[R, R] | None = None  # a turning-moment diagram (φ deg, N·m)
     expression: Any = None  # or a formula of φ (rad), plans.expression.Expression
     period: float = 360.0  # the cycle the diagram covers, deg
+    stroke: str = "both"  # "working" | "idle": only on that stroke of the output
 
 
 @frozen
@@ -429,8 +433,9 @@ def _parse_loads(scene: Scene) -> Loads:
                                         f"{sorted(scene.links[lid].points)}")
         vec = res = along = None
         stroke = body.get("stroke", "both")
-        if stroke not in ("both", "positive", "negative"):
-            raise fail(f"{where}stroke", f"expected \"both\", \"positive\" or \"negative\", got {stroke!r}")
+        if stroke not in ("both", "positive", "negative", "working", "idle"):
+            raise fail(f"{where}stroke", f"expected \"working\", \"idle\", \"both\", \"positive\" or "
+                                         f"\"negative\", got {stroke!r}")
         if "vector" in body:
             v = body["vector"]
             if not (isinstance(v, list) and len(v) == 2):
@@ -447,7 +452,7 @@ def _parse_loads(scene: Scene) -> Loads:
                 along = math.radians(angle(body, "along", where, 0.0))
         else:
             raise fail(f"{where}vector", "expected vector = [Fx, Fy], magnitude (+ angle_deg) or resisting")
-        if stroke != "both" and along is None:
+        if stroke in ("positive", "negative") and along is None:
             raise fail(f"{where}stroke", "a stroke needs an axis: along = angle in degrees")
         forces.append(ForceLoad(link=lid, point=pt, vector=vec, resisting=res, along=along, stroke=stroke,
                                 name=label(body, where, f"F_ext{k + 1}")))
@@ -459,7 +464,9 @@ def _parse_loads(scene: Scene) -> Loads:
         where = f"loads.moment[{k}]."
         if not isinstance(body, dict):
             raise fail(f"loads.moment[{k}]", "expected a table")
-        check_keys(body, ("link", "value", "resisting", "name", "table", "expression"), file=path, where=where)
+        check_keys(body, ("link", "value", "resisting", "name", "table", "expression", "stroke"), file=path,
+                   where=where)
+        m_stroke = r.choice(body, "stroke", where, ("both", "working", "idle"), "both")
         given = [key for key in ("value", "resisting", "table", "expression") if key in body]
         if len(given) > 1:
             raise fail(f"{where}{given[1]}", f"give one of value, resisting, table or expression, not both "
@@ -468,7 +475,7 @@ def _parse_loads(scene: Scene) -> Loads:
         if "table" in body:
             tab = _cycle_table(r, body["table"], f"{where}table", "M")
             moments.append(MomentLoad(lid, None, None, label(body, where, f"M{lid}"), table=tab,
-                                      period=float(tab[0][-1])))
+                                      period=float(tab[0][-1]), stroke=m_stroke))
             continue
         if "expression" in body:
             from plans.expression import check_finite, parse
@@ -477,17 +484,29 @@ def _parse_loads(scene: Scene) -> Loads:
             period = cycle_of(scene)
             check_finite(expr, np.radians(np.linspace(0.0, period, 7201)), file=path, field=f"{where}expression")
             moments.append(MomentLoad(lid, None, None, label(body, where, f"M{lid}"), expression=expr,
-                                      period=period))
+                                      period=period, stroke=m_stroke))
             continue
         if "value" in body:
-            moments.append(MomentLoad(lid, number(body, "value", where), None, label(body, where, f"M{lid}")))
+            moments.append(MomentLoad(lid, number(body, "value", where), None, label(body, where, f"M{lid}"),
+                                      stroke=m_stroke))
         elif "resisting" in body:
             moments.append(MomentLoad(lid, None, number(body, "resisting", where, nonneg=True),
-                                      label(body, where, f"M_c{lid}")))
+                                      label(body, where, f"M_c{lid}"), stroke=m_stroke))
         else:
             raise fail(f"{where}value", "expected value = N·m (ccw+), resisting = N·m, table = [[phi_deg, M], ...] "
                                         "or expression = \"...\"")
 
+    limited = [f"loads.{key}[{k}].stroke" for key, got in (("force", f_raw), ("moment", m_raw))
+               for k, body in enumerate(got) if body.get("stroke") in ("working", "idle")]
+    if limited:  # the strokes exist (an output with two extremes), or the first such load fails here
+        from plans.forces.strokes import on_stroke
+
+        on_stroke(scene, "working", [], limited[0])
+    if any("resisting" in body and body.get("stroke", "positive") in ("positive", "negative")
+           for body in (*f_raw, *m_raw)):  # no stroke given, or one by the sign of the velocity
+        from plans.forces.strokes import warn_idle
+
+        warn_idle(scene, raw, forces)
     return Loads(masses=masses, inertias=inertias, centres=centres, g=g,
                  offset_inertia=inertia_mode == "offset_force", lever_turn=1 if turn == "ccw" else -1,
                  balancing=Balancing(kind, bpoint), gas=tuple(gas), forces=tuple(forces),
@@ -720,17 +739,24 @@ def apply_loads(scene: Scene, loads: Loads, kin: Any) -> AppliedLoads:
             F = np.full(n, fl.vector, dtype=complex)
         else:
             assert fl.resisting is not None and v is not None
+            # at rest up to round-off (an extreme position): no motion to resist, no force
+            still = DUST * abs(scene.driver.omega) * _extent(kin)
             if fl.along is None:
                 speed = np.abs(v)
-                F = np.where(speed > 0, -fl.resisting * unit_vector(v), 0)
+                F = np.where(speed > still, -fl.resisting * unit_vector(v), 0)
             else:
                 e = complex(math.cos(fl.along), math.sin(fl.along))
-                sv = np.sign((v * np.conj(e)).real)
+                ve = (v * np.conj(e)).real
+                sv = np.where(np.abs(ve) > still, np.sign(ve), 0.0)
                 if fl.stroke == "positive":
                     sv = np.where(sv > 0, sv, 0.0)
                 elif fl.stroke == "negative":
                     sv = np.where(sv < 0, sv, 0.0)
                 F = -fl.resisting * sv * e
+        if fl.stroke in ("working", "idle"):
+            from plans.forces.strokes import mask
+
+            F = mask(scene, kin, fl.stroke, F)
         forces.append(AppliedForce(fl.name, fl.link, fl.point, r, np.full(n, z), F.astype(complex), "external"))
     for ml in loads.moments:
         if ml.table is not None:
@@ -741,7 +767,12 @@ def apply_loads(scene: Scene, loads: Loads, kin: Any) -> AppliedLoads:
             M = np.full(n, ml.value)
         else:
             assert ml.resisting is not None
-            M = -ml.resisting * np.sign(kin.omega(ml.link))
+            w = kin.omega(ml.link)
+            M = -ml.resisting * np.where(np.abs(w) > DUST * abs(scene.driver.omega), np.sign(w), 0.0)
+        if ml.stroke != "both":
+            from plans.forces.strokes import mask
+
+            M = mask(scene, kin, ml.stroke, M)
         moments.append(AppliedMoment(ml.name, ml.link, M, "external"))
     return AppliedLoads(tuple(forces), tuple(moments))
 
