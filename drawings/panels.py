@@ -7,457 +7,46 @@ moves panels; the recorded primitives are replayed onto the SVG backend.
 
 from __future__ import annotations
 
-import cmath
 import math
 import re
 from collections.abc import Sequence
-from dataclasses import dataclass
 
 from plans.kinematics.plan import Plan
 from plans.units import DUST
 
-from .backend import FILLED, HAIR, MAIN, THICK, THIN, Prim, Pt, Recording, Style, Transform
+from .backend import FILLED, HAIR, Prim, Pt, Recording, Style, Transform
 from .common import Placer, angle, arrow, dot, fmt, ident, phi_tag
 from .i18n import tr
+
+# the panel's frame and the scheme, importable from here as before
+from .panel_frame import (  # noqa: F401
+    LABEL_SIZE,
+    PAD,
+    SCALE_SIZE,
+    SMALL_SIZE,
+    STANDARD_RATIOS,
+    TITLE_SIZE,
+    Panel,
+    auto_length_scale,
+    finish,
+    ratio_text,
+    scale_text,
+)
+from .scheme import (  # noqa: F401
+    BLOCK_H,
+    BLOCK_L,
+    JOINT_R,
+    SchemeGeometry,
+    cross,
+    cycle_size,
+    fixed_pivot,
+    glob_of,
+    link_outline,
+    link_shape,
+    scheme_panel,
+    strokes_over_cycle,
+)
 from .text import layout, point_label
-
-TITLE_SIZE = 5.0
-SCALE_SIZE = 3.5
-LABEL_SIZE = 3.5
-SMALL_SIZE = 2.5
-PAD = 2.0
-
-
-@dataclass(frozen=True, slots=True)
-class Panel:
-    """A finished figure: ``prims`` in panel mm with the box at (0, 0)–(width, height)."""
-
-    pid: str  # "scheme-45", "velocity-45", ...
-    kind: str  # positions | scheme | velocity | acceleration | table | group | polygon | crank | lever | legend
-    phi: float | None
-    prims: tuple[Prim, ...]
-    width: float
-    height: float
-    title: str = ""
-    quantity: str | None = None  # the scale this panel is drawn at: length, velocity, ...
-    scale: float | None = None  # μ, mm per SI unit
-
-    def at(self, x: float, y: float) -> list[Prim]:
-        return [p.moved(x, y) for p in self.prims]
-
-    def text_boxes(self) -> list[tuple[float, float, float, float]]:
-        return [p.label.box for p in self.prims if p.op == "text" and p.label is not None]
-
-    def svg(self, debug: bool = False) -> str:
-        """The panel alone as an SVG document in true millimetres."""
-        from .backend import replay
-        from .svg import SvgBackend, document
-
-        if not debug:
-            return document(self.width, self.height, self.prims)
-        be = SvgBackend(self.width, self.height, debug=debug)
-        replay(self.prims, be)
-        return be.tostring()
-
-    def _repr_svg_(self) -> str:
-        return self.svg()
-
-
-def finish(pid: str, kind: str, phi: float | None, body: Recording, title: str,
-           scale_line: str | None = None, note: str | None = None, quantity: str | None = None,
-           scale: float | None = None) -> Panel:
-    """Title (and scale) above the body, everything shifted to start at (0, 0); labels that a
-    line of the finished figure crosses are moved clear of it (:func:`declutter`); a table's
-    cells sit between its rules by construction and are not searched."""
-    if kind not in ("table", "legend", "cycle-table"):
-        from .declutter import declutter
-
-        body = Recording(declutter(body.prims))
-    x0, y0, x1, y1 = body.bbox()
-    head = Recording()
-    y = y0 - 2.5
-    lines = []
-    if note:
-        lines.append((note, SCALE_SIZE, f"{pid}-note"))
-    if scale_line:
-        lines.append((scale_line, SCALE_SIZE, f"{pid}-scale"))
-    for text, size, eid in reversed(lines):
-        lab = layout(text, x0, y, size, "start", "bottom")
-        head.text(lab, "scale" if eid.endswith("scale") else "note", eid)
-        y = lab.box[1] - 1.2
-    lab = layout(title, x0, y, TITLE_SIZE, "start", "bottom")
-    head.text(lab, "title", f"{pid}-title")
-    rec = Recording([Prim("begin", eid=pid, cls=f"panel {kind}")] + head.prims + body.prims + [Prim("end")])
-    bx0, by0, bx1, by1 = rec.bbox()
-    moved = rec.moved(PAD - bx0, PAD - by0)
-    return Panel(pid, kind, phi, tuple(moved.prims), bx1 - bx0 + 2 * PAD, by1 - by0 + 2 * PAD, title,
-                 quantity, scale)
-
-
-# --------------------------------------------------------------------------- scales
-
-
-_SCALE_UNITS = {
-    "length": ("l", "mm/m", "m/mm"),
-    "velocity": ("v", "mm/(m/s)", "(m/s)/mm"),
-    "acceleration": ("a", "mm/(m/s^2)", "(m/s^2)/mm"),
-    "force": ("F", "mm/N", "N/mm"),
-}
-
-
-def scale_text(quantity: str, mu: float, style: str, lang: str) -> str:
-    """``μ_v = 6.667 mm/(m/s)`` or ``K_v = 0.15 (m/s)/mm``, as the course writes scales."""
-    sub, mu_unit, k_unit = _SCALE_UNITS[quantity]
-    if style == "K":
-        return f"K_{sub} = {fmt(1.0 / mu, 4, lang)} {tr(k_unit, lang)}"
-    return f"μ_{sub} = {fmt(mu, 4, lang)} {tr(mu_unit, lang)}"
-
-
-def ratio_text(mu_l: float, lang: str = "en") -> str:
-    """μl in mm/m as a drawing scale (GOST 2.302): 1000 -> ``1:1``, 250 -> ``1:4``,
-    2000 -> ``2:1``, 400 -> ``1:2,5`` on a Russian sheet (``1:2.5`` in English)."""
-    r = mu_l / 1000.0
-    text = f"{r:.4g}:1" if r >= 1 else f"1:{1 / r:.4g}"
-    return text.replace(".", ",") if lang == "ru" else text
-
-
-STANDARD_RATIOS = (10.0, 5.0, 4.0, 2.5, 2.0, 1.0, 1 / 2, 1 / 2.5, 1 / 4, 1 / 5, 1 / 10, 1 / 15, 1 / 20,
-                   1 / 25, 1 / 40, 1 / 50, 1 / 75, 1 / 100, 1 / 200, 1 / 500, 1 / 1000)
-
-
-def auto_length_scale(size_m: float, target_mm: float = 230.0) -> float:
-    """The largest standard drawing scale (GOST 2.302) that draws ``size_m`` within ``target_mm``."""
-    for r in STANDARD_RATIOS:
-        if size_m * 1000.0 * r <= target_mm:
-            return 1000.0 * r
-    return 1000.0 * STANDARD_RATIOS[-1]
-
-
-# --------------------------------------------------------------------------- the kinematic scheme
-
-BLOCK_L = 12.0
-BLOCK_H = 7.0
-JOINT_R = 1.6
-
-
-@dataclass(frozen=True, slots=True)
-class SchemeGeometry:
-    """What the scheme needs from the kinematics at one position (world metres)."""
-
-    points: dict[str, complex]  # every named point, global
-    link_points: dict[int, dict[str, complex]]
-    crank_omega: float
-    crank_eps: float
-    dead: tuple[str, ...]
-
-
-def scheme_panel(scene, kin, k: int, mu_l: float, lang: str, strokes: dict[str, tuple[float, float]],
-                 overlay=None) -> Panel:
-    """The mechanism at position k at μl: links, joints, sliders, guides, frame, S points, ω1.
-
-    ``overlay(rec, T, placer, pid)``, where given, draws more on the scheme (the instant
-    centres) and returns the panel's (kind, title, note) in place of the scheme's."""
-    phi = float(kin.phi_deg[k])
-    pid = f"scheme-{phi_tag(phi)}" if overlay is None else f"centres-{phi_tag(phi)}"
-    T = Transform(mu_l)
-    frame = scene.frame
-    rec = Recording()
-    placer = Placer()
-
-    def P(lid: int, name: str) -> complex:
-        z = scene.frame_points[name] if lid == frame else scene.links[lid].points[name]
-        return complex(kin.point_on(lid, z)[0][k])
-
-    glob: dict[str, complex] = {}
-    for name, z in scene.frame_points.items():
-        glob[name] = z
-    for lid in sorted(scene.links):
-        for name in scene.links[lid].points:
-            glob.setdefault(name, P(lid, name))
-    centre_world = sum(glob.values()) / max(len(glob), 1)
-
-    rec.begin(f"{pid}-guides", "guides")
-    for jt in scene.joints:
-        if jt.kind != "P" or jt.guide is None:
-            continue
-        g = jt.guide
-        th = 0.0 if g.link == frame else float(kin.theta(g.link)[k])
-        u = cmath.exp(1j * (th + g.angle))
-        G = complex(kin.point_on(g.link, g.origin)[0][k]) if g.link != frame else g.origin
-        pin = glob[jt.point]
-        s_pin = ((pin - G) * u.conjugate()).real
-        half = BLOCK_L / 2 / mu_l
-        if g.link == frame:
-            lo, hi = strokes.get(jt.name, (s_pin, s_pin))
-            lo, hi = min(lo, s_pin) - half - 6 / mu_l, max(hi, s_pin) + half + 6 / mu_l
-            a0, a1 = T.z(G + lo * u), T.z(G + hi * u)
-            rec.line(a0, a1, Style(stroke="#333", width=0.18, dash=(6.0, 1.0, 1.0, 1.0), cls="axis"),
-                     f"{pid}-axis-{ident(jt.point)}")
-            side_w = cross(u, centre_world - G)
-            nrm = -1j * u if side_w >= 0 else 1j * u  # away from the mechanism
-            off = nrm * (BLOCK_H / 2 / mu_l)
-            r0, r1 = T.z(G + lo * u + off), T.z(G + hi * u + off)
-            rec.line(r0, r1, MAIN, f"{pid}-rail-{ident(jt.point)}")
-            o = T.z(off)
-            o0 = T.z(0j)
-            ox, oy = o[0] - o0[0], o[1] - o0[1]
-            dx, dy = r1[0] - r0[0], r1[1] - r0[1]
-            side = 1 if (dy * ox - dx * oy) > 0 else -1
-            rec.hatch(r0, r1, side, THIN, 3.0, 2.5, f"{pid}-hatch-{ident(jt.point)}")
-            k2 = 2.5 / math.sqrt(2)
-            L = math.hypot(dx, dy)
-            hx, hy = (dy / L * side) * k2, (-dx / L * side) * k2
-            placer.add_poly([r0, r1, (r1[0] + hx, r1[1] + hy), (r0[0] + hx, r0[1] + hy)])
-            placer.add_line([a0, a1])
-        else:
-            carrier = scene.links[g.link]
-            ss = [((P(g.link, n) - G) * u.conjugate()).real for n in carrier.points] + [s_pin]
-            lo, hi = min(ss) - half - 4 / mu_l, max(ss) + half + 4 / mu_l
-            a0, a1 = T.z(G + lo * u), T.z(G + hi * u)
-            rec.line(a0, a1, THICK, f"{pid}-guide-{ident(jt.point)}")
-            placer.add_line([a0, a1])
-    rec.end()
-
-    rec.begin(f"{pid}-links", "links")
-    for lid in sorted(scene.links):
-        kind, names = link_shape(scene, lid)
-        link_outline(rec, placer, kind, [T.z(glob_of(P, lid, n)) for n in names], f"{pid}-link-{lid}")
-    rec.end()
-
-    rec.begin(f"{pid}-sliders", "sliders")
-    for jt in scene.joints:
-        if jt.kind != "P" or jt.guide is None:
-            continue
-        g = jt.guide
-        th = 0.0 if g.link == frame else float(kin.theta(g.link)[k])
-        ang = -(th + g.angle)  # paper angle
-        c = T.z(glob[jt.point])
-        ux, uy = math.cos(ang), math.sin(ang)
-        hl, hh = BLOCK_L / 2, BLOCK_H / 2
-        corners = [(c[0] + sx * hl * ux - sy * hh * uy, c[1] + sx * hl * uy + sy * hh * ux)
-                   for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
-        rec.polygon(corners, Style(width=0.5, fill="#fff", cls="slider"), f"{pid}-slider-{ident(jt.point)}")
-        placer.add_poly(corners)
-    rec.end()
-
-    rec.begin(f"{pid}-joints", "joints")
-    drawn: set[str] = set()
-    for jt in scene.joints:
-        if jt.kind != "R" or jt.point in drawn:
-            continue
-        drawn.add(jt.point)
-        c = T.z(glob[jt.point])
-        if frame in jt.links:
-            fixed_pivot(rec, c, f"{pid}-support-{ident(jt.point)}")
-            placer.add_disc((c[0], c[1] + 4.0), 4.0)
-        rec.circle(c, JOINT_R, Style(width=0.35, fill="#fff", cls="joint"), f"{pid}-joint-{ident(jt.point)}")
-        placer.add_disc(c, JOINT_R + 0.3)
-    rec.end()
-
-    rec.begin(f"{pid}-centres", "centres")
-    centres = []
-    for lid in sorted(scene.links):
-        link = scene.links[lid]
-        for n in link.points:
-            if n == link.centre or (n.startswith("S") and n not in drawn):
-                centres.append(n)
-                c = T.z(glob[n])
-                rec.circle(c, 1.2, Style(width=0.25, fill="#fff", cls="centre"), f"{pid}-centre-{ident(n)}")
-                rec.polygon(_quarter(c, 1.2, 0) + _quarter(c, 1.2, 2)[1:], Style(stroke=None, width=0,
-                            fill="#000", cls="centre"))
-                placer.add_disc(c, 1.4)
-    rec.end()
-
-    # ω1 (and ε1) arcs at the crank pivot
-    d = scene.driver
-    crank = scene.links[d.link]
-    O = glob[d.pivot]
-    A = glob[crank.axis[1]]
-    c = T.z(O)
-    th1 = cmath.phase(A - O)
-    r_paper = min(12.0, max(7.0, 0.55 * abs(A - O) * mu_l))
-    arcs = [("ω_1", d.sense, r_paper, "omega")]
-    if d.eps != 0:
-        arcs.append(("ε_1", 1 if d.eps > 0 else -1, r_paper + 4.0, "eps"))
-    rec.begin(f"{pid}-arcs", "arcs")
-    for text, sense, r, tag in arcs:
-        w0 = th1 + sense * math.radians(35)
-        w1 = th1 + sense * math.radians(125)
-        a0p, a1p = T.angle(w0), T.angle(w1)
-        rec.arc(c, r, a0p, a1p, Style(width=0.35, cls="arc"), f"{pid}-{tag}-arc")
-        end = (c[0] + r * math.cos(a1p), c[1] + r * math.sin(a1p))
-        tdir = -sense  # paper angle changes opposite to the world angle
-        tx, ty = -math.sin(a1p) * tdir, math.cos(a1p) * tdir
-        tip = (end[0] + tx * 3.2, end[1] + ty * 3.2)
-        rec.polygon([tip, (end[0] - ty * 0.8, end[1] + tx * 0.8), (end[0] + ty * 0.8, end[1] - tx * 0.8)],
-                    Style(stroke=None, width=0.0, fill="#000", cls="head"), f"{pid}-{tag}-head")
-        mid = T.angle(th1 + sense * math.radians(80))
-        anchor = (c[0] + (r + 0.5) * math.cos(mid), c[1] + (r + 0.5) * math.sin(mid))
-        placer.add_line([(c[0] + r * math.cos(a0p + (a1p - a0p) * i / 8),
-                          c[1] + r * math.sin(a0p + (a1p - a0p) * i / 8)) for i in range(9)])
-        lab = placer.place(text, anchor, LABEL_SIZE, prefer=(math.cos(mid), math.sin(mid)))
-        rec.text(lab, "label", f"{pid}-{tag}-label")
-    rec.end()
-
-    rec.begin(f"{pid}-labels", "labels")
-    names = list(scene.frame_points) + [n for lid in sorted(scene.links) for n in scene.links[lid].points]
-    seen: set[str] = set()
-    for n in names:
-        if n in seen:
-            continue
-        seen.add(n)
-        c = T.z(glob[n])
-        away = T.z(glob[n] - centre_world)
-        o0 = T.z(0j)
-        vx, vy = away[0] - o0[0], away[1] - o0[1]
-        L = math.hypot(vx, vy) or 1.0
-        lab = placer.place(point_label(n), c, LABEL_SIZE, prefer=(vx / L, vy / L), gap=2.0)
-        rec.text(lab, "label", f"{pid}-label-{ident(n)}")
-    rec.end()
-
-    dead = _dead_points(scene, kin, k)
-    title = f"{tr('scheme', lang)}, φ = {angle(phi, lang)}°"
-    note = None
-    if dead:
-        note = f"{tr('dead', lang)} {', '.join(dead)}"
-    kind = "scheme"
-    if overlay is not None:
-        kind, title, more = overlay(rec, T, placer, pid)
-        note = "; ".join(x for x in (note, more) if x) or None
-    return finish(pid, kind, phi, rec, title,
-                  f"{scale_text('length', mu_l, scene.scale_style, lang)}  (M {ratio_text(mu_l, lang)})", note,
-                  "length", mu_l)
-
-
-def link_outline(rec: Recording, placer: Placer, kind: str, pts: list[Pt], eid: str) -> None:
-    """A link as the textbook draws it: a thick bar, or a shaded plate for three or more
-    points; its outline is kept clear of labels."""
-    if kind == "line":
-        rec.line(pts[0], pts[1], THICK, eid)
-        placer.add_line(pts)
-    elif kind == "polygon":
-        rec.polygon(pts, Style(width=0.7, fill="#eeeeee", cls="link"), eid)
-        placer.add_line(pts + [pts[0]])
-
-
-def link_shape(scene, lid: int) -> tuple[str, list[str]]:
-    """How a link is drawn: ``("line", [X, Y])`` from end to end of its collinear points, or
-    ``("polygon", [...])`` through its pairs and other points (a rigid triangle, a plate);
-    ``("none", [])`` for a one-point slider (drawn as its block).  Centres of mass (S...) do
-    not shape the link."""
-    link = scene.links[lid]
-    names = [n for n in link.points if _is_joint_point(scene, lid, n) or not n.startswith("S")]
-    for n in link.axis:
-        if n not in names:
-            names.insert(0, n)
-    if len(names) < 2:
-        # a one-pin link that carries a guide (a yoke): its body runs out to its centre of
-        # mass, so S sits on the link it belongs to
-        carrier = any(jt.guide is not None and jt.guide.link == lid for jt in scene.joints)
-        far = [n for n in link.points if n not in names and names and abs(link.points[n] - link.points[names[0]]) > 0]
-        if carrier and names and far:
-            return "line", [names[0], max(far, key=lambda n: abs(link.points[n] - link.points[names[0]]))]
-        return "none", []
-    z = {n: link.points[n] for n in names}
-    base = z[names[1]] - z[names[0]] if len(names) > 1 else 1.0
-    size = max(abs(v - z[names[0]]) for v in z.values()) or 1.0
-    u = base / abs(base) if abs(base) else 1.0
-    rel = {n: (v - z[names[0]]) * u.conjugate() for n, v in z.items()}
-    if all(abs(r.imag) <= DUST * size for r in rel.values()):
-        lo = min(names, key=lambda n: rel[n].real)
-        hi = max(names, key=lambda n: rel[n].real)
-        return "line", [lo, hi]
-    c = sum(z.values()) / len(z)
-    order = sorted(names, key=lambda n: cmath.phase(z[n] - c))
-    return "polygon", order
-
-
-def glob_of(P, lid: int, name: str) -> complex:
-    return P(lid, name)
-
-
-def cross(a: complex, b: complex) -> float:
-    return (a.conjugate() * b).imag
-
-
-def _is_joint_point(scene, lid: int, name: str) -> bool:
-    return any(lid in jt.links and jt.point == name for jt in scene.joints)
-
-
-def _dead_points(scene, kin, k: int) -> list[str]:
-    """Slider pins at rest at this position (dead centres), when velocities are known."""
-    if kin.order < 1:
-        return []
-    d = scene.driver
-    crank = scene.links[d.link]
-    va = abs(complex(kin.point(crank.axis[1])[1][k]))
-    out = []
-    for jt in scene.joints:
-        if jt.kind == "P" and jt.guide is not None and jt.guide.link == scene.frame:
-            v = complex(kin.point(jt.point)[1][k])
-            if abs(v) <= DUST * max(va, 1e-300):
-                out.append(jt.point)
-    return out
-
-
-def fixed_pivot(rec: Recording, c: Pt, eid: str) -> None:
-    """A fixed pivot: triangle to a hatched base, as the textbook draws the frame."""
-    x, y = c
-    rec.polyline([(x - 3.2, y + 5.5), (x, y), (x + 3.2, y + 5.5)], Style(width=0.5, cls="frame"), eid)
-    rec.line((x - 5.5, y + 5.5), (x + 5.5, y + 5.5), Style(width=0.5, cls="frame"))
-    rec.hatch((x - 5.5, y + 5.5), (x + 5.5, y + 5.5), -1, THIN, 2.0, 2.2)
-
-
-def _quarter(c: Pt, r: float, q: int) -> list[Pt]:
-    a0 = q * math.pi / 2
-    return [c] + [(c[0] + r * math.cos(a0 + math.pi / 2 * i / 6), c[1] + r * math.sin(a0 + math.pi / 2 * i / 6))
-                  for i in range(7)]
-
-
-def strokes_over_cycle(sol) -> dict[str, tuple[float, float]]:
-    """Travel of every slider pin along its fixed guide over one revolution (world m), every 5°
-    (none where the mechanism does not turn a whole revolution)."""
-    import numpy as np
-
-    from plans.errors import PlansError
-
-    scene = sol.scene
-    try:
-        rev = sol.revolution(73)
-    except PlansError:
-        return {}
-    out = {}
-    for jt in scene.joints:
-        if jt.kind == "P" and jt.guide is not None and jt.guide.link == scene.frame:
-            r = rev.point(jt.point)
-            s = ((r - jt.guide.origin) * np.conj(jt.guide.direction)).real
-            out[jt.name] = (float(s.min()), float(s.max()))
-    return out
-
-
-def cycle_size(sol) -> float:
-    """Largest extent of the mechanism (world m) over a revolution (every 10°; the scene's own
-    positions where it does not turn a whole one), for the auto scale."""
-    import numpy as np
-
-    from plans.errors import PlansError
-
-    scene = sol.scene
-    try:
-        rev = sol.revolution(37)
-        at = rev.point_on
-    except PlansError:
-        kin = sol.kinematics
-
-        def at(lid, z):
-            return kin.point_on(lid, z)[0]
-    pts = [np.asarray(list(scene.frame_points.values()), dtype=complex)]
-    for lid in scene.links:
-        for z in scene.links[lid].points.values():
-            pts.append(np.asarray(at(lid, z)))
-    allp = np.concatenate([np.ravel(p) for p in pts])
-    return float(max(np.ptp(allp.real), np.ptp(allp.imag), 1e-9))
-
 
 # --------------------------------------------------------------------------- velocity / acceleration plans
 
@@ -476,6 +65,8 @@ _LABELLED = ("normal", "tangential", "coriolis", "sliding")
 
 def plan_panel(plan: Plan, lang: str, scale_style: str, pid: str | None = None) -> Panel:
     """A velocity or acceleration plan at true size (plan mm): pole, vectors, points, lines."""
+    from plans.scene.notation import pole_label
+
     kind = plan.kind
     pid = pid or f"{kind}-{phi_tag(plan.phi_deg)}"
     T = Transform(1.0)
@@ -535,7 +126,7 @@ def plan_panel(plan: Plan, lang: str, scale_style: str, pid: str | None = None) 
                     vy -= (there[1] - here[1]) / L
         L = math.hypot(vx, vy)
         prefer = (vx / L, vy / L) if L > 1e-9 else None
-        text = ", ".join(point_label(n) for n in names)
+        text = ", ".join(point_label(pole_label(n, scale_style, lang)) for n in names)
         lab = placer.place(text, c, LABEL_SIZE, prefer=prefer, gap=0.8)
         rec.text(lab, "label", f"{pid}-label-{ident(root)}")
     for s, a, b in seg_geoms:
@@ -615,18 +206,21 @@ def table_panel(rows: Sequence, lang: str, scale_style: str, phi: float, pid: st
     ``rows`` are readings (``plans.construction.Reading``-like); ``extra`` are ready rows of
     eight cells (the balancing force three ways).
     """
+    from plans.scene.notation import pole_label, resolve
+
     pid = pid or f"table-{phi_tag(phi)}"
     header: tuple[str, ...] = (tr("quantity", lang), tr("segment", lang), tr("mm", lang), tr("scale", lang),
               tr("read", lang), tr("exact", lang), tr("unit", lang), tr("diff", lang))
     body: list[tuple[str, tuple[str, ...]]] = []
     for r in rows:
-        seg = " ".join(point_label(t) for t in r.segment.split()) if r.segment else "—"
+        seg = " ".join(point_label(pole_label(t, scale_style, lang)) for t in r.segment.split()) if r.segment \
+            else "—"
         mm = "—"
         if r.length_mm is not None:
             mm = fmt(_clean(r.length_mm, r.ref * (r.scale or 1.0)), 4, lang)
         if r.scale is None:
             sc = "—"
-        elif scale_style == "K":
+        elif resolve(scale_style, lang)[1]:  # units per mm
             sc = fmt(1.0 / r.scale, 4, lang)
         else:
             sc = fmt(r.scale, 4, lang)

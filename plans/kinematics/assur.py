@@ -7,14 +7,13 @@ of the structure analysis and holds the result.
 
 from __future__ import annotations
 
-import cmath
 import math
 from typing import Any
 
 import numpy as np
 
 from plans.errors import Indeterminate, Locked, NotAssemblable
-from plans.kinematics.context import Context, Motion, place_link, point_at
+from plans.kinematics.context import Context, Motion, joint_name, place_link, point_at, slider_turn
 from plans.kinematics.structure import Group, Structure, TriadGroup
 from plans.lines import cross
 from plans.scene.model import Joint, Scene
@@ -150,23 +149,6 @@ def _branch_hint(g: Group) -> str:
             f"{-g.branch:+d} selects the other of two assemblies only where two exist)")
 
 
-_NAMES: dict[Joint, str] = {}
-
-
-def _name(jt: Joint) -> str:
-    """A P joint's name (formatted once)."""
-    nm = _NAMES.get(jt)
-    if nm is None:
-        nm = _NAMES[jt] = jt.name
-    return nm
-
-
-def _turn(jt: Joint) -> complex:
-    """e^{i(α − α_s)}: a slider's rotation relative to the link carrying its guide."""
-    assert jt.guide is not None
-    return cmath.exp(1j * (jt.guide.angle - jt.slider_angle))
-
-
 def _rotation_of(ctx: Context, q: int, turn: complex) -> C:
     """Rotation of a link that keeps its angle to link q."""
     if q == ctx.frame:
@@ -240,7 +222,7 @@ def _k_rrp(scene: Scene, g: Group) -> tuple:
     zi = Li.points[j2.point] - Li.points[j1.point]
     l1 = abs(zi)
     return (_local(scene, g.known[0], j1.point), l1, zi.conjugate() / l1, Li.points[j1.point],
-            _turn(j3), Lj.points[j2.point])
+            slider_turn(j3), Lj.points[j2.point])
 
 
 def _rrp(ctx: Context, g: Group, k: tuple) -> None:
@@ -280,7 +262,7 @@ def _rrp(ctx: Context, g: Group, k: tuple) -> None:
             aB = aBq + cor + sdd * u
     _rates(ctx, mi, P1, vP1, aP1, wi, ei)
     _rates(ctx, mj, B, vB, aB, mq.omega, mq.eps)
-    ctx.slides[_name(j3)] = (sd, sdd)
+    ctx.slides[joint_name(j3)] = (sd, sdd)
 
 
 def _k_rpr(scene: Scene, g: Group) -> tuple:
@@ -291,7 +273,7 @@ def _k_rpr(scene: Scene, g: Group) -> tuple:
     assert guide is not None
     c0 = guide.origin - Lj.points[j3.point]
     return (_local(scene, g.known[0], j1.point), _local(scene, g.known[1], j3.point),
-            cross(guide.direction, c0), Lj.points[j3.point], _turn(j2),
+            cross(guide.direction, c0), Lj.points[j3.point], slider_turn(j2),
             scene.links[i].points[j1.point])
 
 
@@ -333,11 +315,11 @@ def _rpr(ctx: Context, g: Group, k: tuple) -> None:
         ej, sdd = sys2(aA - aC + wj * wj * d - cor)
     _rates(ctx, mj, Cq, vC, aC, wj, ej)
     _rates(ctx, mi, A, vA, aA, wj, ej)
-    ctx.slides[_name(j2)] = (sd, sdd)
+    ctx.slides[joint_name(j2)] = (sd, sdd)
 
 
 def _k_prp(scene: Scene, g: Group) -> tuple:
-    return (_turn(g.joints[0]), _turn(g.joints[2]), scene.links[g.links[0]].points[g.joints[1].point],
+    return (slider_turn(g.joints[0]), slider_turn(g.joints[2]), scene.links[g.links[0]].points[g.joints[1].point],
             scene.links[g.links[1]].points[g.joints[1].point])
 
 
@@ -373,8 +355,8 @@ def _prp(ctx: Context, g: Group, k: tuple) -> None:
         aB = aBp + k1 + sdd1 * u1
     _rates(ctx, mi, B, vB, aB, mp.omega, mp.eps)
     _rates(ctx, mj, B, vB, aB, mq.omega, mq.eps)
-    ctx.slides[_name(j1)] = (sd1, sdd1)
-    ctx.slides[_name(j3)] = (sd3, sdd3)
+    ctx.slides[joint_name(j1)] = (sd1, sdd1)
+    ctx.slides[joint_name(j3)] = (sd3, sdd3)
 
 
 def _k_rpp(scene: Scene, g: Group) -> tuple:
@@ -383,7 +365,7 @@ def _k_rpp(scene: Scene, g: Group) -> tuple:
     guide = j2.guide
     assert guide is not None
     zK = scene.links[j].points[j3.point]
-    return (_local(scene, g.known[0], j1.point), _turn(j3), zK, zK - guide.origin, _turn(j2),
+    return (_local(scene, g.known[0], j1.point), slider_turn(j3), zK, zK - guide.origin, slider_turn(j2),
             scene.links[i].points[j1.point])
 
 
@@ -426,8 +408,8 @@ def _rpp(ctx: Context, g: Group, k: tuple) -> None:
             aAj = aAq + k3 + sdd3 * u3
     _rates(ctx, ctx.motion[j], A, vAj, aAj, mq.omega, mq.eps)
     _rates(ctx, mi, A, vA, aA, mq.omega, mq.eps)
-    ctx.slides[_name(j2)] = (sd2, sdd2)
-    ctx.slides[_name(j3)] = (sd3, sdd3)
+    ctx.slides[joint_name(j2)] = (sd2, sdd2)
+    ctx.slides[joint_name(j3)] = (sd3, sdd3)
 
 
 _SOLVERS = {"RRR": _rrr, "RRP": _rrp, "RPR": _rpr, "PRP": _prp, "RPP": _rpp}

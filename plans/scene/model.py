@@ -18,22 +18,11 @@ from typing import TYPE_CHECKING, Any
 from plans.io import loads_toml, read_toml
 from plans.reader import Reader, did_you_mean
 from plans.records import frozen
+from plans.scene.options import OUTPUTS, read_branches, read_outputs, read_scales, read_title  # noqa: F401
 from plans.units import LENGTH_UNITS, rpm_to_rad_s
 
 if TYPE_CHECKING:
     from pathlib import Path
-
-#: What a scene may ask for, and what each one needs first.
-OUTPUTS: dict[str, tuple[str, ...]] = {
-    "positions": (),
-    "velocity_plan": ("positions",),
-    "acceleration_plan": ("velocity_plan",),
-    "force_polygons": ("acceleration_plan",),
-    "lever": ("acceleration_plan",),
-    "diagrams": ("positions",),  # kinematic diagrams over the cycle ([diagrams], plans.cycle)
-    "dynamics": ("positions",),  # machine dynamics and the flywheel ([dynamics], plans.cycle)
-    "instant_centres": ("velocity_plan",),  # Kennedy's centres (plans.kinematics.centres)
-}
 
 #: F_ij conventions: seed 003 (force on link i from link j) or seed 000 (of link i on link j).
 FIJ_CONVENTIONS = ("on_i_from_j", "of_i_on_j")
@@ -102,6 +91,10 @@ class Driver:
     phi_ref: float
     sense: int
     phis_deg: tuple[float, ...]
+    #: ``phi_start``: the positions start at the output's extreme ("extreme", "extreme_idle"),
+    #: whose strokes are ``strokes`` (plans.kinematics.extreme.Strokes); "" and None otherwise
+    start: str = ""
+    strokes: Any = None
 
     def rotation(self, phi_deg: Any) -> Any:
         """e^{iθ1}, with θ1 reduced in degrees by whole quarter turns first, so that the
@@ -130,7 +123,7 @@ class Scene:
     branches: dict[str, int]
     outputs: frozenset[str]
     scales: dict[str, float]  # "length", "velocity", "acceleration", "force": mm per SI unit
-    scale_style: str  # "mu" (mm per unit) or "K" (unit per mm)
+    scale_style: str  # the notation's token (plans.scene.notation): the scales' letter and direction, the pole
     fij: str
     raw: dict[str, Any] = field(repr=False, default_factory=dict)
     titles: dict[str, str] = field(default_factory=dict)  # per sheet language: {"ru": ..., "en": ...}
@@ -193,7 +186,8 @@ JOINT_KEYS = {"kind", "links", "point", "guide", "slider_angle_deg",
               "f", "pin_radius", "friction_circle"}  # friction: plans.scene.friction
 GUIDE_KEYS = {"link", "through", "toward", "angle_deg", "offset"}
 DRIVER_KEYS = {"link", "omega", "omega_rpm", "sense", "eps", "phi_ref_deg", "phi_deg", "positions", "phi0_deg",
-               "s_mm", "s_fraction", "s_stroke", "piston"}  # positions by the piston's travel: kinematics.travel
+               "s_mm", "s_fraction", "s_stroke", "piston",  # positions by the piston's travel: kinematics.travel
+               "phi_start", "extreme_of"}  # positions from the output's extreme: kinematics.extreme
 #: ω at most 1e6 rad/s, and 0 or at least 1e-6 rad/s (a slower crank makes plan scales overflow).
 OMEGA_LIMIT = 1e6
 
@@ -228,7 +222,7 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
 
     check_top(data, path, "linkage", TOP_KEYS)
     unit = r.choice(data, "unit", "", sorted(LENGTH_UNITS), "mm")
-    title, titles = _title(r, data.get("title", _stem(path)))
+    title, titles = read_title(r, data.get("title", _stem(path)))
     r.string(title, "title", limit=2000)
     for lang, text in titles.items():
         r.string(text, f"title.{lang}", limit=2000)
@@ -257,9 +251,9 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
     links = _orient_sliders(r, links, joints)
     _shared_points(r, frame, frame_points, links, joints)
     driver = _driver(r, data, frame, frame_points, links)
-    branches = _branches(r, data)
-    outputs = _outputs(r, data)
-    scales, style = _scales(r, data)
+    branches = read_branches(r, data)
+    outputs = read_outputs(r, data)
+    scales, style = read_scales(r, data)
     fij = r.choice(data, "fij", "", FIJ_CONVENTIONS, "on_i_from_j")
     if "sheet" in data:  # without one, every field takes its default: nothing to check
         from plans.scene.sheet import check_sheet
@@ -272,6 +266,10 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
         from plans.kinematics.travel import by_travel
 
         scene = by_travel(scene, r)
+    if isinstance(data.get("driver"), dict) and "phi_start" in data["driver"]:
+        from plans.kinematics.extreme import start_scene
+
+        scene = start_scene(scene, r)
     return scene
 
 
@@ -525,70 +523,3 @@ def _shared_points(r: Reader, frame: int, frame_points: dict[str, complex], link
             where = "points" if frame in lids else f"links.{lids[-1]}.points"
             raise r.fail(f"{where}.{nm}", f"point {nm!r} is on links {', '.join(map(str, lids))} but no joint "
                                           f"at {nm!r} joins them; rename one of them (S2, S3, ...) or add the joint")
-
-
-def _branches(r: Reader, data: dict[str, Any]) -> dict[str, int]:
-    raw = r.table(data, "branches", "", required=False)
-    out = {}
-    for key, value in raw.items():
-        if isinstance(value, bool) or value not in (1, -1):
-            raise r.fail(f"branches.{key}", f"expected +1 or -1, got {value!r}")
-        out[r.name(key, f"branches.{key}")] = int(value)
-    return out
-
-
-def _outputs(r: Reader, data: dict[str, Any]) -> frozenset[str]:
-    raw = data.get("outputs", ["positions", "velocity_plan", "acceleration_plan"])
-    if not isinstance(raw, list) or not all(isinstance(x, str) for x in raw):
-        raise r.fail("outputs", "expected a list of names")
-    wanted: set[str] = set()
-
-    def add(name: str) -> None:
-        if name not in OUTPUTS:
-            raise r.fail("outputs", f"unknown output {name!r}; expected some of {list(OUTPUTS)}")
-        if name not in wanted:
-            wanted.add(name)
-            for dep in OUTPUTS[name]:
-                add(dep)
-
-    for name in raw:
-        if name not in OUTPUTS:
-            raise r.fail("outputs", f"unknown output {name!r}{did_you_mean(name, OUTPUTS)} "
-                                    f"(expected some of {', '.join(OUTPUTS)})")
-        add(name)
-    return frozenset(wanted)
-
-
-def _title(r: Reader, value: Any) -> tuple[str, dict[str, str]]:
-    """``title = "..."`` or ``title = { ru = "...", en = "..." }`` (one per sheet language)."""
-    if isinstance(value, str):
-        return value, {}
-    if isinstance(value, dict) and value and all(k in ("ru", "en") and isinstance(v, str)
-                                                 for k, v in value.items()):
-        return str(value.get("en") or value.get("ru") or ""), {str(k): str(v) for k, v in value.items()}
-    raise r.fail("title", "expected a string or { ru = \"...\", en = \"...\" }")
-
-
-_SCALE_UNITS = {"length": "mm/m", "velocity": "mm/(m/s)", "acceleration": "mm/(m/s^2)", "force": "mm/N"}
-
-
-def _scales(r: Reader, data: dict[str, Any]) -> tuple[dict[str, float], str]:
-    raw = r.table(data, "scales", "", required=False)
-    style = r.choice(raw, "style", "scales.", ("mu", "K"), "mu")
-    r.keys(raw, {"style", *_SCALE_UNITS}, "scales.")
-    out = {}
-    for key, value in raw.items():
-        if key == "style":
-            continue
-        if isinstance(value, dict) and set(value) == {"known_mm"} and key in ("velocity", "acceleration"):
-            # the course habit: the known vector (crank pin) drawn this long, e.g. pa = 100 mm
-            out[f"{key}_known_mm"] = r.number(value, "known_mm", f"scales.{key}.", positive=True, limit=1e4)
-            continue
-        if not isinstance(value, dict) or len(value) != 1 or not ({"mu", "K"} & set(value)):
-            raise r.fail(f"scales.{key}", "expected { mu = mm per unit }, { K = unit per mm }"
-                         + (" or { known_mm = length of the known vector }"
-                            if key in ("velocity", "acceleration") else ""))
-        kind = "mu" if "mu" in value else "K"
-        x = r.number(value, kind, f"scales.{key}.", positive=True, limit=1e9, floor=1e-9)
-        out[key] = x if kind == "mu" else 1.0 / x
-    return out, style

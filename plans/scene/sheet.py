@@ -24,6 +24,7 @@ PANEL_KINDS = ("positions", "scheme", "velocity", "acceleration", "table", "grou
 _KEYS = {"format", "orientation", "language", "title", "designation", "subtitle", "author",
          "checked_by", "approved_by", "group", "organization", "date", "first_sheet", "total_sheets",
          "panels", "positions", "trace", "pins"}
+_KEYS |= {"acceleration_pole"}  # the notation, read with the scales (plans.scene.notation)
 
 
 def sheet_spec(raw: dict[str, Any], path: str, default_title: str = "", **override: Any) -> SheetSpec:
