@@ -80,6 +80,7 @@ from numpy.typing import NDArray
 
 from plans.errors import ConstructionError, InputError
 from plans.forces.shared import unit_vector
+from plans.kinematics.travel import piston_travel, toward_pivot
 from plans.reader import Reader, check_keys, did_you_mean
 from plans.records import frozen
 from plans.scene.model import Scene
@@ -565,11 +566,11 @@ def ignition(scene: Scene, gl: GasLoad) -> float:
         kin = solve(scene, np.asarray(at, float), order=1)
         r, v, _ = kin.point_on(gl.link, z)
         u: Any = guide.direction if guide.link == scene.frame else kin.motion[guide.link].rot * guide.direction
-        return (v * np.conj(_toward_pivot(scene, r, u))).real * np.sign(scene.driver.omega)
+        return (v * np.conj(toward_pivot(scene, r, u))).real * np.sign(scene.driver.omega)
 
     phis = gl.fires + np.linspace(-180.0, 180.0, 361)
     try:
-        t = _travel(scene, solve(scene, phis, order=0), gl.joint, gl.link)
+        t = piston_travel(scene, solve(scene, phis, order=0), gl.joint, gl.link)
         k = int(np.argmin(t))
         lo, hi = float(phis[max(k - 1, 0)]), float(phis[min(k + 1, 360)])
         for _ in range(8):  # 64 samples a step: the bracket where the travel turns shrinks 64 times
@@ -600,7 +601,7 @@ def _stroke(scene: Scene, joint_name: str, link: int) -> tuple[float, float]:
     try:
         # every tenth grid angle first, then the grid around the coarse extremes only
         coarse = np.arange(0, 3601, 10)
-        t = _travel(scene, solve(scene, grid[coarse], order=0), joint_name, link)
+        t = piston_travel(scene, solve(scene, grid[coarse], order=0), joint_name, link)
         keep = np.zeros(3601, dtype=bool)  # the grid around the extremes, each index once, in order
         keep[[0, 3600]] = True
         for k in _extreme_indices(t):
@@ -610,7 +611,7 @@ def _stroke(scene: Scene, joint_name: str, link: int) -> tuple[float, float]:
     except ConstructionError as exc:
         raise InputError(f"an indicator diagram needs the crank to turn a full revolution ({exc})",
                          file=scene.path, field="loads.gas") from None
-    travel = _travel(scene, kin, joint_name, link)
+    travel = piston_travel(scene, kin, joint_name, link)
     out = scene.memo[key] = (float(travel.min()), float(travel.max() - travel.min()))
     return out
 
@@ -622,25 +623,6 @@ def _extreme_indices(t: R) -> list[int]:
     keeps many)."""
     slack = float(np.max(np.abs(t[2:] - 2 * t[1:-1] + t[:-2])))
     return [int(k) for k in np.flatnonzero((t <= t.min() + slack) | (t >= t.max() - slack))]
-
-
-def _toward_pivot(scene: Scene, B: C, u: C) -> C:
-    """The guide's unit direction that points from the piston toward the crank pivot."""
-    pivot = scene.frame_points[scene.driver.pivot]
-    sgn = np.sign(((pivot - B) * np.conj(u)).real)
-    return np.where(sgn < 0, -1.0, 1.0) * u
-
-
-def _travel(scene: Scene, kin: Any, joint_name: str, link: int) -> R:
-    """Signed position of the piston along its guide, increasing toward the crank pivot."""
-    joint = next(j for j in scene.joints if j.name == joint_name)
-    assert joint.guide is not None
-    carrier = kin.motion[joint.guide.link]
-    rot = carrier.rot
-    origin = carrier.r0 + rot * joint.guide.origin
-    u = rot * joint.guide.direction
-    B = kin.point(joint.point, link)[0]
-    return ((B - origin) * np.conj(_toward_pivot(scene, B, u))).real
 
 
 # --------------------------------------------------------------------------- loads at positions
@@ -794,7 +776,7 @@ def _gas_force(scene: Scene, kin: Any, gl: GasLoad) -> AppliedForce:
         u = joint.guide.direction
     else:
         u = kin.motion[joint.guide.link].rot * joint.guide.direction
-    e_down = _toward_pivot(scene, r, u)
+    e_down = toward_pivot(scene, r, u)
     # stroke: the sign of the piston's velocity toward the pivot; at a dead centre (v = 0)
     # the acceleration says which stroke begins
     ce = np.conj(e_down)
@@ -813,7 +795,7 @@ def _gas_force(scene: Scene, kin: Any, gl: GasLoad) -> AppliedForce:
         p = gl.pressure  # the same at every position
     else:
         # travel from the outer dead centre (the extreme position away from the pivot)
-        s = np.clip(_travel(scene, kin, gl.joint, gl.link) - gl.outer, 0.0, gl.stroke)
+        s = np.clip(piston_travel(scene, kin, gl.joint, gl.link) - gl.outer, 0.0, gl.stroke)
         p = np.zeros(kin.n)
         for side, mask in (("down", down), ("up", ~down)):
             if side in gl.diagram:
@@ -843,7 +825,7 @@ def stroke_index(scene: Scene, kin: Any, gl: GasLoad, down: Any) -> Any:
 
 
 def _four_stroke(scene: Scene, kin: Any, gl: GasLoad, down: Any) -> R:
-    s = np.clip(_travel(scene, kin, gl.joint, gl.link) - gl.outer, 0.0, gl.stroke)
+    s = np.clip(piston_travel(scene, kin, gl.joint, gl.link) - gl.outer, 0.0, gl.stroke)
     k = stroke_index(scene, kin, gl, down)
     p = np.zeros(kin.n)
     for j, name in enumerate(FOUR_STROKES):

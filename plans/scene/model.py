@@ -266,9 +266,10 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
     outputs = _outputs(r, data)
     scales, style = _scales(r, data)
     fij = r.choice(data, "fij", "", FIJ_CONVENTIONS, "on_i_from_j")
-    from plans.scene.sheet import check_sheet
+    if "sheet" in data:  # without one, every field takes its default: nothing to check
+        from plans.scene.sheet import check_sheet
 
-    check_sheet(data, path)  # the record is made when a reader asks for it (Scene.sheet)
+        check_sheet(data, path)  # the record is made when a reader asks for it (Scene.sheet)
     scene = Scene(path=path, title=title, frame=frame, frame_points=frame_points, links=links,
                   joints=joints, driver=driver, branches=branches, outputs=outputs,
                   scales=scales, scale_style=style, fij=fij, raw=data, titles=titles)
