@@ -30,7 +30,7 @@ from .panels import (
     SMALL_SIZE,
     VECTOR_STYLES,
     Panel,
-    _clip,
+    clip_line,
     finish,
     link_outline,
     link_shape,
@@ -115,7 +115,7 @@ def _fbd_scale(values: Sequence[complex], cycle: float = 0.0, factor: float = 1.
     """μF of a free body: round, its longest force FBD_ARROW_MM at most; forces that are zero
     up to round-off against the cycle's largest (``cycle``) take the cycle's scale."""
     longest = max((abs(v) for v in values), default=0.0)
-    if longest <= 1e-9 * cycle:
+    if longest <= DUST * cycle:
         longest = cycle
     return nice_scale(longest, FBD_ARROW_MM * factor)
 
@@ -336,7 +336,7 @@ def polygon_panel(plan: Plan, lang: str, style: str, pid: str, title: str) -> Pa
     ys = [p[1] for p in xy.values()]
     box = (min(xs) - 8, min(ys) - 8, max(xs) + 8, max(ys) + 8)
     for i, cl in enumerate(plan.lines):
-        seg = _clip(T(*cl.point), T.direction(*cl.direction), box)
+        seg = clip_line(T(*cl.point), T.direction(*cl.direction), box)
         if seg is not None:
             rec.line(seg[0], seg[1], Style(width=0.18, stroke="#666", cls="construction"), f"{pid}-line-{i}")
             placer.add_line(list(seg))

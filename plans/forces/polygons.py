@@ -58,6 +58,7 @@ from plans.lines import along, cross, meet
 from plans.phrases import Phrase, phrase
 from plans.records import frozen
 from plans.scene.model import Joint, Scene
+from plans.tolerances import LOCK_SIN
 from plans.units import clean
 
 C = NDArray[np.complex128]
@@ -315,7 +316,7 @@ def _guide(kin: Kinematics, jt: Joint) -> C:
 
 
 def _check(kin: Kinematics, g: Group, det: R, scale: R | float, point: str) -> None:
-    bad = np.abs(det) <= 1e-12 * scale
+    bad = np.abs(det) <= LOCK_SIN * scale
     if bad.any():
         k = int(np.flatnonzero(bad)[0])
         raise Locked("the two unknown reaction directions are parallel: the group locks here",

@@ -16,6 +16,7 @@ from plans.kinematics.plan import Plan, Step
 from plans.lines import cross
 from plans.phrases import Phrase, phrase
 from plans.records import frozen
+from plans.tolerances import EXACT_ZERO_REL
 
 
 @frozen
@@ -52,7 +53,7 @@ def _moment_terms(forces, moments, P: complex, k: int, mu_l: float) -> tuple[lis
         r = complex(f.r[k])
         m = cross(r - P, F)
         h = abs(m) / abs(F)
-        if h <= 1e-12 * max(abs(r - P), 1e-300):  # passes through P up to round-off
+        if h <= EXACT_ZERO_REL * max(abs(r - P), 1e-300):  # passes through P up to round-off
             m, h = 0.0, 0.0
         else:
             d = F / abs(F)

@@ -24,16 +24,17 @@ from itertools import combinations
 from typing import TYPE_CHECKING, Any
 
 from plans.records import frozen
+from plans.tolerances import COINCIDE_REL, LOCK_SIN
 
 if TYPE_CHECKING:
     from plans.kinematics.exact import Kinematics
 
 #: |sin| of the angle between two Kennedy lines below which they are taken as parallel
 #: (links related by sliding pairs give lines parallel to rounding, ~1e-16).
-PARALLEL = 1e-12
+PARALLEL = LOCK_SIN
 #: Distance between two parallel lines, as a fraction of the mechanism's size, below which
 #: they are one line (the centre is then not fixed by them).
-COINCIDENT = 1e-9
+COINCIDENT = COINCIDE_REL
 
 
 @frozen

@@ -24,6 +24,7 @@ import cmath
 import math
 
 from plans.records import frozen
+from plans.tolerances import LOCK_SIN
 
 
 def _dot(a: complex, b: complex) -> float:
@@ -189,7 +190,7 @@ def rates(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta:
 
 def _meet(p1: complex, d1: complex, p2: complex, d2: complex) -> complex | None:
     s = _cross(d1, d2)
-    if abs(s) <= 1e-12 * abs(d1) * abs(d2):
+    if abs(s) <= LOCK_SIN * abs(d1) * abs(d2):
         return None
     return p1 + d1 * _cross(p2 - p1, d2) / s
 
@@ -234,7 +235,7 @@ def special_point_velocities(t: Triad, outer: tuple[complex, complex, complex], 
             raise SpecialPosition(f"group {t.name}: the lines of s are parallel")
         m = 3 - i - j  # the third leash fixes ω: v_S + ω (P_m − S)⊥ − v_Qm ⟂ axis m
         den = _dot(axis[m], 1j * (P[m] - S))
-        if abs(den) <= 1e-12 * abs(axis[m]) * max(abs(P[m] - S), t.size):
+        if abs(den) <= LOCK_SIN * abs(axis[m]) * max(abs(P[m] - S), t.size):
             raise SpecialPosition(f"group {t.name}: all three leashes' axes pass through one point "
                                   f"(special position)")
         w = _dot(axis[m], v_outer[m] - vS) / den

@@ -12,19 +12,17 @@ from __future__ import annotations
 
 import cmath
 import math
+from collections.abc import Callable
 from dataclasses import replace
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
 from plans.errors import Locked, NotAssemblable
-from plans.kinematics.assur import _at, _Motion, _place
+from plans.kinematics.context import Context, Motion, place_link, point_at
 from plans.kinematics.structure import Structure, TriadGroup, analyse
 from plans.kinematics.triad import SpecialPosition, Triad, determinant, place, rates, special_kind
 from plans.scene.model import Scene
-
-if TYPE_CHECKING:
-    from plans.kinematics.exact import _Ctx
 
 STEP_DEG = 1.0
 
@@ -73,14 +71,12 @@ def _phase(phi: float) -> float:
     return phi % 360.0
 
 
-def _track(scene: Scene, st: Structure, g: TriadGroup, t: Triad, outer_of) -> tuple[np.ndarray, list]:
+def _track(solve: Callable[..., Any], scene: Scene, st: Structure, g: TriadGroup, t: Triad, outer_of) -> tuple[np.ndarray, list]:
     """(step angles, (r_D, θ) at each) over one turn from φ = 0, computed once per scene."""
     key = ("triad", g.name)
     done = scene.memo.get(key)
     if done is not None:
         return done
-    from plans.kinematics.exact import solve
-
     before = replace(st, groups=st.groups[:st.groups.index(g)])
     grid = np.arange(0.0, 360.0 + STEP_DEG / 2, STEP_DEG)
     kin = solve(scene, grid, order=0, structure=before)
@@ -155,11 +151,11 @@ def _assemble(t: Triad, outer: tuple[complex, complex, complex], g: TriadGroup) 
     return min(side, key=lambda s: (round(s[1], 9), s[0].real, s[0].imag))
 
 
-def solve_group(ctx: _Ctx, g: TriadGroup, k: tuple) -> None:
+def solve_group(ctx: Context, g: TriadGroup, k: tuple) -> None:
     t, zD, outer_of = k
     st = analyse(ctx.scene)
-    grid, states = _track(ctx.scene, st, g, t, outer_of)
-    got = [_at(ctx, p, z) for p, z in outer_of]
+    grid, states = _track(ctx.solve, ctx.scene, st, g, t, outer_of)
+    got = [point_at(ctx, p, z) for p, z in outer_of]
     scalar = type(got[0][0]) is not np.ndarray
     phis = [float(x) for x in np.atleast_1d(np.asarray(ctx.phis, dtype=float))]
     n = len(phis)
@@ -196,7 +192,7 @@ def solve_group(ctx: _Ctx, g: TriadGroup, k: tuple) -> None:
 
     base = g.links[0]
     rot = np.exp(1j * th)
-    mb = _place(ctx, base, out(rot), out(rD), zD)
+    mb = place_link(ctx, base, out(rot), out(rD), zD)
     if ctx.order >= 1:
         _set_rates(ctx, mb, out(rD), out(vD), out(aD), out(w), out(e))
     inner = (rD, rD + rot * t.zE, rD + rot * t.zF)
@@ -213,7 +209,7 @@ def solve_group(ctx: _Ctx, g: TriadGroup, k: tuple) -> None:
         P = inner[Q]
         d = P - R[Q]
         rot_l = d / abs(d) / ((zp - zq) / abs(zp - zq))
-        ml = _place(ctx, leash, out(rot_l), out(R[Q]), zq)
+        ml = place_link(ctx, leash, out(rot_l), out(R[Q]), zq)
         if ctx.order >= 1:
             arm = P - rD
             vP = vD + 1j * w * arm
@@ -226,15 +222,15 @@ def solve_group(ctx: _Ctx, g: TriadGroup, k: tuple) -> None:
                        None if el is None else out(el))
 
 
-def _slider(ctx: _Ctx, leash: int, o: Any, zp: complex, P: Any, rD: Any, vD: Any, aD: Any, w: Any, e: Any,
+def _slider(ctx: Context, leash: int, o: Any, zp: complex, P: Any, rD: Any, vD: Any, aD: Any, w: Any, e: Any,
             out: Any) -> None:
     """A leash that slides on a guide of the frame: it keeps its angle, its pin is the base's
     inner pair; its slide ṡ, s̈ along the guide."""
-    from plans.kinematics.assur import _name, _turn
+    from plans.kinematics.assur import slide_name, slider_turn
 
     n = len(P)
-    turn = _turn(o)
-    m = _place(ctx, leash, out(np.full(n, turn)), out(P), zp)
+    turn = slider_turn(o)
+    m = place_link(ctx, leash, out(np.full(n, turn)), out(P), zp)
     if ctx.order < 1:
         return
     arm = P - rD
@@ -245,16 +241,16 @@ def _slider(ctx: _Ctx, leash: int, o: Any, zp: complex, P: Any, rD: Any, vD: Any
                None if aP is None else out(np.zeros(n)))
     sd = (vP * np.conj(g)).real
     sdd = None if aP is None else (aP * np.conj(g)).real
-    ctx.slides[_name(o)] = (out(sd), None if sdd is None else out(sdd))
+    ctx.slides[slide_name(o)] = (out(sd), None if sdd is None else out(sdd))
 
 
-def _block(ctx: _Ctx, leash: int, i: Any, zq: complex, rot: Any, Q: Any, vQ: Any, aQ: Any, rD: Any, vD: Any,
+def _block(ctx: Context, leash: int, i: Any, zq: complex, rot: Any, Q: Any, vQ: Any, aQ: Any, rD: Any, vD: Any,
            aD: Any, w: Any, e: Any, out: Any) -> None:
     """A block pinned at Q, sliding in a slot of the base: it turns with the base; its slide
     along the slot (ṡ, s̈) relative to the base's point under the pin."""
-    from plans.kinematics.assur import _name, _turn
+    from plans.kinematics.assur import slide_name, slider_turn
 
-    m = _place(ctx, leash, out(rot * _turn(i)), out(Q), zq)
+    m = place_link(ctx, leash, out(rot * slider_turn(i)), out(Q), zq)
     if ctx.order < 1:
         return
     _set_rates(ctx, m, out(Q), out(vQ), None if aQ is None else out(aQ), out(w), None if aQ is None else out(e))
@@ -266,10 +262,10 @@ def _block(ctx: _Ctx, leash: int, i: Any, zq: complex, rot: Any, Q: Any, vQ: Any
     if aQ is not None:
         a_rel = aQ - (aD + (1j * e - w * w) * arm) - 2j * w * v_rel
         sdd = (a_rel * np.conj(s)).real
-    ctx.slides[_name(i)] = (out(sd), None if sdd is None else out(sdd))
+    ctx.slides[slide_name(i)] = (out(sd), None if sdd is None else out(sdd))
 
 
-def _set_rates(ctx: _Ctx, m: _Motion, anchor: Any, v: Any, a: Any, omega: Any, eps: Any) -> None:
+def _set_rates(ctx: Context, m: Motion, anchor: Any, v: Any, a: Any, omega: Any, eps: Any) -> None:
     """Rates of a placed link from one point's v, a and its ω, ε."""
     rel = m.r0 - anchor
     m.omega = omega

@@ -22,6 +22,7 @@ from plans.kinematics.dyads import (
     coincident,
     ensure,
     lab,
+    lay_normal,
     link_points,
     meet,
     rel_seg,
@@ -214,8 +215,6 @@ def _leashes(b: Builder, g: TriadGroup, Q: list, P: list, xs: list, ns: list) ->
 
 
 def a_triad(b: Builder, g: TriadGroup, vr: Any) -> None:
-    from plans.kinematics.accelerations import _normal
-
     snap = b.snap
     base = g.links[0]
     Q, P, axis, (i, j, m), S = _geometry(b, g)
@@ -229,9 +228,9 @@ def a_triad(b: Builder, g: TriadGroup, vr: Any) -> None:
         elif _block(g.joints[k][1]):  # the base under the pin: a_C + a^k (+ a^r ∥ slot)
             m1, y1 = _coriolis_at(b, vr, g, k, ns[k], xs[k])
         else:
-            m1, y1 = _normal(b, vr, leash, ns[k], xs[k], Q[k], P[k], names[k][0], names[k][1])
+            m1, y1 = lay_normal(b, vr, leash, ns[k], xs[k], Q[k], P[k], names[k][0], names[k][1])
         ends[k] = (m1, y1)
-        m2, y2 = _normal(b, vr, base, m1, y1, P[k], S, names[k][1], "S")
+        m2, y2 = lay_normal(b, vr, base, m1, y1, P[k], S, names[k][1], "S")
         ends[(k, "S")] = (m2, y2)
     (mi, yi), (mj, yj) = ends[(i, "S")], ends[(j, "S")]
     oi, om, oj = g.joints[i][0], g.joints[m][0], g.joints[j][0]
@@ -254,8 +253,8 @@ def a_triad(b: Builder, g: TriadGroup, vr: Any) -> None:
     elif block_m:
         mc, yc = _coriolis_at(b, vr, g, m, ns[m], xs[m])
     else:
-        mc, yc = _normal(b, vr, leash_m, ns[m], xs[m], Q[m], Pm, Cn, Fn)
-    ms, ys = _normal(b, vr, base, s_lab, xS, S, Pm, "S", Fn)
+        mc, yc = lay_normal(b, vr, leash_m, ns[m], xs[m], Q[m], Pm, Cn, Fn)
+    ms, ys = lay_normal(b, vr, base, s_lab, xS, S, Pm, "S", Fn)
     Lc = b.line(yc, 1j * axis[m], _span(Q[m], Pm, om), _label_of(g, names, m))
     Ls = b.line(ys, 1j * (Pm - S), abs(Pm - S), f"⟂ S{Fn}")
     out = _under_pin(b, g, m) if block_m else lab(Fn)
