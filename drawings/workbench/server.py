@@ -20,7 +20,6 @@ folder (resolved, symlinks followed), bodies and files are bounded, and every fa
 from __future__ import annotations
 
 import json
-import threading
 import time
 import tomllib
 from importlib import resources
@@ -43,7 +42,20 @@ MAX_FILES = 2000
 GALLERY = ("slider_crank", "offset_slider_crank", "v_engine", "four_bar", "shaper", "six_bar",
            "scotch_yoke", "synthesis/offset_slider_crank", "synthesis/crank_rocker", "synthesis/shaper",
            "synthesis/seed000_v_engine")
-_STATIC = {"app.js": "text/javascript; charset=utf-8", "app.css": "text/css; charset=utf-8"}
+#: The page's own files: its style and its script's modules (ES modules, no build step).
+#: The kinds of file the explanatory note has a section for, and its figures' resolution.
+NOTE_KINDS = ("linkage", "gears", "cam", "engine")
+NOTE_DPI = 150.0
+#: A mechanism to build from nothing (the gallery's first card).
+EMPTY = """# A new mechanism: its fixed pivots, links, joints and driver added in the form.
+format = 1
+title = { ru = "Новый механизм", en = "New mechanism" }
+unit = "mm"
+frame = 4                    # the frame's link number (the textbook numbers it last)
+outputs = ["positions", "velocity_plan", "acceleration_plan"]
+"""
+_STATIC = {"app.css": "text/css; charset=utf-8", **{f"{m}.js": "text/javascript; charset=utf-8" for m in (
+    "main", "words", "dom", "gallery", "form", "structure", "solve", "check", "draw", "views", "files")}}
 _CSP = ("default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self' data:; "
         "connect-src 'self'; base-uri 'none'; form-action 'none'; frame-ancestors 'none'")
 
@@ -60,13 +72,17 @@ def _error(status: int, message: str, field: str | None = None, **extra: Any) ->
     return JSONResponse({"error": message, "field": field, **extra}, status_code=status)
 
 
+def _engine_fields(exc: PlansError) -> dict[str, Any]:
+    out: dict[str, Any] = {"error": one_line(exc), "field": getattr(exc, "field", None)}
+    if isinstance(exc, ConstructionError):
+        out.update(group=exc.group, point=exc.point, phi_deg=exc.phi_deg)
+    return out
+
+
 def engine_error(exc: PlansError) -> JSONResponse:
     """The engine's one-line error and the key it names (a construction names its group,
     point and angle instead)."""
-    extra: dict[str, Any] = {}
-    if isinstance(exc, ConstructionError):
-        extra = {"group": exc.group, "point": exc.point, "phi_deg": exc.phi_deg}
-    return _error(422, one_line(exc), getattr(exc, "field", None), **extra)
+    return JSONResponse(_engine_fields(exc), status_code=422)
 
 
 class Guard:
@@ -209,13 +225,18 @@ class Workbench:
     async def edit(self, request: Request) -> Response:
         try:
             req = json.loads(await self.body(request))
-            text, sets = req["text"], req["set"]
+            text, sets = req["text"], req.get("set", [])
+            ops = {k: req[k] for k in ("put", "append", "delete") if k in req}
             if not isinstance(text, str) or not isinstance(sets, list):
                 raise TypeError
-        except (ValueError, KeyError, TypeError):
+        except (ValueError, KeyError, TypeError, AttributeError):
             raise Refused(400, 'expected {"text": TOML text, "set": [[key path, value], ...]}') from None
         t0 = time.perf_counter()
-        return JSONResponse(await run_in_threadpool(_edit, text, sets), headers=_timing(t0))
+        if request.query_params.get("solve") == "1":  # the edit and its solve in one answer
+            steps = request.query_params.get("steps", "1") != "0"
+            data = await run_in_threadpool(_edit_solve, text, sets, ops, self.source_name(request), steps)
+            return Response(data, media_type="application/json", headers=_timing(t0))
+        return JSONResponse(await run_in_threadpool(_edit, text, sets, ops), headers=_timing(t0))
 
     async def solve(self, request: Request) -> Response:
         text, name = await self.text(request), self.source_name(request)
@@ -279,6 +300,17 @@ class Workbench:
         return Response(page, media_type="text/html; charset=utf-8",
                         headers={"Content-Disposition": f'attachment; filename="{stem}.html"'})
 
+    async def note(self, request: Request) -> Response:
+        """The explanatory note of the file (``plans note``), as DOCX."""
+        lang = request.query_params.get("language", "ru")
+        if lang not in ("ru", "en"):
+            raise Refused(400, f"language {lang!r}: expected ru or en", "language")
+        text = await self.text(request)
+        stem = Path(self.source_name(request)).stem.strip("<>") or "scene"
+        data = await run_in_threadpool(_note, text, stem, lang)
+        return Response(data, media_type=_MEDIA["docx"],
+                        headers={"Content-Disposition": f'attachment; filename="{stem}.docx"'})
+
     async def draw(self, request: Request) -> Response:
         fmt = request.query_params.get("format", "svg").lower()
         from drawings.export import FORMATS
@@ -293,7 +325,7 @@ class Workbench:
 
 
 _MEDIA = {"svg": "image/svg+xml", "pdf": "application/pdf", "png": "image/png", "zip": "application/zip",
-          "dxf": "image/vnd.dxf"}
+          "dxf": "image/vnd.dxf", "docx": "application/vnd.openxmlformats-officedocument.wordprocessingml.document"}
 
 
 def _kind(data: dict[str, Any]) -> str:
@@ -344,7 +376,8 @@ def _samples_dir() -> Path | None:
 
 def _samples() -> list[dict[str, Any]]:
     folder = _samples_dir()
-    out = []
+    out = [{"name": "new", "title": "New mechanism", "titles": {"ru": "Новый механизм", "en": "New mechanism"},
+            "text": EMPTY, "kind": "linkage"}]
     for name in GALLERY:
         p = folder / f"{name}.toml" if folder else None
         if p is None or not p.is_file():
@@ -356,58 +389,48 @@ def _samples() -> list[dict[str, Any]]:
     return out
 
 
-#: tomlkit documents by the text they print: the next edit of a page starts from the text the
-#: last one answered, and parsing it again would be most of the edit's time.
-_DOCS: dict[str, Any] = {}
-_DOCS_LOCK = threading.Lock()
+def _edit(text: str, sets: list, ops: dict[str, list] | None = None) -> dict[str, Any]:
+    """Set each ``[key path, value]`` in the TOML text with tomlkit (and the structure's
+    operations ``ops``, :mod:`.edits`): the comments, the order and the layout of everything
+    else stay as they were."""
+    return _parsed(_edited(text, sets, ops), "<scene>")
 
 
-def _edit(text: str, sets: list) -> dict[str, Any]:
-    """Set each ``[key path, value]`` in the TOML text with tomlkit: the comments, the order
-    and the layout of everything else stay as they were."""
-    import tomlkit
+def _edited(text: str, sets: list, ops: dict[str, list] | None = None) -> str:
+    from .edits import EditError, edit
 
-    with _DOCS_LOCK:
-        doc = _DOCS.pop(text, None)  # the text the last edit answered: its document, parsed
-    if doc is None:
-        try:
-            doc = tomlkit.parse(text)
-        except Exception as exc:  # tomlkit's parse errors have no common public base
-            raise Refused(422, f"not TOML: {' '.join(str(exc).split())}") from None
-    for item in sets:
-        if not (isinstance(item, list) and len(item) == 2 and isinstance(item[0], list) and item[0]):
-            raise Refused(400, "each edit is [key path, value]")
-        keys, value = item
-        node: Any = doc
-        for k in keys[:-1]:
-            try:
-                node = node[k if isinstance(node, dict) else int(k)]
-            except (KeyError, IndexError, ValueError, TypeError):
-                raise Refused(422, f"{'.'.join(map(str, keys))}: no such key in the file",
-                              ".".join(map(str, keys))) from None
-        last = keys[-1]
-        if not isinstance(value, str | int | float | bool | list):
-            raise Refused(400, f"{'.'.join(map(str, keys))}: expected a number, text or list")
-        if isinstance(value, float) and value.is_integer():
-            value = int(value)  # 120, not 120.0, as a person writes it
-        try:
-            if isinstance(node, dict):
-                old = node.get(last)
-                if isinstance(old, list) and isinstance(value, list) and len(old) == len(value):
-                    for i, v in enumerate(value):  # in place: an inline array keeps its layout
-                        old[i] = v
-                else:
-                    node[last] = value
-            else:
-                node[int(last)] = value
-        except (IndexError, ValueError, TypeError):
-            raise Refused(422, f"{'.'.join(map(str, keys))}: no such key in the file") from None
-    new = tomlkit.dumps(doc)
-    with _DOCS_LOCK:
-        _DOCS[new] = doc
-        while len(_DOCS) > 16:  # a few tabs' documents; the oldest goes first
-            _DOCS.pop(next(iter(_DOCS)))
-    return _parsed(new, "<scene>")
+    try:
+        return edit(text, {**(ops or {}), "set": sets})
+    except EditError as exc:
+        raise Refused(exc.status, exc.message, exc.field) from None
+
+
+def _edit_solve(text: str, sets: list, ops: dict[str, list], name: str, steps: bool) -> bytes:
+    """An edit and the scene it leaves solved, in one answer: ``{"text", "data", "kind",
+    "solution"}``, or ``"solve_error"`` (the 422 body of ``/api/solve``) in place of the
+    solution when the edited scene cannot be solved; the text is parsed once for both."""
+    from plans.io import loads_toml
+
+    from .solving import solve_json
+
+    new = _edited(text, sets, ops)
+    try:
+        data = loads_toml(new, name)
+    except PlansError:
+        return _dumps(_parsed(new, name))  # the text as it is, its error said
+    kind = _kind(data)
+    out = _dumps({"text": new, "data": _jsonable(data), "kind": kind})
+    if kind != "linkage":
+        return out
+    try:
+        sol = solve_json(new, name, steps, data)
+    except PlansError as exc:
+        return out[:-1] + b',"solve_error":' + _dumps(_engine_fields(exc)) + b"}"
+    return out[:-1] + b',"solution":' + sol + b"}"
+
+
+def _dumps(x: Any) -> bytes:
+    return json.dumps(x, ensure_ascii=False, allow_nan=False, separators=(",", ":")).encode("utf-8")
 
 
 def _timing(t0: float) -> dict[str, str]:
@@ -416,12 +439,9 @@ def _timing(t0: float) -> dict[str, str]:
 
 
 def _solve(text: str, name: str, steps: bool = True) -> bytes:
-    from plans.results import solve_scene, to_json
-    from plans.scene.model import parse_scene
+    from .solving import solve_json
 
-    sol = solve_scene(parse_scene(text, name))
-    return json.dumps(to_json(sol, steps), ensure_ascii=False, allow_nan=False,
-                      separators=(",", ":")).encode("utf-8")
+    return solve_json(text, name, steps)
 
 
 def _design(text: str, name: str) -> bytes:
@@ -445,13 +465,9 @@ def _forces(text: str, name: str) -> bytes:
     """The force polygons of every group and the crank, and the lever, at every position of
     the scene (the demonstration page's drawings: one scale over the turn), or [] when the
     scene asks for no force analysis."""
-    from plans.demo.cycle_forces import cycle_forces
-    from plans.results import solve_scene
-    from plans.scene.model import parse_scene
+    from .solving import forces_json
 
-    sol = solve_scene(parse_scene(text, name))
-    panels = [] if sol.forces is None else cycle_forces(*sol.forces)
-    return json.dumps(panels, ensure_ascii=False, allow_nan=False, separators=(",", ":")).encode("utf-8")
+    return forces_json(text, name)
 
 
 def _demo(text: str, name: str) -> bytes:
@@ -459,6 +475,25 @@ def _demo(text: str, name: str) -> bytes:
     from plans.scene.model import parse_scene
 
     return page(parse_scene(text, name)).encode("utf-8")
+
+
+def _note(text: str, stem: str, lang: str) -> bytes:
+    """``plans note`` of one file: solved as its own command solves it, in a temporary folder
+    (the note reads files by their paths)."""
+    import tempfile
+
+    from drawings.note.cli import note_bytes
+    from plans.io import loads_toml
+    from plans.kinds import kind_of
+
+    kind = kind_of(loads_toml(text, f"{stem}.toml"), f"{stem}.toml")
+    if kind not in NOTE_KINDS:
+        raise Refused(422, f"{stem}.toml: the note has no section for a {kind} file; expected one of "
+                           f"{', '.join(NOTE_KINDS)}", "kind")
+    with tempfile.TemporaryDirectory() as tmp:
+        src = Path(tmp) / f"{stem}.toml"
+        src.write_text(text, encoding="utf-8")  # guard: a temporary folder
+        return note_bytes([str(src)], lang, dpi=NOTE_DPI)
 
 
 def _draw(text: str, stem: str, fmt: str) -> tuple[bytes, str]:
@@ -541,6 +576,7 @@ def make_app(root: str | Path, hosts: set[str]) -> Any:
         Route("/api/solve", _handler(wb.solve), methods=["POST"]),
         Route("/api/check", _handler(wb.check), methods=["POST"]),
         Route("/api/draw", _handler(wb.draw), methods=["POST"]),
+        Route("/api/note", _handler(wb.note), methods=["POST"]),
         Route("/api/demo", _handler(wb.demo), methods=["POST"]),
         Route("/api/forces", _handler(wb.forces), methods=["POST"]),
         Route("/api/design", _handler(wb.design), methods=["POST"]),
