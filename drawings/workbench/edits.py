@@ -72,8 +72,7 @@ def _check_value(value: Any, keys: list, tables: bool) -> Any:
 
 def _item(value: Any, top: bool = False) -> Any:
     """A JSON value as tomlkit writes it: a table at the top of a new section (its nested
-    tables inline, ``guide = { link = 4, ... }`` as the samples write it), a blank line after
-    it so that the next section stands apart."""
+    tables inline, ``guide = { link = 4, ... }`` as the samples write it)."""
     import tomlkit
 
     if isinstance(value, float) and value.is_integer():
@@ -82,8 +81,6 @@ def _item(value: Any, top: bool = False) -> Any:
         t = tomlkit.table() if top else tomlkit.inline_table()
         for k, v in value.items():
             t.append(str(k), _item(v))
-        if top:
-            t.add(tomlkit.nl())
         return t
     if isinstance(value, list):
         return [_item(v) for v in value]
@@ -121,11 +118,15 @@ def _set(doc: Any, keys: list, value: Any, make: bool) -> None:
                 for i, v in enumerate(value):  # in place: an inline array keeps its layout
                     old[i] = v
             else:
-                top = isinstance(value, dict) and not _is_inline(node)
+                # a new section ([links.5], [driver]); a table deeper in is written inline
+                top = isinstance(value, dict) and not _is_inline(node) and len(keys) <= 2
+                new = _item(value, top)
                 if str(last) in node:
-                    node[str(last)] = _item(value, top)
+                    node[str(last)] = new
                 else:
-                    node.append(str(last), _item(value, top))
+                    if top:
+                        _blank_after(_last_table(node.values()), new)
+                    node.append(str(last), new)
         else:
             node[int(last)] = _item(value)
     except (IndexError, ValueError, TypeError):
@@ -152,7 +153,27 @@ def _append(doc: Any, keys: list, value: Any) -> None:
     arr = node[last]
     if not isinstance(arr, list):
         raise EditError(422, f"{_name(keys)}: not a list of tables in the file", _name(keys))
-    arr.append(_item(value, top=isinstance(arr, tomlkit.items.AoT)))
+    new = _item(value, top=isinstance(arr, tomlkit.items.AoT))
+    if len(arr) and isinstance(new, tomlkit.items.Table):
+        _blank_after(arr[-1], new)
+    arr.append(new)
+
+
+def _last_table(values: Any) -> Any:
+    tables = [v for v in values if hasattr(v, "value") and hasattr(v.value, "body")]
+    return tables[-1] if tables else None
+
+
+def _blank_after(prev: Any, new: Any) -> None:
+    """The new section set apart as the one before it: the blank line that closes that one
+    closes the new one too (it stood before the next section), or one comes before it."""
+    import tomlkit.items
+
+    body = getattr(getattr(prev, "value", None), "body", None)
+    if body and body[-1][0] is None and isinstance(body[-1][1], tomlkit.items.Whitespace):
+        new.value.body.append((None, tomlkit.items.Whitespace(body[-1][1].s)))
+    elif body:
+        new.trivia.indent = "\n"  # a blank line before it, none being after the one before
 
 
 def _delete(doc: Any, keys: list) -> None:

@@ -10,6 +10,7 @@ import {t} from "./words.js";
 const OUTPUTS = ["positions", "velocity_plan", "acceleration_plan", "force_polygons", "lever"];
 const number = (s) => Number(String(s).replace(",", ".").trim());
 const isNum = (s) => String(s).trim() !== "" && isFinite(number(s));
+const label = (name) => t(name === "guide" ? "guide_of" : name) || name;
 
 export function structure(f) {
   const D = S.data, links = D.links && typeof D.links === "object" ? D.links : {};
@@ -165,7 +166,8 @@ function item(box, text, ops, id) {
 
 // A row of inputs that adds an element: fields [name, default, choices?]; make(values) gives the
 // ops, or null when a field is missing or not a number.
-function adder(box, id, fields, make, label) {
+function adder(box, id, fields, make, sign) {
+  h(box, "div", {class: "hint"}, fields.map(([name]) => label(name)).join(" · "));
   const r = h(box, "div", {class: "srow add", "data-add": id});
   const inputs = {};
   for (const [name, value, choices] of fields) {
@@ -175,11 +177,11 @@ function adder(box, id, fields, make, label) {
       s.value = value;
       inputs[name] = s;
     } else {
-      inputs[name] = h(r, "input", {id: "s-" + id + "-" + name, placeholder: t(name) || name, title: t(name) || name,
+      inputs[name] = h(r, "input", {id: "s-" + id + "-" + name, placeholder: label(name), title: label(name),
         value: value, size: String(Math.max(3, Math.min(8, (value || name).length + 1)))});
     }
   }
-  const b = h(r, "button", {type: "button", id: "s-" + id + "-add", title: t("add")}, label || "+");
+  const b = h(r, "button", {type: "button", id: "s-" + id + "-add", title: t("add")}, sign || "+");
   const err = h(r, "span", {class: "err", id: "e-s-" + id});
   b.addEventListener("click", () => {
     const v = {};
