@@ -120,6 +120,25 @@ def test_edit_with_its_solve_answers_plans_solve_json(server):
     assert err["group"] and err["phi_deg"] is not None and "\n" not in err["error"]
 
 
+def test_a_partial_answer_holds_its_position_whole_and_the_others_moving(server):
+    _, url = server
+    src = (SAMPLES / "four_bar.toml").read_text(encoding="utf-8")
+    st, body, _ = _post(url + "/api/solve?steps=0&view=page&at=4", src.encode(), "text/plain")
+    part = json.loads(body)
+    full = to_json(solve_scene(parse_scene(src, "<scene>")), False)
+    assert st == 200 and part["partial"] == 4 and part["cycle"] == json.loads(json.dumps(full["cycle"]))
+    for k, (p, f) in enumerate(zip(part["positions"], full["positions"], strict=True)):
+        assert p["phi_deg"] == f["phi_deg"] and p["links"] == f["links"]
+        assert {nm: e["r"] for nm, e in p["points"].items()} == {nm: e["r"] for nm, e in f["points"].items()}
+        assert ("plans" in p) == (k == 4)
+    whole = part["positions"][4]
+    assert whole["plans"]["velocity"]["points"] == json.loads(json.dumps(full["positions"][4]["plans"]["velocity"]["points"]))
+    assert [r["exact"] for r in whole["readings"]] == [r["exact"] for r in full["positions"][4]["readings"]]
+    assert whole["balancing"] == json.loads(json.dumps(full["positions"][4]["balancing"]))
+    st, body, _ = _post(url + "/api/solve?view=page&at=x", src.encode(), "text/plain")
+    assert st == 400 and json.loads(body)["field"] == "at"
+
+
 def test_the_note_downloads_as_docx_with_the_solved_numbers(server):
     docx = pytest.importorskip("docx")
     _, url = server
@@ -218,6 +237,15 @@ def test_page_builds_a_slider_crank_from_an_empty_scene(browser, server):
         x = r * math.cos(phi) + math.sqrt(l_ ** 2 - (r * math.sin(phi)) ** 2)
         bx, by = _scheme_point(pg, "B")
         assert abs(bx - x) < 0.01 and abs(by) < 0.01, (k, bx, x)
+    # the edit's answer held its own position whole and the rest came after: at φ = 90° the
+    # velocity plan's b is v_B = dx_B/dφ·ω = −r·ω (the closed form's derivative), along x
+    pg.wait_for_function("s => document.body.dataset.complete === s", arg=seq)
+    pg.eval_on_selector("#phi", "e => { e.value = '3'; e.dispatchEvent(new Event('input')); }")
+    mu = float(pg.get_attribute("#vel", "data-scale"))
+    b = pg.eval_on_selector("#vel circle[data-name='b']",
+                            "c => [Number(c.getAttribute('cx')), -Number(c.getAttribute('cy'))]")
+    v_b = -r / 1000 * 100 * math.pi / 30
+    assert abs(b[0] - v_b * mu) < 0.01 and abs(b[1]) < 0.01, (b, v_b * mu)
     # saved, the file solves with plans solve as the page drew it, the template's comments kept
     pg.fill("#save-path", "built_slider.toml")
     pg.click("#save")

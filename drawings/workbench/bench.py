@@ -45,18 +45,19 @@ def server_share(scene: Path, reps: int = 15) -> dict[str, Any]:
         srv, host = _server(Path(tmp))
         conn = http.client.HTTPConnection(host, timeout=30)
 
-        def post(path: str, body: bytes, ctype: str) -> tuple[bytes, float]:
+        def post(path: str, body: bytes, ctype: str) -> tuple[bytes, float, float]:
             conn.request("POST", path, body=body, headers={"Content-Type": ctype})
             r = conn.getresponse()
             out = r.read()
             if r.status != 200:
                 raise RuntimeError(f"{path}: {r.status} {out[:200]!r}")
-            return out, float((r.headers.get("Server-Timing") or "dur=nan").split("dur=")[1]) / 1000
+            timing = dict(part.strip().split(";dur=") for part in (r.headers.get("Server-Timing") or "").split(","))
+            return out, float(timing["app"]) / 1000, float(timing["cpu"]) / 1000
 
-        times, walls = [], []
+        times, walls, cpus = [], [], []
         for k in range(reps + 2):
             t0 = time.perf_counter()
-            answer, spent = post("/api/edit?solve=1&steps=0", json.dumps(  # as the page does: each edit on the last text
+            answer, spent, cpu = post("/api/edit?solve=1&steps=0&view=page&at=0", json.dumps(  # as the page does: each edit on the last text
                 {"text": text, "set": [[["links", crank, "length"], round(length * (1 + 0.002 * (k + 1)), 6)]]}
             ).encode(), "application/json")
             got = json.loads(answer)
@@ -65,11 +66,13 @@ def server_share(scene: Path, reps: int = 15) -> dict[str, Any]:
             text = got["text"]
             if k >= 2:  # the first two warm the imports and caches
                 times.append(spent)
+                cpus.append(cpu)
                 walls.append(time.perf_counter() - t0)
         positions = len(got["solution"]["positions"])
         conn.close()
         srv.should_exit = True
     return {"scene": scene.name, "positions": positions, "server_s": statistics.median(times),
+            "server_cpu_s": statistics.median(cpus),
             "loopback_s": statistics.median(walls), "answer_bytes": len(answer)}
 
 

@@ -234,16 +234,17 @@ class Workbench:
         t0 = time.perf_counter()
         if request.query_params.get("solve") == "1":  # the edit and its solve in one answer
             steps = request.query_params.get("steps", "1") != "0"
-            data = await run_in_threadpool(_edit_solve, text, sets, ops, self.source_name(request), steps)
-            return Response(data, media_type="application/json", headers=_timing(t0))
+            data, cpu = await run_in_threadpool(_cpu, _edit_solve, text, sets, ops, self.source_name(request), steps,
+                                                _view(request), _at(request))
+            return Response(data, media_type="application/json", headers=_timing(t0, cpu))
         return JSONResponse(await run_in_threadpool(_edit, text, sets, ops), headers=_timing(t0))
 
     async def solve(self, request: Request) -> Response:
         text, name = await self.text(request), self.source_name(request)
         steps = request.query_params.get("steps", "1") != "0"
         t0 = time.perf_counter()
-        data = await run_in_threadpool(_solve, text, name, steps)
-        return Response(data, media_type="application/json", headers=_timing(t0))
+        data, cpu = await run_in_threadpool(_cpu, _solve, text, name, steps, _view(request), _at(request))
+        return Response(data, media_type="application/json", headers=_timing(t0, cpu))
 
     async def check(self, request: Request) -> Response:
         text = await self.text(request)
@@ -405,7 +406,8 @@ def _edited(text: str, sets: list, ops: dict[str, list] | None = None) -> str:
         raise Refused(exc.status, exc.message, exc.field) from None
 
 
-def _edit_solve(text: str, sets: list, ops: dict[str, list], name: str, steps: bool) -> bytes:
+def _edit_solve(text: str, sets: list, ops: dict[str, list], name: str, steps: bool, view: str = "full",
+                at: int | None = None) -> bytes:
     """An edit and the scene it leaves solved, in one answer: ``{"text", "data", "kind",
     "solution"}``, or ``"solve_error"`` (the 422 body of ``/api/solve``) in place of the
     solution when the edited scene cannot be solved; the text is parsed once for both."""
@@ -423,7 +425,7 @@ def _edit_solve(text: str, sets: list, ops: dict[str, list], name: str, steps: b
     if kind != "linkage":
         return out
     try:
-        sol = solve_json(new, name, steps, data)
+        sol = solve_json(new, name, steps, data, view, at)
     except PlansError as exc:
         return out[:-1] + b',"solve_error":' + _dumps(_engine_fields(exc)) + b"}"
     return out[:-1] + b',"solution":' + sol + b"}"
@@ -433,15 +435,42 @@ def _dumps(x: Any) -> bytes:
     return json.dumps(x, ensure_ascii=False, allow_nan=False, separators=(",", ":")).encode("utf-8")
 
 
-def _timing(t0: float) -> dict[str, str]:
-    """The server's share of the answer (the browser's devtools and the bench read it)."""
-    return {"Server-Timing": f"app;dur={(time.perf_counter() - t0) * 1000:.2f}"}
+def _cpu(fn: Any, *args: Any) -> tuple[Any, float]:
+    """``fn(*args)`` and the processor time it took in its thread (s): on a busy computer the
+    time that passed is longer, the work the same."""
+    c0 = time.thread_time()
+    return fn(*args), time.thread_time() - c0
 
 
-def _solve(text: str, name: str, steps: bool = True) -> bytes:
+def _timing(t0: float, cpu: float | None = None) -> dict[str, str]:
+    """The server's share of the answer (the browser's devtools and the bench read it), and
+    the processor time of its work."""
+    out = f"app;dur={(time.perf_counter() - t0) * 1000:.2f}"
+    if cpu is not None:
+        out += f", cpu;dur={cpu * 1000:.2f}"
+    return {"Server-Timing": out}
+
+
+def _solve(text: str, name: str, steps: bool = True, view: str = "full", at: int | None = None) -> bytes:
     from .solving import solve_json
 
-    return solve_json(text, name, steps)
+    return solve_json(text, name, steps, view=view, at=at)
+
+
+def _at(request: Request) -> int | None:
+    at = request.query_params.get("at")
+    if at is None:
+        return None
+    if not at.isdigit() or len(at) > 6:
+        raise Refused(400, f"at {at!r}: expected a position's number (0, 1, ...)", "at")
+    return int(at)
+
+
+def _view(request: Request) -> str:
+    view = request.query_params.get("view", "full")
+    if view not in ("full", "page"):
+        raise Refused(400, f"view {view!r}: expected full or page", "view")
+    return view
 
 
 def _design(text: str, name: str) -> bytes:

@@ -20,7 +20,7 @@ KEEP = 12
 
 _LOCK = threading.Lock()
 _SOLVED: OrderedDict[tuple[str, str], Any] = OrderedDict()
-_JSON: OrderedDict[tuple[str, str, bool], bytes] = OrderedDict()
+_JSON: OrderedDict[tuple[str, str, bool, str, int | None], bytes] = OrderedDict()
 #: One lock per scene being solved: two requests for the same text solve it once.
 _BUSY: dict[tuple[str, str], threading.Lock] = {}
 
@@ -73,10 +73,39 @@ def solved(text: str, name: str, data: dict[str, Any] | None = None) -> Any:
         return got
 
 
-def solve_json(text: str, name: str, steps: bool = True, data: dict[str, Any] | None = None) -> bytes:
+#: What the page draws of a position (``view="page"``): the points' positions, the links' ω
+#: and ε, the plans' points and segments, the readings and the balancing load.
+PAGE_POSITION = ("phi_deg", "points", "links", "plans", "readings", "balancing")
+PAGE_READING = ("quantity", "segment", "length_mm", "value", "exact", "unit", "difference")
+PAGE_SEGMENT = ("label", "from", "to", "kind")
+
+
+def page_view(out: dict[str, Any]) -> dict[str, Any]:
+    """``plans solve --json`` cut to what the page draws: the same keys and values, fewer of
+    them (half the text to write and to read: the velocities and accelerations of the
+    points, the reactions and the construction's details stay in the full JSON)."""
+    positions = []
+    for pos in out["positions"]:
+        p = {k: pos[k] for k in PAGE_POSITION if k in pos}
+        p["points"] = {nm: {"r": e["r"]} for nm, e in pos["points"].items()}
+        if "plans" in p:
+            p["plans"] = {kind: {"scale": pl["scale"], "pole": pl["pole"], "points": pl["points"],
+                                 "segments": [{k: s[k] for k in PAGE_SEGMENT} for s in pl["segments"]]}
+                          for kind, pl in pos["plans"].items()}
+        if "readings" in p:
+            p["readings"] = [{k: r[k] for k in PAGE_READING} for r in pos["readings"]]
+        positions.append(p)
+    return {**out, "positions": positions}
+
+
+def solve_json(text: str, name: str, steps: bool = True, data: dict[str, Any] | None = None,
+               view: str = "full", at: int | None = None) -> bytes:
     """The JSON of ``plans solve --json`` (``steps=False``: without the construction
-    protocol's sentences), as compact bytes."""
-    key = (text, name, steps)
+    protocol's sentences; ``view="page"``: only what the page draws), as compact bytes.
+    ``at``: the page's position (with ``view="page"``): that one whole, the others only
+    their angle, points and links (the page draws the position on its slider first and
+    asks for the rest after, ``"partial": at`` says so)."""
+    key = (text, name, steps, view, at)
     got = _recall(_JSON, key)
     if got is not None:
         return got
@@ -86,10 +115,47 @@ def solve_json(text: str, name: str, steps: bool = True, data: dict[str, Any] | 
     with _lock_for((text, name)):  # the lazy parts of one Solution are read by one thread at a time
         got = _recall(_JSON, key)
         if got is None:
-            got = json.dumps(to_json(sol, steps), ensure_ascii=False, allow_nan=False,
-                             separators=(",", ":")).encode("utf-8")
+            if at is not None and view == "page" and 0 <= at < sol.kinematics.n:
+                out = page_view(_partial(sol, at, steps))
+            else:
+                out = to_json(sol, steps)
+                out = page_view(out) if view == "page" else out
+            got = json.dumps(out, ensure_ascii=False, allow_nan=False, separators=(",", ":")).encode("utf-8")
             _keep(_JSON, key, got)
     return got
+
+
+def _partial(sol: Any, at: int, steps: bool) -> dict[str, Any]:
+    """``plans solve --json`` with position ``at`` whole (as ``plans.results`` writes each
+    position) and every other one its angle, points' positions and links' motion."""
+    from plans.forces.lever import force_json
+    from plans.results import _head, _position
+
+    out = _head(sol)
+    kin = sol.kinematics
+    forces = None if sol.forces is None else force_json(sol.forces[1])
+    names = kin.point_names()
+    r = {nm: kin.point(nm)[0] for nm in names}
+    motion = {str(lid): kin.motion[lid] for lid in sorted(sol.scene.links)}
+    phi = kin.phi_deg.tolist()
+    positions = []
+    for k in range(kin.n):
+        if k == at:
+            positions.append(_position(sol, k, None if forces is None else forces[k], steps))
+            continue
+        links = {}
+        for lid, m in motion.items():
+            le = {"theta": float(m.theta[k])}
+            if m.omega is not None:
+                le["omega"] = float(m.omega[k])
+            if m.eps is not None:
+                le["eps"] = float(m.eps[k])
+            links[lid] = le
+        positions.append({"phi_deg": phi[k], "points": {nm: {"r": [float(r[nm][k].real), float(r[nm][k].imag)]}
+                                                         for nm in names}, "links": links})
+    out["positions"] = positions
+    out["partial"] = at
+    return out
 
 
 def forces_json(text: str, name: str) -> bytes:

@@ -29,6 +29,7 @@ export function draw() {
   const pos = S.sol.positions[S.k];
   $("phi-out").textContent = "φ = " + num(pos.phi_deg) + "°  (" + (S.k + 1) + " " + t("of") + " " + S.sol.positions.length + ")";
   scheme(pos);
+  if (S.sol.partial !== undefined && S.sol.partial !== S.k) return;  // its plans come with the rest
   const pl = pos.plans || {};
   plan($("vel"), pl.velocity, $("vel-scale"), "mm/(m/s)");
   plan($("acc"), pl.acceleration, $("acc-scale"), "mm/(m/s²)");

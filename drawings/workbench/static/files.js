@@ -16,12 +16,13 @@ export async function save() {
 }
 
 // POST the file's text to url (its name passed as ?path=) and download the answer as name.
-async function fetched(url, busy, name) {
+async function fetched(url, busy, name, json) {
   status(busy);
   const s = stem("scene");
-  const r = await api("POST", url + (url.indexOf("?") < 0 ? "?" : "&") + "path=" + encodeURIComponent(s + ".toml"), S.text);
+  const r = await api("POST", url + (url.indexOf("?") < 0 ? "?" : "&") + "path=" + encodeURIComponent(S.path || s + ".toml"), S.text);
   if (!r.ok) { status(r.data.error, true); return false; }
-  download(r.data, name(s, r.data));
+  const blob = json ? new Blob([JSON.stringify(r.data, null, 2)], {type: "application/json"}) : r.data;
+  download(blob, name(s, blob));
   status(t("ready"));
   return true;
 }
@@ -39,6 +40,8 @@ export async function note() {
   }
 }
 
+// The whole JSON of plans solve (the page keeps only what it draws).
 export function json() {
-  if (S.sol) download(new Blob([JSON.stringify(S.sol, null, 2)], {type: "application/json"}), stem("scene") + ".json");
+  const url = S.kind === "check" ? "/api/check" : S.kind === "synthesis" ? "/api/design" : "/api/solve";
+  return fetched(url, t("solving"), (s) => s + ".json", true);
 }

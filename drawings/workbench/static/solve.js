@@ -17,7 +17,8 @@ export async function change(ops, id, rebuild) {
   const together = S.kind === "linkage";
   const seq = together ? ++S.seq : 0, t0 = performance.now();
   if (together) status(t("solving"));
-  const url = "/api/edit" + (together ? "?solve=1&steps=0" + (S.path ? "&" + where() : "") : "");
+  // at: the position on the slider comes whole, the others after it is drawn (complete())
+  const url = "/api/edit" + (together ? "?solve=1&steps=0&view=page&at=" + S.k + (S.path ? "&" + where() : "") : "");
   const r = await api("POST", url, JSON.stringify(Object.assign({text: S.text, set: []}, ops)), "application/json");
   if (!r.ok || !r.data.data) {
     if (together && seq >= S.shown) { S.shown = seq; document.body.dataset.solved = String(seq); }
@@ -48,7 +49,7 @@ export async function solve() {
     text = d.data.scene;
   }
   // steps=0: the construction protocol's text is left out (the page draws, it reads no protocol)
-  const r = await api("POST", "/api/solve?steps=0" + (S.path && S.kind !== "synthesis" ? "&" + where() : ""), text);
+  const r = await api("POST", "/api/solve?steps=0&view=page" + (S.path && S.kind !== "synthesis" ? "&" + where() : ""), text);
   present(seq, r, t0);
 }
 
@@ -73,6 +74,18 @@ function present(seq, r, t0) {
   status(t("solved") + " " + Math.round(performance.now() - t0) + " ms");
   if (S.showForces) loadForces();
   document.body.dataset.solved = String(seq);
+  if (S.sol.partial !== undefined) complete(seq, S.text);
+}
+
+// The other positions of a partial answer, asked for once its own position is drawn (the
+// server has the scene solved already: it only writes them).
+async function complete(seq, text) {
+  const r = await api("POST", "/api/solve?steps=0&view=page" + (S.path ? "&" + where() : ""), text);
+  if (!r.ok || S.text !== text || S.shown !== seq || !S.sol || S.sol.partial === undefined) return;
+  const k = S.sol.partial;
+  S.sol = r.data;
+  if (S.k !== k || S.showCycle) draw();
+  document.body.dataset.complete = String(seq);
 }
 
 function designSummary(D) {
