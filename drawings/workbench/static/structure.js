@@ -81,8 +81,9 @@ export function structure(f) {
     let text = j.kind + " " + [].concat(j.links).join("–") + " " + t("at") + " " + j.point;
     const g = j.guide;
     if (g && typeof g === "object") {
-      text += ", " + t("guide_of") + " " + g.link + (g.through !== undefined ? " " + t("through") + " " + [].concat(g.through).join(", ") : "")
-        + (g.angle_deg !== undefined ? " " + g.angle_deg + "°" : "") + (g.toward !== undefined ? " → " + g.toward : "");
+      const thr = Array.isArray(g.through) ? "(" + g.through.join(", ") + ")" : g.through;
+      text += ", " + t("guide_of") + " " + g.link + (g.through !== undefined ? " " + t("through") + " " + thr : "")
+        + (g.angle_deg !== undefined ? ", " + g.angle_deg + "°" : "") + (g.toward !== undefined ? " → " + g.toward : "");
     }
     item(box, text, {delete: [["joints", i]]}, "joint-" + i);
   });
