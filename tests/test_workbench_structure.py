@@ -318,3 +318,48 @@ def test_page_downloads_the_note(browser, server):
     _solved(pg, None)
     assert not pg.is_visible("#dl-note")  # the note has no section for a synthesis file
     pg.close()
+
+
+def test_page_edits_points_branches_outputs_and_removes_a_link_with_its_joints(browser, server):
+    root, url = server
+    pg = browser.new_page(viewport={"width": 1366, "height": 768})
+    errors: list[str] = []
+    pg.on("pageerror", lambda e: errors.append(str(e)))
+    pg.goto(url + "/#file=four_bar.toml")
+    seq = _solved(pg, None)
+    pg.click("#structure summary")
+    # a point on the coupler: drawn where the engine puts it (along AB, across to its left)
+    seq = _add(pg, seq, "lpoint", link=2, name="K", along=100, across=-20)
+    a, b, k = (_scheme_point(pg, nm) for nm in ("A", "B", "K"))
+    ab = complex(b[0] - a[0], b[1] - a[1])
+    u = ab / abs(ab)
+    want = complex(*a) + u * complex(100, -20)
+    assert abs(complex(*k) - want) < 0.01
+    # the other assembly of the group 2-3: B below the line A→D
+    seq = _add(pg, seq, "branch", group="2-3", sign=-1)
+    assert _scheme_point(pg, "B")[1] < 0 < b[1]
+    # what the scene asks for: without the lever and polygons the balancing rows go
+    pg.uncheck("#s-out-force_polygons")
+    seq = _solved(pg, seq)
+    pg.uncheck("#s-out-lever")
+    seq = _solved(pg, seq)
+    assert "by_kinetostatics" not in pg.inner_text("#table")
+    # the rocker removed: its joints and the moment on it go with it
+    pg.click("#s-del-link-3")
+    seq = _solved(pg, seq)
+    assert pg.locator("[data-item^='joint-']").count() == 2
+    assert pg.locator("[data-item^='moment-']").count() == 0
+    assert pg.inner_text("#general-error") or pg.eval_on_selector_all(
+        "#form .err", "es => es.map(e => e.textContent).join('')")  # a crank and a coupler alone: the engine says so
+    pg.fill("#save-path", "edited_four_bar.toml")
+    pg.click("#save")
+    pg.wait_for_function("() => document.body.dataset.saved === 'edited_four_bar.toml'")
+    text = (root / "edited_four_bar.toml").read_text(encoding="utf-8")
+    data = tomllib.loads(text)
+    assert sorted(data["links"]) == ["1", "2"] and data["links"]["2"]["points"]["K"] == {"along": 100, "across": -20}
+    assert all(3 not in j["links"] for j in data["joints"]) and len(data["joints"]) == 2
+    assert "moment" not in data["loads"] and data["branches"] == {"2-3": -1}
+    assert data["outputs"] == ["positions", "velocity_plan", "acceleration_plan"]
+    assert "# balanced crank" in text and text.startswith("# Crank-rocker four-bar")
+    assert errors == []
+    pg.close()

@@ -126,7 +126,8 @@ def _set(doc: Any, keys: list, value: Any, make: bool) -> None:
                 else:
                     if top:
                         _blank_after(_last_table(node.values()), new)
-                    node.append(str(last), new)
+                    container: Any = node  # a tomlkit table: it appends after its last key
+                    container.append(str(last), new)
         else:
             node[int(last)] = _item(value)
     except (IndexError, ValueError, TypeError):
@@ -149,7 +150,8 @@ def _append(doc: Any, keys: list, value: Any) -> None:
     if not isinstance(node, dict):
         raise EditError(422, f"{_name(keys)}: no such key in the file", _name(keys))
     if last not in node:
-        node.append(last, tomlkit.aot())
+        table: Any = node
+        table.append(last, tomlkit.aot())
     arr = node[last]
     if not isinstance(arr, list):
         raise EditError(422, f"{_name(keys)}: not a list of tables in the file", _name(keys))

@@ -377,7 +377,7 @@ def _samples_dir() -> Path | None:
 
 def _samples() -> list[dict[str, Any]]:
     folder = _samples_dir()
-    out = [{"name": "new", "title": "New mechanism", "titles": {"ru": "Новый механизм", "en": "New mechanism"},
+    out: list[dict[str, Any]] = [{"name": "new", "title": "New mechanism", "titles": {"ru": "Новый механизм", "en": "New mechanism"},
             "text": EMPTY, "kind": "linkage"}]
     for name in GALLERY:
         p = folder / f"{name}.toml" if folder else None
@@ -597,6 +597,7 @@ def make_app(root: str | Path, hosts: set[str]) -> Any:
     routes = [
         Route("/", _handler(wb.index), methods=["GET"]),
         Route("/static/{name}", _handler(wb.static), methods=["GET"]),
+        Route("/favicon.ico", lambda request: Response(status_code=204), methods=["GET"]),  # none: no 404 logged
         Route("/api/files", _handler(wb.files), methods=["GET"]),
         Route("/api/samples", _handler(wb.samples), methods=["GET"]),
         Route("/api/file", _handler(wb.read), methods=["GET"]),

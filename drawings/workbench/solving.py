@@ -128,31 +128,34 @@ def solve_json(text: str, name: str, steps: bool = True, data: dict[str, Any] | 
 def _partial(sol: Any, at: int, steps: bool) -> dict[str, Any]:
     """``plans solve --json`` with position ``at`` whole (as ``plans.results`` writes each
     position) and every other one its angle, points' positions and links' motion."""
+    import numpy as np
+
     from plans.forces.lever import force_json
     from plans.results import _head, _position
 
     out = _head(sol)
     kin = sol.kinematics
     forces = None if sol.forces is None else force_json(sol.forces[1])
-    names = kin.point_names()
-    r = {nm: kin.point(nm)[0] for nm in names}
-    motion = {str(lid): kin.motion[lid] for lid in sorted(sol.scene.links)}
+    n = kin.n
+
+    def column(x: Any) -> list:  # an array over the positions as Python numbers, read once
+        return np.broadcast_to(np.asarray(x), (n,)).tolist()
+
+    r = {nm: column(kin.point(nm)[0]) for nm in kin.point_names()}
+    motion = {}
+    for lid in sorted(sol.scene.links):
+        m = kin.motion[lid]
+        motion[str(lid)] = [(key, column(x)) for key, x in (("theta", m.theta), ("omega", m.omega), ("eps", m.eps))
+                            if x is not None]
     phi = kin.phi_deg.tolist()
     positions = []
-    for k in range(kin.n):
+    for k in range(n):
         if k == at:
             positions.append(_position(sol, k, None if forces is None else forces[k], steps))
             continue
-        links = {}
-        for lid, m in motion.items():
-            le = {"theta": float(m.theta[k])}
-            if m.omega is not None:
-                le["omega"] = float(m.omega[k])
-            if m.eps is not None:
-                le["eps"] = float(m.eps[k])
-            links[lid] = le
-        positions.append({"phi_deg": phi[k], "points": {nm: {"r": [float(r[nm][k].real), float(r[nm][k].imag)]}
-                                                         for nm in names}, "links": links})
+        links = {lid: {key: float(col[k]) for key, col in cols} for lid, cols in motion.items()}
+        positions.append({"phi_deg": phi[k], "points": {nm: {"r": [z[k].real, z[k].imag]} for nm, z in r.items()},
+                          "links": links})
     out["positions"] = positions
     out["partial"] = at
     return out
