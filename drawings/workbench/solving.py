@@ -14,9 +14,14 @@ import threading
 from collections import OrderedDict
 from typing import Any
 
-#: A few scenes per tab (the one shown, the one before an edit); a solved four-bar is a few
-#: hundred kilobytes.
+#: A few scenes per tab (the one shown, the one before an edit): the solutions (a solved
+#: four-bar is a few hundred kilobytes, a scene of hundreds of positions far more) and
+#: their JSON.
+KEEP_SOLVED = 4
 KEEP = 12
+#: Larger answers and solutions are made each time they are asked for, never kept.
+KEEP_BYTES = 4 << 20
+KEEP_POSITIONS = 720
 
 _LOCK = threading.Lock()
 _SOLVED: OrderedDict[tuple[str, str], Any] = OrderedDict()
@@ -37,7 +42,7 @@ def _keep(cache: OrderedDict, key: Any, value: Any) -> None:
     with _LOCK:
         cache[key] = value
         cache.move_to_end(key)
-        while len(cache) > KEEP:
+        while len(cache) > (KEEP_SOLVED if cache is _SOLVED else KEEP):
             cache.popitem(last=False)
 
 
@@ -69,7 +74,8 @@ def solved(text: str, name: str, data: dict[str, Any] | None = None) -> Any:
 
         scene = parse_scene(text, name) if data is None else scene_from_dict(data, name)
         got = solve_scene(scene)
-        _keep(_SOLVED, key, got)
+        if got.kinematics.n <= KEEP_POSITIONS:
+            _keep(_SOLVED, key, got)
         return got
 
 
@@ -121,7 +127,8 @@ def solve_json(text: str, name: str, steps: bool = True, data: dict[str, Any] | 
                 out = to_json(sol, steps)
                 out = page_view(out) if view == "page" else out
             got = json.dumps(out, ensure_ascii=False, allow_nan=False, separators=(",", ":")).encode("utf-8")
-            _keep(_JSON, key, got)
+            if len(got) <= KEEP_BYTES:
+                _keep(_JSON, key, got)
     return got
 
 
