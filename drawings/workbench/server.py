@@ -34,6 +34,8 @@ from starlette.routing import Route
 
 from plans.errors import ConstructionError, InputError, PlansError, one_line
 
+from .outputs import _jsonable, demo_page, design_json, draw_file, note_file
+
 #: Largest request body and largest file read or written (a scene is a few kilobytes).
 MAX_BODY = 1 << 20
 #: At most this many files listed (a folder of a whole group's checks stays well below).
@@ -43,9 +45,6 @@ GALLERY = ("slider_crank", "offset_slider_crank", "v_engine", "four_bar", "shape
            "scotch_yoke", "synthesis/offset_slider_crank", "synthesis/crank_rocker", "synthesis/shaper",
            "synthesis/seed000_v_engine")
 #: The page's own files: its style and its script's modules (ES modules, no build step).
-#: The kinds of file the explanatory note has a section for, and its figures' resolution.
-NOTE_KINDS = ("linkage", "gears", "cam", "engine")
-NOTE_DPI = 150.0
 #: A mechanism to build from nothing (the gallery's first card).
 EMPTY = """# A new mechanism: its fixed pivots, links, joints and driver added in the form.
 format = 1
@@ -287,7 +286,7 @@ class Workbench:
 
     async def design(self, request: Request) -> Response:
         text, name = await self.text(request), self.source_name(request)
-        return Response(await run_in_threadpool(_design, text, name), media_type="application/json")
+        return Response(await run_in_threadpool(design_json, text, name), media_type="application/json")
 
     async def forces(self, request: Request) -> Response:
         text, name = await self.text(request), self.source_name(request)
@@ -297,7 +296,7 @@ class Workbench:
         text = await self.text(request)
         name = self.source_name(request)
         stem = Path(name).stem.strip("<>") or "scene"
-        page = await run_in_threadpool(_demo, text, name)
+        page = await run_in_threadpool(demo_page, text, name)
         return Response(page, media_type="text/html; charset=utf-8",
                         headers={"Content-Disposition": f'attachment; filename="{stem}.html"'})
 
@@ -308,7 +307,7 @@ class Workbench:
             raise Refused(400, f"language {lang!r}: expected ru or en", "language")
         text = await self.text(request)
         stem = Path(self.source_name(request)).stem.strip("<>") or "scene"
-        data = await run_in_threadpool(_note, text, stem, lang)
+        data = await run_in_threadpool(note_file, text, stem, lang)
         return Response(data, media_type=_MEDIA["docx"],
                         headers={"Content-Disposition": f'attachment; filename="{stem}.docx"'})
 
@@ -320,7 +319,7 @@ class Workbench:
             raise Refused(400, f"format {fmt!r}: expected one of {', '.join(FORMATS)}", "format")
         text = await self.text(request)
         stem = Path(self.source_name(request)).stem.strip("<>") or "scene"
-        data, name = await run_in_threadpool(_draw, text, stem, fmt)
+        data, name = await run_in_threadpool(draw_file, text, stem, fmt)
         return Response(data, media_type=_MEDIA.get(name.rsplit(".", 1)[-1], "application/octet-stream"),
                         headers={"Content-Disposition": f'attachment; filename="{name}"'})
 
@@ -348,18 +347,6 @@ def _title(data: dict[str, Any], default: str) -> str:
 def _titles(data: dict[str, Any]) -> dict[str, str] | None:
     t = data.get("title")
     return {str(k): v for k, v in t.items() if isinstance(v, str)} if isinstance(t, dict) else None
-
-
-def _jsonable(x: Any) -> Any:
-    if isinstance(x, dict):
-        return {str(k): _jsonable(v) for k, v in x.items()}
-    if isinstance(x, list | tuple):
-        return [_jsonable(v) for v in x]
-    if isinstance(x, float) and x != x:
-        return None
-    if isinstance(x, str | int | float | bool) or x is None:
-        return x
-    return str(x)  # TOML dates and times
 
 
 def _parsed(text: str, name: str) -> dict[str, Any]:
@@ -473,23 +460,6 @@ def _view(request: Request) -> str:
     return view
 
 
-def _design(text: str, name: str) -> bytes:
-    """A synthesis file designed (``plans design``): the scene written and the JSON of
-    ``plans design --json`` (its ``scene`` the scene's text)."""
-    from plans.io import loads_toml
-    from plans.synthesis.cli import _check_scene, results
-    from plans.synthesis.design import design
-    from plans.synthesis.model import task_from_dict
-    from plans.synthesis.scene import scene_text
-
-    d = design(task_from_dict(loads_toml(text, name), name))
-    scene = scene_text(d)
-    _check_scene(scene, name)
-    return json.dumps({"scene": scene, "data": _jsonable(tomllib.loads(scene)), "design": results(d, scene)},
-                      ensure_ascii=False,
-                      allow_nan=False, separators=(",", ":")).encode("utf-8")
-
-
 def _forces(text: str, name: str) -> bytes:
     """The force polygons of every group and the crank, and the lever, at every position of
     the scene (the demonstration page's drawings: one scale over the turn), or [] when the
@@ -497,60 +467,6 @@ def _forces(text: str, name: str) -> bytes:
     from .solving import forces_json
 
     return forces_json(text, name)
-
-
-def _demo(text: str, name: str) -> bytes:
-    from drawings.demo import page
-    from plans.scene.model import parse_scene
-
-    return page(parse_scene(text, name)).encode("utf-8")
-
-
-def _note(text: str, stem: str, lang: str) -> bytes:
-    """``plans note`` of one file: solved as its own command solves it, in a temporary folder
-    (the note reads files by their paths)."""
-    import tempfile
-
-    from drawings.note.cli import note_bytes
-    from plans.io import loads_toml
-    from plans.kinds import kind_of
-
-    kind = kind_of(loads_toml(text, f"{stem}.toml"), f"{stem}.toml")
-    if kind not in NOTE_KINDS:
-        raise Refused(422, f"{stem}.toml: the note has no section for a {kind} file; expected one of "
-                           f"{', '.join(NOTE_KINDS)}", "kind")
-    with tempfile.TemporaryDirectory() as tmp:
-        src = Path(tmp) / f"{stem}.toml"
-        src.write_text(text, encoding="utf-8")  # guard: a temporary folder
-        return note_bytes([str(src)], lang, dpi=NOTE_DPI)
-
-
-def _draw(text: str, stem: str, fmt: str) -> tuple[bytes, str]:
-    import importlib
-    import tempfile
-    import zipfile
-
-    from drawings.export import save
-    from plans.io import loads_toml
-    from plans.kinds import KINDS, kind_of
-
-    kind = kind_of(loads_toml(text, f"{stem}.toml"), f"{stem}.toml")
-    module = importlib.import_module(KINDS[kind][1])
-    with tempfile.TemporaryDirectory() as tmp:
-        src = Path(tmp) / f"{stem}.toml"
-        src.write_text(text, encoding="utf-8")  # guard: a temporary folder
-        drawing = module.draw(str(src))
-        written = save(drawing.sheets, Path(tmp) / "out", stem, [fmt], source=str(src))
-        if len(written) == 1:
-            return written[0].read_bytes(), written[0].name
-        import io
-
-        buf = io.BytesIO()
-        with zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as z:
-            for p in sorted(written):
-                info = zipfile.ZipInfo(p.name, date_time=(2000, 1, 1, 0, 0, 0))
-                z.writestr(info, p.read_bytes(), zipfile.ZIP_DEFLATED)
-        return buf.getvalue(), f"{stem}-{fmt}.zip"
 
 
 def _handler(fn: Any) -> Any:
