@@ -239,8 +239,8 @@ def test_page_builds_a_slider_crank_from_an_empty_scene(browser, server):
         assert abs(bx - x) < 0.01 and abs(by) < 0.01, (k, bx, x)
     # the edit's answer held its own position whole and the rest came after: at φ = 90° the
     # velocity plan's b is v_B = dx_B/dφ·ω = −r·ω (the closed form's derivative), along x
-    pg.wait_for_function("s => document.body.dataset.complete === s", arg=seq)
     pg.eval_on_selector("#phi", "e => { e.value = '3'; e.dispatchEvent(new Event('input')); }")
+    pg.wait_for_function("s => document.body.dataset.complete === s", arg=seq)
     mu = float(pg.get_attribute("#vel", "data-scale"))
     b = pg.eval_on_selector("#vel circle[data-name='b']",
                             "c => [Number(c.getAttribute('cx')), -Number(c.getAttribute('cy'))]")

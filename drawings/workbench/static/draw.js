@@ -2,7 +2,7 @@
 // velocity and acceleration plans of the position on the slider, and the results table.
 // The page computes no mechanics: every coordinate it draws comes from the solution.
 import {$, S, clear, el, f3, h, num} from "./dom.js";
-import {edit} from "./solve.js";
+import {completeNow, edit} from "./solve.js";
 import {drawCycle, drawForces} from "./views.js";
 import {t, un} from "./words.js";
 
@@ -29,7 +29,7 @@ export function draw() {
   const pos = S.sol.positions[S.k];
   $("phi-out").textContent = "φ = " + num(pos.phi_deg) + "°  (" + (S.k + 1) + " " + t("of") + " " + S.sol.positions.length + ")";
   scheme(pos);
-  if (S.sol.partial !== undefined && S.sol.partial !== S.k) return;  // its plans come with the rest
+  if (S.sol.partial !== undefined && S.sol.partial !== S.k) { completeNow(); return; }  // its plans come with the rest
   const pl = pos.plans || {};
   plan($("vel"), pl.velocity, $("vel-scale"), "mm/(m/s)");
   plan($("acc"), pl.acceleration, $("acc-scale"), "mm/(m/s²)");

@@ -14,6 +14,7 @@ export function edit(keys, value, id) { return change({set: [[keys, value]]}, id
 // form is made again. True when the file was changed.
 export async function change(ops, id, rebuild) {
   S.last = id;
+  if (later !== null) { clearTimeout(later); later = null; }  // the next answer brings its own
   const together = S.kind === "linkage";
   const seq = together ? ++S.seq : 0, t0 = performance.now();
   if (together) status(t("solving"));
@@ -74,13 +75,24 @@ function present(seq, r, t0) {
   status(t("solved") + " " + Math.round(performance.now() - t0) + " ms");
   if (S.showForces) loadForces();
   document.body.dataset.solved = String(seq);
-  if (S.sol.partial !== undefined) complete(seq, S.text);
+  if (S.sol.partial !== undefined) later = setTimeout(() => complete(seq, S.text), REST_AFTER_MS);
 }
 
-// The other positions of a partial answer, asked for once its own position is drawn (the
-// server has the scene solved already: it only writes them).
+// The other positions of a partial answer, asked for once its own position is drawn and no
+// edit follows at once (typing, dragging: only the position on the slider is written), or
+// as soon as the slider moves (the server has the scene solved already: it only writes them).
+const REST_AFTER_MS = 150;
+let later = null, asked = null;
+export function completeNow() {
+  if (later !== null) { clearTimeout(later); later = null; }
+  complete(S.shown, S.text);
+}
 async function complete(seq, text) {
+  later = null;
+  if (S.text !== text || S.shown !== seq || !S.sol || S.sol.partial === undefined || asked === text) return;
+  asked = text;
   const r = await api("POST", "/api/solve?steps=0&view=page" + (S.path ? "&" + where() : ""), text);
+  asked = null;
   if (!r.ok || S.text !== text || S.shown !== seq || !S.sol || S.sol.partial === undefined) return;
   const k = S.sol.partial;
   S.sol = r.data;
