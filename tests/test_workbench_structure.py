@@ -312,6 +312,18 @@ def test_page_downloads_the_note(browser, server):
     assert d.suggested_filename == "four_bar.docx"
     text = _docx_text(docx.Document(d.path()))
     assert "Zhukovsky" in text or "Жуковского" in text
+    # a cam file: edited in the form, not drawn; its note is the cam's section
+    root, _ = server
+    shutil.copy(SAMPLES / "cams" / "flat_face_poly345.toml", root / "cam.toml")
+    pg.goto(url + "/#file=cam.toml")
+    pg.reload()
+    _solved(pg, None)
+    assert pg.inner_text("#general-error") == "" and pg.is_visible("#dl-note") and not pg.is_visible("#dl-json")
+    with pg.expect_download(timeout=180_000) as dl:
+        pg.click("#dl-note")
+    text = _docx_text(docx.Document(dl.value.path()))
+    assert "h = 12 mm" in text or "h = 12 мм" in text  # the file's lift
+    assert f"{300 * math.pi / 30:.4g}".replace(".", ",") in text.replace(".", ",")  # ω = πn/30 of its 300 rpm
     pg.goto(url + "/")
     pg.wait_for_selector("body[data-ready='gallery']")
     pg.click("[data-sample='synthesis_crank_rocker'] button")

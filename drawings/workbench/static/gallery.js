@@ -52,6 +52,7 @@ export async function open(path, name, text, data, kind) {
   $("save-box").hidden = false; $("downloads").hidden = false;
   $("dl-demo").hidden = S.kind !== "linkage"; $("new-check").hidden = S.kind !== "linkage";
   $("dl-note").hidden = !NOTE_KINDS[S.kind];
+  $("dl-json").hidden = S.kind !== "linkage" && S.kind !== "check" && S.kind !== "synthesis";
   $("design-box").hidden = S.kind !== "synthesis"; S.designed = null; S.designedData = null;
   $("design-summary").textContent = "";
   for (const b of document.querySelectorAll("#downloads button[data-format]")) b.hidden = S.kind === "check";
