@@ -7,9 +7,12 @@ lists the folder's files by kind; ``GET``/``PUT /api/file?path=`` read and write
 answers the sheets (one file, or a zip of several); ``POST /api/demo`` the demonstration
 page (``plans demo``); ``POST /api/forces`` the force polygons and the lever over the turn;
 ``GET /api/template?path=`` a blank check file for a scene; ``POST /api/design`` a synthesis
-file designed (the scene and ``plans design --json``);
-``POST /api/edit`` sets values in a TOML
-text keeping its comments and order (the form's edits); ``GET /api/samples`` is the gallery.
+file designed (the scene and ``plans design --json``); ``POST /api/note`` the explanatory
+note (``plans note``, DOCX); ``POST /api/edit`` sets values in a TOML text and adds or removes
+its tables keeping its comments and order (the form's edits, :mod:`.edits`), with
+``?solve=1`` the edited scene solved in the same answer; ``GET /api/samples`` is the
+gallery. The page asks for what it draws (``view=page``) and for the position on its slider
+first (``at=K``); solutions are kept per text (:mod:`.solving`).
 
 Safe as a local server: only the Host names it listens as are answered (DNS rebinding), a
 request from another site's page is refused (Origin, Sec-Fetch-Site), no path leaves the
@@ -44,7 +47,6 @@ MAX_FILES = 2000
 GALLERY = ("slider_crank", "offset_slider_crank", "v_engine", "four_bar", "shaper", "six_bar",
            "scotch_yoke", "synthesis/offset_slider_crank", "synthesis/crank_rocker", "synthesis/shaper",
            "synthesis/seed000_v_engine")
-#: The page's own files: its style and its script's modules (ES modules, no build step).
 #: A mechanism to build from nothing (the gallery's first card).
 EMPTY = """# A new mechanism: its fixed pivots, links, joints and driver added in the form.
 format = 1
@@ -53,6 +55,7 @@ unit = "mm"
 frame = 4                    # the frame's link number (the textbook numbers it last)
 outputs = ["positions", "velocity_plan", "acceleration_plan"]
 """
+#: The page's own files: its style and its script's modules (ES modules, no build step).
 _STATIC = {"app.css": "text/css; charset=utf-8", **{f"{m}.js": "text/javascript; charset=utf-8" for m in (
     "main", "words", "dom", "gallery", "form", "structure", "solve", "check", "draw", "views", "files")}}
 _CSP = ("default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self' data:; "
@@ -364,8 +367,9 @@ def _samples_dir() -> Path | None:
 
 def _samples() -> list[dict[str, Any]]:
     folder = _samples_dir()
-    out: list[dict[str, Any]] = [{"name": "new", "title": "New mechanism", "titles": {"ru": "Новый механизм", "en": "New mechanism"},
-            "text": EMPTY, "kind": "linkage"}]
+    titles = {"ru": "Новый механизм", "en": "New mechanism"}
+    out: list[dict[str, Any]] = [{"name": "new", "title": titles["en"], "titles": titles, "text": EMPTY,
+                                  "kind": "linkage"}]
     for name in GALLERY:
         p = folder / f"{name}.toml" if folder else None
         if p is None or not p.is_file():
