@@ -103,7 +103,12 @@ async function complete(seq, text) {
   asked = text;
   const r = await api("POST", "/api/solve?steps=0&view=page" + (S.path ? "&" + where() : ""), text);
   asked = null;
-  if (!r.ok || S.text !== text || S.shown !== seq || !S.sol || S.sol.partial === undefined) return;
+  if (S.text !== text || S.shown !== seq || !S.sol || S.sol.partial === undefined) return;
+  if (!r.ok) {  // the rest without an answer: the engine's line, as for the first
+    mark((r.data.field && fieldId(r.data.field)) || S.last, r.data.error);
+    status(t("error"), true);
+    return;
+  }
   const k = S.sol.partial;
   S.sol = r.data;
   if (S.k !== k || S.showCycle) draw();
