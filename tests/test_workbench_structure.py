@@ -363,6 +363,14 @@ def test_page_edits_points_branches_outputs_and_removes_a_link_with_its_joints(b
     assert pg.locator("[data-item^='moment-']").count() == 0
     assert pg.inner_text("#general-error") or pg.eval_on_selector_all(
         "#form .err", "es => es.map(e => e.textContent).join('')")  # a crank and a coupler alone: the engine says so
+    # taken back: the rocker, its joints and its moment again, the four-bar solved
+    pg.click("#undo")
+    seq = _solved(pg, seq)
+    assert pg.locator("[data-item^='link-']").count() == 3 and pg.locator("[data-item^='joint-']").count() == 4
+    assert pg.locator("[data-item^='moment-']").count() == 1 and pg.inner_text("#general-error") == ""
+    assert pg.eval_on_selector_all("#form .err", "es => es.map(e => e.textContent).join('')") == ""
+    pg.click("#s-del-link-3")
+    seq = _solved(pg, seq)
     pg.fill("#save-path", "edited_four_bar.toml")
     pg.click("#save")
     pg.wait_for_function("() => document.body.dataset.saved === 'edited_four_bar.toml'")

@@ -8,7 +8,8 @@ export const $ = (id) => document.getElementById(id);
 // The file shown: its path (null while unsaved), name, TOML text, data, kind, solution, the
 // position on the slider; seq/shown order the answers (an older one never replaces a newer).
 export const S = {path: null, name: null, text: "", data: null, kind: null, sol: null, k: 0, last: null, seq: 0,
-  shown: 0, busy: false, forces: null, showForces: false, showCycle: false, designed: null, designedData: null};
+  shown: 0, busy: false, forces: null, showForces: false, showCycle: false, designed: null, designedData: null,
+  undo: []};
 
 export const f3 = (x) => (Math.round(x * 1000) / 1000).toString();
 export const num = (x) => (x === undefined || x === null ? "" : Number(x.toPrecision(5)).toString());

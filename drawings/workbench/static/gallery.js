@@ -41,6 +41,7 @@ export async function openFile(path) {
 }
 export async function open(path, name, text, data, kind) {
   S.path = path; S.name = name; S.text = text; S.k = 0; S.sol = null; S.forces = null; S.structOpen = undefined;
+  S.undo = []; $("undo").disabled = true;
   if (!data) {
     const r = await api("POST", "/api/edit", JSON.stringify({text: text, set: []}), "application/json");
     if (!r.ok) { status(r.data.error, true); return; }

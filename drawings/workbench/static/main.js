@@ -6,12 +6,14 @@ import {draw} from "./draw.js";
 import {demo, json, note, save, sheets} from "./files.js";
 import {form} from "./form.js";
 import {gallery, open, openFile} from "./gallery.js";
+import {undo} from "./solve.js";
 import {drawCycle, show, showForces} from "./views.js";
 import {L, setLanguage, t, translate} from "./words.js";
 
 $("form").addEventListener("submit", (e) => e.preventDefault());  // Enter sends a field, never the form
 $("to-gallery").addEventListener("click", () => { history.replaceState(null, "", "#"); gallery(); });
 $("save").addEventListener("click", save);
+$("undo").addEventListener("click", undo);
 for (const b of document.querySelectorAll("#downloads button[data-format]")) b.addEventListener("click", () => sheets(b.dataset.format));
 $("dl-json").addEventListener("click", json);
 $("dl-demo").addEventListener("click", demo);

@@ -11,22 +11,30 @@ import {t} from "./words.js";
 export function edit(keys, value, id) { return change({set: [[keys, value]]}, id, false); }
 
 // Any edit ({set, put, append, delete}: see /api/edit); rebuild: the structure changed, the
-// form is made again. True when the file was changed.
-export async function change(ops, id, rebuild) {
+// form is made again; from: the text to edit (an earlier one, taken back), else the file's.
+// True when the file was changed.
+export async function change(ops, id, rebuild, from) {
   S.last = id;
+  const before = S.text;
   if (later !== null) { clearTimeout(later); later = null; }  // the next answer brings its own
   const together = S.kind === "linkage";
   const seq = together ? ++S.seq : 0, t0 = performance.now();
   if (together) status(t("solving"));
   // at: the position on the slider comes whole, the others after it is drawn (complete())
   const url = "/api/edit" + (together ? "?solve=1&steps=0&view=page&at=" + S.k + (S.path ? "&" + where() : "") : "");
-  const r = await api("POST", url, JSON.stringify(Object.assign({text: S.text, set: []}, ops)), "application/json");
+  const r = await api("POST", url, JSON.stringify(Object.assign({text: from === undefined ? S.text : from, set: []}, ops)),
+    "application/json");
   if (!r.ok || !r.data.data) {
     if (together && seq >= S.shown) { S.shown = seq; document.body.dataset.solved = String(seq); }
     mark((r.data.field && fieldId(r.data.field)) || id, r.data.error);
     status(t("not_changed"), true);
     return false;
   }
+  if (from === undefined && r.data.text !== before) {
+    S.undo.push(before);
+    if (S.undo.length > UNDO_MAX) S.undo.shift();
+  }
+  $("undo").disabled = !S.undo.length;
   S.text = r.data.text; S.data = r.data.data;
   if (rebuild) form(); else refresh();
   $("doc-path").textContent = (S.path || t("not_saved")) + " •";
@@ -37,6 +45,15 @@ export async function change(ops, id, rebuild) {
 
 //: Files the page edits and exports but does not draw (their sheets and note are downloads).
 const UNDRAWN = {gears: 1, cam: 1, engine: 1};
+
+// The file as it was before the last change (the form made again, the scene solved again:
+// a text solved before is answered from the server's store).
+const UNDO_MAX = 100;
+export async function undo() {
+  if (!S.undo.length) return;
+  await change({}, null, true, S.undo.pop());
+  $("undo").disabled = !S.undo.length;
+}
 
 export async function solve() {
   if (S.kind === "check") return checkRun();
