@@ -347,6 +347,11 @@ def test_page_edits_points_branches_outputs_and_removes_a_link_with_its_joints(b
     u = ab / abs(ab)
     want = complex(*a) + u * complex(100, -20)
     assert abs(complex(*k) - want) < 0.01
+    # a link number taken is refused beside its row, the file unchanged
+    pg.fill("#s-link-id", "2")
+    pg.fill("#s-link-length", "10")
+    pg.click("#s-link-add")
+    assert "2" in pg.inner_text("#e-s-link") and pg.get_attribute("body", "data-solved") == seq
     # the other assembly of the group 2-3: B below the line A→D
     seq = _add(pg, seq, "branch", group="2-3", sign=-1)
     assert _scheme_point(pg, "B")[1] < 0 < b[1]

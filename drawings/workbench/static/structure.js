@@ -50,6 +50,7 @@ export function structure(f) {
   adder(box, "link", [["id", String(next)], ["axis", "O A"], ["length", ""], ["name", ""]], (v) => {
     const axis = v.axis.split(/[\s,–-]+/).filter((x) => x);
     if (!isNum(v.id) || !axis.length || (axis.length > 1 && !isNum(v.length))) return null;
+    if (links[String(number(v.id))] || number(v.id) === D.frame) return t("s_link") + " " + v.id + ": " + t("taken");
     const body = {};
     if (v.name) body.name = v.name;
     body.axis = axis;
@@ -166,7 +167,7 @@ function item(box, text, ops, id) {
 }
 
 // A row of inputs that adds an element: fields [name, default, choices?]; make(values) gives the
-// ops, or null when a field is missing or not a number.
+// ops, or null when a field is missing or not a number, or a line saying what is wrong.
 function adder(box, id, fields, make, sign) {
   h(box, "div", {class: "hint"}, fields.map(([name]) => label(name)).join(" · "));
   const r = h(box, "div", {class: "srow add", "data-add": id});
@@ -187,8 +188,8 @@ function adder(box, id, fields, make, sign) {
   b.addEventListener("click", () => {
     const v = {};
     for (const k in inputs) v[k] = inputs[k].value.trim();
-    const ops = make(v);
-    if (!ops) { err.textContent = t("empty_first"); return; }
+    const ops = make(v);  // the edit, or null (a field missing), or what is wrong
+    if (!ops || typeof ops === "string") { err.textContent = ops || t("empty_first"); return; }
     change(ops, "s-" + id, true);
   });
 }

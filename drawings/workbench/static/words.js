@@ -27,7 +27,8 @@ export const WORDS = {
     positions: "positions", group: "group", force: "force", moment: "moment", resisting: "resisting",
     set_driver: "set", guide_of: "guide", at: "at", empty_first: "fill in every field",
     new_scene: "New mechanism (empty)", new_tip: "an empty scene: build it link by link",
-    id: "number", kind: "kind", links: "links", point: "point", sign: "±1", undo_tip: "take back the last change"},
+    id: "number", kind: "kind", links: "links", point: "point", sign: "±1", undo_tip: "take back the last change",
+    taken: "the number is taken (remove that link first)"},
   ru: {gallery: "галерея", workbench: "верстак", save: "Сохранить", page: "Страница", check: "Проверка…",
     page_tip: "демонстрационная страница (plans demo)", check_tip: "пустой файл проверки для этой схемы: введите цифры студента",
     start: "Начать с механизма курса", files_of: "Файлы папки", scheme: "Схема", velocity_plan: "План скоростей",
@@ -57,7 +58,8 @@ export const WORDS = {
     angle: "угол", rpm: "n, об/мин", positions: "положений", group: "группа", force: "сила", moment: "момент",
     resisting: "сопротивления", set_driver: "задать", guide_of: "направляющая", at: "в",
     empty_first: "заполните все поля", new_scene: "Новый механизм (пустой)", new_tip: "пустая схема: соберите её звено за звеном",
-    id: "номер", kind: "вид", links: "звенья", point: "точка", sign: "±1", undo_tip: "отменить последнее изменение"},
+    id: "номер", kind: "вид", links: "звенья", point: "точка", sign: "±1", undo_tip: "отменить последнее изменение",
+    taken: "номер занят (сначала удалите то звено)"},
 };
 
 export const L = {lang: localStorage.getItem("plans-lang") || ((navigator.language || "").startsWith("ru") ? "ru" : "en")};
