@@ -65,6 +65,5 @@ export async function open(path, name, text, data, kind) {
   await solve();
 }
 
-
-//: The kinds of file the explanatory note (plans note) takes.
+// The kinds of file the explanatory note (plans note) takes.
 const NOTE_KINDS = {linkage: 1, gears: 1, cam: 1, engine: 1};

@@ -43,7 +43,7 @@ export async function change(ops, id, rebuild, from) {
   return true;
 }
 
-//: Files the page edits and exports but does not draw (their sheets and note are downloads).
+// Files the page edits and exports but does not draw (their sheets and note are downloads).
 const UNDRAWN = {gears: 1, cam: 1, engine: 1};
 
 // The file as it was before the last change (the form made again, the scene solved again:
