@@ -31,6 +31,7 @@ if TYPE_CHECKING:
     from plans.forces.lever import LeverAnalysis, Reading
     from plans.forces.loads import Loads
     from plans.forces.polygons import ForceAnalysis, ForcePolygon
+    from plans.kinematics.centres import Centre, CentreVelocity
     from plans.kinematics.construction import PositionPlans
     from plans.kinematics.exact import Kinematics
     from plans.kinematics.plan import Plan
@@ -276,6 +277,17 @@ class Solution:
         lv = self.lever
         assert lv is not None, "the scene asks for no lever"
         return self._part(("rows", k), lambda: force_rows(lv, k))
+
+    def centres(self, k: int) -> tuple[dict[tuple[int, int], Centre], list[CentreVelocity]]:
+        """The instant centres at position ``k`` (all n(n−1)/2, by Kennedy's theorem) and the
+        named points' velocities read off them."""
+        def make() -> tuple[dict[tuple[int, int], Centre], list[CentreVelocity]]:
+            from plans.kinematics.centres import centres_at, velocities_at
+
+            got = centres_at(self.kinematics, k)
+            return got, velocities_at(self.kinematics, k, got)
+
+        return self._part(("centres", k), make)
 
     def analogue_plans(self) -> tuple[Plan, ...]:
         """Plans of velocity analogues at the dynamics table's positions: velocity plans at

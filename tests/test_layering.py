@@ -121,6 +121,7 @@ SOLVERS = {
     "plans.cycle.diagrams": {"diagrams"},
     "plans.cycle.dynamics": {"dynamics"},
     "plans.forces.loads": {"ignition", "parse_loads"},
+    "plans.kinematics.centres": {"centres_at", "velocities_at", "kennedy", "primary"},
 }
 
 #: What solves a file of the other kinds: each room's, read by its sheets off the room's
