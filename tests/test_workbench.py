@@ -53,7 +53,7 @@ def server(tmp_path_factory):
 def _req(url: str, method: str = "GET", body: bytes | None = None, headers: dict | None = None):
     rq = urllib.request.Request(url, data=body, method=method, headers=headers or {})
     try:
-        with urllib.request.urlopen(rq, timeout=20) as r:
+        with urllib.request.urlopen(rq, timeout=120) as r:
             return r.status, r.headers.get("Content-Type", ""), r.read()
     except urllib.error.HTTPError as e:
         return e.code, e.headers.get("Content-Type", ""), e.read()

@@ -34,11 +34,11 @@ def design_json(text: str, name: str) -> bytes:
     ``plans design --json`` (its ``scene`` the scene's text)."""
     from plans.io import loads_toml
     from plans.synthesis.cli import check_scene, results
-    from plans.synthesis.design import design
     from plans.synthesis.model import task_from_dict
     from plans.synthesis.scene import scene_text
+    from plans.synthesis.solution import solve_task
 
-    d = design(task_from_dict(loads_toml(text, name), name))
+    d = solve_task(task_from_dict(loads_toml(text, name), name)).design
     scene = scene_text(d)
     check_scene(scene, name)
     return json.dumps({"scene": scene, "data": _jsonable(tomllib.loads(scene)), "design": results(d, scene)},

@@ -147,6 +147,7 @@ class _Together:
         self.vb, self.ab = plans_of(snap, mv, ma, _PERFECT)
         self._columns: list[tuple] | None = None
         self._plan_cols: dict[str, tuple] = {}
+        self._protocols: dict[tuple[str, int], tuple[Step, ...]] = {}  # written when first read
 
     def position(self, k: int) -> PositionPlans:
         return PositionPlans(float(self.phi[k]), source=self, k=k)
@@ -211,7 +212,14 @@ class _Together:
                     degenerate=degenerate)
 
     def protocol(self, kind: str, k: int) -> tuple[Step, ...]:
-        """The steps of one plan at one position, sentences written (built again for it alone)."""
+        """The steps of one plan at one position, sentences written (built again for it alone),
+        once: kept here, where the plans were built."""
+        got = self._protocols.get((kind, k))
+        if got is None:
+            got = self._protocols[(kind, k)] = self._protocol(kind, k)
+        return got
+
+    def _protocol(self, kind: str, k: int) -> tuple[Step, ...]:
         kk = self.ks if type(self.ks) is int else int(np.arange(self.kin.n)[self.ks][k])
         vb, ab = plans_of(Scheme(self.kin, kk), self.mv, self.ma, _PERFECT, protocol=True)
         b = vb if kind == "velocity" else ab
@@ -221,16 +229,16 @@ class _Together:
 
 
 class _Protocol(Sequence[Step]):
-    """A plan's steps, written when first read (a sheet or a printout asks; a table never does)."""
+    """A plan's steps, written when first read (a sheet or a printout asks; a table never does):
+    an unchanging view of the steps its construction (:class:`_Together`) writes once and keeps."""
+
+    __slots__ = ("_source", "_kind", "_k")
 
     def __init__(self, source: _Together, kind: str, k: int) -> None:
         self._source, self._kind, self._k = source, kind, k
-        self._steps: tuple[Step, ...] | None = None
 
     def _get(self) -> tuple[Step, ...]:
-        if self._steps is None:
-            self._steps = self._source.protocol(self._kind, self._k)
-        return self._steps
+        return self._source.protocol(self._kind, self._k)
 
     def __getitem__(self, i: Any) -> Any:
         return self._get()[i]
