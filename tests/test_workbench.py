@@ -275,6 +275,9 @@ def test_page_builds_edits_saves_and_reloads_a_four_bar(browser, server):
     pg.wait_for_selector("body[data-drag='done']")
     dx = float(pg.input_value("#f-points\\.D-0"))
     assert 300 < dx < 360
+    # the structure box lists the pivot where it was dragged to
+    shown_x = pg.input_value("#f-points\\.D-0")
+    assert pg.text_content("[data-item='pivot-D'] span").startswith(f"D = [{shown_x}, ")
 
     # the force polygons of the current position: the coupler's weight m2·g straight down at μF
     pg.click("#show-forces")

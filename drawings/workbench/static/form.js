@@ -2,7 +2,7 @@
 // beside the row they name.
 import {$, S, clear, h} from "./dom.js";
 import {edit} from "./solve.js";
-import {structure} from "./structure.js";
+import {refreshStructure, structure} from "./structure.js";
 import {t, titleOf, un} from "./words.js";
 
 const UNITS = {mass: "kg", inertia: "kg·m²", omega_rpm: "rpm", omega: "rad/s", resisting: "N or N·m",
@@ -103,6 +103,7 @@ function row(fs, label, keys, values, choices, text) {
   h(r, "span", {class: "err", id: "e-" + id});
 }
 export function refresh() {  // the form's values from the data (a dragged pivot), the focused field left alone
+  refreshStructure();
   for (const e of document.querySelectorAll("#form input[data-key]")) {
     if (e === document.activeElement) continue;
     const v = valueAt(e.dataset.key.split(".")), i = Number(e.id.slice(e.id.lastIndexOf("-") + 1));

@@ -32,7 +32,7 @@ export function structure(f) {
   // the fixed pivots: [points]
   part(box, t("pivots"));
   const pts = D.points && typeof D.points === "object" ? D.points : {};
-  for (const nm of Object.keys(pts)) item(box, nm + " = [" + [].concat(pts[nm]).join(", ") + "]", {delete: [["points", nm]]}, "pivot-" + nm);
+  for (const nm of Object.keys(pts)) item(box, pivotText(nm, pts[nm]), {delete: [["points", nm]]}, "pivot-" + nm);
   adder(box, "pivot", [["name", "O"], ["x", "0"], ["y", "0"]], (v) => {
     if (!v.name || !isNum(v.x) || !isNum(v.y)) return null;
     return {put: [[["points", v.name], [number(v.x), number(v.y)]]]};
@@ -152,6 +152,17 @@ export function structure(f) {
 }
 
 function part(box, title) { h(box, "h4", {}, title); }
+
+const pivotText = (nm, xy) => nm + " = [" + [].concat(xy).join(", ") + "]";
+
+// The pivots' coordinates as the data has them now (a pivot dragged), the rest left as it is.
+export function refreshStructure() {
+  const pts = S.data && S.data.points && typeof S.data.points === "object" ? S.data.points : {};
+  for (const nm of Object.keys(pts)) {
+    const e = document.querySelector("#structure [data-item='pivot-" + CSS.escape(nm) + "'] span");
+    if (e) e.textContent = pivotText(nm, pts[nm]);
+  }
+}
 
 function bad(id, message) {
   const e = $("e-s-" + id);
