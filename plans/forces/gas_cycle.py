@@ -80,9 +80,6 @@ def ignition(scene: Scene, gl: GasLoad) -> float:
     from plans.kinematics.exact import solve  # late import: only four-stroke diagrams need it
 
     assert gl.fires is not None
-    key = ("ignition", gl.joint, gl.link, gl.fires)
-    if key in scene.memo:
-        return scene.memo[key]
     joint = next(j for j in scene.joints if j.name == gl.joint)
     guide = joint.guide
     assert guide is not None
@@ -111,8 +108,7 @@ def ignition(scene: Scene, gl: GasLoad) -> float:
     except ConstructionError as exc:
         raise InputError(f"a four-stroke diagram needs the crank to turn a full revolution ({exc})",
                          file=scene.path, field="loads.gas") from None
-    out = scene.memo[key] = 0.5 * (lo + hi)
-    return out
+    return 0.5 * (lo + hi)
 
 
 def piston_stroke(scene: Scene, joint_name: str, link: int) -> tuple[float, float]:
@@ -120,9 +116,6 @@ def piston_stroke(scene: Scene, joint_name: str, link: int) -> tuple[float, floa
     revolution, by dense sampling of the exact positions (relative error ~1e-7)."""
     from plans.kinematics.exact import solve  # late import: only indicator diagrams need it
 
-    key = ("stroke", joint_name, link)
-    if key in scene.memo:
-        return scene.memo[key]
     grid = np.linspace(0.0, 360.0, 3601)  # the extremes are those of this 0.1° grid
     try:
         # every tenth grid angle first, then the grid around the coarse extremes only
@@ -138,8 +131,7 @@ def piston_stroke(scene: Scene, joint_name: str, link: int) -> tuple[float, floa
         raise InputError(f"an indicator diagram needs the crank to turn a full revolution ({exc})",
                          file=scene.path, field="loads.gas") from None
     travel = piston_travel(scene, kin, joint_name, link)
-    out = scene.memo[key] = (float(travel.min()), float(travel.max() - travel.min()))
-    return out
+    return float(travel.min()), float(travel.max() - travel.min())
 
 
 def extreme_indices(t: R) -> list[int]:
@@ -205,7 +197,8 @@ def stroke_index(scene: Scene, kin: Any, gl: GasLoad, down: Any) -> Any:
     """Which of the four strokes each position is in (0 intake, 1 compression, 2 expansion,
     3 exhaust): the revolution after the ignition's outer dead centre is expansion (toward
     the crank) then exhaust, the next intake then compression."""
-    psi = np.mod(np.asarray(kin.phi_deg, float) - ignition(scene, gl), 720.0)
+    assert gl.ignition is not None, "a four-stroke load's ignition is found when the loads are read"
+    psi = np.mod(np.asarray(kin.phi_deg, float) - gl.ignition, 720.0)
     # a dead centre met to round-off is the one the angle names: 360 begins the intake, 720 the expansion
     psi = np.where(np.abs(psi - 360.0) < 1e-7, 360.0, np.where(psi > 720.0 - 1e-7, 0.0, psi))
     first = psi < 360.0

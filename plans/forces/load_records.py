@@ -34,6 +34,8 @@ class GasLoad:
     outer: float = 0.0  # travel coordinate of the outer dead centre (diagram only), m
     stroke: float = 0.0  # H, m (diagram only)
     fires: float | None = None  # four-stroke: crank angle given for the ignition, deg
+    #: four-stroke: the outer dead centre nearest to ``fires``, deg (found when the loads are read)
+    ignition: float | None = None
     phi_table: tuple[R, R] | None = None  # pressure over the cycle's crank angle (deg, Pa)
     period: float = 360.0  # the cycle of phi_table, deg
 

@@ -73,6 +73,7 @@ positive.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -119,12 +120,10 @@ _LOAD_KEYS = {"gravity", "inertia", "lever_turn", "balancing", "mass_rule", "gas
 
 
 def parse_loads(scene: Scene) -> Loads:
-    """Read ``[loads]`` (and the links' masses) into a :class:`Loads`; InputError on anything
-    wrong.  Read once per scene (a Loads is frozen)."""
-    done = scene.memo.get("loads")
-    if done is None:
-        done = scene.memo["loads"] = _parse_loads(scene)
-    return done
+    """The scene's ``[loads]`` (and the links' masses) as a :class:`Loads`: the record the
+    scene holds once solved (``plans.solve`` reads it once, :mod:`plans.scene.tables`), else
+    read now; InputError on anything wrong."""
+    return scene.loads if scene.loads is not None else _parse_loads(scene)
 
 
 def _parse_loads(scene: Scene) -> Loads:
@@ -334,9 +333,10 @@ def _parse_loads(scene: Scene) -> Loads:
             fires = r.value(body["fires_deg"], f"{where}fires_deg", limit=1e6)
         elif diagram and set(diagram) == set(FOUR_STROKES):
             fires = 360.0  # the course's cycle: intake from 0°, ignition at 360°
-        gas.append(GasLoad(link=lid, joint=pj[0].name, area=area, pressure=pressure, diagram=diagram,
-                           strokes=tuple(strokes), toward_pivot=direction == "toward_pivot",
-                           name=label(body, where, f"P{lid}"), outer=outer, stroke=stroke_len, fires=fires))
+        gl = GasLoad(link=lid, joint=pj[0].name, area=area, pressure=pressure, diagram=diagram,
+                     strokes=tuple(strokes), toward_pivot=direction == "toward_pivot",
+                     name=label(body, where, f"P{lid}"), outer=outer, stroke=stroke_len, fires=fires)
+        gas.append(gl if fires is None else replace(gl, ignition=ignition(scene, gl)))
 
     # ---- external forces and moments
     forces = []

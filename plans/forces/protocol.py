@@ -11,12 +11,24 @@ equation with the arms on the turned plan.  The same steps feed ``plans solve
 from __future__ import annotations
 
 from plans.forces.lever import LeverAnalysis, lever_plan
-from plans.forces.moment_steps import Arm, moment_equation, moment_terms
 from plans.forces.polygons import ForceAnalysis, GroupForces, force_polygons
 from plans.kinematics.plan import Plan, Step
 from plans.lines import cross
-from plans.phrases import phrase
+from plans.phrases import Phrase, phrase
 from plans.records import frozen
+from plans.tolerances import EXACT_ZERO_REL
+
+
+@frozen
+class Arm:
+    """A known force's arm in a moment equation, on the scheme (m): the perpendicular from the
+    point the moments are taken about (``about``) to the force's line, met at ``foot``; the
+    force acts at ``at``."""
+
+    label: str
+    about: complex
+    foot: complex
+    at: complex
 
 
 @frozen
@@ -28,6 +40,43 @@ class ForceStep:
     plan: str
     step: Step
     arms: tuple[Arm, ...] = ()
+
+
+def _moment_terms(forces, moments, P: complex, k: int, mu_l: float) -> tuple[list[Phrase], float, list[Arm]]:
+    """Signed moments of known forces (arms in mm on the scheme and in m) and couples about
+    P, and each force's arm where it has one."""
+    terms, total, arms = [], 0.0, []
+    for f in forces:
+        F = complex(f.F[k])
+        if abs(F) == 0:
+            continue
+        r = complex(f.r[k])
+        m = cross(r - P, F)
+        h = abs(m) / abs(F)
+        if h <= EXACT_ZERO_REL * max(abs(r - P), 1e-300):  # passes through P up to round-off
+            m, h = 0.0, 0.0
+        else:
+            d = F / abs(F)
+            arms.append(Arm(f.label, P, r + d * ((P - r) * d.conjugate()).real, r))
+        terms.append(phrase("m_term_force", sign="+" if m >= 0 else "−", label=f.label, F=abs(F), mm=h * mu_l, h=h,
+                            M=abs(F) * h))
+        total += m
+    for mo in moments:
+        M = float(mo.M[k])
+        if M == 0:
+            continue
+        terms.append(phrase("m_term_couple", sign="+" if M >= 0 else "−", label=mo.label, M=abs(M)))
+        total += M
+    return terms, total, arms
+
+
+def _equation(op: str, inputs: tuple[str, ...], output: str, name: str,
+              known: tuple[list[Phrase], float, list[Arm]], unknown: Phrase) -> tuple[Step, tuple[Arm, ...]]:
+    """The step of one moment equation (the known moments and what they give), with the
+    known forces' arms."""
+    terms, total, arms = known
+    return Step.of(op, inputs, output, phrase("m_equation", name=name, known=terms or phrase("m_zero"),
+                                              total=total, unknown=unknown)), tuple(arms)
 
 
 def _group_steps(fa: ForceAnalysis, gf: GroupForces, k: int, mu_l: float) -> list[tuple[Step, tuple[Arm, ...]]]:
@@ -45,37 +94,37 @@ def _group_steps(fa: ForceAnalysis, gf: GroupForces, k: int, mu_l: float) -> lis
     if g.kind in ("RRR", "RRP"):
         B = about(p2, i)
         A = about(p1, i)
-        known = moment_terms(gf.loads_i, gf.moments_i, B, k, mu_l)
+        known = _moment_terms(gf.loads_i, gf.moments_i, B, k, mu_l)
         assert r1.tau is not None
-        out.append(moment_equation("moment", (p2,), f"{n1}^τ", f"ΣM_{p2}({i})", known, phrase(
+        out.append(_equation("moment", (p2,), f"{n1}^τ", f"ΣM_{p2}({i})", known, phrase(
             "m_tau", n=n1, A=p1, B=p2, l=abs(B - A), tau=float(r1.tau[k]))))
-        known = moment_terms(gf.loads_j, gf.moments_j, B, k, mu_l)
+        known = _moment_terms(gf.loads_j, gf.moments_j, B, k, mu_l)
         if g.kind == "RRR":
             assert r3.tau is not None
             Cc = about(p3, j)
-            out.append(moment_equation("moment", (p2,), f"{n3}^τ", f"ΣM_{p2}({j})", known, phrase(
+            out.append(_equation("moment", (p2,), f"{n3}^τ", f"ΣM_{p2}({j})", known, phrase(
                 "m_tau", n=n3, A=p3, B=p2, l=abs(B - Cc), tau=float(r3.tau[k]))))
         else:
-            out.append(moment_equation("moment", (p2,), n3, f"ΣM_{p2}({j})", known, phrase(
+            out.append(_equation("moment", (p2,), n3, f"ΣM_{p2}({j})", known, phrase(
                 "m_guide", M=float(r3.M[k]), n=n3, mm=abs(float(r3.offset[k])) * mu_l, B=p2)))
     elif g.kind == "RPR":
         A = about(p1, i)
         Cc = about(p3, j)
-        known = moment_terms(gf.loads_i, gf.moments_i, A, k, mu_l)
-        out.append(moment_equation("moment", (p1,), n2, f"ΣM_{p1}({i})", known,
+        known = _moment_terms(gf.loads_i, gf.moments_i, A, k, mu_l)
+        out.append(_equation("moment", (p1,), n2, f"ΣM_{p1}({i})", known,
                              phrase("m_slot_couple", M=float(r2.M[k]))))
-        known = moment_terms(gf.loads_j, gf.moments_j, Cc, k, mu_l)
+        known = _moment_terms(gf.loads_j, gf.moments_j, Cc, k, mu_l)
         slot = (phrase("m_slot", n=n2, mm=abs(cross(A - Cc, complex(1j * r2.guide[k]))) * mu_l,
                        F=abs(complex(r2.F[k]))) if r2.guide is not None else phrase("m_name", n=n2))
-        out.append(moment_equation("moment", (p3,), n2, f"ΣM_{p3}({j})", known, slot))
+        out.append(_equation("moment", (p3,), n2, f"ΣM_{p3}({j})", known, slot))
     else:  # PRP, RPP: the couples of the prismatic pairs
         P = about(p2 if g.kind == "PRP" else p1, i)
-        known = moment_terms(gf.loads_i, gf.moments_i, P, k, mu_l)
+        known = _moment_terms(gf.loads_i, gf.moments_i, P, k, mu_l)
         first = r1 if g.kind == "PRP" else r2
-        out.append(moment_equation("moment", (), first.name(scene.fij), f"ΣM({i})", known,
+        out.append(_equation("moment", (), first.name(scene.fij), f"ΣM({i})", known,
                              phrase("m_couple_of", n=first.name(scene.fij), M=float(first.M[k]))))
-        known = moment_terms(gf.loads_j, gf.moments_j, P, k, mu_l)
-        out.append(moment_equation("moment", (), n3, f"ΣM({j})", known,
+        known = _moment_terms(gf.loads_j, gf.moments_j, P, k, mu_l)
+        out.append(_equation("moment", (), n3, f"ΣM({j})", known,
                              phrase("m_couple_of", n=n3, M=float(r3.M[k]))))
     return out
 
@@ -84,13 +133,13 @@ def _crank_steps(fa: ForceAnalysis, k: int, mu_l: float) -> list[tuple[Step, tup
     scene, kin = fa.scene, fa.kin
     c = fa.crank
     O = complex(kin.point(scene.driver.pivot, c.link)[0][k])
-    known = moment_terms(c.loads, c.moments, O, k, mu_l)
+    known = _moment_terms(c.loads, c.moments, O, k, mu_l)
     if c.kind == "force":
         l = abs(complex(c.r_point[k]) - O)
         what = phrase("m_crank_force", pt=c.point, mm=l * mu_l, l=l, F=float(fa.balancing[k]))
     else:
         what = phrase("m_crank_moment", M=float(fa.balancing[k]))
-    return [moment_equation("moment", (scene.driver.pivot,), "F_bal" if c.kind == "force" else "M_bal",
+    return [_equation("moment", (scene.driver.pivot,), "F_bal" if c.kind == "force" else "M_bal",
                       f"ΣM_{scene.driver.pivot}({c.link})", known, what)]
 
 
@@ -125,7 +174,7 @@ def force_steps(fa: ForceAnalysis, lv: LeverAnalysis, k: int) -> tuple[ForceStep
         if hasattr(gf, "S"):  # class III: the leashes' and the group's moments about Assur's point
             from plans.forces.triad_polygon import triad_steps
 
-            out += [ForceStep(name, s, arms) for s, arms in triad_steps(fa, gf, k, mu_l)]  # type: ignore[arg-type]
+            out += [ForceStep(name, s, arms) for s, arms in triad_steps(fa, gf, k, mu_l, _equation, _moment_terms)]  # type: ignore[arg-type]
         else:
             out += [ForceStep(name, s, arms) for s, arms in _group_steps(fa, gf, k, mu_l)]
         out += [ForceStep(name, s) for s in poly.plan.steps]

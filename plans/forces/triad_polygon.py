@@ -11,17 +11,16 @@ from __future__ import annotations
 
 from typing import Any
 
-from plans.forces.drawn_polygon import ForcePolygon, Poly
 from plans.forces.loads import AppliedForce, AppliedMoment
-from plans.forces.moment_steps import moment_equation, moment_terms
-from plans.forces.reactions import ForceAnalysis
 from plans.forces.shared import mu_force
 from plans.forces.triad import TriadForces
 from plans.kinematics.plan import Step
 from plans.phrases import phrase
 
 
-def triad_polygon(fa: ForceAnalysis, gf: TriadForces, k: int) -> ForcePolygon:
+def triad_polygon(fa: Any, gf: TriadForces, k: int, Poly: Any, ForcePolygon: Any) -> Any:
+    """The group's polygon at position k (``Poly``: the polygons' head-to-tail builder, and
+    ``ForcePolygon`` their record, passed by the caller)."""
     scene = fa.scene
     g = gf.group
     phi = float(fa.kin.phi_deg[k])
@@ -70,9 +69,11 @@ def triad_polygon(fa: ForceAnalysis, gf: TriadForces, k: int) -> ForcePolygon:
     return ForcePolygon(g.name, g.kind, poly.plan(phi))
 
 
-def triad_steps(fa: ForceAnalysis, gf: TriadForces, k: int, mu_l: float) -> list[tuple[Step, tuple[Any, ...]]]:
+def triad_steps(fa: Any, gf: TriadForces, k: int, mu_l: float, _equation: Any,
+                _moment_terms: Any) -> list[tuple[Step, tuple[Any, ...]]]:
     """The moment equations: each leash's about its inner pair (its R^τ), then the whole
-    group's about Assur's point S (the third leash's R^n)."""
+    group's about Assur's point S (the third leash's R^n); the protocol's writers of a moment
+    equation and of its terms are passed by the caller."""
     scene, g = fa.scene, gf.group
     i, j, m = gf.leashes(k)
     outer = gf.reactions[:3]
@@ -83,25 +84,25 @@ def triad_steps(fa: ForceAnalysis, gf: TriadForces, k: int, mu_l: float) -> list
     for x, (o, d) in enumerate(g.joints):
         rc = outer[x]
         P = complex(fa.kin.point(d.point, g.links[1 + x])[0][k])
-        known = moment_terms(gf.loads[1 + x], gf.moments[1 + x], P, k, mu_l)
+        known = _moment_terms(gf.loads[1 + x], gf.moments[1 + x], P, k, mu_l)
         if d.kind == "P":  # a block in the base's slot: its loads along the slot give R^τ
             out.append((Step.of("sum", (), f"{names[x]}^τ", phrase(
                 "f_block_tau", n=names[x], k=g.links[1 + x], j=g.links[0], tau=float(rc.tau[k]))), ()))
             taus.append(AppliedForce(f"{names[x]}^τ", rc.on, o.point, rc.r, rc.r * 0, rc.tau * rc.e_tau, "reaction"))
             continue
         if gf.slider(x):  # the guide's couple on the slider
-            out.append(moment_equation("moment", (d.point,), names[x], f"ΣM_{d.point}({g.links[1 + x]})", known,
+            out.append(_equation("moment", (d.point,), names[x], f"ΣM_{d.point}({g.links[1 + x]})", known,
                                  phrase("m_couple_of", n=names[x], M=float(rc.M[k]))))
             couples.append(AppliedMoment(f"M{names[x][1:]}", rc.on, rc.M, "reaction"))
             continue
         Q = complex(rc.r[k])
-        out.append(moment_equation("moment", (d.point,), f"{names[x]}^τ", f"ΣM_{d.point}({g.links[1 + x]})", known,
+        out.append(_equation("moment", (d.point,), f"{names[x]}^τ", f"ΣM_{d.point}({g.links[1 + x]})", known,
                              phrase("m_tau", n=names[x], A=o.point, B=d.point, l=abs(P - Q), tau=float(rc.tau[k]))))
         taus.append(AppliedForce(f"{names[x]}^τ", rc.on, o.point, rc.r, rc.r * 0, rc.tau * rc.e_tau, "reaction"))
     S = complex(gf.S[k])
     loads = [f for fs in gf.loads for f in fs] + taus
     moments = [mo for ms in gf.moments for mo in ms] + couples
-    known = moment_terms(loads, moments, S, k, mu_l)
+    known = _moment_terms(loads, moments, S, k, mu_l)
     rm = outer[m]
     um = complex(gf.axes[m][k])
     h = abs(((complex(rm.r[k]) - S).conjugate() * um).imag)
@@ -120,6 +121,6 @@ def triad_steps(fa: ForceAnalysis, gf: TriadForces, k: int, mu_l: float) -> list
             return names[x] if gf.slider(x) else f"{names[x]}^n"
         what = phrase("m_triad_ng", ax1=axis(i), ax2=axis(j), ax3=axis(m), n1=name(i), n2=name(j), n=name(m),
                       mm=h * mu_l, h=h, N=float(gf.normal[m][k]))
-    out.append(moment_equation("moment", ("S",), names[m] if gf.slider(m) else f"{names[m]}^n", f"ΣM_S({g.name})",
+    out.append(_equation("moment", ("S",), names[m] if gf.slider(m) else f"{names[m]}^n", f"ΣM_S({g.name})",
                          known, what))
     return out

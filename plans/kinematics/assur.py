@@ -7,13 +7,14 @@ of the structure analysis and holds the result.
 
 from __future__ import annotations
 
+import cmath
 import math
 from typing import Any
 
 import numpy as np
 
 from plans.errors import Indeterminate, Locked, NotAssemblable
-from plans.kinematics.context import Context, Motion, joint_name, place_link, point_at, slider_turn
+from plans.kinematics.context import Context, Motion, place_link, point_at
 from plans.kinematics.structure import Group, Structure, TriadGroup
 from plans.lines import cross
 from plans.scene.model import Joint, Scene
@@ -149,6 +150,23 @@ def _branch_hint(g: Group) -> str:
             f"{-g.branch:+d} selects the other of two assemblies only where two exist)")
 
 
+_NAMES: dict[Joint, str] = {}
+
+
+def slide_name(jt: Joint) -> str:
+    """A P joint's name (formatted once)."""
+    nm = _NAMES.get(jt)
+    if nm is None:
+        nm = _NAMES[jt] = jt.name
+    return nm
+
+
+def slider_turn(jt: Joint) -> complex:
+    """e^{i(α − α_s)}: a slider's rotation relative to the link carrying its guide."""
+    assert jt.guide is not None
+    return cmath.exp(1j * (jt.guide.angle - jt.slider_angle))
+
+
 def _rotation_of(ctx: Context, q: int, turn: complex) -> C:
     """Rotation of a link that keeps its angle to link q."""
     if q == ctx.frame:
@@ -262,7 +280,7 @@ def _rrp(ctx: Context, g: Group, k: tuple) -> None:
             aB = aBq + cor + sdd * u
     _rates(ctx, mi, P1, vP1, aP1, wi, ei)
     _rates(ctx, mj, B, vB, aB, mq.omega, mq.eps)
-    ctx.slides[joint_name(j3)] = (sd, sdd)
+    ctx.slides[slide_name(j3)] = (sd, sdd)
 
 
 def _k_rpr(scene: Scene, g: Group) -> tuple:
@@ -315,7 +333,7 @@ def _rpr(ctx: Context, g: Group, k: tuple) -> None:
         ej, sdd = sys2(aA - aC + wj * wj * d - cor)
     _rates(ctx, mj, Cq, vC, aC, wj, ej)
     _rates(ctx, mi, A, vA, aA, wj, ej)
-    ctx.slides[joint_name(j2)] = (sd, sdd)
+    ctx.slides[slide_name(j2)] = (sd, sdd)
 
 
 def _k_prp(scene: Scene, g: Group) -> tuple:
@@ -355,8 +373,8 @@ def _prp(ctx: Context, g: Group, k: tuple) -> None:
         aB = aBp + k1 + sdd1 * u1
     _rates(ctx, mi, B, vB, aB, mp.omega, mp.eps)
     _rates(ctx, mj, B, vB, aB, mq.omega, mq.eps)
-    ctx.slides[joint_name(j1)] = (sd1, sdd1)
-    ctx.slides[joint_name(j3)] = (sd3, sdd3)
+    ctx.slides[slide_name(j1)] = (sd1, sdd1)
+    ctx.slides[slide_name(j3)] = (sd3, sdd3)
 
 
 def _k_rpp(scene: Scene, g: Group) -> tuple:
@@ -408,8 +426,8 @@ def _rpp(ctx: Context, g: Group, k: tuple) -> None:
             aAj = aAq + k3 + sdd3 * u3
     _rates(ctx, ctx.motion[j], A, vAj, aAj, mq.omega, mq.eps)
     _rates(ctx, mi, A, vA, aA, mq.omega, mq.eps)
-    ctx.slides[joint_name(j2)] = (sd2, sdd2)
-    ctx.slides[joint_name(j3)] = (sd3, sdd3)
+    ctx.slides[slide_name(j2)] = (sd2, sdd2)
+    ctx.slides[slide_name(j3)] = (sd3, sdd3)
 
 
 _SOLVERS = {"RRR": _rrr, "RRP": _rrp, "RPR": _rpr, "PRP": _prp, "RPP": _rpp}

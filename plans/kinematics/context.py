@@ -17,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from plans.scene.model import Joint, Scene
+from plans.scene.model import Scene
 
 # numpy arrays over positions (or numbers at one position); typed loosely because numpy's
 # operator stubs do not follow Optional fields that the order of analysis fills in.
@@ -151,20 +151,3 @@ def place_link(ctx: Context, link: int, rot: C, anchor: C, z: complex) -> Motion
     m = Motion(rot, anchor - rot * z if z else anchor)
     ctx.motion[link] = m
     return m
-
-
-_NAMES: dict[Joint, str] = {}
-
-
-def joint_name(jt: Joint) -> str:
-    """A P joint's name (formatted once)."""
-    nm = _NAMES.get(jt)
-    if nm is None:
-        nm = _NAMES[jt] = jt.name
-    return nm
-
-
-def slider_turn(jt: Joint) -> complex:
-    """e^{i(α − α_s)}: a slider's rotation relative to the link carrying its guide."""
-    assert jt.guide is not None
-    return cmath.exp(1j * (jt.guide.angle - jt.slider_angle))

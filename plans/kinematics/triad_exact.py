@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 
 from plans.errors import Locked, NotAssemblable
-from plans.kinematics.context import Context, Motion, joint_name, place_link, point_at, slider_turn
+from plans.kinematics.context import Context, Motion, place_link, point_at
 from plans.kinematics.structure import Structure, TriadGroup, analyse
 from plans.kinematics.triad import SpecialPosition, Triad, determinant, place, rates, special_kind
 from plans.scene.model import Scene
@@ -103,8 +103,8 @@ def _track(solve: Callable[..., Any], scene: Scene, st: Structure, g: TriadGroup
     return done
 
 
-def _special_between(solve: Callable[..., Any], scene: Scene, before: Structure, g: TriadGroup, t: Triad, outer_of, lo: float, hi: float,
-                     state: tuple[complex, float], sense: float = 0.0) -> None:
+def _special_between(solve: Callable[..., Any], scene: Scene, before: Structure, g: TriadGroup, t: Triad, outer_of,
+                     lo: float, hi: float, state: tuple[complex, float], sense: float = 0.0) -> None:
     """Where the group cannot be carried from ``lo`` to ``hi``: bisect to the last angle it
     reaches; if its leashes' axes pass through one point there (or are parallel), that is
     the group's special position (a dead position of the triad): say so, with the angle."""
@@ -225,7 +225,7 @@ def _slider(ctx: Context, leash: int, o: Any, zp: complex, P: Any, rD: Any, vD: 
     """A leash that slides on a guide of the frame: it keeps its angle, its pin is the base's
     inner pair; its slide ṡ, s̈ along the guide."""
     n = len(P)
-    turn = slider_turn(o)
+    turn = _turn(o)
     m = place_link(ctx, leash, out(np.full(n, turn)), out(P), zp)
     if ctx.order < 1:
         return
@@ -237,14 +237,14 @@ def _slider(ctx: Context, leash: int, o: Any, zp: complex, P: Any, rD: Any, vD: 
                None if aP is None else out(np.zeros(n)))
     sd = (vP * np.conj(g)).real
     sdd = None if aP is None else (aP * np.conj(g)).real
-    ctx.slides[joint_name(o)] = (out(sd), None if sdd is None else out(sdd))
+    ctx.slides[o.name] = (out(sd), None if sdd is None else out(sdd))
 
 
 def _block(ctx: Context, leash: int, i: Any, zq: complex, rot: Any, Q: Any, vQ: Any, aQ: Any, rD: Any, vD: Any,
            aD: Any, w: Any, e: Any, out: Any) -> None:
     """A block pinned at Q, sliding in a slot of the base: it turns with the base; its slide
     along the slot (ṡ, s̈) relative to the base's point under the pin."""
-    m = place_link(ctx, leash, out(rot * slider_turn(i)), out(Q), zq)
+    m = place_link(ctx, leash, out(rot * _turn(i)), out(Q), zq)
     if ctx.order < 1:
         return
     _set_rates(ctx, m, out(Q), out(vQ), None if aQ is None else out(aQ), out(w), None if aQ is None else out(e))
@@ -256,7 +256,12 @@ def _block(ctx: Context, leash: int, i: Any, zq: complex, rot: Any, Q: Any, vQ: 
     if aQ is not None:
         a_rel = aQ - (aD + (1j * e - w * w) * arm) - 2j * w * v_rel
         sdd = (a_rel * np.conj(s)).real
-    ctx.slides[joint_name(i)] = (out(sd), None if sdd is None else out(sdd))
+    ctx.slides[i.name] = (out(sd), None if sdd is None else out(sdd))
+
+
+def _turn(jt: Any) -> complex:
+    """e^{i(α − α_s)}: a slider's rotation relative to the link carrying its guide."""
+    return cmath.exp(1j * (jt.guide.angle - jt.slider_angle))
 
 
 def _set_rates(ctx: Context, m: Motion, anchor: Any, v: Any, a: Any, omega: Any, eps: Any) -> None:
