@@ -16,12 +16,12 @@ NOTE_KINDS = ("linkage", "gears", "cam", "engine")
 NOTE_DPI = 150.0
 
 
-def _jsonable(x: Any) -> Any:
+def jsonable(x: Any) -> Any:
     """A parsed TOML table as JSON can write it (a date as its text, NaN as null)."""
     if isinstance(x, dict):
-        return {str(k): _jsonable(v) for k, v in x.items()}
+        return {str(k): jsonable(v) for k, v in x.items()}
     if isinstance(x, list | tuple):
-        return [_jsonable(v) for v in x]
+        return [jsonable(v) for v in x]
     if isinstance(x, float) and x != x:
         return None
     if isinstance(x, str | int | float | bool) or x is None:
@@ -41,7 +41,7 @@ def design_json(text: str, name: str) -> bytes:
     d = solve_task(task_from_dict(loads_toml(text, name), name)).design
     scene = scene_text(d)
     check_scene(scene, name)
-    return json.dumps({"scene": scene, "data": _jsonable(tomllib.loads(scene)), "design": results(d, scene)},
+    return json.dumps({"scene": scene, "data": jsonable(tomllib.loads(scene)), "design": results(d, scene)},
                       ensure_ascii=False,
                       allow_nan=False, separators=(",", ":")).encode("utf-8")
 

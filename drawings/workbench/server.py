@@ -37,7 +37,7 @@ from starlette.routing import Route
 
 from plans.errors import ConstructionError, InputError, PlansError, one_line
 
-from .outputs import _jsonable, demo_page, design_json, draw_file, note_file
+from .outputs import demo_page, design_json, draw_file, jsonable, note_file
 
 #: Largest request body and largest file read or written (a scene is a few kilobytes).
 MAX_BODY = 1 << 20
@@ -357,7 +357,7 @@ def _parsed(text: str, name: str) -> dict[str, Any]:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         return {"text": text, "data": None, "kind": None, "error": f"{name}: not TOML: {exc}"}
-    return {"text": text, "data": _jsonable(data), "kind": _kind(data)}
+    return {"text": text, "data": jsonable(data), "kind": _kind(data)}
 
 
 def _samples_dir() -> Path | None:
@@ -412,7 +412,7 @@ def _edit_solve(text: str, sets: list, ops: dict[str, list], name: str, steps: b
     except PlansError:
         return _dumps(_parsed(new, name))  # the text as it is, its error said
     kind = _kind(data)
-    out = _dumps({"text": new, "data": _jsonable(data), "kind": kind})
+    out = _dumps({"text": new, "data": jsonable(data), "kind": kind})
     if kind != "linkage":
         return out
     try:
