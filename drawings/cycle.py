@@ -308,6 +308,10 @@ def _omega_panel(d: Dynamics, lang: str) -> Panel:
     return plot_panel("dyn-w", "dynamics", tr("w", lang), rec, scale, note, lang=lang)
 
 
+#: Each diagram of the cycle's dynamics alone, by its letter: M, A, T, I, W and ω (``w``).
+DYNAMICS_DIAGRAMS = {"M": _m_panel, "A": _a_panel, "T": _t_panel, "I": _i_panel, "W": _w_panel, "w": _omega_panel}
+
+
 def _fly_table(d: Dynamics, lang: str) -> Panel:
     fw = d.flywheel
     ex = fw.inertia_exact
@@ -357,11 +361,12 @@ def table_panels(tables: Sequence[CycleTable], lang: str, prefix: str,
 
 def indicator_panels(d: Dynamics, lang: str) -> list[Panel]:
     """Each cylinder's indicator diagram as given: the pressure against the piston's travel
-    from the outer dead centre, one line per stroke (the working stroke drawn main)."""
-    from plans.forces.loads import ignition, parse_loads
-
+    from the outer dead centre, one line per stroke (the working stroke drawn main), with its
+    ignition where it fires (found when the scene's loads were read)."""
     out = []
-    for k, gl in enumerate(parse_loads(d.scene).gas):
+    loads = d.scene.loads
+    assert loads is not None, "a scene with dynamics holds its [loads]"
+    for k, gl in enumerate(loads.gas):
         if not gl.diagram or gl.stroke <= 0:
             continue
         H_mm = gl.stroke * 1000
@@ -388,8 +393,8 @@ def indicator_panels(d: Dynamics, lang: str) -> list[Panel]:
         scale = (f"μ_s = {fmt(mu_s, 4, lang)} mm/mm (H = {fmt(H_mm, 4, lang)} mm); "
                  f"μ_p = {fmt(mu_p * 1e6, 4, lang)} mm/MPa")
         note = None
-        if gl.fires is not None:
-            note = f"{tr('fires', lang)} = {fmt(ignition(d.scene, gl), 5, lang)}°"
+        if gl.ignition is not None:
+            note = f"{tr('fires', lang)} = {fmt(gl.ignition, 5, lang)}°"
         out.append(plot_panel(f"ind-{k}", "dynamics", f"{tr('indicator', lang)} {gl.name}", rec, scale, note,
                               lang=lang))
     return out
@@ -456,12 +461,12 @@ def _fitting_dynamics(sol: Solution, d: Dynamics, tabs: Sequence[CycleTable], sp
     """The dynamics sheet's panels as they fit the sheet: on a small one the φ axis of the
     diagrams is shortened (240 mm on A1 and A2) and their heights lowered until every
     diagram fits, not refused."""
-    from .sheet import _fits_empty
+    from .sheet import fits_empty
 
     panels = dynamics_panels(d, tabs, spec.language, analogues)
     axis = 240.0
     height = 1.0
-    while not all(_fits_empty(p, spec.format, spec.orientation) for p in panels) and axis > 60.0:
+    while not all(fits_empty(p, spec.format, spec.orientation) for p in panels) and axis > 60.0:
         axis = max(60.0, math.floor(axis * 0.8 / 10.0) * 10.0)
         height = max(0.4, height * 0.85)
         d = sol.dynamics_drawn(axis, height)

@@ -73,6 +73,7 @@ positive.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -80,6 +81,7 @@ from numpy.typing import NDArray
 
 from plans.errors import ConstructionError, InputError
 from plans.forces.shared import unit_vector
+from plans.kinematics.travel import piston_travel, toward_pivot
 from plans.reader import Reader, check_keys, did_you_mean
 from plans.records import frozen
 from plans.scene.model import Scene
@@ -108,6 +110,8 @@ class GasLoad:
     outer: float = 0.0  # travel coordinate of the outer dead centre (diagram only), m
     stroke: float = 0.0  # H, m (diagram only)
     fires: float | None = None  # four-stroke: crank angle given for the ignition, deg
+    #: four-stroke: the outer dead centre nearest to ``fires``, deg (found when the loads are read)
+    ignition: float | None = None
     phi_table: tuple[R, R] | None = None  # pressure over the cycle's crank angle (deg, Pa)
     period: float = 360.0  # the cycle of phi_table, deg
 
@@ -189,12 +193,10 @@ def _cycle_table(r: Reader, rows: Any, field: str, what: str, scale: float = 1.0
 
 
 def parse_loads(scene: Scene) -> Loads:
-    """Read ``[loads]`` (and the links' masses) into a :class:`Loads`; InputError on anything
-    wrong.  Read once per scene (a Loads is frozen)."""
-    done = scene.memo.get("loads")
-    if done is None:
-        done = scene.memo["loads"] = _parse_loads(scene)
-    return done
+    """The scene's ``[loads]`` (and the links' masses) as a :class:`Loads`: the record the
+    scene holds once solved (``plans.solve`` reads it once, :mod:`plans.scene.tables`), else
+    read now; InputError on anything wrong."""
+    return scene.loads if scene.loads is not None else _parse_loads(scene)
 
 
 def _parse_loads(scene: Scene) -> Loads:
@@ -404,9 +406,10 @@ def _parse_loads(scene: Scene) -> Loads:
             fires = r.value(body["fires_deg"], f"{where}fires_deg", limit=1e6)
         elif diagram and set(diagram) == set(FOUR_STROKES):
             fires = 360.0  # the course's cycle: intake from 0°, ignition at 360°
-        gas.append(GasLoad(link=lid, joint=pj[0].name, area=area, pressure=pressure, diagram=diagram,
-                           strokes=tuple(strokes), toward_pivot=direction == "toward_pivot",
-                           name=label(body, where, f"P{lid}"), outer=outer, stroke=stroke_len, fires=fires))
+        gl = GasLoad(link=lid, joint=pj[0].name, area=area, pressure=pressure, diagram=diagram,
+                     strokes=tuple(strokes), toward_pivot=direction == "toward_pivot",
+                     name=label(body, where, f"P{lid}"), outer=outer, stroke=stroke_len, fires=fires)
+        gas.append(gl if fires is None else replace(gl, ignition=ignition(scene, gl)))
 
     # ---- external forces and moments
     forces = []
@@ -553,9 +556,6 @@ def ignition(scene: Scene, gl: GasLoad) -> float:
     from plans.kinematics.exact import solve  # late import: only four-stroke diagrams need it
 
     assert gl.fires is not None
-    key = ("ignition", gl.joint, gl.link, gl.fires)
-    if key in scene.memo:
-        return scene.memo[key]
     joint = next(j for j in scene.joints if j.name == gl.joint)
     guide = joint.guide
     assert guide is not None
@@ -565,11 +565,11 @@ def ignition(scene: Scene, gl: GasLoad) -> float:
         kin = solve(scene, np.asarray(at, float), order=1)
         r, v, _ = kin.point_on(gl.link, z)
         u: Any = guide.direction if guide.link == scene.frame else kin.motion[guide.link].rot * guide.direction
-        return (v * np.conj(_toward_pivot(scene, r, u))).real * np.sign(scene.driver.omega)
+        return (v * np.conj(toward_pivot(scene, r, u))).real * np.sign(scene.driver.omega)
 
     phis = gl.fires + np.linspace(-180.0, 180.0, 361)
     try:
-        t = _travel(scene, solve(scene, phis, order=0), gl.joint, gl.link)
+        t = piston_travel(scene, solve(scene, phis, order=0), gl.joint, gl.link)
         k = int(np.argmin(t))
         lo, hi = float(phis[max(k - 1, 0)]), float(phis[min(k + 1, 360)])
         for _ in range(8):  # 64 samples a step: the bracket where the travel turns shrinks 64 times
@@ -584,8 +584,7 @@ def ignition(scene: Scene, gl: GasLoad) -> float:
     except ConstructionError as exc:
         raise InputError(f"a four-stroke diagram needs the crank to turn a full revolution ({exc})",
                          file=scene.path, field="loads.gas") from None
-    out = scene.memo[key] = 0.5 * (lo + hi)
-    return out
+    return 0.5 * (lo + hi)
 
 
 def _stroke(scene: Scene, joint_name: str, link: int) -> tuple[float, float]:
@@ -593,14 +592,11 @@ def _stroke(scene: Scene, joint_name: str, link: int) -> tuple[float, float]:
     revolution, by dense sampling of the exact positions (relative error ~1e-7)."""
     from plans.kinematics.exact import solve  # late import: only indicator diagrams need it
 
-    key = ("stroke", joint_name, link)
-    if key in scene.memo:
-        return scene.memo[key]
     grid = np.linspace(0.0, 360.0, 3601)  # the extremes are those of this 0.1° grid
     try:
         # every tenth grid angle first, then the grid around the coarse extremes only
         coarse = np.arange(0, 3601, 10)
-        t = _travel(scene, solve(scene, grid[coarse], order=0), joint_name, link)
+        t = piston_travel(scene, solve(scene, grid[coarse], order=0), joint_name, link)
         keep = np.zeros(3601, dtype=bool)  # the grid around the extremes, each index once, in order
         keep[[0, 3600]] = True
         for k in _extreme_indices(t):
@@ -610,9 +606,8 @@ def _stroke(scene: Scene, joint_name: str, link: int) -> tuple[float, float]:
     except ConstructionError as exc:
         raise InputError(f"an indicator diagram needs the crank to turn a full revolution ({exc})",
                          file=scene.path, field="loads.gas") from None
-    travel = _travel(scene, kin, joint_name, link)
-    out = scene.memo[key] = (float(travel.min()), float(travel.max() - travel.min()))
-    return out
+    travel = piston_travel(scene, kin, joint_name, link)
+    return float(travel.min()), float(travel.max() - travel.min())
 
 
 def _extreme_indices(t: R) -> list[int]:
@@ -622,25 +617,6 @@ def _extreme_indices(t: R) -> list[int]:
     keeps many)."""
     slack = float(np.max(np.abs(t[2:] - 2 * t[1:-1] + t[:-2])))
     return [int(k) for k in np.flatnonzero((t <= t.min() + slack) | (t >= t.max() - slack))]
-
-
-def _toward_pivot(scene: Scene, B: C, u: C) -> C:
-    """The guide's unit direction that points from the piston toward the crank pivot."""
-    pivot = scene.frame_points[scene.driver.pivot]
-    sgn = np.sign(((pivot - B) * np.conj(u)).real)
-    return np.where(sgn < 0, -1.0, 1.0) * u
-
-
-def _travel(scene: Scene, kin: Any, joint_name: str, link: int) -> R:
-    """Signed position of the piston along its guide, increasing toward the crank pivot."""
-    joint = next(j for j in scene.joints if j.name == joint_name)
-    assert joint.guide is not None
-    carrier = kin.motion[joint.guide.link]
-    rot = carrier.rot
-    origin = carrier.r0 + rot * joint.guide.origin
-    u = rot * joint.guide.direction
-    B = kin.point(joint.point, link)[0]
-    return ((B - origin) * np.conj(_toward_pivot(scene, B, u))).real
 
 
 # --------------------------------------------------------------------------- loads at positions
@@ -794,7 +770,7 @@ def _gas_force(scene: Scene, kin: Any, gl: GasLoad) -> AppliedForce:
         u = joint.guide.direction
     else:
         u = kin.motion[joint.guide.link].rot * joint.guide.direction
-    e_down = _toward_pivot(scene, r, u)
+    e_down = toward_pivot(scene, r, u)
     # stroke: the sign of the piston's velocity toward the pivot; at a dead centre (v = 0)
     # the acceleration says which stroke begins
     ce = np.conj(e_down)
@@ -813,7 +789,7 @@ def _gas_force(scene: Scene, kin: Any, gl: GasLoad) -> AppliedForce:
         p = gl.pressure  # the same at every position
     else:
         # travel from the outer dead centre (the extreme position away from the pivot)
-        s = np.clip(_travel(scene, kin, gl.joint, gl.link) - gl.outer, 0.0, gl.stroke)
+        s = np.clip(piston_travel(scene, kin, gl.joint, gl.link) - gl.outer, 0.0, gl.stroke)
         p = np.zeros(kin.n)
         for side, mask in (("down", down), ("up", ~down)):
             if side in gl.diagram:
@@ -835,7 +811,8 @@ def stroke_index(scene: Scene, kin: Any, gl: GasLoad, down: Any) -> Any:
     """Which of the four strokes each position is in (0 intake, 1 compression, 2 expansion,
     3 exhaust): the revolution after the ignition's outer dead centre is expansion (toward
     the crank) then exhaust, the next intake then compression."""
-    psi = np.mod(np.asarray(kin.phi_deg, float) - ignition(scene, gl), 720.0)
+    assert gl.ignition is not None, "a four-stroke load's ignition is found when the loads are read"
+    psi = np.mod(np.asarray(kin.phi_deg, float) - gl.ignition, 720.0)
     # a dead centre met to round-off is the one the angle names: 360 begins the intake, 720 the expansion
     psi = np.where(np.abs(psi - 360.0) < 1e-7, 360.0, np.where(psi > 720.0 - 1e-7, 0.0, psi))
     first = psi < 360.0
@@ -843,7 +820,7 @@ def stroke_index(scene: Scene, kin: Any, gl: GasLoad, down: Any) -> Any:
 
 
 def _four_stroke(scene: Scene, kin: Any, gl: GasLoad, down: Any) -> R:
-    s = np.clip(_travel(scene, kin, gl.joint, gl.link) - gl.outer, 0.0, gl.stroke)
+    s = np.clip(piston_travel(scene, kin, gl.joint, gl.link) - gl.outer, 0.0, gl.stroke)
     k = stroke_index(scene, kin, gl, down)
     p = np.zeros(kin.n)
     for j, name in enumerate(FOUR_STROKES):

@@ -148,9 +148,12 @@ class Scene:
     loads: Any = field(default=None, repr=False)
     dynamics_spec: Any = field(default=None, repr=False)
     diagrams_spec: Any = field(default=None, repr=False)
+    #: the pairs' friction (plans.scene.friction.FrictionSpec), read with the other tables
+    #: (None: the scene states none)
+    friction_spec: Any = field(default=None, repr=False)
     tables: bool = field(default=False, repr=False)
-    #: what is derived once per scene (its structure, the solver's constants); not copied by
-    #: dataclasses.replace, so a changed scene derives its own
+    #: what the exact analysis derives once per scene (its structure, the solver's constants);
+    #: not copied by dataclasses.replace, so a changed scene derives its own
     memo: dict[Any, Any] = field(init=False, repr=False, compare=False, default_factory=dict)
 
     def title_in(self, lang: str) -> str:
@@ -266,9 +269,10 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
     outputs = _outputs(r, data)
     scales, style = _scales(r, data)
     fij = r.choice(data, "fij", "", FIJ_CONVENTIONS, "on_i_from_j")
-    from plans.scene.sheet import check_sheet
+    if "sheet" in data:  # without one, every field takes its default: nothing to check
+        from plans.scene.sheet import check_sheet
 
-    check_sheet(data, path)  # the record is made when a reader asks for it (Scene.sheet)
+        check_sheet(data, path)  # the record is made when a reader asks for it (Scene.sheet)
     scene = Scene(path=path, title=title, frame=frame, frame_points=frame_points, links=links,
                   joints=joints, driver=driver, branches=branches, outputs=outputs,
                   scales=scales, scale_style=style, fij=fij, raw=data, titles=titles)
