@@ -658,9 +658,10 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
             srep = None if cycle_check.is_cycle_check(f) else sheet_check_of(f)
             if cycle_check.is_cycle_check(f):  # cycle tables: a report, no marked sheet
                 crep = cycle_check.check_cycle(f)
-                outputs, row = cycle_check.outputs(crep, f, out), cycle_check.summary_row(str(f), crep)
+                lang = report_language(args)
+                outputs, row = cycle_check.outputs(crep, f, out, lang), cycle_check.summary_row(str(f), crep, lang)
             elif srep is not None:  # a gears or cam sheet
-                outputs, row = sheet_outputs(srep, f, out)
+                outputs, row = sheet_outputs(srep, f, out, report_language(args))
             else:
                 report = _check_beside(f, beside)
                 lang = report_language(args, report)

@@ -55,20 +55,23 @@ def run_sheet_file(target: Path, args: argparse.Namespace) -> int | None:
     rep = sheet_check_of(target)
     if rep is None:
         return None
+    from plans.check.report import report_language
+
+    lang = report_language(args)
     files: dict[Path, str] = {}
     if args.json and args.json != "-":
-        files[Path(args.json)] = dumps(rep.to_json())
+        files[Path(args.json)] = dumps(rep.to_json(lang))
     if args.csv and args.csv != "-":
-        files[Path(args.csv)] = csv_text([summary_row(str(target), rep)])
+        files[Path(args.csv)] = csv_text([summary_row(str(target), rep, lang)], lang)
     if args.out:
         Path(args.out).mkdir(parents=True, exist_ok=True)
-        files[Path(args.out) / f"{target.stem}.json"] = dumps(rep.to_json())
-        files[Path(args.out) / f"{target.stem}.txt"] = table(rep) + "\n"
+        files[Path(args.out) / f"{target.stem}.json"] = dumps(rep.to_json(lang))
+        files[Path(args.out) / f"{target.stem}.txt"] = table(rep, lang) + "\n"
     write_all(files)
     if args.json == "-":
-        sys.stdout.write(dumps(rep.to_json()))
+        sys.stdout.write(dumps(rep.to_json(lang)))
     elif args.csv == "-":
-        sys.stdout.write(csv_text([summary_row(str(target), rep)]))
+        sys.stdout.write(csv_text([summary_row(str(target), rep, lang)], lang))
     elif not args.quiet:
-        print(table(rep))
+        print(table(rep, lang))
     return 0
