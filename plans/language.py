@@ -266,6 +266,57 @@ TERMS: dict[str, tuple[str, str]] = {
     "k_against": ("against", "против вращения кривошипа"),
     "y_plans": ("Plans over the cycle", "Планы за цикл"),
     "y_positions": ("Positions over the cycle", "Положения за цикл"),
+    # ---- the cycle: kinematic diagrams, machine dynamics, the flywheel (plans solve)
+    "y_analogues": ("Velocity analogues (plans for ω1 = 1, μ = {mu:.4g} mm/m)",
+                    "Аналоги скоростей (планы при ω1 = 1, μ = {mu:.4g} мм/м)"),
+    "y_inertia": ("Reduced moment of inertia", "Приведённый момент инерции"),
+    "y_forces": ("Reduced moment of forces (positive when the loads drive the crank)",
+                 "Приведённый момент сил (положителен, когда нагрузки движут кривошип)"),
+    "y_energy": ("Work and kinetic energy (graphical integration)",
+                 "Работа и кинетическая энергия (графическое интегрирование)"),
+    "y_position": ("position", "положение"),
+    "y_phi": ("phi, deg", "φ, °"),
+    "y_chords": ("chords", "метод хорд"),
+    "y_tangents": ("tangents", "метод касательных"),
+    "y_diagrams": ("Kinematic diagrams ({method}, H1 = {h1:g} mm, H2 = {h2:g} mm, μφ = {mu:.4g} mm/rad); "
+                   "error of the graphical method in % of each diagram's range",
+                   "Кинематические диаграммы ({method}, H1 = {h1:g} мм, H2 = {h2:g} мм, μφ = {mu:.4g} мм/рад); "
+                   "погрешность графического метода в % от размаха каждой диаграммы"),
+    "y_diagram": ("  {name:8s} {formula:44s} max {mx:.3g} %, rms {rms:.3g} %{integ}",
+                  "  {name:8s} {formula:44s} max {mx:.3g} %, ср. кв. {rms:.3g} %{integ}"),
+    "y_integ": ("; integrated back from the next: max {mx:.3g} %",
+                "; при обратном интегрировании следующей: max {mx:.3g} %"),
+    "y_dynamics": ("Machine dynamics over the steady cycle{cycle}", "Динамика машины за цикл установившегося движения{cycle}"),
+    "y_720": (" of 720° (two revolutions)", " 720° (два оборота)"),
+    "y_sign_rule": ("  M_pr is the power of the loads over |ω1|: positive where they drive the crank, negative where "
+                    "they resist it (the driving moment is not among them)",
+                    "  M_пр — мощность нагрузок, делённая на |ω1|: положителен, где они движут кривошип, "
+                    "отрицателен, где сопротивляются (движущий момент в них не входит)"),
+    "y_driving": ("  driving moment M_d = {g:.6g} N·m (graphical), {e:.6g} N·m (exact)",
+                  "  движущий момент M_д = {g:.6g} Н·м (графически), {e:.6g} Н·м (точно)"),
+    "y_scales": ("  scales: μφ = {phi:.4g} mm/rad, μM = {M:.4g} mm/(N·m), H = {H:.4g} mm, μA = μM·μφ/H = {A:.4g} mm/J, "
+                 "μI = {I:.4g} mm/(kg·m²)",
+                 "  масштабы: μφ = {phi:.4g} мм/рад, μM = {M:.4g} мм/(Н·м), H = {H:.4g} мм, μA = μM·μφ/H = {A:.4g} "
+                 "мм/Дж, μI = {I:.4g} мм/(кг·м²)"),
+    "y_flywheel": ("  flywheel for δ = {d:g} at ω_m = {w:.6g} rad/s (added at the crank on top of I_pr):",
+                   "  маховик для δ = {d:g} при ω_ср = {w:.6g} рад/с (добавляется на кривошипе сверх I_пр):"),
+    "y_wittenbauer": ("    Wittenbauer (graphical)  I = {I:.6g} kg·m²  -> achieved δ = {d:.6g}  (error {e:+.2f} % against "
+                      "the exact flywheel)",
+                      "    по Виттенбауэру (графически)  I = {I:.6g} кг·м²  → достигнутый δ = {d:.6g}  (погрешность "
+                      "{e:+.2f} % относительно точного маховика)"),
+    "y_merkalov": ("    Merkalov                 I = {I:.6g} kg·m²  -> achieved δ = {d:.6g}",
+                   "    по Мерцалову                  I = {I:.6g} кг·м²  → достигнутый δ = {d:.6g}"),
+    "y_exact": ("    exact                    I = {I:.6g} kg·m²  -> achieved δ = {d:.6g}",
+                "    точно                         I = {I:.6g} кг·м²  → достигнутый δ = {d:.6g}"),
+    "y_bound": ("  Wittenbauer's flywheel is within {b:.3g} kg·m² of the exact one (its own bound); the work of the "
+                "loads is integrated to {w}",
+                "  маховик по Виттенбауэру отличается от точного не более чем на {b:.3g} кг·м² (его собственная "
+                "оценка); работа нагрузок проинтегрирована с точностью {w}"),
+    "y_work": ("{w:.2g} J", "{w:.2g} Дж"),
+    "y_work_fine": ("better than 1e-9 J", "лучше 1e-9 Дж"),
+    "y_note": ("  note: {t}", "  примечание: {t}"),
+    "y_no_flywheel": ("the machine's own inertia already keeps δ below {d:g}: no flywheel is needed",
+                      "собственная инерция машины уже держит δ ниже {d:g}: маховик не нужен"),
     # ---- friction (plans solve)
     "fr_settled": ("settled to {tol:g}", "сошлись с точностью {tol:g}"),
     "fr_locked": ("did not settle: self-locking", "не сошлись: самоторможение"),
