@@ -546,6 +546,97 @@ CHECK_TERMS: dict[str, tuple[str, str]] = {
 }
 
 
+# ============================================================================ errors and warnings
+#: key -> (English, Russian): the one-line errors on bad input (:class:`plans.errors.Said`).
+#: Field names, TOML keys and the values quoted from the file stay as the file writes them.
+ERRORS: dict[str, tuple[str, str]] = {
+    # ---- the readers (plans/reader.py)
+    "e_missing_table": ("missing table", "нет таблицы"),
+    "e_table": ("expected a table", "ожидалась таблица"),
+    "e_number": ("expected a number, got {got}", "ожидалось число, а записано {got}"),
+    "e_finite": ("expected a finite number, got {got}", "ожидалось конечное число, а записано {got}"),
+    "e_magnitude": ("expected a number of magnitude at most {limit:g}, got {got}",
+                    "ожидалось число, по модулю не больше {limit:g}, а записано {got}"),
+    "e_positive": ("expected a positive number, got {got}", "ожидалось положительное число, а записано {got}"),
+    "e_nonneg": ("expected a number >= 0, got {got}", "ожидалось число ≥ 0, а записано {got}"),
+    "e_between": ("expected a number from {floor:g} to {limit:g}, got {got}",
+                  "ожидалось число от {floor:g} до {limit:g}, а записано {got}"),
+    "e_floor": ("expected 0 or a magnitude of at least {floor:g}, got {got}",
+                "ожидался 0 или число, по модулю не меньше {floor:g}, а записано {got}"),
+    "e_missing_number": ("missing number", "нет числа"),
+    "e_angle": ("expected an angle in degrees, got {got}", "ожидался угол в градусах, а записано {got}"),
+    "e_finite_angle": ("expected a finite angle in degrees, got {got}",
+                       "ожидался конечный угол в градусах, а записано {got}"),
+    "e_missing_whole": ("missing whole number", "нет целого числа"),
+    "e_whole": ("expected a whole number, got {got}", "ожидалось целое число, а записано {got}"),
+    "e_whole_min": ("expected a whole number >= {n}, got {got}", "ожидалось целое число ≥ {n}, а записано {got}"),
+    "e_whole_max": ("expected a whole number <= {n}, got {got}", "ожидалось целое число ≤ {n}, а записано {got}"),
+    "e_missing_text": ("missing text", "нет текста"),
+    "e_string": ("expected a string, got {got}", "ожидалась строка, а записано {got}"),
+    "e_char": ("the text holds a {bad}; expected printable text", "в тексте {bad}; ожидался печатный текст"),
+    "e_key_char": ("the key holds a {bad}; expected printable text", "в ключе {bad}; ожидался печатный текст"),
+    "e_control": ("control character U+{code}", "управляющий символ U+{code}"),
+    "e_nonchar": ("Unicode noncharacter U+{code}", "несимвол Юникода U+{code}"),
+    "e_surrogate": ("surrogate U+{code}", "суррогат U+{code}"),
+    "e_text_long": ("text of {n} characters; expected at most {limit}", "текст из {n} символов; ожидалось не больше {limit}"),
+    "e_chars": ("expected at most {limit} characters, got {n}", "ожидалось не больше {limit} символов, а их {n}"),
+    "e_name_empty": ("expected a non-empty name", "ожидалось непустое имя"),
+    "e_choice": ("expected one of {options}, got {got}{hint}", "ожидалось одно из: {options}, а записано {got}{hint}"),
+    "e_length_max": ("expected a length of at most {limit:g} m, got {got}",
+                     "ожидалась длина не больше {limit:g} м, а записано {got}"),
+    "e_length_finite": ("expected a finite length, got {got}", "ожидалась конечная длина, а записано {got}"),
+    "e_length_positive": ("expected a positive length, got {got}", "ожидалась положительная длина, а записано {got}"),
+    "e_length_min": ("expected a length of at least 1 µm, got {got}", "ожидалась длина не меньше 1 мкм, а записано {got}"),
+    "e_length": ("expected a length: a number in the file's unit or a string like \"35 mm\", got {got}",
+                 "ожидалась длина: число в единицах файла или строка вида \"35 mm\", а записано {got}"),
+    "e_unknown_key": ("unknown key{hint} (expected one of {known})", "неизвестный ключ{hint} (ожидался один из: {known})"),
+    "e_did_you_mean": ("; did you mean {word!r}?", "; может быть, {word!r}?"),
+    "e_digits": ("an integer of {n} digits", "целое число из {n} цифр"),
+    "e_nothing": ("nothing", "ничего"),
+    # ---- reading a file (plans/io.py)
+    "e_read": ("cannot read file ({why})", "файл не читается ({why})"),
+    "e_utf8": ("not UTF-8 text (byte 0x{byte:02x}); expected a TOML file saved as UTF-8",
+               "не текст UTF-8 (байт 0x{byte:02x}); ожидался файл TOML в кодировке UTF-8"),
+    "e_toml": ("malformed TOML: {why}", "ошибка синтаксиса TOML: {why}"),
+    "e_decimal_comma": ("{text!r} is written with a decimal comma; TOML numbers take a decimal point: write {fixed}",
+                        "в {text!r} дробная часть отделена запятой; в числах TOML пишется точка: {fixed}"),
+    "e_depth": ("tables or arrays nested more than {n} deep; expected a file of the family",
+                "таблицы или массивы вложены глубже {n}; ожидался файл семейства plans"),
+    # ---- the file's kind and format (plans/kinds.py)
+    "e_format": ("expected format = 1, got {got}", "ожидалось format = 1, а записано {got}"),
+    # ---- the scene (plans/scene)
+    "e_not_on_link": ("point {point!r} is not on link {link}", "точки {point!r} нет на звене {link}"),
+    "e_lookalike": ("point {point!r} is not on link {link}: {point!r} is written with {script} letters "
+                    "and link {link} has {other!r} in {other_script} letters (they look alike)",
+                    "точки {point!r} нет на звене {link}: в {point!r} {script} буквы, а на звене {link} есть "
+                    "{other!r} из букв {other_script} (они выглядят одинаково)"),
+    "e_cyrillic": ("Cyrillic", "кириллицы"),
+    "e_latin": ("Latin", "латиницы"),
+    "e_cyrillic_is": ("Cyrillic", "кириллические"),
+    "e_latin_is": ("Latin", "латинские"),
+}
+
+#: key -> (English, Russian): the warnings of an implausible scene, on stderr (the run goes on).
+WARNINGS: dict[str, tuple[str, str]] = {
+    "w_prefix": ("plans: warning: ", "plans: внимание: "),
+    "w_length": ("{file}: {field}: {what} {value:.4g} m is beyond any machine's (unit = {unit!r}: are the lengths "
+                 "in millimetres? then write unit = \"mm\")",
+                 "{file}: {field}: {what} {value:.4g} м — таких машин не бывает (unit = {unit!r}: длины в "
+                 "миллиметрах? тогда запишите unit = \"mm\")"),
+    "w_link": ("link {link} is", "длина звена {link}"),
+    "w_speed": ("{file}: v_{point} = {v:.4g} m/s at φ = {phi:g}° is beyond any machine's (more than {limit:g} m/s): "
+                "check unit and the driver's speed",
+                "{file}: v_{point} = {v:.4g} м/с при φ = {phi:g}° — таких скоростей у машин не бывает (больше "
+                "{limit:g} м/с): проверьте unit и скорость начального звена"),
+    "w_lookalike": ("{file}: {where}: the name {name!r} mixes Cyrillic and Latin letters that look alike ({letters})",
+                    "{file}: {where}: в имени {name!r} смешаны похожие буквы кириллицы и латиницы ({letters})"),
+    "w_twins": ("{file}: the names {a!r} and {b!r} look the same but one is written in Cyrillic letters and the "
+                "other in Latin: they are two different points",
+                "{file}: имена {a!r} и {b!r} выглядят одинаково, но одно написано кириллицей, а другое латиницей: "
+                "это две разные точки"),
+}
+
+
 #: Russian symbols of the terminal's English spellings (the textbook's letters; π is the
 #: acceleration pole, p the velocity pole).
 _SYMBOLS = ((r"\bp_a(?![A-Z_])", "π"), (r"\bp_v(?![A-Z_])", "p"), (r"\bomega_?(?=\w)", "ω"), (r"\beps_?(?=\w)", "ε"),
@@ -625,7 +716,7 @@ def file_language(asked: str | None, path: str) -> str:
     try:
         with open(path, "rb") as fh:
             return choose(None, tomllib.load(fh))
-    except (OSError, ValueError):
+    except (OSError, ValueError, RecursionError):
         return locale_language()
 
 

@@ -503,7 +503,9 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 
 
 def _err(msg: str) -> None:
-    print(f"plans: error: {' '.join(msg.split())}", file=sys.stderr)
+    from plans.errors import error_prefix
+
+    print(f"{error_prefix()}{' '.join(msg.split())}", file=sys.stderr)
 
 
 def _extra(args: argparse.Namespace, report: Report, target: Path) -> dict[Path, Any]:

@@ -7,7 +7,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from plans.errors import InputError, PlansError, one_line
+from plans.errors import InputError, PlansError, error_prefix, one_line
 
 
 def run_group(args: argparse.Namespace) -> int | None:
@@ -19,7 +19,7 @@ def run_group(args: argparse.Namespace) -> int | None:
             return run_gradebook(args)
         return _template(args)
     except PlansError as exc:
-        print(f"plans: error: {one_line(exc)}", file=sys.stderr)
+        print(f"{error_prefix()}{one_line(exc)}", file=sys.stderr)
         return 2
 
 
