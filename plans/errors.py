@@ -21,6 +21,24 @@ _RUN: dict[str, str | None] = {"asked": None, "path": None, "lang": None}
 def set_run(asked: str | None, path: str | None) -> None:
     """The run's ``--language`` and input file (:func:`run_language`)."""
     _RUN.update(asked=asked, path=path, lang=None)
+    _WARNED.clear()
+
+
+#: The warnings this run has written (a scene read twice warns once).
+_WARNED: set[str] = set()
+
+
+def warn(said: Said) -> None:
+    """A warning on stderr in the run's language (``plans: warning: ...``): the run goes on
+    and its exit status is unchanged."""
+    import sys
+
+    lang = run_language()
+    text = said.text(lang)
+    if text in _WARNED:
+        return
+    _WARNED.add(text)
+    print(Said("w_prefix").text(lang) + " ".join(text.split()), file=sys.stderr)
 
 
 def run_language() -> str:
@@ -44,10 +62,11 @@ class Said:
         self.key, self.values = key, values
 
     def text(self, lang: str = "en") -> str:
-        from plans.language import ERRORS
+        from plans.language import ERRORS, WARNINGS
 
-        en, ru = ERRORS[self.key]
-        values = {k: v.text(lang) if isinstance(v, Said) else v for k, v in self.values.items()}
+        en, ru = ERRORS[self.key] if self.key in ERRORS else WARNINGS[self.key]
+        values = {k: v.text(lang) if isinstance(v, Said) else _Comma(v) if lang == "ru" and isinstance(v, float)
+                  else v for k, v in self.values.items()}
         return (ru if lang == "ru" else en).format(**values)
 
     def __str__(self) -> str:
@@ -55,6 +74,15 @@ class Said:
 
     def __repr__(self) -> str:
         return f"Said({self.key!r}, {self.values!r})"
+
+
+class _Comma(float):
+    """A number written with a decimal comma (a Russian sentence's)."""
+
+    __slots__ = ()
+
+    def __format__(self, spec: str) -> str:
+        return float.__format__(self, spec).replace(".", ",")
 
 
 #: Arrays of tables (``[[joints]]``): a message names their entries 1-based, as a reader

@@ -11,7 +11,7 @@ from collections.abc import Iterable, Iterator, Mapping
 from contextlib import contextmanager
 from typing import TYPE_CHECKING, Any, BinaryIO
 
-from plans.errors import InputError, OutputError
+from plans.errors import InputError, OutputError, Said
 
 if TYPE_CHECKING:  # pathlib is loaded where a file is written: reading a scene does without it
     from pathlib import Path
@@ -160,9 +160,9 @@ def read_toml(path: str | Path) -> dict[str, Any]:
         with open(path, "rb") as fh:
             raw = fh.read()
     except OSError as exc:
-        raise InputError(f"cannot read file ({exc.strerror or exc})", file=str(path)) from None
+        raise InputError(Said("e_read", why=exc.strerror or str(exc)), file=str(path)) from None
     except ValueError as exc:  # a path holding a NUL
-        raise InputError(f"cannot read file ({exc})", file=str(path)) from None
+        raise InputError(Said("e_read", why=str(exc)), file=str(path)) from None
     run = guard.current()
     if run is not None:
         run.read(path)
@@ -170,8 +170,7 @@ def read_toml(path: str | Path) -> dict[str, Any]:
         text = raw.decode("utf-8")
     except UnicodeDecodeError as exc:
         line = raw[:exc.start].count(b"\n") + 1
-        raise InputError(f"not UTF-8 text (byte 0x{raw[exc.start]:02x}); expected a TOML file saved as UTF-8",
-                         file=str(path), line=line) from None
+        raise InputError(Said("e_utf8", byte=raw[exc.start]), file=str(path), line=line) from None
     return loads_toml(text, str(path))
 
 
@@ -186,12 +185,34 @@ def _check_depth(data: Any, path: str) -> None:
     while stack:
         node, depth, where = stack.pop()
         if depth > MAX_DEPTH:
-            raise InputError(f"tables or arrays nested more than {MAX_DEPTH} deep; expected a file of the family",
+            raise InputError(Said("e_depth", n=MAX_DEPTH),
                              file=path, field=where[:80] + ("..." if len(where) > 80 else ""))
         if isinstance(node, dict):
             stack.extend((v, depth + 1, f"{where}.{k}" if where else str(k)) for k, v in node.items())
         elif isinstance(node, list):
             stack.extend((v, depth + 1, f"{where}[{i}]") for i, v in enumerate(node))
+
+
+def _decimal_comma(text: str, why: str, path: str) -> InputError | None:
+    """The error of a number written with a decimal comma (``omega = 1,5``: a bare TOML
+    error otherwise), naming the line, its key and the number as it should be written."""
+    import re
+
+    at = re.search(r"at line (\d+)", why)
+    lines = text.splitlines()
+    if at is None or not 0 < int(at.group(1)) <= len(lines):
+        return None
+    n = int(at.group(1))
+    line = lines[n - 1].split("#", 1)[0]
+    key = re.match(r"\s*([\w.\"-]+)\s*=", line)
+    got = re.search(r"=[^\"']*?(?<![\w.,])([-+]?\d+),(\d+)(?![\d.,])", line)
+    if key is None or got is None:
+        return None
+    table = next((m.group(1).strip() for m in (re.match(r"\s*\[\[?([^\]]+)\]", s) for s in reversed(lines[:n - 1]))
+                  if m), "")
+    written = f"{got.group(1)},{got.group(2)}"
+    return InputError(Said("e_decimal_comma", text=written, fixed=f"{got.group(1)}.{got.group(2)}"), file=path,
+                      line=n, field=(f"{table}." if table else "") + key.group(1).strip('"'))
 
 
 def loads_toml(text: str, path: str) -> dict[str, Any]:
@@ -202,9 +223,9 @@ def loads_toml(text: str, path: str) -> dict[str, Any]:
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"malformed TOML: {exc}", file=path) from None
+        raise _decimal_comma(text, str(exc), path) or InputError(Said("e_toml", why=str(exc)), file=path) from None
     except RecursionError:
-        raise InputError("malformed TOML: nested too deeply", file=path) from None
+        raise InputError(Said("e_toml", why="nested too deeply"), file=path) from None
     _check_depth(data, path)
     check_text(data, file=path)
     return data

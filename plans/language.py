@@ -282,8 +282,8 @@ TERMS: dict[str, tuple[str, str]] = {
                    "error of the graphical method in % of each diagram's range",
                    "Кинематические диаграммы ({method}, H1 = {h1:g} мм, H2 = {h2:g} мм, μφ = {mu:.4g} мм/рад); "
                    "погрешность графического метода в % от размаха каждой диаграммы"),
-    "y_diagram": ("  {name:8s} {formula:44s} max {mx:.3g} %, rms {rms:.3g} %{integ}",
-                  "  {name:8s} {formula:44s} max {mx:.3g} %, ср. кв. {rms:.3g} %{integ}"),
+    "y_diagram": ("  {name:<8} {formula:<44} max {mx:.3g} %, rms {rms:.3g} %{integ}",
+                  "  {name:<8} {formula:<44} max {mx:.3g} %, ср. кв. {rms:.3g} %{integ}"),
     "y_integ": ("; integrated back from the next: max {mx:.3g} %",
                 "; при обратном интегрировании следующей: max {mx:.3g} %"),
     "y_dynamics": ("Machine dynamics over the steady cycle{cycle}", "Динамика машины за цикл установившегося движения{cycle}"),
@@ -619,15 +619,17 @@ ERRORS: dict[str, tuple[str, str]] = {
 #: key -> (English, Russian): the warnings of an implausible scene, on stderr (the run goes on).
 WARNINGS: dict[str, tuple[str, str]] = {
     "w_prefix": ("plans: warning: ", "plans: внимание: "),
-    "w_length": ("{file}: {field}: {what} {value:.4g} m is beyond any machine's (unit = {unit!r}: are the lengths "
+    "w_length": ("{file}: {field}: {what} {value:.4g} m long, beyond any machine's (unit = {unit!r}: are the lengths "
                  "in millimetres? then write unit = \"mm\")",
                  "{file}: {field}: {what} {value:.4g} м — таких машин не бывает (unit = {unit!r}: длины в "
                  "миллиметрах? тогда запишите unit = \"mm\")"),
-    "w_link": ("link {link} is", "длина звена {link}"),
-    "w_speed": ("{file}: v_{point} = {v:.4g} m/s at φ = {phi:g}° is beyond any machine's (more than {limit:g} m/s): "
+    "w_link": ("link {link} is", "звено {link} длиной"),
+    "w_length_figure": ("{file}: {field}: {what} {value:.4g} m long, beyond any machine's: is a figure mistyped?",
+                        "{file}: {field}: {what} {value:.4g} м — таких машин не бывает: нет ли опечатки в числе?"),
+    "w_speed": ("{file}: v_{point} = ω1·l = {v:.4g} m/s is beyond any machine's (more than {limit:g} m/s): "
                 "check unit and the driver's speed",
-                "{file}: v_{point} = {v:.4g} м/с при φ = {phi:g}° — таких скоростей у машин не бывает (больше "
-                "{limit:g} м/с): проверьте unit и скорость начального звена"),
+                "{file}: v_{point} = ω1·l = {v:.4g} м/с — таких скоростей у машин не бывает (больше {limit:g} м/с): "
+                "проверьте unit и скорость начального звена"),
     "w_lookalike": ("{file}: {where}: the name {name!r} mixes Cyrillic and Latin letters that look alike ({letters})",
                     "{file}: {where}: в имени {name!r} смешаны похожие буквы кириллицы и латиницы ({letters})"),
     "w_twins": ("{file}: the names {a!r} and {b!r} look the same but one is written in Cyrillic letters and the "

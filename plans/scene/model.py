@@ -206,8 +206,13 @@ def check_format(r: Reader, data: dict[str, Any]) -> None:
 
 
 def load_scene(path: str | Path) -> Scene:
-    """Read and validate a scene file."""
-    return scene_from_dict(read_toml(path), str(path))
+    """Read and validate a scene file; an implausible one (a unit slip, look-alike names) is
+    warned about on stderr (:mod:`plans.plausible`)."""
+    scene = scene_from_dict(read_toml(path), str(path))
+    from plans.plausible import warn_scene
+
+    warn_scene(scene, str(scene.raw.get("unit", "mm")), str(path))
+    return scene
 
 
 def _stem(path: str) -> str:
@@ -386,7 +391,10 @@ def _joints(r: Reader, data: dict[str, Any], unit: str, frame: int,
                              "a turning pair (kind = \"R\") has no guide")
             for lid in pair:
                 if not carries(lid, point):
-                    raise r.fail(f"{where}point", f"point {point!r} is not on link {lid}")
+                    from plans.plausible import not_on_link
+
+                    raise r.fail(f"{where}point", not_on_link(point, lid, frame_points if lid == frame
+                                                              else links[lid].points))
             out.append(Joint("R", (a, b), point))
             continue
         g = body.get("guide")
@@ -404,7 +412,10 @@ def _joints(r: Reader, data: dict[str, Any], unit: str, frame: int,
         through = g.get("through")
         if isinstance(through, str):
             if not carries(carrier, through):
-                raise r.fail(f"{where}guide.through", f"point {through!r} is not on link {carrier}")
+                from plans.plausible import not_on_link
+
+                raise r.fail(f"{where}guide.through", not_on_link(through, carrier, frame_points if carrier == frame
+                                                                   else links[carrier].points))
             origin = frame_points[through] if carrier == frame else links[carrier].points[through]
         elif isinstance(through, list):
             origin = _xy(r, through, f"{where}guide.through", unit)
