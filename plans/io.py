@@ -152,6 +152,16 @@ def dumps(data: Any) -> str:
     return json.dumps(data, ensure_ascii=False, indent=2, allow_nan=False) + "\n"
 
 
+def os_reason(exc: OSError) -> Said | str:
+    """Why the system refused a file, in the run's language where the catalogue has it."""
+    import errno
+
+    name = errno.errorcode.get(exc.errno or 0, "")
+    from plans.language import ERRORS
+
+    return Said(f"e_{name}") if f"e_{name}" in ERRORS else (exc.strerror or str(exc))
+
+
 def read_toml(path: str | Path) -> dict[str, Any]:
     """A TOML file as a dict; an unreadable or malformed file is one InputError line."""
     from plans import guard
@@ -160,7 +170,7 @@ def read_toml(path: str | Path) -> dict[str, Any]:
         with open(path, "rb") as fh:
             raw = fh.read()
     except OSError as exc:
-        raise InputError(Said("e_read", why=exc.strerror or str(exc)), file=str(path)) from None
+        raise InputError(Said("e_read", why=os_reason(exc)), file=str(path)) from None
     except ValueError as exc:  # a path holding a NUL
         raise InputError(Said("e_read", why=str(exc)), file=str(path)) from None
     run = guard.current()
@@ -193,6 +203,18 @@ def _check_depth(data: Any, path: str) -> None:
             stack.extend((v, depth + 1, f"{where}[{i}]") for i, v in enumerate(node))
 
 
+def _toml_error(why: str) -> Said:
+    """The TOML parser's complaint (its own words, in English) with its place in the file."""
+    import re
+
+    at = re.fullmatch(r"(.*) \(at line (\d+), column (\d+)\)", why, re.S)
+    if at:
+        return Said("e_toml_at", why=at.group(1), line=int(at.group(2)), col=int(at.group(3)))
+    if why.endswith(" (at end of document)"):
+        return Said("e_toml_end", why=why[:-len(" (at end of document)")])
+    return Said("e_toml", why=why)
+
+
 def _decimal_comma(text: str, why: str, path: str) -> InputError | None:
     """The error of a number written with a decimal comma (``omega = 1,5``: a bare TOML
     error otherwise), naming the line, its key and the number as it should be written."""
@@ -223,7 +245,7 @@ def loads_toml(text: str, path: str) -> dict[str, Any]:
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise _decimal_comma(text, str(exc), path) or InputError(Said("e_toml", why=str(exc)), file=path) from None
+        raise _decimal_comma(text, str(exc), path) or InputError(_toml_error(str(exc)), file=path) from None
     except RecursionError:
         raise InputError(Said("e_toml", why="nested too deeply"), file=path) from None
     _check_depth(data, path)

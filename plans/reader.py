@@ -245,7 +245,9 @@ class Reader:
 def show(value: Any) -> Any:
     """A value for a message, shortened (a 400-digit integer is not repeated in full, a
     float is shown with at most 6 significant digits)."""
-    if isinstance(value, int) and not isinstance(value, bool) and abs(value) > 10**15:
+    if isinstance(value, bool):  # as the file writes it
+        return "true" if value else "false"
+    if isinstance(value, int) and abs(value) > 10**15:
         return Said("e_digits", n=len(str(abs(value))))
     if isinstance(value, float):
         return f"{value:.6g}"

@@ -351,7 +351,7 @@ def run_file(target: Path, args: argparse.Namespace) -> int:
     files: dict[Path, str] = {}
     if args.json and args.json != "-":
         files[Path(args.json)] = dumps(rep.to_json())
-    if getattr(args, "csv", None):
+    if getattr(args, "csv", None) and args.csv != "-":
         files[Path(args.csv)] = csv_text(rep, lang)
     if getattr(args, "out", None):
         out = Path(args.out)
@@ -363,6 +363,8 @@ def run_file(target: Path, args: argparse.Namespace) -> int:
     write_all(files)
     if args.json == "-":
         sys.stdout.write(dumps(rep.to_json()))
-    if not args.quiet and args.json != "-":
+    elif getattr(args, "csv", None) == "-":
+        sys.stdout.write(csv_text(rep, lang))
+    if not args.quiet and args.json != "-" and getattr(args, "csv", None) != "-":
         print(text(rep, lang))
     return 0
