@@ -20,7 +20,8 @@ _SCENES = sorted([*SAMPLES.glob("*.toml"), *SAMPLES.glob("projects/*.toml")])
 _RUNS = ([("solve", p, ["--protocol"]) for p in _SCENES]
          + [("gears", p, []) for p in sorted(SAMPLES.glob("gears/*.toml"))]
          + [("cam", p, []) for p in sorted(SAMPLES.glob("cams/*.toml"))]
-         + [("balance", p, []) for p in sorted(SAMPLES.glob("engines/*.toml"))])
+         + [("balance", p, []) for p in sorted(SAMPLES.glob("engines/*.toml"))]
+         + [("design", p, []) for p in sorted(SAMPLES.glob("synthesis/*.toml"))])
 
 #: Latin words a Russian text may hold: the textbook's functions.  Besides these, a Latin run
 #: of letters is a symbol only when it is one letter (v, a, h, l, x, i in F_ij...), capitals
