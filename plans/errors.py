@@ -103,6 +103,16 @@ def field_name(field: str, lang: str = "en") -> str:
     return entry if not rest else f"{entry}, {field_name(rest, lang)}"
 
 
+def os_reason(exc: OSError) -> Said | str:
+    """Why the system refused a file, in the run's language where the catalogue has it."""
+    import errno
+
+    name = errno.errorcode.get(exc.errno or 0, "")
+    from plans.language import ERRORS
+
+    return Said(f"e_{name}") if f"e_{name}" in ERRORS else (exc.strerror or str(exc))
+
+
 def error_prefix(lang: str | None = None) -> str:
     """``plans: error: `` in the run's language."""
     return "plans: ошибка: " if (lang or run_language()) == "ru" else "plans: error: "
@@ -119,7 +129,7 @@ def one_line(exc: BaseException, lang: str | None = None) -> str:
     """The error as the one line the command prints: the file first, whitespace folded; in
     ``lang`` (default: the run's, :func:`run_language`) where the message is the catalogue's."""
     lang = lang or run_language()
-    text = exc.text(lang) if isinstance(exc, InputError) else str(exc)
+    text = exc.text(lang) if isinstance(exc, InputError | OutputError) else str(exc)
     text = " ".join(text.split())
     source = getattr(exc, "source", None)
     if source and not text.startswith(source):
@@ -152,6 +162,13 @@ class InputError(PlansError):
 
 class OutputError(PlansError):
     """An output file or folder that cannot be written."""
+
+    def __init__(self, message: str | Said = "") -> None:
+        self.said = message if isinstance(message, Said) else None
+        super().__init__(str(message))
+
+    def text(self, lang: str = "en") -> str:
+        return self.said.text(lang) if self.said is not None else str(self)
 
 
 class ConstructionError(PlansError):

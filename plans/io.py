@@ -11,7 +11,7 @@ from collections.abc import Iterable, Iterator, Mapping
 from contextlib import contextmanager
 from typing import TYPE_CHECKING, Any, BinaryIO
 
-from plans.errors import InputError, OutputError, Said
+from plans.errors import InputError, OutputError, Said, os_reason
 
 if TYPE_CHECKING:  # pathlib is loaded where a file is written: reading a scene does without it
     from pathlib import Path
@@ -49,7 +49,7 @@ def atomic_file(path: str | Path) -> Iterator[BinaryIO]:
         if run is None or tmp not in (t for t, _ in run.staged.values()):
             _unlink(tmp)
         if isinstance(exc, OSError):
-            raise OutputError(f"cannot write {target}: {exc.strerror}") from None
+            raise OutputError(Said("o_write", target=str(target), why=os_reason(exc))) from None
         raise
 
 
@@ -57,13 +57,13 @@ def _temporary(target: str) -> tuple[str, int]:
     """A new temporary file beside ``target`` (its path and descriptor)."""
     folder = os.path.dirname(target) or "."
     if os.path.isdir(target):
-        raise OutputError(f"{target}: is a folder; expected a path for a file")
+        raise OutputError(Said("o_folder", target=str(target)))
     try:
         import tempfile  # loaded when a file is written: reading a scene does not pay for it
 
         fd, tmp = tempfile.mkstemp(prefix=f".{os.path.basename(target)}.", suffix=".tmp", dir=folder)
     except OSError as exc:
-        raise OutputError(f"cannot write to {folder}: {exc.strerror}") from None
+        raise OutputError(Said("o_write_to", folder=str(folder), why=os_reason(exc))) from None
     return tmp, fd
 
 
@@ -99,7 +99,7 @@ def write_all(files: Mapping[Path, bytes | str]) -> list[Path]:
             except BaseException as exc:
                 _unlink(tmp)
                 if isinstance(exc, OSError):
-                    raise OutputError(f"cannot write {t}: {exc.strerror}") from None
+                    raise OutputError(Said("o_write", target=str(t), why=os_reason(exc))) from None
                 raise
             run.stage(tmp, t)
         if own:
@@ -150,16 +150,6 @@ def dumps(data: Any) -> str:
     import json
 
     return json.dumps(data, ensure_ascii=False, indent=2, allow_nan=False) + "\n"
-
-
-def os_reason(exc: OSError) -> Said | str:
-    """Why the system refused a file, in the run's language where the catalogue has it."""
-    import errno
-
-    name = errno.errorcode.get(exc.errno or 0, "")
-    from plans.language import ERRORS
-
-    return Said(f"e_{name}") if f"e_{name}" in ERRORS else (exc.strerror or str(exc))
 
 
 def read_toml(path: str | Path) -> dict[str, Any]:

@@ -644,6 +644,12 @@ ERRORS: dict[str, tuple[str, str]] = {
                         "в {text!r} дробная часть отделена запятой; в числах TOML пишется точка: {fixed}"),
     "e_depth": ("tables or arrays nested more than {n} deep; expected a file of the family",
                 "таблицы или массивы вложены глубже {n}; ожидался файл семейства plans"),
+    # ---- writing the outputs (plans/io.py, plans/guard.py)
+    "o_input": ("{target}: is the input file {src}; refusing to overwrite it (expected another path for the output)",
+                "{target}: это входной файл {src}; он не будет перезаписан (ожидался другой путь для результата)"),
+    "o_folder": ("{target}: is a folder; expected a path for a file", "{target}: это папка; ожидался путь к файлу"),
+    "o_write": ("cannot write {target}: {why}", "не удаётся записать {target}: {why}"),
+    "o_write_to": ("cannot write to {folder}: {why}", "не удаётся записать в {folder}: {why}"),
     # ---- the file's kind and format (plans/kinds.py)
     "e_format": ("expected format = 1, got {got}", "ожидалось format = 1, а записано {got}"),
     # ---- the scene (plans/scene/model.py)

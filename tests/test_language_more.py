@@ -250,7 +250,7 @@ def test_bad_input_in_both_languages(tmp_path, capsys):
         if not CYRILLIC.search(body):
             continue  # a message not yet in the catalogue: English in both
         said += 1
-        body = re.sub(r"\[+[\w. ]+\]+|«[^»]*»|'[^']*'|\"[^\"]*\"|\[\[[\w.]+\]\] № \d+|\S+\.toml\S*|0x[0-9a-f]+", " ", body)
+        body = re.sub(r"/\S*|\[+[\w. ]+\]+|«[^»]*»|'[^']*'|\"[^\"]*\"|\[\[[\w.]+\]\] № \d+|\S+\.toml\S*|0x[0-9a-f]+", " ", body)
         body = re.sub(r"(из|из:) [\w, ]+", " ", body)  # a list of the keys a table takes: the file's words
         head, _, message = body.partition(": ")
         text = message if re.fullmatch(r"[\w.\[\], №\\-]+", head) else body
@@ -261,7 +261,7 @@ def test_bad_input_in_both_languages(tmp_path, capsys):
         allowed |= {"TOML", "UTF", "mm", "unit"} | _KEYS
         assert not {w for w in words if w not in allowed and not set(re.split("_", w)) <= allowed}, (case.id, ru)
     print(f"catalogue errors: {said} of {total}")
-    assert total >= 150 and said >= 0.4 * total, (said, total)
+    assert total >= 150 and said >= 0.85 * total, (said, total)
 
 
 def test_an_entry_of_joints_is_named_one_based():
