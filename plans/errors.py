@@ -41,8 +41,13 @@ def warn(said: Said) -> None:
     print(Said("w_prefix").text(lang) + " ".join(text.split()), file=sys.stderr)
 
 
-def run_language() -> str:
-    """``--language``, else the input file's ``[sheet] language``, else the locale's."""
+def run_language(data: Any = None) -> str:
+    """``--language``, else the input file's ``[sheet] language``, else the locale's; outside
+    a command's run, ``data``'s ``[sheet] language`` (a file's table) else the locale's."""
+    if _RUN["asked"] is None and _RUN["path"] is None and data is not None:
+        from plans.language import choose
+
+        return choose(None, data)
     if _RUN["lang"] is None:
         from plans.language import file_language, locale_language
 

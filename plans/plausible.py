@@ -17,11 +17,7 @@ from collections.abc import Iterable
 from typing import Any
 
 from plans.errors import Said, warn
-
-#: Longer links than this (metres) no machine of the course has: a unit slip.
-LENGTH_WARN = 20.0
-#: Faster points than this (m/s): beyond the fastest machines' linkages.
-SPEED_WARN = 300.0
+from plans.units import LENGTH_WARN, SPEED_WARN
 
 #: Cyrillic letters drawn like Latin ones (capitals and small), and the Latin they look like.
 _TWINS = dict(zip("АВЕКМНОРСТХУаеорсухіј", "ABEKMHOPCTXYaeopcyxij", strict=True))

@@ -23,7 +23,8 @@ import numpy as np
 
 from plans.check import wording as wd
 from plans.kinematics.cases import cross, unit
-from plans.kinematics.dyads import Builder, Scheme, plans_of
+from plans.kinematics.construction import plans_of
+from plans.kinematics.dyads import Builder, Scheme
 from plans.kinematics.exact import Kinematics
 
 #: Kinds of mistake, most important first (the report's and the JSON's names).

@@ -69,10 +69,8 @@ from plans.check.findings import (
 )
 from plans.check.providers import STUDENT_ONLY, Context, Exact, exact_value, known_quantities
 from plans.check.relations import relation_findings
-from plans.errors import InputError, OutputError, PlansError, one_line
-from plans.guard import abandon
-from plans.io import atomic_write, dumps, refuse_input, write_all
-from plans.io import remove as remove_files
+from plans.errors import InputError, OutputError, PlansError
+from plans.io import atomic_write
 from plans.units import DUST, percent
 
 _SCALE_UNIT = {"length": "mm/m", "velocity": "mm/(m/s)", "acceleration": "mm/(m/s²)", "force": "mm/N"}
@@ -275,20 +273,20 @@ def _num(x: float | None, unit: str = "", lang: str = "en") -> str:
     return fmt(x, lang) + (f" {unit}" if unit else "")
 
 
-def _say(key: str, lang: str, **values: Any) -> str:
+def say_line(key: str, lang: str, **values: Any) -> str:
     """A line of the report (:data:`plans.language.CHECK_TERMS`) in ``lang``."""
     from plans.language import CHECK_TERMS
 
     return CHECK_TERMS[key][1 if lang == "ru" else 0].format(**values)
 
 
-def _unit(unit: str, lang: str) -> str:
+def unit_word(unit: str, lang: str) -> str:
     from plans.language import UNITS_RU
 
     return UNITS_RU.get(unit, unit) if lang == "ru" else unit
 
 
-def _dec(text: str, lang: str) -> str:
+def decimal(text: str, lang: str) -> str:
     """A number already written, with a decimal comma in Russian."""
     return text.replace(".", ",") if lang == "ru" else text
 
@@ -296,8 +294,8 @@ def _dec(text: str, lang: str) -> str:
 def _scale_text(kind: str, mu: float, lang: str) -> str:
     sym = {"length": "μl", "velocity": "μv", "acceleration": "μa", "force": "μF"}.get(kind, kind) \
         if lang == "ru" else kind
-    return _say("ch_scale", lang, kind=sym, mu=_dec(f"{mu:.4g}", lang),
-                unit=_unit(_SCALE_UNIT.get(kind, "mm/unit"), lang))
+    return say_line("ch_scale", lang, kind=sym, mu=decimal(f"{mu:.4g}", lang),
+                unit=unit_word(_SCALE_UNIT.get(kind, "mm/unit"), lang))
 
 
 def table(report: Report, lang: str = "en") -> str:
@@ -309,22 +307,22 @@ def table(report: Report, lang: str = "en") -> str:
 
     cf = report.check
     t = cf.tolerance
-    d = lambda x: _dec(f"{x:g}", lang)  # noqa: E731 - a number of the tolerance as written
-    model = (_say("ch_draftsman", lang, seg=d(t.segment_mm), dir=d(t.direction_deg), rule=d(t.rule_pct))
-             if t.model == "draftsman" else _say("ch_rule", lang, rule=d(t.rule_pct)))
-    head_line = _say("ch_file", lang, path=cf.path)
+    d = lambda x: decimal(f"{x:g}", lang)  # noqa: E731 - a number of the tolerance as written
+    model = (say_line("ch_draftsman", lang, seg=d(t.segment_mm), dir=d(t.direction_deg), rule=d(t.rule_pct))
+             if t.model == "draftsman" else say_line("ch_rule", lang, rule=d(t.rule_pct)))
+    head_line = say_line("ch_file", lang, path=cf.path)
     if cf.scales:
-        head_line += _say("ch_scales", lang, scales=", ".join(_scale_text(k, v, lang) for k, v in cf.scales.items()))
-    lines = [_say("ch_title", lang, student=cf.student, title=cf.scene.title), head_line,
-             _say("ch_tolerance", lang, model=model)]
+        head_line += say_line("ch_scales", lang, scales=", ".join(_scale_text(k, v, lang) for k, v in cf.scales.items()))
+    lines = [say_line("ch_title", lang, student=cf.student, title=cf.scene.title), head_line,
+             say_line("ch_tolerance", lang, model=model)]
     lines += _causes_text(report, lang)
     cause_no = {i: n for n, c in enumerate(report.causes, 1) for i in c.items}
-    w = {k: _say(k, lang) for k in ("ch_quantity", "ch_student", "ch_exact", "ch_error", "ch_err_mm", "ch_tol_mm",
+    w = {k: say_line(k, lang) for k in ("ch_quantity", "ch_student", "ch_exact", "ch_error", "ch_err_mm", "ch_tol_mm",
                                     "ch_tol_pct", "ch_verdict", "ch_where")}
     tw = 9 if lang == "ru" else 8  # "доп., мм"
     head = (f"  {w['ch_quantity']:<16}{w['ch_student']:>14}{w['ch_exact']:>14}{w['ch_error']:>10}{w['ch_err_mm']:>9}"
             f"{w['ch_tol_mm']:>{tw}}{w['ch_tol_pct']:>8}  {w['ch_verdict']}  {w['ch_where']}")
-    mm = _unit("mm", lang)
+    mm = unit_word("mm", lang)
     for pos in cf.positions:
         lines.append("")
         lines.append(f"φ = {d(pos.phi_deg)}°")
@@ -332,38 +330,38 @@ def table(report: Report, lang: str = "en") -> str:
         for n, it in enumerate(report.items):
             if it.phi_deg != pos.phi_deg:
                 continue
-            err = "—" if it.error_pct is None else _dec(f"{it.error_pct:+.1f} %", lang)
-            emm = "—" if it.error_mm is None else _dec(f"{it.error_mm:+.2f}", lang)
-            tmm = "—" if it.tolerance_mm is None else _dec(f"±{it.tolerance_mm:.2f}", lang)
-            tp = "—" if it.tolerance_pct is None else _dec(f"±{it.tolerance_pct:.1f}", lang)
-            mark = _say("ch_pass", lang) if it.verdict == "pass" else (
-                _say("ch_fail_no", lang, n=cause_no[n]) if n in cause_no else _say("ch_fail", lang))
+            err = "—" if it.error_pct is None else decimal(f"{it.error_pct:+.1f} %", lang)
+            emm = "—" if it.error_mm is None else decimal(f"{it.error_mm:+.2f}", lang)
+            tmm = "—" if it.tolerance_mm is None else decimal(f"±{it.tolerance_mm:.2f}", lang)
+            tp = "—" if it.tolerance_pct is None else decimal(f"±{it.tolerance_pct:.1f}", lang)
+            mark = say_line("ch_pass", lang) if it.verdict == "pass" else (
+                say_line("ch_fail_no", lang, n=cause_no[n]) if n in cause_no else say_line("ch_fail", lang))
             # only what the student wrote: a segment alone is shown in mm, its value is derived
             shown = f"{fmt(it.student_mm, lang)} {mm}" if it.figure == "measured" and it.student_mm is not None \
                 else _num(it.student, lang=lang)
-            rule = _say("ch_rule_tag", lang) if it.tolerance_model == "rule" else ""
+            rule = say_line("ch_rule_tag", lang) if it.tolerance_model == "rule" else ""
             lines.append(f"  {qn(it.quantity):<16}{shown:>14}{_num(it.exact, lang=lang):>14}{err:>10}{emm:>9}"
-                         f"{tmm:>{tw}}{tp:>8}  {mark:<7}  {it.where}  [{_unit(it.unit, lang)}{rule}]")
+                         f"{tmm:>{tw}}{tp:>8}  {mark:<7}  {it.where}  [{unit_word(it.unit, lang)}{rule}]")
     if report.unchecked:
         lines.append("")
-        lines.append(_say("ch_not_compared", lang))
+        lines.append(say_line("ch_not_compared", lang))
         for u in report.unchecked:
             lines.append(f"  φ = {d(u.phi_deg)}°: {qn(u.quantity)} = {fmt(u.student, lang)}"
                          f"{(' (' + u.where + ')') if u.where else ''}: {u.text(lang)}")
     left = report.findings_left
     if left:
         lines.append("")
-        lines.append(_say("ch_left", lang, n=len(left)))
+        lines.append(say_line("ch_left", lang, n=len(left)))
         for f in left:
-            lines.append(f"  [{_kind(f.kind, lang)}] {f.text(lang)}")
+            lines.append(f"  [{kind_word(f.kind, lang)}] {f.text(lang)}")
     lines.append("")
-    lines.append(_say("ch_summary", lang, items=len(report.items), passed=report.passed, failed=report.failed,
+    lines.append(say_line("ch_summary", lang, items=len(report.items), passed=report.passed, failed=report.failed,
                       causes=len(report.causes), unexplained=len(report.unexplained), left=len(left),
                       mark=_mark(report, lang)))
     return "\n".join(lines)
 
 
-def _kind(kind: str, lang: str) -> str:
+def kind_word(kind: str, lang: str) -> str:
     """A finding's or a mistake's kind as the report tags it (the teacher's word in Russian)."""
     if lang != "ru":
         return kind
@@ -374,7 +372,7 @@ def _kind(kind: str, lang: str) -> str:
 
 def _mark(report: Report, lang: str = "en") -> str:
     full = report.diagnosis.rubric.get("full", 100.0) if report.diagnosis is not None else 100.0
-    return _say("ch_of", lang, mark=fmt(report.mark or 0.0, lang), full=fmt(full, lang))
+    return say_line("ch_of", lang, mark=fmt(report.mark or 0.0, lang), full=fmt(full, lang))
 
 
 def _causes_text(report: Report, lang: str = "en") -> list[str]:
@@ -382,30 +380,30 @@ def _causes_text(report: Report, lang: str = "en") -> list[str]:
     mistake explains."""
     from plans.language import quantity_name
 
-    lines = ["", _say("ch_mark", lang, mark=_mark(report, lang))]
+    lines = ["", say_line("ch_mark", lang, mark=_mark(report, lang))]
     if not report.causes and not report.unexplained:
-        lines.append(_say("ch_no_mistakes", lang))
+        lines.append(say_line("ch_no_mistakes", lang))
         return lines
-    lines.append(_say("ch_mistakes", lang, n=len(report.causes)))
+    lines.append(say_line("ch_mistakes", lang, n=len(report.causes)))
     for n, c in enumerate(report.causes, 1):
-        at = ", ".join(f"{_dec(f'{p:g}', lang)}°" for p in c.positions)
-        lines.append(f"  #{n} [{_kind(c.kind, lang)}] {c.text(lang)}" + (f" (φ = {at})" if at else "")
+        at = ", ".join(f"{decimal(f'{p:g}', lang)}°" for p in c.positions)
+        lines.append(f"  #{n} [{kind_word(c.kind, lang)}] {c.text(lang)}" + (f" (φ = {at})" if at else "")
                      + f"; −{fmt(c.deduction, lang)}")
         if c.explains:
             n_fig = len(c.items) or len(c.explains)
-            lines.append(_say("ch_explains", lang, n=n_fig, s="s" if n_fig != 1 else "",
+            lines.append(say_line("ch_explains", lang, n=n_fig, s="s" if n_fig != 1 else "",
                               names=", ".join(quantity_name(q, lang) for q in c.explains)))
         for fi in c.findings:
-            lines.append(f"     [{_kind(report.findings[fi].kind, lang)}] {report.findings[fi].text(lang)}")
+            lines.append(f"     [{kind_word(report.findings[fi].kind, lang)}] {report.findings[fi].text(lang)}")
     if report.unexplained:
-        lines.append(_say("ch_unexplained", lang, n=len(report.unexplained)))
+        lines.append(say_line("ch_unexplained", lang, n=len(report.unexplained)))
         for it in report.unexplained:
-            shown = f"{fmt(it.student_mm, lang)} {_unit('mm', lang)}" \
+            shown = f"{fmt(it.student_mm, lang)} {unit_word('mm', lang)}" \
                 if it.figure == "measured" and it.student_mm is not None else fmt(it.student, lang)
-            lines.append(_say("ch_unexplained_item", lang, phi=_dec(f"{it.phi_deg:g}", lang),
+            lines.append(say_line("ch_unexplained_item", lang, phi=decimal(f"{it.phi_deg:g}", lang),
                               q=quantity_name(it.quantity, lang), shown=shown,
                               where=f" ({it.where})" if it.where else "", exact=fmt(it.exact, lang),
-                              unit=_unit(it.unit, lang)))
+                              unit=unit_word(it.unit, lang)))
     return lines
 
 
@@ -424,13 +422,13 @@ def summary_row(path: str, report: Report | None, error: str | None = None, lang
     from plans.language import quantity_name
 
     def at(q: str, phi: float) -> str:
-        return _say("ch_at", lang, what=quantity_name(q, lang), phi=_dec(f"{phi:g}", lang))
+        return say_line("ch_at", lang, what=quantity_name(q, lang), phi=decimal(f"{phi:g}", lang))
 
     # the worst figure in units of its own tolerance: 0 mm against a short exact segment is
     # a fraction of a millimetre, not −100 %
     worst = max((i for i in report.items if i.tolerance > 0), key=_in_tolerances, default=None)
-    causes = "; ".join(_kind(c.kind, lang) + (
-        f" {'при' if lang == 'ru' else 'at'} {','.join(_dec(f'{p:g}', lang) for p in c.positions)}°"
+    causes = "; ".join(kind_word(c.kind, lang) + (
+        f" {'при' if lang == 'ru' else 'at'} {','.join(decimal(f'{p:g}', lang) for p in c.positions)}°"
         if c.positions else "") for c in report.causes)
     unexplained = "; ".join(at(i.quantity, i.phi_deg) for i in report.unexplained)
     return {"file": path, "student": report.check.student, "status": "ok" if lang != "ru" else "проверен",
@@ -439,8 +437,8 @@ def summary_row(path: str, report: Report | None, error: str | None = None, lang
             "items": len(report.items), "passed": report.passed, "failed": report.failed,
             "findings": len(report.findings_left),
             "worst": "" if worst is None else at(worst.quantity, worst.phi_deg),
-            "worst_error_pct": "" if worst is None or worst.error_pct is None else _dec(f"{worst.error_pct:.2f}", lang),
-            "worst_tol": "" if worst is None else _dec(f"{_in_tolerances(worst):.2f}", lang), "message": ""}
+            "worst_error_pct": "" if worst is None or worst.error_pct is None else decimal(f"{worst.error_pct:.2f}", lang),
+            "worst_tol": "" if worst is None else decimal(f"{_in_tolerances(worst):.2f}", lang), "message": ""}
 
 
 def _in_tolerances(it: Item) -> float:
@@ -469,141 +467,14 @@ def check_file(path: str | Path) -> Report:
         raise
 
 
-# --------------------------------------------------------------------------- command line
+# --------------------------------------------------------------------------- what the command writes
 
 
-def register(subparsers: Any) -> argparse.ArgumentParser:
-    p = subparsers.add_parser(
-        "check", help="check a hand-drawn sheet (or a folder of them) against the exact analysis",
-        description="Compare what a student measured and computed on a hand-drawn sheet with the exact "
-                    "values at the student's scales; find inconsistencies in the student's own work.")
-    p.add_argument("path", metavar="FILE|DIR", nargs="?",
-                   help="a check file (TOML), a CSV form (one student per column) or a folder of check files "
-                        "(a scene file beside them is the scene of those that name none)")
-    p.add_argument("--json", metavar="PATH", help="write the report as JSON ('-' for stdout; single file only)")
-    p.add_argument("--csv", metavar="PATH", help="write the summary table as CSV ('-' for stdout)")
-    p.add_argument("--template", metavar="SCENE", help="write a blank check file of this scene to fill in")
-    p.add_argument("--phi", metavar="DEG,DEG", help="with --template: the positions (default: the scene's)")
-    p.add_argument("-o", "--output", metavar="FILE", help="with --template: write it here (default: stdout)")
-    p.add_argument("--form", choices=("toml", "csv"), default="toml",
-                   help="with --template: a check file (toml) or a CSV form, one column per student")
-    p.add_argument("--students", type=int, default=3, metavar="N", help="with --form csv: columns (default 3)")
-    p.add_argument("--out", metavar="DIR", help="write <name>.json and <name>.txt per check file here "
-                                                 "(batch default: DIR/reports)")
-    p.add_argument("--quiet", action="store_true", help="no table on stdout")
-    p.add_argument("--xlsx", metavar="MARKS.xlsx", help="with a folder: every sheet under it checked, one row per "
-                                                         "student, one worksheet per group (the gradebook)")
-    p.add_argument("--rubric", metavar="RUBRIC.toml", help="with --xlsx: weights per sheet, pass threshold, marks")
-    p.add_argument("--jobs", type=int, default=1, metavar="N", help="with --xlsx: check in N processes")
-    from plans.language import add_option
-
-    add_option(p)
-    p.set_defaults(func=run)
-    return p
-
-
-def _err(msg: str) -> None:
+def error_line(msg: str) -> None:
+    """A user error of ``plans check`` as one line on stderr (in the run's language)."""
     from plans.errors import error_prefix
 
     print(f"{error_prefix()}{' '.join(msg.split())}", file=sys.stderr)
-
-
-def _extra(args: argparse.Namespace, report: Report, target: Path) -> dict[Path, Any]:
-    """Files another module adds for each checked file (``plans check --sheet``: the marked
-    and overlay sheets), rendered before anything is written."""
-    hook = getattr(args, "extra_files", None)
-    return dict(hook(report, target)) if hook is not None else {}
-
-
-def _after(args: argparse.Namespace, target: Path, written: bool) -> None:
-    """Tell that module whether ``target``'s files were written (its old sheets the new set
-    lacks go) or, in a folder, the file failed (its sheets of an earlier run go)."""
-    hook = getattr(args, "after_write", None)
-    if hook is not None:
-        hook(target, written)
-
-
-def run(args: argparse.Namespace) -> int:
-    """``plans check``: 0 when every file was checked, 2 on a user error (one line on stderr).
-    A single file's outputs (JSON, CSV, reports, sheets) are written all or none."""
-    if getattr(args, "xlsx", None) or getattr(args, "template", None):
-        from plans.group.cli import run_group
-
-        got = run_group(args)
-        if got is not None:
-            return got
-    if getattr(args, "template", None):
-        from plans.check.forms import run_template
-
-        return run_template(args)
-    if not args.path:
-        _err("expected a check file, a CSV form or a folder (or --template SCENE)")
-        return 2
-    target = Path(args.path)
-    try:
-        if target.is_dir():
-            return _batch(target, args)
-        if target.suffix.lower() == ".csv" and target.is_file():
-            from plans.check.forms import run_form
-
-            return run_form(target, args)
-        if not target.exists():
-            why = "a symbolic link to no readable file (a loop, or its target gone)" if target.is_symlink() \
-                else "no such file or folder"
-            _err(f"{target}: {why}")
-            return 2
-        for out_path in (args.json, args.csv):
-            refuse_input(out_path, target)
-        from plans.cycle import check as cycle_check  # cycle tables (a dynamics sheet)
-
-        if cycle_check.is_cycle_check(target):
-            return cycle_check.run_file(target, args)
-        from plans.group.cli import run_sheet_file  # a gears or cam sheet
-
-        done = run_sheet_file(target, args)
-        if done is not None:
-            return done
-        report = check_file(target)
-        lang = report_language(args, report)
-        for out_path in (args.json, args.csv):
-            refuse_input(out_path, report.check.scene.path)
-        files: dict[Path, Any] = {}
-        if args.json and args.json != "-":
-            files[Path(args.json)] = dumps(report.to_json(lang))
-        if args.csv and args.csv != "-":
-            files[Path(args.csv)] = csv_text([summary_row(str(target), report, lang=lang)], lang)
-        if args.out:
-            out = Path(args.out)
-            files[out / f"{target.stem}.json"] = dumps(report.to_json(lang))
-            files[out / f"{target.stem}.txt"] = table(report, lang) + "\n"
-        for out_path in (args.json, args.csv):
-            if out_path and out_path != "-" and not Path(out_path).parent.is_dir():
-                raise OutputError(f"{out_path}: no such folder {Path(out_path).parent}")
-        files.update(_extra(args, report, target))
-        for folder in sorted({p.parent for p in files}):
-            _make_folder(folder)
-        written = write_all(files)
-        _after(args, target, True)
-        if args.json == "-":
-            sys.stdout.write(dumps(report.to_json(lang)))
-        elif args.csv == "-":
-            sys.stdout.write(csv_text([summary_row(str(target), report, lang=lang)], lang))
-        if not args.quiet and args.json != "-" and args.csv != "-":
-            print(table(report, lang))
-            for p in written:
-                if p.suffix in (".svg", ".pdf", ".png"):
-                    print(p)
-        return 0
-    except PlansError as exc:
-        abandon()  # nothing of the command is written (it answers 2 itself)
-        _err(one_line(exc))
-        return 2
-    except BrokenPipeError:
-        raise  # the runner ends quietly: the reader of the table has gone
-    except OSError as exc:
-        abandon()
-        _err(f"{exc.filename or ''}: {exc.strerror}")
-        return 2
 
 
 def report_language(args: argparse.Namespace, report: Report | None = None) -> str:
@@ -614,80 +485,15 @@ def report_language(args: argparse.Namespace, report: Report | None = None) -> s
     return choose(getattr(args, "language", None), report.check.scene.raw if report is not None else None)
 
 
-def _make_folder(folder: Path) -> None:
+def make_folder(folder: Path) -> None:
+    """An output folder made (OutputError naming it when it cannot be)."""
     try:
         folder.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
         raise OutputError(f"cannot create the output folder {folder}: {exc.strerror}") from None
 
 
-def _batch(folder: Path, args: argparse.Namespace) -> int:
-    if args.json:
-        _err(f"{folder}: --json is for one file; a folder writes one report per file into --out")
-        return 2
-    files = sorted(p for p in folder.glob("*.toml") if p.is_file())
-    from plans.check.forms import is_scene
-    from plans.io import read_toml
-
-    scenes = []
-    for f in files:
-        try:
-            # a scene has a [driver]; a check file is read once, below, not twice
-            if "[driver]" in f.read_text(encoding="utf-8", errors="replace") and is_scene(read_toml(f)):
-                scenes.append(f)
-        except (PlansError, OSError):
-            continue  # reported as that file's error below
-    files = [f for f in files if f not in scenes]
-    beside = scenes[0] if len(scenes) == 1 else None
-    if not files:
-        _err(f"{folder}: no check files (*.toml)")
-        return 2
-    out = Path(args.out) if args.out else folder / "reports"
-    _make_folder(out)
-    rows = []
-    bad = 0
-    from plans.cycle import check as cycle_check
-    from plans.progress import Progress
-
-    progress = Progress(args.quiet)
-    for k, f in enumerate(files, 1):
-        progress(f"{k}/{len(files)} {f.name}")
-        reports = {out / f"{f.stem}.json", out / f"{f.stem}.txt"}
-        try:
-            outputs: dict[Path, Any]
-            from plans.group.sheets import sheet_check_of, sheet_outputs
-
-            srep = None if cycle_check.is_cycle_check(f) else sheet_check_of(f)
-            if cycle_check.is_cycle_check(f):  # cycle tables: a report, no marked sheet
-                crep = cycle_check.check_cycle(f)
-                lang = report_language(args)
-                outputs, row = cycle_check.outputs(crep, f, out, lang), cycle_check.summary_row(str(f), crep, lang)
-            elif srep is not None:  # a gears or cam sheet
-                outputs, row = sheet_outputs(srep, f, out, report_language(args))
-            else:
-                report = _check_beside(f, beside)
-                lang = report_language(args, report)
-                outputs = {out / f"{f.stem}.json": dumps(report.to_json(lang)),
-                           out / f"{f.stem}.txt": table(report, lang) + "\n"}
-                outputs.update(_extra(args, report, f))
-                row = summary_row(str(f), report, lang=lang)
-            for sub in sorted({p.parent for p in outputs}):
-                _make_folder(sub)
-            write_all(outputs)
-        except PlansError as exc:
-            bad += 1
-            _err(one_line(exc))
-            rows.append(summary_row(str(f), None, str(exc), lang=report_language(args)))
-            remove_files(reports)  # a report of an earlier run would look current
-            _after(args, f, False)
-            continue
-        _after(args, f, True)
-        rows.append(row)
-    _summary(rows, args, out)
-    return 2 if bad else 0
-
-
-def _summary(rows: list[dict[str, Any]], args: argparse.Namespace, out: Path) -> None:
+def write_summary(rows: list[dict[str, Any]], args: argparse.Namespace, out: Path) -> None:
     """summary.csv (or --csv, '-': stdout) and a line per file on the terminal."""
     lang = report_language(args)
     if args.csv == "-":
@@ -697,24 +503,9 @@ def _summary(rows: list[dict[str, Any]], args: argparse.Namespace, out: Path) ->
     if not args.quiet:
         for r in rows:
             if r["status"] in ("ok", "проверен"):
-                print(_say("ch_row_ok", lang, file=r["file"], student=r["student"], passed=r["passed"],
+                print(say_line("ch_row_ok", lang, file=r["file"], student=r["student"], passed=r["passed"],
                            failed=r["failed"], findings=r["findings"])
-                      + (_say("ch_row_mark", lang, mark=r["mark"]) if r.get("mark") else "")
+                      + (say_line("ch_row_mark", lang, mark=r["mark"]) if r.get("mark") else "")
                       + (f"; {r['causes']}" if r.get("causes") else ""))
             else:
-                print(_say("ch_row_error", lang, file=r["file"], message=r["message"]))
-
-
-def _check_beside(path: Path, scene: Path | None) -> Report:
-    """A check file of a folder; one that names no scene uses the scene file beside it."""
-    from plans.check.checkfile import check_from_dict
-    from plans.io import read_toml
-
-    data = read_toml(path)
-    if scene is not None and "scene" not in data:
-        data = {**data, "scene": scene.name}
-    try:
-        return check(check_from_dict(data, str(path)))
-    except PlansError as exc:
-        exc.source = exc.source or str(path)
-        raise
+                print(say_line("ch_row_error", lang, file=r["file"], message=r["message"]))

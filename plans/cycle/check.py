@@ -273,21 +273,21 @@ def _exact_value(scene: Scene, kin: Any, name: str, rows: dict[str, tuple[np.nda
 
 
 def text(rep: CycleReport, lang: str = "en") -> str:
-    from plans.check.report import _dec, _say, _unit
+    from plans.check.report import decimal, say_line, unit_word
     from plans.language import quantity_name
 
-    w = {k: _say(k, lang) for k in ("ch_quantity", "ch_student", "ch_exact", "ch_error_pct", "ch_tolerance_col",
+    w = {k: say_line(k, lang) for k in ("ch_quantity", "ch_student", "ch_exact", "ch_error_pct", "ch_tolerance_col",
                                     "ch_verdict")}
-    lines = [_say("ch_cycle_title", lang, student=rep.student, title=rep.scene.title), _say("ch_file", lang, path=rep.path),
+    lines = [say_line("ch_cycle_title", lang, student=rep.student, title=rep.scene.title), say_line("ch_file", lang, path=rep.path),
              f"  {w['ch_quantity']:<10}{'φ':>9}{w['ch_student']:>12}{w['ch_exact']:>12}{w['ch_error_pct']:>10}  "
              f"{w['ch_tolerance_col']}  {w['ch_verdict']}"]
     for i in rep.items:
-        phi = "" if i.phi_deg is None else _dec(f"{i.phi_deg:g}", lang)
-        verdict = _say("ch_pass" if i.verdict == "pass" else "ch_fail", lang) if lang == "ru" else i.verdict
-        tol = _dec(i.tolerance, lang).replace(" mm", " " + _unit("mm", lang))
-        lines.append(f"  {quantity_name(i.quantity, lang):<10}{phi:>9}{_dec(f'{i.student:.6g}', lang):>12}"
-                     f"{_dec(f'{i.exact:.6g}', lang):>12}{_dec(f'{i.error_pct:.2f}', lang):>10}  {tol:<9}  {verdict}")
-    lines.append(_say("ch_cycle_sum", lang, n=len(rep.items), passed=rep.passed, failed=rep.failed))
+        phi = "" if i.phi_deg is None else decimal(f"{i.phi_deg:g}", lang)
+        verdict = say_line("ch_pass" if i.verdict == "pass" else "ch_fail", lang) if lang == "ru" else i.verdict
+        tol = decimal(i.tolerance, lang).replace(" mm", " " + unit_word("mm", lang))
+        lines.append(f"  {quantity_name(i.quantity, lang):<10}{phi:>9}{decimal(f'{i.student:.6g}', lang):>12}"
+                     f"{decimal(f'{i.exact:.6g}', lang):>12}{decimal(f'{i.error_pct:.2f}', lang):>10}  {tol:<9}  {verdict}")
+    lines.append(say_line("ch_cycle_sum", lang, n=len(rep.items), passed=rep.passed, failed=rep.failed))
     return "\n".join(lines)
 
 
@@ -303,33 +303,33 @@ def csv_text(rep: CycleReport, lang: str = "en") -> str:
     import csv
     import io
 
-    from plans.check.report import _dec, _say, _unit
+    from plans.check.report import decimal, say_line, unit_word
 
     ru = lang == "ru"
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(CSV_COLUMNS_RU if ru else CSV_COLUMNS)
     for i in rep.items:
-        num = (lambda x: _dec(repr(x), lang)) if ru else repr  # noqa: E731
+        num = (lambda x: decimal(repr(x), lang)) if ru else repr  # noqa: E731
         w.writerow([i.quantity, "" if i.phi_deg is None else num(i.phi_deg), num(i.student), num(i.exact),
-                    _unit(i.unit, lang), _dec(f"{i.error_pct:.4f}", lang),
-                    "" if i.error_mm is None else _dec(f"{i.error_mm:.4f}", lang),
-                    _dec(i.tolerance, lang).replace(" mm", " " + _unit("mm", lang)),
-                    _say("ch_pass" if i.verdict == "pass" else "ch_fail", lang) if ru else i.verdict, i.field])
+                    unit_word(i.unit, lang), decimal(f"{i.error_pct:.4f}", lang),
+                    "" if i.error_mm is None else decimal(f"{i.error_mm:.4f}", lang),
+                    decimal(i.tolerance, lang).replace(" mm", " " + unit_word("mm", lang)),
+                    say_line("ch_pass" if i.verdict == "pass" else "ch_fail", lang) if ru else i.verdict, i.field])
     return buf.getvalue()
 
 
 def summary_row(path: str, rep: CycleReport, lang: str = "en") -> dict[str, Any]:
     """The line of ``summary.csv`` (``plans check DIR``) for a cycle check file."""
-    from plans.check.report import _dec, _say
+    from plans.check.report import decimal, say_line
     from plans.language import quantity_name
 
     worst = max(rep.items, key=lambda i: abs(i.error_pct), default=None)
-    where = "" if worst is None else (quantity_name(worst.quantity, lang) if worst.phi_deg is None else _say(
-        "ch_at", lang, what=quantity_name(worst.quantity, lang), phi=_dec(f"{worst.phi_deg:g}", lang)))
+    where = "" if worst is None else (quantity_name(worst.quantity, lang) if worst.phi_deg is None else say_line(
+        "ch_at", lang, what=quantity_name(worst.quantity, lang), phi=decimal(f"{worst.phi_deg:g}", lang)))
     return {"file": path, "student": rep.student, "status": "ok" if lang != "ru" else "проверен",
             "items": len(rep.items), "passed": rep.passed, "failed": rep.failed, "findings": 0, "worst": where,
-            "worst_error_pct": "" if worst is None else _dec(f"{worst.error_pct:.2f}", lang), "message": ""}
+            "worst_error_pct": "" if worst is None else decimal(f"{worst.error_pct:.2f}", lang), "message": ""}
 
 
 def outputs(rep: CycleReport, target: Path, out: Path, lang: str = "en") -> dict[Path, str]:

@@ -164,14 +164,14 @@ def synthesis_values(data: dict[str, Any], path: str) -> tuple[str, dict[str, fl
     """A synthesis task designed: the scene's text and the design's figures (lengths
     ``l_<name>`` in the file's unit, ``theta`` in degrees, ``K``, the stroke ``H`` or the
     swing ``psi`` in degrees, ``gamma_min`` in degrees, as measured back on the design)."""
-    from plans.synthesis.cli import _check_scene, results
+    from plans.synthesis.cli import check_scene, results
     from plans.synthesis.design import design
     from plans.synthesis.model import task_from_dict
     from plans.synthesis.scene import scene_text
 
     d = design(task_from_dict(data, path))
     text = scene_text(d)
-    _check_scene(text, path)
+    check_scene(text, path)
     res = results(d, "scene.toml")
     out = {f"l_{k}": float(v) for k, v in res["lengths"].items() if v}
     out["K"] = float(res["K_measured"])
@@ -502,30 +502,30 @@ def sheet_check_of(path: str | Path) -> SheetReport | None:
 
 def table(rep: SheetReport, lang: str = "en") -> str:
     """The report on the terminal: the mark, the causes, what no cause explains, every figure."""
-    from plans.check.report import _dec, _kind, _say
+    from plans.check.report import decimal, kind_word, say_line
     from plans.language import CHECK_TERMS
 
     def g(x: float, spec: str = "g") -> str:
-        return _dec(format(x, spec), lang)
+        return decimal(format(x, spec), lang)
 
-    sheet = _say(f"sc_{rep.sheet}", lang) if f"sc_{rep.sheet}" in CHECK_TERMS else rep.sheet
-    lines = [_say("sc_head", lang, student=rep.student or Path(rep.path).stem, sheet=sheet)
-             + (_say("sc_variant", lang, v=rep.variant) if rep.variant else ""),
-             _say("ch_mark", lang, mark=_say("ch_of", lang, mark=g(rep.mark), full=g(rep.full)))]
+    sheet = say_line(f"sc_{rep.sheet}", lang) if f"sc_{rep.sheet}" in CHECK_TERMS else rep.sheet
+    lines = [say_line("sc_head", lang, student=rep.student or Path(rep.path).stem, sheet=sheet)
+             + (say_line("sc_variant", lang, v=rep.variant) if rep.variant else ""),
+             say_line("ch_mark", lang, mark=say_line("ch_of", lang, mark=g(rep.mark), full=g(rep.full)))]
     if rep.causes:
-        lines.append(_say("sc_mistakes", lang))
+        lines.append(say_line("sc_mistakes", lang))
         for n, c in enumerate(rep.causes, 1):
-            lines.append(_say("sc_mistake", lang, n=n, kind=_kind(c.kind, lang), detail=c.text(lang),
+            lines.append(say_line("sc_mistake", lang, n=n, kind=kind_word(c.kind, lang), detail=c.text(lang),
                               names=", ".join(c.explains), d=g(c.deduction)))
     else:
-        lines.append(_say("sc_none", lang) if not rep.unexplained else _say("sc_none_explains", lang))
+        lines.append(say_line("sc_none", lang) if not rep.unexplained else say_line("sc_none_explains", lang))
     if rep.unexplained:
-        lines.append(_say("sc_unexplained", lang, names=", ".join(i.quantity for i in rep.unexplained)))
-    w = {k: _say(k, lang) for k in ("ch_quantity", "ch_phi", "ch_student", "ch_exact", "ch_verdict")}
+        lines.append(say_line("sc_unexplained", lang, names=", ".join(i.quantity for i in rep.unexplained)))
+    w = {k: say_line(k, lang) for k in ("ch_quantity", "ch_phi", "ch_student", "ch_exact", "ch_verdict")}
     lines.append(f"{w['ch_quantity']:<14}{w['ch_phi']:>6}{w['ch_student']:>13}{w['ch_exact']:>13}{'±':>10}  "
                  f"{w['ch_verdict']}")
     for it in rep.items:
-        verdict = _say("ch_pass" if it.verdict == "pass" else "ch_fail", lang) if lang == "ru" else it.verdict
+        verdict = say_line("ch_pass" if it.verdict == "pass" else "ch_fail", lang) if lang == "ru" else it.verdict
         lines.append(f"{it.quantity:<14}{g(it.phi_deg):>6}{g(it.student, '.6g'):>13}{g(it.exact, '.6g'):>13}"
                      f"{g(it.tolerance, '.3g'):>10}  {verdict}")
     return "\n".join(lines)
@@ -533,24 +533,24 @@ def table(rep: SheetReport, lang: str = "en") -> str:
 
 def summary_row(path: str, rep: SheetReport, lang: str = "en") -> dict[str, Any]:
     """The row of ``summary.csv`` (the examiner's columns)."""
-    from plans.check.report import _dec, _kind, _say
+    from plans.check.report import decimal, kind_word, say_line
 
     def at(q: str, phi: float) -> str:
-        return _say("ch_at", lang, what=q, phi=_dec(f"{phi:g}", lang))
+        return say_line("ch_at", lang, what=q, phi=decimal(f"{phi:g}", lang))
 
     failed = [i for i in rep.items if i.verdict == "fail"]
     worst = max(rep.items, key=lambda i: abs(i.student - i.exact) / i.tolerance if i.tolerance else 0.0,
                 default=None)
     return {"file": path, "student": rep.student, "status": "ok" if lang != "ru" else "проверен",
-            "mark": _dec(f"{rep.mark:g}", lang),
-            "causes": "; ".join(_kind(c.kind, lang) for c in rep.causes),
+            "mark": decimal(f"{rep.mark:g}", lang),
+            "causes": "; ".join(kind_word(c.kind, lang) for c in rep.causes),
             "unexplained": "; ".join(at(i.quantity, i.phi_deg) for i in rep.unexplained),
             "items": len(rep.items), "passed": len(rep.items) - len(failed), "failed": len(failed), "findings": 0,
             "worst": "" if worst is None else at(worst.quantity, worst.phi_deg),
             "worst_error_pct": "" if worst is None or not worst.exact else
-            _dec(f"{100 * (worst.student - worst.exact) / abs(worst.exact):.2f}", lang),
+            decimal(f"{100 * (worst.student - worst.exact) / abs(worst.exact):.2f}", lang),
             "worst_tol": "" if worst is None or not worst.tolerance else
-            _dec(f"{abs(worst.student - worst.exact) / worst.tolerance:.2f}", lang), "message": ""}
+            decimal(f"{abs(worst.student - worst.exact) / worst.tolerance:.2f}", lang), "message": ""}
 
 
 def sheet_outputs(rep: SheetReport, path: Path, out: Path,
