@@ -63,7 +63,7 @@ class Said:
 
     __slots__ = ("key", "values")
 
-    def __init__(self, key: str, **values: Any) -> None:
+    def __init__(self, key: str, /, **values: Any) -> None:
         self.key, self.values = key, values
 
     def text(self, lang: str = "en") -> str:

@@ -366,3 +366,16 @@ def test_the_locale_is_the_last_default(monkeypatch, capsys):
     assert "план скоростей" in capsys.readouterr().out
     monkeypatch.setenv("LC_ALL", "en_GB.UTF-8")
     assert choose(None, {}) == "en"
+
+
+def test_a_figure_without_its_key_is_named_in_both_languages(tmp_path, capsys):
+    """A measured figure written as a table without ``mm``: the missing key named in the
+    run's language (the key itself as the file writes it)."""
+    shutil.copy(HOSTILE / "scene.toml", tmp_path / "scene.toml")
+    text = (HOSTILE / "check.toml").read_text(encoding="utf-8")
+    assert text.count("\nv_B = 60\n") == 1
+    (tmp_path / "check.toml").write_text(text.replace("\nv_B = 60\n", '\nv_B = { where = "3.1" }\n'), encoding="utf-8")
+    assert main(["check", str(tmp_path / "check.toml")]) == 2
+    assert capsys.readouterr().err.rstrip().endswith("measured.v_B: missing mm")
+    assert main(["check", str(tmp_path / "check.toml"), "--language", "ru"]) == 2
+    assert capsys.readouterr().err.rstrip().endswith("measured.v_B: не задано mm")

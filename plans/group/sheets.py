@@ -399,7 +399,7 @@ def _diagnose(kind: str, part: dict[str, Any], src: str, items: list[SheetItem],
     each model a sheet of predicted figures; it explains a failing figure it predicts within
     the figure's tolerance and must not move a passing one out of it."""
     failing = [it for it in items if it.verdict == "fail"]
-    models: list[tuple[str, str, dict[tuple[str, float], float]]] = []
+    models: list[tuple[str, wd.Words, dict[tuple[str, float], float]]] = []
     if failing and kind == "gears":
         xs = {q[0][2:]: v for q, v in written.items() if q[0].startswith("x_")}
         if any(it.quantity.startswith("x_") for it in failing):
