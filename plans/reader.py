@@ -228,7 +228,7 @@ class Reader:
         try:
             out = parse_length(value, unit)
         except ValueError as exc:
-            raise self.fail(field, str(exc)) from None
+            raise self.fail(field, _length_said(str(exc))) from None
         except OverflowError:
             raise self.fail(field, Said("e_length_max", limit=LENGTH_LIMIT, got=show(value))) from None
         if not math.isfinite(out):
@@ -240,6 +240,21 @@ class Reader:
         if positive and abs(out) < LENGTH_FLOOR:  # a size; a coordinate or offset of dust is kept
             raise self.fail(field, Said("e_length_min", got=show(value)))
         return out
+
+
+#: parse_length's reasons (plans.units stays free of messages) as catalogue sentences.
+_LENGTH_REASONS = {"expected a length (number or string like '35 mm')": "e_length_bool",
+                   "expected a finite length": "e_length_inf",
+                   "expected a length: a number in the file's unit or a string like '35 mm'": "e_length_of"}
+
+
+def _length_said(reason: str) -> Said | str:
+    import re
+
+    digits = re.fullmatch(r"expected a length of a sensible size, got an integer of (\d+) digits", reason)
+    if digits:
+        return Said("e_length_digits", n=int(digits.group(1)))
+    return Said(_LENGTH_REASONS[reason]) if reason in _LENGTH_REASONS else reason
 
 
 def show(value: Any) -> Any:
