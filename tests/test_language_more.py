@@ -155,7 +155,9 @@ def _all_keys() -> set[str]:
     from plans.forces import loads
     from plans.scene import model
 
-    out = set(RUBRIC) | {"ratio", "along", "across", "toward", "through", "mu", "K", "known_mm", "scene", "student", "kind", "omega", "true", "false", "direction_deg"}
+    out = set(RUBRIC) | {"ratio", "along", "across", "toward", "through", "mu", "K", "known_mm", "scene", "student",
+                         "kind", "omega", "true", "false", "direction_deg", "vector", "magnitude", "resisting", "value",
+                         "table", "expression", "stroke", "Fx", "Fy"}
     for mod in (model, loads, checkfile):
         for name, value in vars(mod).items():
             if name.endswith("KEYS") and isinstance(value, set | frozenset):
