@@ -680,6 +680,17 @@ ERRORS: dict[str, tuple[str, str]] = {
     "e_length_inf": ("expected a finite length", "ожидалась конечная длина"),
     "e_length_of": ("expected a length: a number in the file's unit or a string like '35 mm'",
                     "ожидалась длина: число в единицах файла или строка вида '35 mm'"),
+    # ---- plans check's command (plans/check/command.py)
+    "k_nothing": ("expected a check file, a CSV form or a folder (or --template SCENE)",
+                  "ожидался файл проверки, форма CSV или папка (или --template SCENE)"),
+    "k_link": ("a symbolic link to no readable file (a loop, or its target gone)",
+               "символическая ссылка не ведёт к читаемому файлу (петля или цель удалена)"),
+    "k_no_file": ("no such file or folder", "нет такого файла или папки"),
+    "k_no_folder": ("{path}: no such folder {folder}", "{path}: нет папки {folder}"),
+    "k_json_folder": ("--json is for one file; a folder writes one report per file into --out",
+                      "--json — для одного файла; для папки отчёты по файлам пишутся в --out"),
+    "k_no_checks": ("no check files (*.toml)", "нет файлов проверки (*.toml)"),
+    "k_make_folder": ("cannot create the output folder {folder}: {why}", "не удаётся создать папку {folder}: {why}"),
     # ---- writing the outputs (plans/io.py, plans/guard.py)
     "o_input": ("{target}: is the input file {src}; refusing to overwrite it (expected another path for the output)",
                 "{target}: это входной файл {src}; он не будет перезаписан (ожидался другой путь для результата)"),

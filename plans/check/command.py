@@ -21,7 +21,7 @@ from plans.check.report import (
     table,
     write_summary,
 )
-from plans.errors import OutputError, PlansError, one_line
+from plans.errors import OutputError, PlansError, Said, one_line, run_language
 from plans.guard import abandon
 from plans.io import dumps, refuse_input, write_all
 from plans.io import remove as remove_files
@@ -86,7 +86,7 @@ def run(args: argparse.Namespace) -> int:
 
         return run_template(args)
     if not args.path:
-        error_line("expected a check file, a CSV form or a folder (or --template SCENE)")
+        error_line(Said("k_nothing").text(run_language()))
         return 2
     target = Path(args.path)
     try:
@@ -97,9 +97,8 @@ def run(args: argparse.Namespace) -> int:
 
             return run_form(target, args)
         if not target.exists():
-            why = "a symbolic link to no readable file (a loop, or its target gone)" if target.is_symlink() \
-                else "no such file or folder"
-            error_line(f"{target}: {why}")
+            why = Said("k_link") if target.is_symlink() else Said("k_no_file")
+            error_line(f"{target}: {why.text(run_language())}")
             return 2
         for out_path in (args.json, args.csv):
             refuse_input(out_path, target)
@@ -127,7 +126,7 @@ def run(args: argparse.Namespace) -> int:
             files[out / f"{target.stem}.txt"] = table(report, lang) + "\n"
         for out_path in (args.json, args.csv):
             if out_path and out_path != "-" and not Path(out_path).parent.is_dir():
-                raise OutputError(f"{out_path}: no such folder {Path(out_path).parent}")
+                raise OutputError(Said("k_no_folder", path=out_path, folder=str(Path(out_path).parent)))
         files.update(_extra(args, report, target))
         for folder in sorted({p.parent for p in files}):
             make_folder(folder)
@@ -157,7 +156,7 @@ def run(args: argparse.Namespace) -> int:
 
 def _batch(folder: Path, args: argparse.Namespace) -> int:
     if args.json:
-        error_line(f"{folder}: --json is for one file; a folder writes one report per file into --out")
+        error_line(f"{folder}: {Said('k_json_folder').text(run_language())}")
         return 2
     files = sorted(p for p in folder.glob("*.toml") if p.is_file())
     from plans.check.forms import is_scene
@@ -174,7 +173,7 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
     files = [f for f in files if f not in scenes]
     beside = scenes[0] if len(scenes) == 1 else None
     if not files:
-        error_line(f"{folder}: no check files (*.toml)")
+        error_line(f"{folder}: {Said('k_no_checks').text(run_language())}")
         return 2
     out = Path(args.out) if args.out else folder / "reports"
     make_folder(out)

@@ -69,7 +69,7 @@ from plans.check.findings import (
 )
 from plans.check.providers import STUDENT_ONLY, Context, Exact, exact_value, known_quantities
 from plans.check.relations import relation_findings
-from plans.errors import InputError, OutputError, PlansError
+from plans.errors import InputError, OutputError, PlansError, Said, os_reason
 from plans.io import atomic_write
 from plans.units import DUST, percent
 
@@ -490,7 +490,7 @@ def make_folder(folder: Path) -> None:
     try:
         folder.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
-        raise OutputError(f"cannot create the output folder {folder}: {exc.strerror}") from None
+        raise OutputError(Said("k_make_folder", folder=str(folder), why=os_reason(exc))) from None
 
 
 def write_summary(rows: list[dict[str, Any]], args: argparse.Namespace, out: Path) -> None:
