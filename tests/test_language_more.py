@@ -178,7 +178,7 @@ def _without_keys(text: str) -> str:
 
 def _literal(template: str) -> str:
     """A template without its fields (the values are the file's own words)."""
-    return re.sub(r"\[+[\w. ]+\]+|\"[^\"]*\"|'[^']*'|--[\w-]+", " ", re.sub(r"\{[^{}]*\}", " ", template))  # a field; a [table] or [[array]] of the file
+    return re.sub(r"\[+[\w. ]+\]+|\"[^\"]*\"|'[^']*'|--[\w-]+|\*\.\w+", " ", re.sub(r"\{[^{}]*\}", " ", template))  # a field; a [table] or [[array]] of the file
 
 
 @pytest.mark.parametrize("table", [ERRORS, WARNINGS, CHECK_TERMS], ids=["errors", "warnings", "check"])
