@@ -120,7 +120,7 @@ def test_a_resisting_force_on_both_strokes_warns(capsys):
     _forces(_scene("shaper", force={"name": "F_c", "link": 5, "point": "E", "resisting": 1000,
                                         "along": 0}))
     err = capsys.readouterr().err
-    assert "warning" in err and "loads.force[0].resisting" in err and "F_c" in err and "idle" in err
+    assert "warning" in err and "[[loads.force]] entry 1, resisting" in err and "F_c" in err and "idle" in err
     assert err.count("\n") == 1  # once per scene
     for stroke in ("working", "both", "positive"):
         _forces(_scene("shaper", force={"name": "F_c", "link": 5, "point": "E", "resisting": 1000,
@@ -134,7 +134,7 @@ def test_a_resisting_moment_warns_in_the_scenes_language(capsys):
     data["sheet"] = dict(data.get("sheet", {}), language="ru")
     _forces(scene_from_dict(data, "four_bar.toml"))
     err = capsys.readouterr().err
-    assert "внимание" in err and "холостом" in err and "loads.moment[0].resisting" in err
+    assert "внимание" in err and "холостом" in err and "[[loads.moment]] № 1, resisting" in err
 
 
 def test_no_warning_when_the_strokes_take_equal_time(capsys):
@@ -177,7 +177,7 @@ def test_a_force_by_the_sign_of_its_velocity_on_the_fast_stroke_only_warns(capsy
         _forces(_scene("whitworth", force={"name": "F_c", "link": 5, "point": "E", "resisting": 1500, "along": 0,
                                            "stroke": stroke}))
         err = capsys.readouterr().err
-        assert ("idle (fast) stroke only" in err and "loads.force[0].stroke" in err) == warned, (stroke, err)
+        assert ("idle (fast) stroke only" in err and "[[loads.force]] entry 1, stroke" in err) == warned, (stroke, err)
 
 
 @pytest.mark.parametrize("load", [
