@@ -6,13 +6,18 @@
 sentences in :mod:`plans.phrases`, which merges them and writes them (:func:`plans.phrases.say`):
 a decimal comma in Russian, the textbook's Russian terms and symbols (F_ур, μ, π).
 
-One language per run: ``--language ru|en``, else the file's ``[sheet] language``, else English.
+One language per run: ``--language ru|en``, else the file's ``[sheet] language``, else the
+locale's (``LC_ALL``/``LC_MESSAGES``/``LANG`` starting with ``ru``: Russian), else English.
 """
 
 from __future__ import annotations
 
 from collections.abc import Mapping
 from typing import Any
+
+# the checker's words and the errors' and warnings' lines, read from here as before
+from plans.check_terms import CAUSES, CHECK_SENTENCES, CHECK_TERMS, KINDS_RU, PLANS_RU  # noqa: E402, F401
+from plans.messages import ERRORS, WARNINGS  # noqa: E402, F401
 
 SHEET_WORDS: dict[str, tuple[str, str]] = {
     "scheme": ("Кинематическая схема", "Kinematic scheme"),
@@ -71,6 +76,17 @@ SHEET_WORDS: dict[str, tuple[str, str]] = {
     "by_groups": ("кинетостатика", "kinetostatics"),
     "by_lever": ("рычаг Жуковского", "Zhukovsky lever"),
     "by_power": ("баланс мощностей", "power balance"),
+}
+
+
+#: Units written in Russian, every spelling the engine uses (a value named ``unit...`` in a
+#: protocol's sentence, a check's unit, a table's column).
+UNITS_RU: dict[str, str] = {
+    "m/s": "м/с", "m/s^2": "м/с²", "m/s²": "м/с²", "rad/s": "рад/с", "rad/s^2": "рад/с²", "rad/s²": "рад/с²",
+    "N": "Н", "N m": "Н·м", "N·m": "Н·м", "N*m": "Н·м", "mm": "мм", "cm": "см", "m": "м", "J": "Дж", "W": "Вт",
+    "kg": "кг", "kg m^2": "кг·м²", "kg·m^2": "кг·м²", "kg*m^2": "кг·м²", "kg·m²": "кг·м²", "%": "%",
+    "unit": "ед.", "s": "с", "rpm": "об/мин", "mm/m": "мм/м", "mm/(m/s)": "мм/(м/с)", "mm/(m/s²)": "мм/(м/с²)",
+    "mm/(m/s^2)": "мм/(м/с²)", "mm/N": "мм/Н", "mm/unit": "мм/ед.",
 }
 
 
@@ -254,6 +270,89 @@ TERMS: dict[str, tuple[str, str]] = {
     "k_against": ("against", "против вращения кривошипа"),
     "y_plans": ("Plans over the cycle", "Планы за цикл"),
     "y_positions": ("Positions over the cycle", "Положения за цикл"),
+    # ---- the cycle: kinematic diagrams, machine dynamics, the flywheel (plans solve)
+    "y_analogues": ("Velocity analogues (plans for ω1 = 1, μ = {mu:.4g} mm/m)",
+                    "Аналоги скоростей (планы при ω1 = 1, μ = {mu:.4g} мм/м)"),
+    "y_inertia": ("Reduced moment of inertia", "Приведённый момент инерции"),
+    "y_forces": ("Reduced moment of forces (positive when the loads drive the crank)",
+                 "Приведённый момент сил (положителен, когда нагрузки движут кривошип)"),
+    "y_energy": ("Work and kinetic energy (graphical integration)",
+                 "Работа и кинетическая энергия (графическое интегрирование)"),
+    "y_position": ("position", "положение"),
+    "y_phi": ("phi, deg", "φ, °"),
+    "y_chords": ("chords", "метод хорд"),
+    "y_tangents": ("tangents", "метод касательных"),
+    "y_diagrams": ("Kinematic diagrams ({method}, H1 = {h1:g} mm, H2 = {h2:g} mm, μφ = {mu:.4g} mm/rad); "
+                   "error of the graphical method in % of each diagram's range",
+                   "Кинематические диаграммы ({method}, H1 = {h1:g} мм, H2 = {h2:g} мм, μφ = {mu:.4g} мм/рад); "
+                   "погрешность графического метода в % от размаха каждой диаграммы"),
+    "y_diagram": ("  {name:<8} {formula:<44} max {mx:.3g} %, rms {rms:.3g} %{integ}",
+                  "  {name:<8} {formula:<44} max {mx:.3g} %, ср. кв. {rms:.3g} %{integ}"),
+    "y_integ": ("; integrated back from the next: max {mx:.3g} %",
+                "; при обратном интегрировании следующей: max {mx:.3g} %"),
+    "y_dynamics": ("Machine dynamics over the steady cycle{cycle}", "Динамика машины за цикл установившегося движения{cycle}"),
+    "y_720": (" of 720° (two revolutions)", " 720° (два оборота)"),
+    "y_sign_rule": ("  M_pr is the power of the loads over |ω1|: positive where they drive the crank, negative where "
+                    "they resist it (the driving moment is not among them)",
+                    "  M_пр — мощность нагрузок, делённая на |ω1|: положителен, где они движут кривошип, "
+                    "отрицателен, где сопротивляются (движущий момент в них не входит)"),
+    "y_driving": ("  driving moment M_d = {g:.6g} N·m (graphical), {e:.6g} N·m (exact)",
+                  "  движущий момент M_д = {g:.6g} Н·м (графически), {e:.6g} Н·м (точно)"),
+    "y_scales": ("  scales: μφ = {phi:.4g} mm/rad, μM = {M:.4g} mm/(N·m), H = {H:.4g} mm, μA = μM·μφ/H = {A:.4g} mm/J, "
+                 "μI = {I:.4g} mm/(kg·m²)",
+                 "  масштабы: μφ = {phi:.4g} мм/рад, μM = {M:.4g} мм/(Н·м), H = {H:.4g} мм, μA = μM·μφ/H = {A:.4g} "
+                 "мм/Дж, μI = {I:.4g} мм/(кг·м²)"),
+    "y_flywheel": ("  flywheel for δ = {d:g} at ω_m = {w:.6g} rad/s (added at the crank on top of I_pr):",
+                   "  маховик для δ = {d:g} при ω_ср = {w:.6g} рад/с (добавляется на кривошипе сверх I_пр):"),
+    "y_wittenbauer": ("    Wittenbauer (graphical)  I = {I:.6g} kg·m²  -> achieved δ = {d:.6g}  (error {e:+.2f} % against "
+                      "the exact flywheel)",
+                      "    по Виттенбауэру (графически)  I = {I:.6g} кг·м²  → достигнутый δ = {d:.6g}  (погрешность "
+                      "{e:+.2f} % относительно точного маховика)"),
+    "y_merkalov": ("    Merkalov                 I = {I:.6g} kg·m²  -> achieved δ = {d:.6g}",
+                   "    по Мерцалову                  I = {I:.6g} кг·м²  → достигнутый δ = {d:.6g}"),
+    "y_exact": ("    exact                    I = {I:.6g} kg·m²  -> achieved δ = {d:.6g}",
+                "    точно                         I = {I:.6g} кг·м²  → достигнутый δ = {d:.6g}"),
+    "y_bound": ("  Wittenbauer's flywheel is within {b:.3g} kg·m² of the exact one (its own bound); the work of the "
+                "loads is integrated to {w}",
+                "  маховик по Виттенбауэру отличается от точного не более чем на {b:.3g} кг·м² (его собственная "
+                "оценка); работа нагрузок проинтегрирована с точностью {w}"),
+    "y_work": ("{w:.2g} J", "{w:.2g} Дж"),
+    "y_work_fine": ("better than 1e-9 J", "лучше 1e-9 Дж"),
+    "y_note": ("  note: {t}", "  примечание: {t}"),
+    "y_no_flywheel": ("the machine's own inertia already keeps δ below {d:g}: no flywheel is needed",
+                      "собственная инерция машины уже держит δ ниже {d:g}: маховик не нужен"),
+    # ---- plans design
+    "dm_slider_crank": ("slider crank", "кривошипно-ползунный механизм"),
+    "dm_crank_rocker": ("crank rocker", "кривошипно-коромысловый механизм"),
+    "dm_coulisse": ("coulisse", "кулисный механизм"),
+    "dm_v_engine": ("v engine", "механизм V-образного двигателя"),
+    "d_coulisse": ("coulisse", "кулиса"),
+    "d_central": (" (central)", " (центральный)"),
+    "d_offset_model": (" (offset)", " (дезаксиальный)"),
+    "d_three_positions": (" (three positions)", " (по трём положениям)"),
+    "d_crank": ("crank", "кривошип"),
+    "d_coupler": ("coupler", "шатун"),
+    "d_rocker": ("rocker", "коромысло"),
+    "d_frame": ("frame", "стойка"),
+    "d_rod": ("rod", "шатун"),
+    "d_offset": ("offset", "эксцентриситет"),
+    "d_centre_distance": ("centre_distance", "межосевое расстояние"),
+    "d_guide_height": ("guide_height", "высота направляющей"),
+    "d_length": ("{k} {v:.6g} {u}", "{k} {v:.6g} {u}"),
+    "d_K": ("  K {K:.6g} (θ {theta:.6g} deg), measured {m:.12g}", "  K = {K:.6g} (θ = {theta:.6g}°), по построению {m:.12g}"),
+    "d_K_measured": ("  K measured {m:.12g}", "  K по построению {m:.12g}"),
+    "d_stroke": ("  stroke {given}measured {m:.12g} {u}", "  ход {given}по построению {m:.12g} {u}"),
+    "d_given": ("{v:.6g} {u}, ", "{v:.6g} {u}, "),
+    "d_swing": ("  swing {given}measured {m:.12g} deg", "  угол размаха {given}по построению {m:.12g}°"),
+    "d_given_deg": ("{v:.6g} deg, ", "{v:.6g}°, "),
+    "d_gamma": ("  gamma_min {g:.6g} deg at phi {at:.6g} deg", "  γ_min = {g:.6g}° при φ = {at:.6g}°"),
+    "d_pressure": ("; pressure angle max {p:.6g} deg", "; наибольший угол давления {p:.6g}°"),
+    "d_cylinder": ("  cylinder {c}: stroke measured {s:.12g} {u}, K measured {k:.12g}",
+                   "  цилиндр {c}: ход по построению {s:.12g} {u}, K по построению {k:.12g}"),
+    "d_three": ("  the three positions met to {e:.3g} deg", "  три положения выдержаны с точностью {e:.3g}°"),
+    "d_turns": ("  the crank turns fully, one assembly branch", "  кривошип проворачивается полностью, одна ветвь сборки"),
+    "d_grashof": ("; Grashof holds", "; условие Грасгофа выполнено"),
+    "d_chosen": ("  chosen: {c}", "  выбрано: {c}"),
     # ---- friction (plans solve)
     "fr_settled": ("settled to {tol:g}", "сошлись с точностью {tol:g}"),
     "fr_locked": ("did not settle: self-locking", "не сошлись: самоторможение"),
@@ -286,6 +385,7 @@ TERMS: dict[str, tuple[str, str]] = {
                 "δ = ({l}_рыч − {l}_кин)/{l}_кин (по чертежам)"),
 }
 
+# ============================================================================ plans check
 #: Russian symbols of the terminal's English spellings (the textbook's letters; π is the
 #: acceleration pole, p the velocity pole).
 _SYMBOLS = ((r"\bp_a(?![A-Z_])", "π"), (r"\bp_v(?![A-Z_])", "p"), (r"\bomega_?(?=\w)", "ω"), (r"\beps_?(?=\w)", "ε"),
@@ -294,6 +394,32 @@ _SYMBOLS = ((r"\bp_a(?![A-Z_])", "π"), (r"\bp_v(?![A-Z_])", "p"), (r"\bomega_?(
             (r"\brad/s", "рад/с"), (r"(?<![\w/])m/s", "м/с"), (r"\bmm\b", "мм"), (r"\bN·m\b", "Н·м"),
             (r"(?<=\d )N\b", "Н"), (r"\bN\b(?= )", "Н"), (r"\binitial link\b", "начальное звено"),
             (r"\b(RRR|RRP|RPR|PRP|RPP|PRR|PPR) group\b", r"группа \1"), (r"\bgroup\b", "группа"))
+
+
+_GREEK = {"Phi": "Φ", "omega": "ω", "eps": "ε", "tau": "τ"}
+_QUANTITY_RU = {"F_bal": "F_ур", "M_bal": "M_ур", "F_bal_lever": "F_ур (рычаг)", "F_bal_diff_pct": "δF_ур, %",
+                "p_a": "π", "p_v": "p"}
+
+
+def quantity_name(name: str, lang: str) -> str:
+    """A quantity key of the check (``M_Phi_2``, ``omega_1``, ``h_Phi2_B``) as a Russian text
+    writes it (M_Φ2, ω1, h_Φ2,B, F_ур); in English the key itself."""
+    if lang != "ru":
+        return name
+    if name in _QUANTITY_RU:
+        return _QUANTITY_RU[name]
+    head, sep, rest = name.partition("_")
+    head = _GREEK.get(head, head)
+    if not sep:
+        return head
+    parts = rest.split("_")
+    if head in ("ω", "ε"):
+        return head + "".join(parts)
+    if parts[0] in _GREEK:  # M_Phi_2 -> M_Φ2
+        return f"{head}_{_GREEK[parts[0]]}{''.join(parts[1:])}"
+    if parts[0].startswith("Phi"):  # an arm: h_Phi2_B -> h_Φ2,B
+        return f"{head}_{','.join([_GREEK['Phi'] + parts[0][3:]] + parts[1:])}"
+    return f"{head}_{'_'.join(parts)}"
 
 
 def symbols(text: str, lang: str) -> str:
@@ -307,18 +433,31 @@ def symbols(text: str, lang: str) -> str:
     return text
 
 
+def locale_language() -> str:
+    """The environment's language: Russian when the locale (``LC_ALL``, else ``LC_MESSAGES``,
+    else ``LANG``, as POSIX orders them) starts with ``ru``, else English."""
+    import os
+
+    for name in ("LC_ALL", "LC_MESSAGES", "LANG"):
+        value = os.environ.get(name)
+        if value:
+            return "ru" if value.lower().startswith("ru") else "en"
+    return "en"
+
+
 def choose(asked: str | None, data: Mapping[str, Any] | None = None) -> str:
-    """The run's language: the one asked for, else the file's ``[sheet] language``, else English."""
+    """The run's language: the one asked for, else the file's ``[sheet] language``, else the
+    locale's (:func:`locale_language`)."""
     if asked in ("ru", "en"):
         return asked
     sheet = data.get("sheet") if isinstance(data, Mapping) else None
     lang = sheet.get("language") if isinstance(sheet, Mapping) else None
-    return lang if lang in ("ru", "en") else "en"
+    return lang if lang in ("ru", "en") else locale_language()
 
 
 def file_language(asked: str | None, path: str) -> str:
     """:func:`choose` for a file read by its own reader: its ``[sheet]`` table read again
-    (already validated by then, so a failure here just means English)."""
+    (already validated by then, so a failure here just means the locale's language)."""
     if asked in ("ru", "en"):
         return asked
     import tomllib
@@ -326,14 +465,15 @@ def file_language(asked: str | None, path: str) -> str:
     try:
         with open(path, "rb") as fh:
             return choose(None, tomllib.load(fh))
-    except (OSError, ValueError):
-        return "en"
+    except (OSError, ValueError, RecursionError):
+        return locale_language()
 
 
 def add_option(parser: Any) -> None:
     """``--language ru|en`` on a command."""
     parser.add_argument("--language", choices=("ru", "en"),
-                        help="language of the output (default: the file's [sheet] language, else English)")
+                        help="language of the output (default: the file's [sheet] language, else the locale's: "
+                             "Russian when LANG starts with ru, else English)")
 
 
 # ---- task semantics: the positions from the extreme, the strokes of the loads, the course's notation

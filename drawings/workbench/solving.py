@@ -138,9 +138,9 @@ def _partial(sol: Any, at: int, steps: bool) -> dict[str, Any]:
     import numpy as np
 
     from plans.forces.lever import force_json
-    from plans.results import json_head, json_position
+    from plans.results import head_json, position_json
 
-    out = json_head(sol)
+    out = head_json(sol)
     kin = sol.kinematics
     forces = None if sol.forces is None else force_json(sol.forces[1])
     n = kin.n
@@ -158,7 +158,7 @@ def _partial(sol: Any, at: int, steps: bool) -> dict[str, Any]:
     positions = []
     for k in range(n):
         if k == at:
-            positions.append(json_position(sol, k, None if forces is None else forces[k], steps))
+            positions.append(position_json(sol, k, None if forces is None else forces[k], steps))
             continue
         links = {lid: {key: float(col[k]) for key, col in cols} for lid, cols in motion.items()}
         positions.append({"phi_deg": phi[k], "points": {nm: {"r": [z[k].real, z[k].imag]} for nm, z in r.items()},

@@ -6,7 +6,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from plans.reader import Reader, did_you_mean
+from plans.errors import Said
+from plans.reader import Reader, did_you_mean, show
 
 #: What a scene may ask for, and what each one needs first.
 OUTPUTS: dict[str, tuple[str, ...]] = {
@@ -26,7 +27,7 @@ def read_branches(r: Reader, data: dict[str, Any]) -> dict[str, int]:
     out = {}
     for key, value in raw.items():
         if isinstance(value, bool) or value not in (1, -1):
-            raise r.fail(f"branches.{key}", f"expected +1 or -1, got {value!r}")
+            raise r.fail(f"branches.{key}", Said("e_branch", got=show(value)))
         out[r.name(key, f"branches.{key}")] = int(value)
     return out
 
@@ -34,12 +35,12 @@ def read_branches(r: Reader, data: dict[str, Any]) -> dict[str, int]:
 def read_outputs(r: Reader, data: dict[str, Any]) -> frozenset[str]:
     raw = data.get("outputs", ["positions", "velocity_plan", "acceleration_plan"])
     if not isinstance(raw, list) or not all(isinstance(x, str) for x in raw):
-        raise r.fail("outputs", "expected a list of names")
+        raise r.fail("outputs", Said("e_outputs"))
     wanted: set[str] = set()
 
     def add(name: str) -> None:
         if name not in OUTPUTS:
-            raise r.fail("outputs", f"unknown output {name!r}; expected some of {list(OUTPUTS)}")
+            raise r.fail("outputs", Said("e_output", name=name, hint="", known=", ".join(OUTPUTS)))
         if name not in wanted:
             wanted.add(name)
             for dep in OUTPUTS[name]:
@@ -47,8 +48,8 @@ def read_outputs(r: Reader, data: dict[str, Any]) -> frozenset[str]:
 
     for name in raw:
         if name not in OUTPUTS:
-            raise r.fail("outputs", f"unknown output {name!r}{did_you_mean(name, OUTPUTS)} "
-                                    f"(expected some of {', '.join(OUTPUTS)})")
+            raise r.fail("outputs", Said("e_output", name=name, hint=did_you_mean(name, OUTPUTS),
+                                         known=", ".join(OUTPUTS)))
         add(name)
     return frozenset(wanted)
 
@@ -60,7 +61,7 @@ def read_title(r: Reader, value: Any) -> tuple[str, dict[str, str]]:
     if isinstance(value, dict) and value and all(k in ("ru", "en") and isinstance(v, str)
                                                  for k, v in value.items()):
         return str(value.get("en") or value.get("ru") or ""), {str(k): str(v) for k, v in value.items()}
-    raise r.fail("title", "expected a string or { ru = \"...\", en = \"...\" }")
+    raise r.fail("title", Said("e_title"))
 
 
 _SCALE_UNITS = {"length": "mm/m", "velocity": "mm/(m/s)", "acceleration": "mm/(m/s^2)", "force": "mm/N"}
@@ -84,9 +85,8 @@ def read_scales(r: Reader, data: dict[str, Any]) -> tuple[dict[str, float], str]
             out[f"{key}_known_mm"] = r.number(value, "known_mm", f"scales.{key}.", positive=True, limit=1e4)
             continue
         if not isinstance(value, dict) or len(value) != 1 or not ({"mu", "K"} & set(value)):
-            raise r.fail(f"scales.{key}", "expected { mu = mm per unit }, { K = unit per mm }"
-                         + (" or { known_mm = length of the known vector }"
-                            if key in ("velocity", "acceleration") else ""))
+            raise r.fail(f"scales.{key}", Said("e_scale_known" if key in ("velocity", "acceleration")
+                                               else "e_scale"))
         kind = "mu" if "mu" in value else "K"
         x = r.number(value, kind, f"scales.{key}.", positive=True, limit=1e9, floor=1e-9)
         out[key] = x if kind == "mu" else 1.0 / x
