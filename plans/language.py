@@ -334,3 +334,17 @@ def add_option(parser: Any) -> None:
     """``--language ru|en`` on a command."""
     parser.add_argument("--language", choices=("ru", "en"),
                         help="language of the output (default: the file's [sheet] language, else English)")
+
+
+# --------------------------------------------------------------------------- the gear and cam sheets' words
+SHEET_WORDS.update({
+    "coaxiality": ("соосность", "coaxiality"),  # the 2K-H train's conditions
+    "assembly": ("сборка", "assembly"),
+    "neighbourhood": ("соседство", "neighbourhood"),
+    "centre_min": ("O_{мин}", "O_{min}"),  # the cam's centre: the least base radius, the chosen one
+    "centre_best": ("O_{опт}", "O_{best}"),
+    "unit_mm": ("мм", "mm"),
+    "unit_m": ("м", "m"),
+    "working_stroke": ("рабочий ход", "working stroke"),  # the plan of positions
+    "idle_stroke": ("холостой ход", "idle stroke"),
+})

@@ -266,6 +266,13 @@ class Solution:
 
         return self._part("analogues", make)
 
+    def strokes(self) -> Any:
+        """The output link's extreme positions, the working and idle strokes and θ
+        (:class:`plans.kinematics.extremes.Strokes`; None where it has not two)."""
+        from plans.kinematics.extremes import strokes
+
+        return self._part("strokes", lambda: strokes(self.scene))
+
     # -- values by their textbook names (plans.quantities)
     def value(self, name: str, phi: float | None = None) -> float:
         """The quantity ``name`` (``"F_12^τ"``, ``"v_B"``, ``"omega_3"``, ``"F_bal"``...) at the

@@ -120,6 +120,7 @@ SOLVERS = {
     "plans.cycle.results": {"solve_cycle"},
     "plans.cycle.diagrams": {"diagrams"},
     "plans.cycle.dynamics": {"dynamics"},
+    "plans.kinematics.extremes": {"strokes"},
 }
 
 
