@@ -281,7 +281,7 @@ def results_panel(sol: GearSolution, lang: str) -> Panel:
 GAP = 26.0  # mm between the gears' columns on the unfolded scheme
 TICK = 2.0  # mm, half the width of a gear's symbol (its face) along the shaft
 BEARING = (6.0, 2.5)  # mm, a radial bearing's length along the shaft and its half height
-FRAME = Style(width=0.25, cls="frame")
+FRAME = Style(width=0.25)  # the frame's hatching (drawn with the class "hatch")
 
 
 def _bearing(rec: Recording, x: float, y: float, eid: str, fixed: bool = True) -> None:

@@ -353,15 +353,14 @@ STROKE_GAP = 5.0  # mm outside the crank circle: the arcs of the strokes
 
 def _crowded(marks: Sequence[str], pin: str, at: Sequence[dict[str, tuple[float, float]]],
              near: float = 6.0) -> set[str]:
-    """The numbered pins (not the crank pin) with a mark within ``near`` mm of another pin's
-    mark: numbered with their letter there, so two overlapping trajectories never share
-    bare numbers."""
+    """The numbered pins with a mark within ``near`` mm of another pin's mark: numbered with
+    their letter there (the crank pin keeps its bare numbers), so two overlapping
+    trajectories never share bare numbers."""
     out: set[str] = set()
-    others = [m for m in marks if m != pin]
-    for i, a in enumerate(others):
-        for b in others[i + 1:]:
+    for i, a in enumerate(marks):
+        for b in marks[i + 1:]:
             if any(math.dist(p[a], q[b]) < near for p in at for q in at):
-                out |= {a, b}
+                out |= {a, b} - {pin}
     return out
 
 

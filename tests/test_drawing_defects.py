@@ -165,3 +165,21 @@ def test_gear_train_in_gost_symbols_at_round_scales():
     words = " ".join(q.label.plain for p in d.panels for q in p.prims if q.op == "text" and q.label)
     for leak in ("coaxiality", "assembly", "neighbourhood", ", mm"):
         assert leak not in words
+
+
+@pytest.mark.parametrize(("name", "crowded"), [("whitworth", {"D"}), ("shaper", {"D", "E"})])
+def test_overlapping_trajectories_never_share_bare_numbers(name, crowded):
+    """Two pins' marks within 6 mm of each other (the coulisse's D on the crank circle's
+    side, the rocker's end over the ram's guide): every such mark but the crank pin's is
+    numbered with its letter, so no two bare numbers of different pins sit together."""
+    from drawings.overview import positions_panel
+    from drawings.panels import strokes_over_cycle
+    from plans.solution import Solution
+
+    sol = Solution(load_scene(SAMPLES / f"{name}.toml"))
+    panel = positions_panel(sol, 500.0, "ru", [0], strokes_over_cycle(sol))
+    marks = [(q.eid.split("-")[2], q.label) for q in panel.prims if q.op == "text" and q.eid.startswith("positions-n-")]
+    bare = {pt for pt, lab in marks if re.fullmatch(r"[\d, ]+", lab.plain)}
+    assert "A" in bare and not bare & crowded  # the crank pin's numbers stand bare
+    lettered = [lab.plain for pt, lab in marks if pt in crowded]
+    assert lettered and all(re.fullmatch(r"([A-Z]\d+)(, [A-Z]\d+)*", t) for t in lettered), lettered
