@@ -16,7 +16,7 @@ from plans.cams.base_radius import BaseRadius, allowed_region, division_points, 
 from plans.cams.graphical import Integration, integral_scale, integrate_cam
 from plans.cams.model import Cam, load_cam
 
-from .backend import HAIR, MAIN, THICK, THIN, Pt, Recording, Style
+from .backend import CENTRE_LINE, HAIR, MAIN, THICK, THIN, Pt, Recording, Style, Transform
 from .common import arrow, dot, fmt
 from .i18n import lookup
 from .panels import STANDARD_RATIOS, Panel, finish, ratio_text
@@ -24,7 +24,7 @@ from .sheet import GAP, TB_H, Sheet, SheetSpec, compose, sheet_spec, usable
 from .text import layout
 
 EXACT = Style(width=0.25, stroke="#1f5fbf", dash=(2.0, 1.0))
-AXIS = Style(width=0.18, stroke="#333", dash=(6.0, 1.0, 1.0, 1.0), cls="axis")
+AXIS = CENTRE_LINE
 REGION = Style(stroke=None, width=0.0, fill="#cfe3cf")
 WARN = Style(width=0.7, stroke="#c00000")
 SMALL = 2.5
@@ -339,9 +339,10 @@ def profile_panel(cam: Cam, lang: str, target: float = 180.0) -> Panel:
 
 def _P(mu: float) -> Callable[[Any], Pt]:
     """World metres (y up) to the panel's paper mm at μ mm per m."""
+    T = Transform(mu)
 
     def P(v: Any) -> Pt:
-        return (mu * float(v[0]), -mu * float(v[1]))
+        return T(float(v[0]), float(v[1]))
 
     return P
 

@@ -86,7 +86,7 @@ def _overlay(scene, kin, k: int, centres: dict, lang: str):
         for c in centres.values():  # the lines first, the centres over them
             if c.point is None or c.source in ("pair", None) or not inside(c.point):
                 continue
-            for pair in (c.source, c.other):
+            for pair in (c.source, c.other) if c.other is not None else (c.source,):
                 ends = [centres[tuple(sorted(p))].point for p in pair] + [c.point]
                 if any(e is None or not inside(e) for e in ends):
                     continue

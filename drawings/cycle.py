@@ -334,6 +334,10 @@ def _omega_panel(d: Dynamics, lang: str, first: int = 1) -> Panel:
     return plot_panel("dyn-w", "dynamics", tr("w", lang), rec, scale, note, lang=lang)
 
 
+#: Each diagram of the cycle's dynamics alone, by its letter: M, A, T, I, W and ω (``w``).
+DYNAMICS_DIAGRAMS = {"M": _m_panel, "A": _a_panel, "T": _t_panel, "I": _i_panel, "W": _w_panel, "w": _omega_panel}
+
+
 def _fly_table(d: Dynamics, lang: str) -> Panel:
     fw = d.flywheel
     ex = fw.inertia_exact
@@ -484,12 +488,12 @@ def _fitting_dynamics(sol: Solution, d: Dynamics, tabs: Sequence[CycleTable], sp
     """The dynamics sheet's panels as they fit the sheet: on a small one the φ axis of the
     diagrams is shortened (240 mm on A1 and A2) and their heights lowered until every
     diagram fits, not refused."""
-    from .sheet import _fits_empty
+    from .sheet import fits_empty
 
     panels = dynamics_panels(d, tabs, spec.language, analogues, spec.first_position)
     axis = 240.0
     height = 1.0
-    while not all(_fits_empty(p, spec.format, spec.orientation) for p in panels) and axis > 60.0:
+    while not all(fits_empty(p, spec.format, spec.orientation) for p in panels) and axis > 60.0:
         axis = max(60.0, math.floor(axis * 0.8 / 10.0) * 10.0)
         height = max(0.4, height * 0.85)
         d = sol.dynamics_drawn(axis, height)

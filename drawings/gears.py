@@ -19,7 +19,7 @@ from plans.gears.model import GearFile, load_gears
 from plans.gears.solve import GearSolution, solve_gears
 from plans.language import SHEET_WORDS
 
-from .backend import HAIR, MAIN, THICK, THIN, Recording, Style
+from .backend import HAIR, MAIN, PAPER, THICK, THIN, Recording, Style
 from .common import Placer, arrow, dot, fmt
 from .i18n import lookup
 from .i18n import tr as words
@@ -80,7 +80,7 @@ class GearDrawing:
 
 def _pt(z: complex) -> tuple[float, float]:
     """Construction mm (y up) -> panel paper mm (y down)."""
-    return (z.real, -z.imag)
+    return PAPER.z(z)
 
 
 def _clipped(rec: Recording, pts: Sequence[complex], box: shapely.Geometry, style: Style, eid: str) -> None:
@@ -88,7 +88,7 @@ def _clipped(rec: Recording, pts: Sequence[complex], box: shapely.Geometry, styl
     part = line.intersection(box)
     geoms = [g for g in getattr(part, "geoms", [part]) if not g.is_empty and g.geom_type == "LineString"]
     for i, g in enumerate(geoms):
-        rec.polyline([(x, -y) for x, y in g.coords], style, f"{eid}-{i}" if i else eid)
+        rec.polyline([PAPER(x, y) for x, y in g.coords], style, f"{eid}-{i}" if i else eid)
 
 
 def _on_field(z: complex, box: shapely.Geometry) -> tuple[complex, bool]:
@@ -131,7 +131,7 @@ def meshing_panel(mg: Meshing, lang: str) -> Panel:
     ys = [dw.centre.imag for dw in mg.wheels]
     lo = max(min(ys) - 8, ylo)
     hi = min(max(ys + [30.0]) + 8, yhi)
-    rec.line((0.0, -lo), (0.0, -hi), AXIS, "centre-line")
+    rec.line(PAPER(0.0, lo), PAPER(0.0, hi), AXIS, "centre-line")
     for i, dw in enumerate(mg.wheels):
         O = dw.centre
         sign = -1 if O.imag < 0 else 1
@@ -141,9 +141,9 @@ def meshing_panel(mg: Meshing, lang: str) -> Panel:
             rec.text(placer.place(name, _pt(O), LABEL, (1.0, 0.0)), "label", f"label-O{dw.name}")
         else:  # the centre is off the field: say where it is
             y = ylo if sign < 0 else yhi
-            arrow(rec, (0.0, -(y - sign * 12)), (0.0, -y), THIN, f"to-O{dw.name}", "pointer")
+            arrow(rec, PAPER(0.0, y - sign * 12), PAPER(0.0, y), THIN, f"to-O{dw.name}", "pointer")
             txt = f"{name}: {fmt(abs(O.imag), 4, lang)} мм" if lang == "ru" else f"{name}: {fmt(abs(O.imag), 4)} mm"
-            rec.text(layout(txt, 3.0, -(y - sign * (6 + 5 * i)), SMALL, "start", "middle"), "label",
+            rec.text(layout(txt, *PAPER(3.0, y - sign * (6 + 5 * i)), SMALL, "start", "middle"), "label",
                      f"label-O{dw.name}")
     rec.end()
     # line of action, the active part, the zones
@@ -182,7 +182,7 @@ def meshing_panel(mg: Meshing, lang: str) -> Panel:
             placed = placer.place(text, _pt(at), LABEL, pref)
         else:  # inside the field, below the arrow's head, ending at the edge
             right = at.real > 0
-            placed = layout(text, at.real + (-2.0 if right else 2.0), -at.imag + 5.0, LABEL,
+            placed = layout(text, *PAPER(at.real + (-2.0 if right else 2.0), at.imag - 5.0), LABEL,
                             "end" if right else "start", "middle")
         rec.text(placed, "label", f"label-{name.replace('_', '')}")
     mid_d = (d1a + d1b) / 2 - 14 * nrm
@@ -198,13 +198,13 @@ def meshing_panel(mg: Meshing, lang: str) -> Panel:
         dot(rec, _pt(q), 0.45, f"laid-off-{i}")
     rec.end()
     # the pressure angle at P
-    rec.text(layout(f"α_w = {fmt(math.degrees(p.alpha_w), 5, lang)}°", -W + 4.0, -yhi + 8.0, LABEL, "start", "middle"),
+    rec.text(layout(f"α_w = {fmt(math.degrees(p.alpha_w), 5, lang)}°", *PAPER(-W + 4.0, yhi - 8.0), LABEL, "start", "middle"),
              "note", "alpha-w")
     eps = (f"ε = B_{{1}}B_{{2}}/p_{{b}} = {fmt(mg.b1b2, 4, lang)}/{fmt(mg.p_b, 4, lang)} = "
            f"{fmt(mg.contact_ratio_drawn, 3, lang)} ({tr('drawn', lang)}); "
            f"ε = {fmt(p.contact_ratio, 5, lang)} ({tr('exact', lang)})")
-    rec.text(layout(eps, -W, -ylo + 6.0, LABEL, "start", "middle"), "note", "contact-ratio")
-    rec.polygon([(-W, -yhi), (W, -yhi), (W, -ylo), (-W, -ylo)], Style(stroke="#999", width=0.18, cls="field"), "field")
+    rec.text(layout(eps, *PAPER(-W, ylo - 6.0), LABEL, "start", "middle"), "note", "contact-ratio")
+    rec.polygon([PAPER(-W, yhi), PAPER(W, yhi), PAPER(W, ylo), PAPER(-W, ylo)], Style(stroke="#999", width=0.18, cls="field"), "field")
     g1, g2 = p.gears
     title = f"{tr('meshing', lang)} {g1}–{g2}"
     return finish(f"meshing-{g1}-{g2}", "meshing", None, rec, title, f"M {ratio_text(mg.k * 1000.0)}")
@@ -426,11 +426,11 @@ def rays_panel(sol: GearSolution, lang: str, f: float = 1.0) -> Panel:
     h = plan.h * f
     xs = [ln.intercept * f for ln in plan.lines.values()] + [0.0]
     lo, hi = min(xs) - 10.0, max(xs) + 10.0
-    rec.line((lo, -h), (hi, -h), MAIN, "reference-line")
+    rec.line(PAPER(lo, h), PAPER(hi, h), MAIN, "reference-line")
     dot(rec, (0.0, 0.0), 0.8, "pole")
     rec.text(layout("O_ω", 2.0, 3.5, LABEL, "start", "middle"), "label", "label-pole")
-    rec.line((0.0, 0.0), (0.0, -h - 4.0), AXIS, "pole-normal")
-    placer.add_line([(lo, -h), (hi, -h)])
+    rec.line((0.0, 0.0), PAPER(0.0, h + 4.0), AXIS, "pole-normal")
+    placer.add_line([PAPER(lo, h), PAPER(hi, h)])
     for n, ln in plan.lines.items():
         rec.line((0.0, 0.0), (ln.intercept * f, -h), THIN, f"ray-{n}")
         placer.add_line([(0.0, 0.0), (ln.intercept * f, -h)])

@@ -65,10 +65,10 @@ def _fitting_positions(sol: Solution, mu: float, lang: str, bold: list[int], str
                        spec: SheetSpec) -> Any:
     """The plan of positions as it fits the sheet: in full; else with its angles in brief; else
     (when its scale is not the file's own) at the next smaller standard scales."""
-    from .sheet import _fits_empty
+    from .sheet import fits_empty
 
     panel = positions_panel(sol, mu, lang, bold, strokes, spec.trace, first=spec.first_position)
-    if _fits_empty(panel, spec.format, spec.orientation):
+    if fits_empty(panel, spec.format, spec.orientation):
         return panel
     panel = positions_panel(sol, mu, lang, bold, strokes, spec.trace, brief=True, first=spec.first_position)
     if sol.scene.scales.get("length"):
@@ -76,7 +76,7 @@ def _fitting_positions(sol: Solution, mu: float, lang: str, bold: list[int], str
     from .panels import STANDARD_RATIOS
 
     for r in STANDARD_RATIOS:
-        if _fits_empty(panel, spec.format, spec.orientation):
+        if fits_empty(panel, spec.format, spec.orientation):
             break
         if 1000.0 * r < mu:
             panel = positions_panel(sol, 1000.0 * r, lang, bold, strokes, spec.trace, brief=True, first=spec.first_position)

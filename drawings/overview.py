@@ -24,8 +24,8 @@ from .panels import (
     SMALL_SIZE,
     VECTOR_STYLES,
     Panel,
-    _support,
     finish,
+    fixed_pivot,
     link_shape,
     ratio_text,
     scale_text,
@@ -230,7 +230,7 @@ def positions_panel(sol, mu_l: float, lang: str, bold: Sequence[int], strokes: d
     for jt in scene.joints:
         if jt.kind == "R" and frame in jt.links and jt.point in scene.frame_points:
             p = T.z(scene.frame_points[jt.point])
-            _support(rec, p, f"{pid}-support-{ident(jt.point)}")
+            fixed_pivot(rec, p, f"{pid}-support-{ident(jt.point)}")
             placer.add_disc((p[0], p[1] + 4.0), 4.0)
             placer.add_disc(p, JOINT_R + 0.3)
     rec.end()
@@ -285,9 +285,10 @@ def positions_panel(sol, mu_l: float, lang: str, bold: Sequence[int], strokes: d
     c = T.z(O)
     rec.circle(c, JOINT_R, Style(width=0.35, fill="#fff", cls="joint"), f"{pid}-joint-{ident(d.pivot)}")
 
-    st = sol.strokes()
-    if st is not None:
-        _strokes(rec, placer, scene, st, T, O, pin, at[0][pin], lang, pid)
+    made = sol.strokes()
+    ends = made[0] if made is not None else None  # the output's extremes (plans.kinematics.extreme)
+    if made is not None:
+        _strokes(rec, placer, scene, made[0], made[1], T, O, pin, at[0][pin], lang, pid)
 
     # the numbers: coincident positions of a point share one label ("1, 11")
     rec.begin(f"{pid}-numbers", "numbers")
@@ -334,8 +335,8 @@ def positions_panel(sol, mu_l: float, lang: str, bold: Sequence[int], strokes: d
         when = f"φ_{first} = {angle(phis[0], lang)}°, …, φ_{{{n - 1 + first}}} = {angle(phis[-1], lang)}°"
     else:
         when = ", ".join(f"φ_{{{i + first}}} = {angle(p, lang)}°" for i, p in enumerate(phis))
-    if st is not None:
-        when += f"; θ = {angle(round(st.theta_deg, 2), lang)}°, K = {fmt(st.K, 4, lang)}"
+    if ends is not None:
+        when += f"; θ = {angle(round(ends.theta_deg, 2), lang)}°, K = {fmt(ends.K, 4, lang)}"
     bold_txt = ", ".join(str(k + first) for k in sorted(bold_set))
     if lang == "ru":
         note = f"{when}; жирно: {bold_txt}" if bold_set else when
@@ -383,7 +384,7 @@ def _free_label(placer: Placer, text: str, c: tuple[float, float], r: float, ang
                         prefer=(math.cos(mid), math.sin(mid)), gap=1.0)
 
 
-def _strokes(rec: Recording, placer: Placer, scene, st, T: Transform, O: complex, pin: str, pin0: complex,
+def _strokes(rec: Recording, placer: Placer, scene, st, ext, T: Transform, O: complex, pin: str, pin0: complex,
              lang: str, pid: str) -> None:
     """The two extreme positions of the output (the mechanism thin dash-dot-dot, the crank pin
     lettered A', A''), the working and idle strokes as arcs outside the crank circle from
@@ -391,17 +392,18 @@ def _strokes(rec: Recording, placer: Placer, scene, st, T: Transform, O: complex
     the working stroke and the crank at its start extended through the pivot."""
     rec.begin(f"{pid}-extremes", "extremes")
     pins = []
-    for j, mark in enumerate(("'", "''")):
-        pts = _points_at(scene, st.at, j)
-        edges, extra = _edges(scene, st.at, j, pts)
+    slider = st.output.kind == "slider"
+    for j, mark in enumerate(("'", "''")):  # ' where the working stroke begins, '' where the idle one does
+        pts = _points_at(scene, ext, j)
+        edges, extra = _edges(scene, ext, j, pts)
         where = {**pts, **extra}
         for w, walk in enumerate(_walks(edges)):
             line = [T.z(where[v]) for v in walk]
             rec.polyline(line, EXTREME, f"{pid}-extreme-{j + 1}" + (f"-{w}" if w else ""))
             placer.add_line(line)
         pins.append(pts[pin])
-        out = pts.get(st.output) if st.slider else None
-        for name in [st.output] if out is not None else []:  # the slider's two extremes: B', B''
+        out = pts.get(st.output.point) if slider else None
+        for name in [st.output.point] if out is not None else []:  # the slider's two extremes: B', B''
             z = where[name]
             away = z - O
             L = abs(away) or 1.0
@@ -415,7 +417,7 @@ def _strokes(rec: Recording, placer: Placer, scene, st, T: Transform, O: complex
     sense = 1 if scene.driver.sense > 0 else -1
     a_start = [math.atan2(-(z - O).imag, (z - O).real) for z in pins]  # paper angles
     rec.begin(f"{pid}-strokes", "strokes")
-    for j, (key, deg) in enumerate((("working", st.working_deg), ("idle", st.idle_deg))):
+    for j, (key, deg) in enumerate((("working", st.working_span), ("idle", 360.0 - st.working_span))):
         a0 = a_start[j]
         sweep = -sense * math.radians(deg)  # paper y is down: counter-clockwise is negative
         r = r_pin + STROKE_GAP + 2.0 * j

@@ -13,7 +13,7 @@ from plans.synthesis.design import Design, choice_text, design, stroke_of
 from plans.synthesis.model import load_task
 from plans.synthesis.proof import Coulisse, FourBar, Slider
 
-from .backend import HAIR, MAIN, THICK, THIN, Pt, Recording, Style
+from .backend import CENTRE_LINE, HAIR, MAIN, THICK, THIN, Pt, Recording, Style
 from .common import dot, fmt
 from .i18n import lookup
 from .panels import STANDARD_RATIOS, Panel, finish, ratio_text
@@ -24,7 +24,7 @@ SMALL = 2.5
 LABEL = 3.5
 CONSTRUCT = Style(width=0.25, stroke="#1f5fbf")
 CIRCLE = Style(width=0.25, stroke="#1f5fbf", dash=(6.0, 1.5, 1.0, 1.5))
-AXIS = Style(width=0.18, stroke="#333", dash=(6.0, 1.0, 1.0, 1.0), cls="axis")
+AXIS = CENTRE_LINE
 WORST = Style(width=0.35, stroke="#c00000", dash=(3.0, 1.2))
 FAR = Style(width=0.5, stroke="#555")
 

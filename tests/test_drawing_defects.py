@@ -10,49 +10,59 @@ from pathlib import Path
 import pytest
 
 from plans.errors import InputError
-from plans.kinematics.extremes import strokes
 from plans.scene.model import load_scene
+from plans.solution import solve
 
 ROOT = Path(__file__).resolve().parents[1]
 SAMPLES = ROOT / "samples"
 
 
-def test_offset_slider_crank_theta_is_the_closed_form():
-    """Extremes where crank and rod are collinear: θ = asin(e/(l2 − l1)) − asin(e/(l2 + l1))
-    (l1 = 50, l2 = 180, e = 20 mm), and the crank angles are those of the collinear pairs."""
-    st = strokes(load_scene(SAMPLES / "offset_slider_crank.toml"))
-    assert st is not None and st.slider and st.output == "B"
+def _strokes(name: str):
+    made = solve(SAMPLES / f"{name}.toml").strokes()
+    assert made is not None
+    return made
+
+
+def test_offset_slider_crank_extremes_drawn_where_theta_is_the_closed_form():
+    """What the plan of positions draws: θ = asin(e/(l2 − l1)) − asin(e/(l2 + l1)) (l1 = 50,
+    l2 = 180, e = 20 mm); at both extremes the crank pin, the rod and the slider in one line
+    and the slider at rest (the exact analysis at the drawn angles)."""
+    from plans.kinematics.exact import solve as exact
+
+    st, at = _strokes("offset_slider_crank")
+    assert st.output.kind == "slider" and st.output.point == "B"
     l1, l2, e = 50.0, 180.0, 20.0
     theta = math.degrees(math.asin(e / (l2 - l1)) - math.asin(e / (l2 + l1)))
     assert st.theta_deg == pytest.approx(theta, abs=1e-9)
-    assert st.working_deg + st.idle_deg == pytest.approx(360.0, abs=1e-12)
     assert st.K == pytest.approx((180 + theta) / (180 - theta), rel=1e-12)
-    # at each extreme the crank pin, the rod and the slider are on one line (cross product 0)
+    scene = load_scene(SAMPLES / "offset_slider_crank.toml")
+    v = exact(scene, [st.working_deg, st.idle_deg], order=1).point("B")[1]
     for j in range(2):
-        O = 0j
-        A = complex(st.at.point("A")[0][j])
-        B = complex(st.at.point("B")[0][j])
-        assert abs(((A - O).conjugate() * (B - O)).imag) <= 1e-9 * abs(A - O) * abs(B - O)
+        A = complex(at.point("A")[0][j])
+        B = complex(at.point("B")[0][j])
+        assert abs((A.conjugate() * B).imag) <= 1e-9 * abs(A) * abs(B)  # O at the origin
+        assert abs(complex(v[j])) <= 1e-9 * abs(scene.driver.omega) * 0.05
 
 
-def test_four_bar_extremes_by_the_law_of_cosines():
+def test_four_bar_extremes_drawn_by_the_law_of_cosines():
     """Crank-rocker a = 80, b = 260, c = 200, d = 300 mm: at the extremes OB = b ± a, and the
     crank's angle is the angle at O of the triangle O-D-B (B above OD)."""
-    st = strokes(load_scene(SAMPLES / "four_bar.toml"))
-    assert st is not None and not st.slider
+    st, at = _strokes("four_bar")
+    assert st.output.kind == "rocker"
     a, b, c, d = 80.0, 260.0, 200.0, 300.0
 
     def at_O(ob: float) -> float:
         return math.degrees(math.acos((d * d + ob * ob - c * c) / (2 * d * ob)))
 
     out, back = at_O(b + a), at_O(b - a)  # crank along OB, and opposite to it
-    assert sorted([st.phi_start_deg, st.phi_end_deg]) == pytest.approx(sorted([out, back + 180.0]), abs=1e-9)
+    assert sorted([st.working_deg, st.idle_deg]) == pytest.approx(sorted([out, back + 180.0]), abs=1e-9)
     assert st.theta_deg == pytest.approx(back - out, abs=1e-9)
+    OB = sorted(abs(complex(at.point("B")[0][j])) for j in range(2))  # the mechanism drawn there, m
+    assert OB == pytest.approx([(b - a) / 1000, (b + a) / 1000], abs=1e-12)
 
 
 def test_central_slider_crank_has_equal_strokes_and_no_theta():
-    st = strokes(load_scene(SAMPLES / "slider_crank.toml"))
-    assert st is not None
+    st, _ = _strokes("slider_crank")
     assert st.theta_deg == pytest.approx(0.0, abs=1e-9) and st.K == pytest.approx(1.0, abs=1e-12)
 
 

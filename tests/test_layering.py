@@ -120,7 +120,7 @@ SOLVERS = {
     "plans.cycle.results": {"solve_cycle"},
     "plans.cycle.diagrams": {"diagrams"},
     "plans.cycle.dynamics": {"dynamics"},
-    "plans.kinematics.extremes": {"strokes"},
+    "plans.kinematics.extreme": {"strokes"},
 }
 
 
@@ -137,3 +137,41 @@ def test_drawings_call_no_solver():
             elif isinstance(node, ast.Import):
                 found += [f"{path.name}: {a.name}" for a in node.names if a.name in SOLVERS]
     assert found == []
+
+
+#: What ``plans solve`` has loaded of its own when it begins to solve (what ``plans bench``
+#: times as its start): the command line, the scene's reader and the kinematics it solves
+#: with.  A module added here is a cost every ``plans solve`` pays before its first result.
+SOLVE_START = {
+    "drawings", "drawings.cli", "drawings.console",
+    "plans", "plans.cli", "plans.errors", "plans.guard", "plans.io", "plans.kinds", "plans.language",
+    "plans.lines", "plans.phrases", "plans.reader", "plans.records", "plans.results", "plans.tolerances",
+    "plans.units", "plans.scene", "plans.scene.model",
+    "plans.kinematics", "plans.kinematics.assur", "plans.kinematics.cases", "plans.kinematics.construction",
+    "plans.kinematics.context", "plans.kinematics.dyads", "plans.kinematics.exact", "plans.kinematics.fast",
+    "plans.kinematics.fast_arrays", "plans.kinematics.plan", "plans.kinematics.scales",
+    "plans.kinematics.structure",
+}
+
+
+def test_plans_solve_starts_with_its_own_modules_only():
+    """The installed command stopped the moment the scene, read, is handed to the solver: of
+    ours exactly :data:`SOLVE_START` is loaded (no sheet reader for a scene without
+    ``[sheet]``, no Solution, no forces, no cycle), and none of the heavy standard modules
+    a command may need later."""
+    got = _run("import os, sys\n"
+               "import plans.results\n"
+               "def stop(scene):\n"
+               "    print(sorted(m for m in sys.modules if m.split('.')[0] in ('plans', 'drawings')))\n"
+               "    print(sorted(m for m in ('json', 'shutil', 'shapely', 'subprocess', 'xml', 'zipfile') "
+               "if m in sys.modules))\n"
+               "    sys.stdout.flush()\n"
+               "    os._exit(0)\n"
+               "plans.results.solve_scene = stop\n"
+               "from drawings.console import main\n"
+               "sys.argv = ['plans', 'solve', 'samples/slider_crank.toml']\n"
+               "main()\n")
+    assert got.returncode == 0, got.stderr
+    ours, heavy = got.stdout.splitlines()
+    assert set(ast.literal_eval(ours)) == SOLVE_START
+    assert heavy == "[]"

@@ -10,7 +10,8 @@ import pytest
 
 from plans.accuracy.draftsman import DraftsmanModel, NoisyPencil
 from plans.kinematics import construction
-from plans.kinematics.dyads import PerfectPencil, Scheme, plans_of
+from plans.kinematics.construction import plans_of
+from plans.kinematics.dyads import PerfectPencil, Scheme
 from plans.kinematics.exact import solve
 from plans.scene.model import load_scene
 

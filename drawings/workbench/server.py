@@ -428,14 +428,14 @@ def _design(text: str, name: str) -> bytes:
     """A synthesis file designed (``plans design``): the scene written and the JSON of
     ``plans design --json`` (its ``scene`` the scene's text)."""
     from plans.io import loads_toml
-    from plans.synthesis.cli import _check_scene, results
+    from plans.synthesis.cli import check_scene, results
     from plans.synthesis.design import design
     from plans.synthesis.model import task_from_dict
     from plans.synthesis.scene import scene_text
 
     d = design(task_from_dict(loads_toml(text, name), name))
     scene = scene_text(d)
-    _check_scene(scene, name)
+    check_scene(scene, name)
     return json.dumps({"scene": scene, "data": _jsonable(tomllib.loads(scene)), "design": results(d, scene)},
                       ensure_ascii=False,
                       allow_nan=False, separators=(",", ":")).encode("utf-8")

@@ -31,6 +31,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from plans.check.checkfile import RUBRIC, RUBRIC_KEYS  # noqa: F401  (read here and from here)
 from plans.check.mistakes import KINDS, Slip, describe, inventory, replay
 from plans.check.providers import Context, exact_value
 from plans.errors import PlansError
@@ -38,16 +39,6 @@ from plans.errors import PlansError
 if TYPE_CHECKING:
     from plans.check.findings import Finding, Item
 
-#: Deductions by kind of mistake (points off ``full``); a check file's [rubric] overrides.
-RUBRIC: dict[str, float] = {
-    "full": 100.0,
-    "coriolis_reversed": 15.0, "normal_from_pole": 10.0, "tangential_wrong_line": 10.0, "scale": 10.0,
-    "similarity": 8.0, "wrong_segment": 5.0, "inertia_sign": 10.0, "reaction_swapped": 8.0,
-    "fij_reversed": 5.0, "pi_rounded": 2.0, "g_rounded": 2.0, "arithmetic": 3.0,
-    "unexplained": 2.0,  # each failing figure no cause explains
-    "finding": 1.0,  # each inconsistency of the student's own work left after the causes
-}
-RUBRIC_KEYS = tuple(RUBRIC)
 
 G_ROUNDED = 10.0
 PI_ROUNDED = 3.14

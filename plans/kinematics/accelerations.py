@@ -17,6 +17,7 @@ from plans.kinematics.dyads import (
     coincident,
     ensure,
     lab,
+    lay_normal,
     link_points,
     meet,
     read_rates,
@@ -84,21 +85,6 @@ def acceleration_plan(snap: Scheme, mu: float, vb: Builder, pencil: Pencil, prot
     return b
 
 
-def _normal(b: Builder, vr: _VelReader, link: int, frm: str, frm_xy: np.ndarray, P: np.ndarray,
-            X: np.ndarray, Pn: str, Xn: str) -> tuple[str, np.ndarray]:
-    """Lay off a_XP^n = ω²·l toward P from the image of P; ω read off the velocity plan."""
-    w = vr.omega(link)
-    ln = abs(P - X)
-    lb = f"n_{Xn}{Pn}"
-    vec = b.pencil.vector(b.mu * w * w * ln, P - X, ln, lb)
-    b.add(lb, frm_xy + vec)
-    b.step("lay off", (frm,), lb, lambda: phrase(
-        "a_normal", X=Xn, P=Pn, v=clean(abs(b.s(w * ln)), b.s(vr.vb.ref)), l=b.s(ln), an=clean(b.s(w * w * ln), b.s(b.ref)),
-        mm=abs(b.s(vec)), frm=frm))
-    b.seg(frm, lb, "normal", f"a_{Xn}{Pn}^n", b.snap.w[link] ** 2 * ln)
-    return lb, frm_xy + vec
-
-
 def _coriolis(b: Builder, vr: _VelReader, guide_link: int, v_rel: np.ndarray, frm: str, frm_xy: np.ndarray,
               label: str, exact: np.ndarray) -> tuple[str, np.ndarray]:
     """Lay off a^k = 2 ω × v_rel (v_rel turned 90° in the sense of ω) from ``frm``; ω and
@@ -125,8 +111,8 @@ def _a_rrr(b: Builder, g: Group, vr: _VelReader) -> None:
     x1, x3 = b.image(p, j1.point), b.image(q, j3.point)
     n1 = ensure(b, p, j1.point, x1)
     n3 = ensure(b, q, j3.point, x3)
-    m1, y1 = _normal(b, vr, i, n1, x1, P1, B, j1.point, j2.point)
-    m3, y3 = _normal(b, vr, j, n3, x3, P3, B, j3.point, j2.point)
+    m1, y1 = lay_normal(b, vr, i, n1, x1, P1, B, j1.point, j2.point)
+    m3, y3 = lay_normal(b, vr, j, n3, x3, P3, B, j3.point, j2.point)
     L1 = b.line(y1, 1j * (B - P1), abs(B - P1), f"⟂ {j1.point}{j2.point}")
     L3 = b.line(y3, 1j * (B - P3), abs(B - P3), f"⟂ {j3.point}{j2.point}")
     out = lab(j2.point)
@@ -150,7 +136,7 @@ def _a_rrp(b: Builder, g: Group, vr: _VelReader) -> None:
     u, span = snap.guide(j3)
     x1 = b.image(p, j1.point)
     n1 = ensure(b, p, j1.point, x1)
-    m1, y1 = _normal(b, vr, i, n1, x1, P1, B, j1.point, j2.point)
+    m1, y1 = lay_normal(b, vr, i, n1, x1, P1, B, j1.point, j2.point)
     nq, xq = coincident(b, q, j2.point, B)
     start, start_xy = nq, xq
     if q != snap.scene.frame:
@@ -185,7 +171,7 @@ def _a_rpr(b: Builder, g: Group, vr: _VelReader) -> None:
     na = ensure(b, p, j1.point, xa)
     nc = ensure(b, q, j3.point, xc)
     An = f"{j1.point}{j}"
-    mc, yc = _normal(b, vr, j, nc, xc, Cq, A, j3.point, An)
+    mc, yc = lay_normal(b, vr, j, nc, xc, Cq, A, j3.point, An)
     # a_A3 = a_A2 + a^k_A3A2 + a^r_A3A2, v_A3A2 read from the velocity plan (a2 -> a3)
     v_rel = vr.rel(lab(j1.point), f"{lab(j1.point)}{j}")
     sd, sdd = snap.slide(j2)

@@ -23,7 +23,7 @@ from typing import Any
 import numpy as np
 
 from plans.errors import Locked
-from plans.kinematics.dyads import Builder, Mixed, PerfectPencil, Scheme, plans_of
+from plans.kinematics.dyads import Builder, Mixed, Pencil, PerfectPencil, Scheme
 from plans.kinematics.exact import Kinematics
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step
 from plans.kinematics.scales import LONGEST_MM, ROUND, common_scales, refit, round_scale
@@ -114,6 +114,19 @@ class PositionPlans:
 
 
 _PERFECT = PerfectPencil()
+
+
+def plans_of(snap: Scheme, mv: float, ma: float | None, pencil: Pencil,
+             protocol: bool = False) -> tuple[Builder, Builder | None]:
+    """Both plans over the cases of ``snap`` (the acceleration plan when ``ma`` is given)."""
+    from plans.kinematics import (  # loaded with the first plan, not at start
+        accelerations,
+        velocities,
+    )
+
+    vb = velocities.velocity_plan(snap, mv, pencil, protocol)
+    ab = accelerations.acceleration_plan(snap, ma, vb, pencil, protocol) if ma is not None else None
+    return vb, ab
 
 
 def _at(x: Any, k: int) -> Any:

@@ -19,7 +19,6 @@ Python numbers position by position, where numpy's per-call cost would dominate
 
 from __future__ import annotations
 
-import cmath
 import math
 from dataclasses import field
 from typing import TYPE_CHECKING, Any
@@ -27,7 +26,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from plans.kinematics import fast, fast_arrays
-from plans.kinematics.assur import _Motion, _program
+from plans.kinematics.assur import program
+from plans.kinematics.context import SCA, VEC, Context, Motion
 from plans.kinematics.structure import Structure, analyse
 from plans.records import frozen
 from plans.scene.model import Scene
@@ -49,7 +49,7 @@ class Kinematics:
     structure: Structure
     phi_deg: R
     order: int  # 0 positions, 1 + velocities, 2 + accelerations
-    motion: dict[int, _Motion] = field(repr=False)
+    motion: dict[int, Motion] = field(repr=False)
     slides: dict[str, tuple[R, R]] = field(repr=False)  # P joint name -> (ṡ, s̈)
     #: group name -> condition number of its velocity/acceleration system per position:
     #: |c1||c2| / |c1 × c2| = 1 / sin(angle between the two construction lines)
@@ -215,16 +215,16 @@ def solve(scene: Scene, phi_deg=None, order: int | None = None,
             kin.__dict__.update(scene=scene, structure=st, phi_deg=phis, order=order, slides=res[1], _points={},
                                 _raw=res)
             return kin
-    program = _program(scene, st)
+    steps = program(scene, st)
     if len(phis) <= SCALAR_MAX:
-        return _solve_scalar(scene, st, program, phis, order)
-    ctx = _Ctx(scene, _VEC, phis, order)
+        return _solve_scalar(scene, st, steps, phis, order)
+    ctx = Context(scene, VEC, phis, order, solve)
     n = len(phis)
     zeros = np.zeros(n)
     czeros = np.zeros(n, dtype=complex)
-    ctx.motion[scene.frame] = _Motion(np.ones(n, dtype=complex), czeros, zeros, czeros, zeros, czeros)
+    ctx.motion[scene.frame] = Motion(np.ones(n, dtype=complex), czeros, zeros, czeros, zeros, czeros)
     _drive(ctx, _rotation(scene.driver, phis), np.full(n, scene.driver.omega), np.full(n, scene.driver.eps))
-    for fn, g, k in program:
+    for fn, g, k in steps:
         fn(ctx, g, k)
     return Kinematics(scene, st, phis, order, ctx.motion, ctx.slides, ctx.conditions)
 
@@ -264,100 +264,18 @@ def _fast_runs(fp: fast.Plan, phis: Any, order: int) -> tuple[dict, dict, dict] 
 # --------------------------------------------------------------------------- two ways to run
 
 
-class _Vec:
-    """numpy over all positions."""
-
-    sqrt = staticmethod(np.sqrt)
-    maximum = staticmethod(np.maximum)
-    exp = staticmethod(np.exp)
-    angle = staticmethod(np.angle)
-    arcsin = staticmethod(np.arcsin)
-
-    @staticmethod
-    def low(x):
-        return x.min()
-
-    @staticmethod
-    def high(x):
-        return x.max()
-
-    @staticmethod
-    def clip(x, lo, hi):
-        return np.clip(x, lo, hi)
-
-    @staticmethod
-    def full(n, v):
-        return np.full(n, v)
-
-
-class _Sca:
-    """Plain Python numbers, one position."""
-
-    sqrt = staticmethod(math.sqrt)
-    maximum = staticmethod(max)
-    exp = staticmethod(cmath.exp)
-    angle = staticmethod(cmath.phase)
-    arcsin = staticmethod(math.asin)
-
-    @staticmethod
-    def low(x):
-        return x
-
-    @staticmethod
-    def high(x):
-        return x
-
-    @staticmethod
-    def clip(x, lo, hi):
-        return min(max(x, lo), hi)
-
-    @staticmethod
-    def full(n, v):
-        return v
-
-
-_VEC = _Vec()
-_SCA = _Sca()
-
-
-class _Ctx:
-    """What the group solvers read and fill: motions, slides, conditions."""
-
-    __slots__ = ("scene", "xp", "phis", "n", "order", "motion", "slides", "conditions", "frame",
-                 "crank", "pivot", "zpivot", "W", "E", "pins")
-
-    def __init__(self, scene: Scene, xp: Any, phis: Any, order: int) -> None:
-        self.scene = scene
-        self.n = len(phis)
-        self.xp = xp
-        self.phis = phis
-        self.order = order
-        self.motion: dict[int, _Motion] = {}
-        self.slides: dict[str, tuple[Any, Any]] = {}
-        self.conditions: dict[str, Any] = {}
-        self.frame = scene.frame
-        d = scene.driver
-        # the crank turns at constant ω1, ε1 about its pivot: its points in four operations
-        self.crank = d.link
-        self.pivot = scene.frame_points[d.pivot]
-        self.zpivot = scene.links[d.link].points[d.pivot]
-        self.W = 1j * d.omega
-        self.E = complex(-d.omega * d.omega, d.eps)
-        self.pins: dict[complex, tuple] = {}
-
-
-def _drive(ctx: _Ctx, rot1, omega, eps) -> None:
+def _drive(ctx: Context, rot1, omega, eps) -> None:
     z = ctx.zpivot
     if z:
         rel = -rot1 * z  # the crank's origin from its pivot
-        m1 = _Motion(rot1, ctx.pivot + rel)
+        m1 = Motion(rot1, ctx.pivot + rel)
         if ctx.order >= 1:
             m1.omega, m1.v0 = omega, ctx.W * rel
             if ctx.order >= 2:
                 m1.eps, m1.a0 = eps, ctx.E * rel
     else:  # the usual crank: its origin is the pivot
         m0 = ctx.motion[ctx.frame]
-        m1 = _Motion(rot1, m0.r0 + ctx.pivot if ctx.pivot else m0.r0)
+        m1 = Motion(rot1, m0.r0 + ctx.pivot if ctx.pivot else m0.r0)
         if ctx.order >= 1:
             m1.omega, m1.v0 = omega, m0.v0
             if ctx.order >= 2:
@@ -375,16 +293,16 @@ def _rotation1(d: Any, phi: float) -> complex:
     return fast.rotation1(math.degrees(d.phi_ref), d.sense, phi)
 
 
-def _solve_scalar(scene: Scene, st: Structure, program: list, phis: Any, order: int) -> Kinematics:
+def _solve_scalar(scene: Scene, st: Structure, steps: list, phis: Any, order: int) -> Kinematics:
     """Position by position in Python numbers; the motions stacked into arrays at the end
     (two numpy calls: numpy's per-call cost is what this path avoids)."""
     d = scene.driver
     runs = []
     for phi in phis.tolist():
-        ctx = _Ctx(scene, _SCA, [phi], order)
-        ctx.motion[scene.frame] = _Motion(1 + 0j, 0j, 0.0, 0j, 0.0, 0j)
+        ctx = Context(scene, SCA, [phi], order, solve)
+        ctx.motion[scene.frame] = Motion(1 + 0j, 0j, 0.0, 0j, 0.0, 0j)
         _drive(ctx, _rotation1(d, phi), d.omega, d.eps)
-        for fn, g, k in program:
+        for fn, g, k in steps:
             fn(ctx, g, k)
         runs.append(ctx)
     return _stack(scene, st, phis, order, runs)
@@ -396,7 +314,7 @@ def _stack(scene: Scene, st: Structure, phis: Any, order: int, runs: list) -> Ki
     first = runs[0]
     k = min(order, 2)
     n = len(runs)
-    motion: dict[int, _Motion] = {}
+    motion: dict[int, Motion] = {}
     for lid in first.motion:
         ms = [r.motion[lid] for r in runs]
         motion[lid] = _Cols(n, [[getattr(m, f) for m in ms] if i < _WIDTH[k] else None
@@ -423,7 +341,7 @@ _WIDTH = (2, 4, 6)  # fields known at each order
 _DTYPES = (complex, complex, float, complex, float, complex)
 
 
-class _Cols(_Motion):
+class _Cols(Motion):
     """A motion whose quantities become arrays over the ``n`` positions when first read:
     each is an array already, a list of numbers (one per position), one number (the same
     at every position: the frame, the crank's ω, a slider's angle) or None (not asked for)."""

@@ -120,7 +120,7 @@ def summary(d: Design, res: dict[str, Any]) -> str:
     return "\n".join(lines)
 
 
-def _check_scene(text: str, task_path: str) -> None:
+def check_scene(text: str, task_path: str) -> None:
     """The written scene read back and solved as ``plans solve`` does: what [task] carried
     that a scene refuses is one line naming the task's key (nothing is written)."""
     from plans.errors import InputError
@@ -154,7 +154,7 @@ def _run(args: argparse.Namespace) -> int:
         raise OutputError(f"{args.output}: the scene and the JSON would overwrite each other")
     d = design(load_task(args.task))
     text = scene_text(d)
-    _check_scene(text, args.task)
+    check_scene(text, args.task)
     res = results(d, args.output if args.output else text)
     files: dict[Path, str] = {}
     if args.output:
