@@ -58,17 +58,18 @@ def warn_idle(scene: Scene, raw: dict[str, Any], forces: Any = ()) -> None:
         return  # no output with two extremes: no strokes to tell apart
     if st.K <= K_DISTINCT:
         return
-    from plans.language import choose
+    from plans.errors import field_name, run_language
     from plans.phrases import say
 
-    lang = choose(None, scene.raw)
+    lang = run_language(scene.raw)  # --language, the scene's [sheet] language, the locale
     for k, fl in signed:
         if _idle_only(scene, st, fl):
-            text = say("x_warn_idle_only", lang, file=scene.path, field=f"loads.force[{k}].stroke", name=fl.name,
+            text = say("x_warn_idle_only", lang, file=scene.path, field=field_name(f"loads.force[{k}].stroke", lang), name=fl.name,
                        stroke=fl.stroke)
             print(f"plans: {text}", file=sys.stderr)
     for key, k, what, name in suspects:
-        text = say(what, lang, file=scene.path, field=f"loads.{key}[{k}].resisting", name=name or f"#{k + 1}")
+        text = say(what, lang, file=scene.path, field=field_name(f"loads.{key}[{k}].resisting", lang),
+                   name=name or f"#{k + 1}")
         print(f"plans: {text}", file=sys.stderr)
 
 
@@ -85,10 +86,10 @@ def _idle_only(scene: Scene, st: Any, fl: Any) -> bool:
     import math
 
     from plans.kinematics.exact import solve
-    from plans.kinematics.extreme import GRID, _probe
+    from plans.kinematics.extreme import GRID, probe_scene
 
     grid = np.arange(GRID) * (360.0 / GRID)
-    v = solve(_probe(scene), grid, order=1).point_on(fl.link, scene.links[fl.link].points[fl.point])[1]
+    v = solve(probe_scene(scene), grid, order=1).point_on(fl.link, scene.links[fl.link].points[fl.point])[1]
     along = (v * complex(math.cos(fl.along), -math.sin(fl.along))).real
     acts = along > 0 if fl.stroke == "positive" else along < 0
     return bool(acts.any()) and not bool((acts & st.working(grid)).any())
