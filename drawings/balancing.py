@@ -14,8 +14,10 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from plans.balancing.analysis import KINDS, Balance, Polygon, Resultant, balance
-from plans.balancing.engine import Engine, load_engine
+from plans.balancing.analysis import KINDS, Balance, Polygon, Resultant
+from plans.balancing.engine import Engine
+from plans.balancing.exact import ExactCheck
+from plans.balancing.solution import EngineSolution, solve_engine
 
 from .backend import CENTRE_LINE, HAIR, MAIN, Recording, Style
 from .balancing_paper import engine_paper, polygon_scale
@@ -96,20 +98,22 @@ class BalancingDrawing:
         return self.sheets[0].svg()
 
 
-def draw(path: str | Path | Engine, *, format: str | None = None, orientation: str | None = None,
-         language: str | None = None) -> BalancingDrawing:
-    """The sheets of an engine file."""
-    engine = path if isinstance(path, Engine) else load_engine(path)
+def draw(source: EngineSolution | Engine | str | Path, *, format: str | None = None,
+         orientation: str | None = None, language: str | None = None) -> BalancingDrawing:
+    """The sheets of a solved engine (``plans.solve``), or of an engine or its file, solved here."""
+    es = source if isinstance(source, EngineSolution) else solve_engine(source)
+    engine = es.engine
     spec = sheet_spec(engine.raw, engine.path, engine.title, format=format, orientation=orientation,
                       language=language)
     metrics()
-    b = balance(engine)
-    panels = build_panels(b, spec.language)
+    b = es.balance
+    panels = build_panels(es, spec.language)
     sheets = compose(panels, spec, "", engine.path)
     return BalancingDrawing(engine, b, spec, tuple(panels), tuple(sheets))
 
 
-def build_panels(b: Balance, lang: str) -> list[Panel]:
+def build_panels(es: EngineSolution, lang: str) -> list[Panel]:
+    b = es.balance
     e = b.engine
     panels = [shaft_panel(e, lang), phase_panel(e, 1, lang), phase_panel(e, 2, lang)]
     for _quantity, res in (("force", b.forces), ("moment", b.moments)):
@@ -119,7 +123,7 @@ def build_panels(b: Balance, lang: str) -> list[Panel]:
     from .balancing_banks import bank_panels
 
     panels += bank_panels(b, lang)
-    panels.append(results_panel(b, lang))
+    panels.append(results_panel(b, es.exact, lang))
     panels.append(counterweights_panel(b, lang))
     return panels
 
@@ -372,7 +376,7 @@ def table_recording(R: Resultant, poly: Polygon, lang: str) -> Recording:
     return grid_recording(f"table-{R.quantity}-{R.kind}{tag}", head, rows, caption=caption)
 
 
-def results_panel(b: Balance, lang: str) -> Panel:
+def results_panel(b: Balance, chk: ExactCheck | None, lang: str) -> Panel:
     head = [_t("quantity", lang), _t("dimless", lang), _t("amplitude", lang), _t("unit", lang), _t("phase", lang)]
     rows = []
     for quantity, res in (("force", b.forces), ("moment", b.moments)):
@@ -382,11 +386,7 @@ def results_panel(b: Balance, lang: str) -> Panel:
             rows.append([_ABS[(quantity, kind)], fmt(R.dimensionless, 4, lang), fmt(R.amplitude, 5, lang),
                          _t(unit, lang), fmt(degrees360(R.phase), 4, lang) if R.amplitude > 0 else "—"])
     note = None
-    e = b.engine
-    if e.lam > 0:
-        from plans.balancing.exact import exact_check
-
-        chk = exact_check(e)
+    if chk is not None:
         note = (f"{_t('exact', lang)}: max |R| = {fmt(chk.max_exact, 5, lang)} {_t('N', lang)}, "
                 f"{_t('err', lang)} {fmt(chk.max_error, 3, lang)} {_t('N', lang)}; "
                 f"max |M| = {fmt(chk.max_moment, 5, lang)} {_t('N*m', lang)}, "

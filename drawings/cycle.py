@@ -361,11 +361,12 @@ def table_panels(tables: Sequence[CycleTable], lang: str, prefix: str,
 
 def indicator_panels(d: Dynamics, lang: str) -> list[Panel]:
     """Each cylinder's indicator diagram as given: the pressure against the piston's travel
-    from the outer dead centre, one line per stroke (the working stroke drawn main)."""
-    from plans.forces.loads import ignition, parse_loads
-
+    from the outer dead centre, one line per stroke (the working stroke drawn main), with its
+    ignition where it fires (found when the scene's loads were read)."""
     out = []
-    for k, gl in enumerate(parse_loads(d.scene).gas):
+    loads = d.scene.loads
+    assert loads is not None, "a scene with dynamics holds its [loads]"
+    for k, gl in enumerate(loads.gas):
         if not gl.diagram or gl.stroke <= 0:
             continue
         H_mm = gl.stroke * 1000
@@ -392,8 +393,8 @@ def indicator_panels(d: Dynamics, lang: str) -> list[Panel]:
         scale = (f"μ_s = {fmt(mu_s, 4, lang)} mm/mm (H = {fmt(H_mm, 4, lang)} mm); "
                  f"μ_p = {fmt(mu_p * 1e6, 4, lang)} mm/MPa")
         note = None
-        if gl.fires is not None:
-            note = f"{tr('fires', lang)} = {fmt(ignition(d.scene, gl), 5, lang)}°"
+        if gl.ignition is not None:
+            note = f"{tr('fires', lang)} = {fmt(gl.ignition, 5, lang)}°"
         out.append(plot_panel(f"ind-{k}", "dynamics", f"{tr('indicator', lang)} {gl.name}", rec, scale, note,
                               lang=lang))
     return out

@@ -225,7 +225,7 @@ def group_panel(scene, kin, gf, k: int, mu_l: float, lang: str, style: str, fric
     if triad:
         from .triad_marks import special_point
 
-        special_point(rec, placer, T, gf, k, pts, pid)
+        special_point(rec, placer, T, gf, k, pts, pid, LABEL_SIZE, kin)
     reacts = []
     couples: list[tuple[str, float, str]] = []
     for rc in (gf.reactions[:3] if triad else (gf.reactions[0], gf.reactions[2])):

@@ -14,9 +14,10 @@ import numpy as np
 import shapely
 
 from plans.errors import InputError
-from plans.gears.meshing import Meshing, meshing
-from plans.gears.model import GearFile, load_gears
-from plans.gears.solve import GearSolution, solve_gears
+from plans.gears.meshing import Meshing
+from plans.gears.model import GearFile
+from plans.gears.solution import GearsSolution, solve_file
+from plans.gears.solve import GearSolution
 
 from .backend import HAIR, MAIN, PAPER, THICK, THIN, Recording, Style
 from .common import Placer, arrow, dot, fmt
@@ -394,17 +395,18 @@ def synthesis_panel(sol: GearSolution, lang: str) -> Panel:
     return finish("synthesis", "table", None, _grid(rows, "synthesis"), tr("synthesis", lang))
 
 
-def draw(path: str | Path, *, format: str | None = None, orientation: str | None = None,
-         language: str | None = None) -> GearDrawing:
+def draw(source: GearsSolution | GearFile | str | Path, *, format: str | None = None,
+         orientation: str | None = None, language: str | None = None) -> GearDrawing:
     """The meshing sheet (when the file has an external pair) and the train sheet (when it
-    gives speeds)."""
-    gf = load_gears(path)
-    sol = solve_gears(gf)
+    gives speeds): of a solved gear file (``plans.solve``), or of a file or its path, solved here."""
+    gs = source if isinstance(source, GearsSolution) else solve_file(source)
+    gf = gs.file
+    sol = gs.solution
     spec = sheet_spec(gf.raw, gf.path, gf.title or tr("title", "ru" if language != "en" else "en"),
                       format=format, orientation=orientation, language=language)
     lang = spec.language
     groups: list[tuple[list[Panel], str]] = []
-    drawings = [meshing(p) for p in sol.drawn_pairs()]
+    drawings = list(gs.meshings)
     if drawings:  # the meshings and the table of the pairs share sheets as they fit
         scales = list(dict.fromkeys(ratio_text(one.k * 1000.0) for one in drawings))
         groups.append(([meshing_panel(one, lang) for one in drawings] + [results_panel(sol, lang)],

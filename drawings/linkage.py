@@ -111,7 +111,7 @@ def build_panels(sol: Solution, spec: SheetSpec) -> tuple[list[Panel], float]:
         if scene.wants("instant_centres") and _wants(spec, "centres") and k in schemes:
             from .centres import centres_panels
 
-            panels.extend(centres_panels(scene, kin, k, mu_l, lang, strokes))
+            panels.extend(centres_panels(sol, k, mu_l, lang, strokes))
         pp = plans_at.get(k)
         if pp is not None:
             if pp.velocity is not None and _wants(spec, "velocity"):

@@ -306,7 +306,7 @@ def scheme_panel(scene, kin, k: int, mu_l: float, lang: str, strokes: dict[str, 
     if any(len(g.links) == 4 for g in kin.structure.groups):  # class III: Assur's point S
         from .triad_marks import scheme_points
 
-        scheme_points(rec, placer, T, scene, kin, k, pid)
+        scheme_points(rec, placer, T, scene, kin, k, pid, LABEL_SIZE)
     rec.begin(f"{pid}-labels", "labels")
     names = list(scene.frame_points) + [n for lid in sorted(scene.links) for n in scene.links[lid].points]
     seen: set[str] = set()

@@ -189,6 +189,8 @@ def run(args: argparse.Namespace) -> int:
         return 2
     except KeyboardInterrupt:
         return 130
+    finally:
+        set_run(None, None)  # the run is over: a library call after it is not in its language
 
 
 def _input_of(args: argparse.Namespace) -> str | None:

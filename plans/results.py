@@ -49,7 +49,7 @@ def to_json(sol: Solution, steps: bool = True) -> dict[str, Any]:
     """The whole result as one dict (``plans solve --json``); :func:`write_json` writes the
     same text position by position.  ``steps=False`` leaves out the construction protocol's
     text (most of the time taken), for a page that draws the plans and reads no protocol."""
-    out = _head(sol)
+    out = head_json(sol)
     out["positions"] = list(_positions(sol, steps))
     return out
 
@@ -58,7 +58,7 @@ def to_json(sol: Solution, steps: bool = True) -> dict[str, Any]:
 _POSITIONS = "\x00positions"
 
 
-def _head(sol: Solution) -> dict[str, Any]:
+def head_json(sol: Solution) -> dict[str, Any]:
     scene = sol.scene
     out: dict[str, Any] = {
         "title": scene.title,
@@ -92,10 +92,10 @@ def _positions(sol: Solution, steps: bool = True) -> Iterator[dict[str, Any]]:
 
         forces = force_json(sol.forces[1])
     for k in range(sol.kinematics.n):
-        yield _position(sol, k, None if forces is None else forces[k], steps)
+        yield position_json(sol, k, None if forces is None else forces[k], steps)
 
 
-def _position(sol: Solution, k: int, forces: dict | None, steps: bool = True) -> dict[str, Any]:
+def position_json(sol: Solution, k: int, forces: dict | None, steps: bool = True) -> dict[str, Any]:
     kin, scene = sol.kinematics, sol.scene
     pos: dict[str, Any] = {"phi_deg": float(kin.phi_deg[k]), "points": {}, "links": {}}
     for nm in kin.point_names():
@@ -151,7 +151,7 @@ def write_json(sol: Solution, write: Callable[[str], object]) -> None:
 
     from plans.io import dumps
 
-    before, after = dumps(_head(sol)).split(json.dumps(_POSITIONS))
+    before, after = dumps(head_json(sol)).split(json.dumps(_POSITIONS))
     write(before)
     opening = "[\n    "
     for pos in _positions(sol):

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 
 import mpmath
 import numpy as np
@@ -182,6 +183,11 @@ def test_no_hidden_dust_at_the_extreme_start(stem):
     for plan in (pp.velocity, pp.acceleration):
         size = max(s.length_mm for s in plan.segments)
         assert all(s.length_mm == 0 or s.length_mm > 1e-6 * size for s in plan.segments), stem
+    # nor in the protocol's numbers (ω3 = 3.8e-16 in the Coriolis step, say)
+    from plans.results import table
+
+    text = table(sol, protocol=True).split("\nphi = ")[1]  # the first position
+    assert not re.findall(r"\d(?:\.\d+)?e-(?:1[0-9]|[2-9]\d)", text), stem
 
 
 def test_a_start_by_hand_leaves_dust():

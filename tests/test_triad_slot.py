@@ -333,3 +333,21 @@ def _jacobian(one: _TwoAngles, phi: float, ab: tuple[float, float]) -> float:
     g1, g2 = one._f(phi, (ab[0] + d, ab[1]))
     h1, h2 = one._f(phi, (ab[0], ab[1] + d))
     return ((g1 - f1) * (h2 - f2) - (h1 - f1) * (g2 - f2)) / d / d
+
+
+def test_the_group_cut_free_shows_the_slot_from_its_origin_past_the_pin():
+    import math as m
+
+    import plans
+    from drawings.linkage import build_panels
+    from drawings.sheet import sheet_spec
+    from plans.kinematics.exact import solve
+    from plans.scene.model import load_scene
+
+    spec = sheet_spec({"sheet": {"positions": [30.0], "panels": ["group"]}}, str(SAMPLE))
+    panels, mu_l = build_panels(plans.solve(SAMPLE, fit=spec.fit), spec)
+    (panel,) = [p for p in panels if p.kind == "group"]
+    (slot,) = [p for p in panel.prims if p.op == "line" and p.eid.endswith("-slot-C")]
+    kin = solve(load_scene(str(SAMPLE)), [30.0], order=1)
+    F, C = (complex(kin.point(n)[0][0]) for n in "FC")
+    assert abs(m.dist(*slot.pts[:2]) - (abs(C - F) * mu_l + 16.0)) < 1e-6  # F to C and 8 mm past each

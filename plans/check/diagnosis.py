@@ -23,7 +23,6 @@ remaining finding (:data:`RUBRIC`; a check file's ``[rubric]`` table overrides i
 from __future__ import annotations
 
 import math
-import re
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from statistics import median
@@ -31,6 +30,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from plans import quantities
 from plans.check import wording as wd
 from plans.check.checkfile import RUBRIC, RUBRIC_KEYS  # noqa: F401  (read here and from here)
 from plans.check.mistakes import KINDS, Slip, describe, inventory, replay
@@ -309,15 +309,16 @@ def _force_models(sh: _Sheet) -> list[_Model]:
     out = []
     by = {(it.phi_deg, it.quantity): i for i, it in enumerate(sh.items)}
     for (phi, q), i in by.items():
-        m = re.fullmatch(r"F_(\d\d)\^τ", q)
-        if not m or (phi, f"F_{m.group(1)}^n") not in by:
+        got = quantities.reaction_name(q)
+        if got is None or got[2] != "^τ" or (phi, q[:-2] + "^n") not in by:
             continue
-        j = by[(phi, f"F_{m.group(1)}^n")]
+        base = q[:-2]  # F_12, F_10_2: as the sheet spells it
+        j = by[(phi, base + "^n")]
         ti, tj = sh.items[i], sh.items[j]
         if abs(ti.exact - tj.exact) <= max(ti.tolerance, tj.tolerance):
             continue
-        model = _Model("reaction_swapped", ("reaction_swapped", m.group(1), phi),
-                       wd.say("ca_reaction", n=m.group(1)),
+        model = _Model("reaction_swapped", ("reaction_swapped", base[2:], phi),
+                       wd.say("ca_reaction", n=base[2:]),
                        {phi})
         model.pred[i] = (tj.exact, None)
         model.pred[j] = (ti.exact, None)
@@ -340,17 +341,18 @@ def couple_value(fa: Any, fa0: Any, q: str, k: int) -> float | None:
     """|q| at position k with the couple reversed (``fa`` with it, ``fa0`` without)."""
     if q in ("F_bal", "F_bal_lever"):
         return abs(2 * float(fa0.balancing[k]) - float(fa.balancing[k]))
-    m = re.fullmatch(r"F_(\d)(\d)(\^[nτ])?", q)
-    if not m:
+    got = quantities.reaction_name(q)
+    if got is None:
         return None
+    i, j, comp = got
     try:
-        F, rc = fa.reaction(f"F{m.group(1)}{m.group(2)}")
-        F0, rc0 = fa0.reaction(f"F{m.group(1)}{m.group(2)}")
+        F, rc = quantities.reaction(fa, i, j)
+        F0, rc0 = quantities.reaction(fa0, i, j)
     except KeyError:
         return None
-    if m.group(3) is None:
+    if comp is None:
         return abs(2 * complex(F0[k]) - complex(F[k]))
-    arr, arr0 = (rc.tau, rc0.tau) if m.group(3) == "^τ" else (rc.n, rc0.n)
+    arr, arr0 = (rc.tau, rc0.tau) if comp == "^τ" else (rc.n, rc0.n)
     if arr is None or arr0 is None:
         return None
     return abs(2 * float(arr0[k]) - float(arr[k]))

@@ -73,6 +73,7 @@ positive.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -109,6 +110,8 @@ class GasLoad:
     outer: float = 0.0  # travel coordinate of the outer dead centre (diagram only), m
     stroke: float = 0.0  # H, m (diagram only)
     fires: float | None = None  # four-stroke: crank angle given for the ignition, deg
+    #: four-stroke: the outer dead centre nearest to ``fires``, deg (found when the loads are read)
+    ignition: float | None = None
     phi_table: tuple[R, R] | None = None  # pressure over the cycle's crank angle (deg, Pa)
     period: float = 360.0  # the cycle of phi_table, deg
 
@@ -190,12 +193,10 @@ def _cycle_table(r: Reader, rows: Any, field: str, what: str, scale: float = 1.0
 
 
 def parse_loads(scene: Scene) -> Loads:
-    """Read ``[loads]`` (and the links' masses) into a :class:`Loads`; InputError on anything
-    wrong.  Read once per scene (a Loads is frozen)."""
-    done = scene.memo.get("loads")
-    if done is None:
-        done = scene.memo["loads"] = _parse_loads(scene)
-    return done
+    """The scene's ``[loads]`` (and the links' masses) as a :class:`Loads`: the record the
+    scene holds once solved (``plans.solve`` reads it once, :mod:`plans.scene.tables`), else
+    read now; InputError on anything wrong."""
+    return scene.loads if scene.loads is not None else _parse_loads(scene)
 
 
 def _parse_loads(scene: Scene) -> Loads:
@@ -404,9 +405,10 @@ def _parse_loads(scene: Scene) -> Loads:
             fires = r.value(body["fires_deg"], f"{where}fires_deg", limit=1e6)
         elif diagram and set(diagram) == set(FOUR_STROKES):
             fires = 360.0  # the course's cycle: intake from 0°, ignition at 360°
-        gas.append(GasLoad(link=lid, joint=pj[0].name, area=area, pressure=pressure, diagram=diagram,
-                           strokes=tuple(strokes), toward_pivot=direction == "toward_pivot",
-                           name=label(body, where, f"P{lid}"), outer=outer, stroke=stroke_len, fires=fires))
+        gl = GasLoad(link=lid, joint=pj[0].name, area=area, pressure=pressure, diagram=diagram,
+                     strokes=tuple(strokes), toward_pivot=direction == "toward_pivot",
+                     name=label(body, where, f"P{lid}"), outer=outer, stroke=stroke_len, fires=fires)
+        gas.append(gl if fires is None else replace(gl, ignition=ignition(scene, gl)))
 
     # ---- external forces and moments
     forces = []
@@ -551,9 +553,6 @@ def ignition(scene: Scene, gl: GasLoad) -> float:
     from plans.kinematics.exact import solve  # late import: only four-stroke diagrams need it
 
     assert gl.fires is not None
-    key = ("ignition", gl.joint, gl.link, gl.fires)
-    if key in scene.memo:
-        return scene.memo[key]
     joint = next(j for j in scene.joints if j.name == gl.joint)
     guide = joint.guide
     assert guide is not None
@@ -582,8 +581,7 @@ def ignition(scene: Scene, gl: GasLoad) -> float:
     except ConstructionError as exc:
         raise InputError(f"a four-stroke diagram needs the crank to turn a full revolution ({exc})",
                          file=scene.path, field="loads.gas") from None
-    out = scene.memo[key] = 0.5 * (lo + hi)
-    return out
+    return 0.5 * (lo + hi)
 
 
 def _stroke(scene: Scene, joint_name: str, link: int) -> tuple[float, float]:
@@ -591,9 +589,6 @@ def _stroke(scene: Scene, joint_name: str, link: int) -> tuple[float, float]:
     revolution, by dense sampling of the exact positions (relative error ~1e-7)."""
     from plans.kinematics.exact import solve  # late import: only indicator diagrams need it
 
-    key = ("stroke", joint_name, link)
-    if key in scene.memo:
-        return scene.memo[key]
     grid = np.linspace(0.0, 360.0, 3601)  # the extremes are those of this 0.1° grid
     try:
         # every tenth grid angle first, then the grid around the coarse extremes only
@@ -609,8 +604,7 @@ def _stroke(scene: Scene, joint_name: str, link: int) -> tuple[float, float]:
         raise InputError(f"an indicator diagram needs the crank to turn a full revolution ({exc})",
                          file=scene.path, field="loads.gas") from None
     travel = piston_travel(scene, kin, joint_name, link)
-    out = scene.memo[key] = (float(travel.min()), float(travel.max() - travel.min()))
-    return out
+    return float(travel.min()), float(travel.max() - travel.min())
 
 
 def _extreme_indices(t: R) -> list[int]:
@@ -814,7 +808,8 @@ def stroke_index(scene: Scene, kin: Any, gl: GasLoad, down: Any) -> Any:
     """Which of the four strokes each position is in (0 intake, 1 compression, 2 expansion,
     3 exhaust): the revolution after the ignition's outer dead centre is expansion (toward
     the crank) then exhaust, the next intake then compression."""
-    psi = np.mod(np.asarray(kin.phi_deg, float) - ignition(scene, gl), 720.0)
+    assert gl.ignition is not None, "a four-stroke load's ignition is found when the loads are read"
+    psi = np.mod(np.asarray(kin.phi_deg, float) - gl.ignition, 720.0)
     # a dead centre met to round-off is the one the angle names: 360 begins the intake, 720 the expansion
     psi = np.where(np.abs(psi - 360.0) < 1e-7, 360.0, np.where(psi > 720.0 - 1e-7, 0.0, psi))
     first = psi < 360.0

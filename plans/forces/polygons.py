@@ -234,7 +234,7 @@ def solve_applied(scene: Scene, kin: Kinematics, loads: Loads, applied: AppliedL
         if isinstance(g, TriadGroup):  # class III: by Assur's special point
             from plans.forces.triad import solve_triad
 
-            gf = solve_triad(kin, g, forces, moments)
+            gf = solve_triad(kin, g, forces, moments, Reaction)
         else:
             gf = _SOLVERS[g.kind](kin, g, forces, moments)
         solved.append(gf)
@@ -648,7 +648,7 @@ def force_polygons(fa: ForceAnalysis, k: int) -> tuple[ForcePolygon, ...]:
         if isinstance(g, TriadGroup):  # class III: by Assur's special point
             from plans.forces.triad_polygon import triad_polygon
 
-            out.append(triad_polygon(fa, gf, k))
+            out.append(triad_polygon(fa, gf, k, _Poly, ForcePolygon))
             continue
         i, j = g.links
         r1, r2, r3 = gf.reactions

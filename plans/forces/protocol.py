@@ -174,7 +174,7 @@ def force_steps(fa: ForceAnalysis, lv: LeverAnalysis, k: int) -> tuple[ForceStep
         if hasattr(gf, "S"):  # class III: the leashes' and the group's moments about Assur's point
             from plans.forces.triad_polygon import triad_steps
 
-            out += [ForceStep(name, s, arms) for s, arms in triad_steps(fa, gf, k, mu_l)]  # type: ignore[arg-type]
+            out += [ForceStep(name, s, arms) for s, arms in triad_steps(fa, gf, k, mu_l, _equation, _moment_terms)]  # type: ignore[arg-type]
         else:
             out += [ForceStep(name, s, arms) for s, arms in _group_steps(fa, gf, k, mu_l)]
         out += [ForceStep(name, s) for s in poly.plan.steps]

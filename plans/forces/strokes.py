@@ -86,10 +86,10 @@ def _idle_only(scene: Scene, st: Any, fl: Any) -> bool:
     import math
 
     from plans.kinematics.exact import solve
-    from plans.kinematics.extreme import GRID, _probe
+    from plans.kinematics.extreme import GRID, probe_scene
 
     grid = np.arange(GRID) * (360.0 / GRID)
-    v = solve(_probe(scene), grid, order=1).point_on(fl.link, scene.links[fl.link].points[fl.point])[1]
+    v = solve(probe_scene(scene), grid, order=1).point_on(fl.link, scene.links[fl.link].points[fl.point])[1]
     along = (v * complex(math.cos(fl.along), -math.sin(fl.along))).real
     acts = along > 0 if fl.stroke == "positive" else along < 0
     return bool(acts.any()) and not bool((acts & st.working(grid)).any())

@@ -89,9 +89,9 @@ def _moment(fs, ms, P: C, n: int) -> R:
     return out
 
 
-def solve_triad(kin: Kinematics, g: TriadGroup, forces: dict, moments: dict) -> TriadForces:
-    """The six reactions of the group, exact, vectorised over the positions of ``kin``."""
-    from plans.forces.polygons import Reaction
+def solve_triad(kin: Kinematics, g: TriadGroup, forces: dict, moments: dict, Reaction: Any) -> TriadForces:
+    """The six reactions of the group, exact, vectorised over the positions of ``kin``
+    (``Reaction``: the polygons' record of a joint's reaction, passed by its caller)."""
     from plans.kinematics.triad_plans import axes_of
 
     n = kin.n

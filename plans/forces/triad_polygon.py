@@ -12,14 +12,15 @@ from __future__ import annotations
 from typing import Any
 
 from plans.forces.loads import AppliedForce, AppliedMoment
-from plans.forces.polygons import ForceAnalysis, ForcePolygon, _Poly
 from plans.forces.shared import mu_force
 from plans.forces.triad import TriadForces
 from plans.kinematics.plan import Step
 from plans.phrases import phrase
 
 
-def triad_polygon(fa: ForceAnalysis, gf: TriadForces, k: int) -> ForcePolygon:
+def triad_polygon(fa: Any, gf: TriadForces, k: int, Poly: Any, ForcePolygon: Any) -> Any:
+    """The group's polygon at position k (``Poly``: the polygons' head-to-tail builder, and
+    ``ForcePolygon`` their record, passed by the caller)."""
     scene = fa.scene
     g = gf.group
     phi = float(fa.kin.phi_deg[k])
@@ -29,7 +30,7 @@ def triad_polygon(fa: ForceAnalysis, gf: TriadForces, k: int) -> ForcePolygon:
     inner_names = [rc.name(scene.fij) for rc in inner]
     loads = [[(f.label, complex(f.F[k])) for f in fs] for fs in gf.loads]  # base, then leashes
     everything = [v for ls in loads for _, v in ls] + [complex(rc.F[k]) for rc in gf.reactions]
-    poly = _Poly(mu_force(fa, everything))
+    poly = Poly(mu_force(fa, everything))
 
     def tau(x: int) -> complex:
         return complex(gf.tau[x][k] * 1j * gf.axes[x][k])
@@ -68,11 +69,11 @@ def triad_polygon(fa: ForceAnalysis, gf: TriadForces, k: int) -> ForcePolygon:
     return ForcePolygon(g.name, g.kind, poly.plan(phi))
 
 
-def triad_steps(fa: ForceAnalysis, gf: TriadForces, k: int, mu_l: float) -> list[tuple[Step, tuple[Any, ...]]]:
+def triad_steps(fa: Any, gf: TriadForces, k: int, mu_l: float, _equation: Any,
+                _moment_terms: Any) -> list[tuple[Step, tuple[Any, ...]]]:
     """The moment equations: each leash's about its inner pair (its R^τ), then the whole
-    group's about Assur's point S (the third leash's R^n)."""
-    from plans.forces.protocol import _equation, _moment_terms
-
+    group's about Assur's point S (the third leash's R^n); the protocol's writers of a moment
+    equation and of its terms are passed by the caller."""
     scene, g = fa.scene, gf.group
     i, j, m = gf.leashes(k)
     outer = gf.reactions[:3]

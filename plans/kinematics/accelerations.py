@@ -17,6 +17,7 @@ from plans.kinematics.dyads import (
     coincident,
     ensure,
     lab,
+    lay_coriolis,
     lay_normal,
     link_points,
     meet,
@@ -24,7 +25,6 @@ from plans.kinematics.dyads import (
 )
 from plans.kinematics.structure import Group, TriadGroup
 from plans.phrases import phrase
-from plans.units import clean
 
 
 class _VelReader:
@@ -85,23 +85,6 @@ def acceleration_plan(snap: Scheme, mu: float, vb: Builder, pencil: Pencil, prot
     return b
 
 
-def _coriolis(b: Builder, vr: _VelReader, guide_link: int, v_rel: np.ndarray, frm: str, frm_xy: np.ndarray,
-              label: str, exact: np.ndarray) -> tuple[str, np.ndarray]:
-    """Lay off a^k = 2 ω × v_rel (v_rel turned 90° in the sense of ω) from ``frm``; ω and
-    v_rel are read off the velocity plan."""
-    w = vr.omega(guide_link)
-    muv = vr.vb.mu
-    v_read = b.pencil.read(abs(v_rel) * muv) / muv
-    lb = f"k_{label}"
-    vec = b.pencil.vector(b.mu * 2 * abs(w) * v_read, 1j * b.xp.sign(w) * v_rel, 0.0, lb)
-    b.add(lb, frm_xy + vec)
-    b.step("lay off", (frm,), lb, lambda: phrase(
-        "a_coriolis", label=label, g=guide_link, w=abs(b.s(w)), v=clean(abs(b.s(v_rel)), b.s(vr.vb.ref)),
-        ak=clean(abs(b.s(2 * w * v_rel)), b.s(b.ref)), mm=abs(b.s(vec))))
-    b.seg(frm, lb, "coriolis", f"a^k_{label}", exact)
-    return lb, frm_xy + vec
-
-
 def _a_rrr(b: Builder, g: Group, vr: _VelReader) -> None:
     snap = b.snap
     i, j = g.links
@@ -142,7 +125,7 @@ def _a_rrp(b: Builder, g: Group, vr: _VelReader) -> None:
     if q != snap.scene.frame:
         v_rel = vr.rel(f"{lab(j2.point)}{q}", lab(j2.point))
         sd, _ = snap.slide(j3)
-        start, start_xy = _coriolis(b, vr, q, v_rel, nq, xq, f"{j2.point}{j}{j2.point}{q}",
+        start, start_xy = lay_coriolis(b, vr, q, v_rel, nq, xq, f"{j2.point}{j}{j2.point}{q}",
                                     abs(2 * snap.w[q] * sd))
     L1 = b.line(y1, 1j * (B - P1), abs(B - P1), f"⟂ {j1.point}{j2.point}")
     L3 = b.line(start_xy, u, span, f"∥ guide of {j2.point}")
@@ -175,7 +158,7 @@ def _a_rpr(b: Builder, g: Group, vr: _VelReader) -> None:
     # a_A3 = a_A2 + a^k_A3A2 + a^r_A3A2, v_A3A2 read from the velocity plan (a2 -> a3)
     v_rel = vr.rel(lab(j1.point), f"{lab(j1.point)}{j}")
     sd, sdd = snap.slide(j2)
-    mk, yk = _coriolis(b, vr, j, v_rel, na, xa, f"{j1.point}{j}{j1.point}{i}", abs(2 * snap.w[j] * sd))
+    mk, yk = lay_coriolis(b, vr, j, v_rel, na, xa, f"{j1.point}{j}{j1.point}{i}", abs(2 * snap.w[j] * sd))
     L1 = b.line(yc, 1j * (A - Cq), abs(A - Cq), f"⟂ {j3.point}{j1.point}")
     L2 = b.line(yk, u, span, f"∥ slot of link {j}")
     out = f"{lab(j1.point)}{j}"
@@ -207,7 +190,7 @@ def _a_prp(b: Builder, g: Group, vr: _VelReader) -> None:
         if carrier != snap.scene.frame:
             v_rel = vr.rel(f"{lab(j2.point)}{carrier}", out)
             sd, _ = snap.slide(jt)
-            nm, xy = _coriolis(b, vr, carrier, v_rel, nm, xy, f"{j2.point}{link}{j2.point}{carrier}",
+            nm, xy = lay_coriolis(b, vr, carrier, v_rel, nm, xy, f"{j2.point}{link}{j2.point}{carrier}",
                                abs(2 * snap.w[carrier] * sd))
         ends.append((nm, xy))
     L1 = b.line(ends[0][1], u1, s1, f"∥ guide of link {i}")
@@ -241,13 +224,13 @@ def _a_rpp(b: Builder, g: Group, vr: _VelReader) -> None:
     if q != snap.scene.frame:
         v_rel = vr.rel(f"{lab(j1.point)}{q}", out)
         sd3, _ = snap.slide(j3)
-        s3, y3 = _coriolis(b, vr, q, v_rel, nq, xq, f"{j1.point}{j}{j1.point}{q}", abs(2 * snap.w[q] * sd3))
+        s3, y3 = lay_coriolis(b, vr, q, v_rel, nq, xq, f"{j1.point}{j}{j1.point}{q}", abs(2 * snap.w[q] * sd3))
     # a_Aj = a_Ai + a^k_AjAi + a^r_AjAi, v_AjAi from the velocity plan (a -> aj)
     v_rel2 = vr.rel(lab(j1.point), out)
     sd2, sdd2 = snap.slide(j2)
     s2, y2 = na, xa
     if q != snap.scene.frame or b.xp.any(snap.w.get(j, 0.0) != 0.0):
-        s2, y2 = _coriolis(b, vr, j, v_rel2, na, xa, f"{j1.point}{j}{j1.point}{i}", abs(2 * snap.w[j] * sd2))
+        s2, y2 = lay_coriolis(b, vr, j, v_rel2, na, xa, f"{j1.point}{j}{j1.point}{i}", abs(2 * snap.w[j] * sd2))
     L3 = b.line(y3, u3, sp3, f"∥ guide of link {j}")
     L2 = b.line(y2, u2, sp2, f"∥ slot of link {j}")
     meet(b, g, L3, L2, out, b.mu * snap.a(j, A), j1.point, ())

@@ -493,3 +493,20 @@ def lay_normal(b: Builder, vr: Any, link: int, frm: str, frm_xy: np.ndarray, P: 
         mm=abs(b.s(vec)), frm=frm))
     b.seg(frm, lb, "normal", f"a_{Xn}{Pn}^n", b.snap.w[link] ** 2 * ln)
     return lb, frm_xy + vec
+
+
+def lay_coriolis(b: Builder, vr: Any, guide_link: int, v_rel: np.ndarray, frm: str, frm_xy: np.ndarray,
+                 label: str, exact: np.ndarray) -> tuple[str, np.ndarray]:
+    """Lay off a^k = 2 ω × v_rel (v_rel turned 90° in the sense of ω) from ``frm``; ω and
+    v_rel are read off the velocity plan."""
+    w = vr.omega(guide_link)
+    muv = vr.vb.mu
+    v_read = b.pencil.read(abs(v_rel) * muv) / muv
+    lb = f"k_{label}"
+    vec = b.pencil.vector(b.mu * 2 * abs(w) * v_read, 1j * b.xp.sign(w) * v_rel, 0.0, lb)
+    b.add(lb, frm_xy + vec)
+    b.step("lay off", (frm,), lb, lambda: phrase(
+        "a_coriolis", label=label, g=guide_link, w=clean(abs(b.s(w)), abs(b.snap.scene.driver.omega)), v=clean(abs(b.s(v_rel)), b.s(vr.vb.ref)),
+        ak=clean(abs(b.s(2 * w * v_rel)), b.s(b.ref)), mm=abs(b.s(vec))))
+    b.seg(frm, lb, "coriolis", f"a^k_{label}", exact)
+    return lb, frm_xy + vec

@@ -20,8 +20,8 @@ Python numbers position by position, where numpy's per-call cost would dominate
 from __future__ import annotations
 
 import math
-from dataclasses import field
-from typing import TYPE_CHECKING, Any
+from functools import cached_property
+from typing import Any
 
 import numpy as np
 
@@ -29,7 +29,6 @@ from plans.kinematics import fast, fast_arrays
 from plans.kinematics.assur import program
 from plans.kinematics.context import SCA, VEC, Context, Motion
 from plans.kinematics.structure import Structure, analyse
-from plans.records import frozen
 from plans.scene.model import Scene
 
 # numpy arrays over positions; typed loosely because numpy's operator stubs do not
@@ -41,27 +40,71 @@ R = Any  # float64 array, shape (N,)
 SCALAR_MAX = 4
 
 
-@frozen(slots=False)
 class Kinematics:
-    """Positions (and, if asked, velocities and accelerations) of every link and point."""
+    """Positions (and, if asked, velocities and accelerations) of every link and point.
+
+    Not a frozen record: the object that owns what one exact solve gave and the readings
+    made of it, each when first read and then kept here: the fast path's numbers made into
+    arrays (:attr:`motion`, :attr:`slides`, :attr:`conditions`, and one position's
+    :attr:`phi_deg`), the points as they are read (:meth:`point_on`: forces and the lever
+    read the same points many times), the reach."""
 
     scene: Scene
     structure: Structure
-    phi_deg: R
     order: int  # 0 positions, 1 + velocities, 2 + accelerations
-    motion: dict[int, Motion] = field(repr=False)
-    slides: dict[str, tuple[R, R]] = field(repr=False)  # P joint name -> (ṡ, s̈)
-    #: group name -> condition number of its velocity/acceleration system per position:
-    #: |c1||c2| / |c1 × c2| = 1 / sin(angle between the two construction lines)
-    conditions: dict[str, R] = field(repr=False, default_factory=dict)
-    #: (link, local point) -> (r, v, a), filled as points are read (forces and the lever read
-    #: the same points many times)
-    _points: dict[tuple[int, complex], tuple[C, C, C]] = field(repr=False, compare=False, default_factory=dict)
 
-    if not TYPE_CHECKING:  # the type checker sees the fields, not how they are filled
+    def __init__(self, scene: Scene, structure: Structure, phi_deg: R | None, order: int,
+                 motion: dict[int, Motion] | None = None, slides: dict[str, tuple[R, R]] | None = None,
+                 conditions: dict[str, R] | None = None, *, raw: tuple[dict, dict, dict] | None = None,
+                 phi: float | None = None) -> None:
+        """The solve's motions, slides and conditions (a fast path's: ``raw``, made readings
+        when first read; one position's angle: ``phi`` instead of ``phi_deg``)."""
+        self.scene = scene
+        self.structure = structure
+        self.order = order
+        self._raw = raw
+        self._phi = phi
+        self._points: dict[tuple[int, complex], tuple[C, C, C]] = {}
+        self._homes: dict[str, int] = {}
+        self._reach: float | None = None
+        if phi_deg is not None:  # else made when first read (the cached properties below)
+            self.phi_deg = phi_deg
+        if motion is not None:
+            self.motion = motion
+        if slides is not None:
+            self.slides = slides
+        if conditions is not None or raw is None:
+            self.conditions = {} if conditions is None else conditions
 
-        def __getattr__(self, name: str) -> Any:
-            return _unpacked(self, name)
+    def __repr__(self) -> str:
+        return f"Kinematics({self.scene.path!r}, {self.n} positions, order {self.order})"
+
+    @cached_property
+    def phi_deg(self) -> R:
+        """The crank angles (degrees), an array over the positions."""
+        return np.array((self._phi,))
+
+    @cached_property
+    def motion(self) -> dict[int, Motion]:
+        """Link number -> its motion (arrays over the positions)."""
+        assert self._raw is not None
+        return _columns(len(self.phi_deg), self._raw[0])
+
+    @cached_property
+    def slides(self) -> dict[str, tuple[R, R]]:
+        """P joint name -> (ṡ, s̈) over the positions."""
+        assert self._raw is not None
+        return {nm: (np.array((sd,)), None if sdd is None else np.array((sdd,)))
+                for nm, (sd, sdd) in self._raw[1].items()}
+
+    @cached_property
+    def conditions(self) -> dict[str, R]:
+        """Group name -> the condition number of its velocity/acceleration system per position:
+        |c1||c2| / |c1 × c2| = 1 / sin(angle between the two construction lines)."""
+        assert self._raw is not None
+        if self._phi is not None:
+            return {g: np.array((c,)) for g, c in self._raw[2].items()}
+        return {g: c() if type(c) is fast.Later else c for g, c in self._raw[2].items()}
 
     @property
     def n(self) -> int:
@@ -69,9 +112,7 @@ class Kinematics:
 
     def home(self, name: str) -> int:
         """The link a named point is read from (lowest number, frame last)."""
-        homes = self.scene.memo.get("homes")
-        if homes is None:
-            homes = self.scene.memo["homes"] = {}
+        homes = self._homes
         got = homes.get(name)
         if got is None:
             links = self.scene.point_links(name)
@@ -139,10 +180,9 @@ class Kinematics:
     def reach(self) -> float:
         """The mechanism's reach from the origin (m) over the positions: the largest |r| of
         its points (1 where all are at the origin), worked out once."""
-        d = self.__dict__
-        got = d.get("_reach")
+        got = self._reach
         if got is None:
-            got = d["_reach"] = max((float(np.maximum.reduce(np.abs(self.point(nm)[0]))) for nm in self.point_names()),
+            got = self._reach = max((float(np.maximum.reduce(np.abs(self.point(nm)[0]))) for nm in self.point_names()),
                                     default=1.0) or 1.0
         return got
 
@@ -153,29 +193,6 @@ class Kinematics:
                 if nm not in names:
                     names.append(nm)
         return names
-
-
-def _unpacked(kin: Kinematics, name: str) -> Any:
-    """What the fast path solved, made into the readings' objects when first read: the
-    motions and the conditions (and, at one position, the angle and slides as arrays; the
-    solve itself stays in Python numbers)."""
-    d = kin.__dict__
-    if name == "phi_deg" and "_phi" in d:
-        arr = d[name] = np.array((d["_phi"],))
-        return arr
-    raw = d.get("_raw") if name in ("motion", "slides", "conditions") else None
-    if raw is None:
-        raise AttributeError(name)
-    motion, slides, conditions = raw
-    if name == "motion":
-        d[name] = _columns(len(kin.phi_deg), motion)
-    elif name == "slides":
-        d[name] = {nm: (np.array((sd,)), None if sdd is None else np.array((sdd,))) for nm, (sd, sdd) in slides.items()}
-    elif "_phi" in d:
-        d[name] = {g: np.array((c,)) for g, c in conditions.items()}
-    else:
-        d[name] = {g: c() if type(c) is fast.Later else c for g, c in conditions.items()}
-    return d[name]
 
 
 def solve(scene: Scene, phi_deg=None, order: int | None = None,
@@ -201,9 +218,7 @@ def solve(scene: Scene, phi_deg=None, order: int | None = None,
         if type(phi) is float or type(phi) is int:
             res = fast.solve_one(fp, phi, order)
             if res is not None:
-                kin = object.__new__(Kinematics)
-                kin.__dict__.update(scene=scene, structure=st, _phi=float(phi), order=order, _points={}, _raw=res)
-                return kin
+                return Kinematics(scene, st, None, order, raw=res, phi=float(phi))
     if type(phi_deg) is np.ndarray and phi_deg.dtype == float and phi_deg.ndim == 1:
         phis = phi_deg  # as np.asarray gives it
     else:
@@ -211,10 +226,7 @@ def solve(scene: Scene, phi_deg=None, order: int | None = None,
     if fp is not None:
         res = _fast_runs(fp, phis, order) if len(phis) <= SCALAR_MAX else fast_arrays.solve(fp, phis, order)
         if res is not None:
-            kin = object.__new__(Kinematics)
-            kin.__dict__.update(scene=scene, structure=st, phi_deg=phis, order=order, slides=res[1], _points={},
-                                _raw=res)
-            return kin
+            return Kinematics(scene, st, phis, order, slides=res[1], raw=res)
     steps = program(scene, st)
     if len(phis) <= SCALAR_MAX:
         return _solve_scalar(scene, st, steps, phis, order)
@@ -227,16 +239,6 @@ def solve(scene: Scene, phi_deg=None, order: int | None = None,
     for fn, g, k in steps:
         fn(ctx, g, k)
     return Kinematics(scene, st, phis, order, ctx.motion, ctx.slides, ctx.conditions)
-
-
-def _kinematics(scene: Scene, st: Structure, order: int, motion: dict, phis: Any, slides: dict,
-                conditions: dict) -> Kinematics:
-    """A Kinematics made without the frozen dataclass's per-field checks (a third of the
-    time of one position otherwise); the fields are those of the constructor."""
-    kin = object.__new__(Kinematics)
-    kin.__dict__.update(scene=scene, structure=st, phi_deg=phis, order=order, motion=motion, slides=slides,
-                        conditions=conditions, _points={})
-    return kin
 
 
 def _columns(n: int, motion: dict) -> dict:
@@ -326,7 +328,7 @@ def _stack(scene: Scene, st: Structure, phis: Any, order: int, runs: list) -> Ki
             slides[nm] = (np.array([r.slides[nm][0] for r in runs], dtype=float),
                           np.array([r.slides[nm][1] for r in runs], dtype=float) if k == 2 else None)
     conditions = {g: np.array([r.conditions[g] for r in runs], dtype=float) for g in first.conditions}
-    return _kinematics(scene, st, order, motion, phis, slides, conditions)
+    return Kinematics(scene, st, phis, order, motion, slides, conditions)
 
 
 def _full(n: int, x: Any, dtype: Any) -> Any:

@@ -153,7 +153,7 @@ def output_of(scene: Scene, field: str = "driver.extreme_of") -> Output:
 # --------------------------------------------------------------------------- its motion
 
 
-def _probe(scene: Scene) -> Scene:
+def probe_scene(scene: Scene) -> Scene:
     """The scene turning at |ω| = 1 (the velocities are the analogues: any ω, even 0)."""
     d = scene.driver
     return dataclasses.replace(scene, driver=dataclasses.replace(d, omega=float(d.sense), eps=0.0,
@@ -221,7 +221,7 @@ def _strokes(scene: Scene, field: str, closed: bool, output: Output | None) -> S
     from plans.kinematics.exact import solve
 
     out = output or output_of(scene)
-    probe = _probe(scene)
+    probe = probe_scene(scene)
     grid = np.arange(GRID + 1) * (360.0 / GRID)
     try:
         kin = solve(probe, grid, order=1)

@@ -90,11 +90,11 @@ def _track(solve: Callable[..., Any], scene: Scene, st: Structure, g: TriadGroup
             new = place(t, outer, state)
         except SpecialPosition as exc:
             if k:  # the group may have run into its special position between two steps
-                _special_between(scene, before, g, t, outer_of, float(grid[k - 1]), phi, state, sense)
+                _special_between(solve, scene, before, g, t, outer_of, float(grid[k - 1]), phi, state, sense)
             raise NotAssemblable(str(exc).split(": ", 1)[-1], group=t.name, point=g.point, phi_deg=phi) from None
         d = determinant(t, outer, *new)
         if k and d * sense < 0:  # Newton landed on the other branch: a special position was passed
-            _special_between(scene, before, g, t, outer_of, float(grid[k - 1]), phi, state, sense)
+            _special_between(solve, scene, before, g, t, outer_of, float(grid[k - 1]), phi, state, sense)
             raise NotAssemblable("the group leaves its branch here (the leashes' axes come near one point)",
                                  group=t.name, point=g.point, phi_deg=phi)
         state, sense = new, d
@@ -103,13 +103,11 @@ def _track(solve: Callable[..., Any], scene: Scene, st: Structure, g: TriadGroup
     return done
 
 
-def _special_between(scene: Scene, before: Structure, g: TriadGroup, t: Triad, outer_of, lo: float, hi: float,
-                     state: tuple[complex, float], sense: float = 0.0) -> None:
+def _special_between(solve: Callable[..., Any], scene: Scene, before: Structure, g: TriadGroup, t: Triad, outer_of,
+                     lo: float, hi: float, state: tuple[complex, float], sense: float = 0.0) -> None:
     """Where the group cannot be carried from ``lo`` to ``hi``: bisect to the last angle it
     reaches; if its leashes' axes pass through one point there (or are parallel), that is
     the group's special position (a dead position of the triad): say so, with the angle."""
-    from plans.kinematics.exact import solve
-
     def outer_at(phi: float) -> tuple[complex, complex, complex]:
         kin = solve(scene, [phi], order=0, structure=before)
         got = [complex(np.atleast_1d(kin.point_on(p, z)[0])[0]) for p, z in outer_of]
@@ -226,10 +224,8 @@ def _slider(ctx: Context, leash: int, o: Any, zp: complex, P: Any, rD: Any, vD: 
             out: Any) -> None:
     """A leash that slides on a guide of the frame: it keeps its angle, its pin is the base's
     inner pair; its slide ṡ, s̈ along the guide."""
-    from plans.kinematics.assur import slide_name, slider_turn
-
     n = len(P)
-    turn = slider_turn(o)
+    turn = _turn(o)
     m = place_link(ctx, leash, out(np.full(n, turn)), out(P), zp)
     if ctx.order < 1:
         return
@@ -241,16 +237,14 @@ def _slider(ctx: Context, leash: int, o: Any, zp: complex, P: Any, rD: Any, vD: 
                None if aP is None else out(np.zeros(n)))
     sd = (vP * np.conj(g)).real
     sdd = None if aP is None else (aP * np.conj(g)).real
-    ctx.slides[slide_name(o)] = (out(sd), None if sdd is None else out(sdd))
+    ctx.slides[o.name] = (out(sd), None if sdd is None else out(sdd))
 
 
 def _block(ctx: Context, leash: int, i: Any, zq: complex, rot: Any, Q: Any, vQ: Any, aQ: Any, rD: Any, vD: Any,
            aD: Any, w: Any, e: Any, out: Any) -> None:
     """A block pinned at Q, sliding in a slot of the base: it turns with the base; its slide
     along the slot (ṡ, s̈) relative to the base's point under the pin."""
-    from plans.kinematics.assur import slide_name, slider_turn
-
-    m = place_link(ctx, leash, out(rot * slider_turn(i)), out(Q), zq)
+    m = place_link(ctx, leash, out(rot * _turn(i)), out(Q), zq)
     if ctx.order < 1:
         return
     _set_rates(ctx, m, out(Q), out(vQ), None if aQ is None else out(aQ), out(w), None if aQ is None else out(e))
@@ -262,7 +256,12 @@ def _block(ctx: Context, leash: int, i: Any, zq: complex, rot: Any, Q: Any, vQ: 
     if aQ is not None:
         a_rel = aQ - (aD + (1j * e - w * w) * arm) - 2j * w * v_rel
         sdd = (a_rel * np.conj(s)).real
-    ctx.slides[slide_name(i)] = (out(sd), None if sdd is None else out(sdd))
+    ctx.slides[i.name] = (out(sd), None if sdd is None else out(sdd))
+
+
+def _turn(jt: Any) -> complex:
+    """e^{i(α − α_s)}: a slider's rotation relative to the link carrying its guide."""
+    return cmath.exp(1j * (jt.guide.angle - jt.slider_angle))
 
 
 def _set_rates(ctx: Context, m: Motion, anchor: Any, v: Any, a: Any, omega: Any, eps: Any) -> None:

@@ -22,6 +22,7 @@ from plans.kinematics.dyads import (
     coincident,
     ensure,
     lab,
+    lay_coriolis,
     lay_normal,
     link_points,
     meet,
@@ -287,8 +288,6 @@ def a_triad(b: Builder, g: TriadGroup, vr: Any) -> None:
 def _coriolis_at(b: Builder, vr: Any, g: TriadGroup, k: int, frm: str, frm_xy: Any) -> tuple[str, Any]:
     """From the image of a block's pin (c), the Coriolis term of the base's point under it:
     a_C3 = a_C + a^k_C3C + a^r (∥ slot), v_C3C read off the velocity plan."""
-    from plans.kinematics.accelerations import _coriolis
-
     base = g.links[0]
     pin = g.joints[k][0].point
     vb = vr.vb
@@ -296,7 +295,7 @@ def _coriolis_at(b: Builder, vr: Any, g: TriadGroup, k: int, frm: str, frm_xy: A
     at_pin = vb.pole if known == vb.snap.scene.frame else vb.labels.get((known, pin), lab(pin))
     v_rel = vr.rel(at_pin, f"{lab(pin)}{base}")
     sd, _ = b.snap.slide(g.joints[k][1])
-    return _coriolis(b, vr, base, v_rel, frm, frm_xy, f"{pin}{base}{pin}{g.links[1 + k]}",
+    return lay_coriolis(b, vr, base, v_rel, frm, frm_xy, f"{pin}{base}{pin}{g.links[1 + k]}",
                      abs(2 * b.snap.w[base] * sd))
 
 

@@ -149,9 +149,12 @@ class Scene:
     loads: Any = field(default=None, repr=False)
     dynamics_spec: Any = field(default=None, repr=False)
     diagrams_spec: Any = field(default=None, repr=False)
+    #: the pairs' friction (plans.scene.friction.FrictionSpec), read with the other tables
+    #: (None: the scene states none)
+    friction_spec: Any = field(default=None, repr=False)
     tables: bool = field(default=False, repr=False)
-    #: what is derived once per scene (its structure, the solver's constants); not copied by
-    #: dataclasses.replace, so a changed scene derives its own
+    #: what the exact analysis derives once per scene (its structure, the solver's constants);
+    #: not copied by dataclasses.replace, so a changed scene derives its own
     memo: dict[Any, Any] = field(init=False, repr=False, compare=False, default_factory=dict)
 
     def title_in(self, lang: str) -> str:

@@ -154,9 +154,8 @@ def _run(args: argparse.Namespace) -> int:
 
     from plans.io import dumps, refuse_input, write_all
 
-    from .design import design
-    from .model import load_task
     from .scene import scene_text
+    from .solution import solve_task
 
     refuse_input(args.output, args.task)
     refuse_input(args.json, args.task)
@@ -164,7 +163,7 @@ def _run(args: argparse.Namespace) -> int:
         from plans.errors import OutputError
 
         raise OutputError(f"{args.output}: the scene and the JSON would overwrite each other")
-    d = design(load_task(args.task))
+    d = solve_task(args.task).design
     text = scene_text(d)
     check_scene(text, args.task)
     res = results(d, args.output if args.output else text)
