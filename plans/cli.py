@@ -190,7 +190,7 @@ def run(args: argparse.Namespace) -> int:
     except KeyboardInterrupt:
         return 130
     finally:
-        set_run(None, None)  # the run is over: a library call after it is not in its language
+        set_run(None, None)  # a library call after this run follows its own scene's language
 
 
 def _input_of(args: argparse.Namespace) -> str | None:

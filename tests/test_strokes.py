@@ -202,3 +202,16 @@ def test_no_resisting_moment_at_the_rockers_extreme():
     fa = _forces(scene_from_dict(data, "four_bar.toml"))[0]
     M = next(m for m in fa.applied.moments if m.label == "M_c").M
     assert M[0] == 0 and np.all(np.abs(M[1:5]) == 40)
+
+
+def test_the_warning_is_advice_to_the_fuzzer_not_a_broken_promise(tmp_path):
+    """A scene accepted with a warning keeps the bad-input promise (status 0, advice on stderr)."""
+    from plans.accuracy import fuzz
+
+    data = read_toml(ROOT / "samples" / "four_bar.toml")
+    del data["loads"]["moment"][0]["stroke"]
+    sample = fuzz.Sample(ROOT / "samples" / "four_bar.toml", data, fuzz._kind_argv("linkage", False), "four_bar.toml",
+                         kind="linkage")
+    res = fuzz.run_case(sample, fuzz.to_toml(data).encode("utf-8"), tmp_path)
+    assert res.ok and res.status == 0, res.why
+    assert fuzz._without_advice("plans: warning: x\nplans: error: y\n") == "plans: error: y\n"
