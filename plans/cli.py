@@ -189,6 +189,8 @@ def run(args: argparse.Namespace) -> int:
         return 2
     except KeyboardInterrupt:
         return 130
+    finally:
+        set_run(None, None)  # a library call after this run follows its own scene's language
 
 
 def _input_of(args: argparse.Namespace) -> str | None:
