@@ -67,10 +67,10 @@ def _fitting_positions(sol: Solution, mu: float, lang: str, bold: list[int], str
     (when its scale is not the file's own) at the next smaller standard scales."""
     from .sheet import fits_empty
 
-    panel = positions_panel(sol, mu, lang, bold, strokes, spec.trace)
+    panel = positions_panel(sol, mu, lang, bold, strokes, spec.trace, first=spec.first_position)
     if fits_empty(panel, spec.format, spec.orientation):
         return panel
-    panel = positions_panel(sol, mu, lang, bold, strokes, spec.trace, brief=True)
+    panel = positions_panel(sol, mu, lang, bold, strokes, spec.trace, brief=True, first=spec.first_position)
     if sol.scene.scales.get("length"):
         return panel  # the student's scale is kept: a panel that does not fit says so
     from .panels import STANDARD_RATIOS
@@ -79,7 +79,7 @@ def _fitting_positions(sol: Solution, mu: float, lang: str, bold: list[int], str
         if fits_empty(panel, spec.format, spec.orientation):
             break
         if 1000.0 * r < mu:
-            panel = positions_panel(sol, 1000.0 * r, lang, bold, strokes, spec.trace, brief=True)
+            panel = positions_panel(sol, 1000.0 * r, lang, bold, strokes, spec.trace, brief=True, first=spec.first_position)
     return panel
 
 
@@ -173,7 +173,7 @@ def draw(source: Solution | Scene | str | Path, *, format: str | None = None, or
         sol = solve_scene(sc, fit=fit_for(spec))
     panels, mu_l = build_panels(sol, spec)
     sc = sol.scene
-    numbers = {float(phi): k for k, phi in enumerate(sc.driver.phis_deg)}
+    numbers = {float(phi): k + spec.first_position for k, phi in enumerate(sc.driver.phis_deg)}
     sheets = compose(panels, spec, None, sc.path, numbers)  # each sheet's scale: its main image's
     if sc.wants("diagrams") or sc.wants("dynamics"):  # the cycle's sheets follow
         from .cycle import extend

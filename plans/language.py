@@ -513,3 +513,17 @@ TERMS.update({
         "укажите stroke = \"working\", если он действует только на рабочем ходу (или stroke = \"both\", "
         "если так и задумано)"),
 })
+
+
+# --------------------------------------------------------------------------- the gear and cam sheets' words
+SHEET_WORDS.update({
+    "coaxiality": ("соосность", "coaxiality"),  # the 2K-H train's conditions
+    "assembly": ("сборка", "assembly"),
+    "neighbourhood": ("соседство", "neighbourhood"),
+    "centre_min": ("O_{мин}", "O_{min}"),  # the cam's centre: the least base radius, the chosen one
+    "centre_best": ("O_{опт}", "O_{best}"),
+    "unit_mm": ("мм", "mm"),
+    "unit_m": ("м", "m"),
+    "working_stroke": ("рабочий ход", "working stroke"),  # the plan of positions
+    "idle_stroke": ("холостой ход", "idle stroke"),
+})

@@ -25,6 +25,7 @@ _KEYS = {"format", "orientation", "language", "title", "designation", "subtitle"
          "checked_by", "approved_by", "group", "organization", "date", "first_sheet", "total_sheets",
          "panels", "positions", "trace", "pins"}
 _KEYS |= {"acceleration_pole"}  # the notation, read with the scales (plans.scene.notation)
+_KEYS |= {"first_position"}  # the number of the first position on every panel (1 or 0)
 
 
 def sheet_spec(raw: dict[str, Any], path: str, default_title: str = "", **override: Any) -> SheetSpec:
@@ -123,6 +124,12 @@ def read_sheet(raw: dict[str, Any], path: str, default_title: str = "", **overri
                 raise InputError("expected a sheet number >= 1", file=path, field=f"{f}.sheet")
             pins.append((p["panel"], sh, float(p["x"]), float(p["y"])))
         out["pins"] = tuple(pins)
+    if "first_position" in data:
+        v = data["first_position"]
+        if isinstance(v, bool) or not isinstance(v, int) or v not in (0, 1):
+            raise InputError(f"expected 1 (positions 1, 2, …) or 0 (positions 0, 1, …), got {v!r}", file=path,
+                             field="sheet.first_position")
+        out["first_position"] = int(v)
     out.setdefault("title", default_title)
     return out
 
