@@ -177,9 +177,10 @@ def test_the_solvers_the_layering_test_names_exist():
 #: with.  A module added here is a cost every ``plans solve`` pays before its first result.
 SOLVE_START = {
     "drawings", "drawings.cli", "drawings.console",
-    "plans", "plans.cli", "plans.errors", "plans.guard", "plans.io", "plans.kinds", "plans.language",
+    "plans", "plans.check_terms", "plans.cli", "plans.errors", "plans.guard", "plans.io", "plans.kinds",
+    "plans.language", "plans.messages",
     "plans.lines", "plans.phrases", "plans.reader", "plans.records", "plans.results", "plans.tolerances",
-    "plans.units", "plans.scene", "plans.scene.model",
+    "plans.units", "plans.scene", "plans.scene.model", "plans.scene.options",
     "plans.kinematics", "plans.kinematics.assur", "plans.kinematics.cases", "plans.kinematics.construction",
     "plans.kinematics.context", "plans.kinematics.dyads", "plans.kinematics.exact", "plans.kinematics.fast",
     "plans.kinematics.fast_arrays", "plans.kinematics.plan", "plans.kinematics.scales",

@@ -204,3 +204,9 @@ def test_the_exact_solvers_have_one_entry():
                      for dep in {_ours(mod) for mod, _, _ in _imports(m, p)} & EXACT_SOLVERS)
     assert outside == []
     assert EXACT_SOLVERS <= set(MODULES)
+
+
+def test_no_module_is_longer_than_a_reader_takes_in():
+    long = sorted(f"{p.relative_to(ROOT)}: {n} lines" for p in MODULES.values()
+                  if (n := len(p.read_text(encoding="utf-8").splitlines())) > LONGEST)
+    assert long == []

@@ -77,119 +77,46 @@ from dataclasses import replace
 from typing import Any
 
 import numpy as np
-from numpy.typing import NDArray
 
-from plans.errors import ConstructionError, InputError, Said
+from plans.errors import InputError, Said
+
+# the records and the gas cycle, importable from here as before
+from plans.forces.gas_cycle import (  # noqa: F401
+    FOUR_STROKES,
+    cycle_of,
+    cycle_phase,
+    cycle_table,
+    extreme_indices,
+    four_stroke,
+    gas_force,
+    ignition,
+    piston_stroke,
+    pressure_force,
+    stroke_index,
+)
+from plans.forces.load_records import (  # noqa: F401
+    AREA_UNITS,
+    G_STANDARD,
+    PRESSURE_UNITS,
+    AppliedForce,
+    AppliedLoads,
+    AppliedMoment,
+    Balancing,
+    C,
+    ForceLoad,
+    GasLoad,
+    Loads,
+    MomentLoad,
+    R,
+    local_at,
+    mechanism_extent,
+)
 from plans.forces.shared import unit_vector
-from plans.kinematics.travel import piston_travel, toward_pivot
 from plans.reader import Reader, check_keys, did_you_mean, show
-from plans.records import frozen
 from plans.scene.model import Scene
 from plans.units import DUST, LENGTH_UNITS
 
-C = NDArray[np.complex128]
-R = NDArray[np.float64]
-
-PRESSURE_UNITS = {"Pa": 1.0, "kPa": 1e3, "MPa": 1e6, "bar": 1e5, "N/cm2": 1e4, "N/mm2": 1e6, "N/m2": 1.0}
-AREA_UNITS = {"m2": 1.0, "cm2": 1e-4, "mm2": 1e-6}
-G_STANDARD = 9.81  # the textbooks' g
-
-
-@frozen
-class GasLoad:
-    """The gas force on a piston: a constant pressure or an indicator diagram by stroke."""
-
-    link: int
-    joint: str  # the prismatic joint the piston slides in
-    area: float  # m²
-    pressure: float | None  # Pa (constant) or None with a diagram
-    diagram: dict[str, tuple[R, R]]  # "down"/"up" -> (travel m, pressure Pa)
-    strokes: tuple[str, ...]
-    toward_pivot: bool
-    name: str
-    outer: float = 0.0  # travel coordinate of the outer dead centre (diagram only), m
-    stroke: float = 0.0  # H, m (diagram only)
-    fires: float | None = None  # four-stroke: crank angle given for the ignition, deg
-    #: four-stroke: the outer dead centre nearest to ``fires``, deg (found when the loads are read)
-    ignition: float | None = None
-    phi_table: tuple[R, R] | None = None  # pressure over the cycle's crank angle (deg, Pa)
-    period: float = 360.0  # the cycle of phi_table, deg
-
-
-@frozen
-class ForceLoad:
-    """An external force at a point of a link: fixed, or resisting the point's motion."""
-
-    link: int
-    point: str
-    vector: complex | None  # N, fixed
-    resisting: float | None  # magnitude opposite the velocity
-    along: float | None  # rad, axis for the resisting force's sign
-    stroke: str  # "both" | "positive" | "negative"
-    name: str
-
-
-@frozen
-class MomentLoad:
-    """An external moment on a link: fixed, or resisting its rotation."""
-
-    link: int
-    value: float | None
-    resisting: float | None
-    name: str
-    table: tuple[R, R] | None = None  # a turning-moment diagram (φ deg, N·m)
-    expression: Any = None  # or a formula of φ (rad), plans.expression.Expression
-    period: float = 360.0  # the cycle the diagram covers, deg
-    stroke: str = "both"  # "working" | "idle": only on that stroke of the output
-
-
-@frozen
-class Balancing:
-    """Where the balancing load acts: a force at a point of the driving link, or a moment."""
-
-    kind: str  # "force" | "moment"
-    point: str  # on the driving link
-
-
-@frozen
-class Loads:
-    """Everything the force analysis needs that is not geometry."""
-
-    masses: dict[int, float]
-    inertias: dict[int, float]
-    centres: dict[int, str]  # link -> centre point name (links with mass or inertia)
-    g: complex  # gravity vector, m/s² (0 when off)
-    offset_inertia: bool
-    lever_turn: int  # +1 ccw, -1 cw
-    balancing: Balancing
-    gas: tuple[GasLoad, ...]
-    forces: tuple[ForceLoad, ...]
-    moments: tuple[MomentLoad, ...]
-
-
 _LOAD_KEYS = {"gravity", "inertia", "lever_turn", "balancing", "mass_rule", "gas", "force", "moment"}
-FOUR_STROKES = ("intake", "compression", "expansion", "exhaust")
-
-
-def cycle_of(scene: Scene) -> float:
-    """The working cycle in crank degrees: 720 when ``[dynamics] cycle_deg = 720``, else 360
-    (the dynamics' reader checks the value itself)."""
-    dyn = scene.raw.get("dynamics")
-    return 720.0 if isinstance(dyn, dict) and dyn.get("cycle_deg") == 720 else 360.0
-
-
-def _cycle_table(r: Reader, rows: Any, field: str, what: str, scale: float = 1.0) -> tuple[R, R]:
-    """A diagram over the cycle's crank angle: rows [φ deg, value] from 0 to 360 or 720."""
-    if not (isinstance(rows, list) and len(rows) >= 2 and all(isinstance(x, list) and len(x) == 2 for x in rows)):
-        raise r.fail(field, f"expected at least two rows [phi_deg, {what}] from 0 to 360 (or 720)")
-    phi = np.array([r.value(x[0], field) for x in rows])
-    val = np.array([r.value(x[1], field) for x in rows]) * scale
-    if np.any(np.diff(phi) <= 0):
-        raise r.fail(field, "expected crank angles increasing from row to row")
-    if phi[0] != 0 or phi[-1] not in (360.0, 720.0):
-        raise r.fail(field, f"the table covers {phi[0]:g}..{phi[-1]:g}°; expected the whole cycle, from 0 to 360 "
-                            f"(or to 720 for a four-stroke cycle)")
-    return phi, val
 
 
 def parse_loads(scene: Scene) -> Loads:
@@ -372,7 +299,7 @@ def _parse_loads(scene: Scene) -> Loads:
             elif not isinstance(diag, dict) or not diag or not set(diag) <= {"down", "up"}:
                 raise fail(f"{where}diagram", "expected { down = [[s, p], ...], up = [[s, p], ...] } or the "
                                               "four strokes { intake, compression, expansion, exhaust }")
-            outer, stroke_len = _stroke(scene, pj[0].name, lid)
+            outer, stroke_len = piston_stroke(scene, pj[0].name, lid)
             # the pressures as given, or fractions of p_max (in pressure_unit)
             unit_p = number(body, "p_max", where, positive=True) * scale if "p_max" in body else scale
             for side, table in diag.items():
@@ -422,7 +349,7 @@ def _parse_loads(scene: Scene) -> Loads:
         check_keys(body, ("link", "point", "vector", "magnitude", "angle_deg", "resisting", "along", "stroke",
                           "name", "area", "bore", "pressure_table"), file=path, where=where)
         if "pressure_table" in body or "area" in body or "bore" in body:
-            gas.append(_pressure_force(scene, r, body, where, k, moving_link, length))
+            gas.append(pressure_force(scene, r, body, where, k, moving_link, length))
             continue
         given = [key for key in ("vector", "magnitude", "resisting") if key in body]
         if len(given) > 1:
@@ -473,7 +400,7 @@ def _parse_loads(scene: Scene) -> Loads:
             raise fail(f"{where}{given[1]}", Said("l_moment_ways", a=given[0], b=given[1]))
         lid = moving_link(body, where)
         if "table" in body:
-            tab = _cycle_table(r, body["table"], f"{where}table", "M")
+            tab = cycle_table(r, body["table"], f"{where}table", "M")
             moments.append(MomentLoad(lid, None, None, label(body, where, f"M{lid}"), table=tab,
                                       period=float(tab[0][-1]), stroke=m_stroke))
             continue
@@ -513,159 +440,7 @@ def _parse_loads(scene: Scene) -> Loads:
                  moments=tuple(moments))
 
 
-def _pressure_force(scene: Scene, r: Reader, body: dict[str, Any], where: str, k: int, moving_link: Any,
-                    length: Any) -> GasLoad:
-    """``[[loads.force]]`` given by its pressure over the cycle's crank angle: a gas force on a
-    piston, along its guide toward the crank, F = p(φ)·A."""
-    for key in ("vector", "magnitude", "angle_deg", "resisting", "along", "stroke"):
-        if key in body:
-            raise r.fail(f"{where}{key}", "a force by pressure_table acts along the piston's guide; give "
-                                          "area (or bore) and pressure_table alone")
-    if "pressure_table" not in body:
-        raise r.fail(f"{where}pressure_table", "expected pressure_table = [[phi_deg, p_Pa], ...] with area or bore")
-    if ("area" in body) == ("bore" in body):
-        raise r.fail(f"{where}area", "expected the piston's area = m² or its bore (one of them)")
-    lid = moving_link(body, where)
-    pj = [j for j in scene.joints if j.kind == "P" and j.guide is not None and j.slider == lid]
-    if len(pj) != 1:
-        raise r.fail(f"{where}link", f"link {lid} is not a piston: it must slide on exactly one guide")
-    if "point" in body and body["point"] != pj[0].point:
-        raise r.fail(f"{where}point", f"a pressure acts on the piston at its joint point {pj[0].point!r}")
-    if "area" in body:
-        area = r.number(body, "area", where, positive=True)
-    else:
-        area = math.pi * length(body["bore"], f"{where}bore") ** 2 / 4
-    tab = _cycle_table(r, body["pressure_table"], f"{where}pressure_table", "p_Pa")
-    return GasLoad(link=lid, joint=pj[0].name, area=area, pressure=None, diagram={}, strokes=("down", "up"),
-                   toward_pivot=True, name=r.name(body.get("name", f"P{lid}"), f"{where}name"),
-                   phi_table=tab, period=float(tab[0][-1]))
-
-
-def _cycle_phase(scene: Scene, kin: Any, period: float) -> R:
-    """The crank angle within the cycle, 0 <= φ < period (deg)."""
-    return np.mod(np.asarray(kin.phi_deg, float), period)
-
-
-def ignition(scene: Scene, gl: GasLoad) -> float:
-    """The crank angle (deg) of a four-stroke cylinder's ignition: the piston's outer dead
-    centre nearest to ``fires_deg``, found where its velocity along the guide turns toward
-    the crank (to round-off)."""
-    from plans.kinematics.exact import solve  # late import: only four-stroke diagrams need it
-
-    assert gl.fires is not None
-    joint = next(j for j in scene.joints if j.name == gl.joint)
-    guide = joint.guide
-    assert guide is not None
-    z = scene.links[gl.link].points[joint.point]
-
-    def speed(at: Any) -> R:  # the piston's velocity toward the crank's pivot (its travel's rate)
-        kin = solve(scene, np.asarray(at, float), order=1)
-        r, v, _ = kin.point_on(gl.link, z)
-        u: Any = guide.direction if guide.link == scene.frame else kin.motion[guide.link].rot * guide.direction
-        return (v * np.conj(toward_pivot(scene, r, u))).real * np.sign(scene.driver.omega)
-
-    phis = gl.fires + np.linspace(-180.0, 180.0, 361)
-    try:
-        t = piston_travel(scene, solve(scene, phis, order=0), gl.joint, gl.link)
-        k = int(np.argmin(t))
-        lo, hi = float(phis[max(k - 1, 0)]), float(phis[min(k + 1, 360)])
-        for _ in range(8):  # 64 samples a step: the bracket where the travel turns shrinks 64 times
-            grid = np.linspace(lo, hi, 65)
-            up = speed(grid) > 0
-            j = int(np.argmax(up)) if np.any(up) and not up[0] else 0
-            if j == 0:
-                break
-            lo, hi = float(grid[j - 1]), float(grid[j])
-            if hi - lo < 1e-13:
-                break
-    except ConstructionError as exc:
-        raise InputError(f"a four-stroke diagram needs the crank to turn a full revolution ({exc})",
-                         file=scene.path, field="loads.gas") from None
-    return 0.5 * (lo + hi)
-
-
-def _stroke(scene: Scene, joint_name: str, link: int) -> tuple[float, float]:
-    """The piston's outer dead centre (travel coordinate) and stroke H over one crank
-    revolution, by dense sampling of the exact positions (relative error ~1e-7)."""
-    from plans.kinematics.exact import solve  # late import: only indicator diagrams need it
-
-    grid = np.linspace(0.0, 360.0, 3601)  # the extremes are those of this 0.1° grid
-    try:
-        # every tenth grid angle first, then the grid around the coarse extremes only
-        coarse = np.arange(0, 3601, 10)
-        t = piston_travel(scene, solve(scene, grid[coarse], order=0), joint_name, link)
-        keep = np.zeros(3601, dtype=bool)  # the grid around the extremes, each index once, in order
-        keep[[0, 3600]] = True
-        for k in _extreme_indices(t):
-            keep[(coarse[k] + np.arange(-10, 11)) % 3600] = True
-        near = np.flatnonzero(keep)
-        kin = solve(scene, grid[near], order=0)
-    except ConstructionError as exc:
-        raise InputError(f"an indicator diagram needs the crank to turn a full revolution ({exc})",
-                         file=scene.path, field="loads.gas") from None
-    travel = piston_travel(scene, kin, joint_name, link)
-    return float(travel.min()), float(travel.max() - travel.min())
-
-
-def _extreme_indices(t: R) -> list[int]:
-    """The coarse samples near which a finer sample may beat the coarse extremes: between
-    two samples a smooth travel rises at most (largest second difference)/8 above them;
-    every sample within the whole second difference of an extreme is kept (a flat dwell
-    keeps many)."""
-    slack = float(np.max(np.abs(t[2:] - 2 * t[1:-1] + t[:-2])))
-    return [int(k) for k in np.flatnonzero((t <= t.min() + slack) | (t >= t.max() - slack))]
-
-
 # --------------------------------------------------------------------------- loads at positions
-
-
-@frozen
-class AppliedForce:
-    """A force bound to a point of a link (a sympy-style bound vector), over positions."""
-
-    label: str  # "G2", "Phi2", "P3", "F_c"
-    link: int
-    point: str  # the point's name ("S2", "B"); "S2*" for an offset inertia force
-    r: C  # global position of the point of application, m
-    local: C  # its local coordinates on the link (for the lever's similarity)
-    F: C  # N
-    kind: str  # "gravity" | "inertia" | "gas" | "external"
-
-
-@frozen
-class AppliedMoment:
-    """A moment on a link at every position (inertia or external)."""
-
-    label: str  # "M_Phi2", "M_c4"
-    link: int
-    M: R  # N·m, ccw+
-    kind: str  # "inertia" | "external"
-
-
-@frozen
-class AppliedLoads:
-    """Every force and moment applied to the links at every position."""
-
-    forces: tuple[AppliedForce, ...]
-    moments: tuple[AppliedMoment, ...]
-
-    def on(self, link: int) -> tuple[list[AppliedForce], list[AppliedMoment]]:
-        return ([f for f in self.forces if f.link == link], [m for m in self.moments if m.link == link])
-
-    @property
-    def largest(self) -> R:
-        """The largest load magnitude at each position (N, N·m/m are not mixed: forces only)."""
-        if not self.forces:
-            return np.zeros(0)
-        return np.max(np.abs(np.stack([f.F for f in self.forces])), axis=0)
-
-
-def _extent(kin: Any) -> float:
-    """The mechanism's reach from the origin (m) over the positions, for what counts as dust."""
-    reach = getattr(kin, "reach", None)  # worked out once by the exact analysis
-    if reach is not None:
-        return reach()
-    return max((float(np.max(np.abs(kin.point(nm)[0]))) for nm in kin.point_names()), default=1.0) or 1.0
 
 
 def apply_loads(scene: Scene, loads: Loads, kin: Any) -> AppliedLoads:
@@ -690,7 +465,7 @@ def apply_loads(scene: Scene, loads: Loads, kin: Any) -> AppliedLoads:
             # where Φ vanishes (or is dust beside M_Φ: an offset a billion times the mechanism)
             # the couple stays a couple
             mag = np.abs(phi)
-            ok = np.abs(m_phi) < 1e9 * _extent(kin) * mag
+            ok = np.abs(m_phi) < 1e9 * mechanism_extent(kin) * mag
             safe = np.where(ok, mag, 1.0)
             d = np.where(ok, -1j * (m_phi / safe) * unit_vector(phi), 0)
             local = z + d * np.conj(kin.motion[lid].rot)
@@ -700,11 +475,11 @@ def apply_loads(scene: Scene, loads: Loads, kin: Any) -> AppliedLoads:
                 moments.append(AppliedMoment(f"M_Phi{lid}", lid, rest, "inertia"))
         else:
             if m > 0:
-                forces.append(AppliedForce(f"Phi{lid}", lid, s_name, r, _same(n, z), phi, "inertia"))
+                forces.append(AppliedForce(f"Phi{lid}", lid, s_name, r, local_at(n, z), phi, "inertia"))
             if inert > 0:
                 moments.append(AppliedMoment(f"M_Phi{lid}", lid, m_phi, "inertia"))
     for gl in loads.gas:
-        forces.append(_gas_force(scene, kin, gl))
+        forces.append(gas_force(scene, kin, gl))
     for fl in loads.forces:
         z = scene.links[fl.link].points[fl.point]
         r, v, _ = kin.point_on(fl.link, z)
@@ -713,7 +488,7 @@ def apply_loads(scene: Scene, loads: Loads, kin: Any) -> AppliedLoads:
         else:
             assert fl.resisting is not None and v is not None
             # at rest up to round-off (an extreme position): no motion to resist, no force
-            still = DUST * abs(scene.driver.omega) * _extent(kin)
+            still = DUST * abs(scene.driver.omega) * mechanism_extent(kin)
             if fl.along is None:
                 speed = np.abs(v)
                 F = np.where(speed > still, -fl.resisting * unit_vector(v), 0)
@@ -733,9 +508,9 @@ def apply_loads(scene: Scene, loads: Loads, kin: Any) -> AppliedLoads:
         forces.append(AppliedForce(fl.name, fl.link, fl.point, r, np.full(n, z), F.astype(complex), "external"))
     for ml in loads.moments:
         if ml.table is not None:
-            M = np.interp(_cycle_phase(scene, kin, ml.period), ml.table[0], ml.table[1])
+            M = np.interp(cycle_phase(scene, kin, ml.period), ml.table[0], ml.table[1])
         elif ml.expression is not None:
-            M = ml.expression(np.radians(_cycle_phase(scene, kin, ml.period)))
+            M = ml.expression(np.radians(cycle_phase(scene, kin, ml.period)))
         elif ml.value is not None:
             M = np.full(n, ml.value)
         else:
@@ -748,79 +523,3 @@ def apply_loads(scene: Scene, loads: Loads, kin: Any) -> AppliedLoads:
             M = mask(scene, kin, ml.stroke, M)
         moments.append(AppliedMoment(ml.name, ml.link, M, "external"))
     return AppliedLoads(tuple(forces), tuple(moments))
-
-
-def _same(n: int, z: complex) -> C:
-    """A point's local coordinates at each of n positions (np.full without its Python wrapper)."""
-    out = np.empty(n, complex)
-    out.fill(z)
-    return out
-
-
-def _gas_force(scene: Scene, kin: Any, gl: GasLoad) -> AppliedForce:
-    joint = next(j for j in scene.joints if j.name == gl.joint)
-    assert joint.guide is not None
-    z = scene.links[gl.link].points[joint.point]
-    r, v, a = kin.point_on(gl.link, z)
-    u: Any
-    if joint.guide.link == scene.frame:  # the same direction at every position
-        u = joint.guide.direction
-    else:
-        u = kin.motion[joint.guide.link].rot * joint.guide.direction
-    e_down = toward_pivot(scene, r, u)
-    # stroke: the sign of the piston's velocity toward the pivot; at a dead centre (v = 0)
-    # the acceleration says which stroke begins
-    ce = np.conj(e_down)
-    vd = (v * ce).real
-    ad = (a * ce).real if a is not None else np.zeros_like(vd)
-    # zero up to round-off against the mechanism's own speed (ω × its reach), not against the
-    # positions asked for: a dead centre solved alone gives the same stroke as in the whole turn
-    moving = np.abs(vd) > DUST * abs(scene.driver.omega) * _extent(kin)
-    down = np.where(moving, vd > 0, ad >= 0)
-    p: Any
-    if gl.phi_table is not None:
-        p = np.interp(_cycle_phase(scene, kin, gl.period), gl.phi_table[0], gl.phi_table[1])
-    elif gl.fires is not None:
-        p = _four_stroke(scene, kin, gl, down)
-    elif gl.pressure is not None:
-        p = gl.pressure  # the same at every position
-    else:
-        # travel from the outer dead centre (the extreme position away from the pivot)
-        s = np.clip(piston_travel(scene, kin, gl.joint, gl.link) - gl.outer, 0.0, gl.stroke)
-        p = np.zeros(kin.n)
-        for side, mask in (("down", down), ("up", ~down)):
-            if side in gl.diagram:
-                ts, ps = gl.diagram[side]
-                p = np.where(mask, np.interp(s, ts, ps), p)
-    if gl.fires is not None or gl.phi_table is not None:
-        active = np.ones(kin.n, dtype=bool)  # the diagram says the pressure on every stroke
-    elif "down" in gl.strokes:
-        active = np.ones(kin.n, dtype=bool) if "up" in gl.strokes else down
-    else:
-        active = ~down if "up" in gl.strokes else np.zeros(kin.n, dtype=bool)
-    direction = e_down if gl.toward_pivot else -e_down
-    F = np.where(active, p * gl.area, 0.0) * direction
-    return AppliedForce(gl.name, gl.link, joint.point, r, _same(kin.n, z), F, "gas")
-
-
-
-def stroke_index(scene: Scene, kin: Any, gl: GasLoad, down: Any) -> Any:
-    """Which of the four strokes each position is in (0 intake, 1 compression, 2 expansion,
-    3 exhaust): the revolution after the ignition's outer dead centre is expansion (toward
-    the crank) then exhaust, the next intake then compression."""
-    assert gl.ignition is not None, "a four-stroke load's ignition is found when the loads are read"
-    psi = np.mod(np.asarray(kin.phi_deg, float) - gl.ignition, 720.0)
-    # a dead centre met to round-off is the one the angle names: 360 begins the intake, 720 the expansion
-    psi = np.where(np.abs(psi - 360.0) < 1e-7, 360.0, np.where(psi > 720.0 - 1e-7, 0.0, psi))
-    first = psi < 360.0
-    return np.where(first, np.where(down, 2, 3), np.where(down, 0, 1))
-
-
-def _four_stroke(scene: Scene, kin: Any, gl: GasLoad, down: Any) -> R:
-    s = np.clip(piston_travel(scene, kin, gl.joint, gl.link) - gl.outer, 0.0, gl.stroke)
-    k = stroke_index(scene, kin, gl, down)
-    p = np.zeros(kin.n)
-    for j, name in enumerate(FOUR_STROKES):
-        ts, ps = gl.diagram[name]
-        p = np.where(k == j, np.interp(s, ts, ps), p)
-    return p

@@ -35,13 +35,13 @@ Plane vectors are complex numbers, ``cross(a, b) = Im(conj(a)·b)``.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator, Mapping
-from dataclasses import field, replace
 from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
 
 from plans.errors import Locked
+from plans.forces.drawn_polygon import ForcePolygon, Poly, closing_point  # noqa: F401  (importable from here)
 from plans.forces.loads import (
     AppliedForce,
     AppliedLoads,
@@ -50,164 +50,17 @@ from plans.forces.loads import (
     apply_loads,
     parse_loads,
 )
-from plans.forces.shared import RULER_MM, mu_force, safe_div, unit_vector
+from plans.forces.reactions import CrankForces, ForceAnalysis, GroupForces, Reaction  # noqa: F401  (importable from here)
+from plans.forces.shared import mu_force, safe_div, unit_vector
 from plans.kinematics.exact import Kinematics
-from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Written
 from plans.kinematics.structure import Group, TriadGroup
-from plans.lines import along, cross, meet
-from plans.phrases import Phrase, phrase
-from plans.records import frozen
+from plans.lines import cross
+from plans.phrases import phrase
 from plans.scene.model import Joint, Scene
 from plans.tolerances import LOCK_SIN
-from plans.units import clean
 
 C = NDArray[np.complex128]
 R = NDArray[np.float64]
-
-# --------------------------------------------------------------------------- results
-
-
-@frozen
-class Reaction:
-    """The reaction of one joint: force on link ``on`` from link ``frm``, over positions.
-
-    R joint: F at the pin ``r``.  P joint: F ⟂ ``guide`` at the slider's pin ``r`` plus the
-    couple ``M``; the resultant acts on the guide at ``offset`` = M/N from ``r``."""
-
-    joint: Joint
-    on: int
-    frm: int
-    r: C
-    F: C
-    M: R
-    guide: C | None = None  # unit direction of the guide (P joints)
-    tau: R | None = None  # F^τ along e_tau (outer revolute of a dyad)
-    n: R | None = None  # F^n along e_n
-    e_tau: C | None = None
-    e_n: C | None = None
-
-    @property
-    def point(self) -> str:
-        return self.joint.point
-
-    def name(self, fij: str) -> str:
-        """F_ij in the scene's convention: on_i_from_j → F{on}{frm}, of_i_on_j → F{frm}{on}."""
-        return f"F{self.on}{self.frm}" if fij == "on_i_from_j" else f"F{self.frm}{self.on}"
-
-    def reversed(self) -> Reaction:
-        """The same joint's reaction on the other link (F_ji = −F_ij): F, the couple, F^τ and F^n
-        change sign, e_τ and e_n stay (so F_12^τ = −F_21^τ along the same e_τ)."""
-        return replace(self, on=self.frm, frm=self.on, F=-self.F, M=-self.M,
-                       tau=None if self.tau is None else -self.tau, n=None if self.n is None else -self.n)
-
-    @property
-    def N(self) -> R:
-        """Signed normal force ⟂ guide (along i·guide), P joints."""
-        assert self.guide is not None
-        return cross(self.guide, self.F)
-
-    @property
-    def offset(self) -> R:
-        """x along the guide from the pin to the resultant (m); 0 where N = 0 (pure couple)."""
-        if self.guide is None:
-            return np.zeros(len(self.M))
-        return safe_div(self.M, self.N)
-
-
-@frozen
-class GroupForces:
-    """One Assur group in equilibrium: its known loads and its three reactions over positions."""
-
-    group: Group
-    loads_i: tuple[AppliedForce, ...]  # known forces on i (reactions from farther groups included)
-    loads_j: tuple[AppliedForce, ...]
-    moments_i: tuple[AppliedMoment, ...]
-    moments_j: tuple[AppliedMoment, ...]
-    reactions: tuple[Reaction, Reaction, Reaction]  # J1 (on i from p), J2 (on i from j), J3 (on j from q)
-    #: lever arms h (m) of the moment equations: (equation, label) -> |arm| over positions
-    arms: Mapping[tuple[str, str], R] = field(default_factory=dict)
-
-
-@frozen
-class CrankForces:
-    """The driving link in equilibrium: its loads, the balancing load and the frame's reaction."""
-
-    link: int
-    loads: tuple[AppliedForce, ...]  # everything on the crank except the balancing load and the frame
-    moments: tuple[AppliedMoment, ...]
-    kind: str  # "force" | "moment"
-    point: str
-    r_point: C
-    e_bal: C  # unit ⟂ crank, counter-clockwise
-    F_bal: R  # along e_bal (force mode), N; 0 in moment mode
-    M_bal: R  # balancing moment about the pivot, N·m ccw+ (F_bal·l in force mode)
-    frame: Reaction  # on the crank from the frame
-    arms: Mapping[str, R] = field(default_factory=dict)
-
-
-@frozen
-class ForceAnalysis:
-    """The kinetostatics of a scene: every group and the crank, over the positions."""
-
-    scene: Scene
-    kin: Kinematics
-    loads: Loads
-    applied: AppliedLoads
-    groups: tuple[GroupForces, ...]  # in solving order: farthest first
-    crank: CrankForces
-    #: the successive approximation with friction (plans.forces.friction.FrictionResult), or None
-    friction: Any = None
-    #: what every position's table and polygons read again, worked out once (read-only arrays)
-    memo: dict[str, Any] = field(default_factory=dict, init=False, repr=False, compare=False)
-
-    @property
-    def n(self) -> int:
-        return self.kin.n
-
-    def _once(self, key: str, make: Callable[[], Any]) -> Any:
-        got = self.memo.get(key)
-        if got is None:
-            got = self.memo[key] = make()
-            if isinstance(got, np.ndarray):
-                got.flags.writeable = False
-        return got
-
-    @property
-    def largest_reaction(self) -> float:
-        """The largest reaction over the positions (N): what sets the scale of a polygon
-        whose forces all vanish."""
-        return self._once("largest", lambda: max((float(np.max(np.abs(rc.F))) for rc in self.reactions()),
-                                                 default=0.0))
-
-    def reactions(self) -> list[Reaction]:
-        """Every joint's reaction once, crank–frame first, then groups in attachment order."""
-        out = [self.crank.frame]
-        for gf in reversed(self.groups):
-            out.extend(gf.reactions)
-        return out
-
-    def reaction(self, name: str) -> tuple[C, Reaction]:
-        """A reaction by its F_ij name in the scene's convention, either order (F_ij = −F_ji):
-        the force and the reaction so named (the other order :meth:`Reaction.reversed`)."""
-        for rc in self.reactions():
-            if rc.name(self.scene.fij) == name:
-                return rc.F, rc
-            rev = rc.name("of_i_on_j" if self.scene.fij == "on_i_from_j" else "on_i_from_j")
-            if rev == name:
-                return -rc.F, rc.reversed()
-        raise KeyError(name)
-
-    @property
-    def sense(self) -> R:
-        """+1 where the balancing point moves counter-clockwise about the pivot."""
-        return self._once("sense", lambda: np.where(self.kin.omega(self.scene.driver.link) < 0, -1.0, 1.0))
-
-    @property
-    def balancing(self) -> R:
-        """The balancing load, positive along the motion of its point (N, or N·m for a moment)."""
-        c = self.crank
-        return self._once("balancing", lambda: self.sense * (c.F_bal if c.kind == "force" else c.M_bal))
-
 
 # --------------------------------------------------------------------------- analysis
 
@@ -503,141 +356,6 @@ def _crank(scene: Scene, kin: Kinematics, loads: Loads, forces, moments) -> Cran
                        F_bal, M_bal, frame, _ArmsWhenRead(arms))
 
 
-# --------------------------------------------------------------------------- force polygons (drawing)
-
-
-@frozen
-class ForcePolygon:
-    """The closed force polygon of one group (or of the crank) at one position.
-
-    ``plan`` holds the vertices (plan mm, start "o"), the vectors head to tail in
-    drawing order (kind "force" for known ones, "closing" for the ones found), the two
-    construction lines whose intersection closes it, and the protocol."""
-
-    group: str  # "2-3", or "1" for the initial link
-    kind: str  # "RRR", ..., or "crank"
-    plan: Plan
-
-    @property
-    def scale(self) -> float:
-        return self.plan.scale
-
-    def reading(self, label: str) -> float:
-        """What a draftsman reads: the vector's length to the ruler's precision, over μF (N)."""
-        return round(self.plan.segment(label).length_mm / RULER_MM) * RULER_MM / self.plan.scale
-
-
-def closing_point(e: complex, d_end: complex, s: complex, d_start: complex, reach: float) -> complex | None:
-    """Where the construction line through ``e`` along ``d_end`` meets the one through ``s``
-    along ``d_start``, each drawn ``reach`` (in units of its direction) either side of its
-    point; None where the drawn lines do not cross in one point (parallel, or so nearly
-    that they would meet beyond them): then the polygon's two closing reactions lie on
-    one line."""
-    if cross(d_end, d_start) == 0:
-        return None
-    t_e, t_s = along(e, d_end, s, d_start)
-    if not (abs(t_e) <= reach and abs(t_s) <= reach):
-        return None
-    return complex(meet(e, d_end, s, d_start))
-
-
-class _Poly:
-    """Head-to-tail construction at one position, in plan mm."""
-
-    def __init__(self, mu: float) -> None:
-        self.mu = mu
-        self.pts: dict[str, complex] = {"o": 0j}
-        self.order = ["o"]
-        self.cur = "o"
-        self.segs: list[Segment] = []
-        self.lines: list[ConstructionLine] = []
-        self.steps: list[tuple[str, tuple[str, ...], str, Phrase]] = []  # written when read (Written)
-        self.ends: dict[str, tuple[str, str]] = {}
-        self.notes: list[str] = []
-
-    def _new(self, z: complex) -> str:
-        k = len(self.order)
-        name = "abcdefghijklmnqrstuvwxyz"[k - 1] if k <= 24 else f"v{k}"
-        self.pts[name] = z
-        self.order.append(name)
-        return name
-
-    def _seg(self, a: str, b: str, kind: str, label: str) -> None:
-        length = abs(self.pts[b] - self.pts[a])
-        self.segs.append(Segment(a, b, kind, label, length, length / self.mu))
-        self.ends[label] = (a, b)
-
-    def lay(self, label: str, F: complex) -> None:
-        if F == 0:
-            return
-        start = self.cur
-        end = self._new(self.pts[start] + F * self.mu)
-        self._seg(start, end, "force", label)
-        shown = clean(abs(F), 100.0 / self.mu)  # against the polygon's size (its longest ≈ 100 mm)
-        self.steps.append(("lay off", (start,), end, phrase(
-            "f_lay", start=start, end=end, label=label, F=shown, mm=abs(F) * self.mu)))
-        self.cur = end
-
-    def intersect(self, label_end: str, d_end: complex, label_start: str, d_start: complex,
-                  start: str = "o") -> str:
-        """Close with two known directions: through the current end along d_end, through
-        ``start`` along d_start; the two construction lines intersected."""
-        e, s = self.pts[self.cur], self.pts[start]
-        reach = 10.0 * (max(abs(z) for z in self.pts.values()) + 100.0)
-        hit = closing_point(e, d_end, s, d_start, reach)
-        if hit is not None:
-            x = hit
-        else:  # coincident lines: the exact analysis already refused locked groups, so the
-            x = s  # closing vectors vanish here (the known ones sum to zero along the line)
-            self.notes.append(f"{label_end} and {label_start} lie on one line")
-        self.lines.append(ConstructionLine((e.real, e.imag), (d_end.real, d_end.imag), f"line of {label_end}"))
-        self.lines.append(ConstructionLine((s.real, s.imag), (d_start.real, d_start.imag),
-                                           f"line of {label_start}"))
-        end = self.cur
-        xn = self._new(x)
-        self._seg(end, xn, "closing", label_end)
-        self._seg(xn, start, "closing", label_start)
-        self.steps.append(("intersect", (end, start), xn, phrase(
-            "f_meet", end=end, start=start, le=label_end, ls=label_start, xn=xn)))
-        self.cur = xn
-        return xn
-
-    def close(self, label: str, to: str = "o") -> None:
-        a = self.cur
-        if abs(self.pts[a] - self.pts[to]) == 0:
-            self.notes.append(f"{label} = 0")
-        self._seg(a, to, "closing", label)
-        self.steps.append(("closing", (a, to), label, phrase("f_close", label=label, a=a, to=to)))
-        self.cur = to
-
-    def join(self, label: str, a: str, b: str, why: str | Phrase) -> None:
-        self._seg(a, b, "closing", label)
-        words = why if isinstance(why, Phrase) else phrase("f_sum", x=why)
-        self.steps.append(("closing", (a, b), label, phrase("f_join", label=label, a=a, b=b, why=words)))
-
-    def total(self, friction: str, normal: str, x: str) -> None:
-        """A slide's total reaction N + F_f where its friction was laid just before N."""
-        if friction in self.ends and self.ends[friction][1] == self.ends[normal][0]:
-            self.join(f"{normal}Σ", self.ends[friction][0], x, f"{normal} + {friction}")
-
-    def end_of(self, labels: list[str], default: str) -> str:
-        for lab in reversed(labels):
-            if lab in self.ends:
-                return self.ends[lab][1]
-        return default
-
-    def plan(self, phi: float) -> Plan:
-        pts = []
-        seen: dict[tuple[float, float], str] = {}
-        for nm in self.order:
-            z = self.pts[nm]
-            key = (round(z.real, 9), round(z.imag, 9))
-            pts.append(PlanPoint(nm, (z.real, z.imag), seen.get(key)))
-            seen.setdefault(key, nm)
-        return Plan("force", phi, self.mu, "o", tuple(pts), tuple(self.segs), tuple(self.lines),
-                    Written(self.steps), tuple(self.notes))
-
-
 def force_polygons(fa: ForceAnalysis, k: int) -> tuple[ForcePolygon, ...]:
     """The force polygons of position k: groups farthest first, then the crank."""
     scene = fa.scene
@@ -648,7 +366,7 @@ def force_polygons(fa: ForceAnalysis, k: int) -> tuple[ForcePolygon, ...]:
         if isinstance(g, TriadGroup):  # class III: by Assur's special point
             from plans.forces.triad_polygon import triad_polygon
 
-            out.append(triad_polygon(fa, gf, k, _Poly, ForcePolygon))
+            out.append(triad_polygon(fa, gf, k, Poly, ForcePolygon))
             continue
         i, j = g.links
         r1, r2, r3 = gf.reactions
@@ -660,7 +378,7 @@ def force_polygons(fa: ForceAnalysis, k: int) -> tuple[ForcePolygon, ...]:
         slide_f = f"Ff{n3[1:]}" if r3.guide is not None else ""
         lj = [x for x in lj if x[0] != slide_f] + [x for x in lj if x[0] == slide_f]
         everything = [v for _, v in li + lj] + [complex(rc.F[k]) for rc in gf.reactions]
-        poly = _Poly(mu_force(fa, everything))
+        poly = Poly(mu_force(fa, everything))
         if g.kind in ("RRR", "RRP"):
             assert r1.tau is not None and r1.e_tau is not None and r1.e_n is not None
             tau1 = f"{n1}^τ"
@@ -721,7 +439,7 @@ def force_polygons(fa: ForceAnalysis, k: int) -> tuple[ForcePolygon, ...]:
     c = fa.crank
     loads = [(f.label, complex(f.F[k])) for f in c.loads]
     bal = complex(c.F_bal[k] * c.e_bal[k])
-    poly = _Poly(mu_force(fa, [v for _, v in loads] + [bal, complex(c.frame.F[k])]))
+    poly = Poly(mu_force(fa, [v for _, v in loads] + [bal, complex(c.frame.F[k])]))
     for lab, v in loads:
         poly.lay(lab, v)
     if c.kind == "force":
