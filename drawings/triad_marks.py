@@ -9,7 +9,7 @@ import numpy as np
 
 from plans.kinematics.triad_plans import PAIRS, assur_point, axes_of
 
-from .backend import THICK, Recording, Style, Transform
+from .backend import Recording, Style, Transform
 from .common import Placer, dot, ident
 
 AXIS = Style(width=0.18, stroke="#333", dash=(6.0, 1.0, 1.0, 1.0), cls="axis")
@@ -57,22 +57,11 @@ def scheme_points(rec: Recording, placer: Placer, T: Transform, scene: Any, kin:
 
 def special_point(rec: Recording, placer: Placer, T: Transform, gf: Any, k: int, pts: dict[str, complex],
                   pid: str, size: float, kin: Any = None) -> None:
-    """S on the group cut free (the force analysis' moment point), and the slot of the base
-    a block leash slides in (from the slot's origin past the pin)."""
+    """S on the group cut free (the force analysis' moment point); the slot of the base a block
+    leash slides in is drawn with every moving guide's slot (:func:`drawings.free_body.draw_slot`)."""
     outer = gf.reactions[:3]
     inner = gf.reactions[3:]
     Q = [complex(rc.r[k]) for rc in outer]
     P = [complex(rc.r[k]) for rc in inner]
-    base = gf.group.links[0]
-    for x, (_, d) in enumerate(gf.group.joints):
-        if d.kind != "P" or kin is None:
-            continue
-        origin = complex(kin.point_on(base, d.guide.origin)[0][k])
-        u = complex(inner[x].guide[k])
-        s_pin = ((P[x] - origin) * u.conjugate()).real
-        lo, hi = min(0.0, s_pin) - 8 / T.scale, max(0.0, s_pin) + 8 / T.scale
-        a, b = T.z(origin + lo * u), T.z(origin + hi * u)
-        rec.line(a, b, THICK, f"{pid}-slot-{ident(d.point)}")
-        placer.add_line([a, b])
     i, j, _ = gf.leashes(k)
     _mark(rec, placer, T, complex(gf.S[k]), Q, P, (i, j), pid, size)
