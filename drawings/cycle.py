@@ -332,13 +332,14 @@ def _rms(lang: str) -> str:
 
 
 def table_panels(tables: Sequence[CycleTable], lang: str, prefix: str,
-                 titles: Sequence[str] | None = None) -> list[Panel]:
-    """Cycle tables as panels: positions as columns, split in halves when they are many."""
+                 titles: Sequence[str] | None = None, columns: int = 12) -> list[Panel]:
+    """Cycle tables as panels: positions as columns, split in parts of ``columns`` when they
+    are many."""
     out: list[Panel] = []
     for i, t in enumerate(tables):
         title = titles[i] if titles else t.title
         n = len(t.phi_deg)
-        chunks = [range(0, n)] if n <= 14 else [range(a, min(n, a + 12)) for a in range(0, n, 12)]
+        chunks = [range(0, n)] if n <= columns + 2 else [range(a, min(n, a + columns)) for a in range(0, n, columns)]
         for j, ks in enumerate(chunks):
             head = [tr("position", lang)] + [str(k + 1) for k in ks]
             rows = [[tr("phi", lang)] + [number(t.phi_deg[k], lang, 6) for k in ks]]
@@ -410,21 +411,24 @@ def analogue_plans(plans: Sequence, lang: str, style: str) -> list[Panel]:
     return [plan_panel(p, lang, style, pid=f"analogue-{k + 1}") for k, p in enumerate(plans)]
 
 
-def dynamics_panels(d: Dynamics, tables: Sequence[CycleTable], lang: str, analogues: Sequence = ()) -> list[Panel]:
+def dynamics_panels(d: Dynamics, tables: Sequence[CycleTable], lang: str, analogues: Sequence = (),
+                    columns: int = 12) -> list[Panel]:
     titles = [f"{tr('analogues', lang)}, μ = {fmt(d.scales.analogue, 4, lang)} mm/m (ω_1 = 1)",
               tr("Ipr", lang), f"{tr('Mpr', lang)}; {tr('sign', lang)}", tr("energy", lang)]
     plans = analogue_plans(analogues, lang, d.scene.scale_style)  # none where the first sheet has the plans
     return ([_m_panel(d, lang), _a_panel(d, lang), _t_panel(d, lang), _i_panel(d, lang), _w_panel(d, lang),
              _omega_panel(d, lang), _fly_table(d, lang)] + indicator_panels(d, lang)
-            + table_panels(tables, lang, "dyn", titles) + plans)
+            + table_panels(tables, lang, "dyn", titles, columns) + plans)
 
 
 # --------------------------------------------------------------------------- the hook
 
 
-def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_text: str | None = None) -> list[Sheet]:
+def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_text: str | None = None,
+           diagrams: bool = True) -> list[Sheet]:
     """The drawing's sheets and, when the scene asks, the diagrams and dynamics sheets after them,
-    numbered on from the last (a Scene is solved first, by plans.solve)."""
+    numbered on from the last (a Scene is solved first, by plans.solve); ``diagrams=False``:
+    the kinematic diagrams are already on the drawing's sheets (the course's kinematics sheet)."""
     if not isinstance(sol, Solution):
         from plans.solution import solve
 
@@ -435,9 +439,9 @@ def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_te
     lang = spec.language
     cr = sol.cycle
     extra: list[Sheet] = []
-    if cr is not None and cr.diagrams is not None:
+    if cr is not None and cr.diagrams is not None and diagrams:
         sub = dataclasses.replace(spec, subtitle=tr("diagrams", lang), pins=())
-        extra += compose(diagram_panels(cr.diagrams, lang), sub, scale_text, scene.path)
+        extra += compose(fitting_diagrams(sol, cr.diagrams, spec), sub, scale_text, scene.path)
     if cr is not None and cr.dynamics is not None:
         sub = dataclasses.replace(spec, subtitle=tr("dynamics", lang), pins=())
         tabs = cr.tables[-4:]  # the dynamics' own: analogues, I_pr, M_pr, work and energy
@@ -451,6 +455,22 @@ def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_te
     return out
 
 
+def fitting_diagrams(sol: Solution, dg: Diagrams, spec: SheetSpec) -> list[Panel]:
+    """The kinematic diagrams as they fit the sheet: on a small one at a shorter φ axis (the
+    scales μφ, μs... written on them the engine's at that length), not refused."""
+    from .sheet import _fits_empty
+
+    panels = diagram_panels(dg, spec.language)
+    length = dg.spec.length_mm
+    while not all(_fits_empty(p, spec.format, spec.orientation) for p in panels) and length > 60.0:
+        length = max(60.0, math.floor(length * 0.8 / 10.0) * 10.0)
+        smaller = sol.diagrams_drawn(length)
+        if smaller is None:
+            break
+        panels = diagram_panels(smaller, spec.language)
+    return panels
+
+
 def _fitting_dynamics(sol: Solution, d: Dynamics, tabs: Sequence[CycleTable], spec: SheetSpec,
                       analogues: Sequence = ()) -> list[Panel]:
     """The dynamics sheet's panels as they fit the sheet: on a small one the φ axis of the
@@ -461,12 +481,18 @@ def _fitting_dynamics(sol: Solution, d: Dynamics, tabs: Sequence[CycleTable], sp
     panels = dynamics_panels(d, tabs, spec.language, analogues)
     axis = 240.0
     height = 1.0
-    while not all(_fits_empty(p, spec.format, spec.orientation) for p in panels) and axis > 60.0:
-        axis = max(60.0, math.floor(axis * 0.8 / 10.0) * 10.0)
-        height = max(0.4, height * 0.85)
-        d = sol.dynamics_drawn(axis, height)
-        panels = dynamics_panels(d, tabs, spec.language, analogues)
-    return panels
+    columns = 12
+    while True:
+        big = [p for p in panels if not _fits_empty(p, spec.format, spec.orientation)]
+        if big and columns > 3 and any(p.pid.startswith("dyn-table") for p in big):
+            columns //= 2  # a table over the positions in more, narrower parts
+        elif big and axis > 60.0:
+            axis = max(60.0, math.floor(axis * 0.8 / 10.0) * 10.0)
+            height = max(0.4, height * 0.85)
+            d = sol.dynamics_drawn(axis, height)
+        else:
+            return panels
+        panels = dynamics_panels(d, tabs, spec.language, analogues, columns)
 
 
 def diagrams_sheet_seconds(path: str | Path, repeat: int = 5) -> float:
