@@ -425,10 +425,11 @@ def dynamics_panels(d: Dynamics, tables: Sequence[CycleTable], lang: str, analog
 
 
 def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_text: str | None = None,
-           diagrams: bool = True) -> list[Sheet]:
+           diagrams: bool = True, lay=None) -> list[Sheet]:
     """The drawing's sheets and, when the scene asks, the diagrams and dynamics sheets after them,
     numbered on from the last (a Scene is solved first, by plans.solve); ``diagrams=False``:
-    the kinematic diagrams are already on the drawing's sheets (the course's kinematics sheet)."""
+    the kinematic diagrams are already on the drawing's sheets (the course's kinematics sheet);
+    ``lay(panels, spec)``: how the dynamics' panels are laid out (default: :func:`compose`)."""
     if not isinstance(sol, Solution):
         from plans.solution import solve
 
@@ -446,7 +447,19 @@ def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_te
         sub = dataclasses.replace(spec, subtitle=tr("dynamics", lang), pins=())
         tabs = cr.tables[-4:]  # the dynamics' own: analogues, I_pr, M_pr, work and energy
         analogues = () if scene.wants("velocity_plan") else sol.analogue_plans()  # else on the first sheet
-        extra += compose(_fitting_dynamics(sol, cr.dynamics, tabs, sub, analogues), sub, scale_text, scene.path)
+        panels = _fitting_dynamics(sol, cr.dynamics, tabs, sub, analogues)
+        if lay is None:
+            extra += compose(panels, sub, scale_text, scene.path)
+        else:  # a last sheet left nearly empty: the diagrams on a shorter φ axis, if all then fit fewer
+            laid = lay(panels, sub)
+            axis = 240.0
+            while len(laid) > 1 and min(map(_used, laid)) < 1 / 3 and axis > 160.0:
+                axis -= 20.0
+                fewer = lay(_fitting_dynamics(sol, sol.dynamics_drawn(axis, 1.0), tabs, sub, analogues, axis), sub)
+                if len(fewer) < len(laid):
+                    laid = fewer
+                    break
+            extra += laid
     out = list(sheets) + extra
     for i, sh in enumerate(out):
         sh.number, sh.count = i + 1, len(out)
@@ -471,15 +484,22 @@ def fitting_diagrams(sol: Solution, dg: Diagrams, spec: SheetSpec) -> list[Panel
     return panels
 
 
+def _used(sheet: Sheet) -> float:
+    """The part of a sheet's field (inside the frame) its panels cover (they do not overlap)."""
+    from .sheet import usable
+
+    a = usable(sheet.width, sheet.height)
+    return sum(p.width * p.height for p, _, _ in sheet.placed) / ((a[2] - a[0]) * (a[3] - a[1]))
+
+
 def _fitting_dynamics(sol: Solution, d: Dynamics, tabs: Sequence[CycleTable], spec: SheetSpec,
-                      analogues: Sequence = ()) -> list[Panel]:
+                      analogues: Sequence = (), axis: float = 240.0) -> list[Panel]:
     """The dynamics sheet's panels as they fit the sheet: on a small one the φ axis of the
-    diagrams is shortened (240 mm on A1 and A2) and their heights lowered until every
-    diagram fits, not refused."""
+    diagrams is shortened (240 mm on A1 and A2, or ``axis``, the one ``d`` is drawn at) and
+    their heights lowered until every diagram fits, not refused."""
     from .sheet import _fits_empty
 
     panels = dynamics_panels(d, tabs, spec.language, analogues)
-    axis = 240.0
     height = 1.0
     columns = 12
     while True:

@@ -685,7 +685,7 @@ def table_panel(rows: Sequence, lang: str, scale_style: str, phi: float, pid: st
     rec.end()
     title = f"{tr(title_key, lang)}, φ = {angle(phi, lang)}°"
     if part is not None and part[2] > 1:
-        title += " (продолжение)" if lang == "ru" else " (continued)"
+        title += " " + tr("continued", lang)
     return finish(pid, "table", phi, rec, title)
 
 

@@ -24,6 +24,7 @@ from plans.errors import InputError
 from plans.solution import Solution
 
 from .blocks import pack_block
+from .i18n import tr
 from .packing import free_spots
 from .panels import STANDARD_RATIOS, Panel
 from .sheet import GAP, MARGIN, TB_H, TB_W, Sheet, SheetSpec, _check_fits, compose, usable
@@ -150,10 +151,21 @@ def _flat(panels: Sequence[Panel], spec: SheetSpec, path: str = "<scene>") -> li
     return out
 
 
-def course_sheets(sol: Solution, spec: SheetSpec, build: Any, diagrams: Sequence[Panel] = ()) -> list[Sheet]:
+def flat_sheets(panels: Sequence[Panel], spec: SheetSpec, path: str = "<scene>") -> list[Sheet]:
+    """Panels in order on as few sheets as hold them (:func:`_flat`), each sheet's Scale cell
+    its main image's."""
+    W, H = spec.size
+    return [Sheet(spec, i + 1, 0, W, H, placed, None) for i, placed in enumerate(_flat(panels, spec, path))]
+
+
+def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
+                  diagrams: Sequence[Panel] = (), larger: Sequence[Any] = ()) -> list[Sheet]:
     """The kinematics sheet(s), then the kinetostatics sheet(s).  ``build(sel, mu_positions,
-    mu_l)`` makes the panels of a selection (:func:`drawings.linkage.build_panels`);
-    ``diagrams`` (the kinematic diagrams) go on the kinematics sheet after the plans."""
+    mu_l)`` makes the panels of a selection (:func:`drawings.linkage.build_panels`),
+    ``positions(mu, bold)`` the plan of positions at μl = ``mu``; ``diagrams`` (the kinematic
+    diagrams) go on the kinematics sheet after the plans.  ``larger``: thunks giving the
+    (build, positions) of the scene solved with longer plans, tried in turn for the kinematics
+    sheet: the first that keeps as few sheets is drawn."""
     from .sheet import _fits_empty
 
     sel = selection(sol, spec, "course")
@@ -169,12 +181,21 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, diagrams: Sequence
                    centres=[k for k in sel["centres"] if k in forces], table=[k for k in sel["table"] if k in forces],
                    positions=False, legend=False, bold=[])
 
-    def kinematic(mu: float | None) -> list[Panel]:
-        panels, _ = build(kin_sel, mu, None)  # the plans of one kind together, in position order
-        panels = sorted(panels, key=lambda p: ORDER.index(p.kind) if p.kind in ORDER else len(ORDER))
-        legend = [p for p in panels if p.kind == "legend"]
-        rest = [p for p in panels if p.kind != "legend"]
-        return rest + list(diagrams) + legend
+    def kinematics(build: Any, positions: Any) -> Any:
+        first: list[Panel] = []
+
+        def kinematic(mu: float | None) -> list[Panel]:
+            """The kinematics sheet's panels, the plan of positions at ``mu`` (the others drawn once)."""
+            if first:
+                return [positions(mu, kin_sel["bold"]) if p.kind == "positions" else p for p in first]
+            panels, _ = build(kin_sel, mu, None)  # the plans of one kind together, in position order
+            panels = sorted(panels, key=lambda p: ORDER.index(p.kind) if p.kind in ORDER else len(ORDER))
+            legend = [p for p in panels if p.kind == "legend"]
+            rest = [p for p in panels if p.kind != "legend"]
+            first.extend(rest + list(diagrams) + legend)
+            return first
+
+        return kinematic
 
     def grow(make, start: float | None, lay, own: bool) -> tuple[list[Panel], list]:
         """The panels at the largest standard scale from ``start`` up that keeps as few sheets."""
@@ -197,28 +218,47 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, diagrams: Sequence
 
     own = bool(scene.scales.get("length"))
     base_pos = _base_positions_scale(sol, spec) if sel["positions"] else None
-    _, kin_sheets = grow(kinematic, base_pos, lambda ps: _flat(ps, spec, scene.path), own)
+    def lay_flat(ps: list[Panel]) -> list:
+        return _flat(ps, spec, scene.path)
+
+    _, kin_sheets = grow(kinematics(build, positions), base_pos, lay_flat, own)
+    for thunk in larger:
+        _, bigger = grow(kinematics(*thunk()), base_pos, lay_flat, own)
+        kin_sheets = _fuller(kin_sheets, bigger)
     out: list[Sheet] = []
     W, H = spec.size
+    named = dataclasses.replace(spec, subtitle=spec.subtitle or tr("kinematics_sheet", spec.language))
     for placed in kin_sheets:
-        out.append(Sheet(spec, 0, 0, W, H, placed, None))
+        out.append(Sheet(named, 0, 0, W, H, placed, None))
     if forces and (scene.wants("force_polygons") or scene.wants("lever")):
         nums = {float(sol.kinematics.phi_deg[k]): n for k, n in enumerate(numbers(sol))}
-        sub = dataclasses.replace(spec, pins=())
+        sub = dataclasses.replace(spec, pins=(), subtitle=spec.subtitle or tr("kinetostatics_sheet", spec.language))
 
-        def kinetic(mu: float | None) -> list[Panel]:
-            return build(dyn_sel, None, mu)[0]
+        def kinetic(build: Any) -> Any:
+            return lambda mu: build(dyn_sel, None, mu)[0]
 
         def lay(ps: list[Panel]) -> list:
             return compose(ps, sub, None, scene.path, nums) if ps else []
 
-        _, dyn_sheets = grow(kinetic, _base_length_scale(sol, spec), lay, own)
+        base_l = _base_length_scale(sol, spec)
+        _, dyn_sheets = grow(kinetic(build), base_l, lay, own)
         out.extend(dyn_sheets)
     for i, sh in enumerate(out):
         sh.number, sh.count = i + 1, len(out)
         sh.prims = []
         sh.render()
     return out
+
+
+def _fuller(a: list, b: list) -> list:
+    """Of two layouts of the same panels, the one on fewer sheets, else the one drawn larger
+    (more of the paper under panels; the first on a tie)."""
+    def drawn(sheets: list) -> float:
+        return sum(p.width * p.height for sh in sheets for p, _, _ in (sh.placed if isinstance(sh, Sheet) else sh))
+
+    if len(a) != len(b):
+        return a if len(a) < len(b) else b
+    return b if drawn(b) > drawn(a) * (1 + 1e-9) else a
 
 
 def _base_positions_scale(sol: Solution, spec: SheetSpec) -> float:

@@ -334,3 +334,11 @@ def add_option(parser: Any) -> None:
     """``--language ru|en`` on a command."""
     parser.add_argument("--language", choices=("ru", "en"),
                         help="language of the output (default: the file's [sheet] language, else English)")
+
+
+# ---- sheet sets: the course's two sheets, tables split over parts (drawings.sheet_sets)
+SHEET_WORDS.update({
+    "continued": ("(продолжение)", "(continued)"),
+    "kinematics_sheet": ("Кинематический анализ", "Kinematic analysis"),
+    "kinetostatics_sheet": ("Силовой анализ", "Force analysis"),
+})
