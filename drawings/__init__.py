@@ -20,12 +20,12 @@ from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
     from .export import atomic_write, pdf_bytes, png_bytes, save
-    from .linkage import Drawing, build_panels, draw
+    from .linkage import Drawing, build_panels
     from .panels import Panel, plan_panel
     from .sheet import Sheet, SheetSpec, compose, sheet_spec
 
 #: Loaded on first use (PEP 562): ``plans --help`` does not pay for svgwrite and numpy.
-_LAZY = {"Drawing": "linkage", "build_panels": "linkage", "draw": "linkage", "atomic_write": "export",
+_LAZY = {"Drawing": "linkage", "build_panels": "linkage", "atomic_write": "export",
          "pdf_bytes": "export", "png_bytes": "export", "save": "export", "Panel": "panels",
          "plan_panel": "panels", "Sheet": "sheet", "SheetSpec": "sheet", "compose": "sheet",
          "sheet_spec": "sheet"}
@@ -37,6 +37,27 @@ def __getattr__(name: str) -> Any:
         globals()[name] = value
         return value
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def draw(source: Any, *, format: str | None = None, orientation: str | None = None,
+         language: str | None = None) -> Any:
+    """The sheets of what ``plans.solve`` solved (a linkage's Solution, an engine's, gears', a
+    cam's or a synthesis task's solution), of a record of any kind, or of the path of a file
+    of the family (dispatched on its ``kind``): the drawing of that kind's sheets module."""
+    from plans.kinds import KINDS
+
+    kind = "linkage"
+    if isinstance(source, str) or hasattr(source, "__fspath__"):
+        from plans.kinds import read_kind
+
+        kind = read_kind(source)[0]
+    else:
+        from plans.solution import ROOMS
+
+        room = type(source).__module__.rpartition(".")[0]
+        kind = next((k for k, (_, entry) in ROOMS.items() if entry.rpartition(".")[0] == room), kind)
+    module = importlib.import_module(KINDS[kind][1])
+    return module.draw(source, format=format, orientation=orientation, language=language)
 
 
 class PlanView:

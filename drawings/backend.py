@@ -42,6 +42,11 @@ class Transform:
         return -world_angle
 
 
+#: A construction drawn at 1:1 in the panel's millimetres (y up, as the textbook draws it) put
+#: on the paper (y down): the panels' one y-flip, ``PAPER(x, y)`` or ``PAPER.z(z)``.
+PAPER = Transform(1.0)
+
+
 @dataclass(frozen=True, slots=True)
 class Style:
     stroke: str | None = "#000"
@@ -56,6 +61,8 @@ MAIN = Style(width=0.5)
 THIN = Style(width=0.25)
 HAIR = Style(width=0.18, stroke="#555")
 FILLED = Style(stroke=None, width=0.0, fill="#000")
+#: A centre line (axis of a shaft, of symmetry): thin dash-dot.
+CENTRE_LINE = Style(width=0.18, stroke="#333", dash=(6.0, 1.0, 1.0, 1.0), cls="axis")
 
 
 class Backend(Protocol):

@@ -14,11 +14,14 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from plans.balancing.analysis import KINDS, Balance, Polygon, Resultant, balance
-from plans.balancing.engine import Engine, load_engine
+from plans.balancing.analysis import KINDS, Balance, Polygon, Resultant
+from plans.balancing.engine import Engine
+from plans.balancing.exact import ExactCheck
+from plans.balancing.solution import EngineSolution, solve_engine
 
-from .backend import HAIR, MAIN, Pt, Recording, Style
-from .common import Placer, arrow, dot, fmt
+from .backend import CENTRE_LINE, HAIR, MAIN, Recording, Style
+from .balancing_paper import engine_paper, polygon_scale
+from .common import Placer, arrow, degrees360, dot, fmt
 from .fonts import metrics
 from .i18n import lookup
 from .panels import LABEL_SIZE, SMALL_SIZE, VECTOR_STYLES, Panel, finish
@@ -74,24 +77,11 @@ _ABS = {("force", "rotating"): "R_r", ("force", "first_order"): "R_I", ("force",
         ("moment", "rotating"): "M_r", ("moment", "first_order"): "M_I", ("moment", "second_order"): "M_{II}"}
 CLOSING = VECTOR_STYLES["closing"]
 ACTUAL = Style(width=0.35, stroke="#b3261e", dash=(2.5, 1.2))
-AXIS = Style(width=0.18, stroke="#333", dash=(6.0, 1.0, 1.0, 1.0), cls="axis")
-POLY_MM = 130.0  # the largest polygon extent on the sheet, mm
+AXIS = CENTRE_LINE
 STAR_R = 50.0  # radius of a phase diagram, mm
 
 
-def _deg(a: float) -> float:
-    """Radians as degrees in [0, 360), round-off at 360 shown as 0."""
-    d = round(math.degrees(a) % 360.0, 6)
-    return 0.0 if d >= 360.0 else d
-
-
 _t = lookup(_W)
-
-
-def _P(z: complex, s: float, o: Pt = (0.0, 0.0)) -> Pt:
-    """Engine plane -> paper: the real part is up, the imaginary part along the rotation
-    (counter-clockwise on the sheet, as the seed draws it)."""
-    return (o[0] - s * z.imag, o[1] - s * z.real)
 
 
 @dataclass(frozen=True)
@@ -108,20 +98,22 @@ class BalancingDrawing:
         return self.sheets[0].svg()
 
 
-def draw(path: str | Path | Engine, *, format: str | None = None, orientation: str | None = None,
-         language: str | None = None) -> BalancingDrawing:
-    """The sheets of an engine file."""
-    engine = path if isinstance(path, Engine) else load_engine(path)
+def draw(source: EngineSolution | Engine | str | Path, *, format: str | None = None,
+         orientation: str | None = None, language: str | None = None) -> BalancingDrawing:
+    """The sheets of a solved engine (``plans.solve``), or of an engine or its file, solved here."""
+    es = source if isinstance(source, EngineSolution) else solve_engine(source)
+    engine = es.engine
     spec = sheet_spec(engine.raw, engine.path, engine.title, format=format, orientation=orientation,
                       language=language)
     metrics()
-    b = balance(engine)
-    panels = build_panels(b, spec.language)
+    b = es.balance
+    panels = build_panels(es, spec.language)
     sheets = compose(panels, spec, "", engine.path)
     return BalancingDrawing(engine, b, spec, tuple(panels), tuple(sheets))
 
 
-def build_panels(b: Balance, lang: str) -> list[Panel]:
+def build_panels(es: EngineSolution, lang: str) -> list[Panel]:
+    b = es.balance
     e = b.engine
     panels = [shaft_panel(e, lang), phase_panel(e, 1, lang), phase_panel(e, 2, lang)]
     for _quantity, res in (("force", b.forces), ("moment", b.moments)):
@@ -131,7 +123,7 @@ def build_panels(b: Balance, lang: str) -> list[Panel]:
     from .balancing_banks import bank_panels
 
     panels += bank_panels(b, lang)
-    panels.append(results_panel(b, lang))
+    panels.append(results_panel(b, es.exact, lang))
     panels.append(counterweights_panel(b, lang))
     return panels
 
@@ -159,7 +151,7 @@ def shaft_panel(e: Engine, lang: str) -> Panel:
         dot(rec, (xc, y), 0.8)
     names: dict[float, list[str]] = {}  # cylinders in one plane (a V engine) share a label
     for c, xc in zip(e.cylinders, x, strict=True):
-        names.setdefault(round(xc, 6), []).append(f"{c.name}: {fmt(_deg(c.crank), 4, lang)}°")
+        names.setdefault(round(xc, 6), []).append(f"{c.name}: {fmt(degrees360(c.crank), 4, lang)}°")
     for xc, texts in names.items():
         lab = layout(", ".join(texts), xc, -s_r * e.r - 4.0, SMALL_SIZE + 0.5, "middle", "bottom")
         rec.text(lab, "label", f"shaft-label-{xc:g}")
@@ -192,7 +184,7 @@ def phase_panel(e: Engine, order: int, lang: str) -> Panel:
     placer.add_line([(0.0, R + 6), (0.0, -R - 6)])
     if not e.is_inline:
         for g in sorted({round(c.bank, 12) for c in e.cylinders}):
-            a, b = _P(cmath.exp(1j * g), R + 8), _P(-cmath.exp(1j * g), 8.0)
+            a, b = engine_paper(cmath.exp(1j * g), R + 8), engine_paper(-cmath.exp(1j * g), 8.0)
             rec.line(b, a, Style(width=0.25, stroke="#6a3d9a", dash=(4, 1.5)), f"{pid}-bank-{math.degrees(g):g}")
             placer.add_line([b, a])
             who = ", ".join(c.name for c in e.cylinders if abs(c.bank - g) < 1e-9)
@@ -206,7 +198,7 @@ def phase_panel(e: Engine, order: int, lang: str) -> Panel:
         tips.setdefault(key, []).append(c.name)
     for key, names in sorted(tips.items()):
         ang = math.radians(key / 1e6)
-        tip = _P(cmath.exp(1j * ang), R)
+        tip = engine_paper(cmath.exp(1j * ang), R)
         rec.line((0.0, 0.0), tip, Style(width=0.5), f"{pid}-crank-{names[0]}")
         placer.add_line([(0.0, 0.0), tip])
         dot(rec, tip, 0.7)
@@ -228,18 +220,6 @@ def phase_panel(e: Engine, order: int, lang: str) -> Panel:
 # --------------------------------------------------------------------------- polygons
 
 
-def _nice_mm(extent: float) -> float:
-    """mm per dimensionless unit: a round value that draws ``extent`` units within POLY_MM."""
-    if extent <= 0:
-        return 20.0
-    raw = POLY_MM / extent
-    e10 = 10.0 ** math.floor(math.log10(raw))
-    for m in (10.0, 8.0, 5.0, 4.0, 2.5, 2.0, 1.0):
-        if m * e10 <= raw:
-            return m * e10
-    return e10
-
-
 def _path(poly: Polygon) -> list[complex]:
     pts = [0j]
     for r in poly.rows:
@@ -255,22 +235,22 @@ def polygon_panel(R: Resultant, lang: str) -> Panel:
     placer = Placer()
     paths = [_path(p) for p in R.polygons]
     extent = max(max(abs(a - b) for a in pts for b in pts) for pts in paths)
-    s = _nice_mm(extent)
+    s = polygon_scale(extent)
     x_off = 0.0
     sym = _SYM[(R.quantity, R.kind)]
     for poly, pts in zip(R.polygons, paths, strict=True):
-        xs = [_P(z, s)[0] for z in pts]
+        xs = [engine_paper(z, s)[0] for z in pts]
         o = (x_off - min(xs), 0.0)
         tag = f"{pid}-{poly.branch}" if poly.branch else pid
         dot(rec, o, 0.6, f"{tag}-pole")
         for r, a, b in zip(poly.rows, pts[:-1], pts[1:], strict=True):
-            pa, pb = _P(a, s, o), _P(b, s, o)
+            pa, pb = engine_paper(a, s, o), engine_paper(b, s, o)
             if abs(b - a) * s < 0.05:
                 continue
             arrow(rec, pa, pb, VECTOR_STYLES["force"], f"{tag}-v{r.cylinder}", "vector force")
             placer.add_line([pa, pb])
         for r, a, b in zip(poly.rows, pts[:-1], pts[1:], strict=True):
-            pa, pb = _P(a, s, o), _P(b, s, o)
+            pa, pb = engine_paper(a, s, o), engine_paper(b, s, o)
             if abs(b - a) * s < 0.05:
                 continue
             mid = ((pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2)
@@ -278,7 +258,7 @@ def polygon_panel(R: Resultant, lang: str) -> Panel:
             nx, ny = -(pb[1] - pa[1]) / L, (pb[0] - pa[0]) / L
             lab = placer.place(str(r.cylinder), mid, SMALL_SIZE + 0.5, prefer=(nx, ny), gap=0.8)
             rec.text(lab, "label", f"{tag}-v{r.cylinder}-label")
-        end = _P(pts[-1], s, o)
+        end = engine_paper(pts[-1], s, o)
         sub = "" if not poly.branch else ("^+" if poly.branch == "forward" else "^−")
         if poly.closed:
             text = f"{sym}{sub} = 0"
@@ -286,18 +266,18 @@ def polygon_panel(R: Resultant, lang: str) -> Panel:
             z = poly.closing
             arrow(rec, o, end, CLOSING, f"{tag}-closing", "vector closing")
             placer.add_line([o, end])
-            text = f"{sym}{sub} = {fmt(abs(z), 4, lang)}, {fmt(_deg(math.atan2(z.imag, z.real)), 4, lang)}°"
+            text = f"{sym}{sub} = {fmt(abs(z), 4, lang)}, {fmt(degrees360(math.atan2(z.imag, z.real)), 4, lang)}°"
         lab = placer.place(text, ((o[0] + end[0]) / 2, (o[1] + end[1]) / 2), SMALL_SIZE + 0.6, gap=1.5)
         rec.text(lab, "closing-label", f"{tag}-closing-label", fill=CLOSING.stroke or "#000")
         if R.quantity == "moment" and not poly.closed:
             # the seed's last step: the turned closing vector turned back 90° clockwise is the moment
-            act = _P(pts[-1] * -1j, s, o)
+            act = engine_paper(pts[-1] * -1j, s, o)
             arrow(rec, o, act, ACTUAL, f"{tag}-actual", "vector actual")
             placer.add_line([o, act])
             lab = placer.place(f"{sym}{sub} ({_t('actual', lang)})", act, SMALL_SIZE + 0.3, gap=1.0)
             rec.text(lab, "note", f"{tag}-actual-label", fill=ACTUAL.stroke or "#000")
         if poly.branch:
-            lab = layout(_t(poly.branch, lang), o[0], -s * 0 + 6.0 + max(_P(z, s, o)[1] for z in pts),
+            lab = layout(_t(poly.branch, lang), o[0], -s * 0 + 6.0 + max(engine_paper(z, s, o)[1] for z in pts),
                          SMALL_SIZE, "start", "top")
             rec.text(lab, "note", f"{tag}-branch")
         x0, _, x1, _ = rec.bbox()
@@ -313,7 +293,7 @@ def polygon_panel(R: Resultant, lang: str) -> Panel:
     unit = "N*m" if R.quantity == "moment" else "N"
     amp = f"{_ABS[(R.quantity, R.kind)]} = {fmt(R.amplitude, 5, lang)} {_t(unit, lang)}"
     if R.amplitude > 0:
-        amp += f", φ = {fmt(_deg(R.phase), 4, lang)}°"
+        amp += f", φ = {fmt(degrees360(R.phase), 4, lang)}°"
     scale = f"μ = {fmt(s, 4, lang)} {'мм/ед.' if lang == 'ru' else 'mm/unit'}; " \
             f"{'ед.' if lang == 'ru' else 'unit'} = {fmt(R.polygons[0].unit, 5, lang)} {_t(unit, lang)}"
     return finish(pid, "polygon", None, rec, _t(f"{R.quantity}-{R.kind}", lang), scale, amp)
@@ -382,7 +362,7 @@ def table_recording(R: Resultant, poly: Polygon, lang: str) -> Recording:
     rows = []
     for r in poly.rows:
         c, s = math.cos(r.angle), math.sin(r.angle)
-        cells = [str(r.cylinder), fmt(_deg(r.angle), 4, lang), fmt(c, 3, lang), fmt(s, 3, lang),
+        cells = [str(r.cylinder), fmt(degrees360(r.angle), 4, lang), fmt(c, 3, lang), fmt(s, 3, lang),
                  fmt(r.p, 3, lang)]
         if moment:
             cells.append(fmt(r.l, 3, lang))
@@ -396,7 +376,7 @@ def table_recording(R: Resultant, poly: Polygon, lang: str) -> Recording:
     return grid_recording(f"table-{R.quantity}-{R.kind}{tag}", head, rows, caption=caption)
 
 
-def results_panel(b: Balance, lang: str) -> Panel:
+def results_panel(b: Balance, chk: ExactCheck | None, lang: str) -> Panel:
     head = [_t("quantity", lang), _t("dimless", lang), _t("amplitude", lang), _t("unit", lang), _t("phase", lang)]
     rows = []
     for quantity, res in (("force", b.forces), ("moment", b.moments)):
@@ -404,13 +384,9 @@ def results_panel(b: Balance, lang: str) -> Panel:
             R = res[kind]
             unit = "N*m" if quantity == "moment" else "N"
             rows.append([_ABS[(quantity, kind)], fmt(R.dimensionless, 4, lang), fmt(R.amplitude, 5, lang),
-                         _t(unit, lang), fmt(_deg(R.phase), 4, lang) if R.amplitude > 0 else "—"])
+                         _t(unit, lang), fmt(degrees360(R.phase), 4, lang) if R.amplitude > 0 else "—"])
     note = None
-    e = b.engine
-    if e.lam > 0:
-        from plans.balancing.exact import exact_check
-
-        chk = exact_check(e)
+    if chk is not None:
         note = (f"{_t('exact', lang)}: max |R| = {fmt(chk.max_exact, 5, lang)} {_t('N', lang)}, "
                 f"{_t('err', lang)} {fmt(chk.max_error, 3, lang)} {_t('N', lang)}; "
                 f"max |M| = {fmt(chk.max_moment, 5, lang)} {_t('N*m', lang)}, "
@@ -422,7 +398,7 @@ def counterweights_panel(b: Balance, lang: str) -> Panel:
     head = [_t("for", lang), _t("plane", lang), _t("mr", lang), _t("mass", lang), _t("radius", lang),
             _t("angle", lang)]
     rows = [[_t(c.of, lang), fmt(c.plane_z, 4, lang), fmt(c.mass_radius, 4, lang), fmt(c.mass, 4, lang),
-             fmt(c.radius, 4, lang), fmt(_deg(c.angle), 4, lang)] for c in b.counterweights]
+             fmt(c.radius, 4, lang), fmt(degrees360(c.angle), 4, lang)] for c in b.counterweights]
     if not rows:
         return grid_panel("counterweights", _t("cw", lang), head, [[_t("none", lang), "—", "—", "—", "—", "—"]],
                           _cw_note(b, lang))
@@ -436,7 +412,7 @@ def counterweights_panel(b: Balance, lang: str) -> Panel:
     rec.text(placer.place("1", (0.0, -Rr), LABEL_SIZE, prefer=(0.0, -1.0), gap=0.8), "label", "cw-crank1-label")
     big = max(c.mass_radius for c in b.counterweights)
     for k, c in enumerate(b.counterweights):
-        tip = _P(cmath.exp(1j * c.angle) * (Rr * c.mass_radius / big), 1.0)
+        tip = engine_paper(cmath.exp(1j * c.angle) * (Rr * c.mass_radius / big), 1.0)
         style = CLOSING if c.of == "rotating" else Style(width=0.5, stroke="#1f4e9c")
         arrow(rec, (0.0, 0.0), tip, style, f"cw-{k}", "vector counterweight")
         placer.add_line([(0.0, 0.0), tip])

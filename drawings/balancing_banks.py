@@ -14,9 +14,9 @@ import numpy as np
 from plans.balancing.analysis import Balance
 from plans.balancing.banks import Bank, BankPolygon, Locus
 
-from .backend import HAIR, Recording, Style
-from .balancing import _P, AXIS, CLOSING, _deg, _nice_mm, _t
-from .common import Placer, arrow, dot, fmt
+from .backend import CENTRE_LINE, HAIR, Recording, Style
+from .balancing_paper import engine_paper, polygon_scale
+from .common import Placer, arrow, degrees360, dot, fmt
 from .i18n import lookup
 from .panels import SMALL_SIZE, VECTOR_STYLES, Panel, finish
 from .text import layout
@@ -32,6 +32,8 @@ _W: dict[str, tuple[str, str]] = {
     "ellipse": ("эллипс", "ellipse"),
     "with": ("вращается с кривошипом", "turns with the crank"),
     "against": ("вращается против кривошипа", "turns against the crank"),
+    "N": ("Н", "N"),
+    "N*m": ("Н·м", "N·m"),
 }
 BANK_AXIS = Style(width=0.25, stroke="#6a3d9a", dash=(4, 1.5))
 LOCUS = Style(width=0.35, stroke="#1f4e9c")
@@ -77,49 +79,49 @@ def _panel(quantity: str, kind: str, polys: list[tuple[Bank, BankPolygon]], L: L
     placer = Placer()
     paths = [_path(p) for _, p in polys]
     extent = max(max(abs(a - c) for a in pts for c in pts) for pts in paths)
-    s = _nice_mm(extent) / 2.0  # the bank polygons are drawn at half the polygon panels' size
+    s = polygon_scale(extent) / 2.0  # the bank polygons are drawn at half the polygon panels' size
     sym = ("r" if quantity == "force" else "m") + f"_{ROMAN[k]}"
-    unit = _t("N*m" if quantity == "moment" else "N", lang)
+    unit = _w("N*m" if quantity == "moment" else "N", lang)
     x_off = 0.0
     for (bank, poly), pts in zip(polys, paths, strict=True):
         tag = f"{pid}-{bank.number}"
-        xs = [_P(z, s)[0] for z in pts]
+        xs = [engine_paper(z, s)[0] for z in pts]
         o = (x_off - min(xs), 0.0)
         # the bank's axis: the phase diagram's reference (up), cranks measured from it
-        top = min([_P(z, s, o)[1] for z in pts] + [o[1] - 10.0])
+        top = min([engine_paper(z, s, o)[1] for z in pts] + [o[1] - 10.0])
         rec.line((o[0], o[1] + 6.0), (o[0], top - 6.0), BANK_AXIS, f"{tag}-axis")
         placer.add_line([(o[0], o[1] + 6.0), (o[0], top - 6.0)])
         dot(rec, o, 0.6, f"{tag}-pole")
         for (cyl, _, _, _), a, c in zip(poly.rows, pts[:-1], pts[1:], strict=True):
-            pa, pc = _P(a, s, o), _P(c, s, o)
+            pa, pc = engine_paper(a, s, o), engine_paper(c, s, o)
             if abs(c - a) * s < 0.05:
                 continue
             arrow(rec, pa, pc, VECTOR_STYLES["force"], f"{tag}-v{cyl}", "vector force")
             placer.add_line([pa, pc])
         for (cyl, _, _, _), a, c in zip(poly.rows, pts[:-1], pts[1:], strict=True):
-            pa, pc = _P(a, s, o), _P(c, s, o)
+            pa, pc = engine_paper(a, s, o), engine_paper(c, s, o)
             if abs(c - a) * s < 0.05:
                 continue
             d = math.dist(pa, pc)
             lab = placer.place(str(cyl), ((pa[0] + pc[0]) / 2, (pa[1] + pc[1]) / 2), SMALL_SIZE + 0.5,
                                prefer=(-(pc[1] - pa[1]) / d, (pc[0] - pa[0]) / d), gap=0.8)
             rec.text(lab, "label", f"{tag}-v{cyl}-label")
-        end = _P(pts[-1], s, o)
+        end = engine_paper(pts[-1], s, o)
         if poly.closed:
             text = f"{sym}^{{({bank.number})}} = 0"
         else:
-            arrow(rec, o, end, CLOSING, f"{tag}-closing", "vector closing")
+            arrow(rec, o, end, VECTOR_STYLES["closing"], f"{tag}-closing", "vector closing")
             placer.add_line([o, end])
-            text = f"{sym}^{{({bank.number})}} = {fmt(abs(poly.closing), 4, lang)}, {fmt(_deg(poly.phase), 4, lang)}°"
+            text = f"{sym}^{{({bank.number})}} = {fmt(abs(poly.closing), 4, lang)}, {fmt(degrees360(poly.phase), 4, lang)}°"
         d = max(math.dist(o, end), 1e-9)
         # the side opposite the cylinder numbers (a one-cylinder bank's closing vector is its vector)
         away = ((end[1] - o[1]) / d, -(end[0] - o[0]) / d)
         lab = placer.place(text, ((o[0] + end[0]) / 2, (o[1] + end[1]) / 2), SMALL_SIZE + 0.5, prefer=away,
                            gap=1.5)
-        rec.text(lab, "closing-label", f"{tag}-closing-label", fill=CLOSING.stroke or "#000")
+        rec.text(lab, "closing-label", f"{tag}-closing-label", fill=VECTOR_STYLES["closing"].stroke or "#000")
         names = ", ".join(c.name for c in bank.cylinders)
-        bottom = max([_P(z, s, o)[1] for z in pts] + [o[1] + 6.0]) + 3.0  # below the axis line too
-        head = layout(f"{_w('bank', lang, n=bank.number, g=fmt(_deg(bank.axis), 4, lang))} ({names})",
+        bottom = max([engine_paper(z, s, o)[1] for z in pts] + [o[1] + 6.0]) + 3.0  # below the axis line too
+        head = layout(f"{_w('bank', lang, n=bank.number, g=fmt(degrees360(bank.axis), 4, lang))} ({names})",
                       o[0], bottom, SMALL_SIZE, "start", "top")
         rec.text(head, "note", f"{tag}-name")
         amp = layout(f"{sym.upper()}^{{({bank.number})}} = {fmt(poly.amplitude, 5, lang)} {unit}", o[0],
@@ -139,23 +141,23 @@ def _locus(rec: Recording, pid: str, L: Locus, banks: tuple[Bank, ...], xc: floa
     o = (xc, 0.0)
     R = LOCUS_MM
     for bank in banks:
-        a, c = _P(bank.direction, R + 6.0, o), _P(-bank.direction, R + 6.0, o)
+        a, c = engine_paper(bank.direction, R + 6.0, o), engine_paper(-bank.direction, R + 6.0, o)
         rec.line(c, a, BANK_AXIS, f"{pid}-sum-axis-{bank.number}")
         rec.text(layout(str(bank.number), a[0], a[1] - 0.8, SMALL_SIZE, "middle", "bottom"), "label",
                  f"{pid}-sum-axis-{bank.number}-label", fill=BANK_AXIS.stroke or "#000")
-    rec.line((o[0], o[1] + R + 6.0), (o[0], o[1] - R - 6.0), AXIS, f"{pid}-sum-vertical")
+    rec.line((o[0], o[1] + R + 6.0), (o[0], o[1] - R - 6.0), CENTRE_LINE, f"{pid}-sum-vertical")
     text = f"{sym.upper()}: {_w(L.shape, lang)}"
     if L.shape != "zero":
         s = R / L.maximum
         alpha = np.linspace(0.0, 2 * np.pi / L.order, 181)
-        pts = [_P(complex(z), s, o) for z in L.at(alpha)]
+        pts = [engine_paper(complex(z), s, o) for z in L.at(alpha)]
         if L.shape == "circle":
             rec.circle(o, L.maximum * s, LOCUS, f"{pid}-sum-locus")
         else:
             rec.polyline(pts, LOCUS, f"{pid}-sum-locus")
-        tip = _P(cmath.exp(1j * L.direction) * L.maximum, s, o)
-        arrow(rec, o, tip, CLOSING, f"{pid}-sum-max", "vector closing")
-        text += (f", max = {fmt(L.maximum, 5, lang)} {unit} ({fmt(_deg(L.direction), 4, lang)}°), "
+        tip = engine_paper(cmath.exp(1j * L.direction) * L.maximum, s, o)
+        arrow(rec, o, tip, VECTOR_STYLES["closing"], f"{pid}-sum-max", "vector closing")
+        text += (f", max = {fmt(L.maximum, 5, lang)} {unit} ({fmt(degrees360(L.direction), 4, lang)}°), "
                  f"min = {fmt(L.minimum, 5, lang)} {unit}")
         if L.sense in ("with", "against"):
             text += f"; {_w(L.sense, lang)}"

@@ -3,8 +3,8 @@
     python -m drawings.bench samples/v_engine.toml            # stages, as a table
     python -m drawings.bench --json samples/v_engine.toml samples/v_engine_cycle.toml
 
-With ``--json`` (what ``plans bench`` runs in a fresh interpreter, the engine never
-importing the renderer): each sheet of the first scene written as SVG, PDF and PNG at
+With ``--json`` (what ``plans bench`` reads, through :func:`figures` registered by the
+renderer: the engine never imports it): each sheet of the first scene written as SVG, PDF and PNG at
 150 dpi and as DXF from its composed sheet (median of ``--repeat``), the sheets' build (engine,
 panels, layout) per sheet, and, for a second scene, its cycle diagrams sheet to SVG.
 """
@@ -20,6 +20,7 @@ import time
 from collections.abc import Callable
 from typing import Any
 
+import drawings
 from plans.scene.model import load_scene
 from plans.solution import solve
 
@@ -72,9 +73,9 @@ def sheet_seconds(path: str, repeat: int = 3) -> dict[str, Any]:
     """Each sheet of ``path`` as SVG (serialised from the composed sheet), PDF and PNG at
     :data:`PNG_DPI` (each from the SVG bytes, parsing included): medians of ``repeat``, per
     sheet; the build of all the sheets (scene read, engine, panels, layout) once, median."""
-    draw(path)  # warm up: fonts, imports
-    build = _median(lambda: draw(path), repeat)
-    sheets = draw(path).sheets
+    drawings.draw(path)  # warm up: fonts, imports
+    build = _median(lambda: drawings.draw(path), repeat)
+    sheets = drawings.draw(path).sheets
     out: dict[str, Any] = {"scene": str(path), "sheets": len(sheets),
                            "format": sheets[0].spec.format if sheets else "",
                            "build_s": build, "svg_s": [], "pdf_s": [], "png_s": [], "svg_bytes": [],

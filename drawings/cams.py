@@ -11,12 +11,12 @@ from typing import Any
 
 import numpy as np
 
-from plans.cams.analysis import Profile, grid, profile
-from plans.cams.base_radius import BaseRadius, allowed_region, division_points, min_base_radius
-from plans.cams.graphical import Integration, integral_scale, integrate_cam
-from plans.cams.model import Cam, load_cam
+from plans.cams.analysis import Profile
+from plans.cams.graphical import Integration, integral_scale
+from plans.cams.model import Cam
+from plans.cams.solution import CamSolution, solve_cam
 
-from .backend import HAIR, MAIN, THICK, THIN, Pt, Recording, Style
+from .backend import CENTRE_LINE, HAIR, MAIN, THICK, THIN, Pt, Recording, Style, Transform
 from .common import arrow, dot, fmt
 from .i18n import lookup
 from .panels import STANDARD_RATIOS, Panel, finish, ratio_text
@@ -24,7 +24,7 @@ from .sheet import GAP, TB_H, Sheet, SheetSpec, compose, sheet_spec, usable
 from .text import layout
 
 EXACT = Style(width=0.25, stroke="#1f5fbf", dash=(2.0, 1.0))
-AXIS = Style(width=0.18, stroke="#333", dash=(6.0, 1.0, 1.0, 1.0), cls="axis")
+AXIS = CENTRE_LINE
 REGION = Style(stroke=None, width=0.0, fill="#cfe3cf")
 WARN = Style(width=0.7, stroke="#c00000")
 SMALL = 2.5
@@ -105,15 +105,13 @@ def _text(rec: Recording, s: str, x: float, y: float, size: float = SMALL, ancho
     rec.text(layout(s, x, y, size, anchor, valign), "label", eid)
 
 
-def motion_panel(cam: Cam, lang: str, g: float = 1.0) -> Panel:
+def motion_panel(cs: CamSolution, lang: str, g: float = 1.0) -> Panel:
     """s, ds/dφ and d²s/dφ² against φ: a(φ) exact, integrated twice by mid-ordinates and a
     pole (the chains, thick), the exact curves beside them (dashed)."""
+    cam = cs.cam
     f, unit = _lift(cam)
-    ig: Integration = integrate_cam(cam)
-    fine = grid(cam, 0.5)
-    from plans.cams.analysis import motion
-
-    mo = motion(cam, np.append(fine, 2 * np.pi))
+    ig: Integration = cs.integration
+    mo = cs.motion
     length = PHI_LENGTH * g
     x_of = length / (2 * math.pi)  # k_φ, mm per rad
     a_max = float(np.max(np.abs(mo.s2))) * f or 1.0
@@ -130,7 +128,7 @@ def motion_panel(cam: Cam, lang: str, g: float = 1.0) -> Panel:
     rows = [("s", k_s, mo.s * f, ig.s_nodes * f, None, 0.0),
             ("ds/dφ", k_v, mo.s1 * f, ig.v_nodes * f, None, y_v),
             ("d²s/dφ²", k_a, mo.s2 * f, None, ig.a_mid * f, y_a)]
-    X = np.append(fine, 2 * np.pi) * x_of
+    X = cs.turn * x_of
     nodes_x = ig.nodes * x_of
     for name, k, exact, chain, mid, y0 in rows:
         tag = {"s": "s", "ds/dφ": "ds", "d²s/dφ²": "d2s"}[name]  # ids: plain ASCII
@@ -177,22 +175,20 @@ def motion_panel(cam: Cam, lang: str, g: float = 1.0) -> Panel:
         xb = ph.start * x_of
         rec.line((xb, -2), (xb, y_a + 34 * g + 2), Style(width=0.13, stroke="#888", dash=(1.0, 1.0)))
         _text(rec, f"{math.degrees(ph.angle):g}°", xb + ph.angle * x_of / 2, y_a + 34 * g + 5, SMALL, "middle")
-    err = float(np.max(np.abs(ig.s_nodes - motion(cam, ig.nodes % (2 * np.pi)).s))) * f
+    err = cs.integration_error * f
     mm = _unit("mm", lang)
     note = (f"μ_φ = {fmt(x_of * math.pi / 180, 4, lang)} {mm}/°; μ′ = μ·μ_φ/H; "
             f"|Δs| ≤ {fmt(err, 3, lang)} {_unit(unit, lang)}; " + ("штрих — точно" if lang == "ru" else "dashed: exact"))
     return finish("motion", "cam-motion", None, rec, _w("motion", lang), note=note)
 
 
-def diagram_panel(cam: Cam, br: BaseRadius, lang: str, g: float = 1.0) -> Panel:
+def diagram_panel(cs: CamSolution, lang: str, g: float = 1.0) -> Panel:
     """D = (−k·ds/dφ, s) from B0 at one length scale, the rays at [α] tangent to the curve,
     the allowed region below them, the centres: minimum at the file's offset, the best, the
     file's own."""
+    cam, br = cs.cam, cs.base_radius
     assert br.bounds is not None
-    phi = np.append(grid(cam, 0.5), 2 * np.pi)
-    from plans.cams.analysis import motion
-
-    mo = motion(cam, phi)
+    mo = cs.motion
     Xd, Yd = -cam.sense * mo.s1, mo.s
     s0 = math.sqrt(cam.base_radius**2 - cam.offset**2)
     O_file = (-cam.offset, -s0)
@@ -209,15 +205,14 @@ def diagram_panel(cam: Cam, br: BaseRadius, lang: str, g: float = 1.0) -> Panel:
     ymin = float(pts[:, 1].min()) - 0.15 * span
     # allowed region: clip the half-planes to the box
     assert br.bounds is not None
-    region = allowed_region(br.bounds, (xmin, ymin, xmax, float(np.max(Yd))))
+    region = cs.allowed_region((xmin, ymin, xmax, float(np.max(Yd))))
     if len(region) >= 3:
         rec.polygon([P(*q) for q in region], REGION, "allowed-region")
     rec.line(P(0, ymin), P(0, float(np.max(Yd)) * 1.1), AXIS, "follower-line")
     rec.line(P(xmin, 0), P(xmax, 0), THIN, "ds-axis")
     rec.polyline([P(float(x), float(y)) for x, y in zip(Xd, Yd, strict=True)], MAIN, "ds-s-curve")
-    for q in division_points(cam):
-        x, y = -cam.sense * motion(cam, np.array([q])).s1[0], motion(cam, np.array([q])).s[0]
-        dot(rec, P(float(x), float(y)), 0.4)
+    for x, y in cs.division_diagram:
+        dot(rec, P(x, y), 0.4)
     for i, (t, _c1, _c2) in enumerate(br.bounds.lines):
         for j, sgn in enumerate((1, -1)):
             D = br.bounds.tangent[2 * i + j]
@@ -241,15 +236,14 @@ def diagram_panel(cam: Cam, br: BaseRadius, lang: str, g: float = 1.0) -> Panel:
     return finish("ds-s", "cam-diagram", None, rec, _w("diagram", lang), note=note)
 
 
-def rocker_panel(cam: Cam, br: BaseRadius, lang: str, g: float = 1.0) -> Panel:
+def rocker_panel(cs: CamSolution, lang: str, g: float = 1.0) -> Panel:
     """The oscillating follower's diagram: pivot A, the arm positions A–B at the division
     points, D on each arm at (1 − r)·AB, the wedges' region of allowed centres, the circle of
     the file's pivot distance and the centres on it."""
-    from plans.cams.rocker import diagram, region
-
-    q = division_points(cam)
-    d = diagram(cam, q)
-    fine = diagram(cam, grid(cam, 0.5))
+    cam, br = cs.cam, cs.base_radius
+    q = cs.division
+    d = cs.rocker
+    fine = cs.rocker_fine
     centres = [(0.0, 0.0), br.best_centre] + ([br.centre] if br.centre is not None else [])
     pts = np.vstack([d.B, fine.D, [d.A, *centres]])
     x0, y0 = pts.min(axis=0)
@@ -262,7 +256,7 @@ def rocker_panel(cam: Cam, br: BaseRadius, lang: str, g: float = 1.0) -> Panel:
     def P(v) -> Pt:
         return (mu * float(v[0]), -mu * float(v[1]))
 
-    poly = region(cam, grid(cam, 0.5), box)
+    poly = cs.rocker_region(box)
     if len(poly) >= 3:
         rec.polygon([P(v) for v in poly], REGION, "allowed-region")
     # the arc of the file's pivot distance about A, where O may sit
@@ -288,13 +282,13 @@ def rocker_panel(cam: Cam, br: BaseRadius, lang: str, g: float = 1.0) -> Panel:
     return finish("rocker", "cam-diagram", None, rec, _w("rocker", lang), note=note)
 
 
-def profile_panel(cam: Cam, lang: str, target: float = 180.0) -> Panel:
+def profile_panel(cs: CamSolution, lang: str, target: float = 180.0) -> Panel:
     """Inversion: the follower's positions at the division points turned by −φ, the
     theoretical profile through the roller centres, the roller circles and their envelope."""
-    phi = np.append(grid(cam, 0.5), 2 * np.pi)
-    pr: Profile = profile(cam, phi)
-    q = division_points(cam)
-    pq = profile(cam, q)
+    cam = cs.cam
+    pr: Profile = cs.profile
+    q = cs.division
+    pq = cs.division_profile
     reach = float(np.max(np.hypot(*pr.theoretical.T))) + cam.roller + 0.15 * cam.base_radius
     if cam.follower == "oscillating":
         reach = max(reach, cam.pivot + 0.15 * cam.arm)
@@ -332,9 +326,10 @@ def profile_panel(cam: Cam, lang: str, target: float = 180.0) -> Panel:
 
 def _P(mu: float) -> Callable[[Any], Pt]:
     """World metres (y up) to the panel's paper mm at μ mm per m."""
+    T = Transform(mu)
 
     def P(v: Any) -> Pt:
-        return (mu * float(v[0]), -mu * float(v[1]))
+        return T(float(v[0]), float(v[1]))
 
     return P
 
@@ -400,15 +395,14 @@ def _phases_and_omega(rec: Recording, cam: Cam, pr: Profile, mu: float) -> None:
     _text(rec, "ω", p0[0] + 1.5, p0[1], LABEL)
 
 
-def results_panel(cam: Cam, br: BaseRadius, drawn: BaseRadius | None, lang: str) -> Panel:
-    from plans.cams.analysis import findings
-
+def results_panel(cs: CamSolution, lang: str) -> Panel:
+    cam, br, drawn = cs.cam, cs.base_radius, cs.drawn_base_radius
     ru = lang == "ru"
 
     def T(en: str, rus: str) -> str:
         return rus if ru else en
 
-    fi = findings(cam)
+    fi = cs.findings
     L = cam.scale
     u = _unit(cam.unit, lang)
 
@@ -455,7 +449,7 @@ def results_panel(cam: Cam, br: BaseRadius, drawn: BaseRadius | None, lang: str)
     return finish("results", "cam-results", None, rec, _w("results", lang))
 
 
-def build_panels(cam: Cam, spec: SheetSpec) -> list[Panel]:
+def build_panels(cs: CamSolution, spec: SheetSpec) -> list[Panel]:
     lang = spec.language
     W, H = spec.size
     g = min(W / 841.0, H / 594.0)
@@ -463,22 +457,23 @@ def build_panels(cam: Cam, spec: SheetSpec) -> list[Panel]:
     # its title block (about 2.3 × the reach with the follower's lines and labels)
     x0, y0, x1, y1 = usable(W, H)
     target = min(180.0 * g, (y1 - y0 - TB_H - GAP - 20.0) / 2.3)
-    br = min_base_radius(cam, True)
-    drawn = None if cam.flat else min_base_radius(cam, False)
-    panels = [profile_panel(cam, lang, target), motion_panel(cam, lang, g)]
-    if br.bounds is not None:
-        panels.append(diagram_panel(cam, br, lang, g))
+    cam = cs.cam
+    panels = [profile_panel(cs, lang, target), motion_panel(cs, lang, g)]
+    if cs.base_radius.bounds is not None:
+        panels.append(diagram_panel(cs, lang, g))
     elif cam.follower == "oscillating":
-        panels.append(rocker_panel(cam, br, lang, g))
-    panels.append(results_panel(cam, br, drawn, lang))
+        panels.append(rocker_panel(cs, lang, g))
+    panels.append(results_panel(cs, lang))
     return panels
 
 
-def draw(path: str | Path, *, format: str | None = None, orientation: str | None = None,
+def draw(source: CamSolution | Cam | str | Path, *, format: str | None = None, orientation: str | None = None,
          language: str | None = None) -> Drawing:
-    """The cam's sheets (a path to its TOML file)."""
-    cam = load_cam(path)
+    """The cam's sheets: of a solved cam (``plans.solve``), or of a cam or the path of its
+    file, solved here."""
+    cs = source if isinstance(source, CamSolution) else solve_cam(source)
+    cam = cs.cam
     spec = sheet_spec(cam.raw, cam.path, cam.title, format=format, orientation=orientation, language=language)
-    panels = build_panels(cam, spec)
+    panels = build_panels(cs, spec)
     sheets = compose(panels, spec, ratio_text(panels[0].scale or 1000.0), cam.path)
     return Drawing(cam, spec, tuple(panels), tuple(sheets))

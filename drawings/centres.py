@@ -8,7 +8,7 @@ import cmath
 import math
 from types import SimpleNamespace
 
-from plans.kinematics.centres import Centre, all_links, centres_at, velocities_at
+from plans.kinematics.centres import Centre, CentreVelocity, all_links
 
 from .backend import THIN, Recording, Style
 from .common import Placer, angle, arrow, fmt, ident, phi_tag
@@ -43,20 +43,21 @@ def _plain(c: Centre) -> str:
     return c.label
 
 
-def centres_panels(scene, kin, k: int, mu_l: float, lang: str, strokes: dict) -> list[Panel]:
-    """The centres on the scheme at position k, and the circle diagram."""
-    centres = centres_at(kin, k)
+def centres_panels(sol, k: int, mu_l: float, lang: str, strokes: dict) -> list[Panel]:
+    """The centres on the scheme at position k, and the circle diagram (``Solution.centres``)."""
+    scene, kin = sol.scene, sol.kinematics
+    centres, velocities = sol.centres(k)
     return [scheme_panel(scene, kin, k, mu_l, lang, strokes, overlay=_overlay(scene, kin, k, centres, lang)),
-            diagram_panel(kin, k, centres, lang), velocity_table(scene, kin, k, centres, mu_l, lang)]
+            diagram_panel(kin, k, centres, lang), velocity_table(scene, kin, k, velocities, mu_l, lang)]
 
 
-def velocity_table(scene, kin, k: int, centres: dict, mu_l: float, lang: str) -> Panel:
+def velocity_table(scene, kin, k: int, velocities: list[CentreVelocity], mu_l: float, lang: str) -> Panel:
     """v = ω_j·|P_jf Q| for every named point, the arm measured on the scheme at μl, next to
     the exact value (what the velocity plan reads too)."""
     phi = float(kin.phi_deg[k])
     ref = abs(scene.driver.omega) * kin.reach()
     rows = []
-    for cv in velocities_at(kin, k, centres):
+    for cv in velocities:
         if cv.v is None:
             continue
         if cv.centre is None:  # a translating link: every point moves as P_1j
@@ -86,7 +87,7 @@ def _overlay(scene, kin, k: int, centres: dict, lang: str):
         for c in centres.values():  # the lines first, the centres over them
             if c.point is None or c.source in ("pair", None) or not inside(c.point):
                 continue
-            for pair in (c.source, c.other):
+            for pair in (c.source, c.other) if c.other is not None else (c.source,):
                 ends = [centres[tuple(sorted(p))].point for p in pair] + [c.point]
                 if any(e is None or not inside(e) for e in ends):
                     continue

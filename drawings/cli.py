@@ -6,6 +6,7 @@ from __future__ import annotations
 import argparse
 import importlib
 from collections.abc import Sequence
+from typing import Any
 
 from plans.cli import command_of, only_command, register_commands
 from plans.cli import main as plans_main
@@ -85,6 +86,20 @@ def draw_command(args: argparse.Namespace) -> int:
 _DRAWING_COMMANDS = ("drawings.demo", "drawings.note.cli", "drawings.variants", "drawings.workbench")
 
 
+def _sheet_figures(paths: list[str], repeat: int) -> dict[str, Any]:
+    """The sheets' times for ``plans bench`` (:func:`drawings.bench.figures`), loaded when run."""
+    from .bench import figures
+
+    return figures(paths, repeat)
+
+
+def _diagrams_seconds(path: Any, repeat: int) -> float:
+    """The cycle's diagrams sheet to SVG for ``plans bench``, loaded when run."""
+    from .cycle import diagrams_sheet_seconds
+
+    return diagrams_sheet_seconds(path, repeat)
+
+
 def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     """The engine's parser (solve, check, bench, ...) with ``draw`` and the other
     commands that need the renderer added (with ``argv``: only the command asked for
@@ -105,9 +120,11 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
         from .bench_plot import add_plot  # ``plans bench`` draws bench.svg with the sheets' backend
 
         add_plot(sub.choices["bench"])
-        from plans.accuracy import cycle_bench  # and times the cycle's sheet (a lazy reference)
+        from plans.accuracy import cycle_bench, speed  # and times the sheets, through drawings.draw
 
-        cycle_bench.SHEET_TIMERS.setdefault("cycle diagrams sheet", "drawings.cycle:diagrams_sheet_seconds")
+        cycle_bench.SHEET_TIMERS.setdefault("cycle diagrams sheet", _diagrams_seconds)
+        if _sheet_figures not in speed.SHEET_FIGURES:
+            speed.SHEET_FIGURES.append(_sheet_figures)
     if "check" in sub.choices and (argv is None or command_of(argv) == "check"):  # ``plans check --sheet DIR``: the marked and overlay sheets
         try:
             from .check_sheet import add_sheet_options

@@ -50,6 +50,12 @@ def fmt(v: float, sig: int = 4, lang: str = "en") -> str:
     return s.replace(".", ",") if lang == "ru" else s
 
 
+def degrees360(a: float) -> float:
+    """Radians as degrees in [0, 360), round-off at 360 shown as 0."""
+    d = round(math.degrees(a) % 360.0, 6)
+    return 0.0 if d >= 360.0 else d
+
+
 def angle(phi: float, lang: str = "en") -> str:
     """A crank angle, degrees, the same in a block's heading and in its panels' titles
     (181,851° in both, not 181,9° under 181,851°)."""

@@ -308,6 +308,10 @@ def _omega_panel(d: Dynamics, lang: str) -> Panel:
     return plot_panel("dyn-w", "dynamics", tr("w", lang), rec, scale, note, lang=lang)
 
 
+#: Each diagram of the cycle's dynamics alone, by its letter: M, A, T, I, W and ω (``w``).
+DYNAMICS_DIAGRAMS = {"M": _m_panel, "A": _a_panel, "T": _t_panel, "I": _i_panel, "W": _w_panel, "w": _omega_panel}
+
+
 def _fly_table(d: Dynamics, lang: str) -> Panel:
     fw = d.flywheel
     ex = fw.inertia_exact
@@ -358,11 +362,12 @@ def table_panels(tables: Sequence[CycleTable], lang: str, prefix: str,
 
 def indicator_panels(d: Dynamics, lang: str) -> list[Panel]:
     """Each cylinder's indicator diagram as given: the pressure against the piston's travel
-    from the outer dead centre, one line per stroke (the working stroke drawn main)."""
-    from plans.forces.loads import ignition, parse_loads
-
+    from the outer dead centre, one line per stroke (the working stroke drawn main), with its
+    ignition where it fires (found when the scene's loads were read)."""
     out = []
-    for k, gl in enumerate(parse_loads(d.scene).gas):
+    loads = d.scene.loads
+    assert loads is not None, "a scene with dynamics holds its [loads]"
+    for k, gl in enumerate(loads.gas):
         if not gl.diagram or gl.stroke <= 0:
             continue
         H_mm = gl.stroke * 1000
@@ -389,8 +394,8 @@ def indicator_panels(d: Dynamics, lang: str) -> list[Panel]:
         scale = (f"μ_s = {fmt(mu_s, 4, lang)} mm/mm (H = {fmt(H_mm, 4, lang)} mm); "
                  f"μ_p = {fmt(mu_p * 1e6, 4, lang)} mm/MPa")
         note = None
-        if gl.fires is not None:
-            note = f"{tr('fires', lang)} = {fmt(ignition(d.scene, gl), 5, lang)}°"
+        if gl.ignition is not None:
+            note = f"{tr('fires', lang)} = {fmt(gl.ignition, 5, lang)}°"
         out.append(plot_panel(f"ind-{k}", "dynamics", f"{tr('indicator', lang)} {gl.name}", rec, scale, note,
                               lang=lang))
     return out
@@ -471,11 +476,11 @@ def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_te
 def fitting_diagrams(sol: Solution, dg: Diagrams, spec: SheetSpec) -> list[Panel]:
     """The kinematic diagrams as they fit the sheet: on a small one at a shorter φ axis (the
     scales μφ, μs... written on them the engine's at that length), not refused."""
-    from .sheet import _fits_empty
+    from .sheet import fits_empty
 
     panels = diagram_panels(dg, spec.language)
     length = dg.spec.length_mm
-    while not all(_fits_empty(p, spec.format, spec.orientation) for p in panels) and length > 60.0:
+    while not all(fits_empty(p, spec.format, spec.orientation) for p in panels) and length > 60.0:
         length = max(60.0, math.floor(length * 0.8 / 10.0) * 10.0)
         smaller = sol.diagrams_drawn(length)
         if smaller is None:
@@ -497,13 +502,13 @@ def _fitting_dynamics(sol: Solution, d: Dynamics, tabs: Sequence[CycleTable], sp
     """The dynamics sheet's panels as they fit the sheet: on a small one the φ axis of the
     diagrams is shortened (240 mm on A1 and A2, or ``axis``, the one ``d`` is drawn at) and
     their heights lowered until every diagram fits, not refused."""
-    from .sheet import _fits_empty
+    from .sheet import fits_empty
 
     panels = dynamics_panels(d, tabs, spec.language, analogues)
     height = 1.0
     columns = 12
     while True:
-        big = [p for p in panels if not _fits_empty(p, spec.format, spec.orientation)]
+        big = [p for p in panels if not fits_empty(p, spec.format, spec.orientation)]
         if big and columns > 3 and any(p.pid.startswith("dyn-table") for p in big):
             columns //= 2  # a table over the positions in more, narrower parts
         elif big and axis > 60.0:

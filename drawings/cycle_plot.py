@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .backend import FILLED, HAIR, MAIN, THIN, Recording, Style
+from .backend import FILLED, HAIR, MAIN, PAPER, THIN, Recording, Style
 from .common import arrow, fmt
 from .panels import SMALL_SIZE, Panel, finish
 from .text import layout
@@ -44,9 +44,9 @@ class Axes:
         """The two axes with arrows; names at their ends."""
         y_lo, y_hi = min(y_lo, 0.0) - 4.0, max(y_hi, 0.0) + 6.0
         arrow(self.rec, (0.0, 0.0), (length + 8.0, 0.0), AXIS, f"{self.pid}-xaxis", "axis")
-        arrow(self.rec, (0.0, -y_lo), (0.0, -y_hi), AXIS, f"{self.pid}-yaxis", "axis")
+        arrow(self.rec, PAPER(0.0, y_lo), PAPER(0.0, y_hi), AXIS, f"{self.pid}-yaxis", "axis")
         self.rec.text(layout(x_name, length + 9.5, 0.0, 3.5, "start", "middle"), "axis-name")
-        self.rec.text(layout(y_name, 1.5, -y_hi, 3.5, "start", "top"), "axis-name")
+        self.rec.text(layout(y_name, *PAPER(1.5, y_hi), 3.5, "start", "top"), "axis-name")
 
     def positions(self, phis_deg: Sequence[float] | np.ndarray, numbers: bool = True) -> None:
         """Ticks at the positions, numbered 1..N as the course numbers them (a number that would
@@ -67,9 +67,9 @@ class Axes:
             self.rec.circle((float(a), float(-b)), 0.5, FILLED)
 
     def hline(self, y: float, x0: float, x1: float, style: Style, label: str = "", eid: str = "") -> None:
-        self.rec.line((x0, -y), (x1, -y), style, eid)
+        self.rec.line(PAPER(x0, y), PAPER(x1, y), style, eid)
         if label:
-            self.rec.text(layout(label, x1 + 1.5, -y, 2.5, "start", "middle"), "note")
+            self.rec.text(layout(label, *PAPER(x1 + 1.5, y), 2.5, "start", "middle"), "note")
 
     def pole(self, H: float, ordinates: Sequence[float] | np.ndarray, name: str = "P", hname: str = "H") -> None:
         """The pole at H mm left of the origin and its rays to the ordinates on the y axis."""

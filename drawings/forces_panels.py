@@ -30,7 +30,7 @@ from .panels import (
     SMALL_SIZE,
     VECTOR_STYLES,
     Panel,
-    _clip,
+    clip_line,
     finish,
     link_outline,
     link_shape,
@@ -102,7 +102,10 @@ def build(sol, spec, ks: Sequence[int], plans_at: dict[int, Any], mu_l: float) -
         if want("table") and polys:
             from .table_parts import parts
 
-            panels.extend(parts(lambda part, polys=polys, phi=phi: forces_table(polys, lang, style, phi, part), spec))
+            def table(part: tuple[int, int, int] | None, polys: Any = polys, phi: float = phi) -> Panel:
+                return forces_table(polys, lang, style, phi, part)
+
+            panels.extend(parts(table, spec))
         out[k] = panels
         out[("table", k)] = balancing_rows(sol, k, lang) + efficiency_rows(fa, k, lang)
     if fa.friction is not None and want("table"):  # η(φ) and its table go with the tables
@@ -117,7 +120,7 @@ def _fbd_scale(values: Sequence[complex], cycle: float = 0.0, factor: float = 1.
     """μF of a free body: round, its longest force FBD_ARROW_MM at most; forces that are zero
     up to round-off against the cycle's largest (``cycle``) take the cycle's scale."""
     longest = max((abs(v) for v in values), default=0.0)
-    if longest <= 1e-9 * cycle:
+    if longest <= DUST * cycle:
         longest = cycle
     return nice_scale(longest, FBD_ARROW_MM * factor)
 
@@ -221,10 +224,16 @@ def group_panel(scene, kin, gf, k: int, mu_l: float, lang: str, style: str, fric
     rec = Recording()
     placer = Placer()
     pts = _draw_links(rec, placer, scene, kin, k, g.links, T, pid)
-    loads = list(gf.loads_i) + list(gf.loads_j)
+    triad = hasattr(gf, "S")  # class III: loads per link, three outer reactions, Assur's point
+    loads = [f for fs in gf.loads for f in fs] if triad else list(gf.loads_i) + list(gf.loads_j)
+    moments = [m for ms in gf.moments for m in ms] if triad else list(gf.moments_i) + list(gf.moments_j)
+    if triad:
+        from .triad_marks import special_point
+
+        special_point(rec, placer, T, gf, k, pts, pid, LABEL_SIZE, kin)
     reacts = []
     couples: list[tuple[str, float, str]] = []
-    for rc in (gf.reactions[0], gf.reactions[2]):
+    for rc in (gf.reactions[:3] if triad else (gf.reactions[0], gf.reactions[2])):
         name = rc.name(scene.fij)
         if rc.tau is not None and rc.e_tau is not None and rc.n is not None and rc.e_n is not None:
             reacts.append((complex(rc.r[k]), complex(rc.tau[k] * rc.e_tau[k]), f"{name}^τ"))
@@ -266,7 +275,7 @@ def group_panel(scene, kin, gf, k: int, mu_l: float, lang: str, style: str, fric
     for at, F, name in reacts:
         _force_at(rec, placer, T, at, F, mu_f, force_label(name, lang), REACTION, f"{pid}-{ident(name)}")
     at_pin = friction_points(friction)  # a friction couple is drawn at its pair's pin
-    for m in list(gf.moments_i) + list(gf.moments_j):
+    for m in moments:
         link = scene.links[m.link]
         centre = link.centre or next((n for n in link.points if n.startswith("S")), link.axis[0])
         centre = at_pin.get(m.label, centre) if at_pin.get(m.label) in pts else centre
@@ -332,7 +341,7 @@ def polygon_panel(plan: Plan, lang: str, style: str, pid: str, title: str) -> Pa
     ys = [p[1] for p in xy.values()]
     box = (min(xs) - 8, min(ys) - 8, max(xs) + 8, max(ys) + 8)
     for i, cl in enumerate(plan.lines):
-        seg = _clip(T(*cl.point), T.direction(*cl.direction), box)
+        seg = clip_line(T(*cl.point), T.direction(*cl.direction), box)
         if seg is not None:
             rec.line(seg[0], seg[1], Style(width=0.18, stroke="#666", cls="construction"), f"{pid}-line-{i}")
             placer.add_line(list(seg))

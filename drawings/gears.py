@@ -14,11 +14,12 @@ import numpy as np
 import shapely
 
 from plans.errors import InputError
-from plans.gears.meshing import Meshing, meshing
-from plans.gears.model import GearFile, load_gears
-from plans.gears.solve import GearSolution, solve_gears
+from plans.gears.meshing import Meshing
+from plans.gears.model import GearFile
+from plans.gears.solution import GearsSolution, solve_file
+from plans.gears.solve import GearSolution
 
-from .backend import HAIR, MAIN, THICK, THIN, Recording, Style
+from .backend import HAIR, MAIN, PAPER, THICK, THIN, Recording, Style
 from .common import Placer, arrow, dot, fmt
 from .i18n import lookup
 from .panels import Panel, finish, ratio_text
@@ -73,7 +74,7 @@ class GearDrawing:
 
 def _pt(z: complex) -> tuple[float, float]:
     """Construction mm (y up) -> panel paper mm (y down)."""
-    return (z.real, -z.imag)
+    return PAPER.z(z)
 
 
 def _clipped(rec: Recording, pts: Sequence[complex], box: shapely.Geometry, style: Style, eid: str) -> None:
@@ -81,7 +82,7 @@ def _clipped(rec: Recording, pts: Sequence[complex], box: shapely.Geometry, styl
     part = line.intersection(box)
     geoms = [g for g in getattr(part, "geoms", [part]) if not g.is_empty and g.geom_type == "LineString"]
     for i, g in enumerate(geoms):
-        rec.polyline([(x, -y) for x, y in g.coords], style, f"{eid}-{i}" if i else eid)
+        rec.polyline([PAPER(x, y) for x, y in g.coords], style, f"{eid}-{i}" if i else eid)
 
 
 def _on_field(z: complex, box: shapely.Geometry) -> tuple[complex, bool]:
@@ -124,7 +125,7 @@ def meshing_panel(mg: Meshing, lang: str) -> Panel:
     ys = [dw.centre.imag for dw in mg.wheels]
     lo = max(min(ys) - 8, ylo)
     hi = min(max(ys + [30.0]) + 8, yhi)
-    rec.line((0.0, -lo), (0.0, -hi), AXIS, "centre-line")
+    rec.line(PAPER(0.0, lo), PAPER(0.0, hi), AXIS, "centre-line")
     for i, dw in enumerate(mg.wheels):
         O = dw.centre
         sign = -1 if O.imag < 0 else 1
@@ -134,9 +135,9 @@ def meshing_panel(mg: Meshing, lang: str) -> Panel:
             rec.text(placer.place(name, _pt(O), LABEL, (1.0, 0.0)), "label", f"label-O{dw.name}")
         else:  # the centre is off the field: say where it is
             y = ylo if sign < 0 else yhi
-            arrow(rec, (0.0, -(y - sign * 12)), (0.0, -y), THIN, f"to-O{dw.name}", "pointer")
+            arrow(rec, PAPER(0.0, y - sign * 12), PAPER(0.0, y), THIN, f"to-O{dw.name}", "pointer")
             txt = f"{name}: {fmt(abs(O.imag), 4, lang)} мм" if lang == "ru" else f"{name}: {fmt(abs(O.imag), 4)} mm"
-            rec.text(layout(txt, 3.0, -(y - sign * (6 + 5 * i)), SMALL, "start", "middle"), "label",
+            rec.text(layout(txt, *PAPER(3.0, y - sign * (6 + 5 * i)), SMALL, "start", "middle"), "label",
                      f"label-O{dw.name}")
     rec.end()
     # line of action, the active part, the zones
@@ -175,7 +176,7 @@ def meshing_panel(mg: Meshing, lang: str) -> Panel:
             placed = placer.place(text, _pt(at), LABEL, pref)
         else:  # inside the field, below the arrow's head, ending at the edge
             right = at.real > 0
-            placed = layout(text, at.real + (-2.0 if right else 2.0), -at.imag + 5.0, LABEL,
+            placed = layout(text, *PAPER(at.real + (-2.0 if right else 2.0), at.imag - 5.0), LABEL,
                             "end" if right else "start", "middle")
         rec.text(placed, "label", f"label-{name.replace('_', '')}")
     mid_d = (d1a + d1b) / 2 - 14 * nrm
@@ -191,13 +192,13 @@ def meshing_panel(mg: Meshing, lang: str) -> Panel:
         dot(rec, _pt(q), 0.45, f"laid-off-{i}")
     rec.end()
     # the pressure angle at P
-    rec.text(layout(f"α_w = {fmt(math.degrees(p.alpha_w), 5, lang)}°", -W + 4.0, -yhi + 8.0, LABEL, "start", "middle"),
+    rec.text(layout(f"α_w = {fmt(math.degrees(p.alpha_w), 5, lang)}°", *PAPER(-W + 4.0, yhi - 8.0), LABEL, "start", "middle"),
              "note", "alpha-w")
     eps = (f"ε = B_{{1}}B_{{2}}/p_{{b}} = {fmt(mg.b1b2, 4, lang)}/{fmt(mg.p_b, 4, lang)} = "
            f"{fmt(mg.contact_ratio_drawn, 3, lang)} ({tr('drawn', lang)}); "
            f"ε = {fmt(p.contact_ratio, 5, lang)} ({tr('exact', lang)})")
-    rec.text(layout(eps, -W, -ylo + 6.0, LABEL, "start", "middle"), "note", "contact-ratio")
-    rec.polygon([(-W, -yhi), (W, -yhi), (W, -ylo), (-W, -ylo)], Style(stroke="#999", width=0.18, cls="field"), "field")
+    rec.text(layout(eps, *PAPER(-W, ylo - 6.0), LABEL, "start", "middle"), "note", "contact-ratio")
+    rec.polygon([PAPER(-W, yhi), PAPER(W, yhi), PAPER(W, ylo), PAPER(-W, ylo)], Style(stroke="#999", width=0.18, cls="field"), "field")
     g1, g2 = p.gears
     title = f"{tr('meshing', lang)} {g1}–{g2}"
     return finish(f"meshing-{g1}-{g2}", "meshing", None, rec, title, f"M {ratio_text(mg.k * 1000.0)}")
@@ -293,17 +294,17 @@ def scheme_panel(sol: GearSolution, lang: str) -> Panel:
         g = gf.gears[name]
         y = plan.axes[g.shaft] * 1e3 * mu
         r = radii[name]
-        rec.line((cx, -(y - r)), (cx, -(y + r)), THICK, f"gear-{name}")
+        rec.line(PAPER(cx, y - r), PAPER(cx, y + r), THICK, f"gear-{name}")
         if g.internal:
             for side in (-1, 1):
-                rec.line((cx, -(y + side * r)), (cx - 4.0, -(y + side * r)), THICK,
+                rec.line(PAPER(cx, y + side * r), PAPER(cx - 4.0, y + side * r), THICK,
                          f"gear-{name}-ring{side}")
-        rec.line((cx - 3.0, -y), (cx + 3.0, -y), MAIN, f"axis-{name}")
-        rec.text(layout(name, cx + 1.5, -(y + r) - 2.0, LABEL, "start", "bottom"), "label", f"label-gear-{name}")
+        rec.line(PAPER(cx - 3.0, y), PAPER(cx + 3.0, y), MAIN, f"axis-{name}")
+        rec.text(layout(name, *PAPER(cx + 1.5, y + r + 2.0), LABEL, "start", "bottom"), "label", f"label-gear-{name}")
     for n, s in gf.shafts.items():
         y = plan.axes[n] * 1e3 * mu
         if s.carrier is None:
-            rec.line((-8.0, -y), (x + 2.0, -y), AXIS, f"shaft-{n}")
+            rec.line(PAPER(-8.0, y), PAPER(x + 2.0, y), AXIS, f"shaft-{n}")
     for n in gf.shafts:  # carriers: a bracket from the central axis to each planet axis
         planets = [q for q, t in gf.shafts.items() if t.carrier == n]
         if planets:
@@ -311,8 +312,8 @@ def scheme_panel(sol: GearSolution, lang: str) -> Panel:
             xc = x + 4.0
             for q in planets:
                 yq = plan.axes[q] * 1e3 * mu
-                rec.polyline([(x - 6.0, -yq), (xc, -yq), (xc, -y0), (xc + 6.0, -y0)], MAIN, f"carrier-{n}-{q}")
-            rec.text(layout(n, xc + 2.0, -y0 - 2.0, LABEL, "start", "bottom"), "label", f"label-carrier-{n}")
+                rec.polyline([PAPER(x - 6.0, yq), PAPER(xc, yq), PAPER(xc, y0), PAPER(xc + 6.0, y0)], MAIN, f"carrier-{n}-{q}")
+            rec.text(layout(n, *PAPER(xc + 2.0, y0 + 2.0), LABEL, "start", "bottom"), "label", f"label-carrier-{n}")
     return finish("train-scheme", "train-scheme", None, rec, tr("scheme", lang),
                   f"μ_l = {fmt(plan.mu_l, 4, lang)} {'мм/м' if lang == 'ru' else 'mm/m'}")
 
@@ -324,7 +325,7 @@ def velocity_panel(sol: GearSolution, lang: str) -> Panel:
     placer = Placer()
     ys = [pt[1] for ln in plan.lines.values() for _, pt in ln.points] + [y * plan.mu_l for y in plan.axes.values()]
     y0, y1 = min(ys) - 8.0, max(ys) + 8.0
-    rec.line((0.0, -y0), (0.0, -y1), AXIS, "radial-line")
+    rec.line(PAPER(0.0, y0), PAPER(0.0, y1), AXIS, "radial-line")
     xs = [pt[0] for ln in plan.lines.values() for _, pt in ln.points]
     span = (min(xs + [0.0]) - 10.0, max(xs + [0.0]) + 10.0)
     done: set[str] = set()
@@ -343,9 +344,9 @@ def velocity_panel(sol: GearSolution, lang: str) -> Panel:
                 continue
             done.add(name)
             if abs(vx) > 1e-6:
-                arrow(rec, (0.0, -vy), (vx, -vy), THIN, f"v-{name}", "vector")
-            dot(rec, (vx, -vy), 0.6, f"pt-{name}")
-            rec.text(placer.place(name, (vx, -vy), SMALL + 0.5, (1.0, -0.5)), "label", f"label-{name}")
+                arrow(rec, PAPER(0.0, vy), PAPER(vx, vy), THIN, f"v-{name}", "vector")
+            dot(rec, PAPER(vx, vy), 0.6, f"pt-{name}")
+            rec.text(placer.place(name, PAPER(vx, vy), SMALL + 0.5, (1.0, -0.5)), "label", f"label-{name}")
     del span
     txt = f"μ_v = {fmt(plan.mu_v, 4, lang)} {'мм/(м/с)' if lang == 'ru' else 'mm/(m/s)'}"
     return finish("velocity-plan", "velocity-plan", None, rec, tr("vplan", lang), txt)
@@ -359,18 +360,18 @@ def rays_panel(sol: GearSolution, lang: str) -> Panel:
     h = plan.h
     xs = [ln.intercept for ln in plan.lines.values()] + [0.0]
     lo, hi = min(xs) - 10.0, max(xs) + 10.0
-    rec.line((lo, -h), (hi, -h), MAIN, "reference-line")
+    rec.line(PAPER(lo, h), PAPER(hi, h), MAIN, "reference-line")
     dot(rec, (0.0, 0.0), 0.8, "pole")
     rec.text(layout("O_ω", 2.0, 3.5, LABEL, "start", "middle"), "label", "label-pole")
-    rec.line((0.0, 0.0), (0.0, -h - 4.0), AXIS, "pole-normal")
-    placer.add_line([(lo, -h), (hi, -h)])
+    rec.line((0.0, 0.0), PAPER(0.0, h + 4.0), AXIS, "pole-normal")
+    placer.add_line([PAPER(lo, h), PAPER(hi, h)])
     for n, ln in plan.lines.items():
-        rec.line((0.0, 0.0), (ln.intercept, -h), THIN, f"ray-{n}")
-        placer.add_line([(0.0, 0.0), (ln.intercept, -h)])
-        dot(rec, (ln.intercept, -h), 0.6, f"omega-{n}")
+        rec.line((0.0, 0.0), PAPER(ln.intercept, h), THIN, f"ray-{n}")
+        placer.add_line([(0.0, 0.0), PAPER(ln.intercept, h)])
+        dot(rec, PAPER(ln.intercept, h), 0.6, f"omega-{n}")
     for n, ln in plan.lines.items():
-        rec.text(placer.place(f"ω_{n}", (ln.intercept, -h), SMALL + 0.5, (0.0, -1.0)), "label", f"label-omega-{n}")
-    rec.text(layout(f"h = {fmt(h, 3, lang)}", 2.0, -h / 2, SMALL, "start", "middle"), "note", "pole-distance")
+        rec.text(placer.place(f"ω_{n}", PAPER(ln.intercept, h), SMALL + 0.5, (0.0, -1.0)), "label", f"label-omega-{n}")
+    rec.text(layout(f"h = {fmt(h, 3, lang)}", *PAPER(2.0, h / 2), SMALL, "start", "middle"), "note", "pole-distance")
     txt = f"μ_ω = {fmt(plan.mu_omega, 4, lang)} {'мм/(рад/с)' if lang == 'ru' else 'mm/(rad/s)'}"
     return finish("ray-diagram", "ray-diagram", None, rec, tr("rays", lang), txt)
 
@@ -394,17 +395,18 @@ def synthesis_panel(sol: GearSolution, lang: str) -> Panel:
     return finish("synthesis", "table", None, _grid(rows, "synthesis"), tr("synthesis", lang))
 
 
-def draw(path: str | Path, *, format: str | None = None, orientation: str | None = None,
-         language: str | None = None) -> GearDrawing:
+def draw(source: GearsSolution | GearFile | str | Path, *, format: str | None = None,
+         orientation: str | None = None, language: str | None = None) -> GearDrawing:
     """The meshing sheet (when the file has an external pair) and the train sheet (when it
-    gives speeds)."""
-    gf = load_gears(path)
-    sol = solve_gears(gf)
+    gives speeds): of a solved gear file (``plans.solve``), or of a file or its path, solved here."""
+    gs = source if isinstance(source, GearsSolution) else solve_file(source)
+    gf = gs.file
+    sol = gs.solution
     spec = sheet_spec(gf.raw, gf.path, gf.title or tr("title", "ru" if language != "en" else "en"),
                       format=format, orientation=orientation, language=language)
     lang = spec.language
     groups: list[tuple[list[Panel], str]] = []
-    drawings = [meshing(p) for p in sol.drawn_pairs()]
+    drawings = list(gs.meshings)
     if drawings:  # the meshings and the table of the pairs share sheets as they fit
         scales = list(dict.fromkeys(ratio_text(one.k * 1000.0) for one in drawings))
         groups.append(([meshing_panel(one, lang) for one in drawings] + [results_panel(sol, lang)],

@@ -46,10 +46,10 @@ def _fitting_positions(sol: Solution, mu: float, lang: str, bold: list[int], str
                        spec: SheetSpec) -> Any:
     """The plan of positions as it fits the sheet: in full; else with its angles in brief; else
     (when its scale is not the file's own) at the next smaller standard scales."""
-    from .sheet import _fits_empty
+    from .sheet import fits_empty
 
     panel = positions_panel(sol, mu, lang, bold, strokes, spec.trace)
-    if _fits_empty(panel, spec.format, spec.orientation):
+    if fits_empty(panel, spec.format, spec.orientation):
         return panel
     panel = positions_panel(sol, mu, lang, bold, strokes, spec.trace, brief=True)
     if sol.scene.scales.get("length"):
@@ -57,7 +57,7 @@ def _fitting_positions(sol: Solution, mu: float, lang: str, bold: list[int], str
     from .panels import STANDARD_RATIOS
 
     for r in STANDARD_RATIOS:
-        if _fits_empty(panel, spec.format, spec.orientation):
+        if fits_empty(panel, spec.format, spec.orientation):
             break
         if 1000.0 * r < mu:
             panel = positions_panel(sol, 1000.0 * r, lang, bold, strokes, spec.trace, brief=True)
@@ -99,7 +99,7 @@ def build_panels(sol: Solution, spec: SheetSpec, sel: dict[str, Any] | None = No
         if scene.wants("instant_centres") and k in at.get("centres", ()):
             from .centres import centres_panels
 
-            panels.extend(centres_panels(scene, kin, k, mu_l, lang, strokes))
+            panels.extend(centres_panels(sol, k, mu_l, lang, strokes))
         pp = plans_at.get(k)
         if pp is not None:
             if pp.velocity is not None and k in at.get("velocity", ()):
@@ -110,9 +110,13 @@ def build_panels(sol: Solution, spec: SheetSpec, sel: dict[str, Any] | None = No
         if pp is not None and pp.readings and k in at.get("table", ()):
             from .table_parts import parts
 
-            extra, rows = forces.get(("table", k), []), _rows(scene, pp.readings)
-            panels.extend(parts(lambda part, rows=rows, extra=extra, k=k: table_panel(
-                rows, lang, style, float(kin.phi_deg[k]), extra=extra, part=part), spec))
+            extra, rows, phi = forces.get(("table", k), []), _rows(scene, pp.readings), float(kin.phi_deg[k])
+
+            def table(part: tuple[int, int, int] | None, rows: list = rows, extra: list = extra,
+                      phi: float = phi) -> Panel:
+                return table_panel(rows, lang, style, phi, extra=extra, part=part)
+
+            panels.extend(parts(table, spec))
     panels.extend(forces.get("efficiency", []))  # η(φ) and its table, with friction over a turn
     kinds = legend_kinds(panels)
     if sel.get("legend") and any(k not in ("trace",) for k in kinds):

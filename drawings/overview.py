@@ -24,8 +24,8 @@ from .panels import (
     SMALL_SIZE,
     VECTOR_STYLES,
     Panel,
-    _support,
     finish,
+    fixed_pivot,
     link_shape,
     ratio_text,
     scale_text,
@@ -227,7 +227,7 @@ def positions_panel(sol, mu_l: float, lang: str, bold: Sequence[int], strokes: d
     for jt in scene.joints:
         if jt.kind == "R" and frame in jt.links and jt.point in scene.frame_points:
             p = T.z(scene.frame_points[jt.point])
-            _support(rec, p, f"{pid}-support-{ident(jt.point)}")
+            fixed_pivot(rec, p, f"{pid}-support-{ident(jt.point)}")
             placer.add_disc((p[0], p[1] + 4.0), 4.0)
             placer.add_disc(p, JOINT_R + 0.3)
     rec.end()

@@ -14,6 +14,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from plans.kinematics.plan import Plan
+from plans.units import DUST
 
 from .backend import FILLED, HAIR, MAIN, THICK, THIN, Prim, Pt, Recording, Style, Transform
 from .common import Placer, angle, arrow, dot, fmt, ident, phi_tag
@@ -105,11 +106,15 @@ _SCALE_UNITS = {
 
 
 def scale_text(quantity: str, mu: float, style: str, lang: str) -> str:
-    """``μ_v = 6.667 mm/(m/s)`` or ``K_v = 0.15 (m/s)/mm``, as the course writes scales."""
+    """``μ_v = 6.667 mm/(m/s)``, ``μ_v = 0,15 (м/с)/мм`` or ``K_v = 0.15 (m/s)/mm``: the letter
+    and the direction of the scene's notation in the sheet's language (plans.scene.notation)."""
+    from plans.scene.notation import resolve
+
     sub, mu_unit, k_unit = _SCALE_UNITS[quantity]
-    if style == "K":
-        return f"K_{sub} = {fmt(1.0 / mu, 4, lang)} {tr(k_unit, lang)}"
-    return f"μ_{sub} = {fmt(mu, 4, lang)} {tr(mu_unit, lang)}"
+    letter, per_mm, _ = resolve(style, lang)
+    if per_mm:
+        return f"{letter}_{sub} = {fmt(1.0 / mu, 4, lang)} {tr(k_unit, lang)}"
+    return f"{letter}_{sub} = {fmt(mu, 4, lang)} {tr(mu_unit, lang)}"
 
 
 def ratio_text(mu_l: float, lang: str = "en") -> str:
@@ -247,7 +252,7 @@ def scheme_panel(scene, kin, k: int, mu_l: float, lang: str, strokes: dict[str, 
         drawn.add(jt.point)
         c = T.z(glob[jt.point])
         if frame in jt.links:
-            _support(rec, c, f"{pid}-support-{ident(jt.point)}")
+            fixed_pivot(rec, c, f"{pid}-support-{ident(jt.point)}")
             placer.add_disc((c[0], c[1] + 4.0), 4.0)
         rec.circle(c, JOINT_R, Style(width=0.35, fill="#fff", cls="joint"), f"{pid}-joint-{ident(jt.point)}")
         placer.add_disc(c, JOINT_R + 0.3)
@@ -298,6 +303,10 @@ def scheme_panel(scene, kin, k: int, mu_l: float, lang: str, strokes: dict[str, 
         rec.text(lab, "label", f"{pid}-{tag}-label")
     rec.end()
 
+    if any(len(g.links) == 4 for g in kin.structure.groups):  # class III: Assur's point S
+        from .triad_marks import scheme_points
+
+        scheme_points(rec, placer, T, scene, kin, k, pid, LABEL_SIZE)
     rec.begin(f"{pid}-labels", "labels")
     names = list(scene.frame_points) + [n for lid in sorted(scene.links) for n in scene.links[lid].points]
     seen: set[str] = set()
@@ -362,7 +371,7 @@ def link_shape(scene, lid: int) -> tuple[str, list[str]]:
     size = max(abs(v - z[names[0]]) for v in z.values()) or 1.0
     u = base / abs(base) if abs(base) else 1.0
     rel = {n: (v - z[names[0]]) * u.conjugate() for n, v in z.items()}
-    if all(abs(r.imag) <= 1e-9 * size for r in rel.values()):
+    if all(abs(r.imag) <= DUST * size for r in rel.values()):
         lo = min(names, key=lambda n: rel[n].real)
         hi = max(names, key=lambda n: rel[n].real)
         return "line", [lo, hi]
@@ -394,12 +403,12 @@ def _dead_points(scene, kin, k: int) -> list[str]:
     for jt in scene.joints:
         if jt.kind == "P" and jt.guide is not None and jt.guide.link == scene.frame:
             v = complex(kin.point(jt.point)[1][k])
-            if abs(v) <= 1e-9 * max(va, 1e-300):
+            if abs(v) <= DUST * max(va, 1e-300):
                 out.append(jt.point)
     return out
 
 
-def _support(rec: Recording, c: Pt, eid: str) -> None:
+def fixed_pivot(rec: Recording, c: Pt, eid: str) -> None:
     """A fixed pivot: triangle to a hatched base, as the textbook draws the frame."""
     x, y = c
     rec.polyline([(x - 3.2, y + 5.5), (x, y), (x + 3.2, y + 5.5)], Style(width=0.5, cls="frame"), eid)
@@ -475,6 +484,8 @@ _LABELLED = ("normal", "tangential", "coriolis", "sliding")
 
 def plan_panel(plan: Plan, lang: str, scale_style: str, pid: str | None = None) -> Panel:
     """A velocity or acceleration plan at true size (plan mm): pole, vectors, points, lines."""
+    from plans.scene.notation import pole_label
+
     kind = plan.kind
     pid = pid or f"{kind}-{phi_tag(plan.phi_deg)}"
     T = Transform(1.0)
@@ -490,7 +501,7 @@ def plan_panel(plan: Plan, lang: str, scale_style: str, pid: str | None = None) 
     for i, cl in enumerate(plan.lines):
         p0 = T(*cl.point)
         d = T.direction(*cl.direction)
-        seg = _clip(p0, d, box)
+        seg = clip_line(p0, d, box)
         if seg is None:
             continue
         rec.line(seg[0], seg[1], Style(width=0.18, stroke="#666", cls="construction"), f"{pid}-line-{i}")
@@ -534,7 +545,7 @@ def plan_panel(plan: Plan, lang: str, scale_style: str, pid: str | None = None) 
                     vy -= (there[1] - here[1]) / L
         L = math.hypot(vx, vy)
         prefer = (vx / L, vy / L) if L > 1e-9 else None
-        text = ", ".join(point_label(n) for n in names)
+        text = ", ".join(point_label(pole_label(n, scale_style, lang)) for n in names)
         lab = placer.place(text, c, LABEL_SIZE, prefer=prefer, gap=0.8)
         rec.text(lab, "label", f"{pid}-label-{ident(root)}")
     for s, a, b in seg_geoms:
@@ -548,7 +559,7 @@ def plan_panel(plan: Plan, lang: str, scale_style: str, pid: str | None = None) 
                  fill=VECTOR_STYLES[s.kind].stroke or "#000")
     for i, cl in enumerate(plan.lines):
         p0 = T(*cl.point)
-        seg = _clip(p0, T.direction(*cl.direction), box)
+        seg = clip_line(p0, T.direction(*cl.direction), box)
         if seg is None or not cl.label:
             continue
         text = line_label(cl.label, lang)
@@ -578,7 +589,7 @@ def line_label(label: str, lang: str) -> str:
     return label
 
 
-def _clip(p: Pt, d: Pt, box: tuple[float, float, float, float]) -> tuple[Pt, Pt] | None:
+def clip_line(p: Pt, d: Pt, box: tuple[float, float, float, float]) -> tuple[Pt, Pt] | None:
     """The part of the line p + t·d inside ``box`` (Liang–Barsky)."""
     t0, t1 = -1e12, 1e12
     for pi, di, lo, hi in ((p[0], d[0], box[0], box[2]), (p[1], d[1], box[1], box[3])):
@@ -616,6 +627,8 @@ def table_panel(rows: Sequence, lang: str, scale_style: str, phi: float, pid: st
     eight cells (the balancing force three ways).  ``part`` = (start, stop, n): only those
     rows, as the table's part n (:func:`drawings.table_parts.parts`).
     """
+    from plans.scene.notation import pole_label, resolve
+
     pid = pid or f"table-{phi_tag(phi)}"
     if part is not None and part[2] > 1:
         pid = f"{pid}-{part[2]}"
@@ -623,13 +636,14 @@ def table_panel(rows: Sequence, lang: str, scale_style: str, phi: float, pid: st
               tr("read", lang), tr("exact", lang), tr("unit", lang), tr("diff", lang))
     body: list[tuple[str, tuple[str, ...]]] = []
     for r in rows:
-        seg = " ".join(point_label(t) for t in r.segment.split()) if r.segment else "—"
+        seg = " ".join(point_label(pole_label(t, scale_style, lang)) for t in r.segment.split()) if r.segment \
+            else "—"
         mm = "—"
         if r.length_mm is not None:
             mm = fmt(_clean(r.length_mm, r.ref * (r.scale or 1.0)), 4, lang)
         if r.scale is None:
             sc = "—"
-        elif scale_style == "K":
+        elif resolve(scale_style, lang)[1]:  # units per mm
             sc = fmt(1.0 / r.scale, 4, lang)
         else:
             sc = fmt(r.scale, 4, lang)
@@ -706,7 +720,7 @@ def _diff_cell(r, unit: str, lang: str) -> str:
 
 def _clean(v: float, ref: float) -> float:
     """Round-off noise of a vanishing quantity shown as 0."""
-    return 0.0 if abs(v) <= 1e-9 * max(abs(ref), 1e-300) else v
+    return 0.0 if abs(v) <= DUST * max(abs(ref), 1e-300) else v
 
 
 def single(prims: Sequence[Prim]) -> None:  # pragma: no cover - debugging aid

@@ -397,9 +397,9 @@ def _check_fits(p: Panel, spec: SheetSpec, path: str) -> None:
 
 
 def _refuse(p: Panel, spec: SheetSpec, path: str) -> None:
-    if _fits_empty(p, spec.format, spec.orientation):
+    if fits_empty(p, spec.format, spec.orientation):
         return
-    bigger = [f for f in SHEET_FORMATS if _fits_empty(p, f, spec.orientation)]
+    bigger = [f for f in SHEET_FORMATS if fits_empty(p, f, spec.orientation)]
     if bigger:
         raise TooBig(f"panel {p.pid} ({p.width:.0f}×{p.height:.0f} mm) does not fit on an empty "
                          f"{spec.format} {spec.orientation} sheet; use --sheet {bigger[0]} or a smaller scale",
@@ -427,7 +427,7 @@ def _round_down(x: float) -> float:
     return 10.0**e
 
 
-def _fits_empty(p: Panel, fmt: str, orientation: str) -> bool:
+def fits_empty(p: Panel, fmt: str, orientation: str) -> bool:
     w, h = FORMATS[fmt]
     W, H = (w, h) if orientation == "landscape" else (h, w)
     a = usable(W, H)

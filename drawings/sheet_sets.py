@@ -96,7 +96,7 @@ def selection(sol: Solution, spec: SheetSpec, set_name: str) -> dict[str, Any]:
     sel.update(positions=overlay, legend=bool(chosen.get("legend", True)))
     nums = numbers(sol)
     for kind, val in spec.choice:
-        if kind in ("positions", "legend"):
+        if kind in ("positions", "legend") or not isinstance(val, str | tuple):
             continue
         if val == "all":
             sel[kind] = every
@@ -107,7 +107,7 @@ def selection(sol: Solution, spec: SheetSpec, set_name: str) -> dict[str, Any]:
             if bad:
                 raise InputError(f"no position {bad[0]}; the positions are numbered {nums[0]} to {nums[-1]}",
                                  file=scene.path, field=f"sheet.panels.{kind}")
-            sel[kind] = sorted(nums.index(x) for x in val)
+            sel[kind] = sorted(nums.index(int(x)) for x in val)
     if set_name == "course":  # what follows the forces' positions unless chosen itself
         if "lever" not in chosen:
             sel["lever"] = sel["forces"]
@@ -166,7 +166,7 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
     diagrams) go on the kinematics sheet after the plans.  ``larger``: thunks giving the
     (build, positions) of the scene solved with longer plans, tried in turn for the kinematics
     sheet: the first that keeps as few sheets is drawn."""
-    from .sheet import _fits_empty
+    from .sheet import fits_empty
 
     sel = selection(sol, spec, "course")
     scene = sol.scene
@@ -176,7 +176,7 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
     kin_sel = dict(sel, forces=[], lever=[], table=[k for k in sel["table"] if k not in forces],
                    scheme=[k for k in sel["scheme"] if k not in forces])
     kin_sel["centres"] = [k for k in sel["centres"] if k not in forces]
-    dyn_sel = {kind: [] for kind in AT}
+    dyn_sel: dict[str, Any] = {kind: [] for kind in AT}
     dyn_sel.update(forces=sel["forces"], lever=sel["lever"], scheme=[k for k in sel["scheme"] if k in forces],
                    centres=[k for k in sel["centres"] if k in forces], table=[k for k in sel["table"] if k in forces],
                    positions=False, legend=False, bold=[])
@@ -208,7 +208,7 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
             if mu <= start * (1 + 1e-9):
                 continue
             bigger = make(mu)
-            if not all(_fits_empty(p, spec.format, spec.orientation) for p in bigger):
+            if not all(fits_empty(p, spec.format, spec.orientation) for p in bigger):
                 break
             laid = lay(bigger)
             if len(laid) > len(sheets):

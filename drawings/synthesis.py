@@ -9,11 +9,12 @@ import math
 from dataclasses import dataclass
 from pathlib import Path
 
-from plans.synthesis.design import Design, choice_text, design, stroke_of
-from plans.synthesis.model import load_task
+from plans.synthesis.design import Design, choice_text, stroke_of
+from plans.synthesis.model import Task
 from plans.synthesis.proof import Coulisse, FourBar, Slider
+from plans.synthesis.solution import DesignSolution, solve_task
 
-from .backend import HAIR, MAIN, THICK, THIN, Pt, Recording, Style
+from .backend import CENTRE_LINE, HAIR, MAIN, THICK, THIN, Pt, Recording, Style
 from .common import dot, fmt
 from .i18n import lookup
 from .panels import STANDARD_RATIOS, Panel, finish, ratio_text
@@ -24,7 +25,7 @@ SMALL = 2.5
 LABEL = 3.5
 CONSTRUCT = Style(width=0.25, stroke="#1f5fbf")
 CIRCLE = Style(width=0.25, stroke="#1f5fbf", dash=(6.0, 1.5, 1.0, 1.5))
-AXIS = Style(width=0.18, stroke="#333", dash=(6.0, 1.0, 1.0, 1.0), cls="axis")
+AXIS = CENTRE_LINE
 WORST = Style(width=0.35, stroke="#c00000", dash=(3.0, 1.2))
 FAR = Style(width=0.5, stroke="#555")
 
@@ -60,21 +61,6 @@ def _text(rec: Recording, s: str, p: Pt, size: float = LABEL, anchor: str = "sta
     rec.text(layout(s, p[0], p[1], size, anchor, valign), "label", eid, fill=fill)
 
 
-def _positions(d: Design, phi: float) -> dict[str, complex]:
-    """The mechanism's joints at the crank angle φ (world, m)."""
-    out: dict[str, complex] = {}
-    for i, m in enumerate(d.mechs):
-        if isinstance(m, Slider):
-            A, B = m.place(phi)
-            out["A"] = A
-            out["B" if i == 0 else "C"] = B
-        elif isinstance(m, FourBar):
-            out["A"], out["B"] = m.place(phi)
-        else:
-            out["A"], out["D"], out["E"] = m.place(phi)
-    return out
-
-
 def _links(d: Design, p: dict[str, complex]) -> list[tuple[str, str]]:
     if d.model == "v_engine":
         return [("O", "A"), ("A", "B"), ("A", "C")]
@@ -85,13 +71,14 @@ def _links(d: Design, p: dict[str, complex]) -> list[tuple[str, str]]:
     return [("O", "A"), ("A", "B")]
 
 
-def construction_panel(d: Design, lang: str, target: float) -> Panel:
+def construction_panel(ds: DesignSolution, lang: str, target: float) -> Panel:
+    d = ds.design
     t = d.task
     m0 = d.measured[0]
     fixed = {"O": 0j, **{k: v for k, v in d.points.items() if k in ("D", "C")}}
-    pos1 = {**fixed, **_positions(d, m0.phi_start)}
-    pos2 = {**fixed, **_positions(d, m0.phi_end)}
-    worst = {**fixed, **_positions(d, m0.phi_gamma)}
+    pos1 = {**fixed, **ds.joints(m0.phi_start)}
+    pos2 = {**fixed, **ds.joints(m0.phi_end)}
+    worst = {**fixed, **ds.joints(m0.phi_gamma)}
     pts = list(pos1.values()) + list(pos2.values()) + list(worst.values())
     xs = [z.real for z in pts]
     ys = [z.imag for z in pts]
@@ -144,7 +131,7 @@ def construction_panel(d: Design, lang: str, target: float) -> Panel:
     if d.model == "v_engine":
         m1 = d.measured[1]
         sets = [(pos1, pos2, [("O", "A"), ("A", "B")], ("A", "B")),
-                ({**fixed, **_positions(d, m1.phi_start)}, {**fixed, **_positions(d, m1.phi_end)},
+                ({**fixed, **ds.joints(m1.phi_start)}, {**fixed, **ds.joints(m1.phi_end)},
                  [("O", "A"), ("A", "C")], ("C",))]
     for i, (p1, p2, links, names) in enumerate(sets):
         for pos, style, mark in ((p1, THICK, "′"), (p2, FAR, "″")):
@@ -263,7 +250,8 @@ def _angle(rec: Recording, P, c: complex, z1: complex, z2: complex, r: float, la
     _text(rec, label, (mid[0] + 1.0, mid[1]), LABEL, "start", "middle", eid=f"label-{eid}")
 
 
-def _rows(d: Design, lang: str) -> list[tuple[str, str, str, str]]:
+def _rows(ds: DesignSolution, lang: str) -> list[tuple[str, str, str, str]]:
+    d = ds.design
     t = d.task
     u = {"mm": "мм", "cm": "см", "m": "м"}.get(t.unit, t.unit) if lang == "ru" else t.unit
     L = t.scale
@@ -317,17 +305,15 @@ def _rows(d: Design, lang: str) -> list[tuple[str, str, str, str]]:
     rows.append(("Grashof / полный оборот" if ru else "full turn, one branch",
                  "—", "—", "да" if ru else "yes"))
     if d.model == "three_positions":
-        from plans.synthesis.numeric import wrap
-
-        fb = d.mechs[0]
         assert t.positions is not None
-        for i, (phi, psi) in enumerate(t.positions, 1):
-            rows.append((f"φ{i} → ψ{i}", f"{deg(phi)} → {deg(psi)}", "—", deg(psi + wrap(fb.psi(phi) - psi), 10)))
+        for i, ((phi, psi), measured) in enumerate(zip(t.positions, ds.rocker_angles, strict=True), 1):
+            rows.append((f"φ{i} → ψ{i}", f"{deg(phi)} → {deg(psi)}", "—", deg(measured, 10)))
     return rows
 
 
-def table_panel(d: Design, lang: str) -> Panel:
-    rows = [(_w("quantity", lang), _w("given", lang), _w("found", lang), _w("measured", lang)), *_rows(d, lang)]
+def table_panel(ds: DesignSolution, lang: str) -> Panel:
+    d = ds.design
+    rows = [(_w("quantity", lang), _w("given", lang), _w("found", lang), _w("measured", lang)), *_rows(ds, lang)]
     widths = [40.0, 34.0, 34.0, 44.0]
     h = 7.0
     rec = Recording()
@@ -356,25 +342,27 @@ def table_panel(d: Design, lang: str) -> Panel:
     return finish("design-table", "table", None, rec, _w("table", lang))
 
 
-def build_panels(d: Design, spec: SheetSpec) -> list[Panel]:
+def build_panels(ds: DesignSolution, spec: SheetSpec) -> list[Panel]:
     W, H = spec.size
     x0, y0, x1, y1 = usable(W, H)
     wide = (x1 - x0) > (y1 - y0)
     target = min((x1 - x0) * (0.62 if wide else 0.95), (y1 - y0) - TB_H - GAP - 30.0 - (0 if wide else 90.0))
-    return [construction_panel(d, spec.language, target), table_panel(d, spec.language)]
+    return [construction_panel(ds, spec.language, target), table_panel(ds, spec.language)]
 
 
-def draw(path: str | Path, *, format: str | None = None, orientation: str | None = None,
-         language: str | None = None) -> Drawing:
-    """The synthesis sheet of a synthesis file."""
-    t = load_task(path)
-    d = design(t)
+def draw(source: DesignSolution | Task | str | Path, *, format: str | None = None,
+         orientation: str | None = None, language: str | None = None) -> Drawing:
+    """The synthesis sheet of a designed task (``plans.solve``), or of a task or its file,
+    designed here."""
+    ds = source if isinstance(source, DesignSolution) else solve_task(source)
+    t = ds.task
+    d = ds.design
     raw = t.raw if "sheet" in t.raw else {"sheet": t.task.get("sheet", {})}
     lang = language or raw.get("sheet", {}).get("language", "ru")
     title = t.raw.get("title", t.title)
     if isinstance(title, dict):
         title = title.get(lang) or t.title
     spec = sheet_spec(raw, t.path, str(title), format=format, orientation=orientation, language=language)
-    panels = build_panels(d, spec)
+    panels = build_panels(ds, spec)
     sheets = compose(panels, spec, ratio_text(panels[0].scale or 1000.0), t.path)
     return Drawing(d, spec, tuple(panels), tuple(sheets))

@@ -7,7 +7,7 @@ import math
 from collections.abc import Callable
 
 from .panels import Panel
-from .sheet import SheetSpec, _fits_empty
+from .sheet import SheetSpec, fits_empty
 
 
 def parts(make: Callable[[tuple[int, int, int] | None], Panel], spec: SheetSpec) -> list[Panel]:
@@ -15,12 +15,12 @@ def parts(make: Callable[[tuple[int, int, int] | None], Panel], spec: SheetSpec)
     ``make((start, stop, n))`` for as few parts of its rows as fit (the header repeated on
     each); the whole table again where even one row a part does not fit (refused then)."""
     whole = make(None)
-    if _fits_empty(whole, spec.format, spec.orientation):
+    if fits_empty(whole, spec.format, spec.orientation):
         return [whole]
     rows = sum(1 for p in whole.prims if p.op == "begin" and p.cls == "row")
     for n in range(2, rows + 1):
         step = math.ceil(rows / n)
         out = [make((i, min(i + step, rows), j + 1)) for j, i in enumerate(range(0, rows, step))]
-        if all(_fits_empty(p, spec.format, spec.orientation) for p in out):
+        if all(fits_empty(p, spec.format, spec.orientation) for p in out):
             return out
     return [whole]

@@ -14,12 +14,12 @@ from plans.errors import InputError, PlansError, one_line
 
 #: Pure commands living in their own modules, each with ``register(subparsers)``; a module
 #: that is absent is simply not offered.
-_COMMAND_MODULES = ("plans.check.report", "plans.accuracy.bench", "plans.balancing.cli",
+_COMMAND_MODULES = ("plans.check.command", "plans.accuracy.bench", "plans.balancing.cli",
                     "plans.gears.cli", "plans.cams.cli", "plans.synthesis.cli")
 #: The command each module adds and its one-line help, to list it (``plans --help``) or to
 #: run another command without importing it: start-up stays a fraction of a second.
 _COMMAND_NAMES = {
-    "plans.check.report": ("check", "check a hand-drawn sheet (or a folder of them) against the exact analysis"),
+    "plans.check.command": ("check", "check a hand-drawn sheet (or a folder of them) against the exact analysis"),
     "plans.accuracy.bench": ("bench", "error against run time of every method; stability; hand-drawing error"),
     "plans.balancing.cli": ("balance", "engine balancing: force and moment polygons, counterweights"),
     "plans.gears.cli": ("gears", "involute gears and trains: geometry, checks, speeds (JSON)"),

@@ -342,3 +342,42 @@ SHEET_WORDS.update({
     "kinematics_sheet": ("Кинематический анализ", "Kinematic analysis"),
     "kinetostatics_sheet": ("Силовой анализ", "Force analysis"),
 })
+
+
+# ---- task semantics: the positions from the extreme, the strokes of the loads, the course's notation
+TERMS.update({
+    "x_slider": ("slider", "ползун"),
+    "x_mu_per_mm": ("mu = {k:.6g} {unit}/mm", "μ = {k:.6g} {unit}/мм"),
+    "x_r_polygon": ("{label} (polygon {g}, {sc})", "{label} (план сил {g}, {sc})"),
+    "x_r_arm": ("h_{lab} in {eq} = 0 ({sc})", "h_{lab} в {eq} = 0 ({sc})"),
+    "x_force_head": ("  force analysis (F_ij = force {fij}), lever turned 90° {sense}, {sc}",
+                     "  силовой расчёт (F_ij — {fij}), рычаг повёрнут на 90° {sense}, {sc}"),
+    "x_rocker": ("rocker", "коромысло"),
+    "x_start_working": (
+        "positions from the extreme position of link {link} ({kind} {point}) where the working stroke begins: "
+        "phi = {phi:.6f} deg (working stroke {work:.4f} deg, idle {idle:.4f} deg, K = {K:.4f}, theta = {theta:.4f} deg)",
+        "положения от крайнего положения звена {link} ({kind} {point}), с которого начинается рабочий ход: "
+        "φ = {phi:.6f}° (рабочий ход {work:.4f}°, холостой {idle:.4f}°, K = {K:.4f}, θ = {theta:.4f}°)"),
+    "x_start_idle": (
+        "positions from the extreme position of link {link} ({kind} {point}) where the idle stroke begins: "
+        "phi = {phi:.6f} deg (working stroke {work:.4f} deg, idle {idle:.4f} deg, K = {K:.4f}, theta = {theta:.4f} deg)",
+        "положения от крайнего положения звена {link} ({kind} {point}), с которого начинается холостой ход: "
+        "φ = {phi:.6f}° (рабочий ход {work:.4f}°, холостой {idle:.4f}°, K = {K:.4f}, θ = {theta:.4f}°)"),
+    "x_warn_idle": (
+        "warning: {file}: {field}: the resisting force {name} acts on the idle (fast) stroke too; give "
+        "stroke = \"working\" if it resists the working stroke only (or stroke = \"both\" to say so)",
+        "внимание: {file}: {field}: сила сопротивления {name} действует и на холостом (быстром) ходу; "
+        "укажите stroke = \"working\", если она действует только на рабочем ходу (или stroke = \"both\", "
+        "если так и задумано)"),
+    "x_warn_idle_only": (
+        "warning: {file}: {field}: the resisting force {name} acts on the idle (fast) stroke only (stroke = "
+        "\"{stroke}\"); give stroke = \"working\" for the working (slow) stroke",
+        "внимание: {file}: {field}: сила сопротивления {name} действует только на холостом (быстром) ходу "
+        "(stroke = \"{stroke}\"); для рабочего (медленного) хода укажите stroke = \"working\""),
+    "x_warn_idle_moment": (
+        "warning: {file}: {field}: the resisting moment {name} acts on the idle (fast) stroke too; give "
+        "stroke = \"working\" if it resists the working stroke only (or stroke = \"both\" to say so)",
+        "внимание: {file}: {field}: момент сопротивления {name} действует и на холостом (быстром) ходу; "
+        "укажите stroke = \"working\", если он действует только на рабочем ходу (или stroke = \"both\", "
+        "если так и задумано)"),
+})

@@ -64,6 +64,21 @@ PHRASES: dict[str, tuple[str, str]] = {
         "v_{F} = v_S + v_{F}S = v_{C} + v_{F}{C}: line through {s} ⟂ S{F}, line through {n3} ⟂ {C}{F}; they meet at {out}",
         "v_{F} = v_S + v_{F}S = v_{C} + v_{F}{C}: через {s} проводим прямую ⟂ S{F}, через {n3} — прямую ⟂ {C}{F}; "
         "точка {out} — их пересечение"),
+    "v_triad_sg": (
+        "Assur's point S ({ax1} and {ax2} meet), a point of the base link: line through {n1} {l1}, line through "
+        "{n2} {l2}; they meet at {out}",
+        "особая точка Ассура S (пересечение: {ax1} и {ax2}), точка базисного звена: через {n1} проводим прямую "
+        "{l1}, через {n2} — прямую {l2}; точка {out} — их пересечение"),
+    "v_triad_fg": (
+        "v_{F} = v_S + v_{F}S: line through {s} ⟂ S{F}, line through {n3} {l3}; they meet at {out}",
+        "v_{F} = v_S + v_{F}S: через {s} проводим прямую ⟂ S{F}, через {n3} — прямую {l3}; "
+        "точка {out} — их пересечение"),
+    "t_axis_leash": ("the axis {A}{D}", "ось {A}{D}"),
+    "t_axis_guide": ("the normal to the guide at {F}", "нормаль к направляющей в точке {F}"),
+    "t_perp": ("⟂ {A}{D}", "⟂ {A}{D}"),
+    "t_par_guide": ("∥ guide of {F}", "∥ направляющей {F}"),
+    "t_axis_slot": ("the normal to the slot of link {j} at {C}", "нормаль к кулисе звена {j} в точке {C}"),
+    "t_par_slot": ("∥ slot of link {j}", "∥ кулисе звена {j}"),
     "similarity": (
         "{lb}: similarity theorem on link {link} ({name} of link {link} from {ref})",
         "{lb}: по теореме подобия на звене {link} (точка {name} звена {link} от {ref})"),
@@ -98,6 +113,13 @@ PHRASES: dict[str, tuple[str, str]] = {
         "a_S: line ⟂ {A}{D} through {m1} and line ⟂ {B}{E} through {m2} (after the normal terms) meet at {out}",
         "a_S: через {m1} проводим прямую ⟂ {A}{D}, через {m2} — прямую ⟂ {B}{E} (после нормальных ускорений); "
         "точка {out} — их пересечение"),
+    "a_triad_sg": (
+        "a_S: line {l1} through {m1} and line {l2} through {m2} (after the normal terms) meet at {out}",
+        "a_S: через {m1} проводим прямую {l1}, через {m2} — прямую {l2} (после нормальных ускорений); "
+        "точка {out} — их пересечение"),
+    "a_triad_fg": (
+        "a_{F}S^τ ⟂ S{F} through {ms} and the line {l3} through {m3} meet at {out}",
+        "через {ms} проводим прямую a_{F}S^τ ⟂ S{F}, через {m3} — прямую {l3}; точка {out} — их пересечение"),
     "a_triad_f": (
         "a_{F}S^τ ⟂ S{F} through {ms} and a_{F}{C}^τ ⟂ {C}{F} through {m3} meet at {out}",
         "через {ms} проводим прямую a_{F}S^τ ⟂ S{F}, через {m3} — прямую a_{F}{C}^τ ⟂ {C}{F}; "
@@ -152,6 +174,19 @@ PHRASES: dict[str, tuple[str, str]] = {
                "{n} ⟂ кулисе, её плечо {mm:.2f} мм: |{n}| = {F:num} Н"),
     "m_name": ("{n}", "{n}"),
     "m_couple_of": ("the couple of {n} is {M:num} N·m", "момент пары {n} равен {M:num} Н·м"),
+    "m_triad_n": (
+        "S is where the axes {A}{D} and {B}{E} meet ({n1}^n and {n2}^n pass through it); {n}^n along {C}{F}, its arm "
+        "h = {mm:.2f} mm ({h:.5g} m), balances them: {n}^n = {N:num} N",
+        "S — точка пересечения осей {A}{D} и {B}{E} (через неё проходят {n1}^n и {n2}^n); {n}^n вдоль {C}{F} "
+        "с плечом h = {mm:.2f} мм ({h:.5g} м) их уравновешивает: {n}^n = {N:num} Н"),
+    "f_block_tau": (
+        "ΣF = 0 along the slot of link {j} for block {k}: {n}^τ (∥ the slot) = {tau:num} N",
+        "ΣF = 0 вдоль кулисы звена {j} для камня {k}: {n}^τ (∥ кулисе) = {tau:num} Н"),
+    "m_triad_ng": (
+        "S is where {ax1} and {ax2} meet ({n1} and {n2} pass through it); {n} along {ax3}, its arm "
+        "h = {mm:.2f} mm ({h:.5g} m), balances them: {n} = {N:num} N",
+        "S — точка пересечения: {ax1} и {ax2} (через неё проходят {n1} и {n2}); {n} вдоль: {ax3}, "
+        "с плечом h = {mm:.2f} мм ({h:.5g} м) их уравновешивает: {n} = {N:num} Н"),
     "m_crank_force": (
         "F_bal ⟂ O{pt} with the arm l = {mm:.2f} mm ({l:.5g} m) balances them: F_bal = {F:num} N "
         "along the motion of {pt}",

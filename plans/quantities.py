@@ -23,12 +23,42 @@ between them: ``F_10_2``, ``F_10_2^τ`` (``F_1_2`` is ``F_12``).
 from __future__ import annotations
 
 import re
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Protocol
 
 if TYPE_CHECKING:
+    from plans.forces.lever import LeverAnalysis
     from plans.forces.polygons import ForceAnalysis, Reaction
+    from plans.kinematics.construction import PositionPlans
+    from plans.kinematics.exact import Kinematics
     from plans.kinematics.plan import Plan
-    from plans.solution import Solution
+    from plans.scene.model import Scene
+
+
+class Forces(Protocol):
+    """A solution's force analysis and lever (:class:`plans.solution.Forces`)."""
+
+    @property
+    def analysis(self) -> ForceAnalysis: ...
+
+    @property
+    def lever(self) -> LeverAnalysis: ...
+
+
+class Solution(Protocol):
+    """What the names are read off: a :class:`plans.solution.Solution`."""
+
+    @property
+    def scene(self) -> Scene: ...
+
+    @property
+    def kinematics(self) -> Kinematics: ...
+
+    @property
+    def plans(self) -> tuple[PositionPlans, ...]: ...
+
+    @property
+    def forces(self) -> Forces | None: ...
+
 
 #: Every kind of quantity by the pattern of its name, first match first.
 PATTERNS: dict[str, re.Pattern[str]] = {
@@ -261,7 +291,7 @@ def _force_value(sol: Solution, name: str, k: int) -> float | None:
     f = sol.forces
     if f is None:
         return None
-    fa, lv = f
+    fa, lv = f.analysis, f.lever
     if name == "F_bal":
         return float(fa.balancing[k])
     if name == "F_bal_lever":

@@ -49,7 +49,7 @@ def to_json(sol: Solution, steps: bool = True) -> dict[str, Any]:
     """The whole result as one dict (``plans solve --json``); :func:`write_json` writes the
     same text position by position.  ``steps=False`` leaves out the construction protocol's
     text (most of the time taken), for a page that draws the plans and reads no protocol."""
-    out = _head(sol)
+    out = head_json(sol)
     out["positions"] = list(_positions(sol, steps))
     return out
 
@@ -58,7 +58,7 @@ def to_json(sol: Solution, steps: bool = True) -> dict[str, Any]:
 _POSITIONS = "\x00positions"
 
 
-def _head(sol: Solution) -> dict[str, Any]:
+def head_json(sol: Solution) -> dict[str, Any]:
     scene = sol.scene
     out: dict[str, Any] = {
         "title": scene.title,
@@ -70,6 +70,8 @@ def _head(sol: Solution) -> dict[str, Any]:
         "structure": sol.structure.to_json(),
         "positions": _POSITIONS,
     }
+    if scene.driver.start:  # the positions from the output's extreme: where, and the strokes
+        out["phi_start"] = scene.driver.strokes.to_json(scene.driver.start)
     if sol.cycle is not None:
         from plans.cycle.results import cycle_json
 
@@ -90,10 +92,10 @@ def _positions(sol: Solution, steps: bool = True) -> Iterator[dict[str, Any]]:
 
         forces = force_json(sol.forces[1])
     for k in range(sol.kinematics.n):
-        yield _position(sol, k, None if forces is None else forces[k], steps)
+        yield position_json(sol, k, None if forces is None else forces[k], steps)
 
 
-def _position(sol: Solution, k: int, forces: dict | None, steps: bool = True) -> dict[str, Any]:
+def position_json(sol: Solution, k: int, forces: dict | None, steps: bool = True) -> dict[str, Any]:
     kin, scene = sol.kinematics, sol.scene
     pos: dict[str, Any] = {"phi_deg": float(kin.phi_deg[k]), "points": {}, "links": {}}
     for nm in kin.point_names():
@@ -114,6 +116,10 @@ def _position(sol: Solution, k: int, forces: dict | None, steps: bool = True) ->
         pos["links"][str(lid)] = le
     if kin.conditions:
         pos["conditioning"] = {g: float(c[k]) for g, c in kin.conditions.items()}
+    if kin.structure.triads():  # class III: Assur's special point of each group
+        from plans.kinematics.triad_plans import assur_points_json
+
+        pos["assur_points"] = assur_points_json(kin, k)
     if sol.plans:
         pp = sol.plans[k]
         pos["plans"] = {}
@@ -145,7 +151,7 @@ def write_json(sol: Solution, write: Callable[[str], object]) -> None:
 
     from plans.io import dumps
 
-    before, after = dumps(_head(sol)).split(json.dumps(_POSITIONS))
+    before, after = dumps(head_json(sol)).split(json.dumps(_POSITIONS))
     write(before)
     opening = "[\n    "
     for pos in _positions(sol):
@@ -175,6 +181,10 @@ def table(sol: Solution, protocol: bool = False, lang: str = "en") -> str:
     kin, scene = sol.kinematics, sol.scene
     title = scene.titles.get(lang, scene.title) if ru else scene.title
     lines = [title, symbols(sol.structure.formula(), lang), ""]
+    if scene.driver.start:
+        from plans.kinematics.extreme import start_line
+
+        lines[-1:-1] = [start_line(scene, lang)]
     for k in range(kin.n):
         lines.append(say("t_position", lang, phi=float(kin.phi_deg[k])))
         if not sol.plans:
@@ -191,9 +201,7 @@ def table(sol: Solution, protocol: bool = False, lang: str = "en") -> str:
             if plan is None:
                 continue
             unit = "mm/(m/s)" if plan.kind == "velocity" else "mm/(m/s^2)"
-            style = scene.scale_style
-            sc = say("t_mu", lang, mu=plan.scale, unit=unit) if style == "mu" else \
-                say("t_k", lang, k=1 / plan.scale, unit=unit.split('/', 1)[1].strip('()'))
+            sc = _scale_phrase(scene.scale_style, plan.scale, unit, lang)
             lines.append(symbols(say("t_plan", lang, kind=say("t_" + plan.kind, lang) if ru else plan.kind,
                                      sc=sc), lang))
             if plan.degenerate:
@@ -239,7 +247,40 @@ def table(sol: Solution, protocol: bool = False, lang: str = "en") -> str:
         line = cycle_line(sol.forces[0], lang)
         if line:
             lines.append(line)
-    return "\n".join(lines)
+    text = "\n".join(lines)
+    if not scene.scale_style.endswith(("|", "mu", "K")):  # the acceleration pole as the scene names it
+        text = _pole_named(text, scene.scale_style, lang)
+    return text
+
+
+def _pole_named(text: str, style: str, lang: str) -> str:
+    """The protocol with the acceleration pole written as ``[sheet] acceleration_pole`` says (the
+    solve's protocol writes no other π)."""
+    import re
+
+    from plans.scene.notation import resolve
+
+    pole = resolve(style, lang)[2]
+    if lang == "ru":
+        return text.replace("π", pole) if pole != "π" else text
+    return re.sub(r"\bp_a(?![A-Z_])", pole, text) if pole != "p_a" else text
+
+
+def _scale_phrase(style: str, mu: float, unit: str, lang: str) -> str:
+    """A plan's scale in the protocol: the scene's letter and direction (plans.scene.notation)."""
+    from plans.phrases import say  # the old "mu" and "K" as they always were
+
+    per = unit.split('/', 1)[1].strip('()')
+    if style == "mu":
+        return say("t_mu", lang, mu=mu, unit=unit)
+    if style == "K":
+        return say("t_k", lang, k=1 / mu, unit=per)
+    from plans.scene.notation import resolve
+
+    letter, per_mm, _ = resolve(style, lang)
+    if not per_mm:
+        return say("t_mu", lang, mu=mu, unit=unit)
+    return say("t_k" if letter == "K" else "x_mu_per_mm", lang, k=1 / mu, unit=f"({per})")
 
 
 def load_and_solve(path: str) -> Solution:

@@ -20,7 +20,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import replace
 from pathlib import PurePath
-from typing import TYPE_CHECKING, Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple, overload
 
 from plans.errors import ConstructionError, PlansError
 
@@ -29,7 +29,9 @@ if TYPE_CHECKING:
     from plans.cycle.dynamics import Dynamics
     from plans.cycle.results import CycleResult
     from plans.forces.lever import LeverAnalysis, Reading
+    from plans.forces.loads import Loads
     from plans.forces.polygons import ForceAnalysis, ForcePolygon
+    from plans.kinematics.centres import Centre, CentreVelocity
     from plans.kinematics.construction import PositionPlans
     from plans.kinematics.exact import Kinematics
     from plans.kinematics.plan import Plan
@@ -116,6 +118,42 @@ class Solution:
         from plans.kinematics.exact import solve
 
         return self._part("kinematics", lambda: solve(self.scene, structure=self.structure))
+
+    def kinematics_to(self, order: int) -> Kinematics:
+        """The exact analysis at the scene's positions to at least ``order`` (2: accelerations):
+        :attr:`kinematics` where the scene's outputs ask for as much, else solved once more
+        at ``order`` and kept (the checker reads accelerations of any scene)."""
+        wanted = 2 if self.scene.wants("acceleration_plan") else 1 if self.scene.wants("velocity_plan") else 0
+        if wanted >= order:
+            return self.kinematics
+        from plans.kinematics.exact import solve
+
+        return self._part(("kinematics", order), lambda: solve(self.scene, order=order, structure=self.structure))
+
+    def plans_at(self, ks: tuple[int, ...], velocity_scale: float | None = None,
+                 acceleration_scale: float | None = None) -> tuple[PositionPlans, ...]:
+        """Both plans at the positions ``ks`` at the given scales (a student's μv, μa; None: the
+        engine's own), built on the exact analysis of order 2, made once per request."""
+        def make() -> tuple[PositionPlans, ...]:
+            from plans.kinematics.construction import build_many
+
+            return tuple(build_many(self.kinematics_to(2), list(ks), velocity_scale=velocity_scale,
+                                    acceleration_scale=acceleration_scale))
+
+        return self._part(("plans at", tuple(ks), velocity_scale, acceleration_scale), make)
+
+    def frictionless(self) -> tuple[Loads, ForceAnalysis]:
+        """The loads and the Bruevich force analysis without friction at the exact analysis of
+        order 2, whatever the outputs ask for: what a hand-drawn sheet's forces are checked
+        against."""
+        def make() -> tuple[Loads, ForceAnalysis]:
+            from plans.forces.loads import parse_loads
+            from plans.forces.polygons import analyse_forces
+
+            loads = self.scene.loads or parse_loads(self.scene)
+            return loads, analyse_forces(self.scene, self.kinematics_to(2), loads)
+
+        return self._part("frictionless", make)
 
     @property
     def plans(self) -> tuple[PositionPlans, ...]:
@@ -253,6 +291,17 @@ class Solution:
         assert lv is not None, "the scene asks for no lever"
         return self._part(("rows", k), lambda: force_rows(lv, k))
 
+    def centres(self, k: int) -> tuple[dict[tuple[int, int], Centre], list[CentreVelocity]]:
+        """The instant centres at position ``k`` (all n(n−1)/2, by Kennedy's theorem) and the
+        named points' velocities read off them."""
+        def make() -> tuple[dict[tuple[int, int], Centre], list[CentreVelocity]]:
+            from plans.kinematics.centres import centres_at, velocities_at
+
+            got = centres_at(self.kinematics, k)
+            return got, velocities_at(self.kinematics, k, got)
+
+        return self._part(("centres", k), make)
+
     def analogue_plans(self) -> tuple[Plan, ...]:
         """Plans of velocity analogues at the dynamics table's positions: velocity plans at
         μ_v = μ/|ω1|, so that each segment is the analogue v/ω1 at μ (mm per m)."""
@@ -309,14 +358,58 @@ def _revolution(sol: Solution, n: int) -> Kinematics:
     return solve(sol.scene, phi_deg=np.linspace(0.0, 360.0, n), order=0, structure=sol.structure)
 
 
-def solve(scene: Scene | str | PurePath, *, fit: float = 1.0) -> Solution:
+#: The other kinds of the file family, each solved by its room into one object whose parts
+#: are computed when first read: kind -> (its record's module:class, the room's entry).
+ROOMS: dict[str, tuple[str, str]] = {
+    "engine": ("plans.balancing.engine:Engine", "plans.balancing.solution:solve_engine"),
+    "gears": ("plans.gears.model:GearFile", "plans.gears.solution:solve_file"),
+    "cam": ("plans.cams.model:Cam", "plans.cams.solution:solve_cam"),
+    "synthesis": ("plans.synthesis.model:Task", "plans.synthesis.solution:solve_task"),
+}
+
+
+def _named(ref: str) -> Any:
+    import importlib
+
+    module, _, name = ref.partition(":")
+    return getattr(importlib.import_module(module), name)
+
+
+@overload
+def solve(scene: Scene, *, fit: float = 1.0) -> Solution: ...
+
+
+@overload
+def solve(scene: Any, *, fit: float = 1.0) -> Any: ...
+
+
+def solve(scene: Any, *, fit: float = 1.0) -> Any:
     """A scene (or the path of its file) solved: a :class:`Solution` whose parts are computed
-    when first read.  ``fit`` < 1 draws the plans, polygons and lever shorter, for a smaller sheet."""
-    if not hasattr(scene, "driver"):
-        from plans.scene.model import load_scene
+    when first read.  ``fit`` < 1 draws the plans, polygons and lever shorter, for a smaller sheet.
 
-        scene = load_scene(str(scene))
-    return Solution(scene, fit)  # type: ignore[arg-type]
+    A file (or record) of another kind is solved by its room (:data:`ROOMS`): an engine into a
+    :class:`plans.balancing.solution.EngineSolution`, gears into a
+    :class:`plans.gears.solution.GearsSolution`, a cam into a
+    :class:`plans.cams.solution.CamSolution`, a synthesis task into a
+    :class:`plans.synthesis.solution.DesignSolution` (``fit`` is the linkage's alone)."""
+    if hasattr(scene, "driver"):
+        return Solution(scene, fit)
+    if isinstance(scene, str | PurePath):
+        from plans.io import read_toml
+        from plans.scene.model import scene_from_dict
+
+        data = read_toml(str(scene))
+        kind = data.get("kind")
+        if isinstance(kind, str) and kind in ROOMS:
+            from plans.kinds import READERS
+
+            return _named(ROOMS[kind][1])(_named(READERS[kind])(data, str(scene)))
+        return Solution(scene_from_dict(data, str(scene)), fit)
+    for record, entry in ROOMS.values():
+        if isinstance(scene, _named(record)):
+            return _named(entry)(scene)
+    raise TypeError(f"plans.solve takes a scene, an engine, gears, a cam, a synthesis task or the path "
+                    f"of its file; got {type(scene).__name__}")
 
 
-__all__ = ["Forces", "REVOLUTION", "Revolution", "Solution", "solve"]
+__all__ = ["Forces", "REVOLUTION", "ROOMS", "Revolution", "Solution", "solve"]

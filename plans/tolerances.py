@@ -14,5 +14,10 @@ ASSEMBLY_REL = 1e-12
 #: A plan point closer than this fraction of the plan's extent to another coincides with it.
 COINCIDE_REL = 1e-9
 
+#: An exact value within this fraction of the plan's reference is zero up to rounding: a
+#: vanishing quantity (v_B at a dead centre) read as 0, a force through the point its moment
+#: is taken about given no arm.
+EXACT_ZERO_REL = 1e-12
+
 #: A group whose construction lines meet at less than ~1e-6 rad is reported as ill-conditioned.
 ILL_CONDITIONED = 1e6

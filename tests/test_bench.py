@@ -206,3 +206,26 @@ def test_coriolis_error_carries_the_velocity_plan_error():
     assert protractor[ak].p95_abs > 0  # the velocity plan's lines are drawn with the protractor
     # the sense of a^k decides where a3 lands: the direction error moves a_A3
     assert protractor["a_A3"].p95_mm > 0.05
+
+
+def test_the_renderer_registers_its_sheet_timers_and_the_goals_read_them(monkeypatch):
+    """``plans bench`` of the drawing package times the sheets in process through the
+    renderer's registered functions (no subprocess, no module named by a string); the sheet
+    goals are the per-sheet means of what the timer returns."""
+    from drawings.cli import build_parser
+    from plans.accuracy import cycle_bench, speed
+
+    build_parser(["bench", "--quick"])
+    assert speed.SHEET_FIGURES and all(callable(f) for f in speed.SHEET_FIGURES)
+    assert callable(cycle_bench.SHEET_TIMERS["cycle diagrams sheet"])
+    fake = {"sheets": {"sheets": 2, "format": "A1", "build_s": 0.2, "svg_s": [0.05, 0.07],
+                       "pdf_s": [0.3, 0.5], "png_s": [0.5, 0.9]}, "load": [1.0, 2.0]}
+    asked = []
+    monkeypatch.setattr(speed, "SHEET_FIGURES", [lambda paths, reps: asked.append((paths, reps)) or fake])
+    goals = speed.sheet_goals(Path(__file__).resolve().parents[1] / "samples", reps=2)
+    assert [Path(p).name for p in asked[0][0]] == ["v_engine.toml", "v_engine_cycle.toml"] and asked[0][1] == 2
+    svg, pdf, png = goals
+    assert svg.met and abs(svg.ratio - 0.06 / speed.SHEET_SVG) < 1e-12
+    assert not png.met and abs(png.ratio - 0.7 / speed.SHEET_PNG) < 1e-12
+    monkeypatch.setattr(speed, "SHEET_FIGURES", [])
+    assert speed.sheet_goals(Path(__file__).resolve().parents[1] / "samples")[0].met is None

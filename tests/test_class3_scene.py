@@ -154,9 +154,6 @@ def _variant(tmp_path: Path, old: str, new: str) -> Path:
 
 
 @pytest.mark.parametrize("old,new,words", [
-    ('outputs = ["positions", "velocity_plan", "acceleration_plan"]',
-     'outputs = ["positions", "velocity_plan", "acceleration_plan", "force_polygons"]',
-     "force analysis of a class III group is not supported yet: group RRR 2-3-4-5"),
     ('axis = ["C", "F"]\nlength = 272', 'axis = ["C", "F"]\nlength = 20', "group RRR 2-3-4-5"),
     ('kind = "R"\nlinks = [3, 5]\npoint = "F"',
      'kind = "P"\nlinks = [3, 5]\npoint = "F"\nguide = { link = 5, through = "C", toward = "F" }',

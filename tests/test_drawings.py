@@ -53,14 +53,15 @@ def _text(el) -> str:
 
 
 def _stated_scale(root, pid: str) -> float:
-    """μ (mm per unit) as written on the sheet: ``μ_v = 6,667 мм/(м/с)`` or ``K_v = 0,15 ...``."""
+    """μ (mm per unit) as written on the sheet: ``μ_v = 6,667 мм/(м/с)``, ``μ_v = 0,15 (м/с)/мм``
+    or ``K_v = 0,15 (m/s)/mm``: the direction read off the unit, whatever the letter."""
     el = root.find(f".//{SVG}text[@id='{pid}-scale']")
     assert el is not None, pid
     t = _text(el)
-    m = re.match(r"\s*([μK])\w*\s*=\s*([-\d.,]+)", t)
+    m = re.match(r"\s*([μK])\w*\s*=\s*([-\d.,]+)\s*(\S+)", t)
     assert m, t
     value = float(m.group(2).replace(",", "."))
-    return value if m.group(1) == "μ" else 1.0 / value
+    return 1.0 / value if m.group(3).endswith(("/мм", "/mm")) else value
 
 
 def _vectors(root, pid: str) -> dict[str, float]:
@@ -150,7 +151,8 @@ def test_component_vectors_are_distinguishable(v_svgs):
 
 def test_scales_written_as_the_course_writes_them(v_svgs):
     root = _sheet_with(v_svgs, "velocity-45")
-    assert _text(root.find(f".//{SVG}text[@id='velocity-45-scale']")).startswith("μv = 5 мм/(м/с)")
+    # a Russian sheet: μ in units per millimetre, as the course writes it (plans.scene.notation)
+    assert _text(root.find(f".//{SVG}text[@id='velocity-45-scale']")).startswith("μv = 0,2 (м/с)/мм")
     assert "M 1:1" in _text(root.find(f".//{SVG}text[@id='scheme-45-scale']"))
 
 

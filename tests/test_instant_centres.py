@@ -129,23 +129,46 @@ def test_four_bar_rocker_at_its_extreme_turns_about_the_crank_pivot() -> None:
     _check(kin, 0, size)
 
 
-def test_six_bar_at_the_stroke_end_names_what_kennedy_cannot_fix() -> None:
-    """At φ = 90° the crank lies along the rocker: rocker, blocks and ram all stand still.
-    Blocks 2 and 4 are at rest relative to each other (any point is their centre), and every
-    Kennedy line of P15 is the line OC: both are reported undetermined, with the reason;
-    every other centre agrees with the definition."""
+def test_six_bar_with_the_crank_along_the_rocker_fixes_what_kennedy_lines_cannot() -> None:
+    """At φ = 90° the crank lies along the rocker: every Kennedy line of P15 is the line OC,
+    and blocks 2 and 4 slide in one slot.  The draftsman fixes P15 on that line by the
+    angular velocities (through a third link k: (ω1 − ωk)(P − P1k) = (ω5 − ωk)(P − Pk5)) and
+    puts P24 at infinity ⟂ the slot (ω2 = ω4); both agree with the definition, as does every
+    other centre, and the velocities by the centres with the exact ones."""
     kin = solve(load_scene(SAMPLES / "six_bar.toml"), phi_deg=[90.0], order=1)
     got = centres_at(kin, 0)
     size = kin.reach()
-    undetermined = {key: c.why for key, c in got.items() if c.point is None and c.direction is None}
-    assert undetermined == {(1, 5): "Kennedy's lines coincide", (2, 4): "no two Kennedy lines reach it"}
-    for (i, j), c in got.items():
-        if (i, j) in undetermined:
-            continue
-        kind, z = _oracle(kin, i, j, 0)
-        if kind == "point":
-            assert c.point is not None and abs(c.point - z) < 1e-9 * size, (i, j)
+    assert all(c.point is not None or c.direction is not None for c in got.values())
+    assert {key for key, c in got.items() if c.by} == {(1, 5), (2, 4)}
+    assert got[(1, 5)].to_json()["by"] == "omega_ratio"
+    _check(kin, 0, size)
+    kind, z = _oracle(kin, 1, 5, 0)
+    assert kind == "point" and abs(got[(1, 5)].point - z) < 1e-9 * size
+    v_ref = abs(kin.scene.driver.omega) * size
+    for cv in velocities_at(kin, 0, got):
+        assert cv.v is not None and abs(cv.v - cv.exact) <= 1e-9 * v_ref, cv.point
     json.dumps([c.to_json() for c in got.values()], allow_nan=False)
+
+
+def test_six_bar_at_the_stroke_end_takes_p16_for_p15() -> None:
+    """At the ram's stroke end (ω3 = 0, the crank ⟂ the rocker) the ram stands still: P15 is
+    the crank's point at rest, its pivot P16, as the draftsman takes it."""
+    scene = load_scene(SAMPLES / "six_bar.toml")
+    phis = np.arange(0.0, 360.0, 5.0)
+    w = solve(scene, phi_deg=phis, order=1).omega(3)
+    k0 = int(np.flatnonzero(np.sign(w[:-1]) != np.sign(w[1:]))[0])
+    lo, hi = float(phis[k0]), float(phis[k0 + 1])
+    w_lo = float(w[k0])
+    for _ in range(60):  # bisection on the sign of ω3
+        mid = 0.5 * (lo + hi)
+        wm = float(solve(scene, phi_deg=[mid], order=1).omega(3)[0])
+        lo, hi, w_lo = (mid, hi, wm) if (wm > 0) == (w_lo > 0) else (lo, mid, w_lo)
+    kin = solve(scene, phi_deg=[lo], order=1)
+    size = kin.reach()
+    got = centres_at(kin, 0)
+    assert abs(got[(1, 5)].point - got[(1, 6)].point) < 1e-9 * size
+    assert all(c.point is not None or c.direction is not None for c in got.values())
+    _check(kin, 0, size)
 
 
 def test_coincident_kennedy_lines_leave_the_centre_undetermined_not_nan() -> None:

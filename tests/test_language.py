@@ -100,9 +100,12 @@ def test_the_scene_language_is_the_default(capsys):
     assert "velocity plan" in capsys.readouterr().out
 
 
-def test_same_numbers_in_both_languages(capsys):
-    """Russian changes the words and the decimal sign, never a number."""
-    path = SAMPLES / "four_bar.toml"
+def test_same_numbers_in_both_languages(capsys, tmp_path):
+    """Russian changes the words and the decimal sign, never a number (the scales written one
+    way in both: a Russian protocol writes μ in units per mm by default)."""
+    path = tmp_path / "four_bar.toml"
+    path.write_text((SAMPLES / "four_bar.toml").read_text(encoding="utf-8") + '\n[scales]\nstyle = "mu"\n',
+                    encoding="utf-8")
     en = _run(capsys, "solve", path, ["--protocol"], "en")
     ru = _run(capsys, "solve", path, ["--protocol"], "ru")
     nums = re.compile(r"(?<![\w^])-?\d+(?:[.,]\d+)?(?:e[-+]\d+)?")

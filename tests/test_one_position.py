@@ -21,7 +21,8 @@ from plans.accuracy.draftsman import DraftsmanModel, NoisyPencil
 from plans.errors import Locked
 from plans.kinematics import construction
 from plans.kinematics.cases import Arrays, Numbers
-from plans.kinematics.dyads import Builder, PerfectPencil, Scheme, plans_of
+from plans.kinematics.construction import plans_of
+from plans.kinematics.dyads import Builder, PerfectPencil, Scheme
 from plans.kinematics.exact import solve
 from plans.scene.model import load_scene
 

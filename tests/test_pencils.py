@@ -10,7 +10,8 @@ import pytest
 
 from plans.accuracy.draftsman import DraftsmanModel, NoisyPencil
 from plans.kinematics import construction
-from plans.kinematics.dyads import PerfectPencil, Scheme, plans_of
+from plans.kinematics.construction import plans_of
+from plans.kinematics.dyads import PerfectPencil, Scheme
 from plans.kinematics.exact import solve
 from plans.scene.model import load_scene
 
@@ -67,13 +68,14 @@ def test_positions_built_together_are_the_positions_built_one_by_one(path):
 def test_protocol_is_written_only_when_read():
     kin = solve(load_scene(SAMPLES[0].parent / "shaper.toml"), order=2)
     plans = construction.build_all(kin)
-    steps = plans[3].velocity.steps
-    assert steps._steps is None  # built together: no sentence written yet
+    written = plans[3].velocity.steps._source._protocols  # kept by the construction that built the plans
+    assert written == {}  # built together: no sentence written yet
     text = plans[3].velocity.protocol()
     mv, ma = _scales(kin)
     assert text == construction.build(kin, 3, velocity_scale=mv, acceleration_scale=ma).velocity.protocol()
     assert "meet at" in text and "similarity" in text
-    assert plans[4].velocity.steps._steps is None  # other positions still unwritten
+    assert list(written) == [("velocity", 3)]  # other positions still unwritten
+    assert plans[3].velocity.steps[0] is written[("velocity", 3)][0]  # and written once
 
 
 def test_monte_carlo_runs_the_construction_with_a_noisy_pencil():

@@ -23,7 +23,8 @@ from plans.scene.model import load_scene, scene_from_dict
 ROOT = Path(__file__).resolve().parent.parent
 SAMPLES = ROOT / "samples"
 V_ENGINE = SAMPLES / "v_engine.toml"
-LINKAGES = [p for p in sorted(SAMPLES.glob("*.toml")) if read_kind(p)[0] == "linkage"]
+#: every linkage sample, those of the folders (instant centres, class III, a project, a flywheel) too
+LINKAGES = [p for p in sorted(SAMPLES.rglob("*.toml")) if "checks" not in p.parts and read_kind(p)[0] == "linkage"]
 
 
 @pytest.fixture(scope="module")
@@ -167,7 +168,7 @@ def test_parts_are_computed_once_and_only_when_read(monkeypatch):
     assert sol.forces is sol.forces and sol.lever is sol.forces.lever
 
 
-@pytest.mark.parametrize("path", LINKAGES, ids=[p.stem for p in LINKAGES])
+@pytest.mark.parametrize("path", LINKAGES, ids=[str(p.relative_to(SAMPLES).with_suffix("")) for p in LINKAGES])
 def test_plans_draw_solves_each_scene_once(path, monkeypatch):
     """``plans draw``: one Solution, whose exact analysis runs at the scene's positions once
     and over one revolution once (what the sheets read of the plan of positions, the strokes
@@ -194,6 +195,11 @@ def test_plans_draw_solves_each_scene_once(path, monkeypatch):
         return solve(scene, phi_deg, *a, **kw)
 
     monkeypatch.setattr(exact, "solve", counted_solve)
+    from plans.kinematics import construction
+
+    built = []  # the plans' construction: every position's plans together, at most once
+    build_all = construction.build_all
+    monkeypatch.setattr(construction, "build_all", lambda kin, *a, **kw: built.append(kin.n) or build_all(kin, *a, **kw))
     from drawings import cycle, linkage
 
     for module in (linkage, cycle):  # the layout of the panels on the sheets solves nothing: not timed here
@@ -206,6 +212,7 @@ def test_plans_draw_solves_each_scene_once(path, monkeypatch):
     # stroke, the dynamics' integration) are the engine's, not the sheets'
     assert solves.count(0) == 1 and solves.count(solution.REVOLUTION) <= 1
     assert 73 not in solves and 37 not in solves, solves
+    assert built == ([len(scene.driver.phis_deg)] if scene.wants("velocity_plan") else []), built
     solves.clear()  # drawn again from a Solution whose parts are made: nothing is solved
     sol = solution.Solution(scene)
     for part in ("plans", "forces", "cycle"):
@@ -214,7 +221,8 @@ def test_plans_draw_solves_each_scene_once(path, monkeypatch):
     if not scene.wants("velocity_plan"):
         sol.analogue_plans()
     solves.clear()
-    assert linkage.draw(sol).panels and solves == []
+    built.clear()
+    assert linkage.draw(sol).panels and solves == [] and built == []
     assert len(solutions) == 2
 
 

@@ -53,7 +53,7 @@ def server(tmp_path_factory):
 def _req(url: str, method: str = "GET", body: bytes | None = None, headers: dict | None = None):
     rq = urllib.request.Request(url, data=body, method=method, headers=headers or {})
     try:
-        with urllib.request.urlopen(rq, timeout=20) as r:
+        with urllib.request.urlopen(rq, timeout=120) as r:
             return r.status, r.headers.get("Content-Type", ""), r.read()
     except urllib.error.HTTPError as e:
         return e.code, e.headers.get("Content-Type", ""), e.read()
@@ -275,6 +275,9 @@ def test_page_builds_edits_saves_and_reloads_a_four_bar(browser, server):
     pg.wait_for_selector("body[data-drag='done']")
     dx = float(pg.input_value("#f-points\\.D-0"))
     assert 300 < dx < 360
+    # the structure box lists the pivot where it was dragged to
+    shown_x = pg.input_value("#f-points\\.D-0")
+    assert pg.text_content("[data-item='pivot-D'] span").startswith(f"D = [{shown_x}, ")
 
     # the force polygons of the current position: the coupler's weight m2·g straight down at μF
     pg.click("#show-forces")

@@ -84,8 +84,7 @@ def _build(item: Any, group: str, lang: str) -> list[Any]:
     if group.startswith("dyn-"):
         from .. import cycle
 
-        make = {"dyn-M": cycle._m_panel, "dyn-A": cycle._a_panel, "dyn-T": cycle._t_panel,
-                "dyn-I": cycle._i_panel, "dyn-W": cycle._w_panel, "dyn-w": cycle._omega_panel}[group]
+        make = cycle.DYNAMICS_DIAGRAMS[group.removeprefix("dyn-")]
         return [make(cyc.dynamics, lang)]
     from ..linkage import build_panels, fit_for
 

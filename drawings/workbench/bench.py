@@ -32,7 +32,8 @@ def _server(root: Path) -> tuple[Any, str]:
 
 
 def server_share(scene: Path, reps: int = 15) -> dict[str, Any]:
-    """Median seconds of ``POST /api/edit`` (the crank's length) then ``POST /api/solve``."""
+    """Median seconds of ``POST /api/edit?solve=1`` (the crank's length set and the scene
+    solved, in one answer, as the page asks), each edit a length not solved before."""
     import http.client
     import tomllib
 
@@ -44,31 +45,34 @@ def server_share(scene: Path, reps: int = 15) -> dict[str, Any]:
         srv, host = _server(Path(tmp))
         conn = http.client.HTTPConnection(host, timeout=30)
 
-        spent = [0.0]
-
-        def post(path: str, body: bytes, ctype: str) -> bytes:
+        def post(path: str, body: bytes, ctype: str) -> tuple[bytes, float, float]:
             conn.request("POST", path, body=body, headers={"Content-Type": ctype})
             r = conn.getresponse()
             out = r.read()
             if r.status != 200:
                 raise RuntimeError(f"{path}: {r.status} {out[:200]!r}")
-            spent[0] += float((r.headers.get("Server-Timing") or "dur=nan").split("dur=")[1]) / 1000
-            return out
+            timing = dict(part.strip().split(";dur=") for part in (r.headers.get("Server-Timing") or "").split(","))
+            return out, float(timing["app"]) / 1000, float(timing["cpu"]) / 1000
 
-        times, walls = [], []
+        times, walls, cpus = [], [], []
         for k in range(reps + 2):
-            t0, spent[0] = time.perf_counter(), 0.0
-            text = json.loads(post("/api/edit", json.dumps(  # as the page does: each edit on the last text
-                {"text": text, "set": [[["links", crank, "length"], length * (1 + 0.01 * (k % 3))]]}).encode(),
-                "application/json"))["text"]
-            answer = post("/api/solve?steps=0", text.encode("utf-8"), "text/plain; charset=utf-8")
+            t0 = time.perf_counter()
+            answer, spent, cpu = post("/api/edit?solve=1&steps=0&view=page&at=0", json.dumps(  # as the page does: each edit on the last text
+                {"text": text, "set": [[["links", crank, "length"], round(length * (1 + 0.002 * (k + 1)), 6)]]}
+            ).encode(), "application/json")
+            got = json.loads(answer)
+            if "solution" not in got:
+                raise RuntimeError(f"the edit was not solved: {got.get('solve_error')}")
+            text = got["text"]
             if k >= 2:  # the first two warm the imports and caches
-                times.append(spent[0])
+                times.append(spent)
+                cpus.append(cpu)
                 walls.append(time.perf_counter() - t0)
-        positions = len(json.loads(answer)["positions"])
+        positions = len(got["solution"]["positions"])
         conn.close()
         srv.should_exit = True
     return {"scene": scene.name, "positions": positions, "server_s": statistics.median(times),
+            "server_cpu_s": statistics.median(cpus),
             "loopback_s": statistics.median(walls), "answer_bytes": len(answer)}
 
 
@@ -110,7 +114,7 @@ def page_round_trip(scene: Path, reps: int = 7) -> float | None:
                           }
                         }).observe(document.body, {attributes: true});
                         e.dispatchEvent(new Event("change"));
-                    })""", [sel, round(length * (1 + 0.01 * (k % 3 + 1)), 3), before])
+                    })""", [sel, round(length * (1 + 0.002 * (k + 1)), 6), before])
                 if k:
                     times.append(t)
             b.close()

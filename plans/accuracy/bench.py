@@ -42,7 +42,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from plans.accuracy import fuzz, newton, speed
+from plans.accuracy import fuzz, newton, speed, vengine_goals
 from plans.accuracy.draftsman import DraftsmanModel, draftsman_errors
 from plans.accuracy.markdown import goal_line, markdown, summary_table
 from plans.accuracy.oracles import (
@@ -348,7 +348,7 @@ def run_bench(quick: bool = False, samples: Path | None = None, progress: Callab
     stability = stability_records()
     stiff = stiff_load_records(samples)
     log("performance goals ...")
-    goals = speed.performance_goals(samples, budget)
+    goals = vengine_goals.performance_goals(samples, budget)
     from plans.accuracy.synthesis_bench import synthesis_goals  # one design per model, proven
 
     goals += synthesis_goals(samples, budget)

@@ -4,21 +4,20 @@
 (goal: under 0.2 s) when the renderer has registered its timer.
 
 The renderer is not imported here (``plans`` never imports ``drawings``): the drawing
-package puts ``name -> "module:function"`` into :data:`SHEET_TIMERS` when it builds the
-command line; the function takes a scene path and returns seconds.
+package puts ``name -> function`` into :data:`SHEET_TIMERS` when it builds the command
+line; the function takes a scene path and the repeats and returns seconds.
 """
 
 from __future__ import annotations
 
 import dataclasses
-import importlib
 import time
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-#: Timers of the cycle's sheets, registered by the renderer: name -> "module:function".
-SHEET_TIMERS: dict[str, str] = {}
+#: Timers of the cycle's sheets, registered by the renderer: name -> (scene path, repeats) -> seconds.
+SHEET_TIMERS: dict[str, Callable[[Path, int], float]] = {}
 # the dynamics integrates the loads' work by Gauss–Legendre between the points where they are
 # not smooth (five evaluations per step of the exact grid) and refines the flywheel's extremes
 # between the grid angles: exact to 1e-9, at about three times the trapezoid's cost
@@ -72,11 +71,9 @@ def records(samples: Path, quick: bool = False) -> list[Any]:
                           note=f"graphical flywheel error; work integrated to {d.flywheel.work_bound:.1e} J; "
                                f"goal {goal:g} s ({'met' if t < goal else 'missed'})"))
     veng = samples / "v_engine_cycle.toml"
-    for name, ref in sorted(SHEET_TIMERS.items()):
+    for name, timer in sorted(SHEET_TIMERS.items()):
         if not veng.is_file():
             break
-        mod, _, fn = ref.partition(":")
-        timer = getattr(importlib.import_module(mod), fn)
         t = float(timer(veng, 2 if quick else 5))
         goal = GOALS_S.get(name, 0.0)
         out.append(Record(name, veng.stem, 1, 0.0, t, t, param="svg",

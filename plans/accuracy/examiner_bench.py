@@ -21,7 +21,7 @@ from typing import Any
 
 import numpy as np
 
-from plans.accuracy.speed import Goal
+from plans.accuracy.timing import Goal
 
 NAMED_RATE = 0.95  # the planted cause named alone or first
 CLEAN_RATE = 0.99  # a clean submission gets no finding at all

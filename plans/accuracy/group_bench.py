@@ -15,7 +15,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from plans.accuracy.speed import Goal
+from plans.accuracy.timing import Goal
 
 VARIANTS_S = 60.0  # 30 variants, sheets included, on 2 cores with --jobs 2
 CHECK_S = 5.0  # 30 submissions checked, the gradebook written

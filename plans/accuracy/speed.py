@@ -13,25 +13,22 @@ needs a missing peer says "skipped" and why.
 
 from __future__ import annotations
 
-import cProfile
 import functools
-import io
 import json
 import math
-import pstats
 import subprocess
 import sys
 import time
 from collections.abc import Callable
-from dataclasses import asdict, dataclass
+from dataclasses import asdict
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from plans.accuracy import floor, peers
-from plans.accuracy.oracles import timeit
-from plans.kinematics import construction, exact
+from plans.accuracy.timing import Goal, commands_seconds, interpreter_env, median_time, paired, us
+from plans.kinematics import exact
 from plans.kinematics.structure import analyse
 from plans.scene.model import Scene, load_scene
 
@@ -55,50 +52,6 @@ START_OWN = 0.025
 SOLVE_BUDGET = 0.10
 
 
-@dataclass
-class Goal:
-    goal: str
-    measured: str
-    ratio: float  # measured over the goal's bound (≤ 1 met), or the speed-up for "ahead" goals
-    met: bool | None  # None: not measured (the reason in ``measured``)
-
-    def line(self) -> str:
-        state = "met" if self.met else "skipped" if self.met is None else "NOT met"
-        r = "" if math.isnan(self.ratio) else f" [{self.ratio:.2f}]"
-        return f"{state:8s} {self.goal}: {self.measured}{r}"
-
-
-def median_time(fn: Callable[[], Any], reps: int = 7, least: float = 2e-3) -> float:
-    """Median over ``reps`` of the mean time of a batch long enough to time (≥ ``least`` s)."""
-    t0 = time.perf_counter()
-    fn()
-    one = time.perf_counter() - t0
-    inner = max(1, int(least / max(one, 1e-9)))
-    ts = []
-    for _ in range(reps):
-        t0 = time.perf_counter()
-        for _ in range(inner):
-            fn()
-        ts.append((time.perf_counter() - t0) / inner)
-    return sorted(ts)[len(ts) // 2]
-
-
-def paired(fa: Callable[[], Any], fb: Callable[[], Any], reps: int = 7) -> tuple[float, float, float]:
-    """Times of ``fa`` and ``fb`` measured turn about (median of each) and the median of the
-    per-turn ratio fa/fb: on a shared machine the load drifts less within one turn."""
-    ta, tb, ratios = [], [], []
-    fa()
-    fb()
-    for _ in range(reps):
-        a = median_time(fa, reps=3, least=1e-3)
-        b = median_time(fb, reps=3, least=1e-3)
-        ta.append(a)
-        tb.append(b)
-        ratios.append(a / b)
-    mid = reps // 2
-    return sorted(ta)[mid], sorted(tb)[mid], sorted(ratios)[mid]
-
-
 def mechanisms(samples: Path) -> list[tuple[str, Scene]]:
     """The slider-crank and the four-bar of the reference, and the V-engine sample."""
     from plans.accuracy import reference
@@ -109,10 +62,6 @@ def mechanisms(samples: Path) -> list[tuple[str, Scene]]:
     if v.exists():
         out.append(("v_engine", load_scene(v)))
     return out
-
-
-def _us(t: float) -> str:
-    return f"{t * 1e6:.1f} µs" if t < 1e-3 else f"{t * 1e3:.2f} ms" if t < 1 else f"{t:.2f} s"
 
 
 def kinematics_goals(cases: list[tuple[str, Scene]], peer_runs: list[peers.PeerRun]) -> list[Goal]:
@@ -129,7 +78,7 @@ def kinematics_goals(cases: list[tuple[str, Scene]], peer_runs: list[peers.PeerR
         if fl is not None:
             t_ours, t_floor, r = paired(ours, functools.partial(fl, phis))
             out.append(Goal(f"exact kinematics, 360 positions, {name}: within {FLOOR_RATIO}× of the numpy floor",
-                            f"{_us(t_ours / 360)} per position, floor {_us(t_floor / 360)}, {r:.2f}×",
+                            f"{us(t_ours / 360)} per position, floor {us(t_floor / 360)}, {r:.2f}×",
                             r / FLOOR_RATIO, r <= FLOOR_RATIO))
         pr = by.get(("pylinkage + numba", name))
         if pr is not None and math.isfinite(pr.time_per_position):
@@ -138,7 +87,7 @@ def kinematics_goals(cases: list[tuple[str, Scene]], peer_runs: list[peers.PeerR
                 pr.time_per_position = t_peer / 360
             speed = pr.time_per_position / (t_ours / 360)
             out.append(Goal(f"exact kinematics, 360 positions, {name}: ≥ {PEER_SPEEDUP:g}× ahead of pylinkage + numba",
-                            f"pylinkage + numba {_us(pr.time_per_position)} per position, ours {_us(t_ours / 360)}: "
+                            f"pylinkage + numba {us(pr.time_per_position)} per position, ours {us(t_ours / 360)}: "
                             f"{speed:.2f}× ahead", PEER_SPEEDUP / speed, speed >= PEER_SPEEDUP))
             e = pr.errors.get("r", math.nan)
             out.append(Goal(f"positions, {name}: agree with pylinkage to {POSITIONS_AGREE:g}",
@@ -154,11 +103,11 @@ def kinematics_goals(cases: list[tuple[str, Scene]], peer_runs: list[peers.PeerR
         extra = ""
         ahead = True
         if step is not None and math.isfinite(step.time_per_position):
-            extra = f"; pylinkage's step {_us(step.time_per_position)} (positions only)"
+            extra = f"; pylinkage's step {us(step.time_per_position)} (positions only)"
             ahead = t1 <= step.time_per_position
         if bound is not None:
-            out.append(Goal(f"one position, {name}: ≤ {_us(bound)} and ahead of pylinkage's step",
-                            f"{_us(t1)} (positions, v, a){extra}", t1 / bound, t1 <= bound and ahead))
+            out.append(Goal(f"one position, {name}: ≤ {us(bound)} and ahead of pylinkage's step",
+                            f"{us(t1)} (positions, v, a){extra}", t1 / bound, t1 <= bound and ahead))
     return out
 
 
@@ -179,8 +128,8 @@ def structure_goal() -> list[Goal]:
 
     t100, t200 = once(CHAIN_DYADS // 2), once(CHAIN_DYADS)
     growth = t200 / t100
-    return [Goal(f"chain of {CHAIN_DYADS} dyads, one position, structure analysis included: ≤ {_us(CHAIN_ONE_POSITION)}",
-                 f"{_us(t200)}; {_us(t200 / CHAIN_DYADS)} per dyad (×{growth:.2f} from {CHAIN_DYADS // 2} to "
+    return [Goal(f"chain of {CHAIN_DYADS} dyads, one position, structure analysis included: ≤ {us(CHAIN_ONE_POSITION)}",
+                 f"{us(t200)}; {us(t200 / CHAIN_DYADS)} per dyad (×{growth:.2f} from {CHAIN_DYADS // 2} to "
                  f"{CHAIN_DYADS} dyads: linear is ×2)", t200 / CHAIN_ONE_POSITION, t200 <= CHAIN_ONE_POSITION)]
 
 
@@ -199,56 +148,9 @@ def forces_goal(cases: list[tuple[str, Scene]]) -> list[Goal]:
         both, alone, _ = paired(both_fn, functools.partial(exact.solve, sc, phis, order=2))
         t = max(both - alone, 0.0)
         tl = median_time(functools.partial(parse_loads, sc))
-        out.append(Goal(f"forces and lever, 360 positions, {name}: ≤ {_us(FORCES_360)}",
-                        f"{_us(t)} (loads read in {_us(tl)})", t / FORCES_360, t <= FORCES_360))
+        out.append(Goal(f"forces and lever, 360 positions, {name}: ≤ {us(FORCES_360)}",
+                        f"{us(t)} (loads read in {us(tl)})", t / FORCES_360, t <= FORCES_360))
     return out
-
-
-def _interpreter_env() -> dict[str, str]:
-    """The environment of the fresh interpreters timed here: bytecode compiled and kept (in
-    a cache folder of its own, the source tree untouched), as an installed ``plans`` has it;
-    one BLAS thread, as the rest of the bench."""
-    import os
-    import tempfile
-
-    env = dict(os.environ)
-    env.pop("PYTHONDONTWRITEBYTECODE", None)
-    env["PYTHONPYCACHEPREFIX"] = str(Path(tempfile.gettempdir()) / "plans-bench-pycache")
-    env.setdefault("OPENBLAS_NUM_THREADS", "1")
-    return env
-
-
-def _commands_seconds(runs: dict[str, list[str]], root: Path, env: dict[str, str],
-                      reps: int) -> dict[str, tuple[float, float, int]]:
-    """Median wall time of each ``python args`` in a fresh interpreter, the median processor
-    time it took (user and system; NaN where the platform does not tell) and its exit status,
-    after one run of each that compiles its bytecode.  The commands take turns, one run of
-    each per turn: on a shared machine the load drifts less within a turn, so the floor
-    and the commands measured beside it see the same machine."""
-    try:
-        import resource
-    except ImportError:  # pragma: no cover - not POSIX
-        resource = None  # type: ignore[assignment]
-
-    def processor() -> float:
-        if resource is None:  # pragma: no cover
-            return math.nan
-        r = resource.getrusage(resource.RUSAGE_CHILDREN)
-        return r.ru_utime + r.ru_stime
-
-    wall: dict[str, list[float]] = {name: [] for name in runs}
-    cpu: dict[str, list[float]] = {name: [] for name in runs}
-    status = {name: subprocess.run([sys.executable, *args], cwd=root, capture_output=True, env=env).returncode
-              for name, args in runs.items()}
-    for _ in range(reps):
-        for name, args in runs.items():
-            c0, t0 = processor(), time.perf_counter()
-            p = subprocess.run([sys.executable, *args], cwd=root, capture_output=True, env=env)
-            wall[name].append(time.perf_counter() - t0)
-            cpu[name].append(processor() - c0)
-            status[name] = status[name] or p.returncode
-    mid = reps // 2
-    return {name: (sorted(wall[name])[mid], sorted(cpu[name])[mid], status[name]) for name in runs}
 
 
 #: The ``plans`` console command as the installed script runs it (``{entry}``: its module).
@@ -269,10 +171,10 @@ def start_up_goals(samples: Path, reps: int = 5) -> list[Goal]:
     import importlib.util
 
     root = Path(__file__).resolve().parents[2]
-    env = _interpreter_env()
+    env = interpreter_env()
     entry = "drawings.console" if importlib.util.find_spec("drawings") is not None else "plans.cli"
     scene = str(samples / "slider_crank.toml")
-    t = _commands_seconds({
+    t = commands_seconds({
         "floor": ["-c", "import numpy"],
         # the floor of the start, stopped as the start is (no clean-up at exit, which costs numpy
         # 8–17 ms here): like is compared with like
@@ -316,21 +218,24 @@ SHEET_SVG, SHEET_PDF, SHEET_PNG, DIAGRAMS_SVG = 0.1, 0.4, 0.6, 0.2
 SHEET_DXF, SHEET_DXF_PER_SVG = 0.1, 5.0
 
 
+#: The renderer's timer of a scene's sheets, registered by the drawing package when it builds
+#: ``plans bench`` (``plans`` never imports ``drawings``): (scene paths, repeats) -> figures
+#: (:func:`drawings.bench.figures`: the sheets drawn through ``drawings.draw``).
+SHEET_FIGURES: list[Callable[[list[str], int], dict[str, Any]]] = []
+
+
 def sheet_goals(samples: Path, reps: int = 3) -> list[Goal]:
     """The V-engine's sheets written as SVG, PDF and PNG at 150 dpi, per sheet, and the
-    cycle's diagrams sheet as SVG, timed by the renderer in a fresh interpreter
-    (``python -m drawings.bench --json``; the engine never imports it)."""
-    root = Path(__file__).resolve().parents[2]
+    cycle's diagrams sheet as SVG, timed by the renderer's public API in this process
+    (:data:`SHEET_FIGURES`); skipped where the renderer is not installed."""
     scenes = [str(samples / "v_engine.toml"), str(samples / "v_engine_cycle.toml")]
     scenes = [s for s in scenes if Path(s).is_file()]
     if not scenes or not scenes[0].endswith("v_engine.toml"):
         return [Goal("sheets", "skipped: samples/v_engine.toml missing", math.nan, None)]
-    p = subprocess.run([sys.executable, "-m", "drawings.bench", "--json", "--repeat", str(reps), *scenes],
-                       cwd=root, capture_output=True, text=True, env=_interpreter_env())
-    if p.returncode != 0:
-        why = (p.stderr.strip().splitlines() or [f"exit status {p.returncode}"])[-1]
-        return [Goal("sheets", f"skipped: {why}", math.nan, None)]
-    fig = json.loads(p.stdout)
+    if not SHEET_FIGURES:
+        return [Goal("sheets", "skipped: the renderer is not installed (plans bench of the drawings package)",
+                      math.nan, None)]
+    fig = SHEET_FIGURES[0](scenes, reps)
     sh = fig["sheets"]
     n = sh["sheets"]
     load = "/".join(f"{x:.1f}" for x in fig["load"])
@@ -376,7 +281,7 @@ def note_goals(samples: Path, reps: int = 3) -> list[Goal]:
         return [Goal("explanatory note", "skipped: samples/projects/v_engine_project.toml missing", math.nan, None)]
     root = Path(__file__).resolve().parents[2]
     p = subprocess.run([sys.executable, "-m", "drawings.note.cli", str(scene), str(reps)], cwd=root,
-                       capture_output=True, text=True, env=_interpreter_env())
+                       capture_output=True, text=True, env=interpreter_env())
     if p.returncode != 0:
         why = (p.stderr.strip().splitlines() or [f"exit status {p.returncode}"])[-1]
         return [Goal("explanatory note", f"skipped: {why}", math.nan, None)]
@@ -452,117 +357,6 @@ def measure(samples: Path, log: Callable[[str], None] | None = None, with_peers:
             "peers": [{k: v for k, v in asdict(r).items() if k != "runner"} for r in runs]}
 
 
-# --------------------------------------------------------------------------- the V-engine's goals
-
-#: The performance goals on this class of machine: (key, what is measured, limit, unit).
-#: A time ("s") is met at or below its limit, a speed-up ("×") at or above it.
-GOALS = (
-    ("exact_360", "exact kinematics of 360 V-engine positions (v and a)", 300e-6, "s"),
-    ("construction_1", "construction of both plans of the V-engine at one position", 500e-6, "s"),
-    ("construction_360", "both plans of 360 V-engine positions built together, against one position "
-                         "at a time", 20.0, "×"),
-    ("friction_360", "force analysis with friction in every pair of 360 V-engine positions (successive "
-                     "approximation, lever included), against the frictionless one", 5.0, "× cost"),
-)
-
-
-def _goal(key: str, what: str, limit: float, unit: str, value: float) -> dict[str, Any]:
-    met = value <= limit if unit in ("s", "× cost") else value >= limit
-    return {"key": key, "goal": what, "value": value, "limit": limit, "unit": unit, "met": bool(met)}
-
-
-def performance_goals(samples: Path, budget: float) -> list[dict[str, Any]]:
-    """Each goal of :data:`GOALS` measured on the V-engine, with a profile when it is not met."""
-    f = samples / "v_engine.toml"
-    if not f.exists():
-        return []
-    sc = load_scene(f)
-    phis = np.linspace(0.0, 360.0, 360, endpoint=False)
-    k1 = exact.solve(sc, [45.0], order=2)
-    work: dict[str, Callable[[], Any]] = {
-        "exact_360": lambda: exact.solve(sc, phis, order=2),
-        "construction_1": lambda: construction.build(k1, 0),
-    }
-    out = []
-    for key, what, limit, unit in GOALS:
-        if key == "construction_360":
-            g = _together(sc, phis, what, limit, budget)
-        elif key == "friction_360":
-            g = friction_cost(samples, phis, what, limit)
-        else:
-            g = _goal(key, what, limit, unit, timeit(work[key], budget))
-            if not g["met"]:
-                g["profile"] = profile(work[key], 200)
-        out.append(g)
-    return out
-
-
-def _together(sc: Scene, phis: np.ndarray, what: str, limit: float, budget: float) -> dict[str, Any]:
-    """The plans of 360 positions as one construction over arrays (readings included, as
-    arrays) against the same construction run position by position; the readings of the
-    two agree (the largest difference over all readings is reported)."""
-    kin = exact.solve(sc, phis, order=2)
-    mv, ma = construction.default_scales(kin)
-    together = timeit(lambda: construction.build_all(kin), budget)
-    one_by_one = timeit(lambda: [construction.build(kin, k, velocity_scale=mv, acceleration_scale=ma)
-                                 for k in range(kin.n)], budget)
-    apart = 0.0
-    for a, b in zip(construction.build_all(kin), (construction.build(kin, k, velocity_scale=mv, acceleration_scale=ma)
-                                                   for k in range(kin.n)), strict=True):
-        for ra, rb in zip(a.readings, b.readings, strict=True):
-            apart = max(apart, abs(ra.value - rb.value) / max(abs(ra.exact), ra.ref, 1e-300))
-    g = _goal("construction_360", what, limit, "×", one_by_one / together)
-    g.update({"together_s": together, "one_by_one_s": one_by_one, "readings_apart": apart})
-    return g
-
-
-def friction_cost(samples: Path, phis: np.ndarray, what: str, limit: float) -> dict[str, Any]:
-    """The kinetostatics and the lever of the V-engine with friction in every pair
-    (``v_engine_friction.toml``) against the same scene without its friction, at 360
-    positions, measured turn about."""
-    from plans.forces.analysis import kinetostatics
-    from plans.scene.model import scene_from_dict
-
-    f = samples / "v_engine_friction.toml"
-    if not f.exists():
-        return {"key": "friction_360", "goal": what, "value": math.nan, "limit": limit, "unit": "× cost",
-                "met": None}
-    raw = dict(load_scene(f).raw)
-    raw["driver"] = {k: v for k, v in raw["driver"].items() if k not in ("positions", "phi0_deg")}
-    raw["driver"]["phi_deg"] = [float(x) for x in phis]
-    with_f = scene_from_dict(raw, str(f))
-    raw = {k: v for k, v in raw.items() if k != "friction"}
-    raw["joints"] = [{k: v for k, v in j.items() if k not in ("f", "pin_radius", "friction_circle")}
-                     for j in raw["joints"]]
-    without = scene_from_dict(raw, str(f))
-    kin_f, kin_0 = exact.solve(with_f, order=2), exact.solve(without, order=2)
-    t_f, t_0, ratio = paired(lambda: kinetostatics(with_f, kin_f), lambda: kinetostatics(without, kin_0))
-    g = _goal("friction_360", what, limit, "× cost", ratio)
-    fa = kinetostatics(with_f, kin_f)
-    assert fa is not None
-    g.update({"friction_s": t_f, "frictionless_s": t_0,
-              "iterations_max": int(fa[0].friction.iterations.max())})
-    if not g["met"]:
-        g["profile"] = profile(lambda: kinetostatics(with_f, kin_f), 50)
-    return g
-
-
-def profile(fn: Callable[[], Any], reps: int, top: int = 12) -> list[dict]:
-    """The functions where ``fn`` spends its time (own time, cProfile), as records."""
-    pr = cProfile.Profile()
-    pr.enable()
-    for _ in range(reps):
-        fn()
-    pr.disable()
-    st = pstats.Stats(pr, stream=io.StringIO())
-    rows = []
-    for (file, line, func), (_cc, nc, tt, ct, _callers) in st.stats.items():  # type: ignore[attr-defined]
-        rows.append({"function": f"{Path(file).name}:{line}({func})", "calls_per_run": nc / reps,
-                     "own_us_per_run": tt / reps * 1e6, "cum_us_per_run": ct / reps * 1e6})
-    rows.sort(key=lambda r: -r["own_us_per_run"])
-    return rows[:top]
-
-
 def lines(result: dict[str, Any]) -> list[str]:
     return [Goal(**g).line() for g in result.get("goals", [])]
 
@@ -582,7 +376,7 @@ def markdown(result: dict[str, Any]) -> str:
             e = r.get("errors") or {}
             tp = r["time_per_position"]
             out.append(f"| {r['peer']} | {r['mechanism']} | {r['positions']} | "
-                       f"{'' if tp is None or math.isnan(tp) else _us(tp)} | "
+                       f"{'' if tp is None or math.isnan(tp) else us(tp)} | "
                        + " | ".join(f"{e[k]:.2g}" if k in e else "" for k in ("r", "v", "a"))
                        + f" | {r['note']} |")
     return "\n".join(out)
@@ -604,7 +398,7 @@ def results_table(result: dict[str, Any]) -> str:
     def fmt(x: float | None, unit: bool = False) -> str:
         if x is None or not math.isfinite(x):
             return "–"
-        return _us(x) if unit else f"{x:.2g}"
+        return us(x) if unit else f"{x:.2g}"
 
     rows = ["| method | mechanism | positions | error | time per position |", "|---|---|---:|---:|---:|"]
     for scene, label in (("slider-crank (offset)", "slider-crank"), ("four-bar", "four-bar")):

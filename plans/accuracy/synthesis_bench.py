@@ -21,7 +21,7 @@ def synthesis_goals(samples: Path, budget: float) -> list[dict[str, Any]]:
     """Each model's design time (best of three batches) against :data:`LIMIT`; a profile
     where a goal is not met."""
     from plans.accuracy.oracles import timeit
-    from plans.accuracy.speed import _goal, profile
+    from plans.accuracy.timing import goal_record, profile
     from plans.synthesis.design import design
     from plans.synthesis.model import load_task
 
@@ -35,7 +35,7 @@ def synthesis_goals(samples: Path, budget: float) -> list[dict[str, Any]]:
         def run(task: Any = task) -> Any:
             return design(task)
 
-        g = _goal(key, what, LIMIT, "s", timeit(run, budget))
+        g = goal_record(key, what, LIMIT, "s", timeit(run, budget))
         if not g["met"]:
             g["profile"] = profile(run, 50)
         out.append(g)

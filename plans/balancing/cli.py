@@ -20,20 +20,18 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def _balance(args: argparse.Namespace) -> int:
-    from plans.balancing.analysis import balance, report
-    from plans.balancing.engine import load_engine
+    from plans.balancing.analysis import report
+    from plans.balancing.solution import solve_engine
     from plans.language import file_language
     from plans.phrases import say
 
-    engine = load_engine(args.engine)
-    b = balance(engine)
+    es = solve_engine(args.engine)
+    b = es.balance
     data = b.to_json()
     lang = file_language(getattr(args, "language", None), args.engine)
     text = report(b, lang)
-    if engine.lam > 0:
-        from plans.balancing.exact import exact_check
-
-        chk = exact_check(engine)
+    chk = es.exact
+    if chk is not None:
         data["exact_check"] = chk.to_json()
         how = say("b_one_linkage", lang) if chk.linkages == 1 else say("b_linkages", lang, n=chk.linkages)
         text += say("b_exact", lang, how=how, n=len(chk.alpha), f=chk.max_exact, fe=chk.max_error, m=chk.max_moment,

@@ -201,3 +201,17 @@ def findings(cam: Cam) -> Findings:
     conv = pr.curvature[pr.curvature > 0]
     rmin = float(1.0 / np.max(conv)) if conv.size else 0.0
     return Findings(a_rise, a_ret, rmin, tuple(undercuts(cam, np.degrees(phi), pr.curvature)))
+
+
+def clip_half_plane(poly: list[tuple[float, float]], a: float, b: float, c: float) -> list[tuple[float, float]]:
+    """The part of the convex polygon ``poly`` where a·x + b·y ≤ c."""
+    out: list[tuple[float, float]] = []
+    for i in range(len(poly)):
+        p, q = poly[i], poly[(i + 1) % len(poly)]
+        fp, fq = a * p[0] + b * p[1] - c, a * q[0] + b * q[1] - c
+        if fp <= 0:
+            out.append(p)
+        if fp * fq < 0:
+            s = fp / (fp - fq)
+            out.append((p[0] + s * (q[0] - p[0]), p[1] + s * (q[1] - p[1])))
+    return out

@@ -21,7 +21,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from .analysis import FINE_STEP_DEG, grid, motion, profile
+from .analysis import FINE_STEP_DEG, clip_half_plane, grid, motion, profile
 from .model import Cam
 
 #: Equal parts of a phase in the drawn diagrams (the graphical constructions): 8, or 12 for a
@@ -111,20 +111,6 @@ def bounds(cam: Cam, phi: np.ndarray | None = None, exact: bool = True) -> Bound
             out.append(best if sgn == 1 else -best)
         lines.append((out[0], out[1], out[2]))
     return Bounds(tuple(lines), tuple(touch))
-
-
-def clip_half_plane(poly: list[tuple[float, float]], a: float, b: float, c: float) -> list[tuple[float, float]]:
-    """The part of the convex polygon ``poly`` where a·x + b·y ≤ c."""
-    out: list[tuple[float, float]] = []
-    for i in range(len(poly)):
-        p, q = poly[i], poly[(i + 1) % len(poly)]
-        fp, fq = a * p[0] + b * p[1] - c, a * q[0] + b * q[1] - c
-        if fp <= 0:
-            out.append(p)
-        if fp * fq < 0:
-            s = fp / (fp - fq)
-            out.append((p[0] + s * (q[0] - p[0]), p[1] + s * (q[1] - p[1])))
-    return out
 
 
 def allowed_region(b: Bounds, box: tuple[float, float, float, float]) -> list[tuple[float, float]]:

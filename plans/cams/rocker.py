@@ -19,8 +19,7 @@ import numpy as np
 import shapely
 from shapely.ops import nearest_points
 
-from .analysis import motion, oscillating_rest
-from .base_radius import clip_half_plane
+from .analysis import clip_half_plane, motion, oscillating_rest
 from .model import Cam
 
 

@@ -67,6 +67,17 @@ SCALE_KINDS = ("length", "velocity", "acceleration", "force")
 TOLERANCE_MODELS = ("draftsman", "rule")
 BALANCE_BASES = ("lever", "kinetostatics")
 
+#: Deductions by kind of mistake (points off ``full``); a check file's [rubric] overrides.
+RUBRIC: dict[str, float] = {
+    "full": 100.0,
+    "coriolis_reversed": 15.0, "normal_from_pole": 10.0, "tangential_wrong_line": 10.0, "scale": 10.0,
+    "similarity": 8.0, "wrong_segment": 5.0, "inertia_sign": 10.0, "reaction_swapped": 8.0,
+    "fij_reversed": 5.0, "pi_rounded": 2.0, "g_rounded": 2.0, "arithmetic": 3.0,
+    "unexplained": 2.0,  # each failing figure no cause explains
+    "finding": 1.0,  # each inconsistency of the student's own work left after the causes
+}
+RUBRIC_KEYS = tuple(RUBRIC)
+
 
 @dataclass(frozen=True, slots=True)
 class Written:
@@ -209,8 +220,6 @@ def _blank(body: dict[str, Any]) -> bool:
 
 def read_rubric(path: str, raw: Any, where: str) -> tuple[tuple[str, float], ...]:
     """A [rubric] table: ``full`` and the points each kind of mistake costs."""
-    from plans.check.diagnosis import RUBRIC_KEYS
-
     if not isinstance(raw, dict):
         raise _fail(path, where, "expected a table of deductions, e.g. coriolis_reversed = 15")
     check_keys(raw, RUBRIC_KEYS, file=path, where=f"{where}.")

@@ -23,7 +23,6 @@ remaining finding (:data:`RUBRIC`; a check file's ``[rubric]`` table overrides i
 from __future__ import annotations
 
 import math
-import re
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from statistics import median
@@ -31,6 +30,8 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from plans import quantities
+from plans.check.checkfile import RUBRIC, RUBRIC_KEYS  # noqa: F401  (read here and from here)
 from plans.check.mistakes import KINDS, Slip, describe, inventory, replay
 from plans.check.providers import Context, exact_value
 from plans.errors import PlansError
@@ -38,16 +39,6 @@ from plans.errors import PlansError
 if TYPE_CHECKING:
     from plans.check.findings import Finding, Item
 
-#: Deductions by kind of mistake (points off ``full``); a check file's [rubric] overrides.
-RUBRIC: dict[str, float] = {
-    "full": 100.0,
-    "coriolis_reversed": 15.0, "normal_from_pole": 10.0, "tangential_wrong_line": 10.0, "scale": 10.0,
-    "similarity": 8.0, "wrong_segment": 5.0, "inertia_sign": 10.0, "reaction_swapped": 8.0,
-    "fij_reversed": 5.0, "pi_rounded": 2.0, "g_rounded": 2.0, "arithmetic": 3.0,
-    "unexplained": 2.0,  # each failing figure no cause explains
-    "finding": 1.0,  # each inconsistency of the student's own work left after the causes
-}
-RUBRIC_KEYS = tuple(RUBRIC)
 
 G_ROUNDED = 10.0
 PI_ROUNDED = 3.14
@@ -307,15 +298,16 @@ def _force_models(sh: _Sheet) -> list[_Model]:
     out = []
     by = {(it.phi_deg, it.quantity): i for i, it in enumerate(sh.items)}
     for (phi, q), i in by.items():
-        m = re.fullmatch(r"F_(\d\d)\^τ", q)
-        if not m or (phi, f"F_{m.group(1)}^n") not in by:
+        got = quantities.reaction_name(q)
+        if got is None or got[2] != "^τ" or (phi, q[:-2] + "^n") not in by:
             continue
-        j = by[(phi, f"F_{m.group(1)}^n")]
+        base = q[:-2]  # F_12, F_10_2: as the sheet spells it
+        j = by[(phi, base + "^n")]
         ti, tj = sh.items[i], sh.items[j]
         if abs(ti.exact - tj.exact) <= max(ti.tolerance, tj.tolerance):
             continue
-        model = _Model("reaction_swapped", ("reaction_swapped", m.group(1), phi),
-                       f"F_{m.group(1)}^τ and F_{m.group(1)}^n swapped (the components along and across the link)",
+        model = _Model("reaction_swapped", ("reaction_swapped", base[2:], phi),
+                       f"{base}^τ and {base}^n swapped (the components along and across the link)",
                        {phi})
         model.pred[i] = (tj.exact, None)
         model.pred[j] = (ti.exact, None)
@@ -338,17 +330,18 @@ def couple_value(fa: Any, fa0: Any, q: str, k: int) -> float | None:
     """|q| at position k with the couple reversed (``fa`` with it, ``fa0`` without)."""
     if q in ("F_bal", "F_bal_lever"):
         return abs(2 * float(fa0.balancing[k]) - float(fa.balancing[k]))
-    m = re.fullmatch(r"F_(\d)(\d)(\^[nτ])?", q)
-    if not m:
+    got = quantities.reaction_name(q)
+    if got is None:
         return None
+    i, j, comp = got
     try:
-        F, rc = fa.reaction(f"F{m.group(1)}{m.group(2)}")
-        F0, rc0 = fa0.reaction(f"F{m.group(1)}{m.group(2)}")
+        F, rc = quantities.reaction(fa, i, j)
+        F0, rc0 = quantities.reaction(fa0, i, j)
     except KeyError:
         return None
-    if m.group(3) is None:
+    if comp is None:
         return abs(2 * complex(F0[k]) - complex(F[k]))
-    arr, arr0 = (rc.tau, rc0.tau) if m.group(3) == "^τ" else (rc.n, rc0.n)
+    arr, arr0 = (rc.tau, rc0.tau) if comp == "^τ" else (rc.n, rc0.n)
     if arr is None or arr0 is None:
         return None
     return abs(2 * float(arr0[k]) - float(arr[k]))

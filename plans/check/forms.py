@@ -38,7 +38,7 @@ from plans.scene.model import Scene
 _FIXED = ("quantity", "phi_deg", "figure")
 
 
-def _names(scene: Scene, scene_ref: str, phis: tuple[float, ...]) -> dict[float, tuple[list[str], list[str]]]:
+def question_names(scene: Scene, scene_ref: str, phis: tuple[float, ...]) -> dict[float, tuple[list[str], list[str]]]:
     """Per position: (segments to measure, values to write), in the order of the sheets."""
     from plans.check.providers import Context, exact_value
     from plans.kinematics.construction import default_scales
@@ -84,7 +84,7 @@ def _phis(scene: Scene, phis: tuple[float, ...] | None) -> tuple[float, ...]:
 def template_toml(scene: Scene, scene_ref: str, phis: tuple[float, ...] | None = None) -> str:
     """The blank check file of a scene (see the module docstring)."""
     phis = _phis(scene, phis)
-    names = _names(scene, scene_ref, phis)
+    names = question_names(scene, scene_ref, phis)
     def q(x: str) -> str:
         return json.dumps(x, ensure_ascii=False)
 
@@ -108,7 +108,7 @@ def template_toml(scene: Scene, scene_ref: str, phis: tuple[float, ...] | None =
 def template_csv(scene: Scene, scene_ref: str, phis: tuple[float, ...] | None = None, students: int = 3) -> str:
     """The blank CSV form: one row per quantity, one column per student."""
     phis = _phis(scene, phis)
-    names = _names(scene, scene_ref, phis)
+    names = question_names(scene, scene_ref, phis)
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     cols = [str(i + 1) for i in range(students)]
@@ -209,7 +209,7 @@ def is_scene(data: dict[str, Any]) -> bool:
 
 def run_template(args: argparse.Namespace) -> int:
     """``plans check --template SCENE``: a blank check file (or CSV form) to fill in."""
-    from plans.check.report import _err
+    from plans.check.report import error_line
     from plans.scene.model import load_scene
 
     try:
@@ -230,7 +230,7 @@ def run_template(args: argparse.Namespace) -> int:
                     raise InputError(f"position {p:g}° is not in the scene (it has "
                                      f"{', '.join(f'{q:g}°' for q in known)})", file=str(scene_path), field="--phi")
         target = Path(args.output) if args.output else None
-        ref = str(scene_path.resolve()) if target is None else _relative(scene_path, target)
+        ref = str(scene_path.resolve()) if target is None else scene_reference(scene_path, target)
         if args.form == "csv":
             if not 1 <= args.students <= 500:
                 raise InputError(f"expected 1 to 500 student columns, got {args.students}", field="--students")
@@ -242,7 +242,7 @@ def run_template(args: argparse.Namespace) -> int:
         from plans.guard import abandon
 
         abandon()  # nothing of the command is written (it answers 2 itself)
-        _err(one_line(exc))
+        error_line(one_line(exc))
         return 2
 
 
@@ -261,7 +261,7 @@ def put_form(text: str, target: Path | None, source: str | Path, quiet: bool) ->
     return 0
 
 
-def _relative(scene: Path, target: Path) -> str:
+def scene_reference(scene: Path, target: Path) -> str:
     """The scene's path as the form beside ``target`` names it."""
     import os
 
@@ -273,10 +273,10 @@ def _relative(scene: Path, target: Path) -> str:
 
 def run_form(target: Path, args: argparse.Namespace) -> int:
     """``plans check FORM.csv``: each filled column one submission, as a folder is checked."""
-    from plans.check.report import _err, _make_folder, _summary, check, summary_row, table
+    from plans.check.report import check, error_line, make_folder, summary_row, table, write_summary
 
     if args.json:
-        _err(f"{target}: --json is for one check file; a form writes one report per student into --out")
+        error_line(f"{target}: --json is for one check file; a form writes one report per student into --out")
         return 2
     subs = read_form(target)
     out = Path(args.out) if args.out else target.parent / f"{target.stem}-reports"
@@ -291,7 +291,7 @@ def run_form(target: Path, args: argparse.Namespace) -> int:
         if not args.quiet and args.csv != "-":
             print(table(report))
             print()
-    _make_folder(out)
+    make_folder(out)
     write_all(files)
-    _summary(rows, args, out)
+    write_summary(rows, args, out)
     return 0

@@ -22,7 +22,8 @@ from typing import Any
 import numpy as np
 
 from plans.kinematics.cases import cross, unit
-from plans.kinematics.dyads import Builder, Scheme, plans_of
+from plans.kinematics.construction import plans_of
+from plans.kinematics.dyads import Builder, Scheme
 from plans.kinematics.exact import Kinematics
 
 #: Kinds of mistake, most important first (the report's and the JSON's names).

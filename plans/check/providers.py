@@ -19,9 +19,9 @@ from typing import Any
 from plans import quantities
 from plans.check.checkfile import CheckFile
 from plans.check.tolerance import Linearised, Propagation
-from plans.errors import PlansError
-from plans.kinematics.construction import PositionPlans, build_many
-from plans.kinematics.exact import Kinematics, solve
+from plans.errors import ConstructionError, PlansError
+from plans.kinematics.construction import PositionPlans
+from plans.kinematics.exact import Kinematics
 from plans.kinematics.plan import Plan
 
 G_STANDARD = quantities.G_STANDARD
@@ -53,15 +53,21 @@ class Context:
     loads and forces when the scene has them, and the draftsman's error propagation."""
 
     def __init__(self, cf: CheckFile) -> None:
+        from plans.solution import solve
+
         self.cf = cf
         self.scene = cf.scene
-        self.kin: Kinematics = solve(cf.scene, order=2)
+        #: the scene solved once (plans.solve): what the JSON, the sheets and this check read
+        self.solution = solve(cf.scene)
         mv = cf.scales.get("velocity")
         ma = cf.scales.get("acceleration")
-        self.plans: dict[int, PositionPlans] = {}
-        ks = [pos.index for pos in cf.positions]
-        for k, pp in zip(ks, build_many(self.kin, ks, velocity_scale=mv, acceleration_scale=ma), strict=True):
-            self.plans[k] = pp
+        ks = tuple(pos.index for pos in cf.positions)
+        try:
+            self.kin: Kinematics = self.solution.kinematics_to(2)
+            self.plans: dict[int, PositionPlans] = dict(zip(ks, self.solution.plans_at(ks, mv, ma), strict=True))
+        except ConstructionError as exc:
+            exc.source = None  # a check names the check file it was asked about
+            raise
         self._prop: dict[tuple[int, str], Propagation] = {}  # force polygons: their protocol replayed
         self._lin: dict[tuple[int, str], Linearised] = {}
         self._polygons: dict[int, tuple[Plan, ...]] = {}
@@ -139,13 +145,7 @@ class Context:
         if not self._loaded:
             self._loaded = True
             try:
-                from plans.forces import loads as _loads
-                from plans.forces import polygons as _forces
-
-                loads = _loads.parse_loads(self.scene)
-                self._forces = (loads, _forces.analyse_forces(self.scene, self.kin, loads))
-            except ImportError as exc:  # pragma: no cover - modules are part of the package
-                self._forces_error = f"force analysis unavailable ({exc})"
+                self._forces = self.solution.frictionless()
             except PlansError as exc:
                 self._forces_error = f"force analysis failed: {exc}"
         return self._forces

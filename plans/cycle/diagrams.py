@@ -1,9 +1,12 @@
 """Kinematic diagrams s(φ), v(φ), a(φ) over the cycle, by graphical differentiation and
 integration, beside the exact curves.
 
-s(φ) of a point is its displacement along its guide from the first position (a slider on a
-guide of the frame) or the length of its path travelled since then (any other point); of
-a link, its angle turned.  The diagram is drawn at μ_s (mm per m) against μ_φ = L/2π (mm
+s(φ) of a slider on a guide of the frame is its distance from its extreme position where
+its working stroke begins (the slower stroke; the outer dead centre where both take equal
+time), s ≥ 0, v and a along the same direction, as the course measures it
+(``[diagrams] s_from = "first"``: the signed displacement along the guide from the first
+position instead); of any other point, the length of its path travelled since the first
+position; of a link, its angle turned.  The diagram is drawn at μ_s (mm per m) against μ_φ = L/2π (mm
 per rad of crank angle).
 
 Differentiation by chords: on each interval the chord of s(φ) is carried parallel through
@@ -91,7 +94,8 @@ def _along(scene: Scene, name: str) -> complex | None:
     return None
 
 
-def _motion(scene: Scene, kin: Kinematics, subject: str, is_link: bool, w: float) -> tuple[R, R, R, str]:
+def _motion(scene: Scene, kin: Kinematics, subject: str, is_link: bool, w: float,
+            s_from: str = "first") -> tuple[R, R, R, str]:
     """s, v, a (SI) of a subject at the positions of ``kin`` (dense, closing node last)."""
     if is_link:
         lid = int(subject)
@@ -99,6 +103,15 @@ def _motion(scene: Scene, kin: Kinematics, subject: str, is_link: bool, w: float
         return th - th[0], kin.omega(lid), kin.eps(lid), "rad"
     r, v, a = kin.point(subject)
     u = _along(scene, subject)
+    if u is not None and s_from == "extreme":
+        from plans.kinematics.extreme import slider, strokes
+
+        out = slider(scene, subject)
+        assert out is not None
+        st = strokes(scene, "diagrams.s_from", output=out)
+        u = u if st.working_up else -u  # s grows into the working stroke
+        r0 = solve(scene, [st.working_deg], order=0).point(out.point, out.link)[0][0]
+        return (np.maximum(((r - r0) * np.conj(u)).real, 0.0), (v * np.conj(u)).real, (a * np.conj(u)).real, "m")
     if u is not None:
         return (((r - r[0]) * np.conj(u)).real, (v * np.conj(u)).real, (a * np.conj(u)).real, "m")
     speed = np.abs(v)
@@ -141,7 +154,7 @@ def diagrams(scene: Scene, spec: DiagramsSpec | None = None) -> Diagrams:
     kin = solve(scene, np.concatenate([dense]), order=2)
     mu_phi = spec.length_mm / (2 * math.pi)
     subjects = [(p, False) for p in spec.points] + [(str(k), True) for k in spec.links]
-    motions = [_motion(scene, kin, s, is_link, w) for s, is_link in subjects]
+    motions = [_motion(scene, kin, s, is_link, w, spec.s_from) for s, is_link in subjects]
     # one pole per differentiation for the sheet (H1 for v, H2 for a): what the fastest subject needs
     H1, H2 = spec.pole_mm, spec.pole_mm
     if H1 is None or H2 is None:

@@ -27,9 +27,10 @@ from typing import Any, cast
 import numpy as np
 from numpy.typing import NDArray
 
-from plans.forces.loads import Loads, _toward_pivot, _travel, apply_loads
+from plans.forces.loads import Loads, apply_loads
 from plans.kinematics.exact import solve
 from plans.kinematics.structure import Structure
+from plans.kinematics.travel import piston_travel, toward_pivot
 from plans.scene.model import Scene
 
 R = NDArray[np.float64]
@@ -93,9 +94,9 @@ class Machine:
             u: Any = joint.guide.direction if joint.guide.link == sc.frame else \
                 kin.motion[joint.guide.link].rot * joint.guide.direction
             if gl.phi_table is None:
-                cols.append((v * np.conj(_toward_pivot(sc, r, u))).real)  # the dead centres
+                cols.append((v * np.conj(toward_pivot(sc, r, u))).real)  # the dead centres
             if gl.diagram:
-                s = _travel(sc, kin, gl.joint, gl.link) - gl.outer
+                s = piston_travel(sc, kin, gl.joint, gl.link) - gl.outer
                 rows = np.unique(np.concatenate([ts for ts, _ in gl.diagram.values()]))
                 for sk in rows[(rows > 1e-9 * gl.stroke) & (rows < gl.stroke * (1 - 1e-9))]:
                     cols.append(s - sk)

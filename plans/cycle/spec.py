@@ -16,6 +16,8 @@
 
     [diagrams]
     points = ["B"]           # s along the guide (a slider) or the path (any other point)
+    s_from = "extreme"       # a slider's s from its extreme position, s >= 0 (default); or
+                             # "first": signed along the guide from the first position
     links = [2]              # and/or angles of links
     quantities = ["s", "v", "a"]
     positions = 12           # equal steps over the revolution
@@ -65,11 +67,12 @@ class DiagramsSpec:
     method: str
     pole_mm: float | None
     length_mm: float
+    s_from: str = "extreme"  # a slider's s: from its extreme ("extreme") or the first position ("first")
 
 
 _DYN_KEYS = {"rotor_inertia", "delta", "driving", "positions", "phi_deg", "pole_mm", "exact_steps", "cycle_deg"}
 CYCLES = (360, 720)
-_DIA_KEYS = {"points", "links", "quantities", "positions", "phi_deg", "method", "pole_mm", "length_mm"}
+_DIA_KEYS = {"points", "links", "quantities", "positions", "phi_deg", "method", "pole_mm", "length_mm", "s_from"}
 QUANTITIES = ("s", "v", "a")
 METHODS = ("chords", "tangents")
 
@@ -216,8 +219,11 @@ def diagrams_spec(scene: Scene) -> DiagramsSpec:
     if scene.driver.omega == 0:
         raise _fail(scene, "driver.omega", "v(φ) and a(φ) need the crank's angular velocity (ω ≠ 0)")
     phis = _positions(scene, raw, "diagrams", equal=True)
+    s_from = raw.get("s_from", "extreme")
+    if s_from not in ("extreme", "first"):
+        raise _fail(scene, "diagrams.s_from", f"expected \"extreme\" or \"first\", got {show(s_from)}")
     return DiagramsSpec(tuple(pts), tuple(links), tuple(q for q in QUANTITIES if q in qs), phis, method,
-                        pole, length)
+                        pole, length, s_from)
 
 
 def check_table(scene: Scene, key: str) -> None:

@@ -18,10 +18,10 @@ def kinetostatics(scene: Scene, kin: Kinematics) -> tuple[ForceAnalysis, LeverAn
     """Force analysis and Zhukovsky lever if the scene asks for them, else None (nothing computed)."""
     if not (scene.wants("force_polygons") or scene.wants("lever")):
         return None
-    kin.structure.no_triad(scene.path, "force analysis")
     loads = parse_loads(scene)
     spec = parse_friction(scene)
     if spec is not None:  # the successive approximation with friction in the pairs
+        kin.structure.no_triad(scene.path, "friction in the pairs")
         from plans.forces.friction import friction_analysis
 
         fa = friction_analysis(scene, kin, loads, spec)

@@ -386,11 +386,14 @@ def force_rows(lv: LeverAnalysis, k: int, polygons: tuple[ForcePolygon, ...] | N
     rows: list[Reading] = []
     big = max([abs(complex(f.F[k])) for f in fa.applied.forces]
               + [abs(complex(rc.F[k])) for rc in fa.reactions()] + [1e-300])
+    words = _scale_words(fa.scene.scale_style, lang)  # the scene's notation, where not μ in mm per unit
     for fp in force_polygons(fa, k) if polygons is None else polygons:
         ref = max((sg.value for sg in fp.plan.segments), default=0.0)
+        sc = words("F", fp.scale, "mm/N")
         for sg in fp.plan.segments:
             exact = clean(sg.value, big)  # rounding noise of a vanishing force
-            rows.append(Reading(say("r_polygon", lang, label=sg.label, g=fp.group, mu=fp.scale),
+            rows.append(Reading(say("r_polygon", lang, label=sg.label, g=fp.group, mu=fp.scale) if sc is None
+                                else say("x_r_polygon", lang, label=sg.label, g=fp.group, sc=sc),
                                 fp.reading(sg.label), exact, "N", ref=ref))
     mu_l = fa.scene.scales.get("length", 1000.0)  # the mechanism's drawing, 1:1 unless the scene says
     arms = [(eq, lab, h) for gf in fa.groups for (eq, lab), h in gf.arms.items()]
@@ -398,7 +401,9 @@ def force_rows(lv: LeverAnalysis, k: int, polygons: tuple[ForcePolygon, ...] | N
     for eq, lab, h in arms:
         mm = float(h[k]) * mu_l
         if mm > NOISE_MM:
-            rows.append(Reading(say("r_arm", lang, lab=lab, eq=eq, mu=mu_l), _ruler(mm), mm, "mm"))
+            sc = words("l", mu_l, "mm/m")
+            rows.append(Reading(say("r_arm", lang, lab=lab, eq=eq, mu=mu_l) if sc is None
+                                else say("x_r_arm", lang, lab=lab, eq=eq, sc=sc), _ruler(mm), mm, "mm"))
     for it in lv.forces:
         a = float(it.arm[k])
         if a > NOISE_MM:
@@ -423,6 +428,17 @@ def force_rows(lv: LeverAnalysis, k: int, polygons: tuple[ForcePolygon, ...] | N
     return rows
 
 
+def _scale_words(style: str, lang: str) -> Any:
+    """``(sub, mu, mm_per) -> "μF = 25 Н/мм"`` in the scene's notation, or None for the old μ in
+    mm per unit (English, by default: the notation module not even loaded)."""
+    sym, d = (style, "mm/m" if style == "mu" else "m/mm") if style in ("mu", "K") else (style.split("|") + [""])[:2]
+    if sym in ("", "mu") and (d == "mm/m" or (d == "" and lang != "ru")):
+        return lambda sub, mu, mm_per: None
+    from plans.scene.notation import scale_words
+
+    return lambda sub, mu, mm_per: scale_words(style, lang, sub, mu, mm_per)
+
+
 def table_lines(fa: ForceAnalysis, lv: LeverAnalysis, k: int, lang: str = "en") -> list[str]:
     """The force analysis of position k as text lines for ``plans solve`` (indented two spaces),
     in ``lang``."""
@@ -431,8 +447,10 @@ def table_lines(fa: ForceAnalysis, lv: LeverAnalysis, k: int, lang: str = "en") 
 
     ru = lang == "ru"
     unit = "N" if fa.crank.kind == "force" else "N·m"
-    lines = [say("t_force_head", lang, fij=say("t_on_i" if fa.scene.fij == "on_i_from_j" else "t_of_i", lang),
-                 sense=say("ccw" if lv.turn > 0 else "cw", lang), mu=lv.scale)]
+    sc = _scale_words(fa.scene.scale_style, lang)("v", lv.scale, "mm/(m/s)")
+    lines = [say("t_force_head" if sc is None else "x_force_head", lang,
+                 fij=say("t_on_i" if fa.scene.fij == "on_i_from_j" else "t_of_i", lang),
+                 sense=say("ccw" if lv.turn > 0 else "cw", lang), mu=lv.scale, sc=sc)]
     polygons = force_polygons(fa, k)
     for fp in polygons:
         for note in fp.plan.degenerate:

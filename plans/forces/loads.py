@@ -49,6 +49,8 @@ lengths in the file's ``unit`` (or strings such as ``"82 mm"``).
                                # or resisting = 1000: opposite the point's velocity
                                #   (along = deg: only the velocity's sign along that axis counts;
                                #    stroke = "positive" | "negative": act only on that stroke)
+                               # stroke = "working" | "idle": act only on that stroke of the output
+                               #   (the slow one / the fast return; plans.forces.strokes), any force
     name = "F_c"               # label on the polygons and the lever (default F_ext<k>)
     # or a gas force by its pressure over the cycle's crank angle, on a piston along its
     # guide toward the crank: area = 0.00528 (m²) or bore = 82 (file unit), and
@@ -60,6 +62,7 @@ lengths in the file's ``unit`` (or strings such as ``"82 mm"``).
                                # or a turning-moment diagram over the cycle (φ the crank's):
                                # table = [[0, 0], [90, 600], ..., [360, 0]]  (φ deg, N·m)
                                # expression = "600*sin(2*phi) - 500*sin(phi)"  (φ in rad)
+    stroke = "working"         # or "idle": act only on that stroke of the output (default both)
     name = "M_c"
 
 Sign of the balancing force in the results: positive along the velocity of
@@ -70,6 +73,7 @@ positive.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -77,6 +81,7 @@ from numpy.typing import NDArray
 
 from plans.errors import ConstructionError, InputError
 from plans.forces.shared import unit_vector
+from plans.kinematics.travel import piston_travel, toward_pivot
 from plans.reader import Reader, check_keys, did_you_mean
 from plans.records import frozen
 from plans.scene.model import Scene
@@ -105,6 +110,8 @@ class GasLoad:
     outer: float = 0.0  # travel coordinate of the outer dead centre (diagram only), m
     stroke: float = 0.0  # H, m (diagram only)
     fires: float | None = None  # four-stroke: crank angle given for the ignition, deg
+    #: four-stroke: the outer dead centre nearest to ``fires``, deg (found when the loads are read)
+    ignition: float | None = None
     phi_table: tuple[R, R] | None = None  # pressure over the cycle's crank angle (deg, Pa)
     period: float = 360.0  # the cycle of phi_table, deg
 
@@ -133,6 +140,7 @@ class MomentLoad:
     table: tuple[R, R] | None = None  # a turning-moment diagram (φ deg, N·m)
     expression: Any = None  # or a formula of φ (rad), plans.expression.Expression
     period: float = 360.0  # the cycle the diagram covers, deg
+    stroke: str = "both"  # "working" | "idle": only on that stroke of the output
 
 
 @frozen
@@ -185,12 +193,10 @@ def _cycle_table(r: Reader, rows: Any, field: str, what: str, scale: float = 1.0
 
 
 def parse_loads(scene: Scene) -> Loads:
-    """Read ``[loads]`` (and the links' masses) into a :class:`Loads`; InputError on anything
-    wrong.  Read once per scene (a Loads is frozen)."""
-    done = scene.memo.get("loads")
-    if done is None:
-        done = scene.memo["loads"] = _parse_loads(scene)
-    return done
+    """The scene's ``[loads]`` (and the links' masses) as a :class:`Loads`: the record the
+    scene holds once solved (``plans.solve`` reads it once, :mod:`plans.scene.tables`), else
+    read now; InputError on anything wrong."""
+    return scene.loads if scene.loads is not None else _parse_loads(scene)
 
 
 def _parse_loads(scene: Scene) -> Loads:
@@ -400,9 +406,10 @@ def _parse_loads(scene: Scene) -> Loads:
             fires = r.value(body["fires_deg"], f"{where}fires_deg", limit=1e6)
         elif diagram and set(diagram) == set(FOUR_STROKES):
             fires = 360.0  # the course's cycle: intake from 0°, ignition at 360°
-        gas.append(GasLoad(link=lid, joint=pj[0].name, area=area, pressure=pressure, diagram=diagram,
-                           strokes=tuple(strokes), toward_pivot=direction == "toward_pivot",
-                           name=label(body, where, f"P{lid}"), outer=outer, stroke=stroke_len, fires=fires))
+        gl = GasLoad(link=lid, joint=pj[0].name, area=area, pressure=pressure, diagram=diagram,
+                     strokes=tuple(strokes), toward_pivot=direction == "toward_pivot",
+                     name=label(body, where, f"P{lid}"), outer=outer, stroke=stroke_len, fires=fires)
+        gas.append(gl if fires is None else replace(gl, ignition=ignition(scene, gl)))
 
     # ---- external forces and moments
     forces = []
@@ -429,8 +436,9 @@ def _parse_loads(scene: Scene) -> Loads:
                                         f"{sorted(scene.links[lid].points)}")
         vec = res = along = None
         stroke = body.get("stroke", "both")
-        if stroke not in ("both", "positive", "negative"):
-            raise fail(f"{where}stroke", f"expected \"both\", \"positive\" or \"negative\", got {stroke!r}")
+        if stroke not in ("both", "positive", "negative", "working", "idle"):
+            raise fail(f"{where}stroke", f"expected \"working\", \"idle\", \"both\", \"positive\" or "
+                                         f"\"negative\", got {stroke!r}")
         if "vector" in body:
             v = body["vector"]
             if not (isinstance(v, list) and len(v) == 2):
@@ -447,7 +455,7 @@ def _parse_loads(scene: Scene) -> Loads:
                 along = math.radians(angle(body, "along", where, 0.0))
         else:
             raise fail(f"{where}vector", "expected vector = [Fx, Fy], magnitude (+ angle_deg) or resisting")
-        if stroke != "both" and along is None:
+        if stroke in ("positive", "negative") and along is None:
             raise fail(f"{where}stroke", "a stroke needs an axis: along = angle in degrees")
         forces.append(ForceLoad(link=lid, point=pt, vector=vec, resisting=res, along=along, stroke=stroke,
                                 name=label(body, where, f"F_ext{k + 1}")))
@@ -459,7 +467,9 @@ def _parse_loads(scene: Scene) -> Loads:
         where = f"loads.moment[{k}]."
         if not isinstance(body, dict):
             raise fail(f"loads.moment[{k}]", "expected a table")
-        check_keys(body, ("link", "value", "resisting", "name", "table", "expression"), file=path, where=where)
+        check_keys(body, ("link", "value", "resisting", "name", "table", "expression", "stroke"), file=path,
+                   where=where)
+        m_stroke = r.choice(body, "stroke", where, ("both", "working", "idle"), "both")
         given = [key for key in ("value", "resisting", "table", "expression") if key in body]
         if len(given) > 1:
             raise fail(f"{where}{given[1]}", f"give one of value, resisting, table or expression, not both "
@@ -468,7 +478,7 @@ def _parse_loads(scene: Scene) -> Loads:
         if "table" in body:
             tab = _cycle_table(r, body["table"], f"{where}table", "M")
             moments.append(MomentLoad(lid, None, None, label(body, where, f"M{lid}"), table=tab,
-                                      period=float(tab[0][-1])))
+                                      period=float(tab[0][-1]), stroke=m_stroke))
             continue
         if "expression" in body:
             from plans.expression import check_finite, parse
@@ -477,17 +487,29 @@ def _parse_loads(scene: Scene) -> Loads:
             period = cycle_of(scene)
             check_finite(expr, np.radians(np.linspace(0.0, period, 7201)), file=path, field=f"{where}expression")
             moments.append(MomentLoad(lid, None, None, label(body, where, f"M{lid}"), expression=expr,
-                                      period=period))
+                                      period=period, stroke=m_stroke))
             continue
         if "value" in body:
-            moments.append(MomentLoad(lid, number(body, "value", where), None, label(body, where, f"M{lid}")))
+            moments.append(MomentLoad(lid, number(body, "value", where), None, label(body, where, f"M{lid}"),
+                                      stroke=m_stroke))
         elif "resisting" in body:
             moments.append(MomentLoad(lid, None, number(body, "resisting", where, nonneg=True),
-                                      label(body, where, f"M_c{lid}")))
+                                      label(body, where, f"M_c{lid}"), stroke=m_stroke))
         else:
             raise fail(f"{where}value", "expected value = N·m (ccw+), resisting = N·m, table = [[phi_deg, M], ...] "
                                         "or expression = \"...\"")
 
+    limited = [f"loads.{key}[{k}].stroke" for key, got in (("force", f_raw), ("moment", m_raw))
+               for k, body in enumerate(got) if body.get("stroke") in ("working", "idle")]
+    if limited:  # the strokes exist (an output with two extremes), or the first such load fails here
+        from plans.forces.strokes import on_stroke
+
+        on_stroke(scene, "working", [], limited[0])
+    if any("resisting" in body and body.get("stroke", "positive") in ("positive", "negative")
+           for body in (*f_raw, *m_raw)):  # no stroke given, or one by the sign of the velocity
+        from plans.forces.strokes import warn_idle
+
+        warn_idle(scene, raw, forces)
     return Loads(masses=masses, inertias=inertias, centres=centres, g=g,
                  offset_inertia=inertia_mode == "offset_force", lever_turn=1 if turn == "ccw" else -1,
                  balancing=Balancing(kind, bpoint), gas=tuple(gas), forces=tuple(forces),
@@ -534,9 +556,6 @@ def ignition(scene: Scene, gl: GasLoad) -> float:
     from plans.kinematics.exact import solve  # late import: only four-stroke diagrams need it
 
     assert gl.fires is not None
-    key = ("ignition", gl.joint, gl.link, gl.fires)
-    if key in scene.memo:
-        return scene.memo[key]
     joint = next(j for j in scene.joints if j.name == gl.joint)
     guide = joint.guide
     assert guide is not None
@@ -546,11 +565,11 @@ def ignition(scene: Scene, gl: GasLoad) -> float:
         kin = solve(scene, np.asarray(at, float), order=1)
         r, v, _ = kin.point_on(gl.link, z)
         u: Any = guide.direction if guide.link == scene.frame else kin.motion[guide.link].rot * guide.direction
-        return (v * np.conj(_toward_pivot(scene, r, u))).real * np.sign(scene.driver.omega)
+        return (v * np.conj(toward_pivot(scene, r, u))).real * np.sign(scene.driver.omega)
 
     phis = gl.fires + np.linspace(-180.0, 180.0, 361)
     try:
-        t = _travel(scene, solve(scene, phis, order=0), gl.joint, gl.link)
+        t = piston_travel(scene, solve(scene, phis, order=0), gl.joint, gl.link)
         k = int(np.argmin(t))
         lo, hi = float(phis[max(k - 1, 0)]), float(phis[min(k + 1, 360)])
         for _ in range(8):  # 64 samples a step: the bracket where the travel turns shrinks 64 times
@@ -565,8 +584,7 @@ def ignition(scene: Scene, gl: GasLoad) -> float:
     except ConstructionError as exc:
         raise InputError(f"a four-stroke diagram needs the crank to turn a full revolution ({exc})",
                          file=scene.path, field="loads.gas") from None
-    out = scene.memo[key] = 0.5 * (lo + hi)
-    return out
+    return 0.5 * (lo + hi)
 
 
 def _stroke(scene: Scene, joint_name: str, link: int) -> tuple[float, float]:
@@ -574,14 +592,11 @@ def _stroke(scene: Scene, joint_name: str, link: int) -> tuple[float, float]:
     revolution, by dense sampling of the exact positions (relative error ~1e-7)."""
     from plans.kinematics.exact import solve  # late import: only indicator diagrams need it
 
-    key = ("stroke", joint_name, link)
-    if key in scene.memo:
-        return scene.memo[key]
     grid = np.linspace(0.0, 360.0, 3601)  # the extremes are those of this 0.1° grid
     try:
         # every tenth grid angle first, then the grid around the coarse extremes only
         coarse = np.arange(0, 3601, 10)
-        t = _travel(scene, solve(scene, grid[coarse], order=0), joint_name, link)
+        t = piston_travel(scene, solve(scene, grid[coarse], order=0), joint_name, link)
         keep = np.zeros(3601, dtype=bool)  # the grid around the extremes, each index once, in order
         keep[[0, 3600]] = True
         for k in _extreme_indices(t):
@@ -591,9 +606,8 @@ def _stroke(scene: Scene, joint_name: str, link: int) -> tuple[float, float]:
     except ConstructionError as exc:
         raise InputError(f"an indicator diagram needs the crank to turn a full revolution ({exc})",
                          file=scene.path, field="loads.gas") from None
-    travel = _travel(scene, kin, joint_name, link)
-    out = scene.memo[key] = (float(travel.min()), float(travel.max() - travel.min()))
-    return out
+    travel = piston_travel(scene, kin, joint_name, link)
+    return float(travel.min()), float(travel.max() - travel.min())
 
 
 def _extreme_indices(t: R) -> list[int]:
@@ -603,25 +617,6 @@ def _extreme_indices(t: R) -> list[int]:
     keeps many)."""
     slack = float(np.max(np.abs(t[2:] - 2 * t[1:-1] + t[:-2])))
     return [int(k) for k in np.flatnonzero((t <= t.min() + slack) | (t >= t.max() - slack))]
-
-
-def _toward_pivot(scene: Scene, B: C, u: C) -> C:
-    """The guide's unit direction that points from the piston toward the crank pivot."""
-    pivot = scene.frame_points[scene.driver.pivot]
-    sgn = np.sign(((pivot - B) * np.conj(u)).real)
-    return np.where(sgn < 0, -1.0, 1.0) * u
-
-
-def _travel(scene: Scene, kin: Any, joint_name: str, link: int) -> R:
-    """Signed position of the piston along its guide, increasing toward the crank pivot."""
-    joint = next(j for j in scene.joints if j.name == joint_name)
-    assert joint.guide is not None
-    carrier = kin.motion[joint.guide.link]
-    rot = carrier.rot
-    origin = carrier.r0 + rot * joint.guide.origin
-    u = rot * joint.guide.direction
-    B = kin.point(joint.point, link)[0]
-    return ((B - origin) * np.conj(_toward_pivot(scene, B, u))).real
 
 
 # --------------------------------------------------------------------------- loads at positions
@@ -720,17 +715,24 @@ def apply_loads(scene: Scene, loads: Loads, kin: Any) -> AppliedLoads:
             F = np.full(n, fl.vector, dtype=complex)
         else:
             assert fl.resisting is not None and v is not None
+            # at rest up to round-off (an extreme position): no motion to resist, no force
+            still = DUST * abs(scene.driver.omega) * _extent(kin)
             if fl.along is None:
                 speed = np.abs(v)
-                F = np.where(speed > 0, -fl.resisting * unit_vector(v), 0)
+                F = np.where(speed > still, -fl.resisting * unit_vector(v), 0)
             else:
                 e = complex(math.cos(fl.along), math.sin(fl.along))
-                sv = np.sign((v * np.conj(e)).real)
+                ve = (v * np.conj(e)).real
+                sv = np.where(np.abs(ve) > still, np.sign(ve), 0.0)
                 if fl.stroke == "positive":
                     sv = np.where(sv > 0, sv, 0.0)
                 elif fl.stroke == "negative":
                     sv = np.where(sv < 0, sv, 0.0)
                 F = -fl.resisting * sv * e
+        if fl.stroke in ("working", "idle"):
+            from plans.forces.strokes import mask
+
+            F = mask(scene, kin, fl.stroke, F)
         forces.append(AppliedForce(fl.name, fl.link, fl.point, r, np.full(n, z), F.astype(complex), "external"))
     for ml in loads.moments:
         if ml.table is not None:
@@ -741,7 +743,12 @@ def apply_loads(scene: Scene, loads: Loads, kin: Any) -> AppliedLoads:
             M = np.full(n, ml.value)
         else:
             assert ml.resisting is not None
-            M = -ml.resisting * np.sign(kin.omega(ml.link))
+            w = kin.omega(ml.link)
+            M = -ml.resisting * np.where(np.abs(w) > DUST * abs(scene.driver.omega), np.sign(w), 0.0)
+        if ml.stroke != "both":
+            from plans.forces.strokes import mask
+
+            M = mask(scene, kin, ml.stroke, M)
         moments.append(AppliedMoment(ml.name, ml.link, M, "external"))
     return AppliedLoads(tuple(forces), tuple(moments))
 
@@ -763,7 +770,7 @@ def _gas_force(scene: Scene, kin: Any, gl: GasLoad) -> AppliedForce:
         u = joint.guide.direction
     else:
         u = kin.motion[joint.guide.link].rot * joint.guide.direction
-    e_down = _toward_pivot(scene, r, u)
+    e_down = toward_pivot(scene, r, u)
     # stroke: the sign of the piston's velocity toward the pivot; at a dead centre (v = 0)
     # the acceleration says which stroke begins
     ce = np.conj(e_down)
@@ -782,7 +789,7 @@ def _gas_force(scene: Scene, kin: Any, gl: GasLoad) -> AppliedForce:
         p = gl.pressure  # the same at every position
     else:
         # travel from the outer dead centre (the extreme position away from the pivot)
-        s = np.clip(_travel(scene, kin, gl.joint, gl.link) - gl.outer, 0.0, gl.stroke)
+        s = np.clip(piston_travel(scene, kin, gl.joint, gl.link) - gl.outer, 0.0, gl.stroke)
         p = np.zeros(kin.n)
         for side, mask in (("down", down), ("up", ~down)):
             if side in gl.diagram:
@@ -804,7 +811,8 @@ def stroke_index(scene: Scene, kin: Any, gl: GasLoad, down: Any) -> Any:
     """Which of the four strokes each position is in (0 intake, 1 compression, 2 expansion,
     3 exhaust): the revolution after the ignition's outer dead centre is expansion (toward
     the crank) then exhaust, the next intake then compression."""
-    psi = np.mod(np.asarray(kin.phi_deg, float) - ignition(scene, gl), 720.0)
+    assert gl.ignition is not None, "a four-stroke load's ignition is found when the loads are read"
+    psi = np.mod(np.asarray(kin.phi_deg, float) - gl.ignition, 720.0)
     # a dead centre met to round-off is the one the angle names: 360 begins the intake, 720 the expansion
     psi = np.where(np.abs(psi - 360.0) < 1e-7, 360.0, np.where(psi > 720.0 - 1e-7, 0.0, psi))
     first = psi < 360.0
@@ -812,7 +820,7 @@ def stroke_index(scene: Scene, kin: Any, gl: GasLoad, down: Any) -> Any:
 
 
 def _four_stroke(scene: Scene, kin: Any, gl: GasLoad, down: Any) -> R:
-    s = np.clip(_travel(scene, kin, gl.joint, gl.link) - gl.outer, 0.0, gl.stroke)
+    s = np.clip(piston_travel(scene, kin, gl.joint, gl.link) - gl.outer, 0.0, gl.stroke)
     k = stroke_index(scene, kin, gl, down)
     p = np.zeros(kin.n)
     for j, name in enumerate(FOUR_STROKES):

@@ -53,11 +53,12 @@ from plans.forces.loads import (
 from plans.forces.shared import RULER_MM, mu_force, safe_div, unit_vector
 from plans.kinematics.exact import Kinematics
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Written
-from plans.kinematics.structure import Group
+from plans.kinematics.structure import Group, TriadGroup
 from plans.lines import along, cross, meet
 from plans.phrases import Phrase, phrase
 from plans.records import frozen
 from plans.scene.model import Joint, Scene
+from plans.tolerances import LOCK_SIN
 from plans.units import clean
 
 C = NDArray[np.complex128]
@@ -228,14 +229,18 @@ def solve_applied(scene: Scene, kin: Kinematics, loads: Loads, applied: AppliedL
         forces[f.link].append(f)
     for m in applied.moments:
         moments[m.link].append(m)
-    solved: list[GroupForces] = []
-    kin.structure.no_triad(scene.path, "force analysis")
+    solved: list[Any] = []  # GroupForces, or TriadForces for a class-III group
     for g in reversed(kin.structure.groups):
-        gf = _SOLVERS[g.kind](kin, g, forces, moments)
+        if isinstance(g, TriadGroup):  # class III: by Assur's special point
+            from plans.forces.triad import solve_triad
+
+            gf = solve_triad(kin, g, forces, moments, Reaction)
+        else:
+            gf = _SOLVERS[g.kind](kin, g, forces, moments)
         solved.append(gf)
-        # what the group sends back to the known links p and q (F_pi = −F_ip)
-        for rc in (gf.reactions[0], gf.reactions[2]):
-            if rc.frm == scene.frame:
+        # what the group sends back to the known links (F_pi = −F_ip)
+        for rc in gf.reactions:
+            if rc.frm == scene.frame or rc.frm in g.links:
                 continue
             forces[rc.frm].append(_bound(kin, rc.frm, rc.r, -rc.F, _fname(scene, rc.frm, rc.on), rc.point))
             if rc.guide is not None:
@@ -311,7 +316,7 @@ def _guide(kin: Kinematics, jt: Joint) -> C:
 
 
 def _check(kin: Kinematics, g: Group, det: R, scale: R | float, point: str) -> None:
-    bad = np.abs(det) <= 1e-12 * scale
+    bad = np.abs(det) <= LOCK_SIN * scale
     if bad.any():
         k = int(np.flatnonzero(bad)[0])
         raise Locked("the two unknown reaction directions are parallel: the group locks here",
@@ -640,6 +645,11 @@ def force_polygons(fa: ForceAnalysis, k: int) -> tuple[ForcePolygon, ...]:
     out = []
     for gf in fa.groups:
         g = gf.group
+        if isinstance(g, TriadGroup):  # class III: by Assur's special point
+            from plans.forces.triad_polygon import triad_polygon
+
+            out.append(triad_polygon(fa, gf, k, _Poly, ForcePolygon))
+            continue
         i, j = g.links
         r1, r2, r3 = gf.reactions
         n1, n2, n3 = (rc.name(scene.fij) for rc in gf.reactions)

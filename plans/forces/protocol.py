@@ -16,6 +16,7 @@ from plans.kinematics.plan import Plan, Step
 from plans.lines import cross
 from plans.phrases import Phrase, phrase
 from plans.records import frozen
+from plans.tolerances import EXACT_ZERO_REL
 
 
 @frozen
@@ -52,7 +53,7 @@ def _moment_terms(forces, moments, P: complex, k: int, mu_l: float) -> tuple[lis
         r = complex(f.r[k])
         m = cross(r - P, F)
         h = abs(m) / abs(F)
-        if h <= 1e-12 * max(abs(r - P), 1e-300):  # passes through P up to round-off
+        if h <= EXACT_ZERO_REL * max(abs(r - P), 1e-300):  # passes through P up to round-off
             m, h = 0.0, 0.0
         else:
             d = F / abs(F)
@@ -170,7 +171,12 @@ def force_steps(fa: ForceAnalysis, lv: LeverAnalysis, k: int) -> tuple[ForceStep
     out: list[ForceStep] = []
     for gf, poly in zip(fa.groups, polys, strict=False):
         name = f"group {gf.group.name}"
-        out += [ForceStep(name, s, arms) for s, arms in _group_steps(fa, gf, k, mu_l)]
+        if hasattr(gf, "S"):  # class III: the leashes' and the group's moments about Assur's point
+            from plans.forces.triad_polygon import triad_steps
+
+            out += [ForceStep(name, s, arms) for s, arms in triad_steps(fa, gf, k, mu_l, _equation, _moment_terms)]  # type: ignore[arg-type]
+        else:
+            out += [ForceStep(name, s, arms) for s, arms in _group_steps(fa, gf, k, mu_l)]
         out += [ForceStep(name, s) for s in poly.plan.steps]
     crank_poly = polys[-1]
     out += [ForceStep("crank", s, arms) for s, arms in _crank_steps(fa, k, mu_l)]

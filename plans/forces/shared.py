@@ -3,16 +3,15 @@ draftsman reads, and two small vector helpers (over positions)."""
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 import numpy as np
 from numpy.typing import NDArray
 
 from plans.kinematics import construction
 from plans.kinematics.scales import fit
-
-if TYPE_CHECKING:
-    from plans.forces.polygons import ForceAnalysis
+from plans.scene.model import Scene
+from plans.units import DUST
 
 C = NDArray[np.complex128]
 R = NDArray[np.float64]
@@ -33,7 +32,18 @@ def nice_scale(longest: float, target_mm: float = 100.0) -> float:
     return construction.nice_scale(longest, target_mm, _NICE)
 
 
-def mu_force(fa: ForceAnalysis, values: list[complex]) -> float:
+class Forces(Protocol):
+    """What sets a force scale: the scene and the largest reaction over the positions
+    (:class:`plans.forces.polygons.ForceAnalysis`)."""
+
+    @property
+    def scene(self) -> Scene: ...
+
+    @property
+    def largest_reaction(self) -> float: ...
+
+
+def mu_force(fa: Forces, values: list[complex]) -> float:
     """The scene's μF when it gives one, else a round scale for the longest of ``values``;
     never from forces that are zero up to round-off (then the cycle's largest sets it)."""
     given = fa.scene.scales.get("force")
@@ -41,7 +51,7 @@ def mu_force(fa: ForceAnalysis, values: list[complex]) -> float:
         return given
     longest = max((abs(v) for v in values), default=0.0)
     cycle = fa.largest_reaction
-    if longest <= 1e-9 * cycle:  # zero up to round-off: a point, at the cycle's scale
+    if longest <= DUST * cycle:  # zero up to round-off: a point, at the cycle's scale
         longest = cycle
     return nice_scale(longest, 100.0 * fit(fa.scene))
 

@@ -21,10 +21,10 @@ def _run(args: argparse.Namespace) -> int:
     from plans.io import atomic_write, dumps
 
     from .meshing import drawn_contact_ratios
-    from .model import load_gears
-    from .solve import solve_gears, table, to_json
+    from .solution import solve_file
+    from .solve import table, to_json
 
-    sol = solve_gears(load_gears(args.file))
+    sol = solve_file(args.file).solution
     data = dumps(to_json(sol, drawn_contact_ratios(sol)))
     if args.json == "-":
         sys.stdout.write(data)

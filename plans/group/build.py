@@ -240,7 +240,7 @@ def linkage_key(data: dict[str, Any], path: str) -> tuple[dict[str, dict[str, fl
     """Every figure of the scene's sheets at every position, exact, at the nice scales a
     draftsman picks (the ones ``plans check --template`` lists)."""
     from plans.check.checkfile import check_from_dict
-    from plans.check.forms import _names
+    from plans.check.forms import question_names
     from plans.check.providers import Context, exact_value
     from plans.kinematics.construction import default_scales
     from plans.kinematics.exact import solve
@@ -250,7 +250,7 @@ def linkage_key(data: dict[str, Any], path: str) -> tuple[dict[str, dict[str, fl
     kin = solve(scene, order=2)
     mv, ma = default_scales(kin)
     phis = tuple(scene.driver.phis_deg)
-    names = _names(scene, data, phis)  # type: ignore[arg-type]  # an inline scene: not on disk yet
+    names = question_names(scene, data, phis)  # type: ignore[arg-type]  # an inline scene: not on disk yet
     scales: dict[str, Any] = {"length": {"mu": 1000}, "velocity": {"mu": mv}, "acceleration": {"mu": ma}}
     skeleton = {"format": 1, "scene": data, "scales": scales,
                 "positions": [{"phi_deg": p, "values": {f"omega_{scene.driver.link}": 1.0}} for p in phis]}

@@ -24,7 +24,7 @@ def run_group(args: argparse.Namespace) -> int | None:
 
 
 def _template(args: argparse.Namespace) -> int | None:
-    from plans.check.forms import _relative
+    from plans.check.forms import scene_reference
     from plans.io import read_toml
 
     src = Path(args.template)
@@ -39,7 +39,7 @@ def _template(args: argparse.Namespace) -> int | None:
     from plans.group.sheets import blank, sheet_key
 
     target = Path(args.output) if args.output else None
-    ref = str(src.resolve()) if target is None else _relative(src, target)
+    ref = str(src.resolve()) if target is None else scene_reference(src, target)
     text = blank(kind, ref, sheet_key(kind, data, str(src)), "")
     from plans.check.forms import put_form
 

@@ -163,14 +163,14 @@ def synthesis_values(data: dict[str, Any], path: str) -> tuple[str, dict[str, fl
     """A synthesis task designed: the scene's text and the design's figures (lengths
     ``l_<name>`` in the file's unit, ``theta`` in degrees, ``K``, the stroke ``H`` or the
     swing ``psi`` in degrees, ``gamma_min`` in degrees, as measured back on the design)."""
-    from plans.synthesis.cli import _check_scene, results
+    from plans.synthesis.cli import check_scene, results
     from plans.synthesis.design import design
     from plans.synthesis.model import task_from_dict
     from plans.synthesis.scene import scene_text
 
     d = design(task_from_dict(data, path))
     text = scene_text(d)
-    _check_scene(text, path)
+    check_scene(text, path)
     res = results(d, "scene.toml")
     out = {f"l_{k}": float(v) for k, v in res["lengths"].items() if v}
     out["K"] = float(res["K_measured"])

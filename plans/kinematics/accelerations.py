@@ -17,13 +17,14 @@ from plans.kinematics.dyads import (
     coincident,
     ensure,
     lab,
+    lay_coriolis,
+    lay_normal,
     link_points,
     meet,
     read_rates,
 )
 from plans.kinematics.structure import Group, TriadGroup
 from plans.phrases import phrase
-from plans.units import clean
 
 
 class _VelReader:
@@ -84,38 +85,6 @@ def acceleration_plan(snap: Scheme, mu: float, vb: Builder, pencil: Pencil, prot
     return b
 
 
-def _normal(b: Builder, vr: _VelReader, link: int, frm: str, frm_xy: np.ndarray, P: np.ndarray,
-            X: np.ndarray, Pn: str, Xn: str) -> tuple[str, np.ndarray]:
-    """Lay off a_XP^n = ω²·l toward P from the image of P; ω read off the velocity plan."""
-    w = vr.omega(link)
-    ln = abs(P - X)
-    lb = f"n_{Xn}{Pn}"
-    vec = b.pencil.vector(b.mu * w * w * ln, P - X, ln, lb)
-    b.add(lb, frm_xy + vec)
-    b.step("lay off", (frm,), lb, lambda: phrase(
-        "a_normal", X=Xn, P=Pn, v=clean(abs(b.s(w * ln)), b.s(vr.vb.ref)), l=b.s(ln), an=clean(b.s(w * w * ln), b.s(b.ref)),
-        mm=abs(b.s(vec)), frm=frm))
-    b.seg(frm, lb, "normal", f"a_{Xn}{Pn}^n", b.snap.w[link] ** 2 * ln)
-    return lb, frm_xy + vec
-
-
-def _coriolis(b: Builder, vr: _VelReader, guide_link: int, v_rel: np.ndarray, frm: str, frm_xy: np.ndarray,
-              label: str, exact: np.ndarray) -> tuple[str, np.ndarray]:
-    """Lay off a^k = 2 ω × v_rel (v_rel turned 90° in the sense of ω) from ``frm``; ω and
-    v_rel are read off the velocity plan."""
-    w = vr.omega(guide_link)
-    muv = vr.vb.mu
-    v_read = b.pencil.read(abs(v_rel) * muv) / muv
-    lb = f"k_{label}"
-    vec = b.pencil.vector(b.mu * 2 * abs(w) * v_read, 1j * b.xp.sign(w) * v_rel, 0.0, lb)
-    b.add(lb, frm_xy + vec)
-    b.step("lay off", (frm,), lb, lambda: phrase(
-        "a_coriolis", label=label, g=guide_link, w=abs(b.s(w)), v=clean(abs(b.s(v_rel)), b.s(vr.vb.ref)),
-        ak=clean(abs(b.s(2 * w * v_rel)), b.s(b.ref)), mm=abs(b.s(vec))))
-    b.seg(frm, lb, "coriolis", f"a^k_{label}", exact)
-    return lb, frm_xy + vec
-
-
 def _a_rrr(b: Builder, g: Group, vr: _VelReader) -> None:
     snap = b.snap
     i, j = g.links
@@ -125,8 +94,8 @@ def _a_rrr(b: Builder, g: Group, vr: _VelReader) -> None:
     x1, x3 = b.image(p, j1.point), b.image(q, j3.point)
     n1 = ensure(b, p, j1.point, x1)
     n3 = ensure(b, q, j3.point, x3)
-    m1, y1 = _normal(b, vr, i, n1, x1, P1, B, j1.point, j2.point)
-    m3, y3 = _normal(b, vr, j, n3, x3, P3, B, j3.point, j2.point)
+    m1, y1 = lay_normal(b, vr, i, n1, x1, P1, B, j1.point, j2.point)
+    m3, y3 = lay_normal(b, vr, j, n3, x3, P3, B, j3.point, j2.point)
     L1 = b.line(y1, 1j * (B - P1), abs(B - P1), f"⟂ {j1.point}{j2.point}")
     L3 = b.line(y3, 1j * (B - P3), abs(B - P3), f"⟂ {j3.point}{j2.point}")
     out = lab(j2.point)
@@ -150,13 +119,13 @@ def _a_rrp(b: Builder, g: Group, vr: _VelReader) -> None:
     u, span = snap.guide(j3)
     x1 = b.image(p, j1.point)
     n1 = ensure(b, p, j1.point, x1)
-    m1, y1 = _normal(b, vr, i, n1, x1, P1, B, j1.point, j2.point)
+    m1, y1 = lay_normal(b, vr, i, n1, x1, P1, B, j1.point, j2.point)
     nq, xq = coincident(b, q, j2.point, B)
     start, start_xy = nq, xq
     if q != snap.scene.frame:
         v_rel = vr.rel(f"{lab(j2.point)}{q}", lab(j2.point))
         sd, _ = snap.slide(j3)
-        start, start_xy = _coriolis(b, vr, q, v_rel, nq, xq, f"{j2.point}{j}{j2.point}{q}",
+        start, start_xy = lay_coriolis(b, vr, q, v_rel, nq, xq, f"{j2.point}{j}{j2.point}{q}",
                                     abs(2 * snap.w[q] * sd))
     L1 = b.line(y1, 1j * (B - P1), abs(B - P1), f"⟂ {j1.point}{j2.point}")
     L3 = b.line(start_xy, u, span, f"∥ guide of {j2.point}")
@@ -185,11 +154,11 @@ def _a_rpr(b: Builder, g: Group, vr: _VelReader) -> None:
     na = ensure(b, p, j1.point, xa)
     nc = ensure(b, q, j3.point, xc)
     An = f"{j1.point}{j}"
-    mc, yc = _normal(b, vr, j, nc, xc, Cq, A, j3.point, An)
+    mc, yc = lay_normal(b, vr, j, nc, xc, Cq, A, j3.point, An)
     # a_A3 = a_A2 + a^k_A3A2 + a^r_A3A2, v_A3A2 read from the velocity plan (a2 -> a3)
     v_rel = vr.rel(lab(j1.point), f"{lab(j1.point)}{j}")
     sd, sdd = snap.slide(j2)
-    mk, yk = _coriolis(b, vr, j, v_rel, na, xa, f"{j1.point}{j}{j1.point}{i}", abs(2 * snap.w[j] * sd))
+    mk, yk = lay_coriolis(b, vr, j, v_rel, na, xa, f"{j1.point}{j}{j1.point}{i}", abs(2 * snap.w[j] * sd))
     L1 = b.line(yc, 1j * (A - Cq), abs(A - Cq), f"⟂ {j3.point}{j1.point}")
     L2 = b.line(yk, u, span, f"∥ slot of link {j}")
     out = f"{lab(j1.point)}{j}"
@@ -221,7 +190,7 @@ def _a_prp(b: Builder, g: Group, vr: _VelReader) -> None:
         if carrier != snap.scene.frame:
             v_rel = vr.rel(f"{lab(j2.point)}{carrier}", out)
             sd, _ = snap.slide(jt)
-            nm, xy = _coriolis(b, vr, carrier, v_rel, nm, xy, f"{j2.point}{link}{j2.point}{carrier}",
+            nm, xy = lay_coriolis(b, vr, carrier, v_rel, nm, xy, f"{j2.point}{link}{j2.point}{carrier}",
                                abs(2 * snap.w[carrier] * sd))
         ends.append((nm, xy))
     L1 = b.line(ends[0][1], u1, s1, f"∥ guide of link {i}")
@@ -255,13 +224,13 @@ def _a_rpp(b: Builder, g: Group, vr: _VelReader) -> None:
     if q != snap.scene.frame:
         v_rel = vr.rel(f"{lab(j1.point)}{q}", out)
         sd3, _ = snap.slide(j3)
-        s3, y3 = _coriolis(b, vr, q, v_rel, nq, xq, f"{j1.point}{j}{j1.point}{q}", abs(2 * snap.w[q] * sd3))
+        s3, y3 = lay_coriolis(b, vr, q, v_rel, nq, xq, f"{j1.point}{j}{j1.point}{q}", abs(2 * snap.w[q] * sd3))
     # a_Aj = a_Ai + a^k_AjAi + a^r_AjAi, v_AjAi from the velocity plan (a -> aj)
     v_rel2 = vr.rel(lab(j1.point), out)
     sd2, sdd2 = snap.slide(j2)
     s2, y2 = na, xa
     if q != snap.scene.frame or b.xp.any(snap.w.get(j, 0.0) != 0.0):
-        s2, y2 = _coriolis(b, vr, j, v_rel2, na, xa, f"{j1.point}{j}{j1.point}{i}", abs(2 * snap.w[j] * sd2))
+        s2, y2 = lay_coriolis(b, vr, j, v_rel2, na, xa, f"{j1.point}{j}{j1.point}{i}", abs(2 * snap.w[j] * sd2))
     L3 = b.line(y3, u3, sp3, f"∥ guide of link {j}")
     L2 = b.line(y2, u2, sp2, f"∥ slot of link {j}")
     meet(b, g, L3, L2, out, b.mu * snap.a(j, A), j1.point, ())

@@ -9,19 +9,16 @@ from __future__ import annotations
 
 import cmath
 import math
-from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
 from plans.errors import Indeterminate, Locked, NotAssemblable
+from plans.kinematics.context import Context, Motion, place_link, point_at
 from plans.kinematics.structure import Group, Structure, TriadGroup
 from plans.lines import cross
 from plans.scene.model import Joint, Scene
 from plans.tolerances import ASSEMBLY_REL, LOCK_SIN
-
-if TYPE_CHECKING:
-    from plans.kinematics.exact import _Ctx
 
 # numpy arrays over positions (or numbers at one position); typed loosely because numpy's
 # operator stubs do not follow Optional fields that the order of analysis fills in.
@@ -29,24 +26,10 @@ C = Any  # complex128 array, shape (N,)
 R = Any  # float64 array, shape (N,)
 
 
-@dataclass(slots=True)
-class _Motion:
-    rot: C  # e^{iθ}: kept as a unit complex, so no angle is ever taken in the solvers
-    r0: C
-    omega: R = None
-    v0: C = None
-    eps: R = None
-    a0: C = None
-
-    @property
-    def theta(self) -> R:
-        return np.angle(self.rot)
-
-
 # --------------------------------------------------------------------------- helpers
 
 
-def _program(scene: Scene, st: Structure) -> list:
+def program(scene: Scene, st: Structure) -> list:
     """(solver, group, constants) per group, derived once per scene and structure."""
     done = scene.memo.get("exact")
     if done is None or done[0] is not st:
@@ -62,35 +45,12 @@ def _step(scene: Scene, g: Any) -> tuple:
     return _SOLVERS[g.kind], g, _CONSTANTS[g.kind](scene, g)
 
 
-def _fail(cls, ctx: _Ctx, g: Group, mask, point: str, why: str):
+def _fail(cls, ctx: Context, g: Group, mask, point: str, why: str):
     k = int(np.flatnonzero(np.atleast_1d(mask))[0])
     return cls(why, group=f"{g.kind} {g.name}", point=point, phi_deg=float(ctx.phis[k]))
 
 
-def _at(ctx: _Ctx, link: int, z: complex) -> tuple[Any, Any, Any]:
-    """r, v, a of the point with local coordinates z on a known link (v, a only as ordered)."""
-    m = ctx.motion[link]
-    if link == ctx.frame:
-        return m.r0 + z, m.v0, m.a0
-    if link == ctx.crank and z != ctx.zpivot:
-        done = ctx.pins.get(z)  # the crank pin carries several groups (V-engine)
-        if done is None:
-            rel = m.rot * (z - ctx.zpivot)
-            done = ctx.pins[z] = (ctx.pivot + rel, ctx.W * rel, ctx.E * rel)
-        return done
-    if not z:
-        return m.r0, m.v0, m.a0
-    rel = m.rot * z
-    v = a = None
-    if ctx.order >= 1:
-        w = 1j * m.omega
-        v = m.v0 + w * rel
-        if ctx.order >= 2:
-            a = m.a0 + (1j * m.eps - m.omega * m.omega) * rel
-    return m.r0 + rel, v, a
-
-
-def _carried(ctx: _Ctx, link: int, X: C) -> tuple[C, C]:
+def _carried(ctx: Context, link: int, X: C) -> tuple[C, C]:
     """v and a of the point fixed to ``link`` that coincides with X now (zero on the frame)."""
     m = ctx.motion[link]
     if link == ctx.frame:
@@ -101,7 +61,7 @@ def _carried(ctx: _Ctx, link: int, X: C) -> tuple[C, C]:
     return v, a
 
 
-def _guide_line(ctx: _Ctx, jt: Joint, constants: bool = False) -> tuple[C, C]:
+def _guide_line(ctx: Context, jt: Joint, constants: bool = False) -> tuple[C, C]:
     """Global origin and unit direction of a joint's guide (with ``constants``: plain numbers
     for a guide on the frame)."""
     assert jt.guide is not None
@@ -111,14 +71,7 @@ def _guide_line(ctx: _Ctx, jt: Joint, constants: bool = False) -> tuple[C, C]:
     return m.r0 + m.rot * jt.guide.origin, m.rot * jt.guide.direction
 
 
-def _place(ctx: _Ctx, link: int, rot: C, anchor: C, z: complex) -> _Motion:
-    """A link placed by its rotation e^{iθ} and one of its points (local z)."""
-    m = _Motion(rot, anchor - rot * z if z else anchor)
-    ctx.motion[link] = m
-    return m
-
-
-def _rates(ctx: _Ctx, m: _Motion, anchor: C, v: C, a: C, omega: R, eps: R) -> None:
+def _rates(ctx: Context, m: Motion, anchor: C, v: C, a: C, omega: R, eps: R) -> None:
     """Rates of a placed link from one point's v, a and the link's ω, ε."""
     rel = m.r0 - anchor if m.r0 is not anchor else None
     m.omega = omega
@@ -148,7 +101,7 @@ class _System:
         return (rhs * self.k1).imag, (rhs * self.k2).imag
 
 
-def _lock(ctx: _Ctx, g: Group, det: R, size: Any, point: str, system: _System | None = None,
+def _lock(ctx: Context, g: Group, det: R, size: Any, point: str, system: _System | None = None,
           rhs: Any = None) -> None:
     """Condition number |c1||c2| / |c1 × c2|; parallel construction lines lock the group, or,
     where they coincide (the known velocity lies along them: a change point, such as a
@@ -170,7 +123,7 @@ def _lock(ctx: _Ctx, g: Group, det: R, size: Any, point: str, system: _System | 
     ctx.conditions[g.name] = size / adet
 
 
-def _root(ctx: _Ctx, g: Group, x: R, y: R, scale: Any, point: str, why: Any) -> R:
+def _root(ctx: Context, g: Group, x: R, y: R, scale: Any, point: str, why: Any) -> R:
     """sqrt(x·y) with x·y >= 0 up to rounding (relative to scale()²); below that not
     assemblable (``why(k)`` says why at the position k the error names)."""
     xp = ctx.xp
@@ -200,7 +153,7 @@ def _branch_hint(g: Group) -> str:
 _NAMES: dict[Joint, str] = {}
 
 
-def _name(jt: Joint) -> str:
+def slide_name(jt: Joint) -> str:
     """A P joint's name (formatted once)."""
     nm = _NAMES.get(jt)
     if nm is None:
@@ -208,13 +161,13 @@ def _name(jt: Joint) -> str:
     return nm
 
 
-def _turn(jt: Joint) -> complex:
+def slider_turn(jt: Joint) -> complex:
     """e^{i(α − α_s)}: a slider's rotation relative to the link carrying its guide."""
     assert jt.guide is not None
     return cmath.exp(1j * (jt.guide.angle - jt.slider_angle))
 
 
-def _rotation_of(ctx: _Ctx, q: int, turn: complex) -> C:
+def _rotation_of(ctx: Context, q: int, turn: complex) -> C:
     """Rotation of a link that keeps its angle to link q."""
     if q == ctx.frame:
         return ctx.xp.full(ctx.n, turn)
@@ -241,13 +194,13 @@ def _local(scene: Scene, link: int, name: str) -> complex:
     return scene.frame_points[name] if link == scene.frame else scene.links[link].points[name]
 
 
-def _rrr(ctx: _Ctx, g: Group, k: tuple) -> None:
+def _rrr(ctx: Context, g: Group, k: tuple) -> None:
     zp, zq, l1, l3, ci, cj, z1i, z3j, half_diff = k
     i, j = g.links
     j1, j2, j3 = g.joints
     p, q = g.known
-    P1, vP1, aP1 = _at(ctx, p, zp)
-    P3, vP3, aP3 = _at(ctx, q, zq)
+    P1, vP1, aP1 = point_at(ctx, p, zp)
+    P3, vP3, aP3 = point_at(ctx, q, zq)
     d = P3 - P1
     D = abs(d)
     if ctx.xp.low(D) <= ASSEMBLY_REL * (l1 + l3):
@@ -264,8 +217,8 @@ def _rrr(ctx: _Ctx, g: Group, k: tuple) -> None:
     r3 = B - P3
     # rotations from the unit vectors along the links (|r1| = l1 only to rounding, which
     # a near-tangent assembly makes large)
-    mi = _place(ctx, i, r1 * (ci / abs(r1)), P1, z1i)
-    mj = _place(ctx, j, r3 * (cj / abs(r3)), P3, z3j)
+    mi = place_link(ctx, i, r1 * (ci / abs(r1)), P1, z1i)
+    mj = place_link(ctx, j, r3 * (cj / abs(r3)), P3, z3j)
     if ctx.order < 1:
         return
     # iωi r1 − iωj r3 = vP3 − vP1
@@ -287,15 +240,15 @@ def _k_rrp(scene: Scene, g: Group) -> tuple:
     zi = Li.points[j2.point] - Li.points[j1.point]
     l1 = abs(zi)
     return (_local(scene, g.known[0], j1.point), l1, zi.conjugate() / l1, Li.points[j1.point],
-            _turn(j3), Lj.points[j2.point])
+            slider_turn(j3), Lj.points[j2.point])
 
 
-def _rrp(ctx: _Ctx, g: Group, k: tuple) -> None:
+def _rrp(ctx: Context, g: Group, k: tuple) -> None:
     zp, l1, ci, z1i, turn, zBj = k
     i, j = g.links
     j1, j2, j3 = g.joints
     p, q = g.known
-    P1, vP1, aP1 = _at(ctx, p, zp)
+    P1, vP1, aP1 = point_at(ctx, p, zp)
     G0, u = _guide_line(ctx, j3, constants=True)
     wu = (P1 - G0) * u.conjugate()  # t0 + i·e: along and across the guide
     t0, e = wu.real, wu.imag
@@ -305,8 +258,8 @@ def _rrp(ctx: _Ctx, g: Group, k: tuple) -> None:
                          + _branch_hint(g))
     B = G0 + (t0 + root if g.branch > 0 else t0 - root) * u
     r1 = B - P1
-    mi = _place(ctx, i, r1 * (ci / abs(r1)), P1, z1i)
-    mj = _place(ctx, j, _rotation_of(ctx, q, turn), B, zBj)
+    mi = place_link(ctx, i, r1 * (ci / abs(r1)), P1, z1i)
+    mj = place_link(ctx, j, _rotation_of(ctx, q, turn), B, zBj)
     if ctx.order < 1:
         return
     vBq, aBq = _carried(ctx, q, B)
@@ -327,7 +280,7 @@ def _rrp(ctx: _Ctx, g: Group, k: tuple) -> None:
             aB = aBq + cor + sdd * u
     _rates(ctx, mi, P1, vP1, aP1, wi, ei)
     _rates(ctx, mj, B, vB, aB, mq.omega, mq.eps)
-    ctx.slides[_name(j3)] = (sd, sdd)
+    ctx.slides[slide_name(j3)] = (sd, sdd)
 
 
 def _k_rpr(scene: Scene, g: Group) -> tuple:
@@ -338,18 +291,18 @@ def _k_rpr(scene: Scene, g: Group) -> tuple:
     assert guide is not None
     c0 = guide.origin - Lj.points[j3.point]
     return (_local(scene, g.known[0], j1.point), _local(scene, g.known[1], j3.point),
-            cross(guide.direction, c0), Lj.points[j3.point], _turn(j2),
+            cross(guide.direction, c0), Lj.points[j3.point], slider_turn(j2),
             scene.links[i].points[j1.point])
 
 
-def _rpr(ctx: _Ctx, g: Group, k: tuple) -> None:
+def _rpr(ctx: Context, g: Group, k: tuple) -> None:
     zp, zq, ecc, z3j, turn, z1i = k
     i, j = g.links
     j1, j2, j3 = g.joints
     p, q = g.known
     xp = ctx.xp
-    A, vA, aA = _at(ctx, p, zp)
-    Cq, vC, aC = _at(ctx, q, zq)
+    A, vA, aA = point_at(ctx, p, zp)
+    Cq, vC, aC = point_at(ctx, q, zq)
     guide = j2.guide
     assert guide is not None
     d = A - Cq
@@ -365,8 +318,8 @@ def _rpr(ctx: _Ctx, g: Group, k: tuple) -> None:
     # θ_j: the slot through C + e^{iθ}c0 along e^{i(θ+α)} holds A iff D sin(ψ − θ − α) = ecc;
     # branch +1 puts A ahead along the slot
     tj = psi - guide.angle - s if g.branch > 0 else psi - guide.angle - math.pi + s
-    mj = _place(ctx, j, xp.exp(1j * tj), Cq, z3j)
-    mi = _place(ctx, i, mj.rot * turn, A, z1i)
+    mj = place_link(ctx, j, xp.exp(1j * tj), Cq, z3j)
+    mi = place_link(ctx, i, mj.rot * turn, A, z1i)
     if ctx.order < 1:
         return
     u = mj.rot * guide.direction
@@ -380,15 +333,15 @@ def _rpr(ctx: _Ctx, g: Group, k: tuple) -> None:
         ej, sdd = sys2(aA - aC + wj * wj * d - cor)
     _rates(ctx, mj, Cq, vC, aC, wj, ej)
     _rates(ctx, mi, A, vA, aA, wj, ej)
-    ctx.slides[_name(j2)] = (sd, sdd)
+    ctx.slides[slide_name(j2)] = (sd, sdd)
 
 
 def _k_prp(scene: Scene, g: Group) -> tuple:
-    return (_turn(g.joints[0]), _turn(g.joints[2]), scene.links[g.links[0]].points[g.joints[1].point],
+    return (slider_turn(g.joints[0]), slider_turn(g.joints[2]), scene.links[g.links[0]].points[g.joints[1].point],
             scene.links[g.links[1]].points[g.joints[1].point])
 
 
-def _prp(ctx: _Ctx, g: Group, k: tuple) -> None:
+def _prp(ctx: Context, g: Group, k: tuple) -> None:
     turn1, turn3, zBi, zBj = k
     i, j = g.links
     j1, j2, j3 = g.joints
@@ -404,8 +357,8 @@ def _prp(ctx: _Ctx, g: Group, k: tuple) -> None:
     s1, _ = sys2(G3 - G1)
     B = G1 + s1 * u1
     mp, mq = ctx.motion[p], ctx.motion[q]
-    mi = _place(ctx, i, _rotation_of(ctx, p, turn1), B, zBi)
-    mj = _place(ctx, j, _rotation_of(ctx, q, turn3), B, zBj)
+    mi = place_link(ctx, i, _rotation_of(ctx, p, turn1), B, zBi)
+    mj = place_link(ctx, j, _rotation_of(ctx, q, turn3), B, zBj)
     if ctx.order < 1:
         return
     vBp, aBp = _carried(ctx, p, B)
@@ -420,8 +373,8 @@ def _prp(ctx: _Ctx, g: Group, k: tuple) -> None:
         aB = aBp + k1 + sdd1 * u1
     _rates(ctx, mi, B, vB, aB, mp.omega, mp.eps)
     _rates(ctx, mj, B, vB, aB, mq.omega, mq.eps)
-    ctx.slides[_name(j1)] = (sd1, sdd1)
-    ctx.slides[_name(j3)] = (sd3, sdd3)
+    ctx.slides[slide_name(j1)] = (sd1, sdd1)
+    ctx.slides[slide_name(j3)] = (sd3, sdd3)
 
 
 def _k_rpp(scene: Scene, g: Group) -> tuple:
@@ -430,16 +383,16 @@ def _k_rpp(scene: Scene, g: Group) -> tuple:
     guide = j2.guide
     assert guide is not None
     zK = scene.links[j].points[j3.point]
-    return (_local(scene, g.known[0], j1.point), _turn(j3), zK, zK - guide.origin, _turn(j2),
+    return (_local(scene, g.known[0], j1.point), slider_turn(j3), zK, zK - guide.origin, slider_turn(j2),
             scene.links[i].points[j1.point])
 
 
-def _rpp(ctx: _Ctx, g: Group, k: tuple) -> None:
+def _rpp(ctx: Context, g: Group, k: tuple) -> None:
     zp, turn3, zK, zKg, turn2, z1i = k
     i, j = g.links
     j1, j2, j3 = g.joints
     p, q = g.known
-    A, vA, aA = _at(ctx, p, zp)
+    A, vA, aA = point_at(ctx, p, zp)
     G3, u3 = _guide_line(ctx, j3)
     mq = ctx.motion[q]
     rot = _rotation_of(ctx, q, turn3)
@@ -454,8 +407,8 @@ def _rpp(ctx: _Ctx, g: Group, k: tuple) -> None:
     ctx.conditions[g.name] = 1.0 / abs(det)
     # r0_j = G3 + t u3 − rot zK ; A on slot: cross(u2, A − G3 − t u3 + rot (zK − g2)) = 0
     t = cross(u2, A - G3 + rot * zKg) / det
-    ctx.motion[j] = _Motion(rot, G3 + t * u3 - rot * zK)
-    mi = _place(ctx, i, rot * turn2, A, z1i)
+    ctx.motion[j] = Motion(rot, G3 + t * u3 - rot * zK)
+    mi = place_link(ctx, i, rot * turn2, A, z1i)
     if ctx.order < 1:
         return
     vAq, aAq = _carried(ctx, q, A)
@@ -473,8 +426,8 @@ def _rpp(ctx: _Ctx, g: Group, k: tuple) -> None:
             aAj = aAq + k3 + sdd3 * u3
     _rates(ctx, ctx.motion[j], A, vAj, aAj, mq.omega, mq.eps)
     _rates(ctx, mi, A, vA, aA, mq.omega, mq.eps)
-    ctx.slides[_name(j2)] = (sd2, sdd2)
-    ctx.slides[_name(j3)] = (sd3, sdd3)
+    ctx.slides[slide_name(j2)] = (sd2, sdd2)
+    ctx.slides[slide_name(j3)] = (sd3, sdd3)
 
 
 _SOLVERS = {"RRR": _rrr, "RRP": _rrp, "RPR": _rpr, "PRP": _prp, "RPP": _rpp}

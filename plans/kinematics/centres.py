@@ -24,16 +24,17 @@ from itertools import combinations
 from typing import TYPE_CHECKING, Any
 
 from plans.records import frozen
+from plans.tolerances import COINCIDE_REL, LOCK_SIN
 
 if TYPE_CHECKING:
     from plans.kinematics.exact import Kinematics
 
 #: |sin| of the angle between two Kennedy lines below which they are taken as parallel
 #: (links related by sliding pairs give lines parallel to rounding, ~1e-16).
-PARALLEL = 1e-12
+PARALLEL = LOCK_SIN
 #: Distance between two parallel lines, as a fraction of the mechanism's size, below which
 #: they are one line (the centre is then not fixed by them).
-COINCIDENT = 1e-9
+COINCIDENT = COINCIDE_REL
 
 
 @frozen
@@ -50,6 +51,9 @@ class Centre:
     source: Any  # "pair" | ((i, k), (k, j)) | None
     other: Any = None
     why: str = ""  # for an undetermined centre: what the construction met
+    #: "omega_ratio" where Kennedy's lines coincide and the centre is fixed on that line by
+    #: the angular velocities (``source`` then names the two centres it divides)
+    by: str = ""
 
     @property
     def label(self) -> str:
@@ -65,6 +69,8 @@ class Centre:
             out["with"] = [list(self.other[0]), list(self.other[1])]
         if self.why:
             out["undetermined"] = self.why
+        if self.by:
+            out["by"] = self.by
         return out
 
 
@@ -145,49 +151,100 @@ def _meet(l1: Any, l2: Any, size: float) -> tuple[str, complex | None, float]:
     return "point", p1 + t * d1, abs(s)
 
 
-def kennedy(links: list[int], known: dict[tuple[int, int], Centre], size: float) -> dict[tuple[int, int], Centre]:
+def kennedy(links: list[int], known: dict[tuple[int, int], Centre], size: float,
+            omega: dict[int, float] | None = None) -> dict[tuple[int, int], Centre]:
     """All centres from the primary ones: sweep the unknown edges of the circle diagram,
-    closing each by the two best triangles available, until no edge can be added."""
+    closing each by the two best triangles available, until no edge can be added.  With the
+    links' angular velocities ``omega``, a centre whose Kennedy lines all coincide is fixed
+    on that line as the draftsman fixes it, by the ratio of the angular velocities."""
     found = dict(known)
     pending = [p for p in combinations(links, 2) if p not in found]
     why: dict[tuple[int, int], str] = {}
     progress = True
     while pending and progress:
-        progress = False
-        for i, j in list(pending):
-            lines = []
-            for k in links:
-                if k in (i, j):
-                    continue
-                a, b = found.get(_key(i, k)), found.get(_key(k, j))
-                if a is None or b is None:
-                    continue
-                ln = _line(a, b, size)
-                if ln is not None:
-                    lines.append((ln, ((i, k), (k, j))))
-            best: tuple | None = None
-            same = False
-            for (l1, s1), (l2, s2) in combinations(lines, 2):
-                kind, z, sin = _meet(l1, l2, size)
-                if kind == "same":
-                    same = True
-                    continue
-                rank = (sin >= 2.0, kind == "point", sin)
-                if best is None or rank > best[0]:
-                    best = (rank, kind, z, s1, s2)
-            if best is None:
-                if same:
-                    why[(i, j)] = "Kennedy's lines coincide"
-                continue
-            _, kind, z, s1, s2 = best
-            found[(i, j)] = Centre((i, j), z if kind == "point" else None, z if kind == "direction" else None,
-                                   s1, s2)  # as the circle diagram reads them: (i, k), (k, j)
-            pending.remove((i, j))
-            why.pop((i, j), None)
-            progress = True
+        progress = _sweep(links, found, pending, why, size)
+        if not progress and omega is not None:
+            progress = _by_ratio(links, found, pending, why, omega, size)
     for p in pending:
         found[p] = Centre(p, None, None, None, None, why.get(p, "no two Kennedy lines reach it"))
     return {p: found[p] for p in combinations(links, 2)}
+
+
+def _by_ratio(links: list[int], found: dict, pending: list, why: dict, omega: dict[int, float], size: float) -> bool:
+    """The first centre left open, fixed by a third link k with both P_ik and P_jk known: the
+    common point of i and j moves alike as a point of either, relative to k:
+    (ω_i − ω_k)(P − P_ik) = (ω_j − ω_k)(P − P_jk), so P divides P_ik P_jk in the ratio of the
+    relative angular velocities (on their Kennedy line).  Where ω_i = ω_j the relative motion
+    is a translation: P_ij lies at infinity, along two centres at infinity of one direction."""
+    scale = max((abs(w) for w in omega.values()), default=0.0)
+    if scale == 0.0:
+        return False
+    for i, j in list(pending):
+        wi, wj = omega.get(i, 0.0), omega.get(j, 0.0)
+        best: tuple | None = None
+        for k in links:
+            if k in (i, j):
+                continue
+            a, b = found.get(_key(i, k)), found.get(_key(k, j))
+            if a is None or b is None:
+                continue
+            wk = omega.get(k, 0.0)
+            if abs(wi - wj) <= 1e-12 * scale:
+                if a.direction is not None and b.direction is not None \
+                        and abs((a.direction.conjugate() * b.direction).imag) <= PARALLEL:
+                    best = (2.0 * size, None, a.direction, k)
+                continue
+            if a.point is None or b.point is None:
+                continue
+            z = ((wi - wk) * a.point - (wj - wk) * b.point) / (wi - wj)
+            spread = abs(a.point - b.point) + min(abs(wi - wk), abs(wj - wk)) / scale * size
+            if best is None or spread > best[0]:
+                best = (spread, z, None, k)
+        if best is None:
+            continue
+        _, z, d, k = best
+        found[(i, j)] = Centre((i, j), z, d, ((i, k), (k, j)), None, by="omega_ratio")
+        pending.remove((i, j))
+        why.pop((i, j), None)
+        return True
+    return False
+
+
+def _sweep(links: list[int], found: dict, pending: list, why: dict, size: float) -> bool:
+    """One sweep of the open edges by Kennedy's lines; True if any centre was added."""
+    progress = False
+    for i, j in list(pending):
+        lines = []
+        for k in links:
+            if k in (i, j):
+                continue
+            a, b = found.get(_key(i, k)), found.get(_key(k, j))
+            if a is None or b is None:
+                continue
+            ln = _line(a, b, size)
+            if ln is not None:
+                lines.append((ln, ((i, k), (k, j))))
+        best: tuple | None = None
+        same = False
+        for (l1, s1), (l2, s2) in combinations(lines, 2):
+            kind, z, sin = _meet(l1, l2, size)
+            if kind == "same":
+                same = True
+                continue
+            rank = (sin >= 2.0, kind == "point", sin)
+            if best is None or rank > best[0]:
+                best = (rank, kind, z, s1, s2)
+        if best is None:
+            if same:
+                why[(i, j)] = "Kennedy's lines coincide"
+            continue
+        _, kind, z, s1, s2 = best
+        found[(i, j)] = Centre((i, j), z if kind == "point" else None, z if kind == "direction" else None,
+                               s1, s2)  # as the circle diagram reads them: (i, k), (k, j)
+        pending.remove((i, j))
+        why.pop((i, j), None)
+        progress = True
+    return progress
 
 
 def size_of(kin: Kinematics) -> float:
@@ -196,7 +253,9 @@ def size_of(kin: Kinematics) -> float:
 
 def centres_at(kin: Kinematics, k: int) -> dict[tuple[int, int], Centre]:
     """All n(n−1)/2 instant centres at position k, keyed (i, j) with i < j."""
-    return kennedy(all_links(kin), primary(kin, k), size_of(kin))
+    scene = kin.scene
+    omega = {j: (0.0 if j == scene.frame else float(kin.omega(j)[k])) for j in all_links(kin)}
+    return kennedy(all_links(kin), primary(kin, k), size_of(kin), omega)
 
 
 @frozen

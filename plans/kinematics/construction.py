@@ -23,7 +23,7 @@ from typing import Any
 import numpy as np
 
 from plans.errors import Locked
-from plans.kinematics.dyads import Builder, Mixed, PerfectPencil, Scheme, plans_of
+from plans.kinematics.dyads import Builder, Mixed, Pencil, PerfectPencil, Scheme
 from plans.kinematics.exact import Kinematics
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step
 from plans.kinematics.scales import LONGEST_MM, ROUND, common_scales, refit, round_scale
@@ -116,6 +116,19 @@ class PositionPlans:
 _PERFECT = PerfectPencil()
 
 
+def plans_of(snap: Scheme, mv: float, ma: float | None, pencil: Pencil,
+             protocol: bool = False) -> tuple[Builder, Builder | None]:
+    """Both plans over the cases of ``snap`` (the acceleration plan when ``ma`` is given)."""
+    from plans.kinematics import (  # loaded with the first plan, not at start
+        accelerations,
+        velocities,
+    )
+
+    vb = velocities.velocity_plan(snap, mv, pencil, protocol)
+    ab = accelerations.acceleration_plan(snap, ma, vb, pencil, protocol) if ma is not None else None
+    return vb, ab
+
+
 def _at(x: Any, k: int) -> Any:
     if type(x) is not np.ndarray:  # a number: one position, or the same at every position
         return x
@@ -133,6 +146,8 @@ class _Together:
         self.phi = [snap.phi] if snap.one else snap.phi
         self.vb, self.ab = plans_of(snap, mv, ma, _PERFECT)
         self._columns: list[tuple] | None = None
+        self._plan_cols: dict[str, tuple] = {}
+        self._protocols: dict[tuple[str, int], tuple[Step, ...]] = {}  # written when first read
 
     def position(self, k: int) -> PositionPlans:
         return PositionPlans(float(self.phi[k]), source=self, k=k)
@@ -168,13 +183,27 @@ class _Together:
         return tuple(Reading(q, seg, None if mm is None else mm[k], mu, value[k], exact[k], unit, ref[k])
                      for q, seg, mm, mu, value, exact, unit, ref in self._columns)
 
+    def _plan_columns(self, b: Builder) -> tuple:
+        """A plan's arrays as Python lists over the positions, once for all of them (reading
+        them element by element from numpy is most of the time of every position's plan)."""
+        key = "velocity" if b is self.vb else "acceleration"
+        got = self._plan_cols.get(key)
+        if got is None:
+            n = len(self.phi)
+            pts = {name: _column(b.pts[name], n, complex) for name in b.order}
+            segs = [(s, e, kind, label, _column(mm, n, float), _column(v, n, float))
+                    for s, e, kind, label, mm, v in b.segments]
+            lines = [(_column(through, n, complex), _column(u, n, complex), label) for through, u, label in b.lines]
+            got = self._plan_cols[key] = (pts, segs, lines)
+        return got
+
     def plan(self, b: Builder, k: int) -> Plan:
-        points, _ = _points(b, k)
-        segments = tuple(Segment(s, e, kind, label, float(_at(mm, k)), float(_at(v, k)))
-                         for s, e, kind, label, mm, v in b.segments)
+        pts, segs, cols = self._plan_columns(b)
+        points, _ = _points(b, k, {name: col[k] for name, col in pts.items()})
+        segments = tuple(Segment(s, e, kind, label, mm[k], v[k]) for s, e, kind, label, mm, v in segs)
         lines = []
-        for through, u, label in b.lines:
-            p, d = complex(_at(through, k)), complex(_at(u, k))
+        for through, u, label in cols:
+            p, d = through[k], u[k]
             lines.append(ConstructionLine((p.real, p.imag), (d.real, d.imag), label))
         degenerate = tuple(f"{out}: construction lines parallel within {float(_at(s, k)):.1e} rad; "
                            f"the exact point is taken" for out, near, s in b.degenerate if _at(near, k))
@@ -183,7 +212,14 @@ class _Together:
                     degenerate=degenerate)
 
     def protocol(self, kind: str, k: int) -> tuple[Step, ...]:
-        """The steps of one plan at one position, sentences written (built again for it alone)."""
+        """The steps of one plan at one position, sentences written (built again for it alone),
+        once: kept here, where the plans were built."""
+        got = self._protocols.get((kind, k))
+        if got is None:
+            got = self._protocols[(kind, k)] = self._protocol(kind, k)
+        return got
+
+    def _protocol(self, kind: str, k: int) -> tuple[Step, ...]:
         kk = self.ks if type(self.ks) is int else int(np.arange(self.kin.n)[self.ks][k])
         vb, ab = plans_of(Scheme(self.kin, kk), self.mv, self.ma, _PERFECT, protocol=True)
         b = vb if kind == "velocity" else ab
@@ -193,16 +229,16 @@ class _Together:
 
 
 class _Protocol(Sequence[Step]):
-    """A plan's steps, written when first read (a sheet or a printout asks; a table never does)."""
+    """A plan's steps, written when first read (a sheet or a printout asks; a table never does):
+    an unchanging view of the steps its construction (:class:`_Together`) writes once and keeps."""
+
+    __slots__ = ("_source", "_kind", "_k")
 
     def __init__(self, source: _Together, kind: str, k: int) -> None:
         self._source, self._kind, self._k = source, kind, k
-        self._steps: tuple[Step, ...] | None = None
 
     def _get(self) -> tuple[Step, ...]:
-        if self._steps is None:
-            self._steps = self._source.protocol(self._kind, self._k)
-        return self._steps
+        return self._source.protocol(self._kind, self._k)
 
     def __getitem__(self, i: Any) -> Any:
         return self._get()[i]
@@ -217,9 +253,18 @@ class _Protocol(Sequence[Step]):
         return hash(self._get())
 
 
-def _points(b: Builder, k: int) -> tuple[tuple[PlanPoint, ...], list[Step]]:
-    """The plan's points at position k, each coinciding point noted (with its step)."""
-    pts = {name: complex(_at(b.pts[name], k)) for name in b.order}
+def _column(x: Any, n: int, kind: type) -> list:
+    """``_at(x, k)`` for every k < n, as Python numbers of ``kind``."""
+    if type(x) is not np.ndarray:
+        return [kind(x)] * n
+    a = np.ravel(x)
+    return [kind(v) for v in a.tolist()] if a.size > 1 else [kind(a[0])] * n
+
+
+def _points(b: Builder, k: int, at: dict[str, complex] | None = None) -> tuple[tuple[PlanPoint, ...], list[Step]]:
+    """The plan's points at position k (``at``: their values there, when known), each
+    coinciding point noted (with its step)."""
+    pts = at if at is not None else {name: complex(_at(b.pts[name], k)) for name in b.order}
     extent = max((abs(z) for z in pts.values()), default=0.0)
     tol = COINCIDE_REL * max(extent, 1e-300)
     points, steps = [], []

@@ -40,7 +40,8 @@ from plans.kinematics.plan import Step
 from plans.kinematics.structure import Group
 from plans.phrases import Phrase, phrase
 from plans.scene.model import Joint
-from plans.tolerances import COINCIDE_REL, LOCK_SIN, NEAR_PARALLEL_SIN
+from plans.tolerances import COINCIDE_REL, EXACT_ZERO_REL, LOCK_SIN, NEAR_PARALLEL_SIN
+from plans.units import clean
 
 #: Values over the cases: numpy arrays (complex plane vectors, real lengths and rates), or
 #: Python ``complex`` and ``float`` at one position (see :mod:`plans.kinematics.cases`).
@@ -52,7 +53,7 @@ if TYPE_CHECKING:  # numpy.typing only for the checker: it costs a command's sta
     #: One construction line: a point it passes through and its unit direction.
     Line = tuple[C, C]
 
-__all__ = ["Builder", "Mixed", "Pencil", "PerfectPencil", "Scheme", "cross", "plans_of", "unit"]
+__all__ = ["Builder", "Mixed", "Pencil", "PerfectPencil", "Scheme", "cross", "unit"]
 
 _FIELDS = ("rot", "r0", "omega", "v0", "eps", "a0")
 
@@ -302,7 +303,7 @@ class Builder:
             length = abs(self.pts[end] - self.pts[start])
             if length <= dust[1]:
                 length = 0.0
-            if exact <= 1e-12 * ref:
+            if exact <= EXACT_ZERO_REL * ref:
                 exact = 0.0
         else:
             xp = self.xp
@@ -310,7 +311,7 @@ class Builder:
             small = length <= dust[1]
             if xp.any(small):
                 length = np.where(small, 0.0, length)
-            small = exact <= 1e-12 * ref
+            small = exact <= EXACT_ZERO_REL * ref
             if xp.any(small):
                 exact = np.where(small, 0.0, exact)
         value = length / self.mu
@@ -420,11 +421,11 @@ def read_rates(b: Builder) -> None:
         q = omega if velocity else eps
         ref = b.ref / size
         if b.one:
-            floor = 1e-12 * ref
+            floor = EXACT_ZERO_REL * ref
             value = 0.0 if abs(value) <= floor else value
             exact = 0.0 if abs(exact) <= floor else exact
         else:
-            value, exact = _dust(value, 1e-12 * ref), _dust(exact, 1e-12 * ref)
+            value, exact = _dust(value, EXACT_ZERO_REL * ref), _dust(exact, EXACT_ZERO_REL * ref)
         b.readings.append((q, None, None, None, value, exact, unit_, ref, drawn))
 
 
@@ -478,11 +479,34 @@ def coincident(b: Builder, link: int, name: str, X: C) -> tuple[str, C]:
     return lb, xy
 
 
-def plans_of(snap: Scheme, mv: float, ma: float | None, pencil: Pencil,
-             protocol: bool = False) -> tuple[Builder, Builder | None]:
-    """Both plans over the cases of ``snap`` (the acceleration plan when ``ma`` is given)."""
-    from plans.kinematics import accelerations, velocities
+def lay_normal(b: Builder, vr: Any, link: int, frm: str, frm_xy: np.ndarray, P: np.ndarray,
+            X: np.ndarray, Pn: str, Xn: str) -> tuple[str, np.ndarray]:
+    """Lay off a_XP^n = ω²·l toward P from the image of P on the acceleration plan; ω read off
+    the velocity plan (``vr.omega``)."""
+    w = vr.omega(link)
+    ln = abs(P - X)
+    lb = f"n_{Xn}{Pn}"
+    vec = b.pencil.vector(b.mu * w * w * ln, P - X, ln, lb)
+    b.add(lb, frm_xy + vec)
+    b.step("lay off", (frm,), lb, lambda: phrase(
+        "a_normal", X=Xn, P=Pn, v=clean(abs(b.s(w * ln)), b.s(vr.vb.ref)), l=b.s(ln), an=clean(b.s(w * w * ln), b.s(b.ref)),
+        mm=abs(b.s(vec)), frm=frm))
+    b.seg(frm, lb, "normal", f"a_{Xn}{Pn}^n", b.snap.w[link] ** 2 * ln)
+    return lb, frm_xy + vec
 
-    vb = velocities.velocity_plan(snap, mv, pencil, protocol)
-    ab = accelerations.acceleration_plan(snap, ma, vb, pencil, protocol) if ma is not None else None
-    return vb, ab
+
+def lay_coriolis(b: Builder, vr: Any, guide_link: int, v_rel: np.ndarray, frm: str, frm_xy: np.ndarray,
+                 label: str, exact: np.ndarray) -> tuple[str, np.ndarray]:
+    """Lay off a^k = 2 ω × v_rel (v_rel turned 90° in the sense of ω) from ``frm``; ω and
+    v_rel are read off the velocity plan."""
+    w = vr.omega(guide_link)
+    muv = vr.vb.mu
+    v_read = b.pencil.read(abs(v_rel) * muv) / muv
+    lb = f"k_{label}"
+    vec = b.pencil.vector(b.mu * 2 * abs(w) * v_read, 1j * b.xp.sign(w) * v_rel, 0.0, lb)
+    b.add(lb, frm_xy + vec)
+    b.step("lay off", (frm,), lb, lambda: phrase(
+        "a_coriolis", label=label, g=guide_link, w=clean(abs(b.s(w)), abs(b.snap.scene.driver.omega)), v=clean(abs(b.s(v_rel)), b.s(vr.vb.ref)),
+        ak=clean(abs(b.s(2 * w * v_rel)), b.s(b.ref)), mm=abs(b.s(vec))))
+    b.seg(frm, lb, "coriolis", f"a^k_{label}", exact)
+    return lb, frm_xy + vec

@@ -19,17 +19,16 @@ Python numbers position by position, where numpy's per-call cost would dominate
 
 from __future__ import annotations
 
-import cmath
 import math
-from dataclasses import field
-from typing import TYPE_CHECKING, Any
+from functools import cached_property
+from typing import Any
 
 import numpy as np
 
 from plans.kinematics import fast, fast_arrays
-from plans.kinematics.assur import _Motion, _program
+from plans.kinematics.assur import program
+from plans.kinematics.context import SCA, VEC, Context, Motion
 from plans.kinematics.structure import Structure, analyse
-from plans.records import frozen
 from plans.scene.model import Scene
 
 # numpy arrays over positions; typed loosely because numpy's operator stubs do not
@@ -41,27 +40,71 @@ R = Any  # float64 array, shape (N,)
 SCALAR_MAX = 4
 
 
-@frozen(slots=False)
 class Kinematics:
-    """Positions (and, if asked, velocities and accelerations) of every link and point."""
+    """Positions (and, if asked, velocities and accelerations) of every link and point.
+
+    Not a frozen record: the object that owns what one exact solve gave and the readings
+    made of it, each when first read and then kept here: the fast path's numbers made into
+    arrays (:attr:`motion`, :attr:`slides`, :attr:`conditions`, and one position's
+    :attr:`phi_deg`), the points as they are read (:meth:`point_on`: forces and the lever
+    read the same points many times), the reach."""
 
     scene: Scene
     structure: Structure
-    phi_deg: R
     order: int  # 0 positions, 1 + velocities, 2 + accelerations
-    motion: dict[int, _Motion] = field(repr=False)
-    slides: dict[str, tuple[R, R]] = field(repr=False)  # P joint name -> (ṡ, s̈)
-    #: group name -> condition number of its velocity/acceleration system per position:
-    #: |c1||c2| / |c1 × c2| = 1 / sin(angle between the two construction lines)
-    conditions: dict[str, R] = field(repr=False, default_factory=dict)
-    #: (link, local point) -> (r, v, a), filled as points are read (forces and the lever read
-    #: the same points many times)
-    _points: dict[tuple[int, complex], tuple[C, C, C]] = field(repr=False, compare=False, default_factory=dict)
 
-    if not TYPE_CHECKING:  # the type checker sees the fields, not how they are filled
+    def __init__(self, scene: Scene, structure: Structure, phi_deg: R | None, order: int,
+                 motion: dict[int, Motion] | None = None, slides: dict[str, tuple[R, R]] | None = None,
+                 conditions: dict[str, R] | None = None, *, raw: tuple[dict, dict, dict] | None = None,
+                 phi: float | None = None) -> None:
+        """The solve's motions, slides and conditions (a fast path's: ``raw``, made readings
+        when first read; one position's angle: ``phi`` instead of ``phi_deg``)."""
+        self.scene = scene
+        self.structure = structure
+        self.order = order
+        self._raw = raw
+        self._phi = phi
+        self._points: dict[tuple[int, complex], tuple[C, C, C]] = {}
+        self._homes: dict[str, int] = {}
+        self._reach: float | None = None
+        if phi_deg is not None:  # else made when first read (the cached properties below)
+            self.phi_deg = phi_deg
+        if motion is not None:
+            self.motion = motion
+        if slides is not None:
+            self.slides = slides
+        if conditions is not None or raw is None:
+            self.conditions = {} if conditions is None else conditions
 
-        def __getattr__(self, name: str) -> Any:
-            return _unpacked(self, name)
+    def __repr__(self) -> str:
+        return f"Kinematics({self.scene.path!r}, {self.n} positions, order {self.order})"
+
+    @cached_property
+    def phi_deg(self) -> R:
+        """The crank angles (degrees), an array over the positions."""
+        return np.array((self._phi,))
+
+    @cached_property
+    def motion(self) -> dict[int, Motion]:
+        """Link number -> its motion (arrays over the positions)."""
+        assert self._raw is not None
+        return _columns(len(self.phi_deg), self._raw[0])
+
+    @cached_property
+    def slides(self) -> dict[str, tuple[R, R]]:
+        """P joint name -> (ṡ, s̈) over the positions."""
+        assert self._raw is not None
+        return {nm: (np.array((sd,)), None if sdd is None else np.array((sdd,)))
+                for nm, (sd, sdd) in self._raw[1].items()}
+
+    @cached_property
+    def conditions(self) -> dict[str, R]:
+        """Group name -> the condition number of its velocity/acceleration system per position:
+        |c1||c2| / |c1 × c2| = 1 / sin(angle between the two construction lines)."""
+        assert self._raw is not None
+        if self._phi is not None:
+            return {g: np.array((c,)) for g, c in self._raw[2].items()}
+        return {g: c() if type(c) is fast.Later else c for g, c in self._raw[2].items()}
 
     @property
     def n(self) -> int:
@@ -69,9 +112,7 @@ class Kinematics:
 
     def home(self, name: str) -> int:
         """The link a named point is read from (lowest number, frame last)."""
-        homes = self.scene.memo.get("homes")
-        if homes is None:
-            homes = self.scene.memo["homes"] = {}
+        homes = self._homes
         got = homes.get(name)
         if got is None:
             links = self.scene.point_links(name)
@@ -139,10 +180,9 @@ class Kinematics:
     def reach(self) -> float:
         """The mechanism's reach from the origin (m) over the positions: the largest |r| of
         its points (1 where all are at the origin), worked out once."""
-        d = self.__dict__
-        got = d.get("_reach")
+        got = self._reach
         if got is None:
-            got = d["_reach"] = max((float(np.maximum.reduce(np.abs(self.point(nm)[0]))) for nm in self.point_names()),
+            got = self._reach = max((float(np.maximum.reduce(np.abs(self.point(nm)[0]))) for nm in self.point_names()),
                                     default=1.0) or 1.0
         return got
 
@@ -153,29 +193,6 @@ class Kinematics:
                 if nm not in names:
                     names.append(nm)
         return names
-
-
-def _unpacked(kin: Kinematics, name: str) -> Any:
-    """What the fast path solved, made into the readings' objects when first read: the
-    motions and the conditions (and, at one position, the angle and slides as arrays; the
-    solve itself stays in Python numbers)."""
-    d = kin.__dict__
-    if name == "phi_deg" and "_phi" in d:
-        arr = d[name] = np.array((d["_phi"],))
-        return arr
-    raw = d.get("_raw") if name in ("motion", "slides", "conditions") else None
-    if raw is None:
-        raise AttributeError(name)
-    motion, slides, conditions = raw
-    if name == "motion":
-        d[name] = _columns(len(kin.phi_deg), motion)
-    elif name == "slides":
-        d[name] = {nm: (np.array((sd,)), None if sdd is None else np.array((sdd,))) for nm, (sd, sdd) in slides.items()}
-    elif "_phi" in d:
-        d[name] = {g: np.array((c,)) for g, c in conditions.items()}
-    else:
-        d[name] = {g: c() if type(c) is fast.Later else c for g, c in conditions.items()}
-    return d[name]
 
 
 def solve(scene: Scene, phi_deg=None, order: int | None = None,
@@ -201,9 +218,7 @@ def solve(scene: Scene, phi_deg=None, order: int | None = None,
         if type(phi) is float or type(phi) is int:
             res = fast.solve_one(fp, phi, order)
             if res is not None:
-                kin = object.__new__(Kinematics)
-                kin.__dict__.update(scene=scene, structure=st, _phi=float(phi), order=order, _points={}, _raw=res)
-                return kin
+                return Kinematics(scene, st, None, order, raw=res, phi=float(phi))
     if type(phi_deg) is np.ndarray and phi_deg.dtype == float and phi_deg.ndim == 1:
         phis = phi_deg  # as np.asarray gives it
     else:
@@ -211,32 +226,19 @@ def solve(scene: Scene, phi_deg=None, order: int | None = None,
     if fp is not None:
         res = _fast_runs(fp, phis, order) if len(phis) <= SCALAR_MAX else fast_arrays.solve(fp, phis, order)
         if res is not None:
-            kin = object.__new__(Kinematics)
-            kin.__dict__.update(scene=scene, structure=st, phi_deg=phis, order=order, slides=res[1], _points={},
-                                _raw=res)
-            return kin
-    program = _program(scene, st)
+            return Kinematics(scene, st, phis, order, slides=res[1], raw=res)
+    steps = program(scene, st)
     if len(phis) <= SCALAR_MAX:
-        return _solve_scalar(scene, st, program, phis, order)
-    ctx = _Ctx(scene, _VEC, phis, order)
+        return _solve_scalar(scene, st, steps, phis, order)
+    ctx = Context(scene, VEC, phis, order, solve)
     n = len(phis)
     zeros = np.zeros(n)
     czeros = np.zeros(n, dtype=complex)
-    ctx.motion[scene.frame] = _Motion(np.ones(n, dtype=complex), czeros, zeros, czeros, zeros, czeros)
+    ctx.motion[scene.frame] = Motion(np.ones(n, dtype=complex), czeros, zeros, czeros, zeros, czeros)
     _drive(ctx, _rotation(scene.driver, phis), np.full(n, scene.driver.omega), np.full(n, scene.driver.eps))
-    for fn, g, k in program:
+    for fn, g, k in steps:
         fn(ctx, g, k)
     return Kinematics(scene, st, phis, order, ctx.motion, ctx.slides, ctx.conditions)
-
-
-def _kinematics(scene: Scene, st: Structure, order: int, motion: dict, phis: Any, slides: dict,
-                conditions: dict) -> Kinematics:
-    """A Kinematics made without the frozen dataclass's per-field checks (a third of the
-    time of one position otherwise); the fields are those of the constructor."""
-    kin = object.__new__(Kinematics)
-    kin.__dict__.update(scene=scene, structure=st, phi_deg=phis, order=order, motion=motion, slides=slides,
-                        conditions=conditions, _points={})
-    return kin
 
 
 def _columns(n: int, motion: dict) -> dict:
@@ -264,100 +266,18 @@ def _fast_runs(fp: fast.Plan, phis: Any, order: int) -> tuple[dict, dict, dict] 
 # --------------------------------------------------------------------------- two ways to run
 
 
-class _Vec:
-    """numpy over all positions."""
-
-    sqrt = staticmethod(np.sqrt)
-    maximum = staticmethod(np.maximum)
-    exp = staticmethod(np.exp)
-    angle = staticmethod(np.angle)
-    arcsin = staticmethod(np.arcsin)
-
-    @staticmethod
-    def low(x):
-        return x.min()
-
-    @staticmethod
-    def high(x):
-        return x.max()
-
-    @staticmethod
-    def clip(x, lo, hi):
-        return np.clip(x, lo, hi)
-
-    @staticmethod
-    def full(n, v):
-        return np.full(n, v)
-
-
-class _Sca:
-    """Plain Python numbers, one position."""
-
-    sqrt = staticmethod(math.sqrt)
-    maximum = staticmethod(max)
-    exp = staticmethod(cmath.exp)
-    angle = staticmethod(cmath.phase)
-    arcsin = staticmethod(math.asin)
-
-    @staticmethod
-    def low(x):
-        return x
-
-    @staticmethod
-    def high(x):
-        return x
-
-    @staticmethod
-    def clip(x, lo, hi):
-        return min(max(x, lo), hi)
-
-    @staticmethod
-    def full(n, v):
-        return v
-
-
-_VEC = _Vec()
-_SCA = _Sca()
-
-
-class _Ctx:
-    """What the group solvers read and fill: motions, slides, conditions."""
-
-    __slots__ = ("scene", "xp", "phis", "n", "order", "motion", "slides", "conditions", "frame",
-                 "crank", "pivot", "zpivot", "W", "E", "pins")
-
-    def __init__(self, scene: Scene, xp: Any, phis: Any, order: int) -> None:
-        self.scene = scene
-        self.n = len(phis)
-        self.xp = xp
-        self.phis = phis
-        self.order = order
-        self.motion: dict[int, _Motion] = {}
-        self.slides: dict[str, tuple[Any, Any]] = {}
-        self.conditions: dict[str, Any] = {}
-        self.frame = scene.frame
-        d = scene.driver
-        # the crank turns at constant ω1, ε1 about its pivot: its points in four operations
-        self.crank = d.link
-        self.pivot = scene.frame_points[d.pivot]
-        self.zpivot = scene.links[d.link].points[d.pivot]
-        self.W = 1j * d.omega
-        self.E = complex(-d.omega * d.omega, d.eps)
-        self.pins: dict[complex, tuple] = {}
-
-
-def _drive(ctx: _Ctx, rot1, omega, eps) -> None:
+def _drive(ctx: Context, rot1, omega, eps) -> None:
     z = ctx.zpivot
     if z:
         rel = -rot1 * z  # the crank's origin from its pivot
-        m1 = _Motion(rot1, ctx.pivot + rel)
+        m1 = Motion(rot1, ctx.pivot + rel)
         if ctx.order >= 1:
             m1.omega, m1.v0 = omega, ctx.W * rel
             if ctx.order >= 2:
                 m1.eps, m1.a0 = eps, ctx.E * rel
     else:  # the usual crank: its origin is the pivot
         m0 = ctx.motion[ctx.frame]
-        m1 = _Motion(rot1, m0.r0 + ctx.pivot if ctx.pivot else m0.r0)
+        m1 = Motion(rot1, m0.r0 + ctx.pivot if ctx.pivot else m0.r0)
         if ctx.order >= 1:
             m1.omega, m1.v0 = omega, m0.v0
             if ctx.order >= 2:
@@ -375,16 +295,16 @@ def _rotation1(d: Any, phi: float) -> complex:
     return fast.rotation1(math.degrees(d.phi_ref), d.sense, phi)
 
 
-def _solve_scalar(scene: Scene, st: Structure, program: list, phis: Any, order: int) -> Kinematics:
+def _solve_scalar(scene: Scene, st: Structure, steps: list, phis: Any, order: int) -> Kinematics:
     """Position by position in Python numbers; the motions stacked into arrays at the end
     (two numpy calls: numpy's per-call cost is what this path avoids)."""
     d = scene.driver
     runs = []
     for phi in phis.tolist():
-        ctx = _Ctx(scene, _SCA, [phi], order)
-        ctx.motion[scene.frame] = _Motion(1 + 0j, 0j, 0.0, 0j, 0.0, 0j)
+        ctx = Context(scene, SCA, [phi], order, solve)
+        ctx.motion[scene.frame] = Motion(1 + 0j, 0j, 0.0, 0j, 0.0, 0j)
         _drive(ctx, _rotation1(d, phi), d.omega, d.eps)
-        for fn, g, k in program:
+        for fn, g, k in steps:
             fn(ctx, g, k)
         runs.append(ctx)
     return _stack(scene, st, phis, order, runs)
@@ -396,7 +316,7 @@ def _stack(scene: Scene, st: Structure, phis: Any, order: int, runs: list) -> Ki
     first = runs[0]
     k = min(order, 2)
     n = len(runs)
-    motion: dict[int, _Motion] = {}
+    motion: dict[int, Motion] = {}
     for lid in first.motion:
         ms = [r.motion[lid] for r in runs]
         motion[lid] = _Cols(n, [[getattr(m, f) for m in ms] if i < _WIDTH[k] else None
@@ -408,7 +328,7 @@ def _stack(scene: Scene, st: Structure, phis: Any, order: int, runs: list) -> Ki
             slides[nm] = (np.array([r.slides[nm][0] for r in runs], dtype=float),
                           np.array([r.slides[nm][1] for r in runs], dtype=float) if k == 2 else None)
     conditions = {g: np.array([r.conditions[g] for r in runs], dtype=float) for g in first.conditions}
-    return _kinematics(scene, st, order, motion, phis, slides, conditions)
+    return Kinematics(scene, st, phis, order, motion, slides, conditions)
 
 
 def _full(n: int, x: Any, dtype: Any) -> Any:
@@ -423,7 +343,7 @@ _WIDTH = (2, 4, 6)  # fields known at each order
 _DTYPES = (complex, complex, float, complex, float, complex)
 
 
-class _Cols(_Motion):
+class _Cols(Motion):
     """A motion whose quantities become arrays over the ``n`` positions when first read:
     each is an array already, a list of numbers (one per position), one number (the same
     at every position: the frame, the crank's ω, a slider's angle) or None (not asked for)."""

@@ -136,14 +136,14 @@ def _make_plan(scene: Scene, st: Structure) -> Plan | None:
         if g.kind == "RRR":
             zj = Lj.points[j2.point] - Lj.points[j3.point]
             l3 = abs(zj)
-            steps.append((_rrr, i, j, p, _local(scene, p, j1.point), q, _local(scene, q, j3.point), l1, l3,
+            steps.append((rrr_step, i, j, p, _local(scene, p, j1.point), q, _local(scene, q, j3.point), l1, l3,
                           zi.conjugate() / (l1 * l1), _real(zj.conjugate() / l3), Li.points[j1.point],
                           Lj.points[j3.point],
                           0.5 * (l1 * l1 - l3 * l3), g.branch, g.name, ASSEMBLY_REL * (l1 + l3), l1 * l3))
         elif g.kind == "RRP" and j3.guide is not None and j3.guide.link == frame:
             guide = j3.guide
             u = guide.direction
-            steps.append((_rrp, i, j, p, _local(scene, p, j1.point), l1, zi.conjugate() / l1, Li.points[j1.point],
+            steps.append((rrp_step, i, j, p, _local(scene, p, j1.point), l1, zi.conjugate() / l1, Li.points[j1.point],
                           cmath.exp(1j * (guide.angle - j3.slider_angle)), Lj.points[j2.point], guide.origin, u,
                           u.conjugate(), g.branch, g.name, j3.name, u * zi.conjugate() / (l1 * l1),
                           (2 * LOCK_SIN * l1) ** 2))
@@ -223,7 +223,7 @@ def _at(plan: Plan, motion: dict, pins: dict, link: int, z: complex, order: int)
     return done
 
 
-def _placed(rot: Any, anchor: Any, z: complex, v: Any, a: Any, omega: Any, eps: Any, order: int) -> Motion:
+def placed(rot: Any, anchor: Any, z: complex, v: Any, a: Any, omega: Any, eps: Any, order: int) -> Motion:
     """A link placed by its rotation and one of its points (local z, velocity v, acceleration
     a), with its ω and ε (as far as ordered); a rotation left until read (:class:`Later`,
     over arrays) is worked out here when the origin needs it."""
@@ -242,7 +242,7 @@ def _placed(rot: Any, anchor: Any, z: complex, v: Any, a: Any, omega: Any, eps: 
     return m
 
 
-def _rrr(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k: tuple, order: int) -> bool:
+def rrr_step(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k: tuple, order: int) -> bool:
     """An RRR group at one position (over arrays: :mod:`plans.kinematics.fast_arrays`)."""
     _, i, j, p, zp, q, zq, l1, l3, ci, cj, z1i, z3j, half_diff, branch, name, near, size = k
     P1: Any
@@ -272,8 +272,8 @@ def _rrr(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k
     roti = r1 * ci
     rotj = r3 * (cj / abs(r3))
     if order < 1:
-        motion[i] = _placed(roti, P1, z1i, None, None, None, None, 0)
-        motion[j] = _placed(rotj, P3, z3j, None, None, None, None, 0)
+        motion[i] = placed(roti, P1, z1i, None, None, None, None, 0)
+        motion[j] = placed(rotj, P3, z3j, None, None, None, None, 0)
         return True
     # iωi r1 − iωj r3 = vP3 − vP1, by Cramer's rule as assur._System
     c2 = -1j * r3
@@ -298,12 +298,12 @@ def _rrr(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k
         vP1 = aP1 = 0j
     if vP3 is None:
         vP3 = aP3 = 0j
-    motion[i] = _placed(roti, P1, z1i, vP1, aP1, wi, ei, order)
-    motion[j] = _placed(rotj, P3, z3j, vP3, aP3, wj, ej, order)
+    motion[i] = placed(roti, P1, z1i, vP1, aP1, wi, ei, order)
+    motion[j] = placed(rotj, P3, z3j, vP3, aP3, wj, ej, order)
     return True
 
 
-def _rrp(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k: tuple, order: int) -> bool:
+def rrp_step(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k: tuple, order: int) -> bool:
     """An RRP group (its guide on the frame) at one position (over arrays:
     :mod:`plans.kinematics.fast_arrays`)."""
     _, i, j, p, zp, l1, ci, z1i, turn, zBj, G0, u, cu, branch, name, slide, K, lock = k
@@ -325,8 +325,8 @@ def _rrp(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k
         B = G0 + B
     mi_rot = q * K  # K = u·conj(z_B − z_P1)/l1²: the rod's rotation
     if order < 1:
-        motion[i] = _placed(mi_rot, P1, z1i, None, None, None, None, 0)
-        motion[j] = _placed(turn, B, zBj, None, None, None, None, 0)
+        motion[i] = placed(mi_rot, P1, z1i, None, None, None, None, 0)
+        motion[j] = placed(turn, B, zBj, None, None, None, None, 0)
         return True
     # iωi r1 − ṡ u = −vP1 (the guide on the frame), by Cramer's rule with assur._System's
     # numbers (a dead centre's exact zeros kept)
@@ -344,7 +344,7 @@ def _rrp(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k
         rhs = wi * wi * r1 - aP1
         ei, sdd = (rhs * k1).imag, (rhs * k2).imag
         aB = sdd * u
-    motion[i] = _placed(mi_rot, P1, z1i, vP1, aP1, wi, ei, order)
-    motion[j] = _placed(turn, B, zBj, sd * u, aB, 0.0, 0.0, order)
+    motion[i] = placed(mi_rot, P1, z1i, vP1, aP1, wi, ei, order)
+    motion[j] = placed(turn, B, zBj, sd * u, aB, 0.0, 0.0, order)
     slides[slide] = (sd, sdd)
     return True

@@ -20,7 +20,7 @@ from typing import Any
 
 import numpy as np
 
-from plans.kinematics.fast import Later, Plan, _placed, _rrp, _rrr, rotation, run_steps
+from plans.kinematics.fast import Later, Plan, placed, rotation, rrp_step, rrr_step, run_steps
 from plans.tolerances import LOCK_SIN
 
 _low = np.minimum.reduce  # the least element, without ndarray.min's Python wrapper
@@ -49,15 +49,15 @@ def _array_steps(plan: Plan) -> list:
     out: list = []
     run: list = []
     for st in plan.steps + [None]:
-        if run and (st is None or st[0] is not _rrp or st[3:5] != run[0][3:5]):
+        if run and (st is None or st[0] is not rrp_step or st[3:5] != run[0][3:5]):
             out.append(_rrp_step(plan, run[0]) if len(run) == 1 else _rrp_batch(plan, run))
             run = []
         if st is None:
             continue
-        if st[0] is _rrp:
+        if st[0] is rrp_step:
             run.append(st)
         else:
-            assert st[0] is _rrr
+            assert st[0] is rrr_step
             _, i, j, p, zp, q, zq, l1, l3, ci, cj, z1i, z3j, half_diff, branch, name, near, size = st
             out.append((_rrr_arrays, i, j, p, zp, _local(plan, p, zp), q, zq, _local(plan, q, zq), _c(l1), ci, cj,
                         z1i, z3j, _c(half_diff), branch, name, near, size))
@@ -145,7 +145,7 @@ def _condition_rrp(l1: float, det: Any) -> Any:
 
 def _rrr_arrays(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k: tuple,
                 order: int) -> bool:
-    """:func:`plans.kinematics.fast._rrr` over arrays."""
+    """:func:`plans.kinematics.fast.rrr_step` over arrays."""
     _, i, j, p, zp, zp0, q, zq, zq0, l1, ci, cj, z1i, z3j, half_diff, branch, name, near, size = k
     P1: Any
     vP1: Any
@@ -188,8 +188,8 @@ def _rrr_arrays(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: 
     roti = r1 * ci if z1i else Later(np.multiply, r1, ci)
     rotj = _unit_turned(r3, cj) if z3j else Later(_unit_turned, r3, cj)
     if order < 1:
-        motion[i] = _placed(roti, zp if p == plan.frame else P1, z1i, None, None, None, None, 0)
-        motion[j] = _placed(rotj, zq if q == plan.frame else P3, z3j, None, None, None, None, 0)
+        motion[i] = placed(roti, zp if p == plan.frame else P1, z1i, None, None, None, None, 0)
+        motion[j] = placed(rotj, zq if q == plan.frame else P3, z3j, None, None, None, None, 0)
         return True
     # iωi r1 − iωj r3 = vP3 − vP1 by Cramer's rule, as the one-position formulas: with
     # numpy's fused products det = Im(conj(i r1)·(−i r3)) is Im(conj(r3)·r1), and ωi, ωj the
@@ -217,8 +217,8 @@ def _rrr_arrays(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: 
     if vP3 is None:
         P3, vP3, aP3 = zq, 0j, 0j
     if z1i or z3j or order < 2:
-        motion[i] = _placed(roti, P1, z1i, vP1, aP1, wi, ei, order)
-        motion[j] = _placed(rotj, P3, z3j, vP3, aP3, wj, ej, order)
+        motion[i] = placed(roti, P1, z1i, vP1, aP1, wi, ei, order)
+        motion[j] = placed(rotj, P3, z3j, vP3, aP3, wj, ej, order)
     else:
         motion[i] = [roti, P1, wi, vP1, ei, aP1]
         motion[j] = [rotj, P3, wj, vP3, ej, aP3]
@@ -247,7 +247,7 @@ def _rrp_rates(r1: Any, su: Any, ncu: Any, vP1: Any, aP1: Any, order: int) -> tu
 
 def _rrp_arrays(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: dict, k: tuple,
                 order: int) -> bool:
-    """:func:`plans.kinematics.fast._rrp` over arrays."""
+    """:func:`plans.kinematics.fast.rrp_step` over arrays."""
     _, i, j, p, zp, zp0, l1, z1i, turn, zBj, g0, G0, u, su, cu, ncu, along_x, branch, name, slide, K, lock = k
     P1, vP1, aP1 = _at(plan, motion, pins, p, zp, zp0, order)
     if g0:
@@ -275,15 +275,15 @@ def _rrp_arrays(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: 
             B += G0
     rot = _rod(wu, root, K) if z1i else Later(_rod, wu, root, K)
     if order < 1:
-        motion[i] = _placed(rot, P1, z1i, None, None, None, None, 0)
-        motion[j] = _placed(turn, B, zBj, None, None, None, None, 0)
+        motion[i] = placed(rot, P1, z1i, None, None, None, None, 0)
+        motion[j] = placed(turn, B, zBj, None, None, None, None, 0)
         return True
     r1 = B - P1
     det, wi, sd, ei, sdd = _rrp_rates(r1, su, ncu, vP1, aP1, order)
     conditions[name] = Later(_condition_rrp, l1, det)
     if z1i or zBj:
-        motion[i] = _placed(rot, P1, z1i, vP1, aP1, wi, ei, order)
-        motion[j] = _placed(turn, B, zBj, sd * u, None if sdd is None else sdd * u, 0.0, 0.0, order)
+        motion[i] = placed(rot, P1, z1i, vP1, aP1, wi, ei, order)
+        motion[j] = placed(turn, B, zBj, sd * u, None if sdd is None else sdd * u, 0.0, 0.0, order)
     else:
         motion[i] = [rot, P1, wi, vP1, ei, aP1]
         motion[j] = [turn, B, 0.0, Later(np.multiply, sd, u), 0.0 if order >= 2 else None,
@@ -319,8 +319,8 @@ def _rrp_many(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: di
     if order < 1:
         for r, g in enumerate(groups):
             rot = _rod(wu[r], root[r], g[16]) if g[7] else Later(_rod, wu[r], root[r], g[16])
-            motion[g[1]] = _placed(rot, P1, g[7], None, None, None, None, 0)
-            motion[g[2]] = _placed(g[8], B[r], g[9], None, None, None, None, 0)
+            motion[g[1]] = placed(rot, P1, g[7], None, None, None, None, 0)
+            motion[g[2]] = placed(g[8], B[r], g[9], None, None, None, None, 0)
         return True
     r1 = B - P1
     det, wi, sd, ei, sdd = _rrp_rates(r1, su, ncu, vP1, aP1, order)
@@ -328,9 +328,9 @@ def _rrp_many(plan: Plan, motion: dict, pins: dict, slides: dict, conditions: di
         rot = _rod(wu[r], root[r], g[16]) if g[7] else Later(_rod, wu[r], root[r], g[16])
         sdr, sddr = sd[r], None if sdd is None else sdd[r]
         ur = g[11]
-        motion[g[1]] = _placed(rot, P1, g[7], vP1, aP1, wi[r], None if ei is None else ei[r], order)
+        motion[g[1]] = placed(rot, P1, g[7], vP1, aP1, wi[r], None if ei is None else ei[r], order)
         if g[9]:
-            motion[g[2]] = _placed(g[8], B[r], g[9], sdr * ur, None if sddr is None else sddr * ur, 0.0, 0.0,
+            motion[g[2]] = placed(g[8], B[r], g[9], sdr * ur, None if sddr is None else sddr * ur, 0.0, 0.0,
                                    order)
         else:
             motion[g[2]] = [g[8], B[r], 0.0, Later(np.multiply, sdr, ur), 0.0 if order >= 2 else None,

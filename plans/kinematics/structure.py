@@ -43,11 +43,13 @@ class Group:
 @frozen
 class TriadGroup:
     """A class-III group of the third order: a base link with three inner pairs D, E, F and
-    three leashes joining them to pairs A, B, C of known links (all pairs R).
+    three leashes joining them to pairs A, B, C of known links (pairs R; a leash may be a
+    slider carrying its inner pin along a guide of the frame: its outer pair P at that pin; or
+    a block pinned at its outer pair, sliding in a slot of the base: its inner pair P there).
     ``links = (base, l1, l2, l3)``, ``joints = ((A, D), (B, E), (C, F))`` as (outer, inner)
     pairs of each leash, ``known = (p1, p2, p3)`` the links carrying A, B, C."""
 
-    kind: str  # "RRR": every leash is a revolute dyad's image
+    kind: str  # "RRR" (revolute leashes), else each leash's (outer, inner) pairs: "RR-RR-PR", "RR-RR-RP"
     links: tuple[int, int, int, int]
     joints: tuple[tuple[Joint, Joint], tuple[Joint, Joint], tuple[Joint, Joint]]
     known: tuple[int, int, int]
@@ -203,11 +205,19 @@ def _triad(scene: Scene, known: set[int], remaining: set[int], by_link: dict, be
         leashes = leashes[:3]
         name = "-".join(str(x) for x in sorted([b] + [k for k, _, _ in leashes]))
         for k, o, i in leashes:
-            if o.kind != "R" or i.kind != "R":
+            slider = (o.kind == "P" and i.kind == "R" and o.guide is not None and o.guide.link == scene.frame
+                      and o.point == i.point)
+            block = (o.kind == "R" and i.kind == "P" and i.guide is not None and i.guide.link == b
+                     and o.point == i.point)
+            if not (o.kind == "R" and i.kind == "R" or slider or block):
                 raise _failer(scene.path)(f"joints (triad {name})", "a class-III group is solved with revolute "
-                                                                    f"pairs only; link {k} has a prismatic pair")
+                                          f"pairs only, a leash that is a slider carrying its inner pin along a "
+                                          f"guide of the frame, or a block pinned at its outer pair sliding in a "
+                                          f"slot of the base link; link {k} has another prismatic pair")
         branch = scene.branches.get(name, scene.branches.get(leashes[0][2].point, 1))
-        return TriadGroup(kind="RRR", links=(b, leashes[0][0], leashes[1][0], leashes[2][0]),
+        codes = [o.kind + i.kind for _, o, i in leashes]
+        return TriadGroup(kind="RRR" if codes == ["RR"] * 3 else "-".join(codes),
+                          links=(b, leashes[0][0], leashes[1][0], leashes[2][0]),
                           joints=tuple((o, i) for _, o, i in leashes),  # type: ignore[arg-type]
                           known=tuple(o.other(k) for k, o, _ in leashes),  # type: ignore[arg-type]
                           branch=branch)

@@ -14,10 +14,14 @@ import dataclasses
 from typing import Any
 
 import numpy as np
+from numpy.typing import NDArray
 
 from plans.errors import ConstructionError, InputError
 from plans.reader import Reader
 from plans.scene.model import Scene
+
+C = NDArray[np.complex128]
+R = NDArray[np.float64]
 
 KEYS = ("s_mm", "s_fraction", "s_stroke", "piston")
 
@@ -27,9 +31,27 @@ def wanted(data: dict[str, Any]) -> bool:
     return isinstance(d, dict) and ("s_mm" in d or "s_fraction" in d)
 
 
+def toward_pivot(scene: Scene, B: C, u: C) -> C:
+    """The guide's unit direction that points from the piston toward the crank pivot."""
+    pivot = scene.frame_points[scene.driver.pivot]
+    sgn = np.sign(((pivot - B) * np.conj(u)).real)
+    return np.where(sgn < 0, -1.0, 1.0) * u
+
+
+def piston_travel(scene: Scene, kin: Any, joint_name: str, link: int) -> R:
+    """Signed position of the piston along its guide, increasing toward the crank pivot."""
+    joint = next(j for j in scene.joints if j.name == joint_name)
+    assert joint.guide is not None
+    carrier = kin.motion[joint.guide.link]
+    rot = carrier.rot
+    origin = carrier.r0 + rot * joint.guide.origin
+    u = rot * joint.guide.direction
+    B = kin.point(joint.point, link)[0]
+    return ((B - origin) * np.conj(toward_pivot(scene, B, u))).real
+
+
 def by_travel(scene: Scene, r: Reader) -> Scene:
     """The scene with its driver's positions at the travels asked for."""
-    from plans.forces.loads import _toward_pivot, _travel
     from plans.kinematics.exact import solve
 
     d = scene.raw["driver"]
@@ -60,17 +82,17 @@ def by_travel(scene: Scene, r: Reader) -> Scene:
     probe = dataclasses.replace(scene, driver=dataclasses.replace(scene.driver, phis_deg=(0.0,)))
     grid = np.linspace(0.0, 360.0, 721)
     try:
-        t = _travel(probe, solve(probe, grid, order=0), joint.name, joint.slider)
+        t = piston_travel(probe, solve(probe, grid, order=0), joint.name, joint.slider)
         lo_k, hi_k = int(np.argmin(t[:-1])), int(np.argmax(t[:-1]))
 
         def travel(phis: Any) -> Any:
-            return _travel(probe, solve(probe, np.asarray(phis, float), order=0), joint.name, joint.slider)
+            return piston_travel(probe, solve(probe, np.asarray(phis, float), order=0), joint.name, joint.slider)
 
         def speed(phis: Any) -> Any:  # along the guide, toward the crank's pivot
             kin = solve(probe, np.asarray(phis, float), order=1)
             B, v = kin.point(joint.point, joint.slider)[:2]
             u: Any = guide.direction
-            return (v * np.conj(_toward_pivot(probe, B, u))).real * np.sign(probe.driver.omega)
+            return (v * np.conj(toward_pivot(probe, B, u))).real * np.sign(probe.driver.omega)
 
         odc = _dead_centre(speed, grid[lo_k])
         idc = _dead_centre(speed, grid[hi_k])

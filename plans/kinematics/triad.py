@@ -24,6 +24,7 @@ import cmath
 import math
 
 from plans.records import frozen
+from plans.tolerances import LOCK_SIN
 
 
 def _dot(a: complex, b: complex) -> float:
@@ -36,7 +37,12 @@ def _cross(a: complex, b: complex) -> float:
 
 @frozen
 class Triad:
-    """E and F in the base link's frame (origin D, x axis at angle θ), the leash lengths."""
+    """E and F in the base link's frame (origin D, x axis at angle θ), the leash lengths.
+
+    A leash may be a slider instead (``guides[k]`` its guide's unit direction, fixed to the
+    frame): its inner pair then moves along the guide through its outer point (the guide's
+    origin, passed as the outer point), and its "axis" (the line the special point is taken
+    on) is the normal to the guide through the inner pair."""
 
     zE: complex
     zF: complex
@@ -44,6 +50,11 @@ class Triad:
     l2: float
     l3: float
     name: str = "triad"
+    guides: tuple[complex | None, complex | None, complex | None] = (None, None, None)
+    #: a leash that is a block pinned at its outer pair and sliding in a slot of the base link:
+    #: the slot's unit direction in the base's frame (its origin is the leash's inner point:
+    #: D, E or F above); the "inner pair" is then the pin itself, where the slot passes
+    slots: tuple[complex | None, complex | None, complex | None] = (None, None, None)
 
     def inner(self, rD: complex, theta: float) -> tuple[complex, complex, complex]:
         rot = cmath.exp(1j * theta)
@@ -62,14 +73,18 @@ def place(t: Triad, outer: tuple[complex, complex, complex], guess: tuple[comple
           tol: float = 1e-13, iterations: int = 60) -> tuple[complex, float]:
     """(r_D, θ) with every leash at its length, by Newton from ``guess``."""
     rD, th = guess
-    lengths = (t.l1, t.l2, t.l3)
     for _ in range(iterations):
         P = t.inner(rD, th)
         rot = cmath.exp(1j * th)
         arms = (0j, rot * t.zE, rot * t.zF)
-        f = [abs(P[k] - outer[k]) ** 2 - lengths[k] ** 2 for k in range(3)]
-        J = [[2 * (P[k] - outer[k]).real, 2 * (P[k] - outer[k]).imag, 2 * _dot(P[k] - outer[k], 1j * arms[k])]
-             for k in range(3)]
+        f, J = [], []
+        for k in range(3):
+            n = _normal(t, k, P[k], outer[k], rot)  # the row is n·(δr_D + δθ·i·arm)
+            turn = _dot(n, 1j * arms[k])
+            if t.slots[k] is not None:  # the slot's normal turns with the base too
+                turn += _dot(1j * n, P[k] - outer[k])
+            J.append([n.real, n.imag, turn])
+            f.append(_residual(t, k, P[k], outer[k], rot))
         step = _solve3(J, [-x for x in f])
         if step is None:
             raise SpecialPosition(f"group {t.name}: the leashes' equations are singular here")
@@ -78,6 +93,51 @@ def place(t: Triad, outer: tuple[complex, complex, complex], guess: tuple[comple
         if max(abs(step[0]), abs(step[1]), abs(step[2]) * t.size) <= tol * t.size:
             return rD, th
     raise SpecialPosition(f"group {t.name}: no place with the leashes at their lengths near the previous one")
+
+
+def _lengths(t: Triad) -> tuple[float, float, float]:
+    return t.l1, t.l2, t.l3
+
+
+def _normal(t: Triad, k: int, P: complex, Q: complex, rot: complex = 1) -> complex:
+    """The gradient of leash k's equation in the inner pair's position: P − Q for a revolute
+    leash (|P − Q|² = l², halved), i·g for a slider on the guide g through Q, the slot's
+    normal (turned with the base) for a block in a slot of the base."""
+    g, sl = t.guides[k], t.slots[k]
+    if sl is not None:
+        return 1j * rot * sl
+    return P - Q if g is None else 1j * g
+
+
+def _residual(t: Triad, k: int, P: complex, Q: complex, rot: complex = 1) -> float:
+    g = t.guides[k]
+    if t.slots[k] is not None:  # the pin's distance from the slot's line (P: the slot's origin)
+        return _dot(_normal(t, k, P, Q, rot), P - Q)
+    if g is None:
+        return (abs(P - Q) ** 2 - _lengths(t)[k] ** 2) / 2
+    return _dot(1j * g, P - Q)  # the pin's distance from the guide's line
+
+
+def pair_points(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta: float) -> list[complex]:
+    """Where each leash meets the base link: its inner pair, or the pin of a block in a slot."""
+    P = t.inner(rD, theta)
+    return [outer[k] if t.slots[k] is not None else P[k] for k in range(3)]
+
+
+def determinant(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta: float) -> float:
+    """The determinant of the leash equations' matrix (the velocity equations), each row scaled
+    to unit length: its sign marks the branch, zero the group's special position."""
+    P = pair_points(t, outer, rD, theta)
+    rot = cmath.exp(1j * theta)
+    rows = []
+    for k in range(3):
+        n = _normal(t, k, P[k], outer[k], rot)
+        row = [n.real, n.imag, _dot(n, 1j * (P[k] - rD)) / t.size]
+        size = math.sqrt(sum(x * x for x in row)) or 1.0
+        rows.append([x / size for x in row])
+    m = rows
+    return (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]))
 
 
 def _solve3(J: list[list[float]], b: list[float]) -> list[float] | None:
@@ -100,9 +160,10 @@ def rates(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta:
           v_outer: tuple[complex, complex, complex],
           a_outer: tuple[complex, complex, complex] | None = None) -> tuple[complex, float, complex | None, float | None]:
     """(v_D, ω, a_D, ε) of the base link from the leash equations (exact, not graphical)."""
-    P = t.inner(rD, theta)
+    P = pair_points(t, outer, rD, theta)
+    rot = cmath.exp(1j * theta)
     arms = [P[k] - rD for k in range(3)]
-    d = [P[k] - outer[k] for k in range(3)]
+    d = [_normal(t, k, P[k], outer[k], rot) for k in range(3)]
     J = [[d[k].real, d[k].imag, _dot(d[k], 1j * arms[k])] for k in range(3)]
     x = _solve3(J, [_dot(d[k], v_outer[k]) for k in range(3)])
     if x is None:
@@ -111,7 +172,17 @@ def rates(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta:
     if a_outer is None:
         return vD, w, None, None
     vP = [vD + 1j * w * arms[k] for k in range(3)]
-    rhs = [_dot(d[k], a_outer[k] + w * w * arms[k]) - abs(vP[k] - v_outer[k]) ** 2 for k in range(3)]
+    # a slider on a fixed guide: n·a_P = 0 (n constant); a revolute leash: the derivative
+    # of (P − Q)·(v_P − v_Q) = 0 brings |v_P − v_Q|²; a block in a slot: the Coriolis term
+    # 2ω × v_rel of the pin relative to the base
+    rhs = []
+    for k in range(3):
+        r = _dot(d[k], a_outer[k] + w * w * arms[k])
+        if t.slots[k] is not None:
+            r -= 2 * w * _dot(d[k], 1j * (v_outer[k] - vP[k]))
+        elif t.guides[k] is None:
+            r -= abs(vP[k] - v_outer[k]) ** 2
+        rhs.append(r)
     y = _solve3(J, rhs)
     assert y is not None  # the same matrix
     return vD, w, complex(y[0], y[1]), y[2]
@@ -119,7 +190,7 @@ def rates(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta:
 
 def _meet(p1: complex, d1: complex, p2: complex, d2: complex) -> complex | None:
     s = _cross(d1, d2)
-    if abs(s) <= 1e-12 * abs(d1) * abs(d2):
+    if abs(s) <= LOCK_SIN * abs(d1) * abs(d2):
         return None
     return p1 + d1 * _cross(p2 - p1, d2) / s
 
@@ -136,14 +207,26 @@ class SpecialPoint:
     v_inner: tuple[complex, complex, complex]
 
 
+def _axis(t: Triad, k: int, P: complex, Q: complex, rot: complex = 1) -> complex:
+    """The direction of leash k's axis: along the leash, or the guide's (slot's) normal."""
+    return _normal(t, k, P, Q, rot)
+
+
+def _on_axis(t: Triad, k: int, P: complex, Q: complex) -> complex:
+    """A point of leash k's axis: its outer pair, or the slider's pin."""
+    return P if t.guides[k] is not None else Q
+
+
 def special_point_velocities(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta: float,
                              v_outer: tuple[complex, complex, complex]) -> SpecialPoint:
     """The textbook's construction: s where the lines through a ⟂ AD and through b ⟂ BE meet,
     then f from v_F − v_C ⟂ CF, then d and e."""
-    P = t.inner(rD, theta)
-    axis = [P[k] - outer[k] for k in range(3)]
+    P = pair_points(t, outer, rD, theta)
+    rot = cmath.exp(1j * theta)
+    axis = [_axis(t, k, P[k], outer[k], rot) for k in range(3)]
+    on = [_on_axis(t, k, P[k], outer[k]) for k in range(3)]
     for i, j in ((0, 1), (1, 2), (0, 2)):  # parallel axes: the other pair's point
-        S = _meet(outer[i], axis[i], outer[j], axis[j])
+        S = _meet(on[i], axis[i], on[j], axis[j])
         if S is None:
             continue
         # s: v_S − v_Qi ⟂ axis i and v_S − v_Qj ⟂ axis j, two lines of the velocity plan
@@ -152,13 +235,35 @@ def special_point_velocities(t: Triad, outer: tuple[complex, complex, complex], 
             raise SpecialPosition(f"group {t.name}: the lines of s are parallel")
         m = 3 - i - j  # the third leash fixes ω: v_S + ω (P_m − S)⊥ − v_Qm ⟂ axis m
         den = _dot(axis[m], 1j * (P[m] - S))
-        if abs(den) <= 1e-12 * abs(axis[m]) * max(abs(P[m] - S), t.size):
+        if abs(den) <= LOCK_SIN * abs(axis[m]) * max(abs(P[m] - S), t.size):
             raise SpecialPosition(f"group {t.name}: all three leashes' axes pass through one point "
                                   f"(special position)")
         w = _dot(axis[m], v_outer[m] - vS) / den
         v_inner = tuple(vS + 1j * w * (P[k] - S) for k in range(3))
         return SpecialPoint((i, j), S, vS, w, (v_inner[0], v_inner[1], v_inner[2]))
     raise SpecialPosition(f"group {t.name}: the three leashes are parallel (special position)")
+
+
+def special_kind(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta: float,
+                 tol: float = 1e-3) -> str | None:
+    """What makes this position special, or None: the three leashes' axes parallel, or
+    passing through one point (the leash equations' matrix singular to ``tol``)."""
+    P = pair_points(t, outer, rD, theta)
+    rot = cmath.exp(1j * theta)
+    axis = [_axis(t, k, P[k], outer[k], rot) for k in range(3)]
+    on = [_on_axis(t, k, P[k], outer[k]) for k in range(3)]
+    u = [a / abs(a) for a in axis]
+    if max(abs(_cross(u[i], u[j])) for i, j in ((0, 1), (1, 2), (0, 2))) <= tol:
+        return "the three leashes' axes are parallel (special position of the group)"
+    for i, j in ((0, 1), (1, 2), (0, 2)):
+        S = _meet(on[i], axis[i], on[j], axis[j])
+        if S is None:
+            continue
+        m = 3 - i - j
+        if abs(_cross(u[m], S - on[m])) <= tol * max(t.size, abs(S - on[m])):
+            return "the three leashes' axes pass through one point (special position of the group)"
+        return None
+    return None
 
 
 def leash_angles(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta: float) -> tuple[float, ...]:
@@ -184,10 +289,16 @@ def special_point_accelerations(t: Triad, outer: tuple[complex, complex, complex
     acceleration −ω_leash²·|QP| along its axis fixes ε; then d, e, f."""
     sp = special_point_velocities(t, outer, rD, theta, v_outer)
     i, j = sp.leashes
-    P = t.inner(rD, theta)
-    axis = [P[k] - outer[k] for k in range(3)]
+    P = pair_points(t, outer, rD, theta)
+    rot = cmath.exp(1j * theta)
+    axis = [_axis(t, k, P[k], outer[k], rot) for k in range(3)]
     w = sp.omega
-    w_leash = [_cross(axis[k], sp.v_inner[k] - v_outer[k]) / abs(axis[k]) ** 2 for k in range(3)]
+    # a slider on a fixed guide does not turn, a block turns with the base: no normal term
+    # along its axis; the block's pin has the Coriolis term relative to the base instead
+    w_leash = [0.0 if t.guides[k] is not None or t.slots[k] is not None
+               else _cross(axis[k], sp.v_inner[k] - v_outer[k]) / abs(axis[k]) ** 2 for k in range(3)]
+    a_outer = tuple(a_outer[k] - (2j * w * (v_outer[k] - sp.v_inner[k]) if t.slots[k] is not None else 0)
+                    for k in range(3))  # type: ignore[assignment]
     known = [a_outer[k] - w_leash[k] ** 2 * axis[k] - w * w * (sp.S - P[k]) for k in range(3)]
     aS = _meet(known[i], 1j * axis[i], known[j], 1j * axis[j])
     if aS is None:

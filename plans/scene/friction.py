@@ -74,11 +74,12 @@ def has_friction(scene: Scene) -> bool:
 
 
 def parse_friction(scene: Scene) -> FrictionSpec | None:
-    """The scene's friction, or None where it states none; InputError naming the field."""
-    if "friction" in scene.memo:
-        return scene.memo["friction"]
-    out = scene.memo["friction"] = _parse(scene) if has_friction(scene) else None
-    return out
+    """The scene's friction, or None where it states none; InputError naming the field.  The
+    record the scene holds once solved (``plans.solve`` reads it once, :mod:`plans.scene.tables`),
+    else read now."""
+    if scene.tables:
+        return scene.friction_spec
+    return _parse(scene) if has_friction(scene) else None
 
 
 def _parse(scene: Scene) -> FrictionSpec:

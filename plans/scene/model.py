@@ -102,6 +102,10 @@ class Driver:
     phi_ref: float
     sense: int
     phis_deg: tuple[float, ...]
+    #: ``phi_start``: the positions start at the output's extreme ("extreme", "extreme_idle"),
+    #: whose strokes are ``strokes`` (plans.kinematics.extreme.Strokes); "" and None otherwise
+    start: str = ""
+    strokes: Any = None
 
     def rotation(self, phi_deg: Any) -> Any:
         """e^{iθ1}, with θ1 reduced in degrees by whole quarter turns first, so that the
@@ -130,7 +134,7 @@ class Scene:
     branches: dict[str, int]
     outputs: frozenset[str]
     scales: dict[str, float]  # "length", "velocity", "acceleration", "force": mm per SI unit
-    scale_style: str  # "mu" (mm per unit) or "K" (unit per mm)
+    scale_style: str  # the notation's token (plans.scene.notation): the scales' letter and direction, the pole
     fij: str
     raw: dict[str, Any] = field(repr=False, default_factory=dict)
     titles: dict[str, str] = field(default_factory=dict)  # per sheet language: {"ru": ..., "en": ...}
@@ -144,9 +148,12 @@ class Scene:
     loads: Any = field(default=None, repr=False)
     dynamics_spec: Any = field(default=None, repr=False)
     diagrams_spec: Any = field(default=None, repr=False)
+    #: the pairs' friction (plans.scene.friction.FrictionSpec), read with the other tables
+    #: (None: the scene states none)
+    friction_spec: Any = field(default=None, repr=False)
     tables: bool = field(default=False, repr=False)
-    #: what is derived once per scene (its structure, the solver's constants); not copied by
-    #: dataclasses.replace, so a changed scene derives its own
+    #: what the exact analysis derives once per scene (its structure, the solver's constants);
+    #: not copied by dataclasses.replace, so a changed scene derives its own
     memo: dict[Any, Any] = field(init=False, repr=False, compare=False, default_factory=dict)
 
     def title_in(self, lang: str) -> str:
@@ -193,7 +200,8 @@ JOINT_KEYS = {"kind", "links", "point", "guide", "slider_angle_deg",
               "f", "pin_radius", "friction_circle"}  # friction: plans.scene.friction
 GUIDE_KEYS = {"link", "through", "toward", "angle_deg", "offset"}
 DRIVER_KEYS = {"link", "omega", "omega_rpm", "sense", "eps", "phi_ref_deg", "phi_deg", "positions", "phi0_deg",
-               "s_mm", "s_fraction", "s_stroke", "piston"}  # positions by the piston's travel: kinematics.travel
+               "s_mm", "s_fraction", "s_stroke", "piston",  # positions by the piston's travel: kinematics.travel
+               "phi_start", "extreme_of"}  # positions from the output's extreme: kinematics.extreme
 #: ω at most 1e6 rad/s, and 0 or at least 1e-6 rad/s (a slower crank makes plan scales overflow).
 OMEGA_LIMIT = 1e6
 
@@ -261,9 +269,10 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
     outputs = _outputs(r, data)
     scales, style = _scales(r, data)
     fij = r.choice(data, "fij", "", FIJ_CONVENTIONS, "on_i_from_j")
-    from plans.scene.sheet import check_sheet
+    if "sheet" in data:  # without one, every field takes its default: nothing to check
+        from plans.scene.sheet import check_sheet
 
-    check_sheet(data, path)  # the record is made when a reader asks for it (Scene.sheet)
+        check_sheet(data, path)  # the record is made when a reader asks for it (Scene.sheet)
     scene = Scene(path=path, title=title, frame=frame, frame_points=frame_points, links=links,
                   joints=joints, driver=driver, branches=branches, outputs=outputs,
                   scales=scales, scale_style=style, fij=fij, raw=data, titles=titles)
@@ -271,6 +280,10 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
         from plans.kinematics.travel import by_travel
 
         scene = by_travel(scene, r)
+    if isinstance(data.get("driver"), dict) and "phi_start" in data["driver"]:
+        from plans.kinematics.extreme import start_scene
+
+        scene = start_scene(scene, r)
     return scene
 
 
@@ -573,11 +586,16 @@ _SCALE_UNITS = {"length": "mm/m", "velocity": "mm/(m/s)", "acceleration": "mm/(m
 
 def _scales(r: Reader, data: dict[str, Any]) -> tuple[dict[str, float], str]:
     raw = r.table(data, "scales", "", required=False)
-    style = r.choice(raw, "style", "scales.", ("mu", "K"), "mu")
-    r.keys(raw, {"style", *_SCALE_UNITS}, "scales.")
+    r.keys(raw, {"style", "symbol", "direction", *_SCALE_UNITS}, "scales.")
+    style = "||"  # the scales' letter, their direction, the pole: the language's (plans.scene.notation)
+    sheet = data.get("sheet")
+    if {"style", "symbol", "direction"} & set(raw) or (isinstance(sheet, dict) and "acceleration_pole" in sheet):
+        from plans.scene.notation import read
+
+        style = read(r, raw, sheet)
     out = {}
     for key, value in raw.items():
-        if key == "style":
+        if key in ("style", "symbol", "direction"):
             continue
         if isinstance(value, dict) and set(value) == {"known_mm"} and key in ("velocity", "acceleration"):
             # the course habit: the known vector (crank pin) drawn this long, e.g. pa = 100 mm

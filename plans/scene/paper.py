@@ -8,7 +8,14 @@ from __future__ import annotations
 import math
 
 from plans.records import frozen
-from plans.scene.sheet import FORMATS
+
+FORMATS: dict[str, tuple[float, float]] = {  # landscape width × height, mm (GOST 2.301)
+    "A0": (1189.0, 841.0),
+    "A1": (841.0, 594.0),
+    "A2": (594.0, 420.0),
+    "A3": (420.0, 297.0),
+    "A4": (297.0, 210.0),
+}
 
 
 @frozen

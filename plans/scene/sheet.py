@@ -16,13 +16,6 @@ from plans.reader import check_keys
 if TYPE_CHECKING:
     from plans.scene.paper import Pin, SheetSpec  # noqa: F401  (the records, typed where read)
 
-FORMATS: dict[str, tuple[float, float]] = {  # landscape width × height, mm (GOST 2.301)
-    "A0": (1189.0, 841.0),
-    "A1": (841.0, 594.0),
-    "A2": (594.0, 420.0),
-    "A3": (420.0, 297.0),
-    "A4": (297.0, 210.0),
-}
 SHEET_FORMATS = ("A1", "A2", "A3", "A4")
 
 
@@ -38,6 +31,7 @@ SHEET_SETS = ("course", "positions")
 #: numbers, "all" or "none") and the drawing-wide ones (true or false).
 PANEL_CHOICE_AT = ("scheme", "velocity", "acceleration", "forces", "lever", "table", "centres")
 PANEL_CHOICE_WHOLE = ("positions", "legend")
+_KEYS |= {"acceleration_pole"}  # the notation, read with the scales (plans.scene.notation)
 
 
 def sheet_spec(raw: dict[str, Any], path: str, default_title: str = "", **override: Any) -> SheetSpec:
@@ -211,8 +205,9 @@ def _language(raw: dict) -> str:
 
 
 def __getattr__(name: str) -> Any:
-    """``Pin`` and ``SheetSpec`` (:mod:`plans.scene.paper`) where they were, defined when first used."""
-    if name in ("Pin", "SheetSpec"):
+    """``Pin``, ``SheetSpec`` and the paper ``FORMATS`` (:mod:`plans.scene.paper`) where they
+    were, defined when first used."""
+    if name in ("Pin", "SheetSpec", "FORMATS"):
         from plans.scene import paper
 
         return getattr(paper, name)

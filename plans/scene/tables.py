@@ -1,7 +1,8 @@
 """The scene's other tables, each read once into the typed record the scene holds:
-``[sheet]`` when the file is read (:func:`plans.scene.sheet.sheet_of`), ``[loads]``, ``[dynamics]`` and
-``[diagrams]`` when the scene is solved (:func:`with_tables`, which ``plans.solve`` calls
-before anything is computed), whether or not the scene asks for what they feed.  So a bad
+``[sheet]`` when the file is read (:func:`plans.scene.sheet.sheet_of`), ``[loads]``,
+``[dynamics]``, ``[diagrams]`` and the pairs' friction when the scene is solved
+(:func:`with_tables`, which ``plans.solve`` calls before anything is computed), whether or
+not the scene asks for what they feed.  So a bad
 table fails ``plans solve`` and ``plans draw`` alike (one line, exit 2), and every reader
 takes the scene's record instead of reading the raw table again.
 
@@ -44,10 +45,10 @@ def with_tables(scene: Scene, **changes: Any) -> Scene:
             diagrams = spec.diagrams_spec(scene)
         else:
             spec.check_table(scene, "diagrams")
-    out = replace(scene, loads=loads, dynamics_spec=dynamics, diagrams_spec=diagrams, tables=True, **changes)
-    if loads is not None:
-        out.memo["loads"] = loads  # what plans.forces.loads.parse_loads reads back: parsed once
-    return out
+    from plans.scene.friction import parse_friction
+
+    return replace(scene, loads=loads, dynamics_spec=dynamics, diagrams_spec=diagrams,
+                   friction_spec=parse_friction(scene), tables=True, **changes)
 
 
 __all__ = ["with_tables"]

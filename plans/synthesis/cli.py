@@ -120,7 +120,7 @@ def summary(d: Design, res: dict[str, Any]) -> str:
     return "\n".join(lines)
 
 
-def _check_scene(text: str, task_path: str) -> None:
+def check_scene(text: str, task_path: str) -> None:
     """The written scene read back and solved as ``plans solve`` does: what [task] carried
     that a scene refuses is one line naming the task's key (nothing is written)."""
     from plans.errors import InputError
@@ -142,9 +142,8 @@ def _run(args: argparse.Namespace) -> int:
 
     from plans.io import dumps, refuse_input, write_all
 
-    from .design import design
-    from .model import load_task
     from .scene import scene_text
+    from .solution import solve_task
 
     refuse_input(args.output, args.task)
     refuse_input(args.json, args.task)
@@ -152,9 +151,9 @@ def _run(args: argparse.Namespace) -> int:
         from plans.errors import OutputError
 
         raise OutputError(f"{args.output}: the scene and the JSON would overwrite each other")
-    d = design(load_task(args.task))
+    d = solve_task(args.task).design
     text = scene_text(d)
-    _check_scene(text, args.task)
+    check_scene(text, args.task)
     res = results(d, args.output if args.output else text)
     files: dict[Path, str] = {}
     if args.output:

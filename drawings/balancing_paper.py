@@ -1,0 +1,26 @@
+"""How the balancing sheets put the engine on paper: the engine plane's mapping (the real
+part up, the imaginary part along the rotation) and the polygons' round scale."""
+
+from __future__ import annotations
+
+from plans.kinematics.scales import round_scale
+
+from .backend import Pt, Transform
+
+POLY_MM = 130.0  # the largest polygon extent on the sheet, mm
+#: K = 1/μ of the polygons: μ is 1, 2, 2.5, 4, 5 or 8 × 10^k mm per unit
+POLYGON_ROUND = (1.0, 1.25, 2.0, 2.5, 4.0, 5.0)
+
+
+def engine_paper(z: complex, s: float, o: Pt = (0.0, 0.0)) -> Pt:
+    """Engine plane -> paper at ``s`` mm per unit from ``o``: the real part is up, the
+    imaginary part along the rotation (counter-clockwise on the sheet, as the seed draws it)."""
+    return Transform(s, o[0], o[1])(-z.imag, z.real)
+
+
+def polygon_scale(extent: float) -> float:
+    """mm per dimensionless unit: the largest round value (1, 2, 2.5, 4, 5, 8 × 10^k) that
+    draws ``extent`` units within POLY_MM; 20 where there is nothing to draw."""
+    if extent <= 0:
+        return 20.0
+    return round_scale(extent, POLY_MM, POLYGON_ROUND)

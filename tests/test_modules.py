@@ -1,0 +1,206 @@
+"""How the modules of ``plans`` and ``drawings`` depend on each other, read from their source:
+no import cycle inside a room (a sub-package, or a package's own top-level modules), lazy
+imports (inside a function) and ``TYPE_CHECKING`` imports counted; no private name (``_x``)
+taken from another module; no module longer than a reader takes in."""
+
+from __future__ import annotations
+
+import ast
+import functools
+import re
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+PACKAGES = ("plans", "drawings")
+LONGEST = 600  # lines
+
+
+def _modules() -> dict[str, Path]:
+    out = {}
+    for pkg in PACKAGES:
+        for p in sorted((ROOT / pkg).rglob("*.py")):
+            parts = list(p.relative_to(ROOT).with_suffix("").parts)
+            if parts[-1] == "__init__":
+                parts = parts[:-1]
+            out[".".join(parts)] = p
+    return out
+
+
+MODULES = _modules()
+
+
+def _statements(body: list[ast.stmt]) -> Iterator[ast.stmt]:
+    """Every statement, nested ones included (an import is a statement: no expression is read)."""
+    for node in body:
+        yield node
+        for key in ("body", "orelse", "finalbody"):
+            yield from _statements(getattr(node, key, []))
+        for h in getattr(node, "handlers", []):
+            yield from _statements(h.body)
+        for case in getattr(node, "cases", []):
+            yield from _statements(case.body)
+
+
+@functools.cache
+def _imports(name: str, path: Path) -> list[tuple[str, str, int]]:
+    """(module imported, name taken from it or "", line) for every import anywhere in the file,
+    relative imports resolved; a module imported by name (``from plans.kinematics import
+    exact``) is the module itself."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    package = name.split(".") if path.name == "__init__.py" else name.split(".")[:-1]
+    out = []
+    for node in _statements(tree.body):
+        if isinstance(node, ast.Import):
+            out += [(a.name, "", node.lineno) for a in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = package[:len(package) - node.level + 1]
+                mod = ".".join(base + ([node.module] if node.module else []))
+            else:
+                mod = node.module or ""
+            for a in node.names:
+                sub = f"{mod}.{a.name}"
+                out.append((sub, "", node.lineno) if sub in MODULES else (mod, a.name, node.lineno))
+    return out
+
+
+def _ours(mod: str) -> str | None:
+    """The module of ours that an import loads (a name inside a package: the package)."""
+    while mod and mod not in MODULES:
+        mod = mod.rpartition(".")[0]
+    return mod or None
+
+
+def _room(mod: str) -> str:
+    """plans.kinematics.exact -> plans.kinematics; plans.cli -> plans; drawings.note.x -> drawings.note."""
+    parts = mod.split(".")
+    is_package = MODULES[mod].name == "__init__.py"
+    return ".".join(parts[:2]) if len(parts) > 2 or (len(parts) == 2 and is_package) else parts[0]
+
+
+def _graph() -> dict[str, set[str]]:
+    graph: dict[str, set[str]] = {m: set() for m in MODULES}
+    for m, p in MODULES.items():
+        for mod, _, _ in _imports(m, p):
+            dep = _ours(mod)
+            if dep is not None and dep != m and _room(dep) == _room(m):
+                graph[m].add(dep)
+    return graph
+
+
+def _cycles(graph: dict[str, set[str]]) -> list[list[str]]:
+    """The strongly connected components of more than one module (Tarjan, iterative)."""
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    on: set[str] = set()
+    out: list[list[str]] = []
+    for start in graph:
+        if start in index:
+            continue
+        work = [(start, iter(sorted(graph[start])))]
+        index[start] = low[start] = len(index)
+        stack.append(start)
+        on.add(start)
+        while work:
+            v, it = work[-1]
+            w = next(it, None)
+            if w is not None:
+                if w not in index:
+                    index[w] = low[w] = len(index)
+                    stack.append(w)
+                    on.add(w)
+                    work.append((w, iter(sorted(graph[w]))))
+                elif w in on:
+                    low[v] = min(low[v], index[w])
+                continue
+            work.pop()
+            if work:
+                low[work[-1][0]] = min(low[work[-1][0]], low[v])
+            if low[v] == index[v]:
+                comp = []
+                while True:
+                    w = stack.pop()
+                    on.discard(w)
+                    comp.append(w)
+                    if w == v:
+                        break
+                if len(comp) > 1:
+                    out.append(sorted(comp))
+    return out
+
+
+def test_the_cycle_finder_finds_a_cycle_and_a_loop_of_three():
+    g = {"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}, "e": {"f"}, "f": {"e"}, "g": set()}
+    assert sorted(_cycles(g)) == [["a", "b", "c"], ["e", "f"]]
+    assert _cycles({"a": {"b"}, "b": set()}) == []
+
+
+def test_rooms_are_read_as_the_packages_are_laid_out():
+    assert _room("plans.kinematics.exact") == "plans.kinematics"
+    assert _room("plans.kinematics") == "plans.kinematics"
+    assert _room("plans.cli") == "plans"
+    assert _room("drawings.panels") == "drawings"
+    assert _room("drawings.note.figures") == "drawings.note"
+    # lazy and TYPE_CHECKING imports are edges too
+    assert "plans.kinematics.accelerations" in _graph()["plans.kinematics.construction"]
+
+
+def test_no_import_cycle_inside_a_room():
+    assert _cycles(_graph()) == []
+
+
+def test_no_private_name_crosses_modules():
+    found = []
+    for m, p in MODULES.items():
+        whole = set()  # local names of our modules imported whole
+        for mod, name, line in _imports(m, p):
+            if _ours(mod) is None:
+                continue
+            if name.startswith("_") and not name.startswith("__"):
+                found.append(f"{p.relative_to(ROOT)}:{line}: {name} from {mod}")
+            if mod in MODULES and not name:
+                whole.add(mod.rpartition(".")[2])
+        text = p.read_text(encoding="utf-8")
+        for alias in sorted(whole):
+            found += [f"{p.relative_to(ROOT)}: {alias}.{hit}" for hit in re.findall(rf"\b{alias}\.(_[A-Za-z]\w*)", text)
+                      if not hit.startswith("__")]
+    assert found == []
+
+
+@pytest.mark.parametrize("name", ["private", "cycle"])
+def test_the_checks_see_what_they_forbid(name, tmp_path, monkeypatch):
+    """A private name taken across modules, and a lazy import closing a loop, are found."""
+    pkg = tmp_path / "plans" / "room"
+    pkg.mkdir(parents=True)
+    (tmp_path / "plans" / "__init__.py").write_text("")
+    (pkg / "__init__.py").write_text("")
+    (pkg / "a.py").write_text("from plans.room.b import _hidden\n" if name == "private"
+                              else "def f():\n    from plans.room import b\n")
+    (pkg / "b.py").write_text("_hidden = 1\n" if name == "private" else "from plans.room.a import f\n")
+    mods = {"plans": tmp_path / "plans" / "__init__.py", "plans.room": pkg / "__init__.py",
+            "plans.room.a": pkg / "a.py", "plans.room.b": pkg / "b.py"}
+    monkeypatch.setitem(globals(), "MODULES", mods)
+    if name == "cycle":
+        assert _cycles(_graph()) == [["plans.room.a", "plans.room.b"]]
+    else:
+        assert _imports("plans.room.a", pkg / "a.py") == [("plans.room.b", "_hidden", 1)]
+
+
+#: The exact solver's ways to run (closed forms over arrays, the same in Python numbers, the
+#: usual crank's fast paths, the triads), behind one entry: :func:`plans.kinematics.exact.solve`.
+EXACT_SOLVERS = {"plans.kinematics.assur", "plans.kinematics.context", "plans.kinematics.fast",
+                 "plans.kinematics.fast_arrays", "plans.kinematics.triad_exact"}
+
+
+def test_the_exact_solvers_have_one_entry():
+    """Nothing but :mod:`plans.kinematics.exact` (and the solvers among themselves) imports
+    the exact solvers: every reader solves through ``exact.solve``."""
+    outside = sorted(f"{m} imports {dep}" for m, p in MODULES.items()
+                     if m not in EXACT_SOLVERS | {"plans.kinematics.exact"}
+                     for dep in {_ours(mod) for mod, _, _ in _imports(m, p)} & EXACT_SOLVERS)
+    assert outside == []
+    assert EXACT_SOLVERS <= set(MODULES)
