@@ -206,10 +206,6 @@ def _smaller_fit(sol: Solution, panel: Panel, spec: SheetSpec) -> float | None:
     return fit if fit >= 0.02 else None
 
 
-#: The fits (of the A1 target lengths) a course's kinematics sheet tries for its plans, longest first.
-LONGER = (2.0, 1.25)
-
-
 def _draw(sol: Solution, spec: SheetSpec) -> Drawing:
     """The sheets of ``sol`` on ``spec``'s paper (TooBig when a panel does not fit it)."""
     from .sheet_sets import course_sheets, numbers, set_of
@@ -227,12 +223,7 @@ def _draw(sol: Solution, spec: SheetSpec) -> Drawing:
             return (lambda sel, mp, ml: build_panels(s, spec, sel, mp, ml),
                     lambda mu, bold: positions_panel(s, mu, spec.language, bold, strokes, spec.trace))
 
-        # on A1 the velocity plans may be drawn longer where the kinematics sheet still holds them
-        fixed = any(k in sc.scales for k in ("velocity", "velocity_known_mm", "acceleration", "acceleration_known_mm"))
-        solved: dict[float, Solution] = {}  # each longer fit solved once, for both sheets
-        larger = [] if fixed or sol.fit < 1.0 else [
-            (lambda f=f: builders(solved.setdefault(f, solve_scene(sc, fit=f)))) for f in LONGER]
-        sheets = course_sheets(sol, spec, *builders(sol), diagrams, larger)
+        sheets = course_sheets(sol, spec, *builders(sol), diagrams)
         panels = [p for sh in sheets for p, _, _ in sh.placed if p not in diagrams]  # the linkage's
         if sc.wants("dynamics"):  # the dynamics' sheets follow
             from .cycle import extend

@@ -8,8 +8,8 @@ not ask for costs nothing and none is computed twice.  Readers never call a solv
 read the Solution.
 
 ``fit`` is the drawing's paper: the target lengths of the plans, polygons and lever as a
-fraction of the A1 ones (``drawings`` passes √(sheet / A1) for a smaller sheet, up to 2 where
-a course's A1 sheet holds longer plans, the scales still round).  It changes only scales, never a value.
+fraction of the A1 ones (``drawings`` passes √(sheet / A1) for a smaller sheet, the scales
+still round).  It changes only scales, never a value.
 
 Values by their textbook names (``F_12^τ``, ``v_B``, ``omega_3``...) are read with
 :meth:`Solution.value`, signed as :mod:`plans.quantities` documents (docs/quantities.md).
@@ -81,8 +81,8 @@ class Solution:
         (an InputError naming the field, before anything is solved), at the paper's ``fit``."""
         from plans.scene.tables import with_tables
 
-        if not (isinstance(fit, int | float) and not isinstance(fit, bool) and 0.0 < fit <= 2.0):
-            raise ValueError(f"fit is the fraction of the A1 target lengths, 0 < fit <= 2; got {fit!r}")
+        if not (isinstance(fit, int | float) and not isinstance(fit, bool) and 0.0 < fit <= 1.0):
+            raise ValueError(f"fit is the fraction of the A1 target lengths, 0 < fit <= 1; got {fit!r}")
         self.scene: Scene = with_tables(scene, **({} if fit == scene.fit else {"fit": float(fit)}))
         self.fit = float(fit)
         self._parts: dict[Any, Any] = {}

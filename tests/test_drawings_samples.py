@@ -243,7 +243,7 @@ def _drawn_part(sheet) -> float:
 def test_a1_sheets_are_not_left_empty(drawn):
     """Every A1 sheet of every sample has panels over at least 0.3 of its field, and the
     drawing over 0.4 on average (the course's set: a 12-position scene's kinematics and
-    kinetostatics sheets, the plans drawn longer where the kinematics sheet still holds them;
+    kinetostatics sheets, the plan of positions and the mechanism grown while the sheets hold them;
     the block layout left half-empty last sheets of 0.11 to 0.25)."""
     _, d, _ = drawn
     fills = [_drawn_part(sh) for sh in d.sheets]
