@@ -89,6 +89,13 @@ def pole_distance(x: float) -> float:
     return nice_up(x)
 
 
+def _centre_name(name: str, lang: str) -> str:
+    """O_min, O_best as the sheet writes them (O_мин, O_опт on a Russian sheet)."""
+    from .i18n import tr
+
+    return {"O_min": tr("centre_min", lang), "O_best": tr("centre_best", lang)}.get(name, name)
+
+
 def _unit(unit: str, lang: str) -> str:
     return {"mm": "мм", "cm": "см", "m": "м"}.get(unit, unit) if lang == "ru" else unit
 
@@ -228,7 +235,7 @@ def diagram_panel(cs: CamSolution, lang: str, g: float = 1.0) -> Panel:
                         ("O", O_file, "#000")):
         q = P(*c)
         rec.circle(q, 0.8, Style(stroke=None, width=0, fill=st), f"centre-{name}")
-        _text(rec, name, q[0] + 1.5, q[1] + 1.5, LABEL, "start", "top")
+        _text(rec, _centre_name(name, lang), q[0] + 1.5, q[1] + 1.5, LABEL, "start", "top")
     _text(rec, "B0", *P(0, 0), LABEL, "end", "bottom")
     _text(rec, "s", *P(0, float(np.max(Yd)) * 1.1), LABEL, "start", "bottom")
     _text(rec, "ds/dφ", *P(xmax, 0), SMALL, "end", "bottom")
@@ -277,8 +284,8 @@ def rocker_panel(cs: CamSolution, lang: str, g: float = 1.0) -> Panel:
         if c is None:
             continue
         rec.circle(P(c), 0.8, Style(stroke=None, width=0, fill=st), f"centre-{name}")
-        _text(rec, name, P(c)[0] + 1.5, P(c)[1] + 1.5, LABEL, "start", "top")
-    note = f"{ratio_text(mu)}; AD = (1 − r)·AB, r = ω_arm/ω_cam; ∠(OD, ⟂AB) = α"
+        _text(rec, _centre_name(name, lang), P(c)[0] + 1.5, P(c)[1] + 1.5, LABEL, "start", "top")
+    note = f"{ratio_text(mu)}; AD = (1 − r)·AB, r = ω_2/ω_1; ∠(OD, ⟂AB) = α"  # 1 the cam, 2 the rocker
     return finish("rocker", "cam-diagram", None, rec, _w("rocker", lang), note=note)
 
 

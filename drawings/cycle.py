@@ -89,14 +89,15 @@ tr = lookup(WORDS)
 # --------------------------------------------------------------------------- kinematic diagrams
 
 
-def diagram_panels(dg: Diagrams, lang: str) -> list[Panel]:
-    """s, v, a of every subject, each with its pole, scale and error."""
+def diagram_panels(dg: Diagrams, lang: str, first: int = 1) -> list[Panel]:
+    """s, v, a of every subject, each with its pole, scale and error; positions numbered from
+    ``first``."""
     out: list[Panel] = []
     L = dg.spec.length_mm
     phi0 = float(dg.nodes_deg[0])
     for g in dg.diagrams:
         rec = Recording()
-        ax = Axes(rec, f"diagram-{g.name}", dg.mu_phi, phi0, lang)
+        ax = Axes(rec, f"diagram-{g.name}", dg.mu_phi, phi0, lang, first)
         ys = g.values * g.scale
         ye = g.exact * g.scale
         ax.frame(L, float(min(ys.min(), ye.min())), float(max(ys.max(), ye.max())), g.name.replace("_", "_"))
@@ -119,7 +120,7 @@ def diagram_panels(dg: Diagrams, lang: str) -> list[Panel]:
         scale = f"{formula}; μ_φ = {fmt(dg.mu_phi, 4, lang)} mm/rad"
         out.append(plot_panel(f"diagram-{g.name}", "diagram", f"{tr(g.quantity, lang)} {g.name}", rec, scale,
                               note, lang=lang))
-    out += _ordinates_table(dg, lang)
+    out += _ordinates_table(dg, lang, first)
     rows = [[g.name, number(g.error_max_pct, lang, 3), number(g.error_rms_pct, lang, 3),
              "—" if g.integral_error_max_pct is None else number(g.integral_error_max_pct, lang, 3)]
             for g in dg.diagrams]
@@ -128,7 +129,7 @@ def diagram_panels(dg: Diagrams, lang: str) -> list[Panel]:
     return out
 
 
-def _ordinates_table(dg: Diagrams, lang: str) -> list[Panel]:
+def _ordinates_table(dg: Diagrams, lang: str, first: int = 1) -> list[Panel]:
     """The diagrams over the positions: ordinate (mm) and value at each position, as the
     course tabulates them (the chord method's values sit between the positions)."""
     tables = []
@@ -143,7 +144,7 @@ def _ordinates_table(dg: Diagrams, lang: str) -> list[Panel]:
             rows.append(TableRow(g.name, g.name, u, tuple(float(x) for x in at)))
         tables.append(CycleTable(f"{tr('ordinates', lang)} {subject}", tuple(float(x) for x in dg.nodes_deg[:-1]),
                                  tuple(rows)))
-    return table_panels(tables, lang, "diagram")
+    return table_panels(tables, lang, "diagram", first=first)
 
 
 def _closed(xs: np.ndarray, ys: np.ndarray, L: float) -> tuple[np.ndarray, np.ndarray]:
@@ -160,11 +161,11 @@ def _closed(xs: np.ndarray, ys: np.ndarray, L: float) -> tuple[np.ndarray, np.nd
 # --------------------------------------------------------------------------- dynamics
 
 
-def _m_panel(d: Dynamics, lang: str) -> Panel:
+def _m_panel(d: Dynamics, lang: str, first: int = 1) -> Panel:
     s = d.scales
     t = d.table
     rec = Recording()
-    ax = Axes(rec, "dyn-M", s.phi, float(t.phi_deg[0]), lang)
+    ax = Axes(rec, "dyn-M", s.phi, float(t.phi_deg[0]), lang, first)
     rad = np.radians(t.phi_deg - t.phi_deg[0])
     xs_s, ys_s = spline.sample(rad, t.M_pr, spline.slopes(rad, t.M_pr), 8)
     ye = d.exact.M_pr * s.M
@@ -186,11 +187,11 @@ def _m_panel(d: Dynamics, lang: str) -> Panel:
     return plot_panel("dyn-M", "dynamics", tr("M", lang), rec, scale, tr("sign", lang), lang=lang)
 
 
-def _a_panel(d: Dynamics, lang: str) -> Panel:
+def _a_panel(d: Dynamics, lang: str, first: int = 1) -> Panel:
     s = d.scales
     t = d.table
     rec = Recording()
-    ax = Axes(rec, "dyn-A", s.phi, float(t.phi_deg[0]), lang)
+    ax = Axes(rec, "dyn-A", s.phi, float(t.phi_deg[0]), lang, first)
     L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
     ya = np.concatenate([d.A_c, d.A_d]) * s.A
     ax.frame(L, float(ya.min()), float(ya.max()), "A")
@@ -209,11 +210,11 @@ def _a_panel(d: Dynamics, lang: str) -> Panel:
     return plot_panel("dyn-A", "dynamics", tr("A", lang), rec, scale, tr("exact_thin", lang), lang=lang)
 
 
-def _t_panel(d: Dynamics, lang: str) -> Panel:
+def _t_panel(d: Dynamics, lang: str, first: int = 1) -> Panel:
     s = d.scales
     t = d.table
     rec = Recording()
-    ax = Axes(rec, "dyn-T", s.phi, float(t.phi_deg[0]), lang)
+    ax = Axes(rec, "dyn-T", s.phi, float(t.phi_deg[0]), lang, first)
     L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
     ye = d.dT_exact * s.A
     ax.frame(L, float(min(ye.min(), d.dT.min() * s.A)), float(max(ye.max(), d.dT.max() * s.A)), "ΔT")
@@ -228,11 +229,11 @@ def _t_panel(d: Dynamics, lang: str) -> Panel:
     return plot_panel("dyn-T", "dynamics", tr("T", lang), rec, scale, lang=lang)
 
 
-def _i_panel(d: Dynamics, lang: str) -> Panel:
+def _i_panel(d: Dynamics, lang: str, first: int = 1) -> Panel:
     s = d.scales
     t = d.table
     rec = Recording()
-    ax = Axes(rec, "dyn-I", s.phi, float(t.phi_deg[0]), lang)
+    ax = Axes(rec, "dyn-I", s.phi, float(t.phi_deg[0]), lang, first)
     L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
     ye = d.exact.I_pr * s.I
     ax.frame(L, 0.0, float(ye.max()), "I_пр" if lang == "ru" else "I_pr")
@@ -246,49 +247,74 @@ def _i_panel(d: Dynamics, lang: str) -> Panel:
     return plot_panel("dyn-I", "dynamics", tr("I", lang), rec, scale, lang=lang)
 
 
-def _w_panel(d: Dynamics, lang: str) -> Panel:
-    """ΔT against I_pr from I = 0: the closed curve, the tangents at ψ_max, ψ_min, k and l."""
-    s = d.scales
+W_WIDTH_MM = 150.0  # the energy–mass diagram's I_pr extent from I = 0
+W_HEIGHT_MM = 110.0  # ... and its ΔT extent with k and l
+
+
+def _w_panel(d: Dynamics, lang: str, first: int = 1) -> Panel:
+    """ΔT against I_pr from I = 0: the closed curve, the tangents at ψ_max, ψ_min, k and l; at
+    its own round scales (the curve about W_WIDTH_MM × W_HEIGHT_MM, readable), every position
+    numbered (coincident ones share a label: "1, 13")."""
+    from plans.kinematics.scales import round_scale
+
+    from .common import Placer
+    from .overview import coincident_positions
+
     w = d.wittenbauer
     rec = Recording()
-    X = w.I * s.I
-    Y = w.dT * s.A
+    placer = Placer()
+    t = d.table
+    span = float(max(np.max(w.dT), w.k, w.l, 0.0) - min(np.min(w.dT), w.k, w.l, 0.0))
+    mu_T = round_scale(span, W_HEIGHT_MM) if span > 0 else d.scales.A
+    top_I = float(np.max(w.I))
+    mu_I = round_scale(top_I, W_WIDTH_MM) if top_I > 0 else d.scales.I
+    X = w.I * mu_I
+    Y = w.dT * mu_T
     x_hi = float(X.max()) + 8.0
-    k_mm, l_mm = w.k * s.A, w.l * s.A
+    k_mm, l_mm = w.k * mu_T, w.l * mu_T
     lo = float(min(Y.min(), k_mm, l_mm))
     hi = float(max(Y.max(), k_mm, l_mm))
     ax = Axes(rec, "dyn-W", 1.0, 0.0, lang)
     ax.frame(x_hi, lo, hi, "ΔT", "I_пр" if lang == "ru" else "I_pr")
-    rec.polyline([(float(a), float(-b)) for a, b in zip(X, Y, strict=True)], GRAPH, "dyn-W-curve")
-    t = d.table
-    last = None
-    for k in range(len(t.phi_deg) - 1):
-        p = (float(t.I_pr[k] * s.I), float(-d.dT[k] * s.A))
-        rec.circle(p, 0.5, Style(stroke=None, width=0, fill="#000"))
-        if last is None or math.hypot(p[0] - last[0], p[1] - last[1]) > 4.0:
-            rec.text(layout(str(k + 1), p[0] + 1.0, p[1] - 1.0, 2.2, "start", "bottom"), "tick")
-            last = p
+    curve = [(float(a), float(-b)) for a, b in zip(X, Y, strict=True)]
+    rec.polyline(curve, GRAPH, "dyn-W-curve")
+    placer.add_line(curve)
+    placer.add_line([(0.0, 0.0), (x_hi + 8.0, 0.0)])
     for name, b, slope, touch in (("k", w.k, w.slope_max, w.touch_max), ("l", w.l, w.slope_min, w.touch_min)):
-        tan = slope * s.A / s.I  # on paper
+        tan = slope * mu_T / mu_I  # on paper
         x1 = float(X[touch]) + 6.0
-        rec.line((0.0, -b * s.A), (x1, -(b * s.A + tan * x1)), THIN, f"dyn-W-tangent-{name}")
-        rec.circle((0.0, -b * s.A), 0.6, Style(stroke=None, width=0, fill="#000"))
-        rec.text(layout(name, -1.5, -b * s.A, 3.0, "end", "middle"), "point")
-    kl = (w.k - w.l) * s.A
+        rec.line((0.0, -b * mu_T), (x1, -(b * mu_T + tan * x1)), THIN, f"dyn-W-tangent-{name}")
+        placer.add_line([(0.0, -b * mu_T), (x1, -(b * mu_T + tan * x1))])
+        rec.circle((0.0, -b * mu_T), 0.6, Style(stroke=None, width=0, fill="#000"))
+        rec.text(layout(name, -1.5, -b * mu_T, 3.5, "end", "middle"), "point")
+    pts = [(float(t.I_pr[k] * mu_I), float(-d.dT[k] * mu_T)) for k in range(len(t.phi_deg) - 1)]
+    for p in pts:
+        rec.circle(p, 0.6, Style(stroke=None, width=0, fill="#000"))
+        placer.add_disc(p, 0.8)
+    cx = sum(p[0] for p in pts) / max(len(pts), 1)
+    cy = sum(p[1] for p in pts) / max(len(pts), 1)
+    for ks in coincident_positions(pts):
+        p = pts[ks[0]]
+        away = (p[0] - cx, p[1] - cy)
+        L = math.hypot(*away) or 1.0
+        lab = placer.place(", ".join(str(k + first) for k in ks), p, 2.5, prefer=(away[0] / L, away[1] / L),
+                           gap=0.8)
+        rec.text(lab, "tick", f"dyn-W-n-{ks[0] + first}")
+    kl = (w.k - w.l) * mu_T
     fw = d.flywheel
-    scale = (f"μ_T = {fmt(s.A, 4, lang)} mm/J; μ_I = {fmt(s.I, 4, lang)} mm/(kg·m²); "
+    scale = (f"μ_T = {fmt(mu_T, 4, lang)} mm/J; μ_I = {fmt(mu_I, 4, lang)} mm/(kg·m²); "
              f"tg ψ = (μ_T/μ_I)·ω_{{m}}²(1 ± δ)/2")
     note = (f"kl = {fmt(kl, 4, lang)} mm; I_fw = kl/(μ_T·ω_{{m}}²·δ) = {fmt(fw.inertia_graphical, 4, lang)} kg·m²; "
             f"ω_m = {fmt(fw.omega_mean, 4, lang)} rad/s, δ = {fmt(fw.delta, 4, lang)}")
     return plot_panel("dyn-W", "dynamics", tr("W", lang), rec, scale, note, lang=lang)
 
 
-def _omega_panel(d: Dynamics, lang: str) -> Panel:
+def _omega_panel(d: Dynamics, lang: str, first: int = 1) -> Panel:
     """ω(φ) by exact integration of the motion, magnified about ω_m."""
     s = d.scales
     fw = d.flywheel
     rec = Recording()
-    ax = Axes(rec, "dyn-w", s.phi, float(d.exact.phi_deg[0]), lang)
+    ax = Axes(rec, "dyn-w", s.phi, float(d.exact.phi_deg[0]), lang, first)
     L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
     span = max(float(np.ptp(d.omega)), float(np.ptp(d.omega_exact)), 1e-300)
     mu_w = 40.0 / span
@@ -336,16 +362,16 @@ def _rms(lang: str) -> str:
 
 
 def table_panels(tables: Sequence[CycleTable], lang: str, prefix: str,
-                 titles: Sequence[str] | None = None, columns: int = 12) -> list[Panel]:
-    """Cycle tables as panels: positions as columns, split in parts of ``columns`` when they
-    are many."""
+                 titles: Sequence[str] | None = None, columns: int = 12, first: int = 1) -> list[Panel]:
+    """Cycle tables as panels: positions as columns (numbered from ``first``), split in parts of
+    ``columns`` when they are many."""
     out: list[Panel] = []
     for i, t in enumerate(tables):
         title = titles[i] if titles else t.title
         n = len(t.phi_deg)
         chunks = [range(0, n)] if n <= columns + 2 else [range(a, min(n, a + columns)) for a in range(0, n, columns)]
         for j, ks in enumerate(chunks):
-            head = [tr("position", lang)] + [str(k + 1) for k in ks]
+            head = [tr("position", lang)] + [str(k + first) for k in ks]
             rows = [[tr("phi", lang)] + [number(t.phi_deg[k], lang, 6) for k in ks]]
             for r in t.rows:
                 big = max([abs(v) for v in r.values if v is not None] + [0.0])
@@ -417,13 +443,13 @@ def analogue_plans(plans: Sequence, lang: str, style: str) -> list[Panel]:
 
 
 def dynamics_panels(d: Dynamics, tables: Sequence[CycleTable], lang: str, analogues: Sequence = (),
-                    columns: int = 12) -> list[Panel]:
+                    columns: int = 12, first: int = 1) -> list[Panel]:
     titles = [f"{tr('analogues', lang)}, μ = {fmt(d.scales.analogue, 4, lang)} mm/m (ω_1 = 1)",
               tr("Ipr", lang), f"{tr('Mpr', lang)}; {tr('sign', lang)}", tr("energy", lang)]
     plans = analogue_plans(analogues, lang, d.scene.scale_style)  # none where the first sheet has the plans
-    return ([_m_panel(d, lang), _a_panel(d, lang), _t_panel(d, lang), _i_panel(d, lang), _w_panel(d, lang),
-             _omega_panel(d, lang), _fly_table(d, lang)] + indicator_panels(d, lang)
-            + table_panels(tables, lang, "dyn", titles, columns) + plans)
+    return ([_m_panel(d, lang, first), _a_panel(d, lang, first), _t_panel(d, lang, first),
+             _i_panel(d, lang, first), _w_panel(d, lang, first), _omega_panel(d, lang, first), _fly_table(d, lang)]
+            + indicator_panels(d, lang) + table_panels(tables, lang, "dyn", titles, columns, first) + plans)
 
 
 # --------------------------------------------------------------------------- the hook
@@ -478,14 +504,14 @@ def fitting_diagrams(sol: Solution, dg: Diagrams, spec: SheetSpec) -> list[Panel
     scales μφ, μs... written on them the engine's at that length), not refused."""
     from .sheet import fits_empty
 
-    panels = diagram_panels(dg, spec.language)
+    panels = diagram_panels(dg, spec.language, spec.first_position)
     length = dg.spec.length_mm
     while not all(fits_empty(p, spec.format, spec.orientation) for p in panels) and length > 60.0:
         length = max(60.0, math.floor(length * 0.8 / 10.0) * 10.0)
         smaller = sol.diagrams_drawn(length)
         if smaller is None:
             break
-        panels = diagram_panels(smaller, spec.language)
+        panels = diagram_panels(smaller, spec.language, spec.first_position)
     return panels
 
 
@@ -504,7 +530,7 @@ def _fitting_dynamics(sol: Solution, d: Dynamics, tabs: Sequence[CycleTable], sp
     their heights lowered until every diagram fits, not refused."""
     from .sheet import fits_empty
 
-    panels = dynamics_panels(d, tabs, spec.language, analogues)
+    panels = dynamics_panels(d, tabs, spec.language, analogues, first=spec.first_position)
     height = 1.0
     columns = 12
     while True:
@@ -517,7 +543,7 @@ def _fitting_dynamics(sol: Solution, d: Dynamics, tabs: Sequence[CycleTable], sp
             d = sol.dynamics_drawn(axis, height)
         else:
             return panels
-        panels = dynamics_panels(d, tabs, spec.language, analogues, columns)
+        panels = dynamics_panels(d, tabs, spec.language, analogues, columns, spec.first_position)
 
 
 def diagrams_sheet_seconds(path: str | Path, repeat: int = 5) -> float:

@@ -33,6 +33,7 @@ class Axes:
     mu_phi: float
     phi0_deg: float
     lang: str
+    first: int = 1  # the first position's number ([sheet] first_position)
 
     def x(self, phi_deg: float | np.ndarray) -> np.ndarray:
         return self.mu_phi * np.radians(np.asarray(phi_deg, float) - self.phi0_deg)
@@ -49,14 +50,14 @@ class Axes:
         self.rec.text(layout(y_name, *PAPER(1.5, y_hi), 3.5, "start", "top"), "axis-name")
 
     def positions(self, phis_deg: Sequence[float] | np.ndarray, numbers: bool = True) -> None:
-        """Ticks at the positions, numbered 1..N as the course numbers them (a number that would
-        touch the previous one is left out)."""
+        """Ticks at the positions, numbered from ``first`` as the plans number them (1..N by
+        default, as the course's tables do; a number that would touch the previous one is left out)."""
         last = -1e9
         for k, phi in enumerate(phis_deg):
             x = float(self.x(phi))
             self.rec.line((x, -1.2), (x, 1.2), THIN)
             if numbers and x - last >= 4.5:
-                self.rec.text(layout(str(k + 1), x, 2.0, TICK, "middle", "top"), "tick")
+                self.rec.text(layout(str(k + self.first), x, 2.0, TICK, "middle", "top"), "tick")
                 last = x
 
     def curve(self, xs: np.ndarray, ys: np.ndarray, style: Style, eid: str = "") -> None:

@@ -25,6 +25,7 @@ from .common import Placer, angle, arrow, dot, fmt, ident, phi_tag
 from .friction_marks import efficiency_panels, efficiency_rows, friction_marks, friction_points
 from .i18n import tr
 from .panels import (
+    BLOCK_L,
     JOINT_R,
     LABEL_SIZE,
     SMALL_SIZE,
@@ -43,6 +44,8 @@ LOAD = Style(width=0.45, stroke="#000")
 REACTION = Style(width=0.45, stroke="#b3261e")
 ARM = Style(width=0.18, stroke="#555", dash=(1.5, 1.0))
 FBD_ARROW_MM = 32.0
+MIN_ARROW_MM = 4.0  # a force drawn shorter than this at μF is lengthened and marked †
+COUPLE_STEP_MM = 3.5  # the next couple at a point already holding one: a larger arc
 
 _NAME = re.compile(r"^(Phi|M_Phi|[A-Z])(\d+)(.*)$")
 _FRICTION = re.compile(r"^([MF])f(\d+)$")
@@ -130,12 +133,28 @@ def _cycle(arrays) -> float:
 
 
 def _moment_arc(rec: Recording, placer: Placer, c: tuple[float, float], M: float, label: str,
-                eid: str, r: float = 6.0) -> None:
-    """A couple as an arc with a filled head, counter-clockwise for M > 0."""
+                eid: str, r: float = 6.0, taken: dict[tuple[float, float], int] | None = None) -> None:
+    """A couple as an arc with a filled head, counter-clockwise for M > 0; the couples drawn at
+    one point (``taken`` counts them) spread apart: each next one on a larger arc, on the
+    other side of the point."""
     if M == 0:
         return
+    i = 0
+    if taken is not None:
+        key = (round(c[0], 3), round(c[1], 3))
+        i = taken.get(key, 0)
+        taken[key] = i + 1
+    r += COUPLE_STEP_MM * i
     sense = 1 if M > 0 else -1
-    a0, a1 = math.radians(200), math.radians(200 - sense * 110)  # paper angles (y down: ccw is −)
+
+    def crosses(start: float) -> bool:  # the arc (and its head) over a label already placed
+        ts = np.radians(np.linspace(start, start - sense * 125, 24))
+        xs, ys = c[0] + r * np.cos(ts), c[1] + r * np.sin(ts)
+        return any(bool(np.any((xs > b[0]) & (xs < b[2]) & (ys > b[1]) & (ys < b[3]))) for b in placer.boxes)
+
+    first = 200 + 180 * (i % 2)
+    start = next((a for a in (first, first + 90, first + 180, first + 270) if not crosses(a)), first)
+    a0, a1 = math.radians(start), math.radians(start - sense * 110)  # paper angles (y down: ccw is −)
     rec.arc(c, r, a0, a1, Style(width=0.35, stroke="#1f4e9c", cls="moment"), eid)
     end = (c[0] + r * math.cos(a1), c[1] + r * math.sin(a1))
     t = -sense
@@ -149,19 +168,44 @@ def _moment_arc(rec: Recording, placer: Placer, c: tuple[float, float], M: float
     rec.text(lab, "label", f"{eid}-label", fill="#1f4e9c")
 
 
+def legible(p0: Pt, p1: Pt) -> tuple[Pt, bool]:
+    """The head of a vector drawn from p0: at least MIN_ARROW_MM long (True when lengthened,
+    so that the drawing marks it as not to scale); a zero vector stays zero."""
+    L = math.dist(p0, p1)
+    if 0 < L < MIN_ARROW_MM:
+        return (p0[0] + (p1[0] - p0[0]) * MIN_ARROW_MM / L, p0[1] + (p1[1] - p0[1]) * MIN_ARROW_MM / L), True
+    return p1, False
+
+
+def short_note(lang: str) -> str:
+    """The note under a panel's title that explains the † of the lengthened vectors."""
+    return (f"† короче {MIN_ARROW_MM:g} мм в масштабе μF: показаны не в масштабе" if lang == "ru"
+            else f"† shorter than {MIN_ARROW_MM:g} mm at μF: drawn not to scale")
+
+
+def short_mark(lang: str) -> str:
+    """The same, brief, on a free body's scale line (no line more under its title)."""
+    return (f"† — {MIN_ARROW_MM:g} мм, не в масштабе" if lang == "ru"
+            else f"†: {MIN_ARROW_MM:g} mm, not to scale")
+
+
 def _force_at(rec: Recording, placer: Placer, T: Transform, r: complex, F: complex, mu_f: float,
-              label: str, style: Style, eid: str) -> None:
-    """A force drawn from its point of application, labelled at its head."""
-    if F == 0:
-        return
+              label: str, style: Style, eid: str) -> bool:
+    """A force drawn from its point of application, labelled at its head; one too short to
+    see at μF is drawn MIN_ARROW_MM long and its label marked † (returns True then)."""
+    if abs(F) * mu_f <= DUST * FBD_ARROW_MM:  # zero up to round-off: nothing to draw
+        return False
     p0 = T.z(r)
     d = F * mu_f
-    p1 = (p0[0] + d.real, p0[1] - d.imag)
+    p1, short = legible(p0, (p0[0] + d.real, p0[1] - d.imag))
+    if short:
+        label += "†"
     arrow(rec, p0, p1, style, eid, "force " + ("reaction" if style is REACTION else "load"))
     placer.add_line([p0, p1])
     L = math.dist(p0, p1) or 1.0
     lab = placer.place(label, p1, SMALL_SIZE + 0.5, prefer=((p1[0] - p0[0]) / L, (p1[1] - p0[1]) / L), gap=0.8)
     rec.text(lab, "label", f"{eid}-label", fill=style.stroke or "#000")
+    return short
 
 
 def _draw_links(rec: Recording, placer: Placer, scene, kin, k: int, links: Sequence[int], T: Transform,
@@ -174,6 +218,10 @@ def _draw_links(rec: Recording, placer: Placer, scene, kin, k: int, links: Seque
             pts.setdefault(n, complex(kin.point_on(lid, z)[0][k]))
         kind, names = link_shape(scene, lid)
         link_outline(rec, placer, kind, [T.z(pts[n]) for n in names], f"{pid}-link-{lid}")
+    for jt in scene.joints:  # a slot of the group's own link: drawn whole, through its block
+        if jt.kind == "P" and jt.guide is not None and jt.guide.link in links and jt.slider in links \
+                and jt.guide.link != scene.frame and jt.point in pts:
+            _slot(rec, placer, scene, kin, k, jt, pts, T, pid)
     for jt in scene.joints:
         if not (set(jt.links) & set(links)) or jt.point not in pts:
             continue
@@ -199,6 +247,23 @@ def _draw_links(rec: Recording, placer: Placer, scene, kin, k: int, links: Seque
             rec.circle(c, JOINT_R, Style(width=0.35, fill="#fff", cls="joint"), f"{pid}-joint-{ident(jt.point)}")
             placer.add_disc(c, JOINT_R + 0.3)
     return pts
+
+
+def _slot(rec: Recording, placer: Placer, scene, kin, k: int, jt, pts: dict[str, complex], T: Transform,
+          pid: str) -> None:
+    """The slot of a moving guide (a coulisse) as a thick line along the guide from the
+    carrier's farthest points through the slider's pin and past its block, so that the block
+    sits on its link as on the scheme."""
+    g = jt.guide
+    u = cmath.exp(1j * (float(kin.theta(g.link)[k]) + g.angle))
+    G = complex(kin.point_on(g.link, g.origin)[0][k])
+    carrier = scene.links[g.link]
+    ss = [((complex(kin.point_on(g.link, z)[0][k]) - G) * u.conjugate()).real for n, z in carrier.points.items()
+          if not n.startswith("S")] + [((pts[jt.point] - G) * u.conjugate()).real]
+    over = (BLOCK_L / 2 + 4.0) / T.scale  # past the block's ends on the paper
+    a0, a1 = T.z(G + (min(ss) - over) * u), T.z(G + (max(ss) + over) * u)
+    rec.line(a0, a1, Style(width=0.7, stroke="#000", cls="slot"), f"{pid}-slot-{ident(jt.point)}")
+    placer.add_line([a0, a1])
 
 
 def _label_points(rec: Recording, placer: Placer, pts: dict[str, complex], T: Transform, pid: str) -> None:
@@ -269,25 +334,30 @@ def group_panel(scene, kin, gf, k: int, mu_l: float, lang: str, style: str, fric
         sub = re.sub(r"[_^{}]", "", force_label(label, lang))  # one level of script: h_{Φ2}, not h_{Φ_2}
         lab = placer.place(f"h_{{{sub}}}", mid, SMALL_SIZE, gap=0.6)
         rec.text(lab, "label arm", f"{pid}-arm-{ident(label)}-label", fill="#555")
+    short = False
     for f in loads:
-        _force_at(rec, placer, T, complex(f.r[k]), complex(f.F[k]), mu_f, force_label(f.label, lang), LOAD,
-                  f"{pid}-{ident(f.label)}")
+        short |= _force_at(rec, placer, T, complex(f.r[k]), complex(f.F[k]), mu_f, force_label(f.label, lang),
+                           LOAD, f"{pid}-{ident(f.label)}")
     for at, F, name in reacts:
-        _force_at(rec, placer, T, at, F, mu_f, force_label(name, lang), REACTION, f"{pid}-{ident(name)}")
+        short |= _force_at(rec, placer, T, at, F, mu_f, force_label(name, lang), REACTION, f"{pid}-{ident(name)}")
     at_pin = friction_points(friction)  # a friction couple is drawn at its pair's pin
+    taken: dict[tuple[float, float], int] = {}
     for m in moments:
         link = scene.links[m.link]
         centre = link.centre or next((n for n in link.points if n.startswith("S")), link.axis[0])
         centre = at_pin.get(m.label, centre) if at_pin.get(m.label) in pts else centre
         _moment_arc(rec, placer, T.z(pts[centre]), float(m.M[k]), force_label(m.label, lang),
-                    f"{pid}-{ident(m.label)}")
+                    f"{pid}-{ident(m.label)}", taken=taken)
     for point, M, name in couples:
-        _moment_arc(rec, placer, T.z(pts[point]), M, force_label(name, lang), f"{pid}-{ident(name)}", r=8.0)
+        _moment_arc(rec, placer, T.z(pts[point]), M, force_label(name, lang), f"{pid}-{ident(name)}", r=8.0,
+                    taken=taken)
     friction_marks(rec, placer, T, friction, gf.reactions, k, mu_l, mu_f, pid,
                    lambda rc: force_label(rc.name(scene.fij), lang))
     _label_points(rec, placer, pts, T, pid)
     title = f"{tr('group', lang)} {g.name} ({g.kind}), φ = {angle(phi, lang)}°"
     sc = f"{scale_text('length', mu_l, style, lang)};  {scale_text('force', mu_f, style, lang)}"
+    if short:
+        sc += ";  " + short_mark(lang)
     return finish(pid, "group", phi, rec, title, sc, quantity="length", scale=mu_l)
 
 
@@ -304,26 +374,30 @@ def crank_panel(scene, kin, fa, k: int, mu_l: float, lang: str, style: str) -> P
     bal = complex(c.F_bal[k] * c.e_bal[k]) if c.kind == "force" else 0j
     values = [complex(f.F[k]) for f in c.loads] + [bal, complex(c.frame.F[k])]
     mu_f = _fbd_scale(values, _cycle([f.F for f in c.loads] + [c.frame.F]), fit(scene))
+    short = False
     for f in c.loads:
-        _force_at(rec, placer, T, complex(f.r[k]), complex(f.F[k]), mu_f, force_label(f.label, lang), LOAD,
-                  f"{pid}-{ident(f.label)}")
+        short |= _force_at(rec, placer, T, complex(f.r[k]), complex(f.F[k]), mu_f, force_label(f.label, lang),
+                           LOAD, f"{pid}-{ident(f.label)}")
+    taken: dict[tuple[float, float], int] = {}
     if c.kind == "force":
-        _force_at(rec, placer, T, complex(c.r_point[k]), bal, mu_f, force_label("F_bal", lang), REACTION,
-                  f"{pid}-F_bal")
+        short |= _force_at(rec, placer, T, complex(c.r_point[k]), bal, mu_f, force_label("F_bal", lang),
+                           REACTION, f"{pid}-F_bal")
     else:
         _moment_arc(rec, placer, T.z(pts[scene.driver.pivot]), float(c.M_bal[k]),
-                    "M_ур" if lang == "ru" else "M_bal", f"{pid}-M_bal", r=8.0)
+                    "M_ур" if lang == "ru" else "M_bal", f"{pid}-M_bal", r=8.0, taken=taken)
     for m in c.moments:
         _moment_arc(rec, placer, T.z(pts[c.point]), float(m.M[k]), force_label(m.label, lang),
-                    f"{pid}-{ident(m.label)}")
+                    f"{pid}-{ident(m.label)}", taken=taken)
     name = c.frame.name(scene.fij)
-    _force_at(rec, placer, T, complex(c.frame.r[k]), complex(c.frame.F[k]), mu_f, force_label(name, lang),
-              REACTION, f"{pid}-{ident(name)}")
+    short |= _force_at(rec, placer, T, complex(c.frame.r[k]), complex(c.frame.F[k]), mu_f,
+                       force_label(name, lang), REACTION, f"{pid}-{ident(name)}")
     friction_marks(rec, placer, T, fa.friction, (c.frame,), k, mu_l, mu_f, pid,
                    lambda rc: force_label(rc.name(scene.fij), lang))
     _label_points(rec, placer, pts, T, pid)
     title = f"{tr('crank', lang)} {c.link}, φ = {angle(phi, lang)}°"
     sc = f"{scale_text('length', mu_l, style, lang)};  {scale_text('force', mu_f, style, lang)}"
+    if short:
+        sc += ";  " + short_mark(lang)
     return finish(pid, "crank", phi, rec, title, sc, quantity="length", scale=mu_l)
 
 
@@ -408,9 +482,6 @@ def _collinear_overlap(a: Pt, b: Pt, c: Pt, d: Pt) -> bool:
     return min(L, t[1]) - max(0.0, t[0]) > 0.5
 
 
-MIN_ARROW_MM = 4.0  # a force drawn shorter than this on the lever is lengthened and marked
-
-
 def lever_panel(sol, k: int, vplan: Plan | None, lang: str, style: str) -> Panel:
     """The velocity plan turned 90° as a rigid lever about the pole, every force at the image of
     its point parallel to itself, the arms h from the pole, and the balancing force."""
@@ -467,9 +538,8 @@ def lever_panel(sol, k: int, vplan: Plan | None, lang: str, style: str) -> Panel
         arrows.append((f"{pid}-F_bal" if i == 0 else f"{pid}-F_bal-{i}", pair, p0, p1, REACTION, "vector closing"))
     drawn: list[tuple[str, str, Pt, Pt, Style, str]] = []
     for eid, text, p0, p1, st, cls in arrows:  # too short to see at μF: a minimum length, marked †
-        L = math.dist(p0, p1)
-        if 0 < L < MIN_ARROW_MM:
-            p1 = (p0[0] + (p1[0] - p0[0]) * MIN_ARROW_MM / L, p0[1] + (p1[1] - p0[1]) * MIN_ARROW_MM / L)
+        p1, lengthened = legible(p0, p1)
+        if lengthened:
             text, short = text + "†", True
         drawn.append((eid, text, p0, p1, st, cls))
     pole = xy["p"]
@@ -507,10 +577,7 @@ def lever_panel(sol, k: int, vplan: Plan | None, lang: str, style: str) -> Panel
         "turned 90° " + ("ccw" if lv.turn > 0 else "cw"))
     title = f"{tr('lever', lang)}, φ = {angle(phi, lang)}° ({turn})"
     sc = f"{scale_text('velocity', lv.scale, style, lang)};  {scale_text('force', mu_f, style, lang)}"
-    note = None
-    if short:
-        note = (f"† короче {MIN_ARROW_MM:g} мм в масштабе μF: показаны не в масштабе" if lang == "ru"
-                else f"† shorter than {MIN_ARROW_MM:g} mm at μF: drawn not to scale")
+    note = short_note(lang) if short else None
     return finish(pid, "lever", phi, rec, title, sc, note=note, quantity="velocity", scale=lv.scale)
 
 

@@ -54,7 +54,7 @@ def friction_marks(rec: Recording, placer: Placer, T: Transform, fr: Any, reacti
             tip = (c[0] + d.real, c[1] - d.imag)
             rec.line(c, tip, TOTAL, eid + "-total")
             placer.add_line([c, tip])
-            lab = placer.place(label(rc) + "Σ", tip, 2.2, gap=0.8)
+            lab = placer.place(label(rc) + "Σ", tip, 2.5, gap=0.8)  # GOST 2.304: 2.5 mm at least
             rec.text(lab, "label", eid + "-label", fill=TOTAL.stroke or "#000")
 
 

@@ -18,10 +18,12 @@ from plans.gears.meshing import Meshing
 from plans.gears.model import GearFile
 from plans.gears.solution import GearsSolution, solve_file
 from plans.gears.solve import GearSolution
+from plans.language import SHEET_WORDS
 
 from .backend import HAIR, MAIN, PAPER, THICK, THIN, Recording, Style
 from .common import Placer, arrow, dot, fmt
 from .i18n import lookup
+from .i18n import tr as words
 from .panels import Panel, finish, ratio_text
 from .sheet import Sheet, SheetSpec, compose, sheet_spec
 from .text import layout
@@ -55,6 +57,11 @@ _WORDS = {
 
 
 tr = lookup(_WORDS)
+
+
+def unit_word(unit: str, lang: str) -> str:
+    """The file's length unit as the sheet writes it: мм on a Russian sheet."""
+    return words(f"unit_{unit}", lang) if f"unit_{unit}" in SHEET_WORDS else unit
 
 
 @dataclass(frozen=True)
@@ -252,7 +259,7 @@ def results_panel(sol: GearSolution, lang: str) -> Panel:
         ("z", lambda p, w: str(w.z)),
         ("x", lambda p, w: f(w.x, 5)),
         ("α_w, °", lambda p, w: f(math.degrees(p.alpha_w), 4)),
-        (f"a_w, {gf.unit}", lambda p, w: f(p.a_w * k, 3)),
+        (f"a_w, {unit_word(gf.unit, lang)}", lambda p, w: f(p.a_w * k, 3)),
         ("y", lambda p, w: f(p.y, 5)),
         ("Δy", lambda p, w: f(p.delta_y, 5)),
         ("r", lambda p, w: f(w.pitch * k, 3)),
@@ -272,67 +279,126 @@ def results_panel(sol: GearSolution, lang: str) -> Panel:
     return finish("results", "table", None, rec, tr("results", lang))
 
 
-def scheme_panel(sol: GearSolution, lang: str) -> Panel:
-    """The unfolded train: every gear a bar of its working diameter on its axis, side by side."""
+GAP = 26.0  # mm between the gears' columns on the unfolded scheme
+TICK = 2.0  # mm, half the width of a gear's symbol (its face) along the shaft
+BEARING = (6.0, 2.5)  # mm, a radial bearing's length along the shaft and its half height
+FRAME = Style(width=0.25)  # the frame's hatching (drawn with the class "hatch")
+
+
+def _bearing(rec: Recording, x: float, y: float, eid: str, fixed: bool = True) -> None:
+    """GOST 2.770 radial bearing on the frame: two short lines along the shaft above and below
+    it, the frame's hatching behind them (``fixed``), or alone where it sits on a carrier."""
+    L, hh = BEARING
+    for side in (-1, 1):
+        yy = y + side * hh
+        rec.line((x - L / 2, yy), (x + L / 2, yy), MAIN, f"{eid}{'-top' if side < 0 else '-bottom'}")
+        if fixed:
+            rec.line((x, yy), (x, yy + side * 1.5), MAIN)
+            rec.hatch((x - L / 2, yy + side * 1.5), (x + L / 2, yy + side * 1.5), -side, FRAME, 1.5, 1.5)
+
+
+def _rigid(rec: Recording, x: float, y: float, eid: str) -> None:
+    """GOST 2.770 fixed (keyed) joint of a part on its shaft: a cross on the shaft."""
+    d = 1.3
+    rec.line((x - d, y - d), (x + d, y + d), MAIN, f"{eid}-a")
+    rec.line((x - d, y + d), (x + d, y - d), MAIN, f"{eid}-b")
+
+
+def scheme_panel(sol: GearSolution, lang: str, f: float = 1.0) -> Panel:
+    """The unfolded train in GOST 2.770 symbols: every shaft a thick line on its axis, held in
+    radial bearings on the frame; every gear a line of its working diameter with its face
+    ticks, fixed on its shaft by a cross (a planet turning free on the carrier's pin);
+    a ring gear's teeth inward; a held shaft's gear hatched to the frame; the carrier H a
+    thick bracket from its shaft to the planets' pins.  ``f`` magnifies the engine's μ_l."""
     plan = sol.plan
     assert plan is not None
     gf = sol.file
-    mu = plan.mu_l / 1000.0  # paper mm per mm
+    mu = plan.mu_l * f / 1000.0  # paper mm per mm
     rec = Recording()
     col: dict[str, float] = {}
-    x = 0.0
+    x = GAP
     for p in sol.pairs:
         for w in p.wheels:
             if w.name not in col:
                 col[w.name] = x
-                x += 12.0
+                x += GAP
     radii: dict[str, float] = {}
     for p in sol.pairs:
         for w in p.wheels:
             radii[w.name] = w.working * 1e3 * mu
+
+    def Y(shaft: str) -> float:
+        return -plan.axes[shaft] * 1e3 * mu
+
+    carriers = {n for n, s in gf.shafts.items() if any(t.carrier == n for t in gf.shafts.values())}
+    held = {n for n, s in gf.shafts.items() if s.speed_rpm == 0 and s.carrier is None}
+    x_end = x
+    # shafts: the centre line, the thick shaft over its gears, a bearing at each end
+    for n, s in gf.shafts.items():
+        y = Y(n)
+        on = [col[g] for g, gg in gf.gears.items() if gg.shaft == n and g in col]
+        if s.carrier is None:
+            rec.line((0.0, y), (x_end + 6.0, y), AXIS, f"axis-{n}")
+        if not on:
+            continue
+        lo, hi = min(on), max(on)
+        if s.carrier is None and n not in held:
+            lo, hi = min(lo, 6.0), hi + 8.0
+            rec.line((lo, y), (hi, y), THICK, f"shaft-{n}")
+            _bearing(rec, lo + BEARING[0] / 2 + 1.0, y, f"bearing-{n}-0")
+            if n not in carriers:
+                _bearing(rec, hi - BEARING[0] / 2 - 1.0, y, f"bearing-{n}-1")
+        elif s.carrier is not None:  # a planet's pin on the carrier
+            rec.line((lo - 4.0, y), (x_end + 4.0, y), THICK, f"shaft-{n}")
     for name, cx in col.items():
         g = gf.gears[name]
-        y = plan.axes[g.shaft] * 1e3 * mu
+        y = Y(g.shaft)
         r = radii[name]
-        rec.line(PAPER(cx, y - r), PAPER(cx, y + r), THICK, f"gear-{name}")
-        if g.internal:
-            for side in (-1, 1):
-                rec.line(PAPER(cx, y + side * r), PAPER(cx - 4.0, y + side * r), THICK,
-                         f"gear-{name}-ring{side}")
-        rec.line(PAPER(cx - 3.0, y), PAPER(cx + 3.0, y), MAIN, f"axis-{name}")
-        rec.text(layout(name, *PAPER(cx + 1.5, y + r + 2.0), LABEL, "start", "bottom"), "label", f"label-gear-{name}")
-    for n, s in gf.shafts.items():
-        y = plan.axes[n] * 1e3 * mu
-        if s.carrier is None:
-            rec.line(PAPER(-8.0, y), PAPER(x + 2.0, y), AXIS, f"shaft-{n}")
-    for n in gf.shafts:  # carriers: a bracket from the central axis to each planet axis
+        top, bottom = y - r, y + r
+        rec.line((cx, top), (cx, bottom), THICK, f"gear-{name}")
+        for yy in (top, bottom):  # the face: the teeth's width along the shaft
+            rec.line((cx - TICK, yy), (cx + TICK, yy), THICK, f"gear-{name}-face{'t' if yy == top else 'b'}")
+        if g.internal:  # a ring: its rim outward, the teeth inward
+            for side, yy in ((-1, top), (1, bottom)):
+                rec.line((cx, yy), (cx, yy + side * 3.0), THICK, f"gear-{name}-ring{side}")
+        if g.shaft in held:  # held: fixed to the frame
+            for side, yy in ((-1, top), (1, bottom)):
+                edge = yy + side * (3.0 if g.internal else 0.0)
+                rec.hatch((cx - 3.0, edge), (cx + 3.0, edge), -side, FRAME, 1.5, 1.5)
+        elif gf.shafts[g.shaft].carrier is not None:
+            _bearing(rec, cx, y, f"pin-bearing-{name}", fixed=False)
+        else:
+            _rigid(rec, cx, y, f"fix-{name}")
+        rec.text(layout(name, cx + TICK + 1.0, top - 1.5, LABEL, "start", "bottom"), "label", f"label-gear-{name}")
+    for n in sorted(carriers):  # carriers: a bracket from the central axis to each planet pin
         planets = [q for q, t in gf.shafts.items() if t.carrier == n]
-        if planets:
-            y0 = plan.axes[n] * 1e3 * mu
-            xc = x + 4.0
-            for q in planets:
-                yq = plan.axes[q] * 1e3 * mu
-                rec.polyline([PAPER(x - 6.0, yq), PAPER(xc, yq), PAPER(xc, y0), PAPER(xc + 6.0, y0)], MAIN, f"carrier-{n}-{q}")
-            rec.text(layout(n, *PAPER(xc + 2.0, y0 + 2.0), LABEL, "start", "bottom"), "label", f"label-carrier-{n}")
+        y0 = Y(n)
+        xc = x_end + 4.0
+        for q in planets:
+            rec.polyline([(xc, Y(q)), (xc, y0)], THICK, f"carrier-{n}-{q}")
+        rec.line((xc, y0), (xc + 14.0, y0), THICK, f"shaft-{n}")
+        _bearing(rec, xc + 9.0, y0, f"bearing-{n}")
+        rec.text(layout(n, xc + 2.0, y0 - 2.5, LABEL, "start", "bottom"), "label", f"label-carrier-{n}")
     return finish("train-scheme", "train-scheme", None, rec, tr("scheme", lang),
-                  f"μ_l = {fmt(plan.mu_l, 4, lang)} {'мм/м' if lang == 'ru' else 'mm/m'}")
+                  f"μ_l = {fmt(plan.mu_l * f, 4, lang)} {'мм/м' if lang == 'ru' else 'mm/m'}")
 
 
-def velocity_panel(sol: GearSolution, lang: str) -> Panel:
+def velocity_panel(sol: GearSolution, lang: str, f: float = 1.0) -> Panel:
+    """The plan of linear velocities beside the scheme (its heights the scheme's), each
+    shaft's line through its known points; ``f`` magnifies the engine's plan (μ × f)."""
     plan = sol.plan
     assert plan is not None
     rec = Recording()
     placer = Placer()
-    ys = [pt[1] for ln in plan.lines.values() for _, pt in ln.points] + [y * plan.mu_l for y in plan.axes.values()]
+    ys = [pt[1] * f for ln in plan.lines.values() for _, pt in ln.points] + \
+        [y * plan.mu_l * f for y in plan.axes.values()]
     y0, y1 = min(ys) - 8.0, max(ys) + 8.0
-    rec.line(PAPER(0.0, y0), PAPER(0.0, y1), AXIS, "radial-line")
-    xs = [pt[0] for ln in plan.lines.values() for _, pt in ln.points]
-    span = (min(xs + [0.0]) - 10.0, max(xs + [0.0]) + 10.0)
+    rec.line((0.0, -y0), (0.0, -y1), AXIS, "radial-line")
     done: set[str] = set()
     for n, ln in plan.lines.items():
-        pts = list(ln.points)
+        pts = [(nm, (q[0] * f, q[1] * f)) for nm, q in ln.points]
         if len({round(p[1], 6) for _, p in pts}) < 2:
-            pts.append(("", ln.p1))
+            pts.append(("", (ln.p1[0] * f, ln.p1[1] * f)))
         lo = min(pts, key=lambda t: t[1][1])[1]
         hi = max(pts, key=lambda t: t[1][1])[1]
         rec.line(_pt(complex(*lo)), _pt(complex(*hi)), MAIN, f"line-{n}")
@@ -344,21 +410,22 @@ def velocity_panel(sol: GearSolution, lang: str) -> Panel:
                 continue
             done.add(name)
             if abs(vx) > 1e-6:
-                arrow(rec, PAPER(0.0, vy), PAPER(vx, vy), THIN, f"v-{name}", "vector")
-            dot(rec, PAPER(vx, vy), 0.6, f"pt-{name}")
-            rec.text(placer.place(name, PAPER(vx, vy), SMALL + 0.5, (1.0, -0.5)), "label", f"label-{name}")
-    del span
-    txt = f"μ_v = {fmt(plan.mu_v, 4, lang)} {'мм/(м/с)' if lang == 'ru' else 'mm/(m/s)'}"
+                arrow(rec, (0.0, -vy), (vx, -vy), THIN, f"v-{name}", "vector")
+            dot(rec, (vx, -vy), 0.6, f"pt-{name}")
+            rec.text(placer.place(name, (vx, -vy), SMALL + 0.5, (1.0, -0.5)), "label", f"label-{name}")
+    txt = f"μ_v = {fmt(plan.mu_v * f, 4, lang)} {'мм/(м/с)' if lang == 'ru' else 'mm/(m/s)'}"
     return finish("velocity-plan", "velocity-plan", None, rec, tr("vplan", lang), txt)
 
 
-def rays_panel(sol: GearSolution, lang: str) -> Panel:
+def rays_panel(sol: GearSolution, lang: str, f: float = 1.0) -> Panel:
+    """The plan of angular velocities: rays from the pole O_ω parallel to the shafts' lines cut
+    the reference line at h; ``f`` magnifies it (h and the intercepts; μ_ω × f)."""
     plan = sol.plan
     assert plan is not None
     rec = Recording()
     placer = Placer()
-    h = plan.h
-    xs = [ln.intercept for ln in plan.lines.values()] + [0.0]
+    h = plan.h * f
+    xs = [ln.intercept * f for ln in plan.lines.values()] + [0.0]
     lo, hi = min(xs) - 10.0, max(xs) + 10.0
     rec.line(PAPER(lo, h), PAPER(hi, h), MAIN, "reference-line")
     dot(rec, (0.0, 0.0), 0.8, "pole")
@@ -366,13 +433,14 @@ def rays_panel(sol: GearSolution, lang: str) -> Panel:
     rec.line((0.0, 0.0), PAPER(0.0, h + 4.0), AXIS, "pole-normal")
     placer.add_line([PAPER(lo, h), PAPER(hi, h)])
     for n, ln in plan.lines.items():
-        rec.line((0.0, 0.0), PAPER(ln.intercept, h), THIN, f"ray-{n}")
-        placer.add_line([(0.0, 0.0), PAPER(ln.intercept, h)])
-        dot(rec, PAPER(ln.intercept, h), 0.6, f"omega-{n}")
+        rec.line((0.0, 0.0), (ln.intercept * f, -h), THIN, f"ray-{n}")
+        placer.add_line([(0.0, 0.0), (ln.intercept * f, -h)])
+        dot(rec, (ln.intercept * f, -h), 0.6, f"omega-{n}")
     for n, ln in plan.lines.items():
-        rec.text(placer.place(f"ω_{n}", PAPER(ln.intercept, h), SMALL + 0.5, (0.0, -1.0)), "label", f"label-omega-{n}")
-    rec.text(layout(f"h = {fmt(h, 3, lang)}", *PAPER(2.0, h / 2), SMALL, "start", "middle"), "note", "pole-distance")
-    txt = f"μ_ω = {fmt(plan.mu_omega, 4, lang)} {'мм/(рад/с)' if lang == 'ru' else 'mm/(rad/s)'}"
+        rec.text(placer.place(f"ω_{n}", (ln.intercept * f, -h), SMALL + 0.5, (0.0, -1.0)), "label",
+                 f"label-omega-{n}")
+    rec.text(layout(f"h = {fmt(h, 3, lang)}", 2.0, -h / 2, SMALL, "start", "middle"), "note", "pole-distance")
+    txt = f"μ_ω = {fmt(plan.mu_omega * f, 4, lang)} {'мм/(рад/с)' if lang == 'ru' else 'mm/(rad/s)'}"
     return finish("ray-diagram", "ray-diagram", None, rec, tr("rays", lang), txt)
 
 
@@ -389,10 +457,34 @@ def synthesis_panel(sol: GearSolution, lang: str) -> Panel:
     t = sol.synthesis
     assert t is not None
     ok = t.conditions(sol.file.ha)
-    rows = [["z_1", "z_2", "z_3", "k", "i_{1H}"] + list(ok),
+    rows = [["z_1", "z_2", "z_3", "k", "i_{1H}"] + [words(c, lang) for c in ok],
             [str(t.z1), str(t.z2), str(t.z3), str(t.planets), fmt(t.ratio, 5, lang)] +
             ["+" if v else "−" for v in ok.values()]]
     return finish("synthesis", "table", None, _grid(rows, "synthesis"), tr("synthesis", lang))
+
+
+def magnification(sol: GearSolution, spec: SheetSpec) -> float:
+    """How much larger than the engine's plan the train's scheme and velocity plan are drawn:
+    the largest of 10, 5, 4, 2.5, 2, 1 that keeps μ_l and μ_v round, the scheme and the plan
+    within half the sheet's height (the engine's plan fits any sheet at 1).  The plan of
+    angular velocities keeps its h: μ_ω = h·μ_v/μ_l does not change."""
+    from plans.kinematics.scales import is_round
+
+    plan = sol.plan
+    assert plan is not None
+    gears = sol.file.gears
+    ys = [pt[1] for ln in plan.lines.values() for _, pt in ln.points]
+    for p in sol.pairs:
+        for w in p.wheels:  # the scheme: every gear's working circle about its axis
+            y, r = plan.axes[gears[w.name].shaft] * plan.mu_l, w.working * plan.mu_l
+            ys += [y - r, y + r]
+    tall = (max(ys) - min(ys)) if ys else 1.0
+    wide = max([abs(pt[0]) for ln in plan.lines.values() for _, pt in ln.points] + [1.0])
+    W, H = spec.size
+    for f in (10.0, 5.0, 4.0, 2.5, 2.0):
+        if is_round(plan.mu_l * f) and is_round(plan.mu_v * f) and tall * f <= 0.5 * H and wide * f <= 0.3 * W:
+            return f
+    return 1.0
 
 
 def draw(source: GearsSolution | GearFile | str | Path, *, format: str | None = None,
@@ -414,13 +506,15 @@ def draw(source: GearsSolution | GearFile | str | Path, *, format: str | None = 
     mg = drawings[0] if drawings else None
     train: list[Panel] = []
     if sol.plan is not None:
-        train += [scheme_panel(sol, lang), velocity_panel(sol, lang), rays_panel(sol, lang), speeds_panel(sol, lang)]
+        f = magnification(sol, spec)
+        train += [scheme_panel(sol, lang, f), velocity_panel(sol, lang, f), rays_panel(sol, lang),
+                  speeds_panel(sol, lang)]
     if sol.synthesis is not None:
         train.append(synthesis_panel(sol, lang))
     if mg is None and sol.pairs:
         train.append(results_panel(sol, lang))
     if train:
-        groups.append((train, ratio_text(sol.plan.mu_l) if sol.plan is not None else ""))
+        groups.append((train, ratio_text(sol.plan.mu_l * magnification(sol, spec)) if sol.plan is not None else ""))
     if not groups:
         raise InputError("nothing to draw: expected [[meshes]] or [[shafts]] with speeds",
                          file=gf.path, field="meshes")

@@ -48,10 +48,10 @@ def _fitting_positions(sol: Solution, mu: float, lang: str, bold: list[int], str
     (when its scale is not the file's own) at the next smaller standard scales."""
     from .sheet import fits_empty
 
-    panel = positions_panel(sol, mu, lang, bold, strokes, spec.trace)
+    panel = positions_panel(sol, mu, lang, bold, strokes, spec.trace, first=spec.first_position)
     if fits_empty(panel, spec.format, spec.orientation):
         return panel
-    panel = positions_panel(sol, mu, lang, bold, strokes, spec.trace, brief=True)
+    panel = positions_panel(sol, mu, lang, bold, strokes, spec.trace, brief=True, first=spec.first_position)
     if sol.scene.scales.get("length"):
         return panel  # the student's scale is kept: a panel that does not fit says so
     from .panels import STANDARD_RATIOS
@@ -60,7 +60,7 @@ def _fitting_positions(sol: Solution, mu: float, lang: str, bold: list[int], str
         if fits_empty(panel, spec.format, spec.orientation):
             break
         if 1000.0 * r < mu:
-            panel = positions_panel(sol, 1000.0 * r, lang, bold, strokes, spec.trace, brief=True)
+            panel = positions_panel(sol, 1000.0 * r, lang, bold, strokes, spec.trace, brief=True, first=spec.first_position)
     return panel
 
 
@@ -234,7 +234,7 @@ def _draw(sol: Solution, spec: SheetSpec) -> Drawing:
             sol, spec, {"positions": False, "legend": False})[1]
         return Drawing(sc, spec, tuple(panels), tuple(sheets), mu_l)
     panels, mu_l = build_panels(sol, spec)
-    nums = {float(phi): n for phi, n in zip(sc.driver.phis_deg, numbers(sol), strict=True)}
+    nums = {float(phi): n for phi, n in zip(sc.driver.phis_deg, numbers(sol, spec), strict=True)}
     sheets = compose(panels, spec, None, sc.path, nums)  # each sheet's scale: its main image's
     if sc.wants("diagrams") or sc.wants("dynamics"):  # the cycle's sheets follow
         from .cycle import extend

@@ -14,7 +14,7 @@ import numpy as np
 from plans.errors import InputError, PlansError
 
 from .backend import Recording, Style, Transform
-from .common import Placer, angle, arrow, dot, ident
+from .common import Placer, angle, arrow, dot, fmt, ident
 from .i18n import tr
 from .panels import (
     BLOCK_H,
@@ -179,11 +179,14 @@ def _trajectories(sol, names: Sequence[str]) -> dict[str, list[complex]]:
 
 
 def positions_panel(sol, mu_l: float, lang: str, bold: Sequence[int], strokes: dict[str, tuple[float, float]],
-                    trace: Sequence[str] | None = None, brief: bool = False) -> Panel:
+                    trace: Sequence[str] | None = None, brief: bool = False, first: int = 1) -> Panel:
     """The plan of positions: the mechanism at the positions in ``bold`` (thick), the crank
-    alone at the others (thin); positions numbered 0, 1, … at the crank pin and the other
-    moving pins on their trajectories; the trajectory of the ``trace`` points (default: the
-    rods' centres of mass); the guides' axes and the fixed pivots once."""
+    alone at the others (thin); positions numbered ``first``, ``first`` + 1, … at the crank pin
+    and the other moving pins on their trajectories (a pin whose marks come near another's is
+    numbered with its letter, B_3); the trajectory of the ``trace`` points (default: the rods'
+    centres of mass); the guides' axes and the fixed pivots once; the output's two extreme
+    positions (thin dash-dot-dot), the working and idle strokes on the crank circle and the
+    overlap angle θ (:meth:`plans.solution.Solution.strokes`)."""
     scene, kin = sol.scene, sol.kinematics
     pid = "positions"
     T = Transform(mu_l)
@@ -282,9 +285,15 @@ def positions_panel(sol, mu_l: float, lang: str, bold: Sequence[int], strokes: d
     c = T.z(O)
     rec.circle(c, JOINT_R, Style(width=0.35, fill="#fff", cls="joint"), f"{pid}-joint-{ident(d.pivot)}")
 
+    made = sol.strokes()
+    ends = made[0] if made is not None else None  # the output's extremes (plans.kinematics.extreme)
+    if made is not None:
+        _strokes(rec, placer, scene, made[0], made[1], T, O, pin, at[0][pin], lang, pid)
+
     # the numbers: coincident positions of a point share one label ("1, 11")
     rec.begin(f"{pid}-numbers", "numbers")
     marks = numbered_points(scene)
+    lettered = _crowded(marks, pin, [{m: T.z(at[k][m]) for m in marks} for k in range(n)])
     for name in marks:
         for ks in coincident_positions([T.z(at[k][name]) for k in range(n)]):
             p = T.z(at[ks[0]][name])
@@ -296,9 +305,11 @@ def positions_panel(sol, mu_l: float, lang: str, bold: Sequence[int], strokes: d
             p = T.z(at[ks[0]][name])
             away = at[ks[0]][name] - (O if name == pin else centre_world)
             L = abs(away) or 1.0
-            nums = [str(k) for k in ks]
-            if ks[0] == 0:  # the letter once, at position 0: A_0, B_0
-                nums[0] = f"{name}_0" if name.isalpha() else f"{point_label(name)} (0)"
+            nums = [str(k + first) for k in ks]
+            if name in lettered:  # beside another pin's marks: every number with its letter
+                nums = [f"{name}_{{{x}}}" if name.isalpha() else f"{point_label(name)} ({x})" for x in nums]
+            elif ks[0] == 0:  # the letter once, at the first position: A_1, B_1
+                nums[0] = f"{name}_{{{first}}}" if name.isalpha() else f"{point_label(name)} ({first})"
             text = ", ".join(nums)
             lab = placer.place(text, p, NUMBER_SIZE, prefer=(away.real / L, -away.imag / L), gap=0.8)
             rec.text(lab, "number", f"{pid}-n-{ident(name)}-{ks[0]}")
@@ -319,12 +330,14 @@ def positions_panel(sol, mu_l: float, lang: str, bold: Sequence[int], strokes: d
     phis = [float(x) for x in kin.phi_deg]
     steps = {round(b - a, 9) for a, b in zip(phis[:-1], phis[1:], strict=False)}
     if len(steps) == 1 and n > 2:
-        when = f"φ_0 = {angle(phis[0], lang)}°, Δφ = {angle(steps.pop(), lang)}°"
+        when = f"φ_{first} = {angle(phis[0], lang)}°, Δφ = {angle(steps.pop(), lang)}°"
     elif brief and n > 2:  # a small sheet: the first and the last angle (every one is in the tables)
-        when = f"φ_0 = {angle(phis[0], lang)}°, …, φ_{n - 1} = {angle(phis[-1], lang)}°"
+        when = f"φ_{first} = {angle(phis[0], lang)}°, …, φ_{{{n - 1 + first}}} = {angle(phis[-1], lang)}°"
     else:
-        when = ", ".join(f"φ_{i} = {angle(p, lang)}°" for i, p in enumerate(phis))
-    bold_txt = ", ".join(str(k) for k in sorted(bold_set))
+        when = ", ".join(f"φ_{{{i + first}}} = {angle(p, lang)}°" for i, p in enumerate(phis))
+    if ends is not None:
+        when += f"; θ = {angle(round(ends.theta_deg, 2), lang)}°, K = {fmt(ends.K, 4, lang)}"
+    bold_txt = ", ".join(str(k + first) for k in sorted(bold_set))
     if lang == "ru":
         note = f"{when}; жирно: {bold_txt}" if bold_set else when
     else:
@@ -333,6 +346,112 @@ def positions_panel(sol, mu_l: float, lang: str, bold: Sequence[int], strokes: d
     return finish(pid, "positions", None, rec, title,
                   f"{scale_text('length', mu_l, scene.scale_style, lang)}  (M {ratio_text(mu_l, lang)})", note,
                   "length", mu_l)
+
+
+EXTREME = Style(width=0.35, stroke="#000", dash=(6.0, 1.0, 1.0, 1.0, 1.0, 1.0), cls="extreme")  # GOST 2.303
+STROKE_GAP = 5.0  # mm outside the crank circle: the arcs of the strokes
+
+
+def _crowded(marks: Sequence[str], pin: str, at: Sequence[dict[str, tuple[float, float]]],
+             near: float = 6.0) -> set[str]:
+    """The numbered pins with a mark within ``near`` mm of another pin's mark: numbered with
+    their letter there (the crank pin keeps its bare numbers), so two overlapping
+    trajectories never share bare numbers."""
+    out: set[str] = set()
+    for i, a in enumerate(marks):
+        for b in marks[i + 1:]:
+            if any(math.dist(p[a], q[b]) < near for p in at for q in at):
+                out |= {a, b} - {pin}
+    return out
+
+
+def _free_label(placer: Placer, text: str, c: tuple[float, float], r: float, angles: Sequence[float]):
+    """A label just outside a circle of radius ``r`` about ``c``, at the first of ``angles``
+    where it crosses no line and no label; else where the placer finds room."""
+    size = SMALL_SIZE + 0.5
+    for a in angles:
+        ux, uy = math.cos(a), math.sin(a)
+        anchor = "start" if ux > 0.35 else ("end" if ux < -0.35 else "middle")
+        valign = "top" if uy > 0.35 else ("bottom" if uy < -0.35 else "middle")
+        lab = layout(text, c[0] + r * ux, c[1] + r * uy, size, anchor, valign)
+        soft, clash = placer._costs(np.array([[lab.box[0] - 0.3, lab.box[1] - 0.3, lab.box[2] + 0.3,
+                                               lab.box[3] + 0.3]]))
+        if soft[0] == 0 and not clash[0]:
+            placer.boxes.append(lab.box)
+            return lab
+    mid = angles[0]
+    return placer.place(text, (c[0] + r * math.cos(mid), c[1] + r * math.sin(mid)), size,
+                        prefer=(math.cos(mid), math.sin(mid)), gap=1.0)
+
+
+def _strokes(rec: Recording, placer: Placer, scene, st, ext, T: Transform, O: complex, pin: str, pin0: complex,
+             lang: str, pid: str) -> None:
+    """The two extreme positions of the output (the mechanism thin dash-dot-dot, the crank pin
+    lettered A', A''), the working and idle strokes as arcs outside the crank circle from
+    one extreme to the other in the crank's sense, and θ between the crank at the end of
+    the working stroke and the crank at its start extended through the pivot."""
+    rec.begin(f"{pid}-extremes", "extremes")
+    pins = []
+    slider = st.output.kind == "slider"
+    for j, mark in enumerate(("'", "''")):  # ' where the working stroke begins, '' where the idle one does
+        pts = _points_at(scene, ext, j)
+        edges, extra = _edges(scene, ext, j, pts)
+        where = {**pts, **extra}
+        for w, walk in enumerate(_walks(edges)):
+            line = [T.z(where[v]) for v in walk]
+            rec.polyline(line, EXTREME, f"{pid}-extreme-{j + 1}" + (f"-{w}" if w else ""))
+            placer.add_line(line)
+        pins.append(pts[pin])
+        out = pts.get(st.output.point) if slider else None
+        for name in [st.output.point] if out is not None else []:  # the slider's two extremes: B', B''
+            z = where[name]
+            away = z - O
+            L = abs(away) or 1.0
+            text = f"{name}{mark}" if name.isalpha() else f"{point_label(name)}{mark}"
+            lab = placer.place(text, T.z(z), LABEL_SIZE, prefer=(away.real / L, -away.imag / L), gap=1.2)
+            rec.text(lab, "label extreme", f"{pid}-extreme-{j + 1}-{ident(name)}")
+    rec.end()
+    # the strokes: arcs outside the crank circle, in the crank's sense of rotation
+    c = T.z(O)
+    r_pin = abs(pin0 - O) * T.scale
+    sense = 1 if scene.driver.sense > 0 else -1
+    a_start = [math.atan2(-(z - O).imag, (z - O).real) for z in pins]  # paper angles
+    rec.begin(f"{pid}-strokes", "strokes")
+    for j, (key, deg) in enumerate((("working", st.working_span), ("idle", 360.0 - st.working_span))):
+        a0 = a_start[j]
+        sweep = -sense * math.radians(deg)  # paper y is down: counter-clockwise is negative
+        r = r_pin + STROKE_GAP + 2.0 * j
+        style = Style(width=0.5 if key == "working" else 0.3, stroke="#1f4e9c",
+                      dash=() if key == "working" else (3.0, 1.5), cls=f"stroke {key}")
+        lo, hi = (a0, a0 + sweep) if sweep > 0 else (a0 + sweep, a0)
+        rec.arc(c, r, lo, hi, style, f"{pid}-stroke-{key}")
+        ang = a0 + sweep
+        tip = (c[0] + r * math.cos(ang), c[1] + r * math.sin(ang))
+        back = ang - math.copysign(min(0.5, 7.0 / r), sweep)
+        tail = (c[0] + r * math.cos(back), c[1] + r * math.sin(back))
+        arrow(rec, tail, tip, Style(width=0.3, stroke="#1f4e9c"), f"{pid}-stroke-{key}-head", "stroke-head")
+        placer.add_line([(c[0] + r * math.cos(t), c[1] + r * math.sin(t)) for t in np.linspace(lo, hi, 25)])
+        words = tr(f"{key}_stroke", lang)
+        sym = ("φ_р" if key == "working" else "φ_х") if lang == "ru" else ("φ_w" if key == "working" else "φ_i")
+        text = f"{words}, {sym} = {angle(round(deg, 2), lang)}°"
+        lab = _free_label(placer, text, c, r + 1.5, [a0 + sweep * t for t in (0.5, 0.35, 0.65, 0.2, 0.8, 0.1, 0.9)])
+        rec.text(lab, "label stroke", f"{pid}-stroke-{key}-label", fill="#1f4e9c")
+    # θ: from the start crank extended through O to the end crank
+    if st.theta_deg > 0.05:
+        ext = a_start[0] + math.pi
+        e1 = (c[0] + r_pin * math.cos(ext), c[1] + r_pin * math.sin(ext))
+        rec.line(c, e1, Style(width=0.25, stroke="#000", dash=(6.0, 1.0, 1.0, 1.0), cls="theta"), f"{pid}-theta-line")
+        placer.add_line([c, e1])
+        rt = 0.55 * r_pin
+        d = (a_start[1] - ext + math.pi) % (2 * math.pi) - math.pi  # the short way, |d| = θ
+        lo, hi = (ext, ext + d) if d > 0 else (ext + d, ext)
+        rec.arc(c, rt, lo, hi, Style(width=0.3, stroke="#000", cls="theta"), f"{pid}-theta")
+        mid = ext + d / 2
+        lab = placer.place(f"θ = {angle(round(st.theta_deg, 2), lang)}°", (c[0] + rt * math.cos(mid),
+                           c[1] + rt * math.sin(mid)), SMALL_SIZE + 0.5, prefer=(math.cos(mid), math.sin(mid)),
+                           gap=1.0)
+        rec.text(lab, "label theta", f"{pid}-theta-label")
+    rec.end()
 
 
 # --------------------------------------------------------------------------- legend

@@ -148,7 +148,10 @@ def _fit(text: str, x: float, y: float, w: float, size: float, anchor: str = "st
     cell at 1.8 mm goes smaller still rather than run over the cell's lines)."""
     lab = layout(text, x, y, size, anchor, "middle")
     width = lab.box[2] - lab.box[0]
-    if width > w and width > 0:
+    # GOST 2.304's 2.5 mm kept while the text stays inside the cell's lines (most of the 1 mm
+    # padding on each side given up first: "Изм." in its 7 mm column)
+    room = w + (1.4 if anchor == "middle" else 0.7)
+    if width > room and width > 0:
         size = size * w / width
         lab = layout(text, x, y, size, anchor, "middle")
     return lab

@@ -37,9 +37,9 @@ ORDER = ("positions", "scheme", "centres", "velocity", "acceleration", "table")
 AT = ("scheme", "velocity", "acceleration", "forces", "lever", "table", "centres")
 
 
-def numbers(sol: Solution) -> list[int]:
+def numbers(sol: Solution, spec: SheetSpec) -> list[int]:
     """Each position's number as the sheets write it (the plan of positions, the headings)."""
-    return list(range(sol.kinematics.n))
+    return [k + spec.first_position for k in range(sol.kinematics.n)]
 
 
 def set_of(sol: Solution, spec: SheetSpec) -> str:
@@ -94,7 +94,7 @@ def selection(sol: Solution, spec: SheetSpec, set_name: str) -> dict[str, Any]:
         sel = {kind: ks for kind in ("velocity", "acceleration", "forces", "lever", "table")}
         sel.update(scheme=schemes, centres=schemes)
     sel.update(positions=overlay, legend=bool(chosen.get("legend", True)))
-    nums = numbers(sol)
+    nums = numbers(sol, spec)
     for kind, val in spec.choice:
         if kind in ("positions", "legend") or not isinstance(val, str | tuple):
             continue
@@ -231,7 +231,7 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
     for placed in kin_sheets:
         out.append(Sheet(named, 0, 0, W, H, placed, None))
     if forces and (scene.wants("force_polygons") or scene.wants("lever")):
-        nums = {float(sol.kinematics.phi_deg[k]): n for k, n in enumerate(numbers(sol))}
+        nums = {float(sol.kinematics.phi_deg[k]): n for k, n in enumerate(numbers(sol, spec))}
         sub = dataclasses.replace(spec, pins=(), subtitle=spec.subtitle or tr("kinetostatics_sheet", spec.language))
 
         def kinetic(build: Any) -> Any:

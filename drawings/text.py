@@ -16,6 +16,9 @@ from functools import lru_cache
 from .fonts import metrics
 
 SCRIPT_SIZE = 0.7
+#: GOST 2.304: letters at least 2.5 mm (:data:`drawings.panels.SMALL_SIZE`); an index is written
+#: a size smaller, never below the standard's smallest size, 1.8 mm.
+SCRIPT_MIN = 1.8
 SUB_SHIFT = 0.28  # of the base size, downwards on paper
 SUP_SHIFT = -0.42
 
@@ -116,7 +119,7 @@ def _layout0(label: str, size: float, anchor: str, valign: str) -> Label:
             runs.append((cx, 0.0, text, size))
             cx += w
             continue
-        s = size * SCRIPT_SIZE
+        s = max(size * SCRIPT_SIZE, min(SCRIPT_MIN, size))
         if script_x is None:
             script_x = cx
             script_end = cx

@@ -10,7 +10,7 @@ import sys
 from collections.abc import Callable, Sequence
 from typing import Any, NoReturn
 
-from plans.errors import InputError, PlansError, one_line
+from plans.errors import InputError, PlansError, error_prefix, one_line, set_run
 
 #: Pure commands living in their own modules, each with ``register(subparsers)``; a module
 #: that is absent is simply not offered.
@@ -172,22 +172,34 @@ def run(args: argparse.Namespace) -> int:
     are renamed into place only when it has returned, none over an input."""
     from plans.guard import Run
 
+    set_run(getattr(args, "language", None), _input_of(args))
     try:
         with Run():
             return int(args.func(args))
     except PlansError as exc:
         if exc.source is None and not isinstance(exc, InputError):
             exc.source = getattr(args, "scene", None) or getattr(args, "path", None)
-        print(f"plans: error: {one_line(exc)}", file=sys.stderr)
+        print(f"{error_prefix()}{one_line(exc)}", file=sys.stderr)
         return 2
     except BrokenPipeError:
         return _closed_pipe()
     except OSError as exc:
-        print(f"plans: error: {exc.filename or ''}: {' '.join((exc.strerror or str(exc)).split())}",
+        print(f"{error_prefix()}{exc.filename or ''}: {' '.join((exc.strerror or str(exc)).split())}",
               file=sys.stderr)
         return 2
     except KeyboardInterrupt:
         return 130
+    finally:
+        set_run(None, None)  # a library call after this run follows its own scene's language
+
+
+def _input_of(args: argparse.Namespace) -> str | None:
+    """The command's input file (its ``[sheet] language`` is the run's default language)."""
+    for name in ("scene", "path", "file", "engine", "cam", "task", "template"):
+        value = getattr(args, name, None)
+        if isinstance(value, str) and value.endswith(".toml"):
+            return value
+    return None
 
 
 def _closed_pipe() -> int:

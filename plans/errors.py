@@ -8,6 +8,120 @@ the crank angle, never returns NaN.
 
 from __future__ import annotations
 
+import re
+from typing import Any
+
+#: The run's language for its error lines and warnings: what ``--language`` asked for and
+#: the input file whose ``[sheet] language`` is the default (set by the command line);
+#: resolved only when a line is written (:func:`run_language`), so a run that says nothing
+#: reads nothing more.
+_RUN: dict[str, str | None] = {"asked": None, "path": None, "lang": None}
+
+
+def set_run(asked: str | None, path: str | None) -> None:
+    """The run's ``--language`` and input file (:func:`run_language`)."""
+    _RUN.update(asked=asked, path=path, lang=None)
+    _WARNED.clear()
+
+
+#: The warnings this run has written (a scene read twice warns once).
+_WARNED: set[str] = set()
+
+
+def warn(said: Said) -> None:
+    """A warning on stderr in the run's language (``plans: warning: ...``): the run goes on
+    and its exit status is unchanged."""
+    import sys
+
+    lang = run_language()
+    text = said.text(lang)
+    if text in _WARNED:
+        return
+    _WARNED.add(text)
+    print(Said("w_prefix").text(lang) + " ".join(text.split()), file=sys.stderr)
+
+
+def run_language(data: Any = None) -> str:
+    """``--language``, else the input file's ``[sheet] language``, else the locale's; outside
+    a command's run, ``data``'s ``[sheet] language`` (a file's table) else the locale's."""
+    if _RUN["asked"] is None and _RUN["path"] is None and data is not None:
+        from plans.language import choose
+
+        return choose(None, data)
+    if _RUN["lang"] is None:
+        from plans.language import file_language, locale_language
+
+        asked, path = _RUN["asked"], _RUN["path"]
+        _RUN["lang"] = file_language(asked, path) if path else (asked if asked in ("ru", "en") else locale_language())
+    return _RUN["lang"] or "en"
+
+
+class Said:
+    """A sentence of the catalogue not yet written (:data:`plans.language.ERRORS`): its key
+    and its values, written in either language with the same values (a value may itself be
+    a Said).  Field names and TOML keys among the values are the file's own words."""
+
+    __slots__ = ("key", "values")
+
+    def __init__(self, key: str, /, **values: Any) -> None:
+        self.key, self.values = key, values
+
+    def text(self, lang: str = "en") -> str:
+        from plans.language import ERRORS, WARNINGS
+
+        en, ru = ERRORS[self.key] if self.key in ERRORS else WARNINGS[self.key]
+        values = {k: v.text(lang) if isinstance(v, Said) else _Comma(v) if lang == "ru" and isinstance(v, float)
+                  else v for k, v in self.values.items()}
+        return (ru if lang == "ru" else en).format(**values)
+
+    def __str__(self) -> str:
+        return self.text("en")
+
+    def __repr__(self) -> str:
+        return f"Said({self.key!r}, {self.values!r})"
+
+
+class _Comma(float):
+    """A number written with a decimal comma (a Russian sentence's)."""
+
+    __slots__ = ()
+
+    def __format__(self, spec: str) -> str:
+        return float.__format__(self, spec).replace(".", ",")
+
+
+#: Arrays of tables (``[[joints]]``): a message names their entries 1-based, as a reader
+#: counts them in the file ("[[joints]] entry 4"), never by a 0-based index.
+TABLE_ARRAYS = frozenset({"joints", "positions", "gas", "force", "moment", "cylinders", "variants", "shafts",
+                          "meshes", "gears", "pairs", "stages", "points_of", "panels"})
+_ENTRY = re.compile(r"^([A-Za-z_][\w.]*?)\[(\d+)\](?:\.(.*))?$")
+
+
+def field_name(field: str, lang: str = "en") -> str:
+    """A field as a message names it: ``joints[3].guide.link`` (the reader's 0-based index)
+    is ``[[joints]] entry 4, guide.link`` (``[[joints]] № 4, guide.link`` in Russian)."""
+    m = _ENTRY.match(field)
+    if m is None or m.group(1).rsplit(".", 1)[-1] not in TABLE_ARRAYS:
+        return field
+    entry = f"[[{m.group(1)}]] {'№' if lang == 'ru' else 'entry'} {int(m.group(2)) + 1}"
+    rest = m.group(3)
+    return entry if not rest else f"{entry}, {field_name(rest, lang)}"
+
+
+def os_reason(exc: OSError) -> Said | str:
+    """Why the system refused a file, in the run's language where the catalogue has it."""
+    import errno
+
+    name = errno.errorcode.get(exc.errno or 0, "")
+    from plans.language import ERRORS
+
+    return Said(f"e_{name}") if f"e_{name}" in ERRORS else (exc.strerror or str(exc))
+
+
+def error_prefix(lang: str | None = None) -> str:
+    """``plans: error: `` in the run's language."""
+    return "plans: ошибка: " if (lang or run_language()) == "ru" else "plans: error: "
+
 
 class PlansError(Exception):
     """Base of every error the engine raises on purpose."""
@@ -16,9 +130,12 @@ class PlansError(Exception):
     source: str | None = None
 
 
-def one_line(exc: BaseException) -> str:
-    """The error as the one line the command prints: the file first, whitespace folded."""
-    text = " ".join(str(exc).split())
+def one_line(exc: BaseException, lang: str | None = None) -> str:
+    """The error as the one line the command prints: the file first, whitespace folded; in
+    ``lang`` (default: the run's, :func:`run_language`) where the message is the catalogue's."""
+    lang = lang or run_language()
+    text = exc.text(lang) if isinstance(exc, InputError | OutputError) else str(exc)
+    text = " ".join(text.split())
     source = getattr(exc, "source", None)
     if source and not text.startswith(source):
         text = f"{source}: {text}"
@@ -28,22 +145,35 @@ def one_line(exc: BaseException) -> str:
 class InputError(PlansError):
     """A malformed or impossible input file: says file, field and what was expected."""
 
-    def __init__(self, message: str, *, file: str | None = None, field: str | None = None,
+    def __init__(self, message: str | Said, *, file: str | None = None, field: str | None = None,
                  line: int | None = None) -> None:
         self.file = file
         self.field = field
         self.line = line
-        self.detail = message
-        where = file or "<scene>"
-        if line is not None:
-            where += f":{line}"
-        if field:
-            where += f": {field}"
-        super().__init__(f"{where}: {message}")
+        self.said = message if isinstance(message, Said) else None
+        self.detail = str(message)
+        super().__init__(self.text("en"))
+
+    def text(self, lang: str = "en") -> str:
+        """The error in ``lang``: the file, its line, the field, then what was expected (a
+        message that is not yet the catalogue's stays in English)."""
+        where = self.file or "<scene>"
+        if self.line is not None:
+            where += f":{self.line}"
+        if self.field:
+            where += f": {field_name(self.field, lang)}"
+        return f"{where}: {self.said.text(lang) if self.said is not None else self.detail}"
 
 
 class OutputError(PlansError):
     """An output file or folder that cannot be written."""
+
+    def __init__(self, message: str | Said = "") -> None:
+        self.said = message if isinstance(message, Said) else None
+        super().__init__(str(message))
+
+    def text(self, lang: str = "en") -> str:
+        return self.said.text(lang) if self.said is not None else str(self)
 
 
 class ConstructionError(PlansError):

@@ -19,7 +19,7 @@ import os
 from collections.abc import Iterable
 from typing import Any
 
-from plans.errors import OutputError
+from plans.errors import OutputError, Said, os_reason
 
 _ACTIVE: list[Run] = []
 
@@ -80,8 +80,7 @@ class Run:
         t = os.fspath(target)
         src = self.input_named(t)
         if src is not None:
-            raise OutputError(f"{t}: is the input file {src}; refusing to overwrite it "
-                              f"(expected another path for the output)")
+            raise OutputError(Said("o_input", target=t, src=src))
 
     # ---------------------------------------------------------------- outputs
     def stage(self, tmp: str, target: Any) -> None:
@@ -113,13 +112,13 @@ class Run:
         for _key, (_tmp, target) in self.staged.items():
             self.refuse_input(target)
             if os.path.isdir(target):
-                raise OutputError(f"{target}: is a folder; expected a path for a file")
+                raise OutputError(Said("o_folder", target=str(target)))
         written = set(self.staged)
         for key, (tmp, target) in list(self.staged.items()):
             try:
                 os.replace(tmp, target)
             except OSError as exc:
-                raise OutputError(f"cannot write {target}: {exc.strerror}") from None
+                raise OutputError(Said("o_write", target=str(target), why=os_reason(exc))) from None
             del self.staged[key]
         for p in self.removals:
             if self.input_named(p) is None and _real(p) not in written:

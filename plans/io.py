@@ -11,7 +11,7 @@ from collections.abc import Iterable, Iterator, Mapping
 from contextlib import contextmanager
 from typing import TYPE_CHECKING, Any, BinaryIO
 
-from plans.errors import InputError, OutputError
+from plans.errors import InputError, OutputError, Said, os_reason
 
 if TYPE_CHECKING:  # pathlib is loaded where a file is written: reading a scene does without it
     from pathlib import Path
@@ -49,7 +49,7 @@ def atomic_file(path: str | Path) -> Iterator[BinaryIO]:
         if run is None or tmp not in (t for t, _ in run.staged.values()):
             _unlink(tmp)
         if isinstance(exc, OSError):
-            raise OutputError(f"cannot write {target}: {exc.strerror}") from None
+            raise OutputError(Said("o_write", target=str(target), why=os_reason(exc))) from None
         raise
 
 
@@ -57,13 +57,13 @@ def _temporary(target: str) -> tuple[str, int]:
     """A new temporary file beside ``target`` (its path and descriptor)."""
     folder = os.path.dirname(target) or "."
     if os.path.isdir(target):
-        raise OutputError(f"{target}: is a folder; expected a path for a file")
+        raise OutputError(Said("o_folder", target=str(target)))
     try:
         import tempfile  # loaded when a file is written: reading a scene does not pay for it
 
         fd, tmp = tempfile.mkstemp(prefix=f".{os.path.basename(target)}.", suffix=".tmp", dir=folder)
     except OSError as exc:
-        raise OutputError(f"cannot write to {folder}: {exc.strerror}") from None
+        raise OutputError(Said("o_write_to", folder=str(folder), why=os_reason(exc))) from None
     return tmp, fd
 
 
@@ -99,7 +99,7 @@ def write_all(files: Mapping[Path, bytes | str]) -> list[Path]:
             except BaseException as exc:
                 _unlink(tmp)
                 if isinstance(exc, OSError):
-                    raise OutputError(f"cannot write {t}: {exc.strerror}") from None
+                    raise OutputError(Said("o_write", target=str(t), why=os_reason(exc))) from None
                 raise
             run.stage(tmp, t)
         if own:
@@ -160,9 +160,9 @@ def read_toml(path: str | Path) -> dict[str, Any]:
         with open(path, "rb") as fh:
             raw = fh.read()
     except OSError as exc:
-        raise InputError(f"cannot read file ({exc.strerror or exc})", file=str(path)) from None
+        raise InputError(Said("e_read", why=os_reason(exc)), file=str(path)) from None
     except ValueError as exc:  # a path holding a NUL
-        raise InputError(f"cannot read file ({exc})", file=str(path)) from None
+        raise InputError(Said("e_read", why=str(exc)), file=str(path)) from None
     run = guard.current()
     if run is not None:
         run.read(path)
@@ -170,8 +170,7 @@ def read_toml(path: str | Path) -> dict[str, Any]:
         text = raw.decode("utf-8")
     except UnicodeDecodeError as exc:
         line = raw[:exc.start].count(b"\n") + 1
-        raise InputError(f"not UTF-8 text (byte 0x{raw[exc.start]:02x}); expected a TOML file saved as UTF-8",
-                         file=str(path), line=line) from None
+        raise InputError(Said("e_utf8", byte=raw[exc.start]), file=str(path), line=line) from None
     return loads_toml(text, str(path))
 
 
@@ -186,12 +185,46 @@ def _check_depth(data: Any, path: str) -> None:
     while stack:
         node, depth, where = stack.pop()
         if depth > MAX_DEPTH:
-            raise InputError(f"tables or arrays nested more than {MAX_DEPTH} deep; expected a file of the family",
+            raise InputError(Said("e_depth", n=MAX_DEPTH),
                              file=path, field=where[:80] + ("..." if len(where) > 80 else ""))
         if isinstance(node, dict):
             stack.extend((v, depth + 1, f"{where}.{k}" if where else str(k)) for k, v in node.items())
         elif isinstance(node, list):
             stack.extend((v, depth + 1, f"{where}[{i}]") for i, v in enumerate(node))
+
+
+def _toml_error(why: str) -> Said:
+    """The TOML parser's complaint (its own words, in English) with its place in the file."""
+    import re
+
+    at = re.fullmatch(r"(.*) \(at line (\d+), column (\d+)\)", why, re.S)
+    if at:
+        return Said("e_toml_at", why=at.group(1), line=int(at.group(2)), col=int(at.group(3)))
+    if why.endswith(" (at end of document)"):
+        return Said("e_toml_end", why=why[:-len(" (at end of document)")])
+    return Said("e_toml", why=why)
+
+
+def _decimal_comma(text: str, why: str, path: str) -> InputError | None:
+    """The error of a number written with a decimal comma (``omega = 1,5``: a bare TOML
+    error otherwise), naming the line, its key and the number as it should be written."""
+    import re
+
+    at = re.search(r"at line (\d+)", why)
+    lines = text.splitlines()
+    if at is None or not 0 < int(at.group(1)) <= len(lines):
+        return None
+    n = int(at.group(1))
+    line = lines[n - 1].split("#", 1)[0]
+    key = re.match(r"\s*([\w.\"-]+)\s*=", line)
+    got = re.search(r"=[^\"']*?(?<![\w.,])([-+]?\d+),(\d+)(?![\d.,])", line)
+    if key is None or got is None:
+        return None
+    table = next((m.group(1).strip() for m in (re.match(r"\s*\[\[?([^\]]+)\]", s) for s in reversed(lines[:n - 1]))
+                  if m), "")
+    written = f"{got.group(1)},{got.group(2)}"
+    return InputError(Said("e_decimal_comma", text=written, fixed=f"{got.group(1)}.{got.group(2)}"), file=path,
+                      line=n, field=(f"{table}." if table else "") + key.group(1).strip('"'))
 
 
 def loads_toml(text: str, path: str) -> dict[str, Any]:
@@ -202,9 +235,9 @@ def loads_toml(text: str, path: str) -> dict[str, Any]:
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"malformed TOML: {exc}", file=path) from None
+        raise _decimal_comma(text, str(exc), path) or InputError(_toml_error(str(exc)), file=path) from None
     except RecursionError:
-        raise InputError("malformed TOML: nested too deeply", file=path) from None
+        raise InputError(Said("e_toml", why="nested too deeply"), file=path) from None
     _check_depth(data, path)
     check_text(data, file=path)
     return data

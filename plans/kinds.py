@@ -10,7 +10,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from plans.errors import InputError
+from plans.errors import InputError, Said
 from plans.io import read_toml
 from plans.reader import check_keys, did_you_mean, show
 
@@ -38,7 +38,7 @@ def kind_of(data: dict[str, Any], path: str) -> str:
     """The file's kind (``"linkage"`` when absent); an unknown kind is one InputError line."""
     kind = data.get("kind", "linkage")
     if not isinstance(kind, str) or kind not in KINDS:
-        raise InputError(f"expected one of {', '.join(repr(k) for k in KINDS)}, got {kind!r}",
+        raise InputError(Said("e_kind", kinds=", ".join(repr(k) for k in KINDS), got=show(kind), hint=""),
                          file=path, field="kind")
     return kind
 
@@ -49,23 +49,20 @@ def read_kind(path: str | Path) -> tuple[str, dict[str, Any]]:
     return kind_of(data, str(path)), data
 
 
-def command_for(kind: str) -> str:
+def command_for(kind: str) -> Said | str:
     """A hint naming the command for a file of this kind ("" when unknown)."""
     if kind == "check":
-        return "use 'plans check' for it; "
+        return Said("e_use", command="plans check")
     if isinstance(kind, str) and kind in KINDS:
-        return f"use 'plans {KINDS[kind][0]}' for it; "
+        return Said("e_use", command=f"plans {KINDS[kind][0]}")
     return ""
 
 
-#: How each kind is named in a message.
-_NAMES = {"linkage": "a linkage scene", "engine": "an engine file", "gears": "a gears file", "cam": "a cam file",
-          "check": "a check file"}
-
-
-def _name(kind: str) -> str:
+def _name(kind: str) -> Said:
     """A kind as a message names it (a kind added later: "a synthesis file")."""
-    return _NAMES.get(kind, f"a {kind} file")
+    from plans.language import ERRORS
+
+    return Said(f"e_a_{kind}") if f"e_a_{kind}" in ERRORS else Said("e_a_kind", kind=kind)
 
 
 def guess_kind(data: dict[str, Any]) -> str:
@@ -94,15 +91,14 @@ def check_top(data: dict[str, Any], path: str, kind: str, known: Any) -> None:
     if not right:
         if "kind" in data and not (isinstance(kval, str) and kval in KINDS):
             hint = did_you_mean(kval, KINDS) if isinstance(kval, str) else ""
-            want = "no kind" if kind == "check" else f"kind = {kind!r}"
-            raise InputError(f"expected one of {', '.join(repr(k) for k in KINDS)} (here {want}), "
-                             f"got {show(kval)}{hint}", file=path, field="kind")
+            want = Said("e_no_kind") if kind == "check" else f"kind = {kind!r}"
+            raise InputError(Said("e_kind_here", kinds=", ".join(repr(k) for k in KINDS), want=want, got=show(kval),
+                                  hint=hint), file=path, field="kind")
         other = guess_kind(data)
-        raise InputError(f"this is {_name(other)}, not {_name(kind)}; {command_for(other)}expected "
-                         + ("a check file (scene = ..., no kind)" if kind == "check" else
-                            "kind = \"linkage\" or no kind" if kind == "linkage" else f"kind = {kind!r}"),
-                         file=path, field="kind")
+        raise InputError(Said("e_kind_other", other=_name(other), kind=_name(kind), command=command_for(other),
+                              want=Said("e_want_check") if kind == "check" else Said("e_want_linkage")
+                              if kind == "linkage" else f"kind = {kind!r}"), file=path, field="kind")
     if isinstance(fmt, bool) or not isinstance(fmt, int) or fmt != 1:
-        raise InputError(f"expected format = 1, got {'nothing' if fmt is None else show(fmt)}", file=path,
+        raise InputError(Said("e_format", got=Said("e_nothing") if fmt is None else show(fmt)), file=path,
                          field="format")
     check_keys(data, known, file=path, where="")

@@ -21,7 +21,7 @@ from typing import Any
 
 import numpy as np
 
-from plans.language import TERMS
+from plans.language import TERMS, UNITS_RU
 
 #: The languages a protocol can be written in.
 LANGUAGES = ("en", "ru")
@@ -244,9 +244,6 @@ PHRASES: dict[str, tuple[str, str]] = {
 
 PHRASES.update(TERMS)  # the terminal's lines: one catalogue, written one way
 
-#: Units written in Russian (a value named ``unit...`` is one of these).
-UNITS_RU = {"N": "Н", "N·m": "Н·м", "m/s": "м/с", "m/s²": "м/с²", "rad/s": "рад/с", "rad/s²": "рад/с²",
-            "mm": "мм", "cm": "см", "m": "м", "J": "Дж", "kg·m²": "кг·м²"}
 
 _BAL = r"\b([FM])_bal\b"  # F_bal, M_bal as words (compiled by ``re`` when Russian is first written)
 

@@ -20,7 +20,7 @@ import math
 from collections.abc import Iterable
 from typing import Any
 
-from plans.errors import InputError
+from plans.errors import InputError, Said
 from plans.units import parse_length
 
 #: The largest magnitude of a plain number in a file (forces, masses, pressures, ω, ...).
@@ -36,7 +36,7 @@ NAME_LIMIT = 200
 TEXT_LIMIT = 2000
 
 
-def did_you_mean(word: str, choices: Iterable[str]) -> str:
+def did_you_mean(word: str, choices: Iterable[str]) -> Said | str:
     """``"; did you mean 'omega_rpm'?"`` when a choice is close to ``word``, else ``""``."""
     options = [c for c in choices if isinstance(c, str)]
     cutoff = 0.5 if len(str(word)) <= 3 else 0.6  # "S3" for "S2"
@@ -46,13 +46,13 @@ def did_you_mean(word: str, choices: Iterable[str]) -> str:
     if not match:
         low = {c.lower(): c for c in options}
         match = [low[str(word).lower()]] if str(word).lower() in low else []
-    return f"; did you mean {match[0]!r}?" if match else ""
+    return Said("e_did_you_mean", word=match[0]) if match else ""
 
 
 def unknown_key(word: str, known: Iterable[str], *, file: str, field: str) -> InputError:
     """The one-line error for a key that is not known here."""
     known = sorted(known)
-    return InputError(f"unknown key{did_you_mean(word, known)} (expected one of {', '.join(known)})",
+    return InputError(Said("e_unknown_key", hint=did_you_mean(word, known), known=", ".join(known)),
                       file=file, field=field)
 
 
@@ -64,17 +64,17 @@ def check_keys(table: dict[str, Any], known: Iterable[str], *, file: str, where:
             raise unknown_key(key, known, file=file, field=f"{where}{key}")
 
 
-def bad_character(text: str) -> str | None:
+def bad_character(text: str) -> Said | None:
     """A description of the first character that cannot stand in a name or on a sheet
     (control characters, Unicode noncharacters, surrogates), or None."""
     for ch in text:
         o = ord(ch)
         if (o < 0x20 and ch not in "\t\n") or 0x7F <= o < 0xA0:
-            return f"control character U+{o:04X}"
+            return Said("e_control", code=f"{o:04X}")
         if 0xFDD0 <= o <= 0xFDEF or (o & 0xFFFE) == 0xFFFE:
-            return f"Unicode noncharacter U+{o:04X}"
+            return Said("e_nonchar", code=f"{o:04X}")
         if 0xD800 <= o <= 0xDFFF:
-            return f"surrogate U+{o:04X}"
+            return Said("e_surrogate", code=f"{o:04X}")
     return None
 
 
@@ -86,7 +86,7 @@ def check_text(data: Any, *, file: str, where: str = "") -> None:
             field = f"{where}.{key}" if where else str(key)
             bad = bad_character(str(key))
             if bad:
-                raise InputError(f"the key holds a {bad}; expected printable text", file=file,
+                raise InputError(Said("e_key_char", bad=bad), file=file,
                                  field=field.encode("unicode_escape").decode("ascii"))
             check_text(value, file=file, where=field)
     elif isinstance(data, list):
@@ -95,10 +95,9 @@ def check_text(data: Any, *, file: str, where: str = "") -> None:
     elif isinstance(data, str):
         bad = bad_character(data)
         if bad:
-            raise InputError(f"the text holds a {bad}; expected printable text", file=file, field=where)
+            raise InputError(Said("e_char", bad=bad), file=file, field=where)
         if len(data) > TEXT_LIMIT:
-            raise InputError(f"text of {len(data)} characters; expected at most {TEXT_LIMIT}", file=file,
-                             field=where)
+            raise InputError(Said("e_text_long", n=len(data), limit=TEXT_LIMIT), file=file, field=where)
 
 
 def reduce_deg(x: float) -> float:
@@ -113,7 +112,7 @@ class Reader:
     def __init__(self, path: str) -> None:
         self.path = path
 
-    def fail(self, field: str, expected: str) -> InputError:
+    def fail(self, field: str, expected: str | Said) -> InputError:
         return InputError(expected, file=self.path, field=field)
 
     def keys(self, data: dict[str, Any], known: Iterable[str], where: str) -> None:
@@ -122,11 +121,11 @@ class Reader:
     def table(self, data: dict[str, Any], key: str, where: str, required: bool = True) -> dict[str, Any]:
         if key not in data:
             if required:
-                raise self.fail(f"{where}{key}", "missing table")
+                raise self.fail(f"{where}{key}", Said("e_missing_table"))
             return {}
         value = data[key]
         if not isinstance(value, dict):
-            raise self.fail(f"{where}{key}", "expected a table")
+            raise self.fail(f"{where}{key}", Said("e_table"))
         return value
 
     def value(self, value: Any, field: str, *, positive: bool = False, nonneg: bool = False,
@@ -135,18 +134,18 @@ class Reader:
         below it squares vanish, and positive quantities become infinite scales)."""
         floor = NUMBER_FLOOR if floor is None else floor
         if isinstance(value, bool) or not isinstance(value, int | float):
-            raise self.fail(field, f"expected a number, got {show(value)}")
+            raise self.fail(field, Said("e_number", got=show(value)))
         if isinstance(value, float) and not math.isfinite(value):
-            raise self.fail(field, f"expected a finite number, got {value!r}")
+            raise self.fail(field, Said("e_finite", got=repr(value)))
         if abs(value) > limit:
-            raise self.fail(field, f"expected a number of magnitude at most {limit:g}, got {show(value)}")
+            raise self.fail(field, Said("e_magnitude", limit=limit, got=show(value)))
         if positive and value <= 0:
-            raise self.fail(field, f"expected a positive number, got {show(value)}")
+            raise self.fail(field, Said("e_positive", got=show(value)))
         if nonneg and value < 0:
-            raise self.fail(field, f"expected a number >= 0, got {show(value)}")
+            raise self.fail(field, Said("e_nonneg", got=show(value)))
         if value != 0 and abs(value) < floor:
-            raise self.fail(field, f"expected a number from {floor:g} to {limit:g}, got {show(value)}" if positive
-                            else f"expected 0 or a magnitude of at least {floor:g}, got {show(value)}")
+            raise self.fail(field, Said("e_between", floor=floor, limit=limit, got=show(value)) if positive
+                            else Said("e_floor", floor=floor, got=show(value)))
         return float(value)
 
     def number(self, data: dict[str, Any], key: str, where: str, *, default: float | None = None,
@@ -154,7 +153,7 @@ class Reader:
                floor: float | None = None) -> float:
         if key not in data:
             if default is None:
-                raise self.fail(f"{where}{key}", "missing number")
+                raise self.fail(f"{where}{key}", Said("e_missing_number"))
             return default
         return self.value(data[key], f"{where}{key}", positive=positive, nonneg=nonneg, limit=limit,
                           floor=floor)
@@ -165,52 +164,52 @@ class Reader:
             return default
         value = data[key]
         if isinstance(value, bool) or not isinstance(value, int | float):
-            raise self.fail(f"{where}{key}", f"expected an angle in degrees, got {show(value)}")
+            raise self.fail(f"{where}{key}", Said("e_angle", got=show(value)))
         if isinstance(value, int):
             return float(value % 360)
         if not math.isfinite(value):
-            raise self.fail(f"{where}{key}", f"expected a finite angle in degrees, got {value!r}")
+            raise self.fail(f"{where}{key}", Said("e_finite_angle", got=repr(value)))
         return reduce_deg(value)
 
     def integer(self, data: dict[str, Any], key: str, where: str, *, default: int | None = None,
                 at_least: int | None = None, at_most: int | None = None) -> int:
         if key not in data:
             if default is None:
-                raise self.fail(f"{where}{key}", "missing whole number")
+                raise self.fail(f"{where}{key}", Said("e_missing_whole"))
             return default
         value = data[key]
         if isinstance(value, bool) or not isinstance(value, int):
-            raise self.fail(f"{where}{key}", f"expected a whole number, got {show(value)}")
+            raise self.fail(f"{where}{key}", Said("e_whole", got=show(value)))
         if at_least is not None and value < at_least:
-            raise self.fail(f"{where}{key}", f"expected a whole number >= {at_least}, got {show(value)}")
+            raise self.fail(f"{where}{key}", Said("e_whole_min", n=at_least, got=show(value)))
         if at_most is not None and value > at_most:
-            raise self.fail(f"{where}{key}", f"expected a whole number <= {at_most}, got {show(value)}")
+            raise self.fail(f"{where}{key}", Said("e_whole_max", n=at_most, got=show(value)))
         return value
 
     def text(self, data: dict[str, Any], key: str, where: str, *, default: str | None = None,
              limit: int = TEXT_LIMIT) -> str:
         if key not in data:
             if default is None:
-                raise self.fail(f"{where}{key}", "missing text")
+                raise self.fail(f"{where}{key}", Said("e_missing_text"))
             return default
         return self.string(data[key], f"{where}{key}", limit=limit)
 
     def string(self, value: Any, field: str, *, limit: int = NAME_LIMIT) -> str:
         """A name or a text: a string of printable characters, at most ``limit`` long."""
         if not isinstance(value, str):
-            raise self.fail(field, f"expected a string, got {show(value)}")
+            raise self.fail(field, Said("e_string", got=show(value)))
         bad = bad_character(value)
         if bad:
-            raise self.fail(field, f"the text holds a {bad}; expected printable text")
+            raise self.fail(field, Said("e_char", bad=bad))
         if len(value) > limit:
-            raise self.fail(field, f"expected at most {limit} characters, got {len(value)}")
+            raise self.fail(field, Said("e_chars", limit=limit, n=len(value)))
         return value
 
     def name(self, value: Any, field: str) -> str:
         """A point or link name: a non-empty string without spaces at its ends."""
         out = self.string(value, field)
         if not out.strip():
-            raise self.fail(field, "expected a non-empty name")
+            raise self.fail(field, Said("e_name_empty"))
         return out
 
     def choice(self, data: dict[str, Any], key: str, where: str, choices: Iterable[str],
@@ -219,8 +218,8 @@ class Reader:
         value = data.get(key, default)
         if not isinstance(value, str) or value not in options:
             hint = did_you_mean(value, options) if isinstance(value, str) else ""
-            raise self.fail(f"{where}{key}", f"expected one of {', '.join(repr(o) for o in options)}, "
-                                             f"got {show(value)}{hint}")
+            raise self.fail(f"{where}{key}", Said("e_choice", options=", ".join(repr(o) for o in options),
+                                                  got=show(value), hint=hint))
         return value
 
     def length(self, value: Any, field: str, unit: str, *, positive: bool = False) -> float:
@@ -229,25 +228,42 @@ class Reader:
         try:
             out = parse_length(value, unit)
         except ValueError as exc:
-            raise self.fail(field, str(exc)) from None
+            raise self.fail(field, _length_said(str(exc))) from None
         except OverflowError:
-            raise self.fail(field, f"expected a length of at most {LENGTH_LIMIT:g} m, got {show(value)}") from None
+            raise self.fail(field, Said("e_length_max", limit=LENGTH_LIMIT, got=show(value))) from None
         if not math.isfinite(out):
-            raise self.fail(field, f"expected a finite length, got {show(value)}")
+            raise self.fail(field, Said("e_length_finite", got=show(value)))
         if abs(out) > LENGTH_LIMIT:
-            raise self.fail(field, f"expected a length of at most {LENGTH_LIMIT:g} m, got {show(value)}")
+            raise self.fail(field, Said("e_length_max", limit=LENGTH_LIMIT, got=show(value)))
         if positive and out <= 0:
-            raise self.fail(field, f"expected a positive length, got {show(value)}")
+            raise self.fail(field, Said("e_length_positive", got=show(value)))
         if positive and abs(out) < LENGTH_FLOOR:  # a size; a coordinate or offset of dust is kept
-            raise self.fail(field, f"expected a length of at least 1 µm, got {show(value)}")
+            raise self.fail(field, Said("e_length_min", got=show(value)))
         return out
 
 
-def show(value: Any) -> str:
+#: parse_length's reasons (plans.units stays free of messages) as catalogue sentences.
+_LENGTH_REASONS = {"expected a length (number or string like '35 mm')": "e_length_bool",
+                   "expected a finite length": "e_length_inf",
+                   "expected a length: a number in the file's unit or a string like '35 mm'": "e_length_of"}
+
+
+def _length_said(reason: str) -> Said | str:
+    import re
+
+    digits = re.fullmatch(r"expected a length of a sensible size, got an integer of (\d+) digits", reason)
+    if digits:
+        return Said("e_length_digits", n=int(digits.group(1)))
+    return Said(_LENGTH_REASONS[reason]) if reason in _LENGTH_REASONS else reason
+
+
+def show(value: Any) -> Any:
     """A value for a message, shortened (a 400-digit integer is not repeated in full, a
     float is shown with at most 6 significant digits)."""
-    if isinstance(value, int) and not isinstance(value, bool) and abs(value) > 10**15:
-        return f"an integer of {len(str(abs(value)))} digits"
+    if isinstance(value, bool):  # as the file writes it
+        return "true" if value else "false"
+    if isinstance(value, int) and abs(value) > 10**15:
+        return Said("e_digits", n=len(str(abs(value))))
     if isinstance(value, float):
         return f"{value:.6g}"
     text = repr(value)

@@ -328,6 +328,25 @@ class Solution:
 
         return self._part("analogues", make)
 
+    def strokes(self) -> Any:
+        """The output link's extreme positions, the working and idle strokes and θ
+        (:class:`plans.kinematics.extreme.Strokes`) with the mechanism at both extremes (a
+        Kinematics of positions only at [working_deg, idle_deg]), for the plan of positions;
+        None where the output has no two extremes (the crank does not turn round, a link
+        that turns all the way)."""
+        def make() -> Any:
+            from plans.kinematics.exact import solve
+            from plans.kinematics.extreme import strokes
+
+            try:
+                st = strokes(self.scene)
+                at = solve(self.scene, [st.working_deg, st.idle_deg], order=0, structure=self.structure)
+            except PlansError:
+                return None
+            return st, at
+
+        return self._part("strokes", make)
+
     # -- values by their textbook names (plans.quantities)
     def value(self, name: str, phi: float | None = None) -> float:
         """The quantity ``name`` (``"F_12^τ"``, ``"v_B"``, ``"omega_3"``, ``"F_bal"``...) at the

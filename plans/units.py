@@ -58,3 +58,8 @@ def percent(read: float, exact: float, ref: float = 0.0) -> float | None:
     if den == 0 or abs(exact) <= DUST * max(ref, abs(read)):
         return None
     return clean(100.0 * (read - exact) / den, 100.0)
+
+#: Longer links than this (metres) no machine of the course has, and faster points than
+#: this (m/s): a scene beyond them is warned about (:mod:`plans.plausible`: a unit slip).
+LENGTH_WARN = 20.0
+SPEED_WARN = 300.0

@@ -306,7 +306,9 @@ def test_bad_input_is_one_line_naming_the_key(tmp_path, capsys, field, mutate):
     out = tmp_path / "out.json"
     assert main(["balance", path, "--json", str(out)]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and f": {field}:" in err, err
+    from plans.errors import field_name
+
+    assert err.count("\n") == 1 and f": {field_name(field)}:" in err, err
     assert not out.exists()
 
 

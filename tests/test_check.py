@@ -331,7 +331,7 @@ def _cw(**replace: str) -> str:
 @pytest.mark.parametrize("old,new,match", [
     ('v_B = { mm = 70, where = "3.1.2" }', 'v_Z = { mm = 70, where = "3.1.2" }', r"no quantity 'v_Z'"),
     ("velocity = { mu = 6.58 }", "velocity = { mu = 0 }", r"scales\.velocity\.mu: .*scale of zero"),
-    ("phi_deg = 45", "phi_deg = 30", r"positions\[0\]\.phi_deg: position 30° is not in the scene"),
+    ("phi_deg = 45", "phi_deg = 30", r"\[\[positions\]\] entry 1, phi_deg: position 30° is not in the scene"),
     ('h_Phi2_B = { value = "65 mm"', "h_Phi2_B = { value = 65", r"h_Phi2_B: a length needs its unit"),
     ("format = 1", "format = 2", r"format: expected format = 1"),
     ('scene = "', 'scene = "missing/', r"scene: scene file"),

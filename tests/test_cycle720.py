@@ -351,7 +351,7 @@ def test_console_refuses_a_bad_formula_in_one_line(tmp_path, capsys):
     f.write_text(TURNING.read_text().replace('"15000 + 7000*sin(2*phi)"', '"15000 + 7000*sin(2*phi"'))
     assert main(["solve", str(f), "--quiet"]) == 2
     err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and "loads.moment[0].expression" in err and str(f) in err
+    assert len(err.splitlines()) == 1 and "[[loads.moment]] entry 1, expression" in err and str(f) in err
 
 
 # --------------------------------------------------------------------------- positions by travel

@@ -119,7 +119,7 @@ def test_each_position_one_bordered_block_on_one_sheet_in_angle_order(drawings, 
             assert _inside((x, y, x + p.width, y + p.height), f.box), p.pid
             assert not any(_inside((x, y, x + p.width, y + p.height), g.box) for g in sh.frames if g is not f)
         for f in sh.frames:
-            k = sorted(where).index(f.phi)
+            k = sorted(where).index(f.phi) + 1  # numbered from 1 ([sheet] first_position)
             assert f.heading.startswith(f"Положение {k}, φ = "), f.heading
         for a, b in itertools.combinations(sh.frames, 2):
             assert shapely.box(*a.box).distance(shapely.box(*b.box)) >= GAP - 1e-6
@@ -299,14 +299,14 @@ def test_positions_panel_numbers_every_position(slider_positions):
     def numbers(point: str) -> list[list[str]]:
         return [p.label.plain.replace(point, "").split(", ") for p in texts if p.eid.startswith(f"positions-n-{point}-")]
 
-    a, b = numbers("A"), numbers("B")
-    assert sorted(int(x) for g in a for x in g) == list(range(kin.n))
+    a, b = numbers("A"), numbers("B")  # numbered from 1 by default ([sheet] first_position)
+    assert sorted(int(x) for g in a for x in g) == list(range(1, kin.n + 1))
     assert len(a) == kin.n  # the crank pin never repeats a place
-    assert sorted(int(x) for g in b for x in g) == list(range(kin.n))
-    assert len(b) == kin.n // 2 + 1  # a centred slider-crank: B_k = B_{12-k}
-    assert ["1", "11"] in b and ["0"] in b
+    assert sorted(int(x) for g in b for x in g) == list(range(1, kin.n + 1))
+    assert len(b) == kin.n // 2 + 1  # a centred slider-crank: B_k = B_{14-k}
+    assert ["2", "12"] in b and ["1"] in b
     plain = {p.label.plain for p in texts}
-    assert "A0" in plain and "B0" in plain  # the letter once, at position 0
+    assert "A1" in plain and "B1" in plain  # the letter once, at the first position
     boxes = [shapely.box(*p.label.box) for p in panel.prims if p.op == "text"]
     assert not [(i, j) for (i, x), (j, y) in itertools.combinations(enumerate(boxes), 2)
                 if x.intersection(y).area > 0.01]

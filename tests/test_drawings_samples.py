@@ -248,3 +248,113 @@ def test_a1_sheets_are_not_left_empty(drawn):
     _, d, _ = drawn
     fills = [_drawn_part(sh) for sh in d.sheets]
     assert min(fills) >= 0.3 and sum(fills) / len(fills) >= 0.4, [round(f, 2) for f in fills]
+
+
+def _arrows(prims, kind: str = "force"):
+    """(id, length mm) of every vector drawn: a group's shaft starts at its tail, its head
+    polygon's first point is its tip (drawings.common.arrow)."""
+    import math
+
+    out = []
+    for i, p in enumerate(prims):
+        if p.op == "begin" and kind in p.cls.split():
+            line = next(q for q in prims[i + 1:] if q.op == "line")
+            head = next((q for q in prims[i + 1:i + 4] if q.op == "polygon"), None)
+            tip = head.pts[0] if head is not None else line.pts[1]
+            out.append((p.eid, math.dist(line.pts[0], tip)))
+    return out
+
+
+def test_no_force_arrow_on_a_free_body_shorter_than_legible(drawn):
+    """Every force of every group diagram and initial link of every position at least
+    MIN_ARROW_MM long, and a panel that lengthened one says so (†, not to scale)."""
+    from drawings.forces_panels import MIN_ARROW_MM
+
+    _, d, _ = drawn
+    seen = 0
+    for panel in d.panels:
+        if panel.kind not in ("group", "crank"):
+            continue
+        arrows = _arrows(panel.prims)
+        seen += len(arrows)
+        short = [(e, round(L, 3)) for e, L in arrows if L < MIN_ARROW_MM - 1e-9]
+        assert not short, (panel.pid, short)
+        marked = [q for q in panel.prims if q.op == "text" and q.label and "†" in q.label.plain
+                  and not q.eid.endswith("-scale")]
+        said = [q for q in panel.prims if q.op == "text" and q.eid.endswith("-scale") and "†" in q.label.plain]
+        assert bool(marked) == bool(said), panel.pid
+    if any(p.kind == "group" for p in d.panels):
+        assert seen > 0
+
+
+def test_couples_at_one_point_spread_apart(drawn):
+    """Two couples on one point of a free body (M_c and M_Φ3 at S3) drawn on different arcs."""
+    _, d, _ = drawn
+    for panel in d.panels:
+        if panel.kind not in ("group", "crank"):
+            continue
+        arcs = [p for p in panel.prims if p.op == "arc" and p.style is not None and p.style.cls == "moment"]
+        keys = [(round(a.pts[0][0], 3), round(a.pts[0][1], 3), round(a.r, 3)) for a in arcs]
+        assert len(keys) == len(set(keys)), panel.pid
+
+
+def test_slotted_link_drawn_through_its_block(drawn):
+    """On a group diagram that holds a coulisse (a guide carried by a link of the group), the
+    slot runs through the block's pin and past both ends of the block: no floating block."""
+    import math
+
+    from drawings.common import ident, phi_tag
+    from drawings.panels import BLOCK_L
+
+    path, d, _ = drawn
+    scene = d.scene
+    moving = [jt for jt in scene.joints if jt.kind == "P" and jt.guide is not None and jt.guide.link != scene.frame]
+    seen = 0
+    for panel in d.panels:
+        if panel.kind != "group" or not moving:
+            continue
+        name = panel.pid[len("group-"):-len(phi_tag(panel.phi)) - 1]
+        links = {int(x) for x in name.split("-") if x.isdigit()}
+        for jt in moving:
+            if jt.guide.link not in links or jt.slider not in links:
+                continue
+            block = [p for p in panel.prims if p.op == "polygon" and p.eid.endswith(f"-slider-{ident(jt.point)}")]
+            slot = [p for p in panel.prims if p.op == "line" and p.eid.endswith(f"-slot-{ident(jt.point)}")]
+            assert block and slot, (panel.pid, jt.point)
+            corners = block[0].pts
+            c = (sum(x for x, _ in corners) / 4, sum(y for _, y in corners) / 4)
+            (a, b) = slot[0].pts
+            L = math.dist(a, b)
+            ux, uy = (b[0] - a[0]) / L, (b[1] - a[1]) / L
+            off = abs((c[0] - a[0]) * uy - (c[1] - a[1]) * ux)
+            t = (c[0] - a[0]) * ux + (c[1] - a[1]) * uy
+            assert off < 1e-6, (panel.pid, off)
+            assert BLOCK_L / 2 < t < L - BLOCK_L / 2, (panel.pid, t, L)
+            seen += 1
+    if path.stem in ("whitworth", "shaper", "six_bar"):  # a coulisse with its block in one group
+        assert seen > 0
+
+
+def gost_letters(svg: str | bytes) -> list[tuple[str, float]]:
+    """(id, size) of every text under GOST 2.304's 2.5 mm, and of every index (a tspan written
+    smaller than its text) under the standard's smallest size, 1.8 mm.  Title-block cells the
+    user fills (names, date, title) may shrink to fit their cell and are not counted."""
+    root = ET.fromstring(svg)
+    bad = []
+    for t in root.iter(f"{SVG}text"):
+        eid = t.get("id") or ""
+        user = eid.startswith("tb-") and not eid.startswith(("tb-h-", "tb-sheet", "tb-scale"))
+        base = float(t.get("font-size"))
+        if base < 2.5 - 1e-9 and not user:
+            bad.append((eid, base))
+        for sp in t.iter(f"{SVG}tspan"):
+            fs = sp.get("font-size")
+            if fs is not None and float(fs) < min(1.8, base) - 1e-9:
+                bad.append((eid, float(fs)))
+    return bad
+
+
+def test_letters_at_least_gost_2_5_mm_on_every_sheet(drawn):
+    _, d, _ = drawn
+    for sh in d.sheets:
+        assert gost_letters(sh.svg()) == [], sh.number

@@ -319,7 +319,7 @@ def test_bad_friction_names_the_field(extra, field):
 def test_a_slide_has_no_pin_radius():
     text = SLIDER.format(r=50, l=180, e=0, f=0.1, q=10, phis=[30]).replace("f = 0.1", "f = 0.1\npin_radius = 3")
     scene = parse_scene(text, "bad.toml")
-    with pytest.raises(InputError, match=r"joints\[3\]\.pin_radius"):
+    with pytest.raises(InputError, match=r"\[\[joints\]\] entry 4, pin_radius"):
         kinetostatics(scene, solve(scene, order=2))
 
 

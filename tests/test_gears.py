@@ -521,7 +521,9 @@ def test_ring_tip_bad_input_names_the_key(edit, field):
     text = open(PLANETARY, encoding="utf-8").read().replace(*edit, 1)
     with pytest.raises(InputError) as exc:
         parse_gears(tomllib.loads(text), "p.toml")
-    assert f"p.toml: {field}:" in str(exc.value) and "\n" not in str(exc.value)
+    from plans.errors import field_name
+
+    assert f"p.toml: {field_name(field)}:" in str(exc.value) and "\n" not in str(exc.value)
 
 
 @pytest.mark.parametrize("language", ["ru", "en"])

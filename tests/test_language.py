@@ -13,15 +13,15 @@ from plans.cli import main
 
 SAMPLES = Path(__file__).resolve().parent.parent / "samples"
 
-#: Scenes whose cycle dynamics or kinematic diagrams are still printed in English.
-_ENGLISH_PARTS = {"dynamics_slider_crank", "single_four_stroke", "v_engine_cycle", "v_twin_four_stroke",
-                  "v_engine_project"}
+#: Scenes whose output is still printed in English in part (none: every sample is scanned).
+_ENGLISH_PARTS: set[str] = set()
 
 _SCENES = sorted([*SAMPLES.glob("*.toml"), *SAMPLES.glob("projects/*.toml")])
 _RUNS = ([("solve", p, ["--protocol"]) for p in _SCENES]
          + [("gears", p, []) for p in sorted(SAMPLES.glob("gears/*.toml"))]
          + [("cam", p, []) for p in sorted(SAMPLES.glob("cams/*.toml"))]
-         + [("balance", p, []) for p in sorted(SAMPLES.glob("engines/*.toml"))])
+         + [("balance", p, []) for p in sorted(SAMPLES.glob("engines/*.toml"))]
+         + [("design", p, []) for p in sorted(SAMPLES.glob("synthesis/*.toml"))])
 
 #: Latin words a Russian text may hold: the textbook's functions.  Besides these, a Latin run
 #: of letters is a symbol only when it is one letter (v, a, h, l, x, i in F_ij...), capitals

@@ -120,6 +120,7 @@ SOLVERS = {
     "plans.cycle.results": {"solve_cycle"},
     "plans.cycle.diagrams": {"diagrams"},
     "plans.cycle.dynamics": {"dynamics"},
+    "plans.kinematics.extreme": {"strokes"},
     "plans.forces.loads": {"ignition", "parse_loads"},
     "plans.kinematics.centres": {"centres_at", "velocities_at", "kennedy", "primary"},
 }

@@ -210,8 +210,8 @@ def test_a_huge_crank_angle_is_reduced_exactly():
 
 
 def test_did_you_mean_and_the_shared_key_check():
-    assert did_you_mean("omega_rmp", ["omega", "omega_rpm", "eps"]) == "; did you mean 'omega_rpm'?"
-    assert did_you_mean("output", ["outputs", "title"]) == "; did you mean 'outputs'?"
+    assert str(did_you_mean("omega_rmp", ["omega", "omega_rpm", "eps"])) == "; did you mean 'omega_rpm'?"
+    assert str(did_you_mean("output", ["outputs", "title"])) == "; did you mean 'outputs'?"
     assert did_you_mean("zzz", ["outputs"]) == ""
     from plans.errors import InputError
 

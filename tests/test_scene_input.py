@@ -67,13 +67,13 @@ def test_round_trip_of_the_test_writer(tmp_path, capsys):
 
 BAD = [
     ("malformed", lambda d: None, "format = 1\n[links\n", r"scene\.toml.*malformed TOML.*line 2"),
-    ("unknown point", lambda d: d["joints"][1].update(point="Q"), None, r"joints\[1\]\.point: point 'Q' is not on link 1"),
+    ("unknown point", lambda d: d["joints"][1].update(point="Q"), None, r"\[\[joints\]\] entry 2, point: point 'Q' is not on link 1"),
     ("zero length", lambda d: d["links"]["2"].update(length=0), None, r"links\.2\.length: expected a positive length"),
     ("negative length", lambda d: d["links"]["1"].update(length=-5), None, r"links\.1\.length: expected a positive length"),
     ("mobility", lambda d: d["joints"].append({"kind": "R", "links": [2, 4], "point": "O"}) or d["links"]["2"].update(points={"O": {"along": 10}}), None, r"joints: mobility W = .* expected W = 1"),
     ("unknown output", lambda d: d.update(outputs=["velocity_plan", "vibes"]), None, r"outputs: unknown output 'vibes'"),
     ("angle not a number", lambda d: d["driver"].update(phi_deg=["forty"]), None, r"driver\.phi_deg: expected a number of degrees"),
-    ("unknown link", lambda d: d["joints"][0].update(links=[9, 1]), None, r"joints\[0\]\.links: unknown link 9"),
+    ("unknown link", lambda d: d["joints"][0].update(links=[9, 1]), None, r"\[\[joints\]\] entry 1, links: unknown link 9"),
     ("format", lambda d: d.update(format=2), None, r"format: expected format = 1"),
     ("bad unit", lambda d: d.update(unit="inch"), None, r"unit: expected one of"),
     ("length unit", lambda d: d["links"]["2"].update(length="180 furlong"), None, r"links\.2\.length: expected a length"),

@@ -46,7 +46,7 @@ def test_plans_too_big_for_a4_are_drawn_at_smaller_round_scales(tmp_path):
     A4 fit's, the one written on the panel."""
     path = tmp_path / "shaper.toml"
     path.write_text((ROOT / "samples" / "shaper.toml").read_text(encoding="utf-8")
-                    + '\n[sheet]\npanels = { acceleration = [0, 6], forces = "none", lever = "none" }\n',
+                    + '\n[sheet]\npanels = { acceleration = [1, 7], forces = "none", lever = "none" }\n',
                     encoding="utf-8")
     scene = load_scene(path)
     at_fit = solve(scene, fit=scene.sheet_for(format="A4").fit)

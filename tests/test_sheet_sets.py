@@ -54,7 +54,7 @@ def test_twelve_positions_give_a_kinematics_sheet_and_a_kinetostatics_sheet(cour
     assert {p.phi for p, _, _ in dyn.placed} == {0.0, 30.0}
     assert {"scheme", "group", "polygon", "crank", "lever"} <= set(_kinds(dyn))
     assert not {"velocity", "acceleration", "positions"} & set(_kinds(dyn))
-    assert [f.heading.split(",")[0] for f in dyn.frames] == ["Положение 0", "Положение 1"]
+    assert [f.heading.split(",")[0] for f in dyn.frames] == ["Положение 1", "Положение 2"]
 
 
 def test_the_velocity_plans_come_before_the_acceleration_plans(course):
@@ -73,7 +73,7 @@ def test_the_velocity_plans_come_before_the_acceleration_plans(course):
 
 def test_panels_choose_the_positions_of_each_kind(tmp_path):
     p = _scene_with(tmp_path, "four_bar",
-                    'panels = { velocity = [0, 3, 6], acceleration = [3], forces = [6], lever = "none" }')
+                    'panels = { velocity = [1, 4, 7], acceleration = [4], forces = [7], lever = "none" }')
     d = draw(p)
     placed = [pl for sh in d.sheets for pl, _, _ in sh.placed]
     at = {kind: sorted({pl.phi for pl in placed if pl.kind == kind}) for kind in
@@ -88,7 +88,7 @@ def test_the_positions_set_keeps_a_block_per_position(tmp_path):
     p = _scene_with(tmp_path, "four_bar", 'set = "positions"\npositions = [0, 90]')
     d = draw(p)
     heads = [f.heading for sh in d.sheets for f in sh.frames]
-    assert [h.split(",")[0] for h in heads] == ["Положение 0", "Положение 3"]
+    assert [h.split(",")[0] for h in heads] == ["Положение 1", "Положение 4"]
     assert draw(SAMPLES / "v_engine.toml").sheets[0].frames  # fewer than 12 positions: blocks
 
 
@@ -111,8 +111,8 @@ def test_bad_sheet_set_or_panels_one_line_naming_the_field(sheet, field, words):
 
 
 def test_a_position_number_the_scene_has_not(tmp_path):
-    p = _scene_with(tmp_path, "slider_crank", "panels = { forces = [12] }")
-    with pytest.raises(InputError, match=r"sheet\.panels\.forces: no position 12; the positions are numbered 0 to 11"):
+    p = _scene_with(tmp_path, "slider_crank", "panels = { forces = [13] }")
+    with pytest.raises(InputError, match=r"sheet\.panels\.forces: no position 13; the positions are numbered 1 to 12"):
         draw(p)
 
 

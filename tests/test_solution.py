@@ -218,6 +218,7 @@ def test_plans_draw_solves_each_scene_once(path, monkeypatch):
     for part in ("plans", "forces", "cycle"):
         getattr(sol, part)
     sol.revolution()
+    sol.strokes()  # the output's extreme positions on the plan of positions
     if not scene.wants("velocity_plan"):
         sol.analogue_plans()
     solves.clear()

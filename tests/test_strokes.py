@@ -120,7 +120,7 @@ def test_a_resisting_force_on_both_strokes_warns(capsys):
     _forces(_scene("shaper", force={"name": "F_c", "link": 5, "point": "E", "resisting": 1000,
                                         "along": 0}))
     err = capsys.readouterr().err
-    assert "warning" in err and "loads.force[0].resisting" in err and "F_c" in err and "idle" in err
+    assert "warning" in err and "[[loads.force]] entry 1, resisting" in err and "F_c" in err and "idle" in err
     assert err.count("\n") == 1  # once per scene
     for stroke in ("working", "both", "positive"):
         _forces(_scene("shaper", force={"name": "F_c", "link": 5, "point": "E", "resisting": 1000,
@@ -134,7 +134,7 @@ def test_a_resisting_moment_warns_in_the_scenes_language(capsys):
     data["sheet"] = dict(data.get("sheet", {}), language="ru")
     _forces(scene_from_dict(data, "four_bar.toml"))
     err = capsys.readouterr().err
-    assert "внимание" in err and "холостом" in err and "loads.moment[0].resisting" in err
+    assert "внимание" in err and "холостом" in err and "[[loads.moment]] № 1, resisting" in err
 
 
 def test_no_warning_when_the_strokes_take_equal_time(capsys):
@@ -177,7 +177,7 @@ def test_a_force_by_the_sign_of_its_velocity_on_the_fast_stroke_only_warns(capsy
         _forces(_scene("whitworth", force={"name": "F_c", "link": 5, "point": "E", "resisting": 1500, "along": 0,
                                            "stroke": stroke}))
         err = capsys.readouterr().err
-        assert ("idle (fast) stroke only" in err and "loads.force[0].stroke" in err) == warned, (stroke, err)
+        assert ("idle (fast) stroke only" in err and "[[loads.force]] entry 1, stroke" in err) == warned, (stroke, err)
 
 
 @pytest.mark.parametrize("load", [
@@ -202,3 +202,16 @@ def test_no_resisting_moment_at_the_rockers_extreme():
     fa = _forces(scene_from_dict(data, "four_bar.toml"))[0]
     M = next(m for m in fa.applied.moments if m.label == "M_c").M
     assert M[0] == 0 and np.all(np.abs(M[1:5]) == 40)
+
+
+def test_the_warning_is_advice_to_the_fuzzer_not_a_broken_promise(tmp_path):
+    """A scene accepted with a warning keeps the bad-input promise (status 0, advice on stderr)."""
+    from plans.accuracy import fuzz
+
+    data = read_toml(ROOT / "samples" / "four_bar.toml")
+    del data["loads"]["moment"][0]["stroke"]
+    sample = fuzz.Sample(ROOT / "samples" / "four_bar.toml", data, fuzz._kind_argv("linkage", False), "four_bar.toml",
+                         kind="linkage")
+    res = fuzz.run_case(sample, fuzz.to_toml(data).encode("utf-8"), tmp_path)
+    assert res.ok and res.status == 0, res.why
+    assert fuzz._without_advice("plans: warning: x\nplans: error: y\n") == "plans: error: y\n"

@@ -306,7 +306,7 @@ def test_the_reader_names_the_key():
         task(mechanism="slider_crank", stroke=100, K=1.4, offset=10, **{"lambda": 0.3})
     with pytest.raises(InputError, match="K: expected the coefficient"):
         task(mechanism="slider_crank", stroke=100, K=0.5, **{"lambda": 0.3})
-    with pytest.raises(InputError, match=r"task.loads.gas\[0\].diameter: expected a finite number"):
+    with pytest.raises(InputError, match=r"\[\[task.loads.gas\]\] entry 1, diameter: expected a finite number"):
         task(mechanism="slider_crank", stroke=100, task={"loads": {"gas": [{"diameter": math.nan}]}},
              **{"lambda": 0.3})
     with pytest.raises(InputError, match="task.masses.7"):

@@ -9,7 +9,9 @@ truncated TOML) and run through its command in-process.  A case keeps the promis
 * it refuses it with status 2 and exactly one line ``plans: error: ...`` on stderr,
   having written nothing and changed no input.
 
-Anything else (an exception that escapes, another status, a warning printed, NaN or inf
+Either may say on stderr, one line each, what looks implausible in the file (``plans:
+warning: ...``, a resisting load on the fast stroke, say): the file's own advice, not a
+failure.  Anything else (an exception that escapes, another status, a Python warning, NaN or inf
 in an output) is a failure, reported with the file that caused it.  The same mutations
 drive the Hypothesis test in the test suite (a fixed budget, derandomized).
 """
@@ -212,14 +214,14 @@ def run_case(sample: Sample, raw: bytes, tmp: Path, draw: bool = False, json_out
         except Exception as exc:  # noqa: BLE001 - this is what the fuzzer looks for
             tb = traceback.extract_tb(exc.__traceback__)[-1]
             return Result(False, None, f"{type(exc).__name__}: {exc} (at {Path(tb.filename).name}:{tb.lineno})")
-    err = stderr.getvalue()
+    err = _without_advice(stderr.getvalue())
     if caught:
         w = caught[0]
         return Result(False, status, f"warning printed: {w.category.__name__}: {w.message} "
                                      f"({Path(w.filename).name}:{w.lineno})")
     if status == 2:
         lines = err.splitlines()
-        if len(lines) != 1 or not lines[0].startswith("plans: error: ") or "Traceback" in err:
+        if len(lines) != 1 or not lines[0].startswith(("plans: error: ", "plans: ошибка: ")) or "Traceback" in err:
             return Result(False, status, f"refusal is not one line: {err[:300]!r}")
         if _snapshot(tmp) != before:
             return Result(False, status, "refused, but files were written or changed")
@@ -228,7 +230,8 @@ def run_case(sample: Sample, raw: bytes, tmp: Path, draw: bool = False, json_out
         return Result(False, status, f"status {status}: {err[:300]!r}")
     if over_input is not None:
         return Result(False, status, f"--json spelt as the input ({over_input}) was accepted")
-    if err.strip():
+    # an implausible file may be warned about (plans.plausible); nothing else is said
+    if any(not line.startswith(("plans: warning: ", "plans: внимание: ")) for line in err.splitlines()):
         return Result(False, status, f"accepted, but printed on stderr: {err[:300]!r}")
     if src.read_bytes() != raw:
         return Result(False, status, "the input file was changed")
@@ -262,8 +265,8 @@ def _draw(src: Path, tmp: Path, main: Callable[[list[str]], int]) -> Result:
     if caught:
         return Result(False, status, f"draw: warning printed: {caught[0].message}")
     if status == 2:
-        lines = stderr.getvalue().splitlines()
-        ok = len(lines) == 1 and lines[0].startswith("plans: error: ")
+        lines = _without_advice(stderr.getvalue()).splitlines()
+        ok = len(lines) == 1 and lines[0].startswith(("plans: error: ", "plans: ошибка: "))
         return Result(ok, 2, "" if ok else f"draw: refusal is not one line: {stderr.getvalue()[:300]!r}")
     if status != 0:
         return Result(False, status, f"draw: status {status}")
@@ -312,6 +315,16 @@ def _read(kind: str, data: dict[str, Any], path: str) -> None:
         from plans.check.checkfile import check_from_dict
 
         check_from_dict(data, path)
+
+
+#: The lines a command may print about an implausible file it accepts (its advice, in
+#: either language): not a failure.
+ADVICE = ("plans: warning: ", "plans: внимание: ")
+
+
+def _without_advice(err: str) -> str:
+    """stderr without the advice lines."""
+    return "".join(line for line in err.splitlines(keepends=True) if not line.startswith(ADVICE))
 
 
 def read_case(sample: Sample, raw: bytes, tmp: Path) -> Result:

@@ -57,9 +57,17 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from plans.errors import InputError
+from plans.errors import InputError, Said
 from plans.io import loads_toml, read_toml
-from plans.reader import NUMBER_FLOOR, NUMBER_LIMIT, Reader, bad_character, check_keys, did_you_mean
+from plans.reader import (
+    NUMBER_FLOOR,
+    NUMBER_LIMIT,
+    Reader,
+    bad_character,
+    check_keys,
+    did_you_mean,
+    show,
+)
 from plans.scene.model import Scene, load_scene, scene_from_dict
 from plans.units import LENGTH_UNITS
 
@@ -170,7 +178,7 @@ def parse_check(text: str, path: str = "<check>") -> CheckFile:
     return check_from_dict(loads_toml(text, path), path)
 
 
-def _fail(path: str, field: str, msg: str) -> InputError:
+def _fail(path: str, field: str, msg: str | Said) -> InputError:
     return InputError(msg, file=path, field=field)
 
 
@@ -184,7 +192,7 @@ def check_from_dict(data: dict[str, Any], path: str = "<check>") -> CheckFile:
     check_top(data, path, "check", _TOP)
     student = data.get("student", Path(path).stem)
     if not isinstance(student, str):
-        raise _fail(path, "student", "expected a string (the student's name)")
+        raise _fail(path, "student", Said("c_student"))
     Reader(path).string(student, "student")
     if "title" in data:
         Reader(path).string(data["title"], "title", limit=2000)
@@ -192,20 +200,21 @@ def check_from_dict(data: dict[str, Any], path: str = "<check>") -> CheckFile:
     sheet = data.get("sheet")
     if sheet is not None and not (isinstance(sheet, str) and sheet in SHEETS):
         hint = did_you_mean(sheet, SHEETS) if isinstance(sheet, str) else ""
-        raise _fail(path, "sheet", f"expected one of {sorted(SHEETS)}, got {sheet!r}{hint}")
+        raise _fail(path, "sheet", Said("e_choice", options=", ".join(repr(s) for s in sorted(SHEETS)), got=show(sheet),
+                                          hint=hint))
     scales = _scales(path, data.get("scales"))
     tol = _tolerance(path, data.get("tolerance", {}))
     raw = data.get("positions")
     if not isinstance(raw, list) or not raw:
-        raise _fail(path, "positions", "expected at least one [[positions]] with phi_deg")
+        raise _fail(path, "positions", Said("c_positions"))
     blank = [isinstance(b, dict) and _blank(b) for b in raw]
     if all(blank):
-        raise _fail(path, "positions", "nothing written at any position: fill in the student's figures")
+        raise _fail(path, "positions", Said("c_nothing_anywhere"))
     positions = tuple(_position(path, k, body, scene) for k, body in enumerate(raw) if not blank[k])
     seen: set[float] = set()
     for pos in positions:
         if pos.phi_deg in seen:
-            raise _fail(path, f"{pos.field}.phi_deg", f"position phi_deg = {pos.phi_deg:g} given twice")
+            raise _fail(path, f"{pos.field}.phi_deg", Said("c_twice", phi=pos.phi_deg))
         seen.add(pos.phi_deg)
     rubric = read_rubric(path, data.get("rubric", {}), "rubric")
     return CheckFile(path=path, student=student, scene=scene, scales=scales, tolerance=tol,
@@ -221,13 +230,13 @@ def _blank(body: dict[str, Any]) -> bool:
 def read_rubric(path: str, raw: Any, where: str) -> tuple[tuple[str, float], ...]:
     """A [rubric] table: ``full`` and the points each kind of mistake costs."""
     if not isinstance(raw, dict):
-        raise _fail(path, where, "expected a table of deductions, e.g. coriolis_reversed = 15")
+        raise _fail(path, where, Said("c_rubric"))
     check_keys(raw, RUBRIC_KEYS, file=path, where=f"{where}.")
     out = []
     for key, value in raw.items():
         if isinstance(value, bool) or not isinstance(value, int | float) or \
                 not (isinstance(value, int) or math.isfinite(value)) or not 0 <= value <= 1e6:
-            raise _fail(path, f"{where}.{key}", f"expected a number of points from 0 to 1e6, got {value!r}")
+            raise _fail(path, f"{where}.{key}", Said("c_points", got=show(value)))
         out.append((key, float(value)))
     return tuple(out)
 
@@ -238,33 +247,33 @@ SHEETS = {"A1": (841.0, 594.0), "A2": (594.0, 420.0), "A3": (420.0, 297.0), "A4"
 
 def _scene(path: str, raw: Any) -> Scene:
     if raw is None:
-        raise _fail(path, "scene", "missing: a scene file path or an inline [scene] table")
+        raise _fail(path, "scene", Said("c_scene_missing"))
     if isinstance(raw, str):
         target = Path(raw)
         if not target.is_absolute():
             target = Path(path).parent / target
         if not target.is_file():
-            raise _fail(path, "scene", f"scene file {raw!r} not found (looked at {target})")
+            raise _fail(path, "scene", Said("c_scene_not_found", name=raw, target=str(target)))
         if target.resolve() == Path(path).resolve():
-            raise _fail(path, "scene", "names the check file itself; expected the scene file")
+            raise _fail(path, "scene", Said("c_scene_self"))
         return load_scene(target)
     if isinstance(raw, dict):
         return scene_from_dict(raw, f"{path} [scene]")
-    raise _fail(path, "scene", "expected a path (string) or an inline [scene] table")
+    raise _fail(path, "scene", Said("c_scene_type"))
 
 
 def _positive(path: str, field: str, value: Any, limit: float = 1e9, floor: float = 1e-9) -> float:
     if isinstance(value, bool) or not isinstance(value, int | float) or \
             (isinstance(value, float) and not math.isfinite(value)):
-        raise _fail(path, field, f"expected a positive number, got {value!r}")
+        raise _fail(path, field, Said("e_positive", got=show(value)))
     if value <= 0:
-        raise _fail(path, field, f"expected a positive scale, got {value!r} (a scale of zero draws nothing)")
+        raise _fail(path, field, Said("c_scale_positive", got=show(value)))
     return Reader(path).value(value, field, positive=True, limit=limit, floor=floor)
 
 
 def _scales(path: str, raw: Any) -> dict[str, float]:
     if not isinstance(raw, dict):
-        raise _fail(path, "scales", "missing table [scales] with the student's μv, μa (and μl, μF)")
+        raise _fail(path, "scales", Said("c_scales"))
     style = Reader(path).choice(raw, "style", "scales.", ("mu", "K"), "mu")
     check_keys(raw, ("style", *SCALE_KINDS), file=path, where="scales.")
     out: dict[str, float] = {}
@@ -273,7 +282,7 @@ def _scales(path: str, raw: Any) -> dict[str, float]:
             continue  # a blank of the form: not given
         if isinstance(value, dict):
             if len(value) != 1 or not ({"mu", "K"} & set(value)):
-                raise _fail(path, f"scales.{key}", "expected { mu = mm per unit } or { K = unit per mm }")
+                raise _fail(path, f"scales.{key}", Said("e_scale"))
             kind = "mu" if "mu" in value else "K"
             x = _positive(path, f"scales.{key}.{kind}", value[kind])
         else:
@@ -287,7 +296,7 @@ def _scales(path: str, raw: Any) -> dict[str, float]:
 
 def _tolerance(path: str, raw: Any) -> Tolerance:
     if not isinstance(raw, dict):
-        raise _fail(path, "tolerance", "expected a table [tolerance]")
+        raise _fail(path, "tolerance", Said("e_table"))
     known = {"model", "segment_mm", "direction_deg", "rule_pct", "arithmetic_pct", "balance_base"}
     check_keys(raw, known, file=path, where="tolerance.")
     model = Reader(path).choice(raw, "model", "tolerance.", TOLERANCE_MODELS, "draftsman")
@@ -318,42 +327,42 @@ def half_ulp(x: float | int) -> float:
 def _position(path: str, k: int, body: Any, scene: Scene) -> StudentPosition:
     where = f"positions[{k}]"
     if not isinstance(body, dict):
-        raise _fail(path, where, "expected a table")
+        raise _fail(path, where, Said("e_table"))
     check_keys(body, ("phi_deg", "measured", "values", "where"), file=path, where=f"{where}.")
     phi = body.get("phi_deg")
     if isinstance(phi, bool) or not isinstance(phi, int | float) or \
             (isinstance(phi, float) and not math.isfinite(phi)) or abs(phi) > 1e300:
-        raise _fail(path, f"{where}.phi_deg", f"expected the crank angle in degrees, got {phi!r}")
+        raise _fail(path, f"{where}.phi_deg", Said("c_phi", got=show(phi)))
     phis = scene.driver.phis_deg
     idx = next((i for i, p in enumerate(phis) if abs(p - phi) < 1e-9), None)
     if idx is None:
-        raise _fail(path, f"{where}.phi_deg",
-                    f"position {phi:g}° is not in the scene (it has {', '.join(f'{p:g}°' for p in phis)})")
+        raise _fail(path, f"{where}.phi_deg", Said("c_phi_not_in_scene", phi=float(phi),
+                                                    has=", ".join(f"{p:g}°" for p in phis)))
     default_where = body.get("where", "")
     if not isinstance(default_where, str):
-        raise _fail(path, f"{where}.where", "expected a string")
+        raise _fail(path, f"{where}.where", Said("c_string"))
     measured = _entries(path, f"{where}.measured", body.get("measured", {}), "measured", default_where)
     values = _entries(path, f"{where}.values", body.get("values", {}), "value", default_where)
     if not measured and not values:
-        raise _fail(path, where, "nothing written: expected [positions.measured] and/or [positions.values]")
+        raise _fail(path, where, Said("c_nothing"))
     return StudentPosition(float(phi), idx, tuple(measured), tuple(values), where)
 
 
 def _entries(path: str, where: str, raw: Any, kind: str, default_where: str) -> list[Written]:
     if not isinstance(raw, dict):
-        raise _fail(path, where, "expected a table of quantity = figure")
+        raise _fail(path, where, Said("c_figures"))
     out = []
     for name, spec in raw.items():
         if spec == "":
             continue  # a blank of the form: not written
         if bad_character(name) or len(name) > 200:
-            raise _fail(path, f"{where}.{name!r}", "not a quantity name (e.g. v_B, omega_2, a_BA^τ, F_12)")
+            raise _fail(path, f"{where}.{name!r}", Said("c_not_a_name"))
         q = canonical(name)
         if not _NAME.match(q.replace("^τ", "^τ")):
-            raise _fail(path, f"{where}.{name}", "not a quantity name (e.g. v_B, omega_2, a_BA^τ, F_12)")
+            raise _fail(path, f"{where}.{name}", Said("c_not_a_name"))
         items = [x for x in spec if x != ""] if isinstance(spec, list) else [spec]
         if not items:
-            raise _fail(path, f"{where}.{name}", "expected at least one figure")
+            raise _fail(path, f"{where}.{name}", Said("c_one_figure"))
         for j, item in enumerate(items):
             f = f"{where}.{name}" + (f"[{j}]" if isinstance(spec, list) else "")
             out.append(_one(path, f, q, item, kind, default_where))
@@ -368,27 +377,27 @@ def _one(path: str, field: str, q: str, item: Any, kind: str, default_where: str
                    where=f"{field}.")
         loc = item.get("where", default_where)
         if not isinstance(loc, str):
-            raise _fail(path, f"{field}.where", "expected a string (the section of the student's work)")
+            raise _fail(path, f"{field}.where", Said("c_where"))
         if "length" in item and kind == "value":
             item = item["length"]
         elif key not in item:
-            raise _fail(path, field, f"missing {key}")
+            raise _fail(path, field, Said("c_missing", key=key))
         else:
             item = item[key]
     if kind == "measured":
         mm, hu = _length_mm(path, field, item, need_unit=False)
         if mm < 0:
-            raise _fail(path, field, f"a measured segment cannot be negative, got {item!r}")
+            raise _fail(path, field, Said("c_negative", got=show(item)))
         return Written(q, mm, kind, loc, field, hu)
     if LENGTH_QUANTITY.match(q):
         mm, hu = _length_mm(path, field, item, need_unit=True)
         return Written(q, mm * 1e-3, kind, loc, field, hu * 1e-3)
     if isinstance(item, bool) or not isinstance(item, int | float) or \
             (isinstance(item, float) and not math.isfinite(item)) or abs(item) > NUMBER_LIMIT:
-        raise _fail(path, field, f"expected a number in SI units (magnitude at most {NUMBER_LIMIT:g}), "
-                                 f"got {item if isinstance(item, float) else type(item).__name__}")
+        raise _fail(path, field, Said("c_si", limit=NUMBER_LIMIT,
+                                      got=show(item)))
     if item != 0 and abs(item) < NUMBER_FLOOR:
-        raise _fail(path, field, f"expected 0 or a magnitude of at least {NUMBER_FLOOR:g}, got {item!r}")
+        raise _fail(path, field, Said("e_floor", floor=NUMBER_FLOOR, got=show(item)))
     return Written(q, float(item), kind, loc, field, half_ulp(item))
 
 
@@ -398,12 +407,12 @@ _LEN = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([a-zA-Z]*
 def _length_mm(path: str, field: str, item: Any, *, need_unit: bool) -> tuple[float, float]:
     """A length in mm and half its last typed digit (mm)."""
     if isinstance(item, bool):
-        raise _fail(path, field, f"expected a length, got {item!r}")
+        raise _fail(path, field, Said("c_length", got=show(item)))
     if isinstance(item, int | float):
         if need_unit:
-            raise _fail(path, field, f"a length needs its unit: write '{item} mm' or '{item} m'")
+            raise _fail(path, field, Said("c_unit", item=item))
         if (isinstance(item, float) and not math.isfinite(item)) or abs(item) > 1e7:
-            raise _fail(path, field, "expected a finite length of at most 10 km")
+            raise _fail(path, field, Said("c_finite_length"))
         return float(item), half_ulp(item)
     if isinstance(item, str):
         m = _LEN.match(item)
@@ -412,10 +421,10 @@ def _length_mm(path: str, field: str, item: Any, *, need_unit: bool) -> tuple[fl
             if unit in LENGTH_UNITS:
                 number = m.group(1)
                 if not (abs(float(number)) * LENGTH_UNITS[unit] <= 1e4):
-                    raise _fail(path, field, f"expected a finite length of at most 10 km, got {item!r}")
+                    raise _fail(path, field, Said("c_finite_length_got", got=show(item)))
                 hu = half_ulp(float(number)) if "." in number else 0.5
                 factor = LENGTH_UNITS[unit] / 1e-3
                 return float(number) * factor, hu * factor
             if need_unit and not unit:
-                raise _fail(path, field, f"a length needs its unit: write '{item} mm' or '{item} m'")
-    raise _fail(path, field, f"expected a length such as '65 mm' or '0.065 m', got {item!r}")
+                raise _fail(path, field, Said("c_unit", item=item))
+    raise _fail(path, field, Said("c_length_such", got=show(item)))

@@ -16,11 +16,12 @@ from plans.check.report import (
     csv_text,
     error_line,
     make_folder,
+    report_language,
     summary_row,
     table,
     write_summary,
 )
-from plans.errors import OutputError, PlansError, one_line
+from plans.errors import OutputError, PlansError, Said, one_line, run_language
 from plans.guard import abandon
 from plans.io import dumps, refuse_input, write_all
 from plans.io import remove as remove_files
@@ -49,6 +50,9 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                                                          "student, one worksheet per group (the gradebook)")
     p.add_argument("--rubric", metavar="RUBRIC.toml", help="with --xlsx: weights per sheet, pass threshold, marks")
     p.add_argument("--jobs", type=int, default=1, metavar="N", help="with --xlsx: check in N processes")
+    from plans.language import add_option
+
+    add_option(p)
     p.set_defaults(func=run)
     return p
 
@@ -82,7 +86,7 @@ def run(args: argparse.Namespace) -> int:
 
         return run_template(args)
     if not args.path:
-        error_line("expected a check file, a CSV form or a folder (or --template SCENE)")
+        error_line(Said("k_nothing").text(run_language()))
         return 2
     target = Path(args.path)
     try:
@@ -93,9 +97,8 @@ def run(args: argparse.Namespace) -> int:
 
             return run_form(target, args)
         if not target.exists():
-            why = "a symbolic link to no readable file (a loop, or its target gone)" if target.is_symlink() \
-                else "no such file or folder"
-            error_line(f"{target}: {why}")
+            why = Said("k_link") if target.is_symlink() else Said("k_no_file")
+            error_line(f"{target}: {why.text(run_language())}")
             return 2
         for out_path in (args.json, args.csv):
             refuse_input(out_path, target)
@@ -109,31 +112,32 @@ def run(args: argparse.Namespace) -> int:
         if done is not None:
             return done
         report = check_file(target)
+        lang = report_language(args, report)
         for out_path in (args.json, args.csv):
             refuse_input(out_path, report.check.scene.path)
         files: dict[Path, Any] = {}
         if args.json and args.json != "-":
-            files[Path(args.json)] = dumps(report.to_json())
+            files[Path(args.json)] = dumps(report.to_json(lang))
         if args.csv and args.csv != "-":
-            files[Path(args.csv)] = csv_text([summary_row(str(target), report)])
+            files[Path(args.csv)] = csv_text([summary_row(str(target), report, lang=lang)], lang)
         if args.out:
             out = Path(args.out)
-            files[out / f"{target.stem}.json"] = dumps(report.to_json())
-            files[out / f"{target.stem}.txt"] = table(report) + "\n"
+            files[out / f"{target.stem}.json"] = dumps(report.to_json(lang))
+            files[out / f"{target.stem}.txt"] = table(report, lang) + "\n"
         for out_path in (args.json, args.csv):
             if out_path and out_path != "-" and not Path(out_path).parent.is_dir():
-                raise OutputError(f"{out_path}: no such folder {Path(out_path).parent}")
+                raise OutputError(Said("k_no_folder", path=out_path, folder=str(Path(out_path).parent)))
         files.update(_extra(args, report, target))
         for folder in sorted({p.parent for p in files}):
             make_folder(folder)
         written = write_all(files)
         _after(args, target, True)
         if args.json == "-":
-            sys.stdout.write(dumps(report.to_json()))
+            sys.stdout.write(dumps(report.to_json(lang)))
         elif args.csv == "-":
-            sys.stdout.write(csv_text([summary_row(str(target), report)]))
+            sys.stdout.write(csv_text([summary_row(str(target), report, lang=lang)], lang))
         if not args.quiet and args.json != "-" and args.csv != "-":
-            print(table(report))
+            print(table(report, lang))
             for p in written:
                 if p.suffix in (".svg", ".pdf", ".png"):
                     print(p)
@@ -152,7 +156,7 @@ def run(args: argparse.Namespace) -> int:
 
 def _batch(folder: Path, args: argparse.Namespace) -> int:
     if args.json:
-        error_line(f"{folder}: --json is for one file; a folder writes one report per file into --out")
+        error_line(f"{folder}: {Said('k_json_folder').text(run_language())}")
         return 2
     files = sorted(p for p in folder.glob("*.toml") if p.is_file())
     from plans.check.forms import is_scene
@@ -169,7 +173,7 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
     files = [f for f in files if f not in scenes]
     beside = scenes[0] if len(scenes) == 1 else None
     if not files:
-        error_line(f"{folder}: no check files (*.toml)")
+        error_line(f"{folder}: {Said('k_no_checks').text(run_language())}")
         return 2
     out = Path(args.out) if args.out else folder / "reports"
     make_folder(out)
@@ -189,22 +193,24 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
             srep = None if cycle_check.is_cycle_check(f) else sheet_check_of(f)
             if cycle_check.is_cycle_check(f):  # cycle tables: a report, no marked sheet
                 crep = cycle_check.check_cycle(f)
-                outputs, row = cycle_check.outputs(crep, f, out), cycle_check.summary_row(str(f), crep)
+                lang = report_language(args)
+                outputs, row = cycle_check.outputs(crep, f, out, lang), cycle_check.summary_row(str(f), crep, lang)
             elif srep is not None:  # a gears or cam sheet
-                outputs, row = sheet_outputs(srep, f, out)
+                outputs, row = sheet_outputs(srep, f, out, report_language(args))
             else:
                 report = _check_beside(f, beside)
-                outputs = {out / f"{f.stem}.json": dumps(report.to_json()),
-                           out / f"{f.stem}.txt": table(report) + "\n"}
+                lang = report_language(args, report)
+                outputs = {out / f"{f.stem}.json": dumps(report.to_json(lang)),
+                           out / f"{f.stem}.txt": table(report, lang) + "\n"}
                 outputs.update(_extra(args, report, f))
-                row = summary_row(str(f), report)
+                row = summary_row(str(f), report, lang=lang)
             for sub in sorted({p.parent for p in outputs}):
                 make_folder(sub)
             write_all(outputs)
         except PlansError as exc:
             bad += 1
             error_line(one_line(exc))
-            rows.append(summary_row(str(f), None, str(exc)))
+            rows.append(summary_row(str(f), None, str(exc), lang=report_language(args)))
             remove_files(reports)  # a report of an earlier run would look current
             _after(args, f, False)
             continue

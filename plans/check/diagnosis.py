@@ -31,6 +31,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from plans import quantities
+from plans.check import wording as wd
 from plans.check.checkfile import RUBRIC, RUBRIC_KEYS  # noqa: F401  (read here and from here)
 from plans.check.mistakes import KINDS, Slip, describe, inventory, replay
 from plans.check.providers import Context, exact_value
@@ -52,11 +53,20 @@ class Cause:
     kind: str
     positions: tuple[float, ...]
     explains: tuple[str, ...]  # quantity names of the figures it explains
-    detail: str
+    detail: str  # in English (the report's JSON); ``words`` writes it in either language
     deduction: float
     items: tuple[int, ...] = ()  # indices of the report's items it explains
     findings: tuple[int, ...] = ()  # indices of the report's findings it accounts for
     superseded: tuple[int, ...] = ()  # findings it makes moot ("was the wrong segment measured?")
+    words: wd.Words | None = field(default=None, repr=False, compare=False)
+
+    def text(self, lang: str = "en") -> str:
+        """The mistake in ``lang``, quantities as that language writes them."""
+        if self.words is None or lang != "ru":
+            return self.detail
+        from plans.language import quantity_name
+
+        return self.words.render(lang, lambda q: quantity_name(q, lang))
 
     def to_json(self) -> dict:
         return {"kind": self.kind, "positions": list(self.positions), "explains": list(self.explains),
@@ -81,7 +91,7 @@ class _Model:
 
     kind: str
     key: tuple  # causes with the same key at several positions merge
-    detail: str
+    detail: wd.Words
     positions: set[float]
     pred: dict[int, tuple[float | None, float | None]] = field(default_factory=dict)
     base: int = 0  # tie-break: larger is less likely
@@ -166,7 +176,8 @@ def _plan_models(sh: _Sheet) -> list[_Model]:
                 model.positions.add(pos.phi_deg)
             elif s.kind == "wrong_segment":
                 w = next(w for w in reads if items[w[0]].quantity == s.target)
-                model = _Model("wrong_segment", ("wrong_segment", s.target, pos.phi_deg), "", {pos.phi_deg})
+                model = _Model("wrong_segment", ("wrong_segment", s.target, pos.phi_deg), wd.say("ca_kind", kind=""),
+                               {pos.phi_deg})
                 model.pred, model.detail = {}, _wrong_model(sh, *w).detail
                 out.append(model)
             else:
@@ -205,11 +216,11 @@ def _fit(pairs: list[tuple[Any, Any]]) -> float | None:
     return r
 
 
-def _scale_drawn(s: Slip, scales: dict[str, float]) -> str:
+def _scale_drawn(s: Slip, scales: dict[str, float]) -> wd.Words:
     sym = "μv" if s.target == "velocity" else "μa"
     mu = scales[s.target]
-    return (f"the {s.target} plan drawn at {sym} = {mu * s.factor:.4g} mm per unit while {sym} = {mu:.4g} is "
-            f"written and used ({s.factor:.3f}×)")
+    return wd.say("ca_scale_drawn", plan=wd.say("ca_plan_nom", kind=wd.plan(s.target)), sym=sym,
+                  drawn=wd.n(mu * s.factor, ".4g"), mu=wd.n(mu, ".4g"), f=wd.n(s.factor, ".3f"))
 
 
 def _value_scale_models(sh: _Sheet) -> list[_Model]:
@@ -230,10 +241,10 @@ def _value_scale_models(sh: _Sheet) -> list[_Model]:
             continue
         used = mu / c
         sym = "μv" if kind == "velocity" else "μa"
-        how = f"divided by {used:.4g} instead of {sym} = {mu:.4g}"
+        how = wd.say("ca_divided", used=wd.n(used, ".4g"), sym=sym, mu=wd.n(mu, ".4g"))
         if abs(used * mu - 1) < 0.02:
-            how = f"multiplied by {sym} = {mu:.4g} instead of divided (μ and K confused)"
-        m = _Model("scale", ("scale", "values", kind), f"the {kind} values: segments {how}",
+            how = wd.say("ca_multiplied", sym=sym, mu=wd.n(mu, ".4g"))
+        m = _Model("scale", ("scale", "values", kind), wd.say("ca_values_scale", kind=wd.plan(kind), how=how),
                    {sh.items[i].phi_deg for i in idx}, free=True)
         for i in idx:
             m.pred[i] = (c * sh.items[i].exact, None)
@@ -277,8 +288,8 @@ def _wrong_model(sh: _Sheet, i: int, a: str, b: str, d: float) -> _Model:
     it = sh.items[i]
     assert it.segment is not None
     m = _Model("wrong_segment", ("wrong_segment", it.quantity, it.phi_deg),
-               f"{it.quantity} measured between {a} and {b} ({d:.1f} mm) instead of "
-               f"{it.segment[0]} and {it.segment[1]} on the {it.plan} plan", {it.phi_deg}, base=0)
+               wd.say("ca_wrong_segment", q=wd.q(it.quantity), a=wd.q(a), b=wd.q(b), d=wd.n(d, ".1f"), c=it.segment[0],
+                      e=it.segment[1], kind=wd.plan(it.plan or "")), {it.phi_deg}, base=0)
     for j, other in enumerate(sh.items):
         if other.phi_deg == it.phi_deg and other.segment == it.segment and other.plan == it.plan and sh.mu[j] \
                 and (other.quantity == it.quantity or j in sh.fails):  # ω from it: if the student used it
@@ -307,7 +318,7 @@ def _force_models(sh: _Sheet) -> list[_Model]:
         if abs(ti.exact - tj.exact) <= max(ti.tolerance, tj.tolerance):
             continue
         model = _Model("reaction_swapped", ("reaction_swapped", base[2:], phi),
-                       f"{base}^τ and {base}^n swapped (the components along and across the link)",
+                       wd.say("ca_reaction", n=base[2:]),
                        {phi})
         model.pred[i] = (tj.exact, None)
         model.pred[j] = (ti.exact, None)
@@ -362,8 +373,7 @@ def _inertia_models(sh: _Sheet) -> list[_Model]:
             continue
         fa0 = reversed_couple(ctx, lid)
         model = _Model("inertia_sign", ("inertia_sign", lid),
-                       f"the inertia couple M_Φ{lid} = I{lid}·ε{lid} applied with the wrong sense "
-                       f"(along ε{lid}, not against it)", {p.phi_deg for p in ctx.cf.positions})
+                       wd.say("ca_couple", i=str(lid)), {p.phi_deg for p in ctx.cf.positions})
         for i, it in enumerate(sh.items):
             if it.source == "forces":
                 v = couple_value(fa, fa0, it.quantity, sh.k_of[it.phi_deg])
@@ -458,7 +468,8 @@ def diagnose(ctx: Context, items: tuple[Item, ...], findings: tuple[Finding, ...
         if f.kind != "scale" or owner_of(f) is not None:
             continue
         hits = {i for i in open_ if items[i].quantity in f.quantities}
-        row: _Row = ("scale", ("scale", "findings", f.message), f.message,
+        assert f.words is not None  # every finding of the check has its words
+        row: _Row = ("scale", ("scale", "findings", f.message), f.words,
                      {items[i].phi_deg for i in hits} or {p.phi_deg for p in ctx.cf.positions}, hits, [fi],
                      f.quantities)
         extra.append(row)
@@ -486,8 +497,9 @@ def diagnose(ctx: Context, items: tuple[Item, ...], findings: tuple[Finding, ...
         phi = f.phi_deg
         hits = {i for i in open_ if items[i].quantity == target and (phi is None or items[i].phi_deg == phi)}
         key: tuple = (kind,) if kind == "pi_rounded" else (kind, target, phi)
-        detail = "ω1 = πn/30 computed with π = 3.14" if kind == "pi_rounded" else \
-            f"{target} does not follow from the student's own figures: {f.message.split(': ', 1)[-1]}"
+        assert f.words is not None  # every finding of the check has its words
+        detail = wd.say("ca_pi") if kind == "pi_rounded" else \
+            wd.say("ca_not_follow", q=wd.q(target), what=wd.tail(f.words))
         extra.append((kind, key, detail, {phi} if phi is not None else set(), hits, [fi], ()))
         open_ -= hits
     causes = _merge(chosen, by_cause, extra, items, rub)
@@ -500,7 +512,7 @@ def diagnose(ctx: Context, items: tuple[Item, ...], findings: tuple[Finding, ...
     return Diagnosis(tuple(causes), unexplained, tuple(left), max(0.0, round(mark, 1)), rub)
 
 
-_Row = tuple[str, tuple, str, set[float], set[int], list[int], tuple[str, ...]]
+_Row = tuple[str, tuple, wd.Words, set[float], set[int], list[int], tuple[str, ...]]
 
 
 def _constants(ctx: Context, items: tuple[Item, ...], open_: set[int]) -> list[_Row]:
@@ -514,9 +526,9 @@ def _constants(ctx: Context, items: tuple[Item, ...], open_: set[int]) -> list[_
     out: list[_Row] = []
     for kind, powers, ratio, detail in (
             ("pi_rounded", {f"omega_{d.link}": 1, f"v_{pin}": 1, f"a_{pin}": 2}, PI_ROUNDED / math.pi,
-             "ω1 = πn/30 computed with π = 3.14"),
+             wd.say("ca_pi")),
             ("g_rounded", {f"G_{lid}": 1 for lid in scene.links}, G_ROUNDED / 9.81,
-             "the weights computed with g = 10 m/s² instead of 9.81")):
+             wd.say("ca_g"))):
         if kind == "pi_rounded" and "omega_rpm" not in scene.raw.get("driver", {}):
             continue
         phis: set[float] = set()
@@ -558,8 +570,8 @@ def _merge(chosen: list[tuple[_Model, set[int]]], by_cause: dict[int, list[int]]
         detail = g["detail"]
         its = sorted(g["items"])
         names = tuple(dict.fromkeys([items[i].quantity for i in its] + g["names"]))
-        out.append(Cause(kind, tuple(sorted(g["phis"])), names, detail, rub.get(kind, 0.0), tuple(its),
-                         tuple(sorted(g["findings"]))))
+        out.append(Cause(kind, tuple(sorted(g["phis"])), names, detail.render("en"), rub.get(kind, 0.0), tuple(its),
+                         tuple(sorted(g["findings"])), words=detail))
     out.sort(key=lambda c: (-c.deduction, -len(c.items), _RANK.get(c.kind, 99)))
     return out
 

@@ -71,8 +71,16 @@ class Finding:
            where: tuple[str, ...] = (), fields: tuple[str, ...] = ()) -> Finding:
         return cls(kind, words.render("en"), phi_deg, quantities, where, fields, words)
 
-    def to_json(self) -> dict:
-        return {"kind": self.kind, "message": self.message, "phi_deg": self.phi_deg,
+    def text(self, lang: str = "en") -> str:
+        """The finding in ``lang``, quantities as that language writes them."""
+        if self.words is None or lang != "ru":
+            return self.message
+        from plans.language import quantity_name
+
+        return self.words.render(lang, lambda q: quantity_name(q, lang))
+
+    def to_json(self, lang: str = "en") -> dict:
+        return {"kind": self.kind, "message": self.text(lang), "phi_deg": self.phi_deg,
                 "quantities": list(self.quantities), "where": list(self.where), "fields": list(self.fields)}
 
 
@@ -81,12 +89,16 @@ class Unchecked:
     quantity: str
     phi_deg: float
     student: float
-    reason: str
+    reason: str  # in English; ``words`` writes it in either language
     where: str
+    words: wd.Words | None = None
 
-    def to_json(self) -> dict:
+    def text(self, lang: str = "en") -> str:
+        return self.words.render(lang) if self.words is not None and lang == "ru" else self.reason
+
+    def to_json(self, lang: str = "en") -> dict:
         return {"quantity": self.quantity, "phi_deg": self.phi_deg, "student": self.student,
-                "reason": self.reason, "where": self.where}
+                "reason": self.text(lang), "where": self.where}
 
 
 def consistent(w: Written, m: Written, mm_per_unit: float, rel: float, read_mm: float = 0.0) -> bool:
@@ -100,13 +112,13 @@ def consistent(w: Written, m: Written, mm_per_unit: float, rel: float, read_mm: 
 # --------------------------------------------------------------------------- consistency
 
 
-def fmt(x: float) -> str:
-    """A computed number, four significant digits (whole numbers above 10 000)."""
+def fmt(x: float, lang: str = "en") -> str:
+    """A computed number, four significant digits (whole numbers above 10 000); a decimal
+    comma in Russian."""
     if x == 0:
         return "0"
-    if abs(x) >= 1e4:
-        return f"{x:.0f}"
-    return f"{x:.4g}"
+    s = f"{x:.0f}" if abs(x) >= 1e4 else f"{x:.4g}"
+    return s.replace(".", ",") if lang == "ru" else s
 
 
 def as_written(w: Written) -> str:

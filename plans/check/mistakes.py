@@ -21,6 +21,7 @@ from typing import Any
 
 import numpy as np
 
+from plans.check import wording as wd
 from plans.kinematics.cases import cross, unit
 from plans.kinematics.construction import plans_of
 from plans.kinematics.dyads import Builder, Scheme
@@ -258,22 +259,22 @@ def effective(kin: Kinematics, k: int, mv: float, ma: float | None, slips: list[
     return [s for s, m in zip(slips, moved, strict=True) if m]
 
 
-def describe(s: Slip) -> str:
-    """The slip in a teacher's words (English; the report's)."""
-    plan = f"the {s.phase} plan"
+def describe(s: Slip) -> wd.Words:
+    """The slip in a teacher's words (its English the report's ``detail``)."""
+    on = wd.say("ca_plan", kind=wd.plan(s.phase))
     if s.kind == "coriolis_reversed":
-        return f"the Coriolis vector a^k_{s.target[2:]} laid off the wrong way on {plan}"
+        return wd.say("ca_coriolis", t=s.target[2:], plan=on)
     if s.kind == "normal_from_pole":
         toks = _tokens(s.target[2:])
         name = f"a_{s.target[2:]}^n"
         if s.variant == "sense":
-            return f"the normal component {name} laid off away from {toks[-1] if toks else 'the centre'} (the wrong sense)"
-        return f"the normal component {name} laid off from the pole instead of from the image of {toks[-1]}"
+            return wd.say("ca_normal_sense", name=name, end=toks[-1] if toks else wd.say("ca_the_centre"))
+        return wd.say("ca_normal_pole", name=name, end=toks[-1])
     if s.kind == "tangential_wrong_line":
-        return f"the line {s.target} on {plan} drawn along the link instead of across it"
+        return wd.say("ca_tangential", t=s.target, plan=on)
     if s.kind == "similarity":
-        how = "from the wrong end of the link" if s.variant == "wrong_end" else "with the ratio of lengths inverted"
-        return f"the image {s.target} of {s.point} (link {s.link}) on {plan} found by similarity {how}"
+        how = wd.say("ca_wrong_end") if s.variant == "wrong_end" else wd.say("ca_inverted")
+        return wd.say("ca_similarity", t=s.target, point=s.point, link=str(s.link), plan=on, how=how)
     if s.kind == "scale":
-        return f"{plan} drawn at {s.factor:.4g} × the scale written on the sheet"
-    return s.kind
+        return wd.say("ca_scale_drawn_at", plan=wd.say("ca_plan_nom", kind=wd.plan(s.phase)), f=wd.n(s.factor, ".4g"))
+    return wd.say("ca_kind", kind=s.kind)

@@ -51,6 +51,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
+from plans.check import wording as wd
 from plans.check.checkfile import CheckFile, StudentPosition, Written, load_check
 from plans.check.diagnosis import Diagnosis, diagnose
 from plans.check.findings import (
@@ -68,7 +69,7 @@ from plans.check.findings import (
 )
 from plans.check.providers import STUDENT_ONLY, Context, Exact, exact_value, known_quantities
 from plans.check.relations import relation_findings
-from plans.errors import InputError, OutputError, PlansError
+from plans.errors import InputError, OutputError, PlansError, Said, os_reason
 from plans.io import atomic_write
 from plans.units import DUST, percent
 
@@ -120,7 +121,9 @@ class Report:
     def findings_of(self, kind: str) -> list[Finding]:
         return [f for f in self.findings if f.kind == kind]
 
-    def to_json(self) -> dict:
+    def to_json(self, lang: str = "en") -> dict:
+        """The report as JSON: its keys always as written, its sentences (a finding's
+        message, a mistake's detail, a reason) in ``lang``."""
         cf = self.check
         t = cf.tolerance
         return {
@@ -132,15 +135,15 @@ class Report:
             "tolerance": {"model": t.model, "segment_mm": t.segment_mm, "direction_deg": t.direction_deg,
                           "rule_pct": t.rule_pct, "arithmetic_pct": t.arithmetic_pct,
                           "balance_base": t.balance_base},
-            "causes": [c.to_json() for c in self.causes],
+            "causes": [{**c.to_json(), "detail": c.text(lang)} for c in self.causes],
             "unexplained": list(dict.fromkeys(i.quantity for i in self.unexplained)),
             "unexplained_items": [{"quantity": i.quantity, "phi_deg": i.phi_deg, "field": i.field}
                                   for i in self.unexplained],
             "mark": self.mark,
             "rubric": dict(self.diagnosis.rubric) if self.diagnosis is not None else {},
             "items": [i.to_json() for i in self.items],
-            "findings": [{**f.to_json(), "cause": self._cause_of(n)} for n, f in enumerate(self.findings)],
-            "unchecked": [u.to_json() for u in self.unchecked],
+            "findings": [{**f.to_json(lang), "cause": self._cause_of(n)} for n, f in enumerate(self.findings)],
+            "unchecked": [u.to_json(lang) for u in self.unchecked],
             "summary": {"items": len(self.items), "passed": self.passed, "failed": self.failed,
                         "findings": len(self.findings), "unchecked": len(self.unchecked),
                         "causes": len(self.causes), "unexplained": len(self.unexplained),
@@ -172,13 +175,12 @@ def check(cf: CheckFile) -> Report:
                     for w in pos.written(q):
                         m = re.fullmatch(r"h_([A-Za-z_0-9]+?)_([A-Z][a-z0-9]*)", q)
                         if q == "F_bal_diff_pct":
-                            reason = "the student's own figure (checked for consistency)"
+                            why = wd.say("ch_own_figure")
                         elif m:
-                            reason = (f"the exact analysis has no arm of {m.group(1)} about {m.group(2)} "
-                                      f"(a load it does not apply, or another moment equation)")
+                            why = wd.say("ch_no_arm", load=m.group(1), point=m.group(2))
                         else:
-                            reason = "a lever arm named by the student: name it h_<load>_<point> (e.g. h_Phi2_B)"
-                        unchecked.append(Unchecked(q, pos.phi_deg, w.value, reason, w.where))
+                            why = wd.say("ch_arm_name")
+                        unchecked.append(Unchecked(q, pos.phi_deg, w.value, why.render("en"), w.where, why))
                     continue
                 w0 = pos.written(q)[0]
                 known = ", ".join(known_quantities(ctx, k))
@@ -265,124 +267,192 @@ def _items(cf: CheckFile, pos: StudentPosition, q: str, ex: Exact) -> list[Item]
 
 
 
-def _num(x: float | None, unit: str = "") -> str:
+def _num(x: float | None, unit: str = "", lang: str = "en") -> str:
     if x is None:
         return "—"
-    return fmt(x) + (f" {unit}" if unit else "")
+    return fmt(x, lang) + (f" {unit}" if unit else "")
 
 
-def table(report: Report) -> str:
-    """The readable terminal report."""
+def say_line(key: str, lang: str, **values: Any) -> str:
+    """A line of the report (:data:`plans.language.CHECK_TERMS`) in ``lang``."""
+    from plans.language import CHECK_TERMS
+
+    return CHECK_TERMS[key][1 if lang == "ru" else 0].format(**values)
+
+
+def unit_word(unit: str, lang: str) -> str:
+    from plans.language import UNITS_RU
+
+    return UNITS_RU.get(unit, unit) if lang == "ru" else unit
+
+
+def decimal(text: str, lang: str) -> str:
+    """A number already written, with a decimal comma in Russian."""
+    return text.replace(".", ",") if lang == "ru" else text
+
+
+def _scale_text(kind: str, mu: float, lang: str) -> str:
+    sym = {"length": "μl", "velocity": "μv", "acceleration": "μa", "force": "μF"}.get(kind, kind) \
+        if lang == "ru" else kind
+    return say_line("ch_scale", lang, kind=sym, mu=decimal(f"{mu:.4g}", lang),
+                unit=unit_word(_SCALE_UNIT.get(kind, "mm/unit"), lang))
+
+
+def table(report: Report, lang: str = "en") -> str:
+    """The readable terminal report, in ``lang``."""
+    from plans.language import quantity_name
+
+    def qn(q: str) -> str:
+        return quantity_name(q, lang)
+
     cf = report.check
     t = cf.tolerance
-    model = (f"draftsman: ±{t.segment_mm:g} mm per segment, ±{t.direction_deg:g}° per direction, "
-             f"propagated; else course rule ±{t.rule_pct:g} %" if t.model == "draftsman"
-             else f"course rule ±{t.rule_pct:g} %")
-    lines = [f"Check of {cf.student} — {cf.scene.title}",
-             f"  file {cf.path}; scales " + ", ".join(f"{k} {v:.4g} {_SCALE_UNIT.get(k, 'mm/unit')}" for k, v in cf.scales.items()),
-             f"  tolerance: {model}"]
-    lines += _causes_text(report)
+    d = lambda x: decimal(f"{x:g}", lang)  # noqa: E731 - a number of the tolerance as written
+    model = (say_line("ch_draftsman", lang, seg=d(t.segment_mm), dir=d(t.direction_deg), rule=d(t.rule_pct))
+             if t.model == "draftsman" else say_line("ch_rule", lang, rule=d(t.rule_pct)))
+    head_line = say_line("ch_file", lang, path=cf.path)
+    if cf.scales:
+        head_line += say_line("ch_scales", lang, scales=", ".join(_scale_text(k, v, lang) for k, v in cf.scales.items()))
+    lines = [say_line("ch_title", lang, student=cf.student, title=cf.scene.title), head_line,
+             say_line("ch_tolerance", lang, model=model)]
+    lines += _causes_text(report, lang)
     cause_no = {i: n for n, c in enumerate(report.causes, 1) for i in c.items}
-    head = f"  {'quantity':<16}{'student':>14}{'exact':>14}{'error':>10}{'err mm':>9}{'tol mm':>8}{'tol %':>8}  verdict  where"
+    w = {k: say_line(k, lang) for k in ("ch_quantity", "ch_student", "ch_exact", "ch_error", "ch_err_mm", "ch_tol_mm",
+                                    "ch_tol_pct", "ch_verdict", "ch_where")}
+    tw = 9 if lang == "ru" else 8  # "доп., мм"
+    head = (f"  {w['ch_quantity']:<16}{w['ch_student']:>14}{w['ch_exact']:>14}{w['ch_error']:>10}{w['ch_err_mm']:>9}"
+            f"{w['ch_tol_mm']:>{tw}}{w['ch_tol_pct']:>8}  {w['ch_verdict']}  {w['ch_where']}")
+    mm = unit_word("mm", lang)
     for pos in cf.positions:
         lines.append("")
-        lines.append(f"φ = {pos.phi_deg:g}°")
+        lines.append(f"φ = {d(pos.phi_deg)}°")
         lines.append(head)
         for n, it in enumerate(report.items):
             if it.phi_deg != pos.phi_deg:
                 continue
-            err = "—" if it.error_pct is None else f"{it.error_pct:+.1f} %"
-            emm = "—" if it.error_mm is None else f"{it.error_mm:+.2f}"
-            tmm = "—" if it.tolerance_mm is None else f"±{it.tolerance_mm:.2f}"
-            tp = "—" if it.tolerance_pct is None else f"±{it.tolerance_pct:.1f}"
-            mark = "pass" if it.verdict == "pass" else (f"FAIL #{cause_no[n]}" if n in cause_no else "FAIL")
+            err = "—" if it.error_pct is None else decimal(f"{it.error_pct:+.1f} %", lang)
+            emm = "—" if it.error_mm is None else decimal(f"{it.error_mm:+.2f}", lang)
+            tmm = "—" if it.tolerance_mm is None else decimal(f"±{it.tolerance_mm:.2f}", lang)
+            tp = "—" if it.tolerance_pct is None else decimal(f"±{it.tolerance_pct:.1f}", lang)
+            mark = say_line("ch_pass", lang) if it.verdict == "pass" else (
+                say_line("ch_fail_no", lang, n=cause_no[n]) if n in cause_no else say_line("ch_fail", lang))
             # only what the student wrote: a segment alone is shown in mm, its value is derived
-            shown = f"{fmt(it.student_mm)} mm" if it.figure == "measured" and it.student_mm is not None \
-                else _num(it.student)
-            lines.append(f"  {it.quantity:<16}{shown:>14}{_num(it.exact):>14}{err:>10}{emm:>9}{tmm:>8}"
-                         f"{tp:>8}  {mark:<7}  {it.where}  [{it.unit}{', rule' if it.tolerance_model == 'rule' else ''}]")
+            shown = f"{fmt(it.student_mm, lang)} {mm}" if it.figure == "measured" and it.student_mm is not None \
+                else _num(it.student, lang=lang)
+            rule = say_line("ch_rule_tag", lang) if it.tolerance_model == "rule" else ""
+            lines.append(f"  {qn(it.quantity):<16}{shown:>14}{_num(it.exact, lang=lang):>14}{err:>10}{emm:>9}"
+                         f"{tmm:>{tw}}{tp:>8}  {mark:<7}  {it.where}  [{unit_word(it.unit, lang)}{rule}]")
     if report.unchecked:
         lines.append("")
-        lines.append("Not compared:")
+        lines.append(say_line("ch_not_compared", lang))
         for u in report.unchecked:
-            lines.append(f"  φ = {u.phi_deg:g}°: {u.quantity} = {fmt(u.student)}{(' (' + u.where + ')') if u.where else ''}"
-                         f": {u.reason}")
+            lines.append(f"  φ = {d(u.phi_deg)}°: {qn(u.quantity)} = {fmt(u.student, lang)}"
+                         f"{(' (' + u.where + ')') if u.where else ''}: {u.text(lang)}")
     left = report.findings_left
     if left:
         lines.append("")
-        lines.append(f"Findings no mistake accounts for ({len(left)}):")
+        lines.append(say_line("ch_left", lang, n=len(left)))
         for f in left:
-            lines.append(f"  [{f.kind}] {f.message}")
+            lines.append(f"  [{kind_word(f.kind, lang)}] {f.text(lang)}")
     lines.append("")
-    lines.append(f"Summary: {len(report.items)} figures, {report.passed} pass, {report.failed} fail; "
-                 f"{len(report.causes)} mistakes, {len(report.unexplained)} failures unexplained, "
-                 f"{len(left)} other findings; mark {_mark(report)}")
+    lines.append(say_line("ch_summary", lang, items=len(report.items), passed=report.passed, failed=report.failed,
+                      causes=len(report.causes), unexplained=len(report.unexplained), left=len(left),
+                      mark=_mark(report, lang)))
     return "\n".join(lines)
 
 
-def _mark(report: Report) -> str:
+def kind_word(kind: str, lang: str) -> str:
+    """A finding's or a mistake's kind as the report tags it (the teacher's word in Russian)."""
+    if lang != "ru":
+        return kind
+    from plans.language import CAUSES, KINDS_RU
+
+    return KINDS_RU.get(kind) or (CAUSES[kind][1] if kind in CAUSES else kind)
+
+
+def _mark(report: Report, lang: str = "en") -> str:
     full = report.diagnosis.rubric.get("full", 100.0) if report.diagnosis is not None else 100.0
-    return f"{fmt(report.mark or 0.0)} of {fmt(full)}"
+    return say_line("ch_of", lang, mark=fmt(report.mark or 0.0, lang), full=fmt(full, lang))
 
 
-def _causes_text(report: Report) -> list[str]:
+def _causes_text(report: Report, lang: str = "en") -> list[str]:
     """The mistakes found, each with the figures it explains; then the failures no
     mistake explains."""
-    lines = ["", f"Mark: {_mark(report)}"]
+    from plans.language import quantity_name
+
+    lines = ["", say_line("ch_mark", lang, mark=_mark(report, lang))]
     if not report.causes and not report.unexplained:
-        lines.append("No mistakes found: every figure agrees with the exact analysis within the tolerance.")
+        lines.append(say_line("ch_no_mistakes", lang))
         return lines
-    lines.append(f"Mistakes ({len(report.causes)}):")
+    lines.append(say_line("ch_mistakes", lang, n=len(report.causes)))
     for n, c in enumerate(report.causes, 1):
-        at = ", ".join(f"{p:g}°" for p in c.positions)
-        lines.append(f"  #{n} [{c.kind}] {c.detail}" + (f" (φ = {at})" if at else "") + f"; −{fmt(c.deduction)}")
+        at = ", ".join(f"{decimal(f'{p:g}', lang)}°" for p in c.positions)
+        lines.append(f"  #{n} [{kind_word(c.kind, lang)}] {c.text(lang)}" + (f" (φ = {at})" if at else "")
+                     + f"; −{fmt(c.deduction, lang)}")
         if c.explains:
             n_fig = len(c.items) or len(c.explains)
-            lines.append(f"     explains {n_fig} figure{'s' if n_fig != 1 else ''}: {', '.join(c.explains)}")
+            lines.append(say_line("ch_explains", lang, n=n_fig, s="s" if n_fig != 1 else "",
+                              names=", ".join(quantity_name(q, lang) for q in c.explains)))
         for fi in c.findings:
-            lines.append(f"     [{report.findings[fi].kind}] {report.findings[fi].message}")
+            lines.append(f"     [{kind_word(report.findings[fi].kind, lang)}] {report.findings[fi].text(lang)}")
     if report.unexplained:
-        lines.append(f"Failures no mistake explains ({len(report.unexplained)}):")
+        lines.append(say_line("ch_unexplained", lang, n=len(report.unexplained)))
         for it in report.unexplained:
-            shown = f"{fmt(it.student_mm)} mm" if it.figure == "measured" and it.student_mm is not None \
-                else fmt(it.student)
-            lines.append(f"  φ = {it.phi_deg:g}°: {it.quantity} = {shown}{(' (' + it.where + ')') if it.where else ''}, "
-                         f"exact {fmt(it.exact)} {it.unit}")
+            shown = f"{fmt(it.student_mm, lang)} {unit_word('mm', lang)}" \
+                if it.figure == "measured" and it.student_mm is not None else fmt(it.student, lang)
+            lines.append(say_line("ch_unexplained_item", lang, phi=decimal(f"{it.phi_deg:g}", lang),
+                              q=quantity_name(it.quantity, lang), shown=shown,
+                              where=f" ({it.where})" if it.where else "", exact=fmt(it.exact, lang),
+                              unit=unit_word(it.unit, lang)))
     return lines
 
 
 CSV_FIELDS = ("file", "student", "status", "mark", "causes", "unexplained", "items", "passed", "failed",
               "findings", "worst", "worst_error_pct", "worst_tol", "message")
+#: The CSV's columns as a Russian table heads them.
+CSV_FIELDS_RU = ("файл", "студент", "статус", "оценка", "ошибки", "необъяснённые", "величин", "верно", "неверно",
+                 "замечаний", "худшая", "худшая_ошибка_%", "худшая_в_допусках", "сообщение")
 
 
-def summary_row(path: str, report: Report | None, error: str | None = None) -> dict[str, Any]:
+def summary_row(path: str, report: Report | None, error: str | None = None, lang: str = "en") -> dict[str, Any]:
     if report is None:
-        return {"file": path, "student": "", "status": "error", "mark": "", "causes": "", "unexplained": "",
-                "items": "", "passed": "", "failed": "", "findings": "", "worst": "", "worst_error_pct": "",
-                "worst_tol": "", "message": error or ""}
+        return {"file": path, "student": "", "status": "error" if lang != "ru" else "ошибка", "mark": "",
+                "causes": "", "unexplained": "", "items": "", "passed": "", "failed": "", "findings": "", "worst": "",
+                "worst_error_pct": "", "worst_tol": "", "message": error or ""}
+    from plans.language import quantity_name
+
+    def at(q: str, phi: float) -> str:
+        return say_line("ch_at", lang, what=quantity_name(q, lang), phi=decimal(f"{phi:g}", lang))
+
     # the worst figure in units of its own tolerance: 0 mm against a short exact segment is
     # a fraction of a millimetre, not −100 %
     worst = max((i for i in report.items if i.tolerance > 0), key=_in_tolerances, default=None)
-    causes = "; ".join(c.kind + (f" at {','.join(f'{p:g}' for p in c.positions)}°" if c.positions else "")
-                       for c in report.causes)
-    unexplained = "; ".join(f"{i.quantity} at {i.phi_deg:g}°" for i in report.unexplained)
-    return {"file": path, "student": report.check.student, "status": "ok",
-            "mark": "" if report.mark is None else fmt(report.mark), "causes": causes, "unexplained": unexplained,
+    causes = "; ".join(kind_word(c.kind, lang) + (
+        f" {'при' if lang == 'ru' else 'at'} {','.join(decimal(f'{p:g}', lang) for p in c.positions)}°"
+        if c.positions else "") for c in report.causes)
+    unexplained = "; ".join(at(i.quantity, i.phi_deg) for i in report.unexplained)
+    return {"file": path, "student": report.check.student, "status": "ok" if lang != "ru" else "проверен",
+            "mark": "" if report.mark is None else fmt(report.mark, lang), "causes": causes,
+            "unexplained": unexplained,
             "items": len(report.items), "passed": report.passed, "failed": report.failed,
             "findings": len(report.findings_left),
-            "worst": "" if worst is None else f"{worst.quantity} at {worst.phi_deg:g}°",
-            "worst_error_pct": "" if worst is None or worst.error_pct is None else f"{worst.error_pct:.2f}",
-            "worst_tol": "" if worst is None else f"{_in_tolerances(worst):.2f}", "message": ""}
+            "worst": "" if worst is None else at(worst.quantity, worst.phi_deg),
+            "worst_error_pct": "" if worst is None or worst.error_pct is None else decimal(f"{worst.error_pct:.2f}", lang),
+            "worst_tol": "" if worst is None else decimal(f"{_in_tolerances(worst):.2f}", lang), "message": ""}
 
 
 def _in_tolerances(it: Item) -> float:
     return abs(it.student - it.exact) / it.tolerance if it.tolerance > 0 else 0.0
 
 
-def csv_text(rows: list[dict[str, Any]]) -> str:
+def csv_text(rows: list[dict[str, Any]], lang: str = "en") -> str:
+    """The summary table; in Russian its heads are Russian (the rows' keys stay)."""
     buf = io.StringIO()
     w = csv.DictWriter(buf, fieldnames=list(CSV_FIELDS), lineterminator="\n")
-    w.writeheader()
+    if lang == "ru":
+        w.writerow(dict(zip(CSV_FIELDS, CSV_FIELDS_RU, strict=True)))
+    else:
+        w.writeheader()
     for r in rows:
         w.writerow(r)
     return buf.getvalue()
@@ -401,8 +471,18 @@ def check_file(path: str | Path) -> Report:
 
 
 def error_line(msg: str) -> None:
-    """A user error of ``plans check`` as one line on stderr."""
-    print(f"plans: error: {' '.join(msg.split())}", file=sys.stderr)
+    """A user error of ``plans check`` as one line on stderr (in the run's language)."""
+    from plans.errors import error_prefix
+
+    print(f"{error_prefix()}{' '.join(msg.split())}", file=sys.stderr)
+
+
+def report_language(args: argparse.Namespace, report: Report | None = None) -> str:
+    """The report's language: ``--language``, else the scene's ``[sheet] language``, else
+    the locale's."""
+    from plans.language import choose
+
+    return choose(getattr(args, "language", None), report.check.scene.raw if report is not None else None)
 
 
 def make_folder(folder: Path) -> None:
@@ -410,20 +490,22 @@ def make_folder(folder: Path) -> None:
     try:
         folder.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
-        raise OutputError(f"cannot create the output folder {folder}: {exc.strerror}") from None
+        raise OutputError(Said("k_make_folder", folder=str(folder), why=os_reason(exc))) from None
 
 
 def write_summary(rows: list[dict[str, Any]], args: argparse.Namespace, out: Path) -> None:
     """summary.csv (or --csv, '-': stdout) and a line per file on the terminal."""
+    lang = report_language(args)
     if args.csv == "-":
-        sys.stdout.write(csv_text(rows))
+        sys.stdout.write(csv_text(rows, lang))
         return
-    atomic_write(Path(args.csv) if args.csv else out / "summary.csv", csv_text(rows))
+    atomic_write(Path(args.csv) if args.csv else out / "summary.csv", csv_text(rows, lang))
     if not args.quiet:
         for r in rows:
-            if r["status"] == "ok":
-                print(f"{r['file']}: {r['student']}: {r['passed']} pass, {r['failed']} fail, "
-                      f"{r['findings']} findings" + (f"; mark {r['mark']}" if r.get("mark") else "")
+            if r["status"] in ("ok", "проверен"):
+                print(say_line("ch_row_ok", lang, file=r["file"], student=r["student"], passed=r["passed"],
+                           failed=r["failed"], findings=r["findings"])
+                      + (say_line("ch_row_mark", lang, mark=r["mark"]) if r.get("mark") else "")
                       + (f"; {r['causes']}" if r.get("causes") else ""))
             else:
-                print(f"{r['file']}: not checked: {r['message']}")
+                print(say_line("ch_row_error", lang, file=r["file"], message=r["message"]))

@@ -272,45 +272,69 @@ def _exact_value(scene: Scene, kin: Any, name: str, rows: dict[str, tuple[np.nda
     return None
 
 
-def text(rep: CycleReport) -> str:
-    lines = [f"Check of {rep.student} — cycle tables of {rep.scene.title}", f"  file {rep.path}",
-             f"  {'quantity':<10}{'phi':>9}{'student':>12}{'exact':>12}{'error %':>9}  tolerance  verdict"]
+def text(rep: CycleReport, lang: str = "en") -> str:
+    from plans.check.report import decimal, say_line, unit_word
+    from plans.language import quantity_name
+
+    w = {k: say_line(k, lang) for k in ("ch_quantity", "ch_student", "ch_exact", "ch_error_pct", "ch_tolerance_col",
+                                    "ch_verdict")}
+    lines = [say_line("ch_cycle_title", lang, student=rep.student, title=rep.scene.title), say_line("ch_file", lang, path=rep.path),
+             f"  {w['ch_quantity']:<10}{'φ':>9}{w['ch_student']:>12}{w['ch_exact']:>12}{w['ch_error_pct']:>10}  "
+             f"{w['ch_tolerance_col']}  {w['ch_verdict']}"]
     for i in rep.items:
-        phi = "" if i.phi_deg is None else f"{i.phi_deg:g}"
-        lines.append(f"  {i.quantity:<10}{phi:>9}{i.student:>12.6g}{i.exact:>12.6g}{i.error_pct:>9.2f}  "
-                     f"{i.tolerance:<9}  {i.verdict}")
-    lines.append(f"  {len(rep.items)} figures: {rep.passed} pass, {rep.failed} fail")
+        phi = "" if i.phi_deg is None else decimal(f"{i.phi_deg:g}", lang)
+        verdict = say_line("ch_pass" if i.verdict == "pass" else "ch_fail", lang) if lang == "ru" else i.verdict
+        tol = decimal(i.tolerance, lang).replace(" mm", " " + unit_word("mm", lang))
+        lines.append(f"  {quantity_name(i.quantity, lang):<10}{phi:>9}{decimal(f'{i.student:.6g}', lang):>12}"
+                     f"{decimal(f'{i.exact:.6g}', lang):>12}{decimal(f'{i.error_pct:.2f}', lang):>10}  {tol:<9}  {verdict}")
+    lines.append(say_line("ch_cycle_sum", lang, n=len(rep.items), passed=rep.passed, failed=rep.failed))
     return "\n".join(lines)
 
 
-def csv_text(rep: CycleReport) -> str:
+#: The columns of a cycle check's CSV, and as a Russian table heads them.
+CSV_COLUMNS = ("quantity", "phi_deg", "student", "exact", "unit", "error_pct", "error_mm", "tolerance", "verdict",
+               "field")
+CSV_COLUMNS_RU = ("величина", "φ_град", "студент", "точно", "ед.", "ошибка_%", "ошибка_мм", "допуск", "оценка",
+                  "поле")
+
+
+def csv_text(rep: CycleReport, lang: str = "en") -> str:
     """One line per figure checked."""
     import csv
     import io
 
+    from plans.check.report import decimal, say_line, unit_word
+
+    ru = lang == "ru"
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
-    w.writerow(["quantity", "phi_deg", "student", "exact", "unit", "error_pct", "error_mm", "tolerance", "verdict",
-                "field"])
+    w.writerow(CSV_COLUMNS_RU if ru else CSV_COLUMNS)
     for i in rep.items:
-        w.writerow([i.quantity, "" if i.phi_deg is None else repr(i.phi_deg), repr(i.student), repr(i.exact), i.unit,
-                    f"{i.error_pct:.4f}", "" if i.error_mm is None else f"{i.error_mm:.4f}", i.tolerance, i.verdict,
-                    i.field])
+        num = (lambda x: decimal(repr(x), lang)) if ru else repr  # noqa: E731
+        w.writerow([i.quantity, "" if i.phi_deg is None else num(i.phi_deg), num(i.student), num(i.exact),
+                    unit_word(i.unit, lang), decimal(f"{i.error_pct:.4f}", lang),
+                    "" if i.error_mm is None else decimal(f"{i.error_mm:.4f}", lang),
+                    decimal(i.tolerance, lang).replace(" mm", " " + unit_word("mm", lang)),
+                    say_line("ch_pass" if i.verdict == "pass" else "ch_fail", lang) if ru else i.verdict, i.field])
     return buf.getvalue()
 
 
-def summary_row(path: str, rep: CycleReport) -> dict[str, Any]:
+def summary_row(path: str, rep: CycleReport, lang: str = "en") -> dict[str, Any]:
     """The line of ``summary.csv`` (``plans check DIR``) for a cycle check file."""
+    from plans.check.report import decimal, say_line
+    from plans.language import quantity_name
+
     worst = max(rep.items, key=lambda i: abs(i.error_pct), default=None)
-    where = "" if worst is None else worst.quantity + ("" if worst.phi_deg is None else f" at {worst.phi_deg:g}°")
-    return {"file": path, "student": rep.student, "status": "ok", "items": len(rep.items), "passed": rep.passed,
-            "failed": rep.failed, "findings": 0, "worst": where,
-            "worst_error_pct": "" if worst is None else f"{worst.error_pct:.2f}", "message": ""}
+    where = "" if worst is None else (quantity_name(worst.quantity, lang) if worst.phi_deg is None else say_line(
+        "ch_at", lang, what=quantity_name(worst.quantity, lang), phi=decimal(f"{worst.phi_deg:g}", lang)))
+    return {"file": path, "student": rep.student, "status": "ok" if lang != "ru" else "проверен",
+            "items": len(rep.items), "passed": rep.passed, "failed": rep.failed, "findings": 0, "worst": where,
+            "worst_error_pct": "" if worst is None else decimal(f"{worst.error_pct:.2f}", lang), "message": ""}
 
 
-def outputs(rep: CycleReport, target: Path, out: Path) -> dict[Path, str]:
+def outputs(rep: CycleReport, target: Path, out: Path, lang: str = "en") -> dict[Path, str]:
     """The report files of one cycle check file in the folder ``out``."""
-    return {out / f"{target.stem}.json": dumps(rep.to_json()), out / f"{target.stem}.txt": text(rep) + "\n"}
+    return {out / f"{target.stem}.json": dumps(rep.to_json()), out / f"{target.stem}.txt": text(rep, lang) + "\n"}
 
 
 def run_file(target: Path, args: argparse.Namespace) -> int:
@@ -318,24 +342,29 @@ def run_file(target: Path, args: argparse.Namespace) -> int:
     cycle has no marked sheet).  Its outputs are written all or none."""
     import sys
 
+    from plans.check.report import report_language
+
     rep = check_cycle(target)
+    lang = report_language(args)
     for out_path in (args.json, getattr(args, "csv", None)):
         refuse_input(out_path, target, rep.scene.path)
     files: dict[Path, str] = {}
     if args.json and args.json != "-":
         files[Path(args.json)] = dumps(rep.to_json())
-    if getattr(args, "csv", None):
-        files[Path(args.csv)] = csv_text(rep)
+    if getattr(args, "csv", None) and args.csv != "-":
+        files[Path(args.csv)] = csv_text(rep, lang)
     if getattr(args, "out", None):
         out = Path(args.out)
         try:
             out.mkdir(parents=True, exist_ok=True)
         except OSError as exc:
             raise OutputError(f"cannot create the output folder {out}: {exc.strerror}") from None
-        files.update(outputs(rep, target, out))
+        files.update(outputs(rep, target, out, lang))
     write_all(files)
     if args.json == "-":
         sys.stdout.write(dumps(rep.to_json()))
-    if not args.quiet and args.json != "-":
-        print(text(rep))
+    elif getattr(args, "csv", None) == "-":
+        sys.stdout.write(csv_text(rep, lang))
+    if not args.quiet and args.json != "-" and getattr(args, "csv", None) != "-":
+        print(text(rep, lang))
     return 0

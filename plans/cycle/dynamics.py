@@ -354,9 +354,11 @@ def dynamics(scene: Scene, spec: DynamicsSpec | None = None, structure: Structur
     I_mer = merkalov(I_curve, tab.constant_inertia, T_curve, omega_m, delta)
     phi_curve = phi0 + np.degrees(spline.sample(rad, dT, spline.slopes(rad, dT), per)[0])
     bound = quadrature.wittenbauer_bound(ext, phi_curve, I_curve, T_curve, omega_m, delta, hi, lo)
-    notes: list[str] = []
+    notes: list[Any] = []  # the protocol's sentences (plans.phrases.Phrase)
     if I_ex < 0:
-        notes.append(f"the machine's own inertia already keeps δ below {delta:g}: no flywheel is needed")
+        from plans.phrases import phrase
+
+        notes.append(phrase("y_no_flywheel", d=delta))
     om_g, d_g = quadrature.motion(ext, ex.I_pr, dT_e, _usable(I_graph, ex.I_pr), omega_m)
     om_e, d_e = quadrature.motion(ext, ex.I_pr, dT_e, _usable(I_ex, ex.I_pr), omega_m)
     _, d_m = quadrature.motion(ext, ex.I_pr, dT_e, _usable(I_mer, ex.I_pr), omega_m)

@@ -89,29 +89,28 @@ def dynamics_tables(d: Dynamics) -> list[CycleTable]:
     loads.append(TableRow("M_pr", "M_pr", "N*m", _vals(t.M_pr, n)))
     energy = [TableRow("A_c", "A_c", "J", _vals(d.A_c, n)), TableRow("A_d", "A_d", "J", _vals(d.A_d, n)),
               TableRow("dT", "ΔT", "J", _vals(d.dT, n))]
-    return [CycleTable(f"Velocity analogues (plans for ω1 = 1, μ = {mu:.4g} mm/m)", phis, tuple(an)),
-            CycleTable("Reduced moment of inertia", phis, tuple(inert)),
-            CycleTable("Reduced moment of forces (positive when the loads drive the crank)", phis, tuple(loads)),
-            CycleTable("Work and kinetic energy (graphical integration)", phis, tuple(energy))]
+    from plans.phrases import phrase
+
+    said = [phrase("y_analogues", mu=mu), phrase("y_inertia"), phrase("y_forces"), phrase("y_energy")]
+    return [CycleTable(t.say("en"), phis, tuple(rows), t)
+            for t, rows in zip(said, (an, inert, loads, energy), strict=True)]
 
 
-def dynamics_text(d: Dynamics) -> str:
+def dynamics_text(d: Dynamics, lang: str = "en") -> str:
+    from plans.phrases import Phrase, say
+
     f, s = d.flywheel, d.scales
+    work = say("y_work", lang, w=f.work_bound) if f.work_bound >= 1e-9 else say("y_work_fine", lang)  # no dust
     lines = [
-        "Machine dynamics over the steady cycle" + (" of 720° (two revolutions)" if d.spec.cycle_deg == 720 else ""),
-        f"  {SIGN_RULE}",
-        f"  driving moment M_d = {d.M_driving:.6g} N·m (graphical), {d.M_driving_exact:.6g} N·m (exact)",
-        f"  scales: μφ = {s.phi:.4g} mm/rad, μM = {s.M:.4g} mm/(N·m), H = {s.H:.4g} mm, "
-        f"μA = μM·μφ/H = {s.A:.4g} mm/J, μI = {s.I:.4g} mm/(kg·m²)",
-        f"  flywheel for δ = {f.delta:g} at ω_m = {f.omega_mean:.6g} rad/s (added at the crank on top of I_pr):",
-        f"    Wittenbauer (graphical)  I = {f.inertia_graphical:.6g} kg·m²  -> achieved δ = {f.delta_achieved:.6g}"
-        f"  (error {100 * f.graphical_error:+.2f} % against the exact flywheel)",
-        f"    Merkalov                 I = {f.inertia_merkalov:.6g} kg·m²  -> achieved δ = "
-        f"{f.delta_achieved_merkalov:.6g}",
-        f"    exact                    I = {f.inertia_exact:.6g} kg·m²  -> achieved δ = {f.delta_achieved_exact:.6g}",
-        f"  Wittenbauer's flywheel is within {f.graphical_bound:.3g} kg·m² of the exact one (its own bound); "
-        "the work of the loads is integrated to " + (f"{f.work_bound:.2g} J" if f.work_bound >= 1e-9
-                                                      else "better than 1e-9 J"),  # no round-off dust
+        say("y_dynamics", lang, cycle=say("y_720", lang) if d.spec.cycle_deg == 720 else ""),
+        say("y_sign_rule", lang),
+        say("y_driving", lang, g=d.M_driving, e=d.M_driving_exact),
+        say("y_scales", lang, phi=s.phi, M=s.M, H=s.H, A=s.A, I=s.I),
+        say("y_flywheel", lang, d=f.delta, w=f.omega_mean),
+        say("y_wittenbauer", lang, I=f.inertia_graphical, d=f.delta_achieved, e=100 * f.graphical_error),
+        say("y_merkalov", lang, I=f.inertia_merkalov, d=f.delta_achieved_merkalov),
+        say("y_exact", lang, I=f.inertia_exact, d=f.delta_achieved_exact),
+        say("y_bound", lang, b=f.graphical_bound, w=work),
     ]
-    lines += [f"  note: {x}" for x in d.notes]
+    lines += [say("y_note", lang, t=x.say(lang) if isinstance(x, Phrase) else x) for x in d.notes]
     return "\n".join(lines)

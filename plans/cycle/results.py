@@ -86,20 +86,30 @@ def cycle_text(cr: CycleResult, lang: str = "en") -> str:
     parts = [text(t, lang=lang) for t in cr.tables]
     if cr.diagrams is not None:
         d = cr.diagrams
-        lines = [f"Kinematic diagrams ({d.spec.method}, H1 = {d.pole_mm:g} mm, H2 = {d.pole2_mm:g} mm, "
-                 f"μφ = {d.mu_phi:.4g} mm/rad); "
-                 f"error of the graphical method in % of each diagram's range"]
+        from plans.language import symbols
+        from plans.phrases import PHRASES, say
+
+        method = say(f"y_{d.spec.method}", lang) if f"y_{d.spec.method}" in PHRASES else d.spec.method
+        lines = [say("y_diagrams", lang, method=method, h1=d.pole_mm, h2=d.pole2_mm, mu=d.mu_phi)]
         for g in d.diagrams:
-            integ = "" if g.integral_error_max_pct is None else \
-                f"; integrated back from the next: max {g.integral_error_max_pct:.3g} %"
-            lines.append(f"  {g.name:8s} {g.scale_formula:44s} max {g.error_max_pct:.3g} %, "
-                         f"rms {g.error_rms_pct:.3g} %{integ}")
+            integ = "" if g.integral_error_max_pct is None else say("y_integ", lang, mx=g.integral_error_max_pct)
+            lines.append(say("y_diagram", lang, name=g.name, formula=_comma(symbols(g.scale_formula, lang), lang),
+                             mx=g.error_max_pct, rms=g.error_rms_pct, integ=integ))
         parts.append("\n".join(lines) + "\n")
     if cr.dynamics is not None:
         from .output import dynamics_text
 
-        parts.append(dynamics_text(cr.dynamics) + "\n")
+        parts.append(dynamics_text(cr.dynamics, lang) + "\n")
     return "\n".join(parts)
+
+
+def _comma(text: str, lang: str) -> str:
+    """A formula's numbers with a decimal comma in Russian."""
+    if lang != "ru":
+        return text
+    import re
+
+    return re.sub(r"(\d)\.(\d)", r"\1,\2", text)
 
 
 def cycle_csv(cr: CycleResult) -> str:

@@ -11,6 +11,7 @@ from __future__ import annotations
 import io
 import math
 from collections.abc import Sequence
+from dataclasses import field
 from typing import Any
 
 import numpy as np
@@ -32,9 +33,10 @@ class TableRow:
 class CycleTable:
     """A table of quantities across the positions of the cycle."""
 
-    title: str
+    title: str  # in English; ``said`` writes it in either language
     phi_deg: tuple[float, ...]
     rows: tuple[TableRow, ...]
+    said: Any = field(default=None, repr=False, compare=False)  # a plans.phrases.Phrase
 
     def row(self, key: str) -> TableRow:
         for r in self.rows:
@@ -107,12 +109,15 @@ def _cell(v: float | None) -> str:
 
 def text(table: CycleTable, columns: int = 7, lang: str = "en") -> str:
     """Blocks of ``columns`` positions, numbered 1..N as the course numbers them; in ``lang``."""
+    from plans.language import TERMS, symbols
+
     ru = lang == "ru"
     if ru:
-        from plans.language import TERMS, symbols
-
         known = {en: r for en, r in (TERMS["y_plans"], TERMS["y_positions"])}
-    lines = [known.get(table.title, table.title) if ru else table.title]
+    if table.said is not None:
+        lines = [table.said.say(lang)]
+    else:
+        lines = [known.get(table.title, table.title) if ru else table.title]
     n = len(table.phi_deg)
     heads = [f"{r.label}, {r.unit}" if r.unit else r.label for r in table.rows]
     if ru:
@@ -120,8 +125,8 @@ def text(table: CycleTable, columns: int = 7, lang: str = "en") -> str:
     wlab = max([len(f"{r.label}, {r.unit}") for r in table.rows] + [14])
     for start in range(0, n, columns):
         ks = range(start, min(n, start + columns))
-        lines.append(f"  {'position' if not ru else 'положение':<{wlab}}" + "".join(f"{k + 1:>11d}" for k in ks))
-        lines.append(f"  {'phi, deg' if not ru else 'φ, °':<{wlab}}"
+        lines.append(f"  {TERMS['y_position'][ru]:<{wlab}}" + "".join(f"{k + 1:>11d}" for k in ks))
+        lines.append(f"  {TERMS['y_phi'][ru]:<{wlab}}"
                      + "".join(_comma(f"{table.phi_deg[k]:>11.6g}", ru) for k in ks))
         for r, head in zip(table.rows, heads, strict=True):
             big = max([abs(v) for v in r.values if v is not None] + [0.0])

@@ -79,10 +79,10 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from plans.errors import ConstructionError, InputError
+from plans.errors import ConstructionError, InputError, Said
 from plans.forces.shared import unit_vector
 from plans.kinematics.travel import piston_travel, toward_pivot
-from plans.reader import Reader, check_keys, did_you_mean
+from plans.reader import Reader, check_keys, did_you_mean, show
 from plans.records import frozen
 from plans.scene.model import Scene
 from plans.units import DUST, LENGTH_UNITS
@@ -204,7 +204,7 @@ def _parse_loads(scene: Scene) -> Loads:
     raw = scene.raw.get("loads", {})
     unit = scene.raw.get("unit", "mm")
 
-    def fail(field: str, msg: str) -> InputError:
+    def fail(field: str, msg: str | Said) -> InputError:
         return InputError(msg, file=path, field=field)
 
     if not isinstance(raw, dict):
@@ -228,9 +228,9 @@ def _parse_loads(scene: Scene) -> Loads:
     def moving_link(body: dict[str, Any], where: str) -> int:
         lid = body.get("link")
         if lid == scene.frame and not isinstance(lid, bool):
-            raise fail(f"{where}link", f"link {lid} is the frame: loads on the frame do not enter the analysis")
+            raise fail(f"{where}link", Said("l_frame", link=lid))
         if isinstance(lid, bool) or not isinstance(lid, int) or lid not in scene.links:
-            raise fail(f"{where}link", f"unknown link {lid!r}; expected one of {sorted(scene.links)}")
+            raise fail(f"{where}link", Said("l_link", link=show(lid), links=sorted(scene.links)))
         return int(lid)
 
     # ---- masses, inertias, centres
@@ -293,7 +293,7 @@ def _parse_loads(scene: Scene) -> Loads:
         ang = angle(grav, "direction_deg", "loads.gravity.", -90.0)
         g = gval * complex(math.cos(math.radians(ang)), math.sin(math.radians(ang)))
     else:
-        raise fail("loads.gravity", "expected true, false or { g = 9.81, direction_deg = -90 }")
+        raise fail("loads.gravity", Said("l_gravity"))
 
     inertia_mode = r.choice(raw, "inertia", "loads.", ("force_and_moment", "offset_force"), "force_and_moment")
     turn = r.choice(raw, "lever_turn", "loads.", ("ccw", "cw"), "ccw")
@@ -302,20 +302,19 @@ def _parse_loads(scene: Scene) -> Loads:
     crank = scene.links[scene.driver.link]
     bal = raw.get("balancing", {})
     if not isinstance(bal, dict):
-        raise fail("loads.balancing", "expected a table { kind = \"force\", point = \"A\" }")
+        raise fail("loads.balancing", Said("l_balancing"))
     check_keys(bal, ("kind", "point"), file=path, where="loads.balancing.")
     kind = r.choice(bal, "kind", "loads.balancing.", ("force", "moment"), "force")
     bpoint = bal.get("point", crank.axis[1])
     if not isinstance(bpoint, str):
-        raise fail("loads.balancing.point", "expected a point name")
+        raise fail("loads.balancing.point", Said("e_point_name"))
     if bpoint not in crank.points:
         if bpoint in scene.frame_points:
-            raise fail("loads.balancing.point", f"point {bpoint!r} is on the frame; the balancing force acts on "
-                                                f"the driving link {crank.id}")
-        raise fail("loads.balancing.point", f"point {bpoint!r} is not on the driving link {crank.id}"
-                                            f"{did_you_mean(bpoint, crank.points)}")
+            raise fail("loads.balancing.point", Said("l_bal_frame", point=bpoint, link=crank.id))
+        raise fail("loads.balancing.point", Said("l_bal_not_on", point=bpoint, link=crank.id,
+                                                 hint=did_you_mean(bpoint, crank.points)))
     if abs(crank.points[bpoint] - crank.points[scene.driver.pivot]) == 0:
-        raise fail("loads.balancing.point", f"point {bpoint!r} is the pivot: a force there has no moment")
+        raise fail("loads.balancing.point", Said("l_bal_pivot", point=bpoint))
 
     # ---- gas forces
     gas_raw = raw.get("gas", [])
@@ -337,7 +336,7 @@ def _parse_loads(scene: Scene) -> Loads:
         lid = moving_link(body, where)
         pj = [j for j in scene.joints if j.kind == "P" and j.guide is not None and j.slider == lid]
         if len(pj) != 1:
-            raise fail(f"{where}link", f"link {lid} is not a piston: it must slide on exactly one guide")
+            raise fail(f"{where}link", Said("l_piston", link=lid))
         if "diameter" in body:
             area = math.pi * length(body["diameter"], f"{where}diameter") ** 2 / 4
         elif "area" in body:
@@ -427,22 +426,21 @@ def _parse_loads(scene: Scene) -> Loads:
             continue
         given = [key for key in ("vector", "magnitude", "resisting") if key in body]
         if len(given) > 1:
-            raise fail(f"{where}{given[1]}", f"give one of vector, magnitude or resisting, not {' and '.join(given)}")
+            raise fail(f"{where}{given[1]}", Said("l_force_ways", given=Said("l_and", a=given[0], b=given[1])))
         lid = moving_link(body, where)
         pt = body.get("point")
         if not isinstance(pt, str) or pt not in scene.links[lid].points:
             hint = did_you_mean(pt, scene.links[lid].points) if isinstance(pt, str) else ""
-            raise fail(f"{where}point", f"unknown point {pt!r} on link {lid}{hint}; expected one of "
-                                        f"{sorted(scene.links[lid].points)}")
+            raise fail(f"{where}point", Said("l_point", point=show(pt), link=lid, hint=hint,
+                                             points=sorted(scene.links[lid].points)))
         vec = res = along = None
         stroke = body.get("stroke", "both")
         if stroke not in ("both", "positive", "negative", "working", "idle"):
-            raise fail(f"{where}stroke", f"expected \"working\", \"idle\", \"both\", \"positive\" or "
-                                         f"\"negative\", got {stroke!r}")
+            raise fail(f"{where}stroke", Said("l_stroke", got=show(stroke)))
         if "vector" in body:
             v = body["vector"]
             if not (isinstance(v, list) and len(v) == 2):
-                raise fail(f"{where}vector", "expected [Fx, Fy] in N")
+                raise fail(f"{where}vector", Said("l_vector"))
             vv = {"x": v[0], "y": v[1]}
             vec = complex(number(vv, "x", f"{where}vector."), number(vv, "y", f"{where}vector."))
         elif "magnitude" in body:
@@ -454,9 +452,9 @@ def _parse_loads(scene: Scene) -> Loads:
             if "along" in body:
                 along = math.radians(angle(body, "along", where, 0.0))
         else:
-            raise fail(f"{where}vector", "expected vector = [Fx, Fy], magnitude (+ angle_deg) or resisting")
+            raise fail(f"{where}vector", Said("l_force_none"))
         if stroke in ("positive", "negative") and along is None:
-            raise fail(f"{where}stroke", "a stroke needs an axis: along = angle in degrees")
+            raise fail(f"{where}stroke", Said("l_stroke_axis"))
         forces.append(ForceLoad(link=lid, point=pt, vector=vec, resisting=res, along=along, stroke=stroke,
                                 name=label(body, where, f"F_ext{k + 1}")))
     moments = []
@@ -472,8 +470,7 @@ def _parse_loads(scene: Scene) -> Loads:
         m_stroke = r.choice(body, "stroke", where, ("both", "working", "idle"), "both")
         given = [key for key in ("value", "resisting", "table", "expression") if key in body]
         if len(given) > 1:
-            raise fail(f"{where}{given[1]}", f"give one of value, resisting, table or expression, not both "
-                                             f"{given[0]} and {given[1]}")
+            raise fail(f"{where}{given[1]}", Said("l_moment_ways", a=given[0], b=given[1]))
         lid = moving_link(body, where)
         if "table" in body:
             tab = _cycle_table(r, body["table"], f"{where}table", "M")

@@ -58,17 +58,18 @@ def warn_idle(scene: Scene, raw: dict[str, Any], forces: Any = ()) -> None:
         return  # no output with two extremes: no strokes to tell apart
     if st.K <= K_DISTINCT:
         return
-    from plans.language import choose
+    from plans.errors import field_name, run_language
     from plans.phrases import say
 
-    lang = choose(None, scene.raw)
+    lang = run_language(scene.raw)  # --language, the scene's [sheet] language, the locale
     for k, fl in signed:
         if _idle_only(scene, st, fl):
-            text = say("x_warn_idle_only", lang, file=scene.path, field=f"loads.force[{k}].stroke", name=fl.name,
+            text = say("x_warn_idle_only", lang, file=scene.path, field=field_name(f"loads.force[{k}].stroke", lang), name=fl.name,
                        stroke=fl.stroke)
             print(f"plans: {text}", file=sys.stderr)
     for key, k, what, name in suspects:
-        text = say(what, lang, file=scene.path, field=f"loads.{key}[{k}].resisting", name=name or f"#{k + 1}")
+        text = say(what, lang, file=scene.path, field=field_name(f"loads.{key}[{k}].resisting", lang),
+                   name=name or f"#{k + 1}")
         print(f"plans: {text}", file=sys.stderr)
 
 

@@ -188,7 +188,10 @@ def velocity_plan(shafts: dict, meshes: list[TrainMesh], file: str | None, *, mu
             for q, t in shafts.items():
                 if t.carrier == n:
                     vmax = max(vmax, abs(s.speed_rpm) * math.pi / 30.0 * abs(axes[q] - axes[n]))
-    mu_v = v_len / vmax if vmax > 0 else 1.0
+    # round, as every scale of the sheets (the fastest at most v_len long)
+    from plans.kinematics.scales import round_scale
+
+    mu_v = round_scale(vmax, v_len) if vmax > 0 else 1.0
     slope = mu_v / mu_l  # drawn dv per drawn dy, per rad/s
 
     def known_points(n: str) -> list[tuple[str, Pt]]:

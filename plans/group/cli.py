@@ -7,7 +7,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from plans.errors import InputError, PlansError, one_line
+from plans.errors import InputError, PlansError, error_prefix, one_line
 
 
 def run_group(args: argparse.Namespace) -> int | None:
@@ -19,7 +19,7 @@ def run_group(args: argparse.Namespace) -> int | None:
             return run_gradebook(args)
         return _template(args)
     except PlansError as exc:
-        print(f"plans: error: {one_line(exc)}", file=sys.stderr)
+        print(f"{error_prefix()}{one_line(exc)}", file=sys.stderr)
         return 2
 
 
@@ -55,20 +55,23 @@ def run_sheet_file(target: Path, args: argparse.Namespace) -> int | None:
     rep = sheet_check_of(target)
     if rep is None:
         return None
+    from plans.check.report import report_language
+
+    lang = report_language(args)
     files: dict[Path, str] = {}
     if args.json and args.json != "-":
-        files[Path(args.json)] = dumps(rep.to_json())
+        files[Path(args.json)] = dumps(rep.to_json(lang))
     if args.csv and args.csv != "-":
-        files[Path(args.csv)] = csv_text([summary_row(str(target), rep)])
+        files[Path(args.csv)] = csv_text([summary_row(str(target), rep, lang)], lang)
     if args.out:
         Path(args.out).mkdir(parents=True, exist_ok=True)
-        files[Path(args.out) / f"{target.stem}.json"] = dumps(rep.to_json())
-        files[Path(args.out) / f"{target.stem}.txt"] = table(rep) + "\n"
+        files[Path(args.out) / f"{target.stem}.json"] = dumps(rep.to_json(lang))
+        files[Path(args.out) / f"{target.stem}.txt"] = table(rep, lang) + "\n"
     write_all(files)
     if args.json == "-":
-        sys.stdout.write(dumps(rep.to_json()))
+        sys.stdout.write(dumps(rep.to_json(lang)))
     elif args.csv == "-":
-        sys.stdout.write(csv_text([summary_row(str(target), rep)]))
+        sys.stdout.write(csv_text([summary_row(str(target), rep, lang)], lang))
     elif not args.quiet:
-        print(table(rep))
+        print(table(rep, lang))
     return 0

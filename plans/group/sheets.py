@@ -41,6 +41,7 @@ from pathlib import Path
 from statistics import median
 from typing import Any
 
+from plans.check import wording as wd
 from plans.errors import InputError
 
 #: Angles of the cam at which the key gives the profile (degrees).
@@ -259,12 +260,16 @@ class SheetCause:
     kind: str
     positions: tuple[float, ...]
     explains: tuple[str, ...]
-    detail: str
+    detail: str  # in English; ``words`` writes it in either language
     deduction: float
+    words: Any = field(default=None, repr=False, compare=False)
 
-    def to_json(self) -> dict[str, Any]:
+    def text(self, lang: str = "en") -> str:
+        return self.words.render(lang) if self.words is not None and lang == "ru" else self.detail
+
+    def to_json(self, lang: str = "en") -> dict[str, Any]:
         return {"kind": self.kind, "positions": list(self.positions), "explains": list(self.explains),
-                "detail": self.detail, "deduction": self.deduction}
+                "detail": self.text(lang), "deduction": self.deduction}
 
 
 @dataclass(frozen=True)
@@ -283,10 +288,10 @@ class SheetReport:
     full: float
     extra: dict[str, Any] = field(default_factory=dict)
 
-    def to_json(self) -> dict[str, Any]:
+    def to_json(self, lang: str = "en") -> dict[str, Any]:
         return {"format": 1, "student": self.student, "group": self.group, "variant": self.variant,
                 "sheet": self.sheet, "check_file": self.path,
-                "causes": [c.to_json() for c in self.causes],
+                "causes": [c.to_json(lang) for c in self.causes],
                 "unexplained": list(dict.fromkeys(i.quantity for i in self.unexplained)),
                 "mark": self.mark, "full": self.full,
                 "items": [{"quantity": i.quantity, "phi_deg": i.phi_deg, "student": i.student, "exact": i.exact,
@@ -394,7 +399,7 @@ def _diagnose(kind: str, part: dict[str, Any], src: str, items: list[SheetItem],
     each model a sheet of predicted figures; it explains a failing figure it predicts within
     the figure's tolerance and must not move a passing one out of it."""
     failing = [it for it in items if it.verdict == "fail"]
-    models: list[tuple[str, str, dict[tuple[str, float], float]]] = []
+    models: list[tuple[str, wd.Words, dict[tuple[str, float], float]]] = []
     if failing and kind == "gears":
         xs = {q[0][2:]: v for q, v in written.items() if q[0].startswith("x_")}
         if any(it.quantity.startswith("x_") for it in failing):
@@ -402,8 +407,8 @@ def _diagnose(kind: str, part: dict[str, Any], src: str, items: list[SheetItem],
                                       for g in part.get("gears", [])]}
             try:
                 vals, _ = gears_values(data, src)
-                models.append(("shift_coefficient", "the pair drawn with a wrong shift coefficient "
-                               + ", ".join(f"x_{n} = {v:g}" for n, v in sorted(xs.items())),
+                models.append(("shift_coefficient", wd.say("sc_shift", xs=(", ", [
+                    wd.say("use", q=f"x_{n}", w=wd.n(v, "g")) for n, v in sorted(xs.items())])),
                                {(q, 0.0): v for q, v in vals.items()}))
             except Exception:  # noqa: BLE001 - a shift the pair cannot take: no model
                 pass
@@ -412,15 +417,15 @@ def _diagnose(kind: str, part: dict[str, Any], src: str, items: list[SheetItem],
         e = written.get(("e", 0.0))
         if any(it.quantity in ("r0", "e") for it in failing):
             try:
-                models.append(("base_radius", f"the cam drawn on a base circle r0 = {r0:g}"
-                               + (f", offset e = {e:g}" if e is not None else ""),
+                models.append(("base_radius", wd.say("sc_base", r0=wd.n(r0 or 0.0, "g"),
+                                                     e=wd.say("sc_offset", e=wd.n(e, "g")) if e is not None else ""),
                                cam_values(part, src, r0, e)))
             except Exception:  # noqa: BLE001 - no cam on such a base circle: no model
                 pass
     drawn = [it for it in failing if it.how == "drawn" and it.exact != 0]
     if len(drawn) >= 2:
         f = median(it.student / it.exact for it in drawn)
-        models.append(("scale", f"the drawing read at {f:.4g}× its scale",
+        models.append(("scale", wd.say("sc_scale", f=wd.n(f, ".4g")),
                        {(it.quantity, it.phi_deg): it.exact * f for it in items if it.how == "drawn"}))
     causes: list[SheetCause] = []
     left = list(failing)
@@ -438,17 +443,17 @@ def _diagnose(kind: str, part: dict[str, Any], src: str, items: list[SheetItem],
             break
         kind_, detail, _, expl = best
         causes.append(SheetCause(kind_, tuple(sorted({it.phi_deg for it in expl})),
-                                 tuple(dict.fromkeys(it.quantity for it in expl)), detail,
-                                 rubric.get(kind_, 10.0)))
+                                 tuple(dict.fromkeys(it.quantity for it in expl)), detail.render("en"),
+                                 rubric.get(kind_, 10.0), detail))
         left = [it for it in left if it not in expl]
         models = [m for m in models if m[0] != kind_]
     if kind == "gears" and left:  # a figure that does not follow from the student's own figures
         own = _gears_own(part, written, items)
         for it in list(left):
             if it.quantity in own:
-                causes.append(SheetCause("arithmetic", (it.phi_deg,), (it.quantity,),
-                                         f"{it.quantity} = {it.student:g} does not follow from the student's own "
-                                         f"figures ({own[it.quantity]:.5g})", rubric.get("arithmetic", 3.0)))
+                said = wd.say("sc_own", q=it.quantity, s=wd.n(it.student, "g"), v=wd.n(own[it.quantity], ".5g"))
+                causes.append(SheetCause("arithmetic", (it.phi_deg,), (it.quantity,), said.render("en"),
+                                         rubric.get("arithmetic", 3.0), said))
                 left.remove(it)
     return causes, left
 
@@ -495,45 +500,63 @@ def sheet_check_of(path: str | Path) -> SheetReport | None:
     return check_sheet(data, str(path)) if is_sheet_check(data) else None
 
 
-def table(rep: SheetReport) -> str:
+def table(rep: SheetReport, lang: str = "en") -> str:
     """The report on the terminal: the mark, the causes, what no cause explains, every figure."""
-    lines = [f"{rep.student or Path(rep.path).stem}: {rep.sheet} sheet" + (f", variant {rep.variant}" if rep.variant
-                                                                            else ""),
-             f"Mark: {rep.mark:g} of {rep.full:g}"]
+    from plans.check.report import decimal, kind_word, say_line
+    from plans.language import CHECK_TERMS
+
+    def g(x: float, spec: str = "g") -> str:
+        return decimal(format(x, spec), lang)
+
+    sheet = say_line(f"sc_{rep.sheet}", lang) if f"sc_{rep.sheet}" in CHECK_TERMS else rep.sheet
+    lines = [say_line("sc_head", lang, student=rep.student or Path(rep.path).stem, sheet=sheet)
+             + (say_line("sc_variant", lang, v=rep.variant) if rep.variant else ""),
+             say_line("ch_mark", lang, mark=say_line("ch_of", lang, mark=g(rep.mark), full=g(rep.full)))]
     if rep.causes:
-        lines.append("Mistakes:")
+        lines.append(say_line("sc_mistakes", lang))
         for n, c in enumerate(rep.causes, 1):
-            lines.append(f"  {n}. {c.kind}: {c.detail} (explains {', '.join(c.explains)}; −{c.deduction:g})")
+            lines.append(say_line("sc_mistake", lang, n=n, kind=kind_word(c.kind, lang), detail=c.text(lang),
+                              names=", ".join(c.explains), d=g(c.deduction)))
     else:
-        lines.append("No mistakes found" if not rep.unexplained else "No mistake explains the failures")
+        lines.append(say_line("sc_none", lang) if not rep.unexplained else say_line("sc_none_explains", lang))
     if rep.unexplained:
-        lines.append("Failures no mistake explains: " + ", ".join(i.quantity for i in rep.unexplained))
-    lines.append(f"{'quantity':<14}{'φ°':>6}{'student':>13}{'exact':>13}{'±':>10}  verdict")
+        lines.append(say_line("sc_unexplained", lang, names=", ".join(i.quantity for i in rep.unexplained)))
+    w = {k: say_line(k, lang) for k in ("ch_quantity", "ch_phi", "ch_student", "ch_exact", "ch_verdict")}
+    lines.append(f"{w['ch_quantity']:<14}{w['ch_phi']:>6}{w['ch_student']:>13}{w['ch_exact']:>13}{'±':>10}  "
+                 f"{w['ch_verdict']}")
     for it in rep.items:
-        lines.append(f"{it.quantity:<14}{it.phi_deg:>6g}{it.student:>13.6g}{it.exact:>13.6g}{it.tolerance:>10.3g}  "
-                     f"{it.verdict}")
+        verdict = say_line("ch_pass" if it.verdict == "pass" else "ch_fail", lang) if lang == "ru" else it.verdict
+        lines.append(f"{it.quantity:<14}{g(it.phi_deg):>6}{g(it.student, '.6g'):>13}{g(it.exact, '.6g'):>13}"
+                     f"{g(it.tolerance, '.3g'):>10}  {verdict}")
     return "\n".join(lines)
 
 
-def summary_row(path: str, rep: SheetReport) -> dict[str, Any]:
+def summary_row(path: str, rep: SheetReport, lang: str = "en") -> dict[str, Any]:
     """The row of ``summary.csv`` (the examiner's columns)."""
+    from plans.check.report import decimal, kind_word, say_line
+
+    def at(q: str, phi: float) -> str:
+        return say_line("ch_at", lang, what=q, phi=decimal(f"{phi:g}", lang))
+
     failed = [i for i in rep.items if i.verdict == "fail"]
     worst = max(rep.items, key=lambda i: abs(i.student - i.exact) / i.tolerance if i.tolerance else 0.0,
                 default=None)
-    return {"file": path, "student": rep.student, "status": "ok", "mark": f"{rep.mark:g}",
-            "causes": "; ".join(c.kind for c in rep.causes),
-            "unexplained": "; ".join(f"{i.quantity} at {i.phi_deg:g}°" for i in rep.unexplained),
+    return {"file": path, "student": rep.student, "status": "ok" if lang != "ru" else "проверен",
+            "mark": decimal(f"{rep.mark:g}", lang),
+            "causes": "; ".join(kind_word(c.kind, lang) for c in rep.causes),
+            "unexplained": "; ".join(at(i.quantity, i.phi_deg) for i in rep.unexplained),
             "items": len(rep.items), "passed": len(rep.items) - len(failed), "failed": len(failed), "findings": 0,
-            "worst": "" if worst is None else f"{worst.quantity} at {worst.phi_deg:g}°",
+            "worst": "" if worst is None else at(worst.quantity, worst.phi_deg),
             "worst_error_pct": "" if worst is None or not worst.exact else
-            f"{100 * (worst.student - worst.exact) / abs(worst.exact):.2f}",
+            decimal(f"{100 * (worst.student - worst.exact) / abs(worst.exact):.2f}", lang),
             "worst_tol": "" if worst is None or not worst.tolerance else
-            f"{abs(worst.student - worst.exact) / worst.tolerance:.2f}", "message": ""}
+            decimal(f"{abs(worst.student - worst.exact) / worst.tolerance:.2f}", lang), "message": ""}
 
 
-def sheet_outputs(rep: SheetReport, path: Path, out: Path) -> tuple[dict[Path, Any], dict[str, Any]]:
+def sheet_outputs(rep: SheetReport, path: Path, out: Path,
+                  lang: str = "en") -> tuple[dict[Path, Any], dict[str, Any]]:
     """The report files of a folder's gears or cam sheet, and its summary row."""
     from plans.io import dumps
 
-    return ({out / f"{path.stem}.json": dumps(rep.to_json()), out / f"{path.stem}.txt": table(rep) + "\n"},
-            summary_row(str(path), rep))
+    return ({out / f"{path.stem}.json": dumps(rep.to_json(lang)), out / f"{path.stem}.txt": table(rep, lang) + "\n"},
+            summary_row(str(path), rep, lang))

@@ -67,6 +67,9 @@ class Kinematics:
         self._points: dict[tuple[int, complex], tuple[C, C, C]] = {}
         self._homes: dict[str, int] = {}
         self._reach: float | None = None
+        #: group name -> a class III group's special point over the positions and the leashes
+        #: that give it (plans.kinematics.triad_plans.assur_points_json), found when first read
+        self.special_points: dict[str, Any] = {}
         if phi_deg is not None:  # else made when first read (the cached properties below)
             self.phi_deg = phi_deg
         if motion is not None:

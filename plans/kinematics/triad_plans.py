@@ -341,7 +341,7 @@ def assur_point(kin: Any, g: TriadGroup) -> tuple[Any, Any]:
 def assur_points_json(kin: Any, k: int) -> list[dict]:
     """``positions[i].assur_points``: per class-III group its special point S (m, the scene's
     frame) and the two leashes whose axes give it ([outer, inner] point names)."""
-    memo = kin.__dict__.setdefault("_assur", {})
+    memo = kin.special_points
     out = []
     for g in kin.structure.triads():
         got = memo.get(g.name)

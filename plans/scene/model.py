@@ -15,10 +15,11 @@ import os
 from dataclasses import field
 from typing import TYPE_CHECKING, Any
 
+from plans.errors import Said
 from plans.io import loads_toml, read_toml
-from plans.reader import Reader, did_you_mean
+from plans.reader import Reader, did_you_mean, show
 from plans.records import frozen
-from plans.units import LENGTH_UNITS, rpm_to_rad_s
+from plans.units import LENGTH_UNITS, LENGTH_WARN, SPEED_WARN, rpm_to_rad_s
 
 if TYPE_CHECKING:
     from pathlib import Path
@@ -210,12 +211,37 @@ def check_format(r: Reader, data: dict[str, Any]) -> None:
     """``format = 1`` exactly (an integer, not ``true`` nor ``1.0``)."""
     fmt = data.get("format")
     if isinstance(fmt, bool) or not isinstance(fmt, int) or fmt != 1:
-        raise r.fail("format", f"expected format = 1, got {'nothing' if fmt is None else repr(fmt)}")
+        raise r.fail("format", Said("e_format", got=Said("e_nothing") if fmt is None else show(fmt)))
 
 
 def load_scene(path: str | Path) -> Scene:
-    """Read and validate a scene file."""
-    return scene_from_dict(read_toml(path), str(path))
+    """Read and validate a scene file; an implausible one (a unit slip, look-alike names) is
+    warned about on stderr (:mod:`plans.plausible`)."""
+    scene = scene_from_dict(read_toml(path), str(path))
+    if _implausible(scene):
+        from plans.plausible import warn_scene
+
+        warn_scene(scene, str(scene.raw.get("unit", "mm")), str(path))
+    return scene
+
+
+def _implausible(scene: Scene) -> bool:
+    """Whether :mod:`plans.plausible` has something to warn about (found here cheaply: that
+    module is loaded only then): a link or a crank-pin speed beyond machines', a name with
+    letters outside ASCII (a look-alike may hide in it)."""
+    if any(not n.isascii() for n in scene.frame_points):
+        return True
+    for link in scene.links.values():
+        pts = list(link.points.values())
+        if (link.length or 0.0) > LENGTH_WARN or any(abs(a - b) > LENGTH_WARN for a in pts for b in pts):
+            return True
+        if any(not n.isascii() for n in link.points):
+            return True
+    crank = scene.links.get(scene.driver.link)
+    if crank is not None and len(crank.axis) == 2:
+        r = abs(crank.points[crank.axis[1]] - crank.points[crank.axis[0]])
+        return abs(scene.driver.omega) * r > SPEED_WARN
+    return False
 
 
 def _stem(path: str) -> str:
@@ -242,7 +268,7 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
         r.string(text, f"title.{lang}", limit=2000)
     frame = data.get("frame")
     if isinstance(frame, bool) or not isinstance(frame, int) or not 0 < frame < 1_000_000:
-        raise r.fail("frame", "expected the frame's link number (a positive integer)")
+        raise r.fail("frame", Said("e_frame"))
 
     frame_points = _frame_points(r, data, unit)
     links_raw = r.table(data, "links", "")
@@ -251,15 +277,15 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
     for key, body in links_raw.items():
         lid = _link_id(r, key)
         if lid == frame:
-            raise r.fail(f"links.{key}", f"link {lid} is the frame; put frame points in [points]")
+            raise r.fail(f"links.{key}", Said("e_link_is_frame", link=lid))
         if not isinstance(body, dict):
-            raise r.fail(f"links.{key}", "expected a table")
+            raise r.fail(f"links.{key}", Said("e_table"))
         if lid in links:
-            raise r.fail(f"links.{key}", f"link {lid} is given twice ([links.{links_raw_key[lid]}] and [links.{key}])")
+            raise r.fail(f"links.{key}", Said("e_link_twice", link=lid, a=links_raw_key[lid], b=key))
         links_raw_key[lid] = key
         links[lid] = _link(r, lid, body, unit)
     if not links:
-        raise r.fail("links", "expected at least the driving link")
+        raise r.fail("links", Said("e_no_links"))
 
     joints = _joints(r, data, unit, frame, frame_points, links)
     links = _orient_sliders(r, links, joints)
@@ -291,16 +317,16 @@ def _link_id(r: Reader, key: str) -> int:
     """``[links.2]``: a positive number written plainly (``01``, ``+1``, ``1_0`` would
     merge or hide links)."""
     if not (key.isascii() and key.isdigit()) or key != str(int(key)) or len(key) > 6:
-        raise r.fail(f"links.{key}", "expected links numbered as the textbook does: [links.1], [links.2], ...")
+        raise r.fail(f"links.{key}", Said("e_link_number"))
     lid = int(key)
     if lid <= 0:
-        raise r.fail(f"links.{key}", "expected a positive link number")
+        raise r.fail(f"links.{key}", Said("e_link_positive"))
     return lid
 
 
 def _xy(r: Reader, value: Any, field: str, unit: str) -> complex:
     if not (isinstance(value, list) and len(value) == 2):
-        raise r.fail(field, "expected a point [x, y]")
+        raise r.fail(field, Said("e_point_xy"))
     return complex(r.length(value[0], f"{field}[0]", unit), r.length(value[1], f"{field}[1]", unit))
 
 
@@ -314,36 +340,36 @@ def _link(r: Reader, lid: int, body: dict[str, Any], unit: str) -> Link:
     r.keys(body, LINK_KEYS, where)
     axis = body.get("axis")
     if not (isinstance(axis, list) and 1 <= len(axis) <= 2 and all(isinstance(a, str) for a in axis)):
-        raise r.fail(f"{where}axis", "expected one or two point names, e.g. axis = [\"A\", \"B\"]")
+        raise r.fail(f"{where}axis", Said("e_axis"))
     for k, a in enumerate(axis):
         r.name(a, f"{where}axis[{k}]")
     if len(axis) == 2 and axis[0] == axis[1]:
-        raise r.fail(f"{where}axis", "expected two different points")
+        raise r.fail(f"{where}axis", Said("e_axis_same"))
     length = None
     points: dict[str, complex] = {axis[0]: 0j}
     if len(axis) == 2:
         if "length" not in body:
-            raise r.fail(f"{where}length", f"missing length {axis[0]}{axis[1]}")
+            raise r.fail(f"{where}length", Said("e_missing_length", ab=f"{axis[0]}{axis[1]}"))
         length = r.length(body["length"], f"{where}length", unit, positive=True)
         points[axis[1]] = complex(length, 0.0)
     elif "length" in body:
-        raise r.fail(f"{where}length", "a one-point link (slider) has no length")
+        raise r.fail(f"{where}length", Said("e_slider_length"))
     extra = body.get("points", {})
     if not isinstance(extra, dict):
-        raise r.fail(f"{where}points", "expected a table of named points")
+        raise r.fail(f"{where}points", Said("e_points_table"))
     for name, spec in extra.items():
         f = f"{where}points.{name}"
         r.name(name, f)
         if name in points:
-            raise r.fail(f, "point already defined by the axis")
+            raise r.fail(f, Said("e_point_on_axis"))
         if not isinstance(spec, dict):
-            raise r.fail(f, "expected { ratio = r } or { along = a, across = c }")
+            raise r.fail(f, Said("e_point_spec"))
         r.keys(spec, ("ratio", "along", "across"), f + ".")
         if "ratio" in spec and ({"along", "across"} & set(spec)):
-            raise r.fail(f, "give ratio, or along and across, not both")
+            raise r.fail(f, Said("e_point_both"))
         if "ratio" in spec:
             if length is None:
-                raise r.fail(f, "ratio needs a two-point axis")
+                raise r.fail(f, Said("e_ratio_axis"))
             ratio = r.number(spec, "ratio", f + ".", limit=1e6)
             points[name] = complex(ratio * length, 0.0)
         else:
@@ -354,8 +380,8 @@ def _link(r: Reader, lid: int, body: dict[str, Any], unit: str) -> Link:
     inertia = r.number(body, "inertia", where, default=0.0, nonneg=True)
     centre = body.get("centre")
     if centre is not None and (not isinstance(centre, str) or centre not in points):
-        raise r.fail(f"{where}centre", f"unknown point {centre!r} on link {lid}"
-                                       f"{did_you_mean(centre, points) if isinstance(centre, str) else ''}")
+        raise r.fail(f"{where}centre", Said("e_unknown_point", point=show(centre), link=lid,
+                                            hint=did_you_mean(centre, points) if isinstance(centre, str) else ""))
     name = r.string(body.get("name", f"link {lid}"), f"{where}name")
     return Link(id=lid, name=name, axis=tuple(axis), length=length, points=points,
                 mass=mass, inertia=inertia, centre=centre)
@@ -365,29 +391,29 @@ def _joints(r: Reader, data: dict[str, Any], unit: str, frame: int,
             frame_points: dict[str, complex], links: dict[int, Link]) -> tuple[Joint, ...]:
     raw = data.get("joints")
     if not isinstance(raw, list) or not raw:
-        raise r.fail("joints", "expected an array of tables [[joints]]")
+        raise r.fail("joints", Said("e_joints"))
     known_links = set(links) | {frame}
     out = []
     for k, body in enumerate(raw):
         where = f"joints[{k}]."
         if not isinstance(body, dict):
-            raise r.fail(f"joints[{k}]", "expected a table")
+            raise r.fail(f"joints[{k}]", Said("e_table"))
         r.keys(body, JOINT_KEYS, where)
         kind = body.get("kind")
         if kind not in ("R", "P"):
-            raise r.fail(f"{where}kind", f"expected \"R\" or \"P\", got {kind!r}")
+            raise r.fail(f"{where}kind", Said("e_joint_kind", got=show(kind)))
         pair = body.get("links")
         if not (isinstance(pair, list) and len(pair) == 2
                 and all(isinstance(x, int) and not isinstance(x, bool) for x in pair)):
-            raise r.fail(f"{where}links", "expected two link numbers, e.g. links = [1, 2]")
+            raise r.fail(f"{where}links", Said("e_joint_links"))
         for lid in pair:
             if lid not in known_links:
-                raise r.fail(f"{where}links", f"unknown link {lid}")
+                raise r.fail(f"{where}links", Said("e_unknown_link", link=lid))
         if pair[0] == pair[1]:
-            raise r.fail(f"{where}links", "a joint needs two different links")
+            raise r.fail(f"{where}links", Said("e_joint_same"))
         point = body.get("point")
         if not isinstance(point, str):
-            raise r.fail(f"{where}point", "expected a point name")
+            raise r.fail(f"{where}point", Said("e_point_name"))
         a, b = pair
 
         def carries(lid: int, name: str) -> bool:
@@ -396,40 +422,46 @@ def _joints(r: Reader, data: dict[str, Any], unit: str, frame: int,
         if kind == "R":
             if "guide" in body or "slider_angle_deg" in body:
                 raise r.fail(f"{where}guide" if "guide" in body else f"{where}slider_angle_deg",
-                             "a turning pair (kind = \"R\") has no guide")
+                             Said("e_r_guide"))
             for lid in pair:
                 if not carries(lid, point):
-                    raise r.fail(f"{where}point", f"point {point!r} is not on link {lid}")
+                    from plans.plausible import not_on_link
+
+                    raise r.fail(f"{where}point", not_on_link(point, lid, frame_points if lid == frame
+                                                              else links[lid].points))
             out.append(Joint("R", (a, b), point))
             continue
         g = body.get("guide")
         if not isinstance(g, dict):
-            raise r.fail(f"{where}guide", "a P joint needs guide = { link = N, through = ..., angle_deg = ... }")
+            raise r.fail(f"{where}guide", Said("e_p_guide"))
         r.keys(g, GUIDE_KEYS, f"{where}guide.")
         if "toward" in g and "angle_deg" in g:
-            raise r.fail(f"{where}guide.angle_deg", "give toward or angle_deg, not both")
+            raise r.fail(f"{where}guide.angle_deg", Said("e_toward_angle"))
         carrier = g.get("link")
         if isinstance(carrier, bool) or not isinstance(carrier, int) or carrier not in pair:
-            raise r.fail(f"{where}guide.link", f"expected one of the joint's links {pair}")
+            raise r.fail(f"{where}guide.link", Said("e_guide_link", pair=list(pair)))
         slider = b if carrier == a else a
         if not carries(slider, point):
-            raise r.fail(f"{where}point", f"point {point!r} is not on the sliding link {slider}")
+            raise r.fail(f"{where}point", Said("e_not_on_slider", point=point, link=slider))
         through = g.get("through")
         if isinstance(through, str):
             if not carries(carrier, through):
-                raise r.fail(f"{where}guide.through", f"point {through!r} is not on link {carrier}")
+                from plans.plausible import not_on_link
+
+                raise r.fail(f"{where}guide.through", not_on_link(through, carrier, frame_points if carrier == frame
+                                                                   else links[carrier].points))
             origin = frame_points[through] if carrier == frame else links[carrier].points[through]
         elif isinstance(through, list):
             origin = _xy(r, through, f"{where}guide.through", unit)
         else:
-            raise r.fail(f"{where}guide.through", "expected a point name or [x, y]")
+            raise r.fail(f"{where}guide.through", Said("e_through"))
         if "toward" in g:
             tw = g["toward"]
             if not (isinstance(tw, str) and carries(carrier, tw)):
-                raise r.fail(f"{where}guide.toward", f"expected a point on link {carrier}")
+                raise r.fail(f"{where}guide.toward", Said("e_toward", link=carrier))
             target = frame_points[tw] if carrier == frame else links[carrier].points[tw]
             if abs(target - origin) == 0:
-                raise r.fail(f"{where}guide.toward", "coincides with 'through'")
+                raise r.fail(f"{where}guide.toward", Said("e_toward_through"))
             angle = cmath.phase(target - origin)
         else:
             angle = math.radians(r.angle(g, "angle_deg", f"{where}guide."))
@@ -448,10 +480,10 @@ def _orient_sliders(r: Reader, links: dict[int, Link], joints: tuple[Joint, ...]
         as_slider = [j for j in joints if j.kind == "P" and j.slider == lid]
         as_carrier = [j for j in joints if j.kind == "P" and j.guide is not None and j.guide.link == lid]
         if not as_slider and not as_carrier:
-            raise r.fail(f"links.{lid}.axis", "a one-point link must slide on a guide or carry one")
+            raise r.fail(f"links.{lid}.axis", Said("e_one_point"))
         for j in as_slider:
             if j.point != link.axis[0]:
-                raise r.fail(f"links.{lid}.axis", f"a slider's axis point must be its pin on the guide ({j.point})")
+                raise r.fail(f"links.{lid}.axis", Said("e_slider_axis", point=j.point))
     return links
 
 
@@ -461,32 +493,31 @@ def _driver(r: Reader, data: dict[str, Any], frame: int, frame_points: dict[str,
     r.keys(d, DRIVER_KEYS, "driver.")
     lid = d.get("link")
     if isinstance(lid, bool) or not isinstance(lid, int) or lid not in links:
-        raise r.fail("driver.link", f"expected a moving link number (one of {sorted(links)}), got {lid!r}")
+        raise r.fail("driver.link", Said("e_driver_link", links=sorted(links), got=show(lid)))
     link = links[lid]
     if len(link.axis) != 2 or link.axis[0] not in frame_points:
-        raise r.fail("driver.link", "the driving link needs axis = [pivot on the frame, crank pin]")
+        raise r.fail("driver.link", Said("e_driver_axis"))
     if "omega_rpm" in d and "omega" in d:
-        raise r.fail("driver.omega_rpm", "give omega (rad/s) or omega_rpm, not both")
+        raise r.fail("driver.omega_rpm", Said("e_omega_both"))
     if "omega_rpm" in d:
         omega = rpm_to_rad_s(r.number(d, "omega_rpm", "driver.", nonneg=True, limit=OMEGA_LIMIT * 30 / math.pi,
                                       floor=1e-6))
     elif "omega" in d:
         omega = r.number(d, "omega", "driver.", nonneg=True, limit=OMEGA_LIMIT, floor=1e-6)
     else:
-        raise r.fail("driver.omega", "missing crank speed: omega = rad/s or omega_rpm = rev/min")
+        raise r.fail("driver.omega", Said("e_omega_missing"))
     sense = 1 if r.choice(d, "sense", "driver.", ("ccw", "cw"), "ccw") == "ccw" else -1
     # ε of dust is ε = 0 to rounding (it scales with ω², 1e-12 at the slowest crank): no floor
     eps = r.number(d, "eps", "driver.", default=0.0, floor=0.0)
     phi_ref = math.radians(r.angle(d, "phi_ref_deg", "driver."))
     if "phi_deg" in d and "positions" in d:
-        raise r.fail("driver.phi_deg", "give phi_deg or positions, not both")
+        raise r.fail("driver.phi_deg", Said("e_phi_both"))
     if "phi0_deg" in d and "positions" not in d:
-        raise r.fail("driver.phi0_deg", "phi0_deg goes with positions = N (with phi_deg give the angles)")
+        raise r.fail("driver.phi0_deg", Said("e_phi0"))
     if "positions" in d:
         n = r.integer(d, "positions", "driver.", at_least=1)
         if n > MAX_POSITIONS:
-            raise r.fail("driver.positions", f"{n} positions; expected at most {MAX_POSITIONS} "
-                                             "(a position every 0.1°)")
+            raise r.fail("driver.positions", Said("e_positions_many", n=n, limit=MAX_POSITIONS))
         phi0 = r.angle(d, "phi0_deg", "driver.")
         phis = tuple(phi0 + 360.0 * k / n for k in range(n))
     else:
@@ -494,15 +525,15 @@ def _driver(r: Reader, data: dict[str, Any], frame: int, frame_points: dict[str,
         if raw is None and ("s_mm" in d or "s_fraction" in d) and "phi_deg" not in d:
             raw = 0.0  # placed by the piston's travel once the scene is built
         if raw is None:
-            raise r.fail("driver.phi_deg", "missing crank angle(s): phi_deg = 45, a list, or positions = N")
+            raise r.fail("driver.phi_deg", Said("e_phi_missing"))
         values = raw if isinstance(raw, list) else [raw]
         if not values:
-            raise r.fail("driver.phi_deg", "expected at least one angle")
+            raise r.fail("driver.phi_deg", Said("e_phi_none"))
         if len(values) > MAX_POSITIONS:
-            raise r.fail("driver.phi_deg", f"{len(values)} angles; expected at most {MAX_POSITIONS}")
+            raise r.fail("driver.phi_deg", Said("e_angles_many", n=len(values), limit=MAX_POSITIONS))
         for v in values:
             if isinstance(v, bool) or not isinstance(v, int | float):
-                raise r.fail("driver.phi_deg", f"expected a number of degrees, got {v!r}")
+                raise r.fail("driver.phi_deg", Said("e_degrees", got=show(v)))
         phis = tuple(r.value(v, "driver.phi_deg", limit=1e300, floor=0.0) for v in values)
     return Driver(link=lid, pivot=link.axis[0], omega=sense * omega, eps=sense * eps,
                   phi_ref=phi_ref, sense=sense, phis_deg=phis)
@@ -535,8 +566,7 @@ def _shared_points(r: Reader, frame: int, frame_points: dict[str, complex], link
         groups = {root(x) for x in lids}
         if len(groups) > 1:
             where = "points" if frame in lids else f"links.{lids[-1]}.points"
-            raise r.fail(f"{where}.{nm}", f"point {nm!r} is on links {', '.join(map(str, lids))} but no joint "
-                                          f"at {nm!r} joins them; rename one of them (S2, S3, ...) or add the joint")
+            raise r.fail(f"{where}.{nm}", Said("e_shared_point", point=nm, links=", ".join(map(str, lids))))
 
 
 def _branches(r: Reader, data: dict[str, Any]) -> dict[str, int]:
@@ -544,7 +574,7 @@ def _branches(r: Reader, data: dict[str, Any]) -> dict[str, int]:
     out = {}
     for key, value in raw.items():
         if isinstance(value, bool) or value not in (1, -1):
-            raise r.fail(f"branches.{key}", f"expected +1 or -1, got {value!r}")
+            raise r.fail(f"branches.{key}", Said("e_branch", got=show(value)))
         out[r.name(key, f"branches.{key}")] = int(value)
     return out
 
@@ -552,12 +582,12 @@ def _branches(r: Reader, data: dict[str, Any]) -> dict[str, int]:
 def _outputs(r: Reader, data: dict[str, Any]) -> frozenset[str]:
     raw = data.get("outputs", ["positions", "velocity_plan", "acceleration_plan"])
     if not isinstance(raw, list) or not all(isinstance(x, str) for x in raw):
-        raise r.fail("outputs", "expected a list of names")
+        raise r.fail("outputs", Said("e_outputs"))
     wanted: set[str] = set()
 
     def add(name: str) -> None:
         if name not in OUTPUTS:
-            raise r.fail("outputs", f"unknown output {name!r}; expected some of {list(OUTPUTS)}")
+            raise r.fail("outputs", Said("e_output", name=name, hint="", known=", ".join(OUTPUTS)))
         if name not in wanted:
             wanted.add(name)
             for dep in OUTPUTS[name]:
@@ -565,8 +595,8 @@ def _outputs(r: Reader, data: dict[str, Any]) -> frozenset[str]:
 
     for name in raw:
         if name not in OUTPUTS:
-            raise r.fail("outputs", f"unknown output {name!r}{did_you_mean(name, OUTPUTS)} "
-                                    f"(expected some of {', '.join(OUTPUTS)})")
+            raise r.fail("outputs", Said("e_output", name=name, hint=did_you_mean(name, OUTPUTS),
+                                         known=", ".join(OUTPUTS)))
         add(name)
     return frozenset(wanted)
 
@@ -578,7 +608,7 @@ def _title(r: Reader, value: Any) -> tuple[str, dict[str, str]]:
     if isinstance(value, dict) and value and all(k in ("ru", "en") and isinstance(v, str)
                                                  for k, v in value.items()):
         return str(value.get("en") or value.get("ru") or ""), {str(k): str(v) for k, v in value.items()}
-    raise r.fail("title", "expected a string or { ru = \"...\", en = \"...\" }")
+    raise r.fail("title", Said("e_title"))
 
 
 _SCALE_UNITS = {"length": "mm/m", "velocity": "mm/(m/s)", "acceleration": "mm/(m/s^2)", "force": "mm/N"}
@@ -602,9 +632,8 @@ def _scales(r: Reader, data: dict[str, Any]) -> tuple[dict[str, float], str]:
             out[f"{key}_known_mm"] = r.number(value, "known_mm", f"scales.{key}.", positive=True, limit=1e4)
             continue
         if not isinstance(value, dict) or len(value) != 1 or not ({"mu", "K"} & set(value)):
-            raise r.fail(f"scales.{key}", "expected { mu = mm per unit }, { K = unit per mm }"
-                         + (" or { known_mm = length of the known vector }"
-                            if key in ("velocity", "acceleration") else ""))
+            raise r.fail(f"scales.{key}", Said("e_scale_known" if key in ("velocity", "acceleration")
+                                               else "e_scale"))
         kind = "mu" if "mu" in value else "K"
         x = r.number(value, kind, f"scales.{key}.", positive=True, limit=1e9, floor=1e-9)
         out[key] = x if kind == "mu" else 1.0 / x

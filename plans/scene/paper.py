@@ -59,6 +59,9 @@ class SheetSpec:
                                       # scene, schemes at the first two)
         trace = ["S2"]                # points whose trajectory the plan of positions traces
                                       # (default: the centres of mass of the connecting rods)
+        first_position = 1            # the first position's number on every panel: 1 (1, 2, …, 12,
+                                      # as the course's tables number them) or 0 (0, 1, …, 11);
+                                      # JSON and Python indices stay 0-based (label = index + this)
         [[sheet.pins]]                # fix a panel: top-left corner in mm from the paper's corner
         panel = "velocity-45"
         sheet = 1
@@ -86,6 +89,7 @@ class SheetSpec:
     pins: tuple[Pin, ...] = ()
     set: str | None = None  # "course" | "positions"; None: by the number of positions
     choice: tuple[tuple[str, object], ...] = ()  # panels = { kind = "all" | "none" | [numbers] | bool }
+    first_position: int = 1  # the number of the first position on the panels (label = index + this)
 
     @property
     def size(self) -> tuple[float, float]:

@@ -32,6 +32,7 @@ SHEET_SETS = ("course", "positions")
 PANEL_CHOICE_AT = ("scheme", "velocity", "acceleration", "forces", "lever", "table", "centres")
 PANEL_CHOICE_WHOLE = ("positions", "legend")
 _KEYS |= {"acceleration_pole"}  # the notation, read with the scales (plans.scene.notation)
+_KEYS |= {"first_position"}  # the number of the first position on every panel (1 or 0)
 
 
 def sheet_spec(raw: dict[str, Any], path: str, default_title: str = "", **override: Any) -> SheetSpec:
@@ -145,6 +146,12 @@ def read_sheet(raw: dict[str, Any], path: str, default_title: str = "", **overri
             raise InputError(f"expected one of {', '.join(repr(x) for x in SHEET_SETS)}, got {override['set']!r}",
                              file=path, field="sheet.set")
         out["set"] = override["set"]
+    if "first_position" in data:
+        v = data["first_position"]
+        if isinstance(v, bool) or not isinstance(v, int) or v not in (0, 1):
+            raise InputError(f"expected 1 (positions 1, 2, …) or 0 (positions 0, 1, …), got {v!r}", file=path,
+                             field="sheet.first_position")
+        out["first_position"] = int(v)
     out.setdefault("title", default_title)
     return out
 

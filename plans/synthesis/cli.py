@@ -17,6 +17,9 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("task", help="synthesis file (TOML, kind = \"synthesis\")")
     p.add_argument("-o", "--output", metavar="SCENE", help="write the designed linkage scene (TOML) here")
     p.add_argument("--json", metavar="PATH", help="write the design as JSON ('-' for stdout)")
+    from plans.language import add_option
+
+    add_option(p)
     p.set_defaults(func=_run)
 
 
@@ -87,36 +90,44 @@ def results(d: Design, scene: str) -> dict[str, Any]:
     return out
 
 
-def summary(d: Design, res: dict[str, Any]) -> str:
+def summary(d: Design, res: dict[str, Any], lang: str = "en") -> str:
+    """The design on the terminal, in ``lang``."""
+    from plans.phrases import PHRASES, UNITS_RU, say
+
+    from .record import choice_text
+
+    def word(key: str, default: str) -> str:
+        return say(key, lang) if key in PHRASES else default
+
     t = d.task
-    u = t.unit
-    kind = t.mechanism.replace("_", " ")
+    u = UNITS_RU.get(t.unit, t.unit) if lang == "ru" else t.unit
+    kind = word(f"dm_{t.mechanism}", t.mechanism.replace("_", " "))
     if d.model in ("central", "offset", "three_positions"):
-        kind += f" ({d.model.replace('_', ' ')})"
+        kind += word("d_offset_model" if d.model == "offset" else f"d_{d.model}", f" ({d.model.replace('_', ' ')})")
     lines = [f"{t.title}: {kind}"]
-    lines.append("  " + ", ".join(f"{k} {v:.6g} {u}" for k, v in res["lengths"].items()))
+    lines.append("  " + ", ".join(say("d_length", lang, k=word(f"d_{k}", k), v=v, u=u)
+                                  for k, v in res["lengths"].items()))
     if "K" in res:
-        lines.append(f"  K {res['K']:.6g} (θ {res['theta_deg']:.6g} deg), measured {res['K_measured']:.12g}")
+        lines.append(say("d_K", lang, K=res["K"], theta=res["theta_deg"], m=res["K_measured"]))
     else:
-        lines.append(f"  K measured {res['K_measured']:.12g}")
+        lines.append(say("d_K_measured", lang, m=res["K_measured"]))
     if "stroke_measured" in res:
-        given = f"{res['stroke']:.6g} {u}, " if "stroke" in res else ""
-        lines.append(f"  stroke {given}measured {res['stroke_measured']:.12g} {u}")
+        given = say("d_given", lang, v=res["stroke"], u=u) if "stroke" in res else ""
+        lines.append(say("d_stroke", lang, given=given, m=res["stroke_measured"], u=u))
     if "swing_measured_deg" in res:
-        given = f"{res['swing_deg']:.6g} deg, " if "swing_deg" in res else ""
-        lines.append(f"  swing {given}measured {res['swing_measured_deg']:.12g} deg")
-    line = f"  gamma_min {res['gamma_min_deg']:.6g} deg at phi {res['gamma_min_at_deg']:.6g} deg"
+        given = say("d_given_deg", lang, v=res["swing_deg"]) if "swing_deg" in res else ""
+        lines.append(say("d_swing", lang, given=given, m=res["swing_measured_deg"]))
+    line = say("d_gamma", lang, g=res["gamma_min_deg"], at=res["gamma_min_at_deg"])
     if "pressure_angle_max_deg" in res:
-        line += f"; pressure angle max {res['pressure_angle_max_deg']:.6g} deg"
+        line += say("d_pressure", lang, p=res["pressure_angle_max_deg"])
     lines.append(line)
     for i, c in enumerate(res.get("cylinders", [])):
-        lines.append(f"  cylinder {'BC'[i]}: stroke measured {c['stroke_measured']:.12g} {u}, K measured "
-                     f"{c['K_measured']:.12g}")
+        lines.append(say("d_cylinder", lang, c="BC"[i], s=c["stroke_measured"], u=u, k=c["K_measured"]))
     if "positions_error_deg" in res:
-        lines.append(f"  the three positions met to {res['positions_error_deg']:.3g} deg")
-    lines.append("  the crank turns fully, one assembly branch" + ("; Grashof holds" if res.get("grashof") else ""))
+        lines.append(say("d_three", lang, e=res["positions_error_deg"]))
+    lines.append(say("d_turns", lang) + (say("d_grashof", lang) if res.get("grashof") else ""))
     if d.choice:
-        lines.append(f"  chosen: {res['choice']}")
+        lines.append(say("d_chosen", lang, c=choice_text(d.choice, lang)))
     return "\n".join(lines)
 
 
@@ -134,7 +145,8 @@ def check_scene(text: str, task_path: str) -> None:
         field = exc.field or ""
         if field.startswith("driver."):
             field = field.split(".", 1)[1]
-        raise InputError(exc.detail, file=task_path, field=f"task.{field}" if field else "task") from None
+        raise InputError(exc.said if exc.said is not None else exc.detail, file=task_path,
+                         field=f"task.{field}" if field else "task") from None
 
 
 def _run(args: argparse.Namespace) -> int:
@@ -164,5 +176,7 @@ def _run(args: argparse.Namespace) -> int:
     if args.json == "-":
         sys.stdout.write(dumps(res))
         return 0
-    print(summary(d, res))
+    from plans.language import file_language
+
+    print(summary(d, res, file_language(getattr(args, "language", None), args.task)))
     return 0
