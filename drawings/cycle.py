@@ -362,14 +362,14 @@ def _rms(lang: str) -> str:
 
 
 def table_panels(tables: Sequence[CycleTable], lang: str, prefix: str,
-                 titles: Sequence[str] | None = None, first: int = 1) -> list[Panel]:
-    """Cycle tables as panels: positions as columns (numbered from ``first``), split in halves
-    when they are many."""
+                 titles: Sequence[str] | None = None, columns: int = 12, first: int = 1) -> list[Panel]:
+    """Cycle tables as panels: positions as columns (numbered from ``first``), split in parts of
+    ``columns`` when they are many."""
     out: list[Panel] = []
     for i, t in enumerate(tables):
         title = titles[i] if titles else t.title
         n = len(t.phi_deg)
-        chunks = [range(0, n)] if n <= 14 else [range(a, min(n, a + 12)) for a in range(0, n, 12)]
+        chunks = [range(0, n)] if n <= columns + 2 else [range(a, min(n, a + columns)) for a in range(0, n, columns)]
         for j, ks in enumerate(chunks):
             head = [tr("position", lang)] + [str(k + first) for k in ks]
             rows = [[tr("phi", lang)] + [number(t.phi_deg[k], lang, 6) for k in ks]]
@@ -443,21 +443,24 @@ def analogue_plans(plans: Sequence, lang: str, style: str) -> list[Panel]:
 
 
 def dynamics_panels(d: Dynamics, tables: Sequence[CycleTable], lang: str, analogues: Sequence = (),
-                    first: int = 1) -> list[Panel]:
+                    columns: int = 12, first: int = 1) -> list[Panel]:
     titles = [f"{tr('analogues', lang)}, μ = {fmt(d.scales.analogue, 4, lang)} mm/m (ω_1 = 1)",
               tr("Ipr", lang), f"{tr('Mpr', lang)}; {tr('sign', lang)}", tr("energy", lang)]
     plans = analogue_plans(analogues, lang, d.scene.scale_style)  # none where the first sheet has the plans
     return ([_m_panel(d, lang, first), _a_panel(d, lang, first), _t_panel(d, lang, first),
              _i_panel(d, lang, first), _w_panel(d, lang, first), _omega_panel(d, lang, first), _fly_table(d, lang)]
-            + indicator_panels(d, lang) + table_panels(tables, lang, "dyn", titles, first) + plans)
+            + indicator_panels(d, lang) + table_panels(tables, lang, "dyn", titles, columns, first) + plans)
 
 
 # --------------------------------------------------------------------------- the hook
 
 
-def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_text: str | None = None) -> list[Sheet]:
+def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_text: str | None = None,
+           diagrams: bool = True, lay=None) -> list[Sheet]:
     """The drawing's sheets and, when the scene asks, the diagrams and dynamics sheets after them,
-    numbered on from the last (a Scene is solved first, by plans.solve)."""
+    numbered on from the last (a Scene is solved first, by plans.solve); ``diagrams=False``:
+    the kinematic diagrams are already on the drawing's sheets (the course's kinematics sheet);
+    ``lay(panels, spec)``: how the dynamics' panels are laid out (default: :func:`compose`)."""
     if not isinstance(sol, Solution):
         from plans.solution import solve
 
@@ -468,14 +471,26 @@ def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_te
     lang = spec.language
     cr = sol.cycle
     extra: list[Sheet] = []
-    if cr is not None and cr.diagrams is not None:
+    if cr is not None and cr.diagrams is not None and diagrams:
         sub = dataclasses.replace(spec, subtitle=tr("diagrams", lang), pins=())
-        extra += compose(diagram_panels(cr.diagrams, lang, spec.first_position), sub, scale_text, scene.path)
+        extra += compose(fitting_diagrams(sol, cr.diagrams, spec), sub, scale_text, scene.path)
     if cr is not None and cr.dynamics is not None:
         sub = dataclasses.replace(spec, subtitle=tr("dynamics", lang), pins=())
         tabs = cr.tables[-4:]  # the dynamics' own: analogues, I_pr, M_pr, work and energy
         analogues = () if scene.wants("velocity_plan") else sol.analogue_plans()  # else on the first sheet
-        extra += compose(_fitting_dynamics(sol, cr.dynamics, tabs, sub, analogues), sub, scale_text, scene.path)
+        panels = _fitting_dynamics(sol, cr.dynamics, tabs, sub, analogues)
+        if lay is None:
+            extra += compose(panels, sub, scale_text, scene.path)
+        else:  # a last sheet left nearly empty: the diagrams on a shorter φ axis, if all then fit fewer
+            laid = lay(panels, sub)
+            axis = 240.0
+            while len(laid) > 1 and min(map(_used, laid)) < 1 / 3 and axis > 160.0:
+                axis -= 20.0
+                fewer = lay(_fitting_dynamics(sol, sol.dynamics_drawn(axis, 1.0), tabs, sub, analogues, axis), sub)
+                if len(fewer) < len(laid):
+                    laid = fewer
+                    break
+            extra += laid
     out = list(sheets) + extra
     for i, sh in enumerate(out):
         sh.number, sh.count = i + 1, len(out)
@@ -484,22 +499,51 @@ def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_te
     return out
 
 
-def _fitting_dynamics(sol: Solution, d: Dynamics, tabs: Sequence[CycleTable], spec: SheetSpec,
-                      analogues: Sequence = ()) -> list[Panel]:
-    """The dynamics sheet's panels as they fit the sheet: on a small one the φ axis of the
-    diagrams is shortened (240 mm on A1 and A2) and their heights lowered until every
-    diagram fits, not refused."""
+def fitting_diagrams(sol: Solution, dg: Diagrams, spec: SheetSpec) -> list[Panel]:
+    """The kinematic diagrams as they fit the sheet: on a small one at a shorter φ axis (the
+    scales μφ, μs... written on them the engine's at that length), not refused."""
     from .sheet import fits_empty
 
-    panels = dynamics_panels(d, tabs, spec.language, analogues, spec.first_position)
-    axis = 240.0
-    height = 1.0
-    while not all(fits_empty(p, spec.format, spec.orientation) for p in panels) and axis > 60.0:
-        axis = max(60.0, math.floor(axis * 0.8 / 10.0) * 10.0)
-        height = max(0.4, height * 0.85)
-        d = sol.dynamics_drawn(axis, height)
-        panels = dynamics_panels(d, tabs, spec.language, analogues, spec.first_position)
+    panels = diagram_panels(dg, spec.language, spec.first_position)
+    length = dg.spec.length_mm
+    while not all(fits_empty(p, spec.format, spec.orientation) for p in panels) and length > 60.0:
+        length = max(60.0, math.floor(length * 0.8 / 10.0) * 10.0)
+        smaller = sol.diagrams_drawn(length)
+        if smaller is None:
+            break
+        panels = diagram_panels(smaller, spec.language, spec.first_position)
     return panels
+
+
+def _used(sheet: Sheet) -> float:
+    """The part of a sheet's field (inside the frame) its panels cover (they do not overlap)."""
+    from .sheet import usable
+
+    a = usable(sheet.width, sheet.height)
+    return sum(p.width * p.height for p, _, _ in sheet.placed) / ((a[2] - a[0]) * (a[3] - a[1]))
+
+
+def _fitting_dynamics(sol: Solution, d: Dynamics, tabs: Sequence[CycleTable], spec: SheetSpec,
+                      analogues: Sequence = (), axis: float = 240.0) -> list[Panel]:
+    """The dynamics sheet's panels as they fit the sheet: on a small one the φ axis of the
+    diagrams is shortened (240 mm on A1 and A2, or ``axis``, the one ``d`` is drawn at) and
+    their heights lowered until every diagram fits, not refused."""
+    from .sheet import fits_empty
+
+    panels = dynamics_panels(d, tabs, spec.language, analogues, first=spec.first_position)
+    height = 1.0
+    columns = 12
+    while True:
+        big = [p for p in panels if not fits_empty(p, spec.format, spec.orientation)]
+        if big and columns > 3 and any(p.pid.startswith("dyn-table") for p in big):
+            columns //= 2  # a table over the positions in more, narrower parts
+        elif big and axis > 60.0:
+            axis = max(60.0, math.floor(axis * 0.8 / 10.0) * 10.0)
+            height = max(0.4, height * 0.85)
+            d = sol.dynamics_drawn(axis, height)
+        else:
+            return panels
+        panels = dynamics_panels(d, tabs, spec.language, analogues, columns, spec.first_position)
 
 
 def diagrams_sheet_seconds(path: str | Path, repeat: int = 5) -> float:

@@ -93,11 +93,16 @@ def build(sol, spec, ks: Sequence[int], plans_at: dict[int, Any], mu_l: float) -
             vplan = plans_at[k].velocity if k in plans_at else None
             panels.append(lever_panel(sol, k, vplan, lang, style))
         if want("table") and polys:
-            panels.append(forces_table(polys, lang, style, phi))
+            from .table_parts import parts
+
+            def table(part: tuple[int, int, int] | None, polys: Any = polys, phi: float = phi) -> Panel:
+                return forces_table(polys, lang, style, phi, part)
+
+            panels.extend(parts(table, spec))
         out[k] = panels
         out[("table", k)] = balancing_rows(sol, k, lang) + efficiency_rows(fa, k, lang)
     if fa.friction is not None and want("table"):  # η(φ) and its table go with the tables
-        out["efficiency"] = efficiency_panels(fa, lang)
+        out["efficiency"] = efficiency_panels(fa, lang, min(1.0, spec.fit))
     return out
 
 
@@ -419,7 +424,7 @@ class _Row:
         self.relative = abs(value - exact) / den if den > 0 else 0.0
 
 
-def forces_table(polys, lang: str, style: str, phi: float) -> Panel:
+def forces_table(polys, lang: str, style: str, phi: float, part: tuple[int, int, int] | None = None) -> Panel:
     """Every polygon vector: segment, mm, μF, value read to the ruler, exact, difference."""
     rows = []
     whole = max((s.value for fp in polys for s in fp.plan.segments), default=0.0)
@@ -433,7 +438,7 @@ def forces_table(polys, lang: str, style: str, phi: float) -> Panel:
             rows.append(_Row(force_label(s.label, lang), f"{s.start} {s.end}", s.length_mm, fp.scale,
                              fp.reading(s.label), s.value, "N", ref))
     title_pid = f"forces-table-{phi_tag(phi)}"
-    p = table_panel(rows, lang, style, phi, pid=title_pid, title_key="forces_table")
+    p = table_panel(rows, lang, style, phi, pid=title_pid, title_key="forces_table", part=part)
     return p
 
 

@@ -101,9 +101,10 @@ def efficiency_rows(fa: Any, k: int, lang: str) -> list[tuple[str, ...]]:
     return rows
 
 
-def efficiency_panels(fa: Any, lang: str) -> list[Any]:
+def efficiency_panels(fa: Any, lang: str, size: float = 1.0) -> list[Any]:
     """The diagram η(φ) over the turn with the cycle's η, and the table of the positions:
-    F_bal without and with friction, the power lost and η."""
+    F_bal without and with friction, the power lost and η.  ``size``: the diagram's length and
+    height as a fraction of A1's (the paper's fit)."""
     from plans.forces.friction import efficiency_json
 
     from .cycle_plot import GRAPH, Axes, number, plot_panel, wide_table
@@ -118,10 +119,10 @@ def efficiency_panels(fa: Any, lang: str) -> list[Any]:
     phis = np.asarray(eff["phi_deg"], float)
     eta = np.asarray(fr.efficiency, float)
     rec = Recording()
-    mu_phi = 180.0 / (2 * math.pi)  # the turn 180 mm long
+    mu_phi = 180.0 * size / (2 * math.pi)  # the turn 180 mm long on A1
     finite = eta[np.isfinite(eta)]
     big = float(np.max(np.abs(finite))) if finite.size else 1.0
-    mu_eta = min(50.0, 60.0 / max(big, 1e-9))
+    mu_eta = min(50.0, 60.0 / max(big, 1e-9)) * size
     ax = Axes(rec, "friction-eta", mu_phi, float(phis[0]), lang)
     lo = float(min(finite.min(), 0.0)) * mu_eta if finite.size else 0.0
     hi = float(max(finite.max(), 1.0)) * mu_eta if finite.size else mu_eta

@@ -10,8 +10,6 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from plans.errors import InputError
-from plans.kinematics.exact import Kinematics
 from plans.scene.model import Scene, load_scene
 from plans.solution import Solution
 from plans.solution import solve as solve_scene
@@ -44,23 +42,6 @@ class Drawing:
         return self.sheets[0].svg()
 
 
-def _positions(scene: Scene, kin: Kinematics, spec: SheetSpec) -> list[int]:
-    if spec.positions is None:
-        return list(range(kin.n))
-    out = []
-    for phi in spec.positions:
-        hits = [k for k in range(kin.n) if abs(float(kin.phi_deg[k]) - phi) < 1e-9]
-        if not hits:
-            raise InputError(f"crank angle {phi:g}° is not among the scene's positions "
-                             f"{[float(x) for x in kin.phi_deg]}", file=scene.path, field="sheet.positions")
-        out.append(hits[0])
-    return out
-
-
-def _wants(spec: SheetSpec, kind: str) -> bool:
-    return spec.panels is None or kind in spec.panels
-
-
 def _fitting_positions(sol: Solution, mu: float, lang: str, bold: list[int], strokes: Any,
                        spec: SheetSpec) -> Any:
     """The plan of positions as it fits the sheet: in full; else with its angles in brief; else
@@ -83,49 +64,62 @@ def _fitting_positions(sol: Solution, mu: float, lang: str, bold: list[int], str
     return panel
 
 
-def build_panels(sol: Solution, spec: SheetSpec) -> tuple[list[Panel], float]:
-    """Every panel the scene asks for, in the order they go on the sheet."""
+def build_panels(sol: Solution, spec: SheetSpec, sel: dict[str, Any] | None = None,
+                 mu_positions: float | None = None, mu_l: float | None = None) -> tuple[list[Panel], float]:
+    """Every panel the scene asks for, in the order they go on the sheet: the plan of
+    positions, then position by position its scheme, plans, forces, lever and table.
+    ``sel`` (kind -> positions, :func:`drawings.sheet_sets.selection`) says which positions
+    each kind shows (default: the ``positions`` set's); ``mu_positions`` the plan of
+    positions' scale (default: the largest standard one that fits two fifths of the sheet),
+    ``mu_l`` the schemes' and groups' (default: the file's, else about 230 mm across on A1)."""
+    from .sheet_sets import selection
+
     metrics()  # fail early, with the font's name, if it is missing
     scene = sol.scene
     lang, style = spec.language, scene.scale_style
     kin = sol.kinematics
-    ks = _positions(scene, kin, spec)
+    if sel is None:
+        sel = selection(sol, spec, "positions")
     size = cycle_size(sol)
     w, _h = spec.size  # schemes about 230 mm across on A1, proportionally less on smaller sheets
-    mu_l = scene.scales.get("length") or auto_length_scale(size, 230.0 * min(1.0, max(w, _h) / 841.0))
+    mu_l = mu_l or scene.scales.get("length") or auto_length_scale(size, 230.0 * min(1.0, max(w, _h) / 841.0))
     strokes = strokes_over_cycle(sol)
     plans_at: dict[int, Any] = dict(enumerate(sol.plans))
-    forces = _force_panels(sol, spec, ks, plans_at, mu_l) if (
-        scene.wants("force_polygons") or scene.wants("lever")) else {}
+    at = {kind: set(ks) for kind, ks in sel.items() if kind not in ("positions", "legend", "bold")}
+    kforces = sorted(at.get("forces", set()) | at.get("lever", set()) | at.get("table", set()))
+    forces = _force_panels(sol, spec, kforces, plans_at, mu_l, at) if (
+        kforces and (scene.wants("force_polygons") or scene.wants("lever"))) else {}
     panels: list[Panel] = []
-    # Many positions: one plan of positions (all of them overlaid) and schemes of its own
-    # only for the positions studied in detail (listed, or the first two).
-    overlay = kin.n > 1 and scene.wants("positions") and _wants(spec, "positions")
-    schemes = set(ks if spec.positions is not None or not overlay else ks[:2])
-    if overlay:  # the plan of positions at the largest standard scale that fits 2/5 of the sheet
-        mu_pos = scene.scales.get("length") or auto_length_scale(size, 0.4 * (w - 37.0))
-        panels.append(_fitting_positions(sol, mu_pos, lang, sorted(schemes), strokes, spec))
-    for k in ks:
-        if scene.wants("positions") and _wants(spec, "scheme") and k in schemes:
+    if sel.get("positions"):  # the plan of positions at the largest standard scale that fits 2/5 of the sheet
+        mu_pos = mu_positions or scene.scales.get("length") or auto_length_scale(size, 0.4 * (w - 37.0))
+        panels.append(_fitting_positions(sol, mu_pos, lang, sel.get("bold", []), strokes, spec))
+    for k in sorted(set().union(*at.values())) if at else []:
+        if scene.wants("positions") and k in at.get("scheme", ()):
             panels.append(scheme_panel(scene, kin, k, mu_l, lang, strokes))
-        if scene.wants("instant_centres") and _wants(spec, "centres") and k in schemes:
+        if scene.wants("instant_centres") and k in at.get("centres", ()):
             from .centres import centres_panels
 
             panels.extend(centres_panels(sol, k, mu_l, lang, strokes))
         pp = plans_at.get(k)
         if pp is not None:
-            if pp.velocity is not None and _wants(spec, "velocity"):
+            if pp.velocity is not None and k in at.get("velocity", ()):
                 panels.append(plan_panel(pp.velocity, lang, style))
-            if pp.acceleration is not None and _wants(spec, "acceleration"):
+            if pp.acceleration is not None and k in at.get("acceleration", ()):
                 panels.append(plan_panel(pp.acceleration, lang, style))
         panels.extend(forces.get(k, []))
-        if pp is not None and pp.readings and _wants(spec, "table"):
-            extra = forces.get(("table", k), [])
-            panels.append(table_panel(_rows(scene, pp.readings), lang, style, float(kin.phi_deg[k]),
-                                      extra=extra))
+        if pp is not None and pp.readings and k in at.get("table", ()):
+            from .table_parts import parts
+
+            extra, rows, phi = forces.get(("table", k), []), _rows(scene, pp.readings), float(kin.phi_deg[k])
+
+            def table(part: tuple[int, int, int] | None, rows: list = rows, extra: list = extra,
+                      phi: float = phi) -> Panel:
+                return table_panel(rows, lang, style, phi, extra=extra, part=part)
+
+            panels.extend(parts(table, spec))
     panels.extend(forces.get("efficiency", []))  # η(φ) and its table, with friction over a turn
     kinds = legend_kinds(panels)
-    if _wants(spec, "legend") and any(k not in ("trace",) for k in kinds):
+    if sel.get("legend") and any(k not in ("trace",) for k in kinds):
         panels.append(legend_panel(kinds, lang))
     return panels, mu_l
 
@@ -150,31 +144,98 @@ def _rows(scene: Scene, readings) -> list:
     return out
 
 
-def _force_panels(sol: Solution, spec: SheetSpec, ks: list[int], plans_at, mu_l: float) -> dict:
-    """Force panels (group free bodies and polygons, crank, lever) when plans.forces exists."""
+def _force_panels(sol: Solution, spec: SheetSpec, ks: list[int], plans_at, mu_l: float,
+                  at: dict[str, set[int]] | None = None) -> dict:
+    """Force panels (group free bodies and polygons, crank, lever) when plans.forces exists;
+    with ``at`` only those of the positions it names for each kind (forces, lever, table)."""
     try:
         from . import forces_panels
     except ImportError:  # pragma: no cover - the force panels are optional
         return {}
-    return forces_panels.build(sol, spec, ks, plans_at, mu_l)
+    out = forces_panels.build(sol, spec, ks, plans_at, mu_l)
+    if at is None:
+        return out
+    kind_of = {"group": "forces", "polygon": "forces", "crank": "forces", "lever": "lever", "table": "table"}
+    for k in ks:
+        if k in out:
+            out[k] = [p for p in out[k] if k in at.get(kind_of.get(p.kind, "forces"), ())]
+    return out
 
 
 def draw(source: Solution | Scene | str | Path, *, format: str | None = None, orientation: str | None = None,
-         language: str | None = None) -> Drawing:
+         language: str | None = None, sheet_set: str | None = None) -> Drawing:
     """The sheets of a solved scene (a :class:`Solution`), or of a Scene or the path of its
     file, solved once here at the paper's fit.  A Solution is drawn at the scales it was
-    solved with (``plans.solve(scene, fit=...)``)."""
+    solved with (``plans.solve(scene, fit=...)``).  ``sheet_set`` overrides ``[sheet] set``."""
     if isinstance(source, Solution):
         sol = source
-        spec = sol.scene.sheet_for(format=format, orientation=orientation, language=language)
+        spec = sol.scene.sheet_for(format=format, orientation=orientation, language=language, set=sheet_set)
     else:
         sc = source if isinstance(source, Scene) else load_scene(source)
-        spec = sc.sheet_for(format=format, orientation=orientation, language=language)
+        spec = sc.sheet_for(format=format, orientation=orientation, language=language, set=sheet_set)
         sol = solve_scene(sc, fit=fit_for(spec))
-    panels, mu_l = build_panels(sol, spec)
+    from .sheet import TooBig
+
+    while True:
+        try:
+            return _draw(sol, spec)
+        except TooBig as e:  # a plan, polygon or lever too big for the paper: smaller round scales
+            fit = _smaller_fit(sol, e.panel, spec)
+            if fit is None:
+                raise
+            sol = solve_scene(sol.scene, fit=fit)
+
+
+#: The engine's scales a panel may be drawn at, and the ``[scales]`` keys that fix them.
+_SOLVED = {"velocity": ("velocity", "velocity_known_mm"), "acceleration": ("acceleration", "acceleration_known_mm"),
+           "force": ("force",)}
+
+
+def _smaller_fit(sol: Solution, panel: Panel, spec: SheetSpec) -> float | None:
+    """The fit to solve again at when ``panel`` does not fit an empty sheet: its plan, polygon
+    or lever drawn at the next smaller round scales (the scales written on it change with
+    them); None where its scale is not the engine's to change (the file's own, a length)."""
+    from .sheet import GAP, TB_H, usable
+
+    if panel.quantity not in _SOLVED or any(k in sol.scene.scales for k in _SOLVED[panel.quantity]):
+        return None
+    w, h = spec.size
+    a = usable(w, h)
+    room = min((a[2] - a[0]) / panel.width, (a[3] - a[1] - TB_H - GAP) / panel.height)
+    fit = sol.fit * min(0.8, max(0.5, room))
+    return fit if fit >= 0.02 else None
+
+
+def _draw(sol: Solution, spec: SheetSpec) -> Drawing:
+    """The sheets of ``sol`` on ``spec``'s paper (TooBig when a panel does not fit it)."""
+    from .sheet_sets import course_sheets, numbers, set_of
+
     sc = sol.scene
-    numbers = {float(phi): k + spec.first_position for k, phi in enumerate(sc.driver.phis_deg)}
-    sheets = compose(panels, spec, None, sc.path, numbers)  # each sheet's scale: its main image's
+    if set_of(sol, spec) == "course":
+        diagrams = []
+        if sc.wants("diagrams") and sol.cycle is not None and sol.cycle.diagrams is not None:
+            from .cycle import fitting_diagrams
+
+            diagrams = fitting_diagrams(sol, sol.cycle.diagrams, spec)
+        strokes = strokes_over_cycle(sol)
+
+        def builders(s: Solution) -> tuple[Any, Any]:
+            return (lambda sel, mp, ml: build_panels(s, spec, sel, mp, ml),
+                    lambda mu, bold: positions_panel(s, mu, spec.language, bold, strokes, spec.trace))
+
+        sheets = course_sheets(sol, spec, *builders(sol), diagrams)
+        panels = [p for sh in sheets for p, _, _ in sh.placed if p not in diagrams]  # the linkage's
+        if sc.wants("dynamics"):  # the dynamics' sheets follow
+            from .cycle import extend
+            from .sheet_sets import flat_sheets
+
+            sheets = extend(sol, spec, sheets, None, diagrams=False, lay=flat_sheets)
+        mu_l = next((p.scale for p in panels if p.kind == "scheme" and p.scale), None) or build_panels(
+            sol, spec, {"positions": False, "legend": False})[1]
+        return Drawing(sc, spec, tuple(panels), tuple(sheets), mu_l)
+    panels, mu_l = build_panels(sol, spec)
+    nums = {float(phi): n for phi, n in zip(sc.driver.phis_deg, numbers(sol, spec), strict=True)}
+    sheets = compose(panels, spec, None, sc.path, nums)  # each sheet's scale: its main image's
     if sc.wants("diagrams") or sc.wants("dynamics"):  # the cycle's sheets follow
         from .cycle import extend
 

@@ -200,15 +200,19 @@ def quantity_text(q: str) -> str:
 
 
 def table_panel(rows: Sequence, lang: str, scale_style: str, phi: float, pid: str | None = None,
-                extra: Sequence[tuple[str, ...]] = (), title_key: str = "table") -> Panel:
+                extra: Sequence[tuple[str, ...]] = (), title_key: str = "table",
+                part: tuple[int, int, int] | None = None) -> Panel:
     """Per position: quantity, segment, mm, scale, value read, exact, unit, difference %.
 
     ``rows`` are readings (``plans.construction.Reading``-like); ``extra`` are ready rows of
-    eight cells (the balancing force three ways).
+    eight cells (the balancing force three ways).  ``part`` = (start, stop, n): only those
+    rows, as the table's part n (:func:`drawings.table_parts.parts`).
     """
     from plans.scene.notation import pole_label, resolve
 
     pid = pid or f"table-{phi_tag(phi)}"
+    if part is not None and part[2] > 1:
+        pid = f"{pid}-{part[2]}"
     header: tuple[str, ...] = (tr("quantity", lang), tr("segment", lang), tr("mm", lang), tr("scale", lang),
               tr("read", lang), tr("exact", lang), tr("unit", lang), tr("diff", lang))
     body: list[tuple[str, tuple[str, ...]]] = []
@@ -230,6 +234,8 @@ def table_panel(rows: Sequence, lang: str, scale_style: str, phi: float, pid: st
         body.append((ident(r.quantity), cells))
     for cells in extra:
         body.append((ident(cells[0]), tuple(cells)))
+    if part is not None:
+        body = body[part[0]:part[1]]
     size = SMALL_SIZE + 0.3
     from .fonts import metrics
 
@@ -273,6 +279,8 @@ def table_panel(rows: Sequence, lang: str, scale_style: str, phi: float, pid: st
         rec.end()
     rec.end()
     title = f"{tr(title_key, lang)}, φ = {angle(phi, lang)}°"
+    if part is not None and part[2] > 1:
+        title += " " + tr("continued", lang)
     return finish(pid, "table", phi, rec, title)
 
 

@@ -383,13 +383,28 @@ _SINGLE = ("positions", "legend")  # drawing-wide panels: a block of their own
 _WHOLE_POSITIONS = ("A1", "A2")  # formats where each position stays whole on one sheet
 
 
+class TooBig(InputError):
+    """A panel too big for an empty sheet (``panel``): an InputError for whoever cannot draw it
+    at a smaller scale, a cue to solve again at a smaller fit for :func:`drawings.linkage.draw`."""
+
+    panel: Panel
+
+
 def _check_fits(p: Panel, spec: SheetSpec, path: str) -> None:
     """A panel too big for an empty sheet: one line saying what would fit."""
+    try:
+        _refuse(p, spec, path)
+    except TooBig as e:
+        e.panel = p
+        raise
+
+
+def _refuse(p: Panel, spec: SheetSpec, path: str) -> None:
     if fits_empty(p, spec.format, spec.orientation):
         return
     bigger = [f for f in SHEET_FORMATS if fits_empty(p, f, spec.orientation)]
     if bigger:
-        raise InputError(f"panel {p.pid} ({p.width:.0f}×{p.height:.0f} mm) does not fit on an empty "
+        raise TooBig(f"panel {p.pid} ({p.width:.0f}×{p.height:.0f} mm) does not fit on an empty "
                          f"{spec.format} {spec.orientation} sheet; use --sheet {bigger[0]} or a smaller scale",
                          file=path, field="sheet.format")
     w, h = FORMATS["A1"]
@@ -401,7 +416,7 @@ def _check_fits(p: Panel, spec: SheetSpec, path: str) -> None:
         hint = f"e.g. [scales] {what} = {{ mu = {_round_down(p.scale * factor * 0.9):g} }}"
     else:
         hint = f"a scale about {factor:.2g} times smaller"
-    raise InputError(f"panel {p.pid} ({p.width:.0f}×{p.height:.0f} mm) does not fit even on an empty A1 "
+    raise TooBig(f"panel {p.pid} ({p.width:.0f}×{p.height:.0f} mm) does not fit even on an empty A1 "
                      f"({aw:.0f}×{ah:.0f} mm free); choose a smaller scale, {hint}", file=path,
                      field=f"scales.{what}")
 

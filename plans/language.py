@@ -476,6 +476,14 @@ def add_option(parser: Any) -> None:
                              "Russian when LANG starts with ru, else English)")
 
 
+# ---- sheet sets: the course's two sheets, tables split over parts (drawings.sheet_sets)
+SHEET_WORDS.update({
+    "continued": ("(продолжение)", "(continued)"),
+    "kinematics_sheet": ("Кинематический анализ", "Kinematic analysis"),
+    "kinetostatics_sheet": ("Силовой анализ", "Force analysis"),
+})
+
+
 # ---- task semantics: the positions from the extreme, the strokes of the loads, the course's notation
 TERMS.update({
     "x_slider": ("slider", "ползун"),

@@ -216,6 +216,19 @@ class Solution:
         return self._part(("dynamics", axis_mm, height),
                           lambda: dynamics(self.scene, axis_mm=axis_mm, height=height))
 
+    def diagrams_drawn(self, length_mm: float) -> Diagrams | None:
+        """The kinematic diagrams drawn at a shorter φ axis (μφ = L/2π), for a sheet too small
+        for the scene's; made once per length (None unless asked for)."""
+        if not self.scene.wants("diagrams"):
+            return None
+        from dataclasses import replace as with_length
+
+        from plans.cycle.diagrams import diagrams
+        from plans.cycle.spec import diagrams_spec
+
+        return self._part(("diagrams", length_mm), lambda: diagrams(
+            self.scene, with_length(diagrams_spec(self.scene), length_mm=length_mm)))
+
     @property
     def diagrams(self) -> Diagrams | None:
         """Kinematic diagrams by graphical differentiation (None unless asked for): the

@@ -312,9 +312,13 @@ def test_panel_too_big_even_for_a1_suggests_a_scale(tmp_path):
         draw(p)
 
 
-def test_panel_too_big_for_a4_suggests_a_larger_sheet():
+def test_panel_too_big_for_a4_at_the_files_own_scale_suggests_a_larger_sheet(tmp_path):
+    """A scale the file fixes is kept: a plan too big for A4 at it is refused, naming a sheet
+    it fits (at the engine's own scales the same scene is drawn smaller: see test_sheet_fit)."""
+    p = tmp_path / "fixed.toml"
+    p.write_text(V_ENGINE.read_text(encoding="utf-8") + "\n[scales]\nvelocity = { mu = 10 }\n", encoding="utf-8")
     with pytest.raises(InputError, match=r"does not fit on an empty A4 .*--sheet A\d"):
-        draw(V_ENGINE, format="A4")
+        draw(p, format="A4")
 
 
 def test_missing_font_names_font_and_package():

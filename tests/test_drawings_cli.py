@@ -35,7 +35,10 @@ def test_parser_keeps_the_engine_commands():
     (["--sheet", "A4"], "does not fit on an empty A4"),
 ])
 def test_user_errors_are_one_line_exit_2(tmp_path, capsys, argv, message):
-    rc = main(["draw", str(V_ENGINE), "-o", str(tmp_path)] + argv)
+    scene = tmp_path.parent / f"{tmp_path.name}-fixed.toml"  # a velocity scale of the file's own: kept
+    scene.write_text(V_ENGINE.read_text(encoding="utf-8") + "\n[scales]\nvelocity = { mu = 10 }\n",
+                     encoding="utf-8")
+    rc = main(["draw", str(scene), "-o", str(tmp_path)] + argv)
     err = capsys.readouterr().err
     assert rc == 2
     assert err.count("\n") == 1 and message in err and "Traceback" not in err

@@ -12,7 +12,7 @@ import pytest
 import shapely
 
 from drawings.backend import THIN, Recording
-from drawings.linkage import draw
+from drawings.linkage import draw as draw_set
 from drawings.overview import positions_panel
 from drawings.panels import Panel, finish, strokes_over_cycle
 from drawings.sheet import GAP, compose, sheet_spec, usable
@@ -20,6 +20,12 @@ from plans.errors import InputError
 from plans.kinematics.exact import solve
 from plans.scene.model import load_scene
 from plans.solution import Solution
+
+
+def draw(source, **kw):
+    """The block layout these tests are about: ``[sheet] set = "positions"``."""
+    return draw_set(source, sheet_set="positions", **kw)
+
 
 ROOT = Path(__file__).resolve().parents[1]
 SAMPLES = ROOT / "samples"

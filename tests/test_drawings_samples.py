@@ -228,6 +228,28 @@ def test_dxf_holds_the_svgs_shapes_in_every_sample(drawn):
         assert differences(svg_shapes(sh.svg()), dxf_tags_shapes(sh.dxf())[0]) == [], sh.number
 
 
+def _drawn_part(sheet) -> float:
+    """The drawn part of a sheet's field (inside the frame, less the title block): the union
+    of its panels' boxes over the field's area."""
+    import shapely
+
+    from drawings.sheet import usable
+
+    field = shapely.box(*usable(sheet.width, sheet.height)).difference(shapely.box(*sheet.title_box))
+    boxes = [shapely.box(x, y, x + p.width, y + p.height) for p, x, y in sheet.placed]
+    return shapely.union_all(boxes).intersection(field).area / field.area
+
+
+def test_a1_sheets_are_not_left_empty(drawn):
+    """Every A1 sheet of every sample has panels over at least 0.3 of its field, and the
+    drawing over 0.4 on average (the course's set: a 12-position scene's kinematics and
+    kinetostatics sheets, the plan of positions and the mechanism grown while the sheets hold them;
+    the block layout left half-empty last sheets of 0.11 to 0.25)."""
+    _, d, _ = drawn
+    fills = [_drawn_part(sh) for sh in d.sheets]
+    assert min(fills) >= 0.3 and sum(fills) / len(fills) >= 0.4, [round(f, 2) for f in fills]
+
+
 def _arrows(prims, kind: str = "force"):
     """(id, length mm) of every vector drawn: a group's shaft starts at its tail, its head
     polygon's first point is its tip (drawings.common.arrow)."""

@@ -46,8 +46,14 @@ class SheetSpec:
         date = "21.11.26"             # written as given (no clock: same scene, same bytes)
         first_sheet = 1               # number of this drawing's first sheet
         total_sheets = 4              # "Sheets" cell (default: first_sheet - 1 + sheets drawn)
+        set = "course"                # "course": a kinematics sheet and a kinetostatics sheet (the
+                                      # default for 12 positions or more); "positions": a block per
+                                      # position with all its panels (the default for fewer)
         panels = ["positions", "scheme", "velocity", "acceleration", "table", "group", "crank", "lever",
-                  "legend"]           # kinds to draw (default: all the scene's outputs ask for)
+                  "legend"]           # kinds to draw (default: all the scene's outputs ask for); or
+                                      # which positions each kind shows (numbers as on the sheet):
+        # panels = { velocity = "all", acceleration = [1, 4], forces = [4], lever = [4],
+        #            scheme = "none", table = "none", positions = true, legend = true }
         positions = [45, 0]           # crank angles studied in detail: their schemes, plans, forces
                                       # and tables (default: plans etc. at every position of the
                                       # scene, schemes at the first two)
@@ -81,6 +87,8 @@ class SheetSpec:
     positions: tuple[float, ...] | None = None  # crank angles to draw (subset of the scene's)
     trace: tuple[str, ...] | None = None  # trajectories on the plan of positions
     pins: tuple[Pin, ...] = ()
+    set: str | None = None  # "course" | "positions"; None: by the number of positions
+    choice: tuple[tuple[str, object], ...] = ()  # panels = { kind = "all" | "none" | [numbers] | bool }
     first_position: int = 1  # the number of the first position on the panels (label = index + this)
 
     @property

@@ -23,7 +23,14 @@ PANEL_KINDS = ("positions", "scheme", "velocity", "acceleration", "table", "grou
                "centres")
 _KEYS = {"format", "orientation", "language", "title", "designation", "subtitle", "author",
          "checked_by", "approved_by", "group", "organization", "date", "first_sheet", "total_sheets",
-         "panels", "positions", "trace", "pins"}
+         "panels", "positions", "trace", "pins", "set"}
+#: The sheet sets: "course" (a kinematics sheet and a kinetostatics sheet, the default for a
+#: scene of 12 positions or more) and "positions" (one bordered block per position).
+SHEET_SETS = ("course", "positions")
+#: What ``panels = { ... }`` may choose: the kinds drawn at chosen positions (a list of position
+#: numbers, "all" or "none") and the drawing-wide ones (true or false).
+PANEL_CHOICE_AT = ("scheme", "velocity", "acceleration", "forces", "lever", "table", "centres")
+PANEL_CHOICE_WHOLE = ("positions", "legend")
 _KEYS |= {"acceleration_pole"}  # the notation, read with the scales (plans.scene.notation)
 _KEYS |= {"first_position"}  # the number of the first position on every panel (1 or 0)
 
@@ -82,12 +89,22 @@ def read_sheet(raw: dict[str, Any], path: str, default_title: str = "", **overri
             if isinstance(v, bool) or not isinstance(v, int) or not 1 <= v <= 9999:
                 raise InputError(f"expected a whole number 1..9999, got {v!r}", file=path, field=f"sheet.{key}")
             out[key] = v
+    if "set" in data:
+        v = data["set"]
+        if v not in SHEET_SETS:
+            raise InputError(f"expected one of {', '.join(repr(x) for x in SHEET_SETS)}, got {v!r}", file=path,
+                             field="sheet.set")
+        out["set"] = v
     if "panels" in data:
         v = data["panels"]
-        if not isinstance(v, list) or not all(isinstance(x, str) and x in PANEL_KINDS for x in v):
-            raise InputError(f"expected a list of panel kinds from {list(PANEL_KINDS)}", file=path,
+        if isinstance(v, dict):
+            out["choice"] = _panel_choice(v, path)
+        elif not isinstance(v, list) or not all(isinstance(x, str) and x in PANEL_KINDS for x in v):
+            raise InputError(f"expected a list of panel kinds from {list(PANEL_KINDS)}, or a table such as "
+                             "{ velocity = \"all\", acceleration = [1, 4], forces = [4] }", file=path,
                              field="sheet.panels")
-        out["panels"] = tuple(v)
+        else:
+            out["panels"] = tuple(v)
     if "positions" in data:
         v = data["positions"]
         v = v if isinstance(v, list) else [v]
@@ -124,6 +141,11 @@ def read_sheet(raw: dict[str, Any], path: str, default_title: str = "", **overri
                 raise InputError("expected a sheet number >= 1", file=path, field=f"{f}.sheet")
             pins.append((p["panel"], sh, float(p["x"]), float(p["y"])))
         out["pins"] = tuple(pins)
+    if override.get("set"):
+        if override["set"] not in SHEET_SETS:
+            raise InputError(f"expected one of {', '.join(repr(x) for x in SHEET_SETS)}, got {override['set']!r}",
+                             file=path, field="sheet.set")
+        out["set"] = override["set"]
     if "first_position" in data:
         v = data["first_position"]
         if isinstance(v, bool) or not isinstance(v, int) or v not in (0, 1):
@@ -134,18 +156,47 @@ def read_sheet(raw: dict[str, Any], path: str, default_title: str = "", **overri
     return out
 
 
+def _panel_choice(v: dict[str, Any], path: str) -> tuple[tuple[str, Any], ...]:
+    """``panels = { velocity = "all", acceleration = [1, 4], forces = [4], positions = true }``
+    as (kind, "all" | "none" | position numbers | bool) pairs, one-line errors naming the key."""
+    out: list[tuple[str, Any]] = []
+    for key, val in v.items():
+        f = f"sheet.panels.{key}"
+        if key in PANEL_CHOICE_WHOLE:
+            if not isinstance(val, bool):
+                raise InputError(f"expected true or false, got {val!r}", file=path, field=f)
+            out.append((key, val))
+        elif key in PANEL_CHOICE_AT:
+            if val in ("all", "none"):
+                out.append((key, val))
+                continue
+            nums = val if isinstance(val, list) else [val]
+            if isinstance(val, str) or not all(isinstance(x, int) and not isinstance(x, bool) and 0 <= x <= 100_000
+                                               for x in nums):
+                raise InputError(f"expected \"all\", \"none\" or position numbers such as [1, 4], got {val!r}",
+                                 file=path, field=f)
+            out.append((key, tuple(dict.fromkeys(nums))))
+        else:
+            from plans.reader import did_you_mean
+
+            known = PANEL_CHOICE_AT + PANEL_CHOICE_WHOLE
+            raise InputError(f"unknown panel kind {key!r}{did_you_mean(key, known)}; expected one of {', '.join(known)}",
+                             file=path, field=f)
+    return tuple(out)
+
+
 def sheet_of(raw: dict[str, Any], path: str, title: str, titles: dict[str, str]) -> SheetSpec:
     """The file's ``[sheet]``, its title in the sheet's language (InputError naming the field)."""
     return sheet_spec(raw, path, titles.get(_language(raw), title))
 
 
 def sheet_for(scene: Any, *, format: str | None = None, orientation: str | None = None,
-              language: str | None = None) -> SheetSpec:
+              language: str | None = None, set: str | None = None) -> SheetSpec:
     """A scene's ``[sheet]`` with what a command overrides (``--sheet A3``, ``--language en``),
     the title in the sheet's language."""
     lang = language or _language(scene.raw)
     return sheet_spec(scene.raw, scene.path, scene.title_in(lang), format=format, orientation=orientation,
-                      language=language)
+                      language=language, set=set)
 
 
 def check_sheet(raw: dict[str, Any], path: str) -> None:

@@ -1,0 +1,275 @@
+"""Sheet sets: which positions each kind of panel shows, and the course's two sheets.
+
+``[sheet] set = "course"`` (the default for a scene of 12 positions or more) lays a drawing out
+as a department expects a course project: a *kinematics sheet* (the plan of positions, the
+velocity plans of every position, the acceleration plans asked for, the kinematic diagrams)
+and a *kinetostatics sheet* (one or two positions: the mechanism, each group cut free with its
+force polygon, the initial link, the Zhukovsky lever).  ``set = "positions"`` keeps one bordered
+block per position holding all its panels.  ``[sheet] panels = { velocity = "all",
+acceleration = [1, 4], forces = [4] }`` picks the positions of each kind in either set.
+
+Panels go in the order the method builds them: positions, velocity, acceleration, forces,
+lever, diagrams.  The sizes the layout chooses itself (the plan of positions' scale, the
+mechanism's and the groups' on the kinetostatics sheet) grow by standard scales while the
+sheets stay as few, so an A1 sheet is not left half empty.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Sequence
+from typing import Any
+
+from plans.errors import InputError
+from plans.solution import Solution
+
+from .blocks import pack_block
+from .i18n import tr
+from .packing import free_spots
+from .panels import STANDARD_RATIOS, Panel
+from .sheet import GAP, MARGIN, TB_H, TB_W, Sheet, SheetSpec, _check_fits, compose, usable
+
+#: A scene with at least this many positions is drawn as the course's sheet set by default.
+COURSE_FROM = 12
+#: The kinds ``panels = { ... }`` names at positions, as :mod:`plans.scene.sheet` reads them.
+#: The kinematics sheet's order: the method's (positions, then velocity, then acceleration).
+ORDER = ("positions", "scheme", "centres", "velocity", "acceleration", "table")
+AT = ("scheme", "velocity", "acceleration", "forces", "lever", "table", "centres")
+
+
+def numbers(sol: Solution, spec: SheetSpec) -> list[int]:
+    """Each position's number as the sheets write it (the plan of positions, the headings)."""
+    return [k + spec.first_position for k in range(sol.kinematics.n)]
+
+
+def set_of(sol: Solution, spec: SheetSpec) -> str:
+    """The sheet set drawn: the file's, else "course" for 12 positions or more ("positions"
+    when panels are pinned: pins place the panels of the block layout)."""
+    if spec.set is not None:
+        if spec.set == "course" and spec.pins:
+            raise InputError("pinned panels need set = \"positions\"", file=sol.scene.path, field="sheet.pins")
+        return spec.set
+    return "course" if sol.kinematics.n >= COURSE_FROM and not spec.pins else "positions"
+
+
+def _studied(sol: Solution, spec: SheetSpec) -> list[int]:
+    """The positions studied in detail: ``[sheet] positions`` (crank angles), else the first two."""
+    kin = sol.kinematics
+    if spec.positions is None:
+        return list(range(min(2, kin.n)))
+    out = []
+    for phi in spec.positions:
+        hits = [k for k in range(kin.n) if abs(float(kin.phi_deg[k]) - phi) < 1e-9]
+        if not hits:
+            raise InputError(f"crank angle {phi:g}° is not among the scene's positions "
+                             f"{[float(x) for x in kin.phi_deg]}", file=sol.scene.path, field="sheet.positions")
+        out.append(hits[0])
+    return out
+
+
+def selection(sol: Solution, spec: SheetSpec, set_name: str) -> dict[str, Any]:
+    """Kind -> the positions (indices, in the scene's order) it is drawn at, "positions" and
+    "legend" -> whether drawn, "bold" -> the positions drawn whole on the plan of positions.
+
+    Defaults: in the ``positions`` set every kind at every position (at the listed ``[sheet]
+    positions`` when given), schemes at the positions studied in detail; in the ``course``
+    set the velocity plans at every position, the forces at the positions studied in detail,
+    the lever and the mechanism where the forces are, the acceleration plans at those and the
+    studied positions, no tables.  ``panels = { ... }`` overrides
+    a kind, ``panels = [...]`` (kinds) leaves out the kinds it does not list."""
+    scene, kin = sol.scene, sol.kinematics
+    every = list(range(kin.n))
+    studied = _studied(sol, spec)
+    chosen = dict(spec.choice)
+    overlay = kin.n > 1 and scene.wants("positions") and bool(chosen.get("positions", True)) and (
+        spec.panels is None or "positions" in spec.panels)
+    sel: dict[str, Any]
+    if set_name == "course":  # the mechanism drawn alone only on the kinetostatics sheet
+        kinetic = scene.wants("force_polygons") or scene.wants("lever")
+        sel = {"velocity": every, "acceleration": studied, "forces": studied, "lever": studied,
+               "scheme": studied if kinetic else [], "table": [], "centres": []}
+    else:
+        ks = every if spec.positions is None else studied
+        schemes = ks if spec.positions is not None or not overlay else ks[:2]
+        sel = {kind: ks for kind in ("velocity", "acceleration", "forces", "lever", "table")}
+        sel.update(scheme=schemes, centres=schemes)
+    sel.update(positions=overlay, legend=bool(chosen.get("legend", True)))
+    nums = numbers(sol, spec)
+    for kind, val in spec.choice:
+        if kind in ("positions", "legend") or not isinstance(val, str | tuple):
+            continue
+        if val == "all":
+            sel[kind] = every
+        elif val == "none":
+            sel[kind] = []
+        else:
+            bad = [x for x in val if x not in nums]
+            if bad:
+                raise InputError(f"no position {bad[0]}; the positions are numbered {nums[0]} to {nums[-1]}",
+                                 file=scene.path, field=f"sheet.panels.{kind}")
+            sel[kind] = sorted(nums.index(int(x)) for x in val)
+    if set_name == "course":  # what follows the forces' positions unless chosen itself
+        if "lever" not in chosen:
+            sel["lever"] = sel["forces"]
+        if "scheme" not in chosen:
+            sel["scheme"] = sel["forces"] if kinetic else []
+        if "acceleration" not in chosen:  # the inertia forces are read off these plans
+            sel["acceleration"] = sorted(set(sel["acceleration"]) | set(sel["forces"]) if kinetic else
+                                         sel["acceleration"])
+    if spec.panels is not None:  # the list of kinds: what it leaves out is not drawn
+        also = {"forces": ("group", "crank")}
+        for kind in AT:
+            if not any(x in spec.panels for x in also.get(kind, (kind,))):
+                sel[kind] = []
+        sel["legend"] = sel["legend"] and "legend" in spec.panels
+    sel["bold"] = sorted(set(sel["scheme"]) | set(sel["acceleration"]) | set(sel["forces"])) \
+        if set_name == "course" else sorted(sel["scheme"])
+    return sel
+
+
+# --------------------------------------------------------------------------- the course's set
+
+
+def _flat(panels: Sequence[Panel], spec: SheetSpec, path: str = "<scene>") -> list[list[tuple[Panel, float, float]]]:
+    """Panels in order, each where it keeps the sheet's skyline lowest, clear of the title
+    block; what one sheet cannot hold goes on the next."""
+    W, H = spec.size
+    area = usable(W, H)
+    aw, ah = area[2] - area[0], area[3] - area[1]
+    notch = (W - MARGIN - TB_W - GAP - area[0], H - MARGIN - TB_H - GAP - area[1], aw, ah)
+    spots = free_spots(GAP)
+    for p in panels:
+        _check_fits(p, spec, path)
+    out: list[list[tuple[Panel, float, float]]] = []
+    rest = list(panels)
+    while rest:
+        blk, left = pack_block(rest, aw, ah, GAP, spots, "", notch)
+        if not blk.panels:  # pragma: no cover - every panel fits an empty sheet (checked before)
+            raise ValueError(f"panel {rest[0].pid} does not fit an empty {spec.format} sheet")
+        out.append([(p, area[0] + x, area[1] + y) for p, x, y in blk.panels])
+        rest = left
+    return out
+
+
+def flat_sheets(panels: Sequence[Panel], spec: SheetSpec, path: str = "<scene>") -> list[Sheet]:
+    """Panels in order on as few sheets as hold them (:func:`_flat`), each sheet's Scale cell
+    its main image's."""
+    W, H = spec.size
+    return [Sheet(spec, i + 1, 0, W, H, placed, None) for i, placed in enumerate(_flat(panels, spec, path))]
+
+
+def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
+                  diagrams: Sequence[Panel] = (), larger: Sequence[Any] = ()) -> list[Sheet]:
+    """The kinematics sheet(s), then the kinetostatics sheet(s).  ``build(sel, mu_positions,
+    mu_l)`` makes the panels of a selection (:func:`drawings.linkage.build_panels`),
+    ``positions(mu, bold)`` the plan of positions at μl = ``mu``; ``diagrams`` (the kinematic
+    diagrams) go on the kinematics sheet after the plans.  ``larger``: thunks giving the
+    (build, positions) of the scene solved with longer plans, tried in turn for the kinematics
+    sheet: the first that keeps as few sheets is drawn."""
+    from .sheet import fits_empty
+
+    sel = selection(sol, spec, "course")
+    scene = sol.scene
+    forces = sorted(set(sel["forces"]) | set(sel["lever"]))
+    if not (scene.wants("force_polygons") or scene.wants("lever")):
+        forces = []  # no kinetostatics sheet: every panel on the kinematics sheet
+    kin_sel = dict(sel, forces=[], lever=[], table=[k for k in sel["table"] if k not in forces],
+                   scheme=[k for k in sel["scheme"] if k not in forces])
+    kin_sel["centres"] = [k for k in sel["centres"] if k not in forces]
+    dyn_sel: dict[str, Any] = {kind: [] for kind in AT}
+    dyn_sel.update(forces=sel["forces"], lever=sel["lever"], scheme=[k for k in sel["scheme"] if k in forces],
+                   centres=[k for k in sel["centres"] if k in forces], table=[k for k in sel["table"] if k in forces],
+                   positions=False, legend=False, bold=[])
+
+    def kinematics(build: Any, positions: Any) -> Any:
+        first: list[Panel] = []
+
+        def kinematic(mu: float | None) -> list[Panel]:
+            """The kinematics sheet's panels, the plan of positions at ``mu`` (the others drawn once)."""
+            if first:
+                return [positions(mu, kin_sel["bold"]) if p.kind == "positions" else p for p in first]
+            panels, _ = build(kin_sel, mu, None)  # the plans of one kind together, in position order
+            panels = sorted(panels, key=lambda p: ORDER.index(p.kind) if p.kind in ORDER else len(ORDER))
+            legend = [p for p in panels if p.kind == "legend"]
+            rest = [p for p in panels if p.kind != "legend"]
+            first.extend(rest + list(diagrams) + legend)
+            return first
+
+        return kinematic
+
+    def grow(make, start: float | None, lay, own: bool) -> tuple[list[Panel], list]:
+        """The panels at the largest standard scale from ``start`` up that keeps as few sheets."""
+        panels = make(start)
+        sheets = lay(panels)
+        if own or start is None:
+            return panels, sheets
+        for r in reversed(STANDARD_RATIOS):
+            mu = 1000.0 * r
+            if mu <= start * (1 + 1e-9):
+                continue
+            bigger = make(mu)
+            if not all(fits_empty(p, spec.format, spec.orientation) for p in bigger):
+                break
+            laid = lay(bigger)
+            if len(laid) > len(sheets):
+                break
+            panels, sheets = bigger, laid
+        return panels, sheets
+
+    own = bool(scene.scales.get("length"))
+    base_pos = _base_positions_scale(sol, spec) if sel["positions"] else None
+    def lay_flat(ps: list[Panel]) -> list:
+        return _flat(ps, spec, scene.path)
+
+    _, kin_sheets = grow(kinematics(build, positions), base_pos, lay_flat, own)
+    for thunk in larger:
+        _, bigger = grow(kinematics(*thunk()), base_pos, lay_flat, own)
+        kin_sheets = _fuller(kin_sheets, bigger)
+    out: list[Sheet] = []
+    W, H = spec.size
+    named = dataclasses.replace(spec, subtitle=spec.subtitle or tr("kinematics_sheet", spec.language))
+    for placed in kin_sheets:
+        out.append(Sheet(named, 0, 0, W, H, placed, None))
+    if forces and (scene.wants("force_polygons") or scene.wants("lever")):
+        nums = {float(sol.kinematics.phi_deg[k]): n for k, n in enumerate(numbers(sol, spec))}
+        sub = dataclasses.replace(spec, pins=(), subtitle=spec.subtitle or tr("kinetostatics_sheet", spec.language))
+
+        def kinetic(build: Any) -> Any:
+            return lambda mu: build(dyn_sel, None, mu)[0]
+
+        def lay(ps: list[Panel]) -> list:
+            return compose(ps, sub, None, scene.path, nums) if ps else []
+
+        base_l = _base_length_scale(sol, spec)
+        _, dyn_sheets = grow(kinetic(build), base_l, lay, own)
+        out.extend(dyn_sheets)
+    for i, sh in enumerate(out):
+        sh.number, sh.count = i + 1, len(out)
+        sh.prims = []
+        sh.render()
+    return out
+
+
+def _fuller(a: list, b: list) -> list:
+    """Of two layouts of the same panels, the one on fewer sheets, else the one drawn larger
+    (more of the paper under panels; the first on a tie)."""
+    def drawn(sheets: list) -> float:
+        return sum(p.width * p.height for sh in sheets for p, _, _ in (sh.placed if isinstance(sh, Sheet) else sh))
+
+    if len(a) != len(b):
+        return a if len(a) < len(b) else b
+    return b if drawn(b) > drawn(a) * (1 + 1e-9) else a
+
+
+def _base_positions_scale(sol: Solution, spec: SheetSpec) -> float:
+    from .panels import auto_length_scale, cycle_size
+
+    w, _ = spec.size
+    return auto_length_scale(cycle_size(sol), 0.4 * (w - 37.0))
+
+
+def _base_length_scale(sol: Solution, spec: SheetSpec) -> float:
+    from .panels import auto_length_scale, cycle_size
+
+    w, h = spec.size
+    return auto_length_scale(cycle_size(sol), 230.0 * min(1.0, max(w, h) / 841.0))
