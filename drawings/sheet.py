@@ -310,7 +310,7 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str | None = "
             raise InputError(f"no panel {pin.panel!r} on this drawing; panels are {', '.join(by_id)}",
                              file=path, field="sheet.pins")
     for p in panels:
-        _check_fits(p, spec, path)
+        check_fits(p, spec, path)
     sheets: list[list[tuple[Panel, float, float]]] = [[]]
     taken: list[list[Box]] = [[tb]]
 
@@ -390,7 +390,7 @@ class TooBig(InputError):
     panel: Panel
 
 
-def _check_fits(p: Panel, spec: SheetSpec, path: str) -> None:
+def check_fits(p: Panel, spec: SheetSpec, path: str) -> None:
     """A panel too big for an empty sheet: one line saying what would fit."""
     try:
         _refuse(p, spec, path)

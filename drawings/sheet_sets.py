@@ -27,7 +27,7 @@ from .blocks import pack_block
 from .i18n import tr
 from .packing import free_spots
 from .panels import STANDARD_RATIOS, Panel
-from .sheet import GAP, MARGIN, TB_H, TB_W, Sheet, SheetSpec, _check_fits, compose, usable
+from .sheet import GAP, MARGIN, TB_H, TB_W, Sheet, SheetSpec, check_fits, compose, usable
 
 #: A scene with at least this many positions is drawn as the course's sheet set by default.
 COURSE_FROM = 12
@@ -139,7 +139,7 @@ def _flat(panels: Sequence[Panel], spec: SheetSpec, path: str = "<scene>") -> li
     notch = (W - MARGIN - TB_W - GAP - area[0], H - MARGIN - TB_H - GAP - area[1], aw, ah)
     spots = free_spots(GAP)
     for p in panels:
-        _check_fits(p, spec, path)
+        check_fits(p, spec, path)
     out: list[list[tuple[Panel, float, float]]] = []
     rest = list(panels)
     while rest:
