@@ -19,21 +19,21 @@ import importlib
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from .export import atomic_write, pdf_bytes, png_bytes, save
-    from .linkage import Drawing, build_panels
-    from .panels import Panel, plan_panel
-    from .sheet import Sheet, SheetSpec, compose, sheet_spec
+    from drawings.linkage import Drawing, build_panels
+    from drawings.linkage.panels import Panel, plan_panel
+    from drawings.paper.export import atomic_write, pdf_bytes, png_bytes, save
+    from drawings.paper.sheet import Sheet, SheetSpec, compose, sheet_spec
 
 #: Loaded on first use (PEP 562): ``plans --help`` does not pay for svgwrite and numpy.
-_LAZY = {"Drawing": "linkage", "build_panels": "linkage", "atomic_write": "export",
-         "pdf_bytes": "export", "png_bytes": "export", "save": "export", "Panel": "panels",
-         "plan_panel": "panels", "Sheet": "sheet", "SheetSpec": "sheet", "compose": "sheet",
-         "sheet_spec": "sheet"}
+_LAZY = {"Drawing": "linkage", "build_panels": "linkage", "atomic_write": "paper.export",
+         "pdf_bytes": "paper.export", "png_bytes": "paper.export", "save": "paper.export", "Panel": "linkage.panels",
+         "plan_panel": "linkage.panels", "Sheet": "paper.sheet", "SheetSpec": "paper.sheet", "compose": "paper.sheet",
+         "sheet_spec": "paper.sheet"}
 
 
 def __getattr__(name: str) -> Any:
     if name in _LAZY:
-        value = getattr(importlib.import_module(f".{_LAZY[name]}", __name__), name)
+        value = getattr(importlib.import_module(f"drawings.{_LAZY[name]}"), name)
         globals()[name] = value
         return value
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
@@ -64,12 +64,12 @@ class PlanView:
     """A plan (velocity, acceleration, force polygon) alone, for Jupyter."""
 
     def __init__(self, plan, language: str = "en", scale_style: str = "mu") -> None:
-        from .panels import plan_panel
+        from drawings.linkage.panels import plan_panel
 
         if plan.kind in ("velocity", "acceleration"):
             self.panel = plan_panel(plan, language, scale_style)
         else:
-            from .forces_panels import polygon_panel
+            from drawings.linkage.forces_panels import polygon_panel
 
             self.panel = polygon_panel(plan, language, scale_style, f"{plan.kind}-plan", plan.kind)
 

@@ -21,13 +21,12 @@ from collections.abc import Callable
 from typing import Any
 
 import drawings
+from drawings.linkage import build_panels, draw, fit_for
+from drawings.linkage.panels import ratio_text
+from drawings.paper.export import dxf_bytes, pdf_bytes, png_bytes, svg_bytes
+from drawings.paper.sheet import compose
 from plans.scene.model import load_scene
 from plans.solution import solve
-
-from .export import dxf_bytes, pdf_bytes, png_bytes, svg_bytes
-from .linkage import build_panels, draw, fit_for
-from .panels import ratio_text
-from .sheet import compose
 
 PNG_DPI = 150.0
 
@@ -98,7 +97,7 @@ def figures(paths: list[str], repeat: int = 3) -> dict[str, Any]:
     load0 = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
     out: dict[str, Any] = {"sheets": sheet_seconds(paths[0], repeat)}
     if len(paths) > 1:
-        from .cycle import diagrams_sheet_seconds
+        from drawings.cycle import diagrams_sheet_seconds
 
         ts = [diagrams_sheet_seconds(paths[1], 1) for _ in range(max(1, repeat))]
         out["diagrams"] = {"scene": paths[1], "svg_s": statistics.median(ts)}

@@ -1,6 +1,6 @@
 """The benchmark's plot: error against run time per position, log-log (``bench.svg``).
 
-Drawn with the sheets' backend (:class:`drawings.svg.SvgBackend`, paper millimetres, fixed
+Drawn with the sheets' backend (:class:`drawings.paper.svg.SvgBackend`, paper millimetres, fixed
 number formatting), so the same records give the same bytes.  ``plans bench`` writes it
 when the renderer is installed: :func:`add_plot` hands the command the plot to write.
 """
@@ -12,11 +12,10 @@ import math
 from collections.abc import Mapping, Sequence
 from typing import Any
 
+from drawings.paper.backend import Style
+from drawings.paper.svg import SvgBackend
+from drawings.paper.text import layout
 from plans.accuracy.oracles import Record
-
-from .backend import Style
-from .svg import SvgBackend
-from .text import layout
 
 #: Method -> colour of its points.
 COLOURS = {"exact": "#1f77b4", "construction": "#d62728", "newton": "#2ca02c",

@@ -11,17 +11,26 @@ from typing import Any
 
 import numpy as np
 
+from drawings.linkage.panels import STANDARD_RATIOS, Panel, finish, ratio_text
+from drawings.paper.backend import (
+    CENTRE_LINE,
+    HAIR,
+    MAIN,
+    THICK,
+    THIN,
+    Pt,
+    Recording,
+    Style,
+    Transform,
+)
+from drawings.paper.common import arrow, dot, fmt
+from drawings.paper.i18n import lookup
+from drawings.paper.sheet import GAP, TB_H, Sheet, SheetSpec, compose, sheet_spec, usable
+from drawings.paper.text import layout
 from plans.cams.analysis import Profile
 from plans.cams.graphical import Integration, integral_scale
 from plans.cams.model import Cam
 from plans.cams.solution import CamSolution, solve_cam
-
-from .backend import CENTRE_LINE, HAIR, MAIN, THICK, THIN, Pt, Recording, Style, Transform
-from .common import arrow, dot, fmt
-from .i18n import lookup
-from .panels import STANDARD_RATIOS, Panel, finish, ratio_text
-from .sheet import GAP, TB_H, Sheet, SheetSpec, compose, sheet_spec, usable
-from .text import layout
 
 EXACT = Style(width=0.25, stroke="#1f5fbf", dash=(2.0, 1.0))
 AXIS = CENTRE_LINE
@@ -91,7 +100,7 @@ def pole_distance(x: float) -> float:
 
 def _centre_name(name: str, lang: str) -> str:
     """O_min, O_best as the sheet writes them (O_мин, O_опт on a Russian sheet)."""
-    from .i18n import tr
+    from drawings.paper.i18n import tr
 
     return {"O_min": tr("centre_min", lang), "O_best": tr("centre_best", lang)}.get(name, name)
 

@@ -12,7 +12,7 @@
   pole on the student's pole and the known vector (p a) along the student's, every
   point of the student's plan should fall inside its circle.
 
-Use :func:`marked_sheets` / :func:`overlay_sheets` for :class:`~drawings.sheet.Sheet`
+Use :func:`marked_sheets` / :func:`overlay_sheets` for :class:`~drawings.paper.sheet.Sheet`
 objects, or :func:`save_check_sheets` to write ``<stem>-marked.svg`` and
 ``<stem>-overlay.svg`` (and PDF/PNG).  :func:`add_sheet_options` adds ``--sheet DIR``
 to the ``plans check`` parser (the command-line wrapper in :mod:`drawings.cli` calls it).
@@ -27,18 +27,17 @@ import sys
 from collections.abc import Sequence
 from pathlib import Path
 
+from drawings.linkage.panels import PAD, SMALL_SIZE, TITLE_SIZE, Panel, plan_panel
+from drawings.paper.backend import Prim, Pt, Recording, Style
+from drawings.paper.common import Placer, fmt, ident, label_boxes, phi_tag
+from drawings.paper.export import FORMATS as FORMATS_OUT
+from drawings.paper.export import render, write
+from drawings.paper.sheet import FORMATS, Sheet, SheetSpec, compose
+from drawings.paper.text import layout, wrap
 from plans.check.report import Finding, Item, Report, check_file
 from plans.check.wording import CAUSES, KINDS_RU, UNITS_RU
 from plans.errors import PlansError
 from plans.kinematics.plan import Plan
-
-from .backend import Prim, Pt, Recording, Style
-from .common import Placer, fmt, ident, label_boxes, phi_tag
-from .export import FORMATS as FORMATS_OUT
-from .export import render, write
-from .panels import PAD, SMALL_SIZE, TITLE_SIZE, Panel, plan_panel
-from .sheet import FORMATS, Sheet, SheetSpec, compose
-from .text import layout, wrap
 
 PASS = "#1d7a34"
 FAIL = "#c0261d"
@@ -318,7 +317,7 @@ def add_sheet_options(check_parser: argparse.ArgumentParser) -> argparse.Argumen
                       f"{args.sheet_format!r}", file=sys.stderr)
                 return 2
 
-            from .manifest import forget, plan_sheets, remove
+            from drawings.paper.manifest import forget, plan_sheets, remove
 
             folder = Path(args.sheet)
             stale: list[Path] = []  # the old sheets of the file being checked

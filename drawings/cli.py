@@ -21,7 +21,7 @@ _DRAWING_NAMES = {"drawings.demo": ("demo", "a step-by-step demonstration page o
 
 
 def _formats(text: str) -> list[str]:
-    from .export import FORMATS  # the renderer is loaded by ``draw`` alone
+    from drawings.paper.export import FORMATS  # the renderer is loaded by ``draw`` alone
 
     out = [f.strip().lower() for f in text.split(",") if f.strip()]
     bad = [f for f in out if f not in FORMATS]
@@ -51,10 +51,9 @@ def draw_command(args: argparse.Namespace) -> int:
 
     from pathlib import Path
 
+    from drawings.paper.export import save
     from plans.kinds import KINDS, read_kind
     from plans.progress import Progress
-
-    from .export import save
 
     progress = Progress(getattr(args, "quiet", False))
 
@@ -88,14 +87,14 @@ _DRAWING_COMMANDS = ("drawings.demo", "drawings.note.cli", "drawings.variants", 
 
 def _sheet_figures(paths: list[str], repeat: int) -> dict[str, Any]:
     """The sheets' times for ``plans bench`` (:func:`drawings.bench.figures`), loaded when run."""
-    from .bench import figures
+    from drawings.bench import figures
 
     return figures(paths, repeat)
 
 
 def _diagrams_seconds(path: Any, repeat: int) -> float:
     """The cycle's diagrams sheet to SVG for ``plans bench``, loaded when run."""
-    from .cycle import diagrams_sheet_seconds
+    from drawings.cycle import diagrams_sheet_seconds
 
     return diagrams_sheet_seconds(path, repeat)
 
@@ -117,7 +116,9 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
         add_draw(sub)
         register_commands(sub, _DRAWING_COMMANDS, argv, _DRAWING_NAMES)
     if "bench" in sub.choices and (argv is None or command_of(argv) == "bench"):
-        from .bench_plot import add_plot  # ``plans bench`` draws bench.svg with the sheets' backend
+        from drawings.bench_plot import (
+            add_plot,  # ``plans bench`` draws bench.svg with the sheets' backend
+        )
 
         add_plot(sub.choices["bench"])
         from plans.accuracy import cycle_bench, speed  # and times the sheets, through drawings.draw
@@ -127,7 +128,7 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
             speed.SHEET_FIGURES.append(_sheet_figures)
     if "check" in sub.choices and (argv is None or command_of(argv) == "check"):  # ``plans check --sheet DIR``: the marked and overlay sheets
         try:
-            from .check_sheet import add_sheet_options
+            from drawings.check_sheet import add_sheet_options
         except ImportError:  # pragma: no cover - checking sheets not installed
             pass
         else:

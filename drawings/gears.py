@@ -13,20 +13,19 @@ from pathlib import Path
 import numpy as np
 import shapely
 
+from drawings.linkage.panels import Panel, finish, ratio_text
+from drawings.paper.backend import HAIR, MAIN, PAPER, THICK, THIN, Recording, Style
+from drawings.paper.common import Placer, arrow, dot, fmt
+from drawings.paper.i18n import lookup
+from drawings.paper.i18n import tr as words
+from drawings.paper.sheet import Sheet, SheetSpec, compose, sheet_spec
+from drawings.paper.text import layout
 from plans.errors import InputError
 from plans.gears.meshing import Meshing
 from plans.gears.model import GearFile
 from plans.gears.solution import GearsSolution, solve_file
 from plans.gears.solve import GearSolution
 from plans.language import SHEET_WORDS
-
-from .backend import HAIR, MAIN, PAPER, THICK, THIN, Recording, Style
-from .common import Placer, arrow, dot, fmt
-from .i18n import lookup
-from .i18n import tr as words
-from .panels import Panel, finish, ratio_text
-from .sheet import Sheet, SheetSpec, compose, sheet_spec
-from .text import layout
 
 AXIS = Style(stroke="#000", width=0.25, dash=(8.0, 1.5, 1.0, 1.5), cls="axis")
 DASHED = Style(stroke="#000", width=0.25, dash=(3.0, 1.5), cls="working")

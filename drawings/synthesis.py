@@ -9,17 +9,16 @@ import math
 from dataclasses import dataclass
 from pathlib import Path
 
+from drawings.linkage.panels import STANDARD_RATIOS, Panel, finish, ratio_text
+from drawings.paper.backend import CENTRE_LINE, HAIR, MAIN, THICK, THIN, Pt, Recording, Style
+from drawings.paper.common import dot, fmt
+from drawings.paper.i18n import lookup
+from drawings.paper.sheet import GAP, TB_H, Sheet, SheetSpec, compose, sheet_spec, usable
+from drawings.paper.text import layout
 from plans.synthesis.design import Design, choice_text, stroke_of
 from plans.synthesis.model import Task
 from plans.synthesis.proof import Coulisse, FourBar, Slider
 from plans.synthesis.solution import DesignSolution, solve_task
-
-from .backend import CENTRE_LINE, HAIR, MAIN, THICK, THIN, Pt, Recording, Style
-from .common import dot, fmt
-from .i18n import lookup
-from .panels import STANDARD_RATIOS, Panel, finish, ratio_text
-from .sheet import GAP, TB_H, Sheet, SheetSpec, compose, sheet_spec, usable
-from .text import layout
 
 SMALL = 2.5
 LABEL = 3.5

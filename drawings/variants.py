@@ -93,9 +93,8 @@ def reference(got: Any, language: str | None = None) -> dict[str, bytes]:
     ``language``; None: the file's own)."""
     import importlib
 
+    from drawings.paper.export import render
     from plans.kinds import KINDS
-
-    from .export import render
 
     names = [(got.key["file"], got.kind)]
     if "scene" in got.key:  # a synthesis: its construction and its scene's sheets
@@ -294,6 +293,6 @@ def _sketch(got: Any) -> str:
 
 
 def handout_pdf(st: dict[str, str], got: Any, lang: str) -> bytes:
-    from .export import pdf_bytes
+    from drawings.paper.export import pdf_bytes
 
     return pdf_bytes(handout_svg(st, got, lang).encode("utf-8"), title=f"{st['name']}, {got.row.variant}")

@@ -476,7 +476,7 @@ def add_option(parser: Any) -> None:
                              "Russian when LANG starts with ru, else English)")
 
 
-# ---- sheet sets: the course's two sheets, tables split over parts (drawings.sheet_sets)
+# ---- sheet sets: the course's two sheets, tables split over parts (drawings.linkage.sheet_sets)
 SHEET_WORDS.update({
     "continued": ("(продолжение)", "(continued)"),
     "kinematics_sheet": ("Кинематический анализ", "Kinematic analysis"),

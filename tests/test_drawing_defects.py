@@ -182,8 +182,8 @@ def test_overlapping_trajectories_never_share_bare_numbers(name, crowded):
     """Two pins' marks within 6 mm of each other (the coulisse's D on the crank circle's
     side, the rocker's end over the ram's guide): every such mark but the crank pin's is
     numbered with its letter, so no two bare numbers of different pins sit together."""
-    from drawings.overview import positions_panel
-    from drawings.panels import strokes_over_cycle
+    from drawings.linkage.overview import positions_panel
+    from drawings.linkage.panels import strokes_over_cycle
     from plans.solution import Solution
 
     sol = Solution(load_scene(SAMPLES / f"{name}.toml"))

@@ -17,13 +17,13 @@ import numpy as np
 import pytest
 import shapely
 
-from drawings.backend import Recording, Style, Transform, hatch_segments, replay
-from drawings.common import arrow, fmt, ident
 from drawings.linkage import draw
-from drawings.panels import plan_panel, scheme_panel, strokes_over_cycle
-from drawings.sheet import FORMATS, compose, sheet_spec
-from drawings.svg import SvgBackend, num
-from drawings.text import layout, parse, point_label
+from drawings.linkage.panels import plan_panel, scheme_panel, strokes_over_cycle
+from drawings.paper.backend import Recording, Style, Transform, hatch_segments, replay
+from drawings.paper.common import arrow, fmt, ident
+from drawings.paper.sheet import FORMATS, compose, sheet_spec
+from drawings.paper.svg import SvgBackend, num
+from drawings.paper.text import layout, parse, point_label
 from plans.errors import InputError
 from plans.kinematics.exact import solve
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment
@@ -322,7 +322,7 @@ def test_panel_too_big_for_a4_at_the_files_own_scale_suggests_a_larger_sheet(tmp
 
 
 def test_missing_font_names_font_and_package():
-    from drawings.fonts import FontMissing, find_font
+    from drawings.paper.fonts import FontMissing, find_font
 
     with pytest.raises(FontMissing, match=r"'DejaVu Sans' \(DejaVuSans.ttf\) not found.*fonts-dejavu-core"):
         find_font(("/nonexistent/fonts",))

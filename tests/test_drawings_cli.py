@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from drawings.cli import build_parser, main
-from drawings.export import OutputError, atomic_write
+from drawings.paper.export import OutputError, atomic_write
 
 ROOT = Path(__file__).resolve().parents[1]
 V_ENGINE = ROOT / "samples" / "v_engine.toml"

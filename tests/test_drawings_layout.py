@@ -11,11 +11,11 @@ from pathlib import Path
 import pytest
 import shapely
 
-from drawings.backend import THIN, Recording
 from drawings.linkage import draw as draw_set
-from drawings.overview import positions_panel
-from drawings.panels import Panel, finish, strokes_over_cycle
-from drawings.sheet import GAP, compose, sheet_spec, usable
+from drawings.linkage.overview import positions_panel
+from drawings.linkage.panels import Panel, finish, strokes_over_cycle
+from drawings.paper.backend import THIN, Recording
+from drawings.paper.sheet import GAP, compose, sheet_spec, usable
 from plans.errors import InputError
 from plans.kinematics.exact import solve
 from plans.scene.model import load_scene

@@ -12,8 +12,8 @@ from pathlib import Path
 
 import pytest
 
-from drawings.export import save
 from drawings.linkage import draw
+from drawings.paper.export import save
 
 ROOT = Path(__file__).resolve().parents[1]
 SAMPLES = sorted((ROOT / "samples").glob("*.toml"))
@@ -111,7 +111,7 @@ def test_no_overlaps_in_any_sample(drawn):
 
 
 def _segments(prims):
-    from drawings.backend import arc_points
+    from drawings.paper.backend import arc_points
 
     for p in prims:
         if p.op in ("line", "polyline"):
@@ -233,7 +233,7 @@ def _drawn_part(sheet) -> float:
     of its panels' boxes over the field's area."""
     import shapely
 
-    from drawings.sheet import usable
+    from drawings.paper.sheet import usable
 
     field = shapely.box(*usable(sheet.width, sheet.height)).difference(shapely.box(*sheet.title_box))
     boxes = [shapely.box(x, y, x + p.width, y + p.height) for p, x, y in sheet.placed]
@@ -252,7 +252,7 @@ def test_a1_sheets_are_not_left_empty(drawn):
 
 def _arrows(prims, kind: str = "force"):
     """(id, length mm) of every vector drawn: a group's shaft starts at its tail, its head
-    polygon's first point is its tip (drawings.common.arrow)."""
+    polygon's first point is its tip (drawings.paper.common.arrow)."""
     import math
 
     out = []
@@ -268,7 +268,7 @@ def _arrows(prims, kind: str = "force"):
 def test_no_force_arrow_on_a_free_body_shorter_than_legible(drawn):
     """Every force of every group diagram and initial link of every position at least
     MIN_ARROW_MM long, and a panel that lengthened one says so (†, not to scale)."""
-    from drawings.forces_panels import MIN_ARROW_MM
+    from drawings.linkage.forces_panels import MIN_ARROW_MM
 
     _, d, _ = drawn
     seen = 0
@@ -303,8 +303,8 @@ def test_slotted_link_drawn_through_its_block(drawn):
     slot runs through the block's pin and past both ends of the block: no floating block."""
     import math
 
-    from drawings.common import ident, phi_tag
-    from drawings.panels import BLOCK_L
+    from drawings.linkage.panels import BLOCK_L
+    from drawings.paper.common import ident, phi_tag
 
     path, d, _ = drawn
     scene = d.scene

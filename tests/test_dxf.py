@@ -1,4 +1,4 @@
-"""DXF sheets (drawings.dxf): each kind's sheets read back by ezdxf hold the SVG's shapes,
+"""DXF sheets (drawings.paper.dxf): each kind's sheets read back by ezdxf hold the SVG's shapes,
 the plans' vectors are ``plans solve``'s segments, mm units and A-format extents, layers by
 content and GOST line type, Cyrillic intact, the same bytes every time, ezdxf loaded only
 for DXF."""
@@ -42,7 +42,7 @@ def _draw(path: Path):
 def drawn() -> dict[str, list]:
     out = {kind: _draw(path) for kind, path in KIND_SAMPLES.items()}
     from drawings.cycle import extend  # the cycle's diagrams and dynamics sheets alone
-    from drawings.sheet import sheet_spec
+    from drawings.paper.sheet import sheet_spec
     from plans.scene.model import load_scene
 
     scene = load_scene(SAMPLES / "v_engine_cycle.toml")
@@ -107,7 +107,7 @@ def test_plan_vectors_read_off_the_dxf_are_the_segments_plans_solve_reports(draw
     assert main(["solve", str(KIND_SAMPLES["linkage"]), "--json", str(out), "--quiet"]) == 0
     solved = json.loads(out.read_text(encoding="utf-8"))
     checked = 0
-    from drawings.common import phi_tag
+    from drawings.paper.common import phi_tag
 
     for sh in drawn["linkage"]:
         doc = first[1] if sh is first[0] else _read(sh.dxf())
@@ -149,7 +149,7 @@ def test_units_extents_and_the_frame_in_millimetres(drawn, first):
 
 
 def test_layers_by_content_and_gost_line_type_with_true_lineweights(first):
-    from drawings.dxf import LAYER_WORDS, LINEWEIGHTS
+    from drawings.paper.dxf import LAYER_WORDS, LINEWEIGHTS
 
     sh, doc = first  # a Russian sheet: scheme, plans, forces, lever, tables
     ru = LAYER_WORDS["ru"]
@@ -213,7 +213,7 @@ def test_cyrillic_text_round_trips(first):
 
 
 def test_same_bytes_every_time_and_the_same_as_ezdxfs_own_entities(drawn):
-    from drawings.dxf import document_ezdxf
+    from drawings.paper.dxf import document_ezdxf
 
     sh = drawn["gears"][-1]
     first, again = sh.dxf(), sh.dxf()

@@ -1,4 +1,4 @@
-"""PNG pixels are written by drawings.export itself: the same page as cairo's own writer."""
+"""PNG pixels are written by drawings.paper.export itself: the same page as cairo's own writer."""
 
 from __future__ import annotations
 
@@ -19,7 +19,7 @@ def test_png_has_the_pixels_of_cairos_writer_and_is_deterministic():
     import cairosvg
 
     from drawings import draw
-    from drawings.export import png_bytes
+    from drawings.paper.export import png_bytes
 
     sheet = draw(str(ROOT / "samples" / "four_bar.toml")).sheets[0]
     svg = sheet.svg().encode()
@@ -33,7 +33,7 @@ def test_png_has_the_pixels_of_cairos_writer_and_is_deterministic():
 def test_translucent_ink_is_unpremultiplied_as_cairo_does():
     import cairosvg
 
-    from drawings.export import png_bytes
+    from drawings.paper.export import png_bytes
 
     svg = (b'<svg xmlns="http://www.w3.org/2000/svg" width="40" height="20">'
            b'<rect x="2" y="2" width="30" height="10" fill="#3a7fd0" fill-opacity="0.37"/>'
@@ -45,7 +45,7 @@ def test_svg_is_written_as_svgwrite_writes_it():
     import svgwrite
 
     from drawings import draw
-    from drawings.svg import SvgBackend, serialize
+    from drawings.paper.svg import SvgBackend, serialize
 
     sheet = draw(str(ROOT / "samples" / "shaper.toml")).sheets[0]
     be = SvgBackend(100, 50, title='a "quoted" <title> & more')
@@ -62,13 +62,13 @@ def test_svg_is_written_as_svgwrite_writes_it():
 
 
 def test_pdf_is_cairosvgs_own_page_byte_for_byte():
-    """Labels drawn by drawings.convert leave the PDF cairosvg itself writes."""
+    """Labels drawn by drawings.paper.convert leave the PDF cairosvg itself writes."""
     import cairocffi
     import cairosvg
     from cairosvg.surface import PDFSurface
 
     from drawings import draw
-    from drawings.export import PDF_DATE, pdf_bytes
+    from drawings.paper.export import PDF_DATE, pdf_bytes
 
     class Plain(PDFSurface):  # cairosvg as it is, with our fixed metadata
         def _create_surface(self, width, height):
@@ -93,18 +93,18 @@ def test_pdf_is_cairosvgs_own_page_byte_for_byte():
 
 
 def png_bytes_of(svg: bytes) -> bytes:
-    from drawings.export import png_bytes
+    from drawings.paper.export import png_bytes
 
     return png_bytes(svg, 96)
 
 
 def test_sheet_text_is_the_svgwrite_backends():
-    """Sheets are written as text directly (drawings.svg.document): the same characters as
+    """Sheets are written as text directly (drawings.paper.svg.document): the same characters as
     the svgwrite backend writes, for a linkage, a cycle and a gear sheet."""
     from drawings import draw
-    from drawings.backend import replay
     from drawings.gears import draw as draw_gears
-    from drawings.svg import SvgBackend
+    from drawings.paper.backend import replay
+    from drawings.paper.svg import SvgBackend
 
     sheets = draw(str(ROOT / "samples" / "dynamics_slider_crank.toml")).sheets
     sheets += draw_gears(str(ROOT / "samples" / "gears" / "seed_train.toml")).sheets

@@ -327,7 +327,7 @@ def test_drawn_reaction_line_is_tangent_to_the_friction_circle_on_the_opposing_s
     """On the free body of each group: a circle about each pin with friction, and the
     reaction's line at the circle's radius from the pin, on the side where the reaction's
     moment about the pin opposes ω_ij (the sense read here from the link rates)."""
-    from drawings.forces_panels import crank_panel, group_panel
+    from drawings.linkage.forces_panels import crank_panel, group_panel
 
     scene, kin, fa, _ = _solved("shaper_friction", phis=[40.0, 130.0])
     fr = fa.friction
@@ -361,7 +361,7 @@ def test_drawn_reaction_line_is_tangent_to_the_friction_circle_on_the_opposing_s
 
 
 def test_sheet_panels_with_friction_have_the_efficiency_diagram():
-    from drawings.friction_marks import efficiency_panels
+    from drawings.linkage.friction_marks import efficiency_panels
 
     scene, kin, fa, _ = _solved("v_engine_friction")
     panels = efficiency_panels(fa, "ru")

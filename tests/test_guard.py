@@ -335,7 +335,7 @@ def test_a_command_that_answers_2_itself_leaves_nothing(tmp_path, monkeypatch, c
 def test_a_guide_longer_than_any_sheet_is_refused_without_billions_of_strokes(tmp_path, capsys):
     """Found by the long fuzz: a fuzzed six-bar whose guide runs 1e8 mm hatched a stroke
     every 2 mm (gigabytes) before the sheet refused it; now at most MAX_HATCH strokes."""
-    from drawings.backend import MAX_HATCH, hatch_segments
+    from drawings.paper.backend import MAX_HATCH, hatch_segments
 
     assert len(hatch_segments((0.0, 0.0), (1e12, 0.0), 1, 2.0, 3.0)) <= MAX_HATCH + 1
     assert len(hatch_segments((0.0, 0.0), (10.0, 0.0), 1, 2.0, 3.0)) == 6  # a sheet's own hatch unchanged

@@ -10,7 +10,7 @@ import pytest
 
 import plans
 from drawings.linkage import build_panels
-from drawings.sheet import sheet_spec
+from drawings.paper.sheet import sheet_spec
 from plans.kinematics.centres import centres_at
 from plans.kinematics.exact import solve
 from plans.scene.model import load_scene

@@ -68,7 +68,7 @@ def test_plans_solve_of_every_linkage_sample_loads_no_shapely_and_no_renderer():
                "    with contextlib.redirect_stdout(out):\n"
                "        assert main() == 0, path\n"
                "    assert 'phi = ' in out.getvalue(), path\n"
-               "    loaded = [m for m in ('shapely', 'svgwrite', 'cairosvg', 'drawings.sheet') if m in sys.modules]\n"
+               "    loaded = [m for m in ('shapely', 'svgwrite', 'cairosvg', 'drawings.paper.sheet') if m in sys.modules]\n"
                "    print(path.name, 'loaded:', loaded)\n")
     assert got.returncode == 0, got.stderr
     lines = got.stdout.splitlines()
@@ -209,3 +209,29 @@ def test_plans_solve_starts_with_its_own_modules_only():
     ours, heavy = got.stdout.splitlines()
     assert set(ast.literal_eval(ours)) == SOLVE_START
     assert heavy == "[]"
+
+
+#: What the paper toolkit may read of the engine: errors, files, words and the sheet's own
+#: settings (format, language, the scales' notation), nothing of a mechanism.
+PAPER_MAY_IMPORT = {"plans.errors", "plans.io", "plans.language", "plans.scene.sheet", "plans.scene.notation",
+                    "plans.scene.paper"}
+
+
+def test_the_paper_toolkit_imports_no_room():
+    """drawings/paper (sheets, frames, packing, text, backends, export) knows millimetres,
+    lines and words: it imports no room of the engine and no sheets of a room (lazy imports
+    included)."""
+    root = Path(__file__).resolve().parent.parent / "drawings" / "paper"
+    found = []
+    for path in sorted(root.glob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            names = ([node.module or ""] if isinstance(node, ast.ImportFrom) and node.level == 0 else
+                     [a.name for a in node.names] if isinstance(node, ast.Import) else [])
+            for mod in names:
+                ours = mod.split(".")[0] in ("plans", "drawings")
+                if ours and mod not in PAPER_MAY_IMPORT and not mod.startswith("drawings.paper") and mod != "drawings":
+                    found.append(f"{path.name}: {mod}")
+            if isinstance(node, ast.ImportFrom) and node.level > 0:
+                found.append(f"{path.name}: a relative import")
+    assert found == []
+    assert len(list(root.glob("*.py"))) >= 10  # the toolkit is where this test looks

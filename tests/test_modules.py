@@ -143,7 +143,8 @@ def test_rooms_are_read_as_the_packages_are_laid_out():
     assert _room("plans.kinematics.exact") == "plans.kinematics"
     assert _room("plans.kinematics") == "plans.kinematics"
     assert _room("plans.cli") == "plans"
-    assert _room("drawings.panels") == "drawings"
+    assert _room("drawings.linkage.panels") == "drawings.linkage"
+    assert _room("drawings.cli") == "drawings"
     assert _room("drawings.note.figures") == "drawings.note"
     # lazy and TYPE_CHECKING imports are edges too
     assert "plans.kinematics.accelerations" in _graph()["plans.kinematics.construction"]

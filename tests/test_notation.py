@@ -37,7 +37,7 @@ def _scene(scales: dict | None = None, sheet: dict | None = None):
     ({"symbol": "mu", "direction": "m/mm"}, "en", "μ", True), ({"direction": "mm/m"}, "ru", "μ", False),
 ])
 def test_scale_letter_and_direction_apart(scales, lang, letter, per_mm):
-    from drawings.panels import scale_text
+    from drawings.linkage.panels import scale_text
 
     scene = _scene(scales)
     assert resolve(scene.scale_style, lang)[:2] == (letter, per_mm)
@@ -76,7 +76,7 @@ def test_style_and_symbol_together_is_an_error():
 
 
 def _labels(scene, lang: str, pid_prefix: str = "acceleration-") -> set[str]:
-    from drawings.panels import plan_panel
+    from drawings.linkage.panels import plan_panel
 
     plan = plans.solve(scene).plans[0].acceleration
     panel = plan_panel(plan, lang, scene.scale_style)
@@ -95,7 +95,7 @@ def test_the_acceleration_pole(sheet, lang, pole):
 
 
 def test_the_results_table_names_the_pole_too():
-    from drawings.panels import table_panel
+    from drawings.linkage.panels import table_panel
 
     scene = _scene()
     pp = plans.solve(scene).plans[0]

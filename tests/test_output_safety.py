@@ -17,8 +17,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from drawings import export
 from drawings.cli import main
+from drawings.paper import export
 from plans.reader import Reader, check_keys, did_you_mean, reduce_deg
 from plans.scene.model import parse_scene
 

@@ -10,7 +10,7 @@ import pytest
 import shapely
 
 from drawings.linkage import draw
-from drawings.sheet import usable
+from drawings.paper.sheet import usable
 from plans.kinematics.scales import is_round
 from plans.scene.model import load_scene
 from plans.solution import solve

@@ -9,7 +9,7 @@ import pytest
 import shapely
 
 from drawings.linkage import draw
-from drawings.sheet import usable
+from drawings.paper.sheet import usable
 from plans.errors import InputError
 from plans.scene.sheet import read_sheet
 

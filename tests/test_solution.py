@@ -326,7 +326,7 @@ def test_a_mechanism_that_does_not_turn_a_revolution_is_drawn_at_its_own_positio
     """A four-bar whose crank cannot go round (180 + 300 > 260 + 200): no revolution to read,
     tried once; the sheets are drawn from the positions it has (no paths, no strokes)."""
     from drawings.linkage import draw
-    from drawings.panels import cycle_size, strokes_over_cycle
+    from drawings.linkage.panels import cycle_size, strokes_over_cycle
 
     data = read_toml(SAMPLES / "four_bar.toml")
     data["links"]["1"]["length"] = 180

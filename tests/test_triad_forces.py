@@ -184,7 +184,7 @@ def test_assur_point_drawn_on_the_scheme_and_the_group():
 
     import plans
     from drawings.linkage import build_panels
-    from drawings.sheet import sheet_spec
+    from drawings.paper.sheet import sheet_spec
     from plans.kinematics.triad_plans import assur_point
 
     spec = sheet_spec({"sheet": {"positions": [30.0], "panels": ["scheme", "group"]}}, str(SAMPLE))

@@ -340,7 +340,7 @@ def test_the_group_cut_free_shows_the_slot_from_its_origin_past_the_pin():
 
     import plans
     from drawings.linkage import build_panels
-    from drawings.sheet import sheet_spec
+    from drawings.paper.sheet import sheet_spec
     from plans.kinematics.exact import solve
     from plans.scene.model import load_scene
 

@@ -144,7 +144,7 @@ def test_bad_requests_are_4xx_with_one_line(server):
 
 
 def test_draw_passes_the_format_through_to_the_sheets(server):
-    from drawings.export import FORMATS
+    from drawings.paper.export import FORMATS
 
     _, url = server
     if "dxf" not in FORMATS:

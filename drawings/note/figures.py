@@ -40,7 +40,8 @@ class Figures:
         return hit
 
     def __call__(self, f: Figure) -> tuple[bytes, float]:
-        from ..export import png_bytes
+        from drawings.paper.export import png_bytes
+
         from .docx_writer import TEXT_WIDTH_MM
 
         hit = self.find(f)
@@ -67,26 +68,26 @@ NOTE_PANELS = ("positions", "scheme", "velocity", "acceleration", "group", "cran
 
 def _build(item: Any, group: str, lang: str) -> list[Any]:
     if item.kind == "gears":
-        from ..gears import draw
+        from drawings.gears import draw
 
         return list(draw(item.path, language=lang).panels)
     if item.kind == "cam":
-        from ..cams import draw as draw_cam
+        from drawings.cams import draw as draw_cam
 
         return list(draw_cam(item.path, language=lang).panels)
     if item.kind != "linkage":
         return []
     cyc = item.solved.cycle
     if group == "diagrams":
-        from ..cycle import diagram_panels
+        from drawings.cycle import diagram_panels
 
         return [p for p in diagram_panels(cyc.diagrams, lang) if p.kind != "cycle-table"]
     if group.startswith("dyn-"):
-        from .. import cycle
+        from drawings import cycle
 
         make = cycle.DYNAMICS_DIAGRAMS[group.removeprefix("dyn-")]
         return [make(cyc.dynamics, lang)]
-    from ..linkage import build_panels, fit_for
+    from drawings.linkage import build_panels, fit_for
 
     sol = item.solved
     scene = sol.scene

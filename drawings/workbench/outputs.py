@@ -77,7 +77,7 @@ def draw_file(text: str, stem: str, fmt: str) -> tuple[bytes, str]:
     import tempfile
     import zipfile
 
-    from drawings.export import save
+    from drawings.paper.export import save
     from plans.io import loads_toml
     from plans.kinds import KINDS, kind_of
 

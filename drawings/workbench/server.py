@@ -316,7 +316,7 @@ class Workbench:
 
     async def draw(self, request: Request) -> Response:
         fmt = request.query_params.get("format", "svg").lower()
-        from drawings.export import FORMATS
+        from drawings.paper.export import FORMATS
 
         if fmt not in FORMATS:
             raise Refused(400, f"format {fmt!r}: expected one of {', '.join(FORMATS)}", "format")

@@ -13,7 +13,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import Protocol
 
-from .text import Label, TextRun
+from drawings.paper.text import Label, TextRun
 
 Pt = tuple[float, float]
 

@@ -8,12 +8,11 @@ import cmath
 import math
 from types import SimpleNamespace
 
+from drawings.linkage.panels import LABEL_SIZE, SMALL_SIZE, Panel, finish, scheme_panel, table_panel
+from drawings.paper.backend import THIN, Recording, Style
+from drawings.paper.common import Placer, angle, arrow, fmt, ident, phi_tag
+from drawings.paper.text import layout
 from plans.kinematics.centres import Centre, CentreVelocity, all_links
-
-from .backend import THIN, Recording, Style
-from .common import Placer, angle, arrow, fmt, ident, phi_tag
-from .panels import LABEL_SIZE, SMALL_SIZE, Panel, finish, scheme_panel, table_panel
-from .text import layout
 
 _WORDS = {
     "title": ("Мгновенные центры скоростей", "Instant centres"),

@@ -11,12 +11,7 @@ from collections.abc import Iterable, Sequence
 
 import numpy as np
 
-from plans.errors import InputError, PlansError
-
-from .backend import Recording, Style, Transform
-from .common import Placer, angle, arrow, dot, fmt, ident
-from .i18n import tr
-from .panels import (
+from drawings.linkage.panels import (
     BLOCK_H,
     BLOCK_L,
     JOINT_R,
@@ -30,7 +25,11 @@ from .panels import (
     ratio_text,
     scale_text,
 )
-from .text import layout, point_label
+from drawings.paper.backend import Recording, Style, Transform
+from drawings.paper.common import Placer, angle, arrow, dot, fmt, ident
+from drawings.paper.i18n import tr
+from drawings.paper.text import layout, point_label
+from plans.errors import InputError, PlansError
 
 POS_THIN = Style(width=0.25, stroke="#000", cls="position")
 POS_BOLD = Style(width=0.6, stroke="#000", cls="position bold")
@@ -494,7 +493,7 @@ def legend_kinds(panels: Iterable[Panel]) -> list[str]:
 
 def legend_panel(kinds: Sequence[str], lang: str) -> Panel:
     """One row per line style: a short sample of the line (arrow for vectors) and its meaning."""
-    from .forces_panels import ARM
+    from drawings.linkage.forces_panels import ARM
 
     pid = "legend"
     rec = Recording()

@@ -30,7 +30,7 @@ from contextlib import contextmanager
 from functools import lru_cache
 from typing import Any
 
-from .backend import Prim, Pt, Style, hatch_segments
+from drawings.paper.backend import Prim, Pt, Style, hatch_segments
 
 #: DejaVu Sans (the SVG's font, whose metrics laid the runs out): capital height per em.
 #: A DXF text height is the capitals' height, an SVG font size the em.
@@ -101,7 +101,7 @@ def rgb(color: str | None) -> int | None:
 
 
 def linetype_name(kind: str, dash: Sequence[float]) -> str:
-    from .svg import num
+    from drawings.paper.svg import num
 
     return f"ESKD_{kind.upper()}_" + "_".join(num(d) for d in dash)
 
@@ -117,7 +117,7 @@ def _r(v: float) -> float:
 
 
 class DxfBackend:
-    """The drawing backend (:class:`drawings.backend.Backend`) that collects DXF entities
+    """The drawing backend (:class:`drawings.paper.backend.Backend`) that collects DXF entities
     per block, in DXF coordinates local to the block's base point."""
 
     def __init__(self, width: float, height: float, language: str = "en",
@@ -254,7 +254,7 @@ class DxfBackend:
         self._list().append(("ARC", *self._stroke(style), (self._p(c), _r(r), _r(start), _r(stop))))
 
     def text(self, label: Any, cls: str = "", eid: str = "", fill: str = "#000") -> None:
-        from .fonts import metrics
+        from drawings.paper.fonts import metrics
 
         layer = self._layer("text")
         color = rgb(fill)
@@ -308,7 +308,7 @@ def collect(width: float, height: float, prims: Iterable[Prim], language: str = 
             bases: dict[str, Pt] | None = None) -> DxfBackend:
     """The entities of recorded primitives, by block (``bases``: a group's base point on the
     paper, by its id; a group not named there: its box's lower-left corner)."""
-    from .backend import replay
+    from drawings.paper.backend import replay
 
     prims = list(prims)
     be = DxfBackend(width, height, language, _bases(prims, bases or {}))

@@ -3,9 +3,8 @@ part up, the imaginary part along the rotation) and the polygons' round scale.""
 
 from __future__ import annotations
 
+from drawings.paper.backend import Pt, Transform
 from plans.kinematics.scales import round_scale
-
-from .backend import Pt, Transform
 
 POLY_MM = 130.0  # the largest polygon extent on the sheet, mm
 #: K = 1/μ of the polygons: μ is 1, 2, 2.5, 4, 5 or 8 × 10^k mm per unit

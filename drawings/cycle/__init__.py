@@ -16,20 +16,19 @@ from pathlib import Path
 
 import numpy as np
 
+from drawings.cycle.cycle_plot import EXACT, GRAPH, Axes, number, plot_panel, wide_table
+from drawings.linkage.panels import Panel
+from drawings.paper.backend import HAIR, MAIN, THIN, Recording, Style
+from drawings.paper.common import fmt
+from drawings.paper.i18n import lookup
+from drawings.paper.sheet import Sheet, SheetSpec, compose
+from drawings.paper.text import layout
 from plans.cycle import spline
 from plans.cycle.diagrams import Diagrams
 from plans.cycle.dynamics import Dynamics
 from plans.cycle.table import CycleTable, TableRow
 from plans.scene.model import Scene
 from plans.solution import Solution
-
-from .backend import HAIR, MAIN, THIN, Recording, Style
-from .common import fmt
-from .cycle_plot import EXACT, GRAPH, Axes, number, plot_panel, wide_table
-from .i18n import lookup
-from .panels import Panel
-from .sheet import Sheet, SheetSpec, compose
-from .text import layout
 
 WORDS: dict[str, tuple[str, str]] = {
     "diagrams": ("Кинематические диаграммы", "Kinematic diagrams"),
@@ -255,10 +254,9 @@ def _w_panel(d: Dynamics, lang: str, first: int = 1) -> Panel:
     """ΔT against I_pr from I = 0: the closed curve, the tangents at ψ_max, ψ_min, k and l; at
     its own round scales (the curve about W_WIDTH_MM × W_HEIGHT_MM, readable), every position
     numbered (coincident ones share a label: "1, 13")."""
+    from drawings.linkage.overview import coincident_positions
+    from drawings.paper.common import Placer
     from plans.kinematics.scales import round_scale
-
-    from .common import Placer
-    from .overview import coincident_positions
 
     w = d.wittenbauer
     rec = Recording()
@@ -437,7 +435,7 @@ def nice_scale_mm(top: float, target_mm: float) -> float:
 def analogue_plans(plans: Sequence, lang: str, style: str) -> list[Panel]:
     """The plans of velocity analogues at the table's positions (``Solution.analogue_plans``:
     velocity plans at μ_v = μ/|ω1|, each segment the analogue v/ω1 at μ, mm per m), drawn."""
-    from .panels import plan_panel
+    from drawings.linkage.panels import plan_panel
 
     return [plan_panel(p, lang, style, pid=f"analogue-{k + 1}") for k, p in enumerate(plans)]
 
@@ -502,7 +500,7 @@ def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_te
 def fitting_diagrams(sol: Solution, dg: Diagrams, spec: SheetSpec) -> list[Panel]:
     """The kinematic diagrams as they fit the sheet: on a small one at a shorter φ axis (the
     scales μφ, μs... written on them the engine's at that length), not refused."""
-    from .sheet import fits_empty
+    from drawings.paper.sheet import fits_empty
 
     panels = diagram_panels(dg, spec.language, spec.first_position)
     length = dg.spec.length_mm
@@ -517,7 +515,7 @@ def fitting_diagrams(sol: Solution, dg: Diagrams, spec: SheetSpec) -> list[Panel
 
 def _used(sheet: Sheet) -> float:
     """The part of a sheet's field (inside the frame) its panels cover (they do not overlap)."""
-    from .sheet import usable
+    from drawings.paper.sheet import usable
 
     a = usable(sheet.width, sheet.height)
     return sum(p.width * p.height for p, _, _ in sheet.placed) / ((a[2] - a[0]) * (a[3] - a[1]))
@@ -528,7 +526,7 @@ def _fitting_dynamics(sol: Solution, d: Dynamics, tabs: Sequence[CycleTable], sp
     """The dynamics sheet's panels as they fit the sheet: on a small one the φ axis of the
     diagrams is shortened (240 mm on A1 and A2, or ``axis``, the one ``d`` is drawn at) and
     their heights lowered until every diagram fits, not refused."""
-    from .sheet import fits_empty
+    from drawings.paper.sheet import fits_empty
 
     panels = dynamics_panels(d, tabs, spec.language, analogues, first=spec.first_position)
     height = 1.0

@@ -17,8 +17,8 @@ from functools import partial
 
 import numpy as np
 
-from .blocks import Block, heading, pack_block, place_block
-from .panels import Panel
+from drawings.paper.blocks import Block, heading, pack_block, place_block
+from drawings.paper.panel_frame import Panel
 
 Box = tuple[float, float, float, float]
 Spots = Callable[[float, float, Box, Sequence[Box]], np.ndarray]
@@ -90,7 +90,7 @@ def shapes(panels: Sequence[Panel], area_w: float, limit: Callable[[float], floa
     """Every useful shape of the block of ``panels`` (each order packed into each width):
     all the Pareto shapes when some shape holds every panel, else the one holding the most
     (and the panels left for the next part)."""
-    from .blocks import INSET
+    from drawings.paper.blocks import INSET
 
     widest = max((p.width for p in panels), default=0.0) + 2 * INSET
     one_row = sum(p.width for p in panels) + gap * (len(panels) - 1) + 2 * INSET  # wider packs alike

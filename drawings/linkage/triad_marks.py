@@ -7,10 +7,9 @@ from typing import Any
 
 import numpy as np
 
+from drawings.paper.backend import Recording, Style, Transform
+from drawings.paper.common import Placer, dot, ident
 from plans.kinematics.triad_plans import PAIRS, assur_point, axes_of
-
-from .backend import Recording, Style, Transform
-from .common import Placer, dot, ident
 
 AXIS = Style(width=0.18, stroke="#333", dash=(6.0, 1.0, 1.0, 1.0), cls="axis")
 #: S farther than this many times the group's size from its pairs is not drawn (the axes
@@ -58,7 +57,7 @@ def scheme_points(rec: Recording, placer: Placer, T: Transform, scene: Any, kin:
 def special_point(rec: Recording, placer: Placer, T: Transform, gf: Any, k: int, pts: dict[str, complex],
                   pid: str, size: float, kin: Any = None) -> None:
     """S on the group cut free (the force analysis' moment point); the slot of the base a block
-    leash slides in is drawn with every moving guide's slot (:func:`drawings.free_body.draw_slot`)."""
+    leash slides in is drawn with every moving guide's slot (:func:`drawings.linkage.free_body.draw_slot`)."""
     outer = gf.reactions[:3]
     inner = gf.reactions[3:]
     Q = [complex(rc.r[k]) for rc in outer]

@@ -6,8 +6,8 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 
-from .panels import Panel
-from .sheet import SheetSpec, fits_empty
+from drawings.linkage.panels import Panel
+from drawings.paper.sheet import SheetSpec, fits_empty
 
 
 def parts(make: Callable[[tuple[int, int, int] | None], Panel], spec: SheetSpec) -> list[Panel]:

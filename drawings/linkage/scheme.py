@@ -8,19 +8,18 @@ import cmath
 import math
 from dataclasses import dataclass
 
-from plans.units import DUST
-
-from .backend import MAIN, THICK, THIN, Pt, Recording, Style, Transform
-from .common import Placer, angle, ident, phi_tag
-from .i18n import tr
-from .panel_frame import (
+from drawings.paper.backend import MAIN, THICK, THIN, Pt, Recording, Style, Transform
+from drawings.paper.common import Placer, angle, ident, phi_tag
+from drawings.paper.i18n import tr
+from drawings.paper.panel_frame import (
     LABEL_SIZE,
     Panel,
     finish,
     ratio_text,
     scale_text,
 )
-from .text import point_label
+from drawings.paper.text import point_label
+from plans.units import DUST
 
 BLOCK_L = 12.0
 BLOCK_H = 7.0
@@ -187,7 +186,7 @@ def scheme_panel(scene, kin, k: int, mu_l: float, lang: str, strokes: dict[str, 
     rec.end()
 
     if any(len(g.links) == 4 for g in kin.structure.groups):  # class III: Assur's point S
-        from .triad_marks import scheme_points
+        from drawings.linkage.triad_marks import scheme_points
 
         scheme_points(rec, placer, T, scene, kin, k, pid, LABEL_SIZE)
     rec.begin(f"{pid}-labels", "labels")

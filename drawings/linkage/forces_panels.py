@@ -15,15 +15,8 @@ from typing import Any
 
 import numpy as np
 
-from plans.kinematics.plan import Plan
-from plans.kinematics.scales import fit
-from plans.units import DUST
-
-from .backend import Pt, Recording, Style, Transform
-from .common import Placer, angle, arrow, dot, fmt, ident, phi_tag
-
 # the free bodies' pieces, importable from here as before
-from .free_body import (  # noqa: F401
+from drawings.linkage.free_body import (  # noqa: F401
     ARM,
     COUPLE_STEP_MM,
     FBD_ARROW_MM,
@@ -42,9 +35,13 @@ from .free_body import (  # noqa: F401
     short_mark,
     short_note,
 )
-from .friction_marks import efficiency_panels, efficiency_rows, friction_marks, friction_points
-from .i18n import tr
-from .panels import (
+from drawings.linkage.friction_marks import (
+    efficiency_panels,
+    efficiency_rows,
+    friction_marks,
+    friction_points,
+)
+from drawings.linkage.panels import (
     LABEL_SIZE,
     SMALL_SIZE,
     VECTOR_STYLES,
@@ -54,7 +51,13 @@ from .panels import (
     scale_text,
     table_panel,
 )
-from .text import point_label
+from drawings.paper.backend import Pt, Recording, Style, Transform
+from drawings.paper.common import Placer, angle, arrow, dot, fmt, ident, phi_tag
+from drawings.paper.i18n import tr
+from drawings.paper.text import point_label
+from plans.kinematics.plan import Plan
+from plans.kinematics.scales import fit
+from plans.units import DUST
 
 
 def build(sol, spec, ks: Sequence[int], plans_at: dict[int, Any], mu_l: float) -> dict:
@@ -93,7 +96,7 @@ def build(sol, spec, ks: Sequence[int], plans_at: dict[int, Any], mu_l: float) -
             vplan = plans_at[k].velocity if k in plans_at else None
             panels.append(lever_panel(sol, k, vplan, lang, style))
         if want("table") and polys:
-            from .table_parts import parts
+            from drawings.linkage.table_parts import parts
 
             def table(part: tuple[int, int, int] | None, polys: Any = polys, phi: float = phi) -> Panel:
                 return forces_table(polys, lang, style, phi, part)
@@ -120,7 +123,7 @@ def group_panel(scene, kin, gf, k: int, mu_l: float, lang: str, style: str, fric
     loads = [f for fs in gf.loads for f in fs] if triad else list(gf.loads_i) + list(gf.loads_j)
     moments = [m for ms in gf.moments for m in ms] if triad else list(gf.moments_i) + list(gf.moments_j)
     if triad:
-        from .triad_marks import special_point
+        from drawings.linkage.triad_marks import special_point
 
         special_point(rec, placer, T, gf, k, pts, pid, LABEL_SIZE, kin)
     reacts = []

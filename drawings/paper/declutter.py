@@ -12,8 +12,8 @@ import math
 
 import numpy as np
 
-from .backend import Prim, arc_points
-from .text import Label, TextRun
+from drawings.paper.backend import Prim, arc_points
+from drawings.paper.text import Label, TextRun
 
 SHRINK = 0.25  # a line grazing a label's box by less than this does not cross it, mm
 RINGS = (1.0, 2.0, 3.0, 4.5, 6.0, 7.5, 9.0, 11.0, 13.5, 16.0)

@@ -13,10 +13,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .backend import FILLED, HAIR, MAIN, PAPER, THIN, Recording, Style
-from .common import arrow, fmt
-from .panels import SMALL_SIZE, Panel, finish
-from .text import layout
+from drawings.linkage.panels import SMALL_SIZE, Panel, finish
+from drawings.paper.backend import FILLED, HAIR, MAIN, PAPER, THIN, Recording, Style
+from drawings.paper.common import arrow, fmt
+from drawings.paper.text import layout
 
 EXACT = Style(width=0.2, stroke="#777", dash=(1.5, 0.8), cls="exact")
 GRAPH = Style(width=0.5, cls="graphical")

@@ -1,5 +1,5 @@
-"""Writing sheets: SVG text, PDF and PNG (cairosvg, through :mod:`drawings.convert`), DXF
-(ezdxf, through :mod:`drawings.dxf`), each file atomically."""
+"""Writing sheets: SVG text, PDF and PNG (cairosvg, through :mod:`drawings.paper.convert`), DXF
+(ezdxf, through :mod:`drawings.paper.dxf`), each file atomically."""
 
 from __future__ import annotations
 
@@ -12,7 +12,7 @@ from plans.errors import OutputError
 from plans.io import atomic_write  # noqa: F401  (re-exported by drawings)
 
 if TYPE_CHECKING:  # the sheet's modules (svgwrite, numpy) load only when a sheet is drawn
-    from .sheet import Sheet
+    from drawings.paper.sheet import Sheet
 
 FORMATS = ("svg", "pdf", "png", "dxf")
 
@@ -32,11 +32,11 @@ PDF_DATE = "2000-01-01T00:00:00Z"
 
 def pdf_bytes(svg: bytes | Any, title: str = "") -> bytes:
     """SVG -> PDF at 1:1 (the page is the sheet in points), with fixed metadata; ``svg`` is
-    the document's bytes or its tree parsed once (:func:`drawings.convert.tree`)."""
+    the document's bytes or its tree parsed once (:func:`drawings.paper.convert.tree`)."""
     import cairocffi
     from cairosvg.surface import PDFSurface
 
-    from . import convert
+    from drawings.paper import convert
 
     class _Pdf(PDFSurface):
         def _create_surface(self, width, height):
@@ -56,7 +56,7 @@ def png_bytes(svg: bytes | Any, dpi: float) -> bytes:
     took as long as drawing an A1 sheet)."""
     from cairosvg.surface import PNGSurface, Surface
 
-    from . import convert
+    from drawings.paper import convert
 
     class _Png(PNGSurface):
         def finish(self):
@@ -146,7 +146,7 @@ def render(sheets: Sequence[Sheet], outdir: str | Path, stem: str, formats: Sequ
                 files[p] = svg if f == "svg" else dxf_bytes(sh)
                 continue
             if doc is None:
-                from .convert import tree
+                from drawings.paper.convert import tree
 
                 doc = tree(svg)
             files[p] = pdf_bytes(doc) if f == "pdf" else png_bytes(doc, dpi)
@@ -158,8 +158,8 @@ def render(sheets: Sequence[Sheet], outdir: str | Path, stem: str, formats: Sequ
 def write(files: dict[Path, bytes], outdir: str | Path, *, source: str | Path | None = None) -> list[Path]:
     """Write rendered files as one (an error leaves none of them); with ``source`` the
     folder's manifest removes that input's old sheets the new set lacks and refuses to
-    overwrite another input's sheets (:mod:`drawings.manifest`)."""
-    from .manifest import write_sheets
+    overwrite another input's sheets (:mod:`drawings.paper.manifest`)."""
+    from drawings.paper.manifest import write_sheets
 
     out = Path(outdir)
     try:

@@ -11,15 +11,14 @@ import math
 
 import numpy as np
 
+from drawings.balancing.balancing_paper import engine_paper, polygon_scale
+from drawings.linkage.panels import SMALL_SIZE, VECTOR_STYLES, Panel, finish
+from drawings.paper.backend import CENTRE_LINE, HAIR, Recording, Style
+from drawings.paper.common import Placer, arrow, degrees360, dot, fmt
+from drawings.paper.i18n import lookup
+from drawings.paper.text import layout
 from plans.balancing.analysis import Balance
 from plans.balancing.banks import Bank, BankPolygon, Locus
-
-from .backend import CENTRE_LINE, HAIR, Recording, Style
-from .balancing_paper import engine_paper, polygon_scale
-from .common import Placer, arrow, degrees360, dot, fmt
-from .i18n import lookup
-from .panels import SMALL_SIZE, VECTOR_STYLES, Panel, finish
-from .text import layout
 
 _W: dict[str, tuple[str, str]] = {
     "force": ("Силы инерции ПДМ {k} порядка по рядам", "Reciprocating forces, order {k}, bank by bank"),

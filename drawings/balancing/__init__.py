@@ -3,7 +3,7 @@ second order, polygons of the inertia forces and of the turned moments with thei
 vectors, the analytic table beside each polygon, counterweights and results.
 
 Reads the frozen results of :mod:`plans.balancing`; lays them out with the panel and sheet
-machinery of the linkage sheets (:mod:`drawings.panels`, :mod:`drawings.sheet`).
+machinery of the linkage sheets (:mod:`drawings.linkage.panels`, :mod:`drawings.paper.sheet`).
 """
 
 from __future__ import annotations
@@ -14,19 +14,18 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from drawings.balancing.balancing_paper import engine_paper, polygon_scale
+from drawings.linkage.panels import LABEL_SIZE, SMALL_SIZE, VECTOR_STYLES, Panel, finish
+from drawings.paper.backend import CENTRE_LINE, HAIR, MAIN, Recording, Style
+from drawings.paper.common import Placer, arrow, degrees360, dot, fmt
+from drawings.paper.fonts import metrics
+from drawings.paper.i18n import lookup
+from drawings.paper.sheet import Sheet, SheetSpec, compose, sheet_spec
+from drawings.paper.text import layout
 from plans.balancing.analysis import KINDS, Balance, Polygon, Resultant
 from plans.balancing.engine import Engine
 from plans.balancing.exact import ExactCheck
 from plans.balancing.solution import EngineSolution, solve_engine
-
-from .backend import CENTRE_LINE, HAIR, MAIN, Recording, Style
-from .balancing_paper import engine_paper, polygon_scale
-from .common import Placer, arrow, degrees360, dot, fmt
-from .fonts import metrics
-from .i18n import lookup
-from .panels import LABEL_SIZE, SMALL_SIZE, VECTOR_STYLES, Panel, finish
-from .sheet import Sheet, SheetSpec, compose, sheet_spec
-from .text import layout
 
 _W: dict[str, tuple[str, str]] = {
     "shaft": ("Схема коленчатого вала", "Crankshaft"),
@@ -120,7 +119,7 @@ def build_panels(es: EngineSolution, lang: str) -> list[Panel]:
         for kind in KINDS:
             R = res[kind]
             panels.append(polygon_panel(R, lang))
-    from .balancing_banks import bank_panels
+    from drawings.balancing.balancing_banks import bank_panels
 
     panels += bank_panels(b, lang)
     panels.append(results_panel(b, es.exact, lang))

@@ -10,9 +10,9 @@ from dataclasses import dataclass, field
 import numpy as np
 import shapely
 
-from .backend import FILLED, Backend, Prim, Pt, Recording, Style
-from .declutter import clip_segments
-from .text import Label, layout
+from drawings.paper.backend import FILLED, Backend, Prim, Pt, Recording, Style
+from drawings.paper.declutter import clip_segments
+from drawings.paper.text import Label, layout
 
 HEAD_LEN = 3.5  # mm, arrowhead length on the sheet
 HEAD_HALF = 0.65  # mm, half width

@@ -10,13 +10,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from plans.scene.model import Scene, load_scene
-from plans.solution import Solution
-from plans.solution import solve as solve_scene
-
-from .fonts import metrics
-from .overview import legend_kinds, legend_panel, positions_panel
-from .panels import (
+from drawings.linkage.overview import legend_kinds, legend_panel, positions_panel
+from drawings.linkage.panels import (
     Panel,
     auto_length_scale,
     cycle_size,
@@ -25,7 +20,11 @@ from .panels import (
     strokes_over_cycle,
     table_panel,
 )
-from .sheet import Sheet, SheetSpec, compose
+from drawings.paper.fonts import metrics
+from drawings.paper.sheet import Sheet, SheetSpec, compose
+from plans.scene.model import Scene, load_scene
+from plans.solution import Solution
+from plans.solution import solve as solve_scene
 
 
 @dataclass(frozen=True)
@@ -46,7 +45,7 @@ def _fitting_positions(sol: Solution, mu: float, lang: str, bold: list[int], str
                        spec: SheetSpec) -> Any:
     """The plan of positions as it fits the sheet: in full; else with its angles in brief; else
     (when its scale is not the file's own) at the next smaller standard scales."""
-    from .sheet import fits_empty
+    from drawings.paper.sheet import fits_empty
 
     panel = positions_panel(sol, mu, lang, bold, strokes, spec.trace, first=spec.first_position)
     if fits_empty(panel, spec.format, spec.orientation):
@@ -54,7 +53,7 @@ def _fitting_positions(sol: Solution, mu: float, lang: str, bold: list[int], str
     panel = positions_panel(sol, mu, lang, bold, strokes, spec.trace, brief=True, first=spec.first_position)
     if sol.scene.scales.get("length"):
         return panel  # the student's scale is kept: a panel that does not fit says so
-    from .panels import STANDARD_RATIOS
+    from drawings.linkage.panels import STANDARD_RATIOS
 
     for r in STANDARD_RATIOS:
         if fits_empty(panel, spec.format, spec.orientation):
@@ -68,11 +67,11 @@ def build_panels(sol: Solution, spec: SheetSpec, sel: dict[str, Any] | None = No
                  mu_positions: float | None = None, mu_l: float | None = None) -> tuple[list[Panel], float]:
     """Every panel the scene asks for, in the order they go on the sheet: the plan of
     positions, then position by position its scheme, plans, forces, lever and table.
-    ``sel`` (kind -> positions, :func:`drawings.sheet_sets.selection`) says which positions
+    ``sel`` (kind -> positions, :func:`drawings.linkage.sheet_sets.selection`) says which positions
     each kind shows (default: the ``positions`` set's); ``mu_positions`` the plan of
     positions' scale (default: the largest standard one that fits two fifths of the sheet),
     ``mu_l`` the schemes' and groups' (default: the file's, else about 230 mm across on A1)."""
-    from .sheet_sets import selection
+    from drawings.linkage.sheet_sets import selection
 
     metrics()  # fail early, with the font's name, if it is missing
     scene = sol.scene
@@ -97,7 +96,7 @@ def build_panels(sol: Solution, spec: SheetSpec, sel: dict[str, Any] | None = No
         if scene.wants("positions") and k in at.get("scheme", ()):
             panels.append(scheme_panel(scene, kin, k, mu_l, lang, strokes))
         if scene.wants("instant_centres") and k in at.get("centres", ()):
-            from .centres import centres_panels
+            from drawings.linkage.centres import centres_panels
 
             panels.extend(centres_panels(sol, k, mu_l, lang, strokes))
         pp = plans_at.get(k)
@@ -108,7 +107,7 @@ def build_panels(sol: Solution, spec: SheetSpec, sel: dict[str, Any] | None = No
                 panels.append(plan_panel(pp.acceleration, lang, style))
         panels.extend(forces.get(k, []))
         if pp is not None and pp.readings and k in at.get("table", ()):
-            from .table_parts import parts
+            from drawings.linkage.table_parts import parts
 
             extra, rows, phi = forces.get(("table", k), []), _rows(scene, pp.readings), float(kin.phi_deg[k])
 
@@ -149,7 +148,7 @@ def _force_panels(sol: Solution, spec: SheetSpec, ks: list[int], plans_at, mu_l:
     """Force panels (group free bodies and polygons, crank, lever) when plans.forces exists;
     with ``at`` only those of the positions it names for each kind (forces, lever, table)."""
     try:
-        from . import forces_panels
+        from drawings.linkage import forces_panels
     except ImportError:  # pragma: no cover - the force panels are optional
         return {}
     out = forces_panels.build(sol, spec, ks, plans_at, mu_l)
@@ -174,7 +173,7 @@ def draw(source: Solution | Scene | str | Path, *, format: str | None = None, or
         sc = source if isinstance(source, Scene) else load_scene(source)
         spec = sc.sheet_for(format=format, orientation=orientation, language=language, set=sheet_set)
         sol = solve_scene(sc, fit=fit_for(spec))
-    from .sheet import TooBig
+    from drawings.paper.sheet import TooBig
 
     while True:
         try:
@@ -195,7 +194,7 @@ def _smaller_fit(sol: Solution, panel: Panel, spec: SheetSpec) -> float | None:
     """The fit to solve again at when ``panel`` does not fit an empty sheet: its plan, polygon
     or lever drawn at the next smaller round scales (the scales written on it change with
     them); None where its scale is not the engine's to change (the file's own, a length)."""
-    from .sheet import GAP, TB_H, usable
+    from drawings.paper.sheet import GAP, TB_H, usable
 
     if panel.quantity not in _SOLVED or any(k in sol.scene.scales for k in _SOLVED[panel.quantity]):
         return None
@@ -208,13 +207,13 @@ def _smaller_fit(sol: Solution, panel: Panel, spec: SheetSpec) -> float | None:
 
 def _draw(sol: Solution, spec: SheetSpec) -> Drawing:
     """The sheets of ``sol`` on ``spec``'s paper (TooBig when a panel does not fit it)."""
-    from .sheet_sets import course_sheets, numbers, set_of
+    from drawings.linkage.sheet_sets import course_sheets, numbers, set_of
 
     sc = sol.scene
     if set_of(sol, spec) == "course":
         diagrams = []
         if sc.wants("diagrams") and sol.cycle is not None and sol.cycle.diagrams is not None:
-            from .cycle import fitting_diagrams
+            from drawings.cycle import fitting_diagrams
 
             diagrams = fitting_diagrams(sol, sol.cycle.diagrams, spec)
         strokes = strokes_over_cycle(sol)
@@ -226,8 +225,8 @@ def _draw(sol: Solution, spec: SheetSpec) -> Drawing:
         sheets = course_sheets(sol, spec, *builders(sol), diagrams)
         panels = [p for sh in sheets for p, _, _ in sh.placed if p not in diagrams]  # the linkage's
         if sc.wants("dynamics"):  # the dynamics' sheets follow
-            from .cycle import extend
-            from .sheet_sets import flat_sheets
+            from drawings.cycle import extend
+            from drawings.linkage.sheet_sets import flat_sheets
 
             sheets = extend(sol, spec, sheets, None, diagrams=False, lay=flat_sheets)
         mu_l = next((p.scale for p in panels if p.kind == "scheme" and p.scale), None) or build_panels(
@@ -237,7 +236,7 @@ def _draw(sol: Solution, spec: SheetSpec) -> Drawing:
     nums = {float(phi): n for phi, n in zip(sc.driver.phis_deg, numbers(sol, spec), strict=True)}
     sheets = compose(panels, spec, None, sc.path, nums)  # each sheet's scale: its main image's
     if sc.wants("diagrams") or sc.wants("dynamics"):  # the cycle's sheets follow
-        from .cycle import extend
+        from drawings.cycle import extend
 
         sheets = extend(sol, spec, sheets, None)
     return Drawing(sc, spec, tuple(panels), tuple(sheets), mu_l)

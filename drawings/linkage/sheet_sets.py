@@ -20,14 +20,23 @@ import dataclasses
 from collections.abc import Sequence
 from typing import Any
 
+from drawings.linkage.panels import STANDARD_RATIOS, Panel
+from drawings.paper.blocks import pack_block
+from drawings.paper.i18n import tr
+from drawings.paper.packing import free_spots
+from drawings.paper.sheet import (
+    GAP,
+    MARGIN,
+    TB_H,
+    TB_W,
+    Sheet,
+    SheetSpec,
+    check_fits,
+    compose,
+    usable,
+)
 from plans.errors import InputError
 from plans.solution import Solution
-
-from .blocks import pack_block
-from .i18n import tr
-from .packing import free_spots
-from .panels import STANDARD_RATIOS, Panel
-from .sheet import GAP, MARGIN, TB_H, TB_W, Sheet, SheetSpec, check_fits, compose, usable
 
 #: A scene with at least this many positions is drawn as the course's sheet set by default.
 COURSE_FROM = 12
@@ -166,7 +175,7 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
     diagrams) go on the kinematics sheet after the plans.  ``larger``: thunks giving the
     (build, positions) of the scene solved with longer plans, tried in turn for the kinematics
     sheet: the first that keeps as few sheets is drawn."""
-    from .sheet import fits_empty
+    from drawings.paper.sheet import fits_empty
 
     sel = selection(sol, spec, "course")
     scene = sol.scene
@@ -262,14 +271,14 @@ def _fuller(a: list, b: list) -> list:
 
 
 def _base_positions_scale(sol: Solution, spec: SheetSpec) -> float:
-    from .panels import auto_length_scale, cycle_size
+    from drawings.linkage.panels import auto_length_scale, cycle_size
 
     w, _ = spec.size
     return auto_length_scale(cycle_size(sol), 0.4 * (w - 37.0))
 
 
 def _base_length_scale(sol: Solution, spec: SheetSpec) -> float:
-    from .panels import auto_length_scale, cycle_size
+    from drawings.linkage.panels import auto_length_scale, cycle_size
 
     w, h = spec.size
     return auto_length_scale(cycle_size(sol), 230.0 * min(1.0, max(w, h) / 841.0))

@@ -14,8 +14,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .panels import Panel
-from .text import layout
+from drawings.paper.panel_frame import Panel
+from drawings.paper.text import layout
 
 Box = tuple[float, float, float, float]
 HEAD = 8.0  # heading band of a block, mm
@@ -59,7 +59,7 @@ class Block:
 
 def heading(phi: float, number: int | None, lang: str, part: int = 0) -> str:
     """``Положение 3, φ = 90°`` (``Position 3, φ = 90°``), ``(продолжение)`` on a second part."""
-    from .common import angle
+    from drawings.paper.common import angle
 
     at = f"φ = {angle(phi, lang)}°"
     word = "Положение" if lang == "ru" else "Position"

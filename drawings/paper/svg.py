@@ -14,9 +14,9 @@ from typing import Any
 
 import svgwrite
 
-from .backend import Prim, Pt, Style, hatch_segments
-from .fonts import FONT_FAMILY
-from .text import Label
+from drawings.paper.backend import Prim, Pt, Style, hatch_segments
+from drawings.paper.fonts import FONT_FAMILY
+from drawings.paper.text import Label
 
 
 def num(v: float) -> str:
@@ -222,7 +222,7 @@ class SvgWriter:
 def document(width: float, height: float, prims: Iterable[Prim]) -> str:
     """The SVG text of recorded primitives on a ``width`` × ``height`` mm page (the bytes
     :class:`SvgBackend` writes, see :class:`SvgWriter`)."""
-    from .backend import replay
+    from drawings.paper.backend import replay
 
     w = SvgWriter(width, height)
     replay(prims, w)

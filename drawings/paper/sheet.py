@@ -11,16 +11,15 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
+from drawings.paper.backend import Prim, Recording, Style, replay
+from drawings.paper.blocks import Frame, frame_of, spread
+from drawings.paper.i18n import tr
+from drawings.paper.packing import blocks_of, free_spots, place_blocks, place_note
+from drawings.paper.panel_frame import Panel
+from drawings.paper.svg import SvgBackend, document
+from drawings.paper.text import layout, wrap
 from plans.errors import InputError
 from plans.scene.sheet import FORMATS, PANEL_KINDS, SHEET_FORMATS, Pin, SheetSpec, sheet_spec  # noqa: F401  (read by the sheets)
-
-from .backend import Prim, Recording, Style, replay
-from .blocks import Frame, frame_of, spread
-from .i18n import tr
-from .packing import blocks_of, free_spots, place_blocks, place_note
-from .panels import Panel
-from .svg import SvgBackend, document
-from .text import layout, wrap
 
 MARGIN_LEFT = 20.0
 MARGIN = 5.0
@@ -81,8 +80,8 @@ class Sheet:
 
     def dxf(self) -> bytes:
         """The sheet as DXF bytes: the same primitives at 1:1 in millimetres, panels as
-        blocks, layers by content and line type (:mod:`drawings.dxf`)."""
-        from .dxf import document as dxf_document
+        blocks, layers by content and line type (:mod:`drawings.paper.dxf`)."""
+        from drawings.paper.dxf import document as dxf_document
 
         prims, bases = self._dxf_blocks()
         return dxf_document(self.width, self.height, prims, self.spec.language, self.spec.title, bases)
@@ -131,7 +130,7 @@ def _frame(rec: Recording, sh: Sheet) -> None:
 
 def _frames(rec: Recording, sh: Sheet) -> None:
     """A thin border round each position's block, its heading in the top-left corner."""
-    from .blocks import HEAD, HEAD_SIZE, INSET
+    from drawings.paper.blocks import HEAD, HEAD_SIZE, INSET
 
     for f in sh.frames:
         x0, y0, x1, y1 = f.box
@@ -241,7 +240,7 @@ def sheet_scale(placed: Sequence[tuple[Panel, float, float]], lang: str) -> str:
     """The "Scale" cell as GOST 2.104 fills it: the scale (GOST 2.302) of the sheet's main
     image, its largest panel drawn at a length scale (the others say "M 1:4" under their
     titles); a dash where nothing on the sheet is drawn at a length scale (plans, tables)."""
-    from .panels import ratio_text
+    from drawings.paper.panel_frame import ratio_text
 
     drawn = [(p.width * p.height, p.scale) for p, _, _ in placed if p.quantity == "length" and p.scale]
     if not drawn:

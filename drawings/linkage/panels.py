@@ -11,28 +11,7 @@ import math
 import re
 from collections.abc import Sequence
 
-from plans.kinematics.plan import Plan
-from plans.units import DUST
-
-from .backend import FILLED, HAIR, Prim, Pt, Recording, Style, Transform
-from .common import Placer, angle, arrow, dot, fmt, ident, phi_tag
-from .i18n import tr
-
-# the panel's frame and the scheme, importable from here as before
-from .panel_frame import (  # noqa: F401
-    LABEL_SIZE,
-    PAD,
-    SCALE_SIZE,
-    SMALL_SIZE,
-    STANDARD_RATIOS,
-    TITLE_SIZE,
-    Panel,
-    auto_length_scale,
-    finish,
-    ratio_text,
-    scale_text,
-)
-from .scheme import (  # noqa: F401
+from drawings.linkage.scheme import (  # noqa: F401
     BLOCK_H,
     BLOCK_L,
     JOINT_R,
@@ -46,7 +25,27 @@ from .scheme import (  # noqa: F401
     scheme_panel,
     strokes_over_cycle,
 )
-from .text import layout, point_label
+from drawings.paper.backend import FILLED, HAIR, Prim, Pt, Recording, Style, Transform
+from drawings.paper.common import Placer, angle, arrow, dot, fmt, ident, phi_tag
+from drawings.paper.i18n import tr
+
+# the panel's frame and the scheme, importable from here as before
+from drawings.paper.panel_frame import (  # noqa: F401
+    LABEL_SIZE,
+    PAD,
+    SCALE_SIZE,
+    SMALL_SIZE,
+    STANDARD_RATIOS,
+    TITLE_SIZE,
+    Panel,
+    auto_length_scale,
+    finish,
+    ratio_text,
+    scale_text,
+)
+from drawings.paper.text import layout, point_label
+from plans.kinematics.plan import Plan
+from plans.units import DUST
 
 # --------------------------------------------------------------------------- velocity / acceleration plans
 
@@ -206,7 +205,7 @@ def table_panel(rows: Sequence, lang: str, scale_style: str, phi: float, pid: st
 
     ``rows`` are readings (``plans.construction.Reading``-like); ``extra`` are ready rows of
     eight cells (the balancing force three ways).  ``part`` = (start, stop, n): only those
-    rows, as the table's part n (:func:`drawings.table_parts.parts`).
+    rows, as the table's part n (:func:`drawings.linkage.table_parts.parts`).
     """
     from plans.scene.notation import pole_label, resolve
 
@@ -237,7 +236,7 @@ def table_panel(rows: Sequence, lang: str, scale_style: str, phi: float, pid: st
     if part is not None:
         body = body[part[0]:part[1]]
     size = SMALL_SIZE + 0.3
-    from .fonts import metrics
+    from drawings.paper.fonts import metrics
 
     mtr = metrics()
     widths = [0.0] * len(header)

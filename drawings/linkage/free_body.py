@@ -11,12 +11,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from plans.forces.shared import nice_scale
-from plans.units import DUST
-
-from .backend import Pt, Recording, Style, Transform
-from .common import Placer, arrow, dot, ident
-from .panels import (
+from drawings.linkage.panels import (
     BLOCK_L,
     JOINT_R,
     LABEL_SIZE,
@@ -24,7 +19,11 @@ from .panels import (
     link_outline,
     link_shape,
 )
-from .text import point_label
+from drawings.paper.backend import Pt, Recording, Style, Transform
+from drawings.paper.common import Placer, arrow, dot, ident
+from drawings.paper.text import point_label
+from plans.forces.shared import nice_scale
+from plans.units import DUST
 
 LOAD = Style(width=0.45, stroke="#000")
 REACTION = Style(width=0.45, stroke="#b3261e")

@@ -6,10 +6,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .backend import Prim, Recording
-from .common import fmt
-from .i18n import tr
-from .text import layout
+from drawings.paper.backend import Prim, Recording
+from drawings.paper.common import fmt
+from drawings.paper.i18n import tr
+from drawings.paper.text import layout
 
 TITLE_SIZE = 5.0
 SCALE_SIZE = 3.5
@@ -40,8 +40,8 @@ class Panel:
 
     def svg(self, debug: bool = False) -> str:
         """The panel alone as an SVG document in true millimetres."""
-        from .backend import replay
-        from .svg import SvgBackend, document
+        from drawings.paper.backend import replay
+        from drawings.paper.svg import SvgBackend, document
 
         if not debug:
             return document(self.width, self.height, self.prims)
@@ -60,7 +60,7 @@ def finish(pid: str, kind: str, phi: float | None, body: Recording, title: str,
     line of the finished figure crosses are moved clear of it (:func:`declutter`); a table's
     cells sit between its rules by construction and are not searched."""
     if kind not in ("table", "legend", "cycle-table"):
-        from .declutter import declutter
+        from drawings.paper.declutter import declutter
 
         body = Recording(declutter(body.prims))
     x0, y0, x1, y1 = body.bbox()

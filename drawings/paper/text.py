@@ -13,10 +13,10 @@ import re
 from dataclasses import dataclass
 from functools import lru_cache
 
-from .fonts import metrics
+from drawings.paper.fonts import metrics
 
 SCRIPT_SIZE = 0.7
-#: GOST 2.304: letters at least 2.5 mm (:data:`drawings.panels.SMALL_SIZE`); an index is written
+#: GOST 2.304: letters at least 2.5 mm (:data:`drawings.paper.panel_frame.SMALL_SIZE`); an index is written
 #: a size smaller, never below the standard's smallest size, 1.8 mm.
 SCRIPT_MIN = 1.8
 SUB_SHIFT = 0.28  # of the base size, downwards on paper

@@ -7,8 +7,8 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from .backend import Recording, Style, Transform
-from .common import Placer, fmt
+from drawings.paper.backend import Recording, Style, Transform
+from drawings.paper.common import Placer, fmt
 
 CIRCLE = Style(width=0.25, stroke="#6a3d9a", dash=(1.2, 0.8), cls="friction-circle")
 TANGENT = Style(width=0.3, stroke="#6a3d9a", dash=(5.0, 1.0, 1.0, 1.0), cls="friction-line")
@@ -105,9 +105,8 @@ def efficiency_panels(fa: Any, lang: str, size: float = 1.0) -> list[Any]:
     """The diagram η(φ) over the turn with the cycle's η, and the table of the positions:
     F_bal without and with friction, the power lost and η.  ``size``: the diagram's length and
     height as a fraction of A1's (the paper's fit)."""
+    from drawings.cycle.cycle_plot import GRAPH, Axes, number, plot_panel, wide_table
     from plans.forces.friction import efficiency_json
-
-    from .cycle_plot import GRAPH, Axes, number, plot_panel, wide_table
 
     eff = efficiency_json(fa)
     fr = fa.friction
