@@ -94,8 +94,7 @@ def test_one_numbering_on_the_plans_the_plan_of_positions_and_the_cycle(tmp_path
 
     scene = tmp_path / "dyn.toml"
     text = (SAMPLES / "dynamics_slider_crank.toml").read_text(encoding="utf-8")
-    if first == 0:
-        text += "\n[sheet]\nfirst_position = 0\n"
+    text += '\n[sheet]\nset = "positions"\n' + ("first_position = 0\n" if first == 0 else "")  # headed blocks
     scene.write_text(text, encoding="utf-8")
     d = draw(scene)
     panels = {p.pid: p for p in _all_panels(d)}

@@ -1,5 +1,6 @@
-"""``from drawings import draw`` is the function that draws a linkage scene, whatever was
-imported before it (the package loads its names on first use)."""
+"""``from drawings import draw`` is the function that draws a file of any kind (a linkage's
+through ``drawings.linkage.draw``), whatever was imported before it (the package loads its
+names on first use)."""
 
 from __future__ import annotations
 
@@ -12,10 +13,12 @@ import pytest
 ROOT = Path(__file__).resolve().parent.parent
 
 CHECK = ("import types\n"
+         "import drawings\n"
          "from drawings import draw\n"
          "import drawings.linkage as linkage\n"
          "assert isinstance(draw, types.FunctionType), type(draw)\n"
-         "assert draw is linkage.draw\n"
+         "assert isinstance(linkage.draw, types.FunctionType), type(linkage.draw)\n"
+         "assert draw is drawings.draw and draw.__module__ == 'drawings'\n"
          "print('ok')\n")
 
 
@@ -38,4 +41,7 @@ def test_the_linkage_kind_draws_with_drawings_linkage():
     from drawings.linkage import draw as linkage_draw
 
     assert module.__name__ == "drawings.linkage"
-    assert module.draw is linkage_draw is draw
+    assert module.draw is linkage_draw
+    scene = str(ROOT / "samples" / "slider_crank.toml")
+    one, other = draw(scene), linkage_draw(scene)  # the dispatcher draws a linkage as its module does
+    assert [s.svg() for s in one.sheets] == [s.svg() for s in other.sheets]
