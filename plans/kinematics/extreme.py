@@ -30,6 +30,7 @@ import numpy as np
 from plans.errors import ConstructionError, InputError
 from plans.records import frozen
 from plans.scene.model import Joint, Scene
+from plans.tolerances import COINCIDE_REL
 
 STARTS = ("extreme", "extreme_idle")
 #: The strokes' crank angles differ by less than this (degrees): K = 1, the tie rule decides.
@@ -229,6 +230,10 @@ def _strokes(scene: Scene, field: str, closed: bool, output: Output | None) -> S
         raise _fail(scene, field, f"the extreme positions need the crank to turn a full revolution ({exc})") from None
     c, v = _coordinate(out, kin)
     top, bottom = int(np.argmax(c[:-1])), int(np.argmin(c[:-1]))
+    crank = scene.links[scene.driver.link]
+    reach = abs(crank.points[crank.axis[1]] - crank.points[scene.driver.pivot]) if out.kind == "slider" else 1.0
+    if c[top] - c[bottom] <= COINCIDE_REL * reach:  # a ram whose guide passes through its rocker's pivot
+        raise _fail(scene, field, f"the output (link {out.link}) does not move: it has no extreme positions")
     if out.kind == "rocker" and abs(c[-1] - c[0]) > math.pi:
         raise _fail(scene, field, f"link {out.link} turns all the way round: it has no extreme positions; "
                                   "name a slider or a rocker: extreme_of = link number")
@@ -256,6 +261,8 @@ def _strokes(scene: Scene, field: str, closed: bool, output: Output | None) -> S
         working_up = bool(abs(r[1] - pivot) >= abs(r[0] - pivot))
     start, other = (at_bottom, at_top) if working_up else (at_top, at_bottom)
     span = up if working_up else 360.0 - up
+    if not 0.0 < span < 360.0:
+        raise _fail(scene, field, f"the output (link {out.link}) has no two distinct extreme positions")
     return Strokes(out, start, other, span, working_up, used_closed)
 
 
