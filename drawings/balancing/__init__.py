@@ -21,7 +21,7 @@ from drawings.paper.common import Placer, arrow, degrees360, dot, fmt
 from drawings.paper.fonts import metrics
 from drawings.paper.i18n import lookup
 from drawings.paper.sheet import Sheet, SheetSpec, compose, sheet_spec
-from drawings.paper.text import layout
+from drawings.paper.text import column_edges, layout
 from plans.balancing.analysis import KINDS, Balance, Polygon, Resultant
 from plans.balancing.engine import Engine
 from plans.balancing.exact import ExactCheck
@@ -311,15 +311,8 @@ def grid_recording(pid: str, header: Sequence[str], rows: Sequence[Sequence[str]
                    caption: str | None = None) -> Recording:
     """A ruled table: header row, body rows; the first ``left`` columns left-aligned."""
     size = 3.5
-    widths = [0.0] * len(header)
-    for cells in [list(header)] + [list(r) for r in rows]:
-        for i, t in enumerate(cells):
-            lab = layout(t, 0, 0, size)
-            widths[i] = max(widths[i], lab.box[2] - lab.box[0] + 3.0)
+    xe = column_edges([list(header)] + [list(r) for r in rows], size)
     rh = size * 1.75
-    xe = [0.0]
-    for w in widths:
-        xe.append(xe[-1] + w)
     n = len(rows) + 1
     H = n * rh
     rec = Recording()

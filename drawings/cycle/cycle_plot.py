@@ -16,7 +16,7 @@ import numpy as np
 from drawings.linkage.panels import SMALL_SIZE, Panel, finish
 from drawings.paper.backend import FILLED, HAIR, MAIN, PAPER, THIN, Recording, Style
 from drawings.paper.common import arrow, fmt
-from drawings.paper.text import layout
+from drawings.paper.text import column_edges, layout
 
 EXACT = Style(width=0.2, stroke="#777", dash=(1.5, 0.8), cls="exact")
 GRAPH = Style(width=0.5, cls="graphical")
@@ -111,15 +111,8 @@ def wide_table(pid: str, title: str, header: Sequence[str], rows: Sequence[Seque
                note: str | None = None) -> Panel:
     """A table with the quantities as rows and the positions as columns (seed 004's layout)."""
     size = SMALL_SIZE + 0.3
-    widths = [0.0] * len(header)
-    for cells in [list(header)] + [list(r) for r in rows]:
-        for i, t in enumerate(cells):
-            lab = layout(t, 0, 0, size)
-            widths[i] = max(widths[i], lab.box[2] - lab.box[0] + 3.0)
+    edges = column_edges([list(header)] + [list(r) for r in rows], size)
     rh = size * 1.75
-    edges = [0.0]
-    for w in widths:
-        edges.append(edges[-1] + w)
     n = len(rows) + 1
     Ht = n * rh
     rec = Recording()

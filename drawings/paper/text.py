@@ -10,6 +10,7 @@ its own x, y, so no renderer has to understand baseline shifts.
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -155,3 +156,17 @@ def wrap(text: str, width: float, size: float) -> list[str]:
     if cur:
         lines.append(cur)
     return lines
+
+
+def column_edges(rows: Sequence[Sequence[str]], size: float, pad: float = 3.0) -> list[float]:
+    """The x of a ruled table's column edges, 0 first: each column as wide as its widest cell
+    written at ``size``, plus ``pad`` mm of margin."""
+    widths = [0.0] * (len(rows[0]) if rows else 0)  # the header's columns
+    for cells in rows:
+        for i, t in enumerate(cells):
+            box = layout(t, 0, 0, size).box
+            widths[i] = max(widths[i], box[2] - box[0] + pad)
+    edges = [0.0]
+    for w in widths:
+        edges.append(edges[-1] + w)
+    return edges
