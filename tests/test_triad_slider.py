@@ -20,6 +20,8 @@ from plans.kinematics.exact import solve
 from plans.kinematics.structure import analyse
 from plans.scene.model import load_scene
 
+from .newton2 import newton2
+
 SAMPLE = Path(__file__).resolve().parent.parent / "samples" / "class3" / "triad_press.toml"
 
 
@@ -55,19 +57,7 @@ class _TwoAngles:
         return abs(E - D) - self.de, _cross(self.g, F - self.G)
 
     def root(self, phi: float, ab: tuple[float, float]) -> tuple[float, float]:
-        a, b = ab
-        for _ in range(60):
-            f1, f2 = self._f(phi, (a, b))
-            d = 1e-7
-            g1, g2 = self._f(phi, (a + d, b))
-            h1, h2 = self._f(phi, (a, b + d))
-            j11, j21, j12, j22 = (g1 - f1) / d, (g2 - f2) / d, (h1 - f1) / d, (h2 - f2) / d
-            det = j11 * j22 - j12 * j21
-            da, db = (-f1 * j22 + f2 * j12) / det, (-j11 * f2 + j21 * f1) / det
-            a, b = a + da, b + db
-            if abs(da) + abs(db) < 1e-15:
-                break
-        return a, b
+        return newton2(lambda x: self._f(phi, x), ab, 60)
 
 
 @pytest.fixture(scope="module")
