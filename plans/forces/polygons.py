@@ -73,9 +73,13 @@ def analyse_forces(scene: Scene, kin: Kinematics, loads: Loads | None = None) ->
     return solve_applied(scene, kin, loads, apply_loads(scene, loads, kin))
 
 
-def solve_applied(scene: Scene, kin: Kinematics, loads: Loads, applied: AppliedLoads) -> ForceAnalysis:
+def solve_applied(scene: Scene, kin: Kinematics, loads: Loads, applied: AppliedLoads,
+                  geometry: dict | None = None) -> ForceAnalysis:
     """The groups and the crank in equilibrium under ``applied``.  Linear in the loads: a
-    load's arrays may carry a leading axis (several load cases at once, by superposition)."""
+    load's arrays may carry a leading axis (several load cases at once, by superposition).
+    ``geometry``: what no load changes (each group's points, unit vectors and determinant,
+    the crank's arm), kept in this dict by the first solve of these positions and read by
+    the next ones (the same numbers, not worked out again)."""
     forces: dict[int, list[AppliedForce]] = {k: [] for k in scene.links}
     moments: dict[int, list[AppliedMoment]] = {k: [] for k in scene.links}
     for f in applied.forces:
@@ -89,17 +93,18 @@ def solve_applied(scene: Scene, kin: Kinematics, loads: Loads, applied: AppliedL
 
             gf = solve_triad(kin, g, forces, moments, Reaction)
         else:
-            gf = _SOLVERS[g.kind](kin, g, forces, moments)
+            gf = _SOLVERS[g.kind](kin, g, forces, moments, geometry)
         solved.append(gf)
         # what the group sends back to the known links (F_pi = −F_ip)
         for rc in gf.reactions:
             if rc.frm == scene.frame or rc.frm in g.links:
                 continue
-            forces[rc.frm].append(_bound(kin, rc.frm, rc.r, -rc.F, _fname(scene, rc.frm, rc.on), rc.point))
+            forces[rc.frm].append(_bound(kin, rc.frm, rc.r, -rc.F, _fname(scene, rc.frm, rc.on), rc.point,
+                                         geometry, rc.joint.name))
             if rc.guide is not None:
                 moments[rc.frm].append(AppliedMoment(f"M{_fname(scene, rc.frm, rc.on)[1:]}", rc.frm,
                                                      -rc.M, "reaction"))
-    crank = _crank(scene, kin, loads, forces, moments)
+    crank = _crank(scene, kin, loads, forces, moments, geometry)
     return ForceAnalysis(scene, kin, loads, applied, tuple(solved), crank)
 
 
@@ -107,9 +112,25 @@ def _fname(scene: Scene, on: int, frm: int) -> str:
     return f"F{on}{frm}" if scene.fij == "on_i_from_j" else f"F{frm}{on}"
 
 
-def _bound(kin: Kinematics, link: int, r: C, F: C, label: str, point: str) -> AppliedForce:
+def _bound(kin: Kinematics, link: int, r: C, F: C, label: str, point: str, geo: dict | None = None,
+           joint: str = "") -> AppliedForce:
+    return AppliedForce(label, link, point, r, _kept(geo, ("local", link, joint), lambda: _local(kin, link, r)), F,
+                        "reaction")
+
+
+def _local(kin: Kinematics, link: int, r: C) -> C:
     m = kin.motion[link]
-    return AppliedForce(label, link, point, r, (r - m.r0) * np.conj(m.rot), F, "reaction")
+    return (r - m.r0) * np.conj(m.rot)
+
+
+def _kept(geo: dict | None, key: Any, make: Callable[[], Any]) -> Any:
+    """``make()``, or what an earlier solve of the same positions kept under ``key``."""
+    if geo is None:
+        return make()
+    got = geo.get(key)
+    if got is None:
+        got = geo[key] = make()
+    return got
 
 
 def _sum(fs: list[AppliedForce] | tuple[AppliedForce, ...], n: int) -> C:
@@ -182,25 +203,30 @@ def _solve2(c1: C, c2: C, rhs: C, det: R | None = None) -> tuple[R, R]:
     return cross(rhs, c2) / det, cross(c1, rhs) / det
 
 
-def _rrr(kin: Kinematics, g: Group, forces, moments) -> GroupForces:
+def _rrr_geometry(kin: Kinematics, g: Group) -> tuple:
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    A = kin.point(j1.point, i)[0]
+    B = kin.point(j2.point, i)[0]
+    Cc = kin.point(j3.point, j)[0]
+    BA, BC = B - A, B - Cc
+    ui, uj = unit_vector(BA), unit_vector(BC)
+    det = cross(ui, uj)
+    _check(kin, g, det, 1.0, j2.point)
+    return A, B, Cc, ui, uj, np.abs(BA), np.abs(BC), 1j * ui, 1j * uj, det
+
+
+def _rrr(kin: Kinematics, g: Group, forces, moments, geo: dict | None = None) -> GroupForces:
     i, j = g.links
     j1, j2, j3 = g.joints
     p, q = g.known
     n = kin.n
-    A = kin.point(j1.point, i)[0]
-    B = kin.point(j2.point, i)[0]
-    Cc = kin.point(j3.point, j)[0]
+    A, B, Cc, ui, uj, li, lj, ei, ej, det = _kept(geo, g.name, lambda: _rrr_geometry(kin, g))
     fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
-    BA, BC = B - A, B - Cc
-    ui, uj = unit_vector(BA), unit_vector(BC)
-    li, lj = np.abs(BA), np.abs(BC)
-    ei, ej = 1j * ui, 1j * uj
     t_i = _moment(fi, mi, B, n) / li  # ΣM_B(i): −l·F^τ + M_i(B) = 0
     t_j = _moment(fj, mj, B, n) / lj
     sum_i = _sum(fi, n)
     rest = sum_i + _sum(fj, n) + t_i * ei + t_j * ej
-    det = cross(ui, uj)
-    _check(kin, g, det, 1.0, j2.point)
     n_i, n_j = _solve2(ui, uj, -rest, det)
     F_ip = t_i * ei + n_i * ui
     F_jq = t_j * ej + n_j * uj
@@ -215,24 +241,30 @@ def _rrr(kin: Kinematics, g: Group, forces, moments) -> GroupForces:
     ), arms)
 
 
-def _rrp(kin: Kinematics, g: Group, forces, moments) -> GroupForces:
+def _rrp_geometry(kin: Kinematics, g: Group) -> tuple:
+    i, _ = g.links
+    j1, j2, j3 = g.joints
+    A = kin.point(j1.point, i)[0]
+    B = kin.point(j2.point, i)[0]
+    BA = B - A
+    ui = unit_vector(BA)
+    u3 = _guide(kin, j3)
+    n3 = 1j * u3
+    det = cross(ui, n3)
+    _check(kin, g, det, 1.0, j2.point)
+    return A, B, ui, np.abs(BA), 1j * ui, u3, n3, det
+
+
+def _rrp(kin: Kinematics, g: Group, forces, moments, geo: dict | None = None) -> GroupForces:
     i, j = g.links
     j1, j2, j3 = g.joints
     p, q = g.known
     n = kin.n
-    A = kin.point(j1.point, i)[0]
-    B = kin.point(j2.point, i)[0]
+    A, B, ui, li, ei, u3, n3, det = _kept(geo, g.name, lambda: _rrp_geometry(kin, g))
     fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
-    BA = B - A
-    ui, li = unit_vector(BA), np.abs(BA)
-    ei = 1j * ui
-    u3 = _guide(kin, j3)
-    n3 = 1j * u3
     t_i = _moment(fi, mi, B, n) / li
     sum_i = _sum(fi, n)
     rest = sum_i + _sum(fj, n) + t_i * ei
-    det = cross(ui, n3)
-    _check(kin, g, det, 1.0, j2.point)
     n_i, N = _solve2(ui, n3, -rest, det)
     F_ip = t_i * ei + n_i * ui
     F_ij = -sum_i - F_ip
@@ -247,19 +279,26 @@ def _rrp(kin: Kinematics, g: Group, forces, moments) -> GroupForces:
     ), arms)
 
 
-def _rpr(kin: Kinematics, g: Group, forces, moments) -> GroupForces:
+def _rpr_geometry(kin: Kinematics, g: Group) -> tuple:
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    A = kin.point(j1.point, i)[0]
+    Cc = kin.point(j3.point, j)[0]
+    us = _guide(kin, j2)
+    ns = 1j * us
+    arm = cross(A - Cc, ns)  # ΣM_C(j): M_j(C) − N·arm − M_ij = 0 (F_ji = −N n_s at A)
+    _check(kin, g, arm, np.abs(A - Cc), j2.point)
+    return A, Cc, us, ns, arm
+
+
+def _rpr(kin: Kinematics, g: Group, forces, moments, geo: dict | None = None) -> GroupForces:
     i, j = g.links
     j1, j2, j3 = g.joints
     p, q = g.known
     n = kin.n
-    A = kin.point(j1.point, i)[0]
-    Cc = kin.point(j3.point, j)[0]
+    A, Cc, us, ns, arm = _kept(geo, g.name, lambda: _rpr_geometry(kin, g))
     fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
-    us = _guide(kin, j2)
-    ns = 1j * us
     M_ij = -_moment(fi, mi, A, n)  # ΣM_A(block): the slot's couple on the block
-    arm = cross(A - Cc, ns)  # ΣM_C(j): M_j(C) − N·arm − M_ij = 0 (F_ji = −N n_s at A)
-    _check(kin, g, arm, np.abs(A - Cc), j2.point)
     N = (_moment(fj, mj, Cc, n) - M_ij) / arm
     F_ij = N * ns
     F_jq = -_sum(fj, n) + F_ij
@@ -274,17 +313,25 @@ def _rpr(kin: Kinematics, g: Group, forces, moments) -> GroupForces:
     ), arms)
 
 
-def _prp(kin: Kinematics, g: Group, forces, moments) -> GroupForces:
+def _prp_geometry(kin: Kinematics, g: Group) -> tuple:
+    i, _ = g.links
+    j1, j2, j3 = g.joints
+    B = kin.point(j2.point, i)[0]
+    u1, u3 = _guide(kin, j1), _guide(kin, j3)
+    n1, n3 = 1j * u1, 1j * u3
+    det = cross(n1, n3)
+    _check(kin, g, det, 1.0, j2.point)
+    return B, u1, u3, n1, n3, det
+
+
+def _prp(kin: Kinematics, g: Group, forces, moments, geo: dict | None = None) -> GroupForces:
     i, j = g.links
     j1, j2, j3 = g.joints
     p, q = g.known
     n = kin.n
-    B = kin.point(j2.point, i)[0]
+    B, u1, u3, n1, n3, det = _kept(geo, g.name, lambda: _prp_geometry(kin, g))
     fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
-    u1, u3 = _guide(kin, j1), _guide(kin, j3)
-    n1, n3 = 1j * u1, 1j * u3
-    _check(kin, g, cross(n1, n3), 1.0, j2.point)
-    N1, N3 = _solve2(n1, n3, -(_sum(fi, n) + _sum(fj, n)))
+    N1, N3 = _solve2(n1, n3, -(_sum(fi, n) + _sum(fj, n)), det)
     F_ij = -_sum(fi, n) - N1 * n1
     M1 = -_moment(fi, mi, B, n)
     M3 = -_moment(fj, mj, B, n)
@@ -296,20 +343,27 @@ def _prp(kin: Kinematics, g: Group, forces, moments) -> GroupForces:
     ), {})
 
 
-def _rpp(kin: Kinematics, g: Group, forces, moments) -> GroupForces:
+def _rpp_geometry(kin: Kinematics, g: Group) -> tuple:
+    i, j = g.links
+    j1, j2, j3 = g.joints
+    A = kin.point(j1.point, i)[0]
+    K = kin.point(j3.point, j)[0]
+    u2, u3 = _guide(kin, j2), _guide(kin, j3)
+    n2, n3 = 1j * u2, 1j * u3
+    _check(kin, g, cross(n2, n3), 1.0, j2.point)
+    return A, K, u2, u3, n2, n3, cross(-n2, n3)
+
+
+def _rpp(kin: Kinematics, g: Group, forces, moments, geo: dict | None = None) -> GroupForces:
     i, j = g.links
     j1, j2, j3 = g.joints
     p, q = g.known
     n = kin.n
-    A = kin.point(j1.point, i)[0]
-    K = kin.point(j3.point, j)[0]
+    A, K, u2, u3, n2, n3, det = _kept(geo, g.name, lambda: _rpp_geometry(kin, g))
     fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
-    u2, u3 = _guide(kin, j2), _guide(kin, j3)
-    n2, n3 = 1j * u2, 1j * u3
     M_ij = -_moment(fi, mi, A, n)  # ΣM_A(block)
     # j's polygon: F_j − N2 n2 + N3 n3 = 0 (the slot's reaction on j is −F_ij)
-    _check(kin, g, cross(n2, n3), 1.0, j2.point)
-    N2m, N3 = _solve2(-n2, n3, -_sum(fj, n))
+    N2m, N3 = _solve2(-n2, n3, -_sum(fj, n), det)
     F_ij = N2m * n2
     # ΣM_K(j): M_j(K) + cross(A − K, −F_ij) − M_ij + M_jq = 0
     M_jq = -(_moment(fj, mj, K, n) + cross(A - K, -F_ij) - M_ij)
@@ -325,15 +379,19 @@ def _rpp(kin: Kinematics, g: Group, forces, moments) -> GroupForces:
 _SOLVERS = {"RRR": _rrr, "RRP": _rrp, "RPR": _rpr, "PRP": _prp, "RPP": _rpp}
 
 
-def _crank(scene: Scene, kin: Kinematics, loads: Loads, forces, moments) -> CrankForces:
+def _crank_geometry(scene: Scene, kin: Kinematics, loads: Loads) -> tuple:
     d = scene.driver
-    link = d.link
+    O = kin.point(d.pivot, d.link)[0]
+    P = kin.point(loads.balancing.point, d.link)[0]
+    joint = next(jt for jt in scene.joints if set(jt.links) == {d.link, scene.frame})
+    return O, P, np.abs(P - O), 1j * unit_vector(P - O), joint
+
+
+def _crank(scene: Scene, kin: Kinematics, loads: Loads, forces, moments, geo: dict | None = None) -> CrankForces:
+    link = scene.driver.link
     n = kin.n
-    O = kin.point(d.pivot, link)[0]
-    P = kin.point(loads.balancing.point, link)[0]
+    O, P, l, e, joint = _kept(geo, ("crank", loads.balancing.point), lambda: _crank_geometry(scene, kin, loads))
     f1, m1 = forces[link], moments[link]
-    l = np.abs(P - O)
-    e = 1j * unit_vector(P - O)
     M_O = _moment(f1, m1, O, n)
     if loads.balancing.kind == "force":
         F_bal = -M_O / l  # ΣM_O: F_bal·l + M_1(O) = 0
@@ -343,7 +401,6 @@ def _crank(scene: Scene, kin: Kinematics, loads: Loads, forces, moments) -> Cran
         F_bal = np.zeros(n)
         M_bal = -M_O
         F_frame = -_sum(f1, n)
-    joint = next(jt for jt in scene.joints if set(jt.links) == {link, scene.frame})
     frame = Reaction(joint, link, scene.frame, O, F_frame, np.zeros(n))
     t1 = tuple(f1)
 
