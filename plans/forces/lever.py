@@ -102,8 +102,9 @@ def zhukovsky_lever(fa: ForceAnalysis, scale: float | None = None) -> LeverAnaly
         local = scene.links[f.link].points.get(f.point, f.local)
         v = add(f.label, f.link, _image_name(f.point), local, f.F)
         power += (f.F.conjugate() * v).real  # F·v
+    arms: dict[int, tuple] = {}  # a link's two joints and its length, once for all its couples
     for m in _on_the_lever(fa.applied.moments, kin):
-        for label, link, pt, local, F in _couple(fa, m):
+        for label, link, pt, local, F in _couple(fa, m, arms):
             add(label, link, pt, local, F)
         power += m.M * kin.omega(m.link)  # M·ω, not through the couple's forces
 
@@ -157,12 +158,16 @@ def _on_the_lever(moments: tuple[AppliedMoment, ...], kin: Any) -> list[AppliedM
     link that only translates (ω = 0: no lever moment, no power)."""
     out: list[AppliedMoment] = []
     friction: dict[int, AppliedMoment] = {}
+    turns: dict[int, bool] = {}
     for m in moments:
         if m.kind != "friction":
             out.append(m)
-        elif not np.any(kin.omega(m.link)):
             continue
-        elif m.link in friction:
+        if m.link not in turns:
+            turns[m.link] = bool(np.any(kin.omega(m.link)))
+        if not turns[m.link]:
+            continue
+        if m.link in friction:
             was = friction[m.link]
             friction[m.link] = AppliedMoment(was.label, m.link, was.M + m.M, "friction")
         else:
@@ -170,23 +175,34 @@ def _on_the_lever(moments: tuple[AppliedMoment, ...], kin: Any) -> list[AppliedM
     return out + list(friction.values())
 
 
-def _couple(fa: ForceAnalysis, m: AppliedMoment):
-    """M on a link as two forces ±M/l ⟂ the link at its two joints (textbook form)."""
+def _couple(fa: ForceAnalysis, m: AppliedMoment, arms: dict[int, tuple] | None = None):
+    """M on a link as two forces ±M/l ⟂ the link at its two joints (textbook form).  ``arms``:
+    each link's joints, images and length kept for its next couple (the same numbers)."""
+    got = None if arms is None else arms.get(m.link)
+    if got is None:
+        got = _arm(fa, m.link)
+        if arms is not None:
+            arms[m.link] = got
+    zX, zY, iX, iY, l, u = got
+    f = m.M / l * 1j * u  # cross(Y − X, f) = M
+    return ((f"{m.label}'", m.link, iY, zY, f),
+            (f"{m.label}''", m.link, iX, zX, -f))
+
+
+def _arm(fa: ForceAnalysis, lid: int) -> tuple:
+    """A link's two joints (local coordinates and images), their distance and direction."""
     scene, kin = fa.scene, fa.kin
-    link = scene.links[m.link]
+    link = scene.links[lid]
     if len(link.axis) == 2:
         zX, zY = link.points[link.axis[0]], link.points[link.axis[1]]
         nX, nY = link.axis
     else:  # a slider: a unit arm along its local x axis, from its pin
         zX, zY = link.points[link.axis[0]], link.points[link.axis[0]] + 1.0
         nX, nY = link.axis[0], link.axis[0] + "'"
-    X = kin.point_on(m.link, zX)[0]
-    Y = kin.point_on(m.link, zY)[0]
+    X = kin.point_on(lid, zX)[0]
+    Y = kin.point_on(lid, zY)[0]
     XY = Y - X
-    l = np.abs(XY)
-    f = m.M / l * 1j * unit_vector(XY)  # cross(Y − X, f) = M
-    return ((f"{m.label}'", m.link, _image_name(nY), zY, f),
-            (f"{m.label}''", m.link, _image_name(nX), zX, -f))
+    return zX, zY, _image_name(nX), _image_name(nY), np.abs(XY), unit_vector(XY)
 
 
 # --------------------------------------------------------------------------- drawing
