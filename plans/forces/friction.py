@@ -89,41 +89,46 @@ class FrictionResult:
 def friction_analysis(scene: Scene, kin: Kinematics, loads: Loads, spec: FrictionSpec) -> ForceAnalysis:
     """The reactions and the balancing load with friction in every pair (``fa.friction``)."""
     applied = apply_loads(scene, loads, kin)
-    fa0 = solve_applied(scene, kin, loads, applied)
+    geometry: dict = {}  # the groups' geometry, worked out by the first solve, read by the next two
+    fa0 = solve_applied(scene, kin, loads, applied, geometry)
     n = kin.n
     reactions = fa0.reactions()
     rows = {rc.joint.name: q for q, rc in enumerate(reactions)}
     pairs = [p for p in spec.pairs if p.coefficient > 0 and p.joint.name in rows]
+    idx = [rows[p.joint.name] for p in pairs]
     omega1 = np.abs(kin.omega(scene.driver.link))
     reach = kin.reach() if hasattr(kin, "reach") else 1.0
-    senses, relatives, labels = [], [], []
-    for p in pairs:
-        rc = reactions[rows[p.joint.name]]
+    senses, relatives, labels, places = [], [], [], []
+    for q in idx:
+        rc = reactions[q]
         rel, still = _relative(kin, rc, omega1, reach)
         senses.append(np.where(still, 0.0, np.sign(rel)))
         relatives.append(rel)
         labels.append(_label(scene, rc))
+        places.append(_places(scene, kin, rc, labels[-1]))
     P = len(pairs)
     sense = np.array(senses).reshape(P, n)
-    idx = [rows[p.joint.name] for p in pairs]
     coef = np.array([p.coefficient for p in pairs]).reshape(P, 1)
     R0 = np.array([rc.F for rc in reactions])  # (Q, n)
     scale = np.max(np.abs(R0), axis=0)
     scale = np.where(scale > 0, scale, max(float(np.max(scale)) if n else 0.0, 1e-300))
-    # each pair's unit friction load solved once, all pairs along a leading axis
-    gain = np.zeros(n)
-    Gf = np.zeros((n, 0, 0), complex)
+    # each pair's unit friction load solved once, all pairs along a leading axis: (Q, P, n),
+    # every reaction (rows) under each pair's unit load (columns), per position
     if P:
-        unit = solve_applied(scene, kin, loads, _friction_loads(fa0, pairs, labels, np.eye(P)[:, :, None] * sense))
-        own = {q: j for j, q in enumerate(idx)}
-        cols: list[Any] = [None] * P
-        for q, rc in enumerate(unit.reactions()):
-            g = np.broadcast_to(rc.F, (P, n))
-            gain = np.maximum(gain, np.sum(np.abs(g), axis=0))
-            if q in own:
-                cols[own[q]] = g
-        # (n, P, P): the pairs' reactions (rows) under each pair's unit load (columns), per position
-        Gf = np.ascontiguousarray(np.array(cols).transpose(2, 0, 1))
+        unit = solve_applied(scene, kin, loads, _friction_loads(places, np.eye(P)[:, :, None] * sense), geometry)
+        rs = unit.reactions()
+        U = np.empty((len(rs), P, n), complex)
+        for q, rc in enumerate(rs):
+            U[q] = rc.F
+        gain = np.maximum.reduce(np.add.reduce(np.abs(U), axis=1), axis=0)
+        G = U[idx]  # the pairs' own reactions
+    else:
+        gain, G = np.zeros(n), np.zeros((0, 0, n), complex)
+    # the superposition Σ_p G_qp·m_p in real numbers, position by position: G's x and y
+    # apart, (P, P, 2, n), summed over p straight into the x and y of a complex array
+    Gxy = np.stack((G.real, G.imag), axis=2)
+    S = np.empty((P, n), complex)
+    Sxy = S.view(np.float64).reshape(P, n, 2).transpose(0, 2, 1)
     # every reaction's change is at most Σ_p |G_qp|·|Δm_p| ≤ gain·max|Δm| (the stop is never early)
     Rf0 = R0[idx]
     live = coef * (sense != 0)  # (P, n): what multiplies |R| (0 where the sense is undetermined)
@@ -135,18 +140,19 @@ def friction_analysis(scene: Scene, kin: Kinematics, loads: Loads, spec: Frictio
     growth = np.zeros((P, n))
     grew = np.zeros(n, np.int64)  # the pair whose friction grew most where it grows without end
     limit = spec.tolerance * scale
+    largest = np.maximum.reduce
     for it in range(1, spec.max_iterations + 1):
         m_new = live * np.abs(Rf)
         growth = np.abs(m_new - m)
         m = m_new
-        fresh = ~done & (gain * np.max(growth, axis=0, initial=0.0) <= limit)
+        fresh = (gain * largest(growth, axis=0, initial=0.0) <= limit) > done  # settled now, not before
         if fresh.any():
             iters[fresh] = it
             done |= fresh
             if done.all():
                 break
         if it % 8 == 0:  # growing without end: those positions stop here
-            grown = ~done & (np.max(m, axis=0, initial=0.0) > DIVERGED * scale)
+            grown = ~done & (largest(m, axis=0, initial=0.0) > DIVERGED * scale)
             if grown.any():
                 bad |= grown
                 grew[grown] = np.argmax(growth[:, grown], axis=0)
@@ -155,18 +161,18 @@ def friction_analysis(scene: Scene, kin: Kinematics, loads: Loads, spec: Frictio
                 live = np.where(grown, 0.0, live)
                 if done.all():
                     break
-        Rf = Rf0 + np.matmul(Gf, m.T[:, :, None])[:, :, 0].T  # superposition
+        np.einsum("qpcn,pn->qcn", Gxy, m, out=Sxy)
+        Rf = Rf0 + S  # superposition
     iters = np.where(done, iters, spec.max_iterations)
     if P:
         grew = np.where(done, grew, np.argmax(growth, axis=0))
     bad |= ~done
     m = np.where(bad, 0.0, m)
-    fa = solve_applied(scene, kin, loads, _merge(applied, _friction_loads(fa0, pairs, labels, m * sense)))
-    final = {rc.joint.name: rc for rc in fa.reactions()}
+    fa = solve_applied(scene, kin, loads, _merge(applied, _friction_loads(places, m * sense)), geometry)
+    final = fa.reactions()  # the same joints in the same order as the frictionless ones
     out = []
     for p, s, rel, lab, mp, q in zip(pairs, sense, relatives, labels, m, idx, strict=True):
-        rc = final[p.joint.name]
-        out.append(PairLoss(p, reactions[q], lab, s, rel, mp, p.coefficient * np.abs(rc.F), mp * np.abs(rel)))
+        out.append(PairLoss(p, reactions[q], lab, s, rel, mp, p.coefficient * np.abs(final[q].F), mp * np.abs(rel)))
     losses = np.sum([pl.loss for pl in out], axis=0) if out else np.zeros(n)
     power = _balancing_power(fa)
     eta = _efficiency(fa0.balancing, fa.balancing, bad)
@@ -204,26 +210,38 @@ def _label(scene: Scene, rc: Reaction, back: bool = False) -> str:
     return ("Mf" if rc.guide is None else "Ff") + ij
 
 
-def _friction_loads(fa0: ForceAnalysis, pairs: list[PairFriction], labels: list[str], value: Any) -> AppliedLoads:
-    """Each pair's friction on both its links (none on the frame): the couple −value on
-    ``on`` (+value on ``frm``) of a turning pair, the force −value·u along the guide at the
-    pin of a slide; ``value`` carries the sense (its last axis the positions)."""
-    scene, kin = fa0.scene, fa0.kin
-    rows = {rc.joint.name: rc for rc in fa0.reactions()}
+def _places(scene: Scene, kin: Kinematics, rc: Reaction, label: str) -> list[tuple]:
+    """Where a pair's friction acts on each of its links (none on the frame), worked out once:
+    (link, sign, label) of a turning pair's couple, −on ``on``, + on ``frm``; a slide's force
+    adds its point, the pin on the guide, the pin in the link's own coordinates and the
+    guide's direction."""
+    out: list[tuple] = []
+    for link, sign, name in ((rc.on, -1.0, label), (rc.frm, 1.0, _label(scene, rc, back=True))):
+        if link == scene.frame:
+            continue
+        if rc.guide is None:
+            out.append((link, sign, name))
+        else:
+            mo = kin.motion[link]
+            at = contact(kin, rc)
+            out.append((link, sign, name, rc.point, at, (at - mo.r0) * np.conj(mo.rot), rc.guide))
+    return out
+
+
+def _friction_loads(places: list[list[tuple]], value: Any) -> AppliedLoads:
+    """Each pair's friction on both its links (:func:`_places`): the couple −value on ``on``
+    (+value on ``frm``) of a turning pair, the force −value·u along the guide at the pin of
+    a slide; ``value`` carries the sense (its last axis the positions)."""
     forces: list[AppliedForce] = []
     moments: list[AppliedMoment] = []
-    for p, lab, val in zip(pairs, labels, value, strict=True):
-        rc = rows[p.joint.name]
-        for link, sign, name in ((rc.on, -1.0, lab), (rc.frm, 1.0, _label(scene, rc, back=True))):
-            if link == scene.frame:
-                continue
-            if rc.guide is None:
+    for place, val in zip(places, value, strict=True):
+        for at in place:
+            if len(at) == 3:
+                link, sign, name = at
                 moments.append(AppliedMoment(name, link, sign * val, "friction"))
             else:
-                mo = kin.motion[link]
-                at = contact(kin, rc)
-                forces.append(AppliedForce(name, link, rc.point, at, (at - mo.r0) * np.conj(mo.rot),
-                                           sign * val * rc.guide, "friction"))
+                link, sign, name, point, r, local, guide = at
+                forces.append(AppliedForce(name, link, point, r, local, sign * val * guide, "friction"))
     return AppliedLoads(tuple(forces), tuple(moments))
 
 
