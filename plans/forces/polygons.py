@@ -100,7 +100,7 @@ def solve_applied(scene: Scene, kin: Kinematics, loads: Loads, applied: AppliedL
             if rc.frm == scene.frame or rc.frm in g.links:
                 continue
             forces[rc.frm].append(_bound(kin, rc.frm, rc.r, -rc.F, _fname(scene, rc.frm, rc.on), rc.point,
-                                         geometry, rc.joint.name))
+                                         geometry, rc.joint))
             if rc.guide is not None:
                 moments[rc.frm].append(AppliedMoment(f"M{_fname(scene, rc.frm, rc.on)[1:]}", rc.frm,
                                                      -rc.M, "reaction"))
@@ -113,9 +113,10 @@ def _fname(scene: Scene, on: int, frm: int) -> str:
 
 
 def _bound(kin: Kinematics, link: int, r: C, F: C, label: str, point: str, geo: dict | None = None,
-           joint: str = "") -> AppliedForce:
-    return AppliedForce(label, link, point, r, _kept(geo, ("local", link, joint), lambda: _local(kin, link, r)), F,
-                        "reaction")
+           joint: Joint | None = None) -> AppliedForce:
+    local = _local(kin, link, r) if geo is None or joint is None else \
+        _kept(geo, ("local", link, joint.name), _local, kin, link, r)
+    return AppliedForce(label, link, point, r, local, F, "reaction")
 
 
 def _local(kin: Kinematics, link: int, r: C) -> C:
@@ -123,13 +124,13 @@ def _local(kin: Kinematics, link: int, r: C) -> C:
     return (r - m.r0) * np.conj(m.rot)
 
 
-def _kept(geo: dict | None, key: Any, make: Callable[[], Any]) -> Any:
-    """``make()``, or what an earlier solve of the same positions kept under ``key``."""
+def _kept(geo: dict | None, key: Any, make: Callable[..., Any], *args: Any) -> Any:
+    """``make(*args)``, or what an earlier solve of the same positions kept under ``key``."""
     if geo is None:
-        return make()
+        return make(*args)
     got = geo.get(key)
     if got is None:
-        got = geo[key] = make()
+        got = geo[key] = make(*args)
     return got
 
 
@@ -221,7 +222,7 @@ def _rrr(kin: Kinematics, g: Group, forces, moments, geo: dict | None = None) ->
     j1, j2, j3 = g.joints
     p, q = g.known
     n = kin.n
-    A, B, Cc, ui, uj, li, lj, ei, ej, det = _kept(geo, g.name, lambda: _rrr_geometry(kin, g))
+    A, B, Cc, ui, uj, li, lj, ei, ej, det = _kept(geo, g.name, _rrr_geometry, kin, g)
     fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
     t_i = _moment(fi, mi, B, n) / li  # ΣM_B(i): −l·F^τ + M_i(B) = 0
     t_j = _moment(fj, mj, B, n) / lj
@@ -260,7 +261,7 @@ def _rrp(kin: Kinematics, g: Group, forces, moments, geo: dict | None = None) ->
     j1, j2, j3 = g.joints
     p, q = g.known
     n = kin.n
-    A, B, ui, li, ei, u3, n3, det = _kept(geo, g.name, lambda: _rrp_geometry(kin, g))
+    A, B, ui, li, ei, u3, n3, det = _kept(geo, g.name, _rrp_geometry, kin, g)
     fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
     t_i = _moment(fi, mi, B, n) / li
     sum_i = _sum(fi, n)
@@ -296,7 +297,7 @@ def _rpr(kin: Kinematics, g: Group, forces, moments, geo: dict | None = None) ->
     j1, j2, j3 = g.joints
     p, q = g.known
     n = kin.n
-    A, Cc, us, ns, arm = _kept(geo, g.name, lambda: _rpr_geometry(kin, g))
+    A, Cc, us, ns, arm = _kept(geo, g.name, _rpr_geometry, kin, g)
     fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
     M_ij = -_moment(fi, mi, A, n)  # ΣM_A(block): the slot's couple on the block
     N = (_moment(fj, mj, Cc, n) - M_ij) / arm
@@ -329,7 +330,7 @@ def _prp(kin: Kinematics, g: Group, forces, moments, geo: dict | None = None) ->
     j1, j2, j3 = g.joints
     p, q = g.known
     n = kin.n
-    B, u1, u3, n1, n3, det = _kept(geo, g.name, lambda: _prp_geometry(kin, g))
+    B, u1, u3, n1, n3, det = _kept(geo, g.name, _prp_geometry, kin, g)
     fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
     N1, N3 = _solve2(n1, n3, -(_sum(fi, n) + _sum(fj, n)), det)
     F_ij = -_sum(fi, n) - N1 * n1
@@ -359,7 +360,7 @@ def _rpp(kin: Kinematics, g: Group, forces, moments, geo: dict | None = None) ->
     j1, j2, j3 = g.joints
     p, q = g.known
     n = kin.n
-    A, K, u2, u3, n2, n3, det = _kept(geo, g.name, lambda: _rpp_geometry(kin, g))
+    A, K, u2, u3, n2, n3, det = _kept(geo, g.name, _rpp_geometry, kin, g)
     fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
     M_ij = -_moment(fi, mi, A, n)  # ΣM_A(block)
     # j's polygon: F_j − N2 n2 + N3 n3 = 0 (the slot's reaction on j is −F_ij)
@@ -390,7 +391,7 @@ def _crank_geometry(scene: Scene, kin: Kinematics, loads: Loads) -> tuple:
 def _crank(scene: Scene, kin: Kinematics, loads: Loads, forces, moments, geo: dict | None = None) -> CrankForces:
     link = scene.driver.link
     n = kin.n
-    O, P, l, e, joint = _kept(geo, ("crank", loads.balancing.point), lambda: _crank_geometry(scene, kin, loads))
+    O, P, l, e, joint = _kept(geo, ("crank", loads.balancing.point), _crank_geometry, scene, kin, loads)
     f1, m1 = forces[link], moments[link]
     M_O = _moment(f1, m1, O, n)
     if loads.balancing.kind == "force":
