@@ -30,13 +30,15 @@ def frozen(cls: T, /) -> T: ...
 
 
 @overload
-def frozen(*, slots: bool = True) -> Callable[[T], T]: ...
+def frozen(*, slots: bool = True, weakref: bool = False) -> Callable[[T], T]: ...
 
 
 @dataclass_transform(frozen_default=True, field_specifiers=(field, Field))
-def frozen(cls: T | None = None, /, *, slots: bool = True) -> Any:
+def frozen(cls: T | None = None, /, *, slots: bool = True, weakref: bool = False) -> Any:
     """``@frozen`` as ``@dataclass(frozen=True, slots=True)``; ``@frozen(slots=False)`` as
-    ``@dataclass(frozen=True)``.  A method the class writes itself is kept."""
+    ``@dataclass(frozen=True)``; ``weakref=True`` as ``weakref_slot=True`` (what is derived
+    from the record is kept beside it, :mod:`plans.derived`).  A method the class writes
+    itself is kept."""
 
     def wrap(cls: T) -> T:
         own = dict(cls.__dict__)
@@ -45,7 +47,8 @@ def frozen(cls: T | None = None, /, *, slots: bool = True) -> Any:
         documented = bool(cls.__doc__)
         if not documented:
             cls.__doc__ = "-"  # written below, once __init__ exists (as dataclass writes it)
-        out: Any = dataclass(cls, init=False, repr=False, eq=False, frozen=False, slots=slots)
+        out: Any = dataclass(cls, init=False, repr=False, eq=False, frozen=False, slots=slots,
+                             weakref_slot=weakref and slots)
         fs = fields(out)
         if any(f.kw_only for f in fs):
             raise TypeError(f"{out.__name__}: keyword-only fields need dataclass itself")

@@ -12,6 +12,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from plans.derived import derived
 from plans.forces.loads import (
     AppliedForce,
     AppliedLoads,
@@ -107,7 +108,7 @@ class CrankForces:
     arms: Mapping[str, R] = field(default_factory=dict)
 
 
-@frozen
+@frozen(weakref=True)
 class ForceAnalysis:
     """The kinetostatics of a scene: every group and the crank, over the positions."""
 
@@ -119,17 +120,18 @@ class ForceAnalysis:
     crank: CrankForces
     #: the successive approximation with friction (plans.forces.friction.FrictionResult), or None
     friction: Any = None
-    #: what every position's table and polygons read again, worked out once (read-only arrays)
-    memo: dict[str, Any] = field(default_factory=dict, init=False, repr=False, compare=False)
 
     @property
     def n(self) -> int:
         return self.kin.n
 
     def _once(self, key: str, make: Callable[[], Any]) -> Any:
-        got = self.memo.get(key)
+        """What every position's table and polygons read again, worked out once and kept
+        beside the record (:mod:`plans.derived`; arrays made read-only)."""
+        kept = derived(self)
+        got = kept.get(key)
         if got is None:
-            got = self.memo[key] = make()
+            got = kept[key] = make()
             if isinstance(got, np.ndarray):
                 got.flags.writeable = False
         return got

@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import field
 from typing import Any, cast
 
+from plans.derived import derived
 from plans.errors import InputError
 from plans.records import frozen
 from plans.scene.model import Joint, Scene
@@ -114,9 +115,10 @@ class Structure:
 
 def analyse(scene: Scene) -> Structure:
     """Mobility and Assur groups derived from links and joints alone (once per scene)."""
-    done = scene.memo.get("structure")
+    kept = derived(scene)
+    done = kept.get("structure")
     if done is None:
-        done = scene.memo["structure"] = _analyse(scene)
+        done = kept["structure"] = _analyse(scene)
     return done
 
 

@@ -18,6 +18,7 @@ from typing import Any
 
 import numpy as np
 
+from plans.derived import derived
 from plans.errors import Locked, NotAssemblable
 from plans.kinematics.context import Context, Motion, place_link, point_at
 from plans.kinematics.structure import Structure, TriadGroup, analyse
@@ -74,7 +75,8 @@ def _phase(phi: float) -> float:
 def _track(solve: Callable[..., Any], scene: Scene, st: Structure, g: TriadGroup, t: Triad, outer_of) -> tuple[np.ndarray, list]:
     """(step angles, (r_D, θ) at each) over one turn from φ = 0, computed once per scene."""
     key = ("triad", g.name)
-    done = scene.memo.get(key)
+    kept = derived(scene)
+    done = kept.get(key)
     if done is not None:
         return done
     before = replace(st, groups=st.groups[:st.groups.index(g)])
@@ -99,7 +101,7 @@ def _track(solve: Callable[..., Any], scene: Scene, st: Structure, g: TriadGroup
                                  group=t.name, point=g.point, phi_deg=phi)
         state, sense = new, d
         states.append(state)
-    done = scene.memo[key] = (grid, states)
+    done = kept[key] = (grid, states)
     return done
 
 

@@ -110,7 +110,7 @@ class Driver:
         return quarter * np.exp(1j * np.radians(r))
 
 
-@frozen
+@frozen(weakref=True)
 class Scene:
     """A linkage scene as read from its file, in SI: links, joints, driver, positions, outputs."""
 
@@ -142,9 +142,8 @@ class Scene:
     #: (None: the scene states none)
     friction_spec: Any = field(default=None, repr=False)
     tables: bool = field(default=False, repr=False)
-    #: what the exact analysis derives once per scene (its structure, the solver's constants);
-    #: not copied by dataclasses.replace, so a changed scene derives its own
-    memo: dict[Any, Any] = field(init=False, repr=False, compare=False, default_factory=dict)
+    # what the exact analysis derives once per scene (its structure, the solver's constants)
+    # is kept beside it (plans.derived), so a changed scene (dataclasses.replace) derives its own
 
     def title_in(self, lang: str) -> str:
         """The title in a sheet's language (the plain title where none is given for it)."""
