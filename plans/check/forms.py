@@ -34,6 +34,7 @@ from plans.check.checkfile import SCALE_KINDS, CheckFile, check_from_dict
 from plans.errors import InputError, OutputError, PlansError, one_line
 from plans.io import dumps, refuse_input, write_all
 from plans.scene.model import Scene
+from plans.tolerances import SAME_ANGLE_DEG
 
 _FIXED = ("quantity", "phi_deg", "figure")
 
@@ -226,7 +227,7 @@ def run_template(args: argparse.Namespace) -> int:
                                  field="--phi") from None
             known = scene.driver.phis_deg
             for p in phis:
-                if not any(abs(p - q) < 1e-9 for q in known):
+                if not any(abs(p - q) < SAME_ANGLE_DEG for q in known):
                     raise InputError(f"position {p:g}° is not in the scene (it has "
                                      f"{', '.join(f'{q:g}°' for q in known)})", file=str(scene_path), field="--phi")
         target = Path(args.output) if args.output else None

@@ -12,7 +12,6 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from plans.derived import derived
 from plans.forces.loads import (
     AppliedForce,
     AppliedLoads,
@@ -23,7 +22,7 @@ from plans.forces.shared import safe_div
 from plans.kinematics.exact import Kinematics
 from plans.kinematics.structure import Group
 from plans.lines import cross
-from plans.records import frozen
+from plans.records import derived, frozen
 from plans.scene.model import Joint, Scene
 
 C = NDArray[np.complex128]
@@ -108,7 +107,7 @@ class CrankForces:
     arms: Mapping[str, R] = field(default_factory=dict)
 
 
-@frozen(weakref=True)
+@frozen(weakref_slot=True)
 class ForceAnalysis:
     """The kinetostatics of a scene: every group and the crank, over the positions."""
 
@@ -127,7 +126,7 @@ class ForceAnalysis:
 
     def _once(self, key: str, make: Callable[[], Any]) -> Any:
         """What every position's table and polygons read again, worked out once and kept
-        beside the record (:mod:`plans.derived`; arrays made read-only)."""
+        beside the record (:func:`plans.records.derived`; arrays made read-only)."""
         kept = derived(self)
         got = kept.get(key)
         if got is None:

@@ -13,11 +13,11 @@ from typing import Any
 
 import numpy as np
 
-from plans.derived import derived
 from plans.errors import Indeterminate, Locked, NotAssemblable
 from plans.kinematics.context import Context, Motion, place_link, point_at
 from plans.kinematics.structure import Group, Structure, TriadGroup
 from plans.lines import cross
+from plans.records import derived
 from plans.scene.model import Joint, Scene
 from plans.tolerances import ASSEMBLY_REL, LOCK_SIN
 

@@ -27,9 +27,8 @@ from typing import Any
 
 import numpy as np
 
-from plans.derived import derived
 from plans.errors import ConstructionError, InputError
-from plans.records import frozen
+from plans.records import derived, frozen
 from plans.scene.model import Joint, Scene
 from plans.tolerances import COINCIDE_REL
 

@@ -22,8 +22,8 @@ from typing import Any
 
 import numpy as np
 
-from plans.derived import derived
 from plans.kinematics.structure import Structure
+from plans.records import derived
 from plans.scene.model import Scene
 from plans.tolerances import ASSEMBLY_REL, LOCK_SIN
 

@@ -11,9 +11,8 @@ from __future__ import annotations
 from dataclasses import field
 from typing import Any, cast
 
-from plans.derived import derived
 from plans.errors import InputError
-from plans.records import frozen
+from plans.records import derived, frozen
 from plans.scene.model import Joint, Scene
 
 KINDS = ("RRR", "RRP", "RPR", "PRP", "RPP")

@@ -18,11 +18,11 @@ from typing import Any
 
 import numpy as np
 
-from plans.derived import derived
 from plans.errors import Locked, NotAssemblable
 from plans.kinematics.context import Context, Motion, place_link, point_at
 from plans.kinematics.structure import Structure, TriadGroup, analyse
 from plans.kinematics.triad import SpecialPosition, Triad, determinant, place, rates, special_kind
+from plans.records import derived
 from plans.scene.model import Scene
 
 STEP_DEG = 1.0
