@@ -39,6 +39,8 @@ def add_draw(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--sheet", metavar="A1", help="sheet format A1..A4 (overrides [sheet] format)")
     p.add_argument("--orientation", choices=("landscape", "portrait"), help="overrides [sheet] orientation")
     p.add_argument("--language", choices=("ru", "en"), help="overrides [sheet] language")
+    p.add_argument("--font", choices=("dejavu", "gost"),
+                   help="overrides [sheet] font: gost is osifont, a GOST 2.304 type B font (apt-get install fonts-osifont)")
     p.add_argument("--dpi", type=float, default=150.0, help="PNG resolution (default 150)")
     p.add_argument("--quiet", action="store_true", help="no progress lines on a terminal")
     p.set_defaults(func=draw_command)
@@ -71,8 +73,9 @@ def draw_command(args: argparse.Namespace) -> int:
         raise InputError(f"drawing {kind!r} files is not available in this installation",
                          file=args.scene, field="kind") from None
     progress(f"drawing {args.scene} ...")
+    options = {"font": args.font} if getattr(args, "font", None) else {}
     drawing = module.draw(args.scene, format=args.sheet, orientation=args.orientation,
-                          language=args.language)
+                          language=args.language, **options)
     written = save(drawing.sheets, args.output, Path(args.scene).stem, args.format, args.dpi,
                    progress=progress, source=args.scene)
     for p in written:
