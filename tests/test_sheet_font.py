@@ -228,8 +228,9 @@ def _ink(png: bytes):
 @needs_osifont
 def test_the_rendered_sheet_characters_show_no_missing_glyph_box(gost_sheets):
     """Every (character, family) of the sheets' text drawn through cairosvg (the PNG export's
-    path, tspans with their own family as the sheets write them) in a cell of its own: none is
-    the family's .notdef glyph nor a filled box."""
+    path) in a cell of its own, written as the sheets write it (the family on the group, the
+    text and a fallback's tspan, inherited by the others): none is blank, its family's .notdef
+    glyph or a filled box, and each looks like its character in its family, not in the other."""
     import cairocffi as cairo
     import numpy as np
     from cairosvg.surface import PNGSurface
@@ -238,13 +239,15 @@ def test_the_rendered_sheet_characters_show_no_missing_glyph_box(gost_sheets):
 
     pairs = sorted({(c, f) for svg in gost_sheets[:-1] for t, f in _runs(svg) for c in t if not c.isspace()})
     size, cell = 40, 60
-    spans = "".join(f'<tspan font-family="{f}" x="{10 + cell * i}" y="{cell - 15}">{c}</tspan>'
-                    for i, (c, f) in enumerate(pairs))
-    svg = (f'<svg xmlns="http://www.w3.org/2000/svg" width="{cell * len(pairs) + 20}" height="{cell}">'
-           f'<rect width="100%" height="100%" fill="#fff"/><text font-size="{size}">{spans}</text></svg>')
+    spans = "".join(f'<tspan{"" if f == fonts.GOST_FAMILY else f" font-family={chr(34)}{f}{chr(34)}"} '
+                    f'x="{10 + cell * i}" y="{cell - 15}">{c}</tspan>' for i, (c, f) in enumerate(pairs))
+    svg = (f'<svg xmlns="http://www.w3.org/2000/svg" width="{cell * len(pairs)}" height="{cell}">'
+           f'<rect width="100%" height="100%" fill="#fff"/><g font-family="{fonts.FONT_FAMILY}">'
+           f'<text font-family="{fonts.GOST_FAMILY}" font-size="{size}">{spans}</text></g></svg>')
     ink = _ink(draw(PNGSurface, tree(svg.replace("&", "&amp;").encode())))
 
-    def notdef(family: str):
+    def alone(family: str, glyph: int | None = None, text: str = ""):
+        """A cell drawn by cairo itself: ``text`` in ``family``, or its glyph number ``glyph``."""
         surface = cairo.ImageSurface(cairo.FORMAT_RGB24, cell, cell)
         ctx = cairo.Context(surface)
         ctx.set_source_rgb(1, 1, 1)
@@ -252,12 +255,17 @@ def test_the_rendered_sheet_characters_show_no_missing_glyph_box(gost_sheets):
         ctx.set_source_rgb(0, 0, 0)
         ctx.select_font_face(family)
         ctx.set_font_size(size)
-        ctx.show_glyphs([(0, 10, cell - 15)])
+        if glyph is not None:
+            ctx.show_glyphs([(glyph, 10, cell - 15)])
+        else:
+            ctx.move_to(10, cell - 15)
+            ctx.show_text(text)
         buf = io.BytesIO()
         surface.write_to_png(buf)
-        return _ink(buf.getvalue())
+        return _ink(buf.getvalue()).astype(float)
 
-    boxes = {f: notdef(f) for f in {f for _, f in pairs}}
+    families = (fonts.GOST_FAMILY, fonts.FONT_FAMILY)
+    boxes = {f: alone(f, glyph=0) for f in families}
     bad = []
     for i, (c, f) in enumerate(pairs):
         got = ink[:, cell * i: cell * (i + 1)].astype(float)
@@ -270,6 +278,9 @@ def test_the_rendered_sheet_characters_show_no_missing_glyph_box(gost_sheets):
         h, w = (np.ptp(ys) + 1, np.ptp(xs) + 1) if ys.size else (0, 0)
         if h > 0.4 * size and w > 0.15 * size and (got[ys.min():ys.max() + 1, xs.min():xs.max() + 1] > 128).mean() > 0.9:
             bad.append((c, f, "filled box"))
+        own, other = (np.abs(got - alone(g, text=c)).mean() for g in (f, families[f == fonts.GOST_FAMILY]))
+        if not own < other:
+            bad.append((c, f, "drawn in the other family"))
     assert not bad, bad
     assert len(pairs) > 100
 
