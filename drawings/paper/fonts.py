@@ -28,7 +28,7 @@ from typing import Any, TypeVar
 from plans.errors import InputError, PlansError, Said
 
 FONT_FAMILY = "DejaVu Sans"
-#: The GOST 2.304 type B font (``[sheet] font = "gost"``) and where Debian installs it.
+#: The GOST 2.304 type B font (``[sheet] font = "gost"``) and its Debian/Ubuntu package.
 GOST_FAMILY = "osifont"
 GOST_PACKAGE = "fonts-osifont"
 FONT_FILE = "DejaVuSans.ttf"
@@ -211,15 +211,15 @@ def drawing(fn: F) -> F:
 def pieces(text: str, font: str) -> list[tuple[str, str]]:
     """``text`` cut into (piece, family) runs to be written in ``font``: one run in DejaVu
     Sans (family "", the sheet's default) for "dejavu"; for "gost", osifont runs and a
-    DejaVu Sans run for each stretch of characters osifont lacks.  A space goes with the
-    run before it, so no run but the first begins with one."""
+    DejaVu Sans run for each stretch of characters osifont lacks.  A space after such a
+    stretch stays in it (DejaVu has every space), so an osifont run begins with a letter."""
     if font == "dejavu" or not text:
         return [(text, "")]
     gost = metrics(GOST_FAMILY)
     out: list[list[str]] = []
     for ch in text:
         fam = GOST_FAMILY if gost.has(ch) else ""
-        if out and (out[-1][1] == fam or ch.isspace() and (out[-1][1] == "" or gost.has(ch))):
+        if out and (out[-1][1] == fam or ch.isspace() and out[-1][1] == ""):
             out[-1][0] += ch
         else:
             out.append([ch, fam])
