@@ -53,6 +53,16 @@ def test_a_wrong_font_is_one_error_naming_the_field(value):
     assert str(e.value).count("\n") == 0
 
 
+def test_every_command_refuses_a_wrong_font_in_the_file(tmp_path, capsys):
+    from plans.cli import main as plans_main
+
+    scene = tmp_path / "bad.toml"
+    scene.write_text(FOUR_BAR.read_text(encoding="utf-8") + '\n[sheet]\nfont = "gots"\n', encoding="utf-8")
+    rc = plans_main(["solve", str(scene), "--language", "en"])
+    err = capsys.readouterr().err
+    assert rc == 2 and err.count("\n") == 1 and "sheet.font" in err and "'gost'?" in err, err
+
+
 def test_the_cli_option_and_its_refusal(tmp_path, capsys):
     with pytest.raises(SystemExit) as e:
         main(["draw", str(FOUR_BAR), "-o", str(tmp_path), "--font", "times"])
