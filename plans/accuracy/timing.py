@@ -85,12 +85,13 @@ def interpreter_env() -> dict[str, str]:
 
 
 def commands_seconds(runs: dict[str, list[str]], root: Path, env: dict[str, str],
-                      reps: int) -> dict[str, tuple[float, float, int]]:
+                      reps: int, least: bool = False) -> dict[str, tuple[float, float, int]]:
     """Median wall time of each ``python args`` in a fresh interpreter, the median processor
     time it took (user and system; NaN where the platform does not tell) and its exit status,
-    after one run of each that compiles its bytecode.  The commands take turns, one run of
-    each per turn: on a shared machine the load drifts less within a turn, so the floor
-    and the commands measured beside it see the same machine."""
+    after one run of each that compiles its bytecode; with ``least``, the least of each
+    (what a start costs when nothing else is in its way: the load only ever adds to it).
+    The commands take turns, one run of each per turn: on a shared machine the load drifts
+    less within a turn, so the floor and the commands measured beside it see the same machine."""
     try:
         import resource
     except ImportError:  # pragma: no cover - not POSIX
@@ -113,7 +114,7 @@ def commands_seconds(runs: dict[str, list[str]], root: Path, env: dict[str, str]
             wall[name].append(time.perf_counter() - t0)
             cpu[name].append(processor() - c0)
             status[name] = status[name] or p.returncode
-    mid = reps // 2
+    mid = 0 if least else reps // 2
     return {name: (sorted(wall[name])[mid], sorted(cpu[name])[mid], status[name]) for name in runs}
 
 
