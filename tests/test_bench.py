@@ -267,3 +267,24 @@ def test_the_note_page_workbench_and_group_goals_time_the_renderers_public_funct
     monkeypatch.setattr(group_bench, "COMMAND", [])
     assert [g.met for g in speed.note_goals(samples) + speed.page_goals(samples)
             + workbench_bench.workbench_goals(samples) + group_bench.group_goals(samples)] == [None] * 4
+
+
+def test_least_paired_takes_turns_and_keeps_the_least_of_each():
+    """The noisy goals' timer: the two calls take turns, and each keeps its least batch
+    (a loaded machine only ever adds to a call's time); a fake clock makes it exact."""
+    from plans.accuracy.timing import least_paired
+
+    calls: list[str] = []
+    durations = iter([5.0, 3.0, 2.0, 1.0, 4.0, 6.0])  # a, b, a, b, a, b
+    now = [0.0]
+    started = [True]
+
+    def clock() -> float:
+        if not started[0]:
+            now[0] += next(durations)
+        started[0] = not started[0]
+        return now[0]
+
+    ta, tb = least_paired(lambda: calls.append("a"), lambda: calls.append("b"), reps=3, batch=0.0, clock=clock)
+    assert (ta, tb) == (2.0, 1.0)
+    assert calls == ["a", "a", "b", "b"] + ["a", "b"] * 3  # two calls each to size the batches, then turn about

@@ -30,6 +30,7 @@ from plans.accuracy.timing import (
     commands_seconds,
     interpreter_env,
     least_paired,
+    least_time,
     median_time,
     paired,
     us,
@@ -115,7 +116,7 @@ def kinematics_goals(cases: list[tuple[str, Scene]], peer_runs: list[peers.PeerR
         if step is not None and step.runner is not None:  # ours and pylinkage's step turn about
             step.time_per_position, t1 = least_paired(step.runner, one, ONE_POSITION_TURNS)
         else:
-            t1 = least_paired(one, one, ONE_POSITION_TURNS // 2)[0]
+            t1 = least_time(one, ONE_POSITION_TURNS)
         if step is not None and math.isfinite(step.time_per_position):
             extra = f"; pylinkage's step {us(step.time_per_position)} (positions only), least of " \
                     f"{ONE_POSITION_TURNS} turns each"

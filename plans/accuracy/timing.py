@@ -61,14 +61,16 @@ def paired(fa: Callable[[], Any], fb: Callable[[], Any], reps: int = 7) -> tuple
     return sorted(ta)[mid], sorted(tb)[mid], sorted(ratios)[mid]
 
 
-def least_paired(fa: Callable[[], Any], fb: Callable[[], Any], reps: int = 41,
-                 batch: float = 3e-4) -> tuple[float, float]:
+def least_paired(fa: Callable[[], Any], fb: Callable[[], Any], reps: int = 41, batch: float = 3e-4,
+                 clock: Callable[[], float] = time.perf_counter) -> tuple[float, float]:
     """The least time per call of ``fa`` and of ``fb``, measured turn about in short batches
     (about ``batch`` seconds each, one call at least), ``reps`` turns.  On a loaded machine
     the scheduler takes the processor away for longer than it gives it (tens of
     milliseconds out of every few): a batch that long is nearly always cut, one this short
     mostly is not, and the least of many is what the call itself costs (the load only ever
-    adds to it).  Taking turns, the two see the same machine."""
+    adds to it).  Taking turns, the two see the same machine.  A call longer than the
+    scheduler's share is timed by ``clock=time.process_time``: the processor time it took,
+    without the time it waited for the processor."""
     def inner(fn: Callable[[], Any]) -> int:
         fn()
         t0 = time.perf_counter()
@@ -78,15 +80,30 @@ def least_paired(fa: Callable[[], Any], fb: Callable[[], Any], reps: int = 41,
     na, nb = inner(fa), inner(fb)
     ta = tb = math.inf
     for _ in range(reps):
-        t0 = time.perf_counter()
+        t0 = clock()
         for _ in range(na):
             fa()
-        ta = min(ta, (time.perf_counter() - t0) / na)
-        t0 = time.perf_counter()
+        ta = min(ta, (clock() - t0) / na)
+        t0 = clock()
         for _ in range(nb):
             fb()
-        tb = min(tb, (time.perf_counter() - t0) / nb)
+        tb = min(tb, (clock() - t0) / nb)
     return ta, tb
+
+
+def least_time(fn: Callable[[], Any], reps: int = 41, batch: float = 3e-4) -> float:
+    """The least time per call of ``fn`` over ``reps`` short batches (see :func:`least_paired`)."""
+    fn()
+    t0 = time.perf_counter()
+    fn()
+    n = max(1, int(batch / max(time.perf_counter() - t0, 1e-9)))
+    best = math.inf
+    for _ in range(reps):
+        t0 = time.perf_counter()
+        for _ in range(n):
+            fn()
+        best = min(best, (time.perf_counter() - t0) / n)
+    return best
 
 
 def us(t: float) -> str:
