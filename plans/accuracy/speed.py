@@ -252,7 +252,9 @@ SHEET_FIGURES: list[Callable[[list[str], int], dict[str, Any]]] = []
 def sheet_goals(samples: Path, reps: int = 3) -> list[Goal]:
     """The V-engine's sheets written as SVG, PDF and PNG at 150 dpi, per sheet, and the
     cycle's diagrams sheet as SVG, timed by the renderer's public API in this process
-    (:data:`SHEET_FIGURES`); skipped where the renderer is not installed."""
+    (:data:`SHEET_FIGURES`); skipped where the renderer is not installed.  Each goal judges
+    the sheet's processor time where it is less than its wall time (one core draws a sheet:
+    on a loaded machine the wall time counts the others' work too); both are reported."""
     scenes = [str(samples / "v_engine.toml"), str(samples / "v_engine_cycle.toml")]
     scenes = [s for s in scenes if Path(s).is_file()]
     if not scenes or not scenes[0].endswith("v_engine.toml"):
@@ -265,32 +267,39 @@ def sheet_goals(samples: Path, reps: int = 3) -> list[Goal]:
     n = sh["sheets"]
     load = "/".join(f"{x:.1f}" for x in fig["load"])
     out = []
+    def judged(key: str) -> tuple[float, float, float]:
+        """Per sheet: the wall time, the processor time, and what the goal judges: one core
+        draws a sheet, so on an idle machine the two agree, and on a loaded one the wall
+        time is stretched by the others' work, the processor time hardly."""
+        wall = sum(sh[key]) / n
+        cpu = sum(sh.get(key.replace("_s", "_cpu_s"), [math.nan])) / n
+        return wall, cpu, min(wall, cpu) if math.isfinite(cpu) else wall
+
     for key, name, bound in (("svg_s", "SVG", SHEET_SVG), ("pdf_s", "PDF", SHEET_PDF),
                              ("png_s", "PNG at 150 dpi", SHEET_PNG)):
         ts = sh[key]
-        per = sum(ts) / n
-        cpu = sum(sh.get(key.replace("_s", "_cpu_s"), [math.nan])) / n
+        wall, cpu, per = judged(key)
         extra = f"; the sheets built (engine, panels, layout) in {sh['build_s'] / n:.3f} s per sheet" \
             if key == "svg_s" else ""
         out.append(Goal(f"V-engine, {n} {sh['format']} sheets: {name} ≤ {bound:g} s per sheet",
-                        f"{per:.3f} s per sheet (processor {cpu:.3f} s; slowest {max(ts):.3f} s), medians "
-                        f"of {reps}{extra}; "
-                        f"load {load}", per / bound, per <= bound))
+                        f"{wall:.3f} s per sheet (processor {cpu:.3f} s, the least; slowest {max(ts):.3f} s), "
+                        f"medians of {reps}{extra}; load {load}", per / bound, per <= bound))
     if sh.get("dxf_s"):  # the DXF of the same sheets: a bound of its own and the SVG's time × 5
-        per, svg_per = sum(sh["dxf_s"]) / n, sum(sh["svg_s"]) / n
-        cpu = sum(sh.get("dxf_cpu_s", [math.nan])) / n
+        wall, cpu, per = judged("dxf_s")
+        svg_per = judged("svg_s")[2]
         bound = min(SHEET_DXF, SHEET_DXF_PER_SVG * svg_per) if svg_per > 0 else SHEET_DXF
         out.append(Goal(f"V-engine, {n} {sh['format']} sheets: DXF ≤ {SHEET_DXF:g} s per sheet and ≤ SVG × "
                         f"{SHEET_DXF_PER_SVG:g}",
-                        f"{per:.3f} s per sheet (processor {cpu:.3f} s; slowest {max(sh['dxf_s']):.3f} s; "
+                        f"{wall:.3f} s per sheet (processor {cpu:.3f} s, the least; slowest {max(sh['dxf_s']):.3f} s; "
                         f"SVG × {per / svg_per if svg_per > 0 else math.nan:.2f}), medians of {reps}; load {load}",
                         per / bound, per <= bound))
     d = fig.get("diagrams")
     if d is not None:
-        t = d["svg_s"]
+        wall, cpu = d["svg_s"], d.get("svg_cpu_s", math.nan)
+        t = min(wall, cpu) if math.isfinite(cpu) else wall
         out.append(Goal(f"cycle diagrams sheet (V-engine): SVG ≤ {DIAGRAMS_SVG:g} s",
-                        f"{t:.3f} s, median of {reps} (engine, panels, layout and SVG); load {load}",
-                        t / DIAGRAMS_SVG, t <= DIAGRAMS_SVG))
+                        f"{wall:.3f} s (processor {cpu:.3f} s, the least), median of {reps} (engine, panels, "
+                        f"layout and SVG); load {load}", t / DIAGRAMS_SVG, t <= DIAGRAMS_SVG))
     return out
 
 
