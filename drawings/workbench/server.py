@@ -563,7 +563,10 @@ def serve(root: str | Path, *, host: str = "127.0.0.1", port: int = 8765, open_b
     app = make_app(root, hosts_for(host, port))
     shown = "127.0.0.1" if host in ("0.0.0.0", "::") else host
     url = f"http://{'[' + shown + ']' if ':' in shown else shown}:{port}/"
-    print(f"plans serve: {Path(root).resolve()} at {url} (Ctrl-C stops)", flush=True)
+    from plans.errors import run_language
+    from plans.phrases import say
+
+    print(say("sv_serving", run_language(), root=Path(root).resolve(), url=url), flush=True)
     if open_browser:
         import webbrowser
 
