@@ -560,3 +560,15 @@ def line(key: str, lang: str, **values: Any) -> str:
     from plans.phrases import say
 
     return say(key, lang, **values)
+
+
+def textbook_symbol(name: str, lang: str, pole: str) -> str:
+    """A quantity's or a plan point's key as a page writes it: ω1, ε2 in either language,
+    the textbook's Russian letters (p, F_ур, M_Φ2) in Russian, the acceleration pole
+    ``pole`` (π or p_a, :func:`plans.scene.notation.resolve`)."""
+    if name == "p_a":
+        return pole
+    if lang == "ru":
+        return quantity_name(name, "ru")
+    head, _, rest = name.partition("_")
+    return _GREEK[head] + rest.replace("_", "") if head in ("omega", "eps") and rest else name

@@ -30,6 +30,11 @@ TERMINAL: dict[str, tuple[str, str]] = {
     "gb_cam": ("cam", "кулачок"),
     "gb_cycle": ("cycle", "динамика"),
     "gb_at": ("{what} at {phis}°", "{what} при {phis}°"),
+    # ---- the workbench page: the balancing load's rows
+    "wb_bal_moment": ("{sym}, its moment about the pivot", "{sym}, её момент относительно опоры"),
+    "wb_bal_exact": ("{sym}: lever against the exact value, %", "{sym}: рычаг относительно точного значения, %"),
+    "wb_bal_drawn": ("{sym}: lever against kinetostatics on the drawing, %",
+                     "{sym}: рычаг относительно кинетостатики по чертежу, %"),
     # ---- plans bench (its lines on the terminal; the goals' names are the bench's own)
     "bn_goal": ("goal: {goal} {want}: {got}, {state}", "цель: {goal} {want}: {got}, {state}"),
     "bn_met": ("met", "достигнута"),

@@ -75,7 +75,8 @@ def _error(status: int, message: str, field: str | None = None, **extra: Any) ->
 
 
 def _engine_fields(exc: PlansError) -> dict[str, Any]:
-    out: dict[str, Any] = {"error": one_line(exc), "field": getattr(exc, "field", None)}
+    out: dict[str, Any] = {"error": one_line(exc), "field": getattr(exc, "field", None),
+                           "errors": {lang: one_line(exc, lang) for lang in ("ru", "en")}}  # the page's language
     if isinstance(exc, ConstructionError):
         out.update(group=exc.group, point=exc.point, phi_deg=exc.phi_deg)
     return out
