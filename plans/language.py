@@ -570,14 +570,6 @@ def argparse_text(message: str, lang: str) -> str:
     return message
 
 
-def line(key: str, lang: str, **values: Any) -> str:
-    """A terminal line of the catalogue in ``lang`` (:func:`plans.phrases.say`), for the
-    paper toolkit, which reads words from here alone."""
-    from plans.phrases import say
-
-    return say(key, lang, **values)
-
-
 def textbook_symbol(name: str, lang: str, pole: str) -> str:
     """A quantity's or a plan point's key as a page writes it: ω1, ε2 in either language,
     the textbook's Russian letters (p, F_ур, M_Φ2) in Russian, the acceleration pole
