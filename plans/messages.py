@@ -304,8 +304,10 @@ def complete() -> dict[str, tuple[str, str]]:
     if "x_at_group" not in ERRORS:
         from plans.messages_construction import CONSTRUCTION_ERRORS
         from plans.messages_files import FILE_ERRORS
+        from plans.messages_kinds import KIND_ERRORS
 
         ERRORS.update(FILE_ERRORS)
+        ERRORS.update(KIND_ERRORS)
         ERRORS.update(CONSTRUCTION_ERRORS)
     return ERRORS
 
