@@ -10,7 +10,7 @@ from typing import Any
 
 from plans.cli import command_of, only_command, register_commands
 from plans.cli import main as plans_main
-from plans.errors import InputError
+from plans.errors import InputError, Said
 
 #: Commands that need the renderer, listed without importing them (see plans.cli).
 _DRAWING_NAMES = {"drawings.demo": ("demo", "a step-by-step demonstration page of a scene's analysis"),
@@ -26,7 +26,9 @@ def _formats(text: str) -> list[str]:
     out = [f.strip().lower() for f in text.split(",") if f.strip()]
     bad = [f for f in out if f not in FORMATS]
     if bad or not out:
-        raise argparse.ArgumentTypeError(f"expected some of {','.join(FORMATS)}, got {text!r}")
+        from plans.errors import Said, run_language
+
+        raise argparse.ArgumentTypeError(Said("dc_formats", formats=",".join(FORMATS), got=repr(text)).text(run_language()))
     return out
 
 
@@ -39,6 +41,8 @@ def add_draw(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--sheet", metavar="A1", help="sheet format A1..A4 (overrides [sheet] format)")
     p.add_argument("--orientation", choices=("landscape", "portrait"), help="overrides [sheet] orientation")
     p.add_argument("--language", choices=("ru", "en"), help="overrides [sheet] language")
+    p.add_argument("--font", choices=("dejavu", "gost"),
+                   help="overrides [sheet] font: gost is osifont, a GOST 2.304 type B font (apt-get install fonts-osifont)")
     p.add_argument("--dpi", type=float, default=150.0, help="PNG resolution (default 150)")
     p.add_argument("--quiet", action="store_true", help="no progress lines on a terminal")
     p.set_defaults(func=draw_command)
@@ -58,9 +62,9 @@ def draw_command(args: argparse.Namespace) -> int:
     progress = Progress(getattr(args, "quiet", False))
 
     if not (0 < args.dpi <= 1200):
-        raise InputError(f"{args.dpi:g} is out of range; expected 1..1200", file=args.scene, field="--dpi")
+        raise InputError(Said("dc_dpi_out_range", dpi=args.dpi), file=args.scene, field="--dpi")
     if Path(args.output).exists() and not Path(args.output).is_dir():
-        raise InputError(f"{args.output} is a file; expected a folder for the sheets", file=args.scene,
+        raise InputError(Said("dc_output_file_folder", output=args.output), file=args.scene,
                          field="--output")
     kind, _ = read_kind(args.scene)
     try:
@@ -68,11 +72,15 @@ def draw_command(args: argparse.Namespace) -> int:
     except ModuleNotFoundError as exc:
         if exc.name is None or not KINDS[kind][1].startswith(exc.name):
             raise
-        raise InputError(f"drawing {kind!r} files is not available in this installation",
+        raise InputError(Said("dc_drawing_kind_files", kind=kind),
                          file=args.scene, field="kind") from None
-    progress(f"drawing {args.scene} ...")
+    from plans.errors import run_language
+    from plans.phrases import say
+
+    progress(say("dr_drawing", run_language(), scene=args.scene))
+    options = {"font": args.font} if getattr(args, "font", None) else {}
     drawing = module.draw(args.scene, format=args.sheet, orientation=args.orientation,
-                          language=args.language)
+                          language=args.language, **options)
     written = save(drawing.sheets, args.output, Path(args.scene).stem, args.format, args.dpi,
                    progress=progress, source=args.scene)
     for p in written:

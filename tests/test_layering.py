@@ -230,7 +230,7 @@ def test_plans_solve_whole_loads_no_temporary_files_module_nor_the_catalogues_it
 
 #: What the paper toolkit may read of the engine: errors, files, words and the sheet's own
 #: settings (format, language, the scales' notation), nothing of a mechanism.
-PAPER_MAY_IMPORT = {"plans.errors", "plans.io", "plans.language", "plans.scene.sheet", "plans.scene.notation",
+PAPER_MAY_IMPORT = {"plans.errors", "plans.io", "plans.language", "plans.phrases", "plans.scene.sheet", "plans.scene.notation",
                     "plans.scene.paper"}
 
 
