@@ -169,4 +169,17 @@ CONSTRUCTION_ERRORS: dict[str, tuple[str, str]] = {
     # ---- plans/kinematics/dyads.py
     "kd_lines_kind_plan": ("the lines {v} and {v2} of the {kind} plan are parallel and apart",
         "линии {v} и {v2} плана {kind} параллельны и не совпадают"),
+    # ---- the exact solvers: the class III group, the loop equations, a gear pair
+    "gv_impossible_centre_distance": ("impossible centre distance for gears {a} and {b}",
+        "невозможное межосевое расстояние для колёс {a} и {b}"),
+    "te_leashes_cannot_reach": ("the leashes cannot reach the base link's pairs",
+        "поводки не достают до пар базового звена"),
+    "te_group_leaves_its": ("the group leaves its branch here (the leashes' axes come near one point)",
+        "группа здесь сходит со своей ветви (оси поводков сходятся около одной точки)"),
+    "nw_loop_equations_have": ("the loop equations have no solution near the previous position (largest residual {v:.3g} at joint {jn})",
+        "уравнения замкнутости не имеют решения вблизи предыдущего положения (наибольшая невязка {v:.3g} в паре {jn})"),
+    "nw_jacobian_loop_equations": ("the Jacobian of the loop equations is singular (cond = {v:.3g}): the mechanism locks here",
+        "якобиан уравнений замкнутости вырожден (число обусловленности {v:.3g}): механизм здесь заклинивается"),
+    "nw_jacobian_loop_equations2": ("the Jacobian of the loop equations is singular: the mechanism locks here",
+        "якобиан уравнений замкнутости вырожден: механизм здесь заклинивается"),
 }

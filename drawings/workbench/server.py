@@ -35,7 +35,7 @@ from starlette.requests import Request
 from starlette.responses import JSONResponse, Response
 from starlette.routing import Route
 
-from plans.errors import ConstructionError, InputError, PlansError, one_line
+from plans.errors import ConstructionError, InputError, PlansError, Said, one_line
 
 from .outputs import demo_page, design_json, draw_file, jsonable, note_file
 
@@ -551,7 +551,7 @@ def bind(host: str, port: int) -> Any:
         sock.bind((host, port))
     except OSError as exc:
         sock.close()
-        raise InputError(f"cannot listen on {host}:{port}: {exc.strerror}", field="--port") from None
+        raise InputError(Said("ws_cannot_listen_host", host=host, port=port, strerror=exc.strerror), field="--port") from None
     sock.listen(128)  # a browser's first request waits in the queue while the server starts
     return sock
 
