@@ -13,11 +13,27 @@ locale's (``LC_ALL``/``LC_MESSAGES``/``LANG`` starting with ``ru``: Russian), el
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-# the checker's words and the errors' and warnings' lines, read from here as before
-from plans.check_terms import CAUSES, CHECK_SENTENCES, CHECK_TERMS, KINDS_RU, PLANS_RU  # noqa: E402, F401
-from plans.messages import ERRORS, WARNINGS  # noqa: E402, F401
+# the checker's words and the errors' and warnings' lines, read from here as before (loaded
+# when first asked for, :func:`__getattr__`: ``plans solve`` that succeeds reads neither)
+if TYPE_CHECKING:
+    from plans.check_terms import CAUSES, CHECK_SENTENCES, CHECK_TERMS, KINDS_RU, PLANS_RU  # noqa: F401
+    from plans.messages import ERRORS, WARNINGS  # noqa: F401
+
+_LATER = {"CAUSES": "plans.check_terms", "CHECK_SENTENCES": "plans.check_terms", "CHECK_TERMS": "plans.check_terms",
+          "KINDS_RU": "plans.check_terms", "PLANS_RU": "plans.check_terms",
+          "ERRORS": "plans.messages", "WARNINGS": "plans.messages"}
+
+
+def __getattr__(name: str) -> Any:
+    if name in _LATER:
+        import importlib
+
+        value = getattr(importlib.import_module(_LATER[name]), name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 SHEET_WORDS: dict[str, tuple[str, str]] = {
     "scheme": ("Кинематическая схема", "Kinematic scheme"),
@@ -552,14 +568,6 @@ def argparse_text(message: str, lang: str) -> str:
 
         return spec.sub(value, ru)
     return message
-
-
-def line(key: str, lang: str, **values: Any) -> str:
-    """A terminal line of the catalogue in ``lang`` (:func:`plans.phrases.say`), for the
-    paper toolkit, which reads words from here alone."""
-    from plans.phrases import say
-
-    return say(key, lang, **values)
 
 
 def textbook_symbol(name: str, lang: str, pole: str) -> str:

@@ -259,6 +259,11 @@ ERRORS: dict[str, tuple[str, str]] = {
     "e_latin": ("Latin", "латиницы"),
     "e_cyrillic_is": ("Cyrillic", "кириллические"),
     "e_latin_is": ("Latin", "латинские"),
+    # ---- the sheets' font (drawings/paper/fonts.py)
+    "e_font_missing": ("font {font!r} needs {family!r}, which is not installed; install it ({install}) "
+                       "or choose \"dejavu\"",
+                       "для шрифта {font!r} нужен {family!r}, а он не установлен; установите его ({install}) "
+                       "или выберите \"dejavu\""),
 }
 
 #: key -> (English, Russian): the warnings of an implausible scene, on stderr (the run goes on).

@@ -152,9 +152,9 @@ def render(sheets: Sequence[Sheet], outdir: str | Path, stem: str, formats: Sequ
             files[p] = pdf_bytes(doc) if f == "pdf" else png_bytes(doc, dpi)
         if progress is not None:
             from plans.errors import run_language
-            from plans.language import line
+            from plans.phrases import say
 
-            progress(line("dr_sheet", run_language(), n=sh.number, total=len(sheets), formats=", ".join(formats)))
+            progress(say("dr_sheet", run_language(), n=sh.number, total=len(sheets), formats=", ".join(formats)))
     return files
 
 

@@ -33,6 +33,10 @@ PANEL_CHOICE_AT = ("scheme", "velocity", "acceleration", "forces", "lever", "tab
 PANEL_CHOICE_WHOLE = ("positions", "legend")
 _KEYS |= {"acceleration_pole"}  # the notation, read with the scales (plans.scene.notation)
 _KEYS |= {"first_position"}  # the number of the first position on every panel (1 or 0)
+#: The sheets' fonts: "dejavu" (DejaVu Sans) or "gost" (osifont, a GOST 2.304 type B font, with
+#: DejaVu Sans for the characters it lacks); drawn by ``drawings.paper.fonts``.
+SHEET_FONTS = ("dejavu", "gost")
+_KEYS |= {"font"}
 
 
 def sheet_spec(raw: dict[str, Any], path: str, default_title: str = "", **override: Any) -> SheetSpec:
@@ -151,6 +155,15 @@ def read_sheet(raw: dict[str, Any], path: str, default_title: str = "", **overri
             raise InputError(Said("sh_positions_positions", v=v), file=path,
                              field="sheet.first_position")
         out["first_position"] = int(v)
+    if "font" in data or override.get("font"):
+        font = override.get("font") or data["font"]
+        if font not in SHEET_FONTS:
+            from plans.reader import did_you_mean, show
+
+            hint = did_you_mean(font, SHEET_FONTS) if isinstance(font, str) else ""
+            raise InputError(Said("e_choice", options=", ".join(repr(f) for f in SHEET_FONTS), got=show(font),
+                                  hint=hint), file=path, field="--font" if override.get("font") else "sheet.font")
+        out["font"] = font
     out.setdefault("title", default_title)
     return out
 
@@ -190,12 +203,12 @@ def sheet_of(raw: dict[str, Any], path: str, title: str, titles: dict[str, str])
 
 
 def sheet_for(scene: Any, *, format: str | None = None, orientation: str | None = None,
-              language: str | None = None, set: str | None = None) -> SheetSpec:
-    """A scene's ``[sheet]`` with what a command overrides (``--sheet A3``, ``--language en``),
-    the title in the sheet's language."""
+              language: str | None = None, set: str | None = None, font: str | None = None) -> SheetSpec:
+    """A scene's ``[sheet]`` with what a command overrides (``--sheet A3``, ``--language en``,
+    ``--font gost``), the title in the sheet's language."""
     lang = language or _language(scene.raw)
     return sheet_spec(scene.raw, scene.path, scene.title_in(lang), format=format, orientation=orientation,
-                      language=language, set=set)
+                      language=language, set=set, font=font)
 
 
 def check_sheet(raw: dict[str, Any], path: str) -> None:
