@@ -79,7 +79,7 @@ class Solution:
     def __init__(self, scene: Scene, fit: float = 1.0) -> None:
         """``scene`` with its ``[loads]``, ``[dynamics]`` and ``[diagrams]`` read and validated now
         (an InputError naming the field, before anything is solved), at the paper's ``fit``."""
-        from plans.scene.tables import with_tables
+        from plans.tables import with_tables
 
         if not (isinstance(fit, int | float) and not isinstance(fit, bool) and 0.0 < fit <= 1.0):
             raise ValueError(f"fit is the fraction of the A1 target lengths, 0 < fit <= 1; got {fit!r}")
@@ -180,6 +180,20 @@ class Solution:
             return None if got is None else Forces(*got)
 
         return self._part("forces", make)
+
+    @property
+    def efficiency(self) -> dict[str, Any] | None:
+        """η over the cycle and η(φ) with friction (the JSON's ``efficiency``): None without
+        friction, or where the positions are not a whole turn at equal steps."""
+        def make() -> dict[str, Any] | None:
+            f = self.forces
+            if f is None or f.analysis.friction is None:
+                return None
+            from plans.forces.friction import efficiency_json
+
+            return efficiency_json(f.analysis)
+
+        return self._part("efficiency", make)
 
     @property
     def lever(self) -> LeverAnalysis | None:
