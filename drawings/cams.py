@@ -24,6 +24,7 @@ from drawings.paper.backend import (
     Transform,
 )
 from drawings.paper.common import arrow, dot, fmt
+from drawings.paper.fonts import choose, drawing
 from drawings.paper.i18n import lookup
 from drawings.paper.sheet import GAP, TB_H, Sheet, SheetSpec, compose, sheet_spec, usable
 from drawings.paper.text import layout
@@ -483,13 +484,16 @@ def build_panels(cs: CamSolution, spec: SheetSpec) -> list[Panel]:
     return panels
 
 
+@drawing
 def draw(source: CamSolution | Cam | str | Path, *, format: str | None = None, orientation: str | None = None,
-         language: str | None = None) -> Drawing:
+         language: str | None = None, font: str | None = None) -> Drawing:
     """The cam's sheets: of a solved cam (``plans.solve``), or of a cam or the path of its
     file, solved here."""
     cs = source if isinstance(source, CamSolution) else solve_cam(source)
     cam = cs.cam
-    spec = sheet_spec(cam.raw, cam.path, cam.title, format=format, orientation=orientation, language=language)
+    spec = sheet_spec(cam.raw, cam.path, cam.title, format=format, orientation=orientation, language=language,
+                      font=font)
+    choose(spec.font, cam.path, font)
     panels = build_panels(cs, spec)
     sheets = compose(panels, spec, ratio_text(panels[0].scale or 1000.0), cam.path)
     return Drawing(cam, spec, tuple(panels), tuple(sheets))

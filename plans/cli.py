@@ -69,8 +69,39 @@ class Parser(argparse.ArgumentParser):
         super().__init__(*args, **kwargs)
 
     def error(self, message: str) -> NoReturn:
-        self.exit(2, f"plans: error: {self.prog.split(' ', 1)[-1] + ': ' if ' ' in self.prog else ''}"
-                     f"{' '.join(message.split())} (see plans -h)\n")
+        from plans.errors import Said, run_language
+        from plans.language import argparse_text
+
+        lang = run_language()
+        self.exit(2, f"{error_prefix(lang)}{self.prog.split(' ', 1)[-1] + ': ' if ' ' in self.prog else ''}"
+                     f"{argparse_text(' '.join(message.split()), lang)}{Said('a_see_help').text(lang)}\n")
+
+    def format_help(self) -> str:
+        """The help in the run's language: argparse's own words (usage, the headings, -h's
+        line) translated; the commands' and options' own help is English."""
+        from plans.errors import run_language
+
+        lang = run_language()
+        if lang != "ru":
+            return super().format_help()
+        from plans.language import argparse_text
+
+        saved = [(g, g.title) for g in self._action_groups] + [(a, a.help) for a in self._actions]
+        try:
+            for g in self._action_groups:
+                g.title = g.title and argparse_text(g.title, lang)
+            for a in self._actions:
+                a.help = a.help and argparse_text(a.help, lang)
+            return super().format_help().replace("usage: ", argparse_text("usage: ", lang), 1)
+        finally:
+            for obj, text in saved:
+                setattr(obj, "title" if isinstance(obj, argparse._ArgumentGroup) else "help", text)
+
+    def format_usage(self) -> str:
+        from plans.errors import run_language
+        from plans.language import argparse_text
+
+        return super().format_usage().replace("usage: ", argparse_text("usage: ", run_language()), 1)
 
 
 def only_command(argv: Sequence[str] | None) -> str | None:
@@ -202,6 +233,17 @@ def _input_of(args: argparse.Namespace) -> str | None:
     return None
 
 
+def _asked_language(argv: Sequence[str]) -> str | None:
+    """``--language`` as written on the command line (for argparse's own messages, before
+    the arguments are parsed)."""
+    for k, a in enumerate(argv):
+        if a == "--language" and k + 1 < len(argv):
+            return argv[k + 1]
+        if a.startswith("--language="):
+            return a.split("=", 1)[1]
+    return None
+
+
 def _closed_pipe() -> int:
     """The reader of our output has gone (``| head``): that is not an error.  Point stdout
     at /dev/null so the interpreter's final flush does not complain either."""
@@ -218,6 +260,7 @@ def main(argv: Sequence[str] | None = None,
     """Parse and run one command; ``parser`` builds the parser (the renderer's CLI passes its
     own, with ``draw`` added)."""
     argv = sys.argv[1:] if argv is None else list(argv)
+    set_run(_asked_language(argv), next((a for a in argv if a.endswith(".toml")), None))
     try:
         args = (parser or build_parser)(argv).parse_args(argv)
     except KeyboardInterrupt:

@@ -20,7 +20,7 @@ from drawings.linkage.panels import (
     strokes_over_cycle,
     table_panel,
 )
-from drawings.paper.fonts import metrics
+from drawings.paper.fonts import metrics, require, use
 from drawings.paper.sheet import Sheet, SheetSpec, compose
 from plans.scene.model import Scene, load_scene
 from plans.solution import Solution
@@ -162,22 +162,26 @@ def _force_panels(sol: Solution, spec: SheetSpec, ks: list[int], plans_at, mu_l:
 
 
 def draw(source: Solution | Scene | str | Path, *, format: str | None = None, orientation: str | None = None,
-         language: str | None = None, sheet_set: str | None = None) -> Drawing:
+         language: str | None = None, sheet_set: str | None = None, font: str | None = None) -> Drawing:
     """The sheets of a solved scene (a :class:`Solution`), or of a Scene or the path of its
     file, solved once here at the paper's fit.  A Solution is drawn at the scales it was
-    solved with (``plans.solve(scene, fit=...)``).  ``sheet_set`` overrides ``[sheet] set``."""
+    solved with (``plans.solve(scene, fit=...)``).  ``sheet_set`` overrides ``[sheet] set``,
+    ``font`` ``[sheet] font``."""
     if isinstance(source, Solution):
         sol = source
-        spec = sol.scene.sheet_for(format=format, orientation=orientation, language=language, set=sheet_set)
+        spec = sol.scene.sheet_for(format=format, orientation=orientation, language=language, set=sheet_set,
+                                   font=font)
     else:
         sc = source if isinstance(source, Scene) else load_scene(source)
-        spec = sc.sheet_for(format=format, orientation=orientation, language=language, set=sheet_set)
+        spec = sc.sheet_for(format=format, orientation=orientation, language=language, set=sheet_set, font=font)
+        require(spec.font, sc.path, "--font" if font else "sheet.font")  # before solving
         sol = solve_scene(sc, fit=fit_for(spec))
     from drawings.paper.sheet import TooBig
 
     while True:
         try:
-            return _draw(sol, spec)
+            with use(spec.font, sol.scene.path, "--font" if font else "sheet.font"):
+                return _draw(sol, spec)
         except TooBig as e:  # a plan, polygon or lever too big for the paper: smaller round scales
             fit = _smaller_fit(sol, e.panel, spec)
             if fit is None:

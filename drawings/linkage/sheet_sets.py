@@ -35,7 +35,7 @@ from drawings.paper.sheet import (
     compose,
     usable,
 )
-from plans.errors import InputError
+from plans.errors import InputError, Said
 from plans.solution import Solution
 
 #: A scene with at least this many positions is drawn as the course's sheet set by default.
@@ -56,7 +56,7 @@ def set_of(sol: Solution, spec: SheetSpec) -> str:
     when panels are pinned: pins place the panels of the block layout)."""
     if spec.set is not None:
         if spec.set == "course" and spec.pins:
-            raise InputError("pinned panels need set = \"positions\"", file=sol.scene.path, field="sheet.pins")
+            raise InputError(Said("ss_pinned_panels_need"), file=sol.scene.path, field="sheet.pins")
         return spec.set
     return "course" if sol.kinematics.n >= COURSE_FROM and not spec.pins else "positions"
 
@@ -70,8 +70,7 @@ def _studied(sol: Solution, spec: SheetSpec) -> list[int]:
     for phi in spec.positions:
         hits = [k for k in range(kin.n) if abs(float(kin.phi_deg[k]) - phi) < 1e-9]
         if not hits:
-            raise InputError(f"crank angle {phi:g}° is not among the scene's positions "
-                             f"{[float(x) for x in kin.phi_deg]}", file=sol.scene.path, field="sheet.positions")
+            raise InputError(Said("ss_crank_angle_phi", phi=phi, v=[float(x) for x in kin.phi_deg]), file=sol.scene.path, field="sheet.positions")
         out.append(hits[0])
     return out
 
@@ -114,7 +113,7 @@ def selection(sol: Solution, spec: SheetSpec, set_name: str) -> dict[str, Any]:
         else:
             bad = [x for x in val if x not in nums]
             if bad:
-                raise InputError(f"no position {bad[0]}; the positions are numbered {nums[0]} to {nums[-1]}",
+                raise InputError(Said("ss_position_positions_are", v=bad[0], v2=nums[0], v3=nums[-1]),
                                  file=scene.path, field=f"sheet.panels.{kind}")
             sel[kind] = sorted(nums.index(int(x)) for x in val)
     if set_name == "course":  # what follows the forces' positions unless chosen itself

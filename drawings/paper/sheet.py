@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 
 from drawings.paper.backend import Prim, Recording, Style, replay
 from drawings.paper.blocks import Frame, frame_of, spread
+from drawings.paper.fonts import use
 from drawings.paper.i18n import tr
 from drawings.paper.packing import blocks_of, free_spots, place_blocks, place_note
 from drawings.paper.panel_frame import Panel
@@ -60,9 +61,10 @@ class Sheet:
     def render(self) -> list[Prim]:
         """Frame, title block and placed panels as paper primitives."""
         rec = Recording()
-        _frame(rec, self)
-        _title_block(rec, self)
-        _frames(rec, self)
+        with use(getattr(self.spec, "font", "dejavu")):  # the title block in the sheet's font
+            _frame(rec, self)
+            _title_block(rec, self)
+            _frames(rec, self)
         prims = list(rec.prims)
         for panel, x, y in self.placed:
             prims.extend(panel.at(x, y))

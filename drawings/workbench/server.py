@@ -75,7 +75,8 @@ def _error(status: int, message: str, field: str | None = None, **extra: Any) ->
 
 
 def _engine_fields(exc: PlansError) -> dict[str, Any]:
-    out: dict[str, Any] = {"error": one_line(exc), "field": getattr(exc, "field", None)}
+    out: dict[str, Any] = {"error": one_line(exc), "field": getattr(exc, "field", None),
+                           "errors": {lang: one_line(exc, lang) for lang in ("ru", "en")}}  # the page's language
     if isinstance(exc, ConstructionError):
         out.update(group=exc.group, point=exc.point, phi_deg=exc.phi_deg)
     return out
@@ -563,7 +564,10 @@ def serve(root: str | Path, *, host: str = "127.0.0.1", port: int = 8765, open_b
     app = make_app(root, hosts_for(host, port))
     shown = "127.0.0.1" if host in ("0.0.0.0", "::") else host
     url = f"http://{'[' + shown + ']' if ':' in shown else shown}:{port}/"
-    print(f"plans serve: {Path(root).resolve()} at {url} (Ctrl-C stops)", flush=True)
+    from plans.errors import run_language
+    from plans.phrases import say
+
+    print(say("sv_serving", run_language(), root=Path(root).resolve(), url=url), flush=True)
     if open_browser:
         import webbrowser
 

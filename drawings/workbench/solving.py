@@ -104,6 +104,38 @@ def page_view(out: dict[str, Any]) -> dict[str, Any]:
     return {**out, "positions": positions}
 
 
+def page_symbols(out: dict[str, Any], scene: Any) -> dict[str, dict[str, str]]:
+    """What the page writes for each key it shows, per language: the readings' quantities,
+    the plans' points and segments in the textbook's symbols (ω1, π or p_a as the scene's
+    notation says), the balancing load's rows in words."""
+    from plans.language import textbook_symbol
+    from plans.phrases import say
+    from plans.scene.notation import resolve
+
+    names: set[str] = set()
+    bal: set[str] = set()
+    for pos in out["positions"]:
+        for r in pos.get("readings", []):
+            names.add(r["quantity"])
+            names.update(str(r.get("segment") or "").split())
+        for pl in (pos.get("plans") or {}).values():
+            names.update(pl["points"])
+        if isinstance(pos.get("balancing"), dict):
+            bal.update(k for k, v in pos["balancing"].items() if isinstance(v, int | float))
+            names.add("M_bal" if pos["balancing"].get("kind") == "moment" else "F_bal")
+    rows = {"moment": "wb_bal_moment", "by_kinetostatics": "r_kin", "by_lever": "r_lever", "by_power": "r_power",
+            "exact_difference_percent": "wb_bal_exact", "difference_percent": "wb_bal_drawn"}
+    got: dict[str, dict[str, str]] = {}
+    for lang in ("ru", "en"):
+        pole = resolve(getattr(scene, "scale_style", "") or "", lang)[2]
+        words = {nm: textbook_symbol(nm, lang, pole) for nm in sorted(names)}
+        sym = words.get("M_bal") or words.get("F_bal") or ""
+        for k in sorted(bal):
+            words["balancing." + k] = say(rows[k], lang, sym=sym) if k in rows else k
+        got[lang] = words
+    return got
+
+
 def solve_json(text: str, name: str, steps: bool = True, data: dict[str, Any] | None = None,
                view: str = "full", at: int | None = None) -> bytes:
     """The JSON of ``plans solve --json`` (``steps=False``: without the construction
@@ -126,6 +158,8 @@ def solve_json(text: str, name: str, steps: bool = True, data: dict[str, Any] | 
             else:
                 out = to_json(sol, steps)
                 out = page_view(out) if view == "page" else out
+            if view == "page":
+                out["symbols"] = page_symbols(out, sol.scene)
             got = json.dumps(out, ensure_ascii=False, allow_nan=False, separators=(",", ":")).encode("utf-8")
             if len(got) <= KEEP_BYTES:
                 _keep(_JSON, key, got)

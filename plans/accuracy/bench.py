@@ -60,6 +60,7 @@ from plans.accuracy.oracles import (
     total_error,
 )
 from plans.accuracy.stability import stability_records, stiff_load_records
+from plans.errors import Said, run_language
 from plans.io import write_all
 from plans.kinematics import construction
 from plans.kinematics import exact as kinematics
@@ -433,9 +434,9 @@ def _ints(text: str) -> tuple[int, ...]:
     try:
         out = tuple(int(x) for x in text.split(","))
     except ValueError:
-        raise argparse.ArgumentTypeError(f"expected whole numbers separated by commas, got {text!r}") from None
+        raise argparse.ArgumentTypeError(Said("bn_sizes", got=repr(text)).text(run_language())) from None
     if not out or min(out) < 1:
-        raise argparse.ArgumentTypeError(f"expected positive whole numbers, got {text!r}")
+        raise argparse.ArgumentTypeError(Said("bn_sizes_positive", got=repr(text)).text(run_language()))
     return out
 
 

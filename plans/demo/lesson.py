@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from plans.demo.mistakes import mistakes, page_mm, page_xy
-from plans.errors import InputError, PlansError
+from plans.errors import Figures, InputError, PlansError, Said
 from plans.kinematics.exact import Kinematics, solve
 from plans.kinematics.plan import Plan, Step
 from plans.phrases import LANGUAGES
@@ -246,8 +246,8 @@ def _position_index(sol: Solution, phi_deg: float | None) -> int:
     for k, p in enumerate(phis):
         if abs(p - phi_deg) < 1e-9:
             return k
-    shown = ", ".join(f"{p:g}" for p in phis[:8]) + (f", … ({len(phis)} positions)" if len(phis) > 8 else "")
-    raise InputError(f"crank angle {phi_deg:g}° is not among the scene's positions [{shown}]", file=sol.scene.path,
+    raise InputError(Said("dl_crank_angle_phi", phi_deg=phi_deg, shown=Said("dl_shown", phis=Figures(phis[:8]), n=len(phis))
+                          if len(phis) > 8 else Said("dl_shown_all", phis=Figures(phis))), file=sol.scene.path,
                      field="--phi")
 
 
@@ -256,10 +256,10 @@ def lesson(scene: Scene, *, phi_deg: float | None = None, frames: int = FRAMES,
     """The lesson of a scene (a JSON-able dict): steps at one position, the cycle, mistakes;
     every sentence in ``language`` ("en" or "ru")."""
     if not (isinstance(frames, int) and 2 <= frames <= MAX_FRAMES):
-        raise InputError(f"expected a whole number of frames from 2 to {MAX_FRAMES}, got {frames!r}",
+        raise InputError(Said("dl_whole_number_frames", MAX_FRAMES=MAX_FRAMES, frames=frames),
                          field="--frames")
     if language not in LANGUAGES:
-        raise InputError(f"expected one of {', '.join(LANGUAGES)}, got {language!r}", field="--language")
+        raise InputError(Said("dl_one_language", v=', '.join(LANGUAGES), language=language), field="--language")
     sol = solve_scene(scene)
     k = _position_index(sol, phi_deg)
     phis = np.arange(frames) * (360.0 / frames)

@@ -42,7 +42,7 @@ from statistics import median
 from typing import Any
 
 from plans.check import wording as wd
-from plans.errors import InputError
+from plans.errors import InputError, Said
 
 #: Angles of the cam at which the key gives the profile (degrees).
 CAM_ANGLES = tuple(float(a) for a in range(0, 360, 30))
@@ -315,7 +315,7 @@ def _number(v: Any, path: str, where: str) -> float | None:
     if v == "":
         return None
     if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
-        raise InputError(f"expected a number (or \"\" for not written), got {v!r}", file=path, field=where)
+        raise InputError(Said("gs_number_written", v=v), file=path, field=where)
     return float(v)
 
 
@@ -326,7 +326,7 @@ def check_sheet(data: dict[str, Any], path: str) -> SheetReport:
 
     kind = is_sheet_check(data)
     if kind is None:
-        raise InputError("expected a check file naming gears = FILE or cam = FILE", file=path)
+        raise InputError(Said("gs_check_file_naming"), file=path)
     check_keys(data, _TOP, file=path, where="")
     src = Path(path).parent / data[kind]
     part = read_toml(src)
@@ -378,8 +378,7 @@ def check_sheet(data: dict[str, Any], path: str) -> SheetReport:
     items = []
     for key, s in written.items():
         if key not in exact:
-            raise InputError(f"{key[0]} at {key[1]:g}° is not a figure of this {kind} sheet "
-                             f"(expected one of {', '.join(sorted({q for q, _ in exact}))})", file=path,
+            raise InputError(Said("gs_figure_this_kind", v=key[0], v2=key[1], kind=kind, v3=', '.join(sorted({q for q, _ in exact}))), file=path,
                              field="positions")
         if key[0].startswith("angle_"):  # a direction: 359.9° is 0.1° from 0°
             s = exact[key] + ((s - exact[key] + 180.0) % 360.0 - 180.0)

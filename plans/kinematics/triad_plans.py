@@ -15,7 +15,7 @@ from typing import Any, cast
 
 import numpy as np
 
-from plans.errors import Locked
+from plans.errors import Locked, Said
 from plans.kinematics.dyads import (
     Builder,
     Mixed,
@@ -72,7 +72,7 @@ def _geometry(b: Builder, g: TriadGroup) -> tuple[list, list, list, tuple[int, i
         raise Mixed("s")
     i, j = PAIRS[int(choice[0])]
     if np.any(sins[int(choice[0])] <= 1e-12):
-        raise Locked("the three leashes' axes are parallel (special position)", group=f"{g.kind} {g.name}",
+        raise Locked(Said("tp_three_leashes_axes"), group=f"{g.kind} {g.name}",
                      point=g.point, phi_deg=b.snap.phi_at(int(np.argmin(sins[int(choice[0])]))))
     s = cross(Q[j] - Q[i], axis[j]) / cross(axis[i], axis[j])
     S = Q[i] + s * axis[i]
