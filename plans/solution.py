@@ -9,7 +9,8 @@ read the Solution.
 
 ``fit`` is the drawing's paper: the target lengths of the plans, polygons and lever as a
 fraction of the A1 ones (``drawings`` passes √(sheet / A1) for a smaller sheet, the scales
-still round).  It changes only scales, never a value.
+still round, and up to ``MAX_FIT`` for longer plans on a sheet with room for them).  It changes
+only scales, never a value.
 
 Values by their textbook names (``F_12^τ``, ``v_B``, ``omega_3``...) are read with
 :meth:`Solution.value`, signed as :mod:`plans.quantities` documents (docs/quantities.md).
@@ -71,6 +72,10 @@ class Revolution(NamedTuple):
         return np.asarray(self.kinematics.point_on(link, z)[0])[::self.step]
 
 
+#: The longest plans a sheet with room asks for: this many times the A1 target lengths.
+MAX_FIT = 2.5
+
+
 class Solution:
     """Everything computed for a scene, each part once, when first read."""
 
@@ -81,8 +86,8 @@ class Solution:
         (an InputError naming the field, before anything is solved), at the paper's ``fit``."""
         from plans.tables import with_tables
 
-        if not (isinstance(fit, int | float) and not isinstance(fit, bool) and 0.0 < fit <= 1.0):
-            raise ValueError(f"fit is the fraction of the A1 target lengths, 0 < fit <= 1; got {fit!r}")
+        if not (isinstance(fit, int | float) and not isinstance(fit, bool) and 0.0 < fit <= MAX_FIT):
+            raise ValueError(f"fit is the fraction of the A1 target lengths, 0 < fit <= {MAX_FIT:g}; got {fit!r}")
         self.scene: Scene = with_tables(scene, **({} if fit == scene.fit else {"fit": float(fit)}))
         self.fit = float(fit)
         self._parts: dict[Any, Any] = {}

@@ -186,8 +186,7 @@ def check(cf: CheckFile) -> Report:
                 w0 = pos.written(q)[0]
                 known = ", ".join(known_quantities(ctx, k))
                 extra = f" ({ctx._forces_error})" if ctx._forces_error else ""
-                raise InputError(f"the scene has no quantity {q!r} at {pos.phi_deg:g}°{extra}; "
-                                 f"expected one of {known}", file=cf.path, field=w0.field)
+                raise InputError(Said("cr_scene_has_quantity", q=q, phi_deg=pos.phi_deg, extra=extra, known=known), file=cf.path, field=w0.field)
             items += _items(cf, pos, q, ex)
     findings: list[Finding] = []
     for pos in cf.positions:
@@ -212,7 +211,7 @@ def _items(cf: CheckFile, pos: StudentPosition, q: str, ex: Exact) -> list[Item]
     measured = pos.written(q, "measured")
     mu = ex.mm_per_unit
     if measured and not mu:
-        raise InputError(f"{q} is not read off a plan at a scale the check file gives: write it under values",
+        raise InputError(Said("cr_read_off_plan", q=q),
                          file=cf.path, field=measured[0].field)
     rel = cf.tolerance.arithmetic_pct / 100.0
     # a value derived from a measured segment is as good as the reading (±segment_mm),

@@ -25,7 +25,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from plans.errors import Locked
+from plans.errors import Locked, Said
 from plans.forces.loads import AppliedForce, AppliedMoment
 from plans.forces.shared import safe_div, unit_vector
 from plans.kinematics.exact import Kinematics
@@ -129,7 +129,7 @@ def solve_triad(kin: Kinematics, g: TriadGroup, forces: dict, moments: dict, Rea
     sin = cross(ui, uj)
     bad = np.abs(sin) <= LOCK_SIN
     if bad.any():
-        _locked(kin, g, bad, "the three leashes' axes are parallel (special position)")
+        _locked(kin, g, bad, Said("tp_three_leashes_axes"))
     S = Qi + cross(Qj - Qi, uj) / np.where(bad, 1.0, sin) * ui
     everything_f = [f for fs in fl for f in fs]
     everything_m = [m for ms in ml for m in ms]
@@ -140,8 +140,7 @@ def solve_triad(kin: Kinematics, g: TriadGroup, forces: dict, moments: dict, Rea
     size = max(float(np.max(np.abs(a))) for a in axis)
     bad = np.abs(arm_m) <= 1e-9 * size
     if bad.any():
-        _locked(kin, g, bad, "the three leashes' axes pass through one point (special position): "
-                             "the group's forces are not fixed")
+        _locked(kin, g, bad, Said("tr_forces_one_point"))
     nrm = np.zeros((3, n))
     nrm[mm, cols] = -known_S / np.where(bad, 1.0, arm_m)
     rest = _sum(everything_f, n) + sum(tau[k] * e[k] for k in range(3)) + nrm[mm, cols] * um
@@ -203,6 +202,6 @@ class _Arms(Mapping):
         return len(self._arms())
 
 
-def _locked(kin: Kinematics, g: TriadGroup, bad: NDArray[np.bool_], why: str) -> None:
+def _locked(kin: Kinematics, g: TriadGroup, bad: NDArray[np.bool_], why: Said) -> None:
     k = int(np.flatnonzero(bad)[0])
     raise Locked(why, group=f"class III {g.kind} {g.name}", point=g.point, phi_deg=float(kin.phi_deg[k]))

@@ -7,7 +7,7 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
-from plans.errors import InputError
+from plans.errors import InputError, Said
 
 from . import shifts
 from .geometry import Pair, pair
@@ -63,7 +63,7 @@ def choose_shifts(gf: GearFile) -> dict[str, float]:
 
         S = sum_for_centre(ga.z, gb.z, ga.module, gf.alpha, gb.internal, me.centre_distance)
         if not math.isfinite(S):
-            raise InputError(f"impossible centre distance for gears {a} and {b}", file=gf.path,
+            raise InputError(Said("gv_impossible_centre_distance", a=a, b=b), file=gf.path,
                              field=f"meshes[{i}].centre_distance")
         if b in auto:
             x[b] = S - x[a] if not gb.internal else S + x[a]
