@@ -21,7 +21,7 @@ from drawings.paper.i18n import lookup
 from drawings.paper.i18n import tr as words
 from drawings.paper.sheet import Sheet, SheetSpec, compose, sheet_spec
 from drawings.paper.text import layout
-from plans.errors import InputError
+from plans.errors import InputError, Said
 from plans.gears.meshing import Meshing
 from plans.gears.model import GearFile
 from plans.gears.solution import GearsSolution, solve_file
@@ -518,13 +518,13 @@ def draw(source: GearsSolution | GearFile | str | Path, *, format: str | None = 
     if train:
         groups.append((train, ratio_text(sol.plan.mu_l * magnification(sol, spec)) if sol.plan is not None else ""))
     if not groups:
-        raise InputError("nothing to draw: expected [[meshes]] or [[shafts]] with speeds",
+        raise InputError(Said("dg_nothing_draw_meshes"),
                          file=gf.path, field="meshes")
     sheets: list[Sheet] = []
     for panels, scale in groups:
         sheets.extend(compose(panels, spec, scale, gf.path))
-    for i, sh in enumerate(sheets):  # one numbering across the meshing and train sheets
-        sh.number, sh.count = i + 1, len(sheets)
-        sh.render()
+    from drawings.paper.merge import merged
+
+    sheets = merged(sheets)  # the train on the meshing sheet where it fits; one numbering
     panels_all = tuple(p for g, _ in groups for p in g)
     return GearDrawing(gf, sol, mg, spec, panels_all, tuple(sheets))

@@ -163,7 +163,9 @@ def run(args: argparse.Namespace) -> int:
         remove(old for old in (folder / "reference").glob("*.pdf") if old not in written)
         made[got.row.variant] = got
         if not args.quiet:
-            print(say("vr_made", run_language(), folder=folder, kind=got.kind,
+            from plans.group.gradebook import heading
+
+            print(say("vr_made", run_language(), folder=folder, kind=heading(got.kind, run_language()),
                       n=sum(len(v) for v in got.key["values"].values())))
     if roster:
         hand = out / "handouts"

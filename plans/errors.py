@@ -217,7 +217,8 @@ class ConstructionError(PlansError):
         """The error in ``lang``: the group, the point and the crank angle, then why."""
         parts = []
         if self.group:
-            parts.append(Said("x_at_group", group=self.group).text(lang))
+            group = self.group.replace("class III ", Said("x_class_iii").text(lang), 1)
+            parts.append(Said("x_at_group", group=group).text(lang))
         if self.point:
             parts.append(Said("x_at_point", point=self.point).text(lang))
         if self.phi_deg is not None:

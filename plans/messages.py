@@ -302,10 +302,14 @@ def sentence(key: str) -> tuple[str, str]:
 def complete() -> dict[str, tuple[str, str]]:
     """:data:`ERRORS` with every sentence of the catalogue in it."""
     if "x_at_group" not in ERRORS:
+        from plans.messages_commands import COMMAND_ERRORS
         from plans.messages_construction import CONSTRUCTION_ERRORS
         from plans.messages_files import FILE_ERRORS
+        from plans.messages_kinds import KIND_ERRORS
 
         ERRORS.update(FILE_ERRORS)
+        ERRORS.update(KIND_ERRORS)
+        ERRORS.update(COMMAND_ERRORS)
         ERRORS.update(CONSTRUCTION_ERRORS)
     return ERRORS
 

@@ -10,6 +10,7 @@ CONSTRUCTION_ERRORS: dict[str, tuple[str, str]] = {
     "x_at_group": ("group {group}", "группа {group}"),
     "x_at_point": ("point {point}", "точка {point}"),
     "x_at_phi": ("phi = {phi:g} deg", "φ = {phi:g}°"),
+    "x_class_iii": ("class III ", "III класса "),
     # ---- plans/cycle/dynamics.py
     "cd_driving_moment_driving": ("a driving moment of {driving:g} N·m does not balance the cycle's work: the steady cycle needs {need:.6g} N·m (or driving = \"constant\")",
         "движущий момент {driving:g} Н·м не уравновешивает работу за цикл: для установившегося движения нужно {need:.6g} Н·м (или driving = \"constant\")"),
@@ -169,4 +170,24 @@ CONSTRUCTION_ERRORS: dict[str, tuple[str, str]] = {
     # ---- plans/kinematics/dyads.py
     "kd_lines_kind_plan": ("the lines {v} and {v2} of the {kind} plan are parallel and apart",
         "линии {v} и {v2} плана {kind} параллельны и не совпадают"),
+    "tr_parallel": ("the three leashes' axes are parallel (special position of the group)",
+        "оси трёх поводков параллельны (особое положение группы)"),
+    "tr_one_point": ("the three leashes' axes pass through one point (special position of the group)",
+        "оси трёх поводков проходят через одну точку (особое положение группы)"),
+    "tr_forces_one_point": ("the three leashes' axes pass through one point (special position): the group's forces "
+                            "are not fixed",
+        "оси трёх поводков проходят через одну точку (особое положение): силы в группе не определены"),
+    # ---- the exact solvers: the class III group, the loop equations, a gear pair
+    "gv_impossible_centre_distance": ("impossible centre distance for gears {a} and {b}",
+        "невозможное межосевое расстояние для колёс {a} и {b}"),
+    "te_leashes_cannot_reach": ("the leashes cannot reach the base link's pairs",
+        "поводки не достают до пар базового звена"),
+    "te_group_leaves_its": ("the group leaves its branch here (the leashes' axes come near one point)",
+        "группа здесь сходит со своей ветви (оси поводков сходятся около одной точки)"),
+    "nw_loop_equations_have": ("the loop equations have no solution near the previous position (largest residual {v:.3g} at joint {jn})",
+        "уравнения замкнутости не имеют решения вблизи предыдущего положения (наибольшая невязка {v:.3g} в паре {jn})"),
+    "nw_jacobian_loop_equations": ("the Jacobian of the loop equations is singular (cond = {v:.3g}): the mechanism locks here",
+        "якобиан уравнений замкнутости вырожден (число обусловленности {v:.3g}): механизм здесь заклинивается"),
+    "nw_jacobian_loop_equations2": ("the Jacobian of the loop equations is singular: the mechanism locks here",
+        "якобиан уравнений замкнутости вырожден: механизм здесь заклинивается"),
 }

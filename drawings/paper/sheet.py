@@ -19,7 +19,7 @@ from drawings.paper.packing import blocks_of, free_spots, place_blocks, place_no
 from drawings.paper.panel_frame import Panel
 from drawings.paper.svg import SvgBackend, document
 from drawings.paper.text import layout, wrap
-from plans.errors import InputError
+from plans.errors import InputError, Said
 from plans.scene.sheet import FORMATS, PANEL_KINDS, SHEET_FORMATS, Pin, SheetSpec, sheet_spec  # noqa: F401  (read by the sheets)
 
 MARGIN_LEFT = 20.0
@@ -308,7 +308,7 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str | None = "
     by_id = {p.pid: p for p in panels}
     for pin in spec.pins:
         if pin.panel not in by_id:
-            raise InputError(f"no panel {pin.panel!r} on this drawing; panels are {', '.join(by_id)}",
+            raise InputError(Said("ps_panel_panel_this", panel=pin.panel, v=', '.join(by_id)),
                              file=path, field="sheet.pins")
     for p in panels:
         check_fits(p, spec, path)
@@ -327,11 +327,10 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str | None = "
             taken.append([tb])
         box = (pin.x, pin.y, pin.x + p.width, pin.y + p.height)
         if box[0] < area[0] - GAP or box[1] < area[1] - GAP or box[2] > area[2] + GAP or box[3] > area[3] + GAP:
-            raise InputError(f"panel {pin.panel} ({p.width:.0f}×{p.height:.0f} mm) at x = {pin.x:g}, "
-                             f"y = {pin.y:g} leaves the frame of the {spec.format} sheet", file=path,
+            raise InputError(Said("ps_panel_panel_width", panel=pin.panel, width=p.width, height=p.height, x=pin.x, y=pin.y, format=spec.format), file=path,
                              field="sheet.pins")
         if any(_overlaps(box, t) for t in taken[pin.sheet - 1]):
-            raise InputError(f"pinned panel {pin.panel} overlaps another pinned panel or the title block",
+            raise InputError(Said("ps_pinned_panel_panel", panel=pin.panel),
                              file=path, field="sheet.pins")
         put(pin.sheet - 1, p, pin.x, pin.y)
     queue = [p for p in panels if p.pid not in pinned]

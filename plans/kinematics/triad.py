@@ -23,6 +23,7 @@ from __future__ import annotations
 import cmath
 import math
 
+from plans.errors import Said
 from plans.records import frozen
 from plans.tolerances import LOCK_SIN
 
@@ -245,7 +246,7 @@ def special_point_velocities(t: Triad, outer: tuple[complex, complex, complex], 
 
 
 def special_kind(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta: float,
-                 tol: float = 1e-3) -> str | None:
+                 tol: float = 1e-3) -> Said | None:
     """What makes this position special, or None: the three leashes' axes parallel, or
     passing through one point (the leash equations' matrix singular to ``tol``)."""
     P = pair_points(t, outer, rD, theta)
@@ -254,14 +255,14 @@ def special_kind(t: Triad, outer: tuple[complex, complex, complex], rD: complex,
     on = [_on_axis(t, k, P[k], outer[k]) for k in range(3)]
     u = [a / abs(a) for a in axis]
     if max(abs(_cross(u[i], u[j])) for i, j in ((0, 1), (1, 2), (0, 2))) <= tol:
-        return "the three leashes' axes are parallel (special position of the group)"
+        return Said("tr_parallel")
     for i, j in ((0, 1), (1, 2), (0, 2)):
         S = _meet(on[i], axis[i], on[j], axis[j])
         if S is None:
             continue
         m = 3 - i - j
         if abs(_cross(u[m], S - on[m])) <= tol * max(t.size, abs(S - on[m])):
-            return "the three leashes' axes pass through one point (special position of the group)"
+            return Said("tr_one_point")
         return None
     return None
 
