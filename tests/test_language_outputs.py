@@ -169,3 +169,49 @@ def test_workbench_shows_the_textbooks_symbols_in_the_pages_language(browser, se
     assert "ω1" in en and "p_a a" in en and "p_v a" in en and "by kinetostatics" in en and "8.3383" in en
     assert any(lb.startswith("p_a") for lb in en_labels), en_labels
     assert not CYRILLIC.search(en)
+
+
+def _helps() -> list[str]:
+    """Every command's and option's help and every description of the command line."""
+    import argparse
+
+    from drawings.cli import build_parser
+
+    out: list[str] = []
+
+    def walk(parser: argparse.ArgumentParser) -> None:
+        out.append(parser.description or "")
+        for a in parser._actions:
+            out.append(a.help or "")
+            if isinstance(a, argparse._SubParsersAction):
+                out.extend(c.help or "" for c in a._choices_actions)
+                for sub in a.choices.values():
+                    walk(sub)
+
+    walk(build_parser(None))
+    return sorted({h for h in out if h and h != argparse.SUPPRESS and h != "show this help message and exit"})
+
+
+def test_every_help_of_the_command_line_has_its_russian():
+    """Each help in the catalogue; a Russian one holds no Latin word its English one lacks
+    (the options, keys, formats and programs both name)."""
+    from plans.messages_help import HELP_RU
+
+    helps = _helps()
+    assert len(helps) >= 80
+    missing = [h for h in helps if h not in HELP_RU]
+    assert not missing, missing
+    for en in helps:
+        ru = HELP_RU[en]
+        assert CYRILLIC.search(ru), ru
+        extra = {w for w in _latin_words(ru) if w not in set(re.findall(r"[A-Za-z]+", en))}
+        assert not extra, (ru, extra)
+
+
+def test_every_commands_help_in_russian(capsys):
+    for command in ("solve", "check", "bench", "balance", "gears", "cam", "design", "draw", "demo", "note",
+                    "variants", "serve"):
+        with pytest.raises(SystemExit):
+            main([command, "--help", "--language", "ru"])
+        text = capsys.readouterr().out
+        assert text.startswith(f"использование: plans {command}") and "показать эту справку и выйти" in text, text
