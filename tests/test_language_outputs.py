@@ -152,6 +152,9 @@ def _page_text(browser, url: str, lang: str) -> tuple[str, list[str]]:  # noqa: 
     pg.wait_for_function("() => document.querySelectorAll('#table tbody tr').length > 0")
     table = pg.inner_text("#table")
     labels = pg.eval_on_selector_all("#vel text, #acc text", "ts => ts.map(t => t.textContent)")
+    pg.click("#show-cycle")  # the tables over the cycle: their titles and rows
+    pg.wait_for_function("() => document.querySelectorAll('option').length > 0")
+    labels += pg.eval_on_selector_all("option", "os => os.map(o => o.textContent)")
     pg.close()
     return table, labels
 
@@ -165,9 +168,13 @@ def test_workbench_shows_the_textbooks_symbols_in_the_pages_language(browser, se
     assert "ω1" in ru and "ε1" in ru and "π a" in ru and "p a" in ru and "8,3383" in ru
     assert any(lb.startswith("π") for lb in ru_labels) and not any("p_a" in lb for lb in ru_labels), ru_labels
     assert "по кинетостатике" in ru and "по рычагу Жуковского" in ru
+    cycle = [lb for lb in ru_labels if " — " in lb]
+    assert cycle and all(lb.endswith("Планы за цикл") for lb in cycle), cycle
+    assert not _russian(" ".join(cycle)), sorted(_russian(" ".join(cycle)))
     assert not _russian(ru, "n_BA", "a_BA", "v_BA"), sorted(_russian(ru, "n_BA", "a_BA", "v_BA"))
     assert "ω1" in en and "p_a a" in en and "p_v a" in en and "by kinetostatics" in en and "8.3383" in en
     assert any(lb.startswith("p_a") for lb in en_labels), en_labels
+    assert any(lb == "p_v a, mm — Plans over the cycle" for lb in en_labels), en_labels
     assert not CYRILLIC.search(en)
 
 

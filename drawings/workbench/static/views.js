@@ -1,6 +1,6 @@
 // The right column's other views: the force polygons and the Zhukovsky lever of the position
 // (asked for when shown), and the tables over the cycle as diagrams against φ.
-import {$, S, api, clear, el, f3, h, num, where} from "./dom.js";
+import {$, S, api, clear, el, f3, h, num, said, where} from "./dom.js";
 import {KIND, defs, fit} from "./draw.js";
 import {panelName, t, un} from "./words.js";
 
@@ -57,7 +57,8 @@ function cycleRows() {
 export function drawCycle() {
   const rows = cycleRows(), sel = $("cycle-row"), keep = sel.value;
   clear(sel);
-  rows.forEach((x, i) => h(sel, "option", {value: String(i)}, x.row.label + (x.row.unit ? ", " + un(x.row.unit) : "") + " — " + x.table.title));
+  rows.forEach((x, i) => h(sel, "option", {value: String(i)}, said("cycle." + x.row.label, x.row.label) + (x.row.unit ? ", " + un(x.row.unit) : "")
+    + " — " + said("cycle." + x.table.title, x.table.title)));
   const svg = $("cycle-chart"); clear(svg);
   const tb = $("cycle-table").tBodies[0]; clear(tb);
   if (!rows.length) return;
