@@ -600,3 +600,17 @@ def again(text: str, keys: tuple[str, ...], lang: str) -> str:
             values = {k: v.replace(".", ",") if re.fullmatch(r"-?[\d.e+-]+", v) else v for k, v in m.groupdict().items()}
             return field.sub(lambda x, v=values: v[x.group(1)], ru)  # type: ignore[misc]
     return text
+
+
+def page_label(text: str, lang: str, pole: str) -> str:
+    """A label of a drawing (a force polygon's ``Phi2``, ``F_bal``, ``F21^τ``) as a page in
+    ``lang`` writes it: the Greek letters in either language, the textbook's Russian
+    symbols (F_ур, p) in Russian, the acceleration pole ``pole``."""
+    import re
+
+    text = re.sub(r"\bp_a(?![A-Z_])", pole, text)
+    if lang == "ru":
+        return symbols(text, lang)
+    for pattern, greek in ((r"(?<![A-Za-z])Phi(?=\w)", "Φ"), (r"\bomega_?(?=\d)", "ω"), (r"\beps_?(?=\d)", "ε")):
+        text = re.sub(pattern, greek, text)
+    return text

@@ -222,3 +222,20 @@ def test_every_commands_help_in_russian(capsys):
             main([command, "--help", "--language", "ru"])
         text = capsys.readouterr().out
         assert text.startswith(f"использование: plans {command}") and "показать эту справку и выйти" in text, text
+
+
+def test_workbench_force_polygons_in_the_pages_language(browser, server):  # noqa: F811
+    _, url = server
+    got = {}
+    for lang in ("ru", "en"):
+        pg = browser.new_page(viewport={"width": 1366, "height": 900})
+        pg.add_init_script(f"localStorage.setItem('plans-lang', '{lang}')")
+        pg.goto(url + "/#file=slider_crank.toml")
+        pg.wait_for_function("() => document.body.dataset.solved")
+        pg.click("#show-forces")
+        pg.wait_for_function("() => document.querySelectorAll('#force-panels figure').length > 0")
+        got[lang] = pg.inner_text("#force-panels")
+        pg.close()
+    assert "Φ2" in got["ru"] and "F_ур" in got["ru"] and "группа 2-3" in got["ru"] and "Phi" not in got["ru"]
+    assert not _russian(got["ru"]), sorted(_russian(got["ru"]))
+    assert "Φ2" in got["en"] and "F_bal" in got["en"] and "group 2-3" in got["en"] and not CYRILLIC.search(got["en"])

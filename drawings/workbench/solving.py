@@ -214,10 +214,16 @@ def _partial(sol: Any, at: int, steps: bool) -> dict[str, Any]:
 def forces_json(text: str, name: str) -> bytes:
     """The force polygons and the lever over the turn (``[]`` when the scene asks for none)."""
     from plans.demo.cycle_forces import cycle_forces
+    from plans.language import page_label
+    from plans.scene.notation import resolve
 
     sol = solved(text, name)
     with _lock_for((text, name)):
         panels = [] if sol.forces is None else cycle_forces(*sol.forces)
+    for pn in panels:  # each label as the page writes it in either language
+        labels = {*(pn.get("points") or {}), *(g["label"] for g in pn.get("segments", []) if g.get("label"))}
+        pn["said"] = {lang: {lb: page_label(lb, lang, resolve(sol.scene.scale_style or "", lang)[2]) for lb in sorted(labels)}
+                      for lang in ("ru", "en")}
     return json.dumps(panels, ensure_ascii=False, allow_nan=False, separators=(",", ":")).encode("utf-8")
 
 

@@ -2,7 +2,7 @@
 // (asked for when shown), and the tables over the cycle as diagrams against φ.
 import {$, S, api, clear, el, f3, h, num, said, where} from "./dom.js";
 import {KIND, defs, fit} from "./draw.js";
-import {panelName, t, un} from "./words.js";
+import {L, panelName, t, un} from "./words.js";
 
 export async function loadForces() {
   if (!S.showForces || S.kind === "check" || !S.sol) return;
@@ -17,6 +17,7 @@ export function drawForces() {
   const box = $("force-panels"); clear(box);
   if (!S.forces || !S.forces.length) { h(box, "p", {}, t("no_forces")); return; }
   for (const pn of S.forces) {
+    const lab = (lb) => ((pn.said || {})[L.lang] || {})[lb] || lb;  // the server's label in the page's language
     const fig = h(box, "figure", {"data-panel": pn.id});
     h(fig, "figcaption", {}, panelName(pn.name) + ", μ = " + num(pn.scale) + " " + un(pn.unit));
     const svg = el(fig, "svg", {id: "force-" + pn.id, role: "img", "data-scale": String(pn.scale)});
@@ -30,13 +31,13 @@ export function drawForces() {
       const q = pn.points[nm][S.k];
       if (!q) continue;
       el(svg, "circle", {cx: f3(q[0]), cy: f3(-q[1]), r: f3(0.7 * u), class: "ppt"});
-      el(svg, "text", {x: f3(q[0] + 1.5 * u), y: f3(-q[1] + 4 * u), "font-size": f3(4 * u), class: "label"}, nm);
+      el(svg, "text", {x: f3(q[0] + 1.5 * u), y: f3(-q[1] + 4 * u), "font-size": f3(4 * u), class: "label"}, lab(nm));
     }
     for (const [g, t] of segs) {
       if (Math.hypot(t[2] - t[0], t[3] - t[1]) < 1e-9) continue;
       el(svg, "line", {x1: f3(t[0]), y1: f3(-t[1]), x2: f3(t[2]), y2: f3(-t[3]), class: "seg " + (g.kind === "force" ? "frc" : KIND[g.kind] || ""),
         "stroke-width": f3(0.5 * u), "marker-end": "url(#" + svg.id + "-arr)", "data-label": g.label});
-      el(svg, "text", {x: f3((t[0] + t[2]) / 2 + u), y: f3(-(t[1] + t[3]) / 2 - u), "font-size": f3(3.6 * u), class: "label"}, g.label);
+      el(svg, "text", {x: f3((t[0] + t[2]) / 2 + u), y: f3(-(t[1] + t[3]) / 2 - u), "font-size": f3(3.6 * u), class: "label"}, lab(g.label));
     }
   }
 }
