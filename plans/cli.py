@@ -78,24 +78,31 @@ class Parser(argparse.ArgumentParser):
 
     def format_help(self) -> str:
         """The help in the run's language: argparse's own words (usage, the headings, -h's
-        line) translated; the commands' and options' own help is English."""
+        line) and the commands' and options' help (:data:`plans.messages_help.HELP_RU`)."""
         from plans.errors import run_language
 
         lang = run_language()
         if lang != "ru":
             return super().format_help()
         from plans.language import argparse_text
+        from plans.messages_help import HELP_RU
 
-        saved = [(g, g.title) for g in self._action_groups] + [(a, a.help) for a in self._actions]
+        def ru(text: str | None) -> str | None:
+            return text and (HELP_RU.get(text) or argparse_text(text, lang))
+
+        saved: list[tuple[Any, str, Any]] = [(self, "description", self.description)]
+        saved += [(g, "title", g.title) for g in self._action_groups]
+        for a in self._actions:
+            saved.append((a, "help", a.help))
+            if isinstance(a, argparse._SubParsersAction):
+                saved += [(c, "help", c.help) for c in a._choices_actions]
         try:
-            for g in self._action_groups:
-                g.title = g.title and argparse_text(g.title, lang)
-            for a in self._actions:
-                a.help = a.help and argparse_text(a.help, lang)
+            for obj, name, text in saved:
+                setattr(obj, name, ru(text))
             return super().format_help().replace("usage: ", argparse_text("usage: ", lang), 1)
         finally:
-            for obj, text in saved:
-                setattr(obj, "title" if isinstance(obj, argparse._ArgumentGroup) else "help", text)
+            for obj, name, text in saved:
+                setattr(obj, name, text)
 
     def format_usage(self) -> str:
         from plans.errors import run_language

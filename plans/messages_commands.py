@@ -178,6 +178,12 @@ COMMAND_ERRORS: dict[str, tuple[str, str]] = {
     "pm_holds_sheet_other": ("{v}: holds a sheet of {other}; refusing to overwrite it with the sheets of {source} (expected another output folder, or rename one of the files)",
         "{v}: там лист из {other}; листы из {source} не будут записаны поверх него (ожидалась другая папка результатов или переименуйте один из файлов)"),
     # ---- the workbench's requests (drawings/workbench/server.py, edits.py)
+    "wr_host": ("refused: Host {host!r} is not this server (expected one of {hosts})",
+        "отказано: заголовок 'Host' {host!r} — не этот сервер (ожидался один из: {hosts})"),
+    "wr_origin": ("refused: a page from {origin!r} may not use this server",
+        "отказано: странице с {origin!r} этот сервер недоступен"),
+    "wr_cross_site": ("refused: a request from another site may not use this server",
+        "отказано: запросу с другого сайта этот сервер недоступен"),
     "wr_position_number": ("at {at!r}: expected a position's number (0, 1, ...)",
         "'at' = {at!r}: ожидался номер положения (0, 1, ...)"),
     "wr_view_view_full": ("view {view!r}: expected full or page",

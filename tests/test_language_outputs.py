@@ -152,6 +152,9 @@ def _page_text(browser, url: str, lang: str) -> tuple[str, list[str]]:  # noqa: 
     pg.wait_for_function("() => document.querySelectorAll('#table tbody tr').length > 0")
     table = pg.inner_text("#table")
     labels = pg.eval_on_selector_all("#vel text, #acc text", "ts => ts.map(t => t.textContent)")
+    pg.click("#show-cycle")  # the tables over the cycle: their titles and rows
+    pg.wait_for_function("() => document.querySelectorAll('option').length > 0")
+    labels += pg.eval_on_selector_all("option", "os => os.map(o => o.textContent)")
     pg.close()
     return table, labels
 
@@ -165,7 +168,74 @@ def test_workbench_shows_the_textbooks_symbols_in_the_pages_language(browser, se
     assert "ω1" in ru and "ε1" in ru and "π a" in ru and "p a" in ru and "8,3383" in ru
     assert any(lb.startswith("π") for lb in ru_labels) and not any("p_a" in lb for lb in ru_labels), ru_labels
     assert "по кинетостатике" in ru and "по рычагу Жуковского" in ru
+    cycle = [lb for lb in ru_labels if " — " in lb]
+    assert cycle and all(lb.endswith("Планы за цикл") for lb in cycle), cycle
+    assert not _russian(" ".join(cycle)), sorted(_russian(" ".join(cycle)))
     assert not _russian(ru, "n_BA", "a_BA", "v_BA"), sorted(_russian(ru, "n_BA", "a_BA", "v_BA"))
     assert "ω1" in en and "p_a a" in en and "p_v a" in en and "by kinetostatics" in en and "8.3383" in en
     assert any(lb.startswith("p_a") for lb in en_labels), en_labels
+    assert any(lb == "p_v a, mm — Plans over the cycle" for lb in en_labels), en_labels
     assert not CYRILLIC.search(en)
+
+
+def _helps() -> list[str]:
+    """Every command's and option's help and every description of the command line."""
+    import argparse
+
+    from drawings.cli import build_parser
+
+    out: list[str] = []
+
+    def walk(parser: argparse.ArgumentParser) -> None:
+        out.append(parser.description or "")
+        for a in parser._actions:
+            out.append(a.help or "")
+            if isinstance(a, argparse._SubParsersAction):
+                out.extend(c.help or "" for c in a._choices_actions)
+                for sub in a.choices.values():
+                    walk(sub)
+
+    walk(build_parser(None))
+    return sorted({h for h in out if h and h != argparse.SUPPRESS and h != "show this help message and exit"})
+
+
+def test_every_help_of_the_command_line_has_its_russian():
+    """Each help in the catalogue; a Russian one holds no Latin word its English one lacks
+    (the options, keys, formats and programs both name)."""
+    from plans.messages_help import HELP_RU
+
+    helps = _helps()
+    assert len(helps) >= 80
+    missing = [h for h in helps if h not in HELP_RU]
+    assert not missing, missing
+    for en in helps:
+        ru = HELP_RU[en]
+        assert CYRILLIC.search(ru), ru
+        extra = {w for w in _latin_words(ru) if w not in set(re.findall(r"[A-Za-z]+", en))}
+        assert not extra, (ru, extra)
+
+
+def test_every_commands_help_in_russian(capsys):
+    for command in ("solve", "check", "bench", "balance", "gears", "cam", "design", "draw", "demo", "note",
+                    "variants", "serve"):
+        with pytest.raises(SystemExit):
+            main([command, "--help", "--language", "ru"])
+        text = capsys.readouterr().out
+        assert text.startswith(f"использование: plans {command}") and "показать эту справку и выйти" in text, text
+
+
+def test_workbench_force_polygons_in_the_pages_language(browser, server):  # noqa: F811
+    _, url = server
+    got = {}
+    for lang in ("ru", "en"):
+        pg = browser.new_page(viewport={"width": 1366, "height": 900})
+        pg.add_init_script(f"localStorage.setItem('plans-lang', '{lang}')")
+        pg.goto(url + "/#file=slider_crank.toml")
+        pg.wait_for_function("() => document.body.dataset.solved")
+        pg.click("#show-forces")
+        pg.wait_for_function("() => document.querySelectorAll('#force-panels figure').length > 0")
+        got[lang] = pg.inner_text("#force-panels")
+        pg.close()
+    assert "Φ2" in got["ru"] and "F_ур" in got["ru"] and "группа 2-3" in got["ru"] and "Phi" not in got["ru"]
+    assert not _russian(got["ru"]), sorted(_russian(got["ru"]))
+    assert "Φ2" in got["en"] and "F_bal" in got["en"] and "group 2-3" in got["en"] and not CYRILLIC.search(got["en"])

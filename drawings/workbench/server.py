@@ -105,13 +105,13 @@ class Guard:
         headers = {k.decode("latin-1").lower(): v.decode("latin-1") for k, v in scope["headers"]}
         host = headers.get("host", "")
         origin = headers.get("origin")
-        why = None
+        why: Said | None = None
         if host.lower() not in self.hosts:
-            why = f"refused: Host {host!r} is not this server (expected one of {', '.join(sorted(self.hosts))})"
+            why = Said("wr_host", host=host, hosts=", ".join(sorted(self.hosts)))
         elif origin is not None and origin.lower() not in {f"http://{h}" for h in self.hosts}:
-            why = f"refused: a page from {origin!r} may not use this server"
+            why = Said("wr_origin", origin=origin)
         elif headers.get("sec-fetch-site") == "cross-site":
-            why = "refused: a request from another site may not use this server"
+            why = Said("wr_cross_site")
         if why is not None:
             await _error(403, why)(scope, receive, send)
             return

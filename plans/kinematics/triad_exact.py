@@ -93,7 +93,7 @@ def _track(solve: Callable[..., Any], scene: Scene, st: Structure, g: TriadGroup
         except SpecialPosition as exc:
             if k:  # the group may have run into its special position between two steps
                 _special_between(solve, scene, before, g, t, outer_of, float(grid[k - 1]), phi, state, sense)
-            raise NotAssemblable(str(exc).split(": ", 1)[-1], group=t.name, point=g.point, phi_deg=phi) from None
+            raise NotAssemblable(exc.said, group=t.name, point=g.point, phi_deg=phi) from None
         d = determinant(t, outer, *new)
         if k and d * sense < 0:  # Newton landed on the other branch: a special position was passed
             _special_between(solve, scene, before, g, t, outer_of, float(grid[k - 1]), phi, state, sense)
@@ -185,7 +185,7 @@ def solve_group(ctx: Context, g: TriadGroup, k: tuple) -> None:
                 if ao is not None:
                     aD[m], e[m] = x[2], x[3]
         except SpecialPosition as exc:
-            raise Locked(str(exc).split(": ", 1)[-1], group=t.name, point=g.point, phi_deg=phi) from None
+            raise Locked(exc.said, group=t.name, point=g.point, phi_deg=phi) from None
 
     def out(x: np.ndarray) -> Any:
         return complex(x[0]) if scalar and x.dtype == complex else float(x[0]) if scalar else x

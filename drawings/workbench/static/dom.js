@@ -13,10 +13,11 @@ export const S = {path: null, name: null, text: "", data: null, kind: null, sol:
 
 export const f3 = (x) => (Math.round(x * 1000) / 1000).toString();
 // a figure shown (never one typed back into a field): a decimal comma on a Russian page
-export const num = (x) => (x === undefined || x === null ? ""
+export const num = (x) => (x === undefined || x === null ? "" : Number.isNaN(Number(x)) ? "—"
   : L.lang === "ru" ? Number(x.toPrecision(5)).toString().replace(".", ",") : Number(x.toPrecision(5)).toString());
 // a key of the solution (omega_1, p_a, a segment "p_v a") as the page's language writes it
 // (the server's symbols: ω1, π or p_a as the scene's notation says)
+export const said = (key, fallback) => (((S.sol && S.sol.symbols) || {})[L.lang] || {})[key] || fallback;
 export const sym = (nm) => String(nm).split(" ").map((w) => (((S.sol && S.sol.symbols) || {})[L.lang] || {})[w] || w).join(" ");
 export const stem = (fallback) => (S.path || S.name || fallback).replace(/\.toml$/, "");
 export const where = () => (S.path ? "path=" + encodeURIComponent(S.path) : "");

@@ -81,7 +81,7 @@ export function translate() {
 const RU_UNITS = {"mm": "мм", "m": "м", "kg": "кг", "kg·m²": "кг·м²", "rpm": "об/мин", "rad/s": "рад/с",
   "N or N·m": "Н или Н·м", "N": "Н", "N·m": "Н·м", "Pa": "Па", "SI": "СИ", "m/s": "м/с", "m/s^2": "м/с²",
   "m/s²": "м/с²", "rad/s²": "рад/с²", "mm/N": "мм/Н", "mm/(m/s)": "мм/(м/с)", "mm/(m/s²)": "мм/(м/с²)",
-  "rad/s, rad/s²": "рад/с, рад/с²", "rad/s^2": "рад/с²", "J": "Дж", "W": "Вт", "s": "с"};
+  "rad/s, rad/s²": "рад/с, рад/с²", "rad/s^2": "рад/с²", "kg*m^2": "кг·м²", "N*m": "Н·м", "J": "Дж", "W": "Вт", "s": "с"};
 export const un = (u) => (L.lang === "ru" && RU_UNITS[u] ? RU_UNITS[u] : u);
 export const panelName = (nm) => (L.lang !== "ru" ? nm : nm === "crank" ? "начальное звено"
   : nm === "lever" ? "рычаг Жуковского" : nm.replace(/^group /, "группа "));
