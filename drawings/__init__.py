@@ -40,7 +40,7 @@ def __getattr__(name: str) -> Any:
 
 
 def draw(source: Any, *, format: str | None = None, orientation: str | None = None,
-         language: str | None = None) -> Any:
+         language: str | None = None, font: str | None = None) -> Any:
     """The sheets of what ``plans.solve`` solved (a linkage's Solution, an engine's, gears', a
     cam's or a synthesis task's solution), of a record of any kind, or of the path of a file
     of the family (dispatched on its ``kind``): the drawing of that kind's sheets module."""
@@ -57,7 +57,9 @@ def draw(source: Any, *, format: str | None = None, orientation: str | None = No
         room = type(source).__module__.rpartition(".")[0]
         kind = next((k for k, (_, entry) in ROOMS.items() if entry.rpartition(".")[0] == room), kind)
     module = importlib.import_module(KINDS[kind][1])
-    return module.draw(source, format=format, orientation=orientation, language=language)
+    if font is None:  # a kind's draw without the option is called as before
+        return module.draw(source, format=format, orientation=orientation, language=language)
+    return module.draw(source, format=format, orientation=orientation, language=language, font=font)
 
 
 class PlanView:

@@ -313,8 +313,11 @@ def add_sheet_options(check_parser: argparse.ArgumentParser) -> argparse.Argumen
             formats = [f.strip().lower() for f in str(args.sheet_format).split(",") if f.strip()]
             bad = [f for f in formats if f not in FORMATS_OUT] or ([] if formats else [args.sheet_format])
             if bad:
-                print(f"plans: error: --sheet-format: expected some of {','.join(FORMATS_OUT)}, got "
-                      f"{args.sheet_format!r}", file=sys.stderr)
+                from plans.errors import Said, error_prefix, run_language
+
+                print(f"{error_prefix()}--sheet-format: "
+                      + Said("dc_formats", formats=",".join(FORMATS_OUT), got=repr(args.sheet_format)).text(run_language()),
+                      file=sys.stderr)
                 return 2
 
             from drawings.paper.manifest import forget, plan_sheets, remove

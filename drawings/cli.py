@@ -10,7 +10,7 @@ from typing import Any
 
 from plans.cli import command_of, only_command, register_commands
 from plans.cli import main as plans_main
-from plans.errors import InputError
+from plans.errors import InputError, Said
 
 #: Commands that need the renderer, listed without importing them (see plans.cli).
 _DRAWING_NAMES = {"drawings.demo": ("demo", "a step-by-step demonstration page of a scene's analysis"),
@@ -26,7 +26,9 @@ def _formats(text: str) -> list[str]:
     out = [f.strip().lower() for f in text.split(",") if f.strip()]
     bad = [f for f in out if f not in FORMATS]
     if bad or not out:
-        raise argparse.ArgumentTypeError(f"expected some of {','.join(FORMATS)}, got {text!r}")
+        from plans.errors import Said, run_language
+
+        raise argparse.ArgumentTypeError(Said("dc_formats", formats=",".join(FORMATS), got=repr(text)).text(run_language()))
     return out
 
 
@@ -39,6 +41,8 @@ def add_draw(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--sheet", metavar="A1", help="sheet format A1..A4 (overrides [sheet] format)")
     p.add_argument("--orientation", choices=("landscape", "portrait"), help="overrides [sheet] orientation")
     p.add_argument("--language", choices=("ru", "en"), help="overrides [sheet] language")
+    p.add_argument("--font", choices=("dejavu", "gost"),
+                   help="overrides [sheet] font: gost is osifont, a GOST 2.304 type B font (apt-get install fonts-osifont)")
     p.add_argument("--dpi", type=float, default=150.0, help="PNG resolution (default 150)")
     p.add_argument("--quiet", action="store_true", help="no progress lines on a terminal")
     p.set_defaults(func=draw_command)
@@ -58,9 +62,9 @@ def draw_command(args: argparse.Namespace) -> int:
     progress = Progress(getattr(args, "quiet", False))
 
     if not (0 < args.dpi <= 1200):
-        raise InputError(f"{args.dpi:g} is out of range; expected 1..1200", file=args.scene, field="--dpi")
+        raise InputError(Said("dc_dpi_out_range", dpi=args.dpi), file=args.scene, field="--dpi")
     if Path(args.output).exists() and not Path(args.output).is_dir():
-        raise InputError(f"{args.output} is a file; expected a folder for the sheets", file=args.scene,
+        raise InputError(Said("dc_output_file_folder", output=args.output), file=args.scene,
                          field="--output")
     kind, _ = read_kind(args.scene)
     try:
@@ -68,11 +72,15 @@ def draw_command(args: argparse.Namespace) -> int:
     except ModuleNotFoundError as exc:
         if exc.name is None or not KINDS[kind][1].startswith(exc.name):
             raise
-        raise InputError(f"drawing {kind!r} files is not available in this installation",
+        raise InputError(Said("dc_drawing_kind_files", kind=kind),
                          file=args.scene, field="kind") from None
-    progress(f"drawing {args.scene} ...")
+    from plans.errors import run_language
+    from plans.phrases import say
+
+    progress(say("dr_drawing", run_language(), scene=args.scene))
+    options = {"font": args.font} if getattr(args, "font", None) else {}
     drawing = module.draw(args.scene, format=args.sheet, orientation=args.orientation,
-                          language=args.language)
+                          language=args.language, **options)
     written = save(drawing.sheets, args.output, Path(args.scene).stem, args.format, args.dpi,
                    progress=progress, source=args.scene)
     for p in written:
@@ -99,6 +107,44 @@ def _diagrams_seconds(path: Any, repeat: int) -> float:
     return diagrams_sheet_seconds(path, repeat)
 
 
+def _note_figures(path: str, repeat: int) -> dict[str, float]:
+    """The note's build for ``plans bench`` (:func:`drawings.note.cli.note_figures`), loaded when run."""
+    from drawings.note.cli import note_figures
+
+    return note_figures(path, repeat)
+
+
+def _page_figures(path: str) -> dict[str, Any]:
+    """The demonstration page for ``plans bench`` (:func:`drawings.demo.page_figures`), loaded when run."""
+    from drawings.demo import page_figures
+
+    return page_figures(path)
+
+
+def _workbench_figures(path: Any) -> dict[str, Any]:
+    """The workbench's round trip and start for ``plans bench``, loaded when run."""
+    from drawings.workbench.bench import figures
+
+    return figures(path)
+
+
+def _register_bench_timers() -> None:
+    """``plans bench`` times the renderer's work through its public functions, in process."""
+    from plans.accuracy import cycle_bench, group_bench, speed, workbench_bench
+
+    cycle_bench.SHEET_TIMERS.setdefault("cycle diagrams sheet", _diagrams_seconds)
+    _once(speed.SHEET_FIGURES, _sheet_figures)
+    _once(speed.NOTE_FIGURES, _note_figures)
+    _once(speed.PAGE_FIGURES, _page_figures)
+    _once(workbench_bench.FIGURES, _workbench_figures)
+    _once(group_bench.COMMAND, main)
+
+
+def _once(timers: list[Any], timer: Any) -> None:
+    if timer not in timers:
+        timers.append(timer)
+
+
 def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     """The engine's parser (solve, check, bench, ...) with ``draw`` and the other
     commands that need the renderer added (with ``argv``: only the command asked for
@@ -121,11 +167,7 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
         )
 
         add_plot(sub.choices["bench"])
-        from plans.accuracy import cycle_bench, speed  # and times the sheets, through drawings.draw
-
-        cycle_bench.SHEET_TIMERS.setdefault("cycle diagrams sheet", _diagrams_seconds)
-        if _sheet_figures not in speed.SHEET_FIGURES:
-            speed.SHEET_FIGURES.append(_sheet_figures)
+        _register_bench_timers()  # and times the sheets (through drawings.draw), the note, the page, ...
     if "check" in sub.choices and (argv is None or command_of(argv) == "check"):  # ``plans check --sheet DIR``: the marked and overlay sheets
         try:
             from drawings.check_sheet import add_sheet_options

@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from plans.demo import FRAMES, lesson
-from plans.errors import InputError
+from plans.errors import InputError, Said
 from plans.io import atomic_write
 from plans.scene.model import Scene, load_scene
 
@@ -158,7 +158,7 @@ def _script_json(data: Any) -> str:
 def _language(scene: Scene, language: str | None) -> str:
     if language is not None:
         if language not in WORDS:
-            raise InputError(f"expected one of {', '.join(WORDS)}, got {language!r}", field="--language")
+            raise InputError(Said("dd_one_language", v=', '.join(WORDS), language=language), field="--language")
         return language
     lang = scene.sheet.language  # the scene's [sheet], validated with it
     return lang if lang in WORDS else "ru"

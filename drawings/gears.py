@@ -16,11 +16,12 @@ import shapely
 from drawings.linkage.panels import Panel, finish, ratio_text
 from drawings.paper.backend import HAIR, MAIN, PAPER, THICK, THIN, Recording, Style
 from drawings.paper.common import Placer, arrow, dot, fmt
+from drawings.paper.fonts import choose, drawing
 from drawings.paper.i18n import lookup
 from drawings.paper.i18n import tr as words
 from drawings.paper.sheet import Sheet, SheetSpec, compose, sheet_spec
 from drawings.paper.text import layout
-from plans.errors import InputError
+from plans.errors import InputError, Said
 from plans.gears.meshing import Meshing
 from plans.gears.model import GearFile
 from plans.gears.solution import GearsSolution, solve_file
@@ -486,15 +487,17 @@ def magnification(sol: GearSolution, spec: SheetSpec) -> float:
     return 1.0
 
 
+@drawing
 def draw(source: GearsSolution | GearFile | str | Path, *, format: str | None = None,
-         orientation: str | None = None, language: str | None = None) -> GearDrawing:
+         orientation: str | None = None, language: str | None = None, font: str | None = None) -> GearDrawing:
     """The meshing sheet (when the file has an external pair) and the train sheet (when it
     gives speeds): of a solved gear file (``plans.solve``), or of a file or its path, solved here."""
     gs = source if isinstance(source, GearsSolution) else solve_file(source)
     gf = gs.file
     sol = gs.solution
     spec = sheet_spec(gf.raw, gf.path, gf.title or tr("title", "ru" if language != "en" else "en"),
-                      format=format, orientation=orientation, language=language)
+                      format=format, orientation=orientation, language=language, font=font)
+    choose(spec.font, gf.path, font)
     lang = spec.language
     groups: list[tuple[list[Panel], str]] = []
     drawings = list(gs.meshings)
@@ -515,13 +518,13 @@ def draw(source: GearsSolution | GearFile | str | Path, *, format: str | None = 
     if train:
         groups.append((train, ratio_text(sol.plan.mu_l * magnification(sol, spec)) if sol.plan is not None else ""))
     if not groups:
-        raise InputError("nothing to draw: expected [[meshes]] or [[shafts]] with speeds",
+        raise InputError(Said("dg_nothing_draw_meshes"),
                          file=gf.path, field="meshes")
     sheets: list[Sheet] = []
     for panels, scale in groups:
         sheets.extend(compose(panels, spec, scale, gf.path))
-    for i, sh in enumerate(sheets):  # one numbering across the meshing and train sheets
-        sh.number, sh.count = i + 1, len(sheets)
-        sh.render()
+    from drawings.paper.merge import merged
+
+    sheets = merged(sheets)  # the train on the meshing sheet where it fits; one numbering
     panels_all = tuple(p for g, _ in groups for p in g)
     return GearDrawing(gf, sol, mg, spec, panels_all, tuple(sheets))

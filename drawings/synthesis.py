@@ -12,6 +12,7 @@ from pathlib import Path
 from drawings.linkage.panels import STANDARD_RATIOS, Panel, finish, ratio_text
 from drawings.paper.backend import CENTRE_LINE, HAIR, MAIN, THICK, THIN, Pt, Recording, Style
 from drawings.paper.common import dot, fmt
+from drawings.paper.fonts import choose, drawing
 from drawings.paper.i18n import lookup
 from drawings.paper.sheet import GAP, TB_H, Sheet, SheetSpec, compose, sheet_spec, usable
 from drawings.paper.text import layout
@@ -349,8 +350,9 @@ def build_panels(ds: DesignSolution, spec: SheetSpec) -> list[Panel]:
     return [construction_panel(ds, spec.language, target), table_panel(ds, spec.language)]
 
 
+@drawing
 def draw(source: DesignSolution | Task | str | Path, *, format: str | None = None,
-         orientation: str | None = None, language: str | None = None) -> Drawing:
+         orientation: str | None = None, language: str | None = None, font: str | None = None) -> Drawing:
     """The synthesis sheet of a designed task (``plans.solve``), or of a task or its file,
     designed here."""
     ds = source if isinstance(source, DesignSolution) else solve_task(source)
@@ -361,7 +363,9 @@ def draw(source: DesignSolution | Task | str | Path, *, format: str | None = Non
     title = t.raw.get("title", t.title)
     if isinstance(title, dict):
         title = title.get(lang) or t.title
-    spec = sheet_spec(raw, t.path, str(title), format=format, orientation=orientation, language=language)
+    spec = sheet_spec(raw, t.path, str(title), format=format, orientation=orientation, language=language,
+                      font=font)
+    choose(spec.font, t.path, font)
     panels = build_panels(ds, spec)
     sheets = compose(panels, spec, ratio_text(panels[0].scale or 1000.0), t.path)
     return Drawing(d, spec, tuple(panels), tuple(sheets))

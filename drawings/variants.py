@@ -18,7 +18,16 @@ import tempfile
 from pathlib import Path
 from typing import Any
 
-from plans.errors import InputError, PlansError, one_line
+from plans.errors import (
+    InputError,
+    PlansError,
+    Said,
+    error_prefix,
+    field_name,
+    one_line,
+    run_language,
+)
+from plans.phrases import say
 
 _TEXT: dict[str, dict[str, Any]] = {
     "ru": {"task": "Задание на курсовой проект по ТММ", "student": "Студент", "group": "Группа",
@@ -83,7 +92,7 @@ def make(row: Any, sheets: bool, language: str | None = None) -> tuple[Any, dict
         try:
             files.update(reference(got, language))
         except PlansError as exc:
-            got.error = f"reference sheets: {one_line(exc)}"
+            got.error = Said("dv_reference_sheets", error=one_line(exc)).text(run_language())
             return got, {}
     return got, files
 
@@ -121,13 +130,13 @@ def run(args: argparse.Namespace) -> int:
     out = Path(args.output)
     table = Path(args.table)
     if out.exists() and not out.is_dir():
-        raise InputError(f"{out} is a file; expected a folder for the variants", file=str(table),
+        raise InputError(Said("dv_out_file_folder", out=out), file=str(table),
                          field="--output")
     if out.resolve() == table.resolve().parent:
-        raise InputError("the output folder is the table's: the variants would stand among the templates",
+        raise InputError(Said("dv_output_folder_table"),
                          file=str(table), field="--output")
     if not 1 <= args.jobs <= 64:
-        raise InputError(f"expected 1 to 64 jobs, got {args.jobs}", file=str(table), field="--jobs")
+        raise InputError(Said("gg_jobs_jobs", jobs=args.jobs), file=str(table), field="--jobs")
     rows = read_table(table)
     roster = read_roster(args.students, {r.variant for r in rows}) if args.students else []
     work = [(r, not args.no_sheets, args.language) for r in rows]
@@ -143,7 +152,9 @@ def run(args: argparse.Namespace) -> int:
     for got, files in results:
         if got.error:
             bad += 1
-            print(f"plans: error: variant {got.row.variant} ({got.row.where}): {got.error}", file=sys.stderr)
+            lang = run_language()
+            print(error_prefix(lang) + Said("dv_variant_error", variant=got.row.variant, where=field_name(got.row.where, lang),
+                                            error=got.error).text(lang), file=sys.stderr)
             continue
         folder = out / got.row.variant
         (folder / "reference").mkdir(parents=True, exist_ok=True)
@@ -152,7 +163,10 @@ def run(args: argparse.Namespace) -> int:
         remove(old for old in (folder / "reference").glob("*.pdf") if old not in written)
         made[got.row.variant] = got
         if not args.quiet:
-            print(f"{folder}: {got.kind}, {sum(len(v) for v in got.key['values'].values())} figures in the key")
+            from plans.group.gradebook import heading
+
+            print(say("vr_made", run_language(), folder=folder, kind=heading(got.kind, run_language()),
+                      n=sum(len(v) for v in got.key["values"].values())))
     if roster:
         hand = out / "handouts"
         hand.mkdir(parents=True, exist_ok=True)
@@ -165,7 +179,7 @@ def run(args: argparse.Namespace) -> int:
             pages[hand / f"{stem}.pdf"] = handout_pdf(st, got, args.language)
         write_all(pages)
         if not args.quiet:
-            print(f"{hand}: {len(pages)} handouts")
+            print(say("vr_handouts", run_language(), folder=hand, n=len(pages)))
     return 2 if bad else 0
 
 

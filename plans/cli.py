@@ -69,8 +69,46 @@ class Parser(argparse.ArgumentParser):
         super().__init__(*args, **kwargs)
 
     def error(self, message: str) -> NoReturn:
-        self.exit(2, f"plans: error: {self.prog.split(' ', 1)[-1] + ': ' if ' ' in self.prog else ''}"
-                     f"{' '.join(message.split())} (see plans -h)\n")
+        from plans.errors import Said, run_language
+        from plans.language import argparse_text
+
+        lang = run_language()
+        self.exit(2, f"{error_prefix(lang)}{self.prog.split(' ', 1)[-1] + ': ' if ' ' in self.prog else ''}"
+                     f"{argparse_text(' '.join(message.split()), lang)}{Said('a_see_help').text(lang)}\n")
+
+    def format_help(self) -> str:
+        """The help in the run's language: argparse's own words (usage, the headings, -h's
+        line) and the commands' and options' help (:data:`plans.messages_help.HELP_RU`)."""
+        from plans.errors import run_language
+
+        lang = run_language()
+        if lang != "ru":
+            return super().format_help()
+        from plans.language import argparse_text
+        from plans.messages_help import HELP_RU
+
+        def ru(text: str | None) -> str | None:
+            return text and (HELP_RU.get(text) or argparse_text(text, lang))
+
+        saved: list[tuple[Any, str, Any]] = [(self, "description", self.description)]
+        saved += [(g, "title", g.title) for g in self._action_groups]
+        for a in self._actions:
+            saved.append((a, "help", a.help))
+            if isinstance(a, argparse._SubParsersAction):
+                saved += [(c, "help", c.help) for c in a._choices_actions]
+        try:
+            for obj, name, text in saved:
+                setattr(obj, name, ru(text))
+            return super().format_help().replace("usage: ", argparse_text("usage: ", lang), 1)
+        finally:
+            for obj, name, text in saved:
+                setattr(obj, name, text)
+
+    def format_usage(self) -> str:
+        from plans.errors import run_language
+        from plans.language import argparse_text
+
+        return super().format_usage().replace("usage: ", argparse_text("usage: ", run_language()), 1)
 
 
 def only_command(argv: Sequence[str] | None) -> str | None:
@@ -202,6 +240,17 @@ def _input_of(args: argparse.Namespace) -> str | None:
     return None
 
 
+def _asked_language(argv: Sequence[str]) -> str | None:
+    """``--language`` as written on the command line (for argparse's own messages, before
+    the arguments are parsed)."""
+    for k, a in enumerate(argv):
+        if a == "--language" and k + 1 < len(argv):
+            return argv[k + 1]
+        if a.startswith("--language="):
+            return a.split("=", 1)[1]
+    return None
+
+
 def _closed_pipe() -> int:
     """The reader of our output has gone (``| head``): that is not an error.  Point stdout
     at /dev/null so the interpreter's final flush does not complain either."""
@@ -218,6 +267,7 @@ def main(argv: Sequence[str] | None = None,
     """Parse and run one command; ``parser`` builds the parser (the renderer's CLI passes its
     own, with ``draw`` added)."""
     argv = sys.argv[1:] if argv is None else list(argv)
+    set_run(_asked_language(argv), next((a for a in argv if a.endswith(".toml")), None))
     try:
         args = (parser or build_parser)(argv).parse_args(argv)
     except KeyboardInterrupt:

@@ -8,6 +8,7 @@ the crank angle, never returns NaN.
 
 from __future__ import annotations
 
+import math
 import re
 from typing import Any
 
@@ -28,12 +29,13 @@ def set_run(asked: str | None, path: str | None) -> None:
 _WARNED: set[str] = set()
 
 
-def warn(said: Said) -> None:
+def warn(said: Said, data: Any = None) -> None:
     """A warning on stderr in the run's language (``plans: warning: ...``): the run goes on
-    and its exit status is unchanged."""
+    and its exit status is unchanged.  Outside a command's run (a library call), the language
+    of ``data``'s ``[sheet] language`` (the scene's table), else the locale's."""
     import sys
 
-    lang = run_language()
+    lang = run_language(data)
     text = said.text(lang)
     if text in _WARNED:
         return
@@ -67,11 +69,11 @@ class Said:
         self.key, self.values = key, values
 
     def text(self, lang: str = "en") -> str:
-        from plans.language import ERRORS, WARNINGS
+        from plans.messages import sentence
 
-        en, ru = ERRORS[self.key] if self.key in ERRORS else WARNINGS[self.key]
+        en, ru = sentence(self.key)
         values = {k: v.text(lang) if isinstance(v, Said) else _Comma(v) if lang == "ru" and isinstance(v, float)
-                  else v for k, v in self.values.items()}
+                  else v.written(lang) if isinstance(v, Figures | Field) else v for k, v in self.values.items()}
         return (ru if lang == "ru" else en).format(**values)
 
     def __str__(self) -> str:
@@ -81,12 +83,33 @@ class Said:
         return f"Said({self.key!r}, {self.values!r})"
 
 
+class Field(str):
+    """A field named in a sentence, as :func:`field_name` writes it in the sentence's language."""
+
+    __slots__ = ()
+
+    def written(self, lang: str) -> str:
+        return field_name(str(self), lang)
+
+
+class Figures(tuple):
+    """Numbers listed in a sentence (``0, 1.096, 30``), with a decimal comma in Russian."""
+
+    __slots__ = ()
+
+    def written(self, lang: str) -> str:
+        text = ", ".join(f"{x:g}" for x in self)
+        return text.replace(".", ",").replace(", ", "; ") if lang == "ru" and "." in text else text
+
+
 class _Comma(float):
     """A number written with a decimal comma (a Russian sentence's)."""
 
     __slots__ = ()
 
     def __format__(self, spec: str) -> str:
+        if self in (math.inf, -math.inf):
+            return "∞" if self > 0 else "−∞"
         return float.__format__(self, spec).replace(".", ",")
 
 
@@ -100,6 +123,8 @@ _ENTRY = re.compile(r"^([A-Za-z_][\w.]*?)\[(\d+)\](?:\.(.*))?$")
 def field_name(field: str, lang: str = "en") -> str:
     """A field as a message names it: ``joints[3].guide.link`` (the reader's 0-based index)
     is ``[[joints]] entry 4, guide.link`` (``[[joints]] № 4, guide.link`` in Russian)."""
+    if lang == "ru" and "row " in field:  # a row of a CSV table ("t.csv, row 3", "row 3.name")
+        field = re.sub(r"\brow (\d+)", r"строка \1", field)
     m = _ENTRY.match(field)
     if m is None or m.group(1).rsplit(".", 1)[-1] not in TABLE_ARRAYS:
         return field
@@ -134,7 +159,7 @@ def one_line(exc: BaseException, lang: str | None = None) -> str:
     """The error as the one line the command prints: the file first, whitespace folded; in
     ``lang`` (default: the run's, :func:`run_language`) where the message is the catalogue's."""
     lang = lang or run_language()
-    text = exc.text(lang) if isinstance(exc, InputError | OutputError) else str(exc)
+    text = exc.text(lang) if isinstance(exc, InputError | OutputError | ConstructionError) else str(exc)
     text = " ".join(text.split())
     source = getattr(exc, "source", None)
     if source and not text.startswith(source):
@@ -179,20 +204,28 @@ class OutputError(PlansError):
 class ConstructionError(PlansError):
     """A construction that has no answer (not assemblable, locked)."""
 
-    def __init__(self, message: str, *, group: str | None = None, point: str | None = None,
+    def __init__(self, message: str | Said, *, group: str | None = None, point: str | None = None,
                  phi_deg: float | None = None) -> None:
         self.group = group
         self.point = point
         self.phi_deg = phi_deg
+        self.said = message if isinstance(message, Said) else None
+        self.detail = str(message)
+        super().__init__(self.text("en"))
+
+    def text(self, lang: str = "en") -> str:
+        """The error in ``lang``: the group, the point and the crank angle, then why."""
         parts = []
-        if group:
-            parts.append(f"group {group}")
-        if point:
-            parts.append(f"point {point}")
-        if phi_deg is not None:
-            parts.append(f"phi = {phi_deg:g} deg")
+        if self.group:
+            group = self.group.replace("class III ", Said("x_class_iii").text(lang), 1)
+            parts.append(Said("x_at_group", group=group).text(lang))
+        if self.point:
+            parts.append(Said("x_at_point", point=self.point).text(lang))
+        if self.phi_deg is not None:
+            parts.append(Said("x_at_phi", phi=self.phi_deg).text(lang))
         prefix = ", ".join(parts)
-        super().__init__(f"{prefix}: {message}" if prefix else message)
+        message = self.said.text(lang) if self.said is not None else self.detail
+        return f"{prefix}: {message}" if prefix else message
 
 
 class NotAssemblable(ConstructionError):

@@ -19,7 +19,7 @@ from collections.abc import Callable
 import numpy as np
 from numpy.typing import NDArray
 
-from plans.errors import InputError
+from plans.errors import InputError, Said
 
 R = NDArray[np.float64]
 Node = Callable[[R], R]
@@ -207,16 +207,15 @@ def parse(text: object, *, file: str | None = None, field: str = "expression") -
     """The formula as an :class:`Expression`; InputError (one line, naming ``field``) if it is
     not one."""
     if not isinstance(text, str):
-        raise InputError(f"expected a formula of phi as a string, e.g. \"600*sin(2*phi) - 500*sin(phi)\", "
-                         f"got {text!r}", file=file, field=field)
+        raise InputError(Said("ex_formula_phi_string", text=text), file=file, field=field)
     if len(text) > MAX_LENGTH:
-        raise InputError(f"the formula is longer than {MAX_LENGTH} characters", file=file, field=field)
+        raise InputError(Said("ex_formula_longer_than", MAX_LENGTH=MAX_LENGTH), file=file, field=field)
     try:
         node = _Parser(text).parse()
     except _Fail as exc:
         hint = "" if "expected" in str(exc) else (f"; expected numbers, phi, pi, + - * / ^, parentheses and "
                                                   f"{', '.join(FUNCTIONS)}")
-        raise InputError(f"{exc} in {text!r}{hint}", file=file, field=field) from None
+        raise InputError(Said("ex_exc_text_hint", exc=exc, text=text, hint=hint), file=file, field=field) from None
     return Expression(text, node)
 
 
@@ -229,9 +228,8 @@ def check_finite(expr: Expression, phi: R, *, file: str | None, field: str, limi
     bad = ~np.isfinite(vals) | (np.abs(np.where(np.isfinite(vals), vals, 0.0)) > limit)
     if np.any(bad):
         k = int(np.argmax(bad))
-        what = "not a finite number" if not np.isfinite(vals[k]) else f"beyond {limit:g} in magnitude"
-        raise InputError(f"{expr.text!r} is {what} at φ = {float(np.degrees(phi[k])):.6g}° (a pole, a root of a "
-                         f"negative number or an overflow)", file=file, field=field)
+        what = Said("ex_w_not_finite") if not np.isfinite(vals[k]) else Said("ex_w_beyond", limit=limit)
+        raise InputError(Said("ex_text_what_pole", text=expr.text, what=what, v=float(np.degrees(phi[k]))), file=file, field=field)
     cells = np.flatnonzero(np.signbit(vals[:-1]) != np.signbit(vals[1:]))
     if len(cells):
         lo, hi = phi[cells].copy(), phi[cells + 1].copy()
@@ -247,8 +245,7 @@ def check_finite(expr: Expression, phi: R, *, file: str | None, field: str, limi
         pole = ~np.isfinite(fm) | (np.abs(np.where(np.isfinite(fm), fm, 0.0)) > ends)
         if np.any(pole):
             at = float(np.degrees(0.5 * (lo + hi))[int(np.argmax(pole))])
-            raise InputError(f"{expr.text!r} has a pole near φ = {at:.6g}° (it changes sign through infinity): "
-                             f"a moment must stay finite over the cycle", file=file, field=field)
+            raise InputError(Said("ex_text_has_pole", text=expr.text, at=at), file=file, field=field)
     # an even pole (1/x²) keeps its sign: climb every local peak of |f| to its top
     mag = np.abs(vals)
     peaks = np.flatnonzero((mag[1:-1] >= mag[:-2]) & (mag[1:-1] >= mag[2:])) + 1
@@ -263,6 +260,5 @@ def check_finite(expr: Expression, phi: R, *, file: str | None, field: str, limi
         pole = ~np.isfinite(top) | (top > limit)
         if np.any(pole):
             at = float(np.degrees(0.5 * (lo + hi))[int(np.argmax(pole))])
-            raise InputError(f"{expr.text!r} has a pole near φ = {at:.6g}° (it grows without bound there): "
-                             f"a moment must stay finite over the cycle", file=file, field=field)
+            raise InputError(Said("ex_text_has_pole2", text=expr.text, at=at), file=file, field=field)
     return vals

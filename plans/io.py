@@ -59,12 +59,23 @@ def _temporary(target: str) -> tuple[str, int]:
     if os.path.isdir(target):
         raise OutputError(Said("o_folder", target=str(target)))
     try:
-        import tempfile  # loaded when a file is written: reading a scene does not pay for it
-
-        fd, tmp = tempfile.mkstemp(prefix=f".{os.path.basename(target)}.", suffix=".tmp", dir=folder)
+        return _mkstemp(folder, f".{os.path.basename(target)}.", ".tmp")
     except OSError as exc:
         raise OutputError(Said("o_write_to", folder=str(folder), why=os_reason(exc))) from None
-    return tmp, fd
+
+
+def _mkstemp(folder: str, prefix: str, suffix: str) -> tuple[str, int]:
+    """``tempfile.mkstemp`` as this module uses it (a new file only its owner may read,
+    under a random name), without importing tempfile: with shutil, random and the
+    compression modules it loads, that is a few milliseconds of every ``plans solve --json``."""
+    flags = os.O_RDWR | os.O_CREAT | os.O_EXCL | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_BINARY", 0)
+    for _ in range(10000):  # tempfile.TMP_MAX
+        tmp = os.path.join(folder, f"{prefix}{os.urandom(6).hex()}{suffix}")
+        try:
+            return tmp, os.open(tmp, flags, 0o600)
+        except FileExistsError:
+            continue
+    raise FileExistsError(f"no usable temporary name in {folder}")
 
 
 def _unlink(path: str) -> None:
@@ -180,7 +191,19 @@ MAX_DEPTH = 32
 
 
 def _check_depth(data: Any, path: str) -> None:
-    """Refuse tables and arrays nested deeper than MAX_DEPTH (walked without recursion)."""
+    """Refuse tables and arrays nested deeper than MAX_DEPTH (walked without recursion; the
+    field named only when there is one to name)."""
+    flat: list[tuple[Any, int]] = [(data, 0)]
+    while flat:
+        node, depth = flat.pop()
+        if depth > MAX_DEPTH:
+            break
+        if isinstance(node, dict):
+            flat.extend((v, depth + 1) for v in node.values())
+        elif isinstance(node, list):
+            flat.extend((v, depth + 1) for v in node)
+    else:
+        return
     stack = [(data, 0, "")]
     while stack:
         node, depth, where = stack.pop()

@@ -13,11 +13,27 @@ locale's (``LC_ALL``/``LC_MESSAGES``/``LANG`` starting with ``ru``: Russian), el
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-# the checker's words and the errors' and warnings' lines, read from here as before
-from plans.check_terms import CAUSES, CHECK_SENTENCES, CHECK_TERMS, KINDS_RU, PLANS_RU  # noqa: E402, F401
-from plans.messages import ERRORS, WARNINGS  # noqa: E402, F401
+# the checker's words and the errors' and warnings' lines, read from here as before (loaded
+# when first asked for, :func:`__getattr__`: ``plans solve`` that succeeds reads neither)
+if TYPE_CHECKING:
+    from plans.check_terms import CAUSES, CHECK_SENTENCES, CHECK_TERMS, KINDS_RU, PLANS_RU  # noqa: F401
+    from plans.messages import ERRORS, WARNINGS  # noqa: F401
+
+_LATER = {"CAUSES": "plans.check_terms", "CHECK_SENTENCES": "plans.check_terms", "CHECK_TERMS": "plans.check_terms",
+          "KINDS_RU": "plans.check_terms", "PLANS_RU": "plans.check_terms",
+          "ERRORS": "plans.messages", "WARNINGS": "plans.messages"}
+
+
+def __getattr__(name: str) -> Any:
+    if name in _LATER:
+        import importlib
+
+        value = getattr(importlib.import_module(_LATER[name]), name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 SHEET_WORDS: dict[str, tuple[str, str]] = {
     "scheme": ("Кинематическая схема", "Kinematic scheme"),
@@ -503,23 +519,6 @@ TERMS.update({
         "phi = {phi:.6f} deg (working stroke {work:.4f} deg, idle {idle:.4f} deg, K = {K:.4f}, theta = {theta:.4f} deg)",
         "положения от крайнего положения звена {link} ({kind} {point}), с которого начинается холостой ход: "
         "φ = {phi:.6f}° (рабочий ход {work:.4f}°, холостой {idle:.4f}°, K = {K:.4f}, θ = {theta:.4f}°)"),
-    "x_warn_idle": (
-        "warning: {file}: {field}: the resisting force {name} acts on the idle (fast) stroke too; give "
-        "stroke = \"working\" if it resists the working stroke only (or stroke = \"both\" to say so)",
-        "внимание: {file}: {field}: сила сопротивления {name} действует и на холостом (быстром) ходу; "
-        "укажите stroke = \"working\", если она действует только на рабочем ходу (или stroke = \"both\", "
-        "если так и задумано)"),
-    "x_warn_idle_only": (
-        "warning: {file}: {field}: the resisting force {name} acts on the idle (fast) stroke only (stroke = "
-        "\"{stroke}\"); give stroke = \"working\" for the working (slow) stroke",
-        "внимание: {file}: {field}: сила сопротивления {name} действует только на холостом (быстром) ходу "
-        "(stroke = \"{stroke}\"); для рабочего (медленного) хода укажите stroke = \"working\""),
-    "x_warn_idle_moment": (
-        "warning: {file}: {field}: the resisting moment {name} acts on the idle (fast) stroke too; give "
-        "stroke = \"working\" if it resists the working stroke only (or stroke = \"both\" to say so)",
-        "внимание: {file}: {field}: момент сопротивления {name} действует и на холостом (быстром) ходу; "
-        "укажите stroke = \"working\", если он действует только на рабочем ходу (или stroke = \"both\", "
-        "если так и задумано)"),
 })
 
 
@@ -535,3 +534,83 @@ SHEET_WORDS.update({
     "working_stroke": ("рабочий ход", "working stroke"),  # the plan of positions
     "idle_stroke": ("холостой ход", "idle stroke"),
 })
+
+
+# ---- argparse's own sentences (plans.cli.Parser): its usage errors and --help's headings
+def argparse_text(message: str, lang: str) -> str:
+    """A message argparse wrote (in English, from its msgids) in ``lang``: a msgid of
+    :data:`plans.messages.ARGPARSE` matched whole, its values kept (a nested message, such
+    as an option's invalid choice, and a type's name translated too)."""
+    if lang != "ru":
+        return message
+    import re
+
+    from plans.messages import ARGPARSE
+
+    spec = re.compile(r"%(?:\((\w+)\))?[sr]")
+    for msgid, ru in ARGPARSE.items():
+        parts = spec.split(msgid)  # literal, name, literal, name, ..., literal
+        names = [n or str(k) for k, n in enumerate(parts[1::2])]
+        pattern = "(.+?)".join(re.escape(p) for p in parts[0::2])
+        m = re.fullmatch(pattern, message, re.S)
+        if m is None:
+            continue
+        values = dict(zip(names, m.groups(), strict=True))
+        if "message" in values:
+            values["message"] = argparse_text(values["message"], lang)
+        for name, value in values.items():  # a type's name, the command's argument
+            if f"a_{value}" in ERRORS:
+                values[name] = ERRORS[f"a_{value}"][1]
+        unnamed = iter([v for k, v in values.items() if k.isdigit()])
+
+        def value(x: re.Match[str], values: dict[str, str] = values, unnamed: Any = unnamed) -> str:
+            return values[x.group(1)] if x.group(1) else next(unnamed)
+
+        return spec.sub(value, ru)
+    return message
+
+
+def textbook_symbol(name: str, lang: str, pole: str) -> str:
+    """A quantity's or a plan point's key as a page writes it: ω1, ε2 in either language,
+    the textbook's Russian letters (p, F_ур, M_Φ2) in Russian, the acceleration pole
+    ``pole`` (π or p_a, :func:`plans.scene.notation.resolve`)."""
+    if name == "p_a":
+        return pole
+    if lang == "ru":
+        return quantity_name(name, "ru")
+    head, _, rest = name.partition("_")
+    return _GREEK[head] + rest.replace("_", "") if head in ("omega", "eps") and rest else name
+
+
+def again(text: str, keys: tuple[str, ...], lang: str) -> str:
+    """A line written in English from one of the :data:`TERMS` ``keys`` (a title kept in
+    English in a JSON), written again in ``lang``: its values as written, with a decimal
+    comma in Russian; a line none of them wrote, unchanged."""
+    if lang == "en":
+        return text
+    import re
+
+    field = re.compile(r"\{(\w+)(?::[^{}]*)?\}")
+    for key in keys:
+        en, ru = TERMS[key]
+        parts = field.split(en)  # literal, name, literal, ...
+        pattern = "".join(re.escape(p) if i % 2 == 0 else f"(?P<{p}>.+?)" for i, p in enumerate(parts))
+        m = re.fullmatch(pattern, text)
+        if m is not None:
+            values = {k: v.replace(".", ",") if re.fullmatch(r"-?[\d.e+-]+", v) else v for k, v in m.groupdict().items()}
+            return field.sub(lambda x, v=values: v[x.group(1)], ru)  # type: ignore[misc]
+    return text
+
+
+def page_label(text: str, lang: str, pole: str) -> str:
+    """A label of a drawing (a force polygon's ``Phi2``, ``F_bal``, ``F21^τ``) as a page in
+    ``lang`` writes it: the Greek letters in either language, the textbook's Russian
+    symbols (F_ур, p) in Russian, the acceleration pole ``pole``."""
+    import re
+
+    text = re.sub(r"\bp_a(?![A-Z_])", pole, text)
+    if lang == "ru":
+        return symbols(text, lang)
+    for pattern, greek in ((r"(?<![A-Za-z])Phi(?=\w)", "Φ"), (r"\bomega_?(?=\d)", "ω"), (r"\beps_?(?=\d)", "ε")):
+        text = re.sub(pattern, greek, text)
+    return text

@@ -259,6 +259,11 @@ ERRORS: dict[str, tuple[str, str]] = {
     "e_latin": ("Latin", "латиницы"),
     "e_cyrillic_is": ("Cyrillic", "кириллические"),
     "e_latin_is": ("Latin", "латинские"),
+    # ---- the sheets' font (drawings/paper/fonts.py)
+    "e_font_missing": ("font {font!r} needs {family!r}, which is not installed; install it ({install}) "
+                       "or choose \"dejavu\"",
+                       "для шрифта {font!r} нужен {family!r}, а он не установлен; установите его ({install}) "
+                       "или выберите \"dejavu\""),
 }
 
 #: key -> (English, Russian): the warnings of an implausible scene, on stderr (the run goes on).
@@ -282,3 +287,72 @@ WARNINGS: dict[str, tuple[str, str]] = {
                 "{file}: имена {a!r} и {b!r} выглядят одинаково, но одно написано кириллицей, а другое латиницей: "
                 "это две разные точки"),
 }
+
+def sentence(key: str) -> tuple[str, str]:
+    """(English, Russian) of a key of :data:`ERRORS` or :data:`WARNINGS`; the sentences of the
+    other file kinds' readers, the drawing options and the constructions are read the first
+    time one is asked for (:func:`complete`): a run that says nothing never loads them."""
+    got = ERRORS.get(key) or WARNINGS.get(key)
+    if got is None:
+        complete()
+        got = ERRORS.get(key) or WARNINGS[key]
+    return got
+
+
+def complete() -> dict[str, tuple[str, str]]:
+    """:data:`ERRORS` with every sentence of the catalogue in it."""
+    if "x_at_group" not in ERRORS:
+        from plans.messages_commands import COMMAND_ERRORS
+        from plans.messages_construction import CONSTRUCTION_ERRORS
+        from plans.messages_files import FILE_ERRORS
+        from plans.messages_kinds import KIND_ERRORS
+
+        ERRORS.update(FILE_ERRORS)
+        ERRORS.update(KIND_ERRORS)
+        ERRORS.update(COMMAND_ERRORS)
+        ERRORS.update(CONSTRUCTION_ERRORS)
+    return ERRORS
+
+#: argparse's own sentences (its msgids, as Python's argparse writes them) -> Russian: a usage
+#: error and ``--help`` in the run's language (:func:`plans.language.argparse_text`).
+ARGPARSE: dict[str, str] = {
+    "usage: ": "использование: ",
+    "positional arguments": "позиционные аргументы",
+    "options": "параметры",
+    "show this help message and exit": "показать эту справку и выйти",
+    "the following arguments are required: %s": "не заданы обязательные аргументы: %s",
+    "unrecognized arguments: %s": "неизвестные аргументы: %s",
+    "argument %(argument_name)s: %(message)s": "аргумент %(argument_name)s: %(message)s",
+    "invalid choice: %(value)r (choose from %(choices)s)": "недопустимое значение %(value)r (допустимы: %(choices)s)",
+    "invalid %(type)s value: %(value)r": "недопустимое значение %(value)r (ожидалось %(type)s)",
+    "expected one argument": "ожидалось одно значение",
+    "expected at most one argument": "ожидалось не больше одного значения",
+    "expected at least one argument": "ожидалось хотя бы одно значение",
+    "expected %s argument": "ожидалось значений: %s",
+    "expected %s arguments": "ожидалось значений: %s",
+    "ambiguous option: %(option)s could match %(matches)s": "неоднозначный параметр %(option)s: подходят %(matches)s",
+    "ignored explicit argument %r": "лишнее значение %r",
+    "not allowed with argument %s": "нельзя задавать вместе с %s",
+    "one of the arguments %s is required": "нужен один из аргументов %s",
+    "unexpected option string: %s": "неожиданный параметр: %s",
+    "can't open '%(filename)s': %(error)s": "не удаётся открыть '%(filename)s': %(error)s",
+}
+
+ERRORS.update({
+    "a_see_help": (" (see plans -h)", " (см. plans -h)"),
+    "a_float": ("float", "число"),
+    "a_int": ("int", "целое число"),
+    "a_command": ("command", "команда"),
+})
+
+WARNINGS.update({
+    # a resisting load on the idle (fast) stroke (plans.forces.strokes)
+    "w_idle": ("{file}: {field}: the resisting force {name} acts on the idle (fast) stroke too; give stroke = \"working\" if it resists the working stroke only (or stroke = \"both\" to say so)",
+                "{file}: {field}: сила сопротивления {name} действует и на холостом (быстром) ходу; укажите stroke = \"working\", если она действует только на рабочем ходу (или stroke = \"both\", если так и задумано)"),
+    "w_idle_moment": ("{file}: {field}: the resisting moment {name} acts on the idle (fast) stroke too; give stroke = \"working\" if it resists the working stroke only (or stroke = \"both\" to say so)",
+                "{file}: {field}: момент сопротивления {name} действует и на холостом (быстром) ходу; укажите stroke = \"working\", если он действует только на рабочем ходу (или stroke = \"both\", если так и задумано)"),
+    "w_idle_only": ("{file}: {field}: the resisting force {name} acts on the idle (fast) stroke only (stroke = \"{stroke}\"); give stroke = \"working\" for the working (slow) stroke",
+                "{file}: {field}: сила сопротивления {name} действует только на холостом (быстром) ходу (stroke = \"{stroke}\"); для рабочего (медленного) хода укажите stroke = \"working\""),
+    "w_serving": ("serving on {host}: other computers on the network can read and write the files of {root}",
+                  "сервер открыт на {host}: другие компьютеры сети могут читать и записывать файлы в {root}"),
+})

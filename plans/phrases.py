@@ -255,7 +255,9 @@ class Phrase:
 
     def __init__(self, key: str, args: Mapping[str, Any]) -> None:
         if key not in PHRASES:
-            raise KeyError(key)
+            _terminal()
+            if key not in PHRASES:
+                raise KeyError(key)
         self.key, self.args = key, dict(args)
 
     def say(self, lang: str = "en") -> str:
@@ -277,6 +279,15 @@ class Phrase:
 
     def __repr__(self) -> str:
         return f"Phrase({self.key!r}, {self.args!r})"
+
+
+def _terminal() -> None:
+    """The renderer's and the group's terminal lines (:mod:`plans.messages_terminal`), read
+    the first time one is written."""
+    from plans.messages_terminal import TERMINAL
+
+    TERMS.update(TERMINAL)
+    PHRASES.update(TERMINAL)
 
 
 def phrase(key: str, **args: Any) -> Phrase:

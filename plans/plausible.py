@@ -62,20 +62,20 @@ def warn_scene(scene: Any, unit: str, path: str) -> None:
         size = max(size, link.length or 0.0)
         if size > LENGTH_WARN:
             warn(Said("w_length" if unit == "m" else "w_length_figure", file=path, field=f"links.{lid}",
-                      what=Said("w_link", link=lid), value=size, unit=unit))
+                      what=Said("w_link", link=lid), value=size, unit=unit), getattr(scene, "raw", None))
     d = scene.driver
     crank = scene.links.get(d.link)
     if crank is not None and len(crank.axis) == 2:
         v = abs(d.omega) * abs(crank.points[crank.axis[1]] - crank.points[crank.axis[0]])
         if v > SPEED_WARN:
-            warn(Said("w_speed", file=path, point=crank.axis[1], v=v, limit=SPEED_WARN))
+            warn(Said("w_speed", file=path, point=crank.axis[1], v=v, limit=SPEED_WARN), getattr(scene, "raw", None))
     names = list(scene.frame_points) + [p for link in scene.links.values() for p in link.points]
     for name in dict.fromkeys(names):
         if script(name) == "mixed":
             letters = ", ".join(f"{ch!r}" for ch in name if ch in _TWINS)
-            warn(Said("w_lookalike", file=path, where="points", name=name, letters=letters))
+            warn(Said("w_lookalike", file=path, where="points", name=name, letters=letters), getattr(scene, "raw", None))
     seen: dict[str, str] = {}
     for name in dict.fromkeys(names):
         other = seen.setdefault(looks(name), name)
         if other != name:
-            warn(Said("w_twins", file=path, a=other, b=name))
+            warn(Said("w_twins", file=path, a=other, b=name), getattr(scene, "raw", None))

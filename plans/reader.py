@@ -67,6 +67,8 @@ def check_keys(table: dict[str, Any], known: Iterable[str], *, file: str, where:
 def bad_character(text: str) -> Said | None:
     """A description of the first character that cannot stand in a name or on a sheet
     (control characters, Unicode noncharacters, surrogates), or None."""
+    if text.isprintable():  # each of them is a control, unassigned or surrogate code point: not printable
+        return None
     for ch in text:
         o = ord(ch)
         if (o < 0x20 and ch not in "\t\n") or 0x7F <= o < 0xA0:

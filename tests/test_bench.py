@@ -229,3 +229,62 @@ def test_the_renderer_registers_its_sheet_timers_and_the_goals_read_them(monkeyp
     assert not png.met and abs(png.ratio - 0.7 / speed.SHEET_PNG) < 1e-12
     monkeypatch.setattr(speed, "SHEET_FIGURES", [])
     assert speed.sheet_goals(Path(__file__).resolve().parents[1] / "samples")[0].met is None
+
+
+def test_the_note_page_workbench_and_group_goals_time_the_renderers_public_functions(monkeypatch):
+    """The note, the demonstration page, the workbench and a group's variants are timed in
+    this process through what the renderer registers (its public functions and its command
+    line), never a subprocess of a module named by a string; unregistered, each is skipped."""
+    import subprocess
+
+    from drawings.cli import build_parser, main
+    from plans.accuracy import group_bench, speed, workbench_bench
+
+    build_parser(["bench", "--quick"])
+    assert group_bench.COMMAND == [main]
+    assert speed.NOTE_FIGURES and speed.PAGE_FIGURES and workbench_bench.FIGURES
+    samples = Path(__file__).resolve().parents[1] / "samples"
+    asked: list = []
+    monkeypatch.setattr("drawings.note.cli.note_figures",
+                        lambda path, reps: asked.append(("note", path, reps)) or
+                        {"seconds": 4.0, "cpu_seconds": 2.5, "bytes": 2e6})
+    monkeypatch.setattr("drawings.demo.page_figures",
+                        lambda path: asked.append(("page", path)) or
+                        {"bytes": 1e5, "build_s": 0.1, "first_step_s": None})
+
+    def no_subprocess(*args, **kwargs):
+        raise AssertionError(f"a subprocess: {args}")
+    monkeypatch.setattr(subprocess, "run", no_subprocess)
+    note, = speed.note_goals(samples, reps=2)
+    assert note.met and abs(note.ratio - 2.5 / speed.NOTE_BUILD) < 1e-12  # the processor time of one core's build
+    size, build, first = speed.page_goals(samples)
+    assert size.met and build.met and first.met is None
+    assert asked == [("note", str(samples / "projects" / "v_engine_project.toml"), 2),
+                     ("page", str(samples / "v_engine.toml"))]
+    for name in ("NOTE_FIGURES", "PAGE_FIGURES"):
+        monkeypatch.setattr(speed, name, [])
+    monkeypatch.setattr(workbench_bench, "FIGURES", [])
+    monkeypatch.setattr(group_bench, "COMMAND", [])
+    assert [g.met for g in speed.note_goals(samples) + speed.page_goals(samples)
+            + workbench_bench.workbench_goals(samples) + group_bench.group_goals(samples)] == [None] * 4
+
+
+def test_least_paired_takes_turns_and_keeps_the_least_of_each():
+    """The noisy goals' timer: the two calls take turns, and each keeps its least batch
+    (a loaded machine only ever adds to a call's time); a fake clock makes it exact."""
+    from plans.accuracy.timing import least_paired
+
+    calls: list[str] = []
+    durations = iter([5.0, 3.0, 2.0, 1.0, 4.0, 6.0])  # a, b, a, b, a, b
+    now = [0.0]
+    started = [True]
+
+    def clock() -> float:
+        if not started[0]:
+            now[0] += next(durations)
+        started[0] = not started[0]
+        return now[0]
+
+    ta, tb = least_paired(lambda: calls.append("a"), lambda: calls.append("b"), reps=3, batch=0.0, clock=clock)
+    assert (ta, tb) == (2.0, 1.0)
+    assert calls == ["a", "a", "b", "b"] + ["a", "b"] * 3  # two calls each to size the batches, then turn about

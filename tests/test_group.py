@@ -181,9 +181,13 @@ def test_a_variant_that_cannot_be_built_is_named_and_the_others_made(tmp_path: P
                                     "A2,shaper.template,90,120,280,50,,,\n"
                                     "A3,gears.template,,,,,4,13,30\n", encoding="utf-8")
     out = tmp_path / "out"
-    assert main(["variants", str(tmp_path / "t.csv"), "-o", str(out), "--quiet"]) == 2
+    assert main(["variants", str(tmp_path / "t.csv"), "-o", str(out), "--quiet", "--language", "en"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "variant A2 (t.csv, row 3)" in err[0]
+    shutil.rmtree(out)
+    assert main(["variants", str(tmp_path / "t.csv"), "-o", str(out), "--quiet"]) == 2  # Russian, the default
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("plans: ошибка: вариант A2 (t.csv, строка 3): группа RRP"), err
     assert sorted(p.name for p in out.iterdir()) == ["A1", "A3"]
     assert (out / "A3" / "reference" / "gears.pdf").read_bytes().startswith(b"%PDF")
     assert sorted(p.name for p in (out / "A1" / "reference").iterdir()) == ["scene-1.pdf", "scene-2.pdf"]
@@ -192,11 +196,14 @@ def test_a_variant_that_cannot_be_built_is_named_and_the_others_made(tmp_path: P
 def test_bad_tables_are_one_line(tmp_path: Path, capsys: pytest.CaptureFixture) -> None:
     shutil.copy(SAMPLE / "gears.template", tmp_path / "gears.template")
     (tmp_path / "t.csv").write_text("variant,m,z1\nB1,4,13\n", encoding="utf-8")
-    assert main(["variants", str(tmp_path / "t.csv"), "-o", str(tmp_path / "out"), "--quiet"]) == 2
+    assert main(["variants", str(tmp_path / "t.csv"), "-o", str(tmp_path / "out"), "--quiet", "--language", "en"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "z2" in err[0] and "row 2" in err[0]
+    assert main(["variants", str(tmp_path / "t.csv"), "-o", str(tmp_path / "out"), "--quiet"]) == 2  # Russian
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "z2" in err[0] and "строка 2" in err[0] and err[0].startswith("plans: ошибка: ")
     (tmp_path / "u.csv").write_text("name,m\nB1,4\n", encoding="utf-8")
-    assert main(["variants", str(tmp_path / "u.csv"), "-o", str(tmp_path / "out2"), "--quiet"]) == 2
+    assert main(["variants", str(tmp_path / "u.csv"), "-o", str(tmp_path / "out2"), "--quiet", "--language", "en"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "'variant' column" in err[0] and "u.csv" in err[0]
     assert not (tmp_path / "out2").exists()

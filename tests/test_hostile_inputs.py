@@ -9,6 +9,7 @@ was blamed (so a case cannot pass on some other, unrelated error).
 
 from __future__ import annotations
 
+import re
 import shutil
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -445,6 +446,7 @@ def test_bad_input_keeps_the_promise(case: Case, tmp_path: Path, capsys: pytest.
     assert status == 2, f"status {status}; stderr: {err!r}"
     assert len(lines) == 1, f"expected one line on stderr, got {err!r}"
     assert lines[0].startswith("plans: error: "), lines[0]
+    assert not re.search("[А-Яа-яЁё]", re.sub(r"'[^']*'", "", lines[0])), "a Russian word in English"
     assert "Traceback" not in err and "Traceback" not in out
     for word in case.expect:
         assert word in lines[0], f"{word!r} not in {lines[0]!r}"

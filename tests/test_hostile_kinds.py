@@ -11,6 +11,7 @@ or changed anywhere in the working folder.
 from __future__ import annotations
 
 import math
+import re
 import tomllib
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -241,6 +242,7 @@ def test_bad_input_of_every_kind_keeps_the_promise(case: Case, tmp_path: Path,
     assert status == 2, f"status {status}; stderr: {err!r}"
     assert len(lines) == 1, f"expected one line on stderr, got {err!r}"
     assert lines[0].startswith("plans: error: "), lines[0]
+    assert not re.search("[А-Яа-яЁё]", re.sub(r"'[^']*'", "", lines[0])), "a Russian word in English"
     assert "Traceback" not in err and "Traceback" not in out
     for word in case.expect:
         assert _named(word) in lines[0], f"{_named(word)!r} not in {lines[0]!r}"

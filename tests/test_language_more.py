@@ -16,8 +16,11 @@ import pytest
 
 from plans.cli import main
 from plans.errors import InputError, Said, field_name
-from plans.language import CHECK_TERMS, ERRORS, WARNINGS, choose
+from plans.language import CHECK_TERMS, WARNINGS, choose
+from plans.messages import complete
 from tests.test_language import _latin_words
+
+ERRORS = complete()  # every sentence, the other file kinds' and the constructions' too
 
 ROOT = Path(__file__).resolve().parent.parent
 SAMPLES = ROOT / "samples"
@@ -162,6 +165,18 @@ def _all_keys() -> set[str]:
         for name, value in vars(mod).items():
             if name.endswith("KEYS") and isinstance(value, set | frozenset):
                 out |= {k for k in value if isinstance(k, str)}
+    # the other readers' keys (gears, cams, engines, synthesis tasks, the cycle, the sheet)
+    import importlib
+
+    for name in ("plans.gears.model", "plans.cams.model", "plans.balancing.engine", "plans.synthesis.model",
+                 "plans.cycle.spec", "plans.cycle.check", "plans.scene.sheet", "plans.scene.friction",
+                 "plans.kinematics.extreme", "plans.kinematics.travel", "plans.group.build"):
+        for const, value in vars(importlib.import_module(name)).items():
+            if const.isupper() and isinstance(value, set | frozenset | tuple | dict):
+                out |= {k for k in value if isinstance(k, str) and re.fullmatch(r"[a-z]\w*", k)}
+    # keys named in sentences of several readers; programs named by their names; inv α
+    out |= {"lift", "rod", "rocker", "diameter", "area", "pressure", "diagram", "bore", "symbol", "style",
+            "direction", "dpi", "phi", "inv", "pdf", "LibreOffice", "soffice"}
     return out
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+import json
 import subprocess
 import sys
 from pathlib import Path
@@ -123,6 +124,7 @@ SOLVERS = {
     "plans.kinematics.extreme": {"strokes"},
     "plans.forces.loads": {"ignition", "parse_loads"},
     "plans.kinematics.centres": {"centres_at", "velocities_at", "kennedy", "primary"},
+    "plans.forces.friction": {"friction_analysis", "cycle_efficiency", "efficiency_json"},
 }
 
 #: What solves a file of the other kinds: each room's, read by its sheets off the room's
@@ -177,8 +179,7 @@ def test_the_solvers_the_layering_test_names_exist():
 #: with.  A module added here is a cost every ``plans solve`` pays before its first result.
 SOLVE_START = {
     "drawings", "drawings.cli", "drawings.console",
-    "plans", "plans.check_terms", "plans.cli", "plans.errors", "plans.guard", "plans.io", "plans.kinds",
-    "plans.language", "plans.messages",
+    "plans", "plans.cli", "plans.errors", "plans.guard", "plans.io", "plans.kinds", "plans.language",
     "plans.lines", "plans.phrases", "plans.reader", "plans.records", "plans.results", "plans.tolerances",
     "plans.units", "plans.scene", "plans.scene.model", "plans.scene.options",
     "plans.kinematics", "plans.kinematics.assur", "plans.kinematics.cases", "plans.kinematics.construction",
@@ -211,9 +212,26 @@ def test_plans_solve_starts_with_its_own_modules_only():
     assert heavy == "[]"
 
 
+def test_plans_solve_whole_loads_no_temporary_files_module_nor_the_catalogues_it_does_not_say(tmp_path):
+    """``plans solve --json`` to its end: the JSON written atomically without tempfile (and
+    the shutil, random and compression modules it loads), no error or checker catalogue read
+    when nothing goes wrong; the JSON is written all the same."""
+    out = tmp_path / "x.json"
+    got = _run("import sys\n"
+               "from drawings.console import main\n"
+               f"sys.argv = ['plans', 'solve', 'samples/slider_crank.toml', '--quiet', '--json', {str(out)!r}]\n"
+               "status = main()\n"
+               "print(status, sorted(m for m in ('tempfile', 'shutil', 'random', 'bz2', 'lzma', 'plans.messages', "
+               "'plans.check_terms') if m in sys.modules))\n")
+    assert got.returncode == 0, got.stderr
+    assert got.stdout.strip() == "0 []"
+    assert json.loads(out.read_text(encoding="utf-8"))["positions"]
+    assert [p.name for p in tmp_path.iterdir()] == ["x.json"]
+
+
 #: What the paper toolkit may read of the engine: errors, files, words and the sheet's own
 #: settings (format, language, the scales' notation), nothing of a mechanism.
-PAPER_MAY_IMPORT = {"plans.errors", "plans.io", "plans.language", "plans.scene.sheet", "plans.scene.notation",
+PAPER_MAY_IMPORT = {"plans.errors", "plans.io", "plans.language", "plans.phrases", "plans.scene.sheet", "plans.scene.notation",
                     "plans.scene.paper"}
 
 

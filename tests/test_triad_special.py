@@ -95,10 +95,10 @@ def test_special_kind_names_parallel_and_concurrent_axes():
     D, E, F = 0j, 0.1 + 0j, 0.05 + 0.08j
     t = Triad(E - D, F - D, 0.2, 0.15, 0.25)
     parallel = (D - 0.2 * u, E - 0.15 * u, F - 0.25 * u)
-    assert "parallel" in special_kind(t, parallel, D, 0.0)
+    assert "parallel" in str(special_kind(t, parallel, D, 0.0))
     S = 0.05 - 0.3j  # the axes through S
     through = tuple(P + L * (S - P) / abs(S - P) for P, L in ((D, 0.2), (E, 0.15), (F, 0.25)))
-    assert "one point" in special_kind(t, through, D, 0.0)
+    assert "one point" in str(special_kind(t, through, D, 0.0))
     ordinary = (D - 0.2j, E + 0.15, F + 0.25j)
     assert special_kind(t, ordinary, D, 0.0) is None
 

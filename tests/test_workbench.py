@@ -87,7 +87,9 @@ def test_solve_errors_are_the_engines_line_and_the_field_it_names(server):
     bad = text.replace("length = 80\n", "length = -4\n", 1)
     status, _, body = _req(url + "/api/solve", "POST", bad.encode())
     assert status == 422
-    assert json.loads(body) == {"error": _engine_error(bad), "field": "links.1.length"}
+    got = json.loads(body)
+    assert {k: got[k] for k in ("error", "field")} == {"error": _engine_error(bad), "field": "links.1.length"}
+    assert got["errors"]["en"] == got["error"] and got["errors"]["ru"].endswith("ожидалась положительная длина, а записано -4")
     far = text.replace("length = 80\n", "length = 400\n", 1)
     status, _, body = _req(url + "/api/solve", "POST", far.encode())
     got = json.loads(body)

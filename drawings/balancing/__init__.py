@@ -18,7 +18,7 @@ from drawings.balancing.balancing_paper import engine_paper, polygon_scale
 from drawings.linkage.panels import LABEL_SIZE, SMALL_SIZE, VECTOR_STYLES, Panel, finish
 from drawings.paper.backend import CENTRE_LINE, HAIR, MAIN, Recording, Style
 from drawings.paper.common import Placer, arrow, degrees360, dot, fmt
-from drawings.paper.fonts import metrics
+from drawings.paper.fonts import choose, drawing, metrics
 from drawings.paper.i18n import lookup
 from drawings.paper.sheet import Sheet, SheetSpec, compose, sheet_spec
 from drawings.paper.text import column_edges, layout
@@ -97,13 +97,15 @@ class BalancingDrawing:
         return self.sheets[0].svg()
 
 
+@drawing
 def draw(source: EngineSolution | Engine | str | Path, *, format: str | None = None,
-         orientation: str | None = None, language: str | None = None) -> BalancingDrawing:
+         orientation: str | None = None, language: str | None = None, font: str | None = None) -> BalancingDrawing:
     """The sheets of a solved engine (``plans.solve``), or of an engine or its file, solved here."""
     es = source if isinstance(source, EngineSolution) else solve_engine(source)
     engine = es.engine
     spec = sheet_spec(engine.raw, engine.path, engine.title, format=format, orientation=orientation,
-                      language=language)
+                      language=language, font=font)
+    choose(spec.font, engine.path, font)
     metrics()
     b = es.balance
     panels = build_panels(es, spec.language)

@@ -20,7 +20,7 @@ from drawings.linkage.panels import (
     strokes_over_cycle,
     table_panel,
 )
-from drawings.paper.fonts import metrics
+from drawings.paper.fonts import metrics, require, use
 from drawings.paper.sheet import Sheet, SheetSpec, compose
 from plans.scene.model import Scene, load_scene
 from plans.solution import Solution
@@ -162,22 +162,26 @@ def _force_panels(sol: Solution, spec: SheetSpec, ks: list[int], plans_at, mu_l:
 
 
 def draw(source: Solution | Scene | str | Path, *, format: str | None = None, orientation: str | None = None,
-         language: str | None = None, sheet_set: str | None = None) -> Drawing:
+         language: str | None = None, sheet_set: str | None = None, font: str | None = None) -> Drawing:
     """The sheets of a solved scene (a :class:`Solution`), or of a Scene or the path of its
     file, solved once here at the paper's fit.  A Solution is drawn at the scales it was
-    solved with (``plans.solve(scene, fit=...)``).  ``sheet_set`` overrides ``[sheet] set``."""
+    solved with (``plans.solve(scene, fit=...)``).  ``sheet_set`` overrides ``[sheet] set``,
+    ``font`` ``[sheet] font``."""
     if isinstance(source, Solution):
         sol = source
-        spec = sol.scene.sheet_for(format=format, orientation=orientation, language=language, set=sheet_set)
+        spec = sol.scene.sheet_for(format=format, orientation=orientation, language=language, set=sheet_set,
+                                   font=font)
     else:
         sc = source if isinstance(source, Scene) else load_scene(source)
-        spec = sc.sheet_for(format=format, orientation=orientation, language=language, set=sheet_set)
+        spec = sc.sheet_for(format=format, orientation=orientation, language=language, set=sheet_set, font=font)
+        require(spec.font, sc.path, "--font" if font else "sheet.font")  # before solving
         sol = solve_scene(sc, fit=fit_for(spec))
     from drawings.paper.sheet import TooBig
 
     while True:
         try:
-            return _draw(sol, spec)
+            with use(spec.font, sol.scene.path, "--font" if font else "sheet.font"):
+                return _draw(sol, spec)
         except TooBig as e:  # a plan, polygon or lever too big for the paper: smaller round scales
             fit = _smaller_fit(sol, e.panel, spec)
             if fit is None:
@@ -222,7 +226,10 @@ def _draw(sol: Solution, spec: SheetSpec) -> Drawing:
             return (lambda sel, mp, ml: build_panels(s, spec, sel, mp, ml),
                     lambda mu, bold: positions_panel(s, mu, spec.language, bold, strokes, spec.trace))
 
-        sheets = course_sheets(sol, spec, *builders(sol), diagrams)
+        from drawings.linkage.larger import longer, may_grow
+
+        larger = [lambda t=t: builders(t()) for t in longer(sol)] if may_grow(sol, spec) else []
+        sheets = course_sheets(sol, spec, *builders(sol), diagrams, larger)
         panels = [p for sh in sheets for p, _, _ in sh.placed if p not in diagrams]  # the linkage's
         if sc.wants("dynamics"):  # the dynamics' sheets follow
             from drawings.cycle import extend
@@ -235,8 +242,56 @@ def _draw(sol: Solution, spec: SheetSpec) -> Drawing:
     panels, mu_l = build_panels(sol, spec)
     nums = {float(phi): n for phi, n in zip(sc.driver.phis_deg, numbers(sol, spec), strict=True)}
     sheets = compose(panels, spec, None, sc.path, nums)  # each sheet's scale: its main image's
+    panels, sheets = _fuller_blocks(sol, spec, nums, panels, sheets)
     if sc.wants("diagrams") or sc.wants("dynamics"):  # the cycle's sheets follow
         from drawings.cycle import extend
 
         sheets = extend(sol, spec, sheets, None)
     return Drawing(sc, spec, tuple(panels), tuple(sheets), mu_l)
+
+
+def _fuller_blocks(sol: Solution, spec: SheetSpec, nums: dict[float, int], panels: list[Panel],
+                   sheets: list[Sheet]) -> tuple[list[Panel], list[Sheet]]:
+    """Each sheet of the block layout redrawn at longer plans where it has room for them
+    (:mod:`drawings.linkage.larger`): its own panels, at the fullest longer solution that still
+    holds them on one sheet.  Returns the panels drawn and the sheets."""
+    from drawings.linkage.larger import FULL, fill, longer, may_grow
+    from drawings.paper.sheet import TooBig
+
+    if not may_grow(sol, spec) or spec.pins:
+        return panels, sheets
+    size = spec.size
+    made: list[dict[str, Panel]] = []
+    makers = longer(sol)
+
+    def at(i: int) -> dict[str, Panel] | None:
+        while len(made) <= i and len(made) < len(makers):
+            made.append({p.pid: p for p in build_panels(makers[len(made)](), spec)[0]})
+        return made[i] if i < len(made) else None
+
+    out = list(sheets)
+    order = [p.pid for p in panels]
+    for n, sh in enumerate(sheets):
+        best, f0 = sh, fill(sh.placed, size)
+        ids = sorted((p.pid for p, _, _ in sh.placed), key=order.index)
+        for i in range(len(makers)):
+            if f0 >= FULL:
+                break
+            more = at(i)
+            if more is None or any(pid not in more for pid in ids):
+                break
+            try:
+                laid = compose([more[pid] for pid in ids], spec, None, sol.scene.path, nums)
+            except TooBig:  # a panel too long for an empty sheet: no longer ones either
+                break
+            if len(laid) > 1:  # longer still would not fit one sheet either
+                break
+            f = fill(laid[0].placed, size)
+            if f > f0 + 0.005:
+                best, f0 = laid[0], f
+        out[n] = best
+    for n, sh in enumerate(out):
+        sh.number, sh.count = n + 1, len(out)
+        sh.prims = []
+        sh.render()
+    return [p for sh in out for p, _, _ in sorted(sh.placed, key=lambda t: order.index(t[0].pid))], out

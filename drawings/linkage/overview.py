@@ -29,7 +29,7 @@ from drawings.paper.backend import Recording, Style, Transform
 from drawings.paper.common import Placer, angle, arrow, dot, fmt, ident
 from drawings.paper.i18n import tr
 from drawings.paper.text import layout, point_label
-from plans.errors import InputError, PlansError
+from plans.errors import InputError, PlansError, Said
 
 POS_THIN = Style(width=0.25, stroke="#000", cls="position")
 POS_BOLD = Style(width=0.6, stroke="#000", cls="position bold")
@@ -197,7 +197,7 @@ def positions_panel(sol, mu_l: float, lang: str, bold: Sequence[int], strokes: d
     trace = default_trace(scene) if trace is None else list(trace)
     for t in trace:
         if t not in names_all:
-            raise InputError(f"no point {t!r} on a moving link; points are {sorted(names_all)}", file=scene.path,
+            raise InputError(Said("lo_point_moving_link", t=t, v=sorted(names_all)), file=scene.path,
                              field="sheet.trace")
     at = [_points_at(scene, kin, k) for k in range(n)]
     everything = [z for pts in at for z in pts.values()]

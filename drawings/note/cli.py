@@ -11,7 +11,7 @@ import subprocess
 import tempfile
 from pathlib import Path
 
-from plans.errors import InputError, OutputError
+from plans.errors import InputError, OutputError, Said
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -40,9 +40,9 @@ def run(args: argparse.Namespace) -> int:
     fmt = args.format or ("pdf" if args.output.lower().endswith(".pdf") else "docx")
     refuse_input(args.output, *args.files)
     if not (0 < args.dpi <= 1200):
-        raise InputError(f"{args.dpi:g} is out of range; expected 1..1200", file=args.files[0], field="--dpi")
+        raise InputError(Said("dc_dpi_out_range", dpi=args.dpi), file=args.files[0], field="--dpi")
     if Path(args.output).is_dir():
-        raise InputError(f"{args.output} is a folder; expected a file name for the note", file=args.files[0],
+        raise InputError(Said("nc_output_folder_file", output=args.output), file=args.files[0],
                          field="--output")
     lang = args.language or _language(args.files)
     data = note_bytes(args.files, lang, args.dpi)
@@ -74,7 +74,7 @@ def to_pdf(docx: bytes, timeout: float = 300.0) -> bytes:
     """A DOCX converted to PDF by LibreOffice (headless, its own profile in a temporary folder)."""
     exe = soffice()
     if exe is None:
-        raise OutputError("--format pdf needs LibreOffice (soffice) installed; write the DOCX instead")
+        raise OutputError(Said("nc_format_pdf_needs"))
     with tempfile.TemporaryDirectory(prefix="plans-note-") as tmp:
         src = os.path.join(tmp, "note.docx")
         with open(src, "wb") as fh:
@@ -84,10 +84,10 @@ def to_pdf(docx: bytes, timeout: float = 300.0) -> bytes:
         try:
             subprocess.run(cmd, check=True, capture_output=True, timeout=timeout)
         except (subprocess.CalledProcessError, subprocess.TimeoutExpired) as exc:
-            raise OutputError(f"LibreOffice could not convert the note to PDF ({type(exc).__name__})") from None
+            raise OutputError(Said("nc_libreoffice_could_convert", name=type(exc).__name__)) from None
         out = os.path.join(tmp, "note.pdf")
         if not os.path.exists(out):
-            raise OutputError("LibreOffice wrote no PDF")
+            raise OutputError(Said("nc_libreoffice_wrote_pdf"))
         with open(out, "rb") as fh:
             return fh.read()
 

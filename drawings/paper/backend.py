@@ -103,7 +103,7 @@ class Prim:
         pts = tuple((x + dx, y + dy) for x, y in self.pts)
         lab = self.label
         if lab is not None:
-            lab = Label(tuple(TextRun(t.x + dx, t.y + dy, t.text, t.size) for t in lab.runs),
+            lab = Label(tuple(TextRun(t.x + dx, t.y + dy, t.text, t.size, t.font) for t in lab.runs),
                      (lab.box[0] + dx, lab.box[1] + dy, lab.box[2] + dx, lab.box[3] + dy), lab.plain)
         return Prim(self.op, pts, self.style, self.r, self.a0, self.a1, lab, self.eid, self.cls, self.side,
                     self.step, self.length, self.fill)

@@ -78,7 +78,7 @@ def _clash(boxes: np.ndarray, bx: np.ndarray) -> np.ndarray:
 def _moved(p: Prim, dx: float, dy: float) -> Prim:
     lab = p.label
     assert lab is not None
-    runs = tuple(TextRun(t.x + dx, t.y + dy, t.text, t.size) for t in lab.runs)
+    runs = tuple(TextRun(t.x + dx, t.y + dy, t.text, t.size, t.font) for t in lab.runs)
     box = (lab.box[0] + dx, lab.box[1] + dy, lab.box[2] + dx, lab.box[3] + dy)
     return Prim(p.op, p.pts, p.style, p.r, p.a0, p.a1, Label(runs, box, lab.plain), p.eid, p.cls, p.side,
                 p.step, p.length, p.fill)

@@ -32,7 +32,8 @@ from typing import Any
 
 from drawings.paper.backend import Prim, Pt, Style, hatch_segments
 
-#: DejaVu Sans (the SVG's font, whose metrics laid the runs out): capital height per em.
+#: DejaVu Sans (the SVG's font, whose metrics laid the runs out): capital height per em
+#: (a run in osifont, ``[sheet] font = "gost"``, has that font's own).
 #: A DXF text height is the capitals' height, an SVG font size the em.
 CAP = 1493 / 2048
 #: The text style: a GOST 2.304-like ISO 3098 font with Cyrillic that CAD programs have
@@ -254,18 +255,19 @@ class DxfBackend:
         self._list().append(("ARC", *self._stroke(style), (self._p(c), _r(r), _r(start), _r(stop))))
 
     def text(self, label: Any, cls: str = "", eid: str = "", fill: str = "#000") -> None:
-        from drawings.paper.fonts import metrics
+        from drawings.paper.fonts import FONT_FAMILY, metrics
 
         layer = self._layer("text")
         color = rgb(fill)
-        width = metrics().width
         for run in label.runs:
             if run.text.strip():
                 value = run.text.replace("%%", "%%%")
                 x, y = self._p((run.x, run.y))
-                end = _r(x + width(run.text, run.size))
+                m = metrics(run.font or FONT_FAMILY)  # the font that laid the run out
+                end = _r(x + m.width(run.text, run.size))
+                cap = m.cap if run.font else CAP
                 self._list().append(("TEXT", layer, "", None, color,
-                                     ((x, y), _r(run.size * CAP), value, (end, y))))
+                                     ((x, y), _r(run.size * cap), value, (end, y))))
 
     def hatch(self, p0: Pt, p1: Pt, side: int, style: Style, step: float = 2.5,
               length: float = 2.5, eid: str = "") -> None:

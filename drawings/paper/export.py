@@ -8,7 +8,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from plans.errors import OutputError
+from plans.errors import OutputError, Said
 from plans.io import atomic_write  # noqa: F401  (re-exported by drawings)
 
 if TYPE_CHECKING:  # the sheet's modules (svgwrite, numpy) load only when a sheet is drawn
@@ -132,9 +132,9 @@ def render(sheets: Sequence[Sheet], outdir: str | Path, stem: str, formats: Sequ
     out = Path(outdir)
     for f in formats:
         if f not in FORMATS:
-            raise OutputError(f"unknown output format {f!r}; expected some of {', '.join(FORMATS)}")
+            raise OutputError(Said("pe_unknown_output_format", f=f, v=', '.join(FORMATS)))
     if not (dpi > 0 and dpi <= 1200):
-        raise OutputError(f"dpi {dpi:g} is out of range; expected 1..1200")
+        raise OutputError(Said("pe_dpi_dpi_out", dpi=dpi))
     files: dict[Path, bytes] = {}
     for sh in sheets:
         name = stem if len(sheets) == 1 else f"{stem}-{sh.number}"
@@ -151,7 +151,10 @@ def render(sheets: Sequence[Sheet], outdir: str | Path, stem: str, formats: Sequ
                 doc = tree(svg)
             files[p] = pdf_bytes(doc) if f == "pdf" else png_bytes(doc, dpi)
         if progress is not None:
-            progress(f"sheet {sh.number} of {len(sheets)} drawn ({', '.join(formats)})")
+            from plans.errors import run_language
+            from plans.phrases import say
+
+            progress(say("dr_sheet", run_language(), n=sh.number, total=len(sheets), formats=", ".join(formats)))
     return files
 
 
@@ -165,9 +168,9 @@ def write(files: dict[Path, bytes], outdir: str | Path, *, source: str | Path | 
     try:
         out.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
-        raise OutputError(f"cannot create the output folder {out}: {exc.strerror}") from None
+        raise OutputError(Said("cc_cannot_create_output", out=out, strerror=exc.strerror)) from None
     if not os.access(out, os.W_OK):
-        raise OutputError(f"cannot write to {out}: permission denied")
+        raise OutputError(Said("pe_cannot_write_out", out=out))
     return write_sheets(out, files, source)
 
 

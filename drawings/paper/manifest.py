@@ -14,7 +14,7 @@ import json
 from collections.abc import Iterable
 from pathlib import Path
 
-from plans.errors import OutputError
+from plans.errors import OutputError, Said
 from plans.io import remove as remove_files
 from plans.io import staged_bytes, write_all
 
@@ -47,8 +47,7 @@ def plan_sheets(folder: Path, files: dict[Path, bytes], source: str | Path) -> t
             continue
         clash = sorted(names & set(owned))
         if clash:
-            raise OutputError(f"{folder / clash[0]}: holds a sheet of {other}; refusing to overwrite it with the "
-                              f"sheets of {source} (expected another output folder, or rename one of the files)")
+            raise OutputError(Said("pm_holds_sheet_other", v=folder / clash[0], other=other, source=source))
     stale = [folder / n for n in sources.get(me, []) if n not in names]
     sources = {src: owned for src, owned in sources.items() if Path(src).is_file() or src == me}
     sources[me] = sorted(names)

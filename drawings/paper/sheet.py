@@ -13,12 +13,13 @@ from dataclasses import dataclass, field
 
 from drawings.paper.backend import Prim, Recording, Style, replay
 from drawings.paper.blocks import Frame, frame_of, spread
+from drawings.paper.fonts import use
 from drawings.paper.i18n import tr
 from drawings.paper.packing import blocks_of, free_spots, place_blocks, place_note
 from drawings.paper.panel_frame import Panel
 from drawings.paper.svg import SvgBackend, document
 from drawings.paper.text import layout, wrap
-from plans.errors import InputError
+from plans.errors import InputError, Said
 from plans.scene.sheet import FORMATS, PANEL_KINDS, SHEET_FORMATS, Pin, SheetSpec, sheet_spec  # noqa: F401  (read by the sheets)
 
 MARGIN_LEFT = 20.0
@@ -60,9 +61,10 @@ class Sheet:
     def render(self) -> list[Prim]:
         """Frame, title block and placed panels as paper primitives."""
         rec = Recording()
-        _frame(rec, self)
-        _title_block(rec, self)
-        _frames(rec, self)
+        with use(getattr(self.spec, "font", "dejavu")):  # the title block in the sheet's font
+            _frame(rec, self)
+            _title_block(rec, self)
+            _frames(rec, self)
         prims = list(rec.prims)
         for panel, x, y in self.placed:
             prims.extend(panel.at(x, y))
@@ -306,7 +308,7 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str | None = "
     by_id = {p.pid: p for p in panels}
     for pin in spec.pins:
         if pin.panel not in by_id:
-            raise InputError(f"no panel {pin.panel!r} on this drawing; panels are {', '.join(by_id)}",
+            raise InputError(Said("ps_panel_panel_this", panel=pin.panel, v=', '.join(by_id)),
                              file=path, field="sheet.pins")
     for p in panels:
         check_fits(p, spec, path)
@@ -325,11 +327,10 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str | None = "
             taken.append([tb])
         box = (pin.x, pin.y, pin.x + p.width, pin.y + p.height)
         if box[0] < area[0] - GAP or box[1] < area[1] - GAP or box[2] > area[2] + GAP or box[3] > area[3] + GAP:
-            raise InputError(f"panel {pin.panel} ({p.width:.0f}×{p.height:.0f} mm) at x = {pin.x:g}, "
-                             f"y = {pin.y:g} leaves the frame of the {spec.format} sheet", file=path,
+            raise InputError(Said("ps_panel_panel_width", panel=pin.panel, width=p.width, height=p.height, x=pin.x, y=pin.y, format=spec.format), file=path,
                              field="sheet.pins")
         if any(_overlaps(box, t) for t in taken[pin.sheet - 1]):
-            raise InputError(f"pinned panel {pin.panel} overlaps another pinned panel or the title block",
+            raise InputError(Said("ps_pinned_panel_panel", panel=pin.panel),
                              file=path, field="sheet.pins")
         put(pin.sheet - 1, p, pin.x, pin.y)
     queue = [p for p in panels if p.pid not in pinned]

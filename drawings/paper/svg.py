@@ -123,7 +123,11 @@ class SvgBackend:
                 ts = self.dwg.tspan(run.text, x=[num(run.x)], y=[num(run.y)])
                 if run.size != first.size:
                     ts["font-size"] = num(run.size)
+                if run.font != first.font:
+                    ts["font-family"] = run.font or FONT_FAMILY
                 el.add(ts)
+        if first.font:
+            el["font-family"] = first.font
         if fill != "#000":
             el["fill"] = fill
         self._add(el, eid, cls)
@@ -194,7 +198,7 @@ class SvgWriter:
         if not label.runs:
             return
         first = label.runs[0]
-        attrs = {"font-size": num(first.size), "id": eid, "class": cls}
+        attrs = {"font-size": num(first.size), "id": eid, "class": cls, "font-family": first.font}
         if fill != "#000":
             attrs["fill"] = fill
         if len(label.runs) == 1:
@@ -204,6 +208,8 @@ class SvgWriter:
         spans = []
         for run in label.runs:
             size = f' font-size="{_attr(num(run.size))}"' if run.size != first.size else ""
+            if run.font != first.font:  # a character the sheet's font lacks, in DejaVu Sans
+                size = f' font-family="{_attr(run.font or FONT_FAMILY)}"' + size
             head = f'<tspan{size} x="{_attr(num(run.x))}" y="{_attr(num(run.y))}"'
             spans.append(f"{head}>{_cdata(run.text)}</tspan>" if run.text else head + " />")
         self._el("text", attrs, "", spans)

@@ -14,7 +14,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import lru_cache
 
-from drawings.paper.fonts import metrics
+from drawings.paper.fonts import FAMILIES, FONT_FAMILY, current, metrics, pieces
 
 SCRIPT_SIZE = 0.7
 #: GOST 2.304: letters at least 2.5 mm (:data:`drawings.paper.panel_frame.SMALL_SIZE`); an index is written
@@ -30,6 +30,7 @@ class TextRun:
     y: float  # baseline
     text: str
     size: float  # font size, mm
+    font: str = ""  # the run's family where it is not the sheet's default (DejaVu Sans): "osifont"
 
 
 @dataclass(frozen=True, slots=True)
@@ -93,52 +94,58 @@ def layout(label: str, x: float, y: float, size: float, anchor: str = "start",
 
     anchor: start | middle | end; valign: baseline | middle (of the capitals) | top | bottom.
     """
-    lab = _layout0(label, size, anchor, valign)
+    lab = _layout0(label, size, anchor, valign, current())
     if x == 0.0 and y == 0.0:
         return lab
-    return Label(tuple(TextRun(r.x + x, r.y + y, r.text, r.size) for r in lab.runs),
+    return Label(tuple(TextRun(r.x + x, r.y + y, r.text, r.size, r.font) for r in lab.runs),
                  (lab.box[0] + x, lab.box[1] + y, lab.box[2] + x, lab.box[3] + y), lab.plain)
 
 
 @lru_cache(maxsize=4096)
-def _layout0(label: str, size: float, anchor: str, valign: str) -> Label:
-    """The layout at the origin (cached: labels repeat across panels and positions)."""
+def _layout0(label: str, size: float, anchor: str, valign: str, font: str = "dejavu") -> Label:
+    """The layout at the origin in ``font`` (cached: labels repeat across panels and positions).
+    Each piece is written in runs of one family each (:func:`drawings.paper.fonts.pieces`),
+    each measured in its own family."""
     x = y = 0.0
-    m = metrics()
-    pieces = parse(label)
-    runs: list[tuple[float, float, str, float]] = []  # dx, dy, text, size
+    m = metrics(FAMILIES[font])
+    parts = parse(label)
+    runs: list[tuple[float, float, str, float, str]] = []  # dx, dy, text, size, family
+
+    def put(x0: float, dy: float, text: str, s: float) -> float:
+        """The piece's runs from ``x0``; the x where it ends."""
+        for t, fam in pieces(text, font):
+            runs.append((x0, dy, t, s, fam))
+            x0 += metrics(fam or FONT_FAMILY).width(t, s)
+        return x0
+
     cx = 0.0
     script_x = None  # x where the current script cluster began
     script_end = 0.0
     top, bottom = -m.ascent * size, m.descent * size
-    for text, role in pieces:
+    for text, role in parts:
         if role == "base":
             if script_x is not None:
                 cx = script_end
                 script_x = None
-            w = m.width(text, size)
-            runs.append((cx, 0.0, text, size))
-            cx += w
+            cx = put(cx, 0.0, text, size)
             continue
         s = max(size * SCRIPT_SIZE, min(SCRIPT_MIN, size))
         if script_x is None:
             script_x = cx
             script_end = cx
         dy = SUB_SHIFT * size if role == "sub" else SUP_SHIFT * size
-        w = m.width(text, s)
-        runs.append((script_x, dy, text, s))
-        script_end = max(script_end, script_x + w)
+        script_end = max(script_end, put(script_x, dy, text, s))
         top = min(top, dy - m.ascent * s)
         bottom = max(bottom, dy + m.descent * s)
     if script_x is not None:
         cx = script_end
     width = cx
     ox = {"start": 0.0, "middle": -width / 2, "end": -width}[anchor]
-    cap = 0.73 * size
+    cap = m.cap * size
     oy = {"baseline": 0.0, "middle": cap / 2, "top": -top, "bottom": -bottom}[valign]
     bx, by = x + ox, y + oy
-    out = tuple(TextRun(bx + dx, by + dy, t, s) for dx, dy, t, s in runs)
-    return Label(out, (bx, by + top, bx + width, by + bottom), "".join(p[0] for p in pieces))
+    out = tuple(TextRun(bx + dx, by + dy, t, s, f) for dx, dy, t, s, f in runs)
+    return Label(out, (bx, by + top, bx + width, by + bottom), "".join(p[0] for p in parts))
 
 
 def wrap(text: str, width: float, size: float) -> list[str]:

@@ -5,7 +5,8 @@ by this command, so every other command starts as fast as before."""
 from __future__ import annotations
 
 import argparse
-import sys
+
+from plans.errors import Said
 
 LOOPBACK = ("127.0.0.1", "localhost", "::1")
 
@@ -17,22 +18,24 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--host", default="127.0.0.1",
                    help="the address to listen on (default 127.0.0.1: this computer only)")
     p.add_argument("--open", action="store_true", help="open the page in the web browser")
+    from plans.language import add_option
+
+    add_option(p)
     p.set_defaults(func=_command)
 
 
 def _command(args: argparse.Namespace) -> int:
     from pathlib import Path
 
-    from plans.errors import InputError
+    from plans.errors import InputError, warn
 
     root = Path(args.folder)
     if not root.is_dir():
-        raise InputError(f"{args.folder} is not a folder; expected the project folder", field="folder")
+        raise InputError(Said("wb_folder_folder_project", folder=args.folder), field="folder")
     if not (0 <= args.port <= 65535):
-        raise InputError(f"{args.port} is out of range; expected 0..65535", field="--port")
+        raise InputError(Said("wb_port_out_range", port=args.port), field="--port")
     if args.host not in LOOPBACK:
-        print(f"plans: warning: serving on {args.host}: other computers on the network can read and "
-              f"write the files of {root.resolve()}", file=sys.stderr)
+        warn(Said("w_serving", host=args.host, root=str(root.resolve())))
     from .server import serve
 
     serve(root, host=args.host, port=args.port, open_browser=args.open)

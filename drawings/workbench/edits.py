@@ -20,12 +20,14 @@ from __future__ import annotations
 import threading
 from typing import Any
 
+from plans.errors import Said
+
 
 class EditError(Exception):
     """An edit that cannot be made: a status, one line, and the key path it names."""
 
-    def __init__(self, status: int, message: str, field: str | None = None) -> None:
-        super().__init__(message)
+    def __init__(self, status: int, message: str | Said, field: str | None = None) -> None:
+        super().__init__(str(message))
         self.status, self.message, self.field = status, message, field
 
 
@@ -49,7 +51,7 @@ def _document(text: str) -> Any:
         try:
             doc = tomlkit.parse(text)
         except Exception as exc:  # tomlkit's parse errors have no common public base
-            raise EditError(422, f"not TOML: {' '.join(str(exc).split())}") from None
+            raise EditError(422, Said("we_toml", v=' '.join(str(exc).split()))) from None
     return doc
 
 
@@ -63,8 +65,8 @@ def _keep(text: str, doc: Any) -> None:
 def _check_value(value: Any, keys: list, tables: bool) -> Any:
     ok = (str, int, float, bool, list, dict) if tables else (str, int, float, bool, list)
     if not isinstance(value, ok):
-        what = "a number, text, list or table" if tables else "a number, text or list"
-        raise EditError(400, f"{_name(keys)}: expected {what}")
+        what = Said("we_value_tables") if tables else Said("we_value")
+        raise EditError(400, Said("we_what", v=_name(keys), what=what))
     if isinstance(value, float) and value.is_integer():
         return int(value)  # 120, not 120.0, as a person writes it
     return value
@@ -103,7 +105,7 @@ def _walk(doc: Any, keys: list, make: bool) -> Any:
             else:
                 node = node[int(k)]
         except (KeyError, IndexError, ValueError, TypeError):
-            raise EditError(422, f"{_name(keys)}: no such key in the file", _name(keys)) from None
+            raise EditError(422, Said("we_such_key_file", v=_name(keys)), _name(keys)) from None
     return node
 
 
@@ -131,7 +133,7 @@ def _set(doc: Any, keys: list, value: Any, make: bool) -> None:
         else:
             node[int(last)] = _item(value)
     except (IndexError, ValueError, TypeError):
-        raise EditError(422, f"{_name(keys)}: no such key in the file", _name(keys)) from None
+        raise EditError(422, Said("we_such_key_file", v=_name(keys)), _name(keys)) from None
 
 
 def _is_inline(node: Any) -> bool:
@@ -144,17 +146,17 @@ def _append(doc: Any, keys: list, value: Any) -> None:
     import tomlkit
 
     if not isinstance(value, dict):
-        raise EditError(400, f"{_name(keys)}: expected a table to add")
+        raise EditError(400, Said("we_table_add", v=_name(keys)))
     node = _walk(doc, keys, True)
     last = str(keys[-1])
     if not isinstance(node, dict):
-        raise EditError(422, f"{_name(keys)}: no such key in the file", _name(keys))
+        raise EditError(422, Said("we_such_key_file", v=_name(keys)), _name(keys))
     if last not in node:
         table: Any = node
         table.append(last, tomlkit.aot())
     arr = node[last]
     if not isinstance(arr, list):
-        raise EditError(422, f"{_name(keys)}: not a list of tables in the file", _name(keys))
+        raise EditError(422, Said("we_list_tables_file", v=_name(keys)), _name(keys))
     new = _item(value, top=isinstance(arr, tomlkit.items.AoT))
     if len(arr) and isinstance(new, tomlkit.items.Table):
         _blank_after(arr[-1], new)
@@ -189,7 +191,7 @@ def _delete(doc: Any, keys: list) -> None:
         else:
             del node[int(last)]
     except (KeyError, IndexError, ValueError, TypeError):
-        raise EditError(422, f"{_name(keys)}: no such key in the file", _name(keys)) from None
+        raise EditError(422, Said("we_such_key_file", v=_name(keys)), _name(keys)) from None
     if isinstance(node, tomlkit.items.AoT | list) and len(node) == 0 and len(keys) >= 2:
         _delete(doc, keys[:-1])  # an array left empty: its key goes too ([[loads.force]])
 
@@ -201,19 +203,19 @@ def edit(text: str, ops: dict[str, list]) -> str:
 
     for op in _OPS:
         if not isinstance(ops.get(op, []), list):
-            raise EditError(400, f'"{op}": expected a list')
+            raise EditError(400, Said("we_op_list", op=op))
     doc = _document(text)
     for op in _OPS:
         for item in ops.get(op) or []:
             if op == "delete":
                 keys = item
                 if not (isinstance(keys, list) and keys and all(isinstance(k, str | int) for k in keys)):
-                    raise EditError(400, "each deletion is a key path")
+                    raise EditError(400, Said("we_each_deletion_key"))
                 _delete(doc, keys)
                 continue
             if not (isinstance(item, list) and len(item) == 2 and isinstance(item[0], list) and item[0]
                     and all(isinstance(k, str | int) and not isinstance(k, bool) for k in item[0])):
-                raise EditError(400, f"each {op} is [key path, value]")
+                raise EditError(400, Said("we_each_op_key", op=op))
             keys, value = item
             value = _check_value(value, keys, op != "set")
             if op == "append":

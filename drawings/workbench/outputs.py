@@ -9,7 +9,7 @@ import tomllib
 from pathlib import Path
 from typing import Any
 
-from plans.errors import InputError
+from plans.errors import InputError, Said
 
 #: The kinds of file the explanatory note has a section for, and its figures' resolution.
 NOTE_KINDS = ("linkage", "gears", "cam", "engine")
@@ -64,7 +64,7 @@ def note_file(text: str, stem: str, lang: str) -> bytes:
 
     kind = kind_of(loads_toml(text, f"{stem}.toml"), f"{stem}.toml")
     if kind not in NOTE_KINDS:
-        raise InputError(f"the note has no section for a {kind} file; expected one of {', '.join(NOTE_KINDS)}",
+        raise InputError(Said("wo_note_has_section", kind=kind, v=', '.join(NOTE_KINDS)),
                          file=f"{stem}.toml", field="kind")
     with tempfile.TemporaryDirectory() as tmp:
         src = Path(tmp) / f"{stem}.toml"

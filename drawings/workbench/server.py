@@ -35,7 +35,7 @@ from starlette.requests import Request
 from starlette.responses import JSONResponse, Response
 from starlette.routing import Route
 
-from plans.errors import ConstructionError, InputError, PlansError, one_line
+from plans.errors import ConstructionError, InputError, PlansError, Said, one_line
 
 from .outputs import demo_page, design_json, draw_file, jsonable, note_file
 
@@ -65,17 +65,22 @@ _CSP = ("default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self'
 class Refused(Exception):
     """A request answered with a 4xx and one line."""
 
-    def __init__(self, status: int, message: str, field: str | None = None) -> None:
-        super().__init__(message)
+    def __init__(self, status: int, message: str | Said, field: str | None = None) -> None:
+        super().__init__(str(message))
         self.status, self.message, self.field = status, message, field
 
 
-def _error(status: int, message: str, field: str | None = None, **extra: Any) -> JSONResponse:
-    return JSONResponse({"error": message, "field": field, **extra}, status_code=status)
+def _error(status: int, message: str | Said, field: str | None = None, **extra: Any) -> JSONResponse:
+    """One line (and, for a sentence of the catalogue, the line in each language the page
+    may speak)."""
+    if isinstance(message, Said):
+        extra["errors"] = {lang: message.text(lang) for lang in ("ru", "en")}
+    return JSONResponse({"error": str(message), "field": field, **extra}, status_code=status)
 
 
 def _engine_fields(exc: PlansError) -> dict[str, Any]:
-    out: dict[str, Any] = {"error": one_line(exc), "field": getattr(exc, "field", None)}
+    out: dict[str, Any] = {"error": one_line(exc), "field": getattr(exc, "field", None),
+                           "errors": {lang: one_line(exc, lang) for lang in ("ru", "en")}}  # the page's language
     if isinstance(exc, ConstructionError):
         out.update(group=exc.group, point=exc.point, phi_deg=exc.phi_deg)
     return out
@@ -100,13 +105,13 @@ class Guard:
         headers = {k.decode("latin-1").lower(): v.decode("latin-1") for k, v in scope["headers"]}
         host = headers.get("host", "")
         origin = headers.get("origin")
-        why = None
+        why: Said | None = None
         if host.lower() not in self.hosts:
-            why = f"refused: Host {host!r} is not this server (expected one of {', '.join(sorted(self.hosts))})"
+            why = Said("wr_host", host=host, hosts=", ".join(sorted(self.hosts)))
         elif origin is not None and origin.lower() not in {f"http://{h}" for h in self.hosts}:
-            why = f"refused: a page from {origin!r} may not use this server"
+            why = Said("wr_origin", origin=origin)
         elif headers.get("sec-fetch-site") == "cross-site":
-            why = "refused: a request from another site may not use this server"
+            why = Said("wr_cross_site")
         if why is not None:
             await _error(403, why)(scope, receive, send)
             return
@@ -123,16 +128,16 @@ class Workbench:
     def path(self, rel: str | None, *, must_exist: bool = True) -> Path:
         """The file ``rel`` names inside the folder; anything leading outside is refused."""
         if not rel:
-            raise Refused(400, "missing ?path=: expected a file of the folder", "path")
+            raise Refused(400, Said("wr_missing_path_file"), "path")
         if "\x00" in rel or len(rel) > 1000:
-            raise Refused(400, "the path is not a file name", "path")
+            raise Refused(400, Said("wr_path_file_name"), "path")
         target = (self.root / rel).resolve()
         if not target.is_relative_to(self.root):
-            raise Refused(403, f"refused: {rel} is outside the project folder", "path")
+            raise Refused(403, Said("wr_refused_rel_outside", rel=rel), "path")
         if target.suffix.lower() != ".toml":
-            raise Refused(400, f"{rel}: expected a .toml file of the family", "path")
+            raise Refused(400, Said("wr_rel_toml_file", rel=rel), "path")
         if must_exist and not target.is_file():
-            raise Refused(404, f"{rel}: no such file in the project folder", "path")
+            raise Refused(404, Said("wr_rel_such_file", rel=rel), "path")
         return target
 
     def rel(self, p: Path) -> str:
@@ -141,12 +146,12 @@ class Workbench:
     async def body(self, request: Request) -> bytes:
         size = request.headers.get("content-length")
         if size is not None and (not size.isdigit() or int(size) > MAX_BODY):
-            raise Refused(413, f"the request is larger than {MAX_BODY} bytes")
+            raise Refused(413, Said("wr_request_larger_than", MAX_BODY=MAX_BODY))
         chunks, total = [], 0
         async for chunk in request.stream():
             total += len(chunk)
             if total > MAX_BODY:
-                raise Refused(413, f"the request is larger than {MAX_BODY} bytes")
+                raise Refused(413, Said("wr_request_larger_than", MAX_BODY=MAX_BODY))
             chunks.append(chunk)
         return b"".join(chunks)
 
@@ -154,7 +159,7 @@ class Workbench:
         try:
             return (await self.body(request)).decode("utf-8")
         except UnicodeDecodeError:
-            raise Refused(400, "the body is not UTF-8 text") from None
+            raise Refused(400, Said("wr_body_utf_text")) from None
 
     def source_name(self, request: Request) -> str:
         """The name errors give the text: its file when the page says which, else <scene>."""
@@ -174,7 +179,7 @@ class Workbench:
     async def static(self, request: Request) -> Response:
         name = request.path_params["name"]
         if name not in _STATIC:
-            raise Refused(404, f"{name}: no such file")
+            raise Refused(404, Said("wr_name_such_file", name=name))
         data = resources.files(__package__).joinpath("static", name).read_bytes()
         return Response(data, media_type=_STATIC[name], headers={"Cache-Control": "no-cache"})
 
@@ -203,11 +208,11 @@ class Workbench:
     async def read(self, request: Request) -> Response:
         p = self.path(request.query_params.get("path"))
         if p.stat().st_size > MAX_BODY:
-            raise Refused(413, f"{self.rel(p)} is larger than {MAX_BODY} bytes")
+            raise Refused(413, Said("wr_larger_than_max", v=self.rel(p), MAX_BODY=MAX_BODY))
         try:
             text = p.read_text(encoding="utf-8")
         except UnicodeDecodeError:
-            raise Refused(422, f"{self.rel(p)}: not UTF-8 text") from None
+            raise Refused(422, Said("wr_utf_text", v=self.rel(p))) from None
         return JSONResponse({"path": self.rel(p), **_parsed(text, self.rel(p))})
 
     async def write(self, request: Request) -> Response:
@@ -216,9 +221,9 @@ class Workbench:
         try:
             tomllib.loads(text)
         except tomllib.TOMLDecodeError as exc:
-            raise Refused(422, f"{self.rel(p)}: not TOML ({exc}); nothing written") from None
+            raise Refused(422, Said("wr_toml_exc_nothing", v=self.rel(p), exc=exc)) from None
         if not p.parent.is_dir():
-            raise Refused(404, f"{self.rel(p.parent)}: no such folder in the project folder", "path")
+            raise Refused(404, Said("wr_such_folder_project", v=self.rel(p.parent)), "path")
         from plans.io import atomic_write
 
         await run_in_threadpool(atomic_write, p, text.encode("utf-8"))
@@ -232,7 +237,7 @@ class Workbench:
             if not isinstance(text, str) or not isinstance(sets, list):
                 raise TypeError
         except (ValueError, KeyError, TypeError, AttributeError):
-            raise Refused(400, 'expected {"text": TOML text, "set": [[key path, value], ...]}') from None
+            raise Refused(400, Said("wr_text_toml_text")) from None
         t0 = time.perf_counter()
         if request.query_params.get("solve") == "1":  # the edit and its solve in one answer
             steps = request.query_params.get("steps", "1") != "0"
@@ -265,7 +270,7 @@ class Workbench:
         if isinstance(scene, str):  # the scene it names must be a file of the folder too
             target = (where.parent / scene).resolve()
             if not target.is_relative_to(self.root):
-                raise Refused(403, f"refused: the scene {scene!r} is outside the project folder", "scene")
+                raise Refused(403, Said("wr_refused_scene_scene", scene=scene), "scene")
         report = check(check_from_dict(data, str(where)))
         return json.dumps(report.to_json(), ensure_ascii=False, allow_nan=False).encode("utf-8")
 
@@ -307,7 +312,7 @@ class Workbench:
         """The explanatory note of the file (``plans note``), as DOCX."""
         lang = request.query_params.get("language", "ru")
         if lang not in ("ru", "en"):
-            raise Refused(400, f"language {lang!r}: expected ru or en", "language")
+            raise Refused(400, Said("wr_language_lang_ru", lang=lang), "language")
         text = await self.text(request)
         stem = Path(self.source_name(request)).stem.strip("<>") or "scene"
         data = await run_in_threadpool(note_file, text, stem, lang)
@@ -319,7 +324,7 @@ class Workbench:
         from drawings.paper.export import FORMATS
 
         if fmt not in FORMATS:
-            raise Refused(400, f"format {fmt!r}: expected one of {', '.join(FORMATS)}", "format")
+            raise Refused(400, Said("wr_format_fmt_one", fmt=fmt, v=', '.join(FORMATS)), "format")
         text = await self.text(request)
         stem = Path(self.source_name(request)).stem.strip("<>") or "scene"
         data, name = await run_in_threadpool(draw_file, text, stem, fmt)
@@ -453,14 +458,14 @@ def _at(request: Request) -> int | None:
     if at is None:
         return None
     if not at.isdigit() or len(at) > 6:
-        raise Refused(400, f"at {at!r}: expected a position's number (0, 1, ...)", "at")
+        raise Refused(400, Said("wr_position_number", at=at), "at")
     return int(at)
 
 
 def _view(request: Request) -> str:
     view = request.query_params.get("view", "full")
     if view not in ("full", "page"):
-        raise Refused(400, f"view {view!r}: expected full or page", "view")
+        raise Refused(400, Said("wr_view_view_full", view=view), "view")
     return view
 
 
@@ -484,11 +489,11 @@ def _handler(fn: Any) -> Any:
         except PlansError as exc:
             return engine_error(exc)
         except RecursionError:
-            return _error(422, "the file is nested too deeply")
+            return _error(422, Said("wr_file_nested_too"))
         except OSError as exc:
-            return _error(500, f"cannot read or write: {exc.strerror or exc}")
+            return _error(500, Said("wr_cannot_read_write", v=exc.strerror or exc))
         except Exception as exc:  # noqa: BLE001 - the page shows one line, never a traceback
-            return _error(500, f"internal error: {type(exc).__name__}: {' '.join(str(exc).split())[:300]}")
+            return _error(500, Said("wr_internal_error_name", name=type(exc).__name__, v=' '.join(str(exc).split())[:300]))
 
     return run
 
@@ -550,7 +555,7 @@ def bind(host: str, port: int) -> Any:
         sock.bind((host, port))
     except OSError as exc:
         sock.close()
-        raise InputError(f"cannot listen on {host}:{port}: {exc.strerror}", field="--port") from None
+        raise InputError(Said("ws_cannot_listen_host", host=host, port=port, strerror=exc.strerror), field="--port") from None
     sock.listen(128)  # a browser's first request waits in the queue while the server starts
     return sock
 
@@ -563,7 +568,10 @@ def serve(root: str | Path, *, host: str = "127.0.0.1", port: int = 8765, open_b
     app = make_app(root, hosts_for(host, port))
     shown = "127.0.0.1" if host in ("0.0.0.0", "::") else host
     url = f"http://{'[' + shown + ']' if ':' in shown else shown}:{port}/"
-    print(f"plans serve: {Path(root).resolve()} at {url} (Ctrl-C stops)", flush=True)
+    from plans.errors import run_language
+    from plans.phrases import say
+
+    print(say("sv_serving", run_language(), root=Path(root).resolve(), url=url), flush=True)
     if open_browser:
         import webbrowser
 

@@ -104,6 +104,47 @@ def page_view(out: dict[str, Any]) -> dict[str, Any]:
     return {**out, "positions": positions}
 
 
+def page_symbols(out: dict[str, Any], scene: Any) -> dict[str, dict[str, str]]:
+    """What the page writes for each key it shows, per language: the readings' quantities,
+    the plans' points and segments in the textbook's symbols (ω1, π or p_a as the scene's
+    notation says), the balancing load's rows in words."""
+    from plans.language import again, symbols, textbook_symbol
+    from plans.phrases import say
+    from plans.scene.notation import resolve
+
+    names: set[str] = set()
+    bal: set[str] = set()
+    for pos in out["positions"]:
+        for r in pos.get("readings", []):
+            names.add(r["quantity"])
+            names.update(str(r.get("segment") or "").split())
+        for pl in (pos.get("plans") or {}).values():
+            names.update(pl["points"])
+        if isinstance(pos.get("balancing"), dict):
+            bal.update(k for k, v in pos["balancing"].items() if isinstance(v, int | float))
+            names.add("M_bal" if pos["balancing"].get("kind") == "moment" else "F_bal")
+    rows = {"moment": "wb_bal_moment", "by_kinetostatics": "r_kin", "by_lever": "r_lever", "by_power": "r_power",
+            "exact_difference_percent": "wb_bal_exact", "difference_percent": "wb_bal_drawn"}
+    got: dict[str, dict[str, str]] = {}
+    for lang in ("ru", "en"):
+        pole = resolve(getattr(scene, "scale_style", "") or "", lang)[2]
+        words = {nm: textbook_symbol(nm, lang, pole) for nm in sorted(names)}
+        sym = words.get("M_bal") or words.get("F_bal") or ""
+        for k in sorted(bal):
+            words["balancing." + k] = say(rows[k], lang, sym=sym) if k in rows else k
+        for table in (out.get("cycle") or {}).get("tables", []):  # the tables over the cycle
+            words["cycle." + table["title"]] = again(table["title"], _CYCLE_TITLES, lang)
+            for r in table["rows"]:
+                words["cycle." + r["label"]] = symbols(r["label"], lang) if lang == "ru" else " ".join(
+                    textbook_symbol(w, lang, pole) for w in r["label"].split(" "))
+        got[lang] = words
+    return got
+
+
+#: The catalogue's titles of the tables over the cycle (written in English in the JSON).
+_CYCLE_TITLES = ("y_plans", "y_positions", "y_analogues", "y_inertia", "y_forces", "y_energy")
+
+
 def solve_json(text: str, name: str, steps: bool = True, data: dict[str, Any] | None = None,
                view: str = "full", at: int | None = None) -> bytes:
     """The JSON of ``plans solve --json`` (``steps=False``: without the construction
@@ -126,6 +167,8 @@ def solve_json(text: str, name: str, steps: bool = True, data: dict[str, Any] | 
             else:
                 out = to_json(sol, steps)
                 out = page_view(out) if view == "page" else out
+            if view == "page":
+                out["symbols"] = page_symbols(out, sol.scene)
             got = json.dumps(out, ensure_ascii=False, allow_nan=False, separators=(",", ":")).encode("utf-8")
             if len(got) <= KEEP_BYTES:
                 _keep(_JSON, key, got)
@@ -171,10 +214,16 @@ def _partial(sol: Any, at: int, steps: bool) -> dict[str, Any]:
 def forces_json(text: str, name: str) -> bytes:
     """The force polygons and the lever over the turn (``[]`` when the scene asks for none)."""
     from plans.demo.cycle_forces import cycle_forces
+    from plans.language import page_label
+    from plans.scene.notation import resolve
 
     sol = solved(text, name)
     with _lock_for((text, name)):
         panels = [] if sol.forces is None else cycle_forces(*sol.forces)
+    for pn in panels:  # each label as the page writes it in either language
+        labels = {*(pn.get("points") or {}), *(g["label"] for g in pn.get("segments", []) if g.get("label"))}
+        pn["said"] = {lang: {lb: page_label(lb, lang, resolve(sol.scene.scale_style or "", lang)[2]) for lb in sorted(labels)}
+                      for lang in ("ru", "en")}
     return json.dumps(panels, ensure_ascii=False, allow_nan=False, separators=(",", ":")).encode("utf-8")
 
 

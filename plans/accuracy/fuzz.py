@@ -455,7 +455,9 @@ def run(args: argparse.Namespace) -> int:
     """``plans bench --fuzz N``: 0 when every case kept the promise, 1 otherwise."""
     n = int(args.fuzz)
     if n < 1:
-        print("plans: error: --fuzz: expected a positive number of cases", file=sys.stderr)
+        from plans.errors import Said, error_prefix, run_language
+
+        print(f"{error_prefix()}--fuzz: {Said('bn_fuzz').text(run_language())}", file=sys.stderr)
         return 2
     keep = Path(args.fuzz_keep) if getattr(args, "fuzz_keep", None) else None
     seed = int(getattr(args, "fuzz_seed", 0))

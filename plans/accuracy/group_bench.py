@@ -1,18 +1,19 @@
 """The group's goals: a group of 30 variants made (files, keys, forms, reference sheets)
 with ``plans variants --jobs 2``, and their 30 submissions checked into the gradebook.
 
-Run alone with ``python -m plans.accuracy.group_bench``.
+Measured by ``plans bench`` of the drawing package (``plans variants`` is the renderer's).
 """
 
 from __future__ import annotations
 
+import contextlib
 import csv
-import os
+import io
+import math
 import shutil
-import subprocess
-import sys
 import tempfile
 import time
+from collections.abc import Callable
 from pathlib import Path
 
 from plans.accuracy.timing import Goal
@@ -38,15 +39,20 @@ def _table(samples: Path, folder: Path, n: int = 30) -> Path:
     return out
 
 
+#: The renderer's ``plans`` command line (:func:`drawings.cli.main`), registered when the drawing
+#: package builds ``plans bench``: ``plans variants`` is the renderer's command.
+COMMAND: list[Callable[[list[str]], int]] = []
+
+
 def _variants(table: Path, out: Path) -> tuple[float, str]:
-    """Seconds for the whole command (its start-up included), and its complaint ("" if none)."""
-    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(Path(__file__).resolve().parents[2]),
-                                                         os.environ.get("PYTHONPATH", "")])}
+    """Seconds for the whole command run through the command line's own entry in this process,
+    and its complaint ("" if none)."""
+    err = io.StringIO()
     t0 = time.perf_counter()
-    got = subprocess.run([sys.executable, "-c", "import sys; from drawings.console import main; sys.exit(main())", "variants", str(table), "-o", str(out),
-                          "--jobs", "2", "--quiet"], env=env, capture_output=True, check=False)
+    with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
+        status = COMMAND[0](["variants", str(table), "-o", str(out), "--jobs", "2", "--quiet"])
     took = time.perf_counter() - t0
-    return took, "" if got.returncode == 0 else f"exit {got.returncode}: {got.stderr.decode()[:300]}"
+    return took, "" if status == 0 else f"exit {status}: {err.getvalue()[:300]}"
 
 
 def _check(course: Path, subs: Path) -> float:
@@ -68,6 +74,9 @@ def _check(course: Path, subs: Path) -> float:
 def group_goals(samples: Path) -> list[Goal]:
     if not (samples / "group" / "group.csv").exists():
         return [Goal("group", "samples/group is needed", float("nan"), None)]
+    if not COMMAND:
+        return [Goal("group", "skipped: the renderer is not installed (plans bench of the drawings package)",
+                     math.nan, None)]
     with tempfile.TemporaryDirectory(prefix="plans-group-bench-") as tmp:
         root = Path(tmp)
         table = _table(samples, root)
@@ -84,13 +93,3 @@ def group_goals(samples: Path) -> list[Goal]:
                         took / CHECK_S, took <= CHECK_S))
     return out
 
-
-def main() -> int:
-    samples = Path(__file__).resolve().parents[2] / "samples"
-    for g in group_goals(samples):
-        print(g.line())
-    return 0
-
-
-if __name__ == "__main__":
-    raise SystemExit(main())

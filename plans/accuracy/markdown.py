@@ -146,14 +146,19 @@ def _qorder(q: str) -> tuple[int, str]:
 
 
 
-def goal_line(g: dict[str, Any]) -> str:
-    """``goal: <what> ≤ 300 µs: 212 µs, met`` (a time) or ``≥ 20×: 31×, met`` (a speed-up)."""
+def goal_line(g: dict[str, Any], lang: str = "en") -> str:
+    """``goal: <what> ≤ 300 µs: 212 µs, met`` (a time) or ``≥ 20×: 31×, met`` (a speed-up);
+    the frame of the line in ``lang`` (the goal's own name as the bench names it)."""
     if g["unit"] == "s":
         want, got = f"≤ {fmt(g['limit'], 's')}", fmt(g["value"], "s")
     elif g["unit"] == "× cost":
         want, got = f"≤ {g['limit']:g}×", f"{g['value']:.2f}×"
     else:
         want, got = f"≥ {g['limit']:g}×", f"{g['value']:.1f}×"
+    if lang != "en":
+        from plans.phrases import say
+
+        return say("bn_goal", lang, goal=g["goal"], want=want, got=got, state=say("bn_met" if g["met"] else "bn_not_met", lang))
     return f"goal: {g['goal']} {want}: {got}, {'met' if g['met'] else 'not met'}"
 
 

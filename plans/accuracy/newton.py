@@ -44,7 +44,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import NDArray
 
-from plans.errors import Locked, NotAssemblable
+from plans.errors import Locked, NotAssemblable, Said
 from plans.scene.model import Scene
 
 C = NDArray[np.complex128]
@@ -338,14 +338,13 @@ def solve(scene: Scene, phi_deg: Sequence[float] | R | None = None, *, tol: floa
         if condition:
             conds[k] = np.linalg.cond(Jq)
             if not math.isfinite(conds[k]) or conds[k] > COND_LOCKED:
-                raise Locked(f"the Jacobian of the loop equations is singular (cond = {conds[k]:.3g}): "
-                             f"the mechanism locks here", group="loop equations",
+                raise Locked(Said("nw_jacobian_loop_equations", v=conds[k]), group="loop equations",
                              point=_worst_point(ev, Jq), phi_deg=float(phis[k]))
         # tangent dq/dθ1 for the next predictor, rates from the same Jacobian
         try:
             tan_k = np.asarray(np.linalg.solve(Jq, _unit(ev)), dtype=float)
         except np.linalg.LinAlgError:
-            raise Locked("the Jacobian of the loop equations is singular: the mechanism locks here",
+            raise Locked(Said("nw_jacobian_loop_equations2"),
                          group="loop equations", point=_worst_point(ev, Jq), phi_deg=float(phis[k])) from None
         tangent = tan_k
         out_q[k] = q
@@ -463,8 +462,7 @@ def _not_assemblable(ev: _Eval, q: R, theta1: float, phi: float) -> NotAssemblab
     F = np.abs(ev.residual(X, Y, T, theta1))
     row = int(np.argmax(F))
     jn, pt = _joint_names(ev)[row]
-    return NotAssemblable(f"the loop equations have no solution near the previous position "
-                          f"(largest residual {F[row]:.3g} at joint {jn})",
+    return NotAssemblable(Said("nw_loop_equations_have", v=F[row], jn=jn),
                           group="loop equations", point=pt, phi_deg=float(phi))
 
 

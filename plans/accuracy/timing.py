@@ -61,6 +61,51 @@ def paired(fa: Callable[[], Any], fb: Callable[[], Any], reps: int = 7) -> tuple
     return sorted(ta)[mid], sorted(tb)[mid], sorted(ratios)[mid]
 
 
+def least_paired(fa: Callable[[], Any], fb: Callable[[], Any], reps: int = 41, batch: float = 3e-4,
+                 clock: Callable[[], float] = time.perf_counter) -> tuple[float, float]:
+    """The least time per call of ``fa`` and of ``fb``, measured turn about in short batches
+    (about ``batch`` seconds each, one call at least), ``reps`` turns.  On a loaded machine
+    the scheduler takes the processor away for longer than it gives it (tens of
+    milliseconds out of every few): a batch that long is nearly always cut, one this short
+    mostly is not, and the least of many is what the call itself costs (the load only ever
+    adds to it).  Taking turns, the two see the same machine.  A call longer than the
+    scheduler's share is timed by ``clock=time.process_time``: the processor time it took,
+    without the time it waited for the processor."""
+    def inner(fn: Callable[[], Any]) -> int:
+        fn()
+        t0 = time.perf_counter()
+        fn()
+        return max(1, int(batch / max(time.perf_counter() - t0, 1e-9)))
+
+    na, nb = inner(fa), inner(fb)
+    ta = tb = math.inf
+    for _ in range(reps):
+        t0 = clock()
+        for _ in range(na):
+            fa()
+        ta = min(ta, (clock() - t0) / na)
+        t0 = clock()
+        for _ in range(nb):
+            fb()
+        tb = min(tb, (clock() - t0) / nb)
+    return ta, tb
+
+
+def least_time(fn: Callable[[], Any], reps: int = 41, batch: float = 3e-4) -> float:
+    """The least time per call of ``fn`` over ``reps`` short batches (see :func:`least_paired`)."""
+    fn()
+    t0 = time.perf_counter()
+    fn()
+    n = max(1, int(batch / max(time.perf_counter() - t0, 1e-9)))
+    best = math.inf
+    for _ in range(reps):
+        t0 = time.perf_counter()
+        for _ in range(n):
+            fn()
+        best = min(best, (time.perf_counter() - t0) / n)
+    return best
+
+
 def us(t: float) -> str:
     return f"{t * 1e6:.1f} µs" if t < 1e-3 else f"{t * 1e3:.2f} ms" if t < 1 else f"{t:.2f} s"
 
@@ -85,12 +130,13 @@ def interpreter_env() -> dict[str, str]:
 
 
 def commands_seconds(runs: dict[str, list[str]], root: Path, env: dict[str, str],
-                      reps: int) -> dict[str, tuple[float, float, int]]:
+                      reps: int, least: bool = False) -> dict[str, tuple[float, float, int]]:
     """Median wall time of each ``python args`` in a fresh interpreter, the median processor
     time it took (user and system; NaN where the platform does not tell) and its exit status,
-    after one run of each that compiles its bytecode.  The commands take turns, one run of
-    each per turn: on a shared machine the load drifts less within a turn, so the floor
-    and the commands measured beside it see the same machine."""
+    after one run of each that compiles its bytecode; with ``least``, the least of each
+    (what a start costs when nothing else is in its way: the load only ever adds to it).
+    The commands take turns, one run of each per turn: on a shared machine the load drifts
+    less within a turn, so the floor and the commands measured beside it see the same machine."""
     try:
         import resource
     except ImportError:  # pragma: no cover - not POSIX
@@ -113,7 +159,7 @@ def commands_seconds(runs: dict[str, list[str]], root: Path, env: dict[str, str]
             wall[name].append(time.perf_counter() - t0)
             cpu[name].append(processor() - c0)
             status[name] = status[name] or p.returncode
-    mid = reps // 2
+    mid = 0 if least else reps // 2
     return {name: (sorted(wall[name])[mid], sorted(cpu[name])[mid], status[name]) for name in runs}
 
 

@@ -37,6 +37,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from plans.errors import Said
 from plans.io import loads_toml, read_toml
 from plans.reader import LENGTH_LIMIT, NUMBER_LIMIT, Reader, check_keys, reduce_deg, show
 from plans.units import LENGTH_UNITS, rpm_to_rad_s
@@ -147,32 +148,31 @@ def engine_from_dict(data: dict[str, Any], path: str = "<engine>") -> Engine:
     unit = rd.choice(data, "unit", "", LENGTH_UNITS, default="mm")
     title = data.get("title", Path(path).stem)
     if not isinstance(title, str):
-        raise rd.fail("title", "expected a string")
+        raise rd.fail("title", Said("gm_string"))
     if "r" not in data:
-        raise rd.fail("r", "missing crank radius")
+        raise rd.fail("r", Said("be_missing_crank_radius"))
     r = rd.length(data["r"], "r", unit, positive=True)
     lam = rd.number(data, "lambda")
     if not 0.0 <= lam < 1.0:
-        raise rd.fail("lambda", f"expected 0 <= lambda = r/l < 1 (the rod longer than the crank), got {show(lam)}")
+        raise rd.fail("lambda", Said("be_lambda_rod_longer", got=show(lam)))
     if lam > 0 and r / lam > LENGTH_LIMIT:  # the rod l = r/λ is a length like any other
-        raise rd.fail("lambda", f"the rod l = r/lambda = {r / lam:.3g} m is longer than {LENGTH_LIMIT:g} m; expected "
-                                f"lambda = 0 (no rod) or at least {r / LENGTH_LIMIT:.3g}")
+        raise rd.fail("lambda", Said("be_rod_lambda_longer", v=r / lam, LENGTH_LIMIT=LENGTH_LIMIT, v2=r / LENGTH_LIMIT))
     if "omega" in data and "omega_rpm" in data:
-        raise rd.fail("omega_rpm", "give omega (rad/s) or omega_rpm, not both")
+        raise rd.fail("omega_rpm", Said("be_give_omega_rad"))
     if "omega_rpm" in data:
         omega = rpm_to_rad_s(rd.number(data, "omega_rpm", positive=True))
     else:
         omega = rd.number(data, "omega", positive=True)
     strokes = data.get("strokes", 4)
     if strokes not in (2, 4) or isinstance(strokes, bool):
-        raise rd.fail("strokes", f"expected 2 or 4, got {show(strokes)}")
+        raise rd.fail("strokes", Said("be_msg", got=show(strokes)))
     # an engine with no rotating masses (a balanced crank, a crosshead engine's analysis) is allowed
     m_rot0 = rd.number(data, "m_rot", nonneg=True) if "m_rot" in data else None
     m_rec0 = rd.number(data, "m_rec", positive=True) if "m_rec" in data else None
 
     raw = data.get("cylinders")
     if not isinstance(raw, list) or not raw or not all(isinstance(c, dict) for c in raw):
-        raise rd.fail("cylinders", "expected one table [[cylinders]] per cylinder")
+        raise rd.fail("cylinders", Said("be_one_table_cylinders"))
     n = len(raw)
     for k, body in enumerate(raw):
         check_keys(body, CYLINDER_KEYS, file=path, where=f"cylinders[{k}].")
@@ -180,7 +180,7 @@ def engine_from_dict(data: dict[str, Any], path: str = "<engine>") -> Engine:
              for k, body in enumerate(raw)]
     for k, g in enumerate(banks):
         if not abs(g) < math.pi:
-            raise rd.fail(f"cylinders[{k}].bank_deg", "expected an angle between -180 and 180 degrees")
+            raise rd.fail(f"cylinders[{k}].bank_deg", Said("be_angle_between_degrees"))
     cranks = _cranks(rd, data, raw, banks, int(strokes))
     cyls = []
     for k, body in enumerate(raw):
@@ -190,16 +190,16 @@ def engine_from_dict(data: dict[str, Any], path: str = "<engine>") -> Engine:
         elif n == 1:
             z = 0.0
         else:
-            raise rd.fail(f"{where}z", "missing the cylinder's position along the shaft")
+            raise rd.fail(f"{where}z", Said("be_missing_cylinder_position"))
         m_rot = rd.number(body, "m_rot", where, nonneg=True) if "m_rot" in body else m_rot0
         m_rec = rd.number(body, "m_rec", where, positive=True) if "m_rec" in body else m_rec0
         if m_rot is None:
-            raise rd.fail(f"{where}m_rot", "missing rotating mass (kg), here or as m_rot at the top")
+            raise rd.fail(f"{where}m_rot", Said("be_missing_rotating_mass"))
         if m_rec is None:
-            raise rd.fail(f"{where}m_rec", "missing reciprocating mass (kg), here or as m_rec at the top")
+            raise rd.fail(f"{where}m_rec", Said("be_missing_reciprocating_mass"))
         name = body.get("name", str(k + 1))
         if not isinstance(name, str) or not name:
-            raise rd.fail(f"{where}name", "expected a short text")
+            raise rd.fail(f"{where}name", Said("be_short_text"))
         cyls.append(Cylinder(k + 1, name, cranks[k], z, banks[k], m_rot, m_rec))
     ref = rd.length(data.get("reference_z", 0), "reference_z", unit)
     planes, radius = _counterweights(rd, data, unit, r)
@@ -221,15 +221,14 @@ def _cranks(rd: _Reader, data: dict[str, Any], raw: list[dict[str, Any]], banks:
     if len(given) > 1:
         raise rd.fail(given[1].split("[")[0] if given[1] != "cylinders[].crank_deg"
                       else f"cylinders[{per[0]}].crank_deg",
-                      f"give the cranks one way: {' or '.join(given)}, not both")
+                      Said("be_give_cranks_one", v=' or '.join(given)))
     if "firing_order" in data:
         order = data["firing_order"]
         if (not isinstance(order, list) or any(isinstance(x, bool) or not isinstance(x, int) for x in order)
                 or sorted(order) != list(range(1, n + 1))):
-            raise rd.fail("firing_order", f"expected the numbers 1..{n} of the {n} cylinders, each once, "
-                                          f"got {show(order)}")
+            raise rd.fail("firing_order", Said("be_numbers_cylinders_each", n=n, got=show(order)))
         if order[0] != 1:
-            raise rd.fail("firing_order", f"expected the order to start with cylinder 1, got {show(order)}")
+            raise rd.fail("firing_order", Said("be_order_start_cylinder", got=show(order)))
         delta = math.radians((720.0 if strokes == 4 else 360.0) / n)
         out = [0.0] * n
         for k, cyl in enumerate(order):
@@ -239,11 +238,11 @@ def _cranks(rd: _Reader, data: dict[str, Any], raw: list[dict[str, Any]], banks:
         lst = data["crank_deg"]
         if not isinstance(lst, list) or len(lst) != n:
             got = len(lst) if isinstance(lst, list) else lst
-            raise rd.fail("crank_deg", f"expected one angle per cylinder ({n} cylinders), got {show(got)}")
+            raise rd.fail("crank_deg", Said("be_one_angle_per", n=n, got=show(got)))
         degs = []
         for k, v in enumerate(lst):
             if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
-                raise rd.fail(f"crank_deg[{k}]", f"expected a number of degrees, got {show(v)}")
+                raise rd.fail(f"crank_deg[{k}]", Said("be_number_degrees", got=show(v)))
             degs.append(reduce_deg(float(v)))  # any finite angle, reduced exactly
     elif len(per) == n:
         degs = [rd.angle(body, "crank_deg", f"cylinders[{k}].") for k, body in enumerate(raw)]
@@ -252,7 +251,7 @@ def _cranks(rd: _Reader, data: dict[str, Any], raw: list[dict[str, Any]], banks:
     else:
         missing = next(k for k in range(n) if k not in per)
         raise rd.fail(f"cylinders[{missing}].crank_deg",
-                      f"missing crank angle: give crank_deg for all {n} cylinders, or firing_order")
+                      Said("be_missing_crank_angle", n=n))
     return [_wrap(math.radians(d - degs[0])) for d in degs]
 
 
@@ -260,15 +259,15 @@ def _counterweights(rd: _Reader, data: dict[str, Any], unit: str, r: float
                     ) -> tuple[tuple[float, ...] | None, float]:
     cw = data.get("counterweights", {})
     if not isinstance(cw, dict):
-        raise rd.fail("counterweights", "expected a table [counterweights]")
+        raise rd.fail("counterweights", Said("be_table_counterweights"))
     check_keys(cw, COUNTERWEIGHT_KEYS, file=rd.path, where="counterweights.")
     planes = None
     if "planes" in cw:
         p = cw["planes"]
         if not isinstance(p, list) or len(p) not in (1, 2):
-            raise rd.fail("counterweights.planes", "expected one or two plane positions, e.g. [0, 300]")
+            raise rd.fail("counterweights.planes", Said("be_one_two_plane"))
         planes = tuple(rd.length(v, f"counterweights.planes[{k}]", unit) for k, v in enumerate(p))
         if len(planes) == 2 and abs(planes[0] - planes[1]) < 1e-12:
-            raise rd.fail("counterweights.planes", "expected two different planes")
+            raise rd.fail("counterweights.planes", Said("be_two_different_planes"))
     radius = rd.length(cw["radius"], "counterweights.radius", unit, positive=True) if "radius" in cw else r
     return planes, radius

@@ -27,7 +27,7 @@ import numpy as np
 
 from plans.balancing.analysis import balance
 from plans.balancing.engine import Cylinder, Engine
-from plans.errors import InputError
+from plans.errors import InputError, Said
 
 
 @dataclass(frozen=True, slots=True)
@@ -81,10 +81,10 @@ def scene_dict(engine: Engine, positions: int = 360, crank_deg: float = 0.0,
     """The engine (one crank throw, at ``crank_deg`` ahead of crank 1) as a linkage scene in
     SI units, crank 1 at top dead centre at φ = 0."""
     if not engine.is_planar:
-        raise InputError("the engine has more than one crank throw: it is not a planar linkage",
+        raise InputError(Said("bx_engine_has_more"),
                          file=engine.path, field="cylinders")
     if engine.lam <= 0:
-        raise InputError("lambda = 0 (an infinitely long rod) has no linkage to compare with",
+        raise InputError(Said("bx_lambda_infinitely_long"),
                          file=engine.path, field="lambda")
     n = engine.n
     frame = 2 * n + 2
@@ -133,7 +133,7 @@ def frame_force(engine: Engine, positions: int = 360, crank_deg: float = 0.0,
 def exact_check(engine: Engine, positions: int = 360) -> ExactCheck:
     """Shaking force and moment from the kinetostatics against the harmonic approximation."""
     if engine.lam <= 0:
-        raise InputError("lambda = 0 (an infinitely long rod) has no linkage to compare with",
+        raise InputError(Said("bx_lambda_infinitely_long"),
                          file=engine.path, field="lambda")
     alpha = 2 * np.pi * np.arange(positions) / positions
     b = balance(engine)

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from plans.errors import InputError
+from plans.errors import InputError, Said
 from plans.io import read_toml
 from plans.reader import Reader, check_keys, show
 from plans.units import LENGTH_UNITS, rpm_to_rad_s
@@ -97,15 +97,15 @@ def _number(data: dict[str, Any], key: str, path: str, where: str = "", *, defau
             positive: bool = False, at_least: float | None = None, below: float | None = None) -> float:
     if key not in data:
         if default is None:
-            raise InputError("missing; expected a number", file=path, field=f"{where}{key}")
+            raise InputError(Said("cm_missing_number"), file=path, field=f"{where}{key}")
         return default
     # finite, at most 1e12 and, when positive, at least 1e-12
     v = Reader(path).value(data[key], f"{where}{key}", positive=positive,
                            floor=0.0 if at_least is not None else None)
     if at_least is not None and v < at_least:
-        raise InputError(f"expected at least {at_least:g}, got {v:g}", file=path, field=f"{where}{key}")
+        raise InputError(Said("cm_least_least", at_least=at_least, v=v), file=path, field=f"{where}{key}")
     if below is not None and v >= below:
-        raise InputError(f"expected less than {below:g}, got {v:g}", file=path, field=f"{where}{key}")
+        raise InputError(Said("cm_less_than_below", below=below, v=v), file=path, field=f"{where}{key}")
     return v
 
 
@@ -113,11 +113,11 @@ def _length(data: dict[str, Any], key: str, unit: str, path: str, where: str = "
             default: float | None = None, positive: bool = False, at_least: float | None = None) -> float:
     if key not in data:
         if default is None:
-            raise InputError("missing; expected a length", file=path, field=f"{where}{key}")
+            raise InputError(Said("cm_missing_length"), file=path, field=f"{where}{key}")
         return default
     v = Reader(path).length(data[key], f"{where}{key}", unit, positive=positive)  # finite, 1 µm .. 10 km (or 0)
     if at_least is not None and v < at_least:
-        raise InputError(f"expected at least {at_least:g}, got {show(data[key])}", file=path, field=f"{where}{key}")
+        raise InputError(Said("cm_least_least2", at_least=at_least, got=show(data[key])), file=path, field=f"{where}{key}")
     return v
 
 
@@ -126,10 +126,10 @@ def _choice(data: dict[str, Any], key: str, choices: Iterable[str], path: str, w
     choices = tuple(choices)
     v = data.get(key, default)
     if v is None:
-        raise InputError(f"missing; expected one of {', '.join(map(repr, choices))}", file=path,
+        raise InputError(Said("cm_missing_one", v=', '.join(map(repr, choices))), file=path,
                          field=f"{where}{key}")
     if v not in choices:
-        raise InputError(f"expected one of {', '.join(map(repr, choices))}, got {show(v)}", file=path,
+        raise InputError(Said("gm_one", v=', '.join(map(repr, choices)), got=show(v)), file=path,
                          field=f"{where}{key}")
     return str(v)
 
@@ -149,32 +149,28 @@ def cam_from_dict(data: dict[str, Any], path: str) -> Cam:
         flat = data["face"] == "flat"
     if flat:
         if "roller" in data:
-            raise InputError("a flat face has no roller; give face = \"flat\" or roller, not both",
+            raise InputError(Said("cm_flat_face_has"),
                              file=path, field="roller")
         if osc:
-            raise InputError("a flat face is read for the translating follower; give the oscillating "
-                             "follower a roller", file=path, field="face")
+            raise InputError(Said("cm_flat_face_read"), file=path, field="face")
         roller = 0.0
     else:
         roller = _length(data, "roller", unit, path, default=0.0, at_least=0.0)
         if roller >= r0:
-            raise InputError(f"the roller must be smaller than the base radius ({show(data['roller'])} vs "
-                             f"{show(data['base_radius'])})", file=path, field="roller")
+            raise InputError(Said("cm_roller_must_smaller", got=show(data['roller']), got2=show(data['base_radius'])), file=path, field="roller")
     offset = _length(data, "offset", unit, path, default=0.0)
     if not osc and abs(offset) >= r0:
-        raise InputError(f"the offset must be smaller than the base radius ({show(data.get('offset'))} "
-                         f"vs {show(data['base_radius'])})", file=path, field="offset")
+        raise InputError(Said("cm_offset_must_smaller", got=show(data.get('offset')), got2=show(data['base_radius'])), file=path, field="offset")
     arm = pivot = 0.0
     if osc:
         for key in ("arm", "pivot"):
             if key not in data:
-                raise InputError("missing; an oscillating follower needs arm and pivot (lengths)",
+                raise InputError(Said("cm_missing_oscillating_follower"),
                                  file=path, field=key)
         arm = _length(data, "arm", unit, path, positive=True)
         pivot = _length(data, "pivot", unit, path, positive=True)
         if not abs(arm - r0) < pivot < arm + r0:
-            raise InputError("the base circle cannot reach the roller: need |arm − base_radius| < pivot "
-                             "< arm + base_radius", file=path, field="pivot")
+            raise InputError(Said("cm_base_circle_cannot"), file=path, field="pivot")
     # ω from 1e-6 to 1e6 rad/s, as every crank's (ω² stays finite, 1/ω too)
     omega = rpm_to_rad_s(_number(data, "omega_rpm", path, positive=True, at_least=1e-5, below=1e7))
     sense = _choice(data, "sense", ("ccw", "cw"), path, default="ccw")
@@ -184,14 +180,14 @@ def cam_from_dict(data: dict[str, Any], path: str) -> Cam:
                     below=90)
     step = _number(data, "step_deg", path, default=1.0, positive=True, at_least=0.01)
     if step > 30 or abs(360 / step - round(360 / step)) > 1e-9:
-        raise InputError(f"expected a divisor of 360 not above 30, got {step:g}", file=path, field="step_deg")
+        raise InputError(Said("cm_divisor_above_step", step=step), file=path, field="step_deg")
     phases = _phases(data, path, unit, osc)
     h = max(p.lift0 + max(p.stroke, 0.0) for p in phases)
     if osc and h >= math.pi / 2:
-        raise InputError("the swing must stay below 90°", file=path, field="phases")
+        raise InputError(Said("cm_swing_must_stay"), file=path, field="phases")
     title = data.get("title", Path(path).stem)
     if not isinstance(title, str):
-        raise InputError(f"expected a string, got {show(title)}", file=path, field="title")
+        raise InputError(Said("cm_string", got=show(title)), file=path, field="title")
     return Cam(path, title, unit, follower, r0, offset, roller, flat, arm,
                pivot, omega, 1 if sense == "ccw" else -1, math.radians(a_rise), math.radians(a_ret), step,
                phases, h, data)
@@ -200,7 +196,7 @@ def cam_from_dict(data: dict[str, Any], path: str) -> Cam:
 def _phases(data: dict[str, Any], path: str, unit: str, osc: bool) -> tuple[Phase, ...]:
     raw = data.get("phases")
     if not isinstance(raw, list) or not raw or not all(isinstance(p, dict) for p in raw):
-        raise InputError("expected [[phases]] tables (rise, dwell, return)", file=path, field="phases")
+        raise InputError(Said("cm_phases_tables_rise"), file=path, field="phases")
     lift_key = "swing_deg" if osc else "stroke"
     out: list[Phase] = []
     start = lift = 0.0
@@ -212,12 +208,11 @@ def _phases(data: dict[str, Any], path: str, unit: str, osc: bool) -> tuple[Phas
         angle = math.radians(angle_deg)
         wrong = "stroke" if osc else "swing_deg"
         if wrong in ph:
-            raise InputError(f"a {'n oscillating' if osc else ' translating'} follower's lift is "
-                             f"{lift_key}", file=path, field=f"{where}{wrong}")
+            raise InputError(Said("cm_follower_lift_lift", v='n oscillating' if osc else ' translating', lift_key=lift_key), file=path, field=f"{where}{wrong}")
         if kind == "dwell":
             for key in (lift_key, "law", "table"):
                 if key in ph:
-                    raise InputError("a dwell has no lift and no law", file=path, field=f"{where}{key}")
+                    raise InputError(Said("cm_dwell_has_lift"), file=path, field=f"{where}{key}")
             out.append(Phase(kind, start, angle, lift, 0.0, "dwell", _dwell))
             start += angle
             continue
@@ -234,7 +229,7 @@ def _phases(data: dict[str, Any], path: str, unit: str, osc: bool) -> tuple[Phas
             else:
                 stroke = _length(ph, lift_key, unit, path, where, positive=True)
             if stroke > lift * (1 + _TOL) + 1e-15 or lift <= 0:
-                raise InputError("the return is longer than the lift reached so far", file=path,
+                raise InputError(Said("cm_return_longer_than"), file=path,
                                  field=f"{where}{lift_key}")
             stroke = -min(stroke, lift)
         name = _choice(ph, "law", LAW_NAMES, path, where)
@@ -242,16 +237,16 @@ def _phases(data: dict[str, Any], path: str, unit: str, osc: bool) -> tuple[Phas
             law = _table(ph, path, where, abs(stroke), angle_deg, unit, osc)
         else:
             if "table" in ph:
-                raise InputError("a table is read only with law = \"table\"", file=path, field=f"{where}table")
+                raise InputError(Said("cm_table_read_only"), file=path, field=f"{where}table")
             law = LAWS[name]
         out.append(Phase(kind, start, angle, lift, stroke, name, law))
         start += angle
         lift += stroke
     total = math.degrees(start)
     if abs(total - 360.0) > 1e-6:
-        raise InputError(f"the phases' angle_deg sum to {total:g}°; expected 360°", file=path, field="phases")
+        raise InputError(Said("cm_phases_angle_deg", total=total), file=path, field="phases")
     if abs(lift) > 1e-12:
-        raise InputError("the phases leave the follower lifted; the returns must bring it back to the start",
+        raise InputError(Said("cm_phases_leave_follower"),
                          file=path, field="phases")
     return tuple(out)
 
@@ -273,23 +268,22 @@ def _table(ph: dict[str, Any], path: str, where: str, stroke: float, angle_deg: 
             isinstance(r, list) and len(r) == 2 and all(isinstance(v, int | float) and not isinstance(v, bool)
                                                        and abs(v) <= 1e12 and math.isfinite(v) for v in r)
             for r in rows):
-        raise InputError("expected at least 3 rows [angle_deg, lift] of finite numbers", file=path, field=field)
+        raise InputError(Said("cm_least_rows_angle"), file=path, field=field)
     ang = [float(r[0]) for r in rows]
     scale = math.radians(1.0) if osc else LENGTH_UNITS[unit]
     lift = [float(r[1]) * scale for r in rows]
     if any(b <= a for a, b in zip(ang, ang[1:], strict=False)):
-        raise InputError("the angles must increase", file=path, field=field)
+        raise InputError(Said("cm_angles_must_increase"), file=path, field=field)
     gap = 1e-6 * angle_deg  # closer rows make the spline's equations singular
     if any(b - a < gap for a, b in zip(ang, ang[1:], strict=False)):
-        raise InputError(f"rows closer than {gap:g}°; expected the angles at least {gap:g}° apart",
+        raise InputError(Said("cm_rows_closer_than", gap=gap),
                          file=path, field=field)
     if abs(ang[0]) > 1e-9 or abs(ang[-1] - angle_deg) > 1e-9:
-        raise InputError(f"the table must run from 0 to the phase's {angle_deg:g}°", file=path, field=field)
+        raise InputError(Said("cm_table_must_run", angle_deg=angle_deg), file=path, field=field)
     if abs(lift[0]) > 1e-12:
-        raise InputError("the table must start at lift 0", file=path, field=field)
+        raise InputError(Said("cm_table_must_start"), file=path, field=field)
     if abs(lift[-1] - stroke) > 1e-9 * max(1.0, stroke) and abs(lift[-1] - stroke) > 1e-12:
         shown = rows[-1][1]
         want = math.degrees(stroke) if osc else stroke / LENGTH_UNITS[unit]
-        raise InputError(f"the law does not reach the stroke: the table ends at {shown:g}, the stroke is "
-                         f"{want:g}", file=path, field=field)
+        raise InputError(Said("cm_law_does_reach", shown=shown, want=want), file=path, field=field)
     return table_law([a / angle_deg for a in ang], [v / stroke for v in lift])

@@ -31,9 +31,10 @@ from pathlib import Path
 from typing import Any
 
 from plans.check.checkfile import SCALE_KINDS, CheckFile, check_from_dict
-from plans.errors import InputError, OutputError, PlansError, one_line
+from plans.errors import InputError, OutputError, PlansError, Said, one_line
 from plans.io import dumps, refuse_input, write_all
 from plans.scene.model import Scene
+from plans.tolerances import SAME_ANGLE_DEG
 
 _FIXED = ("quantity", "phi_deg", "figure")
 
@@ -134,9 +135,9 @@ def _number(text: str, path: str, where: str) -> float | int | str:
     except ValueError:
         if any(c.isalpha() for c in t):
             return t  # a length with its unit: "65 mm"
-        raise InputError(f"expected a number, got {text!r}", file=path, field=where) from None
+        raise InputError(Said("cf_number_text", text=text), file=path, field=where) from None
     if not math.isfinite(x):
-        raise InputError(f"expected a finite number, got {text!r}", file=path, field=where)
+        raise InputError(Said("cf_finite_number_text", text=text), file=path, field=where)
     return int(x) if t.lstrip("+-").isdigit() else x
 
 
@@ -146,11 +147,10 @@ def read_form(path: str | Path) -> list[tuple[str, CheckFile]]:
     try:
         text = Path(path).read_text(encoding="utf-8-sig")
     except UnicodeDecodeError:
-        raise InputError("expected a CSV form in UTF-8", file=path) from None
+        raise InputError(Said("cf_csv_form_utf"), file=path) from None
     rows = list(csv.reader(io.StringIO(text)))
     if not rows or [c.strip() for c in rows[0][:3]] != list(_FIXED) or len(rows[0]) < 4:
-        raise InputError(f"expected a CSV form whose first row is {','.join(_FIXED)},<student columns> "
-                         "(plans check --template SCENE --form csv writes one)", file=path, field="row 1")
+        raise InputError(Said("cf_csv_form_whose", v=','.join(_FIXED)), file=path, field="row 1")
     cols = rows[0][3:]
     subs: list[dict[str, Any]] = [{"format": 1, "scales": {}, "positions": {}} for _ in cols]
     for r, row in enumerate(rows[1:], 2):
@@ -171,17 +171,17 @@ def read_form(path: str | Path) -> list[tuple[str, CheckFile]]:
             elif quantity.startswith("scales."):
                 parts = quantity.split(".")
                 if len(parts) != 3 or parts[1] not in SCALE_KINDS or parts[2] not in ("mu", "K"):
-                    raise InputError(f"expected scales.<{'|'.join(SCALE_KINDS)}>.<mu|K>, got {quantity!r}",
+                    raise InputError(Said("cf_scales_mu_quantity", v='|'.join(SCALE_KINDS), quantity=quantity),
                                      file=path, field=where)
                 sub["scales"][parts[1]] = {parts[2]: _number(cell, path, where)}
             else:
                 try:
                     p = float(phi)
                 except ValueError:
-                    raise InputError(f"expected the crank angle in degrees, got {phi!r}", file=path,
+                    raise InputError(Said("cf_crank_angle_degrees", phi=phi), file=path,
                                      field=f"row {r}, phi_deg") from None
                 if figure not in ("mm", "value"):
-                    raise InputError(f"expected mm or value, got {figure!r}", file=path, field=f"row {r}, figure")
+                    raise InputError(Said("cf_mm_value_figure", figure=figure), file=path, field=f"row {r}, figure")
                 pos = sub["positions"].setdefault(p, {"phi_deg": p, "measured": {}, "values": {}})
                 pos["measured" if figure == "mm" else "values"][quantity] = _number(cell, path, where)
     out = []
@@ -195,7 +195,7 @@ def read_form(path: str | Path) -> list[tuple[str, CheckFile]]:
         sub.setdefault("student", f"column {col}")
         out.append((col, check_from_dict(sub, f"{path}[{col}]")))
     if not out:
-        raise InputError("no student's figures in any column", file=path)
+        raise InputError(Said("cf_student_figures_any"), file=path)
     return out
 
 
@@ -215,25 +215,24 @@ def run_template(args: argparse.Namespace) -> int:
     try:
         scene_path = Path(args.template)
         if args.path:
-            raise InputError("--template writes a blank form: give no check file with it", file=args.path)
+            raise InputError(Said("cf_template_writes_blank"), file=args.path)
         scene = load_scene(scene_path)
         phis = None
         if args.phi:
             try:
                 phis = tuple(float(x) for x in args.phi.split(","))
             except ValueError:
-                raise InputError(f"expected angles in degrees separated by commas, got {args.phi!r}",
+                raise InputError(Said("cf_angles_degrees_separated", phi=args.phi),
                                  field="--phi") from None
             known = scene.driver.phis_deg
             for p in phis:
-                if not any(abs(p - q) < 1e-9 for q in known):
-                    raise InputError(f"position {p:g}° is not in the scene (it has "
-                                     f"{', '.join(f'{q:g}°' for q in known)})", file=str(scene_path), field="--phi")
+                if not any(abs(p - q) < SAME_ANGLE_DEG for q in known):
+                    raise InputError(Said("cf_position_scene_it", p=p, v=', '.join(f'{q:g}°' for q in known)), file=str(scene_path), field="--phi")
         target = Path(args.output) if args.output else None
         ref = str(scene_path.resolve()) if target is None else scene_reference(scene_path, target)
         if args.form == "csv":
             if not 1 <= args.students <= 500:
-                raise InputError(f"expected 1 to 500 student columns, got {args.students}", field="--students")
+                raise InputError(Said("cf_student_columns_students", students=args.students), field="--students")
             text = template_csv(scene, ref, phis, args.students)
         else:
             text = template_toml(scene, ref, phis)
@@ -254,7 +253,7 @@ def put_form(text: str, target: Path | None, source: str | Path, quiet: bool) ->
         return 0
     refuse_input(str(target), source)
     if not target.parent.is_dir():
-        raise OutputError(f"{target}: no such folder {target.parent}")
+        raise OutputError(Said("cf_target_such_folder", target=target, parent=target.parent))
     write_all({target: text})
     if not quiet:
         print(target)

@@ -71,6 +71,7 @@ from plans.check.providers import STUDENT_ONLY, Context, Exact, exact_value, kno
 from plans.check.relations import relation_findings
 from plans.errors import InputError, OutputError, PlansError, Said, os_reason
 from plans.io import atomic_write
+from plans.tolerances import VERDICT_REL
 from plans.units import DUST, percent
 
 _SCALE_UNIT = {"length": "mm/m", "velocity": "mm/(m/s)", "acceleration": "mm/(m/s²)", "force": "mm/N"}
@@ -185,8 +186,7 @@ def check(cf: CheckFile) -> Report:
                 w0 = pos.written(q)[0]
                 known = ", ".join(known_quantities(ctx, k))
                 extra = f" ({ctx._forces_error})" if ctx._forces_error else ""
-                raise InputError(f"the scene has no quantity {q!r} at {pos.phi_deg:g}°{extra}; "
-                                 f"expected one of {known}", file=cf.path, field=w0.field)
+                raise InputError(Said("cr_scene_has_quantity", q=q, phi_deg=pos.phi_deg, extra=extra, known=known), file=cf.path, field=w0.field)
             items += _items(cf, pos, q, ex)
     findings: list[Finding] = []
     for pos in cf.positions:
@@ -211,7 +211,7 @@ def _items(cf: CheckFile, pos: StudentPosition, q: str, ex: Exact) -> list[Item]
     measured = pos.written(q, "measured")
     mu = ex.mm_per_unit
     if measured and not mu:
-        raise InputError(f"{q} is not read off a plan at a scale the check file gives: write it under values",
+        raise InputError(Said("cr_read_off_plan", q=q),
                          file=cf.path, field=measured[0].field)
     rel = cf.tolerance.arithmetic_pct / 100.0
     # a value derived from a measured segment is as good as the reading (±segment_mm),
@@ -257,7 +257,7 @@ def _items(cf: CheckFile, pos: StudentPosition, q: str, ex: Exact) -> list[Item]
             tol = t.rule_pct / 100.0 * max(abs(ex.value), 0.05 * ex.ref)
             model = "rule"
         tol = max(tol, slack)
-        verdict = "pass" if abs(diff) <= tol * (1 + 1e-9) else "fail"
+        verdict = "pass" if abs(diff) <= tol * (1 + VERDICT_REL) else "fail"
         out.append(Item(q, pos.phi_deg, student, student_mm, ex.value, exact_mm, ex.unit, err_pct, err_mm,
                         tol, None if not mu else tol * mu, model, verdict, where, w.field, ex.source,
                         figure, ex.plan, ex.segment))

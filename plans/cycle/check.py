@@ -37,7 +37,7 @@ from typing import Any
 
 import numpy as np
 
-from plans.errors import InputError, OutputError
+from plans.errors import InputError, OutputError, Said
 from plans.forces.loads import apply_loads, parse_loads
 from plans.io import dumps, read_toml, refuse_input, write_all
 from plans.kinematics.exact import solve
@@ -105,13 +105,13 @@ def is_cycle_check(path: str | Path) -> bool:
     return isinstance(data.get("cycle"), dict) and "positions" not in data
 
 
-def _fail(path: str, field: str, msg: str) -> InputError:
+def _fail(path: str, field: str, msg: str | Said) -> InputError:
     return InputError(msg, file=path, field=field)
 
 
 def _scale(path: str, raw: Any, field: str) -> float:
     if not (isinstance(raw, dict) and len(raw) == 1 and set(raw) <= {"mu", "K"}):
-        raise _fail(path, field, "expected { mu = mm per unit } or { K = unit per mm }")
+        raise _fail(path, field, Said("cc_mu_mm_per"))
     (k, v), = raw.items()
     f = Reader(path).value(v, f"{field}.{k}", positive=True)
     return f if k == "mu" else 1.0 / f
@@ -119,18 +119,18 @@ def _scale(path: str, raw: Any, field: str) -> float:
 
 def _rows(path: str, raw: Any, where: str, n: int) -> dict[str, list[float | None]]:
     if not isinstance(raw, dict):
-        raise _fail(path, where, "expected a table of name = [one figure per position]")
+        raise _fail(path, where, Said("cc_table_name_one"))
     out = {}
     for name, vals in raw.items():
         f = f"{where}.{name}"
         if not (isinstance(vals, list) and len(vals) == n):
-            raise _fail(path, f, f"expected {n} figures, one per position of cycle.phi_deg")
+            raise _fail(path, f, Said("cc_figures_one_per", n=n))
         row: list[float | None] = []
         for k, v in enumerate(vals):
             if v == "" or v == "-":
                 row.append(None)
             elif isinstance(v, bool) or not isinstance(v, int | float):
-                raise _fail(path, f"{f}[{k}]", f"expected numbers (or \"-\" for none), got {show(v)}")
+                raise _fail(path, f"{f}[{k}]", Said("cc_numbers_none", got=show(v)))
             else:
                 row.append(Reader(path).value(v, f"{f}[{k}]"))
         out[name] = row
@@ -174,20 +174,20 @@ def check_cycle(path: str | Path) -> CycleReport:
     rd.keys(cyc, _KEYS, "cycle.")
     scene_ref = data.get("scene")
     if not isinstance(scene_ref, str):
-        raise _fail(path, "scene", "expected the path of the scene file")
+        raise _fail(path, "scene", Said("cc_path_scene_file"))
     target = Path(scene_ref) if Path(scene_ref).is_absolute() else Path(path).parent / scene_ref
     if not target.is_file():
-        raise _fail(path, "scene", f"scene file {scene_ref!r} not found (looked at {target})")
+        raise _fail(path, "scene", Said("cc_scene_file_scene", scene_ref=scene_ref, target=target))
     scene = load_scene(target)
     phis = cyc.get("phi_deg")
     if not (isinstance(phis, list) and phis and all(isinstance(p, int | float) and not isinstance(p, bool)
                                                     for p in phis)):
-        raise _fail(path, "cycle.phi_deg", "expected the student's crank angles, e.g. [0, 30, 60]")
+        raise _fail(path, "cycle.phi_deg", Said("cc_student_crank_angles"))
     phis_a = np.asarray([rd.value(p, "cycle.phi_deg", limit=ANGLE_LIMIT_DEG, floor=0.0) for p in phis], float)
     n = len(phis)
     sign = cyc.get("sign", "driving")
     if sign not in ("driving", "resisting"):
-        raise _fail(path, "cycle.sign", f"expected \"driving\" or \"resisting\", got {show(sign)}")
+        raise _fail(path, "cycle.sign", Said("cc_driving_resisting", got=show(sign)))
     mu_v = _scale(path, cyc["velocity_scale"], "cycle.velocity_scale") if "velocity_scale" in cyc else None
     mu_an = _scale(path, cyc["analogue_scale"], "cycle.analogue_scale") if "analogue_scale" in cyc else None
     seg_tol = rd.number(cyc, "segment_mm", "cycle.", default=1.0, positive=True)
@@ -212,10 +212,9 @@ def check_cycle(path: str | Path) -> CycleReport:
     for name, row in measured.items():
         seg = _segment(scene, name)
         if seg is None:
-            raise _fail(path, f"cycle.measured.{name}", "not a segment of the plan: p + a point (pc) or two "
-                                                       "points (bc, bs2)")
+            raise _fail(path, f"cycle.measured.{name}", Said("cc_segment_plan_point"))
         if mu_v is None and mu_an is None:
-            raise _fail(path, "cycle.velocity_scale", "segments need the student's velocity_scale or analogue_scale")
+            raise _fail(path, "cycle.velocity_scale", Said("cc_segments_need_student"))
         vb = kin.point(seg[1])[1]
         va = 0 if seg[0] is None else kin.point(seg[0])[1]
         mm = np.abs(vb - va) * (mu_v if mu_v is not None else (mu_an or 0.0) / w)
@@ -231,8 +230,7 @@ def check_cycle(path: str | Path) -> CycleReport:
     for name, row in values.items():
         ex = _exact_value(scene, kin, name, exact_rows)
         if ex is None:
-            raise _fail(path, f"cycle.values.{name}", f"the scene has no such row; expected one of "
-                                                      f"{sorted(exact_rows)} or v_X, v_XY")
+            raise _fail(path, f"cycle.values.{name}", Said("cc_scene_has_such", v=sorted(exact_rows)))
         vals, unit = ex
         ref = VANISH * float(np.max(np.abs(vals)))
         for k, s in enumerate(row):
@@ -245,7 +243,7 @@ def check_cycle(path: str | Path) -> CycleReport:
     fly = cyc.get("flywheel", {})
     if fly:
         if not isinstance(fly, dict) or set(fly) - {"inertia"} or "inertia" not in fly:
-            raise _fail(path, "cycle.flywheel", "expected { inertia = kg·m² }")
+            raise _fail(path, "cycle.flywheel", Said("cc_inertia_kg"))
         s = rd.value(fly["inertia"], "cycle.flywheel.inertia", positive=True)
         d = dynamics(scene)
         e = d.flywheel.inertia_exact
@@ -358,7 +356,7 @@ def run_file(target: Path, args: argparse.Namespace) -> int:
         try:
             out.mkdir(parents=True, exist_ok=True)
         except OSError as exc:
-            raise OutputError(f"cannot create the output folder {out}: {exc.strerror}") from None
+            raise OutputError(Said("cc_cannot_create_output", out=out, strerror=exc.strerror)) from None
         files.update(outputs(rep, target, out, lang))
     write_all(files)
     if args.json == "-":

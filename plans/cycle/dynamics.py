@@ -34,7 +34,7 @@ from typing import Any, cast
 import numpy as np
 from numpy.typing import NDArray
 
-from plans.errors import InputError
+from plans.errors import InputError, Said
 from plans.forces.loads import Loads, apply_loads, parse_loads
 from plans.kinematics.construction import nice_scale
 from plans.kinematics.exact import Kinematics, solve
@@ -224,8 +224,7 @@ def _driving(scene: Scene, spec: DynamicsSpec, A_end: float, scale: float, cycle
         return need
     given = spec.driving * (1 if scene.driver.omega > 0 else -1)
     if abs(given - need) > 1e-3 * max(scale, 1e-300):
-        raise InputError(f"a driving moment of {spec.driving:g} N·m does not balance the cycle's work: the steady "
-                         f"cycle needs {need:.6g} N·m (or driving = \"constant\")", file=scene.path,
+        raise InputError(Said("cd_driving_moment_driving", driving=spec.driving, need=need), file=scene.path,
                          field="dynamics.driving")
     return given
 
@@ -324,8 +323,7 @@ def dynamics(scene: Scene, spec: DynamicsSpec | None = None, structure: Structur
     m = len(nodes)
     tab, ex = _split(both, slice(0, m)), _split(both, slice(m, None))
     if not np.any(ex.M_pr != 0):
-        raise InputError("the scene applies no load to the machine (no gravity, gas or external force): "
-                         "there is no fluctuation for a flywheel to smooth", file=scene.path, field="loads")
+        raise InputError(Said("cd_scene_applies_load"), file=scene.path, field="loads")
     omega_m = abs(scene.driver.omega)
     delta = spec.delta
     rad = np.radians(nodes - phi0)
@@ -339,8 +337,7 @@ def dynamics(scene: Scene, spec: DynamicsSpec | None = None, structure: Structur
     M_d_e = _driving(scene, spec, float(A_c_e[-1]), float(np.max(np.abs(ex.M_pr))), cycle)
     dT_e = A_c_e + M_d_e * rad_e
     if np.ptp(dT_e) <= 1e-12 * float(np.max(np.abs(ex.M_pr))) * math.radians(cycle):
-        raise InputError("the loads' moment does not vary over the cycle: the kinetic energy does not change "
-                         "and there is nothing for a flywheel to smooth", file=scene.path, field="loads")
+        raise InputError(Said("cd_loads_moment_does"), file=scene.path, field="loads")
     # a given driving moment balances the exact work; the graphical one is read off A_c's end
     M_d = -float(A_c[-1]) / math.radians(cycle) if spec.driving is None else M_d_e
     A_d = M_d * rad
@@ -394,11 +391,11 @@ def _check_cycle(scene: Scene, loads: Loads, cycle: float) -> None:
         return
     for gl in loads.gas:
         if gl.fires is not None or gl.period == 720:
-            raise InputError(f"{gl.name} is given over the four-stroke cycle (720°); set cycle_deg = 720",
+            raise InputError(Said("cd_name_given_over", name=gl.name),
                              file=scene.path, field="dynamics.cycle_deg")
     for ml in loads.moments:
         if ml.period == 720 and (ml.table is not None or ml.expression is not None):
-            raise InputError(f"{ml.name} is given over 720°; set cycle_deg = 720", file=scene.path,
+            raise InputError(Said("cd_name_given_over2", name=ml.name), file=scene.path,
                              field="dynamics.cycle_deg")
 
 

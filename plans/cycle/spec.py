@@ -32,7 +32,7 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
-from plans.errors import InputError
+from plans.errors import InputError, Said
 from plans.reader import Reader, show
 from plans.scene.model import Scene
 
@@ -77,17 +77,17 @@ QUANTITIES = ("s", "v", "a")
 METHODS = ("chords", "tangents")
 
 
-def _fail(scene: Scene, field: str, msg: str) -> InputError:
+def _fail(scene: Scene, field: str, msg: str | Said) -> InputError:
     return InputError(msg, file=scene.path, field=field)
 
 
 def _table(scene: Scene, key: str, known: set[str]) -> dict[str, Any]:
     raw = scene.raw.get(key, {})
     if not isinstance(raw, dict):
-        raise _fail(scene, key, f"expected a table [{key}]")
+        raise _fail(scene, key, Said("cs_table", k=key))
     for k in raw:
         if k not in known:
-            raise _fail(scene, f"{key}.{k}", f"unknown key; expected some of {sorted(known)}")
+            raise _fail(scene, f"{key}.{k}", Said("cs_unknown_key_some", v=sorted(known)))
     return raw
 
 
@@ -103,17 +103,16 @@ def _positions(scene: Scene, raw: dict[str, Any], where: str, *, equal: bool,
     MAX_STEP_DEG."""
     phi0 = scene.driver.phis_deg[0] if scene.driver.phis_deg else 0.0
     if "positions" in raw and "phi_deg" in raw:
-        raise _fail(scene, f"{where}.phi_deg", "give positions or phi_deg, not both")
+        raise _fail(scene, f"{where}.phi_deg", Said("cs_give_positions_phi"))
     if "phi_deg" in raw:
         vals = raw["phi_deg"]
         if not (isinstance(vals, list) and 4 <= len(vals) <= MAX_POSITIONS):
-            raise _fail(scene, f"{where}.phi_deg", f"expected 4 to {MAX_POSITIONS} crank angles in degrees")
+            raise _fail(scene, f"{where}.phi_deg", Said("cs_max_positions_crank", MAX_POSITIONS=MAX_POSITIONS))
         rd = Reader(scene.path)
         phis = [rd.value(v, f"{where}.phi_deg", limit=ANGLE_LIMIT_DEG, floor=0.0) for v in vals]
         # Closer positions than MIN_STEP_DEG make the curve's chord slopes 0/0.
         if any(b - a < MIN_STEP_DEG for a, b in zip(phis, phis[1:], strict=False)):
-            raise _fail(scene, f"{where}.phi_deg", "expected crank angles increasing from position to position "
-                                                   f"by at least {MIN_STEP_DEG:g}°")
+            raise _fail(scene, f"{where}.phi_deg", Said("cs_crank_angles_increasing", MIN_STEP_DEG=MIN_STEP_DEG))
         if abs(phis[-1] - phis[0] - cycle) < 1e-9:
             phis = phis[:-1]  # the closing position is the first one again
         span = phis[-1] - phis[0]
@@ -121,22 +120,18 @@ def _positions(scene: Scene, raw: dict[str, Any], where: str, *, equal: bool,
         if span >= cycle or gap > MAX_STEP_DEG + 1e-9:
             within = "one revolution" if cycle == 360 else f"one cycle of {cycle:g}°"
             raise _fail(scene, f"{where}.phi_deg",
-                        f"the positions do not close the cycle: they must lie within {within} "
-                        f"(from {phis[0]:g}° to {phis[0] + cycle:g}°) with no step over {MAX_STEP_DEG:g}° "
-                        f"(the widest here is {gap:g}°)")
+                        Said("cs_positions_do_close", within=within, v=phis[0], v2=phis[0] + cycle, MAX_STEP_DEG=MAX_STEP_DEG, gap=gap))
         if equal:
             closed = phis + [phis[0] + cycle]
             steps = [b - a for a, b in zip(closed, closed[1:], strict=False)]
             if max(steps) - min(steps) > 1e-6:
                 raise _fail(scene, f"{where}.phi_deg",
-                            "the diagram does not cover the stroke in equal steps: graphical differentiation "
-                            "needs equal steps over the whole revolution (use positions = N)")
+                            Said("cs_diagram_does_cover"))
         return tuple(phis)
     n = raw.get("positions", round(12 * cycle / 360))
     least = max(4, math.ceil(cycle / MAX_STEP_DEG))
     if isinstance(n, bool) or not isinstance(n, int) or n < least or n > MAX_POSITIONS:
-        raise _fail(scene, f"{where}.positions", f"expected a whole number of positions from {least} to "
-                                                 f"{MAX_POSITIONS}, got {show(n)}")
+        raise _fail(scene, f"{where}.positions", Said("cs_whole_number_positions", least=least, MAX_POSITIONS=MAX_POSITIONS, got=show(n)))
     return tuple(phi0 + cycle * k / n for k in range(n))
 
 
@@ -146,7 +141,7 @@ def rotor_inertia(scene: Scene) -> float:
     raw = _table(scene, "dynamics", _DYN_KEYS)
     rotor = _number(scene, raw, "rotor_inertia", "dynamics") if "rotor_inertia" in raw else 0.0
     if rotor < 0:
-        raise _fail(scene, "dynamics.rotor_inertia", f"expected a moment of inertia >= 0 kg·m², got {rotor:g}")
+        raise _fail(scene, "dynamics.rotor_inertia", Said("cs_moment_inertia_kg", rotor=rotor))
     return rotor
 
 
@@ -154,33 +149,32 @@ def dynamics_spec(scene: Scene) -> DynamicsSpec:
     raw = _table(scene, "dynamics", _DYN_KEYS)
     where = "dynamics"
     if "delta" not in raw:
-        raise _fail(scene, "dynamics.delta", "missing the coefficient of fluctuation δ, e.g. delta = 0.05")
+        raise _fail(scene, "dynamics.delta", Said("cs_missing_coefficient_fluctuation"))
     delta = _number(scene, raw, "delta", where, floor=0.0)
     # Below DELTA_FLOOR ω_max² − ω_min² is lost to round-off (and no flywheel is that uniform).
     if not DELTA_FLOOR <= delta < 1.0:
-        raise _fail(scene, "dynamics.delta", f"expected {DELTA_FLOOR:g} <= δ < 1, got {delta:g}")
+        raise _fail(scene, "dynamics.delta", Said("cs_delta_floor_delta", DELTA_FLOOR=DELTA_FLOOR, delta=delta))
     rotor = rotor_inertia(scene)
     driving: float | None = None
     d = raw.get("driving", "constant")
     if isinstance(d, str):
         if d != "constant":
-            raise _fail(scene, "dynamics.driving", f"expected \"constant\" or a moment in N·m, got {show(d)}")
+            raise _fail(scene, "dynamics.driving", Said("cs_constant_moment", got=show(d)))
     else:
         driving = _number(scene, raw, "driving", where)
     pole = None
     if "pole_mm" in raw:
         pole = _number(scene, raw, "pole_mm", where)
         if pole <= 0:
-            raise _fail(scene, "dynamics.pole_mm", f"expected a positive pole distance in mm, got {pole:g}")
+            raise _fail(scene, "dynamics.pole_mm", Said("cs_positive_pole_distance", pole=pole))
     steps = raw.get("exact_steps", 3600)
     if isinstance(steps, bool) or not isinstance(steps, int) or not 360 <= steps <= 200000:
-        raise _fail(scene, "dynamics.exact_steps", f"expected a whole number from 360 to 200000, got {show(steps)}")
+        raise _fail(scene, "dynamics.exact_steps", Said("cs_whole_number_from", got=show(steps)))
     cycle = raw.get("cycle_deg", 360)
     if isinstance(cycle, bool) or cycle not in CYCLES:
-        raise _fail(scene, "dynamics.cycle_deg", f"expected 360 (one revolution) or 720 (the four-stroke "
-                                                 f"engine's cycle), got {show(cycle)}")
+        raise _fail(scene, "dynamics.cycle_deg", Said("cs_one_revolution_four", got=show(cycle)))
     if scene.driver.omega == 0:
-        raise _fail(scene, "driver.omega", "the dynamics needs the mean angular velocity of the crank (ω ≠ 0)")
+        raise _fail(scene, "driver.omega", Said("cs_dynamics_needs_mean"))
     phis = _positions(scene, raw, where, equal=False, cycle=float(cycle))
     return DynamicsSpec(rotor, delta, driving, phis, pole, steps * int(cycle) // 360, float(cycle))
 
@@ -189,39 +183,39 @@ def diagrams_spec(scene: Scene) -> DiagramsSpec:
     raw = _table(scene, "diagrams", _DIA_KEYS)
     pts = raw.get("points", [])
     if not (isinstance(pts, list) and all(isinstance(p, str) for p in pts)):
-        raise _fail(scene, "diagrams.points", "expected a list of point names, e.g. points = [\"B\"]")
+        raise _fail(scene, "diagrams.points", Said("cs_list_point_names"))
     known = {n for link in scene.links.values() for n in link.points}
     for p in pts:
         if p not in known:
-            raise _fail(scene, "diagrams.points", f"unknown point {p!r}; expected one of {sorted(known)}")
+            raise _fail(scene, "diagrams.points", Said("cs_unknown_point_one", p=p, v=sorted(known)))
     links = raw.get("links", [])
     if not (isinstance(links, list) and all(isinstance(x, int) and not isinstance(x, bool) for x in links)):
-        raise _fail(scene, "diagrams.links", "expected a list of link numbers, e.g. links = [2]")
+        raise _fail(scene, "diagrams.links", Said("cs_list_link_numbers"))
     for lid in links:
         if lid not in scene.links:
-            raise _fail(scene, "diagrams.links", f"unknown link {lid}; expected one of {sorted(scene.links)}")
+            raise _fail(scene, "diagrams.links", Said("cs_unknown_link_lid", lid=lid, v=sorted(scene.links)))
     if not pts and not links:
-        raise _fail(scene, "diagrams.points", "expected at least one point (or links = [...]) to draw")
+        raise _fail(scene, "diagrams.points", Said("cs_least_one_point"))
     qs = raw.get("quantities", list(QUANTITIES))
     if not (isinstance(qs, list) and qs and all(q in QUANTITIES for q in qs)):
-        raise _fail(scene, "diagrams.quantities", f"expected some of {list(QUANTITIES)}, got {show(qs)}")
+        raise _fail(scene, "diagrams.quantities", Said("cs_some", v=list(QUANTITIES), got=show(qs)))
     method = raw.get("method", "chords")
     if method not in METHODS:
-        raise _fail(scene, "diagrams.method", f"expected one of {list(METHODS)}, got {show(method)}")
+        raise _fail(scene, "diagrams.method", Said("gm_one", v=list(METHODS), got=show(method)))
     pole = None
     if "pole_mm" in raw:
         pole = _number(scene, raw, "pole_mm", "diagrams")
         if pole <= 0:
-            raise _fail(scene, "diagrams.pole_mm", f"expected a positive pole distance in mm, got {pole:g}")
+            raise _fail(scene, "diagrams.pole_mm", Said("cs_positive_pole_distance", pole=pole))
     length = _number(scene, raw, "length_mm", "diagrams", floor=0.0) if "length_mm" in raw else 240.0
     if not 60.0 <= length <= 700.0:
-        raise _fail(scene, "diagrams.length_mm", f"expected a φ axis from 60 to 700 mm long, got {length:g}")
+        raise _fail(scene, "diagrams.length_mm", Said("cs_axis_from_mm", length=length))
     if scene.driver.omega == 0:
-        raise _fail(scene, "driver.omega", "v(φ) and a(φ) need the crank's angular velocity (ω ≠ 0)")
+        raise _fail(scene, "driver.omega", Said("cs_need_crank_angular"))
     phis = _positions(scene, raw, "diagrams", equal=True)
     s_from = raw.get("s_from", "extreme")
     if s_from not in ("extreme", "first"):
-        raise _fail(scene, "diagrams.s_from", f"expected \"extreme\" or \"first\", got {show(s_from)}")
+        raise _fail(scene, "diagrams.s_from", Said("cs_extreme_first", got=show(s_from)))
     return DiagramsSpec(tuple(pts), tuple(links), tuple(q for q in QUANTITIES if q in qs), phis, method,
                         pole, length, s_from)
 

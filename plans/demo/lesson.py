@@ -18,12 +18,14 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from plans.demo.mistakes import mistakes, page_mm, page_xy
-from plans.errors import InputError, PlansError
+from plans.errors import Figures, InputError, PlansError, Said
 from plans.kinematics.exact import Kinematics, solve
 from plans.kinematics.plan import Plan, Step
+from plans.kinematics.scales import ratio_scale
 from plans.phrases import LANGUAGES
 from plans.results import Solution, solve_scene
 from plans.scene.model import Scene
+from plans.tolerances import SAME_ANGLE_DEG
 from plans.units import clean
 
 if TYPE_CHECKING:  # the force rooms are loaded only for a scene with forces
@@ -39,12 +41,11 @@ MAX_FRAMES = 720
 
 def _nice_length_scale(extent_m: float, target_mm: float = 120.0) -> float:
     """μl (mm per m) from the standard ratios, the largest that keeps the scheme within target."""
-    ratios = [10.0, 5.0, 4.0, 2.5, 2.0, 1.0, 0.5, 0.4, 0.25, 0.2, 0.1, 0.05, 0.04, 0.025, 0.02, 0.01]
     if extent_m <= 0:
         return 1000.0
-    for r in ratios:
-        if extent_m * 1000.0 * r <= target_mm:
-            return 1000.0 * r
+    got = ratio_scale(extent_m, target_mm)
+    if got is not None:
+        return got
     k = math.floor(math.log10(target_mm / (extent_m * 1000.0)))
     return 1000.0 * 10.0**k
 
@@ -244,10 +245,10 @@ def _position_index(sol: Solution, phi_deg: float | None) -> int:
     if phi_deg is None:
         return 0
     for k, p in enumerate(phis):
-        if abs(p - phi_deg) < 1e-9:
+        if abs(p - phi_deg) < SAME_ANGLE_DEG:
             return k
-    shown = ", ".join(f"{p:g}" for p in phis[:8]) + (f", … ({len(phis)} positions)" if len(phis) > 8 else "")
-    raise InputError(f"crank angle {phi_deg:g}° is not among the scene's positions [{shown}]", file=sol.scene.path,
+    raise InputError(Said("dl_crank_angle_phi", phi_deg=phi_deg, shown=Said("dl_shown", phis=Figures(phis[:8]), n=len(phis))
+                          if len(phis) > 8 else Said("dl_shown_all", phis=Figures(phis))), file=sol.scene.path,
                      field="--phi")
 
 
@@ -256,10 +257,10 @@ def lesson(scene: Scene, *, phi_deg: float | None = None, frames: int = FRAMES,
     """The lesson of a scene (a JSON-able dict): steps at one position, the cycle, mistakes;
     every sentence in ``language`` ("en" or "ru")."""
     if not (isinstance(frames, int) and 2 <= frames <= MAX_FRAMES):
-        raise InputError(f"expected a whole number of frames from 2 to {MAX_FRAMES}, got {frames!r}",
+        raise InputError(Said("dl_whole_number_frames", MAX_FRAMES=MAX_FRAMES, frames=frames),
                          field="--frames")
     if language not in LANGUAGES:
-        raise InputError(f"expected one of {', '.join(LANGUAGES)}, got {language!r}", field="--language")
+        raise InputError(Said("dl_one_language", v=', '.join(LANGUAGES), language=language), field="--language")
     sol = solve_scene(scene)
     k = _position_index(sol, phi_deg)
     phis = np.arange(frames) * (360.0 / frames)

@@ -21,9 +21,10 @@ def kinetostatics(scene: Scene, kin: Kinematics) -> tuple[ForceAnalysis, LeverAn
     loads = parse_loads(scene)
     spec = parse_friction(scene)
     if spec is not None:  # the successive approximation with friction in the pairs
-        kin.structure.no_triad(scene.path, "friction in the pairs")
+        from plans.errors import Said
         from plans.forces.friction import friction_analysis
 
+        kin.structure.no_triad(scene.path, Said("ks_w_friction"))
         fa = friction_analysis(scene, kin, loads, spec)
     else:
         fa = analyse_forces(scene, kin, loads)

@@ -9,7 +9,7 @@ from typing import Any
 
 import numpy as np
 
-from plans.errors import ConstructionError, InputError
+from plans.errors import ConstructionError, InputError, Said
 from plans.forces.load_records import AppliedForce, GasLoad, R, local_at, mechanism_extent
 from plans.kinematics.travel import piston_travel, toward_pivot
 from plans.reader import Reader
@@ -29,14 +29,13 @@ def cycle_of(scene: Scene) -> float:
 def cycle_table(r: Reader, rows: Any, field: str, what: str, scale: float = 1.0) -> tuple[R, R]:
     """A diagram over the cycle's crank angle: rows [φ deg, value] from 0 to 360 or 720."""
     if not (isinstance(rows, list) and len(rows) >= 2 and all(isinstance(x, list) and len(x) == 2 for x in rows)):
-        raise r.fail(field, f"expected at least two rows [phi_deg, {what}] from 0 to 360 (or 720)")
+        raise r.fail(field, Said("gc_least_two_rows", what=what))
     phi = np.array([r.value(x[0], field) for x in rows])
     val = np.array([r.value(x[1], field) for x in rows]) * scale
     if np.any(np.diff(phi) <= 0):
-        raise r.fail(field, "expected crank angles increasing from row to row")
+        raise r.fail(field, Said("gc_crank_angles_increasing"))
     if phi[0] != 0 or phi[-1] not in (360.0, 720.0):
-        raise r.fail(field, f"the table covers {phi[0]:g}..{phi[-1]:g}°; expected the whole cycle, from 0 to 360 "
-                            f"(or to 720 for a four-stroke cycle)")
+        raise r.fail(field, Said("gc_table_covers_whole", v=phi[0], v2=phi[-1]))
     return phi, val
 
 
@@ -46,18 +45,17 @@ def pressure_force(scene: Scene, r: Reader, body: dict[str, Any], where: str, k:
     piston, along its guide toward the crank, F = p(φ)·A."""
     for key in ("vector", "magnitude", "angle_deg", "resisting", "along", "stroke"):
         if key in body:
-            raise r.fail(f"{where}{key}", "a force by pressure_table acts along the piston's guide; give "
-                                          "area (or bore) and pressure_table alone")
+            raise r.fail(f"{where}{key}", Said("gc_force_pressure_table"))
     if "pressure_table" not in body:
-        raise r.fail(f"{where}pressure_table", "expected pressure_table = [[phi_deg, p_Pa], ...] with area or bore")
+        raise r.fail(f"{where}pressure_table", Said("gc_pressure_table_phi"))
     if ("area" in body) == ("bore" in body):
-        raise r.fail(f"{where}area", "expected the piston's area = m² or its bore (one of them)")
+        raise r.fail(f"{where}area", Said("gc_piston_area_its"))
     lid = moving_link(body, where)
     pj = [j for j in scene.joints if j.kind == "P" and j.guide is not None and j.slider == lid]
     if len(pj) != 1:
-        raise r.fail(f"{where}link", f"link {lid} is not a piston: it must slide on exactly one guide")
+        raise r.fail(f"{where}link", Said("gc_link_lid_piston", lid=lid))
     if "point" in body and body["point"] != pj[0].point:
-        raise r.fail(f"{where}point", f"a pressure acts on the piston at its joint point {pj[0].point!r}")
+        raise r.fail(f"{where}point", Said("gc_pressure_acts_piston", point=pj[0].point))
     if "area" in body:
         area = r.number(body, "area", where, positive=True)
     else:
@@ -106,7 +104,7 @@ def ignition(scene: Scene, gl: GasLoad) -> float:
             if hi - lo < 1e-13:
                 break
     except ConstructionError as exc:
-        raise InputError(f"a four-stroke diagram needs the crank to turn a full revolution ({exc})",
+        raise InputError(Said("gc_four_stroke_diagram", exc=exc),
                          file=scene.path, field="loads.gas") from None
     return 0.5 * (lo + hi)
 
@@ -128,7 +126,7 @@ def piston_stroke(scene: Scene, joint_name: str, link: int) -> tuple[float, floa
         near = np.flatnonzero(keep)
         kin = solve(scene, grid[near], order=0)
     except ConstructionError as exc:
-        raise InputError(f"an indicator diagram needs the crank to turn a full revolution ({exc})",
+        raise InputError(Said("gc_indicator_diagram_needs", exc=exc),
                          file=scene.path, field="loads.gas") from None
     travel = piston_travel(scene, kin, joint_name, link)
     return float(travel.min()), float(travel.max() - travel.min())

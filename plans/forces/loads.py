@@ -121,7 +121,7 @@ _LOAD_KEYS = {"gravity", "inertia", "lever_turn", "balancing", "mass_rule", "gas
 
 def parse_loads(scene: Scene) -> Loads:
     """The scene's ``[loads]`` (and the links' masses) as a :class:`Loads`: the record the
-    scene holds once solved (``plans.solve`` reads it once, :mod:`plans.scene.tables`), else
+    scene holds once solved (``plans.solve`` reads it once, :mod:`plans.tables`), else
     read now; InputError on anything wrong."""
     return scene.loads if scene.loads is not None else _parse_loads(scene)
 
@@ -135,7 +135,7 @@ def _parse_loads(scene: Scene) -> Loads:
         return InputError(msg, file=path, field=field)
 
     if not isinstance(raw, dict):
-        raise fail("loads", "expected a table [loads]")
+        raise fail("loads", Said("ld_table_loads"))
     r = Reader(path)
     check_keys(raw, _LOAD_KEYS, file=path, where="loads.")
 
@@ -167,37 +167,37 @@ def _parse_loads(scene: Scene) -> Loads:
     rule = raw.get("mass_rule")
     if rule is not None:
         if not isinstance(rule, dict):
-            raise fail("loads.mass_rule", "expected a table { diameter = ..., g_per_cm2 = { link = k } }")
+            raise fail("loads.mass_rule", Said("ld_table_diameter_per"))
         check_keys(rule, ("diameter", "g_per_cm2", "rod_inertia"), file=path, where="loads.mass_rule.")
         if "diameter" not in rule:
-            raise fail("loads.mass_rule.diameter", "missing piston diameter")
+            raise fail("loads.mass_rule.diameter", Said("ld_missing_piston_diameter"))
         d = length(rule["diameter"], "loads.mass_rule.diameter")
         area_cm2 = math.pi * d**2 / 4 / 1e-4
         ks = rule.get("g_per_cm2", {})
         if not isinstance(ks, dict):
-            raise fail("loads.mass_rule.g_per_cm2", "expected a table { link = k }")
+            raise fail("loads.mass_rule.g_per_cm2", Said("ld_table_link"))
         for key in ks:
             where = f"loads.mass_rule.g_per_cm2.{key}"
             if not (key.isascii() and key.isdigit() and key == str(int(key))):
-                raise fail(where, "expected a link number")
+                raise fail(where, Said("ld_link_number"))
             lid = int(key)
             if lid not in scene.links:
-                raise fail(where, f"unknown link {lid}")
+                raise fail(where, Said("ld_unknown_link_lid", lid=lid))
             if "mass" in links_raw.get(str(lid), {}):
-                raise fail(where, f"link {lid} sets mass in [links.{lid}] too; give one or the other")
+                raise fail(where, Said("ld_link_lid_sets", lid=lid))
             masses[lid] = number(ks, key, "loads.mass_rule.g_per_cm2.", nonneg=True) * area_cm2 * 1e-3
         rods = rule.get("rod_inertia", [])
         if not isinstance(rods, list):
-            raise fail("loads.mass_rule.rod_inertia", "expected a list of link numbers")
+            raise fail("loads.mass_rule.rod_inertia", Said("ld_list_link_numbers"))
         for lid in rods:
             where = "loads.mass_rule.rod_inertia"
             if isinstance(lid, bool) or not isinstance(lid, int) or lid not in scene.links:
-                raise fail(where, f"unknown link {lid!r}")
+                raise fail(where, Said("ld_unknown_link_lid2", lid=lid))
             link = scene.links[lid]
             if link.length is None or link.centre is None:
-                raise fail(where, f"link {lid} needs a two-point axis and a centre for the rod formula")
+                raise fail(where, Said("ld_link_lid_needs", lid=lid))
             if "inertia" in links_raw.get(str(lid), {}):
-                raise fail(where, f"link {lid} sets inertia in [links.{lid}] too; give one or the other")
+                raise fail(where, Said("ld_link_lid_sets2", lid=lid))
             ratio = abs(link.points[link.centre]) / link.length
             inertias[lid] = masses[lid] * link.length**2 * (1 / 3 - ratio**2)
     centres: dict[int, str] = {}
@@ -208,7 +208,7 @@ def _parse_loads(scene: Scene) -> Loads:
             if len(link.axis) == 1:
                 centres[lid] = link.axis[0]
             else:
-                raise fail(f"links.{lid}.centre", f"link {lid} has mass or inertia but no centre of mass point")
+                raise fail(f"links.{lid}.centre", Said("ld_link_lid_has", lid=lid))
 
     # ---- gravity
     grav = raw.get("gravity", True)
@@ -246,20 +246,20 @@ def _parse_loads(scene: Scene) -> Loads:
     # ---- gas forces
     gas_raw = raw.get("gas", [])
     if not isinstance(gas_raw, list):
-        raise fail("loads.gas", "expected an array of tables [[loads.gas]]")
+        raise fail("loads.gas", Said("ld_array_tables_loads"))
     gas = []
     for k, body in enumerate(gas_raw):
         where = f"loads.gas[{k}]."
         if not isinstance(body, dict):
-            raise fail(f"loads.gas[{k}]", "expected a table")
+            raise fail(f"loads.gas[{k}]", Said("sm_table"))
         check_keys(body, ("link", "diameter", "area", "area_unit", "pressure", "pressure_unit", "strokes",
                           "direction", "diagram", "name", "fires_deg", "p_max", "travel"), file=path, where=where)
         for key in ("p_max", "travel"):
             if key in body and "diagram" not in body:
-                raise fail(f"{where}{key}", "goes with an indicator diagram (diagram = {...})")
+                raise fail(f"{where}{key}", Said("ld_goes_indicator_diagram"))
         fraction = r.choice(body, "travel", where, ("length", "fraction"), "length") == "fraction"
         if "diameter" in body and "area" in body:
-            raise fail(f"{where}area", "give diameter or area, not both")
+            raise fail(f"{where}area", Said("ld_give_diameter_area"))
         lid = moving_link(body, where)
         pj = [j for j in scene.joints if j.kind == "P" and j.guide is not None and j.slider == lid]
         if len(pj) != 1:
@@ -270,20 +270,20 @@ def _parse_loads(scene: Scene) -> Loads:
             au = r.choice(body, "area_unit", where, AREA_UNITS, "cm2")
             area = number(body, "area", where, positive=True) * AREA_UNITS[au]
         else:
-            raise fail(f"{where}diameter", "missing piston diameter (or area)")
+            raise fail(f"{where}diameter", Said("ld_missing_piston_diameter2"))
         pu = r.choice(body, "pressure_unit", where, PRESSURE_UNITS, "MPa")
         scale = PRESSURE_UNITS[pu]
         strokes = body.get("strokes", ["down", "up"])
         if not (isinstance(strokes, list) and strokes and all(s in ("down", "up") for s in strokes)):
-            raise fail(f"{where}strokes", "expected a list of \"down\" (toward the crank) and/or \"up\"")
+            raise fail(f"{where}strokes", Said("ld_list_down_toward"))
         direction = body.get("direction", "toward_pivot")
         if direction not in ("toward_pivot", "away_from_pivot"):
-            raise fail(f"{where}direction", f"expected \"toward_pivot\" or \"away_from_pivot\", got {direction!r}")
+            raise fail(f"{where}direction", Said("ld_toward_pivot_away", direction=direction))
         pressure = None
         outer = stroke_len = 0.0
         diagram: dict[str, tuple[R, R]] = {}
         if "pressure" in body and "diagram" in body:
-            raise fail(f"{where}diagram", "give pressure or diagram, not both")
+            raise fail(f"{where}diagram", Said("ld_give_pressure_diagram"))
         if "pressure" in body:
             pressure = number(body, "pressure", where) * scale
         elif "diagram" in body:
@@ -292,13 +292,11 @@ def _parse_loads(scene: Scene) -> Loads:
             if four:
                 lost = [k for k in FOUR_STROKES if k not in diag]
                 if lost:
-                    raise fail(f"{where}diagram", f"a four-stroke diagram needs a table for each stroke; "
-                                                  f"{lost[0]} is missing")
+                    raise fail(f"{where}diagram", Said("ld_four_stroke_diagram", v=lost[0]))
                 if "strokes" in body:
-                    raise fail(f"{where}strokes", "a four-stroke diagram acts on every stroke; drop strokes")
+                    raise fail(f"{where}strokes", Said("ld_four_stroke_diagram2"))
             elif not isinstance(diag, dict) or not diag or not set(diag) <= {"down", "up"}:
-                raise fail(f"{where}diagram", "expected { down = [[s, p], ...], up = [[s, p], ...] } or the "
-                                              "four strokes { intake, compression, expansion, exhaust }")
+                raise fail(f"{where}diagram", Said("ld_down_up_four"))
             outer, stroke_len = piston_stroke(scene, pj[0].name, lid)
             # the pressures as given, or fractions of p_max (in pressure_unit)
             unit_p = number(body, "p_max", where, positive=True) * scale if "p_max" in body else scale
@@ -306,29 +304,27 @@ def _parse_loads(scene: Scene) -> Loads:
                 f = f"{where}diagram.{side}"
                 if not (isinstance(table, list) and len(table) >= 2
                         and all(isinstance(row, list) and len(row) == 2 for row in table)):
-                    raise fail(f, "expected at least two rows [travel, pressure]")
+                    raise fail(f, Said("ld_least_two_rows"))
                 if fraction:  # the course's standard diagram: travel in fractions of H, p of p_max
                     s = np.array([r.value(row[0], f, nonneg=True) for row in table]) * stroke_len
                 else:
                     s = np.array([length(row[0], f, positive=False) for row in table])
                 p = np.array([number({"p": row[1]}, "p", f + ".") for row in table]) * unit_p
                 if np.any(np.diff(s) <= 0):
-                    raise fail(f, "expected travel increasing from row to row")
+                    raise fail(f, Said("ld_travel_increasing_from"))
                 tol = 1e-6 * stroke_len
                 if s[0] > tol or s[-1] < stroke_len - tol:
-                    raise fail(f, f"the table covers travel {s[0] * 1e3:.6g}..{s[-1] * 1e3:.6g} mm but the "
-                                  f"stroke is 0..{stroke_len * 1e3:.6g} mm")
+                    raise fail(f, Said("ld_table_covers_travel", v=s[0] * 1e3, v2=s[-1] * 1e3, v3=stroke_len * 1e3))
                 diagram[side] = (s, p)
             missing = [] if four else [s for s in strokes if s not in diagram]
             if missing:
-                raise fail(f"{where}diagram", f"no table for the {missing[0]!r} stroke listed in strokes")
+                raise fail(f"{where}diagram", Said("ld_table_stroke_listed", v=missing[0]))
         else:
-            raise fail(f"{where}pressure", "missing pressure (or an indicator diagram)")
+            raise fail(f"{where}pressure", Said("ld_missing_pressure_indicator"))
         fires = None
         if "fires_deg" in body:
             if not (diagram and set(diagram) == set(FOUR_STROKES)):
-                raise fail(f"{where}fires_deg", "the ignition angle belongs to a four-stroke diagram "
-                                                "{ intake, compression, expansion, exhaust }")
+                raise fail(f"{where}fires_deg", Said("ld_ignition_angle_belongs"))
             fires = r.value(body["fires_deg"], f"{where}fires_deg", limit=1e6)
         elif diagram and set(diagram) == set(FOUR_STROKES):
             fires = 360.0  # the course's cycle: intake from 0°, ignition at 360°
@@ -341,11 +337,11 @@ def _parse_loads(scene: Scene) -> Loads:
     forces = []
     f_raw = raw.get("force", [])
     if not isinstance(f_raw, list):
-        raise fail("loads.force", "expected an array of tables [[loads.force]]")
+        raise fail("loads.force", Said("ld_array_tables_loads2"))
     for k, body in enumerate(f_raw):
         where = f"loads.force[{k}]."
         if not isinstance(body, dict):
-            raise fail(f"loads.force[{k}]", "expected a table")
+            raise fail(f"loads.force[{k}]", Said("sm_table"))
         check_keys(body, ("link", "point", "vector", "magnitude", "angle_deg", "resisting", "along", "stroke",
                           "name", "area", "bore", "pressure_table"), file=path, where=where)
         if "pressure_table" in body or "area" in body or "bore" in body:
@@ -387,11 +383,11 @@ def _parse_loads(scene: Scene) -> Loads:
     moments = []
     m_raw = raw.get("moment", [])
     if not isinstance(m_raw, list):
-        raise fail("loads.moment", "expected an array of tables [[loads.moment]]")
+        raise fail("loads.moment", Said("ld_array_tables_loads3"))
     for k, body in enumerate(m_raw):
         where = f"loads.moment[{k}]."
         if not isinstance(body, dict):
-            raise fail(f"loads.moment[{k}]", "expected a table")
+            raise fail(f"loads.moment[{k}]", Said("sm_table"))
         check_keys(body, ("link", "value", "resisting", "name", "table", "expression", "stroke"), file=path,
                    where=where)
         m_stroke = r.choice(body, "stroke", where, ("both", "working", "idle"), "both")
@@ -420,8 +416,7 @@ def _parse_loads(scene: Scene) -> Loads:
             moments.append(MomentLoad(lid, None, number(body, "resisting", where, nonneg=True),
                                       label(body, where, f"M_c{lid}"), stroke=m_stroke))
         else:
-            raise fail(f"{where}value", "expected value = N·m (ccw+), resisting = N·m, table = [[phi_deg, M], ...] "
-                                        "or expression = \"...\"")
+            raise fail(f"{where}value", Said("ld_value_ccw_resisting"))
 
     limited = [f"loads.{key}[{k}].stroke" for key, got in (("force", f_raw), ("moment", m_raw))
                for k, body in enumerate(got) if body.get("stroke") in ("working", "idle")]

@@ -40,7 +40,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from plans.errors import Locked
+from plans.errors import Locked, Said
 from plans.forces.drawn_polygon import ForcePolygon, Poly, closing_point  # noqa: F401  (importable from here)
 from plans.forces.loads import (
     AppliedForce,
@@ -194,7 +194,7 @@ def _check(kin: Kinematics, g: Group, det: R, scale: R | float, point: str) -> N
     bad = np.abs(det) <= LOCK_SIN * scale
     if bad.any():
         k = int(np.flatnonzero(bad)[0])
-        raise Locked("the two unknown reaction directions are parallel: the group locks here",
+        raise Locked(Said("fp_two_unknown_reaction"),
                      group=f"{g.kind} {g.name}", point=point, phi_deg=float(kin.phi_deg[k]))
 
 

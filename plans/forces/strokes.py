@@ -14,12 +14,11 @@ stderr, not refused.
 
 from __future__ import annotations
 
-import sys
 from typing import Any
 
 import numpy as np
 
-from plans.errors import InputError
+from plans.errors import Field, InputError
 from plans.scene.model import Scene
 
 #: The strokes a ``[[loads.force]]`` or ``[[loads.moment]]`` may be limited to.
@@ -42,7 +41,7 @@ def warn_idle(scene: Scene, raw: dict[str, Any], forces: Any = ()) -> None:
     stroke, and each one limited by the sign of its velocity (``stroke = "positive"`` or
     ``"negative"``) that acts on the idle stroke only."""
     suspects = []
-    for key, what in (("force", "x_warn_idle"), ("moment", "x_warn_idle_moment")):
+    for key, what in (("force", "w_idle"), ("moment", "w_idle_moment")):
         bodies = raw.get(key, [])
         for k, body in enumerate(bodies if isinstance(bodies, list) else []):
             if isinstance(body, dict) and "resisting" in body and "stroke" not in body:
@@ -58,19 +57,16 @@ def warn_idle(scene: Scene, raw: dict[str, Any], forces: Any = ()) -> None:
         return  # no output with two extremes: no strokes to tell apart
     if st.K <= K_DISTINCT:
         return
-    from plans.errors import field_name, run_language
-    from plans.phrases import say
+    from plans.errors import Said, warn
 
-    lang = run_language(scene.raw)  # --language, the scene's [sheet] language, the locale
+    # in the run's language: --language, the scene's [sheet] language, the locale
     for k, fl in signed:
         if _idle_only(scene, st, fl):
-            text = say("x_warn_idle_only", lang, file=scene.path, field=field_name(f"loads.force[{k}].stroke", lang), name=fl.name,
-                       stroke=fl.stroke)
-            print(f"plans: {text}", file=sys.stderr)
+            warn(Said("w_idle_only", file=scene.path, field=Field(f"loads.force[{k}].stroke"), name=fl.name,
+                      stroke=fl.stroke), scene.raw)
     for key, k, what, name in suspects:
-        text = say(what, lang, file=scene.path, field=field_name(f"loads.{key}[{k}].resisting", lang),
-                   name=name or f"#{k + 1}")
-        print(f"plans: {text}", file=sys.stderr)
+        warn(Said(what, file=scene.path, field=Field(f"loads.{key}[{k}].resisting"), name=name or f"#{k + 1}"),
+             scene.raw)
 
 
 def mask(scene: Scene, kin: Any, stroke: str, values: Any) -> Any:

@@ -25,7 +25,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from plans.errors import Locked
+from plans.errors import Locked, Said
 from plans.forces.loads import AppliedForce, AppliedMoment
 from plans.forces.shared import safe_div, unit_vector
 from plans.kinematics.exact import Kinematics
@@ -33,6 +33,7 @@ from plans.kinematics.structure import TriadGroup
 from plans.kinematics.triad_plans import PAIRS, pair_choice
 from plans.lines import cross
 from plans.records import frozen
+from plans.tolerances import LOCK_SIN
 
 C = NDArray[np.complex128]
 R = NDArray[np.float64]
@@ -126,9 +127,9 @@ def solve_triad(kin: Kinematics, g: TriadGroup, forces: dict, moments: dict, Rea
     Qi, Qj, Qm = Qs[ii, cols], Qs[jj, cols], Qs[mm, cols]
     ui, uj, um = us[ii, cols], us[jj, cols], us[mm, cols]
     sin = cross(ui, uj)
-    bad = np.abs(sin) <= 1e-12
+    bad = np.abs(sin) <= LOCK_SIN
     if bad.any():
-        _locked(kin, g, bad, "the three leashes' axes are parallel (special position)")
+        _locked(kin, g, bad, Said("tp_three_leashes_axes"))
     S = Qi + cross(Qj - Qi, uj) / np.where(bad, 1.0, sin) * ui
     everything_f = [f for fs in fl for f in fs]
     everything_m = [m for ms in ml for m in ms]
@@ -139,8 +140,7 @@ def solve_triad(kin: Kinematics, g: TriadGroup, forces: dict, moments: dict, Rea
     size = max(float(np.max(np.abs(a))) for a in axis)
     bad = np.abs(arm_m) <= 1e-9 * size
     if bad.any():
-        _locked(kin, g, bad, "the three leashes' axes pass through one point (special position): "
-                             "the group's forces are not fixed")
+        _locked(kin, g, bad, Said("tr_forces_one_point"))
     nrm = np.zeros((3, n))
     nrm[mm, cols] = -known_S / np.where(bad, 1.0, arm_m)
     rest = _sum(everything_f, n) + sum(tau[k] * e[k] for k in range(3)) + nrm[mm, cols] * um
@@ -202,6 +202,6 @@ class _Arms(Mapping):
         return len(self._arms())
 
 
-def _locked(kin: Kinematics, g: TriadGroup, bad: NDArray[np.bool_], why: str) -> None:
+def _locked(kin: Kinematics, g: TriadGroup, bad: NDArray[np.bool_], why: Said) -> None:
     k = int(np.flatnonzero(bad)[0])
     raise Locked(why, group=f"class III {g.kind} {g.name}", point=g.point, phi_deg=float(kin.phi_deg[k]))

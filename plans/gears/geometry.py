@@ -33,7 +33,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from plans.errors import InputError
+from plans.errors import InputError, Said
 
 from .involute import inv, inv_inverse, thickness_at
 
@@ -111,26 +111,23 @@ def centre(z1: int, z2: int, x1: float, x2: float, m: float, alpha: float, inter
     """(α_w, a, a_w, backlash) of a pair; with a_w given, the pair is assembled there."""
     S, Z = (x2 - x1, z2 - z1) if internal else (x1 + x2, z1 + z2)
     if Z <= 0:
-        raise InputError(f"the ring gear needs more teeth than the pinion (z = {z2} vs {z1})",
+        raise InputError(Said("gg2_ring_gear_needs", z2=z2, z1=z1),
                          file=file, field=where)
     a = m * Z / 2.0
     if a_w_given is None:
         v = inv(alpha) + 2.0 * math.tan(alpha) * S / Z
         if v <= 0.0:
-            raise InputError(f"shifts with sum {S:.5g} leave no working pressure angle "
-                             f"(inv α_w = {v:.3g} <= 0)", file=file, field=where)
+            raise InputError(Said("gg2_shifts_sum_leave", S=S, v=v), file=file, field=where)
         alpha_w = inv_inverse(v, field=where, file=file)
         return alpha_w, a, a * math.cos(alpha) / math.cos(alpha_w), 0.0
     c = a * math.cos(alpha) / a_w_given
     if not 0.0 < c < 1.0:
-        raise InputError(f"impossible centre distance {a_w_given * 1e3:.6g} mm: the base circles "
-                         f"need more than {a * math.cos(alpha) * 1e3:.6g} mm", file=file, field=where)
+        raise InputError(Said("gg2_impossible_centre_distance", v=a_w_given * 1e3, v2=a * math.cos(alpha) * 1e3), file=file, field=where)
     alpha_w = math.acos(c)
     S0 = (inv(alpha_w) - inv(alpha)) * Z / (2.0 * math.tan(alpha))
     if S > S0 + 1e-9:
         need = centre(z1, z2, x1, x2, m, alpha, internal, None, where, file)[2]
-        raise InputError(f"impossible centre distance {a_w_given * 1e3:.6g} mm for these shifts: the "
-                         f"teeth would jam; they mesh without backlash at {need * 1e3:.6g} mm",
+        raise InputError(Said("gg2_impossible_centre_distance2", v=a_w_given * 1e3, v2=need * 1e3),
                          file=file, field=where)
     backlash = 2.0 * m * math.tan(alpha) * (S0 - S) * math.cos(alpha) / math.cos(alpha_w)
     return alpha_w, a, a_w_given, max(0.0, backlash)
@@ -156,11 +153,10 @@ def wheel(name: str, z: int, x: float, internal: bool, m: float, alpha: float, h
         ra, rf = r + (ha + x - dy_tip) * m, r - (ha + c - x) * m
         s = m * (math.pi / 2.0 + 2.0 * x * math.tan(alpha))
     if rf <= 0.0:
-        raise InputError(f"gear {name}: z = {z}, x = {x:.5g} leave no root circle (r_f = {rf * 1e3:.4g} mm)",
+        raise InputError(Said("gg2_gear_name_leave", name=name, z=z, x=x, v=rf * 1e3),
                          file=file, field=where)
     if ra <= rb * (1.0 + 1e-12):
-        raise InputError(f"gear {name}: the tip circle (r_a = {ra * 1e3:.5g} mm) is inside the base "
-                         f"circle (r_b = {rb * 1e3:.5g} mm); expected more teeth", file=file, field=where)
+        raise InputError(Said("gg2_gear_name_tip", name=name, v=ra * 1e3, v2=rb * 1e3), file=file, field=where)
     aa = math.acos(rb / ra)
     if internal:
         sa = 2.0 * ra * (s / (2.0 * r) - inv(alpha) + inv(aa))
@@ -169,8 +165,7 @@ def wheel(name: str, z: int, x: float, internal: bool, m: float, alpha: float, h
         sa = thickness_at(ra, s, r, alpha, rb)
         limit = r * math.sin(alpha) - (ha - x) * m / math.sin(alpha)
     if sa <= 0.0:
-        raise InputError(f"gear {name}: x = {x:.5g} gives a pointed tooth (tip thickness "
-                         f"{sa * 1e3:.4g} mm); expected a smaller shift", file=file, field=where)
+        raise InputError(Said("gg2_gear_name_gives", name=name, x=x, v=sa * 1e3), file=file, field=where)
     rw = rb / math.cos(alpha_w)
     return Wheel(name, z, x, internal, r, rb, ra, rf, rw, aa, s, sa, limit)
 
@@ -205,8 +200,7 @@ def pair(names: tuple[str, str], z: tuple[int, int], x: tuple[float, float], int
     end = rho_a1
     p_b = math.pi * m * math.cos(alpha)
     if end - start <= 0.0:
-        raise InputError(f"gears {names[0]} and {names[1]}: the tip circles do not overlap on the line "
-                         "of action; the pair cannot transmit motion", file=file, field=where)
+        raise InputError(Said("gg2_gears_tip_circles", v=names[0], v2=names[1]), file=file, field=where)
     eps = (end - start) / p_b
     u = z[1] / z[0]
 

@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 
-from plans.errors import InputError
+from plans.errors import InputError, Said
 
 _SERIES = (1 / 3, 2 / 15, 17 / 315, 62 / 2835, 1382 / 155925, 21844 / 6081075)
 
@@ -36,7 +36,7 @@ def inv_inverse(value: float, *, field: str = "inv", file: str | None = None) ->
     atan (tan α₀ ≥ v + α₀ there).
     """
     if not (value > 0.0 and math.isfinite(value)):
-        raise InputError(f"no pressure angle has inv α = {value:.6g} (expected > 0)", file=file,
+        raise InputError(Said("gi_pressure_angle_has", value=value), file=file,
                          field=field)
     a = min((3.0 * value) ** (1.0 / 3.0), math.atan(value + math.pi / 2))
     for _ in range(200):

@@ -49,7 +49,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from plans.errors import InputError
+from plans.errors import InputError, Said
 from plans.io import read_toml
 from plans.reader import LENGTH_FLOOR, LENGTH_LIMIT, Reader, check_keys, show
 from plans.units import LENGTH_UNITS
@@ -121,29 +121,29 @@ class GearFile:
         return 1.0 / LENGTH_UNITS[self.unit]
 
 
-def _num(v: Any, path: str, field_: str, what: str, lo: float | None = None,
+def _num(v: Any, path: str, field_: str, what: str | Said, lo: float | None = None,
          hi: float | None = None, strict: bool = True) -> float:
     if isinstance(v, bool) or not isinstance(v, int | float):
-        raise InputError(f"expected {what}, got {show(v)}", file=path, field=field_)
+        raise InputError(Said("gm_what", what=what, got=show(v)), file=path, field=field_)
     ranged = lo is not None and lo > 0  # its own range says more than the floor
     f = Reader(path).value(v, field_, positive=lo == 0.0 and strict, floor=0.0 if ranged else None)
     if lo is not None and (f <= lo if strict else f < lo):
-        raise InputError(f"expected {what}, got {show(v)}", file=path, field=field_)
+        raise InputError(Said("gm_what", what=what, got=show(v)), file=path, field=field_)
     if hi is not None and f >= hi:
-        raise InputError(f"expected {what}, got {show(v)}", file=path, field=field_)
+        raise InputError(Said("gm_what", what=what, got=show(v)), file=path, field=field_)
     return f
 
 
 def _name(v: Any, path: str, field_: str) -> str:
     if isinstance(v, bool) or not isinstance(v, str | int) or str(v) == "":
-        raise InputError(f"expected a name (a string such as \"1\"), got {show(v)}", file=path, field=field_)
+        raise InputError(Said("gm_name_string_such", got=show(v)), file=path, field=field_)
     return Reader(path).name(str(v), field_)
 
 
 def _tables(data: dict[str, Any], key: str, path: str) -> list[dict[str, Any]]:
     v = data.get(key, [])
     if not isinstance(v, list) or not all(isinstance(t, dict) for t in v):
-        raise InputError(f"expected an array of tables [[{key}]]", file=path, field=key)
+        raise InputError(Said("gm_array_tables", k=key), file=path, field=key)
     return v
 
 
@@ -159,29 +159,29 @@ def parse_gears(data: dict[str, Any], path: str) -> GearFile:
     unit = Reader(path).choice(data, "unit", "", LENGTH_UNITS, default="mm")
     k = LENGTH_UNITS[unit]
     if "module" not in data:
-        raise InputError("missing; expected the module m in the file's unit, e.g. module = 4",
+        raise InputError(Said("gm_missing_module_file"),
                          file=path, field="module")
-    m = _num(data["module"], path, "module", "a module m > 0", lo=0.0) * k
+    m = _num(data["module"], path, "module", Said("gm_w_module"), lo=0.0) * k
     if not LENGTH_FLOOR <= m <= LENGTH_LIMIT:
-        raise InputError(f"expected a module from 1 µm to {LENGTH_LIMIT:g} m, got {show(data['module'])} {unit}",
+        raise InputError(Said("gm_module_from_length", LENGTH_LIMIT=LENGTH_LIMIT, got=show(data['module']), unit=unit),
                          file=path, field="module")
     alpha_deg = _num(data.get("pressure_angle_deg", 20), path, "pressure_angle_deg",
-                     "a pressure angle between 5 and 45 degrees", lo=5.0, hi=45.0, strict=False)
+                     Said("gm_w_alpha"), lo=5.0, hi=45.0, strict=False)
     # h_a* below 0.5 leaves no tooth to cut and z_min rounds to nothing.
-    ha = _num(data.get("addendum", 1.0), path, "addendum", "h_a* between 0.5 and 2", lo=0.5, hi=2.0,
+    ha = _num(data.get("addendum", 1.0), path, "addendum", Said("gm_w_addendum"), lo=0.5, hi=2.0,
               strict=False)
-    c = _num(data.get("clearance", 0.25), path, "clearance", "c* >= 0", lo=0.0, strict=False)
+    c = _num(data.get("clearance", 0.25), path, "clearance", Said("gm_w_clearance"), lo=0.0, strict=False)
     rule = data.get("shift_rule", "minimum")
     if rule not in SHIFT_RULES:
-        raise InputError(f"expected one of {', '.join(repr(r) for r in SHIFT_RULES)}, got {show(rule)}",
+        raise InputError(Said("gm_one", v=', '.join(repr(r) for r in SHIFT_RULES), got=show(rule)),
                          file=path, field="shift_rule")
     ring_tip = _ring_tip(data, path, "ring_tip", "trimmed")
     title = data.get("title", "")
     if not isinstance(title, str):
-        raise InputError("expected a string", file=path, field="title")
+        raise InputError(Said("gm_string"), file=path, field="title")
     gears = _gears(data, path, m, k, ring_tip)
     if not gears:
-        raise InputError("expected at least one [[gears]] table", file=path, field="gears")
+        raise InputError(Said("gm_least_one_gears"), file=path, field="gears")
     meshes = _meshes(data, path, gears, k)
     shafts = {g.shaft: Shaft(g.shaft, None, None) for g in gears.values()}
     given: set[str] = set()
@@ -189,35 +189,33 @@ def parse_gears(data: dict[str, Any], path: str) -> GearFile:
         f = f"shafts[{i}]."
         check_keys(t, _SHAFT_KEYS, file=path, where=f)
         if "name" not in t:
-            raise InputError("missing; expected a shaft name", file=path, field=f + "name")
+            raise InputError(Said("gm_missing_shaft_name"), file=path, field=f + "name")
         name = _name(t["name"], path, f + "name")
         if name in given:
-            raise InputError(f"shaft {name!r} described twice", file=path, field=f + "name")
+            raise InputError(Said("gm_shaft_name_described", name=name), file=path, field=f + "name")
         given.add(name)
         sp = t.get("speed_rpm")
-        spv = None if sp is None else _num(sp, path, f + "speed_rpm", "a speed in rpm")
+        spv = None if sp is None else _num(sp, path, f + "speed_rpm", Said("gm_w_speed"))
         car = None if t.get("carrier") is None else _name(t["carrier"], path, f + "carrier")
         shafts[name] = Shaft(name, spv, car)
     for s in list(shafts.values()):
         if s.carrier is not None:
             if s.carrier == s.name:
-                raise InputError(f"shaft {s.name!r} cannot carry itself", file=path, field="shafts")
+                raise InputError(Said("gm_shaft_name_cannot", name=s.name), file=path, field="shafts")
             if s.carrier not in shafts:
                 shafts[s.carrier] = Shaft(s.carrier, None, None)
             if shafts[s.carrier].carrier is not None:
-                raise InputError(f"carrier {s.carrier!r} rides on another carrier; expected a carrier "
-                                 "on a fixed axis", file=path, field="shafts")
+                raise InputError(Said("gm_carrier_carrier_rides", carrier=s.carrier), file=path, field="shafts")
     carriers = {s.carrier for s in shafts.values() if s.carrier is not None}
     riding = {g.shaft for g in gears.values()}
     for i, t in enumerate(_tables(data, "shafts", path)):
         name = str(t["name"])
         if name not in riding and name not in carriers:
-            raise InputError(f"no gear rides on shaft {name!r} and no shaft rides on it; expected one of "
-                             f"{', '.join(repr(s) for s in sorted(riding | carriers))}", file=path,
+            raise InputError(Said("gm_gear_rides_shaft", name=name, v=', '.join(repr(s) for s in sorted(riding | carriers))), file=path,
                              field=f"shafts[{i}].name")
     synth = _synthesis(data.get("synthesis"), path)
     if not meshes and synth is None:
-        raise InputError("expected at least one [[meshes]] table (or a [synthesis] request)", file=path,
+        raise InputError(Said("gm_least_one_meshes"), file=path,
                          field="meshes")
     return GearFile(path, title, unit, math.radians(alpha_deg), ha, c, rule, gears, tuple(meshes),
                     shafts, synth, ring_tip, data)
@@ -228,7 +226,7 @@ def _ring_tip(t: dict[str, Any], path: str, field_: str, default: str) -> str:
 
     v = t.get(field_.rsplit(".", 1)[-1], default)
     if v not in RING_TIPS:
-        raise InputError(f"expected one of {', '.join(repr(r) for r in RING_TIPS)}, got {show(v)}",
+        raise InputError(Said("gm_one", v=', '.join(repr(r) for r in RING_TIPS), got=show(v)),
                          file=path, field=field_)
     return str(v)
 
@@ -237,23 +235,23 @@ def _synthesis(t: Any, path: str) -> SynthesisSpec | None:
     if t is None:
         return None
     if not isinstance(t, dict):
-        raise InputError("expected a table [synthesis]", file=path, field="synthesis")
+        raise InputError(Said("gm_table_synthesis"), file=path, field="synthesis")
     check_keys(t, _SYNTH_KEYS, file=path, where="synthesis.")
     if "ratio" not in t:
-        raise InputError("missing; expected the ratio i_1H, e.g. ratio = 4.5", file=path,
+        raise InputError(Said("gm_missing_ratio_ratio"), file=path,
                          field="synthesis.ratio")
-    ratio = _num(t["ratio"], path, "synthesis.ratio", "a ratio i_1H > 2 (sun to carrier, ring held)",
+    ratio = _num(t["ratio"], path, "synthesis.ratio", Said("gm_w_ratio"),
                  lo=2.0)
     k = t.get("planets", [3, 4, 5, 6])
     ks = k if isinstance(k, list) else [k]
     if not ks or not all(isinstance(v, int) and not isinstance(v, bool) and 2 <= v <= 12 for v in ks):
-        raise InputError("expected a number of planets 2..12 (or a list of them)", file=path,
+        raise InputError(Said("gm_number_planets_list"), file=path,
                          field="synthesis.planets")
-    tol = _num(t.get("tolerance", 0.02), path, "synthesis.tolerance", "a relative tolerance in (0, 0.5)",
+    tol = _num(t.get("tolerance", 0.02), path, "synthesis.tolerance", Said("gm_w_tolerance"),
                lo=0.0, hi=0.5)
     zmin = t.get("z_min", 17)
     if isinstance(zmin, bool) or not isinstance(zmin, int) or zmin < 4:
-        raise InputError("expected a whole number >= 4", file=path, field="synthesis.z_min")
+        raise InputError(Said("gm_whole_number"), file=path, field="synthesis.z_min")
     return SynthesisSpec(ratio, tuple(ks), tol, zmin)
 
 
@@ -263,13 +261,13 @@ def _gears(data: dict[str, Any], path: str, m: float, k: float, ring_tip: str) -
         f = f"gears[{i}]."
         check_keys(g, _GEAR_KEYS, file=path, where=f)
         if "name" not in g:
-            raise InputError("missing; expected a name such as \"1\"", file=path, field=f + "name")
+            raise InputError(Said("gm_missing_name_such"), file=path, field=f + "name")
         name = _name(g["name"], path, f + "name")
         if name in gears:
-            raise InputError(f"gear {name!r} named twice", file=path, field=f + "name")
+            raise InputError(Said("gm_gear_name_named", name=name), file=path, field=f + "name")
         z = g.get("z")
         if isinstance(z, bool) or not isinstance(z, int) or not 1 <= z <= MAX_TEETH:
-            raise InputError(f"expected a whole number of teeth 1 <= z <= {MAX_TEETH}, got {show(z)}", file=path,
+            raise InputError(Said("gm_whole_number_teeth", MAX_TEETH=MAX_TEETH, got=show(z)), file=path,
                              field=f + "z")
         xv = g.get("x", 0)
         x: float | None
@@ -277,17 +275,17 @@ def _gears(data: dict[str, Any], path: str, m: float, k: float, ring_tip: str) -
             x = None
         else:
             if isinstance(xv, bool) or not isinstance(xv, int | float) or not abs(xv) <= 5:  # NaN fails too
-                raise InputError(f"expected a shift coefficient (a number, |x| <= 5) or \"auto\", got {show(xv)}",
+                raise InputError(Said("gm_shift_coefficient_number", got=show(xv)),
                                  file=path, field=f + "x")
             x = Reader(path).value(xv, f + "x")  # 0 or at least 1e-12, as every number
         internal = g.get("internal", False)
         if not isinstance(internal, bool):
-            raise InputError("expected true or false", file=path, field=f + "internal")
+            raise InputError(Said("gm_true_false"), file=path, field=f + "internal")
         shaft = _name(g.get("shaft", name), path, f + "shaft")
-        gm = _num(g["module"], path, f + "module", "a module m > 0", lo=0.0) * k if "module" in g else m
+        gm = _num(g["module"], path, f + "module", Said("gm_w_module"), lo=0.0) * k if "module" in g else m
         tip = _ring_tip(g, path, f + "ring_tip", ring_tip)
         if "ring_tip" in g and not internal:
-            raise InputError("ring_tip is for a ring gear (internal = true)", file=path, field=f + "ring_tip")
+            raise InputError(Said("gm_ring_tip_ring"), file=path, field=f + "ring_tip")
         gears[name] = Gear(name, z, x, internal, shaft, gm, tip)
     return gears
 
@@ -300,26 +298,26 @@ def _meshes(data: dict[str, Any], path: str, gears: dict[str, Gear], k: float) -
         check_keys(t, _MESH_KEYS, file=path, where=f)
         pair = t.get("gears")
         if not isinstance(pair, list) or len(pair) != 2:
-            raise InputError("expected two gear names, e.g. gears = [\"1\", \"2\"]", file=path, field=f + "gears")
+            raise InputError(Said("gm_two_gear_names"), file=path, field=f + "gears")
         a, b = (_name(v, path, f + "gears") for v in pair)
         for n in (a, b):
             if n not in gears:
-                raise InputError(f"no gear named {n!r}; expected one of {', '.join(gears)}", file=path,
+                raise InputError(Said("gm_gear_named_one", n=n, v=', '.join(gears)), file=path,
                                  field=f + "gears")
         if a == b or frozenset((a, b)) in seen:
-            raise InputError(f"the pair {a}-{b} is not a new pair of two gears", file=path, field=f + "gears")
+            raise InputError(Said("gm_pair_new_pair", a=a, b=b), file=path, field=f + "gears")
         seen.add(frozenset((a, b)))
         ga, gb = gears[a], gears[b]
         if ga.internal and gb.internal:
-            raise InputError(f"two internal gears {a} and {b} cannot mesh", file=path, field=f + "gears")
+            raise InputError(Said("gm_two_internal_gears", a=a, b=b), file=path, field=f + "gears")
         if abs(ga.module - gb.module) > 1e-12 * ga.module:
-            raise InputError(f"gears {a} and {b} have different modules", file=path, field=f + "gears")
+            raise InputError(Said("gm_gears_have_different", a=a, b=b), file=path, field=f + "gears")
         if ga.shaft == gb.shaft:
-            raise InputError(f"gears {a} and {b} are on one shaft and cannot mesh", file=path, field=f + "gears")
+            raise InputError(Said("gm_gears_are_one", a=a, b=b), file=path, field=f + "gears")
         aw = t.get("centre_distance")
-        awv = None if aw is None else _num(aw, path, f + "centre_distance", "a centre distance > 0", lo=0.0) * k
+        awv = None if aw is None else _num(aw, path, f + "centre_distance", Said("gm_w_centre"), lo=0.0) * k
         draw = t.get("draw", False)
         if not isinstance(draw, bool):
-            raise InputError("expected true or false", file=path, field=f + "draw")
+            raise InputError(Said("gm_true_false"), file=path, field=f + "draw")
         meshes.append(Mesh((a, b), awv, draw))
     return meshes

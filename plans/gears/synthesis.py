@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from plans.errors import InputError
+from plans.errors import InputError, Said
 
 from .model import SynthesisSpec
 
@@ -61,6 +61,5 @@ def candidates(spec: SynthesisSpec, ha: float, z3_max: int = 400) -> list[TeethS
 def synthesise(spec: SynthesisSpec, ha: float, file: str | None = None) -> TeethSet:
     found = candidates(spec, ha)
     if not found:
-        raise InputError(f"no 2K-H train with up to 400 ring teeth gives i_1H = {spec.ratio:g} within "
-                         f"{spec.tolerance:g} for planets {list(spec.planets)}", file=file, field="synthesis")
+        raise InputError(Said("gy_train_up_ring", ratio=spec.ratio, tolerance=spec.tolerance, v=list(spec.planets)), file=file, field="synthesis")
     return min(found, key=lambda t: (t.z3, abs(t.ratio - spec.ratio), -t.planets))

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from plans.errors import InputError
+from plans.errors import InputError, Said
 
 Pt = tuple[float, float]  # (v drawn, y drawn), plan millimetres
 
@@ -72,8 +72,7 @@ def carrier_of(shafts: dict, s: str) -> str | None:
 def mesh_carrier(shafts: dict, me: TrainMesh, file: str | None) -> str | None:
     ca, cb = carrier_of(shafts, me.shafts[0]), carrier_of(shafts, me.shafts[1])
     if ca is not None and cb is not None and ca != cb:
-        raise InputError(f"gears {me.gears[0]} and {me.gears[1]} ride on different carriers "
-                         f"({ca}, {cb}) and cannot mesh", file=file, field="shafts")
+        raise InputError(Said("gt_gears_ride_different", v=me.gears[0], v2=me.gears[1], ca=ca, cb=cb), file=file, field="shafts")
     return ca or cb
 
 
@@ -104,13 +103,12 @@ def willis(shafts: dict, meshes: list[TrainMesh], file: str | None) -> dict[str,
     rank = np.linalg.matrix_rank(A) if len(A) else 0
     if rank < len(names):
         free = len(names) - rank
-        raise InputError(f"the train has {free} more degree(s) of freedom than speeds given; "
-                         "expected speed_rpm on more shafts (a differential needs two)",
+        raise InputError(Said("gt_train_has_free", free=free),
                          file=file, field="shafts")
     w, *_ = np.linalg.lstsq(A, b, rcond=None)
     scale = max(1.0, float(np.max(np.abs(b))))
     if float(np.max(np.abs(A @ w - b))) > 1e-9 * scale * max(1.0, float(np.max(np.abs(A)))):
-        raise InputError("the given speeds contradict the train (it would lock)", file=file, field="shafts")
+        raise InputError(Said("gt_given_speeds_contradict"), file=file, field="shafts")
     return {n: float(w[idx[n]]) for n in names}
 
 
@@ -138,15 +136,14 @@ def layout(shafts: dict, meshes: list[TrainMesh], file: str | None) -> tuple[dic
             pitch[me.gears] = y_p
             if other in axes:
                 if abs(axes[other] - y_o) > 1e-9 * max(1.0, abs(y_o)) + 1e-9:
-                    raise InputError(f"gears {me.gears[0]} and {me.gears[1]}: the train does not close "
-                                     f"(axes not coaxial by {abs(axes[other] - y_o) * 1e3:.4g} mm)",
+                    raise InputError(Said("gt_gears_train_does", v=me.gears[0], v2=me.gears[1], v3=abs(axes[other] - y_o) * 1e3),
                                      file=file, field="meshes")
             else:
                 axes[other] = y_o
             todo.remove(me)
             progress = True
         if not progress:
-            raise InputError("the meshes do not join into one train", file=file, field="meshes")
+            raise InputError(Said("gt_meshes_do_join"), file=file, field="meshes")
     for n in shafts:  # carriers sit on the axis of the central wheels they turn about
         if n in axes:
             continue
@@ -156,7 +153,7 @@ def layout(shafts: dict, meshes: list[TrainMesh], file: str | None) -> tuple[dic
                 if carrier_of(shafts, me.shafts[k]) == n and carrier_of(shafts, me.shafts[1 - k]) is None:
                     centrals.add(round(axes[me.shafts[1 - k]], 12))
         if len(centrals) > 1:
-            raise InputError(f"carrier {n}: its central wheels are not coaxial", file=file, field="shafts")
+            raise InputError(Said("gt_carrier_its_central", n=n), file=file, field="shafts")
         axes[n] = centrals.pop() if centrals else 0.0
     return axes, pitch
 
@@ -239,8 +236,7 @@ def velocity_plan(shafts: dict, meshes: list[TrainMesh], file: str | None, *, mu
             progress = True
         if not progress:
             missing = [n for n in shafts if n not in lines]
-            raise InputError(f"the velocity plan cannot be built: shafts {', '.join(missing)} have no "
-                             "known speed; expected speed_rpm on more shafts", file=file, field="shafts")
+            raise InputError(Said("gt_velocity_plan_cannot", v=', '.join(missing)), file=file, field="shafts")
     if h <= 0.0:  # the pole distance: 50 mm, or a multiple of 5 mm keeping rays within 150 mm
         steep = max(abs((q[0] - p[0]) / (q[1] - p[1])) for p, q, _ in lines.values())
         h = 50.0 if steep * 50.0 <= 150.0 else max(5.0, 5.0 * math.floor(150.0 / steep / 5.0))
@@ -255,5 +251,5 @@ def velocity_plan(shafts: dict, meshes: list[TrainMesh], file: str | None, *, mu
         la, lb = out[me.shafts[0]], out[me.shafts[1]]
         va, vb = _at(la.p0, la.p1, yp), _at(lb.p0, lb.p1, yp)
         if abs(va - vb) > 1e-9 * max(1.0, abs(va)):
-            raise InputError("the given speeds contradict the train (it would lock)", file=file, field="shafts")
+            raise InputError(Said("gt_given_speeds_contradict"), file=file, field="shafts")
     return VelocityPlan(mu_l, mu_v, h, axes, pitch, out, tuple(order))

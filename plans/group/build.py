@@ -26,7 +26,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from plans.errors import InputError, PlansError, one_line
+from plans.errors import InputError, PlansError, Said, one_line
 
 #: ``{name}``: a placeholder (a TOML inline table has spaces or ``=`` inside its braces).
 PLACEHOLDER = re.compile(r"\{([A-Za-z_][A-Za-z0-9_]*)\}")
@@ -67,7 +67,7 @@ def read_table(path: str | Path) -> list[Row]:
     """The rows of a variant table (CSV or TOML); a bad table is one InputError line."""
     path = Path(path)
     if not path.is_file():
-        raise InputError("no such file", file=str(path))
+        raise InputError(Said("gb_such_file"), file=str(path))
     raws: list[tuple[dict[str, str], str]] = []
     default: str | None = None
     if path.suffix.lower() == ".toml":
@@ -75,23 +75,23 @@ def read_table(path: str | Path) -> list[Row]:
 
         data = read_toml(path)
         if data.get("kind") != "variants":
-            raise InputError(f"expected kind = \"variants\", got {data.get('kind')!r}", file=str(path), field="kind")
+            raise InputError(Said("gb_kind_variants", v=data.get('kind')), file=str(path), field="kind")
         default = data.get("template") if isinstance(data.get("template"), str) else None
         rows = data.get("variants")
         if not isinstance(rows, list) or not rows:
-            raise InputError("expected [[variants]] tables, one per variant", file=str(path), field="variants")
+            raise InputError(Said("gb_variants_tables_one"), file=str(path), field="variants")
         for i, r in enumerate(rows):
             if not isinstance(r, dict):
-                raise InputError("expected a table", file=str(path), field=f"variants[{i}]")
+                raise InputError(Said("sm_table"), file=str(path), field=f"variants[{i}]")
             raws.append(({str(k): _text(v) for k, v in r.items()}, f"variants[{i}]"))
     else:
         try:
             text = path.read_text(encoding="utf-8-sig")
         except UnicodeDecodeError:
-            raise InputError("expected a UTF-8 CSV file", file=str(path)) from None
+            raise InputError(Said("gb_utf_csv_file"), file=str(path)) from None
         reader = csv.DictReader(io.StringIO(text))
         if not reader.fieldnames or "variant" not in reader.fieldnames:
-            raise InputError("expected a header row with a 'variant' column", file=str(path), field="variant")
+            raise InputError(Said("gb_header_row_variant"), file=str(path), field="variant")
         for n, r in enumerate(reader, 2):
             raws.append(({k.strip(): (v or "").strip() for k, v in r.items() if k}, f"row {n}"))
     if default is None:
@@ -102,17 +102,17 @@ def read_table(path: str | Path) -> list[Row]:
     for data, where in raws:
         v = data.pop("variant", "")
         if not _VARIANT.match(v):
-            raise InputError(f"expected a variant name (letters, digits, '-', '_', '.'), got {v!r}",
+            raise InputError(Said("gb_variant_name_letters", v=v),
                              file=str(path), field=f"{where}.variant")
         if v == "handouts":
-            raise InputError("'handouts' is the folder of the handouts; expected another variant name",
+            raise InputError(Said("gb_handouts_folder_handouts"),
                              file=str(path), field=f"{where}.variant")
         if v in seen:
-            raise InputError(f"variant {v!r} is given twice", file=str(path), field=f"{where}.variant")
+            raise InputError(Said("gb_variant_given_twice", v=v), file=str(path), field=f"{where}.variant")
         seen.add(v)
         tmpl = data.pop("template", "") or default
         if not tmpl:
-            raise InputError("expected a 'template' column (or one *.template beside the table)",
+            raise InputError(Said("gb_template_column_one"),
                              file=str(path), field=f"{where}.template")
         out.append(Row(v, path.parent / tmpl, data, f"{path.name}, {where}"))
     return out
@@ -122,18 +122,18 @@ def read_roster(path: str | Path, variants: set[str]) -> list[dict[str, str]]:
     """The roster: CSV with columns name, group, variant (every variant one of the table's)."""
     path = Path(path)
     if not path.is_file():
-        raise InputError("no such file", file=str(path))
+        raise InputError(Said("gb_such_file"), file=str(path))
     reader = csv.DictReader(io.StringIO(path.read_text(encoding="utf-8-sig")))
     need = ("name", "group", "variant")
     if not reader.fieldnames or any(c not in reader.fieldnames for c in need):
-        raise InputError("expected the columns name, group, variant", file=str(path))
+        raise InputError(Said("gb_columns_name_group"), file=str(path))
     out = []
     for n, r in enumerate(reader, 2):
         st = {c: (r.get(c) or "").strip() for c in need}
         if not st["name"]:
-            raise InputError("expected the student's name", file=str(path), field=f"row {n}.name")
+            raise InputError(Said("gb_student_name"), file=str(path), field=f"row {n}.name")
         if st["variant"] not in variants:
-            raise InputError(f"variant {st['variant']!r} is not in the variant table", file=str(path),
+            raise InputError(Said("gb_variant_variant_table", v=st['variant']), file=str(path),
                              field=f"row {n}.variant")
         out.append(st)
     return out
@@ -143,7 +143,7 @@ def fill(template: str, row: Row) -> str:
     """The template with every ``{placeholder}`` replaced by the row's value as written."""
     missing = sorted({m for m in PLACEHOLDER.findall(template) if m != "variant" and not row.data.get(m)})
     if missing:
-        raise InputError(f"no value for {', '.join(missing)} (the template {row.template.name} names them)",
+        raise InputError(Said("gb_value_template_name", v=', '.join(missing), name=row.template.name),
                          file=row.where)
     return PLACEHOLDER.sub(lambda m: row.variant if m.group(1) == "variant" else row.data[m.group(1)], template)
 
@@ -159,7 +159,7 @@ def build(row: Row) -> Built:
         try:
             template = row.template.read_text(encoding="utf-8")
         except OSError as exc:
-            raise InputError(f"cannot read the template: {exc.strerror}", file=str(row.template)) from None
+            raise InputError(Said("gb_cannot_read_template", strerror=exc.strerror), file=str(row.template)) from None
         text = fill(template, row)
         syn: dict[str, float] = {}
         data = loads_toml(text, str(row.template))

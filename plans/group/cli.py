@@ -7,7 +7,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from plans.errors import InputError, PlansError, error_prefix, one_line
+from plans.errors import InputError, PlansError, Said, error_prefix, one_line
 
 
 def run_group(args: argparse.Namespace) -> int | None:
@@ -35,7 +35,7 @@ def _template(args: argparse.Namespace) -> int | None:
     if kind not in ("gears", "cam"):
         return None
     if args.form != "toml":
-        raise InputError(f"the CSV form is for linkage scenes; a {kind} sheet has a check file", file=str(src), field="--form")
+        raise InputError(Said("gl_csv_form_linkage", kind=kind), file=str(src), field="--form")
     from plans.group.sheets import blank, sheet_key
 
     target = Path(args.output) if args.output else None

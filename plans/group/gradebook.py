@@ -39,10 +39,29 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from plans.errors import InputError, PlansError, one_line
+from plans.errors import InputError, PlansError, Said, error_prefix, one_line, run_language
 
 HEADER = ("student", "group", "variant", "mark")
 TAIL = ("causes", "unexplained", "findings")
+
+
+def heading(column: str, lang: str) -> str:
+    """A column's heading (a sheet kind's too) in ``lang``: the catalogue's ``gb_<column>``."""
+    from plans.messages_terminal import TERMINAL
+    from plans.phrases import say
+
+    return say(f"gb_{column}", lang) if f"gb_{column}" in TERMINAL else column
+
+
+def _at(what: str, phis: list[float], lang: str) -> str:
+    """``coriolis_reversed at 30,60°``; in Russian the teacher's words for the cause."""
+    from plans.errors import Figures
+    from plans.language import CAUSES
+    from plans.phrases import say
+
+    if lang == "ru":
+        return say("gb_at", lang, what=CAUSES[what][1] if what in CAUSES else what, phis=Figures(phis).written(lang))
+    return say("gb_at", lang, what=what, phis=",".join(f"{p:g}" for p in phis))
 
 
 @dataclass
@@ -80,11 +99,11 @@ def read_rubric(path: str | Path | None) -> Rubric:
     data = read_toml(path)
     check_keys(data, ("format", "kind", "pass", "weights", "marks", "title"), file=str(path), where="")
     if data.get("kind", "rubric") != "rubric":
-        raise InputError(f"expected kind = \"rubric\", got {data.get('kind')!r}", file=str(path), field="kind")
+        raise InputError(Said("gg_kind_rubric", v=data.get('kind')), file=str(path), field="kind")
 
     def num(v: Any, where: str) -> float:
         if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v) or not 0 <= v <= 1e6:
-            raise InputError(f"expected a number from 0 to 1e6, got {v!r}", file=str(path), field=where)
+            raise InputError(Said("gg_number_from", v=v), file=str(path), field=where)
         return float(v)
 
     weights = {str(k): num(v, f"weights.{k}") for k, v in (data.get("weights") or {}).items()}
@@ -107,6 +126,7 @@ def _sheet_of(path: Path) -> Sheet | None:
         return None
     sh = Sheet(str(path), kind, str(data.get("student", "")) or path.stem, str(data.get("group", "")),
                str(data.get("variant", "")))
+    lang = run_language()
     try:
         if kind == "linkage":
             from plans.check.checkfile import check_from_dict
@@ -114,12 +134,11 @@ def _sheet_of(path: Path) -> Sheet | None:
             from plans.io import dumps
 
             rep = check(check_from_dict(data, str(path)))
-            sh.report, sh.text, sh.row = dumps(rep.to_json()), table(rep) + "\n", summary_row(str(path), rep)
+            sh.report, sh.text, sh.row = dumps(rep.to_json()), table(rep, lang) + "\n", summary_row(str(path), rep, lang=lang)
             full = (rep.diagnosis.rubric.get("full", 100.0) if rep.diagnosis is not None else 100.0) or 100.0
             sh.score = 100.0 * (rep.mark if rep.mark is not None else full) / full
-            sh.causes = [c.kind + (f" at {','.join(f'{p:g}' for p in c.positions)}°" if c.positions else "")
-                         for c in rep.causes]
-            sh.unexplained = list(dict.fromkeys(f"{i.quantity} at {i.phi_deg:g}°" for i in rep.unexplained))
+            sh.causes = [_at(c.kind, c.positions, lang) if c.positions else c.kind for c in rep.causes]
+            sh.unexplained = list(dict.fromkeys(_at(i.quantity, [i.phi_deg], lang) for i in rep.unexplained))
             sh.findings = dict(Counter(f.kind for f in rep.findings_left))
         else:
             from plans.group.sheets import summary_row as sheet_row
@@ -127,7 +146,8 @@ def _sheet_of(path: Path) -> Sheet | None:
             from plans.io import dumps
 
             srep = check_sheet(data, str(path))
-            sh.report, sh.text, sh.row = dumps(srep.to_json()), sheet_table(srep) + "\n", sheet_row(str(path), srep)
+            sh.report, sh.text, sh.row = (dumps(srep.to_json()), sheet_table(srep, lang) + "\n",
+                                          sheet_row(str(path), srep, lang))
             sh.score = 100.0 * srep.mark / (srep.full or 100.0)
             sh.causes = [c.kind for c in srep.causes]
             sh.unexplained = list(dict.fromkeys(i.quantity for i in srep.unexplained))
@@ -135,7 +155,7 @@ def _sheet_of(path: Path) -> Sheet | None:
         sh.error = one_line(exc)
         from plans.check.report import summary_row
 
-        sh.row = summary_row(str(path), None, sh.error)
+        sh.row = summary_row(str(path), None, sh.error, lang=lang)
     return sh
 
 
@@ -160,8 +180,9 @@ def check_all(folder: Path, jobs: int = 1) -> list[Sheet]:
     return [s for s in got if s is not None]
 
 
-def rows(sheets: list[Sheet], rubric: Rubric) -> tuple[list[str], dict[str, list[dict[str, Any]]]]:
+def rows(sheets: list[Sheet], rubric: Rubric, lang: str | None = None) -> tuple[list[str], dict[str, list[dict[str, Any]]]]:
     """The sheet kinds (score columns) and, per group, one row per student."""
+    lang = lang or run_language()
     kinds = sorted({s.kind for s in sheets} | set(rubric.weights))
     students: dict[tuple[str, str], list[Sheet]] = {}
     for s in sheets:
@@ -190,8 +211,8 @@ def rows(sheets: list[Sheet], rubric: Rubric) -> tuple[list[str], dict[str, list
             "variant": ", ".join(sorted({s.variant for s in mine if s.variant})), "mark": mark,
             "_score": weighted,
             **{k: (None if scores.get(k) is None else round(float(scores[k] or 0.0), 1)) for k in kinds},
-            "causes": "; ".join(f"{s.kind}: {c}" for s in mine for c in s.causes),
-            "unexplained": "; ".join(f"{s.kind}: {u}" for s in mine for u in s.unexplained),
+            "causes": "; ".join(f"{heading(s.kind, lang)}: {c}" for s in mine for c in s.causes),
+            "unexplained": "; ".join(f"{heading(s.kind, lang)}: {u}" for s in mine for u in s.unexplained),
             "findings": "; ".join(f"{k}: {n}" for k, n in sorted(findings.items())),
             "_errors": [f"{s.path}: {s.error}" for s in mine if s.error],
         }
@@ -199,8 +220,11 @@ def rows(sheets: list[Sheet], rubric: Rubric) -> tuple[list[str], dict[str, list
     return kinds, out
 
 
-def xlsx_bytes(kinds: list[str], groups: dict[str, list[dict[str, Any]]], rubric: Rubric) -> bytes:
-    """The workbook: one worksheet per group; the same rows give the same bytes."""
+def xlsx_bytes(kinds: list[str], groups: dict[str, list[dict[str, Any]]], rubric: Rubric,
+               lang: str | None = None) -> bytes:
+    """The workbook: one worksheet per group, its headings in ``lang`` (default: the run's);
+    the same rows give the same bytes."""
+    lang = lang or run_language()
     import datetime
 
     from openpyxl import Workbook
@@ -216,7 +240,7 @@ def xlsx_bytes(kinds: list[str], groups: dict[str, list[dict[str, Any]]], rubric
     yellow = PatternFill(start_color="FFEB9C", end_color="FFEB9C", fill_type="solid")
     for group, rs in sorted(groups.items()):
         ws = wb.create_sheet(_title(group))
-        ws.append(header)
+        ws.append([heading(h, lang) for h in header])
         for c in ws[1]:
             c.font = Font(bold=True)
         for r in rs:
@@ -225,7 +249,7 @@ def xlsx_bytes(kinds: list[str], groups: dict[str, list[dict[str, Any]]], rubric
         n = len(rs) + 1
         for j, h in enumerate(header, 1):
             col = get_column_letter(j)
-            ws.column_dimensions[col].width = 40 if h in TAIL else max(10, len(h) + 2)
+            ws.column_dimensions[col].width = 40 if h in TAIL else max(10, len(heading(h, lang)) + 2)
             if h in kinds or (h == "mark" and not rubric.marks):
                 rng = f"{col}2:{col}{n}"
                 ws.conditional_formatting.add(rng, CellIsRule(operator="lessThan", formula=[str(rubric.passing)],
@@ -275,20 +299,20 @@ def run_gradebook(args: Any) -> int:
 
     folder = Path(args.path or "")
     if not args.path or not folder.is_dir():
-        raise InputError("expected a folder of check files with --xlsx", file=args.path, field="--xlsx")
+        raise InputError(Said("gg_folder_check_files"), file=args.path, field="--xlsx")
     target = Path(args.xlsx)
     if target.suffix.lower() != ".xlsx":
-        raise InputError(f"expected a .xlsx file, got {target.name}", file=str(folder), field="--xlsx")
+        raise InputError(Said("gg_xlsx_file_name", name=target.name), file=str(folder), field="--xlsx")
     refuse_input(str(target), *(str(p) for p in folder.rglob("*.toml")))
     if not target.parent.is_dir():
-        raise InputError(f"no such folder {target.parent}", file=str(folder), field="--xlsx")
+        raise InputError(Said("gg_such_folder_parent", parent=target.parent), file=str(folder), field="--xlsx")
     jobs = getattr(args, "jobs", 1) or 1
     if not 1 <= jobs <= 64:
-        raise InputError(f"expected 1 to 64 jobs, got {jobs}", file=str(folder), field="--jobs")
+        raise InputError(Said("gg_jobs_jobs", jobs=jobs), file=str(folder), field="--jobs")
     rubric = read_rubric(getattr(args, "rubric", None))
     sheets = check_all(folder, jobs)
     if not sheets:
-        raise InputError("no check file with a figure written", file=str(folder))
+        raise InputError(Said("gg_check_file_figure"), file=str(folder))
     kinds, groups = rows(sheets, rubric)
     data = xlsx_bytes(kinds, groups, rubric)
     files: dict[Path, bytes | str] = {target: data}
@@ -303,27 +327,30 @@ def run_gradebook(args: Any) -> int:
         if s.report:
             files[out / f"{stem}.json"] = s.report
             files[out / f"{stem}.txt"] = s.text
-    files[out / "summary.csv"] = summary_csv([s.row for s in sheets])
+    files[out / "summary.csv"] = summary_csv([s.row for s in sheets], run_language())
     out.mkdir(parents=True, exist_ok=True)
     write_all(files)
     if args.csv == "-":
         sys.stdout.write(csv_text(kinds, groups))
     bad = [e for rs in groups.values() for r in rs for e in r["_errors"]]
     for e in bad:
-        print(f"plans: error: {e}", file=sys.stderr)
+        print(f"{error_prefix()}{e}", file=sys.stderr)
     if not args.quiet and args.csv != "-":
         n = sum(len(rs) for rs in groups.values())
-        print(f"{target}: {n} students, {len(sheets)} sheets, {len(groups)} groups")
+        from plans.phrases import say
+
+        print(say("gb_summary", run_language(), target=target, students=n, sheets=len(sheets), groups=len(groups)))
     return 2 if bad else 0
 
 
-def csv_text(kinds: list[str], groups: dict[str, list[dict[str, Any]]]) -> str:
+def csv_text(kinds: list[str], groups: dict[str, list[dict[str, Any]]], lang: str | None = None) -> str:
     import csv
 
+    lang = lang or run_language()
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     header = [*HEADER, *kinds, *TAIL]
-    w.writerow(header)
+    w.writerow([heading(h, lang) for h in header])
     for _, rs in sorted(groups.items()):
         for r in rs:
             w.writerow(["" if r[h] is None else r[h] for h in header])

@@ -42,7 +42,7 @@ from statistics import median
 from typing import Any
 
 from plans.check import wording as wd
-from plans.errors import InputError
+from plans.errors import InputError, Said
 
 #: Angles of the cam at which the key gives the profile (degrees).
 CAM_ANGLES = tuple(float(a) for a in range(0, 360, 30))
@@ -64,10 +64,10 @@ def gears_values(data: dict[str, Any], path: str) -> tuple[dict[str, float], dic
     """Every figure of a gears sheet at position 0, and how each is judged
     (``drawn`` | ``ratio`` | ``rule``)."""
     from plans.gears.model import parse_gears
-    from plans.gears.solve import solve_gears
+    from plans.gears.solution import solve_file
 
     gf = parse_gears(data, path)
-    sol = solve_gears(gf)
+    sol = solve_file(gf).solution
     k = gf.to_unit
     vals: dict[str, float] = {}
     how: dict[str, str] = {}
@@ -97,9 +97,8 @@ def cam_values(data: dict[str, Any], path: str, r0: float | None = None, e: floa
     ``r0``, ``e``: the cam re-made with this base radius, offset (file units)."""
     import numpy as np
 
-    from plans.cams.analysis import findings, profile
-    from plans.cams.base_radius import min_base_radius
     from plans.cams.model import cam_from_dict
+    from plans.cams.solution import solve_cam
 
     cam = cam_from_dict(data, path)
     L = cam.scale
@@ -110,13 +109,14 @@ def cam_values(data: dict[str, Any], path: str, r0: float | None = None, e: floa
     out: dict[tuple[str, float], float] = {(("r0"), 0.0): cam.base_radius / L}
     if cam.follower == "translating":
         out[("e", 0.0)] = cam.offset / L
-    fi = findings(cam)
+    sol = solve_cam(cam)
+    fi = sol.findings
     out[("theta_rise", 0.0)] = math.degrees(fi.max_pressure_rise)
     out[("theta_return", 0.0)] = math.degrees(fi.max_pressure_return)
-    got = min_base_radius(cam, True).min_base_radius
+    got = sol.base_radius.min_base_radius
     if got is not None and r0 is None:
         out[("r0_min", 0.0)] = got / L
-    pr = profile(cam, np.radians(np.array(CAM_ANGLES)))
+    pr = sol.profile_at(np.radians(np.array(CAM_ANGLES)))
     lift = (180 / math.pi) if cam.follower == "oscillating" else 1 / L
     for i, phi in enumerate(CAM_ANGLES):
         out[("R", phi)] = float(np.hypot(*pr.theoretical[i])) / L
@@ -135,10 +135,10 @@ def engine_values(data: dict[str, Any], path: str) -> dict[str, float]:
     (``F_I``, ``M_II``, ``F_rot``: dimensionless, the closing side of the polygon of unit
     vectors, and ``F_I_amp`` in N, ``M_I_amp`` in N·m), and each counterweight's
     mass-radius product ``mr_cw1`` (kg·m) and angle ``angle_cw1`` (degrees)."""
-    from plans.balancing.analysis import balance
     from plans.balancing.engine import engine_from_dict
+    from plans.balancing.solution import solve_engine
 
-    got = balance(engine_from_dict(data, path)).to_json()
+    got = solve_engine(engine_from_dict(data, path)).balance.to_json()
     out: dict[str, float] = {}
     for what, letter in (("forces", "F"), ("moments", "M")):
         for order, tag in _ORDERS.items():
@@ -165,11 +165,11 @@ def synthesis_values(data: dict[str, Any], path: str) -> tuple[str, dict[str, fl
     ``l_<name>`` in the file's unit, ``theta`` in degrees, ``K``, the stroke ``H`` or the
     swing ``psi`` in degrees, ``gamma_min`` in degrees, as measured back on the design)."""
     from plans.synthesis.cli import check_scene, results
-    from plans.synthesis.design import design
     from plans.synthesis.model import task_from_dict
     from plans.synthesis.scene import scene_text
+    from plans.synthesis.solution import solve_task
 
-    d = design(task_from_dict(data, path))
+    d = solve_task(task_from_dict(data, path)).design
     text = scene_text(d)
     check_scene(text, path)
     res = results(d, "scene.toml")
@@ -315,7 +315,7 @@ def _number(v: Any, path: str, where: str) -> float | None:
     if v == "":
         return None
     if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
-        raise InputError(f"expected a number (or \"\" for not written), got {v!r}", file=path, field=where)
+        raise InputError(Said("gs_number_written", v=v), file=path, field=where)
     return float(v)
 
 
@@ -326,7 +326,7 @@ def check_sheet(data: dict[str, Any], path: str) -> SheetReport:
 
     kind = is_sheet_check(data)
     if kind is None:
-        raise InputError("expected a check file naming gears = FILE or cam = FILE", file=path)
+        raise InputError(Said("gs_check_file_naming"), file=path)
     check_keys(data, _TOP, file=path, where="")
     src = Path(path).parent / data[kind]
     part = read_toml(src)
@@ -378,8 +378,7 @@ def check_sheet(data: dict[str, Any], path: str) -> SheetReport:
     items = []
     for key, s in written.items():
         if key not in exact:
-            raise InputError(f"{key[0]} at {key[1]:g}° is not a figure of this {kind} sheet "
-                             f"(expected one of {', '.join(sorted({q for q, _ in exact}))})", file=path,
+            raise InputError(Said("gs_figure_this_kind", v=key[0], v2=key[1], kind=kind, v3=', '.join(sorted({q for q, _ in exact}))), file=path,
                              field="positions")
         if key[0].startswith("angle_"):  # a direction: 359.9° is 0.1° from 0°
             s = exact[key] + ((s - exact[key] + 180.0) % 360.0 - 180.0)

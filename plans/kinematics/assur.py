@@ -13,10 +13,11 @@ from typing import Any
 
 import numpy as np
 
-from plans.errors import Indeterminate, Locked, NotAssemblable
+from plans.errors import Indeterminate, Locked, NotAssemblable, Said
 from plans.kinematics.context import Context, Motion, place_link, point_at
 from plans.kinematics.structure import Group, Structure, TriadGroup
 from plans.lines import cross
+from plans.records import derived
 from plans.scene.model import Joint, Scene
 from plans.tolerances import ASSEMBLY_REL, LOCK_SIN
 
@@ -31,9 +32,10 @@ R = Any  # float64 array, shape (N,)
 
 def program(scene: Scene, st: Structure) -> list:
     """(solver, group, constants) per group, derived once per scene and structure."""
-    done = scene.memo.get("exact")
+    kept = derived(scene)
+    done = kept.get("exact")
     if done is None or done[0] is not st:
-        done = scene.memo["exact"] = (st, [_step(scene, g) for g in st.groups])
+        done = kept["exact"] = (st, [_step(scene, g) for g in st.groups])
     return done[1]
 
 
@@ -45,7 +47,7 @@ def _step(scene: Scene, g: Any) -> tuple:
     return _SOLVERS[g.kind], g, _CONSTANTS[g.kind](scene, g)
 
 
-def _fail(cls, ctx: Context, g: Group, mask, point: str, why: str):
+def _fail(cls, ctx: Context, g: Group, mask, point: str, why: str | Said):
     k = int(np.flatnonzero(np.atleast_1d(mask))[0])
     return cls(why, group=f"{g.kind} {g.name}", point=point, phi_deg=float(ctx.phis[k]))
 
@@ -115,11 +117,9 @@ def _lock(ctx: Context, g: Group, det: R, size: Any, point: str, system: _System
             w = complex(np.atleast_1d(rhs)[k if np.size(rhs) > 1 else 0])
             if abs((c1.conjugate() * w).imag) <= LOCK_SIN * abs(c1) * abs(w) or abs(w) == 0:
                 raise _fail(Indeterminate, ctx, g, bad, point,
-                            "the construction lines coincide: the plan is indeterminate here (a change "
-                            "point: the group may move on either way; give angles beside it)")
+                            Said("ka_construction_lines_coincide"))
         raise _fail(Locked, ctx, g, bad, point,
-                    "the construction lines are parallel and do not coincide: the group locks here "
-                    "(velocities are unbounded)")
+                    Said("ka_construction_lines_are"))
     ctx.conditions[g.name] = size / adet
 
 
@@ -144,10 +144,9 @@ def _nth(x: Any, k: int) -> float:
     return float(a[k] if a.size > 1 else a[0])
 
 
-def _branch_hint(g: Group) -> str:
+def _branch_hint(g: Group) -> Said:
     """Which ``[branches]`` entry picks the group's other assembly (where there are two)."""
-    return (f"; the group has no assembly here on either branch ([branches] \"{g.name}\" = "
-            f"{-g.branch:+d} selects the other of two assemblies only where two exist)")
+    return Said("ka_branch_hint", name=g.name, branch=f"{-g.branch:+d}")
 
 
 _NAMES: dict[Joint, str] = {}
@@ -205,13 +204,13 @@ def _rrr(ctx: Context, g: Group, k: tuple) -> None:
     D = abs(d)
     if ctx.xp.low(D) <= ASSEMBLY_REL * (l1 + l3):
         raise _fail(NotAssemblable, ctx, g, D <= ASSEMBLY_REL * (l1 + l3), j2.point,
-                    f"{j1.point} and {j3.point} coincide: the position of {j2.point} is undefined")
+                    Said("ka_point_point_coincide", point=j1.point, point2=j3.point, point3=j2.point))
     # a along d, h across it; h² as (l1 − a)(l1 + a): no cancellation near a tangent assembly
     a = (half_diff + 0.5 * D * D) / D
     h = _root(ctx, g, l1 - a, l1 + a, lambda: l1 + l3 + D, j2.point,
-              lambda k: f"{j1.point}{j2.point} = {l1 * 1e3:.6g} mm and {j3.point}{j2.point} = {l3 * 1e3:.6g} mm "
-                        f"cannot span {j1.point}{j3.point} = {_nth(D, k) * 1e3:.6g} mm "
-                        f"(they span {abs(l1 - l3) * 1e3:.6g} to {(l1 + l3) * 1e3:.6g} mm)" + _branch_hint(g))
+              lambda k: Said("ka_cannot_span", ab=f"{j1.point}{j2.point}", l1=l1 * 1e3, cb=f"{j3.point}{j2.point}",
+                             l3=l3 * 1e3, ac=f"{j1.point}{j3.point}", d=_nth(D, k) * 1e3, lo=abs(l1 - l3) * 1e3,
+                             hi=(l1 + l3) * 1e3, hint=_branch_hint(g)))
     r1 = (a + 1j * h if g.branch > 0 else a - 1j * h) * (d / D)  # B − P1
     B = P1 + r1
     r3 = B - P3
@@ -253,9 +252,8 @@ def _rrp(ctx: Context, g: Group, k: tuple) -> None:
     wu = (P1 - G0) * u.conjugate()  # t0 + i·e: along and across the guide
     t0, e = wu.real, wu.imag
     root = _root(ctx, g, l1 - e, l1 + e, lambda: l1, j2.point,
-                 lambda k: f"{j1.point}{j2.point} = {l1 * 1e3:.6g} mm is shorter than the distance "
-                           f"{abs(_nth(e, k)) * 1e3:.6g} mm from {j1.point} to the guide of {j2.point}"
-                         + _branch_hint(g))
+                 lambda k: Said("ka_shorter", ab=f"{j1.point}{j2.point}", l1=l1 * 1e3, d=abs(_nth(e, k)) * 1e3,
+                                a=j1.point, b=j2.point, hint=_branch_hint(g)))
     B = G0 + (t0 + root if g.branch > 0 else t0 - root) * u
     r1 = B - P1
     mi = place_link(ctx, i, r1 * (ci / abs(r1)), P1, z1i)
@@ -311,8 +309,7 @@ def _rpr(ctx: Context, g: Group, k: tuple) -> None:
         sin_ = ecc / np.where(D > 0, D, 1.0)
         bad = (D == 0) | (np.abs(sin_) > 1 + ASSEMBLY_REL)
         raise _fail(NotAssemblable, ctx, g, bad, j2.point,
-                    f"the slot of link {j} (offset {abs(ecc):.6g} m from {j3.point}) cannot pass through "
-                    f"{j1.point}")
+                    Said("ka_slot_link_offset", j=j, v=abs(ecc), point=j3.point, point2=j1.point))
     s = xp.arcsin(xp.clip(ecc / D, -1.0, 1.0))
     psi = xp.angle(d)
     # θ_j: the slot through C + e^{iθ}c0 along e^{i(θ+α)} holds A iff D sin(ψ − θ − α) = ecc;
@@ -352,7 +349,7 @@ def _prp(ctx: Context, g: Group, k: tuple) -> None:
     det = sys2.det
     if ctx.xp.low(abs(det)) <= LOCK_SIN:
         raise _fail(NotAssemblable, ctx, g, abs(det) <= LOCK_SIN, j2.point,
-                    "the two guides are parallel: they have no common point")
+                    Said("ka_two_guides_are"))
     ctx.conditions[g.name] = 1.0 / abs(det)
     s1, _ = sys2(G3 - G1)
     B = G1 + s1 * u1
@@ -403,7 +400,7 @@ def _rpp(ctx: Context, g: Group, k: tuple) -> None:
     det = sys2.det
     if ctx.xp.low(abs(det)) <= LOCK_SIN:
         raise _fail(NotAssemblable, ctx, g, abs(det) <= LOCK_SIN, j2.point,
-                    f"the slot of link {j} is parallel to its guide: {j2.point} cannot be reached")
+                    Said("ka_slot_link_parallel", j=j, point=j2.point))
     ctx.conditions[g.name] = 1.0 / abs(det)
     # r0_j = G3 + t u3 − rot zK ; A on slot: cross(u2, A − G3 − t u3 + rot (zK − g2)) = 0
     t = cross(u2, A - G3 + rot * zKg) / det

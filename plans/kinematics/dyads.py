@@ -33,7 +33,7 @@ from typing import TYPE_CHECKING, Any, Protocol
 
 import numpy as np
 
-from plans.errors import Locked
+from plans.errors import Locked, Said
 from plans.kinematics.cases import Arrays, Numbers, cross, unit
 from plans.kinematics.exact import Kinematics
 from plans.kinematics.plan import Step
@@ -213,8 +213,7 @@ class PerfectPencil:
         gap = abs(cross(d1, p2 - p1))
         locked = near & (sin <= LOCK_SIN) & (gap > COINCIDE_REL * extent)
         if xp.any(locked):
-            raise Locked(f"the lines {b.line_labels[-2]} and {b.line_labels[-1]} of the "
-                         f"{b.kind} plan are parallel and apart", group=f"{group.kind} {group.name}",
+            raise Locked(Said("kd_lines_kind_plan", v=b.line_labels[-2], v2=b.line_labels[-1], kind=b.kind), group=f"{group.kind} {group.name}",
                          point=point, phi_deg=b.snap.phi_at(xp.argmax(locked)))
         b.degenerate.append((out, near, sin))
         t = cross(p2 - p1, d2) / xp.where(near, 1.0, s)

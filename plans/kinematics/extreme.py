@@ -27,8 +27,8 @@ from typing import Any
 
 import numpy as np
 
-from plans.errors import ConstructionError, InputError
-from plans.records import frozen
+from plans.errors import ConstructionError, InputError, Said
+from plans.records import derived, frozen
 from plans.scene.model import Joint, Scene
 from plans.tolerances import COINCIDE_REL
 
@@ -102,7 +102,7 @@ def start_line(scene: Scene, lang: str) -> str:
 # --------------------------------------------------------------------------- the output
 
 
-def _fail(scene: Scene, field: str, msg: str) -> InputError:
+def _fail(scene: Scene, field: str, msg: str | Said) -> InputError:
     return InputError(msg, file=scene.path, field=field)
 
 
@@ -132,12 +132,11 @@ def output_of(scene: Scene, field: str = "driver.extreme_of") -> Output:
         else:
             cands = []
         if not cands:
-            raise _fail(scene, field, f"expected a moving link (not the crank) or a point on one, got {want!r}")
+            raise _fail(scene, field, Said("kx_moving_link_crank", want=want))
         outs = [o for o in (_on_frame(scene, lid) for lid in cands) if o is not None]
         sliders = [o for o in outs if o.kind == "slider"]
         if not outs:
-            raise _fail(scene, field, f"{want!r} is neither a slider on a guide of the frame nor a rocker pivoted "
-                                      "on the frame: it has no extreme positions of its own")
+            raise _fail(scene, field, Said("kx_want_neither_slider", want=want))
         return (sliders or outs)[0]
     st = analyse(scene)
     for g in reversed(st.groups):
@@ -147,8 +146,7 @@ def output_of(scene: Scene, field: str = "driver.extreme_of") -> Output:
             o = _on_frame(scene, lid)
             if o is not None:
                 return o
-    raise _fail(scene, field, "no slider or rocker on the frame whose extreme positions to take; "
-                              "name one: extreme_of = link number")
+    raise _fail(scene, field, Said("kx_slider_rocker_frame"))
 
 
 # --------------------------------------------------------------------------- its motion
@@ -204,9 +202,10 @@ def strokes(scene: Scene, field: str = "driver.phi_start", *, closed: bool = Tru
     if closed and output is None and scene.driver.strokes is not None:
         return scene.driver.strokes
     key = ("strokes", closed, None if output is None else (output.link, output.point))
-    done = scene.memo.get(key)
+    kept = derived(scene)
+    done = kept.get(key)
     if done is None:
-        done = scene.memo[key] = _strokes(scene, field, closed, output)
+        done = kept[key] = _strokes(scene, field, closed, output)
     return done
 
 
@@ -227,16 +226,15 @@ def _strokes(scene: Scene, field: str, closed: bool, output: Output | None) -> S
     try:
         kin = solve(probe, grid, order=1)
     except ConstructionError as exc:
-        raise _fail(scene, field, f"the extreme positions need the crank to turn a full revolution ({exc})") from None
+        raise _fail(scene, field, Said("kx_extreme_positions_need", exc=exc)) from None
     c, v = _coordinate(out, kin)
     top, bottom = int(np.argmax(c[:-1])), int(np.argmin(c[:-1]))
     crank = scene.links[scene.driver.link]
     reach = abs(crank.points[crank.axis[1]] - crank.points[scene.driver.pivot]) if out.kind == "slider" else 1.0
     if c[top] - c[bottom] <= COINCIDE_REL * reach:  # a ram whose guide passes through its rocker's pivot
-        raise _fail(scene, field, f"the output (link {out.link}) does not move: it has no extreme positions")
+        raise _fail(scene, field, Said("kx_output_link_link", link=out.link))
     if out.kind == "rocker" and abs(c[-1] - c[0]) > math.pi:
-        raise _fail(scene, field, f"link {out.link} turns all the way round: it has no extreme positions; "
-                                  "name a slider or a rocker: extreme_of = link number")
+        raise _fail(scene, field, Said("kx_link_link_turns", link=out.link))
     found = []
     used_closed = closed
     for k, sign in ((top, 1.0), (bottom, -1.0)):
@@ -246,8 +244,7 @@ def _strokes(scene: Scene, field: str, closed: bool, output: Output | None) -> S
         if phi is None:
             used_closed = False
             if _rate(probe, out, lo) * sign < 0 or _rate(probe, out, hi) * sign > 0:
-                raise _fail(scene, field, f"the output (link {out.link}) does not turn back near φ = "
-                                          f"{grid[k]:.6g}°: no extreme position there")
+                raise _fail(scene, field, Said("kx_output_link_link3", link=out.link, v=grid[k]))
             phi = _bisect(probe, out, lo, hi)
         found.append(_turn(phi))
     at_top, at_bottom = found
@@ -262,7 +259,7 @@ def _strokes(scene: Scene, field: str, closed: bool, output: Output | None) -> S
     start, other = (at_bottom, at_top) if working_up else (at_top, at_bottom)
     span = up if working_up else 360.0 - up
     if not 0.0 < span < 360.0:
-        raise _fail(scene, field, f"the output (link {out.link}) has no two distinct extreme positions")
+        raise _fail(scene, field, Said("kx_output_link_link2", link=out.link))
     return Strokes(out, start, other, span, working_up, used_closed)
 
 
@@ -383,9 +380,9 @@ def start_scene(scene: Scene, r: Any) -> Scene:
     start = r.choice(d, "phi_start", "driver.", STARTS, "extreme")
     for other in ("phi_deg", "phi0_deg"):
         if other in d:
-            raise r.fail(f"driver.{other}", f"the positions start at the extreme position (phi_start); drop {other}")
+            raise r.fail(f"driver.{other}", Said("kx_positions_start_extreme", other=other))
     if "positions" not in d:
-        raise r.fail("driver.phi_start", "phi_start goes with positions = N (12 in a course)")
+        raise r.fail("driver.phi_start", Said("kx_phi_start_goes"))
     st = strokes(scene)
     phi0 = st.working_deg if start == "extreme" else st.idle_deg
     n = len(scene.driver.phis_deg)

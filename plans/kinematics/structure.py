@@ -11,8 +11,8 @@ from __future__ import annotations
 from dataclasses import field
 from typing import Any, cast
 
-from plans.errors import InputError
-from plans.records import frozen
+from plans.errors import InputError, Said
+from plans.records import derived, frozen
 from plans.scene.model import Joint, Scene
 
 KINDS = ("RRR", "RRP", "RPR", "PRP", "RPP")
@@ -105,18 +105,19 @@ class Structure:
         # the groups are typed as dyads for the many readers that handle only those
         return [g for g in cast(tuple[Any, ...], self.groups) if isinstance(g, TriadGroup)]
 
-    def no_triad(self, path: str, what: str) -> None:
+    def no_triad(self, path: str, what: str | Said) -> None:
         """Refuse, in one line, what is not yet done for a class-III group."""
         for g in self.triads():
-            raise InputError(f"{what} of a class III group is not supported yet: group {g.kind} {g.name}",
+            raise InputError(Said("ks_what_class_iii", what=what, kind=g.kind, name=g.name),
                              file=path, field="outputs")
 
 
 def analyse(scene: Scene) -> Structure:
     """Mobility and Assur groups derived from links and joints alone (once per scene)."""
-    done = scene.memo.get("structure")
+    kept = derived(scene)
+    done = kept.get("structure")
     if done is None:
-        done = scene.memo["structure"] = _analyse(scene)
+        done = kept["structure"] = _analyse(scene)
     return done
 
 
@@ -126,13 +127,12 @@ def _analyse(scene: Scene) -> Structure:
     p5 = len(scene.joints)
     w = 3 * n - 2 * p5
     if w != 1:
-        raise fail("joints", f"mobility W = 3*{n} - 2*{p5} = {w}; expected W = 1 (one driving link)")
+        raise fail("joints", Said("ks_mobility_one_driving", n=n, p5=p5, w=w))
     drv = scene.driver.link
     frame = scene.frame
     base = [j for j in scene.joints if set(j.links) == {drv, frame}]
     if len(base) != 1 or base[0].kind != "R" or base[0].point != scene.driver.pivot:
-        raise fail("driver.link", f"link {drv} must be joined to the frame {frame} by one R joint at its pivot "
-                                  f"{scene.driver.pivot}")
+        raise fail("driver.link", Said("ks_link_drv_must", drv=drv, frame=frame, pivot=scene.driver.pivot))
     groups = _groups(scene, {drv, frame})
     return Structure(n=n, p5=p5, p4=0, initial=(drv, frame), groups=tuple(groups))
 
@@ -225,7 +225,7 @@ def _triad(scene: Scene, known: set[int], remaining: set[int], by_link: dict, be
 
 
 def _failer(path: str):
-    def fail(field: str, msg: str) -> InputError:
+    def fail(field: str, msg: str | Said) -> InputError:
         return InputError(msg, file=path, field=field)
     return fail
 
@@ -240,22 +240,22 @@ def _orient(scene: Scene, i: int, j: int, j1: Joint, j2: Joint, j3: Joint) -> Gr
     name = f"{min(i, j)}-{max(i, j)}"
     where = f"joints ({kind} group {name})"
     if kind == "PPP":
-        raise fail(where, "three prismatic pairs do not form an Assur group")
+        raise fail(where, Said("ks_three_prismatic_pairs"))
     p, q = j1.other(i), j3.other(j)
     if kind == "RRP":
         if j3.guide is None or j3.guide.link != q or j3.point != j2.point:
-            raise fail(where, f"the slider {j} must carry the pin {j2.point} along a guide on link {q}")
+            raise fail(where, Said("ks_slider_must_carry", j=j, point=j2.point, q=q))
     elif kind == "RPR":
         if j2.guide is None or j2.guide.link != j or j2.point != j1.point:
-            raise fail(where, f"the block {i} pinned at {j1.point} must slide in a slot carried by link {j}")
+            raise fail(where, Said("ks_block_pinned_point", i=i, point=j1.point, j=j))
     elif kind == "PRP":
         for jt, carrier in ((j1, p), (j3, q)):
             if jt.guide is None or jt.guide.link != carrier or jt.point != j2.point:
-                raise fail(where, f"both sliders must carry the pin {j2.point} along guides on the known links")
+                raise fail(where, Said("ks_both_sliders_must", point=j2.point))
     elif kind == "RPP":
         if j2.guide is None or j2.guide.link != j or j2.point != j1.point:
-            raise fail(where, f"the block {i} pinned at {j1.point} must slide in a slot carried by link {j}")
+            raise fail(where, Said("ks_block_pinned_point", i=i, point=j1.point, j=j))
         if j3.guide is None or j3.guide.link != q:
-            raise fail(where, f"link {j} must slide on a guide carried by link {q}")
+            raise fail(where, Said("ks_link_must_slide", j=j, q=q))
     branch = scene.branches.get(name, scene.branches.get(j2.point, 1))
     return Group(kind=kind, links=(i, j), joints=(j1, j2, j3), known=(p, q), branch=branch)

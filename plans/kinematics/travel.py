@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from plans.errors import ConstructionError, InputError
+from plans.errors import ConstructionError, InputError, Said
 from plans.reader import Reader
 from plans.scene.model import Scene
 
@@ -56,22 +56,21 @@ def by_travel(scene: Scene, r: Reader) -> Scene:
 
     d = scene.raw["driver"]
     if "s_mm" in d and "s_fraction" in d:
-        raise r.fail("driver.s_fraction", "give s_mm or s_fraction, not both")
+        raise r.fail("driver.s_fraction", Said("kt_give_mm_fraction"))
     for other in ("phi_deg", "positions"):
         if other in d:
-            raise r.fail(f"driver.{other}", "the positions are given by the piston's travel (s_mm or s_fraction); "
-                                            f"drop {other}")
+            raise r.fail(f"driver.{other}", Said("kt_positions_are_given", other=other))
     key = "s_mm" if "s_mm" in d else "s_fraction"
     raw = d[key] if isinstance(d[key], list) else [d[key]]
     if not raw or len(raw) > 360:
-        raise r.fail(f"driver.{key}", "expected 1 to 360 travels")
+        raise r.fail(f"driver.{key}", Said("kt_travels"))
     values = [r.value(v, f"driver.{key}", nonneg=True) for v in raw]
     stroke = r.choice(d, "s_stroke", "driver.", ("down", "up"), "down")
     pistons = [j for j in scene.joints if j.kind == "P" and j.guide is not None and j.guide.link == scene.frame]
     if "piston" in d:
         pistons = [j for j in pistons if j.slider == d["piston"] and not isinstance(d["piston"], bool)]
         if not pistons:
-            raise r.fail("driver.piston", f"link {d['piston']!r} is not a piston sliding on a guide of the frame")
+            raise r.fail("driver.piston", Said("kt_link_piston_sliding", v=d['piston']))
     elif len({j.slider for j in pistons}) != 1:
         raise r.fail("driver.piston" if pistons else f"driver.{key}",
                      "name the piston: piston = link number" if pistons else
@@ -102,8 +101,7 @@ def by_travel(scene: Scene, r: Reader) -> Scene:
         want = np.array([v / 1000.0 if key == "s_mm" else v * H for v in values])
         if np.any(want > H * (1 + 1e-12)):
             top = H * 1000 if key == "s_mm" else 1.0
-            raise r.fail(f"driver.{key}", f"expected a travel within the stroke, 0..{top:.6g}"
-                                          f"{' mm' if key == 's_mm' else ''}")
+            raise r.fail(f"driver.{key}", Said("kt_travel_within_stroke", top=top, v=' mm' if key == 's_mm' else ''))
         lo, hi = np.full(len(want), a), np.full(len(want), b)
         sign = 1.0 if stroke == "down" else -1.0
         for _ in range(60):
@@ -111,7 +109,7 @@ def by_travel(scene: Scene, r: Reader) -> Scene:
             below = sign * (travel(mid) - t0 - want) < 0
             lo, hi = np.where(below, mid, lo), np.where(below, hi, mid)
     except ConstructionError as exc:
-        raise InputError(f"a position by the piston's travel needs the crank to turn a full revolution ({exc})",
+        raise InputError(Said("kt_position_piston_travel", exc=exc),
                          file=scene.path, field=f"driver.{key}") from None
     # the ends of the stroke are the dead centres themselves (the travel is flat there)
     inner, outer = (b, a) if stroke == "down" else (a, b)

@@ -23,6 +23,7 @@ from __future__ import annotations
 import cmath
 import math
 
+from plans.errors import Said
 from plans.records import frozen
 from plans.tolerances import LOCK_SIN
 
@@ -66,7 +67,12 @@ class Triad:
 
 
 class SpecialPosition(ValueError):
-    """The group has no unique velocity state (or no place) at this position."""
+    """The group has no unique velocity state (or no place) at this position: ``said`` is
+    why, a sentence of the catalogue (the message names the group too)."""
+
+    def __init__(self, group: str, said: Said) -> None:
+        self.said = said
+        super().__init__(f"group {group}: {said.text('en')}")
 
 
 def place(t: Triad, outer: tuple[complex, complex, complex], guess: tuple[complex, float],
@@ -87,12 +93,12 @@ def place(t: Triad, outer: tuple[complex, complex, complex], guess: tuple[comple
             f.append(_residual(t, k, P[k], outer[k], rot))
         step = _solve3(J, [-x for x in f])
         if step is None:
-            raise SpecialPosition(f"group {t.name}: the leashes' equations are singular here")
+            raise SpecialPosition(t.name, Said("sp_singular"))
         rD += complex(step[0], step[1])
         th += step[2]
         if max(abs(step[0]), abs(step[1]), abs(step[2]) * t.size) <= tol * t.size:
             return rD, th
-    raise SpecialPosition(f"group {t.name}: no place with the leashes at their lengths near the previous one")
+    raise SpecialPosition(t.name, Said("sp_no_place"))
 
 
 def _lengths(t: Triad) -> tuple[float, float, float]:
@@ -167,7 +173,7 @@ def rates(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta:
     J = [[d[k].real, d[k].imag, _dot(d[k], 1j * arms[k])] for k in range(3)]
     x = _solve3(J, [_dot(d[k], v_outer[k]) for k in range(3)])
     if x is None:
-        raise SpecialPosition(f"group {t.name}: the velocity state is not fixed (special position)")
+        raise SpecialPosition(t.name, Said("sp_velocity"))
     vD, w = complex(x[0], x[1]), x[2]
     if a_outer is None:
         return vD, w, None, None
@@ -232,20 +238,19 @@ def special_point_velocities(t: Triad, outer: tuple[complex, complex, complex], 
         # s: v_S − v_Qi ⟂ axis i and v_S − v_Qj ⟂ axis j, two lines of the velocity plan
         vS = _meet(v_outer[i], 1j * axis[i], v_outer[j], 1j * axis[j])
         if vS is None:
-            raise SpecialPosition(f"group {t.name}: the lines of s are parallel")
+            raise SpecialPosition(t.name, Said("sp_lines_s"))
         m = 3 - i - j  # the third leash fixes ω: v_S + ω (P_m − S)⊥ − v_Qm ⟂ axis m
         den = _dot(axis[m], 1j * (P[m] - S))
         if abs(den) <= LOCK_SIN * abs(axis[m]) * max(abs(P[m] - S), t.size):
-            raise SpecialPosition(f"group {t.name}: all three leashes' axes pass through one point "
-                                  f"(special position)")
+            raise SpecialPosition(t.name, Said("sp_one_point"))
         w = _dot(axis[m], v_outer[m] - vS) / den
         v_inner = tuple(vS + 1j * w * (P[k] - S) for k in range(3))
         return SpecialPoint((i, j), S, vS, w, (v_inner[0], v_inner[1], v_inner[2]))
-    raise SpecialPosition(f"group {t.name}: the three leashes are parallel (special position)")
+    raise SpecialPosition(t.name, Said("sp_parallel"))
 
 
 def special_kind(t: Triad, outer: tuple[complex, complex, complex], rD: complex, theta: float,
-                 tol: float = 1e-3) -> str | None:
+                 tol: float = 1e-3) -> Said | None:
     """What makes this position special, or None: the three leashes' axes parallel, or
     passing through one point (the leash equations' matrix singular to ``tol``)."""
     P = pair_points(t, outer, rD, theta)
@@ -254,14 +259,14 @@ def special_kind(t: Triad, outer: tuple[complex, complex, complex], rD: complex,
     on = [_on_axis(t, k, P[k], outer[k]) for k in range(3)]
     u = [a / abs(a) for a in axis]
     if max(abs(_cross(u[i], u[j])) for i, j in ((0, 1), (1, 2), (0, 2))) <= tol:
-        return "the three leashes' axes are parallel (special position of the group)"
+        return Said("tr_parallel")
     for i, j in ((0, 1), (1, 2), (0, 2)):
         S = _meet(on[i], axis[i], on[j], axis[j])
         if S is None:
             continue
         m = 3 - i - j
         if abs(_cross(u[m], S - on[m])) <= tol * max(t.size, abs(S - on[m])):
-            return "the three leashes' axes pass through one point (special position of the group)"
+            return Said("tr_one_point")
         return None
     return None
 
@@ -302,7 +307,7 @@ def special_point_accelerations(t: Triad, outer: tuple[complex, complex, complex
     known = [a_outer[k] - w_leash[k] ** 2 * axis[k] - w * w * (sp.S - P[k]) for k in range(3)]
     aS = _meet(known[i], 1j * axis[i], known[j], 1j * axis[j])
     if aS is None:
-        raise SpecialPosition(f"group {t.name}: the lines of s are parallel")
+        raise SpecialPosition(t.name, Said("sp_lines_s"))
     m = 3 - i - j
     arm = P[m] - sp.S
     den = _dot(axis[m], 1j * arm)  # not zero: special_point_velocities has checked it

@@ -18,10 +18,11 @@ from typing import Any
 
 import numpy as np
 
-from plans.errors import Locked, NotAssemblable
+from plans.errors import Locked, NotAssemblable, Said
 from plans.kinematics.context import Context, Motion, place_link, point_at
 from plans.kinematics.structure import Structure, TriadGroup, analyse
 from plans.kinematics.triad import SpecialPosition, Triad, determinant, place, rates, special_kind
+from plans.records import derived
 from plans.scene.model import Scene
 
 STEP_DEG = 1.0
@@ -74,7 +75,8 @@ def _phase(phi: float) -> float:
 def _track(solve: Callable[..., Any], scene: Scene, st: Structure, g: TriadGroup, t: Triad, outer_of) -> tuple[np.ndarray, list]:
     """(step angles, (r_D, θ) at each) over one turn from φ = 0, computed once per scene."""
     key = ("triad", g.name)
-    done = scene.memo.get(key)
+    kept = derived(scene)
+    done = kept.get(key)
     if done is not None:
         return done
     before = replace(st, groups=st.groups[:st.groups.index(g)])
@@ -91,15 +93,15 @@ def _track(solve: Callable[..., Any], scene: Scene, st: Structure, g: TriadGroup
         except SpecialPosition as exc:
             if k:  # the group may have run into its special position between two steps
                 _special_between(solve, scene, before, g, t, outer_of, float(grid[k - 1]), phi, state, sense)
-            raise NotAssemblable(str(exc).split(": ", 1)[-1], group=t.name, point=g.point, phi_deg=phi) from None
+            raise NotAssemblable(exc.said, group=t.name, point=g.point, phi_deg=phi) from None
         d = determinant(t, outer, *new)
         if k and d * sense < 0:  # Newton landed on the other branch: a special position was passed
             _special_between(solve, scene, before, g, t, outer_of, float(grid[k - 1]), phi, state, sense)
-            raise NotAssemblable("the group leaves its branch here (the leashes' axes come near one point)",
+            raise NotAssemblable(Said("te_group_leaves_its"),
                                  group=t.name, point=g.point, phi_deg=phi)
         state, sense = new, d
         states.append(state)
-    done = scene.memo[key] = (grid, states)
+    done = kept[key] = (grid, states)
     return done
 
 
@@ -144,7 +146,7 @@ def _assemble(t: Triad, outer: tuple[complex, complex, complex], g: TriadGroup) 
             if all(abs(rD - r) > 1e-7 * t.size or abs(math.remainder(th - h, 2 * math.pi)) > 1e-7 for r, h in found):
                 found.append((rD, th))
     if not found:
-        raise NotAssemblable("the leashes cannot reach the base link's pairs", group=t.name, point=g.point, phi_deg=0.0)
+        raise NotAssemblable(Said("te_leashes_cannot_reach"), group=t.name, point=g.point, phi_deg=0.0)
     side = [s for s in found if ((B - A).conjugate() * (s[0] - A)).imag * g.branch > 0] or found
     return min(side, key=lambda s: (round(s[1], 9), s[0].real, s[0].imag))
 
@@ -183,7 +185,7 @@ def solve_group(ctx: Context, g: TriadGroup, k: tuple) -> None:
                 if ao is not None:
                     aD[m], e[m] = x[2], x[3]
         except SpecialPosition as exc:
-            raise Locked(str(exc).split(": ", 1)[-1], group=t.name, point=g.point, phi_deg=phi) from None
+            raise Locked(exc.said, group=t.name, point=g.point, phi_deg=phi) from None
 
     def out(x: np.ndarray) -> Any:
         return complex(x[0]) if scalar and x.dtype == complex else float(x[0]) if scalar else x

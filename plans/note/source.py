@@ -13,7 +13,7 @@ import importlib
 from dataclasses import dataclass
 from typing import Any
 
-from plans.errors import InputError
+from plans.errors import InputError, Said
 from plans.io import read_toml
 from plans.kinds import kind_of
 
@@ -80,7 +80,7 @@ def read(paths: list[str]) -> list[Item]:
             try:
                 hook = importlib.import_module(HOOKS[kind])
             except ModuleNotFoundError:
-                raise InputError(f"{kind!r} files have no section in the note of this installation",
+                raise InputError(Said("ns_kind_files_have", kind=kind),
                                  file=path, field="kind") from None
             solved, data = hook.read(path, raw)
             out.append(Item(i, path, kind, raw, solved, data))

@@ -25,6 +25,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from plans.errors import Said
 from plans.reader import Reader
 from plans.records import frozen
 from plans.scene.model import Joint, Scene
@@ -75,7 +76,7 @@ def has_friction(scene: Scene) -> bool:
 
 def parse_friction(scene: Scene) -> FrictionSpec | None:
     """The scene's friction, or None where it states none; InputError naming the field.  The
-    record the scene holds once solved (``plans.solve`` reads it once, :mod:`plans.scene.tables`),
+    record the scene holds once solved (``plans.solve`` reads it once, :mod:`plans.tables`),
     else read now."""
     if scene.tables:
         return scene.friction_spec
@@ -98,7 +99,7 @@ def _parse(scene: Scene) -> FrictionSpec:
             return None
         value = r.length(body[key], f"{where}{key}", unit)
         if value < 0:
-            raise r.fail(f"{where}{key}", f"expected a length >= 0, got {body[key]!r}")
+            raise r.fail(f"{where}{key}", Said("sf_length", v=body[key]))
         return value
 
     f0 = coefficient(table, "friction.")
@@ -115,29 +116,26 @@ def _parse(scene: Scene) -> FrictionSpec:
         if joint.kind == "P":
             for key in ("pin_radius", "friction_circle"):
                 if key in body:
-                    raise r.fail(f"{where}{key}", "a slide (kind = \"P\") has no pin: give its coefficient f only")
+                    raise r.fail(f"{where}{key}", Said("sf_slide_kind_has"))
             pairs.append(PairFriction(joint, f=(f0 or 0.0) if f is None else f))
             continue
         if circle is not None:
             if f is not None or pin is not None:
-                raise r.fail(f"{where}friction_circle", "give friction_circle, or f with pin_radius, not both")
+                raise r.fail(f"{where}friction_circle", Said("sf_give_friction_circle"))
             rho = circle
         elif f is not None or pin is not None:
             fr = f if f is not None else f0
             rr = pin if pin is not None else r0
             if fr is None or rr is None:
                 missing = "pin_radius" if rr is None else "f"
-                raise r.fail(f"{where}{missing}", f"a pin's friction circle ρ = f·r needs {missing} "
-                                                  "(on the joint or in [friction]), or give friction_circle")
+                raise r.fail(f"{where}{missing}", Said("sf_pin_friction_circle", missing=missing))
             rho = fr * rr
         elif rho0 is not None:
             rho = rho0
         elif f0 is not None and r0 is not None:
             rho = f0 * r0
         elif f0:
-            raise r.fail("friction.pin_radius", f"f = {f0:g} reaches the turning pairs too (joint "
-                                                f"{joint.point}, joints[{k}]): give pin_radius or "
-                                                "friction_circle, or f = 0 on that joint")
+            raise r.fail("friction.pin_radius", Said("sf_reaches_turning_pairs", f0=f0, point=joint.point, k=k))
         else:
             rho = 0.0
         pairs.append(PairFriction(joint, rho=rho))

@@ -17,6 +17,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from plans.errors import Said
+
 SYMBOLS = ("mu", "K")
 DIRECTIONS = ("m/mm", "mm/m")
 POLES = {"π": "π", "pi": "π", "p_a": "p_a"}
@@ -27,7 +29,7 @@ def read(r: Any, scales: dict[str, Any], sheet: Any) -> str:
     style = scales.get("style")
     given = [k for k in ("symbol", "direction") if k in scales]
     if style is not None and given:
-        raise r.fail(f"scales.{given[0]}", "give style (\"mu\" or \"K\") or symbol and direction, not both")
+        raise r.fail(f"scales.{given[0]}", Said("sn_give_style_mu"))
     if style is not None:
         sym = r.choice(scales, "style", "scales.", SYMBOLS, "mu")
         direction = "mm/m" if sym == "mu" else "m/mm"
@@ -38,7 +40,7 @@ def read(r: Any, scales: dict[str, Any], sheet: Any) -> str:
     if isinstance(sheet, dict) and "acceleration_pole" in sheet:
         got = sheet["acceleration_pole"]
         if not isinstance(got, str) or got not in POLES:
-            raise r.fail("sheet.acceleration_pole", f"expected \"π\" (or \"pi\") or \"p_a\", got {got!r}")
+            raise r.fail("sheet.acceleration_pole", Said("sn_pi", got=got))
         pole = POLES[got]
     return f"{sym}|{direction}|{pole}"
 

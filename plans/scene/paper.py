@@ -62,6 +62,8 @@ class SheetSpec:
         first_position = 1            # the first position's number on every panel: 1 (1, 2, …, 12,
                                       # as the course's tables number them) or 0 (0, 1, …, 11);
                                       # JSON and Python indices stay 0-based (label = index + this)
+        font = "dejavu"               # or "gost": osifont, a free GOST 2.304 type B font (the
+                                      # characters it lacks in DejaVu Sans); CLI --font overrides
         [[sheet.pins]]                # fix a panel: top-left corner in mm from the paper's corner
         panel = "velocity-45"
         sheet = 1
@@ -90,6 +92,7 @@ class SheetSpec:
     set: str | None = None  # "course" | "positions"; None: by the number of positions
     choice: tuple[tuple[str, object], ...] = ()  # panels = { kind = "all" | "none" | [numbers] | bool }
     first_position: int = 1  # the number of the first position on the panels (label = index + this)
+    font: str = "dejavu"  # "dejavu" | "gost" (drawings.paper.fonts)
 
     @property
     def size(self) -> tuple[float, float]:

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
-from plans.errors import InputError
+from plans.errors import InputError, Said
 from plans.reader import check_keys
 
 if TYPE_CHECKING:
@@ -33,6 +33,10 @@ PANEL_CHOICE_AT = ("scheme", "velocity", "acceleration", "forces", "lever", "tab
 PANEL_CHOICE_WHOLE = ("positions", "legend")
 _KEYS |= {"acceleration_pole"}  # the notation, read with the scales (plans.scene.notation)
 _KEYS |= {"first_position"}  # the number of the first position on every panel (1 or 0)
+#: The sheets' fonts: "dejavu" (DejaVu Sans) or "gost" (osifont, a GOST 2.304 type B font, with
+#: DejaVu Sans for the characters it lacks); drawn by ``drawings.paper.fonts``.
+SHEET_FONTS = ("dejavu", "gost")
+_KEYS |= {"font"}
 
 
 def sheet_spec(raw: dict[str, Any], path: str, default_title: str = "", **override: Any) -> SheetSpec:
@@ -49,14 +53,14 @@ def read_sheet(raw: dict[str, Any], path: str, default_title: str = "", **overri
     """``[sheet]`` validated into the fields of a SheetSpec (pins as (panel, sheet, x, y))."""
     data = raw.get("sheet", {})
     if not isinstance(data, dict):
-        raise InputError("expected a table [sheet]", file=path, field="sheet")
+        raise InputError(Said("sh_table_sheet"), file=path, field="sheet")
     check_keys(data, _KEYS, file=path, where="sheet.")
     out: dict[str, Any] = {}
 
     def string(key: str) -> None:
         if key in data:
             if not isinstance(data[key], str):
-                raise InputError("expected a string", file=path, field=f"sheet.{key}")
+                raise InputError(Said("gm_string"), file=path, field=f"sheet.{key}")
             out[key] = data[key]
 
     for key in ("designation", "subtitle", "author", "checked_by", "approved_by", "group",
@@ -64,35 +68,35 @@ def read_sheet(raw: dict[str, Any], path: str, default_title: str = "", **overri
         string(key)
     fmt = str(override.get("format") or data.get("format", "A1"))
     if fmt.upper() not in SHEET_FORMATS:
-        raise InputError(f"unknown sheet format {fmt!r}; expected one of {', '.join(SHEET_FORMATS)}",
+        raise InputError(Said("sh_unknown_sheet_format", fmt=fmt, v=', '.join(SHEET_FORMATS)),
                          file=path, field="sheet.format")
     out["format"] = fmt.upper()
     ori = override.get("orientation") or data.get("orientation", "landscape")
     if ori not in ("landscape", "portrait"):
-        raise InputError(f"expected \"landscape\" or \"portrait\", got {ori!r}", file=path,
+        raise InputError(Said("sh_landscape_portrait_ori", ori=ori), file=path,
                          field="sheet.orientation")
     out["orientation"] = ori
     lang = override.get("language") or data.get("language", "ru")
     if lang not in ("ru", "en"):
-        raise InputError(f"expected \"ru\" or \"en\", got {lang!r}", file=path, field="sheet.language")
+        raise InputError(Said("sh_ru_en_lang", lang=lang), file=path, field="sheet.language")
     out["language"] = lang
     if "title" in data:  # a string, or one per language: { ru = "...", en = "..." }
         t = data["title"]
         if isinstance(t, dict) and t and all(k in ("ru", "en") and isinstance(v, str) for k, v in t.items()):
             t = t.get(lang, t.get("en", t.get("ru")))
         if not isinstance(t, str):
-            raise InputError("expected a string or { ru = \"...\", en = \"...\" }", file=path, field="sheet.title")
+            raise InputError(Said("sh_string_ru_en"), file=path, field="sheet.title")
         out["title"] = t
     for key in ("first_sheet", "total_sheets"):
         if key in data:
             v = data[key]
             if isinstance(v, bool) or not isinstance(v, int) or not 1 <= v <= 9999:
-                raise InputError(f"expected a whole number 1..9999, got {v!r}", file=path, field=f"sheet.{key}")
+                raise InputError(Said("sh_whole_number", v=v), file=path, field=f"sheet.{key}")
             out[key] = v
     if "set" in data:
         v = data["set"]
         if v not in SHEET_SETS:
-            raise InputError(f"expected one of {', '.join(repr(x) for x in SHEET_SETS)}, got {v!r}", file=path,
+            raise InputError(Said("sh_one", v=', '.join(repr(x) for x in SHEET_SETS), v2=v), file=path,
                              field="sheet.set")
         out["set"] = v
     if "panels" in data:
@@ -100,8 +104,7 @@ def read_sheet(raw: dict[str, Any], path: str, default_title: str = "", **overri
         if isinstance(v, dict):
             out["choice"] = _panel_choice(v, path)
         elif not isinstance(v, list) or not all(isinstance(x, str) and x in PANEL_KINDS for x in v):
-            raise InputError(f"expected a list of panel kinds from {list(PANEL_KINDS)}, or a table such as "
-                             "{ velocity = \"all\", acceleration = [1, 4], forces = [4] }", file=path,
+            raise InputError(Said("sh_list_panel_kinds", v=list(PANEL_KINDS)), file=path,
                              field="sheet.panels")
         else:
             out["panels"] = tuple(v)
@@ -110,48 +113,57 @@ def read_sheet(raw: dict[str, Any], path: str, default_title: str = "", **overri
         v = v if isinstance(v, list) else [v]
         if not v or not all(isinstance(x, int | float) and not isinstance(x, bool) and abs(x) <= 1e300
                             and x == x for x in v):
-            raise InputError("expected crank angles in degrees, e.g. positions = [45, 0]", file=path,
+            raise InputError(Said("sh_crank_angles_degrees"), file=path,
                              field="sheet.positions")
         out["positions"] = tuple(float(x) for x in v)
     if "trace" in data:
         v = data["trace"]
         v = v if isinstance(v, list) else [v]
         if not all(isinstance(x, str) and x for x in v):
-            raise InputError("expected point names, e.g. trace = [\"S2\"] (or [] for none)", file=path,
+            raise InputError(Said("sh_point_names_trace"), file=path,
                              field="sheet.trace")
         out["trace"] = tuple(v)
     if "pins" in data:
         pins = []
         v = data["pins"]
         if not isinstance(v, list):
-            raise InputError("expected an array of tables [[sheet.pins]]", file=path, field="sheet.pins")
+            raise InputError(Said("sh_array_tables_sheet"), file=path, field="sheet.pins")
         for i, p in enumerate(v):
             f = f"sheet.pins[{i}]"
             if not isinstance(p, dict) or not isinstance(p.get("panel"), str):
-                raise InputError("expected { panel = \"velocity-45\", x = mm, y = mm, sheet = 1 }", file=path,
+                raise InputError(Said("sh_panel_velocity_mm"), file=path,
                                  field=f)
             check_keys(p, ("panel", "x", "y", "sheet"), file=path, where=f"{f}.")
             for key in ("x", "y"):
                 if not isinstance(p.get(key), int | float) or isinstance(p.get(key), bool) or \
                         not abs(p[key]) <= 10_000:
-                    raise InputError(f"expected {key} in mm from the sheet's top-left corner", file=path,
+                    raise InputError(Said("sh_mm_from_sheet", k=key), file=path,
                                      field=f"{f}.{key}")
             sh = p.get("sheet", 1)
             if isinstance(sh, bool) or not isinstance(sh, int) or not 1 <= sh <= 9999:
-                raise InputError("expected a sheet number >= 1", file=path, field=f"{f}.sheet")
+                raise InputError(Said("sh_sheet_number"), file=path, field=f"{f}.sheet")
             pins.append((p["panel"], sh, float(p["x"]), float(p["y"])))
         out["pins"] = tuple(pins)
     if override.get("set"):
         if override["set"] not in SHEET_SETS:
-            raise InputError(f"expected one of {', '.join(repr(x) for x in SHEET_SETS)}, got {override['set']!r}",
+            raise InputError(Said("sh_one", v=', '.join(repr(x) for x in SHEET_SETS), v2=override['set']),
                              file=path, field="sheet.set")
         out["set"] = override["set"]
     if "first_position" in data:
         v = data["first_position"]
         if isinstance(v, bool) or not isinstance(v, int) or v not in (0, 1):
-            raise InputError(f"expected 1 (positions 1, 2, …) or 0 (positions 0, 1, …), got {v!r}", file=path,
+            raise InputError(Said("sh_positions_positions", v=v), file=path,
                              field="sheet.first_position")
         out["first_position"] = int(v)
+    if "font" in data or override.get("font"):
+        font = override.get("font") or data["font"]
+        if font not in SHEET_FONTS:
+            from plans.reader import did_you_mean, show
+
+            hint = did_you_mean(font, SHEET_FONTS) if isinstance(font, str) else ""
+            raise InputError(Said("e_choice", options=", ".join(repr(f) for f in SHEET_FONTS), got=show(font),
+                                  hint=hint), file=path, field="--font" if override.get("font") else "sheet.font")
+        out["font"] = font
     out.setdefault("title", default_title)
     return out
 
@@ -164,7 +176,7 @@ def _panel_choice(v: dict[str, Any], path: str) -> tuple[tuple[str, Any], ...]:
         f = f"sheet.panels.{key}"
         if key in PANEL_CHOICE_WHOLE:
             if not isinstance(val, bool):
-                raise InputError(f"expected true or false, got {val!r}", file=path, field=f)
+                raise InputError(Said("sh_true_false_val", val=val), file=path, field=f)
             out.append((key, val))
         elif key in PANEL_CHOICE_AT:
             if val in ("all", "none"):
@@ -173,14 +185,14 @@ def _panel_choice(v: dict[str, Any], path: str) -> tuple[tuple[str, Any], ...]:
             nums = val if isinstance(val, list) else [val]
             if isinstance(val, str) or not all(isinstance(x, int) and not isinstance(x, bool) and 0 <= x <= 100_000
                                                for x in nums):
-                raise InputError(f"expected \"all\", \"none\" or position numbers such as [1, 4], got {val!r}",
+                raise InputError(Said("sh_all_none_position", val=val),
                                  file=path, field=f)
             out.append((key, tuple(dict.fromkeys(nums))))
         else:
             from plans.reader import did_you_mean
 
             known = PANEL_CHOICE_AT + PANEL_CHOICE_WHOLE
-            raise InputError(f"unknown panel kind {key!r}{did_you_mean(key, known)}; expected one of {', '.join(known)}",
+            raise InputError(Said("sh_unknown_panel_kind", k=key, v=did_you_mean(key, known), v2=', '.join(known)),
                              file=path, field=f)
     return tuple(out)
 
@@ -191,12 +203,12 @@ def sheet_of(raw: dict[str, Any], path: str, title: str, titles: dict[str, str])
 
 
 def sheet_for(scene: Any, *, format: str | None = None, orientation: str | None = None,
-              language: str | None = None, set: str | None = None) -> SheetSpec:
-    """A scene's ``[sheet]`` with what a command overrides (``--sheet A3``, ``--language en``),
-    the title in the sheet's language."""
+              language: str | None = None, set: str | None = None, font: str | None = None) -> SheetSpec:
+    """A scene's ``[sheet]`` with what a command overrides (``--sheet A3``, ``--language en``,
+    ``--font gost``), the title in the sheet's language."""
     lang = language or _language(scene.raw)
     return sheet_spec(scene.raw, scene.path, scene.title_in(lang), format=format, orientation=orientation,
-                      language=language, set=set)
+                      language=language, set=set, font=font)
 
 
 def check_sheet(raw: dict[str, Any], path: str) -> None:

@@ -8,6 +8,8 @@ import math
 import sys
 from typing import TYPE_CHECKING, Any
 
+from plans.errors import Said
+
 if TYPE_CHECKING:
     from .design import Design
 
@@ -162,7 +164,7 @@ def _run(args: argparse.Namespace) -> int:
     if args.output and args.json and args.json != "-" and args.output == args.json:
         from plans.errors import OutputError
 
-        raise OutputError(f"{args.output}: the scene and the JSON would overwrite each other")
+        raise OutputError(Said("sc_output_scene_json", output=args.output))
     d = solve_task(args.task).design
     text = scene_text(d)
     check_scene(text, args.task)

@@ -18,7 +18,7 @@ from __future__ import annotations
 import cmath
 import math
 
-from plans.errors import InputError
+from plans.errors import InputError, Said
 from plans.reader import LENGTH_FLOOR, LENGTH_LIMIT
 
 from .four_bar import crank_rocker, three_positions
@@ -41,8 +41,7 @@ def slider_crank(t: Task) -> Design:
     if theta <= 0.0:
         return _central(t, H)
     if theta >= math.pi / 2:
-        raise fail(t, "K", f"K = {t.K:g} gives θ = {_deg(theta)}; an offset slider-crank has θ < 90° "
-                           "(expected K < 3)")
+        raise fail(t, "K", Said("sd_gives_offset_slider", K=t.K, v=_deg(theta)))
     # the chord C′C″ = H on the guide, C′ at 0; the circle on which it subtends θ
     hc = H / (2.0 * math.tan(theta))
     R = H / (2.0 * math.sin(theta))
@@ -53,15 +52,13 @@ def slider_crank(t: Task) -> Design:
     if t.offset is not None:
         e = t.offset
         if not 0.0 < e < 2.0 * hc:
-            raise fail(t, "offset", f"the offset e = {e / t.scale:.6g} {t.unit} cannot give K = {t.K:g}: "
-                                    f"expected 0 < e < H/tan θ = {2 * hc / t.scale:.6g} {t.unit}")
+            raise fail(t, "offset", Said("sd_offset_unit_cannot", v=e / t.scale, unit=t.unit, K=t.K, v2=2 * hc / t.scale))
         A = complex(Oc.real - math.sqrt(max(R * R - (e - hc) ** 2, 0.0)), e)
     elif t.lam is not None:
         lam = t.lam
         low = math.tan(theta / 2.0) ** 2
         if lam <= low:
-            raise fail(t, "lambda", f"λ = {lam:g} is too small for K = {t.K:g}: the crank's pivot would leave "
-                                    f"the arc; expected λ > tan²(θ/2) = {low:.6g}")
+            raise fail(t, "lambda", Said("sd_lam_too_small", lam=lam, K=t.K, low=low))
         # Apollonius' circle of the points with AC″/AC′ = (1 + λ)/(1 − λ), met with the arc
         k = (1.0 + lam) / (1.0 - lam)
         c2 = complex(H, 0.0)
@@ -69,7 +66,7 @@ def slider_crank(t: Task) -> Design:
         ar = k * H / abs(1.0 - k * k)
         met = _meet(Oc, R, ac, ar, upper=True)
         if met is None:
-            raise fail(t, "lambda", f"λ = {lam:g} finds no crank pivot on the arc for K = {t.K:g}")
+            raise fail(t, "lambda", Said("sd_lam_finds_crank", lam=lam, K=t.K))
         A = met
     else:
         def worst(tp: float) -> float:
@@ -82,8 +79,7 @@ def slider_crank(t: Task) -> Design:
         best = math.asin(min(s, 1.0))
         if t.pressure_angle_max is not None and best > t.pressure_angle_max:
             raise fail(t, "pressure_angle_max_deg",
-                       f"no crank pivot on the arc keeps the pressure angle within [ϑ] = "
-                       f"{_deg(t.pressure_angle_max)} for K = {t.K:g}: the best is {_deg(best)}")
+                       Said("sd_crank_pivot_arc", v=_deg(t.pressure_angle_max), K=t.K, v2=_deg(best)))
         choice = ("least_pressure", best)
     a, b = abs(A), abs(A - H)
     l1, l2, e = (b - a) / 2.0, (b + a) / 2.0, A.imag
@@ -109,8 +105,7 @@ def _meet(c1: complex, r1: float, c2: complex, r2: float, upper: bool) -> comple
 
 def _central(t: Task, H: float) -> Design:
     if t.offset:
-        raise fail(t, "offset", "K = 1 has no offset: an offset slider-crank has θ > 0 (give K > 1, "
-                                "or offset = 0)")
+        raise fail(t, "offset", Said("sd_has_offset_offset"))
     r = H / 2.0
     if t.lam is not None:
         lam = t.lam
@@ -119,8 +114,7 @@ def _central(t: Task, H: float) -> Design:
         lam = math.sin(t.pressure_angle_max)
         choice = ("lambda_from_pressure", lam)
     else:
-        raise fail(t, "lambda", "missing; a central slider-crank needs λ = l1/l2 (or "
-                                "pressure_angle_max_deg)")
+        raise fail(t, "lambda", Said("sd_missing_central_slider"))
     l = r / lam
     s = t.sense
     pts = {"O": 0j, "C1": complex(l - r, 0.0), "C2": complex(l + r, 0.0)}
@@ -153,14 +147,11 @@ def coulisse(t: Task) -> Design:
     H, l0, theta = t.stroke, t.centre_distance, t.theta
     half = theta / 2.0
     if math.sin(half) > 1.0 - 1e-9:
-        raise fail(t, "K", f"K = {t.K:g} puts the crank's circle through the coulisse's pivot (θ = {_deg(theta)}); "
-                           "expected a smaller K")
+        raise fail(t, "K", Said("sd_puts_crank_circle", K=t.K, v=_deg(theta)))
     l1 = l0 * math.sin(half)
     l3 = H / (2.0 * math.sin(half))
     if l3 < l0 + l1:
-        raise fail(t, "stroke", f"the coulisse CD = H/(2 sin(θ/2)) = {l3 / t.scale:.6g} {t.unit} is shorter than "
-                                f"the block's reach l0 + l1 = {(l0 + l1) / t.scale:.6g} {t.unit}; expected a "
-                                "larger stroke or a smaller centre distance")
+        raise fail(t, "stroke", Said("sd_coulisse_cd_sin", v=l3 / t.scale, unit=t.unit, v2=(l0 + l1) / t.scale))
     low = l3 * math.cos(half)  # D's height at the extremes
     sag = l3 - low
     choice = None
@@ -176,11 +167,9 @@ def coulisse(t: Task) -> Design:
     if t.rod is not None:
         l4 = t.rod
         if l4 <= dev:
-            raise fail(t, "rod", f"the rod DE = {l4 / t.scale:.6g} {t.unit} cannot reach the ram's guide from every "
-                                 f"position of D (it strays {dev / t.scale:.6g} {t.unit} from the guide)")
+            raise fail(t, "rod", Said("sd_rod_de_unit", v=l4 / t.scale, unit=t.unit, v2=dev / t.scale))
         if t.pressure_angle_max is not None and math.asin(dev / l4) > t.pressure_angle_max:
-            raise fail(t, "pressure_angle_max_deg", f"the rod DE = {l4 / t.scale:.6g} {t.unit} gives the ram a "
-                                                    f"pressure angle {_deg(math.asin(dev / l4))} > [ϑ]")
+            raise fail(t, "pressure_angle_max_deg", Said("sd_rod_de_unit2", v=l4 / t.scale, unit=t.unit, v2=_deg(math.asin(dev / l4))))
     else:
         assert t.pressure_angle_max is not None
         l4 = dev / math.sin(t.pressure_angle_max) if dev > 0 else l3 / 4.0
@@ -200,8 +189,7 @@ def _coulisse_rpp(t: Task, l0: float, l1: float, l3: float, half: float, low: fl
     x; the force on the coulisse is along the guide, D's velocity ⟂ CD: the pressure angle is
     the coulisse's tilt, θ/2 at the extremes, whatever the guide's height."""
     if t.pressure_angle_max is not None and half > t.pressure_angle_max:
-        raise fail(t, "pressure_angle_max_deg", f"an RPP ram's pressure angle reaches θ/2 = {_deg(half)} > [ϑ] = "
-                                                f"{_deg(t.pressure_angle_max)}; expected a smaller K or the RRP ram")
+        raise fail(t, "pressure_angle_max_deg", Said("sd_rpp_ram_pressure", v=_deg(half), v2=_deg(t.pressure_angle_max)))
     h = t.guide_height if t.guide_height is not None else (l3 + low) / 2.0
     C = complex(0.0, -l0)
     pts = {"O": 0j, "C": C, "D1": C + l3 * cmath.exp(1j * (math.pi / 2 + half)),
@@ -225,36 +213,30 @@ def _met(t: Task, d: Design, measured: tuple[Measured, ...]) -> None:
         if not m.full_rotation:
             continue
         if d.model != "three_positions" and abs(m.K - t.K) > 1e-7 * t.K:
-            raise fail(t, "K", f"the designed mechanism gives K = {m.K:.9g}, not {t.K:g}; the task has no "
-                               f"{t.mechanism.replace('_', '-')} with this K")
+            raise fail(t, "K", Said("sd_designed_mechanism_gives", K=m.K, K2=t.K, v=t.mechanism.replace('_', '-')))
         if t.mechanism == "crank_rocker" and d.model != "three_positions" and t.swing is not None \
                 and m.swing is not None and abs(m.swing - t.swing) > 1e-7:
-            raise fail(t, "swing_deg", f"the designed mechanism swings {_deg(m.swing)}, not {_deg(t.swing)}")
+            raise fail(t, "swing_deg", Said("sd_designed_mechanism_swings", v=_deg(m.swing), v2=_deg(t.swing)))
         if m.stroke is not None and t.mechanism != "crank_rocker":
             H = stroke_of(t)
             if abs(m.stroke - H) > 1e-7 * H:
-                raise fail(t, "stroke", f"the designed mechanism's stroke is {m.stroke / t.scale:.9g} {t.unit}, "
-                                        f"not {H / t.scale:g}")
+                raise fail(t, "stroke", Said("sd_designed_mechanism_stroke", v=m.stroke / t.scale, unit=t.unit, v2=H / t.scale))
 
 
 def design(t: Task) -> Design:
     """Size the mechanism and prove it: the measured K, stroke or swing, γ_min; a design that
     does not turn fully on one branch is refused (it never is, when the model is right)."""
     if 0.0 < t.theta < 1e-6:  # the construction's circle would be a million strokes across
-        raise fail(t, "K", f"K = {t.K!r} is so close to 1 (θ < 1e-6 rad) that the construction's circle has no "
-                           "size a sheet or a float can hold; expected K = 1 (extremes 180° apart) or K >= 1.000001")
+        raise fail(t, "K", Said("sd_so_close_rad", K=t.K))
     d = MODELS[t.mechanism](t)
     for name, v in d.lengths.items():
         if v and not LENGTH_FLOOR <= v <= LENGTH_LIMIT:
-            raise fail(t, "mechanism", f"the design's {name} would be {v:.6g} m long; expected a length between "
-                                       "1 µm and 10 km (the task's numbers are out of proportion)")
+            raise fail(t, "mechanism", Said("sd_design_name_would", name=name, v=v))
     sense = t.sense
     measured = tuple(measure(m, sense, d.working) for m in d.mechs)
     _met(t, d, measured)
     for m in measured:
         if not m.full_rotation:
-            raise InputError(f"the designed mechanism does not turn fully on one assembly branch (assembly "
-                             f"margin {m.margin:.3g} m, {m.extremes} extreme positions); the task has no "
-                             "crank mechanism", file=t.path, field="mechanism")
+            raise InputError(Said("sd_designed_mechanism_does", margin=m.margin, extremes=m.extremes), file=t.path, field="mechanism")
     return Design(d.task, d.model, d.lengths, d.mechs, d.working, d.points, d.circle, d.choice, measured,
                   d.notes)

@@ -8,6 +8,8 @@ import cmath
 import math
 from typing import Any, NamedTuple
 
+from plans.errors import Said
+
 from .model import Task
 from .numeric import golden
 from .proof import FourBar
@@ -89,8 +91,7 @@ def crank_rocker(t: Task) -> Design:
         if not picked:
             what = (f"frame = {t.frame / t.scale:.6g} {t.unit}" if t.frame is not None  # type: ignore[operator]
                     else f"frame_angle_deg = {math.degrees(t.frame_angle):.6g}")  # type: ignore[arg-type]
-            raise fail(t, key, f"no crank-rocker with {what} gives the swing {_deg(psi)} at K = {t.K:g}: "
-                               "the pivot's line misses the arc where the crank turns fully on one branch")
+            raise fail(t, key, Said("s4_crank_rocker_what", what=what, v=_deg(psi), K=t.K))
         if len(picked) > 1:
             choice = ("two_pivots", max(k.gamma for k, _ in picked))
     elif theta <= 1e-12:
@@ -131,12 +132,9 @@ def crank_rocker(t: Task) -> Design:
             if best is None or kk.gamma > best[0].gamma:
                 best = (kk, circ)
         if best is None:
-            raise fail(t, "swing_deg", f"no crank-rocker gives the swing {_deg(psi)} at K = {t.K:g} "
-                                       f"(θ = {_deg(theta)}): the arc has no pivot where the crank turns "
-                                       "fully on one branch")
+            raise fail(t, "swing_deg", Said("s4_crank_rocker_gives", v=_deg(psi), K=t.K, v2=_deg(theta)))
         if t.gamma_min is not None and best[0].gamma < t.gamma_min:
-            raise fail(t, "gamma_min_deg", f"γ_min >= [γ] = {_deg(t.gamma_min)} cannot be met for the swing "
-                                           f"{_deg(psi)} at K = {t.K:g}: the best pivot gives {_deg(best[0].gamma)}")
+            raise fail(t, "gamma_min_deg", Said("s4_min_cannot_met3", v=_deg(t.gamma_min), v2=_deg(psi), K=t.K, v3=_deg(best[0].gamma)))
         picked = [best]
         choice = ("best_gamma", best[0].gamma)
     k, circ = max(picked, key=lambda kc: kc[0].gamma)
@@ -152,12 +150,10 @@ def _k1_pick(t: Task, f, cand) -> tuple[_Candidate, Any]:
 
     assert t.swing is not None
     if t.gamma_min is None:
-        raise fail(t, "gamma_min_deg", "missing; at K = 1 γ_min grows as the frame lengthens without bound: give "
-                                       "frame, frame_angle_deg or gamma_min_deg")
+        raise fail(t, "gamma_min_deg", Said("s4_missing_min_grows"))
     limit = math.pi / 2 - t.swing / 2
     if t.gamma_min >= limit:
-        raise fail(t, "gamma_min_deg", f"γ_min >= [γ] = {_deg(t.gamma_min)} cannot be met at K = 1 for the "
-                                       f"swing {_deg(t.swing)}: γ_min stays below 90° − ψ/2 = {_deg(limit)}")
+        raise fail(t, "gamma_min_deg", Said("s4_min_cannot_met2", v=_deg(t.gamma_min), v2=_deg(t.swing), v3=_deg(limit)))
     lo, hi = math.log(1e-3), math.log(1e6)
     n = 200
     prev = None
@@ -176,7 +172,7 @@ def _k1_pick(t: Task, f, cand) -> tuple[_Candidate, Any]:
             kk = cand(f(q))
             return (kk if kk is not None and kk.gamma >= t.gamma_min - 1e-12 else k), None
         prev = p
-    raise fail(t, "gamma_min_deg", f"γ_min >= [γ] = {_deg(t.gamma_min)} cannot be met at K = 1")
+    raise fail(t, "gamma_min_deg", Said("s4_min_cannot_met", v=_deg(t.gamma_min)))
 
 
 def _family_meets(f, lo: float, hi: float, circ: Any, t: Task) -> list[complex]:
@@ -241,8 +237,7 @@ def three_positions(t: Task) -> Design:
     det = _det3([r[:3] for r in rows])
     scale = max(1.0, *(abs(x) for r in rows for x in r[:3]))
     if abs(det) < 1e-9 * scale ** 3:
-        raise fail(t, "positions", "the three positions do not fix a four-bar (Freudenstein's equations "
-                                   "are dependent); expected three different crank and rocker angles")
+        raise fail(t, "positions", Said("s4_three_positions_do"))
     ks = []
     for j in range(3):
         m = [list(r[:3]) for r in rows]
@@ -251,8 +246,7 @@ def three_positions(t: Task) -> Design:
         ks.append(_det3(m) / det)
     K1, K2, K3 = ks
     if K1 <= 0 or K2 <= 0:
-        raise fail(t, "positions", f"the three positions give a negative link (K1 = {K1:.6g}, K2 = {K2:.6g}); "
-                                   "expected angles of a crank-rocker measured from the frame line O→D")
+        raise fail(t, "positions", Said("s4_three_positions_give", K1=K1, K2=K2))
     if t.rocker is not None:
         c = t.rocker
         d = K2 * c
@@ -263,14 +257,11 @@ def three_positions(t: Task) -> Design:
     a = d / K1
     b2 = a * a + c * c + d * d - 2 * a * c * K3
     if b2 <= 0:
-        raise fail(t, "positions", "the three positions give no coupler (b² <= 0)")
+        raise fail(t, "positions", Said("s4_three_positions_give2"))
     b = math.sqrt(b2)
     ls = sorted((a, b, c, d))
     if not (a == ls[0] and a < ls[1] and ls[0] + ls[3] < ls[1] + ls[2]):
-        raise fail(t, "positions", f"the three positions give a four-bar that is not a crank-rocker "
-                                   f"(crank {a / t.scale:.6g}, coupler {b / t.scale:.6g}, rocker "
-                                   f"{c / t.scale:.6g}, frame {d / t.scale:.6g} {t.unit}: Grashof's "
-                                   "shortest + longest < the other two, with the crank shortest)")
+        raise fail(t, "positions", Said("s4_three_positions_give3", v=a / t.scale, v2=b / t.scale, v3=c / t.scale, v4=d / t.scale, unit=t.unit))
     D = complex(d, 0.0)
     sides = []
     for phi, psi in t.positions:
@@ -278,8 +269,7 @@ def three_positions(t: Task) -> Design:
         B = D + c * cmath.exp(1j * psi)
         sides.append(((D - A).conjugate() * (B - A)).imag)
     if not (all(x > 0 for x in sides) or all(x < 0 for x in sides)):
-        raise fail(t, "positions", "the three positions lie on both assembly branches of the coupler and "
-                                   "rocker; expected positions of one assembly")
+        raise fail(t, "positions", Said("s4_three_positions_lie"))
     branch = 1 if sides[0] > 0 else -1
     pts = {"O": 0j, "D": D}
     for i, (phi, psi) in enumerate(t.positions):

@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from plans.errors import Said
 from plans.io import read_toml
 from plans.reader import Reader
 from plans.units import LENGTH_UNITS
@@ -90,17 +91,15 @@ def task_from_dict(data: dict[str, Any], path: str) -> Task:
     r = Reader(path)
     fmt = data.get("format")
     if isinstance(fmt, bool) or fmt != 1:
-        raise r.fail("format", f"expected format = 1, got {'nothing' if fmt is None else repr(fmt)}")
+        raise r.fail("format", Said("sm_format", v='nothing' if fmt is None else repr(fmt)))
     if data.get("kind") != "synthesis":
-        raise r.fail("kind", f"expected \"synthesis\", got {data.get('kind')!r}")
+        raise r.fail("kind", Said("sm_synthesis", v=data.get('kind')))
     mech = r.choice(data, "mechanism", "", MECHANISMS)
     for key in data:
         if key not in COMMON_KEYS and key not in MODEL_KEYS[mech]:
             others = [m for m in MECHANISMS if key in MODEL_KEYS[m]]
             if others:
-                raise r.fail(key, f"not read for mechanism = {mech!r} (it is read for "
-                                  f"{', '.join(repr(m) for m in others)}); expected some of "
-                                  f"{', '.join(sorted(MODEL_KEYS[mech]))}")
+                raise r.fail(key, Said("sm_read_mechanism_mech", mech=mech, v=', '.join(repr(m) for m in others), v2=', '.join(sorted(MODEL_KEYS[mech]))))
             r.keys({key: None}, COMMON_KEYS | MODEL_KEYS[mech], "")
     unit = r.choice(data, "unit", "", sorted(LENGTH_UNITS), "mm")
     title = data.get("title", Path(path).stem)
@@ -111,36 +110,36 @@ def task_from_dict(data: dict[str, Any], path: str) -> Task:
     r.keys(task, TASK_KEYS, "task.")
     for key in ("masses", "loads", "dynamics", "sheet", "scales", "diagrams"):
         if key in task and not isinstance(task[key], dict):
-            raise r.fail(f"task.{key}", "expected a table")
+            raise r.fail(f"task.{key}", Said("sm_table"))
     _finite(r, task, "task")
     _masses(r, task, mech)
     if "sheet" in data and not isinstance(data["sheet"], dict):
-        raise r.fail("sheet", "expected a table")
+        raise r.fail("sheet", Said("sm_table"))
 
     def length(key: str) -> float | None:
         return r.length(data[key], key, unit, positive=True) if key in data else None
 
-    def deg(key: str, lo: float, hi: float, what: str) -> float | None:
+    def deg(key: str, lo: float, hi: float, what: str | Said) -> float | None:
         if key not in data:
             return None
         v = r.value(data[key], key)
         if not lo < v < hi:
-            raise r.fail(key, f"expected {what} between {lo:g}° and {hi:g}° (exclusive), got {v:g}")
+            raise r.fail(key, Said("sm_what_between_lo", what=what, lo=lo, hi=hi, v=v))
         return math.radians(v)
 
     K = r.number(data, "K", "", default=1.0)
     if not 1.0 <= K <= 1e6:
-        raise r.fail("K", f"expected the coefficient of speed change K >= 1, got {K:g}")
+        raise r.fail("K", Said("sm_coefficient_speed_change", K=K))
     lam = None
     if "lambda" in data:
         lam = r.value(data["lambda"], "lambda")
         if not 0 < lam < 1:
-            raise r.fail("lambda", f"expected λ = l1/l2 between 0 and 1 (exclusive), got {lam:g}")
+            raise r.fail("lambda", Said("sm_between_exclusive_lam", lam=lam))
     offset = None
     if "offset" in data:
         offset = r.length(data["offset"], "offset", unit)
         if offset < 0:
-            raise r.fail("offset", f"expected the offset e >= 0 (its side follows the sense), got {data['offset']!r}")
+            raise r.fail("offset", Said("sm_offset_its_side", v=data['offset']))
     mean_speed = r.number(data, "mean_speed", "", positive=True) if "mean_speed" in data else None
     omega_rpm = None
     if "omega_rpm" in task:
@@ -151,14 +150,14 @@ def task_from_dict(data: dict[str, Any], path: str) -> Task:
         positions = _positions(r, data["positions"])
     t = Task(path=path, title=title, unit=unit, mechanism=mech, stroke=length("stroke"), K=K, lam=lam,
              offset=offset,
-             pressure_angle_max=deg("pressure_angle_max_deg", 0, 90, "the permissible pressure angle"),
+             pressure_angle_max=deg("pressure_angle_max_deg", 0, 90, Said("sm_w_pressure")),
              mean_speed=mean_speed, rocker=length("rocker"),
-             swing=deg("swing_deg", 0, 180, "the rocker's swing ψ"), frame=length("frame"),
-             frame_angle=deg("frame_angle_deg", 0, 180, "the frame's angle to the rocker's mean position"),
-             gamma_min=deg("gamma_min_deg", 0, 90, "the permissible transmission angle [γ]"),
+             swing=deg("swing_deg", 0, 180, Said("sm_w_swing")), frame=length("frame"),
+             frame_angle=deg("frame_angle_deg", 0, 180, Said("sm_w_frame_angle")),
+             gamma_min=deg("gamma_min_deg", 0, 90, Said("sm_w_gamma")),
              positions=positions, centre_distance=length("centre_distance"),
              guide_height=length("guide_height"), rod=length("rod"),
-             bank=deg("bank_deg", 0, 180, "the bank angle between the cylinders"),
+             bank=deg("bank_deg", 0, 180, Said("sm_w_bank")),
              ram_group=r.choice(data, "ram_group", "", ("RRP", "RPP"), "RRP") if mech == "coulisse" else "RRP",
              omega_rpm=omega_rpm, sense=sense, task=task, raw=data)
     _required(r, t)
@@ -174,25 +173,24 @@ def _masses(r: Reader, task: dict[str, Any], mech: str) -> None:
     for key, body in task.get("masses", {}).items():
         where = f"task.masses.{key}."
         if not (key.isdigit() and 1 <= int(key) <= n):
-            raise r.fail(f"task.masses.{key}", f"expected a moving link's number 1..{n} as the key "
-                                               "([task.masses.2])")
+            raise r.fail(f"task.masses.{key}", Said("sm_moving_link_number", n=n))
         if not isinstance(body, dict):
-            raise r.fail(f"task.masses.{key}", "expected a table: mass, inertia, centre, points")
+            raise r.fail(f"task.masses.{key}", Said("sm_table_mass_inertia"))
         r.keys(body, MASS_KEYS, where)
         if "centre" in body:
             c = body["centre"]
             if isinstance(c, bool) or not isinstance(c, int | float | str):
-                raise r.fail(f"{where}centre", "expected a ratio along the link (0..1) or a point name")
+                raise r.fail(f"{where}centre", Said("sm_ratio_along_link"))
             if not isinstance(c, str) and not 0 <= c <= 1:
-                raise r.fail(f"{where}centre", f"expected a ratio along the link between 0 and 1, got {c!r}")
+                raise r.fail(f"{where}centre", Said("sm_ratio_along_link2", c=c))
         if "points" in body and not isinstance(body["points"], dict):
-            raise r.fail(f"{where}points", "expected a table of points, as in a scene")
+            raise r.fail(f"{where}points", Said("sm_table_points_scene"))
 
 
 def _finite(r: Reader, value: Any, where: str) -> None:
     """No NaN or infinity anywhere in what [task] carries into the scene."""
     if isinstance(value, float) and not math.isfinite(value):
-        raise r.fail(where, f"expected a finite number, got {value!r}")
+        raise r.fail(where, Said("sm_finite_number_value", value=value))
     if isinstance(value, dict):
         for k, v in value.items():
             _finite(r, v, f"{where}.{k}")
@@ -205,7 +203,7 @@ def _positions(r: Reader, raw: Any) -> tuple[tuple[float, float], ...]:
     ok = isinstance(raw, list) and len(raw) == 3 and all(
         isinstance(p, list) and len(p) == 2 for p in raw)
     if not ok:
-        raise r.fail("positions", "expected three pairs [crank_deg, rocker_deg]")
+        raise r.fail("positions", Said("sm_three_pairs_crank"))
     out = []
     for i, p in enumerate(raw):
         phi = r.value(p[0], f"positions[{i}][0]")
@@ -216,43 +214,42 @@ def _positions(r: Reader, raw: Any) -> tuple[tuple[float, float], ...]:
 
 def _required(r: Reader, t: Task) -> None:
     """The keys a model cannot do without, and the third conditions given one at a time."""
-    def need(key: str, value: Any, what: str) -> None:
+    def need(key: str, value: Any, what: str | Said) -> None:
         if value is None:
-            raise r.fail(key, f"missing; {t.mechanism} needs {what}")
+            raise r.fail(key, Said("sm_missing_mechanism_needs", mechanism=t.mechanism, what=what))
 
     if t.mechanism in ("slider_crank", "v_engine"):
         if t.stroke is None and t.mean_speed is None:
-            raise r.fail("stroke", "missing; expected the stroke H (or mean_speed with task.omega_rpm)")
+            raise r.fail("stroke", Said("sm_missing_stroke_mean"))
         if t.mean_speed is not None and t.stroke is None and t.omega_rpm is None:
-            raise r.fail("task.omega_rpm", "missing; mean_speed gives the stroke only with the crank's speed")
+            raise r.fail("task.omega_rpm", Said("sm_missing_mean_speed"))
         if t.mean_speed is not None and t.stroke is not None and t.omega_rpm is not None:
-            raise r.fail("mean_speed", "give two of stroke, mean_speed and task.omega_rpm, not all three")
+            raise r.fail("mean_speed", Said("sm_give_two_stroke"))
         third = [k for k in ("lambda", "offset", "pressure_angle_max_deg") if k in t.raw]
         if len(third) > 1:
-            raise r.fail(third[1], f"give one third condition ({' or '.join(third)}), not {len(third)}")
+            raise r.fail(third[1], Said("sm_give_one_third", v=' or '.join(third), v2=len(third)))
     if t.mechanism == "v_engine":
-        need("lambda", t.lam, "λ = l1/l2")
-        need("bank_deg", t.bank, "the bank angle between the cylinders")
+        need("lambda", t.lam, Said("sm_w_lambda"))
+        need("bank_deg", t.bank, Said("sm_w_bank"))
     if t.mechanism == "crank_rocker":
         if t.positions is not None:
             for key in ("K", "swing_deg", "frame_angle_deg", "gamma_min_deg"):
                 if key in t.raw:
-                    raise r.fail(key, "three positions fix the mechanism; give rocker or frame (its size) only")
+                    raise r.fail(key, Said("sm_three_positions_fix"))
             if (t.rocker is None) == (t.frame is None):
-                raise r.fail("rocker", "with three positions give one size: rocker or frame")
+                raise r.fail("rocker", Said("sm_three_positions_give"))
         else:
-            need("rocker", t.rocker, "the rocker's length")
-            need("swing_deg", t.swing, "the rocker's swing ψ")
+            need("rocker", t.rocker, Said("sm_w_rocker"))
+            need("swing_deg", t.swing, Said("sm_w_swing"))
             given = [k for k in ("frame", "frame_angle_deg", "gamma_min_deg") if k in t.raw]
             if len(given) > 1:
-                raise r.fail(given[1], f"give one third condition ({' or '.join(given)}), not {len(given)}")
+                raise r.fail(given[1], Said("sm_give_one_third", v=' or '.join(given), v2=len(given)))
     if t.mechanism == "coulisse":
-        need("stroke", t.stroke, "the ram's stroke H")
-        need("centre_distance", t.centre_distance, "the centre distance of the crank's and coulisse's pivots")
+        need("stroke", t.stroke, Said("sm_w_stroke"))
+        need("centre_distance", t.centre_distance, Said("sm_w_centre"))
         if t.K <= 1.0:
-            raise r.fail("K", "a coulisse has K > 1 (the overlap angle θ is its swing); expected K > 1")
+            raise r.fail("K", Said("sm_coulisse_has_overlap"))
         if t.ram_group == "RPP" and t.rod is not None:
-            raise r.fail("rod", "an RPP ram has no rod DE (a block at D slides in the ram's slot)")
+            raise r.fail("rod", Said("sm_rpp_ram_has"))
         if t.ram_group == "RRP" and t.rod is None and t.pressure_angle_max is None:
-            raise r.fail("pressure_angle_max_deg", "missing; the ram's group is sized by its permissible "
-                                                   "pressure angle (or give rod)")
+            raise r.fail("pressure_angle_max_deg", Said("sm_missing_ram_group"))

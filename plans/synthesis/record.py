@@ -6,7 +6,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
-from plans.errors import InputError
+from plans.errors import InputError, Said
 
 from .model import Task
 from .proof import Measured
@@ -60,7 +60,7 @@ def choice_text(choice: tuple[str, float] | None, lang: str = "en") -> str:
     return CHOICES[key][1 if lang == "ru" else 0].format(shown)
 
 
-def fail(t: Task, key: str, message: str) -> InputError:
+def fail(t: Task, key: str, message: str | Said) -> InputError:
     return InputError(message, file=t.path, field=key)
 
 

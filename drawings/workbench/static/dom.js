@@ -1,6 +1,6 @@
 // What every part of the page shares: the state of the file shown, the server's API, and the
 // few helpers that make elements.
-import {t} from "./words.js";
+import {L, t} from "./words.js";
 
 export const NS = "http://www.w3.org/2000/svg";
 export const $ = (id) => document.getElementById(id);
@@ -12,7 +12,13 @@ export const S = {path: null, name: null, text: "", data: null, kind: null, sol:
   undo: []};
 
 export const f3 = (x) => (Math.round(x * 1000) / 1000).toString();
-export const num = (x) => (x === undefined || x === null ? "" : Number(x.toPrecision(5)).toString());
+// a figure shown (never one typed back into a field): a decimal comma on a Russian page
+export const num = (x) => (x === undefined || x === null ? "" : Number.isNaN(Number(x)) ? "—"
+  : L.lang === "ru" ? Number(x.toPrecision(5)).toString().replace(".", ",") : Number(x.toPrecision(5)).toString());
+// a key of the solution (omega_1, p_a, a segment "p_v a") as the page's language writes it
+// (the server's symbols: ω1, π or p_a as the scene's notation says)
+export const said = (key, fallback) => (((S.sol && S.sol.symbols) || {})[L.lang] || {})[key] || fallback;
+export const sym = (nm) => String(nm).split(" ").map((w) => (((S.sol && S.sol.symbols) || {})[L.lang] || {})[w] || w).join(" ");
 export const stem = (fallback) => (S.path || S.name || fallback).replace(/\.toml$/, "");
 export const where = () => (S.path ? "path=" + encodeURIComponent(S.path) : "");
 
@@ -25,6 +31,7 @@ export async function api(method, url, body, type) {
   try { r = await fetch(url, opt); } catch (e) { return {ok: false, status: 0, data: {error: t("no_answer")}}; }
   const ct = r.headers.get("Content-Type") || "";
   const data = ct.startsWith("application/json") ? await r.json() : await r.blob();
+  if (data && data.errors && data.errors[L.lang]) data.error = data.errors[L.lang];  // the engine's line in the page's language
   return {ok: r.ok, status: r.status, data: data};
 }
 

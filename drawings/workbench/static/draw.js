@@ -1,10 +1,10 @@
 // Drawing what the engine solved: the scheme at scale (its fixed pivots draggable), the
 // velocity and acceleration plans of the position on the slider, and the results table.
 // The page computes no mechanics: every coordinate it draws comes from the solution.
-import {$, S, clear, el, f3, h, num} from "./dom.js";
+import {$, S, clear, el, f3, h, num, sym} from "./dom.js";
 import {completeNow, edit} from "./solve.js";
 import {drawCycle, drawForces} from "./views.js";
-import {t, un} from "./words.js";
+import {L, t, un} from "./words.js";
 
 export const KIND = {absolute: "abs", relative: "rel", normal: "nrm", tangential: "tan", coriolis: "cor",
   sliding: "sld", closing: "cls"};
@@ -167,14 +167,14 @@ function plan(svg, p, cap, unit) {
   }
   for (const g of spots) {
     el(svg, "text", {x: f3(g.q[0] + 1.5 * u), y: f3(-g.q[1] - 1.5 * u), "font-size": f3(4.5 * u), class: "label"},
-      g.names.join(", "));
+      g.names.map(sym).join(", "));
   }
 }
 function table(pos) {
   const tb = $("table").tBodies[0]; clear(tb);
   for (const r of pos.readings || []) {
     const tr = h(tb, "tr");
-    for (const x of [r.quantity, r.segment || "", num(r.length_mm), num(r.value), num(r.exact), num(r.difference), un(r.unit)]) h(tr, "td", {}, String(x));
+    for (const x of [sym(r.quantity), sym(r.segment || ""), num(r.length_mm), num(r.value), num(r.exact), num(r.difference), un(r.unit)]) h(tr, "td", {}, String(x));
   }
   const bal = pos.balancing;
   if (bal && typeof bal === "object") {
@@ -182,14 +182,14 @@ function table(pos) {
       const v = bal[k];
       if (typeof v !== "number") continue;
       const tr = h(tb, "tr");
-      for (const x of [t("balancing") + " " + k, "", "", "", num(v), "", ""]) h(tr, "td", {}, x);
+      for (const x of [sym("balancing." + k), "", "", "", num(v), "", ""]) h(tr, "td", {}, x);
     }
   }
   for (const id of Object.keys(pos.links)) {
     const lk = pos.links[id];
     if (lk.omega === undefined) continue;
     const tr = h(tb, "tr");
-    for (const x of ["ω" + id + ", ε" + id, "", "", "", num(lk.omega) + ", " + num(lk.eps === undefined ? NaN : lk.eps), "", un("rad/s, rad/s²")]) h(tr, "td", {}, x);
+    for (const x of ["ω" + id + ", ε" + id, "", "", "", num(lk.omega) + (L.lang === "ru" ? "; " : ", ") + num(lk.eps === undefined ? NaN : lk.eps), "", un("rad/s, rad/s²")]) h(tr, "td", {}, x);
   }
 }
 

@@ -99,7 +99,7 @@ function present(seq, r, t0) {
   if (S.k >= n) S.k = 0;
   $("phi").value = String(S.k);
   draw();
-  status(t("solved") + " " + Math.round(performance.now() - t0) + " ms");
+  status(t("solved") + " " + Math.round(performance.now() - t0) + " " + t("ms"));
   if (S.showForces) loadForces();
   document.body.dataset.solved = String(seq);
   if (S.sol.partial !== undefined) later = setTimeout(() => complete(seq, S.text), REST_AFTER_MS);

@@ -1,8 +1,8 @@
 // The right column's other views: the force polygons and the Zhukovsky lever of the position
 // (asked for when shown), and the tables over the cycle as diagrams against φ.
-import {$, S, api, clear, el, f3, h, num, where} from "./dom.js";
+import {$, S, api, clear, el, f3, h, num, said, where} from "./dom.js";
 import {KIND, defs, fit} from "./draw.js";
-import {panelName, t, un} from "./words.js";
+import {L, panelName, t, un} from "./words.js";
 
 export async function loadForces() {
   if (!S.showForces || S.kind === "check" || !S.sol) return;
@@ -17,6 +17,7 @@ export function drawForces() {
   const box = $("force-panels"); clear(box);
   if (!S.forces || !S.forces.length) { h(box, "p", {}, t("no_forces")); return; }
   for (const pn of S.forces) {
+    const lab = (lb) => ((pn.said || {})[L.lang] || {})[lb] || lb;  // the server's label in the page's language
     const fig = h(box, "figure", {"data-panel": pn.id});
     h(fig, "figcaption", {}, panelName(pn.name) + ", μ = " + num(pn.scale) + " " + un(pn.unit));
     const svg = el(fig, "svg", {id: "force-" + pn.id, role: "img", "data-scale": String(pn.scale)});
@@ -30,13 +31,13 @@ export function drawForces() {
       const q = pn.points[nm][S.k];
       if (!q) continue;
       el(svg, "circle", {cx: f3(q[0]), cy: f3(-q[1]), r: f3(0.7 * u), class: "ppt"});
-      el(svg, "text", {x: f3(q[0] + 1.5 * u), y: f3(-q[1] + 4 * u), "font-size": f3(4 * u), class: "label"}, nm);
+      el(svg, "text", {x: f3(q[0] + 1.5 * u), y: f3(-q[1] + 4 * u), "font-size": f3(4 * u), class: "label"}, lab(nm));
     }
     for (const [g, t] of segs) {
       if (Math.hypot(t[2] - t[0], t[3] - t[1]) < 1e-9) continue;
       el(svg, "line", {x1: f3(t[0]), y1: f3(-t[1]), x2: f3(t[2]), y2: f3(-t[3]), class: "seg " + (g.kind === "force" ? "frc" : KIND[g.kind] || ""),
         "stroke-width": f3(0.5 * u), "marker-end": "url(#" + svg.id + "-arr)", "data-label": g.label});
-      el(svg, "text", {x: f3((t[0] + t[2]) / 2 + u), y: f3(-(t[1] + t[3]) / 2 - u), "font-size": f3(3.6 * u), class: "label"}, g.label);
+      el(svg, "text", {x: f3((t[0] + t[2]) / 2 + u), y: f3(-(t[1] + t[3]) / 2 - u), "font-size": f3(3.6 * u), class: "label"}, lab(g.label));
     }
   }
 }
@@ -57,7 +58,8 @@ function cycleRows() {
 export function drawCycle() {
   const rows = cycleRows(), sel = $("cycle-row"), keep = sel.value;
   clear(sel);
-  rows.forEach((x, i) => h(sel, "option", {value: String(i)}, x.row.label + (x.row.unit ? ", " + un(x.row.unit) : "") + " — " + x.table.title));
+  rows.forEach((x, i) => h(sel, "option", {value: String(i)}, said("cycle." + x.row.label, x.row.label) + (x.row.unit ? ", " + un(x.row.unit) : "")
+    + " — " + said("cycle." + x.table.title, x.table.title)));
   const svg = $("cycle-chart"); clear(svg);
   const tb = $("cycle-table").tBodies[0]; clear(tb);
   if (!rows.length) return;

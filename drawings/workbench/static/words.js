@@ -28,7 +28,7 @@ export const WORDS = {
     set_driver: "set", guide_of: "guide", at: "at", empty_first: "fill in every field",
     new_scene: "New mechanism (empty)", new_tip: "an empty scene: build it link by link",
     id: "number", kind: "kind", links: "links", point: "point", sign: "±1", undo_tip: "take back the last change",
-    taken: "the number is taken (remove that link first)"},
+    taken: "the number is taken (remove that link first)", ms: "ms"},
   ru: {gallery: "галерея", workbench: "верстак", save: "Сохранить", page: "Страница", check: "Проверка…",
     page_tip: "демонстрационная страница (plans demo)", check_tip: "пустой файл проверки для этой схемы: введите цифры студента",
     start: "Начать с механизма курса", files_of: "Файлы папки", scheme: "Схема", velocity_plan: "План скоростей",
@@ -59,7 +59,7 @@ export const WORDS = {
     resisting: "сопротивления", set_driver: "задать", guide_of: "направляющая", at: "в",
     empty_first: "заполните все поля", new_scene: "Новый механизм (пустой)", new_tip: "пустая схема: соберите её звено за звеном",
     id: "номер", kind: "вид", links: "звенья", point: "точка", sign: "±1", undo_tip: "отменить последнее изменение",
-    taken: "номер занят (сначала удалите то звено)"},
+    taken: "номер занят (сначала удалите то звено)", ms: "мс"},
 };
 
 export const L = {lang: localStorage.getItem("plans-lang") || ((navigator.language || "").startsWith("ru") ? "ru" : "en")};
@@ -81,7 +81,7 @@ export function translate() {
 const RU_UNITS = {"mm": "мм", "m": "м", "kg": "кг", "kg·m²": "кг·м²", "rpm": "об/мин", "rad/s": "рад/с",
   "N or N·m": "Н или Н·м", "N": "Н", "N·m": "Н·м", "Pa": "Па", "SI": "СИ", "m/s": "м/с", "m/s^2": "м/с²",
   "m/s²": "м/с²", "rad/s²": "рад/с²", "mm/N": "мм/Н", "mm/(m/s)": "мм/(м/с)", "mm/(m/s²)": "мм/(м/с²)",
-  "rad/s, rad/s²": "рад/с, рад/с²"};
+  "rad/s, rad/s²": "рад/с, рад/с²", "rad/s^2": "рад/с²", "kg*m^2": "кг·м²", "N*m": "Н·м", "J": "Дж", "W": "Вт", "s": "с"};
 export const un = (u) => (L.lang === "ru" && RU_UNITS[u] ? RU_UNITS[u] : u);
 export const panelName = (nm) => (L.lang !== "ru" ? nm : nm === "crank" ? "начальное звено"
   : nm === "lever" ? "рычаг Жуковского" : nm.replace(/^group /, "группа "));
