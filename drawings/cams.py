@@ -11,7 +11,7 @@ from typing import Any
 
 import numpy as np
 
-from drawings.linkage.panels import STANDARD_RATIOS, Panel, finish, ratio_text
+from drawings.linkage.panels import Panel, auto_length_scale, finish, ratio_text
 from drawings.paper.backend import (
     CENTRE_LINE,
     HAIR,
@@ -32,6 +32,7 @@ from plans.cams.analysis import Profile
 from plans.cams.graphical import Integration, integral_scale
 from plans.cams.model import Cam
 from plans.cams.solution import CamSolution, solve_cam
+from plans.kinematics.scales import DIVISIONS, round_down, round_up
 
 EXACT = Style(width=0.25, stroke="#1f5fbf", dash=(2.0, 1.0))
 AXIS = CENTRE_LINE
@@ -66,29 +67,18 @@ class Drawing:
 
 def nice(x: float) -> float:
     """The largest 1, 2, 2.5, 5 × 10ⁿ not above x (x > 0)."""
-    e = math.floor(math.log10(x))
-    for m in (5.0, 2.5, 2.0, 1.0):
-        if m * 10**e <= x * (1 + 1e-12):
-            return m * 10**e
-    return 10 ** (e - 1) * 5
+    return round_down(x, DIVISIONS)
 
 
 def drawing_scale(size_m: float, target_mm: float) -> float:
     """The largest standard drawing scale (GOST 2.302), paper mm per m, drawing ``size_m``
     within ``target_mm``."""
-    for r in STANDARD_RATIOS:
-        if r * 1000.0 * size_m <= target_mm:
-            return r * 1000.0
-    return STANDARD_RATIOS[-1] * 1000.0
+    return auto_length_scale(size_m, target_mm)
 
 
 def nice_up(x: float) -> float:
     """The smallest 1, 2, 2.5, 5 × 10ⁿ not below x (x > 0)."""
-    e = math.floor(math.log10(x))
-    for m in (1.0, 2.0, 2.5, 5.0, 10.0):
-        if m * 10**e >= x * (1 - 1e-12):
-            return m * 10**e
-    return 10.0 ** (e + 1)
+    return round_up(x, DIVISIONS)
 
 
 def pole_distance(x: float) -> float:

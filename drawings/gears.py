@@ -523,8 +523,8 @@ def draw(source: GearsSolution | GearFile | str | Path, *, format: str | None = 
     sheets: list[Sheet] = []
     for panels, scale in groups:
         sheets.extend(compose(panels, spec, scale, gf.path))
-    for i, sh in enumerate(sheets):  # one numbering across the meshing and train sheets
-        sh.number, sh.count = i + 1, len(sheets)
-        sh.render()
+    from drawings.paper.merge import merged
+
+    sheets = merged(sheets)  # the train on the meshing sheet where it fits; one numbering
     panels_all = tuple(p for g, _ in groups for p in g)
     return GearDrawing(gf, sol, mg, spec, panels_all, tuple(sheets))

@@ -305,8 +305,10 @@ def complete() -> dict[str, tuple[str, str]]:
         from plans.messages_commands import COMMAND_ERRORS
         from plans.messages_construction import CONSTRUCTION_ERRORS
         from plans.messages_files import FILE_ERRORS
+        from plans.messages_kinds import KIND_ERRORS
 
         ERRORS.update(FILE_ERRORS)
+        ERRORS.update(KIND_ERRORS)
         ERRORS.update(COMMAND_ERRORS)
         ERRORS.update(CONSTRUCTION_ERRORS)
     return ERRORS

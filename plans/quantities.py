@@ -25,6 +25,8 @@ from __future__ import annotations
 import re
 from typing import TYPE_CHECKING, Any, Protocol
 
+from plans.tolerances import SAME_ANGLE_DEG
+
 if TYPE_CHECKING:
     from plans.forces.lever import LeverAnalysis
     from plans.forces.polygons import ForceAnalysis, Reaction
@@ -130,7 +132,7 @@ def position(sol: Solution, phi: float | None) -> int:
     if phi is None:
         return 0
     for k, p in enumerate(phis):
-        if abs(p - phi) < 1e-9:
+        if abs(p - phi) < SAME_ANGLE_DEG:
             return k
     raise ValueError(f"crank angle {phi:g}° is not among the scene's positions {list(phis)}")
 

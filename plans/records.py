@@ -14,6 +14,7 @@ offered: no ``InitVar``, no keyword-only fields.
 from __future__ import annotations
 
 import reprlib
+import weakref
 from collections.abc import Callable
 from dataclasses import MISSING, Field, FrozenInstanceError, dataclass, field, fields
 from operator import attrgetter
@@ -30,13 +31,15 @@ def frozen(cls: T, /) -> T: ...
 
 
 @overload
-def frozen(*, slots: bool = True) -> Callable[[T], T]: ...
+def frozen(*, slots: bool = True, weakref_slot: bool = False) -> Callable[[T], T]: ...
 
 
 @dataclass_transform(frozen_default=True, field_specifiers=(field, Field))
-def frozen(cls: T | None = None, /, *, slots: bool = True) -> Any:
+def frozen(cls: T | None = None, /, *, slots: bool = True, weakref_slot: bool = False) -> Any:
     """``@frozen`` as ``@dataclass(frozen=True, slots=True)``; ``@frozen(slots=False)`` as
-    ``@dataclass(frozen=True)``.  A method the class writes itself is kept."""
+    ``@dataclass(frozen=True)``; ``weakref_slot=True`` as dataclass's (what is derived from
+    the record is kept beside it, :func:`derived`).  A method the class writes
+    itself is kept."""
 
     def wrap(cls: T) -> T:
         own = dict(cls.__dict__)
@@ -45,7 +48,8 @@ def frozen(cls: T | None = None, /, *, slots: bool = True) -> Any:
         documented = bool(cls.__doc__)
         if not documented:
             cls.__doc__ = "-"  # written below, once __init__ exists (as dataclass writes it)
-        out: Any = dataclass(cls, init=False, repr=False, eq=False, frozen=False, slots=slots)
+        out: Any = dataclass(cls, init=False, repr=False, eq=False, frozen=False, slots=slots,
+                             weakref_slot=weakref_slot and slots)
         fs = fields(out)
         if any(f.kw_only for f in fs):
             raise TypeError(f"{out.__name__}: keyword-only fields need dataclass itself")
@@ -177,4 +181,32 @@ def _state(names: tuple[str, ...]) -> tuple[Callable[[Any], list], Callable[[Any
     return __getstate__, __setstate__
 
 
-__all__ = ["MADE", "frozen"]
+# --------------------------------------------------------------------------- beside a record
+# What a solver derives from a record (a scene's structure, the exact solver's constants, a
+# force analysis's largest reaction) is kept here, not in the record: a record is a value
+# (equal fields, equal records; nothing in it changes once made).  The table is keyed by the
+# record's identity (a replaced record, ``dataclasses.replace``, derives its own) and dropped
+# with it (a weak reference: the class is made with ``@frozen(weakref_slot=True)``).
+
+#: id(record) -> (a weak reference to it, what is derived from it)
+_KEPT: dict[int, tuple[weakref.ref, dict[Any, Any]]] = {}
+
+
+def derived(record: Any) -> dict[Any, Any]:
+    """The table of what is derived from ``record`` (empty the first time it is asked for)."""
+    key = id(record)
+    got = _KEPT.get(key)
+    if got is not None and got[0]() is record:
+        return got[1]
+    table: dict[Any, Any] = {}
+
+    def forget(ref: weakref.ref, key: int = key) -> None:
+        held = _KEPT.get(key)
+        if held is not None and held[0] is ref:
+            del _KEPT[key]
+
+    _KEPT[key] = (weakref.ref(record, forget), table)
+    return table
+
+
+__all__ = ["MADE", "derived", "frozen"]

@@ -76,12 +76,8 @@ def head_json(sol: Solution) -> dict[str, Any]:
         from plans.cycle.results import cycle_json
 
         out.update(cycle_json(sol.cycle))
-    if sol.forces is not None and sol.forces[0].friction is not None:
-        from plans.forces.friction import efficiency_json
-
-        eff = efficiency_json(sol.forces[0])
-        if eff is not None:
-            out["efficiency"] = eff
+    if sol.efficiency is not None:
+        out["efficiency"] = sol.efficiency
     return out
 
 

@@ -9,7 +9,8 @@ read the Solution.
 
 ``fit`` is the drawing's paper: the target lengths of the plans, polygons and lever as a
 fraction of the A1 ones (``drawings`` passes √(sheet / A1) for a smaller sheet, the scales
-still round).  It changes only scales, never a value.
+still round, and up to ``MAX_FIT`` for longer plans on a sheet with room for them).  It changes
+only scales, never a value.
 
 Values by their textbook names (``F_12^τ``, ``v_B``, ``omega_3``...) are read with
 :meth:`Solution.value`, signed as :mod:`plans.quantities` documents (docs/quantities.md).
@@ -71,6 +72,10 @@ class Revolution(NamedTuple):
         return np.asarray(self.kinematics.point_on(link, z)[0])[::self.step]
 
 
+#: The longest plans a sheet with room asks for: this many times the A1 target lengths.
+MAX_FIT = 2.5
+
+
 class Solution:
     """Everything computed for a scene, each part once, when first read."""
 
@@ -79,10 +84,10 @@ class Solution:
     def __init__(self, scene: Scene, fit: float = 1.0) -> None:
         """``scene`` with its ``[loads]``, ``[dynamics]`` and ``[diagrams]`` read and validated now
         (an InputError naming the field, before anything is solved), at the paper's ``fit``."""
-        from plans.scene.tables import with_tables
+        from plans.tables import with_tables
 
-        if not (isinstance(fit, int | float) and not isinstance(fit, bool) and 0.0 < fit <= 1.0):
-            raise ValueError(f"fit is the fraction of the A1 target lengths, 0 < fit <= 1; got {fit!r}")
+        if not (isinstance(fit, int | float) and not isinstance(fit, bool) and 0.0 < fit <= MAX_FIT):
+            raise ValueError(f"fit is the fraction of the A1 target lengths, 0 < fit <= {MAX_FIT:g}; got {fit!r}")
         self.scene: Scene = with_tables(scene, **({} if fit == scene.fit else {"fit": float(fit)}))
         self.fit = float(fit)
         self._parts: dict[Any, Any] = {}
@@ -180,6 +185,20 @@ class Solution:
             return None if got is None else Forces(*got)
 
         return self._part("forces", make)
+
+    @property
+    def efficiency(self) -> dict[str, Any] | None:
+        """η over the cycle and η(φ) with friction (the JSON's ``efficiency``): None without
+        friction, or where the positions are not a whole turn at equal steps."""
+        def make() -> dict[str, Any] | None:
+            f = self.forces
+            if f is None or f.analysis.friction is None:
+                return None
+            from plans.forces.friction import efficiency_json
+
+            return efficiency_json(f.analysis)
+
+        return self._part("efficiency", make)
 
     @property
     def lever(self) -> LeverAnalysis | None:

@@ -19,5 +19,13 @@ COINCIDE_REL = 1e-9
 #: is taken about given no arm.
 EXACT_ZERO_REL = 1e-12
 
+#: Two crank angles (degrees) closer than this are one position: a position named by its
+#: angle (a check file's ``phi_deg``, ``--phi``, a value read at φ) is found among the scene's.
+SAME_ANGLE_DEG = 1e-9
+
+#: A value at the edge of its tolerance passes: the edge widened by this fraction for the
+#: rounding of the tolerance's own arithmetic (the checker's verdicts).
+VERDICT_REL = 1e-9
+
 #: A group whose construction lines meet at less than ~1e-6 rad is reported as ill-conditioned.
 ILL_CONDITIONED = 1e6

@@ -241,13 +241,31 @@ def _drawn_part(sheet) -> float:
 
 
 def test_a1_sheets_are_not_left_empty(drawn):
-    """Every A1 sheet of every sample has panels over at least 0.3 of its field, and the
-    drawing over 0.4 on average (the course's set: a 12-position scene's kinematics and
-    kinetostatics sheets, the plan of positions and the mechanism grown while the sheets hold them;
-    the block layout left half-empty last sheets of 0.11 to 0.25)."""
+    """Every A1 sheet of every sample has panels over at least 0.35 of its field (the plans,
+    polygons and levers drawn at longer round scales where a sheet has room; the block layout
+    once left half-empty last sheets of 0.11 to 0.25)."""
     _, d, _ = drawn
     fills = [_drawn_part(sh) for sh in d.sheets]
-    assert min(fills) >= 0.3 and sum(fills) / len(fills) >= 0.4, [round(f, 2) for f in fills]
+    assert min(fills) >= 0.35, [round(f, 2) for f in fills]
+
+
+#: Samples with an A1 sheet still more than a third empty: a kinetostatics sheet whose first
+#: position is a dead centre (a block one mechanism high), kinematics sheets whose plans at the
+#: next longer round scale would take another sheet, the dynamics sheets (their diagrams keep
+#: the 240 mm φ axis).
+NOT_TWO_THIRDS = {"dynamics_slider_crank", "offset_slider_crank", "scotch_yoke", "shaper", "shaper_course",
+                  "shaper_friction", "single_four_stroke", "slider_crank", "v_engine", "v_engine_cycle",
+                  "v_engine_friction"}
+
+
+def test_no_a1_sheet_is_more_than_a_third_empty(drawn, request):
+    """Every A1 sheet of a sample drawn over at least two thirds of its field (inside the
+    frame, less the title block)."""
+    path, d, _ = drawn
+    if path.stem in NOT_TWO_THIRDS:
+        request.applymarker(pytest.mark.xfail(reason="a sheet still more than a third empty", strict=True))
+    fills = [_drawn_part(sh) for sh in d.sheets]
+    assert min(fills) >= 2 / 3, [round(f, 2) for f in fills]
 
 
 def _arrows(prims, kind: str = "force"):

@@ -100,7 +100,9 @@ def _vectors(doc, block: str) -> list[tuple[float, float]]:
 
 def test_plan_vectors_read_off_the_dxf_are_the_segments_plans_solve_reports(drawn, first, tmp_path):
     """Every segment of every velocity and acceleration plan in ``plans solve --json`` (plan
-    mm, y up) is a vector of its plan's block in the DXF (1 unit = 1 mm, y up) to 0.01 mm."""
+    mm, y up, at the A1 scales) is a vector of its plan's block in the DXF (1 unit = 1 mm, y up)
+    to 0.01 mm, times the ratio of the scale the sheet draws that plan at (a larger round one
+    where the sheet has room) to the JSON's."""
     from plans.cli import main
 
     out = tmp_path / "solve.json"
@@ -108,10 +110,12 @@ def test_plan_vectors_read_off_the_dxf_are_the_segments_plans_solve_reports(draw
     solved = json.loads(out.read_text(encoding="utf-8"))
     checked = 0
     from drawings.paper.common import phi_tag
+    from plans.kinematics.scales import is_round
 
     for sh in drawn["linkage"]:
         doc = first[1] if sh is first[0] else _read(sh.dxf())
         names = {b.name for b in doc.blocks}
+        drawn_at = {p.pid: p.scale for p, _, _ in sh.placed}
         for pos in solved["positions"]:
             for kind in ("velocity", "acceleration"):
                 block = f"{kind}-{phi_tag(pos['phi_deg'])}"
@@ -119,15 +123,17 @@ def test_plan_vectors_read_off_the_dxf_are_the_segments_plans_solve_reports(draw
                     continue
                 plan = pos["plans"][kind]
                 vectors = _vectors(doc, block)
+                k = drawn_at[block] / plan["scale"]
+                assert k >= 1.0 and is_round(drawn_at[block])
                 for s in plan["segments"]:
                     if s["length_mm"] < 0.5:
                         continue
                     (x0, y0), (x1, y1) = plan["points"][s["from"]], plan["points"][s["to"]]
-                    want = (x1 - x0, y1 - y0)
-                    assert math.hypot(*want) == pytest.approx(s["length_mm"], abs=1e-9)
+                    assert math.hypot(x1 - x0, y1 - y0) == pytest.approx(s["length_mm"], abs=1e-9)
+                    want = (k * (x1 - x0), k * (y1 - y0))
                     near = [v for v in vectors if math.dist(v, want) <= 0.01]
                     assert near, (block, s["label"], want)
-                    assert math.hypot(*near[0]) == pytest.approx(s["length_mm"], abs=0.01)
+                    assert math.hypot(*near[0]) == pytest.approx(k * s["length_mm"], abs=0.01)
                     checked += 1
     assert checked >= 20
 
@@ -228,15 +234,15 @@ def test_same_bytes_every_time_and_the_same_as_ezdxfs_own_entities(drawn):
 def test_draw_writes_one_dxf_per_sheet_beside_the_other_formats(tmp_path, capsys):
     from drawings.cli import main
 
-    src = KIND_SAMPLES["gears"]
+    src = SAMPLES / "gears" / "planetary_2kh.toml"  # two sheets
     assert main(["draw", str(src), "-o", str(tmp_path), "--format", "svg,dxf", "--quiet"]) == 0
     names = sorted(p.name for p in tmp_path.iterdir() if not p.name.startswith("."))
-    assert names == ["seed_train-1.dxf", "seed_train-1.svg", "seed_train-2.dxf", "seed_train-2.svg"]
+    assert names == ["planetary_2kh-1.dxf", "planetary_2kh-1.svg", "planetary_2kh-2.dxf", "planetary_2kh-2.svg"]
     alone = tmp_path / "alone"
     assert main(["draw", str(src), "-o", str(alone), "--format", "dxf", "--quiet"]) == 0
     assert sorted(p.name for p in alone.iterdir() if not p.name.startswith(".")) == \
-        ["seed_train-1.dxf", "seed_train-2.dxf"]
-    assert (alone / "seed_train-1.dxf").read_bytes() == (tmp_path / "seed_train-1.dxf").read_bytes()
+        ["planetary_2kh-1.dxf", "planetary_2kh-2.dxf"]
+    assert (alone / "planetary_2kh-1.dxf").read_bytes() == (tmp_path / "planetary_2kh-1.dxf").read_bytes()
     with pytest.raises(SystemExit):
         main(["draw", str(src), "-o", str(alone), "--format", "dwg"])
     assert "svg,pdf,png,dxf" in capsys.readouterr().err
@@ -269,7 +275,8 @@ def test_ezdxf_is_loaded_only_when_dxf_is_asked_for(drawn, tmp_path):
             "print('ezdxf' in sys.modules)\n")
     assert _run(code).split() == ["False", "False", "True"]
     for sh in drawn["gears"]:  # written by another process with other string hashes
-        assert (tmp_path / f"seed_train-{sh.number}.dxf").read_bytes() == sh.dxf()
+        name = "seed_train.dxf" if len(drawn["gears"]) == 1 else f"seed_train-{sh.number}.dxf"
+        assert (tmp_path / name).read_bytes() == sh.dxf()
 
 
 def test_a4_portrait_sheet_is_210_by_297(tmp_path):

@@ -362,9 +362,10 @@ def test_drawn_reaction_line_is_tangent_to_the_friction_circle_on_the_opposing_s
 
 def test_sheet_panels_with_friction_have_the_efficiency_diagram():
     from drawings.linkage.friction_marks import efficiency_panels
+    from plans.forces.friction import efficiency_json
 
     scene, kin, fa, _ = _solved("v_engine_friction")
-    panels = efficiency_panels(fa, "ru")
+    panels = efficiency_panels(efficiency_json(fa), fa, "ru")
     assert [p.pid for p in panels] == ["friction-eta", "friction-table"]
     curve = [p for p in panels[0].prims if p.eid.startswith("friction-eta-curve")]
     assert curve and len(curve[0].pts) == kin.n + 1  # the turn closed back to its first position

@@ -133,17 +133,17 @@ def test_a_later_output_that_fails_leaves_nothing_of_the_run(tmp_path, capsys):
     err = capsys.readouterr().err.splitlines()
     assert len(err) == 1 and "folder" in err[0]
     assert _state(tmp_path) == before  # the CSV written first is not there either
-    train = _copy("gears/seed_train.toml", tmp_path)  # two sheets
+    train = _copy("gears/planetary_2kh.toml", tmp_path)  # two sheets
     out = tmp_path / "sheets"
-    (out / "seed_train-2.svg").mkdir(parents=True)  # the later sheet's target is a folder
+    (out / "planetary_2kh-2.svg").mkdir(parents=True)  # the later sheet's target is a folder
     assert main(["draw", str(train), "-o", str(out)]) == 2
-    assert "seed_train-2.svg" in capsys.readouterr().err
-    assert sorted(p.name for p in out.iterdir()) == ["seed_train-2.svg"]
+    assert "planetary_2kh-2.svg" in capsys.readouterr().err
+    assert sorted(p.name for p in out.iterdir()) == ["planetary_2kh-2.svg"]
     cam = _copy("cams/seed001_valve_cam.toml", tmp_path)  # one sheet, its PNG target a folder
     (out / "seed001_valve_cam.png").mkdir()
     assert main(["draw", str(cam), "-o", str(out), "--format", "svg,png", "--dpi", "10"]) == 2
     assert "seed001_valve_cam.png" in capsys.readouterr().err
-    assert sorted(p.name for p in out.iterdir()) == ["seed001_valve_cam.png", "seed_train-2.svg"]
+    assert sorted(p.name for p in out.iterdir()) == ["planetary_2kh-2.svg", "seed001_valve_cam.png"]
 
 
 def test_a_run_renames_its_files_only_when_it_returns(tmp_path):

@@ -124,6 +124,7 @@ SOLVERS = {
     "plans.kinematics.extreme": {"strokes"},
     "plans.forces.loads": {"ignition", "parse_loads"},
     "plans.kinematics.centres": {"centres_at", "velocities_at", "kennedy", "primary"},
+    "plans.forces.friction": {"friction_analysis", "cycle_efficiency", "efficiency_json"},
 }
 
 #: What solves a file of the other kinds: each room's, read by its sheets off the room's

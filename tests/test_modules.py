@@ -211,3 +211,56 @@ def test_no_module_is_longer_than_a_reader_takes_in():
     long = sorted(f"{p.relative_to(ROOT)}: {n} lines" for p in MODULES.values()
                   if (n := len(p.read_text(encoding="utf-8").splitlines())) > LONGEST)
     assert long == []
+
+
+def _room_of(mod: str) -> str:
+    """A room for the graph between rooms: a sub-package, or a top-level module of its own
+    (plans.solution, plans.errors: the shared modules and the composers above the rooms)."""
+    room = _room(mod)
+    return mod if room in PACKAGES else room
+
+
+def _rooms_graph() -> dict[str, set[str]]:
+    """Room -> the rooms its modules import (lazy and TYPE_CHECKING imports counted)."""
+    graph: dict[str, set[str]] = {}
+    for m, p in MODULES.items():
+        graph.setdefault(_room_of(m), set())
+        for mod, _, _ in _imports(m, p):
+            dep = _ours(mod)
+            if dep is not None and _room_of(dep) != _room_of(m):
+                graph[_room_of(m)].add(_room_of(dep))
+    return graph
+
+
+#: The rooms at the bottom of the pipeline and the other kinds' rooms: each imports only rooms
+#: below it, so none is in an import cycle with another room.
+BASE_ROOMS = ("plans.scene", "plans.kinematics", "plans.forces", "plans.balancing", "plans.gears",
+              "plans.cams", "drawings.paper")
+#: The one cycle left among them: the scene's reader places the positions given by the
+#: piston's travel or from the output's extreme ([driver] s_mm, phi_start) with the
+#: kinematics (plans.kinematics.travel, .extreme), which reads the scene.
+KNOWN_BASE_CYCLES = [["plans.kinematics", "plans.scene"]]
+
+
+def test_the_base_rooms_are_in_no_import_cycle_with_another_room():
+    cycles = _cycles(_rooms_graph())
+    assert sorted(c for c in cycles if set(c) & set(BASE_ROOMS)) == KNOWN_BASE_CYCLES
+    graph = _rooms_graph()
+    assert {"plans.forces", "plans.cycle"} & graph["plans.scene"] == set()  # the tables: plans.tables
+    assert graph["plans.scene"] - {"plans.kinematics"} <= {m for m in MODULES if _room(m) == "plans"}
+
+
+def test_the_rooms_graph_sees_a_lazy_import_between_rooms(tmp_path, monkeypatch):
+    """A lazy import from one room back into another that imports it is a cycle of rooms."""
+    for room in ("low", "high"):
+        (tmp_path / "plans" / room).mkdir(parents=True)
+        (tmp_path / "plans" / room / "__init__.py").write_text("")
+    (tmp_path / "plans" / "__init__.py").write_text("")
+    (tmp_path / "plans" / "low" / "a.py").write_text("def f():\n    from plans.high import b\n")
+    (tmp_path / "plans" / "high" / "b.py").write_text("from plans.low.a import f\n")
+    mods = {"plans": tmp_path / "plans" / "__init__.py",
+            "plans.low": tmp_path / "plans" / "low" / "__init__.py",
+            "plans.high": tmp_path / "plans" / "high" / "__init__.py",
+            "plans.low.a": tmp_path / "plans" / "low" / "a.py", "plans.high.b": tmp_path / "plans" / "high" / "b.py"}
+    monkeypatch.setitem(globals(), "MODULES", mods)
+    assert _cycles(_rooms_graph()) == [["plans.high", "plans.low"]]

@@ -71,6 +71,7 @@ def test_plans_draw_solves_each_file_once(path, monkeypatch):
     # the layout on the sheets solves nothing: not timed here
     monkeypatch.setattr(sheets, "compose", lambda panels, *a, **kw: [SimpleNamespace(
         panels=panels, number=1, count=1, prims=[], render=lambda: None)])
+    monkeypatch.setattr("drawings.paper.merge.merged", lambda laid, *a, **kw: list(laid))
     d = drawings.draw(str(path))
     assert d.panels and len(made) == 1
     assert calls and len(calls) == len(set(calls)), sorted(calls)

@@ -205,6 +205,8 @@ def test_plans_draw_solves_each_scene_once(path, monkeypatch):
     for module in (linkage, cycle):  # the layout of the panels on the sheets solves nothing: not timed here
         monkeypatch.setattr(module, "compose", lambda panels, *a, **kw: [SimpleNamespace(
             panels=panels, number=1, count=1, prims=[], render=lambda: None)])
+    # the longer plans a roomy sheet takes are another fit's Solution (tests/test_sheet_fill.py)
+    monkeypatch.setattr("drawings.linkage.larger.may_grow", lambda sol, spec: False)
     d = linkage.draw(scene)
     assert d.sheets and d.panels and len(solutions) == 1
     # the scene's own positions once, one revolution at most (the sheets' 73- and 37-angle

@@ -250,10 +250,11 @@ W_WIDTH_MM = 150.0  # the energy–mass diagram's I_pr extent from I = 0
 W_HEIGHT_MM = 110.0  # ... and its ΔT extent with k and l
 
 
-def _w_panel(d: Dynamics, lang: str, first: int = 1) -> Panel:
+def _w_panel(d: Dynamics, lang: str, first: int = 1, size: float = 1.0) -> Panel:
     """ΔT against I_pr from I = 0: the closed curve, the tangents at ψ_max, ψ_min, k and l; at
-    its own round scales (the curve about W_WIDTH_MM × W_HEIGHT_MM, readable), every position
-    numbered (coincident ones share a label: "1, 13")."""
+    its own round scales (the curve about W_WIDTH_MM × W_HEIGHT_MM, readable; ``size`` times
+    that on a small sheet, its letters the same), every position numbered (coincident ones
+    share a label: "1, 13")."""
     from drawings.linkage.overview import coincident_positions
     from drawings.paper.common import Placer
     from plans.kinematics.scales import round_scale
@@ -263,9 +264,9 @@ def _w_panel(d: Dynamics, lang: str, first: int = 1) -> Panel:
     placer = Placer()
     t = d.table
     span = float(max(np.max(w.dT), w.k, w.l, 0.0) - min(np.min(w.dT), w.k, w.l, 0.0))
-    mu_T = round_scale(span, W_HEIGHT_MM) if span > 0 else d.scales.A
+    mu_T = round_scale(span, W_HEIGHT_MM * size) if span > 0 else d.scales.A
     top_I = float(np.max(w.I))
-    mu_I = round_scale(top_I, W_WIDTH_MM) if top_I > 0 else d.scales.I
+    mu_I = round_scale(top_I, W_WIDTH_MM * size) if top_I > 0 else d.scales.I
     X = w.I * mu_I
     Y = w.dT * mu_T
     x_hi = float(X.max()) + 8.0
@@ -441,12 +442,14 @@ def analogue_plans(plans: Sequence, lang: str, style: str) -> list[Panel]:
 
 
 def dynamics_panels(d: Dynamics, tables: Sequence[CycleTable], lang: str, analogues: Sequence = (),
-                    columns: int = 12, first: int = 1) -> list[Panel]:
+                    columns: int = 12, first: int = 1, w_size: float = 1.0) -> list[Panel]:
+    """The dynamics sheet's panels; ``w_size``: the energy–mass diagram's size against its
+    readable one (smaller on a small sheet)."""
     titles = [f"{tr('analogues', lang)}, μ = {fmt(d.scales.analogue, 4, lang)} mm/m (ω_1 = 1)",
               tr("Ipr", lang), f"{tr('Mpr', lang)}; {tr('sign', lang)}", tr("energy", lang)]
     plans = analogue_plans(analogues, lang, d.scene.scale_style)  # none where the first sheet has the plans
     return ([_m_panel(d, lang, first), _a_panel(d, lang, first), _t_panel(d, lang, first),
-             _i_panel(d, lang, first), _w_panel(d, lang, first), _omega_panel(d, lang, first), _fly_table(d, lang)]
+             _i_panel(d, lang, first), _w_panel(d, lang, first, w_size), _omega_panel(d, lang, first), _fly_table(d, lang)]
             + indicator_panels(d, lang) + table_panels(tables, lang, "dyn", titles, columns, first) + plans)
 
 
@@ -531,17 +534,20 @@ def _fitting_dynamics(sol: Solution, d: Dynamics, tabs: Sequence[CycleTable], sp
     panels = dynamics_panels(d, tabs, spec.language, analogues, first=spec.first_position)
     height = 1.0
     columns = 12
+    w_size = 1.0
     while True:
         big = [p for p in panels if not fits_empty(p, spec.format, spec.orientation)]
         if big and columns > 3 and any(p.pid.startswith("dyn-table") for p in big):
             columns //= 2  # a table over the positions in more, narrower parts
+        elif any(p.pid == "dyn-W" for p in big) and w_size > 0.3:
+            w_size *= 0.8  # the energy–mass diagram at smaller round scales, its letters kept
         elif big and axis > 60.0:
             axis = max(60.0, math.floor(axis * 0.8 / 10.0) * 10.0)
             height = max(0.4, height * 0.85)
             d = sol.dynamics_drawn(axis, height)
         else:
             return panels
-        panels = dynamics_panels(d, tabs, spec.language, analogues, columns, spec.first_position)
+        panels = dynamics_panels(d, tabs, spec.language, analogues, columns, spec.first_position, w_size)
 
 
 def diagrams_sheet_seconds(path: str | Path, repeat: int = 5) -> float:

@@ -226,7 +226,10 @@ def _draw(sol: Solution, spec: SheetSpec) -> Drawing:
             return (lambda sel, mp, ml: build_panels(s, spec, sel, mp, ml),
                     lambda mu, bold: positions_panel(s, mu, spec.language, bold, strokes, spec.trace))
 
-        sheets = course_sheets(sol, spec, *builders(sol), diagrams)
+        from drawings.linkage.larger import longer, may_grow
+
+        larger = [lambda t=t: builders(t()) for t in longer(sol)] if may_grow(sol, spec) else []
+        sheets = course_sheets(sol, spec, *builders(sol), diagrams, larger)
         panels = [p for sh in sheets for p, _, _ in sh.placed if p not in diagrams]  # the linkage's
         if sc.wants("dynamics"):  # the dynamics' sheets follow
             from drawings.cycle import extend
@@ -239,8 +242,56 @@ def _draw(sol: Solution, spec: SheetSpec) -> Drawing:
     panels, mu_l = build_panels(sol, spec)
     nums = {float(phi): n for phi, n in zip(sc.driver.phis_deg, numbers(sol, spec), strict=True)}
     sheets = compose(panels, spec, None, sc.path, nums)  # each sheet's scale: its main image's
+    panels, sheets = _fuller_blocks(sol, spec, nums, panels, sheets)
     if sc.wants("diagrams") or sc.wants("dynamics"):  # the cycle's sheets follow
         from drawings.cycle import extend
 
         sheets = extend(sol, spec, sheets, None)
     return Drawing(sc, spec, tuple(panels), tuple(sheets), mu_l)
+
+
+def _fuller_blocks(sol: Solution, spec: SheetSpec, nums: dict[float, int], panels: list[Panel],
+                   sheets: list[Sheet]) -> tuple[list[Panel], list[Sheet]]:
+    """Each sheet of the block layout redrawn at longer plans where it has room for them
+    (:mod:`drawings.linkage.larger`): its own panels, at the fullest longer solution that still
+    holds them on one sheet.  Returns the panels drawn and the sheets."""
+    from drawings.linkage.larger import FULL, fill, longer, may_grow
+    from drawings.paper.sheet import TooBig
+
+    if not may_grow(sol, spec) or spec.pins:
+        return panels, sheets
+    size = spec.size
+    made: list[dict[str, Panel]] = []
+    makers = longer(sol)
+
+    def at(i: int) -> dict[str, Panel] | None:
+        while len(made) <= i and len(made) < len(makers):
+            made.append({p.pid: p for p in build_panels(makers[len(made)](), spec)[0]})
+        return made[i] if i < len(made) else None
+
+    out = list(sheets)
+    order = [p.pid for p in panels]
+    for n, sh in enumerate(sheets):
+        best, f0 = sh, fill(sh.placed, size)
+        ids = sorted((p.pid for p, _, _ in sh.placed), key=order.index)
+        for i in range(len(makers)):
+            if f0 >= FULL:
+                break
+            more = at(i)
+            if more is None or any(pid not in more for pid in ids):
+                break
+            try:
+                laid = compose([more[pid] for pid in ids], spec, None, sol.scene.path, nums)
+            except TooBig:  # a panel too long for an empty sheet: no longer ones either
+                break
+            if len(laid) > 1:  # longer still would not fit one sheet either
+                break
+            f = fill(laid[0].placed, size)
+            if f > f0 + 0.005:
+                best, f0 = laid[0], f
+        out[n] = best
+    for n, sh in enumerate(out):
+        sh.number, sh.count = n + 1, len(out)
+        sh.prims = []
+        sh.render()
+    return [p for sh in out for p, _, _ in sorted(sh.placed, key=lambda t: order.index(t[0].pid))], out

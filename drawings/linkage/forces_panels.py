@@ -48,6 +48,7 @@ from drawings.linkage.panels import (
     Panel,
     clip_line,
     finish,
+    on_paper,
     scale_text,
     table_panel,
 )
@@ -105,7 +106,7 @@ def build(sol, spec, ks: Sequence[int], plans_at: dict[int, Any], mu_l: float) -
         out[k] = panels
         out[("table", k)] = balancing_rows(sol, k, lang) + efficiency_rows(fa, k, lang)
     if fa.friction is not None and want("table"):  # η(φ) and its table go with the tables
-        out["efficiency"] = efficiency_panels(fa, lang, min(1.0, spec.fit))
+        out["efficiency"] = efficiency_panels(sol.efficiency, fa, lang, min(1.0, spec.fit))
     return out
 
 
@@ -237,13 +238,7 @@ def crank_panel(scene, kin, fa, k: int, mu_l: float, lang: str, style: str) -> P
 def polygon_panel(plan: Plan, lang: str, style: str, pid: str, title: str) -> Panel:
     """A force polygon head to tail (plan mm, true size): known forces black, the closing
     reactions red, the two construction lines that closed it thin; every vector labelled."""
-    T = Transform(1.0)
-    rec = Recording()
-    placer = Placer()
-    xy = {p.name: T(*p.xy) for p in plan.points}
-    xs = [p[0] for p in xy.values()]
-    ys = [p[1] for p in xy.values()]
-    box = (min(xs) - 8, min(ys) - 8, max(xs) + 8, max(ys) + 8)
+    T, rec, placer, xy, box = on_paper(plan, 8.0)
     for i, cl in enumerate(plan.lines):
         seg = clip_line(T(*cl.point), T.direction(*cl.direction), box)
         if seg is not None:
@@ -272,6 +267,7 @@ def polygon_panel(plan: Plan, lang: str, style: str, pid: str, title: str) -> Pa
         if p.coincides_with is None:
             dot(rec, xy[p.name], 0.45)
             placer.add_disc(xy[p.name], 0.6)
+    xs, ys = [q[0] for q in xy.values()], [q[1] for q in xy.values()]
     centre = (sum(xs) / len(xs), sum(ys) / len(ys)) if xs else (0.0, 0.0)
     for p in plan.points:  # the vertices lettered as the tables cite them ("o a", "a b")
         if p.coincides_with is not None or p.name.endswith(">"):

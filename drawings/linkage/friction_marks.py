@@ -101,14 +101,13 @@ def efficiency_rows(fa: Any, k: int, lang: str) -> list[tuple[str, ...]]:
     return rows
 
 
-def efficiency_panels(fa: Any, lang: str, size: float = 1.0) -> list[Any]:
-    """The diagram η(φ) over the turn with the cycle's η, and the table of the positions:
-    F_bal without and with friction, the power lost and η.  ``size``: the diagram's length and
-    height as a fraction of A1's (the paper's fit)."""
+def efficiency_panels(eff: dict[str, Any] | None, fa: Any, lang: str, size: float = 1.0) -> list[Any]:
+    """The diagram η(φ) over the turn with the cycle's η (``eff``: the solution's
+    ``efficiency``), and the table of the positions: F_bal without and with friction, the
+    power lost and η.  ``size``: the diagram's length and height as a fraction of A1's (the
+    paper's fit)."""
     from drawings.cycle.cycle_plot import GRAPH, Axes, number, plot_panel, wide_table
-    from plans.forces.friction import efficiency_json
 
-    eff = efficiency_json(fa)
     fr = fa.friction
     if eff is None or fr is None or fa.n < 2:
         return []

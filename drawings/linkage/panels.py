@@ -62,20 +62,24 @@ VECTOR_STYLES: dict[str, Style] = {
 _LABELLED = ("normal", "tangential", "coriolis", "sliding")
 
 
+def on_paper(plan: Plan, margin: float
+             ) -> tuple[Transform, Recording, Placer, dict[str, Pt], tuple[float, float, float, float]]:
+    """A plan drawn at true size: its transform, a recording and a label placer, its points
+    on the paper and the box ``margin`` mm around them (the construction lines clipped to it)."""
+    T = Transform(1.0)
+    xy = {p.name: T(*p.xy) for p in plan.points}
+    xs = [p[0] for p in xy.values()]
+    ys = [p[1] for p in xy.values()]
+    return T, Recording(), Placer(), xy, (min(xs) - margin, min(ys) - margin, max(xs) + margin, max(ys) + margin)
+
+
 def plan_panel(plan: Plan, lang: str, scale_style: str, pid: str | None = None) -> Panel:
     """A velocity or acceleration plan at true size (plan mm): pole, vectors, points, lines."""
     from plans.scene.notation import pole_label
 
     kind = plan.kind
     pid = pid or f"{kind}-{phi_tag(plan.phi_deg)}"
-    T = Transform(1.0)
-    rec = Recording()
-    placer = Placer()
-    xy = {p.name: T(*p.xy) for p in plan.points}
-    xs = [p[0] for p in xy.values()]
-    ys = [p[1] for p in xy.values()]
-    m = 10.0
-    box = (min(xs) - m, min(ys) - m, max(xs) + m, max(ys) + m)
+    T, rec, placer, xy, box = on_paper(plan, 10.0)
 
     rec.begin(f"{pid}-lines", "construction")
     for i, cl in enumerate(plan.lines):

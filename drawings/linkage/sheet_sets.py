@@ -172,8 +172,9 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
     mu_l)`` makes the panels of a selection (:func:`drawings.linkage.build_panels`),
     ``positions(mu, bold)`` the plan of positions at μl = ``mu``; ``diagrams`` (the kinematic
     diagrams) go on the kinematics sheet after the plans.  ``larger``: thunks giving the
-    (build, positions) of the scene solved with longer plans, tried in turn for the kinematics
-    sheet: the first that keeps as few sheets is drawn."""
+    (build, positions) of the scene solved with longer plans (:mod:`drawings.linkage.larger`),
+    tried in turn for each of the two sheets: the one that keeps as few sheets and leaves the
+    least of them empty is drawn."""
     from drawings.paper.sheet import fits_empty
 
     sel = selection(sol, spec, "course")
@@ -229,12 +230,35 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
     def lay_flat(ps: list[Panel]) -> list:
         return _flat(ps, spec, scene.path)
 
-    _, kin_sheets = grow(kinematics(build, positions), base_pos, lay_flat, own)
-    for thunk in larger:
-        _, bigger = grow(kinematics(*thunk()), base_pos, lay_flat, own)
-        kin_sheets = _fuller(kin_sheets, bigger)
-    out: list[Sheet] = []
+    from drawings.linkage.larger import better, full
+    from drawings.paper.sheet import TooBig
+
     W, H = spec.size
+    made = [thunk() for thunk in larger] if larger else []  # each longer solution's builders, once
+
+    def shown(sheets: list) -> float:
+        """The plan of positions' scale on ``sheets`` (0 without one)."""
+        return max((p.scale or 0.0 for sh in sheets for p, _, _ in getattr(sh, "placed", sh) if p.kind == "positions"), default=0.0)
+
+    def fullest(sheets: list, lay_at: Any) -> list:
+        """Of ``sheets`` and the same sheet drawn at each longer solution, the best (as few
+        sheets, fuller, the plan of positions no smaller), tried in order while not yet full."""
+        for builders in made:
+            if full(sheets, (W, H)):
+                break
+            try:
+                bigger = lay_at(builders)
+            except TooBig:  # a panel too long for an empty sheet: no longer ones either
+                break
+            if len(bigger) > len(sheets):  # longer still would not take fewer
+                break
+            if better(sheets, bigger, (W, H)) and shown(bigger) >= shown(sheets) * (1 - 1e-9):
+                sheets = bigger
+        return sheets
+
+    _, kin_sheets = grow(kinematics(build, positions), base_pos, lay_flat, own)
+    kin_sheets = fullest(kin_sheets, lambda b: grow(kinematics(*b), base_pos, lay_flat, own)[1])
+    out: list[Sheet] = []
     named = dataclasses.replace(spec, subtitle=spec.subtitle or tr("kinematics_sheet", spec.language))
     for placed in kin_sheets:
         out.append(Sheet(named, 0, 0, W, H, placed, None))
@@ -250,23 +274,12 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
 
         base_l = _base_length_scale(sol, spec)
         _, dyn_sheets = grow(kinetic(build), base_l, lay, own)
-        out.extend(dyn_sheets)
+        out.extend(fullest(dyn_sheets, lambda b: grow(kinetic(b[0]), base_l, lay, own)[1]))
     for i, sh in enumerate(out):
         sh.number, sh.count = i + 1, len(out)
         sh.prims = []
         sh.render()
     return out
-
-
-def _fuller(a: list, b: list) -> list:
-    """Of two layouts of the same panels, the one on fewer sheets, else the one drawn larger
-    (more of the paper under panels; the first on a tie)."""
-    def drawn(sheets: list) -> float:
-        return sum(p.width * p.height for sh in sheets for p, _, _ in (sh.placed if isinstance(sh, Sheet) else sh))
-
-    if len(a) != len(b):
-        return a if len(a) < len(b) else b
-    return b if drawn(b) > drawn(a) * (1 + 1e-9) else a
 
 
 def _base_positions_scale(sol: Solution, spec: SheetSpec) -> float:

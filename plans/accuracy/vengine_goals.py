@@ -31,7 +31,7 @@ GOALS = (
 
 #: Short batches of exact_360 and construction_1, and turns of the friction's single runs with
 #: the frictionless ones (the least of each is taken).
-SHORT_BATCHES, FRICTION_TURNS = 41, 15
+SHORT_BATCHES, FRICTION_TURNS = 41, 41
 
 
 def performance_goals(samples: Path, budget: float) -> list[dict[str, Any]]:

@@ -6,13 +6,13 @@ from __future__ import annotations
 import argparse
 import math
 import sys
-from dataclasses import replace
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:  # the analysis is imported when the command runs: ``plans`` starts fast
     import numpy as np
 
     from .model import Cam
+    from .solution import CamSolution
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -38,27 +38,28 @@ def _arr(a: np.ndarray, nd: int = 9) -> list[float]:
     return [_r(x, nd) for x in a]
 
 
-def results(cam: Cam) -> dict[str, Any]:
-    """The JSON document: arrays aligned with phi_deg (lengths in the file's unit;
-    an oscillating follower's s in degrees of swing)."""
+def results(source: Cam | CamSolution) -> dict[str, Any]:
+    """The JSON document of a cam (or of its solution, :func:`plans.solve`): arrays aligned
+    with phi_deg (lengths in the file's unit; an oscillating follower's s in degrees of swing)."""
     import numpy as np
 
-    from .analysis import findings, grid, profile
-    from .base_radius import min_base_radius, roller_base_radius
+    from .analysis import grid
+    from .solution import CamSolution, solve_cam
+
+    sol = source if isinstance(source, CamSolution) else solve_cam(source)
+    cam = sol.cam
     phi = grid(cam)
-    pr = profile(cam, phi)
+    pr = sol.table_profile
     mo = pr.motion
     L = cam.scale
     osc = cam.follower == "oscillating"
     lift = (180 / math.pi) if osc else 1 / L  # s in degrees or in the file's unit
     rate = 1.0 if osc else 1 / L  # the arm's ω and ε in rad/s, rad/s²
-    fi = findings(cam)
-    exact = min_base_radius(cam, True)
-    drawn = None if cam.flat else min_base_radius(cam, False)
-    fit = None if exact.min_base_radius is None else roller_base_radius(cam, exact.min_base_radius)
-    best_fit = None  # the best offset kept, the base radius raised until the roller fits
-    if exact.best_offset is not None:
-        best_fit = roller_base_radius(replace(cam, offset=exact.best_offset), exact.best_base_radius)
+    fi = sol.findings
+    exact = sol.base_radius
+    drawn = sol.drawn_base_radius
+    fit = sol.roller_base_radius
+    best_fit = sol.best_roller_base_radius
     out: dict[str, Any] = {
         "phi_deg": _arr(np.degrees(phi), 6),
         "s": _arr(mo.s * lift),
@@ -143,10 +144,11 @@ def summary(cam: Cam, res: dict[str, Any], lang: str = "en") -> str:
 def _run(args: argparse.Namespace) -> int:
     from plans.io import atomic_write, dumps
 
-    from .model import load_cam
+    from .solution import solve_cam
 
-    cam = load_cam(args.cam)
-    res = results(cam)
+    sol = solve_cam(args.cam)  # what plans.solve gives of a cam file
+    cam = sol.cam
+    res = results(sol)
     if args.json == "-":
         sys.stdout.write(dumps(res))
         return 0

@@ -8,13 +8,20 @@ first time it is read and kept by this object (the cam itself stays a frozen rec
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import replace
 from functools import cached_property
 from pathlib import Path
 
 import numpy as np
 
 from .analysis import Findings, Motion, Profile, findings, grid, motion, profile
-from .base_radius import BaseRadius, allowed_region, division_points, min_base_radius
+from .base_radius import (
+    BaseRadius,
+    allowed_region,
+    division_points,
+    min_base_radius,
+    roller_base_radius,
+)
 from .graphical import Integration, integrate_cam
 from .model import Cam, load_cam
 from .rocker import RockerDiagram, diagram, region
@@ -84,6 +91,29 @@ class CamSolution:
     def division_profile(self) -> Profile:
         """The profile at the division points: the follower's positions turned by −φ."""
         return profile(self.cam, self.division)
+
+    def profile_at(self, phi: np.ndarray) -> Profile:
+        """The profile at the angles ``phi`` (rad): a key's chosen positions."""
+        return profile(self.cam, phi)
+
+    @cached_property
+    def table_profile(self) -> Profile:
+        """The profile on the table's grid (``plans cam`` JSON's ``phi_deg``)."""
+        return profile(self.cam, grid(self.cam))
+
+    @cached_property
+    def roller_base_radius(self) -> float | None:
+        """The least base radius raised until the roller fits (None: no least radius)."""
+        r0 = self.base_radius.min_base_radius
+        return None if r0 is None else roller_base_radius(self.cam, r0)
+
+    @cached_property
+    def best_roller_base_radius(self) -> float | None:
+        """The best offset kept, the base radius raised until the roller fits (None: no best offset)."""
+        br = self.base_radius
+        if br.best_offset is None:
+            return None
+        return roller_base_radius(replace(self.cam, offset=br.best_offset), br.best_base_radius)
 
     @cached_property
     def base_radius(self) -> BaseRadius:

@@ -69,6 +69,7 @@ from plans.reader import (
     show,
 )
 from plans.scene.model import Scene, load_scene, scene_from_dict
+from plans.tolerances import SAME_ANGLE_DEG
 from plans.units import LENGTH_UNITS
 
 SCALE_KINDS = ("length", "velocity", "acceleration", "force")
@@ -334,7 +335,7 @@ def _position(path: str, k: int, body: Any, scene: Scene) -> StudentPosition:
             (isinstance(phi, float) and not math.isfinite(phi)) or abs(phi) > 1e300:
         raise _fail(path, f"{where}.phi_deg", Said("c_phi", got=show(phi)))
     phis = scene.driver.phis_deg
-    idx = next((i for i, p in enumerate(phis) if abs(p - phi) < 1e-9), None)
+    idx = next((i for i, p in enumerate(phis) if abs(p - phi) < SAME_ANGLE_DEG), None)
     if idx is None:
         raise _fail(path, f"{where}.phi_deg", Said("c_phi_not_in_scene", phi=float(phi),
                                                     has=", ".join(f"{p:g}°" for p in phis)))

@@ -36,6 +36,7 @@ from plans.check.checkfile import RUBRIC, RUBRIC_KEYS  # noqa: F401  (read here 
 from plans.check.mistakes import KINDS, Slip, describe, inventory, replay
 from plans.check.providers import Context, exact_value
 from plans.errors import PlansError
+from plans.tolerances import VERDICT_REL
 
 if TYPE_CHECKING:
     from plans.check.findings import Finding, Item
@@ -101,10 +102,10 @@ class _Model:
 def _ok(it: Item, value: float | None, mm: float | None) -> bool:
     """The student's figure against a predicted one, at the figure's own tolerance."""
     if it.figure != "value" and it.student_mm is not None and mm is not None and it.tolerance_mm:
-        return abs(it.student_mm - mm) <= it.tolerance_mm * (1 + 1e-9)
+        return abs(it.student_mm - mm) <= it.tolerance_mm * (1 + VERDICT_REL)
     if value is None:
         return it.verdict == "pass"
-    return abs(it.student - value) <= it.tolerance * (1 + 1e-9)
+    return abs(it.student - value) <= it.tolerance * (1 + VERDICT_REL)
 
 
 class _Sheet:

@@ -15,6 +15,7 @@ import numpy as np
 from plans.check import wording as wd
 from plans.check.checkfile import CheckFile, StudentPosition, Written
 from plans.check.providers import Context, points_of
+from plans.tolerances import VERDICT_REL
 
 PI_314 = 3.14
 
@@ -224,7 +225,7 @@ def symmetry_findings(cf: CheckFile, pos: StudentPosition, items: list[Item]) ->
         allow = _half_ulp_of(ia.student) + _half_ulp_of(ib.student) + rel * abs(ia.exact)
         if ia.exact_mm and ib.exact_mm:  # read off the drawing (directly or through a segment)
             allow += 2 * seg_mm / (ia.exact_mm / ia.exact)
-        if gap > allow * (1 + 1e-9):
+        if gap > allow * (1 + VERDICT_REL):
             mm: wd.Words | str = ""
             if ia.figure != "value" and ib.figure != "value" and ia.student_mm is not None \
                     and ib.student_mm is not None:

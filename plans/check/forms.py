@@ -34,6 +34,7 @@ from plans.check.checkfile import SCALE_KINDS, CheckFile, check_from_dict
 from plans.errors import InputError, OutputError, PlansError, Said, one_line
 from plans.io import dumps, refuse_input, write_all
 from plans.scene.model import Scene
+from plans.tolerances import SAME_ANGLE_DEG
 
 _FIXED = ("quantity", "phi_deg", "figure")
 
@@ -225,7 +226,7 @@ def run_template(args: argparse.Namespace) -> int:
                                  field="--phi") from None
             known = scene.driver.phis_deg
             for p in phis:
-                if not any(abs(p - q) < 1e-9 for q in known):
+                if not any(abs(p - q) < SAME_ANGLE_DEG for q in known):
                     raise InputError(Said("cf_position_scene_it", p=p, v=', '.join(f'{q:g}°' for q in known)), file=str(scene_path), field="--phi")
         target = Path(args.output) if args.output else None
         ref = str(scene_path.resolve()) if target is None else scene_reference(scene_path, target)

@@ -25,6 +25,7 @@ from plans.check.mistakes import Slip, effective, inventory, replay
 from plans.check.providers import Context, exact_value
 from plans.kinematics.construction import nice_scale
 from plans.scene.model import Scene, load_scene
+from plans.tolerances import SAME_ANGLE_DEG
 
 #: The mistakes the planted suite plants (kinds of :data:`plans.check.mistakes.KINDS`).
 PLANTED = ("coriolis_reversed", "normal_from_pole", "tangential_wrong_line", "scale", "similarity",
@@ -117,7 +118,7 @@ def submission(sc: Scenario, phis: tuple[float, float], kind: str | None, rng: n
             told = f"wrong_segment: {misread[0].target} read as {misread[1]}, used on, at {phis[where]:g}°"
     body: dict[float, tuple[dict, dict]] = {}
     for n, phi in enumerate(phis):
-        k = next(i for i, p in enumerate(d.phis_deg) if abs(p - phi) < 1e-9)
+        k = next(i for i, p in enumerate(d.phis_deg) if abs(p - phi) < SAME_ANGLE_DEG)
         slips: list[Slip] = []
         if kind in ("coriolis_reversed", "normal_from_pole", "tangential_wrong_line", "similarity") and n == where:
             options = effective(ctx.kin, k, mv, ma, [s for s in inventory(ctx.kin, k, mv, ma) if s.kind == kind])

@@ -71,6 +71,7 @@ from plans.check.providers import STUDENT_ONLY, Context, Exact, exact_value, kno
 from plans.check.relations import relation_findings
 from plans.errors import InputError, OutputError, PlansError, Said, os_reason
 from plans.io import atomic_write
+from plans.tolerances import VERDICT_REL
 from plans.units import DUST, percent
 
 _SCALE_UNIT = {"length": "mm/m", "velocity": "mm/(m/s)", "acceleration": "mm/(m/s²)", "force": "mm/N"}
@@ -256,7 +257,7 @@ def _items(cf: CheckFile, pos: StudentPosition, q: str, ex: Exact) -> list[Item]
             tol = t.rule_pct / 100.0 * max(abs(ex.value), 0.05 * ex.ref)
             model = "rule"
         tol = max(tol, slack)
-        verdict = "pass" if abs(diff) <= tol * (1 + 1e-9) else "fail"
+        verdict = "pass" if abs(diff) <= tol * (1 + VERDICT_REL) else "fail"
         out.append(Item(q, pos.phi_deg, student, student_mm, ex.value, exact_mm, ex.unit, err_pct, err_mm,
                         tol, None if not mu else tol * mu, model, verdict, where, w.field, ex.source,
                         figure, ex.plan, ex.segment))

@@ -10,7 +10,6 @@ standing still); the page interpolates between frames and solves nothing.
 
 from __future__ import annotations
 
-import math
 from typing import Any
 
 import numpy as np
@@ -19,20 +18,10 @@ from plans.demo.mistakes import page_mm
 from plans.forces.lever import LeverAnalysis
 from plans.forces.polygons import ForceAnalysis, force_polygons
 from plans.kinematics.plan import Plan
+from plans.kinematics.scales import round_scale
 
 #: Largest extent of a drawing in the cycle's panels, mm.
 PANEL_MM = 80.0
-
-
-def round_scale(value: float, target_mm: float = PANEL_MM) -> float:
-    """The largest round μ (mm per unit: 1, 2, 2.5, 4, 5 × 10^k) that draws ``value`` within target."""
-    if not (value > 0 and math.isfinite(value)):
-        return 1.0
-    k = math.floor(math.log10(target_mm / value))
-    for m in (5.0, 4.0, 2.5, 2.0, 1.0):
-        if value * m * 10.0**k <= target_mm:
-            return m * 10.0**k
-    return 10.0 ** (k - 1)  # not reached: 1 × 10^k always fits
 
 
 def _ends(plan: Plan) -> dict[str, tuple[complex, complex]]:
@@ -66,7 +55,7 @@ def _polygons(fa: ForceAnalysis) -> list[dict[str, Any]]:
             for key, s in zip(e, fr[g].plan.segments, strict=True):
                 kinds.setdefault(key, s.kind)
         extent = max([abs(z) for e in ends for v in e.values() for z in v] + [0.0])
-        mu = round_scale(extent)
+        mu = round_scale(extent, PANEL_MM)
         segs = [{"label": key.split("#")[0], "kind": kind, "track": _track([e.get(key) for e in ends], mu)}
                 for key, kind in kinds.items()]
         out.append({"id": name.replace(" ", "-"), "name": name, "kind": "force", "scale": mu, "unit": "mm/N",
@@ -102,4 +91,4 @@ def cycle_forces(fa: ForceAnalysis, lv: LeverAnalysis) -> list[dict[str, Any]]:
     return _polygons(fa) + [_lever(lv)]
 
 
-__all__ = ["PANEL_MM", "cycle_forces", "round_scale"]
+__all__ = ["PANEL_MM", "cycle_forces"]

@@ -21,9 +21,11 @@ from plans.demo.mistakes import mistakes, page_mm, page_xy
 from plans.errors import Figures, InputError, PlansError, Said
 from plans.kinematics.exact import Kinematics, solve
 from plans.kinematics.plan import Plan, Step
+from plans.kinematics.scales import ratio_scale
 from plans.phrases import LANGUAGES
 from plans.results import Solution, solve_scene
 from plans.scene.model import Scene
+from plans.tolerances import SAME_ANGLE_DEG
 from plans.units import clean
 
 if TYPE_CHECKING:  # the force rooms are loaded only for a scene with forces
@@ -39,12 +41,11 @@ MAX_FRAMES = 720
 
 def _nice_length_scale(extent_m: float, target_mm: float = 120.0) -> float:
     """μl (mm per m) from the standard ratios, the largest that keeps the scheme within target."""
-    ratios = [10.0, 5.0, 4.0, 2.5, 2.0, 1.0, 0.5, 0.4, 0.25, 0.2, 0.1, 0.05, 0.04, 0.025, 0.02, 0.01]
     if extent_m <= 0:
         return 1000.0
-    for r in ratios:
-        if extent_m * 1000.0 * r <= target_mm:
-            return 1000.0 * r
+    got = ratio_scale(extent_m, target_mm)
+    if got is not None:
+        return got
     k = math.floor(math.log10(target_mm / (extent_m * 1000.0)))
     return 1000.0 * 10.0**k
 
@@ -244,7 +245,7 @@ def _position_index(sol: Solution, phi_deg: float | None) -> int:
     if phi_deg is None:
         return 0
     for k, p in enumerate(phis):
-        if abs(p - phi_deg) < 1e-9:
+        if abs(p - phi_deg) < SAME_ANGLE_DEG:
             return k
     raise InputError(Said("dl_crank_angle_phi", phi_deg=phi_deg, shown=Said("dl_shown", phis=Figures(phis[:8]), n=len(phis))
                           if len(phis) > 8 else Said("dl_shown_all", phis=Figures(phis))), file=sol.scene.path,

@@ -9,7 +9,7 @@ from numpy.typing import NDArray
 
 from plans.forces.reactions import CrankForces, ForceAnalysis, GroupForces, Reaction  # noqa: F401  (importable from here)
 from plans.forces.shared import RULER_MM
-from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Written
+from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, Step, Written
 from plans.lines import along, cross, meet
 from plans.phrases import Phrase, phrase
 from plans.records import frozen
@@ -65,6 +65,7 @@ class Poly:
         self.segs: list[Segment] = []
         self.lines: list[ConstructionLine] = []
         self.steps: list[tuple[str, tuple[str, ...], str, Phrase]] = []  # written when read (Written)
+        self._written: tuple[Step, ...] | None = None
         self.ends: dict[str, tuple[str, str]] = {}
         self.notes: list[str] = []
 
@@ -139,6 +140,15 @@ class Poly:
                 return self.ends[lab][1]
         return default
 
+    def recorded(self) -> int:
+        return len(self.steps)
+
+    def written(self) -> tuple[Step, ...]:
+        """The steps' sentences, written once (the plan's :class:`Written` reads them)."""
+        if self._written is None:
+            self._written = tuple(Step.of(*r) for r in self.steps)
+        return self._written
+
     def plan(self, phi: float) -> Plan:
         pts = []
         seen: dict[tuple[float, float], str] = {}
@@ -148,4 +158,4 @@ class Poly:
             pts.append(PlanPoint(nm, (z.real, z.imag), seen.get(key)))
             seen.setdefault(key, nm)
         return Plan("force", phi, self.mu, "o", tuple(pts), tuple(self.segs), tuple(self.lines),
-                    Written(self.steps), tuple(self.notes))
+                    Written(self), tuple(self.notes))

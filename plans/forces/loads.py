@@ -121,7 +121,7 @@ _LOAD_KEYS = {"gravity", "inertia", "lever_turn", "balancing", "mass_rule", "gas
 
 def parse_loads(scene: Scene) -> Loads:
     """The scene's ``[loads]`` (and the links' masses) as a :class:`Loads`: the record the
-    scene holds once solved (``plans.solve`` reads it once, :mod:`plans.scene.tables`), else
+    scene holds once solved (``plans.solve`` reads it once, :mod:`plans.tables`), else
     read now; InputError on anything wrong."""
     return scene.loads if scene.loads is not None else _parse_loads(scene)
 

@@ -22,7 +22,7 @@ from plans.forces.shared import safe_div
 from plans.kinematics.exact import Kinematics
 from plans.kinematics.structure import Group
 from plans.lines import cross
-from plans.records import frozen
+from plans.records import derived, frozen
 from plans.scene.model import Joint, Scene
 
 C = NDArray[np.complex128]
@@ -107,7 +107,7 @@ class CrankForces:
     arms: Mapping[str, R] = field(default_factory=dict)
 
 
-@frozen
+@frozen(weakref_slot=True)
 class ForceAnalysis:
     """The kinetostatics of a scene: every group and the crank, over the positions."""
 
@@ -119,17 +119,18 @@ class ForceAnalysis:
     crank: CrankForces
     #: the successive approximation with friction (plans.forces.friction.FrictionResult), or None
     friction: Any = None
-    #: what every position's table and polygons read again, worked out once (read-only arrays)
-    memo: dict[str, Any] = field(default_factory=dict, init=False, repr=False, compare=False)
 
     @property
     def n(self) -> int:
         return self.kin.n
 
     def _once(self, key: str, make: Callable[[], Any]) -> Any:
-        got = self.memo.get(key)
+        """What every position's table and polygons read again, worked out once and kept
+        beside the record (:func:`plans.records.derived`; arrays made read-only)."""
+        kept = derived(self)
+        got = kept.get(key)
         if got is None:
-            got = self.memo[key] = make()
+            got = kept[key] = make()
             if isinstance(got, np.ndarray):
                 got.flags.writeable = False
         return got

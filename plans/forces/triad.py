@@ -33,6 +33,7 @@ from plans.kinematics.structure import TriadGroup
 from plans.kinematics.triad_plans import PAIRS, pair_choice
 from plans.lines import cross
 from plans.records import frozen
+from plans.tolerances import LOCK_SIN
 
 C = NDArray[np.complex128]
 R = NDArray[np.float64]
@@ -126,7 +127,7 @@ def solve_triad(kin: Kinematics, g: TriadGroup, forces: dict, moments: dict, Rea
     Qi, Qj, Qm = Qs[ii, cols], Qs[jj, cols], Qs[mm, cols]
     ui, uj, um = us[ii, cols], us[jj, cols], us[mm, cols]
     sin = cross(ui, uj)
-    bad = np.abs(sin) <= 1e-12
+    bad = np.abs(sin) <= LOCK_SIN
     if bad.any():
         _locked(kin, g, bad, Said("tp_three_leashes_axes"))
     S = Qi + cross(Qj - Qi, uj) / np.where(bad, 1.0, sin) * ui

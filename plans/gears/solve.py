@@ -106,11 +106,11 @@ def solve_gears(gf: GearFile) -> GearSolution:
 
 
 def _plan_scale(size_m: float, target_mm: float = 320.0) -> float:
-    """A round scale (mm per m) drawing the unfolded train within ``target_mm``."""
-    for r in (5.0, 4.0, 2.5, 2.0, 1.0, 0.5, 0.4, 0.25, 0.2, 0.1, 0.05, 0.04, 0.025, 0.02, 0.01):
-        if size_m * 1000.0 * r <= target_mm:
-            return 1000.0 * r
-    return 10.0
+    """A standard scale (mm per m, 5:1 … 1:100) drawing the unfolded train within
+    ``target_mm``; 1:100 where none does."""
+    from plans.kinematics.scales import RATIOS, ratio_scale
+
+    return ratio_scale(size_m, target_mm, RATIOS[1:]) or 10.0
 
 
 def train_meshes(gf: GearFile, pairs: list[Pair] | tuple[Pair, ...]) -> list[TrainMesh]:

@@ -64,10 +64,10 @@ def gears_values(data: dict[str, Any], path: str) -> tuple[dict[str, float], dic
     """Every figure of a gears sheet at position 0, and how each is judged
     (``drawn`` | ``ratio`` | ``rule``)."""
     from plans.gears.model import parse_gears
-    from plans.gears.solve import solve_gears
+    from plans.gears.solution import solve_file
 
     gf = parse_gears(data, path)
-    sol = solve_gears(gf)
+    sol = solve_file(gf).solution
     k = gf.to_unit
     vals: dict[str, float] = {}
     how: dict[str, str] = {}
@@ -97,9 +97,8 @@ def cam_values(data: dict[str, Any], path: str, r0: float | None = None, e: floa
     ``r0``, ``e``: the cam re-made with this base radius, offset (file units)."""
     import numpy as np
 
-    from plans.cams.analysis import findings, profile
-    from plans.cams.base_radius import min_base_radius
     from plans.cams.model import cam_from_dict
+    from plans.cams.solution import solve_cam
 
     cam = cam_from_dict(data, path)
     L = cam.scale
@@ -110,13 +109,14 @@ def cam_values(data: dict[str, Any], path: str, r0: float | None = None, e: floa
     out: dict[tuple[str, float], float] = {(("r0"), 0.0): cam.base_radius / L}
     if cam.follower == "translating":
         out[("e", 0.0)] = cam.offset / L
-    fi = findings(cam)
+    sol = solve_cam(cam)
+    fi = sol.findings
     out[("theta_rise", 0.0)] = math.degrees(fi.max_pressure_rise)
     out[("theta_return", 0.0)] = math.degrees(fi.max_pressure_return)
-    got = min_base_radius(cam, True).min_base_radius
+    got = sol.base_radius.min_base_radius
     if got is not None and r0 is None:
         out[("r0_min", 0.0)] = got / L
-    pr = profile(cam, np.radians(np.array(CAM_ANGLES)))
+    pr = sol.profile_at(np.radians(np.array(CAM_ANGLES)))
     lift = (180 / math.pi) if cam.follower == "oscillating" else 1 / L
     for i, phi in enumerate(CAM_ANGLES):
         out[("R", phi)] = float(np.hypot(*pr.theoretical[i])) / L
@@ -135,10 +135,10 @@ def engine_values(data: dict[str, Any], path: str) -> dict[str, float]:
     (``F_I``, ``M_II``, ``F_rot``: dimensionless, the closing side of the polygon of unit
     vectors, and ``F_I_amp`` in N, ``M_I_amp`` in N·m), and each counterweight's
     mass-radius product ``mr_cw1`` (kg·m) and angle ``angle_cw1`` (degrees)."""
-    from plans.balancing.analysis import balance
     from plans.balancing.engine import engine_from_dict
+    from plans.balancing.solution import solve_engine
 
-    got = balance(engine_from_dict(data, path)).to_json()
+    got = solve_engine(engine_from_dict(data, path)).balance.to_json()
     out: dict[str, float] = {}
     for what, letter in (("forces", "F"), ("moments", "M")):
         for order, tag in _ORDERS.items():
@@ -165,11 +165,11 @@ def synthesis_values(data: dict[str, Any], path: str) -> tuple[str, dict[str, fl
     ``l_<name>`` in the file's unit, ``theta`` in degrees, ``K``, the stroke ``H`` or the
     swing ``psi`` in degrees, ``gamma_min`` in degrees, as measured back on the design)."""
     from plans.synthesis.cli import check_scene, results
-    from plans.synthesis.design import design
     from plans.synthesis.model import task_from_dict
     from plans.synthesis.scene import scene_text
+    from plans.synthesis.solution import solve_task
 
-    d = design(task_from_dict(data, path))
+    d = solve_task(task_from_dict(data, path)).design
     text = scene_text(d)
     check_scene(text, path)
     res = results(d, "scene.toml")

@@ -17,6 +17,7 @@ from plans.errors import Indeterminate, Locked, NotAssemblable, Said
 from plans.kinematics.context import Context, Motion, place_link, point_at
 from plans.kinematics.structure import Group, Structure, TriadGroup
 from plans.lines import cross
+from plans.records import derived
 from plans.scene.model import Joint, Scene
 from plans.tolerances import ASSEMBLY_REL, LOCK_SIN
 
@@ -31,9 +32,10 @@ R = Any  # float64 array, shape (N,)
 
 def program(scene: Scene, st: Structure) -> list:
     """(solver, group, constants) per group, derived once per scene and structure."""
-    done = scene.memo.get("exact")
+    kept = derived(scene)
+    done = kept.get("exact")
     if done is None or done[0] is not st:
-        done = scene.memo["exact"] = (st, [_step(scene, g) for g in st.groups])
+        done = kept["exact"] = (st, [_step(scene, g) for g in st.groups])
     return done[1]
 
 

@@ -20,6 +20,7 @@ metres in the scene's frame.
 from __future__ import annotations
 
 import cmath
+from collections.abc import Iterator
 from itertools import combinations
 from typing import TYPE_CHECKING, Any
 
@@ -170,6 +171,16 @@ def kennedy(links: list[int], known: dict[tuple[int, int], Centre], size: float,
     return {p: found[p] for p in combinations(links, 2)}
 
 
+def _thirds(links: list[int], found: dict, i: int, j: int) -> Iterator[tuple[int, Centre, Centre]]:
+    """Every third link k whose centres with i and with j are both found: (k, P_ik, P_kj)."""
+    for k in links:
+        if k in (i, j):
+            continue
+        a, b = found.get(_key(i, k)), found.get(_key(k, j))
+        if a is not None and b is not None:
+            yield k, a, b
+
+
 def _by_ratio(links: list[int], found: dict, pending: list, why: dict, omega: dict[int, float], size: float) -> bool:
     """The first centre left open, fixed by a third link k with both P_ik and P_jk known: the
     common point of i and j moves alike as a point of either, relative to k:
@@ -182,12 +193,7 @@ def _by_ratio(links: list[int], found: dict, pending: list, why: dict, omega: di
     for i, j in list(pending):
         wi, wj = omega.get(i, 0.0), omega.get(j, 0.0)
         best: tuple | None = None
-        for k in links:
-            if k in (i, j):
-                continue
-            a, b = found.get(_key(i, k)), found.get(_key(k, j))
-            if a is None or b is None:
-                continue
+        for k, a, b in _thirds(links, found, i, j):
             wk = omega.get(k, 0.0)
             if abs(wi - wj) <= 1e-12 * scale:
                 if a.direction is not None and b.direction is not None \
@@ -215,12 +221,7 @@ def _sweep(links: list[int], found: dict, pending: list, why: dict, size: float)
     progress = False
     for i, j in list(pending):
         lines = []
-        for k in links:
-            if k in (i, j):
-                continue
-            a, b = found.get(_key(i, k)), found.get(_key(k, j))
-            if a is None or b is None:
-                continue
+        for k, a, b in _thirds(links, found, i, j):
             ln = _line(a, b, size)
             if ln is not None:
                 lines.append((ln, ((i, k), (k, j))))

@@ -28,7 +28,7 @@ from typing import Any
 import numpy as np
 
 from plans.errors import ConstructionError, InputError, Said
-from plans.records import frozen
+from plans.records import derived, frozen
 from plans.scene.model import Joint, Scene
 from plans.tolerances import COINCIDE_REL
 
@@ -202,9 +202,10 @@ def strokes(scene: Scene, field: str = "driver.phi_start", *, closed: bool = Tru
     if closed and output is None and scene.driver.strokes is not None:
         return scene.driver.strokes
     key = ("strokes", closed, None if output is None else (output.link, output.point))
-    done = scene.memo.get(key)
+    kept = derived(scene)
+    done = kept.get(key)
     if done is None:
-        done = scene.memo[key] = _strokes(scene, field, closed, output)
+        done = kept[key] = _strokes(scene, field, closed, output)
     return done
 
 

@@ -23,6 +23,7 @@ from typing import Any
 import numpy as np
 
 from plans.kinematics.structure import Structure
+from plans.records import derived
 from plans.scene.model import Scene
 from plans.tolerances import ASSEMBLY_REL, LOCK_SIN
 
@@ -104,9 +105,10 @@ class Plan:
 
 def plan_for(scene: Scene, st: Structure) -> Plan | None:
     """The fast path's plan of ``scene``, or None where the general solvers are needed."""
-    done = scene.memo.get("fast")
+    kept = derived(scene)
+    done = kept.get("fast")
     if done is None or done[0] is not st:
-        done = scene.memo["fast"] = (st, _make_plan(scene, st))
+        done = kept["fast"] = (st, _make_plan(scene, st))
     return done[1]
 
 

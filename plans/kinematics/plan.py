@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import field
-from typing import Any
+from typing import Any, Protocol
 
 from plans.phrases import Phrase
 from plans.records import frozen
@@ -70,35 +70,39 @@ class Step:
         return self.text if self.phrase is None or lang == "en" else self.phrase.say(lang)
 
 
+class Recorded(Protocol):
+    """What records a plan's steps as (operation, inputs, output, phrase) and writes them
+    (:meth:`Step.of`) once, when first asked: the construction that drew the plan."""
+
+    def recorded(self) -> int: ...
+
+    def written(self) -> tuple[Step, ...]: ...
+
+
 class Written(Sequence[Step]):
-    """Steps kept as (operation, inputs, output, phrase) and written (:meth:`Step.of`) when
-    first read: a sheet, a protocol or the JSON asks for them, a table of readings never does."""
+    """A plan's steps, written when first read (a sheet, a protocol or the JSON asks for them,
+    a table of readings never does): an unchanging view of the steps its construction
+    (:class:`Recorded`) writes once and keeps."""
 
-    __slots__ = ("_raw", "_steps")
+    __slots__ = ("_source",)
 
-    def __init__(self, raw: Sequence[tuple[str, tuple[str, ...], str, Phrase]]) -> None:
-        self._raw = raw
-        self._steps: tuple[Step, ...] | None = None
-
-    def _get(self) -> tuple[Step, ...]:
-        if self._steps is None:
-            self._steps = tuple(Step.of(*r) for r in self._raw)
-        return self._steps
+    def __init__(self, source: Recorded) -> None:
+        self._source = source
 
     def __getitem__(self, i: Any) -> Any:
-        return self._get()[i]
+        return self._source.written()[i]
 
     def __len__(self) -> int:
-        return len(self._raw)
+        return self._source.recorded()
 
     def __eq__(self, other: object) -> bool:
-        return isinstance(other, Sequence) and self._get() == tuple(other)
+        return isinstance(other, Sequence) and self._source.written() == tuple(other)
 
     def __hash__(self) -> int:
-        return hash(self._get())
+        return hash(self._source.written())
 
     def __repr__(self) -> str:
-        return repr(self._get())
+        return repr(self._source.written())
 
 
 @frozen

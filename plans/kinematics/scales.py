@@ -32,19 +32,60 @@ def fit(scene: Any) -> float:
 def round_scale(longest: float, target_mm: float = KNOWN_MM, mantissas: tuple[float, ...] = ROUND) -> float:
     """μ (mm per unit), round in both directions (K = 1/μ one of ``mantissas`` × 10^k), the
     largest that draws ``longest`` within ``target_mm``; 1 for a zero, subnormal or non-finite
-    length (no scale from a zero vector).  The one picker of the plans', polygons' and
-    lever's scales."""
+    length (no scale from a zero vector).  The one picker of the plans', polygons', lever's
+    and every diagram's round scales."""
     if not (longest > 0 and math.isfinite(longest)):
         return 1.0
     k_min = longest / target_mm  # K may not be smaller than this
     if k_min <= 0:  # a subnormal longest vector: nothing to draw at any scale
         return 1.0
-    e = math.floor(math.log10(k_min))
+    m, e = _up(k_min, mantissas)
+    inverse = 10.0 / m  # μ = (10/m) × 10^(−e−1), written as the round number it is
+    if inverse * m != 10.0 or not -300 < e < 300:
+        return 1.0 / (m * 10.0**e)
+    n = -e - 1
+    return inverse * 10.0**n if n >= 0 else inverse / 10.0**-n
+
+
+def _up(x: float, mantissas: tuple[float, ...]) -> tuple[float, int]:
+    """(m, e): the smallest m × 10^e not below ``x`` (to rounding), m one of ``mantissas`` or 10."""
+    e = math.floor(math.log10(x))
     for m in mantissas + (10.0,):
-        K = m * 10.0**e
-        if K >= k_min * (1 - 1e-12):
-            return 1.0 / K
-    return 1.0 / 10.0 ** (e + 1)  # pragma: no cover
+        if m * 10.0**e >= x * (1 - 1e-12):
+            return m, e
+    return 10.0, e  # pragma: no cover (10 × 10^e is above x)
+
+
+def round_up(x: float, mantissas: tuple[float, ...] = ROUND) -> float:
+    """The smallest ``mantissas`` × 10^k not below ``x`` (x > 0): a diagram's division."""
+    m, e = _up(x, mantissas)
+    return m * 10.0**e
+
+
+def round_down(x: float, mantissas: tuple[float, ...] = ROUND) -> float:
+    """The largest ``mantissas`` × 10^k not above ``x`` (x > 0)."""
+    e = math.floor(math.log10(x))
+    for m in sorted(mantissas, reverse=True):
+        if m * 10.0**e <= x * (1 + 1e-12):
+            return m * 10.0**e
+    return 10.0 ** (e - 1) * max(mantissas)
+
+
+#: A diagram's divisions: 1, 2, 2.5, 5 × 10^k (a ruler's; the plans' 4 is not among them).
+DIVISIONS = (1.0, 2.0, 2.5, 5.0)
+
+#: A drawing's length scales (paper mm per m ÷ 1000), GOST 2.302's round ones: 10:1 … 1:100.
+RATIOS = (10.0, 5.0, 4.0, 2.5, 2.0, 1.0, 0.5, 0.4, 0.25, 0.2, 0.1, 0.05, 0.04, 0.025, 0.02, 0.01)
+
+
+def ratio_scale(size_m: float, target_mm: float, ratios: tuple[float, ...] = RATIOS) -> float | None:
+    """μl (paper mm per m) of the largest of ``ratios`` that draws ``size_m`` within
+    ``target_mm`` (a mechanism, a train, a cam at a standard drawing scale); None where
+    none does."""
+    for r in ratios:
+        if size_m * 1000.0 * r <= target_mm:
+            return 1000.0 * r
+    return None
 
 
 def is_round(mu: float) -> bool:
@@ -121,4 +162,4 @@ def fitted(kin: Kinematics, k: int, mv: float, ma: float, build):
     return pp
 
 
-__all__ = ["ROUND", "fit", "round_scale", "is_round", "common_scales", "fitted", "refit", "known_vectors"]
+__all__ = ["DIVISIONS", "RATIOS", "ROUND", "fit", "round_scale", "round_up", "round_down", "ratio_scale", "is_round", "common_scales", "fitted", "refit", "known_vectors"]

@@ -12,7 +12,7 @@ from dataclasses import field
 from typing import Any, cast
 
 from plans.errors import InputError, Said
-from plans.records import frozen
+from plans.records import derived, frozen
 from plans.scene.model import Joint, Scene
 
 KINDS = ("RRR", "RRP", "RPR", "PRP", "RPP")
@@ -114,9 +114,10 @@ class Structure:
 
 def analyse(scene: Scene) -> Structure:
     """Mobility and Assur groups derived from links and joints alone (once per scene)."""
-    done = scene.memo.get("structure")
+    kept = derived(scene)
+    done = kept.get("structure")
     if done is None:
-        done = scene.memo["structure"] = _analyse(scene)
+        done = kept["structure"] = _analyse(scene)
     return done
 
 

@@ -22,6 +22,7 @@ from plans.errors import Locked, NotAssemblable, Said
 from plans.kinematics.context import Context, Motion, place_link, point_at
 from plans.kinematics.structure import Structure, TriadGroup, analyse
 from plans.kinematics.triad import SpecialPosition, Triad, determinant, place, rates, special_kind
+from plans.records import derived
 from plans.scene.model import Scene
 
 STEP_DEG = 1.0
@@ -74,7 +75,8 @@ def _phase(phi: float) -> float:
 def _track(solve: Callable[..., Any], scene: Scene, st: Structure, g: TriadGroup, t: Triad, outer_of) -> tuple[np.ndarray, list]:
     """(step angles, (r_D, θ) at each) over one turn from φ = 0, computed once per scene."""
     key = ("triad", g.name)
-    done = scene.memo.get(key)
+    kept = derived(scene)
+    done = kept.get(key)
     if done is not None:
         return done
     before = replace(st, groups=st.groups[:st.groups.index(g)])
@@ -99,7 +101,7 @@ def _track(solve: Callable[..., Any], scene: Scene, st: Structure, g: TriadGroup
                                  group=t.name, point=g.point, phi_deg=phi)
         state, sense = new, d
         states.append(state)
-    done = scene.memo[key] = (grid, states)
+    done = kept[key] = (grid, states)
     return done
 
 

@@ -31,6 +31,7 @@ from plans.kinematics.dyads import (
 from plans.kinematics.structure import TriadGroup
 from plans.lines import cross
 from plans.phrases import phrase
+from plans.tolerances import LOCK_SIN
 
 #: sin of the angle between two leashes' axes above which their meeting point is taken as S
 FAR_FROM_PARALLEL = 0.05
@@ -71,7 +72,7 @@ def _geometry(b: Builder, g: TriadGroup) -> tuple[list, list, list, tuple[int, i
     if np.any(choice != choice[0]):
         raise Mixed("s")
     i, j = PAIRS[int(choice[0])]
-    if np.any(sins[int(choice[0])] <= 1e-12):
+    if np.any(sins[int(choice[0])] <= LOCK_SIN):
         raise Locked(Said("tp_three_leashes_axes"), group=f"{g.kind} {g.name}",
                      point=g.point, phi_deg=b.snap.phi_at(int(np.argmin(sins[int(choice[0])]))))
     s = cross(Q[j] - Q[i], axis[j]) / cross(axis[i], axis[j])

@@ -76,7 +76,7 @@ def has_friction(scene: Scene) -> bool:
 
 def parse_friction(scene: Scene) -> FrictionSpec | None:
     """The scene's friction, or None where it states none; InputError naming the field.  The
-    record the scene holds once solved (``plans.solve`` reads it once, :mod:`plans.scene.tables`),
+    record the scene holds once solved (``plans.solve`` reads it once, :mod:`plans.tables`),
     else read now."""
     if scene.tables:
         return scene.friction_spec

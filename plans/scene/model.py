@@ -110,7 +110,7 @@ class Driver:
         return quarter * np.exp(1j * np.radians(r))
 
 
-@frozen
+@frozen(weakref_slot=True)
 class Scene:
     """A linkage scene as read from its file, in SI: links, joints, driver, positions, outputs."""
 
@@ -131,7 +131,7 @@ class Scene:
     #: the target lengths of the plans, polygons and lever as a fraction of the A1 ones: a
     #: smaller sheet's (``plans.solve(scene, fit=...)``; never read from a file)
     fit: float = 1.0
-    #: the other tables as typed records (:mod:`plans.scene.tables`): ``[loads]``
+    #: the other tables as typed records (:mod:`plans.tables`): ``[loads]``
     #: (plans.forces.loads.Loads), ``[dynamics]`` and ``[diagrams]`` (plans.cycle.spec) read by
     #: ``plans.solve`` (then ``tables`` is True), None where the file neither gives nor needs
     #: them; ``[sheet]`` is validated with the file and read as :attr:`sheet`
@@ -142,9 +142,8 @@ class Scene:
     #: (None: the scene states none)
     friction_spec: Any = field(default=None, repr=False)
     tables: bool = field(default=False, repr=False)
-    #: what the exact analysis derives once per scene (its structure, the solver's constants);
-    #: not copied by dataclasses.replace, so a changed scene derives its own
-    memo: dict[Any, Any] = field(init=False, repr=False, compare=False, default_factory=dict)
+    # what the exact analysis derives once per scene (its structure, the solver's constants)
+    # is kept beside it (plans.records.derived), so a changed scene (dataclasses.replace) derives its own
 
     def title_in(self, lang: str) -> str:
         """The title in a sheet's language (the plain title where none is given for it)."""

@@ -80,15 +80,17 @@ def scene_dict(d: Design) -> dict[str, Any]:
                   {"kind": "R", "links": [3, frame], "point": "D"}]
         out["branches"] = {"2-3": fb.branch}
         phi_ref = math.degrees(m.phi_start) if m and d.model == "crank_rocker" else 0.0
-    elif d.mechs[0].l4 == 0.0:  # coulisse with the RPP ram: block D in the ram's slot
+    else:  # coulisse: the ram driven by a rod DE, or (l4 = 0) by block D in the ram's slot (RPP)
         frame = 6
         c = d.mechs[0]
+        slot = c.l4 == 0.0
         out["frame"] = frame
         out["points"] = {"O": [0.0, 0.0], "C": _xy(c.C, u)}
         links = {"1": {"name": "crank OA", "axis": ["O", "A"], "length": L["crank"]},
                  "2": {"name": "block A", "axis": ["A"]},
                  "3": {"name": "coulisse CD", "axis": ["C", "D"], "length": L["coulisse"]},
-                 "4": {"name": "block D", "axis": ["D"]},
+                 "4": {"name": "block D", "axis": ["D"]} if slot else
+                      {"name": "rod DE", "axis": ["D", "E"], "length": L["rod"]},
                  "5": {"name": "ram E", "axis": ["E"]}}
         joints = [{"kind": "R", "links": [frame, 1], "point": "O"},
                   {"kind": "R", "links": [1, 2], "point": "A"},
@@ -96,29 +98,12 @@ def scene_dict(d: Design) -> dict[str, Any]:
                   {"kind": "R", "links": [3, frame], "point": "C"},
                   {"kind": "R", "links": [3, 4], "point": "D"},
                   {"kind": "P", "links": [4, 5], "point": "D", "guide": {"link": 5, "through": [0.0, 0.0],
-                                                                         "angle_deg": 90.0}},
-                  {"kind": "P", "links": [5, frame], "point": "E",
-                   "guide": {"link": frame, "through": _xy(c.G0, u), "angle_deg": 0.0}}]
-        phi_ref = math.degrees(m.phi_start) if m else 0.0
-    else:  # coulisse
-        frame = 6
-        c = d.mechs[0]
-        out["frame"] = frame
-        out["points"] = {"O": [0.0, 0.0], "C": _xy(c.C, u)}
-        links = {"1": {"name": "crank OA", "axis": ["O", "A"], "length": L["crank"]},
-                 "2": {"name": "block A", "axis": ["A"]},
-                 "3": {"name": "coulisse CD", "axis": ["C", "D"], "length": L["coulisse"]},
-                 "4": {"name": "rod DE", "axis": ["D", "E"], "length": L["rod"]},
-                 "5": {"name": "ram E", "axis": ["E"]}}
-        joints = [{"kind": "R", "links": [frame, 1], "point": "O"},
-                  {"kind": "R", "links": [1, 2], "point": "A"},
-                  {"kind": "P", "links": [2, 3], "point": "A", "guide": {"link": 3, "through": "C", "toward": "D"}},
-                  {"kind": "R", "links": [3, frame], "point": "C"},
-                  {"kind": "R", "links": [3, 4], "point": "D"},
+                                                                         "angle_deg": 90.0}} if slot else
                   {"kind": "R", "links": [4, 5], "point": "E"},
                   {"kind": "P", "links": [5, frame], "point": "E",
                    "guide": {"link": frame, "through": _xy(c.G0, u), "angle_deg": 0.0}}]
-        out["branches"] = {"4-5": 1}
+        if not slot:
+            out["branches"] = {"4-5": 1}
         phi_ref = math.degrees(m.phi_start) if m else 0.0
     for key, body in task.get("masses", {}).items():
         link = links.get(str(int(key)))

@@ -9,6 +9,7 @@ takes the scene's record instead of reading the raw table again.
 The parsers of ``[loads]`` and of the cycle's tables live with the rooms that use them
 (:mod:`plans.forces.loads`, :mod:`plans.cycle.spec`, with their numpy typing and
 dataclasses): loaded at the solve, not with the file, ``plans solve`` starts as fast as it did.
+Read above the rooms (not in :mod:`plans.scene`), so the scene room needs none of them.
 """
 
 from __future__ import annotations
