@@ -127,8 +127,9 @@ def page_symbols(out: dict[str, Any], scene: Any) -> dict[str, dict[str, str]]:
             "exact_difference_percent": "wb_bal_exact", "difference_percent": "wb_bal_drawn"}
     got: dict[str, dict[str, str]] = {}
     for lang in ("ru", "en"):
-        pole = resolve(getattr(scene, "scale_style", "") or "", lang)[2]
+        letter, per_mm, pole = resolve(getattr(scene, "scale_style", "") or "", lang)
         words = {nm: textbook_symbol(nm, lang, pole) for nm in sorted(names)}
+        words["scale.symbol"], words["scale.per_mm"] = letter, "1" if per_mm else "0"  # the notation's scales
         sym = words.get("M_bal") or words.get("F_bal") or ""
         for k in sorted(bal):
             words["balancing." + k] = say(rows[k], lang, sym=sym) if k in rows else k
