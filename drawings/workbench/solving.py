@@ -108,7 +108,8 @@ def page_symbols(out: dict[str, Any], scene: Any) -> dict[str, dict[str, str]]:
     """What the page writes for each key it shows, per language: the readings' quantities,
     the plans' points and segments in the textbook's symbols (ω1, π or p_a as the scene's
     notation says), the balancing load's rows in words."""
-    from plans.language import again, symbols, textbook_symbol
+    from plans.language import symbols
+    from plans.page_words import again, textbook_symbol
     from plans.phrases import say
     from plans.scene.notation import resolve
 
@@ -215,7 +216,7 @@ def _partial(sol: Any, at: int, steps: bool) -> dict[str, Any]:
 def forces_json(text: str, name: str) -> bytes:
     """The force polygons and the lever over the turn (``[]`` when the scene asks for none)."""
     from plans.demo.cycle_forces import cycle_forces
-    from plans.language import page_label
+    from plans.page_words import page_label
     from plans.scene.notation import resolve
 
     sol = solved(text, name)
