@@ -272,6 +272,9 @@ def main(argv: Sequence[str] | None = None,
         args = (parser or build_parser)(argv).parse_args(argv)
     except KeyboardInterrupt:
         return 130
+    except SystemExit:  # --help, or a usage error said: a library call after it follows its own scene
+        set_run(None, None)
+        raise
     return run(args)
 
 

@@ -412,7 +412,8 @@ _SYMBOLS = ((r"\bp_a(?![A-Z_])", "π"), (r"\bp_v(?![A-Z_])", "p"), (r"\bomega_?(
             (r"\b(RRR|RRP|RPR|PRP|RPP|PRR|PPR) group\b", r"группа \1"), (r"\bgroup\b", "группа"))
 
 
-_GREEK = {"Phi": "Φ", "omega": "ω", "eps": "ε", "tau": "τ"}
+#: The Greek letters of the quantities' keys.
+GREEK = {"Phi": "Φ", "omega": "ω", "eps": "ε", "tau": "τ"}
 _QUANTITY_RU = {"F_bal": "F_ур", "M_bal": "M_ур", "F_bal_lever": "F_ур (рычаг)", "F_bal_diff_pct": "δF_ур, %",
                 "p_a": "π", "p_v": "p"}
 
@@ -425,16 +426,16 @@ def quantity_name(name: str, lang: str) -> str:
     if name in _QUANTITY_RU:
         return _QUANTITY_RU[name]
     head, sep, rest = name.partition("_")
-    head = _GREEK.get(head, head)
+    head = GREEK.get(head, head)
     if not sep:
         return head
     parts = rest.split("_")
     if head in ("ω", "ε"):
         return head + "".join(parts)
-    if parts[0] in _GREEK:  # M_Phi_2 -> M_Φ2
-        return f"{head}_{_GREEK[parts[0]]}{''.join(parts[1:])}"
+    if parts[0] in GREEK:  # M_Phi_2 -> M_Φ2
+        return f"{head}_{GREEK[parts[0]]}{''.join(parts[1:])}"
     if parts[0].startswith("Phi"):  # an arm: h_Phi2_B -> h_Φ2,B
-        return f"{head}_{','.join([_GREEK['Phi'] + parts[0][3:]] + parts[1:])}"
+        return f"{head}_{','.join([GREEK['Phi'] + parts[0][3:]] + parts[1:])}"
     return f"{head}_{'_'.join(parts)}"
 
 
@@ -568,49 +569,3 @@ def argparse_text(message: str, lang: str) -> str:
 
         return spec.sub(value, ru)
     return message
-
-
-def textbook_symbol(name: str, lang: str, pole: str) -> str:
-    """A quantity's or a plan point's key as a page writes it: ω1, ε2 in either language,
-    the textbook's Russian letters (p, F_ур, M_Φ2) in Russian, the acceleration pole
-    ``pole`` (π or p_a, :func:`plans.scene.notation.resolve`)."""
-    if name == "p_a":
-        return pole
-    if lang == "ru":
-        return quantity_name(name, "ru")
-    head, _, rest = name.partition("_")
-    return _GREEK[head] + rest.replace("_", "") if head in ("omega", "eps") and rest else name
-
-
-def again(text: str, keys: tuple[str, ...], lang: str) -> str:
-    """A line written in English from one of the :data:`TERMS` ``keys`` (a title kept in
-    English in a JSON), written again in ``lang``: its values as written, with a decimal
-    comma in Russian; a line none of them wrote, unchanged."""
-    if lang == "en":
-        return text
-    import re
-
-    field = re.compile(r"\{(\w+)(?::[^{}]*)?\}")
-    for key in keys:
-        en, ru = TERMS[key]
-        parts = field.split(en)  # literal, name, literal, ...
-        pattern = "".join(re.escape(p) if i % 2 == 0 else f"(?P<{p}>.+?)" for i, p in enumerate(parts))
-        m = re.fullmatch(pattern, text)
-        if m is not None:
-            values = {k: v.replace(".", ",") if re.fullmatch(r"-?[\d.e+-]+", v) else v for k, v in m.groupdict().items()}
-            return field.sub(lambda x, v=values: v[x.group(1)], ru)  # type: ignore[misc]
-    return text
-
-
-def page_label(text: str, lang: str, pole: str) -> str:
-    """A label of a drawing (a force polygon's ``Phi2``, ``F_bal``, ``F21^τ``) as a page in
-    ``lang`` writes it: the Greek letters in either language, the textbook's Russian
-    symbols (F_ур, p) in Russian, the acceleration pole ``pole``."""
-    import re
-
-    text = re.sub(r"\bp_a(?![A-Z_])", pole, text)
-    if lang == "ru":
-        return symbols(text, lang)
-    for pattern, greek in ((r"(?<![A-Za-z])Phi(?=\w)", "Φ"), (r"\bomega_?(?=\d)", "ω"), (r"\beps_?(?=\d)", "ε")):
-        text = re.sub(pattern, greek, text)
-    return text

@@ -143,7 +143,7 @@ COMMAND_ERRORS: dict[str, tuple[str, str]] = {
         "ожидались целые положительные числа, а записано {got}"),
     "bn_fuzz": ("expected a positive number of cases", "ожидалось положительное число случаев"),
     "dv_variant_error": ("variant {variant} ({where}): {error}", "вариант {variant} ({where}): {error}"),
-    "dl_shown": ("{phis}, … ({n} positions)", "{phis}, … (положений {n})"),
+    "dl_shown": ("{phis}, … ({n} positions)", "{phis} … (положений {n})"),
     "dl_shown_all": ("{phis}", "{phis}"),
     "dv_reference_sheets": ("reference sheets: {error}", "эталонные листы: {error}"),
     # ---- the bench's, note's, design's, check's and drawings' own checks

@@ -125,6 +125,12 @@ def test_help_in_russian_keeps_the_options_and_translates_argparse(capsys):
     with pytest.raises(SystemExit):
         main(["solve", "--help"])
     assert capsys.readouterr().out.startswith("usage: plans solve")
+    from plans.errors import run_language
+
+    with pytest.raises(SystemExit):
+        main(["solve", "--help", "--language", "ru"])
+    capsys.readouterr()
+    assert run_language() == "en"  # the run over: its language does not outlive it
 
 
 def test_a_warning_of_a_library_call_speaks_the_scenes_language(tmp_path, capsys):
@@ -150,7 +156,7 @@ def _page_text(browser, url: str, lang: str) -> tuple[str, list[str]]:  # noqa: 
     pg.goto(url + "/#file=slider_crank.toml")
     pg.wait_for_function("() => document.body.dataset.solved")
     pg.wait_for_function("() => document.querySelectorAll('#table tbody tr').length > 0")
-    table = pg.inner_text("#table")
+    table = pg.inner_text("#table") + "\n" + pg.inner_text("#vel-scale") + "\n" + pg.inner_text("#acc-scale")
     labels = pg.eval_on_selector_all("#vel text, #acc text", "ts => ts.map(t => t.textContent)")
     pg.click("#show-cycle")  # the tables over the cycle: their titles and rows
     pg.wait_for_function("() => document.querySelectorAll('option').length > 0")
@@ -166,12 +172,14 @@ def test_workbench_shows_the_textbooks_symbols_in_the_pages_language(browser, se
     for raw in ("omega_", "eps_", "p_a", "p_v", "by_", "rad/s^2"):
         assert raw not in ru, (raw, ru)
     assert "ω1" in ru and "ε1" in ru and "π a" in ru and "p a" in ru and "8,3383" in ru
+    assert "μ = 0,1 (м/с)/мм" in ru and "μ = 10 мм/(м/с)" not in ru  # a Russian course's scale: units per mm
     assert any(lb.startswith("π") for lb in ru_labels) and not any("p_a" in lb for lb in ru_labels), ru_labels
     assert "по кинетостатике" in ru and "по рычагу Жуковского" in ru
     cycle = [lb for lb in ru_labels if " — " in lb]
     assert cycle and all(lb.endswith("Планы за цикл") for lb in cycle), cycle
     assert not _russian(" ".join(cycle)), sorted(_russian(" ".join(cycle)))
     assert not _russian(ru, "n_BA", "a_BA", "v_BA"), sorted(_russian(ru, "n_BA", "a_BA", "v_BA"))
+    assert "μ = 10 mm/(m/s)" in en
     assert "ω1" in en and "p_a a" in en and "p_v a" in en and "by kinetostatics" in en and "8.3383" in en
     assert any(lb.startswith("p_a") for lb in en_labels), en_labels
     assert any(lb == "p_v a, mm — Plans over the cycle" for lb in en_labels), en_labels

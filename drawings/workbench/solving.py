@@ -108,7 +108,8 @@ def page_symbols(out: dict[str, Any], scene: Any) -> dict[str, dict[str, str]]:
     """What the page writes for each key it shows, per language: the readings' quantities,
     the plans' points and segments in the textbook's symbols (ω1, π or p_a as the scene's
     notation says), the balancing load's rows in words."""
-    from plans.language import again, symbols, textbook_symbol
+    from plans.language import symbols
+    from plans.page_words import again, textbook_symbol
     from plans.phrases import say
     from plans.scene.notation import resolve
 
@@ -127,8 +128,9 @@ def page_symbols(out: dict[str, Any], scene: Any) -> dict[str, dict[str, str]]:
             "exact_difference_percent": "wb_bal_exact", "difference_percent": "wb_bal_drawn"}
     got: dict[str, dict[str, str]] = {}
     for lang in ("ru", "en"):
-        pole = resolve(getattr(scene, "scale_style", "") or "", lang)[2]
+        letter, per_mm, pole = resolve(getattr(scene, "scale_style", "") or "", lang)
         words = {nm: textbook_symbol(nm, lang, pole) for nm in sorted(names)}
+        words["scale.symbol"], words["scale.per_mm"] = letter, "1" if per_mm else "0"  # the notation's scales
         sym = words.get("M_bal") or words.get("F_bal") or ""
         for k in sorted(bal):
             words["balancing." + k] = say(rows[k], lang, sym=sym) if k in rows else k
@@ -214,7 +216,7 @@ def _partial(sol: Any, at: int, steps: bool) -> dict[str, Any]:
 def forces_json(text: str, name: str) -> bytes:
     """The force polygons and the lever over the turn (``[]`` when the scene asks for none)."""
     from plans.demo.cycle_forces import cycle_forces
-    from plans.language import page_label
+    from plans.page_words import page_label
     from plans.scene.notation import resolve
 
     sol = solved(text, name)

@@ -1,7 +1,7 @@
 // Drawing what the engine solved: the scheme at scale (its fixed pivots draggable), the
 // velocity and acceleration plans of the position on the slider, and the results table.
 // The page computes no mechanics: every coordinate it draws comes from the solution.
-import {$, S, clear, el, f3, h, num, sym} from "./dom.js";
+import {$, S, clear, el, f3, h, num, said, sym} from "./dom.js";
 import {completeNow, edit} from "./solve.js";
 import {drawCycle, drawForces} from "./views.js";
 import {L, t, un} from "./words.js";
@@ -147,7 +147,7 @@ function dragPivot(svg, c, nm, unit) {
 function plan(svg, p, cap, unit) {
   clear(svg); defs(svg);
   if (!p) { cap.textContent = t("not_asked"); return; }
-  cap.textContent = "μ = " + num(p.scale) + " " + un(unit);
+  cap.textContent = scaleText(p.scale, unit);
   svg.dataset.scale = String(p.scale);
   const names = Object.keys(p.points);
   const size = fit(svg, names.map((k) => p.points[k]), 0.12), u = size / 100;
@@ -169,6 +169,13 @@ function plan(svg, p, cap, unit) {
     el(svg, "text", {x: f3(g.q[0] + 1.5 * u), y: f3(-g.q[1] - 1.5 * u), "font-size": f3(4.5 * u), class: "label"},
       g.names.map(sym).join(", "));
   }
+}
+// A plan's scale as the scene's notation writes it in the page's language: μ in mm per unit,
+// or (a Russian course's default) units per mm, or K.
+const PER_MM = {"mm/(m/s)": "(m/s)/mm", "mm/(m/s²)": "(m/s²)/mm", "mm/N": "N/mm", "mm/m": "m/mm"};
+export function scaleText(scale, unit) {
+  const perMm = said("scale.per_mm", "0") === "1" && PER_MM[unit];
+  return said("scale.symbol", "μ") + " = " + (perMm ? num(1 / scale) + " " + un(PER_MM[unit]) : num(scale) + " " + un(unit));
 }
 function table(pos) {
   const tb = $("table").tBodies[0]; clear(tb);

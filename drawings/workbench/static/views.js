@@ -1,7 +1,7 @@
 // The right column's other views: the force polygons and the Zhukovsky lever of the position
 // (asked for when shown), and the tables over the cycle as diagrams against φ.
 import {$, S, api, clear, el, f3, h, num, said, where} from "./dom.js";
-import {KIND, defs, fit} from "./draw.js";
+import {KIND, defs, fit, scaleText} from "./draw.js";
 import {L, panelName, t, un} from "./words.js";
 
 export async function loadForces() {
@@ -19,7 +19,7 @@ export function drawForces() {
   for (const pn of S.forces) {
     const lab = (lb) => ((pn.said || {})[L.lang] || {})[lb] || lb;  // the server's label in the page's language
     const fig = h(box, "figure", {"data-panel": pn.id});
-    h(fig, "figcaption", {}, panelName(pn.name) + ", μ = " + num(pn.scale) + " " + un(pn.unit));
+    h(fig, "figcaption", {}, panelName(pn.name) + ", " + scaleText(pn.scale, pn.unit));
     const svg = el(fig, "svg", {id: "force-" + pn.id, role: "img", "data-scale": String(pn.scale)});
     defs(svg);
     const segs = pn.segments.map((g) => [g, g.track[S.k]]).filter((x) => x[1]);
