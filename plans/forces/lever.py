@@ -89,10 +89,18 @@ def zhukovsky_lever(fa: ForceAnalysis, scale: float | None = None) -> LeverAnaly
     items: list[LeverForce] = []
     power = np.zeros(n)
 
+    images: dict[tuple, tuple[C, C]] = {}  # a point's v and image, once for all the forces there
+
     def add(label: str, link: int, point: str, local: Any, F: C) -> C:  # local: complex or per position
-        _, v, _ = kin.point_on(link, local)
-        assert v is not None
-        w = rot * v
+        key = (link, local) if isinstance(local, complex | float | int) else None
+        got = None if key is None else images.get(key)
+        if got is None:
+            _, v, _ = kin.point_on(link, local)
+            assert v is not None
+            got = (v, rot * v)
+            if key is not None:
+                images[key] = got
+        v, w = got
         mom = cross(w, F)
         items.append(LeverForce(label, link, point, w, F, mom))
         return v
