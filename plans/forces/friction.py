@@ -170,10 +170,12 @@ def friction_analysis(scene: Scene, kin: Kinematics, loads: Loads, spec: Frictio
     m = np.where(bad, 0.0, m)
     fa = solve_applied(scene, kin, loads, _merge(applied, _friction_loads(places, m * sense)), geometry)
     final = fa.reactions()  # the same joints in the same order as the frictionless ones
-    out = []
-    for p, s, rel, lab, mp, q in zip(pairs, sense, relatives, labels, m, idx, strict=True):
-        out.append(PairLoss(p, reactions[q], lab, s, rel, mp, p.coefficient * np.abs(final[q].F), mp * np.abs(rel)))
-    losses = np.sum([pl.loss for pl in out], axis=0) if out else np.zeros(n)
+    # every pair's limit ρ|R| or f|N| and loss at once, a row each
+    limits = coef * np.abs(np.array([final[q].F for q in idx]).reshape(P, n))
+    lost = m * np.abs(np.array(relatives).reshape(P, n))
+    out = [PairLoss(p, reactions[q], lab, s, rel, mp, lim, loss)
+           for p, s, rel, lab, mp, q, lim, loss in zip(pairs, sense, relatives, labels, m, idx, limits, lost, strict=True)]
+    losses = np.sum(lost, axis=0) if out else np.zeros(n)
     power = _balancing_power(fa)
     eta = _efficiency(fa0.balancing, fa.balancing, bad)
     locking = _self_locking(out, grew, bad, eta)
