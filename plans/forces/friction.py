@@ -115,7 +115,7 @@ def friction_analysis(scene: Scene, kin: Kinematics, loads: Loads, spec: Frictio
     # each pair's unit friction load solved once, all pairs along a leading axis: (Q, P, n),
     # every reaction (rows) under each pair's unit load (columns), per position
     if P:
-        unit = solve_applied(scene, kin, loads, _friction_loads(places, np.eye(P)[:, :, None] * sense), geometry)
+        unit = solve_applied(scene, kin, loads, _unit_loads(places, sense), geometry)
         rs = unit.reactions()
         U = np.empty((len(rs), P, n), complex)
         for q, rc in enumerate(rs):
@@ -245,6 +245,29 @@ def _friction_loads(places: list[list[tuple]], value: Any) -> AppliedLoads:
                 link, sign, name, point, r, local, guide = at
                 forces.append(AppliedForce(name, link, point, r, local, sign * val * guide, "friction"))
     return AppliedLoads(tuple(forces), tuple(moments))
+
+
+def _unit_loads(places: list[list[tuple]], sense: R) -> AppliedLoads:
+    """Each pair's friction at unit size, one load case a pair (a row each, the positions
+    along the last axis): a link's couples from all its pairs in one array (no two pairs
+    share a row, so the sum is each pair's own), a slide's force on its own."""
+    P, n = sense.shape
+    couples: dict[int, tuple[str, R]] = {}
+    forces: list[AppliedForce] = []
+    for p, place in enumerate(places):
+        for at in place:
+            if len(at) == 3:
+                link, sign, name = at
+                if link not in couples:
+                    couples[link] = (name, np.zeros((P, n)))
+                couples[link][1][p] = sign * sense[p]
+            else:
+                link, sign, name, point, r, local, guide = at
+                val = np.zeros((P, n))
+                val[p] = sense[p]
+                forces.append(AppliedForce(name, link, point, r, local, sign * val * guide, "friction"))
+    moments = tuple(AppliedMoment(name, link, M, "friction") for link, (name, M) in couples.items())
+    return AppliedLoads(tuple(forces), moments)
 
 
 def _merge(a: AppliedLoads, b: AppliedLoads) -> AppliedLoads:
