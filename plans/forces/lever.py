@@ -73,6 +73,10 @@ class LeverAnalysis:
         return self.fa.sense * x
 
 
+#: Local coordinates the same at every position (a point's velocity image kept by them).
+_NUMBERS = (complex, float, int)
+
+
 def _image_name(point: str) -> str:
     return point.lower()
 
@@ -92,7 +96,7 @@ def zhukovsky_lever(fa: ForceAnalysis, scale: float | None = None) -> LeverAnaly
     images: dict[tuple, tuple[C, C]] = {}  # a point's v and image, once for all the forces there
 
     def add(label: str, link: int, point: str, local: Any, F: C) -> C:  # local: complex or per position
-        key = (link, local) if isinstance(local, complex | float | int) else None
+        key = (link, local) if type(local) in _NUMBERS else None
         got = None if key is None else images.get(key)
         if got is None:
             _, v, _ = kin.point_on(link, local)
