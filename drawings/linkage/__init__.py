@@ -6,6 +6,7 @@ sheets compute nothing of the mechanism themselves.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -255,19 +256,18 @@ def _fuller_blocks(sol: Solution, spec: SheetSpec, nums: dict[float, int], panel
     """Each sheet of the block layout redrawn at longer plans where it has room for them
     (:mod:`drawings.linkage.larger`): its own panels, at the fullest longer solution that still
     holds them on one sheet.  Returns the panels drawn and the sheets."""
-    from drawings.linkage.larger import FULL, fill, longer, may_grow
+    from drawings.linkage.larger import FULL, fill, longer, may_grow, once_each
     from drawings.paper.sheet import TooBig
 
     if not may_grow(sol, spec) or spec.pins:
         return panels, sheets
     size = spec.size
-    made: list[dict[str, Panel]] = []
     makers = longer(sol)
 
-    def at(i: int) -> dict[str, Panel] | None:
-        while len(made) <= i and len(made) < len(makers):
-            made.append({p.pid: p for p in build_panels(makers[len(made)](), spec)[0]})
-        return made[i] if i < len(made) else None
+    def panels_of(make: Callable[[], Solution]) -> Callable[[], dict[str, Panel]]:
+        return lambda: {p.pid: p for p in build_panels(make(), spec)[0]}
+
+    at = once_each([panels_of(m) for m in makers])
 
     out = list(sheets)
     order = [p.pid for p in panels]
@@ -278,7 +278,7 @@ def _fuller_blocks(sol: Solution, spec: SheetSpec, nums: dict[float, int], panel
             if f0 >= FULL:
                 break
             more = at(i)
-            if more is None or any(pid not in more for pid in ids):
+            if any(pid not in more for pid in ids):
                 break
             try:
                 laid = compose([more[pid] for pid in ids], spec, None, sol.scene.path, nums)

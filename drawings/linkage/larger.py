@@ -13,9 +13,11 @@ two at once, one at 2, 2.5, 4 or 5 by 1.25 or 1.6.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from typing import Any
+from typing import Any, TypeVar
 
 from plans.solution import MAX_FIT, Solution
+
+T = TypeVar("T")
 
 #: The fits tried above a sheet's own, as factors of it: each moves a plan one or two steps up
 #: the round set or leaves it (which, depends on where its longest vector falls between two
@@ -48,16 +50,22 @@ def longer(sol: Solution) -> list[Callable[[], Solution]]:
     return [partial(solve, sol.scene, fit=f) for f in fits]
 
 
+def once_each(thunks: Sequence[Callable[[], T]]) -> Callable[[int], T]:
+    """``i -> thunks[i]()``, each called at most once and only when first asked for: a longer
+    solution is solved only when a sheet still has room for it."""
+    from functools import cache
+
+    return cache(lambda i: thunks[i]())
+
+
 def fill(placed: Sequence[tuple[Any, float, float]], size: tuple[float, float]) -> float:
     """The part of a sheet's field (inside the frame, less the title block) under its panels
     (``placed``: (panel, x, y)) on paper of ``size``."""
     import shapely
 
-    from drawings.paper.sheet import MARGIN, TB_H, TB_W, usable
+    from drawings.paper.sheet import title_box, usable
 
-    W, H = size
-    tb = (W - MARGIN - TB_W, H - MARGIN - TB_H, W - MARGIN, H - MARGIN)
-    field = shapely.box(*usable(W, H)).difference(shapely.box(*tb))
+    field = shapely.box(*usable(*size)).difference(shapely.box(*title_box(*size)))
     boxes = [shapely.box(x, y, x + p.width, y + p.height) for p, x, y in placed]
     return float(shapely.union_all(boxes).intersection(field).area / field.area) if boxes else 0.0
 

@@ -230,11 +230,11 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
     def lay_flat(ps: list[Panel]) -> list:
         return _flat(ps, spec, scene.path)
 
-    from drawings.linkage.larger import better, full
+    from drawings.linkage.larger import better, full, once_each
     from drawings.paper.sheet import TooBig
 
     W, H = spec.size
-    made = [thunk() for thunk in larger] if larger else []  # each longer solution's builders, once
+    made = once_each(larger)  # each longer solution's builders, once, when first needed
 
     def shown(sheets: list) -> float:
         """The plan of positions' scale on ``sheets`` (0 without one)."""
@@ -243,11 +243,11 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
     def fullest(sheets: list, lay_at: Any) -> list:
         """Of ``sheets`` and the same sheet drawn at each longer solution, the best (as few
         sheets, fuller, the plan of positions no smaller), tried in order while not yet full."""
-        for builders in made:
+        for i in range(len(larger)):
             if full(sheets, (W, H)):
                 break
             try:
-                bigger = lay_at(builders)
+                bigger = lay_at(made(i))
             except TooBig:  # a panel too long for an empty sheet: no longer ones either
                 break
             if len(bigger) > len(sheets):  # longer still would not take fewer

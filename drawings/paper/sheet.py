@@ -52,8 +52,7 @@ class Sheet:
 
     @property
     def title_box(self) -> tuple[float, float, float, float]:
-        x1, y1 = self.width - MARGIN, self.height - MARGIN
-        return (x1 - TB_W, y1 - TB_H, x1, y1)
+        return title_box(self.width, self.height)
 
     def panel_boxes(self) -> dict[str, tuple[float, float, float, float]]:
         return {p.pid: (x, y, x + p.width, y + p.height) for p, x, y in self.placed}
@@ -283,6 +282,12 @@ def usable(width: float, height: float) -> tuple[float, float, float, float]:
     return (MARGIN_LEFT + GAP, MARGIN + GAP, width - MARGIN - GAP, height - MARGIN - GAP)
 
 
+def title_box(width: float, height: float) -> tuple[float, float, float, float]:
+    """The title block's box, in the frame's lower right corner."""
+    x1, y1 = width - MARGIN, height - MARGIN
+    return (x1 - TB_W, y1 - TB_H, x1, y1)
+
+
 def _overlaps(a: Sequence[float], b: Sequence[float]) -> bool:
     return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
 
@@ -304,7 +309,7 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str | None = "
     """
     W, H = spec.size
     area = usable(W, H)
-    tb = (W - MARGIN - TB_W, H - MARGIN - TB_H, W - MARGIN, H - MARGIN)
+    tb = title_box(W, H)
     by_id = {p.pid: p for p in panels}
     for pin in spec.pins:
         if pin.panel not in by_id:
