@@ -18,6 +18,15 @@ ROOT = Path(__file__).resolve().parent.parent
 SAMPLES = sorted((ROOT / "samples").glob("*.toml"))
 
 
+@pytest.fixture
+def english_locale(monkeypatch):
+    """The environment's locale English: the default language is the locale's, and a test
+    of both languages chooses it."""
+    for name in ("LC_ALL", "LC_MESSAGES"):
+        monkeypatch.delenv(name, raising=False)
+    monkeypatch.setenv("LANG", "C.UTF-8")
+
+
 def slider_crank_scene(r_mm: float = 50.0, l_mm: float = 180.0, e_mm: float = 0.0, *,
                        phi_deg=(30.0,), omega: float = 100.0, eps: float = 0.0, sense: str = "ccw",
                        outputs=("positions", "velocity_plan", "acceleration_plan"), unit: str = "mm") -> dict:

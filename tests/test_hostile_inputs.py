@@ -425,21 +425,26 @@ def test_the_table_is_large():
     assert len({c.id for c in CASES}) == len(CASES)
 
 
-@pytest.mark.parametrize("case", CASES, ids=[c.id for c in CASES])
-def test_bad_input_keeps_the_promise(case: Case, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    (tmp_path / "out").mkdir()
-    shutil.copy(DATA / "scene.toml", tmp_path / "scene.toml")
-    shutil.copy(DATA / "check.toml", tmp_path / "check.toml")
+def lay_out(case: Case, tmp: Path) -> list[str]:
+    """A case's files in ``tmp`` (the scene and the check file as the case edits them, and an
+    output folder) and its command line."""
+    (tmp / "out").mkdir(exist_ok=True)
+    shutil.copy(DATA / "scene.toml", tmp / "scene.toml")
+    shutil.copy(DATA / "check.toml", tmp / "check.toml")
     for name, edit in (("scene.toml", case.scene), ("check.toml", case.check)):
         if edit is not None:
-            text = edit((tmp_path / name).read_text(encoding="utf-8"))
+            text = edit((tmp / name).read_text(encoding="utf-8"))
             data = text.encode("utf-8") if isinstance(text, str) else text
-            (tmp_path / name).write_bytes(data)
+            (tmp / name).write_bytes(data)
     if case.id == "check-scene-broken":
-        (tmp_path / "scene.toml").write_text(SCENE.replace("length = 300", "length = -1"), encoding="utf-8")
+        (tmp / "scene.toml").write_text(SCENE.replace("length = 300", "length = -1"), encoding="utf-8")
+    return [a.format(scene=tmp / "scene.toml", check=tmp / "check.toml", dir=tmp) for a in case.argv]
+
+
+@pytest.mark.parametrize("case", CASES, ids=[c.id for c in CASES])
+def test_bad_input_keeps_the_promise(case: Case, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    argv = lay_out(case, tmp_path)
     before = _snapshot(tmp_path)
-    argv = [a.format(scene=tmp_path / "scene.toml", check=tmp_path / "check.toml", dir=tmp_path)
-            for a in case.argv]
     status = run(argv)
     out, err = capsys.readouterr()
     lines = err.splitlines()

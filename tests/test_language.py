@@ -31,6 +31,10 @@ _FUNCTIONS = {"max", "min", "cos", "sin"}
 _TWO_LETTER_WORDS = {"mm", "in", "at", "to", "by", "is", "of", "on", "or", "ok", "no", "an", "as", "if"}
 
 
+#: A Russian letter: none may stand in an English output.
+CYRILLIC = re.compile(r"[А-Яа-яЁё]")
+
+
 def _latin_words(text: str) -> set[str]:
     bad = set()
     for w in re.findall(r"[A-Za-z]+", text):

@@ -9,7 +9,6 @@ from __future__ import annotations
 import contextlib
 import io
 import re
-import shutil
 from collections.abc import Callable
 from pathlib import Path
 
@@ -21,25 +20,7 @@ from tests import test_hostile_kinds as K  # noqa: N812
 from tests.test_language import _latin_words
 from tests.test_language_more import _KEYS, _without_keys
 
-
-@pytest.fixture(autouse=True)
-def _english_locale(monkeypatch):
-    for name in ("LC_ALL", "LC_MESSAGES"):
-        monkeypatch.delenv(name, raising=False)
-    monkeypatch.setenv("LANG", "C.UTF-8")
-
-
-def _hostile(case: H.Case, tmp: Path) -> list[str]:
-    (tmp / "out").mkdir(exist_ok=True)
-    shutil.copy(H.DATA / "scene.toml", tmp / "scene.toml")
-    shutil.copy(H.DATA / "check.toml", tmp / "check.toml")
-    for name, edit in (("scene.toml", case.scene), ("check.toml", case.check)):
-        if edit is not None:
-            text = edit((tmp / name).read_text(encoding="utf-8"))
-            (tmp / name).write_bytes(text.encode("utf-8") if isinstance(text, str) else text)
-    if case.id == "check-scene-broken":
-        (tmp / "scene.toml").write_text(H.SCENE.replace("length = 300", "length = -1"), encoding="utf-8")
-    return [a.format(scene=tmp / "scene.toml", check=tmp / "check.toml", dir=tmp) for a in case.argv]
+pytestmark = pytest.mark.usefixtures("english_locale")  # the default is the locale's: these tests choose it
 
 
 def _kinds(case: K.Case, tmp: Path) -> list[str]:
@@ -92,7 +73,7 @@ def _russian_run(cases: list, prepare: Callable[[object, Path], list[str]], tmp_
 
 
 def test_every_bad_input_of_the_scene_and_check_table_in_russian(tmp_path, monkeypatch):
-    bad = _russian_run(H.CASES, _hostile, tmp_path, monkeypatch)
+    bad = _russian_run(H.CASES, H.lay_out, tmp_path, monkeypatch)
     assert not bad, "\n".join(bad[:20])
 
 

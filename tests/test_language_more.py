@@ -18,21 +18,15 @@ from plans.cli import main
 from plans.errors import InputError, Said, field_name
 from plans.language import CHECK_TERMS, WARNINGS, choose
 from plans.messages import complete
-from tests.test_language import _latin_words
+from tests.test_language import CYRILLIC, _latin_words
 
 ERRORS = complete()  # every sentence, the other file kinds' and the constructions' too
 
 ROOT = Path(__file__).resolve().parent.parent
 SAMPLES = ROOT / "samples"
-CYRILLIC = re.compile(r"[А-Яа-яЁё]")
 
 
-@pytest.fixture(autouse=True)
-def _english_locale(monkeypatch):
-    """The default is the locale's: these tests choose it."""
-    for name in ("LC_ALL", "LC_MESSAGES"):
-        monkeypatch.delenv(name, raising=False)
-    monkeypatch.setenv("LANG", "C.UTF-8")
+pytestmark = pytest.mark.usefixtures("english_locale")  # the default is the locale's: these tests choose it
 
 
 def _own_words(text: str, *own: str) -> str:
@@ -217,20 +211,10 @@ HOSTILE = ROOT / "tests" / "data" / "hostile"
 
 
 def _run_case(case, tmp: Path, lang: str, capsys) -> str:
+    from drawings.cli import main as draw_main
     from tests import test_hostile_inputs as H  # noqa: N812 - the table of bad inputs
 
-    (tmp / "out").mkdir(exist_ok=True)
-    shutil.copy(HOSTILE / "scene.toml", tmp / "scene.toml")
-    shutil.copy(HOSTILE / "check.toml", tmp / "check.toml")
-    for name, edit in (("scene.toml", case.scene), ("check.toml", case.check)):
-        if edit is not None:
-            t = edit((tmp / name).read_text(encoding="utf-8"))
-            (tmp / name).write_bytes(t.encode("utf-8") if isinstance(t, str) else t)
-    if case.id == "check-scene-broken":
-        (tmp / "scene.toml").write_text(H.SCENE.replace("length = 300", "length = -1"), encoding="utf-8")
-    from drawings.cli import main as draw_main
-
-    argv = [a.format(scene=tmp / "scene.toml", check=tmp / "check.toml", dir=tmp) for a in case.argv]
+    argv = H.lay_out(case, tmp)
     assert draw_main([*argv, "--language", lang]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1

@@ -15,18 +15,13 @@ from pathlib import Path
 import pytest
 
 from drawings.cli import main
-from tests.test_language import _latin_words
+from tests.test_language import CYRILLIC, _latin_words
 
 ROOT = Path(__file__).resolve().parents[1]
 SAMPLES = ROOT / "samples"
-CYRILLIC = re.compile(r"[А-Яа-яЁё]")
 
 
-@pytest.fixture(autouse=True)
-def _english_locale(monkeypatch):
-    for name in ("LC_ALL", "LC_MESSAGES"):
-        monkeypatch.delenv(name, raising=False)
-    monkeypatch.setenv("LANG", "C.UTF-8")
+pytestmark = pytest.mark.usefixtures("english_locale")  # the default is the locale's: these tests choose it
 
 
 def _russian(text: str, *own: str) -> set[str]:

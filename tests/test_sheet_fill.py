@@ -15,6 +15,7 @@ import plans
 from drawings import draw
 from plans.kinematics.scales import is_round
 from tests.test_drawings import _stated_scale, _vectors
+from tests.test_sheet_fit import assert_clear
 
 ROOT = Path(__file__).resolve().parents[1]
 SAMPLES = ROOT / "samples"
@@ -50,17 +51,9 @@ def test_plans_drawn_larger_where_the_sheet_has_room(four_bar):
 def test_the_sheets_stay_clear_and_as_few(four_bar):
     """Larger plans never cost a sheet (the course's two) nor overlap: every panel inside the
     frame, clear of the title block and of the others."""
-    from drawings.paper.sheet import usable
-
     assert len(four_bar.sheets) == 2
     for sh in four_bar.sheets:
-        a = usable(sh.width, sh.height)
-        boxes = [(p.pid, (x, y, x + p.width, y + p.height)) for p, x, y in sh.placed]
-        for pid, b in boxes:
-            assert a[0] - 1e-6 <= b[0] and a[1] - 1e-6 <= b[1] and b[2] <= a[2] + 1e-6 and b[3] <= a[3] + 1e-6, pid
-            assert not shapely.box(*b).intersects(shapely.box(*sh.title_box)), pid
-        for (p, b), (q, c) in itertools.combinations(boxes, 2):
-            assert shapely.box(*b).intersection(shapely.box(*c)).area < 1e-6, (p, q)
+        assert_clear(sh)
 
 
 def test_a_solution_solved_at_another_fit_is_drawn_as_solved():

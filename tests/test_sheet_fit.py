@@ -27,13 +27,18 @@ def test_every_sample_draws_on_a_small_sheet(path, fmt):
     d = draw(path, format=fmt)
     assert d.sheets
     for sh in d.sheets:
-        a = usable(sh.width, sh.height)
-        boxes = [(p.pid, (x, y, x + p.width, y + p.height)) for p, x, y in sh.placed]
-        for pid, b in boxes:
-            assert a[0] - 1e-6 <= b[0] and a[1] - 1e-6 <= b[1] and b[2] <= a[2] + 1e-6 and b[3] <= a[3] + 1e-6, pid
-            assert not shapely.box(*b).intersects(shapely.box(*sh.title_box)), pid
-        for (p, b), (q, c) in itertools.combinations(boxes, 2):
-            assert shapely.box(*b).intersection(shapely.box(*c)).area < 1e-6, (p, q)
+        assert_clear(sh)
+
+
+def assert_clear(sh) -> None:
+    """Every panel of a sheet inside the frame, clear of the title block and of the others."""
+    a = usable(sh.width, sh.height)
+    boxes = [(p.pid, (x, y, x + p.width, y + p.height)) for p, x, y in sh.placed]
+    for pid, b in boxes:
+        assert a[0] - 1e-6 <= b[0] and a[1] - 1e-6 <= b[1] and b[2] <= a[2] + 1e-6 and b[3] <= a[3] + 1e-6, pid
+        assert not shapely.box(*b).intersects(shapely.box(*sh.title_box)), pid
+    for (p, b), (q, c) in itertools.combinations(boxes, 2):
+        assert shapely.box(*b).intersection(shapely.box(*c)).area < 1e-6, (p, q)
 
 
 def _plans(d) -> dict[str, object]:
