@@ -24,6 +24,7 @@ from pathlib import PurePath
 from typing import TYPE_CHECKING, Any, NamedTuple, overload
 
 from plans.errors import ConstructionError, PlansError
+from plans.tolerances import SAME_ANGLE_DEG
 
 if TYPE_CHECKING:
     from plans.cycle.diagrams import Diagrams
@@ -335,7 +336,7 @@ class Solution:
                 return ()
             scene = replace(d.scene, outputs=d.scene.outputs | {"velocity_plan"})
             phis = np.asarray(d.spec.phi_deg, float)
-            phis = phis[phis < phis[0] + 360.0 - 1e-9]  # the second revolution of 720° repeats the first's plans
+            phis = phis[phis < phis[0] + 360.0 - SAME_ANGLE_DEG]  # the second revolution of 720° repeats the first's plans
             kin = solve(scene, phis, order=1)
             mu_v = d.scales.analogue / abs(d.scene.driver.omega)
             out = []
