@@ -116,9 +116,7 @@ def draw(source: EngineSolution | Engine | str | Path, *, format: str | None = N
             if not all(fits_empty(p, spec.format, spec.orientation) for p in bigger):
                 break
             laid = compose(bigger, spec, "", engine.path)
-            if len(laid) > len(sheets):
-                break
-            if _emptiest(laid) > _emptiest(sheets):
+            if len(laid) <= len(sheets) and _emptiest(laid) > _emptiest(sheets):
                 panels, sheets = bigger, laid
     return BalancingDrawing(engine, b, spec, tuple(panels), tuple(sheets))
 
@@ -126,7 +124,7 @@ def draw(source: EngineSolution | Engine | str | Path, *, format: str | None = N
 #: The formats whose balancing sheets take larger figures where they have room, and the sizes
 #: tried (times the A1 ones: the polygons' round scales, the phase diagrams, the crankshaft).
 GROWN = ("A1", "A2")
-SIZES = (1.25, 1.5, 1.75, 2.0, 2.5)
+SIZES = (1.1, 1.25, 1.4, 1.5, 1.75, 2.0, 2.25, 2.5)
 
 
 def _emptiest(sheets: Sequence[Sheet]) -> float:
