@@ -490,17 +490,19 @@ def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_te
         tabs = cr.tables[-4:]  # the dynamics' own: analogues, I_pr, M_pr, work and energy
         analogues = () if scene.wants("velocity_plan") else sol.analogue_plans()  # else on the first sheet
         panels = _fitting_dynamics(sol, cr.dynamics, tabs, sub, analogues)
-        if lay is None:
-            def lay(ps: list[Panel], sp: SheetSpec) -> list[Sheet]:
-                return compose(ps, sp, scale_text, scene.path)
-        laid = lay(panels, sub)
+        flat = lay is not None  # the course's set: its sheets laid flat
+
+        def laid_out(ps: list[Panel], sp: SheetSpec) -> list[Sheet]:
+            return lay(ps, sp) if lay is not None else compose(ps, sp, scale_text, scene.path)
+        laid = laid_out(panels, sub)
         if spec.format in _GROWN:
-            laid = _fuller_dynamics(sol, panels, sub, lay, laid)
-        else:  # a last sheet left nearly empty: the diagrams on a shorter φ axis, if all then fit fewer
+            laid = _fuller_dynamics(sol, panels, sub, laid_out, laid)
+        elif flat:  # a last sheet left nearly empty: the diagrams on a shorter φ axis, if all then fit fewer
             axis = 240.0
             while len(laid) > 1 and min(map(_used, laid)) < 1 / 3 and axis > 160.0:
                 axis -= 20.0
-                fewer = lay(_fitting_dynamics(sol, sol.dynamics_drawn(axis, 1.0), tabs, sub, analogues, axis), sub)
+                fewer = laid_out(_fitting_dynamics(sol, sol.dynamics_drawn(axis, 1.0), tabs, sub, analogues, axis),
+                                 sub)
                 if len(fewer) < len(laid):
                     laid = fewer
                     break
