@@ -229,12 +229,11 @@ class Solution:
 
     def dynamics_drawn(self, axis_mm: float, height: float) -> Dynamics:
         """The dynamics with its graphical part (Wittenbauer's diagram, the flywheel read off
-        it) drawn at a shorter φ axis and lower diagrams, for a sheet too small for the
-        default; made once per size."""
-        from plans.cycle.dynamics import dynamics
-
-        return self._part(("dynamics", axis_mm, height),
-                          lambda: dynamics(self.scene, axis_mm=axis_mm, height=height))
+        it) drawn at another φ axis and diagram height (shorter and lower on a small sheet,
+        longer and taller where an A1 sheet has room): the same dynamics at other scales."""
+        d = self.dynamics
+        assert d is not None, "a scene with dynamics"
+        return self._part(("dynamics", axis_mm, height), lambda: d.at(axis_mm, height))
 
     def diagrams_drawn(self, length_mm: float) -> Diagrams | None:
         """The kinematic diagrams drawn at a shorter φ axis (μφ = L/2π), for a sheet too small

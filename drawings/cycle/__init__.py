@@ -308,15 +308,18 @@ def _w_panel(d: Dynamics, lang: str, first: int = 1, size: float = 1.0) -> Panel
     return plot_panel("dyn-W", "dynamics", tr("W", lang), rec, scale, note, lang=lang)
 
 
-def _omega_panel(d: Dynamics, lang: str, first: int = 1) -> Panel:
-    """ω(φ) by exact integration of the motion, magnified about ω_m."""
+def _omega_panel(d: Dynamics, lang: str, first: int = 1, size: float = 1.0) -> Panel:
+    """ω(φ) by exact integration of the motion, magnified about ω_m at a round μ_ω (its swing
+    about 40 mm, ``size`` times that where the sheet has room)."""
+    from plans.kinematics.scales import round_scale
+
     s = d.scales
     fw = d.flywheel
     rec = Recording()
     ax = Axes(rec, "dyn-w", s.phi, float(d.exact.phi_deg[0]), lang, first)
     L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
     span = max(float(np.ptp(d.omega)), float(np.ptp(d.omega_exact)), 1e-300)
-    mu_w = 40.0 / span
+    mu_w = round_scale(span, 40.0 * size)
     y_g = (d.omega - fw.omega_mean) * mu_w
     y_e = (d.omega_exact - fw.omega_mean) * mu_w
     ax.frame(L, float(min(y_g.min(), y_e.min())), float(max(y_g.max(), y_e.max())), "ω − ω_m")
@@ -385,10 +388,14 @@ def table_panels(tables: Sequence[CycleTable], lang: str, prefix: str,
     return out
 
 
-def indicator_panels(d: Dynamics, lang: str) -> list[Panel]:
+def indicator_panels(d: Dynamics, lang: str, size: float = 1.0) -> list[Panel]:
     """Each cylinder's indicator diagram as given: the pressure against the piston's travel
     from the outer dead centre, one line per stroke (the working stroke drawn main), with its
-    ignition where it fires (found when the scene's loads were read)."""
+    ignition where it fires (found when the scene's loads were read); at round scales, the
+    stroke about 100 mm long and the pressure 60 mm high (``size`` times that where the sheet
+    has room)."""
+    from plans.kinematics.scales import round_scale
+
     out = []
     loads = d.scene.loads
     assert loads is not None, "a scene with dynamics holds its [loads]"
@@ -397,12 +404,13 @@ def indicator_panels(d: Dynamics, lang: str) -> list[Panel]:
             continue
         H_mm = gl.stroke * 1000
         p_top = max(float(np.max(np.abs(p))) for _, p in gl.diagram.values()) or 1.0
-        mu_s = 100.0 / H_mm
-        mu_p = nice_scale_mm(p_top, 60.0)
+        mu_s = round_scale(H_mm, 100.0 * size)
+        width = H_mm * mu_s
+        mu_p = nice_scale_mm(p_top, 60.0 * size)
         rec = Recording()
         ax = Axes(rec, f"ind-{k}", 1.0, 0.0, lang)
         lows = [float(np.min(p)) for _, p in gl.diagram.values()]
-        ax.frame(100.0, min(lows + [0.0]) * mu_p, p_top * mu_p, "p", "s")
+        ax.frame(width, min(lows + [0.0]) * mu_p, p_top * mu_p, "p", "s")
         for side, (ts, ps) in gl.diagram.items():
             style = MAIN if side in ("expansion", "down") else (THIN if side in ("compression", "up") else
                                                                 Style(width=0.25, dash=(3, 1.5)))
@@ -411,7 +419,7 @@ def indicator_panels(d: Dynamics, lang: str) -> list[Panel]:
             # each stroke named at its own place along the travel, the low ones below their line
             at = {"expansion": 0.3, "down": 0.3, "compression": 0.12, "up": 0.12, "exhaust": 0.55,
                   "intake": 0.8}[side]
-            x = at * 100.0
+            x = at * width
             y = -float(np.interp(at * gl.stroke, ts, ps)) * mu_p
             below = side == "intake"
             rec.text(layout(tr(side, lang), x + 1.0, y + (1.5 if below else -1.0), 2.5, "start",
@@ -442,15 +450,17 @@ def analogue_plans(plans: Sequence, lang: str, style: str) -> list[Panel]:
 
 
 def dynamics_panels(d: Dynamics, tables: Sequence[CycleTable], lang: str, analogues: Sequence = (),
-                    columns: int = 12, first: int = 1, w_size: float = 1.0) -> list[Panel]:
+                    columns: int = 12, first: int = 1, w_size: float = 1.0, size: float = 1.0) -> list[Panel]:
     """The dynamics sheet's panels; ``w_size``: the energy–mass diagram's size against its
-    readable one (smaller on a small sheet)."""
+    readable one (smaller on a small sheet, larger where an A1 sheet has room); ``size``: the
+    ω(φ) and indicator diagrams' against their A1 ones."""
     titles = [f"{tr('analogues', lang)}, μ = {fmt(d.scales.analogue, 4, lang)} mm/m (ω_1 = 1)",
               tr("Ipr", lang), f"{tr('Mpr', lang)}; {tr('sign', lang)}", tr("energy", lang)]
     plans = analogue_plans(analogues, lang, d.scene.scale_style)  # none where the first sheet has the plans
     return ([_m_panel(d, lang, first), _a_panel(d, lang, first), _t_panel(d, lang, first),
-             _i_panel(d, lang, first), _w_panel(d, lang, first, w_size), _omega_panel(d, lang, first), _fly_table(d, lang)]
-            + indicator_panels(d, lang) + table_panels(tables, lang, "dyn", titles, columns, first) + plans)
+             _i_panel(d, lang, first), _w_panel(d, lang, first, w_size), _omega_panel(d, lang, first, size),
+             _fly_table(d, lang)]
+            + indicator_panels(d, lang, size) + table_panels(tables, lang, "dyn", titles, columns, first) + plans)
 
 
 # --------------------------------------------------------------------------- the hook
@@ -480,24 +490,81 @@ def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_te
         tabs = cr.tables[-4:]  # the dynamics' own: analogues, I_pr, M_pr, work and energy
         analogues = () if scene.wants("velocity_plan") else sol.analogue_plans()  # else on the first sheet
         panels = _fitting_dynamics(sol, cr.dynamics, tabs, sub, analogues)
-        if lay is None:
-            extra += compose(panels, sub, scale_text, scene.path)
-        else:  # a last sheet left nearly empty: the diagrams on a shorter φ axis, if all then fit fewer
-            laid = lay(panels, sub)
+        flat = lay is not None  # the course's set: its sheets laid flat
+
+        def laid_out(ps: list[Panel], sp: SheetSpec) -> list[Sheet]:
+            return lay(ps, sp) if lay is not None else compose(ps, sp, scale_text, scene.path)
+        laid = laid_out(panels, sub)
+        if spec.format in _GROWN:
+            laid = _fuller_dynamics(sol, panels, sub, laid_out, laid)
+        elif flat:  # a last sheet left nearly empty: the diagrams on a shorter φ axis, if all then fit fewer
             axis = 240.0
             while len(laid) > 1 and min(map(_used, laid)) < 1 / 3 and axis > 160.0:
                 axis -= 20.0
-                fewer = lay(_fitting_dynamics(sol, sol.dynamics_drawn(axis, 1.0), tabs, sub, analogues, axis), sub)
+                fewer = laid_out(_fitting_dynamics(sol, sol.dynamics_drawn(axis, 1.0), tabs, sub, analogues, axis),
+                                 sub)
                 if len(fewer) < len(laid):
                     laid = fewer
                     break
-            extra += laid
+        extra += laid
     out = list(sheets) + extra
     for i, sh in enumerate(out):
         sh.number, sh.count = i + 1, len(out)
         sh.prims = []
         sh.render()
     return out
+
+
+#: The formats whose dynamics sheets take longer φ axes and taller diagrams where they have room.
+_GROWN = ("A1", "A2")
+#: The φ axes tried (mm over the working cycle: a course sheet's is 180 to 360 mm long, each
+#: position's step a round number of mm) and the diagrams' heights (times the A1 ones).
+_AXES = (180.0, 240.0, 300.0, 360.0)
+_HEIGHTS = (1.0, 1.25, 1.5, 2.0, 2.5)
+
+
+def _fuller_dynamics(sol: Solution, base: Sequence[Panel], spec: SheetSpec, lay, laid: list[Sheet]) -> list[Sheet]:
+    """The dynamics' sheets at the φ axis and diagram heights (round scales all, the
+    energy–mass, ω(φ) and indicator diagrams as much larger) that keep the fewest sheets and
+    leave the emptiest of them least empty; ``laid``, the A1 sizes' (``base``), where none does
+    better.  Each axis is tried from the lowest diagrams up, until they take one more sheet;
+    the tables and plans are ``base``'s, each diagram drawn once per size."""
+    from functools import cache
+
+    from drawings.paper.sheet import fits_empty
+
+    d = sol.dynamics
+    assert d is not None, "a scene with dynamics"
+    lang, first = spec.language, spec.first_position
+    best, key = laid, _key(laid, 240.0 * (1.5 if d.spec.cycle_deg == 720 else 1.0))
+    per_360 = 1.5 if d.spec.cycle_deg == 720 else 1.0  # the engine's axis is given for 360°
+    wit = cache(lambda size: _w_panel(d, lang, first, size))
+    ind = cache(lambda size: indicator_panels(d, lang, size))
+    fixed = [p for p in base if p.pid == "dyn-flywheel"]
+    rest = [p for p in base if p.kind != "dynamics" and p.pid != "dyn-flywheel"]  # tables, plans
+    for length in _AXES:
+        fewest = None
+        for h in _HEIGHTS:
+            dh = sol.dynamics_drawn(length / per_360, h)
+            panels = ([f(dh, lang, first) for f in (_m_panel, _a_panel, _t_panel, _i_panel)]
+                      + [wit(min(h, 2.0)), _omega_panel(dh, lang, first, h)] + fixed + ind(h) + rest)
+            if not all(fits_empty(p, spec.format, spec.orientation) for p in panels):
+                break
+            sheets = lay(panels, spec)
+            if fewest is not None and len(sheets) > fewest:
+                break
+            fewest = len(sheets) if fewest is None else fewest
+            if _key(sheets, length) > key:
+                best, key = sheets, _key(sheets, length)
+    return best
+
+
+def _key(sheets: Sequence[Sheet], axis: float) -> tuple[int, bool, float, float, float]:
+    """How good a set of sheets drawn at a φ axis of ``axis`` mm is: the fewest sheets first;
+    then none of them more than a third empty; then the longer axis; then its emptiest sheet's
+    part drawn (to 0.1 %), then all of them."""
+    parts = [_used(sh) for sh in sheets]
+    return -len(sheets), min(map(_drawn, sheets)) >= 2 / 3, axis, round(min(parts), 3), sum(parts)
 
 
 def fitting_diagrams(sol: Solution, dg: Diagrams, spec: SheetSpec) -> list[Panel]:
@@ -514,6 +581,16 @@ def fitting_diagrams(sol: Solution, dg: Diagrams, spec: SheetSpec) -> list[Panel
             break
         panels = diagram_panels(smaller, spec.language, spec.first_position)
     return panels
+
+
+def _drawn(sheet: Sheet) -> float:
+    """The part of a sheet's field (inside the frame, less the title block) its panels cover."""
+    from drawings.paper.sheet import usable
+
+    a = usable(sheet.width, sheet.height)
+    tb = sheet.title_box
+    return sum(p.width * p.height for p, _, _ in sheet.placed) / (
+        (a[2] - a[0]) * (a[3] - a[1]) - (tb[2] - tb[0]) * (tb[3] - tb[1]))
 
 
 def _used(sheet: Sheet) -> float:
