@@ -20,9 +20,8 @@ SAMPLES = sorted(p for k in KINDS for p in (ROOT / "samples" / k).glob("*.toml")
 NOT_TWO_THIRDS: dict[str, str] = {
     "gears/planetary_2kh": "the train's sheet: its scheme and plans at round scales fill a fifth of it",
     "gears/seed_train": "the meshing at 5:1 and the train below it leave the right half empty",
-    "cams/flat_face_poly345": "the profile and the diagrams at the A1 lengths leave half the sheet empty",
-    "cams/oscillating_cycloidal": "the profile and the diagrams at the A1 lengths leave half the sheet empty",
-    "cams/seed001_valve_cam": "the profile and the diagrams at the A1 lengths leave half the sheet empty",
+    "cams/flat_face_poly345": "at A1 (its file asks for A2, drawn over 0.76 of it) the next standard scale of the "
+                              "profile, 4:1, leaves no room beside it for the 360 mm φ axis: 0.665 drawn",
 }
 
 

@@ -27,11 +27,15 @@ def fullest_on_one_sheet(groups: Iterable[Iterable[Sequence[Panel]]], spec: Shee
     """Of the first group (the largest main figure first) with a candidate whose panels all go
     on one sheet of ``spec``, the candidate that covers most of it (the first of equals), laid
     out; None when no candidate does.  ``scale`` writes the title block's Scale cell."""
+    W, H = spec.size
+    x0, y0, x1, y1 = usable(W, H)
+    room = (x1 - x0) * (y1 - y0) - (title_box(W, H)[2] - title_box(W, H)[0]) * (title_box(W, H)[3] - title_box(W, H)[1])
     for group in groups:
         best: tuple[float, list[Panel], list[Sheet]] | None = None
         for panels in group:
-            if not all(fits_empty(p, spec.format, spec.orientation) for p in panels):
-                continue
+            if sum(p.width * p.height for p in panels) > room or \
+                    not all(fits_empty(p, spec.format, spec.orientation) for p in panels):
+                continue  # more than the sheet holds: not worth laying out
             sheets = compose(panels, spec, scale(panels), path)
             if len(sheets) == 1:
                 part = drawn_part(sheets[0])
