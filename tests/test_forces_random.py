@@ -17,7 +17,14 @@ from .test_forces import _global_reactions, _largest
 
 masses = st.floats(0.1, 5.0)
 inertias = st.one_of(st.just(0.0), st.floats(1e-12, 0.05))  # 0 or at least 1e-12: the number rule
-forces = st.floats(-500.0, 500.0).map(lambda x: 0.0 if abs(x) < 1e-12 else x)  # 0 or at least 1e-12
+
+
+def _file_number(x: float) -> float:
+    """x as a file may give it: 0 or a magnitude of at least 1e-12 (the number rule)."""
+    return 0.0 if abs(x) < 1e-12 else x
+
+
+forces = st.floats(-500.0, 500.0).map(_file_number)
 
 
 def _check(scene):
@@ -50,7 +57,7 @@ def test_random_slider_crank(r, ratio, e, phi, omega, eps, sense, m2, i2, m3, fx
     raw["links"]["2"].update(mass=m2, inertia=i2, centre="S2")
     raw["links"]["3"].update(mass=m3)
     raw["loads"] = {"gravity": grav, "force": [{"link": 3, "point": "B", "vector": [fx, fy]}],
-                    "moment": [{"link": 2, "value": fy / 100}]}
+                    "moment": [{"link": 2, "value": _file_number(fy / 100)}]}
     _check(scene_from_dict(raw))
 
 
@@ -66,5 +73,5 @@ def test_random_four_bar(phi, omega, m2, i2, m3, i3, fx, fy, kind):
     raw["links"]["3"]["points"] = {"S3": {"ratio": 0.5}}
     raw["links"]["3"].update(mass=m3, inertia=i3, centre="S3")
     raw["loads"] = {"balancing": {"kind": kind}, "force": [{"link": 2, "point": "E", "vector": [fx, fy]}],
-                    "moment": [{"link": 3, "resisting": abs(fx) / 50}]}
+                    "moment": [{"link": 3, "resisting": _file_number(abs(fx) / 50)}]}
     _check(scene_from_dict(raw))

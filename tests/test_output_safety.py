@@ -265,6 +265,8 @@ def test_ctrl_c_stops_quietly_with_130(tmp_path):
 def test_ctrl_c_while_the_command_loads_stops_quietly_with_130():
     # A real SIGINT, sent while the command's modules are being imported.
     code = ("import os, signal, sys\n"
+            # as in a terminal: a shell that starts a job in the background leaves SIGINT ignored
+            "signal.signal(signal.SIGINT, signal.default_int_handler)\n"
             "class Interrupt:\n"
             "    def find_spec(self, name, path=None, target=None):\n"
             "        if name == 'plans.cli':\n"
