@@ -40,6 +40,7 @@ from plans.kinematics.construction import nice_scale
 from plans.kinematics.exact import Kinematics, solve
 from plans.kinematics.structure import Structure, analyse
 from plans.scene.model import Scene
+from plans.tolerances import EXACT_ZERO_REL
 
 from . import quadrature, spline
 from .spec import DynamicsSpec, dynamics_spec
@@ -203,7 +204,7 @@ def analogues(scene: Scene, kin: Kinematics) -> list[Row]:
             out.append(Row(f"v_{name}", f"v_{name}/ω_1", "m", np.abs(v) / w, lid))
     for lid in sorted(scene.links):
         om = kin.omega(lid) / w
-        if lid != scene.driver.link and np.max(np.abs(om)) > 1e-12:
+        if lid != scene.driver.link and np.max(np.abs(om)) > EXACT_ZERO_REL:
             out.append(Row(f"omega_{lid}", f"ω_{lid}/ω_1", "1", np.abs(om), lid))
     return out
 
@@ -336,7 +337,7 @@ def dynamics(scene: Scene, spec: DynamicsSpec | None = None, structure: Structur
     A_c_e = work.A_c
     M_d_e = _driving(scene, spec, float(A_c_e[-1]), float(np.max(np.abs(ex.M_pr))), cycle)
     dT_e = A_c_e + M_d_e * rad_e
-    if np.ptp(dT_e) <= 1e-12 * float(np.max(np.abs(ex.M_pr))) * math.radians(cycle):
+    if np.ptp(dT_e) <= EXACT_ZERO_REL * float(np.max(np.abs(ex.M_pr))) * math.radians(cycle):
         raise InputError(Said("cd_loads_moment_does"), file=scene.path, field="loads")
     # a given driving moment balances the exact work; the graphical one is read off A_c's end
     M_d = -float(A_c[-1]) / math.radians(cycle) if spec.driving is None else M_d_e
