@@ -256,29 +256,6 @@ def exact_flywheel(I_pr: R, dT: R, omega_m: float, delta: float) -> float:
     return (hi - lo) / (wmax2 - wmin2)
 
 
-def motion(I_pr: R, dT: R, I_fw: float, omega_m: float) -> tuple[R, float]:
-    """ω(φ) of the steady cycle with flywheel I_fw ((ω_max + ω_min)/2 = ω_m) and its δ."""
-    J = (I_fw + I_pr)[:-1]
-    T = dT[:-1]
-    E0 = 0.5 * omega_m**2 * float(np.mean(J)) - float(np.mean(T))
-    floor = -float(np.min(T)) + 1e-300
-    for _ in range(60):
-        x = 2 * (E0 + T) / J
-        kmax, kmin = int(np.argmax(x)), int(np.argmin(x))
-        xmax, xmin = _extreme(x, kmax), _extreme(x, kmin)
-        f = 0.5 * (math.sqrt(max(xmax, 0.0)) + math.sqrt(max(xmin, 0.0))) - omega_m
-        df = 0.5 * (1 / (J[kmax] * math.sqrt(max(xmax, 1e-300))) + 1 / (J[kmin] * math.sqrt(max(xmin, 1e-300))))
-        new = E0 - f / df
-        E0 = new if new > floor else 0.5 * (E0 + floor)  # keep the kinetic energy positive
-        if abs(f) <= 1e-15 * omega_m:
-            break
-    x = 2 * (E0 + T) / J
-    om = np.sqrt(np.maximum(x, 0.0))
-    xmax, xmin = _extreme(x, int(np.argmax(x))), _extreme(x, int(np.argmin(x)))
-    delta = (math.sqrt(max(xmax, 0.0)) - math.sqrt(max(xmin, 0.0))) / omega_m
-    return np.append(om, om[0]), delta
-
-
 def wittenbauer(I_pr: R, dT: R, omega_m: float, delta: float) -> tuple[Wittenbauer, float]:
     """Tangents at tan ψ = ω_m²(1 ± δ)/2 to the points (I_pr, ΔT); I_fw = kl/(ω_m² δ)."""
     s_max = omega_m**2 * (1 + delta) / 2
