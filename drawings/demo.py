@@ -204,9 +204,10 @@ class Demo:
 def page_figures(scene: str | Path, frames: int = FRAMES, repeat: int = 3) -> dict[str, Any]:
     """The page's size and build time, and (when Chromium and Playwright are there) the time
     from opening it in headless Chromium to the first step drawn: for ``plans bench``."""
-    import shutil
     import tempfile
     import time
+
+    from drawings.headless import chromium
 
     best, text = float("inf"), ""
     for _ in range(repeat):
@@ -215,26 +216,18 @@ def page_figures(scene: str | Path, frames: int = FRAMES, repeat: int = 3) -> di
         best = min(best, time.perf_counter() - t0)
     out: dict[str, Any] = {"scene": str(scene), "frames": frames, "bytes": len(text.encode("utf-8")),
                            "build_s": best, "first_step_s": None}
-    exe = shutil.which("chromium") or shutil.which("chromium-browser")
-    try:
-        from playwright.sync_api import sync_playwright
-    except ImportError:
-        return out
-    if exe is None:
-        return out
-    with tempfile.TemporaryDirectory() as tmp:
+    with chromium() as b, tempfile.TemporaryDirectory() as tmp:
+        if b is None:
+            return out
         f = Path(tmp) / "page.html"
         f.write_text(text, encoding="utf-8")
-        with sync_playwright() as pw:
-            b = pw.chromium.launch(executable_path=exe, args=["--no-sandbox"])
-            times = []
-            for _ in range(repeat):
-                pg = b.new_page(viewport={"width": 1024, "height": 768})
-                pg.goto(f.as_uri())
-                pg.wait_for_selector("body[data-ready='1']")
-                times.append(float(pg.get_attribute("body", "data-ready-ms") or "nan") / 1000.0)
-                pg.close()
-            b.close()
+        times = []
+        for _ in range(repeat):
+            pg = b.new_page(viewport={"width": 1024, "height": 768})
+            pg.goto(f.as_uri())
+            pg.wait_for_selector("body[data-ready='1']")
+            times.append(float(pg.get_attribute("body", "data-ready-ms") or "nan") / 1000.0)
+            pg.close()
     out["first_step_s"] = min(times)
     return out
 

@@ -45,3 +45,15 @@ AGREE_REL = 1e-9
 #: A polygon of forces or moments (an engine's balance) closes when its resultant is within
 #: this fraction of its largest vector: a sum of a few dozen exact terms.
 CLOSED_REL = 1e-9
+
+#: Two of an engine's bank or crank angles (radians) or axial planes (metres) are the same
+#: when they differ by less than this: the file gives them in degrees and millimetres to a few
+#: digits, so equal ones differ only by a conversion's or a wrap's round-off (~1e-15) and
+#: different ones by far more.
+SAME_LAYOUT = 1e-12
+
+#: Added, as an absolute slack, to a check's comparison whose other slacks can all be 0 (a
+#: value written exactly, a relation that gives 0): the value and what it must be still differ
+#: by the round-off of the arithmetic between them.  The checker's values are millimetres or SI
+#: units, far above it.
+ZERO_SLACK = 1e-12

@@ -27,6 +27,20 @@ def english_locale(monkeypatch):
     monkeypatch.setenv("LANG", "C.UTF-8")
 
 
+@pytest.fixture(scope="module")
+def browser():
+    """Headless Chromium for the page tests (the demonstration, the workbench); skipped where
+    it or Playwright is missing, a failure on CI."""
+    from drawings.headless import chromium
+
+    with chromium() as b:
+        if b is None:
+            if os.environ.get("CI"):
+                pytest.fail("CI needs Chromium and Playwright for the page tests (.ci/run installs them)")
+            pytest.skip("Chromium or Playwright not installed")
+        yield b
+
+
 def slider_crank_scene(r_mm: float = 50.0, l_mm: float = 180.0, e_mm: float = 0.0, *,
                        phi_deg=(30.0,), omega: float = 100.0, eps: float = 0.0, sense: str = "ccw",
                        outputs=("positions", "velocity_plan", "acceleration_plan"), unit: str = "mm") -> dict:

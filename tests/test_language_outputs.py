@@ -142,7 +142,7 @@ def test_a_warning_of_a_library_call_speaks_the_scenes_language(tmp_path, capsys
 
 
 # --------------------------------------------------------------------------- the workbench page
-from tests.test_workbench import browser, server  # noqa: E402, F401 - the page's fixtures
+from tests.test_workbench import server  # noqa: E402, F401 - the page's fixture (the browser is conftest's)
 
 
 def _page_text(browser, url: str, lang: str) -> tuple[str, list[str]]:  # noqa: F811

@@ -7,7 +7,6 @@ from __future__ import annotations
 import cmath
 import json
 import math
-import os
 import shutil
 import threading
 import time
@@ -187,23 +186,6 @@ def test_edit_keeps_comments_and_order(server):
 
 
 # ------------------------------------------------------------------ the page in Chromium
-@pytest.fixture(scope="module")
-def browser():
-    exe = next((shutil.which(n) for n in ("chromium", "chromium-browser", "google-chrome") if shutil.which(n)), None)
-    try:
-        from playwright.sync_api import sync_playwright
-    except ImportError:
-        sync_playwright = None
-    if exe is None or sync_playwright is None:
-        if os.environ.get("CI"):
-            pytest.fail("CI needs Chromium and Playwright for the page tests")
-        pytest.skip("Chromium or Playwright not installed")
-    with sync_playwright() as pw:
-        b = pw.chromium.launch(executable_path=exe, args=["--no-sandbox"])
-        yield b
-        b.close()
-
-
 def _four_bar_b(phi: float, a: float, b: float = 260.0, c: float = 200.0, d: float = 300.0) -> complex:
     """B of the sample four-bar (O at 0, D at d mm) by two circles, the upper assembly."""
     A = a * cmath.exp(1j * phi)

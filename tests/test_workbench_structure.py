@@ -177,23 +177,6 @@ def _docx_text(d) -> str:
 # ------------------------------------------------------------------ the page in Chromium
 
 
-@pytest.fixture(scope="module")
-def browser():
-    exe = next((shutil.which(n) for n in ("chromium", "chromium-browser", "google-chrome") if shutil.which(n)), None)
-    try:
-        from playwright.sync_api import sync_playwright
-    except ImportError:
-        sync_playwright = None
-    if exe is None or sync_playwright is None:
-        if os.environ.get("CI"):
-            pytest.fail("CI needs Chromium and Playwright for the page tests")
-        pytest.skip("Chromium or Playwright not installed")
-    with sync_playwright() as pw:
-        b = pw.chromium.launch(executable_path=exe, args=["--no-sandbox"])
-        yield b
-        b.close()
-
-
 def _solved(page, before: str | None) -> str:
     page.wait_for_function("b => document.body.dataset.solved && document.body.dataset.solved !== b", arg=before)
     return page.get_attribute("body", "data-solved")

@@ -16,6 +16,8 @@ import time
 from pathlib import Path
 from typing import Any
 
+from drawings.headless import chromium
+
 
 def _server(root: Path) -> tuple[Any, str]:
     import uvicorn
@@ -78,23 +80,17 @@ def server_share(scene: Path, reps: int = 15) -> dict[str, Any]:
 
 def page_round_trip(scene: Path, reps: int = 7) -> float | None:
     """Median seconds from a changed length in the page to the new plans drawn (Chromium)."""
-    exe = shutil.which("chromium") or shutil.which("chromium-browser")
-    try:
-        from playwright.sync_api import sync_playwright
-    except ImportError:
-        return None
-    if exe is None:
-        return None
-    import tomllib
+    with chromium() as b:
+        if b is None:
+            return None
+        import tomllib
 
-    data = tomllib.loads(scene.read_text(encoding="utf-8"))
-    crank = str(data["driver"]["link"])
-    length = float(data["links"][crank]["length"])
-    with tempfile.TemporaryDirectory() as tmp:
-        shutil.copy(scene, Path(tmp) / scene.name)
-        srv, host = _server(Path(tmp))
-        with sync_playwright() as pw:
-            b = pw.chromium.launch(executable_path=exe, args=["--no-sandbox"])
+        data = tomllib.loads(scene.read_text(encoding="utf-8"))
+        crank = str(data["driver"]["link"])
+        length = float(data["links"][crank]["length"])
+        with tempfile.TemporaryDirectory() as tmp:
+            shutil.copy(scene, Path(tmp) / scene.name)
+            srv, host = _server(Path(tmp))
             pg = b.new_page(viewport={"width": 1366, "height": 768})
             pg.goto(f"http://{host}/#file={scene.name}")
             pg.wait_for_selector("body[data-solved]")
@@ -117,8 +113,7 @@ def page_round_trip(scene: Path, reps: int = 7) -> float | None:
                     })""", [sel, round(length * (1 + 0.002 * (k + 1)), 6), before])
                 if k:
                     times.append(t)
-            b.close()
-        srv.should_exit = True
+            srv.should_exit = True
     return statistics.median(times)
 
 

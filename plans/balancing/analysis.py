@@ -38,8 +38,8 @@ from typing import Any
 import numpy as np
 
 from plans.balancing.banks import BankAnalysis, analyse_banks
-from plans.balancing.engine import Engine
-from plans.tolerances import CLOSED_REL
+from plans.balancing.engine import Engine, wrap
+from plans.tolerances import CLOSED_REL, SAME_LAYOUT
 from plans.units import DUST
 
 KINDS = ("rotating", "first_order", "second_order")
@@ -255,23 +255,19 @@ def _resultant(engine: Engine, kind: str, quantity: str) -> Resultant:
         return Resultant(quantity, kind, 1, unit * poly.closing, 0j, (poly,), None)
     if engine.is_inline:
         g0 = cyl[0].bank
-        rows = tuple(Row(c.number, _wrap(k * (c.crank - g0)), p, l) for c, p, l in zip(cyl, ps, ls, strict=True))
+        rows = tuple(Row(c.number, wrap(k * (c.crank - g0)), p, l) for c, p, l in zip(cyl, ps, ls, strict=True))
         poly = Polygon(quantity, kind, k, "", unit, rows)
         S = unit * poly.closing
         # along the bank: Re(S e^{ikα}) e^{iγ0} = (S e^{ikα} + conj(S) e^{−ikα}) e^{iγ0} / 2
         u = cmath.exp(1j * g0)
         return Resultant(quantity, kind, k, S * u / 2, S.conjugate() * u / 2, (poly,), u)
-    fwd = tuple(Row(c.number, _wrap(k * (c.crank - c.bank) + c.bank), p / 2, l)
+    fwd = tuple(Row(c.number, wrap(k * (c.crank - c.bank) + c.bank), p / 2, l)
                 for c, p, l in zip(cyl, ps, ls, strict=True))
-    bwd = tuple(Row(c.number, _wrap(-k * (c.crank - c.bank) + c.bank), p / 2, l)
+    bwd = tuple(Row(c.number, wrap(-k * (c.crank - c.bank) + c.bank), p / 2, l)
                 for c, p, l in zip(cyl, ps, ls, strict=True))
     pf = Polygon(quantity, kind, k, "forward", unit, fwd)
     pb = Polygon(quantity, kind, k, "backward", unit, bwd)
     return Resultant(quantity, kind, k, unit * pf.closing, unit * pb.closing, (pf, pb), None)
-
-
-def _wrap(a: float) -> float:
-    return math.atan2(math.sin(a), math.cos(a))
 
 
 def _planes(engine: Engine) -> tuple[float, ...]:
@@ -279,7 +275,7 @@ def _planes(engine: Engine) -> tuple[float, ...]:
         return engine.cw_planes
     zs = [c.z for c in engine.cylinders]
     lo, hi = min(zs), max(zs)
-    return (lo, hi) if hi - lo > 1e-12 else (lo,)
+    return (lo, hi) if hi - lo > SAME_LAYOUT else (lo,)
 
 
 def _counterweights(engine: Engine, forces: dict[str, Resultant], moments: dict[str, Resultant]

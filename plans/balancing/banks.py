@@ -28,8 +28,8 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
-from plans.balancing.engine import Cylinder, Engine
-from plans.tolerances import CLOSED_REL
+from plans.balancing.engine import Cylinder, Engine, wrap
+from plans.tolerances import CLOSED_REL, SAME_LAYOUT
 
 #: Below this fraction of the reference a magnitude counts as round-off.
 CLOSED = CLOSED_REL
@@ -191,16 +191,12 @@ def _clean(x: float, ref: float) -> float:
     return 0.0 if abs(x) <= CLOSED * max(abs(ref), 1e-300) else float(x)
 
 
-def _wrap(a: float) -> float:
-    return math.atan2(math.sin(a), math.cos(a))
-
-
 def bank_groups(engine: Engine) -> list[tuple[float, tuple[Cylinder, ...]]]:
     """The banks: cylinders grouped by axis, in the order they first appear."""
     out: list[tuple[float, list[Cylinder]]] = []
     for c in engine.cylinders:
         for g, cs in out:
-            if abs(_wrap(c.bank - g)) < 1e-12:
+            if abs(wrap(c.bank - g)) < SAME_LAYOUT:
                 cs.append(c)
                 break
         else:
@@ -219,7 +215,7 @@ def analyse_banks(engine: Engine) -> BankAnalysis:
             P0 = m1 * engine.r * engine.omega**2 * (engine.lam if k == 2 else 1.0)
             for quantity in ("force", "moment"):
                 unit = P0 * (engine.arm_unit if quantity == "moment" else 1.0)
-                rows = tuple((c.number, _wrap(k * (c.crank - g)), c.m_rec / m1 if m1 > 0 else 0.0,
+                rows = tuple((c.number, wrap(k * (c.crank - g)), c.m_rec / m1 if m1 > 0 else 0.0,
                               (c.z - engine.reference_z) / engine.arm_unit if quantity == "moment" else 1.0)
                              for c in cyls)
                 polys[quantity][kind] = BankPolygon(quantity, kind, k, unit, rows)

@@ -40,6 +40,7 @@ from typing import Any
 from plans.errors import Said
 from plans.io import loads_toml, read_toml
 from plans.reader import LENGTH_LIMIT, NUMBER_LIMIT, Reader, check_keys, reduce_deg, show
+from plans.tolerances import SAME_LAYOUT
 from plans.units import LENGTH_UNITS, rpm_to_rad_s
 
 TOP_KEYS = {"format", "kind", "title", "unit", "r", "lambda", "omega", "omega_rpm", "strokes",
@@ -98,12 +99,12 @@ class Engine:
     @property
     def is_inline(self) -> bool:
         """All cylinders on one bank: forces along one line, the seed's classic polygons."""
-        return all(abs(c.bank - self.cylinders[0].bank) < 1e-12 for c in self.cylinders)
+        return all(abs(c.bank - self.cylinders[0].bank) < SAME_LAYOUT for c in self.cylinders)
 
     @property
     def is_planar(self) -> bool:
         """One crank throw: the engine is a planar linkage (single cylinder, V-twin)."""
-        return all(abs(_wrap(c.crank)) < 1e-12 for c in self.cylinders)
+        return all(abs(wrap(c.crank)) < SAME_LAYOUT for c in self.cylinders)
 
     @property
     def arm_unit(self) -> float:
@@ -115,7 +116,7 @@ class Engine:
         return (zs[-1] - zs[0]) / (len(zs) - 1)
 
 
-def _wrap(a: float) -> float:
+def wrap(a: float) -> float:
     """An angle reduced to (−π, π]."""
     return math.atan2(math.sin(a), math.cos(a))
 
@@ -233,7 +234,7 @@ def _cranks(rd: _Reader, data: dict[str, Any], raw: list[dict[str, Any]], banks:
         out = [0.0] * n
         for k, cyl in enumerate(order):
             out[cyl - 1] = (banks[cyl - 1] - banks[0]) - k * delta
-        return [_wrap(b) for b in out]
+        return [wrap(b) for b in out]
     if "crank_deg" in data:
         lst = data["crank_deg"]
         if not isinstance(lst, list) or len(lst) != n:
@@ -252,7 +253,7 @@ def _cranks(rd: _Reader, data: dict[str, Any], raw: list[dict[str, Any]], banks:
         missing = next(k for k in range(n) if k not in per)
         raise rd.fail(f"cylinders[{missing}].crank_deg",
                       Said("be_missing_crank_angle", n=n))
-    return [_wrap(math.radians(d - degs[0])) for d in degs]
+    return [wrap(math.radians(d - degs[0])) for d in degs]
 
 
 def _counterweights(rd: _Reader, data: dict[str, Any], unit: str, r: float
@@ -267,7 +268,7 @@ def _counterweights(rd: _Reader, data: dict[str, Any], unit: str, r: float
         if not isinstance(p, list) or len(p) not in (1, 2):
             raise rd.fail("counterweights.planes", Said("be_one_two_plane"))
         planes = tuple(rd.length(v, f"counterweights.planes[{k}]", unit) for k, v in enumerate(p))
-        if len(planes) == 2 and abs(planes[0] - planes[1]) < 1e-12:
+        if len(planes) == 2 and abs(planes[0] - planes[1]) < SAME_LAYOUT:
             raise rd.fail("counterweights.planes", Said("be_two_different_planes"))
     radius = rd.length(cw["radius"], "counterweights.radius", unit, positive=True) if "radius" in cw else r
     return planes, radius

@@ -36,7 +36,7 @@ from plans.check.checkfile import RUBRIC, RUBRIC_KEYS  # noqa: F401  (read here 
 from plans.check.mistakes import KINDS, Slip, describe, inventory, replay
 from plans.check.providers import Context, exact_value
 from plans.errors import PlansError
-from plans.tolerances import VERDICT_REL
+from plans.tolerances import ROUND_OFF_REL, VERDICT_REL
 
 if TYPE_CHECKING:
     from plans.check.findings import Finding, Item
@@ -540,7 +540,7 @@ def _constants(ctx: Context, items: tuple[Item, ...], open_: set[int]) -> list[_
                 ex = exact_value(ctx, pos.index, w.quantity) if n else None
                 if ex is None or not ex.value or n is None:
                     continue
-                hu = w.half_ulp + 1e-12 * abs(ex.value)
+                hu = w.half_ulp + ROUND_OFF_REL * abs(ex.value)
                 if abs(w.value - ex.value) > hu and abs(w.value - ex.value * ratio**n) <= hu:
                     phis.add(pos.phi_deg)
                     names.append(w.quantity)

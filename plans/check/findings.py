@@ -15,7 +15,7 @@ import numpy as np
 from plans.check import wording as wd
 from plans.check.checkfile import CheckFile, StudentPosition, Written
 from plans.check.providers import Context, points_of
-from plans.tolerances import AGREE_REL, VERDICT_REL
+from plans.tolerances import AGREE_REL, VERDICT_REL, ZERO_SLACK
 
 PI_314 = 3.14
 
@@ -107,7 +107,13 @@ def consistent(w: Written, m: Written, mm_per_unit: float, rel: float, read_mm: 
     to the reading of the segment (±``read_mm``: the digits typed do not narrow it)."""
     want = m.value / mm_per_unit
     slack = max(w.half_ulp + m.half_ulp / mm_per_unit, read_mm / mm_per_unit)
-    return abs(w.value - want) <= slack + rel * abs(want) + 1e-12
+    return within(w.value, want, slack, rel)
+
+
+def within(value: float, want: float, slack: float, rel: float) -> bool:
+    """``value`` is ``want`` to an absolute ``slack`` and a fraction ``rel`` of it (and to
+    the round-off between them where both are 0)."""
+    return abs(value - want) <= slack + rel * abs(want) + ZERO_SLACK
 
 
 # --------------------------------------------------------------------------- consistency

@@ -10,7 +10,15 @@ from dataclasses import dataclass
 
 from plans.check import wording as wd
 from plans.check.checkfile import CheckFile, StudentPosition, Written
-from plans.check.findings import Finding, as_written, consistent, fmt, position_free, where_note
+from plans.check.findings import (
+    Finding,
+    as_written,
+    consistent,
+    fmt,
+    position_free,
+    where_note,
+    within,
+)
 from plans.check.providers import G_STANDARD, Context, exact_value, points_of
 
 
@@ -202,7 +210,7 @@ def relation_findings(ctx: Context, pos: StudentPosition) -> list[Finding]:
                 except ZeroDivisionError:
                     continue
                 results.append((want, combo))
-                if abs(value - want) <= slack_abs + carried + rel_tol * abs(want) + 1e-12:
+                if within(value, want, slack_abs + carried, rel_tol):
                     ok = True
                     break
             if ok or not results:

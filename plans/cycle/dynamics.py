@@ -40,6 +40,7 @@ from plans.kinematics.construction import nice_scale
 from plans.kinematics.exact import Kinematics, solve
 from plans.kinematics.structure import Structure, analyse
 from plans.scene.model import Scene
+from plans.tolerances import EXACT_ZERO_REL
 
 from . import quadrature, spline
 from .spec import DynamicsSpec, dynamics_spec
@@ -209,7 +210,7 @@ def analogues(scene: Scene, kin: Kinematics) -> list[Row]:
             out.append(Row(f"v_{name}", f"v_{name}/ω_1", "m", np.abs(v) / w, lid))
     for lid in sorted(scene.links):
         om = kin.omega(lid) / w
-        if lid != scene.driver.link and np.max(np.abs(om)) > 1e-12:
+        if lid != scene.driver.link and np.max(np.abs(om)) > EXACT_ZERO_REL:
             out.append(Row(f"omega_{lid}", f"ω_{lid}/ω_1", "1", np.abs(om), lid))
     return out
 
@@ -259,29 +260,6 @@ def exact_flywheel(I_pr: R, dT: R, omega_m: float, delta: float) -> float:
     hi = _extreme(g_hi, int(np.argmax(g_hi)))
     lo = _extreme(g_lo, int(np.argmin(g_lo)))
     return (hi - lo) / (wmax2 - wmin2)
-
-
-def motion(I_pr: R, dT: R, I_fw: float, omega_m: float) -> tuple[R, float]:
-    """ω(φ) of the steady cycle with flywheel I_fw ((ω_max + ω_min)/2 = ω_m) and its δ."""
-    J = (I_fw + I_pr)[:-1]
-    T = dT[:-1]
-    E0 = 0.5 * omega_m**2 * float(np.mean(J)) - float(np.mean(T))
-    floor = -float(np.min(T)) + 1e-300
-    for _ in range(60):
-        x = 2 * (E0 + T) / J
-        kmax, kmin = int(np.argmax(x)), int(np.argmin(x))
-        xmax, xmin = _extreme(x, kmax), _extreme(x, kmin)
-        f = 0.5 * (math.sqrt(max(xmax, 0.0)) + math.sqrt(max(xmin, 0.0))) - omega_m
-        df = 0.5 * (1 / (J[kmax] * math.sqrt(max(xmax, 1e-300))) + 1 / (J[kmin] * math.sqrt(max(xmin, 1e-300))))
-        new = E0 - f / df
-        E0 = new if new > floor else 0.5 * (E0 + floor)  # keep the kinetic energy positive
-        if abs(f) <= 1e-15 * omega_m:
-            break
-    x = 2 * (E0 + T) / J
-    om = np.sqrt(np.maximum(x, 0.0))
-    xmax, xmin = _extreme(x, int(np.argmax(x))), _extreme(x, int(np.argmin(x)))
-    delta = (math.sqrt(max(xmax, 0.0)) - math.sqrt(max(xmin, 0.0))) / omega_m
-    return np.append(om, om[0]), delta
 
 
 def wittenbauer(I_pr: R, dT: R, omega_m: float, delta: float) -> tuple[Wittenbauer, float]:
@@ -342,7 +320,7 @@ def dynamics(scene: Scene, spec: DynamicsSpec | None = None, structure: Structur
     A_c_e = work.A_c
     M_d_e = _driving(scene, spec, float(A_c_e[-1]), float(np.max(np.abs(ex.M_pr))), cycle)
     dT_e = A_c_e + M_d_e * rad_e
-    if np.ptp(dT_e) <= 1e-12 * float(np.max(np.abs(ex.M_pr))) * math.radians(cycle):
+    if np.ptp(dT_e) <= EXACT_ZERO_REL * float(np.max(np.abs(ex.M_pr))) * math.radians(cycle):
         raise InputError(Said("cd_loads_moment_does"), file=scene.path, field="loads")
     # a given driving moment balances the exact work; the graphical one is read off A_c's end
     M_d = -float(A_c[-1]) / math.radians(cycle) if spec.driving is None else M_d_e

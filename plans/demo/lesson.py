@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from plans.demo.mistakes import mistakes, page_mm, page_xy
+from plans.demo.mistakes import mistakes, page_mm, page_tol, page_xy
 from plans.errors import Figures, InputError, PlansError, Said
 from plans.kinematics.exact import Kinematics, solve
 from plans.kinematics.plan import Plan, Step
@@ -129,7 +129,7 @@ def _reveal(panel: dict[str, Any], steps: list[Step]) -> list[dict[str, Any]]:
     shown: set[str] = {panel["pole"]}
     seg_done: set[int] = set()
     line_done: set[int] = set()
-    tol = max(2e-3, 1e-6 * max([1.0] + [math.hypot(*xy) for xy in pts.values()]))  # kept to 1 µm
+    tol = page_tol(max([1.0] + [math.hypot(*xy) for xy in pts.values()]))
     out: list[dict[str, list]] = []
     for s in steps:
         new_pts: list[str] = []

@@ -29,6 +29,13 @@ def page_xy(z: complex) -> list[float]:
     return [page_mm(z.real), page_mm(z.imag)]
 
 
+def page_tol(size: float) -> float:
+    """Two points of a page (or a point and a line) closer than this are one: kept to 1 µm
+    (``page_mm``), a point's two copies differ by up to 2 µm, or by a millionth of the
+    page's ``size`` where its round-off is more."""
+    return max(2e-3, 1e-6 * size)
+
+
 def _meet(p1: complex, d1: complex, p2: complex, d2: complex) -> complex | None:
     """Intersection of two lines (point, direction); None when they are parallel."""
     den = cross(d1, d2)
@@ -53,7 +60,7 @@ def _relay(panel: dict, anchor: str, shift: complex) -> tuple[str, complex, comp
     pts = {nm: complex(*xy) for nm, xy in panel["points"].items()}
     a = pts[anchor]
     size = max([1.0] + [abs(z) for z in pts.values()])
-    tol = max(2e-3, 1e-6 * size)  # page coordinates are kept to 1 µm
+    tol = page_tol(size)
     lines = [(complex(*ln["point"]), complex(*ln["dir"])) for ln in panel["lines"]]
 
     def on(z: complex, ln: tuple[complex, complex]) -> bool:

@@ -73,6 +73,7 @@ positive.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
 from dataclasses import replace
 from typing import Any
 
@@ -160,6 +161,18 @@ def _parse_loads(scene: Scene) -> Loads:
             raise fail(f"{where}link", Said("l_link", link=show(lid), links=sorted(scene.links)))
         return int(lid)
 
+    def tables(key: str, said: str, keys: tuple[str, ...]) -> Iterator[tuple[int, dict[str, Any], str]]:
+        """Each table of the array ``[[loads.KEY]]``, its index and its fields' prefix; its keys checked."""
+        got = raw.get(key, [])
+        if not isinstance(got, list):
+            raise fail(f"loads.{key}", Said(said))
+        for k, body in enumerate(got):
+            where = f"loads.{key}[{k}]."
+            if not isinstance(body, dict):
+                raise fail(f"loads.{key}[{k}]", Said("sm_table"))
+            check_keys(body, keys, file=path, where=where)
+            yield k, body, where
+
     # ---- masses, inertias, centres
     masses = {lid: link.mass for lid, link in scene.links.items()}
     inertias = {lid: link.inertia for lid, link in scene.links.items()}
@@ -244,16 +257,10 @@ def _parse_loads(scene: Scene) -> Loads:
         raise fail("loads.balancing.point", Said("l_bal_pivot", point=bpoint))
 
     # ---- gas forces
-    gas_raw = raw.get("gas", [])
-    if not isinstance(gas_raw, list):
-        raise fail("loads.gas", Said("ld_array_tables_loads"))
     gas = []
-    for k, body in enumerate(gas_raw):
-        where = f"loads.gas[{k}]."
-        if not isinstance(body, dict):
-            raise fail(f"loads.gas[{k}]", Said("sm_table"))
-        check_keys(body, ("link", "diameter", "area", "area_unit", "pressure", "pressure_unit", "strokes",
-                          "direction", "diagram", "name", "fires_deg", "p_max", "travel"), file=path, where=where)
+    for k, body, where in tables("gas", "ld_array_tables_loads", (
+            "link", "diameter", "area", "area_unit", "pressure", "pressure_unit", "strokes", "direction", "diagram",
+            "name", "fires_deg", "p_max", "travel")):
         for key in ("p_max", "travel"):
             if key in body and "diagram" not in body:
                 raise fail(f"{where}{key}", Said("ld_goes_indicator_diagram"))
@@ -335,19 +342,13 @@ def _parse_loads(scene: Scene) -> Loads:
 
     # ---- external forces and moments
     forces = []
-    f_raw = raw.get("force", [])
-    if not isinstance(f_raw, list):
-        raise fail("loads.force", Said("ld_array_tables_loads2"))
-    for k, body in enumerate(f_raw):
-        where = f"loads.force[{k}]."
-        if not isinstance(body, dict):
-            raise fail(f"loads.force[{k}]", Said("sm_table"))
-        check_keys(body, ("link", "point", "vector", "magnitude", "angle_deg", "resisting", "along", "stroke",
-                          "name", "area", "bore", "pressure_table"), file=path, where=where)
+    for k, body, where in tables("force", "ld_array_tables_loads2", (
+            "link", "point", "vector", "magnitude", "angle_deg", "resisting", "along", "stroke", "name", "area",
+            "bore", "pressure_table")):
         if "pressure_table" in body or "area" in body or "bore" in body:
             gas.append(pressure_force(scene, r, body, where, k, moving_link, length))
             continue
-        given = [key for key in ("vector", "magnitude", "resisting") if key in body]
+        given: list[str] = [key for key in ("vector", "magnitude", "resisting") if key in body]
         if len(given) > 1:
             raise fail(f"{where}{given[1]}", Said("l_force_ways", given=Said("l_and", a=given[0], b=given[1])))
         lid = moving_link(body, where)
@@ -381,15 +382,8 @@ def _parse_loads(scene: Scene) -> Loads:
         forces.append(ForceLoad(link=lid, point=pt, vector=vec, resisting=res, along=along, stroke=stroke,
                                 name=label(body, where, f"F_ext{k + 1}")))
     moments = []
-    m_raw = raw.get("moment", [])
-    if not isinstance(m_raw, list):
-        raise fail("loads.moment", Said("ld_array_tables_loads3"))
-    for k, body in enumerate(m_raw):
-        where = f"loads.moment[{k}]."
-        if not isinstance(body, dict):
-            raise fail(f"loads.moment[{k}]", Said("sm_table"))
-        check_keys(body, ("link", "value", "resisting", "name", "table", "expression", "stroke"), file=path,
-                   where=where)
+    for _, body, where in tables("moment", "ld_array_tables_loads3",
+                                 ("link", "value", "resisting", "name", "table", "expression", "stroke")):
         m_stroke = r.choice(body, "stroke", where, ("both", "working", "idle"), "both")
         given = [key for key in ("value", "resisting", "table", "expression") if key in body]
         if len(given) > 1:
@@ -418,14 +412,14 @@ def _parse_loads(scene: Scene) -> Loads:
         else:
             raise fail(f"{where}value", Said("ld_value_ccw_resisting"))
 
-    limited = [f"loads.{key}[{k}].stroke" for key, got in (("force", f_raw), ("moment", m_raw))
+    limited = [f"loads.{key}[{k}].stroke" for key, got in (("force", raw.get("force", [])), ("moment", raw.get("moment", [])))
                for k, body in enumerate(got) if body.get("stroke") in ("working", "idle")]
     if limited:  # the strokes exist (an output with two extremes), or the first such load fails here
         from plans.forces.strokes import on_stroke
 
         on_stroke(scene, "working", [], limited[0])
     if any("resisting" in body and body.get("stroke", "positive") in ("positive", "negative")
-           for body in (*f_raw, *m_raw)):  # no stroke given, or one by the sign of the velocity
+           for body in (*raw.get("force", []), *raw.get("moment", []))):  # no stroke given, or one by the sign of the velocity
         from plans.forces.strokes import warn_idle
 
         warn_idle(scene, raw, forces)

@@ -34,7 +34,7 @@ import math
 from dataclasses import dataclass
 
 from plans.errors import InputError, Said
-from plans.tolerances import ROUND_OFF_REL
+from plans.tolerances import AGREE_REL, ROUND_OFF_REL
 
 from .involute import inv, inv_inverse, thickness_at
 
@@ -126,7 +126,7 @@ def centre(z1: int, z2: int, x1: float, x2: float, m: float, alpha: float, inter
         raise InputError(Said("gg2_impossible_centre_distance", v=a_w_given * 1e3, v2=a * math.cos(alpha) * 1e3), file=file, field=where)
     alpha_w = math.acos(c)
     S0 = (inv(alpha_w) - inv(alpha)) * Z / (2.0 * math.tan(alpha))
-    if S > S0 + 1e-9:
+    if S > S0 + AGREE_REL:
         need = centre(z1, z2, x1, x2, m, alpha, internal, None, where, file)[2]
         raise InputError(Said("gg2_impossible_centre_distance2", v=a_w_given * 1e3, v2=need * 1e3),
                          file=file, field=where)
@@ -190,7 +190,7 @@ def pair(names: tuple[str, str], z: tuple[int, int], x: tuple[float, float], int
     y = (a_w - a) / m
     S = x[1] - x[0] if internal else x[0] + x[1]
     dy = S - y
-    if abs(dy) < 1e-12:
+    if abs(dy) < ROUND_OFF_REL:
         dy = 0.0
     w1 = wheel(names[0], z[0], x[0], False, m, alpha, ha, c, alpha_w, dy_tips[0], where, file)
     w2 = wheel(names[1], z[1], x[1], internal, m, alpha, ha, c, alpha_w, dy_tips[1], where, file, ring_tip)

@@ -136,7 +136,7 @@ def layout(shafts: dict, meshes: list[TrainMesh], file: str | None) -> tuple[dic
             y_o = y_p - ro if me.internal_gear is not None else y_p + ro
             pitch[me.gears] = y_p
             if other in axes:
-                if abs(axes[other] - y_o) > 1e-9 * max(1.0, abs(y_o)) + 1e-9:
+                if abs(axes[other] - y_o) > AGREE_REL * max(1.0, abs(y_o)) + AGREE_REL:
                     raise InputError(Said("gt_gears_train_does", v=me.gears[0], v2=me.gears[1], v3=abs(axes[other] - y_o) * 1e3),
                                      file=file, field="meshes")
             else:
@@ -221,7 +221,7 @@ def velocity_plan(shafts: dict, meshes: list[TrainMesh], file: str | None, *, mu
             pts = known_points(n)
             distinct: list[tuple[str, Pt]] = []
             for name, p in pts:
-                if all(abs(p[1] - q[1]) > 1e-9 for _, q in distinct):
+                if all(abs(p[1] - q[1]) > AGREE_REL for _, q in distinct):
                     distinct.append((name, p))
             if s.speed_rpm is not None and distinct:
                 name, p = distinct[0]

@@ -44,6 +44,7 @@ from typing import Any
 from plans.check import wording as wd
 from plans.errors import InputError, Said
 from plans.tolerances import VERDICT_REL
+from plans.units import DUST
 
 #: Angles of the cam at which the key gives the profile (degrees).
 CAM_ANGLES = tuple(float(a) for a in range(0, 360, 30))
@@ -373,7 +374,7 @@ def check_sheet(data: dict[str, Any], path: str) -> SheetReport:
             return max(2 * dir_deg, rule * abs(value), floor)
         if h.startswith("ratio:"):
             return 2 * seg_mm / mu / float(h.split(":", 1)[1])
-        return max(rule * abs(value), floor, 1e-9 * big)
+        return max(rule * abs(value), floor, DUST * big)
 
     big = max((abs(v) for v in exact.values()), default=0.0)  # a balanced order's 0 is 0 to rounding
     items = []

@@ -9,6 +9,7 @@ for what it holds, never empty.
 from __future__ import annotations
 
 import importlib
+from collections.abc import Callable
 from typing import Any
 
 from . import cycle, forces, linkage, others
@@ -45,47 +46,45 @@ def build(items: list[Item], lang: str) -> Note:
             hook = importlib.import_module(HOOKS[it.kind])
             secs.extend(hook.section(it, lang))
 
-    kin = Section(w("kinematics", lang), key="kinematics")
-    for it in links:
-        kin.children += linkage.kinematics(it, lang, kin)
+    def kinematics(it: Item, sec: Section) -> list[Section]:
+        subs = linkage.kinematics(it, lang, sec)
         dg = cycle.diagrams(it, lang)
-        if dg is not None:
-            kin.children.append(dg)
-    if kin.children:
-        kin.para(say(lang, "Скорости и ускорения определяем методом планов; точные значения аналитического "
-                           "решения совпадают с прочитанными с планов в пределах точности построения.",
-                     "Velocities and accelerations are found by the method of plans; the exact analytical values "
-                     "agree with those read off the plans to the accuracy of the construction."))
-        secs.append(kin)
+        return subs + ([] if dg is None else [dg])
 
-    fs = Section(w("forces", lang), key="forces")
-    for it in links:
-        fs.children += forces.forces(it, lang)
-    if fs.children:
-        fs.para(say(lang, "Силовой расчёт выполняем методом планов сил (Бруевича) по группам Ассура, начиная с "
-                          "наиболее удалённой от начального звена; уравновешивающую силу проверяем по рычагу Жуковского.",
-                    "The force analysis is done by force polygons (Bruevich's method) group by group, the group "
-                    "farthest from the initial link first; the balancing force is checked by the Zhukovsky lever."))
-        secs.append(fs)
+    for sec in (
+            _of_linkages("kinematics", lang, links, kinematics, say(
+                lang, "Скорости и ускорения определяем методом планов; точные значения аналитического "
+                      "решения совпадают с прочитанными с планов в пределах точности построения.",
+                "Velocities and accelerations are found by the method of plans; the exact analytical values "
+                "agree with those read off the plans to the accuracy of the construction.")),
+            _of_linkages("forces", lang, links, lambda it, _: forces.forces(it, lang), say(
+                lang, "Силовой расчёт выполняем методом планов сил (Бруевича) по группам Ассура, начиная с "
+                      "наиболее удалённой от начального звена; уравновешивающую силу проверяем по рычагу Жуковского.",
+                "The force analysis is done by force polygons (Bruevich's method) group by group, the group "
+                "farthest from the initial link first; the balancing force is checked by the Zhukovsky lever.")),
+            _of_linkages("dynamics", lang, links, lambda it, _: cycle.dynamics(it, lang))):
+        if sec is not None:
+            secs.append(sec)
 
-    dy = Section(w("dynamics", lang), key="dynamics")
-    for it in links:
-        dy.children += cycle.dynamics(it, lang)
-    if dy.children:
-        secs.append(dy)
-
-    for it in items:
-        if it.kind == "gears":
-            secs.append(others.gears(it, lang))
-    for it in items:
-        if it.kind == "cam":
-            secs.append(others.cam(it, lang))
-    for it in items:
-        if it.kind == "engine":
-            secs.append(others.balancing(it, lang))
+    for kind, section in (("gears", others.gears), ("cam", others.cam), ("engine", others.balancing)):
+        secs.extend(section(it, lang) for it in items if it.kind == kind)
     secs.append(conclusions(items, lang))
     return Note(lang, title_page(items, lang), secs, tuple(it.path for it in items),
                 tuple(it.kind for it in items), w("contents", lang))
+
+
+def _of_linkages(key: str, lang: str, links: list[Item], part: Callable[[Item, Section], list[Section]],
+                 closing: str = "") -> Section | None:
+    """The section ``key`` of every linkage's ``part`` (which may write into the section
+    too), closed by ``closing``; None where no linkage has any."""
+    sec = Section(w(key, lang), key=key)
+    for it in links:
+        sec.children += part(it, sec)
+    if not sec.children:
+        return None
+    if closing:
+        sec.para(closing)
+    return sec
 
 
 def _kind_name(kind: str, lang: str) -> str:

@@ -22,6 +22,7 @@ from .model import (
     Text,
     fmt,
     num,
+    of_tables,
     row,
 )
 from .words import quantity, say, symbols, unit, w
@@ -104,14 +105,11 @@ def forces(item: Any, lang: str) -> list[Section]:
         _three_ways(item, pos, phi, lang, sec)
         out.append(sec)
     table = _balancing_over(item, lang)
-    if table is not None:
-        sec = Section(say(lang, "Уравновешивающая сила по положениям", "The balancing force over the positions"), 2,
-                      key="forces-table")
-        sec.para(say(lang, f"Уравновешивающая сила во всех положениях — в таблице {{tab:{table.key}}}.",
-                     f"The balancing force at every position is in table {{tab:{table.key}}}."))
-        sec.add(table)
-        out.append(sec)
-    return out
+    return out + of_tables(
+        say(lang, "Уравновешивающая сила по положениям", "The balancing force over the positions"), "forces-table",
+        [] if table is None else [table],
+        lambda key: say(lang, f"Уравновешивающая сила во всех положениях — в таблице {{tab:{key}}}.",
+                        f"The balancing force at every position is in table {{tab:{key}}}."))
 
 
 def _heading(item: Any, plan: str, phi: str, lang: str, sec: Section) -> None:

@@ -11,7 +11,7 @@ from typing import Any
 from plans.kinematics.structure import TriadGroup
 from plans.tolerances import SAME_ANGLE_DEG
 
-from .model import Figure, Frac, Num, Section, Sym, Table, Text, Vec, fmt, num, row
+from .model import Figure, Frac, Num, Section, Sym, Table, Text, Vec, fmt, num, of_tables, row
 from .words import quantity, say, symbols, unit, w
 
 # --------------------------------------------------------------------------- positions
@@ -189,15 +189,11 @@ def kinematics(item: Any, lang: str, sec: Section) -> list[Section]:
                          f"The plan is in figure {{fig:{fig}}}, its segments and values in table {{tab:{tab.key}}}."))
             sub.add(tab)
         out.append(sub)
-    tables = over_positions(item, lang)
-    if tables:
-        sub = Section(say(lang, "Результаты по положениям", "Results over the positions"), 2, key="kinematics-table")
-        for t in tables:
-            sub.para(say(lang, f"Величины по положениям механизма — в таблице {{tab:{t.key}}}.",
-                         f"The quantities over the positions are in table {{tab:{t.key}}}."))
-            sub.add(t)
-        out.append(sub)
-    return out
+    return out + of_tables(
+        say(lang, "Результаты по положениям", "Results over the positions"), "kinematics-table",
+        over_positions(item, lang),
+        lambda key: say(lang, f"Величины по положениям механизма — в таблице {{tab:{key}}}.",
+                        f"The quantities over the positions are in table {{tab:{key}}}."))
 
 
 def _vector_equations(item: Any, pos: dict, kind: str, lang: str, sec: Section) -> None:

@@ -9,6 +9,7 @@ to a figure or a table carries ``{fig:KEY}`` / ``{tab:KEY}``: the writer numbers
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Union
 
@@ -147,6 +148,18 @@ class Section:
     def eq(self, *items: Formula | str) -> Section:
         self.blocks.append(Equation(row(*items)))
         return self
+
+
+def of_tables(title: str, key: str, tables: Sequence[Table], pointer: Callable[[str], str]) -> list[Section]:
+    """A subsection of ``tables``, each after the sentence ``pointer(its key)`` that refers
+    to it; none where there are no tables."""
+    if not tables:
+        return []
+    sec = Section(title, 2, key=key)
+    for t in tables:
+        sec.para(pointer(t.key))
+        sec.add(t)
+    return [sec]
 
 
 @dataclass(frozen=True)

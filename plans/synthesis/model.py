@@ -218,6 +218,11 @@ def _required(r: Reader, t: Task) -> None:
         if value is None:
             raise r.fail(key, Said("sm_missing_mechanism_needs", mechanism=t.mechanism, what=what))
 
+    def one_of(keys: tuple[str, ...]) -> None:
+        given = [k for k in keys if k in t.raw]
+        if len(given) > 1:
+            raise r.fail(given[1], Said("sm_give_one_third", v=' or '.join(given), v2=len(given)))
+
     if t.mechanism in ("slider_crank", "v_engine"):
         if t.stroke is None and t.mean_speed is None:
             raise r.fail("stroke", Said("sm_missing_stroke_mean"))
@@ -225,9 +230,7 @@ def _required(r: Reader, t: Task) -> None:
             raise r.fail("task.omega_rpm", Said("sm_missing_mean_speed"))
         if t.mean_speed is not None and t.stroke is not None and t.omega_rpm is not None:
             raise r.fail("mean_speed", Said("sm_give_two_stroke"))
-        third = [k for k in ("lambda", "offset", "pressure_angle_max_deg") if k in t.raw]
-        if len(third) > 1:
-            raise r.fail(third[1], Said("sm_give_one_third", v=' or '.join(third), v2=len(third)))
+        one_of(("lambda", "offset", "pressure_angle_max_deg"))
     if t.mechanism == "v_engine":
         need("lambda", t.lam, Said("sm_w_lambda"))
         need("bank_deg", t.bank, Said("sm_w_bank"))
@@ -241,9 +244,7 @@ def _required(r: Reader, t: Task) -> None:
         else:
             need("rocker", t.rocker, Said("sm_w_rocker"))
             need("swing_deg", t.swing, Said("sm_w_swing"))
-            given = [k for k in ("frame", "frame_angle_deg", "gamma_min_deg") if k in t.raw]
-            if len(given) > 1:
-                raise r.fail(given[1], Said("sm_give_one_third", v=' or '.join(given), v2=len(given)))
+            one_of(("frame", "frame_angle_deg", "gamma_min_deg"))
     if t.mechanism == "coulisse":
         need("stroke", t.stroke, Said("sm_w_stroke"))
         need("centre_distance", t.centre_distance, Said("sm_w_centre"))
