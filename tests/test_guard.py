@@ -316,7 +316,7 @@ def test_every_file_is_written_through_the_guard():
 
 def test_a_command_that_answers_2_itself_leaves_nothing(tmp_path, monkeypatch, capsys):
     """``plans check`` prints its own error and returns 2: what it staged before is dropped."""
-    import plans.check.command as report
+    import plans.check_command as report
     from plans.errors import InputError
 
     check = _copy("checks/v_engine_coursework.toml", tmp_path)

@@ -163,8 +163,8 @@ def _all_keys() -> set[str]:
     import importlib
 
     for name in ("plans.gears.model", "plans.cams.model", "plans.balancing.engine", "plans.synthesis.model",
-                 "plans.cycle.spec", "plans.cycle.check", "plans.scene.sheet", "plans.scene.friction",
-                 "plans.kinematics.extreme", "plans.kinematics.travel", "plans.group.build"):
+                 "plans.cycle.spec", "plans.check.cycle", "plans.scene.sheet", "plans.scene.friction",
+                 "plans.kinematics.extreme", "plans.scene.positions", "plans.group.build"):
         for const, value in vars(importlib.import_module(name)).items():
             if const.isupper() and isinstance(value, set | frozenset | tuple | dict):
                 out |= {k for k in value if isinstance(k, str) and re.fullmatch(r"[a-z]\w*", k)}

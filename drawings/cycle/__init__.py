@@ -554,7 +554,7 @@ def diagrams_sheet_seconds(path: str | Path, repeat: int = 5) -> float:
     """Best time of the diagrams sheet of a scene to SVG text: engine, panels, layout, SVG."""
     import time
 
-    from plans.scene.model import load_scene
+    from plans.kinematics.placing import load_scene
     from plans.solution import solve
 
     scene = load_scene(path)

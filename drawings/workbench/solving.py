@@ -69,8 +69,8 @@ def solved(text: str, name: str, data: dict[str, Any] | None = None) -> Any:
         got = _recall(_SOLVED, key)
         if got is not None:
             return got
+        from plans.kinematics.placing import parse_scene, scene_from_dict
         from plans.results import solve_scene
-        from plans.scene.model import parse_scene, scene_from_dict
 
         scene = parse_scene(text, name) if data is None else scene_from_dict(data, name)
         got = solve_scene(scene)
