@@ -17,10 +17,10 @@ from pathlib import Path
 import numpy as np
 
 from drawings.cycle.cycle_plot import EXACT, GRAPH, Axes, number, plot_panel, wide_table
-from drawings.linkage.panels import Panel
 from drawings.paper.backend import HAIR, MAIN, THIN, Recording, Style
 from drawings.paper.common import fmt
 from drawings.paper.i18n import lookup
+from drawings.paper.panel_frame import Panel
 from drawings.paper.sheet import Sheet, SheetSpec, compose
 from drawings.paper.text import layout
 from plans.cycle import spline
@@ -255,8 +255,7 @@ def _w_panel(d: Dynamics, lang: str, first: int = 1, size: float = 1.0) -> Panel
     its own round scales (the curve about W_WIDTH_MM × W_HEIGHT_MM, readable; ``size`` times
     that on a small sheet, its letters the same), every position numbered (coincident ones
     share a label: "1, 13")."""
-    from drawings.linkage.overview import coincident_positions
-    from drawings.paper.common import Placer
+    from drawings.paper.common import Placer, coincident_positions
     from plans.kinematics.scales import round_scale
 
     w = d.wittenbauer
@@ -436,7 +435,7 @@ def nice_scale_mm(top: float, target_mm: float) -> float:
 def analogue_plans(plans: Sequence, lang: str, style: str) -> list[Panel]:
     """The plans of velocity analogues at the table's positions (``Solution.analogue_plans``:
     velocity plans at μ_v = μ/|ω1|, each segment the analogue v/ω1 at μ, mm per m), drawn."""
-    from drawings.linkage.panels import plan_panel
+    from drawings.plan_panel import plan_panel
 
     return [plan_panel(p, lang, style, pid=f"analogue-{k + 1}") for k, p in enumerate(plans)]
 
