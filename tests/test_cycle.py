@@ -22,7 +22,7 @@ from plans.errors import InputError
 from plans.forces.loads import apply_loads, parse_loads
 from plans.forces.polygons import analyse_forces
 from plans.kinematics.exact import solve
-from plans.scene.model import load_scene, scene_from_dict
+from plans.kinematics.placing import load_scene, scene_from_dict
 
 ROOT = Path(__file__).resolve().parents[1]
 SEED = ROOT / "samples" / "dynamics_slider_crank.toml"

@@ -302,7 +302,7 @@ def _mm_written_as_metres(tmp_path: Path) -> Path:
 def test_a_unit_slip_is_warned_about_and_the_run_goes_on(tmp_path, capsys):
     """Millimetres with unit = "m": each link and the crank pin's speed beyond any machine,
     in the run's language, on stderr; the exit status and the output are the run's."""
-    from plans.scene.model import load_scene
+    from plans.kinematics.placing import load_scene
 
     path = _mm_written_as_metres(tmp_path)
     scene = load_scene(SAMPLES / "slider_crank.toml")
