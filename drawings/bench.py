@@ -25,7 +25,7 @@ from drawings.linkage import build_panels, draw, fit_for
 from drawings.linkage.panels import ratio_text
 from drawings.paper.export import dxf_bytes, pdf_bytes, png_bytes, svg_bytes
 from drawings.paper.sheet import compose
-from plans.scene.model import load_scene
+from plans.kinematics.placing import load_scene
 from plans.solution import solve
 
 PNG_DPI = 150.0

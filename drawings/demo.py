@@ -19,7 +19,8 @@ from typing import Any
 from plans.demo import FRAMES, lesson
 from plans.errors import InputError, Said
 from plans.io import atomic_write
-from plans.scene.model import Scene, load_scene
+from plans.kinematics.placing import load_scene
+from plans.scene.model import Scene
 
 WORDS = {
     "en": {

@@ -240,7 +240,7 @@ def handout_svg(st: dict[str, str], got: Any, lang: str) -> str:
 
 def _scene_phis(got: Any) -> tuple[float, ...]:
     from plans.io import loads_toml
-    from plans.scene.model import scene_from_dict
+    from plans.kinematics.placing import scene_from_dict
 
     name = got.key.get("scene", got.key["file"])
     return tuple(scene_from_dict(loads_toml(got.files[name], name), name).driver.phis_deg)

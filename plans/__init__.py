@@ -26,7 +26,7 @@ from __future__ import annotations
 from typing import Any
 
 _LAZY = {
-    "load_scene": "plans.scene",
+    "load_scene": "plans.kinematics.placing",  # read and placed (positions by travel, extreme)
     "Scene": "plans.scene",
     "solve": "plans.solution",
     "solve_scene": "plans.results",

@@ -14,12 +14,12 @@ from plans.errors import InputError, PlansError, error_prefix, one_line, set_run
 
 #: Pure commands living in their own modules, each with ``register(subparsers)``; a module
 #: that is absent is simply not offered.
-_COMMAND_MODULES = ("plans.check.command", "plans.accuracy.bench", "plans.balancing.cli",
+_COMMAND_MODULES = ("plans.check_command", "plans.accuracy.bench", "plans.balancing.cli",
                     "plans.gears.cli", "plans.cams.cli", "plans.synthesis.cli")
 #: The command each module adds and its one-line help, to list it (``plans --help``) or to
 #: run another command without importing it: start-up stays a fraction of a second.
 _COMMAND_NAMES = {
-    "plans.check.command": ("check", "check a hand-drawn sheet (or a folder of them) against the exact analysis"),
+    "plans.check_command": ("check", "check a hand-drawn sheet (or a folder of them) against the exact analysis"),
     "plans.accuracy.bench": ("bench", "error against run time of every method; stability; hand-drawing error"),
     "plans.balancing.cli": ("balance", "engine balancing: force and moment polygons, counterweights"),
     "plans.gears.cli": ("gears", "involute gears and trains: geometry, checks, speeds (JSON)"),
@@ -176,8 +176,8 @@ def register_commands(sub: argparse._SubParsersAction, modules: Sequence[str],
 
 def _solve(args: argparse.Namespace) -> int:
     from plans.io import atomic_file, atomic_write, refuse_input
+    from plans.kinematics.placing import load_scene
     from plans.results import solve_scene, table, write_json
-    from plans.scene.model import load_scene
 
     refuse_input(args.json, args.scene)
     scene = load_scene(args.scene)

@@ -26,7 +26,7 @@ KINDS: dict[str, tuple[str, str]] = {
 #: kind -> the reader of its table ("module:function(data, path)"), which keeps the promise
 #: (every problem one InputError naming file and field); the fuzzer drives each one.
 READERS: dict[str, str] = {
-    "linkage": "plans.scene.model:scene_from_dict",
+    "linkage": "plans.kinematics.placing:scene_from_dict",  # read, then positions placed
     "engine": "plans.balancing.engine:engine_from_dict",
     "gears": "plans.gears.model:parse_gears",
     "cam": "plans.cams.model:cam_from_dict",

@@ -280,6 +280,6 @@ def _scale_phrase(style: str, mu: float, unit: str, lang: str) -> str:
 
 
 def load_and_solve(path: str) -> Solution:
-    from plans.scene.model import load_scene
+    from plans.kinematics.placing import load_scene
 
     return solve_scene(load_scene(path))

@@ -431,10 +431,12 @@ def solve(scene: Any, *, fit: float = 1.0) -> Any:
     :class:`plans.cams.solution.CamSolution`, a synthesis task into a
     :class:`plans.synthesis.solution.DesignSolution` (``fit`` is the linkage's alone)."""
     if hasattr(scene, "driver"):
-        return Solution(scene, fit)
+        from plans.kinematics.placing import place
+
+        return Solution(place(scene), fit)  # a scene read by plans.scene: its positions placed
     if isinstance(scene, str | PurePath):
         from plans.io import read_toml
-        from plans.scene.model import scene_from_dict
+        from plans.kinematics.placing import scene_from_dict
 
         data = read_toml(str(scene))
         kind = data.get("kind")

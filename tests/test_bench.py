@@ -153,7 +153,7 @@ def test_draftsman_without_error_draws_the_exact_plans(path):
     """With a perfect pencil and protractor the Monte Carlo's construction (every dyad kind,
     Coriolis terms laid off from ω and v_r read off the drawn velocity plan) reads the exact
     analysis at every position: a wrong sense of a^k or a wrong line would show here."""
-    from plans.scene.model import load_scene
+    from plans.kinematics.placing import load_scene
 
     sc = load_scene(path)
     kin = kinematics.solve(sc, order=2)
@@ -176,7 +176,7 @@ def test_draftsman_without_error_draws_the_exact_plans(path):
 
 @pytest.mark.parametrize("name", ["shaper", "six_bar", "scotch_yoke"])
 def test_draftsman_covers_coriolis_samples(name):
-    from plans.scene.model import load_scene
+    from plans.kinematics.placing import load_scene
 
     sc = load_scene(Path(__file__).resolve().parent.parent / "samples" / f"{name}.toml")
     a1 = draftsman.draftsman_errors(sc, 45.0, "A1", samples=1500, seed=5)
@@ -196,7 +196,7 @@ def test_draftsman_covers_coriolis_samples(name):
 def test_coriolis_error_carries_the_velocity_plan_error():
     """a^k = 2 ω v_r is laid off from figures read off the drawn velocity plan: a pencil error
     alone (no protractor) still spreads it, and more than the pencil's width on the plan."""
-    from plans.scene.model import load_scene
+    from plans.kinematics.placing import load_scene
 
     sc = load_scene(Path(__file__).resolve().parent.parent / "samples" / "shaper.toml")
     pencil = draftsman.draftsman_errors(sc, 45.0, "A1", draftsman.DraftsmanModel(0.25, 0.0), samples=1500, seed=2)

@@ -365,7 +365,7 @@ def test_measured_segment_of_a_computed_quantity_is_refused(tmp_path):
 def test_force_polygon_readings_get_the_draftsman_tolerance():
     from plans.forces.polygons import analyse_forces, force_polygons
     from plans.kinematics.exact import solve
-    from plans.scene.model import load_scene
+    from plans.kinematics.placing import load_scene
 
     mu_f = 0.02  # mm/N, the student's
     scene = load_scene(SCENE)

@@ -26,7 +26,7 @@ from plans.check.report import check, csv_text, summary_row
 from plans.cli import main
 from plans.kinematics import construction
 from plans.kinematics.exact import solve
-from plans.scene.model import load_scene
+from plans.kinematics.placing import load_scene
 
 ROOT = Path(__file__).resolve().parent.parent
 SAMPLES = ROOT / "samples"

@@ -21,7 +21,7 @@ from plans.check.checkfile import check_from_dict
 from plans.check.report import check
 from plans.kinematics import construction
 from plans.kinematics.exact import solve
-from plans.scene.model import load_scene
+from plans.kinematics.placing import load_scene
 
 ROOT = Path(__file__).resolve().parent.parent
 SAMPLES = sorted((ROOT / "samples").glob("*.toml"))

@@ -16,8 +16,8 @@ import pytest
 from plans.cli import main
 from plans.kinematics.construction import build_many
 from plans.kinematics.exact import solve
+from plans.kinematics.placing import load_scene
 from plans.kinematics.structure import TriadGroup, analyse
-from plans.scene.model import load_scene
 
 from .newton2 import newton2
 

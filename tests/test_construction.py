@@ -12,9 +12,9 @@ from plans.errors import ConstructionError, Locked, NotAssemblable
 from plans.io import dumps
 from plans.kinematics.construction import build, build_all, nice_scale
 from plans.kinematics.exact import solve
+from plans.kinematics.placing import load_scene, scene_from_dict
 from plans.kinematics.scales import LONGEST_MM, is_round, round_scale
 from plans.results import solve_scene, to_json
-from plans.scene.model import load_scene, scene_from_dict
 
 from .conftest import ROOT, four_bar_scene, slider_crank_scene
 

@@ -13,8 +13,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from plans.check.cycle import check_cycle
 from plans.cli import main
-from plans.cycle.check import check_cycle
 from plans.cycle.diagrams import diagrams
 from plans.cycle.dynamics import dynamics, reduce
 from plans.cycle.spec import diagrams_spec, dynamics_spec
@@ -22,7 +22,7 @@ from plans.errors import InputError
 from plans.forces.loads import apply_loads, parse_loads
 from plans.forces.polygons import analyse_forces
 from plans.kinematics.exact import solve
-from plans.scene.model import load_scene, scene_from_dict
+from plans.kinematics.placing import load_scene, scene_from_dict
 
 ROOT = Path(__file__).resolve().parents[1]
 SEED = ROOT / "samples" / "dynamics_slider_crank.toml"
@@ -260,7 +260,7 @@ def test_a_flywheel_of_a_scene_with_no_loads(tmp_path, capsys):
 
 
 def test_cycle_check_of_the_seed_tables(tmp_path):
-    from plans.cycle.check import check_cycle
+    from plans.check.cycle import check_cycle
 
     rep = check_cycle(ROOT / "samples" / "checks" / "dynamics_seed004.toml")
     assert len(rep.items) == 14 * 20 - 56  # every figure of tables 1.1–1.4
@@ -276,7 +276,7 @@ def test_cycle_check_of_the_seed_tables(tmp_path):
 
 def test_cycle_check_passes_a_student_who_wrote_exact_figures(tmp_path):
     """Figures from finite differences of exact positions (not from the code under test)."""
-    from plans.cycle.check import check_cycle
+    from plans.check.cycle import check_cycle
 
     scene = load_scene(SEED)
     phis = np.array([15.0, 100.0, 250.0])
@@ -299,7 +299,7 @@ def test_cycle_check_passes_a_student_who_wrote_exact_figures(tmp_path):
 
 
 def test_cycle_check_bad_row_names_the_key(tmp_path):
-    from plans.cycle.check import check_cycle
+    from plans.check.cycle import check_cycle
 
     f = tmp_path / "c.toml"
     f.write_text(f'format = 1\nscene = "{SEED}"\n[cycle]\nphi_deg = [0, 30]\n[cycle.values]\nI_pr = [1]\n')

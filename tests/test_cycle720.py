@@ -21,7 +21,7 @@ import pytest
 from plans.cli import main
 from plans.cycle.dynamics import dynamics
 from plans.errors import InputError
-from plans.scene.model import load_scene, scene_from_dict
+from plans.kinematics.placing import load_scene, scene_from_dict
 
 ROOT = Path(__file__).resolve().parent.parent
 SINGLE = ROOT / "samples" / "single_four_stroke.toml"

@@ -17,8 +17,8 @@ from plans.demo import lesson
 from plans.forces.lever import zhukovsky_lever
 from plans.forces.polygons import analyse_forces
 from plans.kinematics.exact import solve
+from plans.kinematics.placing import load_scene
 from plans.results import solve_scene, to_json
-from plans.scene import load_scene
 
 SAMPLES = Path(__file__).resolve().parent.parent / "samples"
 SCENES = sorted(SAMPLES.glob("*.toml"))

@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from plans.errors import InputError
-from plans.scene.model import load_scene
+from plans.kinematics.placing import load_scene
 from plans.solution import solve
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -26,8 +26,8 @@ from drawings.paper.svg import SvgBackend, num
 from drawings.paper.text import layout, parse, point_label
 from plans.errors import InputError
 from plans.kinematics.exact import solve
+from plans.kinematics.placing import load_scene
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment
-from plans.scene.model import load_scene
 from plans.solution import Solution
 
 ROOT = Path(__file__).resolve().parents[1]

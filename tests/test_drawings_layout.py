@@ -18,7 +18,7 @@ from drawings.paper.backend import THIN, Recording
 from drawings.paper.sheet import GAP, compose, sheet_spec, usable
 from plans.errors import InputError
 from plans.kinematics.exact import solve
-from plans.scene.model import load_scene
+from plans.kinematics.placing import load_scene
 from plans.solution import Solution
 
 

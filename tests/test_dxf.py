@@ -43,7 +43,7 @@ def drawn() -> dict[str, list]:
     out = {kind: _draw(path) for kind, path in KIND_SAMPLES.items()}
     from drawings.cycle import extend  # the cycle's diagrams and dynamics sheets alone
     from drawings.paper.sheet import sheet_spec
-    from plans.scene.model import load_scene
+    from plans.kinematics.placing import load_scene
 
     scene = load_scene(SAMPLES / "v_engine_cycle.toml")
     out["cycle"] = extend(scene, sheet_spec(scene.raw, scene.path, scene.title), [])

@@ -25,7 +25,7 @@ from plans.errors import InputError
 from plans.io import read_toml
 from plans.kinematics import extreme
 from plans.kinematics.exact import solve
-from plans.scene.model import scene_from_dict
+from plans.kinematics.placing import scene_from_dict
 
 from .conftest import ROOT
 
@@ -239,3 +239,22 @@ def test_phi_start_bad_input(driver, field, words):
     with pytest.raises(InputError) as exc:
         _scene("whitworth", **driver)
     assert exc.value.field == field and words in str(exc.value)
+
+
+def test_the_scene_room_reads_the_request_and_the_kinematics_places_it():
+    """plans.scene reads phi_start as a request (no angle yet, and the exact analysis will not
+    read the positions of such a scene); placed by plans.kinematics.placing, or by plans.solve
+    given the unplaced scene, the positions are the extreme's, the same either way."""
+    from plans.kinematics.exact import solve
+    from plans.scene import model
+    from plans.scene.positions import FromExtreme
+
+    raw = _sample("shaper", phi_start="extreme_idle")
+    unplaced = model.scene_from_dict(raw, "shaper.toml")
+    assert unplaced.driver.placing == FromExtreme("extreme_idle", 12) and unplaced.driver.phis_deg == ()
+    with pytest.raises(ValueError, match="not placed"):
+        solve(unplaced)
+    placed = scene_from_dict(raw, "shaper.toml")
+    st = extreme.strokes(placed)
+    assert placed.driver.placing is None and placed.driver.phis_deg[0] == st.idle_deg != st.working_deg
+    assert plans.solve(unplaced).scene.driver.phis_deg == placed.driver.phis_deg

@@ -21,8 +21,8 @@ from plans.forces.loads import parse_loads
 from plans.forces.polygons import analyse_forces, force_polygons
 from plans.forces.shared import nice_scale
 from plans.kinematics.exact import solve
+from plans.kinematics.placing import load_scene, scene_from_dict
 from plans.kinematics.scales import is_round
-from plans.scene.model import load_scene, scene_from_dict
 
 from .conftest import SAMPLES, slider_crank_scene
 

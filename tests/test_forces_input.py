@@ -6,7 +6,7 @@ import pytest
 
 from plans.errors import InputError
 from plans.forces.loads import parse_loads
-from plans.scene.model import scene_from_dict
+from plans.kinematics.placing import scene_from_dict
 
 from .conftest import four_bar_scene, slider_crank_scene
 
@@ -90,7 +90,7 @@ def test_the_documented_example_parses():
     import tomllib
 
     import plans.forces.loads as loads_mod
-    from plans.scene.model import load_scene
+    from plans.kinematics.placing import load_scene
 
     from .conftest import SAMPLES
 

@@ -10,7 +10,7 @@ from plans.forces.lever import zhukovsky_lever
 from plans.forces.loads import parse_loads
 from plans.forces.polygons import analyse_forces
 from plans.kinematics.exact import solve
-from plans.scene.model import scene_from_dict
+from plans.kinematics.placing import scene_from_dict
 
 from .conftest import four_bar_scene, slider_crank_scene
 from .test_forces import _global_reactions, _largest

@@ -12,8 +12,8 @@ import pytest
 from plans.errors import InputError
 from plans.forces.analysis import kinetostatics
 from plans.kinematics.exact import solve
+from plans.kinematics.placing import load_scene, parse_scene, scene_from_dict
 from plans.results import solve_scene, to_json
-from plans.scene.model import load_scene, parse_scene, scene_from_dict
 
 from .conftest import SAMPLES
 

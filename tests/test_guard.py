@@ -215,7 +215,7 @@ def test_fmod_of_a_float_by_360_is_the_exact_remainder():
 def test_the_crank_at_a_huge_angle_is_where_exact_arithmetic_puts_it():
     from plans.kinematics import fast
     from plans.kinematics.exact import solve
-    from plans.scene.model import load_scene
+    from plans.kinematics.placing import load_scene
 
     big = 1.234567e21
     exact = float(Fraction(big) % 360)  # 256°, exactly
@@ -316,7 +316,7 @@ def test_every_file_is_written_through_the_guard():
 
 def test_a_command_that_answers_2_itself_leaves_nothing(tmp_path, monkeypatch, capsys):
     """``plans check`` prints its own error and returns 2: what it staged before is dropped."""
-    import plans.check.command as report
+    import plans.check_command as report
     from plans.errors import InputError
 
     check = _copy("checks/v_engine_coursework.toml", tmp_path)

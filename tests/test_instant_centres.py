@@ -18,8 +18,8 @@ import pytest
 
 from plans.kinematics.centres import Centre, all_links, centres_at, kennedy, velocities_at
 from plans.kinematics.exact import solve
+from plans.kinematics.placing import load_scene
 from plans.results import solve_scene, to_json
-from plans.scene.model import load_scene
 
 SAMPLES = Path(__file__).resolve().parent.parent / "samples" / "centres"
 MECHANISMS = ["four_bar", "slider_crank", "six_bar"]
@@ -222,7 +222,7 @@ def test_random_crank_rockers_and_offset_slider_cranks() -> None:
     an offset and an inclined guide), random positions, every centre by its definition."""
     import tomllib
 
-    from plans.scene.model import scene_from_dict
+    from plans.kinematics.placing import scene_from_dict
 
     rng = np.random.default_rng(2024)
     four = tomllib.loads((SAMPLES / "four_bar.toml").read_text(encoding="utf-8"))

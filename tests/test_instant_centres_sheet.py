@@ -13,7 +13,7 @@ from drawings.linkage import build_panels
 from drawings.paper.sheet import sheet_spec
 from plans.kinematics.centres import centres_at
 from plans.kinematics.exact import solve
-from plans.scene.model import load_scene
+from plans.kinematics.placing import load_scene
 
 SAMPLES = Path(__file__).resolve().parent.parent / "samples" / "centres"
 

@@ -11,7 +11,7 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from plans.kinematics.exact import solve
-from plans.scene.model import load_scene, scene_from_dict
+from plans.kinematics.placing import load_scene, scene_from_dict
 
 from .conftest import four_bar_scene, slider_crank_scene
 

@@ -128,7 +128,7 @@ def test_the_scan_finds_english_words():
 def test_demonstration_heading_in_the_page_language():
     """A Russian page is headed by the scene's Russian title, an English page by the English one."""
     from plans.demo.lesson import lesson
-    from plans.scene.model import load_scene
+    from plans.kinematics.placing import load_scene
 
     scene = load_scene(SAMPLES / "whitworth.toml")
     with open(SAMPLES / "whitworth.toml", "rb") as fh:

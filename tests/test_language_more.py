@@ -163,8 +163,8 @@ def _all_keys() -> set[str]:
     import importlib
 
     for name in ("plans.gears.model", "plans.cams.model", "plans.balancing.engine", "plans.synthesis.model",
-                 "plans.cycle.spec", "plans.cycle.check", "plans.scene.sheet", "plans.scene.friction",
-                 "plans.kinematics.extreme", "plans.kinematics.travel", "plans.group.build"):
+                 "plans.cycle.spec", "plans.check.cycle", "plans.scene.sheet", "plans.scene.friction",
+                 "plans.kinematics.extreme", "plans.scene.positions", "plans.group.build"):
         for const, value in vars(importlib.import_module(name)).items():
             if const.isupper() and isinstance(value, set | frozenset | tuple | dict):
                 out |= {k for k in value if isinstance(k, str) and re.fullmatch(r"[a-z]\w*", k)}
@@ -302,7 +302,7 @@ def _mm_written_as_metres(tmp_path: Path) -> Path:
 def test_a_unit_slip_is_warned_about_and_the_run_goes_on(tmp_path, capsys):
     """Millimetres with unit = "m": each link and the crank pin's speed beyond any machine,
     in the run's language, on stderr; the exit status and the output are the run's."""
-    from plans.scene.model import load_scene
+    from plans.kinematics.placing import load_scene
 
     path = _mm_written_as_metres(tmp_path)
     scene = load_scene(SAMPLES / "slider_crank.toml")

@@ -130,7 +130,7 @@ def test_help_in_russian_keeps_the_options_and_translates_argparse(capsys):
 
 def test_a_warning_of_a_library_call_speaks_the_scenes_language(tmp_path, capsys):
     """No command line: the scene's [sheet] language says the warning's language."""
-    from plans.scene.model import load_scene
+    from plans.kinematics.placing import load_scene
 
     text = (SAMPLES / "slider_crank.toml").read_text(encoding="utf-8").replace('\nunit = "mm"', '\nunit = "m"', 1)
     for lang, prefix in (("ru", "plans: внимание: "), ("en", "plans: warning: ")):

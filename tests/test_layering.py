@@ -181,10 +181,10 @@ SOLVE_START = {
     "drawings", "drawings.cli", "drawings.console",
     "plans", "plans.cli", "plans.errors", "plans.guard", "plans.io", "plans.kinds", "plans.language",
     "plans.lines", "plans.phrases", "plans.reader", "plans.records", "plans.results", "plans.tolerances",
-    "plans.units", "plans.scene", "plans.scene.model", "plans.scene.options",
+    "plans.units", "plans.scene", "plans.scene.model", "plans.scene.options", "plans.scene.positions",
     "plans.kinematics", "plans.kinematics.assur", "plans.kinematics.cases", "plans.kinematics.construction",
     "plans.kinematics.context", "plans.kinematics.dyads", "plans.kinematics.exact", "plans.kinematics.fast",
-    "plans.kinematics.fast_arrays", "plans.kinematics.plan", "plans.kinematics.scales",
+    "plans.kinematics.fast_arrays", "plans.kinematics.placing", "plans.kinematics.plan", "plans.kinematics.scales",
     "plans.kinematics.structure",
 }
 

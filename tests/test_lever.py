@@ -9,7 +9,7 @@ from plans.forces.lever import force_rows, lever_plan, table_lines, zhukovsky_le
 from plans.forces.loads import parse_loads
 from plans.forces.polygons import analyse_forces
 from plans.kinematics.exact import solve
-from plans.scene.model import load_scene, scene_from_dict
+from plans.kinematics.placing import load_scene, scene_from_dict
 
 from .conftest import SAMPLES
 

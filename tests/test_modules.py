@@ -1,5 +1,5 @@
 """How the modules of ``plans`` and ``drawings`` depend on each other, read from their source:
-no import cycle inside a room (a sub-package, or a package's own top-level modules), lazy
+no import cycle among the modules (inside a room or across rooms) nor among the rooms, lazy
 imports (inside a function) and ``TYPE_CHECKING`` imports counted; no private name (``_x``)
 taken from another module; no module longer than a reader takes in."""
 
@@ -81,12 +81,13 @@ def _room(mod: str) -> str:
     return ".".join(parts[:2]) if len(parts) > 2 or (len(parts) == 2 and is_package) else parts[0]
 
 
-def _graph() -> dict[str, set[str]]:
+def _graph(across: bool = False) -> dict[str, set[str]]:
+    """Module -> the modules of its room it imports (``across``: of any room)."""
     graph: dict[str, set[str]] = {m: set() for m in MODULES}
     for m, p in MODULES.items():
         for mod, _, _ in _imports(m, p):
             dep = _ours(mod)
-            if dep is not None and dep != m and _room(dep) == _room(m):
+            if dep is not None and dep != m and (across or _room(dep) == _room(m)):
                 graph[m].add(dep)
     return graph
 
@@ -154,6 +155,12 @@ def test_no_import_cycle_inside_a_room():
     assert _cycles(_graph()) == []
 
 
+def test_no_import_cycle_among_all_the_modules():
+    """Across rooms too: no module reaches itself through the modules it imports (the scene's
+    reader, say, never through the kinematics that places its positions)."""
+    assert _cycles(_graph(across=True)) == []
+
+
 def test_no_private_name_crosses_modules():
     found = []
     for m, p in MODULES.items():
@@ -172,21 +179,31 @@ def test_no_private_name_crosses_modules():
     assert found == []
 
 
-@pytest.mark.parametrize("name", ["private", "cycle"])
+@pytest.mark.parametrize("name", ["private", "cycle", "cycle across rooms"])
 def test_the_checks_see_what_they_forbid(name, tmp_path, monkeypatch):
-    """A private name taken across modules, and a lazy import closing a loop, are found."""
+    """A private name taken across modules, a lazy import closing a loop inside a room, and a
+    TYPE_CHECKING import closing one through another room, are found."""
     pkg = tmp_path / "plans" / "room"
-    pkg.mkdir(parents=True)
+    other = tmp_path / "plans" / "other"
+    for folder in (pkg, other):
+        folder.mkdir(parents=True)
+        (folder / "__init__.py").write_text("")
     (tmp_path / "plans" / "__init__.py").write_text("")
-    (pkg / "__init__.py").write_text("")
-    (pkg / "a.py").write_text("from plans.room.b import _hidden\n" if name == "private"
-                              else "def f():\n    from plans.room import b\n")
+    (pkg / "a.py").write_text({"private": "from plans.room.b import _hidden\n",
+                               "cycle": "def f():\n    from plans.room import b\n",
+                               "cycle across rooms": "from plans.other.c import g\n"}[name])
     (pkg / "b.py").write_text("_hidden = 1\n" if name == "private" else "from plans.room.a import f\n")
+    (other / "c.py").write_text("from typing import TYPE_CHECKING\nif TYPE_CHECKING:\n    from plans.room.b import x\n")
     mods = {"plans": tmp_path / "plans" / "__init__.py", "plans.room": pkg / "__init__.py",
-            "plans.room.a": pkg / "a.py", "plans.room.b": pkg / "b.py"}
+            "plans.room.a": pkg / "a.py", "plans.room.b": pkg / "b.py",
+            "plans.other": other / "__init__.py", "plans.other.c": other / "c.py"}
     monkeypatch.setitem(globals(), "MODULES", mods)
     if name == "cycle":
         assert _cycles(_graph()) == [["plans.room.a", "plans.room.b"]]
+    elif name == "cycle across rooms":
+        assert _cycles(_graph()) == []  # inside each room no loop
+        assert _cycles(_graph(across=True)) == [["plans.other.c", "plans.room.a", "plans.room.b"]]
+        assert _cycles(_rooms_graph()) == [["plans.other", "plans.room"]]
     else:
         assert _imports("plans.room.a", pkg / "a.py") == [("plans.room.b", "_hidden", 1)]
 
@@ -233,21 +250,41 @@ def _rooms_graph() -> dict[str, set[str]]:
 
 
 #: The rooms at the bottom of the pipeline and the other kinds' rooms: each imports only rooms
-#: below it, so none is in an import cycle with another room.
+#: below it.
 BASE_ROOMS = ("plans.scene", "plans.kinematics", "plans.forces", "plans.balancing", "plans.gears",
               "plans.cams", "drawings.paper")
-#: The one cycle left among them: the scene's reader places the positions given by the
-#: piston's travel or from the output's extreme ([driver] s_mm, phi_start) with the
-#: kinematics (plans.kinematics.travel, .extreme), which reads the scene.
-KNOWN_BASE_CYCLES = [["plans.kinematics", "plans.scene"]]
 
 
-def test_the_base_rooms_are_in_no_import_cycle_with_another_room():
-    cycles = _cycles(_rooms_graph())
-    assert sorted(c for c in cycles if set(c) & set(BASE_ROOMS)) == KNOWN_BASE_CYCLES
+def test_no_import_cycle_between_rooms():
+    """The rooms (sub-packages, and the top-level modules each a room of its own: the shared
+    modules and the composers above the rooms) form a DAG: each imports only rooms below it."""
+    assert _cycles(_rooms_graph()) == []
+
+
+#: The modules above the rooms that compose them (a solve, its outputs, the tables read for
+#: it, the commands).
+COMPOSERS = {"plans.solution", "plans.results", "plans.tables", "plans.cli", "plans.check_command"}
+
+
+def test_the_base_rooms_import_only_what_lies_below_them():
     graph = _rooms_graph()
+    for room in BASE_ROOMS:
+        packages = {r for r in graph[room] if MODULES[r].name == "__init__.py"}
+        assert packages <= set(BASE_ROOMS) and not graph[room] & COMPOSERS, (room, sorted(graph[room]))
     assert {"plans.forces", "plans.cycle"} & graph["plans.scene"] == set()  # the tables: plans.tables
-    assert graph["plans.scene"] - {"plans.kinematics"} <= {m for m in MODULES if _room(m) == "plans"}
+    # the scene reads, and validates, what the kinematics places (plans.kinematics.placing)
+    assert graph["plans.scene"] <= {m for m in MODULES if _room(m) == "plans"}
+    assert "plans.scene" in graph["plans.kinematics"]
+
+
+def test_the_upper_rooms_lie_in_order():
+    """What closed loops among the upper rooms stays open: the cycle's check is the check
+    room's, the check command is above the group's gradebook and sheets, the drawings of the
+    cycle take their panels from the paper toolkit, not from the linkage's sheets."""
+    graph = _rooms_graph()
+    assert "plans.check" not in graph["plans.cycle"]
+    assert {"plans.group", "plans.accuracy", "plans.check_command"} & graph["plans.check"] == set()
+    assert "drawings.linkage" not in graph["drawings.cycle"]
 
 
 def test_the_rooms_graph_sees_a_lazy_import_between_rooms(tmp_path, monkeypatch):

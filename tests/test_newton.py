@@ -12,7 +12,7 @@ from plans.accuracy import newton, reference
 from plans.accuracy.oracles import oracle_from_kinematics, oracle_from_reference, solver_errors
 from plans.errors import ConstructionError, Locked, NotAssemblable
 from plans.kinematics import exact as kinematics
-from plans.scene.model import load_scene
+from plans.kinematics.placing import load_scene
 
 SAMPLES = Path(__file__).resolve().parent.parent / "samples"
 CYCLE = np.linspace(0.0, 360.0, 72, endpoint=False) + 2.5

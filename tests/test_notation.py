@@ -15,7 +15,7 @@ import pytest
 import plans
 from plans.errors import InputError
 from plans.io import read_toml
-from plans.scene.model import scene_from_dict
+from plans.kinematics.placing import scene_from_dict
 from plans.scene.notation import resolve
 
 from .conftest import ROOT

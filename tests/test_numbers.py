@@ -8,8 +8,8 @@ import re
 
 import pytest
 
+from plans.kinematics.placing import load_scene
 from plans.results import solve_scene, table, to_json
-from plans.scene.model import load_scene
 from plans.units import DUST, clean, percent
 
 from .conftest import SAMPLES

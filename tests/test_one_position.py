@@ -24,7 +24,7 @@ from plans.kinematics.cases import Arrays, Numbers
 from plans.kinematics.construction import plans_of
 from plans.kinematics.dyads import Builder, PerfectPencil, Scheme
 from plans.kinematics.exact import solve
-from plans.scene.model import load_scene
+from plans.kinematics.placing import load_scene
 
 SAMPLES = sorted((Path(__file__).resolve().parent.parent / "samples").glob("*.toml"))
 TOL = 1e-12

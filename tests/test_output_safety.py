@@ -19,8 +19,8 @@ import pytest
 
 from drawings.cli import main
 from drawings.paper import export
+from plans.kinematics.placing import parse_scene
 from plans.reader import Reader, check_keys, did_you_mean, reduce_deg
-from plans.scene.model import parse_scene
 
 ROOT = Path(__file__).resolve().parent.parent
 DATA = Path(__file__).resolve().parent / "data" / "hostile"
@@ -293,8 +293,8 @@ def test_console_script_runs_the_command():
 @pytest.mark.parametrize("name", ["slider_crank", "six_bar", "v_engine_cycle", "dynamics_slider_crank"])
 def test_json_written_in_pieces_is_the_whole_json_to_the_byte(name):
     from plans.io import dumps
+    from plans.kinematics.placing import load_scene
     from plans.results import solve_scene, to_json, write_json
-    from plans.scene.model import load_scene
 
     sol = solve_scene(load_scene(ROOT / "samples" / f"{name}.toml"))
     pieces: list[str] = []

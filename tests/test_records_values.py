@@ -32,7 +32,7 @@ def test_no_record_holds_a_table_to_fill_later():
 def test_solving_a_scene_and_its_forces_leaves_the_records_as_they_were():
     from plans.forces.analysis import kinetostatics
     from plans.kinematics.exact import solve
-    from plans.scene.model import load_scene
+    from plans.kinematics.placing import load_scene
 
     scene = load_scene("samples/v_engine.toml")
     before = pickle.dumps(scene)
@@ -47,9 +47,9 @@ def test_solving_a_scene_and_its_forces_leaves_the_records_as_they_were():
 
 
 def test_what_is_derived_is_the_records_own_and_goes_with_it():
+    from plans.kinematics.placing import load_scene
     from plans.kinematics.structure import analyse
     from plans.records import _KEPT
-    from plans.scene.model import load_scene
 
     scene = load_scene("samples/four_bar.toml")
     st = analyse(scene)

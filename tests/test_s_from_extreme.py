@@ -17,7 +17,7 @@ import pytest
 from plans.cycle.diagrams import diagrams
 from plans.errors import InputError
 from plans.io import read_toml
-from plans.scene.model import scene_from_dict
+from plans.kinematics.placing import scene_from_dict
 
 from .conftest import ROOT
 

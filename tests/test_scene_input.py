@@ -12,8 +12,8 @@ import pytest
 
 from plans.cli import main
 from plans.errors import InputError
+from plans.kinematics.placing import scene_from_dict
 from plans.kinematics.structure import analyse
-from plans.scene.model import scene_from_dict
 
 from .conftest import slider_crank_scene
 
@@ -104,7 +104,7 @@ def test_not_assemblable_is_exit_2(tmp_path, capsys):
 
 
 def test_structure_of_samples():
-    from plans.scene.model import load_scene
+    from plans.kinematics.placing import load_scene
 
     kinds = {p: [g.kind for g in analyse(load_scene(f"samples/{p}.toml")).groups]
              for p in ("v_engine", "slider_crank", "four_bar", "shaper", "six_bar", "scotch_yoke")}

@@ -60,7 +60,7 @@ def test_a_solution_solved_at_another_fit_is_drawn_as_solved():
     """Only the drawing's own choice grows: a Solution solved at a fit of its own keeps its
     scales on the sheet."""
     from drawings.linkage import fit_for
-    from plans.scene.model import load_scene
+    from plans.kinematics.placing import load_scene
 
     scene = load_scene(SAMPLES / "v_engine.toml")
     fit = fit_for(scene.sheet_for()) * 0.8

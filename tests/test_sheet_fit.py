@@ -11,8 +11,8 @@ import shapely
 
 from drawings.linkage import draw
 from drawings.paper.sheet import usable
+from plans.kinematics.placing import load_scene
 from plans.kinematics.scales import is_round
-from plans.scene.model import load_scene
 from plans.solution import solve
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -17,8 +17,8 @@ import plans
 from plans import quantities
 from plans.io import read_toml
 from plans.kinds import read_kind
+from plans.kinematics.placing import load_scene, scene_from_dict
 from plans.results import to_json
-from plans.scene.model import load_scene, scene_from_dict
 
 ROOT = Path(__file__).resolve().parent.parent
 SAMPLES = ROOT / "samples"

@@ -14,8 +14,8 @@ from plans.accuracy import floor, peers, reference
 from plans.accuracy.oracles import chain_scene
 from plans.errors import ConstructionError
 from plans.kinematics import exact
+from plans.kinematics.placing import load_scene
 from plans.kinematics.structure import _orient, analyse
-from plans.scene.model import load_scene
 
 SAMPLES = sorted((Path(__file__).resolve().parent.parent / "samples").glob("*.toml"))
 FIELDS = ("rot", "r0", "omega", "v0", "eps", "a0")

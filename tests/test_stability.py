@@ -334,8 +334,8 @@ def test_stiff_loads_three_balancing_loads_agree():
 def test_ram_guide_through_the_rocker_pivot_keeps_the_inertia_couple(tmp_path, y_mm):
     # The ram's guide through C (to the last subnormal): D stays at C, the ram's inertia force
     # is zero or dust, and its offset force would lie farther than any sheet: it stays a couple.
+    from plans.kinematics.placing import load_scene
     from plans.results import solve_scene, write_json
-    from plans.scene.model import load_scene
 
     text = (Path(__file__).resolve().parent.parent / "samples" / "six_bar.toml").read_text(encoding="utf-8")
     assert "through = [0, 520]" in text and 'inertia = "offset_force"' in text
@@ -355,8 +355,8 @@ def test_gas_force_at_a_dead_centre_solved_alone_is_the_one_of_the_whole_turn():
     # At the dead centre the piston's velocity is round-off; the stroke that begins there is
     # the acceleration's, whatever other positions are solved with it.
     from plans.io import read_toml
+    from plans.kinematics.placing import scene_from_dict
     from plans.results import solve_scene
-    from plans.scene.model import scene_from_dict
 
     path = Path(__file__).resolve().parent.parent / "samples" / "v_engine.toml"
     raw = read_toml(path)
@@ -377,8 +377,8 @@ def test_a_ram_of_subnormal_mass_keeps_the_promise(tmp_path):
     # A subnormal mass is refused by the number rule (0 or at least 1e-12); at the smallest
     # mass accepted its inertia force is dust of newtons: the offset force divides by it.
     from plans.errors import InputError
+    from plans.kinematics.placing import load_scene
     from plans.results import solve_scene, table
-    from plans.scene.model import load_scene
 
     text = (Path(__file__).resolve().parent.parent / "samples" / "six_bar.toml").read_text(encoding="utf-8")
     assert text.count("mass = 20.0") == 1

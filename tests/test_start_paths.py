@@ -19,9 +19,9 @@ import shapely
 from plans.forces import polygons
 from plans.forces.analysis import kinetostatics
 from plans.kinematics.exact import solve
+from plans.kinematics.placing import load_scene
 from plans.lines import along, cross, meet
 from plans.phrases import PHRASES, UNITS_RU, Phrase, number, phrase
-from plans.scene.model import load_scene
 
 SAMPLES = sorted((Path(__file__).resolve().parent.parent / "samples").glob("*.toml"))
 

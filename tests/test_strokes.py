@@ -17,7 +17,7 @@ import plans
 from plans.errors import InputError
 from plans.io import read_toml
 from plans.kinematics.exact import solve
-from plans.scene.model import scene_from_dict
+from plans.kinematics.placing import scene_from_dict
 
 from .conftest import ROOT
 

@@ -21,7 +21,7 @@ import pytest
 
 from plans.errors import InputError
 from plans.kinematics import exact
-from plans.scene.model import load_scene, scene_from_dict
+from plans.kinematics.placing import load_scene, scene_from_dict
 from plans.synthesis.design import design
 from plans.synthesis.model import task_from_dict
 from plans.synthesis.numeric import brent

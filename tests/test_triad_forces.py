@@ -12,7 +12,7 @@ import pytest
 from plans.forces.analysis import kinetostatics
 from plans.forces.triad import TriadForces
 from plans.kinematics.exact import solve
-from plans.scene.model import load_scene
+from plans.kinematics.placing import load_scene
 
 SAMPLE = Path(__file__).resolve().parent.parent / "samples" / "class3" / "triad_crusher.toml"
 

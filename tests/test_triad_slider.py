@@ -17,8 +17,8 @@ from plans.forces.analysis import kinetostatics
 from plans.forces.triad import TriadForces
 from plans.kinematics.construction import build_many
 from plans.kinematics.exact import solve
+from plans.kinematics.placing import load_scene
 from plans.kinematics.structure import analyse
-from plans.scene.model import load_scene
 
 from .newton2 import newton2
 

@@ -157,7 +157,7 @@ class _TwoAngles:
 
 @pytest.fixture(scope="module")
 def scene():
-    from plans.scene.model import load_scene
+    from plans.kinematics.placing import load_scene
 
     return load_scene(str(SAMPLE))
 
@@ -271,7 +271,7 @@ def test_a_fold_is_named_not_jumped_over(tmp_path, capsys):
     last step would land on the other branch.  The two-angle solver written apart meets its
     own fold (its determinant changes sign) at the same angle."""
     from plans.cli import main
-    from plans.scene.model import load_scene
+    from plans.kinematics.placing import load_scene
 
     text = SAMPLE.read_text(encoding="utf-8").replace("angle_deg = 165 }", "angle_deg = 75 }")
     text = text.replace("C = [250, 450]", "C = [150, 450]")
@@ -332,7 +332,7 @@ def test_the_group_cut_free_shows_the_slot_from_its_origin_past_the_pin():
     from drawings.linkage import build_panels
     from drawings.paper.sheet import sheet_spec
     from plans.kinematics.exact import solve
-    from plans.scene.model import load_scene
+    from plans.kinematics.placing import load_scene
 
     spec = sheet_spec({"sheet": {"positions": [30.0], "panels": ["group"]}}, str(SAMPLE))
     panels, mu_l = build_panels(plans.solve(SAMPLE, fit=spec.fit), spec)

@@ -66,9 +66,9 @@ def test_dead_position_named_with_group_and_angle(tmp_path, capsys):
     # axes do meet in one point there, and the group goes no further
     A0, D0, E0, F0, B, C = _design()
     t = Triad(E0 - D0, F0 - D0, abs(D0 - A0), abs(E0 - B), abs(F0 - C))
+    from plans.kinematics.placing import load_scene
     from plans.kinematics.structure import analyse
     from plans.kinematics.triad_exact import _assemble
-    from plans.scene.model import load_scene
 
     g = analyse(load_scene(str(f))).triads()[0]
 
@@ -109,7 +109,7 @@ def test_instant_centres_of_the_class_3_samples():
     from pathlib import Path
 
     from plans.kinematics.exact import solve
-    from plans.scene.model import load_scene
+    from plans.kinematics.placing import load_scene
 
     from .test_instant_centres import _check
 

@@ -21,8 +21,8 @@ pytest.importorskip("uvicorn")
 
 from drawings.workbench.server import MAX_BODY, bind, hosts_for, make_app  # noqa: E402
 from plans.errors import PlansError, one_line  # noqa: E402
+from plans.kinematics.placing import parse_scene  # noqa: E402
 from plans.results import solve_scene, to_json  # noqa: E402
-from plans.scene.model import parse_scene  # noqa: E402
 
 SAMPLES = Path(__file__).resolve().parents[1] / "samples"
 

@@ -27,8 +27,8 @@ pytest.importorskip("tomlkit")
 
 from drawings.workbench.edits import EditError, edit  # noqa: E402
 from drawings.workbench.server import EMPTY, bind, hosts_for, make_app  # noqa: E402
+from plans.kinematics.placing import parse_scene  # noqa: E402
 from plans.results import solve_scene, to_json  # noqa: E402
-from plans.scene.model import parse_scene  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 SAMPLES = ROOT / "samples"

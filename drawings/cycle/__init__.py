@@ -28,9 +28,9 @@ from drawings.cycle.dynamics_diagrams import (
     w_panel,
 )
 from drawings.cycle.words import UNITS, tr
-from drawings.linkage.panels import Panel
 from drawings.paper.backend import Recording
 from drawings.paper.common import fmt
+from drawings.paper.panel_frame import Panel
 from drawings.paper.sheet import Sheet, SheetSpec, compose
 from plans.cycle import spline
 from plans.cycle.diagrams import Diagrams
@@ -150,7 +150,7 @@ def table_panels(tables: Sequence[CycleTable], lang: str, prefix: str,
 def analogue_plans(plans: Sequence, lang: str, style: str) -> list[Panel]:
     """The plans of velocity analogues at the table's positions (``Solution.analogue_plans``:
     velocity plans at μ_v = μ/|ω1|, each segment the analogue v/ω1 at μ, mm per m), drawn."""
-    from drawings.linkage.panels import plan_panel
+    from drawings.plan_panel import plan_panel
 
     return [plan_panel(p, lang, style, pid=f"analogue-{k + 1}") for k, p in enumerate(plans)]
 
@@ -337,7 +337,7 @@ def diagrams_sheet_seconds(path: str | Path, repeat: int = 5) -> float:
     """Best time of the diagrams sheet of a scene to SVG text: engine, panels, layout, SVG."""
     import time
 
-    from plans.scene.model import load_scene
+    from plans.kinematics.placing import load_scene
     from plans.solution import solve
 
     scene = load_scene(path)

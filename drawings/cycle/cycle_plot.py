@@ -13,9 +13,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from drawings.linkage.panels import SMALL_SIZE, Panel, finish
 from drawings.paper.backend import FILLED, HAIR, MAIN, PAPER, THIN, Recording, Style
 from drawings.paper.common import arrow, fmt
+from drawings.paper.panel_frame import SMALL_SIZE, Panel, finish
 from drawings.paper.text import column_edges, layout
 
 EXACT = Style(width=0.2, stroke="#777", dash=(1.5, 0.8), cls="exact")

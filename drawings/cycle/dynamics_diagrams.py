@@ -10,9 +10,9 @@ import numpy as np
 
 from drawings.cycle.cycle_plot import EXACT, GRAPH, Axes, number, plot_panel, wide_table
 from drawings.cycle.words import tr
-from drawings.linkage.panels import Panel
 from drawings.paper.backend import HAIR, MAIN, THIN, Recording, Style
 from drawings.paper.common import fmt
+from drawings.paper.panel_frame import Panel
 from drawings.paper.text import layout
 from plans.cycle import spline
 from plans.cycle.dynamics import Dynamics
@@ -115,8 +115,7 @@ def w_panel(d: Dynamics, lang: str, first: int = 1, size: float = 1.0) -> Panel:
     its own round scales (the curve about W_WIDTH_MM × W_HEIGHT_MM, readable; ``size`` times
     that on a small sheet, its letters the same), every position numbered (coincident ones
     share a label: "1, 13")."""
-    from drawings.linkage.overview import coincident_positions
-    from drawings.paper.common import Placer
+    from drawings.paper.common import Placer, coincident_positions
     from plans.kinematics.scales import round_scale
 
     w = d.wittenbauer

@@ -23,7 +23,8 @@ from drawings.linkage.panels import (
 )
 from drawings.paper.fonts import metrics, require, use
 from drawings.paper.sheet import Sheet, SheetSpec, compose
-from plans.scene.model import Scene, load_scene
+from plans.kinematics.placing import load_scene
+from plans.scene.model import Scene
 from plans.solution import Solution
 from plans.solution import solve as solve_scene
 

@@ -26,7 +26,7 @@ from drawings.linkage.panels import (
     scale_text,
 )
 from drawings.paper.backend import Recording, Style, Transform
-from drawings.paper.common import Placer, angle, arrow, dot, fmt, ident
+from drawings.paper.common import Placer, angle, arrow, coincident_positions, dot, fmt, ident
 from drawings.paper.i18n import tr
 from drawings.paper.text import layout, point_label
 from plans.errors import InputError, PlansError, Said
@@ -118,16 +118,6 @@ def _walks(edges: Iterable[tuple[str, str]]) -> list[list[str]]:
             path.pop()
         out.append(path)
     return out
-
-
-def coincident_positions(points: Sequence[tuple[float, float]]) -> list[list[int]]:
-    """The positions whose sheet points fall in one 0.3 mm cell (they share one mark and one
-    label, "1, 11"), each group in order of position, the groups in order of first position."""
-    groups: dict[tuple[float, float], list[int]] = {}
-    for k, p in enumerate(points):
-        key = (round(p[0] / 0.3) * 0.3, round(p[1] / 0.3) * 0.3)
-        groups.setdefault(key, []).append(k)
-    return list(groups.values())
 
 
 def numbered_points(scene) -> list[str]:

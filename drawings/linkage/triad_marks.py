@@ -9,7 +9,7 @@ import numpy as np
 
 from drawings.paper.backend import Recording, Style, Transform
 from drawings.paper.common import Placer, dot, ident
-from plans.kinematics.triad_plans import PAIRS, assur_point, axes_of
+from plans.kinematics.triad_plans import PAIRS, special_point_of
 
 AXIS = Style(width=0.18, stroke="#333", dash=(6.0, 1.0, 1.0, 1.0), cls="axis")
 #: S farther than this many times the group's size from its pairs is not drawn (the axes
@@ -43,12 +43,12 @@ def _mark(rec: Recording, placer: Placer, T: Transform, S: complex, Q: list[comp
 
 def scheme_points(rec: Recording, placer: Placer, T: Transform, scene: Any, kin: Any, k: int, pid: str,
                   size: float) -> None:
-    """S of every class-III group at position k on the scheme (labels of ``size``)."""
+    """S of every class-III group at position k on the scheme (labels of ``size``): S, the
+    leashes and their pairs as the solved kinematics keeps them (the JSON's own), drawn."""
     triads = kin.structure.triads()
     for n, g in enumerate(triads):
-        S, choice = assur_point(kin, g)
-        Qs, _, Ps = axes_of(kin, g)
-        Q = [complex(np.broadcast_to(x, np.shape(Ps[0]))[k]) for x in Qs]
+        S, choice, Qs, Ps = special_point_of(kin, g)  # as the solved kinematics keeps it
+        Q = [complex(x[k]) for x in Qs]
         P = [complex(x[k]) for x in Ps]
         _mark(rec, placer, T, complex(S[k]), Q, P, PAIRS[int(choice[k])], f"{pid}-{ident(g.name)}", size,
               "S" if len(triads) == 1 else f"S{'′' * n}")

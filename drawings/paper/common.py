@@ -88,6 +88,16 @@ def dot(b: Backend, c: Pt, r: float = 0.55, eid: str = "") -> None:
     b.circle(c, r, FILLED, eid)
 
 
+def coincident_positions(points: Sequence[tuple[float, float]]) -> list[list[int]]:
+    """The positions whose sheet points fall in one 0.3 mm cell (they share one mark and one
+    label, "1, 11"), each group in order of position, the groups in order of first position."""
+    groups: dict[tuple[float, float], list[int]] = {}
+    for k, p in enumerate(points):
+        key = (round(p[0] / 0.3) * 0.3, round(p[1] / 0.3) * 0.3)
+        groups.setdefault(key, []).append(k)
+    return list(groups.values())
+
+
 def box_poly(box: tuple[float, float, float, float], pad: float = 0.0) -> shapely.Geometry:
     return shapely.box(box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad)
 

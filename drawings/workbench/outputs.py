@@ -48,7 +48,7 @@ def design_json(text: str, name: str) -> bytes:
 
 def demo_page(text: str, name: str) -> bytes:
     from drawings.demo import page
-    from plans.scene.model import parse_scene
+    from plans.kinematics.placing import parse_scene
 
     return page(parse_scene(text, name)).encode("utf-8")
 

@@ -282,7 +282,7 @@ class Workbench:
 
     def _template(self, scene: Path) -> dict[str, Any]:
         from plans.check.forms import template_toml
-        from plans.scene.model import load_scene
+        from plans.kinematics.placing import load_scene
 
         text = template_toml(load_scene(scene), scene.name)
         name = scene.with_name(f"{scene.stem}_check.toml")

@@ -69,8 +69,8 @@ def solved(text: str, name: str, data: dict[str, Any] | None = None) -> Any:
         got = _recall(_SOLVED, key)
         if got is not None:
             return got
+        from plans.kinematics.placing import parse_scene, scene_from_dict
         from plans.results import solve_scene
-        from plans.scene.model import parse_scene, scene_from_dict
 
         scene = parse_scene(text, name) if data is None else scene_from_dict(data, name)
         got = solve_scene(scene)
@@ -221,7 +221,8 @@ def forces_json(text: str, name: str) -> bytes:
 
     sol = solved(text, name)
     with _lock_for((text, name)):
-        panels = [] if sol.forces is None else cycle_forces(*sol.forces)
+        panels = [] if sol.forces is None else cycle_forces(sol.forces.analysis, sol.forces.lever,
+                                                             sol.force_polygons)  # read, not drawn again
     for pn in panels:  # each label as the page writes it in either language
         labels = {*(pn.get("points") or {}), *(g["label"] for g in pn.get("segments", []) if g.get("label"))}
         pn["said"] = {lang: {lb: page_label(lb, lang, resolve(sol.scene.scale_style or "", lang)[2]) for lb in sorted(labels)}

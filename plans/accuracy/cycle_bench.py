@@ -38,7 +38,7 @@ def records(samples: Path, quick: bool = False) -> list[Any]:
     from plans.accuracy.oracles import Record
     from plans.cycle.dynamics import dynamics
     from plans.cycle.spec import dynamics_spec
-    from plans.scene.model import load_scene
+    from plans.kinematics.placing import load_scene
 
     out = []
     seed = samples / "dynamics_slider_crank.toml"

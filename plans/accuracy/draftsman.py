@@ -8,10 +8,10 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from plans.accuracy.oracles import norms
 from plans.kinematics import exact as kinematics
 from plans.kinematics.construction import nice_scale, plans_of
 from plans.kinematics.dyads import Builder, Scheme, unit
+from plans.kinematics.scales import norms
 from plans.lines import meet
 from plans.scene.model import Scene
 

@@ -285,7 +285,7 @@ def _draw(src: Path, tmp: Path, main: Callable[[list[str]], int]) -> Result:
 def _read(kind: str, data: dict[str, Any], path: str) -> None:
     """The reader of a file of ``kind`` (what its command reads before it solves)."""
     if kind == "linkage":
-        from plans.scene.model import scene_from_dict
+        from plans.kinematics.placing import scene_from_dict
 
         scene = scene_from_dict(data, path)
         if "loads" in data:
@@ -308,7 +308,7 @@ def _read(kind: str, data: dict[str, Any], path: str) -> None:
         module, name = READERS[kind].split(":")
         getattr(importlib.import_module(module), name)(data, path)
     elif isinstance(data.get("cycle"), dict) and "positions" not in data:
-        from plans.cycle.check import check_cycle
+        from plans.check.cycle import check_cycle
 
         check_cycle(path)
     else:

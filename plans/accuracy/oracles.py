@@ -15,8 +15,10 @@ import numpy as np
 
 from plans.errors import PlansError
 from plans.kinematics import exact as kinematics
+from plans.kinematics.placing import load_scene, scene_from_dict
+from plans.kinematics.scales import norms
 from plans.kinematics.structure import analyse
-from plans.scene.model import Scene, load_scene, scene_from_dict
+from plans.scene.model import Scene
 
 if TYPE_CHECKING:  # mpmath is an optional dependency (the ``bench`` extra): imported where used
     from plans.accuracy import reference
@@ -47,17 +49,6 @@ def oracle_from_kinematics(kin: kinematics.Kinematics) -> Oracle:
     links = tuple(k for k in sorted(kin.scene.links) if k != kin.scene.driver.link)
     return Oracle("exact analysis", pts, links, lambda p: kin.point(p),  # type: ignore[arg-type,return-value]
                   lambda k: (kin.omega(k), kin.eps(k)))
-
-
-def norms(scene: Scene) -> dict[str, float]:
-    """Sizes of the known vectors: the crank's length, v_A, a_A, ω1, ω1²."""
-    d = scene.driver
-    crank = scene.links[d.link]
-    l1 = abs(crank.points[crank.axis[1]] - crank.points[crank.axis[0]])
-    w = abs(d.omega)
-    acc = math.hypot(w * w, d.eps)
-    return {"r": l1, "v": max(w * l1, 1e-300), "a": max(acc * l1, 1e-300), "omega": max(w, 1e-300),
-            "eps": max(acc, 1e-300)}
 
 
 def solver_errors(scene: Scene, oracle: Oracle, point: Callable, omega: Callable, eps: Callable,

@@ -35,8 +35,9 @@ from plans.accuracy.timing import (
     us,
 )
 from plans.kinematics import exact
+from plans.kinematics.placing import load_scene
 from plans.kinematics.structure import analyse
-from plans.scene.model import Scene, load_scene
+from plans.scene.model import Scene
 
 #: Exact kinematics at 360 positions: at most this many times the numpy floor ...
 FLOOR_RATIO = 1.5

@@ -22,7 +22,8 @@ from plans.accuracy.oracles import (
 from plans.errors import ConstructionError
 from plans.kinematics import construction
 from plans.kinematics import exact as kinematics
-from plans.scene.model import Scene, load_scene, scene_from_dict
+from plans.kinematics.placing import load_scene, scene_from_dict
+from plans.scene.model import Scene
 
 if TYPE_CHECKING:  # mpmath is an optional dependency (the ``bench`` extra): imported where used
     pass

@@ -15,7 +15,8 @@ import numpy as np
 from plans.accuracy.oracles import timeit
 from plans.accuracy.timing import goal_record, least_paired, least_time, profile
 from plans.kinematics import construction, exact
-from plans.scene.model import Scene, load_scene
+from plans.kinematics.placing import load_scene
+from plans.scene.model import Scene
 
 #: The performance goals on this class of machine: (key, what is measured, limit, unit).
 #: A time ("s") is met at or below its limit, a speed-up ("×") at or above it.
@@ -84,7 +85,7 @@ def friction_cost(samples: Path, phis: np.ndarray, what: str, limit: float) -> d
     (``v_engine_friction.toml``) against the same scene without its friction, at 360
     positions, measured turn about."""
     from plans.forces.analysis import kinetostatics
-    from plans.scene.model import scene_from_dict
+    from plans.kinematics.placing import scene_from_dict
 
     f = samples / "v_engine_friction.toml"
     if not f.exists():

@@ -6,6 +6,10 @@ Owns: :mod:`.checkfile` (reading check files), :mod:`.providers` (the exact valu
 written quantity), :mod:`.tolerance` (the draftsman's tolerance propagated through the
 construction), :mod:`.findings` and :mod:`.relations` (the student's own work: repeats,
 symmetry, π, scales, swapped segments, arithmetic), :mod:`.report` (the comparison, the
-report, ``plans check``).  May import :mod:`plans.kinematics`, :mod:`plans.forces`,
-:mod:`plans.scene`.  Read first: :func:`plans.check.report.check`.
+report), :mod:`.cycle` (the cycle tables of a dynamics sheet against :mod:`plans.cycle`).
+``plans check`` itself, which also takes the group's gradebook and gears and cam sheets, is
+:mod:`plans.check_command`, above this room and :mod:`plans.group`.  May import
+:mod:`plans.kinematics`, :mod:`plans.forces`, :mod:`plans.cycle`, :mod:`plans.scene` and
+the composer :mod:`plans.solution` (never :mod:`plans.group`, nor
+:mod:`plans.accuracy`, which read this room).  Read first: :func:`plans.check.report.check`.
 """

@@ -59,6 +59,7 @@ from typing import Any
 
 from plans.errors import InputError, Said
 from plans.io import loads_toml, read_toml
+from plans.kinematics.placing import load_scene, scene_from_dict
 from plans.reader import (
     NUMBER_FLOOR,
     NUMBER_LIMIT,
@@ -68,7 +69,7 @@ from plans.reader import (
     did_you_mean,
     show,
 )
-from plans.scene.model import Scene, load_scene, scene_from_dict
+from plans.scene.model import Scene
 from plans.tolerances import SAME_ANGLE_DEG
 from plans.units import LENGTH_UNITS
 

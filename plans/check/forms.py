@@ -210,7 +210,7 @@ def is_scene(data: dict[str, Any]) -> bool:
 def run_template(args: argparse.Namespace) -> int:
     """``plans check --template SCENE``: a blank check file (or CSV form) to fill in."""
     from plans.check.report import error_line
-    from plans.scene.model import load_scene
+    from plans.kinematics.placing import load_scene
 
     try:
         scene_path = Path(args.template)

@@ -24,7 +24,8 @@ from plans.check.diagnosis import couple_value, reversed_couple
 from plans.check.mistakes import Slip, effective, inventory, replay
 from plans.check.providers import Context, exact_value
 from plans.kinematics.construction import nice_scale
-from plans.scene.model import Scene, load_scene
+from plans.kinematics.placing import load_scene
+from plans.scene.model import Scene
 from plans.tolerances import SAME_ANGLE_DEG
 
 #: The mistakes the planted suite plants (kinds of :data:`plans.check.mistakes.KINDS`).
@@ -53,7 +54,7 @@ class Scenario:
         """The scene at the student's scales (μv, μa; by default nice ones for 80 mm)."""
         path = Path(path)
         scene = load_scene(path)
-        from plans.accuracy.oracles import norms
+        from plans.kinematics.scales import norms
 
         nm = norms(scene)
         mv, ma = mv or nice_scale(nm["v"], 80.0), ma or nice_scale(nm["a"], 80.0)

@@ -9,8 +9,8 @@ exact) and the motion ω(φ) it gives over the steady cycle.
 
 Owns: :mod:`.spec` (``[dynamics]``, ``[diagrams]``), :mod:`.table`, :mod:`.diagrams`,
 :mod:`.dynamics`, :mod:`.quadrature` (the exact work and the flywheel's extremes over the
-cycle, 360° or 720°), :mod:`.output` (JSON, terminal, CSV), :mod:`.check` (cycle tables of
-a hand-drawn sheet), :mod:`.bench`.  May import :mod:`plans.scene`, :mod:`plans.kinematics`,
-:mod:`plans.forces` and the shared modules; nothing imports it back but the CLI, the
-results and the check command.  Read first: :func:`plans.cycle.dynamics.dynamics`.
+cycle, 360° or 720°), :mod:`.output` (JSON, terminal, CSV), :mod:`.bench`; the cycle tables
+of a hand-drawn sheet are checked by :mod:`plans.check.cycle`.  May import :mod:`plans.scene`,
+:mod:`plans.kinematics`, :mod:`plans.forces` and the shared modules; nothing it imports
+imports it back.  Read first: :func:`plans.cycle.dynamics.dynamics`.
 """

@@ -10,13 +10,14 @@ standing still); the page interpolates between frames and solves nothing.
 
 from __future__ import annotations
 
+from collections.abc import Callable, Sequence
 from typing import Any
 
 import numpy as np
 
 from plans.demo.mistakes import page_mm
 from plans.forces.lever import LeverAnalysis
-from plans.forces.polygons import ForceAnalysis, force_polygons
+from plans.forces.polygons import ForceAnalysis, ForcePolygon, force_polygons
 from plans.kinematics.plan import Plan
 from plans.kinematics.scales import round_scale
 
@@ -43,9 +44,9 @@ def _track(values: list[tuple[complex, complex] | None], mu: float) -> list[list
                                     page_mm(v[1].real * mu), page_mm(v[1].imag * mu)] for v in values]
 
 
-def _polygons(fa: ForceAnalysis) -> list[dict[str, Any]]:
+def _polygons(fa: ForceAnalysis, drawn: Callable[[int], Sequence[ForcePolygon]] | None) -> list[dict[str, Any]]:
     n = fa.kin.n
-    frames = [force_polygons(fa, k) for k in range(n)]
+    frames = [force_polygons(fa, k) if drawn is None else drawn(k) for k in range(n)]
     out = []
     for g, poly in enumerate(frames[0]):
         name = "crank" if poly.kind == "crank" else f"group {poly.group}"
@@ -86,9 +87,12 @@ def _lever(lv: LeverAnalysis) -> dict[str, Any]:
             "force_scale": mu_f, "points": points, "segments": segs}
 
 
-def cycle_forces(fa: ForceAnalysis, lv: LeverAnalysis) -> list[dict[str, Any]]:
-    """The polygons (groups farthest first, then the crank) and the lever over the frames."""
-    return _polygons(fa) + [_lever(lv)]
+def cycle_forces(fa: ForceAnalysis, lv: LeverAnalysis,
+                 drawn: Callable[[int], Sequence[ForcePolygon]] | None = None) -> list[dict[str, Any]]:
+    """The polygons (groups farthest first, then the crank) and the lever over the frames;
+    ``drawn(k)``: the polygons of position k as a solution keeps them (``Solution.force_polygons``,
+    which the workbench reads), else they are drawn here from ``fa``."""
+    return _polygons(fa, drawn) + [_lever(lv)]
 
 
 __all__ = ["PANEL_MM", "cycle_forces"]

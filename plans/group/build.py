@@ -244,7 +244,7 @@ def linkage_key(data: dict[str, Any], path: str) -> tuple[dict[str, dict[str, fl
     from plans.check.providers import Context, exact_value
     from plans.kinematics.construction import default_scales
     from plans.kinematics.exact import solve
-    from plans.scene.model import scene_from_dict
+    from plans.kinematics.placing import scene_from_dict
 
     scene = scene_from_dict(data, path)
     kin = solve(scene, order=2)
@@ -274,7 +274,7 @@ def scheme(text: str, name: str) -> tuple[dict[str, complex], list[tuple[str, st
     the positions the student draws (degrees)."""
     from plans.io import loads_toml
     from plans.kinematics.exact import solve
-    from plans.scene.model import scene_from_dict
+    from plans.kinematics.placing import scene_from_dict
 
     scene = scene_from_dict(loads_toml(text, name), name)
     kin = solve(scene, order=0)

@@ -213,6 +213,10 @@ def solve(scene: Scene, phi_deg=None, order: int | None = None,
         if scene.wants("acceleration_plan"):
             order = 2
     if phi_deg is None:
+        if scene.driver.placing is not None:
+            raise ValueError(f"{scene.path}: the positions are asked for by the piston's travel or from the "
+                             "output's extreme and not placed yet: read the scene with plans.load_scene "
+                             "(plans.kinematics.placing)")
         phi_deg = scene.driver.phis_deg
     fp = fast.plan_for(scene, st)
     if fp is not None and type(phi_deg) in (list, tuple) and len(phi_deg) == 1:

@@ -30,9 +30,9 @@ import numpy as np
 from plans.errors import ConstructionError, InputError, Said
 from plans.records import derived, frozen
 from plans.scene.model import Joint, Scene
+from plans.scene.positions import FromExtreme
 from plans.tolerances import COINCIDE_REL, SAME_ANGLE_DEG
 
-STARTS = ("extreme", "extreme_idle")
 #: The strokes' crank angles differ by less than this (degrees): K = 1, the tie rule decides.
 TIE_DEG = 1e-7
 GRID = 720  # samples of a revolution that bracket the extremes (0.5° apart)
@@ -156,7 +156,7 @@ def probe_scene(scene: Scene) -> Scene:
     """The scene turning at |ω| = 1 (the velocities are the analogues: any ω, even 0)."""
     d = scene.driver
     return dataclasses.replace(scene, driver=dataclasses.replace(d, omega=float(d.sense), eps=0.0,
-                                                                 phis_deg=(0.0,)))
+                                                                 phis_deg=(0.0,), placing=None))
 
 
 def _coordinate(out: Output, kin: Any) -> tuple[Any, Any]:
@@ -374,18 +374,12 @@ def _on_slide_or_circle(scene: Scene, kind: str, j3: Joint, j: int, point: str, 
     return [O + e * (a + 1j * s * h) for s in (1.0, -1.0)]
 
 
-def start_scene(scene: Scene, r: Any) -> Scene:
-    """``[driver] phi_start``: the scene's positions from the extreme asked for."""
-    d = scene.raw["driver"]
-    start = r.choice(d, "phi_start", "driver.", STARTS, "extreme")
-    for other in ("phi_deg", "phi0_deg"):
-        if other in d:
-            raise r.fail(f"driver.{other}", Said("kx_positions_start_extreme", other=other))
-    if "positions" not in d:
-        raise r.fail("driver.phi_start", Said("kx_phi_start_goes"))
+def start_scene(scene: Scene, request: FromExtreme) -> Scene:
+    """``[driver] phi_start``: the scene's positions from the extreme asked for (read and
+    validated with the file, :mod:`plans.scene.positions`)."""
     st = strokes(scene)
-    phi0 = st.working_deg if start == "extreme" else st.idle_deg
-    n = len(scene.driver.phis_deg)
+    phi0 = st.working_deg if request.start == "extreme" else st.idle_deg
+    n = request.n
     phis = tuple(float(np.mod(phi0 + 360.0 * k / n, 360.0)) if k else phi0 for k in range(n))
-    return dataclasses.replace(scene, driver=dataclasses.replace(scene.driver, phis_deg=phis, start=start,
-                                                                 strokes=st))
+    return dataclasses.replace(scene, driver=dataclasses.replace(scene.driver, phis_deg=phis, start=request.start,
+                                                                 strokes=st, placing=None))

@@ -15,6 +15,7 @@ import math
 from typing import Any
 
 from plans.kinematics.exact import Kinematics
+from plans.scene.model import Scene
 from plans.tolerances import AGREE_REL, ROUND_OFF_REL
 
 #: Round mantissas of a scale (either direction of the ratio).
@@ -103,6 +104,18 @@ def known_vectors(kin: Kinematics) -> tuple[float, float]:
     d = kin.scene.driver
     l1 = abs(kin.scene.links[d.link].points[kin.scene.links[d.link].axis[1]])
     return abs(d.omega) * l1, l1 * math.hypot(d.omega**2, d.eps)
+
+
+def norms(scene: Scene) -> dict[str, float]:
+    """Sizes of the known vectors: the crank's length, v_A, a_A, ω1, ω1² (none below 1e-300:
+    what is measured against them, by the oracles, the draftsman and the planted mistakes)."""
+    d = scene.driver
+    crank = scene.links[d.link]
+    l1 = abs(crank.points[crank.axis[1]] - crank.points[crank.axis[0]])
+    w = abs(d.omega)
+    acc = math.hypot(w * w, d.eps)
+    return {"r": l1, "v": max(w * l1, 1e-300), "a": max(acc * l1, 1e-300), "omega": max(w, 1e-300),
+            "eps": max(acc, 1e-300)}
 
 
 def common_scales(kin: Kinematics) -> tuple[float, float]:

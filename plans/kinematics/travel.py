@@ -17,20 +17,12 @@ import numpy as np
 from numpy.typing import NDArray
 
 from plans.errors import ConstructionError, InputError, Said
-from plans.reader import Reader
 from plans.scene.model import Scene
+from plans.scene.positions import ByTravel
 from plans.tolerances import ROUND_OFF_REL
 
 C = NDArray[np.complex128]
 R = NDArray[np.float64]
-
-KEYS = ("s_mm", "s_fraction", "s_stroke", "piston")
-
-
-def wanted(data: dict[str, Any]) -> bool:
-    d = data.get("driver")
-    return isinstance(d, dict) and ("s_mm" in d or "s_fraction" in d)
-
 
 def toward_pivot(scene: Scene, B: C, u: C) -> C:
     """The guide's unit direction that points from the piston toward the crank pivot."""
@@ -51,35 +43,17 @@ def piston_travel(scene: Scene, kin: Any, joint_name: str, link: int) -> R:
     return ((B - origin) * np.conj(toward_pivot(scene, B, u))).real
 
 
-def by_travel(scene: Scene, r: Reader) -> Scene:
-    """The scene with its driver's positions at the travels asked for."""
+def by_travel(scene: Scene, request: ByTravel) -> Scene:
+    """The scene with its driver's positions at the travels asked for (read and validated
+    with the file, :mod:`plans.scene.positions`): a travel beyond the stroke, or a crank
+    that cannot turn a full revolution, is one line naming the file and the field."""
     from plans.kinematics.exact import solve
 
-    d = scene.raw["driver"]
-    if "s_mm" in d and "s_fraction" in d:
-        raise r.fail("driver.s_fraction", Said("kt_give_mm_fraction"))
-    for other in ("phi_deg", "positions"):
-        if other in d:
-            raise r.fail(f"driver.{other}", Said("kt_positions_are_given", other=other))
-    key = "s_mm" if "s_mm" in d else "s_fraction"
-    raw = d[key] if isinstance(d[key], list) else [d[key]]
-    if not raw or len(raw) > 360:
-        raise r.fail(f"driver.{key}", Said("kt_travels"))
-    values = [r.value(v, f"driver.{key}", nonneg=True) for v in raw]
-    stroke = r.choice(d, "s_stroke", "driver.", ("down", "up"), "down")
-    pistons = [j for j in scene.joints if j.kind == "P" and j.guide is not None and j.guide.link == scene.frame]
-    if "piston" in d:
-        pistons = [j for j in pistons if j.slider == d["piston"] and not isinstance(d["piston"], bool)]
-        if not pistons:
-            raise r.fail("driver.piston", Said("kt_link_piston_sliding", v=d['piston']))
-    elif len({j.slider for j in pistons}) != 1:
-        raise r.fail("driver.piston" if pistons else f"driver.{key}",
-                     "name the piston: piston = link number" if pistons else
-                     "a position by travel needs a piston sliding on a guide of the frame")
-    joint = pistons[0]
+    key, values, stroke = request.key, request.values, request.stroke
+    joint = next(j for j in scene.joints if j.name == request.joint)
     guide = joint.guide
     assert guide is not None
-    probe = dataclasses.replace(scene, driver=dataclasses.replace(scene.driver, phis_deg=(0.0,)))
+    probe = dataclasses.replace(scene, driver=dataclasses.replace(scene.driver, phis_deg=(0.0,), placing=None))
     grid = np.linspace(0.0, 360.0, 721)
     try:
         t = piston_travel(probe, solve(probe, grid, order=0), joint.name, joint.slider)
@@ -102,7 +76,8 @@ def by_travel(scene: Scene, r: Reader) -> Scene:
         want = np.array([v / 1000.0 if key == "s_mm" else v * H for v in values])
         if np.any(want > H * (1 + ROUND_OFF_REL)):
             top = H * 1000 if key == "s_mm" else 1.0
-            raise r.fail(f"driver.{key}", Said("kt_travel_within_stroke", top=top, v=' mm' if key == 's_mm' else ''))
+            raise InputError(Said("kt_travel_within_stroke", top=top, v=' mm' if key == 's_mm' else ''),
+                             file=scene.path, field=f"driver.{key}")
         lo, hi = np.full(len(want), a), np.full(len(want), b)
         sign = 1.0 if stroke == "down" else -1.0
         for _ in range(60):
@@ -116,7 +91,7 @@ def by_travel(scene: Scene, r: Reader) -> Scene:
     inner, outer = (b, a) if stroke == "down" else (a, b)
     at = np.where(want >= H * (1 - ROUND_OFF_REL), inner, np.where(want <= ROUND_OFF_REL * H, outer, 0.5 * (lo + hi)))
     phis = tuple(float(x) for x in np.mod(at, 360.0))
-    return dataclasses.replace(scene, driver=dataclasses.replace(scene.driver, phis_deg=phis))
+    return dataclasses.replace(scene, driver=dataclasses.replace(scene.driver, phis_deg=phis, placing=None))
 
 
 def _dead_centre(speed: Any, near: float) -> float:

@@ -339,16 +339,26 @@ def assur_point(kin: Any, g: TriadGroup) -> tuple[Any, Any]:
     return Qi + cross(Qj - Qi, uj) / safe * ui, choice
 
 
+def special_point_of(kin: Any, g: TriadGroup) -> tuple[Any, Any, list, list]:
+    """Assur's point S of the group over the positions of ``kin``, the choice of the two
+    leashes (:func:`assur_point`), and per leash its outer and inner pair (:func:`axes_of`,
+    the outer ones over the positions): found once and kept by ``kin``, read by the JSON and
+    by the sheets that mark S."""
+    memo = kin.special_points
+    got = memo.get(g.name)
+    if got is None:
+        S, choice = assur_point(kin, g)
+        Q, _, P = axes_of(kin, g)
+        got = memo[g.name] = (S, choice, [np.broadcast_to(x, np.shape(P[0])) for x in Q], P)
+    return got
+
+
 def assur_points_json(kin: Any, k: int) -> list[dict]:
     """``positions[i].assur_points``: per class-III group its special point S (m, the scene's
     frame) and the two leashes whose axes give it ([outer, inner] point names)."""
-    memo = kin.special_points
     out = []
     for g in kin.structure.triads():
-        got = memo.get(g.name)
-        if got is None:
-            got = memo[g.name] = assur_point(kin, g)
-        S, choice = got
+        S, choice, _, _ = special_point_of(kin, g)
         i, j = PAIRS[int(choice[k])]
         z = complex(S[k])
         out.append({"group": g.name, "point": [z.real, z.imag],

@@ -12,7 +12,7 @@ from __future__ import annotations
 import cmath
 import math
 import os
-from dataclasses import field
+from dataclasses import field, replace
 from typing import TYPE_CHECKING, Any
 
 from plans.errors import Said
@@ -20,6 +20,7 @@ from plans.io import loads_toml, read_toml
 from plans.reader import Reader, did_you_mean, show
 from plans.records import frozen
 from plans.scene.options import OUTPUTS, read_branches, read_outputs, read_scales, read_title  # noqa: F401
+from plans.scene.positions import Placing, read_placing, wanted
 from plans.units import LENGTH_UNITS, LENGTH_WARN, SPEED_WARN, rpm_to_rad_s
 
 if TYPE_CHECKING:
@@ -96,6 +97,9 @@ class Driver:
     #: whose strokes are ``strokes`` (plans.kinematics.extreme.Strokes); "" and None otherwise
     start: str = ""
     strokes: Any = None
+    #: positions asked for by the piston's travel or from the output's extreme, not placed
+    #: yet (``phis_deg`` is empty until :func:`plans.kinematics.placing.place`); None: placed
+    placing: Placing | None = None
 
     def rotation(self, phi_deg: Any) -> Any:
         """e^{iθ1}, with θ1 reduced in degrees by whole quarter turns first, so that the
@@ -189,8 +193,8 @@ JOINT_KEYS = {"kind", "links", "point", "guide", "slider_angle_deg",
               "f", "pin_radius", "friction_circle"}  # friction: plans.scene.friction
 GUIDE_KEYS = {"link", "through", "toward", "angle_deg", "offset"}
 DRIVER_KEYS = {"link", "omega", "omega_rpm", "sense", "eps", "phi_ref_deg", "phi_deg", "positions", "phi0_deg",
-               "s_mm", "s_fraction", "s_stroke", "piston",  # positions by the piston's travel: kinematics.travel
-               "phi_start", "extreme_of"}  # positions from the output's extreme: kinematics.extreme
+               "s_mm", "s_fraction", "s_stroke", "piston",  # positions by the piston's travel: scene.positions
+               "phi_start", "extreme_of"}  # positions from the output's extreme: scene.positions
 #: ω at most 1e6 rad/s, and 0 or at least 1e-6 rad/s (a slower crank makes plan scales overflow).
 OMEGA_LIMIT = 1e6
 
@@ -204,8 +208,14 @@ def check_format(r: Reader, data: dict[str, Any]) -> None:
 
 def load_scene(path: str | Path) -> Scene:
     """Read and validate a scene file; an implausible one (a unit slip, look-alike names) is
-    warned about on stderr (:mod:`plans.plausible`)."""
-    scene = scene_from_dict(read_toml(path), str(path))
+    warned about on stderr (:mod:`plans.plausible`).  Positions asked for by the piston's
+    travel or from the output's extreme are left to place (``driver.placing``):
+    ``plans.load_scene`` (:mod:`plans.kinematics.placing`) reads and places them."""
+    return warn_implausible(scene_from_dict(read_toml(path), str(path)), path)
+
+
+def warn_implausible(scene: Scene, path: str | Path) -> Scene:
+    """The scene, warned about on stderr when implausible (:mod:`plans.plausible`)."""
     if _implausible(scene):
         from plans.plausible import warn_scene
 
@@ -245,6 +255,8 @@ def parse_scene(text: str, path: str = "<scene>") -> Scene:
 
 
 def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
+    """The scene of a file's table, validated; positions by travel or from an extreme are
+    a request (``driver.placing``) for :func:`plans.kinematics.placing.place`."""
     r = Reader(path)
     from plans.kinds import check_top
 
@@ -287,18 +299,11 @@ def scene_from_dict(data: dict[str, Any], path: str = "<scene>") -> Scene:
         from plans.scene.sheet import check_sheet
 
         check_sheet(data, path)  # the record is made when a reader asks for it (Scene.sheet)
-    scene = Scene(path=path, title=title, frame=frame, frame_points=frame_points, links=links,
-                  joints=joints, driver=driver, branches=branches, outputs=outputs,
-                  scales=scales, scale_style=style, fij=fij, raw=data, titles=titles)
-    if isinstance(data.get("driver"), dict) and ("s_mm" in data["driver"] or "s_fraction" in data["driver"]):
-        from plans.kinematics.travel import by_travel
-
-        scene = by_travel(scene, r)
-    if isinstance(data.get("driver"), dict) and "phi_start" in data["driver"]:
-        from plans.kinematics.extreme import start_scene
-
-        scene = start_scene(scene, r)
-    return scene
+    if wanted(data["driver"]):  # no angle in the file: the kinematics places them
+        driver = replace(driver, phis_deg=(), placing=read_placing(r, data["driver"], joints, frame))
+    return Scene(path=path, title=title, frame=frame, frame_points=frame_points, links=links,
+                 joints=joints, driver=driver, branches=branches, outputs=outputs,
+                 scales=scales, scale_style=style, fij=fij, raw=data, titles=titles)
 
 
 def _link_id(r: Reader, key: str) -> int:
@@ -511,7 +516,7 @@ def _driver(r: Reader, data: dict[str, Any], frame: int, frame_points: dict[str,
     else:
         raw = d.get("phi_deg")
         if raw is None and ("s_mm" in d or "s_fraction" in d) and "phi_deg" not in d:
-            raw = 0.0  # placed by the piston's travel once the scene is built
+            raw = 0.0  # placed by the piston's travel (plans.scene.positions)
         if raw is None:
             raise r.fail("driver.phi_deg", Said("e_phi_missing"))
         values = raw if isinstance(raw, list) else [raw]

@@ -138,8 +138,8 @@ def check_scene(text: str, task_path: str) -> None:
     that a scene refuses is one line naming the task's key (nothing is written)."""
     from plans.errors import InputError
     from plans.io import loads_toml
+    from plans.kinematics.placing import scene_from_dict
     from plans.results import solve_scene
-    from plans.scene.model import scene_from_dict
 
     try:
         solve_scene(scene_from_dict(loads_toml(text, task_path), task_path))  # loads, dynamics too

@@ -37,16 +37,16 @@ from typing import Any
 
 import numpy as np
 
+from plans.cycle.dynamics import dynamics, reduce
+from plans.cycle.spec import ANGLE_LIMIT_DEG, rotor_inertia
 from plans.errors import InputError, OutputError, Said
 from plans.forces.loads import apply_loads, parse_loads
 from plans.io import dumps, read_toml, refuse_input, write_all
 from plans.kinematics.exact import solve
+from plans.kinematics.placing import load_scene
 from plans.reader import Reader, show
-from plans.scene.model import Scene, load_scene
+from plans.scene.model import Scene
 from plans.verdicts import Tally
-
-from .dynamics import dynamics, reduce
-from .spec import ANGLE_LIMIT_DEG, rotor_inertia
 
 _KEYS = {"phi_deg", "sign", "velocity_scale", "analogue_scale", "segment_mm", "rule_pct", "measured", "values",
          "flywheel"}

@@ -1,6 +1,8 @@
 """``plans check``: a check file, a CSV form, a folder of them (a report per file and the
-summary), or a blank template; the group's gradebook (``--xlsx``) and the gear, cam and cycle
-sheets go to their own modules.  The checking itself is :mod:`plans.check.report`'s."""
+summary), or a blank template; the group's gradebook (``--xlsx``) and the gear and cam
+sheets go to :mod:`plans.group`, the cycle's tables to :mod:`plans.check.cycle`.  The checking
+itself is :mod:`plans.check.report`'s.  The command sits above the check room and the group
+room, which reads the check room (a variant's key, the gradebook): neither imports it."""
 
 from __future__ import annotations
 
@@ -102,7 +104,7 @@ def run(args: argparse.Namespace) -> int:
             return 2
         for out_path in (args.json, args.csv):
             refuse_input(out_path, target)
-        from plans.cycle import check as cycle_check  # cycle tables (a dynamics sheet)
+        from plans.check import cycle as cycle_check  # cycle tables (a dynamics sheet)
 
         if cycle_check.is_cycle_check(target):
             return cycle_check.run_file(target, args)
@@ -179,7 +181,7 @@ def _batch(folder: Path, args: argparse.Namespace) -> int:
     make_folder(out)
     rows = []
     bad = 0
-    from plans.cycle import check as cycle_check
+    from plans.check import cycle as cycle_check
     from plans.progress import Progress
 
     progress = Progress(args.quiet)
