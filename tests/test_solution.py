@@ -161,9 +161,9 @@ def test_parts_are_computed_once_and_only_when_read(monkeypatch):
     real = construction.build_all
     monkeypatch.setattr(construction, "build_all", lambda kin: calls.append(1) or real(kin))
     sol = plans.solve(SAMPLES / "four_bar.toml")
-    assert sol._parts == {}  # nothing yet
+    assert sol._parts == {} and sol._common == {}  # nothing yet
     assert sol.kinematics.n == len(sol.scene.driver.phis_deg)
-    assert calls == [] and "forces" not in sol._parts
+    assert calls == [] and "forces" not in sol._parts and "reactions" not in sol._common
     assert sol.plans is sol.plans and calls == [1]
     assert sol.forces is sol.forces and sol.lever is sol.forces.lever
 
@@ -314,7 +314,7 @@ def test_every_table_is_held_typed_by_the_scene():
     assert solved.dynamics_spec is not None and solved.dynamics_spec.delta > 0
     assert solved.diagrams_spec is not None and solved.diagrams_spec.quantities
     sol = plans.solve(SAMPLES / "four_bar.toml")
-    assert sol.scene.dynamics_spec is None and sol.scene.diagrams_spec is None and sol._parts == {}
+    assert sol.scene.dynamics_spec is None and sol.scene.diagrams_spec is None and sol._parts == sol._common == {}
     data = read_toml(SAMPLES / "four_bar.toml")
     data["outputs"] = ["positions"]  # [loads] unused: a misspelt key in it fails all the same
     data["loads"]["gravty"] = True
@@ -391,7 +391,7 @@ def test_a_mechanism_that_does_not_turn_a_revolution_is_drawn_at_its_own_positio
     sol = plans.solve(scene_from_dict(data, "locking.toml"))
     with pytest.raises(plans.ConstructionError):
         sol.revolution()
-    assert sol._parts["no revolution"] and strokes_over_cycle(sol) == {}
+    assert sol._common["no revolution"] and strokes_over_cycle(sol) == {}  # (for the scene at every fit)
     xs = [complex(sol.kinematics.point(p)[0][k]).real for p in ("O", "A", "B", "D", "E") for k in (0, 1)]
     assert cycle_size(sol) >= max(xs) - min(xs) > 0
     d = draw(sol)
