@@ -51,6 +51,7 @@ WORDS = {
     "rocker": ("Область центров кулачка по углам давления (коромысло)",
                "Region of cam centres from the pressure angles (rocker)"),
     "results": ("Результаты", "Results"),
+    "convexity": ("Выпуклость профиля: ρ = r0 + s + s″ > 0", "Convexity of the profile: ρ = r0 + s + s″ > 0"),
 }
 
 
@@ -112,26 +113,28 @@ def _text(rec: Recording, s: str, x: float, y: float, size: float = SMALL, ancho
     rec.text(layout(s, x, y, size, anchor, valign), "label", eid)
 
 
-def motion_panel(cs: CamSolution, lang: str, g: float = 1.0) -> Panel:
+def motion_panel(cs: CamSolution, lang: str, g: float = 1.0, tall: float = 1.0) -> Panel:
     """s, ds/dφ and d²s/dφ² against φ: a(φ) exact, integrated twice by mid-ordinates and a
-    pole (the chains, thick), the exact curves beside them (dashed)."""
+    pole (the chains, thick), the exact curves beside them (dashed).  ``g`` sizes the φ axis
+    to the sheet (1 mm per degree on A1); ``tall`` lengthens the ordinates where it has room."""
     cam = cs.cam
     f, unit = _lift(cam)
     ig: Integration = cs.integration
     mo = cs.motion
     length = PHI_LENGTH * g
+    h = g * tall  # the ordinates' size
     x_of = length / (2 * math.pi)  # k_φ, mm per rad
     a_max = float(np.max(np.abs(mo.s2))) * f or 1.0
     v_max = float(np.max(np.abs(mo.s1))) * f or 1.0
     s_max = float(np.max(mo.s)) * f or 1.0
-    k_a = nice(32.0 * g / a_max)
+    k_a = nice(32.0 * h / a_max)
     # poles: the shortest usual H (10 mm at least) that keeps ds/dφ within 26 mm, s within 40 mm
-    H1 = pole_distance(k_a * x_of * v_max / (30.0 * g))
+    H1 = pole_distance(k_a * x_of * v_max / (30.0 * h))
     k_v = integral_scale(k_a, x_of, H1)
-    H2 = pole_distance(k_v * x_of * s_max / (50.0 * g))
+    H2 = pole_distance(k_v * x_of * s_max / (50.0 * h))
     k_s = integral_scale(k_v, x_of, H2)
     rec = Recording()
-    y_v, y_a = 70.0 * g + 10, 145.0 * g + 20
+    y_v, y_a = 70.0 * h + 10, 145.0 * h + 20
     rows = [("s", k_s, mo.s * f, ig.s_nodes * f, None, 0.0),
             ("ds/dφ", k_v, mo.s1 * f, ig.v_nodes * f, None, y_v),
             ("d²s/dφ²", k_a, mo.s2 * f, None, ig.a_mid * f, y_a)]
@@ -140,8 +143,8 @@ def motion_panel(cs: CamSolution, lang: str, g: float = 1.0) -> Panel:
     for name, k, exact, chain, mid, y0 in rows:
         tag = {"s": "s", "ds/dφ": "ds", "d²s/dφ²": "d2s"}[name]  # ids: plain ASCII
         rec.line((-4, y0), (length + 6, y0), THIN, f"axis-{tag}")
-        half = 34.0 * g if name != "s" else 0.0
-        top = min(y0 - k * float(np.max(exact)) - 2, y0 - 34.0 * g)
+        half = 34.0 * h if name != "s" else 0.0
+        top = min(y0 - k * float(np.max(exact)) - 2, y0 - 34.0 * h)
         rec.line((0, y0 + half), (0, top), THIN)
         _text(rec, name, 1.5, top, LABEL, "start", "top")
         _text(rec, "φ", length + 7, y0, LABEL)
@@ -180,8 +183,8 @@ def motion_panel(cs: CamSolution, lang: str, g: float = 1.0) -> Panel:
     # the phase boundaries and their angles
     for ph in cam.phases:
         xb = ph.start * x_of
-        rec.line((xb, -2), (xb, y_a + 34 * g + 2), Style(width=0.13, stroke="#888", dash=(1.0, 1.0)))
-        _text(rec, f"{math.degrees(ph.angle):g}°", xb + ph.angle * x_of / 2, y_a + 34 * g + 5, SMALL, "middle")
+        rec.line((xb, -2), (xb, y_a + 34 * h + 2), Style(width=0.13, stroke="#888", dash=(1.0, 1.0)))
+        _text(rec, f"{math.degrees(ph.angle):g}°", xb + ph.angle * x_of / 2, y_a + 34 * h + 5, SMALL, "middle")
     err = cs.integration_error * f
     mm = _unit("mm", lang)
     note = (f"μ_φ = {fmt(x_of * math.pi / 180, 4, lang)} {mm}/°; μ′ = μ·μ_φ/H; "
@@ -289,9 +292,40 @@ def rocker_panel(cs: CamSolution, lang: str, g: float = 1.0) -> Panel:
     return finish("rocker", "cam-diagram", None, rec, _w("rocker", lang), note=note)
 
 
-def profile_panel(cs: CamSolution, lang: str, target: float = 180.0) -> Panel:
+def convexity_panel(cs: CamSolution, lang: str, g: float = 1.0, tall: float = 1.0) -> Panel:
+    """A flat face's base radius: s + d²s/dφ² over the turn (its φ axis the motion diagrams'),
+    the least base radius at the depth of its lowest point (ρ = r0 + s + s″ > 0 everywhere
+    above it) and the file's r0; the profile's radius of curvature is read between them."""
+    from drawings.cycle.cycle_plot import Axes
+    from plans.kinematics.scales import round_scale
+
+    cam, mo = cs.cam, cs.motion
+    f = 1.0 / cam.scale  # to the file's unit
+    y = (mo.s + mo.s2) * f
+    r0, r_min = cam.base_radius * f, (cs.base_radius.min_base_radius or 0.0) * f
+    length = PHI_LENGTH * g
+    deep = max(float(np.max(np.abs(y))), r0)
+    mu = round_scale(deep, 60.0 * g * tall)  # mm per the file's unit
+    rec = Recording()
+    ax = Axes(rec, "convexity", length / (2 * math.pi), 0.0, lang)
+    ax.frame(length, -deep * mu, float(np.max(y)) * mu, "s + s″")
+    xs = np.asarray(cs.turn) * length / (2 * math.pi)
+    ax.curve(xs, y * mu, MAIN, "s-plus-s2")
+    U = _unit(cam.unit, lang)
+    ax.hline(-r_min * mu, 0.0, length, WARN, f"−r0 min = −{fmt(r_min, 4, lang)} {U}", "r0-min")
+    ax.hline(-r0 * mu, 0.0, length, EXACT, f"−r0 = −{fmt(r0, 4, lang)} {U}", "r0")
+    for ph in cam.phases:
+        xb = ph.start * length / (2 * math.pi)
+        rec.line((xb, -float(np.max(y)) * mu - 2.0), (xb, r0 * mu + 2.0), Style(width=0.13, stroke="#888", dash=(1.0, 1.0)))
+    mm = _unit("mm", lang)
+    scale = f"μ_φ = {fmt(length / 360.0, 4, lang)} {mm}/°; μ = {fmt(mu, 4, lang)} {mm}/{U}"
+    return finish("convexity", "cam-diagram", None, rec, _w("convexity", lang), scale)
+
+
+def profile_panel(cs: CamSolution, lang: str, target: float = 180.0, mu: float | None = None) -> Panel:
     """Inversion: the follower's positions at the division points turned by −φ, the
-    theoretical profile through the roller centres, the roller circles and their envelope."""
+    theoretical profile through the roller centres, the roller circles and their envelope; at
+    the largest standard scale drawing the cam's reach within ``target`` mm (or at ``mu``)."""
     cam = cs.cam
     pr: Profile = cs.profile
     q = cs.division
@@ -299,7 +333,8 @@ def profile_panel(cs: CamSolution, lang: str, target: float = 180.0) -> Panel:
     reach = float(np.max(np.hypot(*pr.theoretical.T))) + cam.roller + 0.15 * cam.base_radius
     if cam.follower == "oscillating":
         reach = max(reach, cam.pivot + 0.15 * cam.arm)
-    mu = drawing_scale(reach, target)  # paper mm per m
+    if mu is None:
+        mu = drawing_scale(reach, target)  # paper mm per m
     rec = Recording()
 
     def P(v: np.ndarray | tuple[float, float]) -> Pt:
@@ -457,6 +492,13 @@ def results_panel(cs: CamSolution, lang: str) -> Panel:
 
 
 def build_panels(cs: CamSolution, spec: SheetSpec) -> list[Panel]:
+    """The profile, the motion diagrams, the base radius's diagram and the results: at the A1
+    lengths, or larger where one sheet holds them all: the profile at the largest standard
+    scale it does, then the ds/dφ–s diagram at larger scales and the diagrams' ordinates
+    longer (the φ axis keeps its length) as far as they cover more of the sheet."""
+    from drawings.linkage.panels import STANDARD_RATIOS
+    from drawings.paper.fill import fullest_on_one_sheet
+
     lang = spec.language
     W, H = spec.size
     g = min(W / 841.0, H / 594.0)
@@ -465,13 +507,31 @@ def build_panels(cs: CamSolution, spec: SheetSpec) -> list[Panel]:
     x0, y0, x1, y1 = usable(W, H)
     target = min(180.0 * g, (y1 - y0 - TB_H - GAP - 20.0) / 2.3)
     cam = cs.cam
-    panels = [profile_panel(cs, lang, target), motion_panel(cs, lang, g)]
-    if cs.base_radius.bounds is not None:
-        panels.append(diagram_panel(cs, lang, g))
-    elif cam.follower == "oscillating":
-        panels.append(rocker_panel(cs, lang, g))
-    panels.append(results_panel(cs, lang))
-    return panels
+    results = results_panel(cs, lang)
+
+    def third(size: float) -> list[Panel]:
+        if cs.base_radius.bounds is not None:
+            return [diagram_panel(cs, lang, size)]
+        if cam.follower == "oscillating":
+            return [rocker_panel(cs, lang, size)]
+        return [convexity_panel(cs, lang, g, size / g)] if cam.flat else []
+
+    first = profile_panel(cs, lang, target)
+    at_a1 = [first, motion_panel(cs, lang, g), *third(g), results]
+    base = first.scale or 1000.0
+    mus = [r * 1000.0 for r in STANDARD_RATIOS if base / 2.0 - 1e-9 <= r * 1000.0 <= 4.0 * base + 1e-9]
+    motions = [motion_panel(cs, lang, g, tall) for tall in (2.0, 1.5, 1.0)]
+    thirds = [third(g * size) for size in (2.0, 1.5, 1.0)]
+
+    def candidates(mu: float):
+        profile = profile_panel(cs, lang, target, mu)
+        for motion in motions:
+            for t in thirds:
+                yield [profile, motion, *t, results]
+
+    found = fullest_on_one_sheet((candidates(mu) for mu in sorted(mus, reverse=True)), spec, cam.path,
+                                 lambda ps: ratio_text(ps[0].scale or 1000.0))
+    return found[0] if found is not None else at_a1
 
 
 @drawing

@@ -463,10 +463,22 @@ def synthesis_panel(sol: GearSolution, lang: str) -> Panel:
     return finish("synthesis", "table", None, _grid(rows, "synthesis"), tr("synthesis", lang))
 
 
+def magnifications(sol: GearSolution) -> list[float]:
+    """How much larger than the engine's plan the train's scheme and velocity plan may be
+    drawn, largest first: the factors of 10, 5, 4, 2.5, 2 that keep μ_l and μ_v round, and 1.
+    The plan of angular velocities keeps its h: μ_ω = h·μ_v/μ_l does not change."""
+    from plans.kinematics.scales import is_round
+
+    plan = sol.plan
+    assert plan is not None
+    return [f for f in (10.0, 5.0, 4.0, 2.5, 2.0) if is_round(plan.mu_l * f) and is_round(plan.mu_v * f)] + [1.0]
+
+
 def magnification(sol: GearSolution, spec: SheetSpec) -> float:
-    """How much larger than the engine's plan the train's scheme and velocity plan are drawn:
-    the largest of 10, 5, 4, 2.5, 2, 1 that keeps μ_l and μ_v round, the scheme and the plan
-    within half the sheet's height (the engine's plan fits any sheet at 1).  The plan of
+    """How much larger than the engine's plan the train's scheme and velocity plan are drawn at
+    least: the largest of 10, 5, 4, 2.5, 2, 1 that keeps μ_l and μ_v round, the scheme and the
+    plan within half the sheet's height (the engine's plan fits any sheet at 1); larger where
+    the sheet it goes on has room.  The plan of
     angular velocities keeps its h: μ_ω = h·μ_v/μ_l does not change."""
     from plans.kinematics.scales import is_round
 
@@ -487,6 +499,20 @@ def magnification(sol: GearSolution, spec: SheetSpec) -> float:
     return 1.0
 
 
+def _train(sol: GearSolution, lang: str, f: float, pairs: bool) -> list[Panel]:
+    """The train's panels with its scheme and plan magnified ``f`` times (and the pairs' table
+    where no meshing sheet holds it)."""
+    train: list[Panel] = []
+    if sol.plan is not None:
+        train += [scheme_panel(sol, lang, f), velocity_panel(sol, lang, f), rays_panel(sol, lang),
+                  speeds_panel(sol, lang)]
+    if sol.synthesis is not None:
+        train.append(synthesis_panel(sol, lang))
+    if pairs and sol.pairs:
+        train.append(results_panel(sol, lang))
+    return train
+
+
 @drawing
 def draw(source: GearsSolution | GearFile | str | Path, *, format: str | None = None,
          orientation: str | None = None, language: str | None = None, font: str | None = None) -> GearDrawing:
@@ -499,32 +525,52 @@ def draw(source: GearsSolution | GearFile | str | Path, *, format: str | None = 
                       format=format, orientation=orientation, language=language, font=font)
     choose(spec.font, gf.path, font)
     lang = spec.language
-    groups: list[tuple[list[Panel], str]] = []
+    from drawings.gears_sliding import sliding_panel
+    from drawings.paper.fill import fullest_on_one_sheet
+
     drawings = list(gs.meshings)
-    if drawings:  # the meshings and the table of the pairs share sheets as they fit
-        scales = list(dict.fromkeys(ratio_text(one.k * 1000.0) for one in drawings))
-        groups.append(([meshing_panel(one, lang) for one in drawings] + [results_panel(sol, lang)],
-                       "; ".join(scales)))
+    mesh: list[Panel] = []  # each meshing with its specific sliding, then the pairs' table
+    for one in drawings:
+        mesh += [meshing_panel(one, lang), sliding_panel(one, lang)]
+    if drawings:
+        mesh.append(results_panel(sol, lang))
+    mesh_scale = "; ".join(dict.fromkeys(ratio_text(one.k * 1000.0) for one in drawings))
     mg = drawings[0] if drawings else None
-    train: list[Panel] = []
-    if sol.plan is not None:
-        f = magnification(sol, spec)
-        train += [scheme_panel(sol, lang, f), velocity_panel(sol, lang, f), rays_panel(sol, lang),
-                  speeds_panel(sol, lang)]
-    if sol.synthesis is not None:
-        train.append(synthesis_panel(sol, lang))
-    if mg is None and sol.pairs:
-        train.append(results_panel(sol, lang))
-    if train:
-        groups.append((train, ratio_text(sol.plan.mu_l * magnification(sol, spec)) if sol.plan is not None else ""))
-    if not groups:
+    fs = magnifications(sol) if sol.plan is not None else [1.0]
+
+    def train_scale(f: float) -> str:
+        return ratio_text(sol.plan.mu_l * f) if sol.plan is not None else ""
+
+    if not mesh and not _train(sol, lang, 1.0, True):
         raise InputError(Said("dg_nothing_draw_meshes"),
                          file=gf.path, field="meshes")
-    sheets: list[Sheet] = []
-    for panels, scale in groups:
-        sheets.extend(compose(panels, spec, scale, gf.path))
-    from drawings.paper.merge import merged
+    trains = {f: _train(sol, lang, f, mg is None) for f in fs}
+    made = {id(t[0]): f for f, t in trains.items() if t}  # a train's first panel -> its magnification
 
-    sheets = merged(sheets)  # the train on the meshing sheet where it fits; one numbering
+    def scale(panels: Sequence[Panel]) -> str:  # the Scale cell: the meshings', the train's
+        f = next((made[id(p)] for p in panels if id(p) in made), None)
+        ms = mesh_scale if any(p.kind == "meshing" for p in panels) else ""
+        return "; ".join(t for t in (ms, train_scale(f) if f is not None else "") if t)
+
+    # the meshings and the train on one sheet, the train as large as that leaves room for
+    least = magnification(sol, spec) if sol.plan is not None else 1.0
+    found = fullest_on_one_sheet(([[*mesh, *trains[f]]] for f in fs if f >= least), spec, gf.path, scale)
+    groups: list[tuple[list[Panel], str]] = []
+    if found is not None:
+        groups.append((found[0], scale(found[0])))
+        sheets = found[1]
+    else:  # a sheet of the meshings, then the train's as large as its own sheet holds
+        if mesh:
+            groups.append((mesh, mesh_scale))
+        alone = fullest_on_one_sheet(([trains[f]] for f in fs if trains[f] and f >= least), spec, gf.path, scale)
+        train = alone[0] if alone is not None else trains[fs[-1]]
+        if train:
+            groups.append((train, scale(train)))
+        sheets = []
+        for panels, text in groups:
+            sheets.extend(compose(panels, spec, text, gf.path))
+        from drawings.paper.merge import merged
+
+        sheets = merged(sheets)  # the train on the meshing sheet where it fits; one numbering
     panels_all = tuple(p for g, _ in groups for p in g)
     return GearDrawing(gf, sol, mg, spec, panels_all, tuple(sheets))

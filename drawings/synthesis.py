@@ -9,6 +9,8 @@ import math
 from dataclasses import dataclass
 from pathlib import Path
 
+import numpy as np
+
 from drawings.linkage.panels import STANDARD_RATIOS, Panel, finish, ratio_text
 from drawings.paper.backend import CENTRE_LINE, HAIR, MAIN, THICK, THIN, Pt, Recording, Style
 from drawings.paper.common import dot, fmt
@@ -36,6 +38,11 @@ WORDS = {
     "given": ("Задано", "Given"),
     "found": ("Найдено", "Found"),
     "measured": ("Проверено по механизму", "Measured back"),
+    "motion": ("Перемещение выходного звена и его аналог скорости за оборот кривошипа",
+               "The output's travel and its velocity analogue over a crank turn"),
+    "gamma": ("Угол передачи за оборот кривошипа", "The transmission angle over a crank turn"),
+    "working": ("рабочий ход", "working stroke"),
+    "return": ("холостой ход", "return stroke"),
 }
 _w = lookup(WORDS)
 
@@ -71,7 +78,9 @@ def _links(d: Design, p: dict[str, complex]) -> list[tuple[str, str]]:
     return [("O", "A"), ("A", "B")]
 
 
-def construction_panel(ds: DesignSolution, lang: str, target: float) -> Panel:
+def construction_panel(ds: DesignSolution, lang: str, target: float, mu: float | None = None) -> Panel:
+    """The construction at the largest standard scale drawing it within ``target`` mm (or at
+    ``mu``, paper mm per m)."""
     d = ds.design
     t = d.task
     m0 = d.measured[0]
@@ -89,13 +98,14 @@ def construction_panel(ds: DesignSolution, lang: str, target: float) -> Panel:
         c, R = circ
         box = (min(box[0], c.real - R), min(box[1], c.imag - R), max(box[2], c.real + R), max(box[3], c.imag + R))
         span = max(box[2] - box[0], box[3] - box[1])
-    mu = _scale(span * 1.15, target)
+    if mu is None:
+        mu = _scale(span * 1.15, target)
     rec = Recording()
 
     def P(z: complex) -> Pt:
         return (mu * z.real, -mu * z.imag)
 
-    pad = 0.08 * span
+    pad = 0.06 * span
     lo = complex(box[0] - pad, box[1] - pad)
     hi = complex(box[2] + pad, box[3] + pad)
     # the construction's circle (the part within the drawing when it is large) and its centre
@@ -146,7 +156,8 @@ def construction_panel(ds: DesignSolution, lang: str, target: float) -> Panel:
         if name != "O":  # the frame's line between the pivots
             rec.line(P(0j), P(z), THIN, f"frame-O{name}")
         dot(rec, P(z), 0.9, f"pivot-{name}")
-        _text(rec, name, (P(z)[0] - 1.8, P(z)[1] + 1.8), LABEL, "end", "top", eid=f"label-{name}")
+        # beside the pivot, not below it: the pivot C is the construction's lowest point
+        _text(rec, name, (P(z)[0] - 2.0, P(z)[1] + 1.0), LABEL, "end", "middle", eid=f"label-{name}")
     # the overlap angle θ at the crank's pivot: the rays to the output's extreme points
     out_pt = {"central": "B", "offset": "B", "v_engine": "B", "crank_rocker": "B", "three_positions": "B",
               "coulisse": "A"}[d.model]
@@ -342,12 +353,154 @@ def table_panel(ds: DesignSolution, lang: str) -> Panel:
     return finish("design-table", "table", None, rec, _w("table", lang))
 
 
-def build_panels(ds: DesignSolution, spec: SheetSpec) -> list[Panel]:
+def _output(d: Design, i: int, phi: float) -> tuple[float, float]:
+    """Mechanism ``i``'s output at the crank angle ``phi`` as far as it has gone from where
+    its working stroke starts (the slider's or the ram's travel in m, the rocker's swing in
+    rad) and its velocity analogue along the working stroke (d/dφ of it, + while it goes out)."""
+    m, mo = d.mechs[i], d.measured[i]
+    if isinstance(m, FourBar):
+        q, q0, q1, dq = m.psi(phi), m.psi(mo.phi_start), m.psi(mo.phi_end), m.dpsi(phi)
+        gone, way = math.remainder(q - q0, 2 * math.pi), math.remainder(q1 - q0, 2 * math.pi)
+    else:
+        q, q0, q1, dq = m.s(phi), m.s(mo.phi_start), m.s(mo.phi_end), m.ds(phi)
+        gone, way = q - q0, q1 - q0
+    sign = 1.0 if way >= 0 else -1.0
+    return sign * gone, sign * d.task.sense * dq  # d/d(turn) = sense·d/dφ
+
+
+def motion_panel(ds: DesignSolution, lang: str, mu_phi: float, g: float = 1.0, tall: float = 1.0) -> Panel:
+    """The designed mechanism over one crank turn from the start of its working stroke (the
+    crank's turn at ``mu_phi`` mm per degree): the output's travel, the working and the return
+    strokes' angles read off it (their ratio is K) and its velocity analogue (its zeros are
+    the extreme positions): what the construction promised, seen over the whole turn.  ``tall`` lengthens the ordinates
+    (their round scales the larger ones it allows) where the sheet has room."""
+    from drawings.cycle.cycle_plot import Axes
+    from plans.kinematics.scales import round_scale
+
+    d, t = ds.design, ds.task
+    m0 = d.measured[0]
+    n = 361
+    turn = [360.0 * k / (n - 1) for k in range(n)]  # degrees of the crank's turn
+    phis = [m0.phi_start + t.sense * math.radians(x) for x in turn]
+    rocker = isinstance(d.mechs[0], FourBar)
+    u = {"mm": "мм", "cm": "см", "m": "м"}.get(t.unit, t.unit) if lang == "ru" else t.unit
+    mm = "мм" if lang == "ru" else "mm"
+    rad = "рад" if lang == "ru" else "rad"
+    names = ["ψ"] if rocker else (["B", "C"] if d.model == "v_engine" else ["E"] if d.model == "coulisse" else ["B"])
+    outs = [[_output(d, i, p) for p in phis] for i in range(len(names))]
+    conv = math.degrees(1.0) if rocker else 1.0 / t.scale  # to degrees, or to the file's unit
+    top = max(q for c in outs for q, _ in c) * conv or 1.0
+    fast = max(abs(v) for c in outs for _, v in c) * conv or 1.0
+    mu_q = round_scale(top, 80.0 * g * tall)  # mm per degree or per the file's unit
+    mu_v = round_scale(fast, 40.0 * g * tall)  # mm per (degree or unit) per rad
+    L = 360.0 * mu_phi
+    k_phi = mu_phi * 180.0 / math.pi  # mm per rad of the crank's turn
+    x_end = math.degrees(((m0.phi_end - m0.phi_start) * t.sense) % (2 * math.pi))
+    rec = Recording()
+    ax = Axes(rec, "motion-s", k_phi, 0.0, lang)
+    xs = ax.x(np.asarray(turn))
+    q_name, v_name = ("ψ", "dψ/dφ") if rocker else (("s", "ds/dφ") if len(names) == 1 else ("s_B, s_C", "ds/dφ"))
+    ax.frame(L, 0.0, top * mu_q, q_name)
+    for i, (name, c) in enumerate(zip(names, outs, strict=True)):
+        ys = np.array([q * conv * mu_q for q, _ in c])
+        ax.curve(xs, ys, MAIN if i == 0 else FAR, f"output-{i}")
+        if len(names) > 1:
+            k = max(range(n), key=lambda j: ys[j])
+            _text(rec, f"s_{name}", (float(xs[k]) + 1.5, -ys[k] - 1.5), SMALL, valign="bottom")
+    for a, b, key in ((0.0, x_end, "working"), (x_end, 360.0, "return")):
+        _text(rec, f"{_w(key, lang)} {fmt(b - a, 5, lang)}°", ((a + b) / 2 * mu_phi, 5.0), SMALL, "middle", "top",
+              eid=f"stroke-{key}")
+    # the velocity analogue: zero at the extreme positions, + on the working stroke
+    vrec = Recording()
+    vax = Axes(vrec, "motion-v", k_phi, 0.0, lang)
+    vax.frame(L, -fast * mu_v, fast * mu_v, v_name)
+    for i, c in enumerate(outs):
+        vax.curve(xs, np.array([v * conv * mu_v for _, v in c]), MAIN if i == 0 else FAR, f"analogue-{i}")
+    for x in (0.0, x_end, 360.0):
+        dot(vrec, (x * mu_phi, 0.0), 0.6)
+    y_v = 16.0 + fast * mu_v + 6.0
+    rec.prims.extend(vrec.moved(0.0, y_v).prims)
+    for x in (0.0, x_end, 360.0):  # the extreme positions through both diagrams
+        rec.line((x * mu_phi, -top * mu_q - 4.0), (x * mu_phi, y_v + fast * mu_v),
+                 Style(width=0.18, stroke="#555", dash=(2.0, 1.0)))
+    q_unit = "°" if rocker else u
+    scale = (f"μ_φ = {fmt(mu_phi, 3, lang)} {mm}/°; μ_{'ψ' if rocker else 's'} = {fmt(mu_q, 3, lang)} {mm}/{q_unit}; "
+             f"μ′ = {fmt(mu_v, 3, lang)} {mm}/({q_unit}/{rad})")
+    note = f"K = {fmt(x_end, 5, lang)}°/{fmt(360.0 - x_end, 5, lang)}° = {fmt(m0.K, 6, lang)}"
+    return finish("output-motion", "synthesis-motion", None, rec, _w("motion", lang), scale, note)
+
+
+def gamma_panel(ds: DesignSolution, lang: str, mu_phi: float, g: float = 1.0, tall: float = 1.0) -> Panel:
+    """The transmission angle γ over one crank turn from the start of the working stroke (at
+    ``mu_phi`` mm per degree of the turn), γmin on it and the permissible one."""
+    from drawings.cycle.cycle_plot import Axes
+    from plans.kinematics.scales import round_scale
+
+    d, t = ds.design, ds.task
+    m0 = d.measured[0]
+    n = 361
+    turn = [360.0 * k / (n - 1) for k in range(n)]
+    phis = [m0.phi_start + t.sense * math.radians(x) for x in turn]
+    mu_g = round_scale(90.0, 90.0 * g * tall)  # mm per degree of γ
+    L = 360.0 * mu_phi
+    rec = Recording()
+    ax = Axes(rec, "motion-g", mu_phi * 180.0 / math.pi, 0.0, lang)
+    xs = ax.x(np.asarray(turn))
+    ax.frame(L, 0.0, 90.0 * mu_g, "γ")
+    gam = [min(m.gamma(p) for m in d.mechs) for p in phis]
+    ax.curve(xs, np.degrees(gam) * mu_g, MAIN, "gamma")
+    allowed = t.gamma_min if t.gamma_min is not None else (
+        math.pi / 2 - t.pressure_angle_max if t.pressure_angle_max is not None else None)
+    if allowed is not None:
+        ax.hline(math.degrees(allowed) * mu_g, 0.0, L, WORST, f"[γ] = {fmt(math.degrees(allowed), 4, lang)}°")
+    g_min = min(x.gamma_min for x in d.measured)
+    k = min(range(n), key=lambda j: gam[j])
+    dot(rec, (float(xs[k]), -math.degrees(g_min) * mu_g), 0.6, "gamma-min-dot")
+    _text(rec, f"γmin = {fmt(math.degrees(g_min), 4, lang)}°", (float(xs[k]) + 1.5, -math.degrees(g_min) * mu_g + 2.0),
+          SMALL, valign="top", eid="gamma-min-reading", fill="#c00000")
+    x_end = math.degrees(((m0.phi_end - m0.phi_start) * t.sense) % (2 * math.pi))
+    for x in (0.0, x_end, 360.0):  # the extreme positions
+        rec.line((x * mu_phi, -90.0 * mu_g - 4.0), (x * mu_phi, 0.0), Style(width=0.18, stroke="#555", dash=(2.0, 1.0)))
+    mm = "мм" if lang == "ru" else "mm"
+    scale = f"μ_φ = {fmt(mu_phi, 3, lang)} {mm}/°; μ_γ = {fmt(mu_g, 3, lang)} {mm}/°"
+    return finish("transmission", "synthesis-motion", None, rec, _w("gamma", lang), scale)
+
+
+def _largest(ds: DesignSolution, spec: SheetSpec) -> list[Panel]:
+    """The construction at the largest standard scale (and the diagrams over the turn at the
+    longest round φ axis) that keep the sheet one sheet; else at the old lengths."""
+    from drawings.paper.fill import fullest_on_one_sheet
+
     W, H = spec.size
     x0, y0, x1, y1 = usable(W, H)
+    g = min(W / 841.0, H / 594.0)
+    lang = spec.language
+    table = table_panel(ds, lang)
+    longest = max(x1 - x0, y1 - y0)
+    top = construction_panel(ds, lang, longest).scale or 1000.0
+    mus = [r * 1000.0 for r in STANDARD_RATIOS if r * 1000.0 <= top * (1 + 1e-9)]
+    axes = [a for a in (2.0, 1.0, 0.5, 0.25) if a <= max(2 * g, 0.25) * (1 + 1e-9)]
+
+    def candidates(mu: float):
+        c = construction_panel(ds, lang, longest, mu)
+        for a in axes:
+            gammas = [gamma_panel(ds, lang, a, g, tall) for tall in (2.0, 1.0)]
+            for tall in (2.0, 1.5, 1.0):
+                motion = motion_panel(ds, lang, a, g, tall)
+                for gamma in gammas:
+                    yield [c, table, motion, gamma]
+
+    found = fullest_on_one_sheet((candidates(mu) for mu in mus), spec, ds.task.path,
+                                 lambda ps: ratio_text(ps[0].scale or 1000.0))
+    if found is not None:
+        return found[0]
     wide = (x1 - x0) > (y1 - y0)
     target = min((x1 - x0) * (0.62 if wide else 0.95), (y1 - y0) - TB_H - GAP - 30.0 - (0 if wide else 90.0))
-    return [construction_panel(ds, spec.language, target), table_panel(ds, spec.language)]
+    return [construction_panel(ds, lang, target), table]
+
+
+def build_panels(ds: DesignSolution, spec: SheetSpec) -> list[Panel]:
+    return _largest(ds, spec)
 
 
 @drawing

@@ -6,6 +6,7 @@ so a failure never leaves a half-written output and no input is ever overwritten
 from __future__ import annotations
 
 import os
+import sys
 import tomllib
 from collections.abc import Iterable, Iterator, Mapping
 from contextlib import contextmanager
@@ -161,6 +162,17 @@ def dumps(data: Any) -> str:
     import json
 
     return json.dumps(data, ensure_ascii=False, indent=2, allow_nan=False) + "\n"
+
+
+def json_out(where: str | None, text: str) -> bool:
+    """A command's JSON to stdout (``-``: then True, the command prints nothing else) or to
+    the file ``where`` (none when ``where`` is empty)."""
+    if where == "-":
+        sys.stdout.write(text)
+        return True
+    if where:
+        atomic_write(where, text)
+    return False
 
 
 def read_toml(path: str | Path) -> dict[str, Any]:

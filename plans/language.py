@@ -493,6 +493,19 @@ def add_option(parser: Any) -> None:
                              "Russian when LANG starts with ru, else English)")
 
 
+def file_command(sub: Any, name: str, help: str, file: str, file_help: str, json_help: str,
+                 quiet_help: str | None = None) -> Any:
+    """A command of one file: the file, ``--json PATH|-``, ``--quiet`` when it prints a
+    table (``quiet_help``), ``--language``; the parser, for the command's own options."""
+    p = sub.add_parser(name, help=help)
+    p.add_argument(file, help=file_help)
+    p.add_argument("--json", metavar="PATH", help=json_help)
+    if quiet_help is not None:
+        p.add_argument("--quiet", action="store_true", help=quiet_help)
+    add_option(p)
+    return p
+
+
 # ---- sheet sets: the course's two sheets, tables split over parts (drawings.linkage.sheet_sets)
 SHEET_WORDS.update({
     "continued": ("(продолжение)", "(continued)"),

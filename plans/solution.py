@@ -27,6 +27,7 @@ from pathlib import PurePath
 from typing import TYPE_CHECKING, Any, NamedTuple, overload
 
 from plans.errors import ConstructionError, PlansError
+from plans.tolerances import SAME_ANGLE_DEG
 
 if TYPE_CHECKING:
     from plans.cycle.diagrams import Diagrams
@@ -259,12 +260,11 @@ class Solution:
 
     def dynamics_drawn(self, axis_mm: float, height: float) -> Dynamics:
         """The dynamics with its graphical part (Wittenbauer's diagram, the flywheel read off
-        it) drawn at a shorter φ axis and lower diagrams, for a sheet too small for the
-        default; made once per size."""
-        from plans.cycle.dynamics import dynamics
-
-        return self._shared(("dynamics", axis_mm, height),
-                          lambda: dynamics(self.scene, axis_mm=axis_mm, height=height))
+        it) drawn at another φ axis and diagram height (shorter and lower on a small sheet,
+        longer and taller where an A1 sheet has room): the same dynamics at other scales."""
+        d = self.dynamics
+        assert d is not None, "a scene with dynamics"
+        return self._shared(("dynamics", axis_mm, height), lambda: d.at(axis_mm, height))
 
     def diagrams_drawn(self, length_mm: float) -> Diagrams | None:
         """The kinematic diagrams drawn at a shorter φ axis (μφ = L/2π), for a sheet too small
@@ -364,7 +364,7 @@ class Solution:
                 return ()
             scene = replace(d.scene, outputs=d.scene.outputs | {"velocity_plan"})
             phis = np.asarray(d.spec.phi_deg, float)
-            phis = phis[phis < phis[0] + 360.0 - 1e-9]  # the second revolution of 720° repeats the first's plans
+            phis = phis[phis < phis[0] + 360.0 - SAME_ANGLE_DEG]  # the second revolution of 720° repeats the first's plans
             kin = solve(scene, phis, order=1)
             mu_v = d.scales.analogue / abs(d.scene.driver.omega)
             out = []

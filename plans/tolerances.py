@@ -29,3 +29,19 @@ VERDICT_REL = 1e-9
 
 #: A group whose construction lines meet at less than ~1e-6 rad is reported as ill-conditioned.
 ILL_CONDITIONED = 1e6
+
+#: A value computed exactly in double precision is at a bound when within this fraction of it
+#: (a few dozen operations lose ~1e-14; 1e-12 leaves a margin and is still far below anything
+#: drawn or measured): a round scale that is the value, a stroke's end reached, a tooth's tip
+#: on its base circle, two modules the same.
+ROUND_OFF_REL = 1e-12
+
+#: Two results of different exact computations of one thing (a point met by two routes, a
+#: train's equations, the cuts of a quadrature, a check's two exact values) agree within this
+#: fraction of their size: a cycle's sums and iterations lose more than one operation's
+#: round-off, and far less than 1e-9.
+AGREE_REL = 1e-9
+
+#: A polygon of forces or moments (an engine's balance) closes when its resultant is within
+#: this fraction of its largest vector: a sum of a few dozen exact terms.
+CLOSED_REL = 1e-9

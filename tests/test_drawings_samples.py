@@ -251,10 +251,9 @@ def test_a1_sheets_are_not_left_empty(drawn):
 
 #: Samples with an A1 sheet still more than a third empty: a kinetostatics sheet whose first
 #: position is a dead centre (a block one mechanism high), kinematics sheets whose plans at the
-#: next longer round scale would take another sheet, the dynamics sheets (their diagrams keep
-#: the 240 mm φ axis).
-NOT_TWO_THIRDS = {"dynamics_slider_crank", "offset_slider_crank", "scotch_yoke", "shaper", "shaper_course",
-                  "shaper_friction", "single_four_stroke", "slider_crank", "v_engine", "v_engine_cycle",
+#: next longer round scale would take another sheet.
+NOT_TWO_THIRDS = {"offset_slider_crank", "scotch_yoke", "shaper", "shaper_course",
+                  "shaper_friction", "single_four_stroke", "slider_crank", "v_engine",
                   "v_engine_friction"}
 
 

@@ -92,19 +92,20 @@ def test_the_energy_mass_diagram_is_drawn_smaller_on_a4():
     every position numbered."""
     import re
 
-    from drawings.cycle import _fitting_dynamics, _w_panel
+    from drawings.cycle import fitting_dynamics
+    from drawings.cycle.dynamics_diagrams import w_panel
     from drawings.paper.sheet import fits_empty
 
     scene = load_scene(ROOT / "samples" / "single_four_stroke.toml")
     spec = scene.sheet_for(format="A4")
     sol = solve(scene, fit=spec.fit)
     d = sol.cycle.dynamics
-    assert not fits_empty(_w_panel(d, "ru"), "A4", spec.orientation)
-    w = next(p for p in _fitting_dynamics(sol, d, sol.cycle.tables[-4:], spec) if p.pid == "dyn-W")
+    assert not fits_empty(w_panel(d, "ru"), "A4", spec.orientation)
+    w = next(p for p in fitting_dynamics(sol, d, sol.cycle.tables[-4:], spec) if p.pid == "dyn-W")
     assert fits_empty(w, "A4", spec.orientation)
     text = " ".join(t.label.plain for t in w.prims if t.op == "text" and t.label is not None)
     mu_T, mu_I = (float(re.search(rf"μ{q} = ([\d,]+) ", text).group(1).replace(",", ".")) for q in ("T", "I"))
-    full = " ".join(t.label.plain for t in _w_panel(d, "ru").prims if t.op == "text" and t.label is not None)
+    full = " ".join(t.label.plain for t in w_panel(d, "ru").prims if t.op == "text" and t.label is not None)
     mu_T1 = float(re.search(r"μT = ([\d,]+) ", full).group(1).replace(",", "."))
     assert is_round(mu_T) and is_round(mu_I) and mu_T < mu_T1
     curve = next(p for p in w.prims if p.eid == "dyn-W-curve")

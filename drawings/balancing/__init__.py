@@ -20,7 +20,7 @@ from drawings.paper.backend import CENTRE_LINE, HAIR, MAIN, Recording, Style
 from drawings.paper.common import Placer, arrow, degrees360, dot, fmt
 from drawings.paper.fonts import choose, drawing, metrics
 from drawings.paper.i18n import lookup
-from drawings.paper.sheet import Sheet, SheetSpec, compose, sheet_spec
+from drawings.paper.sheet import Sheet, SheetSpec, compose, fits_empty, sheet_spec, usable
 from drawings.paper.text import column_edges, layout
 from plans.balancing.analysis import KINDS, Balance, Polygon, Resultant
 from plans.balancing.engine import Engine
@@ -110,35 +110,60 @@ def draw(source: EngineSolution | Engine | str | Path, *, format: str | None = N
     b = es.balance
     panels = build_panels(es, spec.language)
     sheets = compose(panels, spec, "", engine.path)
+    if spec.format in GROWN:  # where an A1 sheet has room: the figures larger, at round scales
+        for size in SIZES:
+            bigger = build_panels(es, spec.language, size)
+            if not all(fits_empty(p, spec.format, spec.orientation) for p in bigger):
+                break
+            laid = compose(bigger, spec, "", engine.path)
+            if len(laid) <= len(sheets) and _emptiest(laid) > _emptiest(sheets):
+                panels, sheets = bigger, laid
     return BalancingDrawing(engine, b, spec, tuple(panels), tuple(sheets))
 
 
-def build_panels(es: EngineSolution, lang: str) -> list[Panel]:
+#: The formats whose balancing sheets take larger figures where they have room, and the sizes
+#: tried (times the A1 ones: the polygons' round scales, the phase diagrams, the crankshaft).
+GROWN = ("A1", "A2")
+SIZES = (1.1, 1.25, 1.4, 1.5, 1.75, 2.0, 2.25, 2.5)
+
+
+def _emptiest(sheets: Sequence[Sheet]) -> float:
+    """The part drawn of the emptiest sheet (its panels' boxes over its field less the title block)."""
+    parts = []
+    for sh in sheets:
+        a, tb = usable(sh.width, sh.height), sh.title_box
+        field = (a[2] - a[0]) * (a[3] - a[1]) - (tb[2] - tb[0]) * (tb[3] - tb[1])
+        parts.append(sum(p.width * p.height for p, _, _ in sh.placed) / field)
+    return min(parts)
+
+
+def build_panels(es: EngineSolution, lang: str, size: float = 1.0) -> list[Panel]:
+    """The sheet's panels, their figures ``size`` times the A1 ones (the tables as they are)."""
     b = es.balance
     e = b.engine
-    panels = [shaft_panel(e, lang), phase_panel(e, 1, lang), phase_panel(e, 2, lang)]
+    panels = [shaft_panel(e, lang, size), phase_panel(e, 1, lang, size), phase_panel(e, 2, lang, size)]
     for _quantity, res in (("force", b.forces), ("moment", b.moments)):
         for kind in KINDS:
             R = res[kind]
-            panels.append(polygon_panel(R, lang))
+            panels.append(polygon_panel(R, lang, size))
     from drawings.balancing.balancing_banks import bank_panels
 
-    panels += bank_panels(b, lang)
+    panels += bank_panels(b, lang, size)
     panels.append(results_panel(b, es.exact, lang))
-    panels.append(counterweights_panel(b, lang))
+    panels.append(counterweights_panel(b, lang, size))
     return panels
 
 
 # --------------------------------------------------------------------------- scheme and phase diagrams
 
 
-def shaft_panel(e: Engine, lang: str) -> Panel:
+def shaft_panel(e: Engine, lang: str, size: float = 1.0) -> Panel:
     """The crankshaft from the side: the axis, each crank as its projection on the vertical
     plane at its z, the cylinder numbers, the reference plane and the arms l_i."""
     zs = [c.z for c in e.cylinders] + [e.reference_z]
     span = max(max(zs) - min(zs), e.r)
-    s_z = 260.0 / span  # mm per m along the shaft
-    s_r = 30.0 / e.r  # mm per m of crank radius
+    s_z = 260.0 * size / span  # mm per m along the shaft
+    s_r = 30.0 * size / e.r  # mm per m of crank radius
     # cylinder 1 on the left, whichever way z runs
     sign = 1.0 if e.cylinders[0].z <= e.cylinders[-1].z else -1.0
     z0 = min(zs) if sign > 0 else max(zs)
@@ -174,12 +199,13 @@ def shaft_panel(e: Engine, lang: str) -> Panel:
     return finish("shaft", "scheme", None, rec, _t("shaft", lang), note)
 
 
-def phase_panel(e: Engine, order: int, lang: str) -> Panel:
-    """The star of cranks at k·β_i (and the banks' axes of a V engine)."""
+def phase_panel(e: Engine, order: int, lang: str, size: float = 1.0) -> Panel:
+    """The star of cranks at k·β_i (and the banks' axes of a V engine), its radius ``size``
+    times STAR_R."""
     pid = f"phase-{order}"
     rec = Recording()
     placer = Placer()
-    R = STAR_R
+    R = STAR_R * size
     rec.line((0.0, R + 6), (0.0, -R - 6), AXIS, f"{pid}-vertical")
     rec.text(layout(_t("tdc", lang), 0.0, -R - 7, SMALL_SIZE, "middle", "bottom"), "note", f"{pid}-tdc")
     placer.add_line([(0.0, R + 6), (0.0, -R - 6)])
@@ -228,7 +254,7 @@ def _path(poly: Polygon) -> list[complex]:
     return pts
 
 
-def polygon_panel(R: Resultant, lang: str) -> Panel:
+def polygon_panel(R: Resultant, lang: str, size: float = 1.0) -> Panel:
     """The vectors p_i (or p_i l_i) head to tail and the closing vector, one polygon per
     rotating part (forward and backward side by side for a V engine)."""
     pid = f"polygon-{R.quantity}-{R.kind}"
@@ -236,7 +262,7 @@ def polygon_panel(R: Resultant, lang: str) -> Panel:
     placer = Placer()
     paths = [_path(p) for p in R.polygons]
     extent = max(max(abs(a - b) for a in pts for b in pts) for pts in paths)
-    s = polygon_scale(extent)
+    s = polygon_scale(extent, size)
     x_off = 0.0
     sym = _SYM[(R.quantity, R.kind)]
     for poly, pts in zip(R.polygons, paths, strict=True):
@@ -388,7 +414,7 @@ def results_panel(b: Balance, chk: ExactCheck | None, lang: str) -> Panel:
     return grid_panel("results", _t("results", lang), head, rows, note)
 
 
-def counterweights_panel(b: Balance, lang: str) -> Panel:
+def counterweights_panel(b: Balance, lang: str, size: float = 1.0) -> Panel:
     head = [_t("for", lang), _t("plane", lang), _t("mr", lang), _t("mass", lang), _t("radius", lang),
             _t("angle", lang)]
     rows = [[_t(c.of, lang), fmt(c.plane_z, 4, lang), fmt(c.mass_radius, 4, lang), fmt(c.mass, 4, lang),
@@ -399,7 +425,7 @@ def counterweights_panel(b: Balance, lang: str) -> Panel:
     # an end view: crank 1 up, each counterweight's m·r as a vector at its angle
     rec = Recording()
     placer = Placer()
-    Rr = 22.0
+    Rr = 22.0 * size
     rec.circle((0.0, 0.0), Rr, HAIR, "cw-circle")
     rec.line((0.0, 0.0), (0.0, -Rr), Style(width=0.7), "cw-crank1")
     placer.add_line([(0.0, 0.0), (0.0, -Rr)])

@@ -47,9 +47,9 @@ def _w(key: str, lang: str, **kw: object) -> str:
     return _word(key, lang).format(**kw)
 
 
-def bank_panels(b: Balance, lang: str) -> list[Panel]:
+def bank_panels(b: Balance, lang: str, size: float = 1.0) -> list[Panel]:
     """One panel per quantity and order, for an engine with more than one bank; the moment
-    panels only where some cylinder has an arm."""
+    panels only where some cylinder has an arm; ``size`` times the A1 sizes."""
     if len(b.banks.banks) < 2:
         return []
     out = []
@@ -59,7 +59,7 @@ def bank_panels(b: Balance, lang: str) -> list[Panel]:
             if all(p.scale_ref == 0.0 for _, p in polys):
                 continue
             loci = b.banks.forces if quantity == "force" else b.banks.moments
-            out.append(_panel(quantity, kind, polys, loci[kind], b.banks.banks, lang))
+            out.append(_panel(quantity, kind, polys, loci[kind], b.banks.banks, lang, size))
     return out
 
 
@@ -71,14 +71,14 @@ def _path(p: BankPolygon) -> list[complex]:
 
 
 def _panel(quantity: str, kind: str, polys: list[tuple[Bank, BankPolygon]], L: Locus,
-           banks: tuple[Bank, ...], lang: str) -> Panel:
+           banks: tuple[Bank, ...], lang: str, size: float = 1.0) -> Panel:
     k = 1 if kind == "first_order" else 2
     pid = f"banks-{quantity}-{kind}"
     rec = Recording()
     placer = Placer()
     paths = [_path(p) for _, p in polys]
     extent = max(max(abs(a - c) for a in pts for c in pts) for pts in paths)
-    s = polygon_scale(extent) / 2.0  # the bank polygons are drawn at half the polygon panels' size
+    s = polygon_scale(extent, size) / 2.0  # the bank polygons are drawn at half the polygon panels' size
     sym = ("r" if quantity == "force" else "m") + f"_{ROMAN[k]}"
     unit = _w("N*m" if quantity == "moment" else "N", lang)
     x_off = 0.0
@@ -127,7 +127,7 @@ def _panel(quantity: str, kind: str, polys: list[tuple[Bank, BankPolygon]], L: L
                      head.box[3] + 1.0, SMALL_SIZE, "start", "top")
         rec.text(amp, "note", f"{tag}-amplitude")
         x_off = rec.bbox()[2] + 12.0
-    _locus(rec, pid, L, banks, x_off + LOCUS_MM, unit, sym, lang)
+    _locus(rec, pid, L, banks, x_off + LOCUS_MM * size, unit, sym, lang, LOCUS_MM * size)
     title = _w(quantity, lang, k=ROMAN[k])
     scale = f"μ = {fmt(s, 4, lang)} {'мм/ед.' if lang == 'ru' else 'mm/unit'}; " \
             f"{'ед.' if lang == 'ru' else 'unit'} = {fmt(polys[0][1].unit, 5, lang)} {unit}"
@@ -135,10 +135,10 @@ def _panel(quantity: str, kind: str, polys: list[tuple[Bank, BankPolygon]], L: L
 
 
 def _locus(rec: Recording, pid: str, L: Locus, banks: tuple[Bank, ...], xc: float, unit: str, sym: str,
-           lang: str) -> None:
-    """The banks' axes through one centre and the path of the combined vector's tip."""
+           lang: str, R: float = LOCUS_MM) -> None:
+    """The banks' axes through one centre and the path of the combined vector's tip, its
+    largest vector ``R`` mm long."""
     o = (xc, 0.0)
-    R = LOCUS_MM
     for bank in banks:
         a, c = engine_paper(bank.direction, R + 6.0, o), engine_paper(-bank.direction, R + 6.0, o)
         rec.line(c, a, BANK_AXIS, f"{pid}-sum-axis-{bank.number}")

@@ -17,9 +17,10 @@ def engine_paper(z: complex, s: float, o: Pt = (0.0, 0.0)) -> Pt:
     return Transform(s, o[0], o[1])(-z.imag, z.real)
 
 
-def polygon_scale(extent: float) -> float:
+def polygon_scale(extent: float, size: float = 1.0) -> float:
     """mm per dimensionless unit: the largest round value (1, 2, 2.5, 4, 5, 8 × 10^k) that
-    draws ``extent`` units within POLY_MM; 20 where there is nothing to draw."""
+    draws ``extent`` units within POLY_MM (``size`` times that where the sheet has room); 20
+    where there is nothing to draw."""
     if extent <= 0:
         return 20.0
-    return round_scale(extent, POLY_MM, POLYGON_ROUND)
+    return round_scale(extent, POLY_MM * size, POLYGON_ROUND)

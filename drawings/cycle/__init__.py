@@ -17,73 +17,27 @@ from pathlib import Path
 import numpy as np
 
 from drawings.cycle.cycle_plot import EXACT, GRAPH, Axes, number, plot_panel, wide_table
+from drawings.cycle.dynamics_diagrams import (
+    a_panel,
+    fly_table,
+    i_panel,
+    indicator_panels,
+    m_panel,
+    omega_panel,
+    t_panel,
+    w_panel,
+)
+from drawings.cycle.words import UNITS, tr
 from drawings.linkage.panels import Panel
-from drawings.paper.backend import HAIR, MAIN, THIN, Recording, Style
+from drawings.paper.backend import Recording
 from drawings.paper.common import fmt
-from drawings.paper.i18n import lookup
 from drawings.paper.sheet import Sheet, SheetSpec, compose
-from drawings.paper.text import layout
 from plans.cycle import spline
 from plans.cycle.diagrams import Diagrams
 from plans.cycle.dynamics import Dynamics
 from plans.cycle.table import CycleTable, TableRow
 from plans.scene.model import Scene
 from plans.solution import Solution
-
-WORDS: dict[str, tuple[str, str]] = {
-    "diagrams": ("Кинематические диаграммы", "Kinematic diagrams"),
-    "dynamics": ("Динамика машины. Маховик", "Machine dynamics. Flywheel"),
-    "s": ("Диаграмма перемещений", "Displacement diagram"),
-    "v": ("Диаграмма скоростей", "Velocity diagram"),
-    "a": ("Диаграмма ускорений", "Acceleration diagram"),
-    "chords": ("метод хорд", "chord method"),
-    "tangents": ("метод касательных", "tangent method"),
-    "exact_thin": ("тонкая штриховая — точная кривая", "thin dashed: exact curve"),
-    "error": ("погрешность", "error"),
-    "errors": ("Погрешность графических диаграмм, % размаха", "Error of the graphical diagrams, % of range"),
-    "M": ("Приведённый момент сил M_пр(φ)", "Reduced moment of forces M_pr(φ)"),
-    "A": ("Работы A_c(φ), A_д(φ)", "Work A_c(φ), A_d(φ)"),
-    "T": ("Изменение кинетической энергии ΔT(φ)", "Change of kinetic energy ΔT(φ)"),
-    "I": ("Приведённый момент инерции I_пр(φ)", "Reduced moment of inertia I_pr(φ)"),
-    "W": ("Диаграмма энергомасс (Виттенбауэр)", "Energy–mass diagram (Wittenbauer)"),
-    "w": ("Угловая скорость кривошипа ω(φ)", "Angular velocity of the crank ω(φ)"),
-    "fly": ("Маховик", "Flywheel"),
-    "sign": ("M_пр > 0: нагрузки движут кривошип", "M_pr > 0: the loads drive the crank"),
-    "method": ("Метод", "Method"),
-    "inertia": ("I_м, кг·м²", "I_fw, kg·m²"),
-    "achieved": ("δ достигнутое", "δ achieved"),
-    "diff": ("Δ к точному, %", "vs exact, %"),
-    "graphical": ("Виттенбауэр", "Wittenbauer"),
-    "merkalov": ("Мерцалов", "Merkalov"),
-    "exact": ("точно", "exact"),
-    "position": ("№ положения", "Position"),
-    "phi": ("φ, °", "φ, deg"),
-    "analogues": ("Аналоги скоростей", "Velocity analogues"),
-    "Ipr": ("Приведённый момент инерции, кг·м²", "Reduced moment of inertia, kg·m²"),
-    "Mpr": ("Приведённый момент сил, Н·м", "Reduced moment of forces, N·m"),
-    "plans": ("Планы по положениям", "Plans over the positions"),
-    "ordinates": ("Ординаты диаграмм по положениям:", "Ordinates of the diagrams over the positions:"),
-    "energy": ("Работы и кинетическая энергия, Дж", "Work and kinetic energy, J"),
-    "with_graphical": ("с маховиком по Виттенбауэру", "with the Wittenbauer flywheel"),
-    "with_exact": ("с точным маховиком", "with the exact flywheel"),
-    "indicator": ("Индикаторная диаграмма", "Indicator diagram"),
-    "intake": ("впуск", "intake"),
-    "compression": ("сжатие", "compression"),
-    "expansion": ("расширение", "expansion"),
-    "exhaust": ("выпуск", "exhaust"),
-    "down": ("ход к валу", "toward the crank"),
-    "up": ("ход от вала", "away from the crank"),
-    "fires": ("воспламенение при φ", "ignition at φ"),
-}
-
-
-_UNITS = {"N*m": ("Н·м", "N·m"), "kg*m^2": ("кг·м²", "kg·m²"), "m": ("м", "m"), "mm": ("мм", "mm"),
-          "J": ("Дж", "J"), "N": ("Н", "N"), "m/s": ("м/с", "m/s"), "m/s^2": ("м/с²", "m/s²"),
-          "rad/s": ("рад/с", "rad/s"), "rad/s^2": ("рад/с²", "rad/s²"), "deg": ("°", "°")}
-
-
-tr = lookup(WORDS)
-
 
 # --------------------------------------------------------------------------- kinematic diagrams
 
@@ -138,7 +92,7 @@ def _ordinates_table(dg: Diagrams, lang: str, first: int = 1) -> list[Panel]:
             if g.subject != subject:
                 continue
             at = np.interp(dg.nodes_deg[:-1], g.phi_deg, g.values, period=360.0)
-            u = _UNITS.get(g.unit, (g.unit, g.unit))[0 if lang == "ru" else 1]
+            u = UNITS.get(g.unit, (g.unit, g.unit))[0 if lang == "ru" else 1]
             rows.append(TableRow(f"{g.name}:mm", f"y({g.name})", "mm", tuple(float(x) for x in at * g.scale)))
             rows.append(TableRow(g.name, g.name, u, tuple(float(x) for x in at)))
         tables.append(CycleTable(f"{tr('ordinates', lang)} {subject}", tuple(float(x) for x in dg.nodes_deg[:-1]),
@@ -160,199 +114,7 @@ def _closed(xs: np.ndarray, ys: np.ndarray, L: float) -> tuple[np.ndarray, np.nd
 # --------------------------------------------------------------------------- dynamics
 
 
-def _m_panel(d: Dynamics, lang: str, first: int = 1) -> Panel:
-    s = d.scales
-    t = d.table
-    rec = Recording()
-    ax = Axes(rec, "dyn-M", s.phi, float(t.phi_deg[0]), lang, first)
-    rad = np.radians(t.phi_deg - t.phi_deg[0])
-    xs_s, ys_s = spline.sample(rad, t.M_pr, spline.slopes(rad, t.M_pr), 8)
-    ye = d.exact.M_pr * s.M
-    L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
-    ax.frame(L, float(min(ye.min(), t.M_pr.min() * s.M)), float(max(ye.max(), t.M_pr.max() * s.M)), "M_пр" if lang == "ru" else "M_pr")
-    ax.positions(t.phi_deg[:-1])
-    ax.curve(ax.x(d.exact.phi_deg), ye, EXACT)
-    ax.curve(xs_s * s.phi, ys_s * s.M, GRAPH, "dyn-M-graphical")
-    ax.dots(ax.x(t.phi_deg), t.M_pr * s.M)
-    # the mean ordinate of each interval, projected onto the axis, and the pole's rays to it
-    means = spline.interval_integrals(rad, t.M_pr, spline.slopes(rad, t.M_pr)) / np.diff(rad)
-    for k, m in enumerate(means):
-        x0, x1 = rad[k] * s.phi, rad[k + 1] * s.phi
-        rec.line((x0, -m * s.M), (x1, -m * s.M), HAIR)
-    ax.pole(s.H, means * s.M)
-    ax.hline(-d.M_driving * s.M, 0.0, L, Style(width=0.35, dash=(4, 1.5)), f"−M_д = {fmt(-d.M_driving, 4, lang)}"
-             if lang == "ru" else f"−M_d = {fmt(-d.M_driving, 4, lang)}")
-    scale = f"μ_M = {fmt(s.M, 4, lang)} mm/(N·m); μ_φ = {fmt(s.phi, 4, lang)} mm/rad; H = {fmt(s.H, 3, lang)} mm"
-    return plot_panel("dyn-M", "dynamics", tr("M", lang), rec, scale, tr("sign", lang), lang=lang)
-
-
-def _a_panel(d: Dynamics, lang: str, first: int = 1) -> Panel:
-    s = d.scales
-    t = d.table
-    rec = Recording()
-    ax = Axes(rec, "dyn-A", s.phi, float(t.phi_deg[0]), lang, first)
-    L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
-    ya = np.concatenate([d.A_c, d.A_d]) * s.A
-    ax.frame(L, float(ya.min()), float(ya.max()), "A")
-    ax.positions(t.phi_deg[:-1])
-    ex_A = d.A_c_exact * s.A
-    ax.curve(ax.x(d.exact.phi_deg), ex_A, EXACT)
-    rad = np.radians(t.phi_deg - t.phi_deg[0])
-    xs, ys = spline.sample(rad, d.A_c, spline.slopes(rad, d.A_c), 8)
-    ax.curve(xs * s.phi, ys * s.A, GRAPH, "dyn-A-c")
-    ax.dots(ax.x(t.phi_deg), d.A_c * s.A)
-    rec.line((0.0, 0.0), (L, -d.A_d[-1] * s.A), MAIN, "dyn-A-d")
-    end_c = "A_c" if lang != "ru" else "A_с"
-    rec.text(layout(end_c, L + 1.5, -d.A_c[-1] * s.A, 2.5, "start", "middle"), "note")
-    rec.text(layout("A_д" if lang == "ru" else "A_d", L + 1.5, -d.A_d[-1] * s.A, 2.5, "start", "middle"), "note")
-    scale = f"μ_A = μ_M·μ_φ/H = {fmt(s.A, 4, lang)} mm/J"
-    return plot_panel("dyn-A", "dynamics", tr("A", lang), rec, scale, tr("exact_thin", lang), lang=lang)
-
-
-def _t_panel(d: Dynamics, lang: str, first: int = 1) -> Panel:
-    s = d.scales
-    t = d.table
-    rec = Recording()
-    ax = Axes(rec, "dyn-T", s.phi, float(t.phi_deg[0]), lang, first)
-    L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
-    ye = d.dT_exact * s.A
-    ax.frame(L, float(min(ye.min(), d.dT.min() * s.A)), float(max(ye.max(), d.dT.max() * s.A)), "ΔT")
-    ax.positions(t.phi_deg[:-1])
-    ax.curve(ax.x(d.exact.phi_deg), ye, EXACT)
-    rad = np.radians(t.phi_deg - t.phi_deg[0])
-    xs, ys = spline.sample(rad, d.dT, spline.slopes(rad, d.dT), 8)
-    ax.curve(xs * s.phi, ys * s.A, GRAPH, "dyn-T-graphical")
-    ax.dots(ax.x(t.phi_deg), d.dT * s.A)
-    scale = f"μ_T = μ_A = {fmt(s.A, 4, lang)} mm/J; ΔT = A_c + A_d" if lang != "ru" else \
-        f"μ_T = μ_A = {fmt(s.A, 4, lang)} мм/Дж; ΔT = A_с + A_д"
-    return plot_panel("dyn-T", "dynamics", tr("T", lang), rec, scale, lang=lang)
-
-
-def _i_panel(d: Dynamics, lang: str, first: int = 1) -> Panel:
-    s = d.scales
-    t = d.table
-    rec = Recording()
-    ax = Axes(rec, "dyn-I", s.phi, float(t.phi_deg[0]), lang, first)
-    L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
-    ye = d.exact.I_pr * s.I
-    ax.frame(L, 0.0, float(ye.max()), "I_пр" if lang == "ru" else "I_pr")
-    ax.positions(t.phi_deg[:-1])
-    ax.curve(ax.x(d.exact.phi_deg), ye, EXACT)
-    rad = np.radians(t.phi_deg - t.phi_deg[0])
-    xs, ys = spline.sample(rad, t.I_pr, spline.slopes(rad, t.I_pr), 8)
-    ax.curve(xs * s.phi, ys * s.I, GRAPH, "dyn-I-graphical")
-    ax.dots(ax.x(t.phi_deg), t.I_pr * s.I)
-    scale = f"μ_I = {fmt(s.I, 4, lang)} mm/(kg·m²)"
-    return plot_panel("dyn-I", "dynamics", tr("I", lang), rec, scale, lang=lang)
-
-
-W_WIDTH_MM = 150.0  # the energy–mass diagram's I_pr extent from I = 0
-W_HEIGHT_MM = 110.0  # ... and its ΔT extent with k and l
-
-
-def _w_panel(d: Dynamics, lang: str, first: int = 1, size: float = 1.0) -> Panel:
-    """ΔT against I_pr from I = 0: the closed curve, the tangents at ψ_max, ψ_min, k and l; at
-    its own round scales (the curve about W_WIDTH_MM × W_HEIGHT_MM, readable; ``size`` times
-    that on a small sheet, its letters the same), every position numbered (coincident ones
-    share a label: "1, 13")."""
-    from drawings.linkage.overview import coincident_positions
-    from drawings.paper.common import Placer
-    from plans.kinematics.scales import round_scale
-
-    w = d.wittenbauer
-    rec = Recording()
-    placer = Placer()
-    t = d.table
-    span = float(max(np.max(w.dT), w.k, w.l, 0.0) - min(np.min(w.dT), w.k, w.l, 0.0))
-    mu_T = round_scale(span, W_HEIGHT_MM * size) if span > 0 else d.scales.A
-    top_I = float(np.max(w.I))
-    mu_I = round_scale(top_I, W_WIDTH_MM * size) if top_I > 0 else d.scales.I
-    X = w.I * mu_I
-    Y = w.dT * mu_T
-    x_hi = float(X.max()) + 8.0
-    k_mm, l_mm = w.k * mu_T, w.l * mu_T
-    lo = float(min(Y.min(), k_mm, l_mm))
-    hi = float(max(Y.max(), k_mm, l_mm))
-    ax = Axes(rec, "dyn-W", 1.0, 0.0, lang)
-    ax.frame(x_hi, lo, hi, "ΔT", "I_пр" if lang == "ru" else "I_pr")
-    curve = [(float(a), float(-b)) for a, b in zip(X, Y, strict=True)]
-    rec.polyline(curve, GRAPH, "dyn-W-curve")
-    placer.add_line(curve)
-    placer.add_line([(0.0, 0.0), (x_hi + 8.0, 0.0)])
-    for name, b, slope, touch in (("k", w.k, w.slope_max, w.touch_max), ("l", w.l, w.slope_min, w.touch_min)):
-        tan = slope * mu_T / mu_I  # on paper
-        x1 = float(X[touch]) + 6.0
-        rec.line((0.0, -b * mu_T), (x1, -(b * mu_T + tan * x1)), THIN, f"dyn-W-tangent-{name}")
-        placer.add_line([(0.0, -b * mu_T), (x1, -(b * mu_T + tan * x1))])
-        rec.circle((0.0, -b * mu_T), 0.6, Style(stroke=None, width=0, fill="#000"))
-        rec.text(layout(name, -1.5, -b * mu_T, 3.5, "end", "middle"), "point")
-    pts = [(float(t.I_pr[k] * mu_I), float(-d.dT[k] * mu_T)) for k in range(len(t.phi_deg) - 1)]
-    for p in pts:
-        rec.circle(p, 0.6, Style(stroke=None, width=0, fill="#000"))
-        placer.add_disc(p, 0.8)
-    cx = sum(p[0] for p in pts) / max(len(pts), 1)
-    cy = sum(p[1] for p in pts) / max(len(pts), 1)
-    for ks in coincident_positions(pts):
-        p = pts[ks[0]]
-        away = (p[0] - cx, p[1] - cy)
-        L = math.hypot(*away) or 1.0
-        lab = placer.place(", ".join(str(k + first) for k in ks), p, 2.5, prefer=(away[0] / L, away[1] / L),
-                           gap=0.8)
-        rec.text(lab, "tick", f"dyn-W-n-{ks[0] + first}")
-    kl = (w.k - w.l) * mu_T
-    fw = d.flywheel
-    scale = (f"μ_T = {fmt(mu_T, 4, lang)} mm/J; μ_I = {fmt(mu_I, 4, lang)} mm/(kg·m²); "
-             f"tg ψ = (μ_T/μ_I)·ω_{{m}}²(1 ± δ)/2")
-    note = (f"kl = {fmt(kl, 4, lang)} mm; I_fw = kl/(μ_T·ω_{{m}}²·δ) = {fmt(fw.inertia_graphical, 4, lang)} kg·m²; "
-            f"ω_m = {fmt(fw.omega_mean, 4, lang)} rad/s, δ = {fmt(fw.delta, 4, lang)}")
-    return plot_panel("dyn-W", "dynamics", tr("W", lang), rec, scale, note, lang=lang)
-
-
-def _omega_panel(d: Dynamics, lang: str, first: int = 1) -> Panel:
-    """ω(φ) by exact integration of the motion, magnified about ω_m."""
-    s = d.scales
-    fw = d.flywheel
-    rec = Recording()
-    ax = Axes(rec, "dyn-w", s.phi, float(d.exact.phi_deg[0]), lang, first)
-    L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
-    span = max(float(np.ptp(d.omega)), float(np.ptp(d.omega_exact)), 1e-300)
-    mu_w = 40.0 / span
-    y_g = (d.omega - fw.omega_mean) * mu_w
-    y_e = (d.omega_exact - fw.omega_mean) * mu_w
-    ax.frame(L, float(min(y_g.min(), y_e.min())), float(max(y_g.max(), y_e.max())), "ω − ω_m")
-    ax.positions(d.table.phi_deg[:-1])
-    ax.curve(ax.x(d.exact.phi_deg), y_e, EXACT, "dyn-w-exact")
-    ax.curve(ax.x(d.exact.phi_deg), y_g, GRAPH, "dyn-w-graphical")
-    half = fw.delta * fw.omega_mean / 2 * mu_w
-    for y, lab in ((half, "ω_max"), (-half, "ω_min")):
-        ax.hline(y, 0.0, L, Style(width=0.2, dash=(3, 1.5)), lab)
-    scale = f"μ_ω = {fmt(mu_w, 4, lang)} mm/(rad/s); ω_m = {fmt(fw.omega_mean, 5, lang)} rad/s"
-    note = (f"{tr('with_graphical', lang)}: δ = {fmt(fw.delta_achieved, 4, lang)}; "
-            f"{tr('with_exact', lang)} ({tr('exact_thin', lang).split(' — ')[0]}): δ = "
-            f"{fmt(fw.delta_achieved_exact, 4, lang)}")
-    return plot_panel("dyn-w", "dynamics", tr("w", lang), rec, scale, note, lang=lang)
-
-
 #: Each diagram of the cycle's dynamics alone, by its letter: M, A, T, I, W and ω (``w``).
-DYNAMICS_DIAGRAMS = {"M": _m_panel, "A": _a_panel, "T": _t_panel, "I": _i_panel, "W": _w_panel, "w": _omega_panel}
-
-
-def _fly_table(d: Dynamics, lang: str) -> Panel:
-    fw = d.flywheel
-    ex = fw.inertia_exact
-
-    def pct(i: float) -> str:
-        return number(100 * (i - ex) / ex, lang, 3) if ex else "—"
-
-    rows = [[tr("graphical", lang), number(fw.inertia_graphical, lang, 5), number(fw.delta_achieved, lang, 4),
-             pct(fw.inertia_graphical)],
-            [tr("merkalov", lang), number(fw.inertia_merkalov, lang, 5), number(fw.delta_achieved_merkalov, lang, 4),
-             pct(fw.inertia_merkalov)],
-            [tr("exact", lang), number(ex, lang, 5), number(fw.delta_achieved_exact, lang, 4), "0"]]
-    head = [tr("method", lang), tr("inertia", lang), tr("achieved", lang), tr("diff", lang)]
-    note = (f"M_д = {fmt(d.M_driving, 4, lang)} Н·м (точно {fmt(d.M_driving_exact, 4, lang)})" if lang == "ru" else
-            f"M_d = {fmt(d.M_driving, 4, lang)} N·m (exact {fmt(d.M_driving_exact, 4, lang)})")
-    return wide_table("dyn-flywheel", f"{tr('fly', lang)}: δ = {fmt(fw.delta, 4, lang)}", head, rows, lang, note)
 
 
 def _rms(lang: str) -> str:
@@ -377,60 +139,12 @@ def table_panels(tables: Sequence[CycleTable], lang: str, prefix: str,
                 # a dead centre's 1e-8 is a zero on paper
                 cells = [None if r.values[k] is None else (0.0 if abs(r.values[k] or 0.0) <= 1e-5 * big
                                                           else r.values[k]) for k in ks]
-                u = _UNITS.get(r.unit, (r.unit, r.unit))[0 if lang == "ru" else 1]
+                u = UNITS.get(r.unit, (r.unit, r.unit))[0 if lang == "ru" else 1]
                 unit = f", {u}" if u and u != "1" else ""
                 label = re.sub(r"_pr\b", "_пр", r.label) if lang == "ru" else r.label  # I_пр, M_пр
                 rows.append([f"{label}{unit}"] + [number(c, lang, 4) for c in cells])
             out.append(wide_table(f"{prefix}-table-{i + 1}-{j + 1}", title, head, rows, lang))
     return out
-
-
-def indicator_panels(d: Dynamics, lang: str) -> list[Panel]:
-    """Each cylinder's indicator diagram as given: the pressure against the piston's travel
-    from the outer dead centre, one line per stroke (the working stroke drawn main), with its
-    ignition where it fires (found when the scene's loads were read)."""
-    out = []
-    loads = d.scene.loads
-    assert loads is not None, "a scene with dynamics holds its [loads]"
-    for k, gl in enumerate(loads.gas):
-        if not gl.diagram or gl.stroke <= 0:
-            continue
-        H_mm = gl.stroke * 1000
-        p_top = max(float(np.max(np.abs(p))) for _, p in gl.diagram.values()) or 1.0
-        mu_s = 100.0 / H_mm
-        mu_p = nice_scale_mm(p_top, 60.0)
-        rec = Recording()
-        ax = Axes(rec, f"ind-{k}", 1.0, 0.0, lang)
-        lows = [float(np.min(p)) for _, p in gl.diagram.values()]
-        ax.frame(100.0, min(lows + [0.0]) * mu_p, p_top * mu_p, "p", "s")
-        for side, (ts, ps) in gl.diagram.items():
-            style = MAIN if side in ("expansion", "down") else (THIN if side in ("compression", "up") else
-                                                                Style(width=0.25, dash=(3, 1.5)))
-            pts = [(float(t * 1000 * mu_s), float(-p * mu_p)) for t, p in zip(ts, ps, strict=True)]
-            rec.polyline(pts, style, f"ind-{k}-{side}")
-            # each stroke named at its own place along the travel, the low ones below their line
-            at = {"expansion": 0.3, "down": 0.3, "compression": 0.12, "up": 0.12, "exhaust": 0.55,
-                  "intake": 0.8}[side]
-            x = at * 100.0
-            y = -float(np.interp(at * gl.stroke, ts, ps)) * mu_p
-            below = side == "intake"
-            rec.text(layout(tr(side, lang), x + 1.0, y + (1.5 if below else -1.0), 2.5, "start",
-                            "top" if below else "bottom"), "note")
-        scale = (f"μ_s = {fmt(mu_s, 4, lang)} mm/mm (H = {fmt(H_mm, 4, lang)} mm); "
-                 f"μ_p = {fmt(mu_p * 1e6, 4, lang)} mm/MPa")
-        note = None
-        if gl.ignition is not None:
-            note = f"{tr('fires', lang)} = {fmt(gl.ignition, 5, lang)}°"
-        out.append(plot_panel(f"ind-{k}", "dynamics", f"{tr('indicator', lang)} {gl.name}", rec, scale, note,
-                              lang=lang))
-    return out
-
-
-def nice_scale_mm(top: float, target_mm: float) -> float:
-    """mm per unit drawing ``top`` at about ``target_mm``."""
-    from plans.kinematics.construction import nice_scale
-
-    return nice_scale(top, target_mm)
 
 
 def analogue_plans(plans: Sequence, lang: str, style: str) -> list[Panel]:
@@ -442,15 +156,17 @@ def analogue_plans(plans: Sequence, lang: str, style: str) -> list[Panel]:
 
 
 def dynamics_panels(d: Dynamics, tables: Sequence[CycleTable], lang: str, analogues: Sequence = (),
-                    columns: int = 12, first: int = 1, w_size: float = 1.0) -> list[Panel]:
+                    columns: int = 12, first: int = 1, w_size: float = 1.0, size: float = 1.0) -> list[Panel]:
     """The dynamics sheet's panels; ``w_size``: the energy–mass diagram's size against its
-    readable one (smaller on a small sheet)."""
+    readable one (smaller on a small sheet, larger where an A1 sheet has room); ``size``: the
+    ω(φ) and indicator diagrams' against their A1 ones."""
     titles = [f"{tr('analogues', lang)}, μ = {fmt(d.scales.analogue, 4, lang)} mm/m (ω_1 = 1)",
               tr("Ipr", lang), f"{tr('Mpr', lang)}; {tr('sign', lang)}", tr("energy", lang)]
     plans = analogue_plans(analogues, lang, d.scene.scale_style)  # none where the first sheet has the plans
-    return ([_m_panel(d, lang, first), _a_panel(d, lang, first), _t_panel(d, lang, first),
-             _i_panel(d, lang, first), _w_panel(d, lang, first, w_size), _omega_panel(d, lang, first), _fly_table(d, lang)]
-            + indicator_panels(d, lang) + table_panels(tables, lang, "dyn", titles, columns, first) + plans)
+    return ([m_panel(d, lang, first), a_panel(d, lang, first), t_panel(d, lang, first),
+             i_panel(d, lang, first), w_panel(d, lang, first, w_size), omega_panel(d, lang, first, size),
+             fly_table(d, lang)]
+            + indicator_panels(d, lang, size) + table_panels(tables, lang, "dyn", titles, columns, first) + plans)
 
 
 # --------------------------------------------------------------------------- the hook
@@ -479,25 +195,82 @@ def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_te
         sub = dataclasses.replace(spec, subtitle=tr("dynamics", lang), pins=())
         tabs = cr.tables[-4:]  # the dynamics' own: analogues, I_pr, M_pr, work and energy
         analogues = () if scene.wants("velocity_plan") else sol.analogue_plans()  # else on the first sheet
-        panels = _fitting_dynamics(sol, cr.dynamics, tabs, sub, analogues)
-        if lay is None:
-            extra += compose(panels, sub, scale_text, scene.path)
-        else:  # a last sheet left nearly empty: the diagrams on a shorter φ axis, if all then fit fewer
-            laid = lay(panels, sub)
+        panels = fitting_dynamics(sol, cr.dynamics, tabs, sub, analogues)
+        flat = lay is not None  # the course's set: its sheets laid flat
+
+        def laid_out(ps: list[Panel], sp: SheetSpec) -> list[Sheet]:
+            return lay(ps, sp) if lay is not None else compose(ps, sp, scale_text, scene.path)
+        laid = laid_out(panels, sub)
+        if spec.format in _GROWN:
+            laid = _fuller_dynamics(sol, panels, sub, laid_out, laid)
+        elif flat:  # a last sheet left nearly empty: the diagrams on a shorter φ axis, if all then fit fewer
             axis = 240.0
             while len(laid) > 1 and min(map(_used, laid)) < 1 / 3 and axis > 160.0:
                 axis -= 20.0
-                fewer = lay(_fitting_dynamics(sol, sol.dynamics_drawn(axis, 1.0), tabs, sub, analogues, axis), sub)
+                fewer = laid_out(fitting_dynamics(sol, sol.dynamics_drawn(axis, 1.0), tabs, sub, analogues, axis),
+                                 sub)
                 if len(fewer) < len(laid):
                     laid = fewer
                     break
-            extra += laid
+        extra += laid
     out = list(sheets) + extra
     for i, sh in enumerate(out):
         sh.number, sh.count = i + 1, len(out)
         sh.prims = []
         sh.render()
     return out
+
+
+#: The formats whose dynamics sheets take longer φ axes and taller diagrams where they have room.
+_GROWN = ("A1", "A2")
+#: The φ axes tried (mm over the working cycle: a course sheet's is 180 to 360 mm long, each
+#: position's step a round number of mm) and the diagrams' heights (times the A1 ones).
+_AXES = (180.0, 240.0, 300.0, 360.0)
+_HEIGHTS = (1.0, 1.25, 1.5, 2.0, 2.5)
+
+
+def _fuller_dynamics(sol: Solution, base: Sequence[Panel], spec: SheetSpec, lay, laid: list[Sheet]) -> list[Sheet]:
+    """The dynamics' sheets at the φ axis and diagram heights (round scales all, the
+    energy–mass, ω(φ) and indicator diagrams as much larger) that keep the fewest sheets and
+    leave the emptiest of them least empty; ``laid``, the A1 sizes' (``base``), where none does
+    better.  Each axis is tried from the lowest diagrams up, until they take one more sheet;
+    the tables and plans are ``base``'s, each diagram drawn once per size."""
+    from functools import cache
+
+    from drawings.paper.sheet import fits_empty
+
+    d = sol.dynamics
+    assert d is not None, "a scene with dynamics"
+    lang, first = spec.language, spec.first_position
+    best, key = laid, _key(laid, 240.0 * (1.5 if d.spec.cycle_deg == 720 else 1.0))
+    per_360 = 1.5 if d.spec.cycle_deg == 720 else 1.0  # the engine's axis is given for 360°
+    wit = cache(lambda size: w_panel(d, lang, first, size))
+    ind = cache(lambda size: indicator_panels(d, lang, size))
+    fixed = [p for p in base if p.pid == "dyn-flywheel"]
+    rest = [p for p in base if p.kind != "dynamics" and p.pid != "dyn-flywheel"]  # tables, plans
+    for length in _AXES:
+        fewest = None
+        for h in _HEIGHTS:
+            dh = sol.dynamics_drawn(length / per_360, h)
+            panels = ([f(dh, lang, first) for f in (m_panel, a_panel, t_panel, i_panel)]
+                      + [wit(min(h, 2.0)), omega_panel(dh, lang, first, h)] + fixed + ind(h) + rest)
+            if not all(fits_empty(p, spec.format, spec.orientation) for p in panels):
+                break
+            sheets = lay(panels, spec)
+            if fewest is not None and len(sheets) > fewest:
+                break
+            fewest = len(sheets) if fewest is None else fewest
+            if _key(sheets, length) > key:
+                best, key = sheets, _key(sheets, length)
+    return best
+
+
+def _key(sheets: Sequence[Sheet], axis: float) -> tuple[int, bool, float, float, float]:
+    """How good a set of sheets drawn at a φ axis of ``axis`` mm is: the fewest sheets first;
+    then none of them more than a third empty; then the longer axis; then its emptiest sheet's
+    part drawn (to 0.1 %), then all of them."""
+    parts = [_used(sh) for sh in sheets]
+    return -len(sheets), min(map(_drawn, sheets)) >= 2 / 3, axis, round(min(parts), 3), sum(parts)
 
 
 def fitting_diagrams(sol: Solution, dg: Diagrams, spec: SheetSpec) -> list[Panel]:
@@ -516,6 +289,16 @@ def fitting_diagrams(sol: Solution, dg: Diagrams, spec: SheetSpec) -> list[Panel
     return panels
 
 
+def _drawn(sheet: Sheet) -> float:
+    """The part of a sheet's field (inside the frame, less the title block) its panels cover."""
+    from drawings.paper.sheet import usable
+
+    a = usable(sheet.width, sheet.height)
+    tb = sheet.title_box
+    return sum(p.width * p.height for p, _, _ in sheet.placed) / (
+        (a[2] - a[0]) * (a[3] - a[1]) - (tb[2] - tb[0]) * (tb[3] - tb[1]))
+
+
 def _used(sheet: Sheet) -> float:
     """The part of a sheet's field (inside the frame) its panels cover (they do not overlap)."""
     from drawings.paper.sheet import usable
@@ -524,7 +307,7 @@ def _used(sheet: Sheet) -> float:
     return sum(p.width * p.height for p, _, _ in sheet.placed) / ((a[2] - a[0]) * (a[3] - a[1]))
 
 
-def _fitting_dynamics(sol: Solution, d: Dynamics, tabs: Sequence[CycleTable], spec: SheetSpec,
+def fitting_dynamics(sol: Solution, d: Dynamics, tabs: Sequence[CycleTable], spec: SheetSpec,
                       analogues: Sequence = (), axis: float = 240.0) -> list[Panel]:
     """The dynamics sheet's panels as they fit the sheet: on a small one the φ axis of the
     diagrams is shortened (240 mm on A1 and A2, or ``axis``, the one ``d`` is drawn at) and

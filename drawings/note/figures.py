@@ -83,9 +83,9 @@ def _build(item: Any, group: str, lang: str) -> list[Any]:
 
         return [p for p in diagram_panels(cyc.diagrams, lang) if p.kind != "cycle-table"]
     if group.startswith("dyn-"):
-        from drawings import cycle
+        from drawings.cycle.dynamics_diagrams import DYNAMICS_DIAGRAMS
 
-        make = cycle.DYNAMICS_DIAGRAMS[group.removeprefix("dyn-")]
+        make = DYNAMICS_DIAGRAMS[group.removeprefix("dyn-")]
         return [make(cyc.dynamics, lang)]
     from drawings.linkage import build_panels, fit_for
 

@@ -306,24 +306,22 @@ def serialize(dwg: svgwrite.Drawing) -> str:
     return "".join(out)
 
 
-def _cdata(text: str) -> str:
-    if "&" in text:
-        text = text.replace("&", "&amp;")
-    if "<" in text:
-        text = text.replace("<", "&lt;")
-    if ">" in text:
-        text = text.replace(">", "&gt;")
+#: What XML escapes in character data, in this order (``&`` first), and what an attribute
+#: value escapes besides (the quote it is written in, and whitespace that would be normalised).
+_CDATA = (("&", "&amp;"), ("<", "&lt;"), (">", "&gt;"))
+_ATTR = _CDATA + (('"', "&quot;"), ("\r", "&#13;"), ("\n", "&#10;"), ("\t", "&#09;"))
+
+
+def _escape(text: str, table: tuple[tuple[str, str], ...]) -> str:
+    for ch, entity in table:
+        if ch in text:  # most text has none: the test is cheaper than a replace
+            text = text.replace(ch, entity)
     return text
+
+
+def _cdata(text: str) -> str:
+    return _escape(text, _CDATA)
 
 
 def _attr(text: str) -> str:
-    text = _cdata(text)
-    if '"' in text:
-        text = text.replace('"', "&quot;")
-    if "\r" in text:
-        text = text.replace("\r", "&#13;")
-    if "\n" in text:
-        text = text.replace("\n", "&#10;")
-    if "\t" in text:
-        text = text.replace("\t", "&#09;")
-    return text
+    return _escape(text, _ATTR)

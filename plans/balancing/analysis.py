@@ -39,10 +39,12 @@ import numpy as np
 
 from plans.balancing.banks import BankAnalysis, analyse_banks
 from plans.balancing.engine import Engine
+from plans.tolerances import CLOSED_REL
+from plans.units import DUST
 
 KINDS = ("rotating", "first_order", "second_order")
 #: Below this fraction of the largest vector a resultant counts as closed (round-off).
-CLOSED = 1e-9
+CLOSED = CLOSED_REL
 
 
 @dataclass(frozen=True, slots=True)
@@ -294,7 +296,7 @@ def _counterweights(engine: Engine, forces: dict[str, Resultant], moments: dict[
             if F.amplitude == 0 and M.amplitude == 0:
                 continue
             ref = max(F._ref, M._ref / max(engine.arm_unit, 1e-300), 1e-300)
-            if abs(F.backward) > 1e-9 * ref or abs(M.backward) > 1e-9 * ref * engine.arm_unit:
+            if abs(F.backward) > CLOSED_REL * ref or abs(M.backward) > CLOSED_REL * ref * engine.arm_unit:
                 notes.append("first-order reciprocating force or moment has a part turning against "
                              "the crank: a counterweight on the crankshaft cannot take it (it only moves "
                              "it to the other plane); balancing shafts can")
@@ -315,7 +317,7 @@ def _solve_planes(engine: Engine, S: complex, T: complex, ref: float
                   ) -> tuple[list[tuple[float, complex]], str]:
     """Mass-radius vectors U_A, U_B in the planes z_A, z_B with U_A + U_B = −S and
     U_A a + U_B b = −T (a, b the planes' arms); one plane takes −S alone."""
-    tiny = 1e-9 * max(ref, 1e-300)
+    tiny = DUST * max(ref, 1e-300)
     if abs(S) <= tiny and abs(T) <= tiny * max(engine.arm_unit, 1e-300):
         return [], ""
     planes = _planes(engine)

@@ -29,9 +29,10 @@ from dataclasses import dataclass
 from typing import Any
 
 from plans.balancing.engine import Cylinder, Engine
+from plans.tolerances import CLOSED_REL
 
 #: Below this fraction of the reference a magnitude counts as round-off.
-CLOSED = 1e-9
+CLOSED = CLOSED_REL
 ORDERS = {"first_order": 1, "second_order": 2}
 
 

@@ -3,19 +3,15 @@
 from __future__ import annotations
 
 import argparse
-import sys
 
-from plans.io import atomic_write, dumps
+from plans.io import dumps, json_out
+from plans.language import file_command
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser("balance", help="engine balancing: force and moment polygons, counterweights")
-    p.add_argument("engine", help="engine file (TOML, kind = \"engine\")")
-    p.add_argument("--json", metavar="PATH", help="write the results as JSON ('-' for stdout)")
-    p.add_argument("--quiet", action="store_true", help="no tables on stdout")
-    from plans.language import add_option
-
-    add_option(p)
+    p = file_command(sub, "balance", "engine balancing: force and moment polygons, counterweights", "engine",
+                     "engine file (TOML, kind = \"engine\")", "write the results as JSON ('-' for stdout)",
+                     "no tables on stdout")
     p.set_defaults(func=_balance)
 
 
@@ -36,11 +32,8 @@ def _balance(args: argparse.Namespace) -> int:
         how = say("b_one_linkage", lang) if chk.linkages == 1 else say("b_linkages", lang, n=chk.linkages)
         text += say("b_exact", lang, how=how, n=len(chk.alpha), f=chk.max_exact, fe=chk.max_error, m=chk.max_moment,
                     me=chk.max_moment_error)
-    if args.json == "-":
-        sys.stdout.write(dumps(data))
+    if json_out(args.json, dumps(data)):
         return 0
-    if args.json:
-        atomic_write(args.json, dumps(data))
     if not args.quiet:
         print(text)
     return 0

@@ -28,6 +28,8 @@ import numpy as np
 from plans.balancing.analysis import balance
 from plans.balancing.engine import Cylinder, Engine
 from plans.errors import InputError, Said
+from plans.tolerances import CLOSED_REL
+from plans.units import DUST
 
 
 @dataclass(frozen=True, slots=True)
@@ -73,7 +75,7 @@ class ExactCheck:
 
 def _clean(x: float, ref: float) -> float:
     """Round-off of a vanishing quantity shown as 0."""
-    return 0.0 if x <= 1e-9 * ref else x
+    return 0.0 if x <= DUST * ref else x
 
 
 def scene_dict(engine: Engine, positions: int = 360, crank_deg: float = 0.0,
@@ -155,7 +157,7 @@ def exact_check(engine: Engine, positions: int = 360) -> ExactCheck:
     step = 360.0 / positions
     peak_f = _peak(lambda a: _shaking(engine, a)[0], np.degrees(alpha), np.abs(force), step)
     peak_m = _peak(lambda a: _shaking(engine, a)[1], np.degrees(alpha), np.abs(moment), step) \
-        if np.max(np.abs(moment)) > 1e-9 * fref * arm else None
+        if np.max(np.abs(moment)) > CLOSED_REL * fref * arm else None
     return ExactCheck(alpha, force, np.asarray(b.shaking_force(alpha)), moment,
                       np.asarray(b.turned_moment(alpha)), count, fref, fref * arm, peak_f, peak_m)
 

@@ -5,8 +5,9 @@ from __future__ import annotations
 
 import argparse
 import math
-import sys
 from typing import TYPE_CHECKING, Any
+
+from plans.language import file_command
 
 if TYPE_CHECKING:  # the analysis is imported when the command runs: ``plans`` starts fast
     import numpy as np
@@ -16,12 +17,8 @@ if TYPE_CHECKING:  # the analysis is imported when the command runs: ``plans`` s
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser("cam", help="a cam: motion laws, base radius, profile by inversion (JSON)")
-    p.add_argument("cam", help="cam file (TOML, kind = \"cam\")")
-    p.add_argument("--json", metavar="PATH", help="write the results as JSON ('-' for stdout)")
-    from plans.language import add_option
-
-    add_option(p)
+    p = file_command(sub, "cam", "a cam: motion laws, base radius, profile by inversion (JSON)", "cam",
+                     "cam file (TOML, kind = \"cam\")", "write the results as JSON ('-' for stdout)")
     p.set_defaults(func=_run)
 
 
@@ -142,18 +139,15 @@ def summary(cam: Cam, res: dict[str, Any], lang: str = "en") -> str:
 
 
 def _run(args: argparse.Namespace) -> int:
-    from plans.io import atomic_write, dumps
+    from plans.io import dumps, json_out
 
     from .solution import solve_cam
 
     sol = solve_cam(args.cam)  # what plans.solve gives of a cam file
     cam = sol.cam
     res = results(sol)
-    if args.json == "-":
-        sys.stdout.write(dumps(res))
+    if json_out(args.json, dumps(res)):
         return 0
-    if args.json:
-        atomic_write(args.json, dumps(res))
     from plans.language import file_language
 
     print(summary(cam, res, file_language(getattr(args, "language", None), args.cam)))

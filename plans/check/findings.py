@@ -15,7 +15,7 @@ import numpy as np
 from plans.check import wording as wd
 from plans.check.checkfile import CheckFile, StudentPosition, Written
 from plans.check.providers import Context, points_of
-from plans.tolerances import VERDICT_REL
+from plans.tolerances import AGREE_REL, VERDICT_REL
 
 PI_314 = 3.14
 
@@ -217,7 +217,7 @@ def symmetry_findings(cf: CheckFile, pos: StudentPosition, items: list[Item]) ->
             continue
         if a[:2] != b[:2] or ("^" in a) != ("^" in b) or (a.startswith("F_bal") and b.startswith("F_bal")):
             continue  # (F_bal by two methods is the percent check's business)
-        if abs(ia.exact - ib.exact) > 1e-9 * abs(ia.exact):
+        if abs(ia.exact - ib.exact) > AGREE_REL * abs(ia.exact):
             continue
         gap = abs(ia.student - ib.student)
         # the student should write the same figure twice: allow the reading of two segments

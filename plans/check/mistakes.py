@@ -26,6 +26,7 @@ from plans.kinematics.cases import cross, unit
 from plans.kinematics.construction import plans_of
 from plans.kinematics.dyads import Builder, Scheme
 from plans.kinematics.exact import Kinematics
+from plans.tolerances import AGREE_REL
 
 #: Kinds of mistake, most important first (the report's and the JSON's names).
 KINDS = ("coriolis_reversed", "normal_from_pole", "tangential_wrong_line", "scale", "similarity",
@@ -142,7 +143,7 @@ class SlipPencil:
         out = np.array(np.broadcast_to(length, (self.m,)), float)
         for i in hits:
             clean, wrong = self.slips[i].read_mm
-            if abs(out[i] - clean) <= 1e-9 * max(clean, 1.0):
+            if abs(out[i] - clean) <= AGREE_REL * max(clean, 1.0):
                 out[i] = wrong
         return out
 

@@ -210,6 +210,15 @@ def _label(ctx: Context, plan: Plan, point: str) -> str | None:
 points_of = quantities.points_of
 
 
+def _ends(plan: Any, name: str) -> tuple[str, str] | None:
+    """The ends of the plan's segment ``name``, or None where the plan has none of that name."""
+    try:
+        s = plan.segment(name)
+    except KeyError:
+        return None
+    return s.start, s.end
+
+
 def _plan_segment(ctx: Context, k: int, q: str) -> Exact | None:
     kind = "velocity" if q.startswith("v_") else "acceleration"
     plan = ctx.plan(k, kind)
@@ -217,20 +226,13 @@ def _plan_segment(ctx: Context, k: int, q: str) -> Exact | None:
         return None
     unit = "m/s" if kind == "velocity" else "m/s^2"
     ref = (abs(complex(*plan.xy("a"))) / plan.scale) if plan.has("a") else 0.0
-    seg = None
-    try:
-        s = plan.segment(q)
-        seg = (s.start, s.end)
-    except KeyError:
+    seg = _ends(plan, q)
+    if seg is None:
         mk = re.fullmatch(r"a\^([kr])_([A-Za-z0-9]+)", q)
         if mk:  # a^k_A2A3 written for a^k_A3A2: the same segment
             pts = points_of(mk.group(2))
             if len(pts) == 2:
-                try:
-                    s = plan.segment(f"a^{mk.group(1)}_{pts[1]}{pts[0]}")
-                    seg = (s.start, s.end)
-                except KeyError:
-                    pass
+                seg = _ends(plan, f"a^{mk.group(1)}_{pts[1]}{pts[0]}")
         m = re.fullmatch(r"([va])_([A-Za-z0-9]+)(\^[nτ])?", q)
         if m and not m.group(3):
             pts = points_of(m.group(2))
@@ -242,11 +244,7 @@ def _plan_segment(ctx: Context, k: int, q: str) -> Exact | None:
         if m and m.group(3) and seg is None:  # a_AB^τ written for a_BA^τ
             pts = points_of(m.group(2))
             if len(pts) == 2:
-                try:
-                    s = plan.segment(f"{m.group(1)}_{pts[1]}{pts[0]}{m.group(3)}")
-                    seg = (s.start, s.end)
-                except KeyError:
-                    pass
+                seg = _ends(plan, f"{m.group(1)}_{pts[1]}{pts[0]}{m.group(3)}")
     if seg is None:
         return None
     a, b = seg

@@ -73,12 +73,13 @@ from plans.errors import InputError, OutputError, PlansError, Said, os_reason
 from plans.io import atomic_write
 from plans.tolerances import VERDICT_REL
 from plans.units import DUST, percent
+from plans.verdicts import Tally
 
 _SCALE_UNIT = {"length": "mm/m", "velocity": "mm/(m/s)", "acceleration": "mm/(m/s²)", "force": "mm/N"}
 
 
 @dataclass(frozen=True)
-class Report:
+class Report(Tally):
     check: CheckFile
     items: tuple[Item, ...]
     findings: tuple[Finding, ...]
@@ -104,14 +105,6 @@ class Report:
         if self.diagnosis is None:
             return list(self.findings)
         return [self.findings[i] for i in self.diagnosis.findings_left]
-
-    @property
-    def passed(self) -> int:
-        return sum(1 for i in self.items if i.verdict == "pass")
-
-    @property
-    def failed(self) -> int:
-        return sum(1 for i in self.items if i.verdict == "fail")
 
     def item(self, quantity: str, phi_deg: float, where: str | None = None) -> Item:
         for it in self.items:
@@ -145,7 +138,7 @@ class Report:
             "items": [i.to_json() for i in self.items],
             "findings": [{**f.to_json(lang), "cause": self._cause_of(n)} for n, f in enumerate(self.findings)],
             "unchecked": [u.to_json(lang) for u in self.unchecked],
-            "summary": {"items": len(self.items), "passed": self.passed, "failed": self.failed,
+            "summary": {**self.counts(),
                         "findings": len(self.findings), "unchecked": len(self.unchecked),
                         "causes": len(self.causes), "unexplained": len(self.unexplained),
                         "findings_left": len(self.findings_left)},
@@ -434,7 +427,7 @@ def summary_row(path: str, report: Report | None, error: str | None = None, lang
     return {"file": path, "student": report.check.student, "status": "ok" if lang != "ru" else "проверен",
             "mark": "" if report.mark is None else fmt(report.mark, lang), "causes": causes,
             "unexplained": unexplained,
-            "items": len(report.items), "passed": report.passed, "failed": report.failed,
+            **report.counts(),
             "findings": len(report.findings_left),
             "worst": "" if worst is None else at(worst.quantity, worst.phi_deg),
             "worst_error_pct": "" if worst is None or worst.error_pct is None else decimal(f"{worst.error_pct:.2f}", lang),

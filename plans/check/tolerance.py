@@ -16,6 +16,7 @@ from plans.kinematics.dyads import PerfectPencil, Scheme, unit
 from plans.kinematics.exact import Kinematics
 from plans.kinematics.plan import Plan
 from plans.kinematics.velocities import velocity_plan
+from plans.tolerances import LOCK_SIN
 
 
 class Propagation:
@@ -72,7 +73,7 @@ class Propagation:
                 _, out, i1, d1, i2, d2, p1, p2 = op
                 e1, e2 = d1 * cmath.exp(1j * d[p1]), d2 * cmath.exp(1j * d[p2])
                 s = (e1.conjugate() * e2).imag
-                if abs(s) < 1e-12:
+                if abs(s) < LOCK_SIN:
                     continue
                 t = ((st[i2] - st[i1]).conjugate() * e2).imag / s
                 st[out] = st[i1] + t * e1

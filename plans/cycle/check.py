@@ -43,6 +43,7 @@ from plans.io import dumps, read_toml, refuse_input, write_all
 from plans.kinematics.exact import solve
 from plans.reader import Reader, show
 from plans.scene.model import Scene, load_scene
+from plans.verdicts import Tally
 
 from .dynamics import dynamics, reduce
 from .spec import ANGLE_LIMIT_DEG, rotor_inertia
@@ -76,24 +77,16 @@ class CycleItem:
 
 
 @dataclass(frozen=True)
-class CycleReport:
+class CycleReport(Tally):
     path: str
     student: str
     scene: Scene
     items: tuple[CycleItem, ...]
 
-    @property
-    def passed(self) -> int:
-        return sum(1 for i in self.items if i.verdict == "pass")
-
-    @property
-    def failed(self) -> int:
-        return sum(1 for i in self.items if i.verdict == "fail")
-
     def to_json(self) -> dict[str, Any]:
         return {"format": 1, "kind": "cycle", "student": self.student, "check_file": self.path,
                 "scene": self.scene.path, "items": [i.to_json() for i in self.items],
-                "summary": {"items": len(self.items), "passed": self.passed, "failed": self.failed}}
+                "summary": self.counts()}
 
 
 def is_cycle_check(path: str | Path) -> bool:
@@ -326,7 +319,7 @@ def summary_row(path: str, rep: CycleReport, lang: str = "en") -> dict[str, Any]
     where = "" if worst is None else (quantity_name(worst.quantity, lang) if worst.phi_deg is None else say_line(
         "ch_at", lang, what=quantity_name(worst.quantity, lang), phi=decimal(f"{worst.phi_deg:g}", lang)))
     return {"file": path, "student": rep.student, "status": "ok" if lang != "ru" else "проверен",
-            "items": len(rep.items), "passed": rep.passed, "failed": rep.failed, "findings": 0, "worst": where,
+            **rep.counts(), "findings": 0, "worst": where,
             "worst_error_pct": "" if worst is None else decimal(f"{worst.error_pct:.2f}", lang), "message": ""}
 
 

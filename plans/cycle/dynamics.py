@@ -28,7 +28,7 @@ found by :mod:`.quadrature` (to 1e-9 and better, with the quadrature's stated bo
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, cast
 
 import numpy as np
@@ -143,6 +143,12 @@ class Dynamics:
     omega_exact: R  # with the exact flywheel
     scales: Scales
     notes: tuple[str, ...] = field(default=())
+
+    def at(self, axis_mm: float, height: float) -> Dynamics:
+        """The same dynamics drawn at another φ axis (mm for 360°) and diagram height (times the
+        A1 one): only the sheet's round scales change (:func:`drawn_scales`)."""
+        return replace(self, scales=drawn_scales(self.scene, self.spec, self.table, self.A_c, self.A_d, self.dT,
+                                                 axis_mm, height))
 
 
 # --------------------------------------------------------------------------- reduction
@@ -360,19 +366,28 @@ def dynamics(scene: Scene, spec: DynamicsSpec | None = None, structure: Structur
     om_e, d_e = quadrature.motion(ext, ex.I_pr, dT_e, _usable(I_ex, ex.I_pr), omega_m)
     _, d_m = quadrature.motion(ext, ex.I_pr, dT_e, _usable(I_mer, ex.I_pr), omega_m)
     fw = Flywheel(delta, omega_m, I_ex, I_graph, I_mer, d_g, d_e, d_m, bound, work.bound)
+    out = Dynamics(scene, spec, tab, ex, M_d, M_d_e, A_c, A_d, dT, A_c_e, dT_e, wit, fw, om_g, om_e,
+                   drawn_scales(scene, spec, tab, A_c, A_d, dT, axis_mm, height), tuple(notes))
+    spline.freeze(out)
+    return out
+
+
+def drawn_scales(scene: Scene, spec: DynamicsSpec, tab: Reduced, A_c: R, A_d: R, dT: R, axis_mm: float = 240.0,
+                 height: float = 1.0) -> Scales:
+    """The sheet's scales: μ_φ from the φ axis (``axis_mm`` for 360°), round μ_M and μ_I and a
+    pole from the course's list for diagrams ``height`` times the A1 ones (< 1 on small sheets,
+    > 1 where an A1 sheet has room), μ_A = μ_M μ_φ / H."""
+    cycle = spec.cycle_deg
     # the φ axis of a four-stroke cycle is half as long again: 1 mm for every 2° of 720°
     mu_phi = axis_mm * (1.5 if cycle == 720 else 1.0) / math.radians(cycle)
-    mu_M = nice_scale(float(np.max(np.abs(tab.M_pr))) or 1.0, 50.0 * height)  # height: < 1 on small sheets
+    mu_M = nice_scale(float(np.max(np.abs(tab.M_pr))) or 1.0, 50.0 * height)
     A_range = float(max(np.max(np.abs(A_c)), np.max(np.abs(A_d)), np.ptp(dT)))
     H = spec.pole_mm or _pole(mu_M, mu_phi, A_range, 60.0 * height)
     mu_A = mu_M * mu_phi / H
     mu_I = nice_scale(float(np.max(tab.I_pr)), 120.0 * height)
     crank = scene.links[scene.driver.link]
     mu_an = nice_scale(crank.length or 1.0, 70.0)
-    out = Dynamics(scene, spec, tab, ex, M_d, M_d_e, A_c, A_d, dT, A_c_e, dT_e, wit, fw, om_g, om_e,
-                   Scales(mu_phi, mu_M, H, mu_A, mu_I, mu_an), tuple(notes))
-    spline.freeze(out)
-    return out
+    return Scales(mu_phi, mu_M, H, mu_A, mu_I, mu_an)
 
 
 def _usable(I_fw: float, I_pr: R) -> float:

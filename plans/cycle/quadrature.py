@@ -32,6 +32,7 @@ from plans.kinematics.exact import solve
 from plans.kinematics.structure import Structure
 from plans.kinematics.travel import piston_travel, toward_pivot
 from plans.scene.model import Scene
+from plans.tolerances import AGREE_REL
 
 R = NDArray[np.float64]
 
@@ -98,7 +99,7 @@ class Machine:
             if gl.diagram:
                 s = piston_travel(sc, kin, gl.joint, gl.link) - gl.outer
                 rows = np.unique(np.concatenate([ts for ts, _ in gl.diagram.values()]))
-                for sk in rows[(rows > 1e-9 * gl.stroke) & (rows < gl.stroke * (1 - 1e-9))]:
+                for sk in rows[(rows > AGREE_REL * gl.stroke) & (rows < gl.stroke * (1 - AGREE_REL))]:
                     cols.append(s - sk)
         for fl in self.loads.forces:
             if fl.resisting is not None and fl.along is not None:
@@ -231,7 +232,7 @@ class Extremes:
         best = float(f[j])
         if 0 < j < len(f) - 1:
             h1, h2 = phis[j] - phis[j - 1], phis[j + 1] - phis[j]
-            if abs(h1 - h2) < 1e-9 * h1:  # three equal steps: no cut between them
+            if abs(h1 - h2) < AGREE_REL * h1:  # three equal steps: no cut between them
                 a, b, c = f[j - 1], f[j], f[j + 1]
                 den = a - 2 * b + c
                 if den != 0:

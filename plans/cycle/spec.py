@@ -35,6 +35,7 @@ from typing import Any
 from plans.errors import InputError, Said
 from plans.reader import Reader, show
 from plans.scene.model import Scene
+from plans.tolerances import SAME_ANGLE_DEG
 
 #: The widest step between the positions of a cycle (the graphical integration needs the
 #: whole revolution, drawn by chords no longer than this).
@@ -113,11 +114,11 @@ def _positions(scene: Scene, raw: dict[str, Any], where: str, *, equal: bool,
         # Closer positions than MIN_STEP_DEG make the curve's chord slopes 0/0.
         if any(b - a < MIN_STEP_DEG for a, b in zip(phis, phis[1:], strict=False)):
             raise _fail(scene, f"{where}.phi_deg", Said("cs_crank_angles_increasing", MIN_STEP_DEG=MIN_STEP_DEG))
-        if abs(phis[-1] - phis[0] - cycle) < 1e-9:
+        if abs(phis[-1] - phis[0] - cycle) < SAME_ANGLE_DEG:
             phis = phis[:-1]  # the closing position is the first one again
         span = phis[-1] - phis[0]
         gap = max([b - a for a, b in zip(phis, phis[1:], strict=False)] + [cycle - span])
-        if span >= cycle or gap > MAX_STEP_DEG + 1e-9:
+        if span >= cycle or gap > MAX_STEP_DEG + SAME_ANGLE_DEG:
             within = "one revolution" if cycle == 360 else f"one cycle of {cycle:g}°"
             raise _fail(scene, f"{where}.phi_deg",
                         Said("cs_positions_do_close", within=within, v=phis[0], v2=phis[0] + cycle, MAX_STEP_DEG=MAX_STEP_DEG, gap=gap))

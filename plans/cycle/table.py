@@ -17,6 +17,7 @@ from typing import Any
 import numpy as np
 
 from plans.records import frozen
+from plans.units import DUST
 
 
 @frozen
@@ -130,7 +131,7 @@ def text(table: CycleTable, columns: int = 7, lang: str = "en") -> str:
                      + "".join(_comma(f"{table.phi_deg[k]:>11.6g}", ru) for k in ks))
         for r, head in zip(table.rows, heads, strict=True):
             big = max([abs(v) for v in r.values if v is not None] + [0.0])
-            cells = [None if v is None else (0.0 if abs(v) <= 1e-9 * big else v) for v in r.values]
+            cells = [None if v is None else (0.0 if abs(v) <= DUST * big else v) for v in r.values]
             lines.append(f"  {head:<{wlab}}" + "".join(_comma(f"{_cell(cells[k]):>11s}", ru) for k in ks))
         lines.append("")
     return "\n".join(lines)

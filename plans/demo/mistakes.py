@@ -17,6 +17,7 @@ from plans.kinematics.exact import solve
 from plans.lines import cross, meet
 from plans.phrases import Phrase, phrase
 from plans.results import Solution
+from plans.tolerances import AGREE_REL, LOCK_SIN
 
 
 def page_mm(x: float) -> float:
@@ -31,7 +32,7 @@ def page_xy(z: complex) -> list[float]:
 def _meet(p1: complex, d1: complex, p2: complex, d2: complex) -> complex | None:
     """Intersection of two lines (point, direction); None when they are parallel."""
     den = cross(d1, d2)
-    if abs(den) < 1e-12 * abs(d1) * abs(d2):
+    if abs(den) < LOCK_SIN * abs(d1) * abs(d2):
         return None
     return meet(p1, d1, p2, d2, den)
 
@@ -131,7 +132,7 @@ def _couple(sol: Solution, k: int, lang: str) -> dict | None:
         return None
     right = float(lv.signed(lv.by_lever)[k])
     wrong = right + float(lv.fa.sense[k]) * 2.0 * m / float(lv.unit_moment[k])
-    if abs(wrong - right) <= 1e-9 * max(abs(right), 1.0):  # the couple vanishes here (ε = 0)
+    if abs(wrong - right) <= AGREE_REL * max(abs(right), 1.0):  # the couple vanishes here (ε = 0)
         return None
     unit = "N" if lv.fa.crank.kind == "force" else "N·m"
     return {"id": "couple", "title": "inertia couple with the wrong sign", "panel": "lever", "moved": {},

@@ -25,6 +25,7 @@ from plans.kinematics.scales import round_scale
 from plans.lines import cross
 from plans.phrases import phrase, say
 from plans.records import frozen
+from plans.tolerances import EXACT_ZERO_REL
 from plans.units import clean, percent
 
 C = NDArray[np.complex128]
@@ -299,7 +300,7 @@ def force_json(lv: LeverAnalysis) -> list[dict]:
             reactions.setdefault(rc.name(other), _xy(-F))
             if rc.guide is not None:
                 off = float(rc.offset[k])
-                has = abs(float(rc.N[k])) > 1e-12 * max(abs(F), 1.0) or float(rc.M[k]) == 0.0
+                has = abs(float(rc.N[k])) > EXACT_ZERO_REL * max(abs(F), 1.0) or float(rc.M[k]) == 0.0
                 at = complex(rc.r[k] + off * rc.guide[k])
                 points[rc.name(fij)] = {"pin": rc.point, "at": _xy(at) if has else None,
                                         "offset": off if has else None, "couple": float(rc.M[k])}

@@ -51,7 +51,7 @@ from plans.forces.loads import (
     parse_loads,
 )
 from plans.forces.reactions import CrankForces, ForceAnalysis, GroupForces, Reaction  # noqa: F401  (importable from here)
-from plans.forces.shared import mu_force, safe_div, unit_vector
+from plans.forces.shared import force_sum, moment_about, mu_force, safe_div, unit_vector
 from plans.kinematics.exact import Kinematics
 from plans.kinematics.structure import Group, TriadGroup
 from plans.lines import cross
@@ -134,23 +134,6 @@ def _kept(geo: dict | None, key: Any, make: Callable[..., Any], *args: Any) -> A
     return got
 
 
-def _sum(fs: list[AppliedForce] | tuple[AppliedForce, ...], n: int) -> C:
-    out = np.zeros(n, complex)
-    for f in fs:
-        out = out + f.F  # not in place: a load may carry several cases (a leading axis)
-    return out
-
-
-def _moment(fs, ms, P: C, n: int) -> R:
-    """ΣM about P of the forces (cross(r − P, F)) and couples, ccw+."""
-    out = np.zeros(n)
-    for f in fs:
-        out = out + cross(f.r - P, f.F)
-    for m in ms:
-        out = out + m.M
-    return out
-
-
 class _ArmsWhenRead(Mapping):
     """Lever arms worked out when first read: a drawn, printed or checked position reads
     them, the analysis never does."""
@@ -224,10 +207,10 @@ def _rrr(kin: Kinematics, g: Group, forces, moments, geo: dict | None = None) ->
     n = kin.n
     A, B, Cc, ui, uj, li, lj, ei, ej, det = _kept(geo, g.name, _rrr_geometry, kin, g)
     fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
-    t_i = _moment(fi, mi, B, n) / li  # ΣM_B(i): −l·F^τ + M_i(B) = 0
-    t_j = _moment(fj, mj, B, n) / lj
-    sum_i = _sum(fi, n)
-    rest = sum_i + _sum(fj, n) + t_i * ei + t_j * ej
+    t_i = moment_about(fi, mi, B, n) / li  # ΣM_B(i): −l·F^τ + M_i(B) = 0
+    t_j = moment_about(fj, mj, B, n) / lj
+    sum_i = force_sum(fi, n)
+    rest = sum_i + force_sum(fj, n) + t_i * ei + t_j * ej
     n_i, n_j = _solve2(ui, uj, -rest, det)
     F_ip = t_i * ei + n_i * ui
     F_jq = t_j * ej + n_j * uj
@@ -263,13 +246,13 @@ def _rrp(kin: Kinematics, g: Group, forces, moments, geo: dict | None = None) ->
     n = kin.n
     A, B, ui, li, ei, u3, n3, det = _kept(geo, g.name, _rrp_geometry, kin, g)
     fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
-    t_i = _moment(fi, mi, B, n) / li
-    sum_i = _sum(fi, n)
-    rest = sum_i + _sum(fj, n) + t_i * ei
+    t_i = moment_about(fi, mi, B, n) / li
+    sum_i = force_sum(fi, n)
+    rest = sum_i + force_sum(fj, n) + t_i * ei
     n_i, N = _solve2(ui, n3, -rest, det)
     F_ip = t_i * ei + n_i * ui
     F_ij = -sum_i - F_ip
-    M_jq = -_moment(fj, mj, B, n)  # ΣM_B(j): the guide's couple; F_ji and N pass through B
+    M_jq = -moment_about(fj, mj, B, n)  # ΣM_B(j): the guide's couple; F_ji and N pass through B
     zero = np.zeros(n)
     ti = tuple(fi)
     arms = _ArmsWhenRead(lambda: _arms(f"M_{j2.point}({i})", ti, B))
@@ -299,11 +282,11 @@ def _rpr(kin: Kinematics, g: Group, forces, moments, geo: dict | None = None) ->
     n = kin.n
     A, Cc, us, ns, arm = _kept(geo, g.name, _rpr_geometry, kin, g)
     fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
-    M_ij = -_moment(fi, mi, A, n)  # ΣM_A(block): the slot's couple on the block
-    N = (_moment(fj, mj, Cc, n) - M_ij) / arm
+    M_ij = -moment_about(fi, mi, A, n)  # ΣM_A(block): the slot's couple on the block
+    N = (moment_about(fj, mj, Cc, n) - M_ij) / arm
     F_ij = N * ns
-    F_jq = -_sum(fj, n) + F_ij
-    F_ip = -_sum(fi, n) - F_ij
+    F_jq = -force_sum(fj, n) + F_ij
+    F_ip = -force_sum(fi, n) - F_ij
     zero = np.zeros(n)
     arms = _arms(f"M_{j3.point}({j})", fj, Cc)
     arms[(f"M_{j3.point}({j})", _fname(kin.scene, j, i))] = np.abs(arm)
@@ -332,10 +315,10 @@ def _prp(kin: Kinematics, g: Group, forces, moments, geo: dict | None = None) ->
     n = kin.n
     B, u1, u3, n1, n3, det = _kept(geo, g.name, _prp_geometry, kin, g)
     fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
-    N1, N3 = _solve2(n1, n3, -(_sum(fi, n) + _sum(fj, n)), det)
-    F_ij = -_sum(fi, n) - N1 * n1
-    M1 = -_moment(fi, mi, B, n)
-    M3 = -_moment(fj, mj, B, n)
+    N1, N3 = _solve2(n1, n3, -(force_sum(fi, n) + force_sum(fj, n)), det)
+    F_ij = -force_sum(fi, n) - N1 * n1
+    M1 = -moment_about(fi, mi, B, n)
+    M3 = -moment_about(fj, mj, B, n)
     zero = np.zeros(n)
     return GroupForces(g, tuple(fi), tuple(fj), tuple(mi), tuple(mj), (
         Reaction(j1, i, p, B, N1 * n1, M1, guide=u1),
@@ -362,13 +345,13 @@ def _rpp(kin: Kinematics, g: Group, forces, moments, geo: dict | None = None) ->
     n = kin.n
     A, K, u2, u3, n2, n3, det = _kept(geo, g.name, _rpp_geometry, kin, g)
     fi, fj, mi, mj = forces[i], forces[j], moments[i], moments[j]
-    M_ij = -_moment(fi, mi, A, n)  # ΣM_A(block)
+    M_ij = -moment_about(fi, mi, A, n)  # ΣM_A(block)
     # j's polygon: F_j − N2 n2 + N3 n3 = 0 (the slot's reaction on j is −F_ij)
-    N2m, N3 = _solve2(-n2, n3, -_sum(fj, n), det)
+    N2m, N3 = _solve2(-n2, n3, -force_sum(fj, n), det)
     F_ij = N2m * n2
     # ΣM_K(j): M_j(K) + cross(A − K, −F_ij) − M_ij + M_jq = 0
-    M_jq = -(_moment(fj, mj, K, n) + cross(A - K, -F_ij) - M_ij)
-    F_ip = -_sum(fi, n) - F_ij
+    M_jq = -(moment_about(fj, mj, K, n) + cross(A - K, -F_ij) - M_ij)
+    F_ip = -force_sum(fi, n) - F_ij
     zero = np.zeros(n)
     return GroupForces(g, tuple(fi), tuple(fj), tuple(mi), tuple(mj), (
         Reaction(j1, i, p, A, F_ip, zero),
@@ -393,15 +376,15 @@ def _crank(scene: Scene, kin: Kinematics, loads: Loads, forces, moments, geo: di
     n = kin.n
     O, P, l, e, joint = _kept(geo, ("crank", loads.balancing.point), _crank_geometry, scene, kin, loads)
     f1, m1 = forces[link], moments[link]
-    M_O = _moment(f1, m1, O, n)
+    M_O = moment_about(f1, m1, O, n)
     if loads.balancing.kind == "force":
         F_bal = -M_O / l  # ΣM_O: F_bal·l + M_1(O) = 0
         M_bal = F_bal * l
-        F_frame = -(_sum(f1, n) + F_bal * e)
+        F_frame = -(force_sum(f1, n) + F_bal * e)
     else:
         F_bal = np.zeros(n)
         M_bal = -M_O
-        F_frame = -_sum(f1, n)
+        F_frame = -force_sum(f1, n)
     frame = Reaction(joint, link, scene.frame, O, F_frame, np.zeros(n))
     t1 = tuple(f1)
 

@@ -1,15 +1,18 @@
 """What the force polygons and the lever both draw with: the force scale μF, the ruler a
-draftsman reads, and two small vector helpers (over positions)."""
+draftsman reads, and small vector helpers (over positions): a unit vector, a safe
+division, the sum of forces and their moment about a point."""
 
 from __future__ import annotations
 
-from typing import Protocol
+from collections.abc import Iterable
+from typing import Any, Protocol
 
 import numpy as np
 from numpy.typing import NDArray
 
 from plans.kinematics import construction
 from plans.kinematics.scales import fit
+from plans.lines import cross
 from plans.scene.model import Scene
 from plans.units import DUST
 
@@ -76,3 +79,21 @@ def safe_div(a: R, b: R) -> R:
         return a / b
     nz = b != 0
     return np.where(nz, a / np.where(nz, b, 1.0), 0.0)
+
+
+def force_sum(fs: Iterable[Any], n: int) -> C:
+    """ΣF of the forces (each ``.F``) over the n positions."""
+    out = np.zeros(n, complex)
+    for f in fs:
+        out = out + f.F  # not in place: a load may carry several cases (a leading axis)
+    return out
+
+
+def moment_about(fs: Iterable[Any], ms: Iterable[Any], P: C, n: int) -> R:
+    """ΣM about P of the forces (cross(r − P, F)) and the couples (each ``.M``), ccw+."""
+    out = np.zeros(n)
+    for f in fs:
+        out = out + cross(f.r - P, f.F)
+    for m in ms:
+        out = out + m.M
+    return out

@@ -27,13 +27,13 @@ from numpy.typing import NDArray
 
 from plans.errors import Locked, Said
 from plans.forces.loads import AppliedForce, AppliedMoment
-from plans.forces.shared import safe_div, unit_vector
+from plans.forces.shared import force_sum, moment_about, safe_div, unit_vector
 from plans.kinematics.exact import Kinematics
 from plans.kinematics.structure import TriadGroup
 from plans.kinematics.triad_plans import PAIRS, pair_choice
 from plans.lines import cross
 from plans.records import frozen
-from plans.tolerances import LOCK_SIN
+from plans.tolerances import COINCIDE_REL, LOCK_SIN
 
 C = NDArray[np.complex128]
 R = NDArray[np.float64]
@@ -74,22 +74,6 @@ class TriadForces:
         return i, j, 3 - i - j
 
 
-def _sum(fs, n: int) -> C:
-    out = np.zeros(n, complex)
-    for f in fs:
-        out = out + f.F
-    return out
-
-
-def _moment(fs, ms, P: C, n: int) -> R:
-    out = np.zeros(n)
-    for f in fs:
-        out = out + cross(f.r - P, f.F)
-    for m in ms:
-        out = out + m.M
-    return out
-
-
 def solve_triad(kin: Kinematics, g: TriadGroup, forces: dict, moments: dict, Reaction: Any) -> TriadForces:
     """The six reactions of the group, exact, vectorised over the positions of ``kin``
     (``Reaction``: the polygons' record of a joint's reaction, passed by its caller)."""
@@ -113,11 +97,11 @@ def solve_triad(kin: Kinematics, g: TriadGroup, forces: dict, moments: dict, Rea
         if slider[k]:  # the guide's reaction is all along the normal (and a couple)
             return np.zeros(n)
         if block[k]:  # the block along the slot: R^τ (∥ slot) balances its loads there
-            return -(np.conj(e[k]) * _sum(fl[1 + k], n)).real
-        return _moment(fl[1 + k], ml[1 + k], P[k], n) / length[k]  # ΣM_P(leash) = 0: −l·R^τ + M(P) = 0
+            return -(np.conj(e[k]) * force_sum(fl[1 + k], n)).real
+        return moment_about(fl[1 + k], ml[1 + k], P[k], n) / length[k]  # ΣM_P(leash) = 0: −l·R^τ + M(P) = 0
     # a slider: the guide's couple −M_k(P), no τ
     tau = [tau_of(k) for k in range(3)]
-    couple = [-_moment(fl[1 + k], ml[1 + k], P[k], n) if slider[k] else np.zeros(n) for k in range(3)]
+    couple = [-moment_about(fl[1 + k], ml[1 + k], P[k], n) if slider[k] else np.zeros(n) for k in range(3)]
     pair = pair_choice(axis)
     ii = np.array([PAIRS[c][0] for c in range(3)])[pair]
     jj = np.array([PAIRS[c][1] for c in range(3)])[pair]
@@ -133,17 +117,17 @@ def solve_triad(kin: Kinematics, g: TriadGroup, forces: dict, moments: dict, Rea
     S = Qi + cross(Qj - Qi, uj) / np.where(bad, 1.0, sin) * ui
     everything_f = [f for fs in fl for f in fs]
     everything_m = [m for ms in ml for m in ms]
-    known_S = _moment(everything_f, everything_m, S, n)
+    known_S = moment_about(everything_f, everything_m, S, n)
     for k in range(3):
         known_S = known_S + cross(Q[k] - S, tau[k] * e[k]) + couple[k]
     arm_m = cross(Qm - S, um)  # R_m^n·arm_m + known_S = 0
     size = max(float(np.max(np.abs(a))) for a in axis)
-    bad = np.abs(arm_m) <= 1e-9 * size
+    bad = np.abs(arm_m) <= COINCIDE_REL * size
     if bad.any():
         _locked(kin, g, bad, Said("tr_forces_one_point"))
     nrm = np.zeros((3, n))
     nrm[mm, cols] = -known_S / np.where(bad, 1.0, arm_m)
-    rest = _sum(everything_f, n) + sum(tau[k] * e[k] for k in range(3)) + nrm[mm, cols] * um
+    rest = force_sum(everything_f, n) + sum(tau[k] * e[k] for k in range(3)) + nrm[mm, cols] * um
     # rest + n_i·u_i + n_j·u_j = 0
     n_i = cross(-rest, uj) / sin
     n_j = cross(ui, -rest) / sin
@@ -161,10 +145,10 @@ def solve_triad(kin: Kinematics, g: TriadGroup, forces: dict, moments: dict, Rea
         # leash k in equilibrium: the base's reaction on it is −(R_k + its loads); a block's
         # slot takes its loads' moment about the pin as the slot's couple
         if block[k]:
-            inner.append(Reaction(d, base, leashes[k], P[k], Rk + _sum(fl[1 + k], n),
-                                  _moment(fl[1 + k], ml[1 + k], P[k], n), guide=-1j * u[k]))
+            inner.append(Reaction(d, base, leashes[k], P[k], Rk + force_sum(fl[1 + k], n),
+                                  moment_about(fl[1 + k], ml[1 + k], P[k], n), guide=-1j * u[k]))
         else:
-            inner.append(Reaction(d, base, leashes[k], P[k], Rk + _sum(fl[1 + k], n), zero))
+            inner.append(Reaction(d, base, leashes[k], P[k], Rk + force_sum(fl[1 + k], n), zero))
     arms = _Arms(g, fl, P, S, Qm, um)
     return TriadForces(g, tuple(fl), tuple(ml), tuple(outer) + tuple(inner), S, pair, known_S,
                        (u[0], u[1], u[2]), (tau[0], tau[1], tau[2]), (nrm[0], nrm[1], nrm[2]), arms)

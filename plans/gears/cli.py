@@ -3,22 +3,19 @@
 from __future__ import annotations
 
 import argparse
-import sys
+
+from plans.language import file_command
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser("gears", help="involute gears and trains: geometry, checks, speeds (JSON)")
-    p.add_argument("file", help="gear file (TOML, kind = \"gears\")")
-    p.add_argument("--json", metavar="PATH", help="write results as JSON ('-' for stdout)")
-    p.add_argument("--quiet", action="store_true", help="no table on stdout")
-    from plans.language import add_option
-
-    add_option(p)
+    p = file_command(sub, "gears", "involute gears and trains: geometry, checks, speeds (JSON)", "file",
+                     "gear file (TOML, kind = \"gears\")", "write results as JSON ('-' for stdout)",
+                     "no table on stdout")
     p.set_defaults(func=_run)
 
 
 def _run(args: argparse.Namespace) -> int:
-    from plans.io import atomic_write, dumps
+    from plans.io import dumps, json_out
 
     from .meshing import drawn_contact_ratios
     from .solution import solve_file
@@ -26,11 +23,8 @@ def _run(args: argparse.Namespace) -> int:
 
     sol = solve_file(args.file).solution
     data = dumps(to_json(sol, drawn_contact_ratios(sol)))
-    if args.json == "-":
-        sys.stdout.write(data)
+    if json_out(args.json, data):
         return 0
-    if args.json:
-        atomic_write(args.json, data)
     if not args.quiet:
         from plans.language import file_language
 

@@ -34,6 +34,7 @@ import math
 from dataclasses import dataclass
 
 from plans.errors import InputError, Said
+from plans.tolerances import ROUND_OFF_REL
 
 from .involute import inv, inv_inverse, thickness_at
 
@@ -95,13 +96,13 @@ class Pair:
         m = self.m
         out = {"contact_ratio": self.contact_ratio >= MIN_CONTACT_RATIO}
         for w in self.wheels:
-            out[f"no_undercut_{w.name}"] = w.internal or w.limit >= -1e-12 * m
-            out[f"tip_thickness_{w.name}"] = w.tip_thickness >= GOOD_TIP_THICKNESS * m - 1e-12 * m
+            out[f"no_undercut_{w.name}"] = w.internal or w.limit >= -ROUND_OFF_REL * m
+            out[f"tip_thickness_{w.name}"] = w.tip_thickness >= GOOD_TIP_THICKNESS * m - ROUND_OFF_REL * m
         w1, w2 = self.wheels
         rho2_start = self.rho_start + self.g if self.internal else self.g - self.rho_end
         # no interference: each flank is met only where it is an involute
-        ok1 = self.rho_start >= max(0.0, w1.limit) - 1e-12 * m
-        ok2 = True if w2.internal else rho2_start >= max(0.0, w2.limit) - 1e-12 * m
+        ok1 = self.rho_start >= max(0.0, w1.limit) - ROUND_OFF_REL * m
+        ok2 = True if w2.internal else rho2_start >= max(0.0, w2.limit) - ROUND_OFF_REL * m
         out["no_interference"] = ok1 and ok2
         return out
 
@@ -155,7 +156,7 @@ def wheel(name: str, z: int, x: float, internal: bool, m: float, alpha: float, h
     if rf <= 0.0:
         raise InputError(Said("gg2_gear_name_leave", name=name, z=z, x=x, v=rf * 1e3),
                          file=file, field=where)
-    if ra <= rb * (1.0 + 1e-12):
+    if ra <= rb * (1.0 + ROUND_OFF_REL):
         raise InputError(Said("gg2_gear_name_tip", name=name, v=ra * 1e3, v2=rb * 1e3), file=file, field=where)
     aa = math.acos(rb / ra)
     if internal:

@@ -45,6 +45,7 @@ Every length inside the engine is in metres; the file's ``unit`` comes back at t
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -52,6 +53,7 @@ from typing import Any
 from plans.errors import InputError, Said
 from plans.io import read_toml
 from plans.reader import LENGTH_FLOOR, LENGTH_LIMIT, Reader, check_keys, show
+from plans.tolerances import ROUND_OFF_REL
 from plans.units import LENGTH_UNITS
 
 SHIFT_RULES = ("minimum", "no_undercut", "equal_sliding")
@@ -147,6 +149,24 @@ def _tables(data: dict[str, Any], key: str, path: str) -> list[dict[str, Any]]:
     return v
 
 
+def _named(data: dict[str, Any], key: str, path: str, keys: Any, missing: str,
+           twice: str) -> Iterator[tuple[str, dict[str, Any], str]]:
+    """Each table of the array ``key`` with its keys checked, its name read and not given
+    before: (name, table, the field's prefix ``key[i].``).  ``missing`` and ``twice`` name
+    the messages for a table without a name and for a name given twice."""
+    seen: set[str] = set()
+    for i, t in enumerate(_tables(data, key, path)):
+        f = f"{key}[{i}]."
+        check_keys(t, keys, file=path, where=f)
+        if "name" not in t:
+            raise InputError(Said(missing), file=path, field=f + "name")
+        name = _name(t["name"], path, f + "name")
+        if name in seen:
+            raise InputError(Said(twice, name=name), file=path, field=f + "name")
+        seen.add(name)
+        yield name, t, f
+
+
 def load_gears(path: str | Path) -> GearFile:
     """Read and validate a gear file (one-line InputError naming the field on any problem)."""
     return parse_gears(read_toml(path), str(path))
@@ -184,16 +204,7 @@ def parse_gears(data: dict[str, Any], path: str) -> GearFile:
         raise InputError(Said("gm_least_one_gears"), file=path, field="gears")
     meshes = _meshes(data, path, gears, k)
     shafts = {g.shaft: Shaft(g.shaft, None, None) for g in gears.values()}
-    given: set[str] = set()
-    for i, t in enumerate(_tables(data, "shafts", path)):
-        f = f"shafts[{i}]."
-        check_keys(t, _SHAFT_KEYS, file=path, where=f)
-        if "name" not in t:
-            raise InputError(Said("gm_missing_shaft_name"), file=path, field=f + "name")
-        name = _name(t["name"], path, f + "name")
-        if name in given:
-            raise InputError(Said("gm_shaft_name_described", name=name), file=path, field=f + "name")
-        given.add(name)
+    for name, t, f in _named(data, "shafts", path, _SHAFT_KEYS, "gm_missing_shaft_name", "gm_shaft_name_described"):
         sp = t.get("speed_rpm")
         spv = None if sp is None else _num(sp, path, f + "speed_rpm", Said("gm_w_speed"))
         car = None if t.get("carrier") is None else _name(t["carrier"], path, f + "carrier")
@@ -257,14 +268,7 @@ def _synthesis(t: Any, path: str) -> SynthesisSpec | None:
 
 def _gears(data: dict[str, Any], path: str, m: float, k: float, ring_tip: str) -> dict[str, Gear]:
     gears: dict[str, Gear] = {}
-    for i, g in enumerate(_tables(data, "gears", path)):
-        f = f"gears[{i}]."
-        check_keys(g, _GEAR_KEYS, file=path, where=f)
-        if "name" not in g:
-            raise InputError(Said("gm_missing_name_such"), file=path, field=f + "name")
-        name = _name(g["name"], path, f + "name")
-        if name in gears:
-            raise InputError(Said("gm_gear_name_named", name=name), file=path, field=f + "name")
+    for name, g, f in _named(data, "gears", path, _GEAR_KEYS, "gm_missing_name_such", "gm_gear_name_named"):
         z = g.get("z")
         if isinstance(z, bool) or not isinstance(z, int) or not 1 <= z <= MAX_TEETH:
             raise InputError(Said("gm_whole_number_teeth", MAX_TEETH=MAX_TEETH, got=show(z)), file=path,
@@ -310,7 +314,7 @@ def _meshes(data: dict[str, Any], path: str, gears: dict[str, Gear], k: float) -
         ga, gb = gears[a], gears[b]
         if ga.internal and gb.internal:
             raise InputError(Said("gm_two_internal_gears", a=a, b=b), file=path, field=f + "gears")
-        if abs(ga.module - gb.module) > 1e-12 * ga.module:
+        if abs(ga.module - gb.module) > ROUND_OFF_REL * ga.module:
             raise InputError(Said("gm_gears_have_different", a=a, b=b), file=path, field=f + "gears")
         if ga.shaft == gb.shaft:
             raise InputError(Said("gm_gears_are_one", a=a, b=b), file=path, field=f + "gears")

@@ -8,6 +8,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from plans.errors import InputError, Said
+from plans.tolerances import EXACT_ZERO_REL
 
 from . import shifts
 from .geometry import Pair, pair
@@ -194,7 +195,7 @@ def ratios(sol: GearSolution) -> dict[str, float]:
         drive = next((n for n, s in gf.shafts.items() if s.speed_rpm), None)
         if drive is not None:
             for n, w in sol.omega.items():
-                if n != drive and abs(w) > 1e-12 * abs(sol.omega[drive]):
+                if n != drive and abs(w) > EXACT_ZERO_REL * abs(sol.omega[drive]):
                     out[f"{drive}-{n}"] = sol.omega[drive] / w
     return out
 

@@ -21,6 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from plans.errors import InputError, Said
+from plans.tolerances import AGREE_REL
 
 Pt = tuple[float, float]  # (v drawn, y drawn), plan millimetres
 
@@ -107,7 +108,7 @@ def willis(shafts: dict, meshes: list[TrainMesh], file: str | None) -> dict[str,
                          file=file, field="shafts")
     w, *_ = np.linalg.lstsq(A, b, rcond=None)
     scale = max(1.0, float(np.max(np.abs(b))))
-    if float(np.max(np.abs(A @ w - b))) > 1e-9 * scale * max(1.0, float(np.max(np.abs(A)))):
+    if float(np.max(np.abs(A @ w - b))) > AGREE_REL * scale * max(1.0, float(np.max(np.abs(A)))):
         raise InputError(Said("gt_given_speeds_contradict"), file=file, field="shafts")
     return {n: float(w[idx[n]]) for n in names}
 
@@ -250,6 +251,6 @@ def velocity_plan(shafts: dict, meshes: list[TrainMesh], file: str | None, *, mu
         yp = pitch[me.gears] * mu_l
         la, lb = out[me.shafts[0]], out[me.shafts[1]]
         va, vb = _at(la.p0, la.p1, yp), _at(lb.p0, lb.p1, yp)
-        if abs(va - vb) > 1e-9 * max(1.0, abs(va)):
+        if abs(va - vb) > AGREE_REL * max(1.0, abs(va)):
             raise InputError(Said("gt_given_speeds_contradict"), file=file, field="shafts")
     return VelocityPlan(mu_l, mu_v, h, axes, pitch, out, tuple(order))

@@ -43,6 +43,7 @@ from typing import Any
 
 from plans.check import wording as wd
 from plans.errors import InputError, Said
+from plans.tolerances import VERDICT_REL
 
 #: Angles of the cam at which the key gives the profile (degrees).
 CAM_ANGLES = tuple(float(a) for a in range(0, 360, 30))
@@ -252,7 +253,7 @@ class SheetItem:
 
     @property
     def verdict(self) -> str:
-        return "pass" if abs(self.student - self.exact) <= self.tolerance * (1 + 1e-9) else "fail"
+        return "pass" if abs(self.student - self.exact) <= self.tolerance * (1 + VERDICT_REL) else "fail"
 
 
 @dataclass(frozen=True)

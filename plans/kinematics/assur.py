@@ -18,7 +18,7 @@ from plans.kinematics.context import Context, Motion, place_link, point_at
 from plans.kinematics.structure import Group, Structure, TriadGroup
 from plans.lines import cross
 from plans.records import derived
-from plans.scene.model import Joint, Scene
+from plans.scene.model import Guide, Joint, Scene
 from plans.tolerances import ASSEMBLY_REL, LOCK_SIN
 
 # numpy arrays over positions (or numbers at one position); typed loosely because numpy's
@@ -160,10 +160,16 @@ def slide_name(jt: Joint) -> str:
     return nm
 
 
+def _slot(jt: Joint) -> Guide:
+    """The guide (a slot, a guide of a moving link) a P pair's block slides on."""
+    guide = jt.guide
+    assert guide is not None
+    return guide
+
+
 def slider_turn(jt: Joint) -> complex:
     """e^{i(α − α_s)}: a slider's rotation relative to the link carrying its guide."""
-    assert jt.guide is not None
-    return cmath.exp(1j * (jt.guide.angle - jt.slider_angle))
+    return cmath.exp(1j * (_slot(jt).angle - jt.slider_angle))
 
 
 def _rotation_of(ctx: Context, q: int, turn: complex) -> C:
@@ -285,8 +291,7 @@ def _k_rpr(scene: Scene, g: Group) -> tuple:
     i, j = g.links
     j1, j2, j3 = g.joints
     Lj = scene.links[j]
-    guide = j2.guide
-    assert guide is not None
+    guide = _slot(j2)
     c0 = guide.origin - Lj.points[j3.point]
     return (_local(scene, g.known[0], j1.point), _local(scene, g.known[1], j3.point),
             cross(guide.direction, c0), Lj.points[j3.point], slider_turn(j2),
@@ -301,8 +306,7 @@ def _rpr(ctx: Context, g: Group, k: tuple) -> None:
     xp = ctx.xp
     A, vA, aA = point_at(ctx, p, zp)
     Cq, vC, aC = point_at(ctx, q, zq)
-    guide = j2.guide
-    assert guide is not None
+    guide = _slot(j2)
     d = A - Cq
     D = abs(d)
     if xp.low(D) == 0 or xp.high(abs(ecc / xp.maximum(D, 1e-300))) > 1 + ASSEMBLY_REL:
@@ -377,10 +381,8 @@ def _prp(ctx: Context, g: Group, k: tuple) -> None:
 def _k_rpp(scene: Scene, g: Group) -> tuple:
     i, j = g.links
     j1, j2, j3 = g.joints
-    guide = j2.guide
-    assert guide is not None
     zK = scene.links[j].points[j3.point]
-    return (_local(scene, g.known[0], j1.point), slider_turn(j3), zK, zK - guide.origin, slider_turn(j2),
+    return (_local(scene, g.known[0], j1.point), slider_turn(j3), zK, zK - _slot(j2).origin, slider_turn(j2),
             scene.links[i].points[j1.point])
 
 
@@ -393,9 +395,7 @@ def _rpp(ctx: Context, g: Group, k: tuple) -> None:
     G3, u3 = _guide_line(ctx, j3)
     mq = ctx.motion[q]
     rot = _rotation_of(ctx, q, turn3)
-    guide = j2.guide
-    assert guide is not None
-    u2 = rot * guide.direction
+    u2 = rot * _slot(j2).direction
     sys2 = _System(u2, u3)
     det = sys2.det
     if ctx.xp.low(abs(det)) <= LOCK_SIN:

@@ -25,7 +25,7 @@ from itertools import combinations
 from typing import TYPE_CHECKING, Any
 
 from plans.records import frozen
-from plans.tolerances import COINCIDE_REL, LOCK_SIN
+from plans.tolerances import COINCIDE_REL, LOCK_SIN, ROUND_OFF_REL
 
 if TYPE_CHECKING:
     from plans.kinematics.exact import Kinematics
@@ -195,7 +195,7 @@ def _by_ratio(links: list[int], found: dict, pending: list, why: dict, omega: di
         best: tuple | None = None
         for k, a, b in _thirds(links, found, i, j):
             wk = omega.get(k, 0.0)
-            if abs(wi - wj) <= 1e-12 * scale:
+            if abs(wi - wj) <= ROUND_OFF_REL * scale:
                 if a.direction is not None and b.direction is not None \
                         and abs((a.direction.conjugate() * b.direction).imag) <= PARALLEL:
                     best = (2.0 * size, None, a.direction, k)

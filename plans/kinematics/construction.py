@@ -29,7 +29,7 @@ from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment, St
 from plans.kinematics.scales import LONGEST_MM, ROUND, common_scales, refit, round_scale
 from plans.phrases import phrase
 from plans.records import frozen
-from plans.tolerances import COINCIDE_REL
+from plans.tolerances import AGREE_REL, COINCIDE_REL
 from plans.units import clean, percent
 
 _NICE = ROUND  # round both ways: μ and K = 1/μ
@@ -155,7 +155,7 @@ class _Together:
     def may_run_past(self, longest_mm: float) -> list[int]:
         """The positions where a plan's largest distance from the pole (:attr:`Plan.extent`)
         may exceed ``longest_mm``, from the arrays (with a margin for rounding)."""
-        limit = longest_mm * (1 - 1e-9)
+        limit = longest_mm * (1 - AGREE_REL)
         plans = [b for b in (self.vb, self.ab) if b is not None]
         if type(self.ks) is int:  # one position: numbers
             return [0] if any(abs(b.pts[name]) > limit for b in plans for name in b.order) else []

@@ -30,7 +30,7 @@ import numpy as np
 from plans.errors import ConstructionError, InputError, Said
 from plans.records import derived, frozen
 from plans.scene.model import Joint, Scene
-from plans.tolerances import COINCIDE_REL
+from plans.tolerances import COINCIDE_REL, SAME_ANGLE_DEG
 
 STARTS = ("extreme", "extreme_idle")
 #: The strokes' crank angles differ by less than this (degrees): K = 1, the tie rule decides.
@@ -73,8 +73,8 @@ class Strokes:
     def working(self, phi_deg: Any) -> Any:
         """True where a crank angle lies on the working stroke (its first extreme included)."""
         d = np.mod(np.asarray(phi_deg, float) - self.working_deg, 360.0)
-        d = np.where(d > 360.0 - 1e-9, 0.0, d)  # the working extreme met to round-off
-        return d < self.working_span - 1e-9
+        d = np.where(d > 360.0 - SAME_ANGLE_DEG, 0.0, d)  # the working extreme met to round-off
+        return d < self.working_span - SAME_ANGLE_DEG
 
     def to_json(self, start: str) -> dict[str, Any]:
         """``phi_start`` of the JSON: the start asked for, its φ, the output and its strokes."""
@@ -323,7 +323,7 @@ def _closed_form(scene: Scene, out: Output, near: float, lo: float, hi: float) -
     phis = [_crank_angle(scene, A) for A in cands]
     inside = [p for p in phis if _within(p, lo, hi)]
     # the two assembly branches meet their extremes at one crank angle: one root, however found
-    if not inside or max(_gap(p, inside[0]) for p in inside) > 1e-9:
+    if not inside or max(_gap(p, inside[0]) for p in inside) > SAME_ANGLE_DEG:
         return None
     return inside[0]
 

@@ -15,6 +15,7 @@ import math
 from typing import Any
 
 from plans.kinematics.exact import Kinematics
+from plans.tolerances import AGREE_REL, ROUND_OFF_REL
 
 #: Round mantissas of a scale (either direction of the ratio).
 ROUND = (1.0, 2.0, 2.5, 4.0, 5.0)
@@ -51,7 +52,7 @@ def _up(x: float, mantissas: tuple[float, ...]) -> tuple[float, int]:
     """(m, e): the smallest m × 10^e not below ``x`` (to rounding), m one of ``mantissas`` or 10."""
     e = math.floor(math.log10(x))
     for m in mantissas + (10.0,):
-        if m * 10.0**e >= x * (1 - 1e-12):
+        if m * 10.0**e >= x * (1 - ROUND_OFF_REL):
             return m, e
     return 10.0, e  # pragma: no cover (10 × 10^e is above x)
 
@@ -66,7 +67,7 @@ def round_down(x: float, mantissas: tuple[float, ...] = ROUND) -> float:
     """The largest ``mantissas`` × 10^k not above ``x`` (x > 0)."""
     e = math.floor(math.log10(x))
     for m in sorted(mantissas, reverse=True):
-        if m * 10.0**e <= x * (1 + 1e-12):
+        if m * 10.0**e <= x * (1 + ROUND_OFF_REL):
             return m * 10.0**e
     return 10.0 ** (e - 1) * max(mantissas)
 
@@ -94,7 +95,7 @@ def is_round(mu: float) -> bool:
         return False
     e = math.floor(math.log10(mu))
     m = mu / 10.0**e
-    return any(abs(m - r) < 1e-9 * r for r in ROUND + (10.0,))
+    return any(abs(m - r) < AGREE_REL * r for r in ROUND + (10.0,))
 
 
 def known_vectors(kin: Kinematics) -> tuple[float, float]:

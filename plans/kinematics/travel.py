@@ -19,6 +19,7 @@ from numpy.typing import NDArray
 from plans.errors import ConstructionError, InputError, Said
 from plans.reader import Reader
 from plans.scene.model import Scene
+from plans.tolerances import ROUND_OFF_REL
 
 C = NDArray[np.complex128]
 R = NDArray[np.float64]
@@ -99,7 +100,7 @@ def by_travel(scene: Scene, r: Reader) -> Scene:
         a, b = (odc, idc if idc > odc else idc + 360.0) if stroke == "down" else \
             (idc, odc if odc > idc else odc + 360.0)
         want = np.array([v / 1000.0 if key == "s_mm" else v * H for v in values])
-        if np.any(want > H * (1 + 1e-12)):
+        if np.any(want > H * (1 + ROUND_OFF_REL)):
             top = H * 1000 if key == "s_mm" else 1.0
             raise r.fail(f"driver.{key}", Said("kt_travel_within_stroke", top=top, v=' mm' if key == 's_mm' else ''))
         lo, hi = np.full(len(want), a), np.full(len(want), b)
@@ -113,7 +114,7 @@ def by_travel(scene: Scene, r: Reader) -> Scene:
                          file=scene.path, field=f"driver.{key}") from None
     # the ends of the stroke are the dead centres themselves (the travel is flat there)
     inner, outer = (b, a) if stroke == "down" else (a, b)
-    at = np.where(want >= H * (1 - 1e-12), inner, np.where(want <= 1e-12 * H, outer, 0.5 * (lo + hi)))
+    at = np.where(want >= H * (1 - ROUND_OFF_REL), inner, np.where(want <= ROUND_OFF_REL * H, outer, 0.5 * (lo + hi)))
     phis = tuple(float(x) for x in np.mod(at, 360.0))
     return dataclasses.replace(scene, driver=dataclasses.replace(scene.driver, phis_deg=phis))
 

@@ -9,6 +9,7 @@ import math
 from typing import Any
 
 from plans.kinematics.structure import TriadGroup
+from plans.tolerances import SAME_ANGLE_DEG
 
 from .model import Figure, Frac, Num, Section, Sym, Table, Text, Vec, fmt, num, row
 from .words import quantity, say, symbols, unit, w
@@ -24,8 +25,8 @@ def studied(item: Any) -> list[int]:
     want = sheet.get("positions") if isinstance(sheet, dict) else None
     if isinstance(want, list | int | float) and not isinstance(want, bool):
         want = want if isinstance(want, list) else [want]
-        ks = [next(k for k, p in enumerate(phis) if abs(p - float(x)) < 1e-9) for x in want
-              if any(abs(p - float(x)) < 1e-9 for p in phis)]
+        ks = [next(k for k, p in enumerate(phis) if abs(p - float(x)) < SAME_ANGLE_DEG) for x in want
+              if any(abs(p - float(x)) < SAME_ANGLE_DEG for p in phis)]
         if ks:
             return ks
     return list(range(min(2, len(phis))))

@@ -1,0 +1,46 @@
+"""The largest of several drawings of a set of figures that one sheet still holds: a sheet of
+few panels (a cam, a synthesis, a gear pair) is drawn at the largest round scales that keep
+it one sheet, not left two thirds empty at the A1 lengths."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Sequence
+
+import shapely
+
+from drawings.paper.panel_frame import Panel
+from drawings.paper.sheet import Sheet, SheetSpec, compose, fits_empty, title_box, usable
+
+
+def drawn_part(sheet: Sheet) -> float:
+    """The part of a sheet's field (inside the frame, less the title block) its panels' boxes
+    cover."""
+    W, H = sheet.width, sheet.height
+    field = shapely.box(*usable(W, H)).difference(shapely.box(*title_box(W, H)))
+    boxes = [shapely.box(x, y, x + p.width, y + p.height) for p, x, y in sheet.placed]
+    return float(shapely.union_all(boxes).intersection(field).area / field.area)
+
+
+def fullest_on_one_sheet(groups: Iterable[Iterable[Sequence[Panel]]], spec: SheetSpec, path: str,
+                         scale: Callable[[Sequence[Panel]], str | None]
+                         ) -> tuple[list[Panel], list[Sheet]] | None:
+    """Of the first group (the largest main figure first) with a candidate whose panels all go
+    on one sheet of ``spec``, the candidate that covers most of it (the first of equals), laid
+    out; None when no candidate does.  ``scale`` writes the title block's Scale cell."""
+    W, H = spec.size
+    x0, y0, x1, y1 = usable(W, H)
+    room = (x1 - x0) * (y1 - y0) - (title_box(W, H)[2] - title_box(W, H)[0]) * (title_box(W, H)[3] - title_box(W, H)[1])
+    for group in groups:
+        best: tuple[float, list[Panel], list[Sheet]] | None = None
+        for panels in group:
+            if sum(p.width * p.height for p in panels) > room or \
+                    not all(fits_empty(p, spec.format, spec.orientation) for p in panels):
+                continue  # more than the sheet holds: not worth laying out
+            sheets = compose(panels, spec, scale(panels), path)
+            if len(sheets) == 1:
+                part = drawn_part(sheets[0])
+                if best is None or part > best[0] + 1e-9:
+                    best = (part, list(panels), sheets)
+        if best is not None:
+            return best[1], best[2]
+    return None

@@ -1,0 +1,48 @@
+"""The A1 sheets of the flywheel, engine-balancing and whole-project samples (the folders
+beside the top-level samples) drawn over at least two thirds of their field: inside the
+frame, less the title block, the union of the placed panels' boxes."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+import shapely
+
+import drawings
+from drawings.paper.sheet import usable
+
+ROOT = Path(__file__).resolve().parents[1]
+SAMPLES = sorted(p for folder in ("flywheel", "engines", "projects") for p in (ROOT / "samples" / folder).glob("*.toml"))
+
+#: What these sheets cannot reach yet, and why.
+SHORT = {
+    "inline4": "its polygons are collinear vectors beside fixed tables: at the next larger round scale "
+               "the sheet overflows",
+    "seed002_four_cylinder_two_stroke": "the next larger polygons take a second sheet",
+    "v6_90": "two sheets: its banks' polygons do not fit one, the second holds the rest",
+    "turning_moment": "its kinematics sheet holds the plan of positions of a one-link machine alone",
+    "v_engine_project": "its kinematics sheet of acceleration plans and kinematic diagrams and its "
+                        "kinetostatics sheet (the linkage's sheets)",
+}
+
+
+def drawn_part(sheet) -> float:
+    field = shapely.box(*usable(sheet.width, sheet.height)).difference(shapely.box(*sheet.title_box))
+    boxes = [shapely.box(x, y, x + p.width, y + p.height) for p, x, y in sheet.placed]
+    return shapely.union_all(boxes).intersection(field).area / field.area
+
+
+@pytest.mark.parametrize("path", SAMPLES, ids=[p.stem for p in SAMPLES])
+def test_no_a1_sheet_of_a_subfolder_sample_is_more_than_a_third_empty(path, request):
+    if path.stem in SHORT:
+        request.applymarker(pytest.mark.xfail(reason=SHORT[path.stem], strict=True))
+    d = drawings.draw(path)
+    sheets = d.sheets
+    assert all(sh.spec.format == "A1" for sh in sheets)
+    fills = [drawn_part(sh) for sh in sheets]
+    assert min(fills) >= 2 / 3, [round(f, 2) for f in fills]
+
+
+def test_the_folders_hold_samples():
+    assert {p.parent.name for p in SAMPLES} == {"flywheel", "engines", "projects"}

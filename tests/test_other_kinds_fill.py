@@ -1,0 +1,92 @@
+"""The gear, cam and synthesis sheets of every sample drawn over at least two thirds of an A1
+sheet's field (inside the frame, less the title block): their figures at the largest round
+scales one sheet holds, not left at lengths that leave the sheet two thirds empty."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+import shapely
+
+from drawings import draw
+from drawings.paper.sheet import title_box, usable
+
+ROOT = Path(__file__).resolve().parents[1]
+KINDS = ("gears", "cams", "synthesis")
+SAMPLES = sorted(p for k in KINDS for p in (ROOT / "samples" / k).glob("*.toml"))
+
+#: What an A1 sheet of these kinds still leaves more than a third empty, and why.
+NOT_TWO_THIRDS: dict[str, str] = {
+    "gears/planetary_2kh": "two meshings at 10:1 with their sliding diagrams (0.45 of the first sheet) leave no room "
+                           "for the train at twice the engine's plan; its own sheet at 2× is 0.19 drawn, at the next "
+                           "round factor (4×) the scheme is taller than the sheet",
+    "gears/seed_train": "the meshing at 5:1 (7 teeth a wheel, as the engine draws them), its specific sliding, the "
+                        "table and the train at 2× on one sheet: 0.60 drawn",
+    "cams/flat_face_poly345": "at A1 (its file asks for A2, drawn over 0.76 of it) the next standard scale of the "
+                              "profile, 4:1, leaves no room beside it for the 360 mm φ axis: 0.665 drawn",
+}
+
+
+def covered(sheet) -> float:
+    """The union of the placed panels' boxes over the field: the frame's inside less the title
+    block (computed here from the sheet's size, not taken from the layout)."""
+    field = shapely.box(*usable(sheet.width, sheet.height)).difference(shapely.box(*title_box(sheet.width, sheet.height)))
+    boxes = [shapely.box(x, y, x + p.width, y + p.height) for p, x, y in sheet.placed]
+    return shapely.union_all(boxes).intersection(field).area / field.area
+
+
+@pytest.mark.parametrize("path", SAMPLES, ids=lambda p: f"{p.parent.name}-{p.stem}")
+def test_a1_sheet_at_least_two_thirds_drawn(path, request):
+    key = f"{path.parent.name}/{path.stem}"
+    if key in NOT_TWO_THIRDS:
+        request.applymarker(pytest.mark.xfail(reason=NOT_TWO_THIRDS[key], strict=True))
+    d = draw(path, format="A1")
+    fills = [covered(sh) for sh in d.sheets]
+    assert all(sh.width == 841 and sh.height == 594 for sh in d.sheets)
+    assert min(fills) >= 2 / 3, [round(f, 3) for f in fills]
+
+
+@pytest.mark.parametrize("path", sorted((ROOT / "samples" / "synthesis").glob("*.toml")), ids=lambda p: p.stem)
+def test_synthesis_strokes_read_off_the_turn_are_180_plus_and_minus_theta(path):
+    """The working and the return strokes' angles written on the travel diagram are
+    180° ± θ, θ = 180°·(K − 1)/(K + 1) from the task's K (not from the design)."""
+    import tomllib
+
+    K = float(tomllib.loads(path.read_text(encoding="utf-8")).get("K", 1.0))
+    theta = 180.0 * (K - 1.0) / (K + 1.0)
+    d = draw(path, format="A1", language="en")
+    motion = next(p for p in d.panels if p.pid == "output-motion")
+    said = {q.eid: q.label.plain for q in motion.prims if q.op == "text" and q.eid.startswith("stroke-")}
+    assert float(said["stroke-working"].split()[-1].rstrip("°")) == pytest.approx(180.0 + theta, abs=6e-3)
+    assert float(said["stroke-return"].split()[-1].rstrip("°")) == pytest.approx(180.0 - theta, abs=6e-3)
+
+
+def test_specific_sliding_drawn_reaches_the_pairs_greatest_at_b1_and_b2():
+    """λ1 at B1 and λ2 at B2 of the diagram's formula are the pair's greatest specific sliding
+    (plans.gears.geometry's own), and the drawn curves pass through them."""
+    import numpy as np
+
+    from drawings.gears_sliding import sliding
+    from plans.gears.solution import solve_file
+
+    for name in ("planetary_2kh", "seed_train"):
+        gs = solve_file(ROOT / "samples" / "gears" / f"{name}.toml")
+        for mg in gs.meshings:
+            p = mg.pair
+            u = p.wheels[1].z / p.wheels[0].z
+            l1, _ = sliding(np.array([p.rho_start]), p.g, u, p.internal)
+            _, l2 = sliding(np.array([p.rho_end]), p.g, u, p.internal)
+            assert abs(l1[0]) == pytest.approx(p.sliding[0], rel=1e-12)
+            assert abs(l2[0]) == pytest.approx(p.sliding[1], rel=1e-12)
+
+
+def test_flat_face_convexity_curve_touches_minus_r0_min():
+    """A flat face's s + s″ drawn over the turn reaches down to the line −r0 min (the base
+    radius the solver found on its own finer grid) and no lower."""
+    d = draw(ROOT / "samples" / "cams" / "flat_face_poly345.toml", format="A1")
+    panel = next(p for p in d.panels if p.pid == "convexity")
+    curve = [q for q in panel.prims if q.op == "polyline" and q.eid == "s-plus-s2"][0]
+    line = [q for q in panel.prims if q.op == "line" and q.eid == "r0-min"][0]
+    lowest = max(y for _, y in curve.pts)  # paper y grows downward
+    assert lowest == pytest.approx(line.pts[0][1], abs=0.05)
