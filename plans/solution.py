@@ -10,7 +10,10 @@ read the Solution.
 ``fit`` is the drawing's paper: the target lengths of the plans, polygons and lever as a
 fraction of the A1 ones (``drawings`` passes √(sheet / A1) for a smaller sheet, the scales
 still round, and up to ``MAX_FIT`` for longer plans on a sheet with room for them).  It changes
-only scales, never a value.
+only scales, never a value: :meth:`Solution.at_fit` gives the same scene at another fit, which
+makes its plans, polygons and lever (and the tables read off the plans) again and shares every
+other part with the solution it came from (the exact analysis, the reactions, the cycle's
+dynamics and diagrams...), solved once for every fit.
 
 Values by their textbook names (``F_12^τ``, ``v_B``, ``omega_3``...) are read with
 :meth:`Solution.value`, signed as :mod:`plans.quantities` documents (docs/quantities.md).
@@ -80,7 +83,7 @@ MAX_FIT = 2.5
 class Solution:
     """Everything computed for a scene, each part once, when first read."""
 
-    __slots__ = ("scene", "fit", "_parts")
+    __slots__ = ("scene", "fit", "_parts", "_common")
 
     def __init__(self, scene: Scene, fit: float = 1.0) -> None:
         """``scene`` with its ``[loads]``, ``[dynamics]`` and ``[diagrams]`` read and validated now
@@ -91,15 +94,35 @@ class Solution:
             raise ValueError(f"fit is the fraction of the A1 target lengths, 0 < fit <= {MAX_FIT:g}; got {fit!r}")
         self.scene: Scene = with_tables(scene, **({} if fit == scene.fit else {"fit": float(fit)}))
         self.fit = float(fit)
-        self._parts: dict[Any, Any] = {}
+        self._parts: dict[Any, Any] = {}  # the parts at this fit
+        self._common: dict[Any, Any] = {}  # the parts no fit changes: the same scene's at every fit (at_fit)
 
     def __repr__(self) -> str:
         return f"Solution({self.scene.path!r}, fit={self.fit:g}, outputs={sorted(self.scene.outputs)})"
 
+    def at_fit(self, fit: float) -> Solution:
+        """The same scene at another paper's ``fit`` (longer or shorter plans): its plans,
+        polygons and lever (and the tables read off the plans) made at their own round scales
+        when read, every other part (the structure, the exact analysis, the reactions, the
+        efficiency, dynamics and diagrams, a revolution, the strokes, the instant centres,
+        the analogues) this one's, solved once for both."""
+        if fit == self.fit:
+            return self
+        other = Solution(self.scene, fit)
+        other._common = self._common
+        return other
+
     def _part(self, key: Any, make: Callable[[], Any]) -> Any:
-        """A part made once; a construction without an answer names the scene's file."""
+        """A part at this fit, made once; a construction without an answer names the scene's file."""
+        return self._kept(self._parts, key, make)
+
+    def _shared(self, key: Any, make: Callable[[], Any]) -> Any:
+        """A part no fit changes, made once for the scene at every fit."""
+        return self._kept(self._common, key, make)
+
+    def _kept(self, parts: dict[Any, Any], key: Any, make: Callable[[], Any]) -> Any:
         try:
-            return self._parts[key]
+            return parts[key]
         except KeyError:
             pass
         try:
@@ -107,7 +130,7 @@ class Solution:
         except ConstructionError as exc:
             exc.source = self.scene.path
             raise
-        self._parts[key] = got
+        parts[key] = got
         return got
 
     # -- the parts the scene asks for
@@ -116,14 +139,15 @@ class Solution:
         """The initial link and the Assur groups."""
         from plans.kinematics.structure import analyse
 
-        return self._part("structure", lambda: analyse(self.scene))
+        return self._shared("structure", lambda: analyse(self.scene))
 
     @property
     def kinematics(self) -> Kinematics:
         """Exact positions (and velocities, accelerations as the outputs need) at the scene's angles."""
         from plans.kinematics.exact import solve
 
-        return self._part("kinematics", lambda: solve(self.scene, structure=self.structure))
+        return self._part("kinematics", lambda: self._shared(
+            "kinematics", lambda: solve(self.scene, structure=self.structure)).on_paper(self.scene))
 
     def kinematics_to(self, order: int) -> Kinematics:
         """The exact analysis at the scene's positions to at least ``order`` (2: accelerations):
@@ -134,7 +158,8 @@ class Solution:
             return self.kinematics
         from plans.kinematics.exact import solve
 
-        return self._part(("kinematics", order), lambda: solve(self.scene, order=order, structure=self.structure))
+        return self._part(("kinematics", order), lambda: self._shared(
+            ("kinematics", order), lambda: solve(self.scene, order=order, structure=self.structure)).on_paper(self.scene))
 
     def plans_at(self, ks: tuple[int, ...], velocity_scale: float | None = None,
                  acceleration_scale: float | None = None) -> tuple[PositionPlans, ...]:
@@ -159,7 +184,11 @@ class Solution:
             loads = self.scene.loads or parse_loads(self.scene)
             return loads, analyse_forces(self.scene, self.kinematics_to(2), loads)
 
-        return self._part("frictionless", make)
+        def here() -> tuple[Loads, ForceAnalysis]:
+            loads, fa = self._shared("frictionless", make)
+            return loads, fa.on_paper(self.scene)
+
+        return self._part("frictionless", here)
 
     @property
     def plans(self) -> tuple[PositionPlans, ...]:
@@ -180,10 +209,14 @@ class Solution:
         def make() -> Forces | None:
             if not (self.scene.wants("force_polygons") or self.scene.wants("lever")):
                 return None
-            from plans.forces.analysis import kinetostatics
+            from plans.forces.analysis import force_analysis
+            from plans.forces.lever import zhukovsky_lever
 
-            got = kinetostatics(self.scene, self.kinematics)
-            return None if got is None else Forces(*got)
+            fa = self._shared("reactions", lambda: force_analysis(self.scene, self.kinematics))
+            if fa is None:
+                return None
+            fa = fa.on_paper(self.scene)
+            return Forces(fa, zhukovsky_lever(fa))
 
         return self._part("forces", make)
 
@@ -199,7 +232,7 @@ class Solution:
 
             return efficiency_json(f.analysis)
 
-        return self._part("efficiency", make)
+        return self._shared("efficiency", make)
 
     @property
     def lever(self) -> LeverAnalysis | None:
@@ -212,20 +245,18 @@ class Solution:
         def make() -> CycleResult | None:
             from plans.cycle.results import solve_cycle
 
-            return solve_cycle(self.scene, self.kinematics, self.plans)
+            return solve_cycle(self.kinematics, self.plans, self.dynamics, self.diagrams)
 
         return self._part("cycle", make)
 
     @property
     def dynamics(self) -> Dynamics | None:
-        """Machine dynamics and the flywheel (None unless asked for): the cycle's, or alone
-        when the cycle's tables have not been read."""
-        if "cycle" in self._parts or not self.scene.wants("dynamics"):
-            c = self.cycle if self.scene.wants("dynamics") else None
-            return None if c is None else c.dynamics
+        """Machine dynamics and the flywheel (None unless asked for)."""
+        if not self.scene.wants("dynamics"):
+            return None
         from plans.cycle.dynamics import dynamics
 
-        return self._part("dynamics", lambda: dynamics(self.scene))
+        return self._shared("dynamics", lambda: dynamics(self.scene))
 
     def dynamics_drawn(self, axis_mm: float, height: float) -> Dynamics:
         """The dynamics with its graphical part (Wittenbauer's diagram, the flywheel read off
@@ -233,7 +264,7 @@ class Solution:
         longer and taller where an A1 sheet has room): the same dynamics at other scales."""
         d = self.dynamics
         assert d is not None, "a scene with dynamics"
-        return self._part(("dynamics", axis_mm, height), lambda: d.at(axis_mm, height))
+        return self._shared(("dynamics", axis_mm, height), lambda: d.at(axis_mm, height))
 
     def diagrams_drawn(self, length_mm: float) -> Diagrams | None:
         """The kinematic diagrams drawn at a shorter φ axis (μφ = L/2π), for a sheet too small
@@ -245,19 +276,17 @@ class Solution:
         from plans.cycle.diagrams import diagrams
         from plans.cycle.spec import diagrams_spec
 
-        return self._part(("diagrams", length_mm), lambda: diagrams(
+        return self._shared(("diagrams", length_mm), lambda: diagrams(
             self.scene, with_length(diagrams_spec(self.scene), length_mm=length_mm)))
 
     @property
     def diagrams(self) -> Diagrams | None:
-        """Kinematic diagrams by graphical differentiation (None unless asked for): the
-        cycle's, or alone when the cycle's tables have not been read."""
-        if "cycle" in self._parts or not self.scene.wants("diagrams"):
-            c = self.cycle if self.scene.wants("diagrams") else None
-            return None if c is None else c.diagrams
+        """Kinematic diagrams by graphical differentiation (None unless asked for)."""
+        if not self.scene.wants("diagrams"):
+            return None
         from plans.cycle.diagrams import diagrams
 
-        return self._part("diagrams", lambda: diagrams(self.scene))
+        return self._shared("diagrams", lambda: diagrams(self.scene))
 
     def solve_all(self) -> Solution:
         """Every part the scene asks for, now, in the order of the method (the first part
@@ -275,13 +304,13 @@ class Solution:
             return Revolution(_revolution(self, n), 1)
 
         step = (REVOLUTION - 1) // (n - 1) if n > 1 and (REVOLUTION - 1) % (n - 1) == 0 else 0
-        if not step or self._parts.get("no revolution"):
-            return self._part(("revolution", n), own)
+        if not step or self._common.get("no revolution"):
+            return self._shared(("revolution", n), own)
         try:
-            whole = self._part(("revolution", REVOLUTION), lambda: _revolution(self, REVOLUTION))
+            whole = self._shared(("revolution", REVOLUTION), lambda: _revolution(self, REVOLUTION))
         except PlansError:  # it may turn through the coarser angles all the same
-            self._parts["no revolution"] = True  # (not tried again)
-            return self._part(("revolution", n), own)
+            self._common["no revolution"] = True  # (not tried again)
+            return self._shared(("revolution", n), own)
         return Revolution(whole, step)
 
     def force_polygons(self, k: int) -> tuple[ForcePolygon, ...]:
@@ -319,7 +348,7 @@ class Solution:
             got = centres_at(self.kinematics, k)
             return got, velocities_at(self.kinematics, k, got)
 
-        return self._part(("centres", k), make)
+        return self._shared(("centres", k), make)
 
     def analogue_plans(self) -> tuple[Plan, ...]:
         """Plans of velocity analogues at the dynamics table's positions: velocity plans at
@@ -345,7 +374,7 @@ class Solution:
                     out.append(pp.velocity)
             return tuple(out)
 
-        return self._part("analogues", make)
+        return self._shared("analogues", make)
 
     def strokes(self) -> Any:
         """The output link's extreme positions, the working and idle strokes and θ
@@ -364,7 +393,7 @@ class Solution:
                 return None
             return st, at
 
-        return self._part("strokes", make)
+        return self._shared("strokes", make)
 
     # -- values by their textbook names (plans.quantities)
     def value(self, name: str, phi: float | None = None) -> float:

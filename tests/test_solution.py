@@ -161,9 +161,9 @@ def test_parts_are_computed_once_and_only_when_read(monkeypatch):
     real = construction.build_all
     monkeypatch.setattr(construction, "build_all", lambda kin: calls.append(1) or real(kin))
     sol = plans.solve(SAMPLES / "four_bar.toml")
-    assert sol._parts == {}  # nothing yet
+    assert sol._parts == {} and sol._common == {}  # nothing yet
     assert sol.kinematics.n == len(sol.scene.driver.phis_deg)
-    assert calls == [] and "forces" not in sol._parts
+    assert calls == [] and "forces" not in sol._parts and "reactions" not in sol._common
     assert sol.plans is sol.plans and calls == [1]
     assert sol.forces is sol.forces and sol.lever is sol.forces.lever
 
@@ -172,7 +172,9 @@ def test_parts_are_computed_once_and_only_when_read(monkeypatch):
 def test_plans_draw_solves_each_scene_once(path, monkeypatch):
     """``plans draw``: one Solution, whose exact analysis runs at the scene's positions once
     and over one revolution once (what the sheets read of the plan of positions, the strokes
-    and the mechanism's size: before, three revolutions and the positions again)."""
+    and the mechanism's size: before, three revolutions and the positions again), the longer
+    plans a roomy sheet tries included: each is the same Solution at another fit, whose plans
+    alone are built again (before, each longer fit solved the whole scene again)."""
     from plans import solution
     from plans.kinematics import exact
 
@@ -185,7 +187,7 @@ def test_plans_draw_solves_each_scene_once(path, monkeypatch):
     init, solve = solution.Solution.__init__, exact.solve
 
     def counted_init(self, *a, **kw):
-        solutions.append(1)
+        solutions.append(self)
         init(self, *a, **kw)
 
     monkeypatch.setattr(solution.Solution, "__init__", counted_init)
@@ -201,20 +203,33 @@ def test_plans_draw_solves_each_scene_once(path, monkeypatch):
     build_all = construction.build_all
     monkeypatch.setattr(construction, "build_all", lambda kin, *a, **kw: built.append(kin.n) or build_all(kin, *a, **kw))
     from drawings import cycle, linkage
+    from drawings.linkage import larger
 
     for module in (linkage, cycle):  # the layout of the panels on the sheets solves nothing: not timed here
         monkeypatch.setattr(module, "compose", lambda panels, *a, **kw: [SimpleNamespace(
-            panels=panels, number=1, count=1, prims=[], render=lambda: None)])
-    # the longer plans a roomy sheet takes are another fit's Solution (tests/test_sheet_fill.py)
-    monkeypatch.setattr("drawings.linkage.larger.may_grow", lambda sol, spec: False)
+            panels=panels, placed=[(p, 0.0, 0.0) for p in panels], number=1, count=1, prims=[],
+            render=lambda: None)])  # (all in one corner: a sheet with room, so the longer fit is tried)
+    grows = []
+    may_grow = larger.may_grow
+    monkeypatch.setattr(larger, "STEPS", (2.0,))  # one longer fit tried (each costs the panels drawn again)
+    monkeypatch.setattr(larger, "may_grow", lambda sol, spec: grows.append(may_grow(sol, spec)) or grows[-1])
     d = linkage.draw(scene)
-    assert d.sheets and d.panels and len(solutions) == 1
+    assert d.sheets and d.panels
+    fits = [sol.fit for sol in solutions]
+    if any(grows):  # the longer plans tried (tests/test_sheet_fill.py): the same Solution at each longer fit
+        longer = [fits[0] * s for s in larger.STEPS if fits[0] * s <= solution.MAX_FIT]
+        assert fits[1:] == longer[:len(fits) - 1], fits  # in order, until one stops the search
+        assert all(sol._common is solutions[0]._common for sol in solutions)
+    else:
+        assert len(solutions) == 1
     # the scene's own positions once, one revolution at most (the sheets' 73- and 37-angle
-    # revolutions read off it, no longer solved again); the rooms' own grids (a gas load's
-    # stroke, the dynamics' integration) are the engine's, not the sheets'
-    assert solves.count(0) == 1 and solves.count(solution.REVOLUTION) <= 1
+    # revolutions read off it, no longer solved again), whatever the fits drawn; the rooms'
+    # own grids (a gas load's stroke, the dynamics' integration) are the engine's, not the sheets'
+    assert solves.count(0) == 1 and solves.count(solution.REVOLUTION) <= 1, solves
     assert 73 not in solves and 37 not in solves, solves
-    assert built == ([len(scene.driver.phis_deg)] if scene.wants("velocity_plan") else []), built
+    # the plans built once at each fit: their scales are what a fit changes
+    assert built == ([len(scene.driver.phis_deg)] * len(fits) if scene.wants("velocity_plan") else []), built
+    solutions.clear()
     solves.clear()  # drawn again from a Solution whose parts are made: nothing is solved
     sol = solution.Solution(scene)
     for part in ("plans", "forces", "cycle"):
@@ -225,8 +240,47 @@ def test_plans_draw_solves_each_scene_once(path, monkeypatch):
         sol.analogue_plans()
     solves.clear()
     built.clear()
-    assert linkage.draw(sol).panels and solves == [] and built == []
-    assert len(solutions) == 2
+    assert linkage.draw(sol).panels and solves == []
+    # only the longer fits' plans are built (each once), by the same Solution at those fits
+    assert [s.fit for s in solutions] == fits and all(s._common is sol._common for s in solutions)
+    assert built == ([len(scene.driver.phis_deg)] * (len(fits) - 1) if scene.wants("velocity_plan") else []), built
+
+
+@pytest.mark.parametrize("name", ["shaper_friction", "v_engine_cycle", "class3/triad_press"])
+def test_a_solution_at_another_fit_solves_nothing_again_and_gives_what_a_solve_there_gives(name, monkeypatch):
+    """``sol.at_fit(f)`` shares every part no fit changes (the exact analysis, the reactions
+    with friction and the efficiency, the cycle's dynamics and diagrams, a revolution, the
+    strokes: ``sol``'s own objects, nothing solved again), and what it makes again is what the
+    scene solved at f from scratch gives: the same JSON (plans, polygons, lever, tables) to
+    the character, the same scales of every polygon and lever."""
+    import json
+
+    from plans.kinematics import exact
+
+    sol = plans.solve(SAMPLES / f"{name}.toml")
+    fit = 2.0 * sol.fit
+    fresh = plans.solve(sol.scene, fit=fit)
+    want, before = json.dumps(to_json(fresh)), json.dumps(to_json(sol))
+    sol.revolution(), sol.strokes()
+    solves: list = []
+    real = exact.solve
+    monkeypatch.setattr(exact, "solve", lambda *a, **kw: solves.append(a[1:2]) or real(*a, **kw))
+    longer = sol.at_fit(fit)
+    assert longer.fit == fit and longer.scene.fit == fit and sol.at_fit(sol.fit) is sol
+    got = json.dumps(to_json(longer))
+    assert got == want and got != before  # the scales are the longer fit's, every value the same
+    assert longer.revolution().kinematics is sol.revolution().kinematics and longer.strokes() is sol.strokes()
+    for part in ("efficiency", "dynamics", "diagrams", "structure"):
+        assert getattr(longer, part) is getattr(sol, part), part
+    kin = longer.kinematics
+    assert kin.scene is longer.scene and kin.motion is sol.kinematics.motion  # read at f, not solved again
+    if sol.forces is not None:
+        fa = longer.forces.analysis
+        assert fa.scene is longer.scene and fa.crank is sol.forces.analysis.crank
+        for k in range(kin.n):
+            assert [p.scale for p in longer.force_polygons(k)] == [p.scale for p in fresh.force_polygons(k)]
+            assert longer.lever_plan(k).scale == fresh.lever_plan(k).scale
+    assert solves == []
 
 
 # --------------------------------------------------------------------------- validate once
@@ -260,7 +314,7 @@ def test_every_table_is_held_typed_by_the_scene():
     assert solved.dynamics_spec is not None and solved.dynamics_spec.delta > 0
     assert solved.diagrams_spec is not None and solved.diagrams_spec.quantities
     sol = plans.solve(SAMPLES / "four_bar.toml")
-    assert sol.scene.dynamics_spec is None and sol.scene.diagrams_spec is None and sol._parts == {}
+    assert sol.scene.dynamics_spec is None and sol.scene.diagrams_spec is None and sol._parts == sol._common == {}
     data = read_toml(SAMPLES / "four_bar.toml")
     data["outputs"] = ["positions"]  # [loads] unused: a misspelt key in it fails all the same
     data["loads"]["gravty"] = True
@@ -337,7 +391,7 @@ def test_a_mechanism_that_does_not_turn_a_revolution_is_drawn_at_its_own_positio
     sol = plans.solve(scene_from_dict(data, "locking.toml"))
     with pytest.raises(plans.ConstructionError):
         sol.revolution()
-    assert sol._parts["no revolution"] and strokes_over_cycle(sol) == {}
+    assert sol._common["no revolution"] and strokes_over_cycle(sol) == {}  # (for the scene at every fit)
     xs = [complex(sol.kinematics.point(p)[0][k]).real for p in ("O", "A", "B", "D", "E") for k in (0, 1)]
     assert cycle_size(sol) >= max(xs) - min(xs) > 0
     d = draw(sol)

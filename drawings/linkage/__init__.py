@@ -188,7 +188,7 @@ def draw(source: Solution | Scene | str | Path, *, format: str | None = None, or
             fit = _smaller_fit(sol, e.panel, spec)
             if fit is None:
                 raise
-            sol = solve_scene(sol.scene, fit=fit)
+            sol = sol.at_fit(fit)  # shorter plans, polygons and lever; the rest as solved
 
 
 #: The engine's scales a panel may be drawn at, and the ``[scales]`` keys that fix them.

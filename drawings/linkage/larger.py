@@ -2,7 +2,8 @@
 
 A1 sheets drawn at the plans' A1 target lengths are often left half empty: twelve velocity
 plans of 100 mm on an 800 × 560 mm field.  A draftsman then draws them at a larger round
-scale.  The scene is solved again with longer target lengths (``fit`` > 1: each plan, polygon
+scale.  The plans, polygons and lever are made again with longer target lengths (``fit`` > 1,
+the rest of the solution shared: :meth:`plans.solution.Solution.at_fit`; each plan, polygon
 and lever takes the round scale, 1, 2, 2.5, 4 or 5 × 10^k, that draws it within the longer
 length), and a sheet takes those panels when they keep as few sheets and cover more of them;
 the scales written on the panels are the ones they are drawn at.  The round set has no value
@@ -41,13 +42,12 @@ def may_grow(sol: Solution, spec: Any) -> bool:
 
 
 def longer(sol: Solution) -> list[Callable[[], Solution]]:
-    """Thunks of ``sol``'s scene solved at each longer fit, in order."""
+    """Thunks of ``sol`` at each longer fit, in order (:meth:`Solution.at_fit`: only the plans,
+    polygons and lever are made again, at their longer scales)."""
     from functools import partial
 
-    from plans.solution import solve
-
     fits = [sol.fit * s for s in STEPS if sol.fit * s <= MAX_FIT + 1e-12]
-    return [partial(solve, sol.scene, fit=f) for f in fits]
+    return [partial(sol.at_fit, f) for f in fits]
 
 
 def once_each(thunks: Sequence[Callable[[], T]]) -> Callable[[int], T]:

@@ -7,7 +7,6 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from plans.records import frozen
-from plans.scene.model import Scene
 
 from .table import CycleTable, csv_text, plan_table, position_table, text
 
@@ -25,17 +24,10 @@ class CycleResult:
     diagrams: Diagrams | None
 
 
-def solve_cycle(scene: Scene, kin: Any, plans: Any) -> CycleResult | None:
-    """Tables over the positions (several positions), dynamics and diagrams (when asked)."""
-    dyn = dia = None
-    if scene.wants("dynamics"):
-        from .dynamics import dynamics
-
-        dyn = dynamics(scene)
-    if scene.wants("diagrams"):
-        from .diagrams import diagrams
-
-        dia = diagrams(scene)
+def solve_cycle(kin: Any, plans: Any, dyn: Dynamics | None, dia: Diagrams | None) -> CycleResult | None:
+    """Tables over the positions (several positions), with the dynamics and the diagrams as
+    solved (None where the scene does not ask for them): a Solution solves those once for
+    every fit, the tables read the plans at its own."""
     tables: list[CycleTable] = []
     base = plan_table(plans) if plans else position_table(kin)
     if base is not None:

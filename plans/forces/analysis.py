@@ -16,6 +16,13 @@ from plans.scene.model import Scene
 
 def kinetostatics(scene: Scene, kin: Kinematics) -> tuple[ForceAnalysis, LeverAnalysis] | None:
     """Force analysis and Zhukovsky lever if the scene asks for them, else None (nothing computed)."""
+    fa = force_analysis(scene, kin)
+    return None if fa is None else (fa, zhukovsky_lever(fa))
+
+
+def force_analysis(scene: Scene, kin: Kinematics) -> ForceAnalysis | None:
+    """The Bruevich polygons' analysis (with friction where the pairs have it) if the scene
+    asks for polygons or the lever, else None: what no fit changes (the lever's scale does)."""
     if not (scene.wants("force_polygons") or scene.wants("lever")):
         return None
     loads = parse_loads(scene)
@@ -25,7 +32,5 @@ def kinetostatics(scene: Scene, kin: Kinematics) -> tuple[ForceAnalysis, LeverAn
         from plans.forces.friction import friction_analysis
 
         kin.structure.no_triad(scene.path, Said("ks_w_friction"))
-        fa = friction_analysis(scene, kin, loads, spec)
-    else:
-        fa = analyse_forces(scene, kin, loads)
-    return fa, zhukovsky_lever(fa)
+        return friction_analysis(scene, kin, loads, spec)
+    return analyse_forces(scene, kin, loads)

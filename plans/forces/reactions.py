@@ -124,6 +124,16 @@ class ForceAnalysis:
     def n(self) -> int:
         return self.kin.n
 
+    def on_paper(self, scene: Scene) -> ForceAnalysis:
+        """This analysis read with ``scene``, the same mechanism at another fit (the polygons'
+        and the lever's target lengths): the same reactions, nothing solved again; what is
+        derived from it (no fit enters that) is kept for the other too."""
+        if scene is self.scene:
+            return self
+        other = replace(self, scene=scene, kin=self.kin.on_paper(scene))
+        derived(other).update(derived(self))
+        return other
+
     def _once(self, key: str, make: Callable[[], Any]) -> Any:
         """What every position's table and polygons read again, worked out once and kept
         beside the record (:func:`plans.records.derived`; arrays made read-only)."""

@@ -19,6 +19,7 @@ Python numbers position by position, where numpy's per-call cost would dominate
 
 from __future__ import annotations
 
+import copy
 import math
 from functools import cached_property
 from typing import Any
@@ -81,6 +82,18 @@ class Kinematics:
 
     def __repr__(self) -> str:
         return f"Kinematics({self.scene.path!r}, {self.n} positions, order {self.order})"
+
+    def on_paper(self, scene: Scene) -> Kinematics:
+        """This solve read with ``scene``, the same mechanism at another fit (the plans' target
+        lengths, :func:`plans.kinematics.scales.fit`): nothing solved again, every array and
+        reading made so far and made later shared by both."""
+        if scene is self.scene:
+            return self
+        if scene.links is not self.scene.links or scene.driver is not self.scene.driver:
+            raise ValueError("Kinematics.on_paper takes the same scene at another fit")
+        other = copy.copy(self)  # the readings' tables (points, homes, special points) are the same objects
+        other.scene = scene
+        return other
 
     @cached_property
     def phi_deg(self) -> R:
