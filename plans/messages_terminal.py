@@ -29,6 +29,8 @@ TERMINAL: dict[str, tuple[str, str]] = {
     "gb_gears": ("gears", "зубчатые передачи"),
     "gb_cam": ("cam", "кулачок"),
     "gb_cycle": ("cycle", "динамика"),
+    "gb_engine": ("engine", "уравновешивание"),
+    "gb_synthesis": ("synthesis", "синтез"),
     "gb_at": ("{what} at {phis}°", "{what} при {phis}°"),
     # ---- the workbench page: the balancing load's rows
     "wb_bal_moment": ("{sym}, its moment about the pivot", "{sym}, её момент относительно опоры"),
