@@ -182,24 +182,25 @@ def _solve(args: argparse.Namespace) -> int:
     refuse_input(args.json, args.scene)
     scene = load_scene(args.scene)
     sol = solve_scene(scene)
+    from plans.language import choose
+
+    lang = choose(getattr(args, "language", None), scene.raw)
     if getattr(args, "csv", None):
         from plans.cycle.results import cycle_csv
 
-        text = cycle_csv(sol.cycle) if sol.cycle is not None else ""
+        text = cycle_csv(sol.cycle, lang) if sol.cycle is not None else ""
         if args.csv == "-":
             sys.stdout.write(text)
             return 0
         atomic_write(args.csv, text)
     if args.json == "-":
-        write_json(sol, sys.stdout.write)
+        write_json(sol, sys.stdout.write, lang)
         return 0
     if args.json:
         with atomic_file(args.json) as fh:
-            write_json(sol, lambda text: fh.write(text.encode("utf-8")))
+            write_json(sol, lambda text: fh.write(text.encode("utf-8")), lang)
     if not args.quiet:
-        from plans.language import choose
-
-        print(table(sol, protocol=args.protocol, lang=choose(getattr(args, "language", None), scene.raw)))
+        print(table(sol, protocol=args.protocol, lang=lang))
     return 0
 
 

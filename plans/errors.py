@@ -221,6 +221,8 @@ class ConstructionError(PlansError):
         parts = []
         if self.group:
             group = self.group.replace("class III ", Said("x_class_iii").text(lang), 1)
+            if group == "loop equations":  # the second solver's "group": every loop at once
+                group = Said("nw_loop_equations").text(lang)
             parts.append(Said("x_at_group", group=group).text(lang))
         if self.point:
             parts.append(Said("x_at_point", point=self.point).text(lang))

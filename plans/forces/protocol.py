@@ -185,16 +185,17 @@ def force_steps(fa: ForceAnalysis, lv: LeverAnalysis, k: int) -> tuple[ForceStep
     return tuple(out)
 
 
-def steps_json(plans: tuple[Plan | None, ...], forces: tuple[ForceStep, ...]) -> list[dict]:
-    """``positions[i].steps``: every step of the plans, the polygons and the lever, in order."""
+def steps_json(plans: tuple[Plan | None, ...], forces: tuple[ForceStep, ...], lang: str = "en") -> list[dict]:
+    """``positions[i].steps``: every step of the plans, the polygons and the lever, in order;
+    the operations as the program names them, the sentences in ``lang``."""
     out = []
     for plan in plans:
         if plan is None:
             continue
-        out += [{"plan": plan.kind, "op": s.op, "inputs": list(s.inputs), "output": s.output, "text": s.text}
+        out += [{"plan": plan.kind, "op": s.op, "inputs": list(s.inputs), "output": s.output, "text": s.say(lang)}
                 for s in plan.steps]
     out += [{"plan": f.plan, "op": f.step.op, "inputs": list(f.step.inputs), "output": f.step.output,
-             "text": f.step.text} for f in forces]
+             "text": f.step.say(lang)} for f in forces]
     return out
 
 
