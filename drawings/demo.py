@@ -51,6 +51,7 @@ WORDS = {
                   "J": "Дж", "rad/s": "рад/с", "rad/s²": "рад/с²", "kg·m²": "кг·м²", "m": "м", "m/s": "м/с",
                   "m/s²": "м/с²", "m/s^2": "м/с²", "mm": "мм", "s": "с"},
         "labels": {"F_bal": "F_ур", "M_bal": "M_ур", "M_pr": "M_пр", "I_pr": "I_пр"},
+        "points": {"p_v": "p", "p_a": "π"},  # the poles as a Russian course names them
     },
 }
 

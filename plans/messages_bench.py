@@ -190,7 +190,7 @@ BENCH: dict[str, tuple[str, str]] = {
                           "одна работа, два положения, с разбором ошибок (≤ {bound} с)"),
     "bq_folder": ("a folder of 30 submissions checked (≤ {bound:g} s)", "папка из 30 работ проверена (≤ {bound:g} с)"),
     # ---- the terminal's and the report's frame
-    "br_goal_line": ("{state:8s} {goal}: {measured}{ratio}", "{state:11s} {goal}: {measured}{ratio}"),
+    "br_goal_line": ("{state} {goal}: {measured}{ratio}", "{state} {goal}: {measured}{ratio}"),  # state padded
     "br_title": ("# plans bench{quick}", "# plans bench{quick}"),
     "br_meta": ("Python {python}, numpy {numpy}, shapely {shapely}, {machine}, OPENBLAS_NUM_THREADS={threads}; total "
                 "{wall:.1f} s.",

@@ -29,7 +29,8 @@ class Goal:
     def line(self, lang: str = "en") -> str:
         state = say("bs_met" if self.met else "bs_skipped" if self.met is None else "bs_not_met", lang)
         r = "" if math.isnan(self.ratio) else f" [{number(self.ratio, '.2f', lang)}]"
-        return say("br_goal_line", lang, state=state, goal=self.goal, measured=self.measured, ratio=r)
+        width = 8 if lang == "en" else 11  # the states' column: "NOT met", "не достигнута"
+        return say("br_goal_line", lang, state=state.ljust(width), goal=self.goal, measured=self.measured, ratio=r)
 
 
 def median_time(fn: Callable[[], Any], reps: int = 7, least: float = 2e-3) -> float:

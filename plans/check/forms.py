@@ -47,8 +47,9 @@ def question_names(scene: Scene, scene_ref: str, phis: tuple[float, ...]) -> dic
 
     kin = solve(scene, order=2)
     mv, ma = default_scales(kin)
-    # read as a form beside the scene names it (the written form, beside its target, names it by scene_ref)
-    beside = Path(scene.path).name if scene.path else scene_ref
+    # read as a form beside the scene names it (the written form, beside its target, names it by
+    # scene_ref); an inline scene (a variant not yet on disk) as it is
+    beside = Path(scene.path).name if scene.path and isinstance(scene_ref, str) else scene_ref
     data = {"format": 1, "scene": beside, "scales": {"velocity": {"mu": mv}, "acceleration": {"mu": ma}},
             "positions": [{"phi_deg": p, "values": {f"omega_{scene.driver.link}": 1.0}} for p in phis]}
     cf = check_from_dict(data, str(Path(scene.path or "scene.toml").with_suffix(".form.toml")))
