@@ -419,7 +419,7 @@ _SYMBOLS = ((r"\bp_a(?![A-Z_])", "π"), (r"\bp_v(?![A-Z_])", "p"), (r"\bomega_?(
             (r"(?<![A-Za-z])([FM])f(?=\d)", r"\1_тр"),
             (r"\brad/s", "рад/с"), (r"(?<![\w/])m/s", "м/с"), (r"\bmm\b", "мм"), (r"\bMPa\b", "МПа"), (r"\bN·m\b", "Н·м"),
             (r"(?<=\d )N\b", "Н"), (r"\bN\b(?= )", "Н"), (r"\binitial link\b", "начальное звено"),
-            (r"\bclass-III (\w+) group\b", r"группа III класса \1"), (r"(?<=, )deg\b", "°"),
+            (r"\bclass-III ([\w-]+) group\b", r"группа III класса \1"), (r"(?<=, )deg\b", "°"),
             (r"\b(RRR|RRP|RPR|PRP|RPP|PRR|PPR) group\b", r"группа \1"), (r"\bgroup\b", "группа"))
 
 
