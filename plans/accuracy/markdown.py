@@ -161,15 +161,19 @@ def goal_name(g: dict[str, Any], lang: str) -> str:
     return words(goal_said(g), lang)
 
 
-def goal_line(g: dict[str, Any], lang: str = "en") -> str:
-    """``goal: <what> ≤ 300 µs: 212 µs, met`` (a time) or ``≥ 20×: 31×, met`` (a speed-up),
-    in ``lang``."""
+def _want_got(g: dict[str, Any], lang: str) -> tuple[str, str]:
+    """A goal's bound and what was measured: a time (≤ 300 µs: 212 µs), a cost (≤ 5×: 4.27×)
+    or a speed-up (≥ 20×: 31×)."""
     if g["unit"] == "s":
-        want, got = f"≤ {fmt(g['limit'], 's', lang)}", fmt(g["value"], "s", lang)
-    elif g["unit"] == "× cost":
-        want, got = f"≤ {number(g['limit'], 'g', lang)}×", f"{number(g['value'], '.2f', lang)}×"
-    else:
-        want, got = f"≥ {number(g['limit'], 'g', lang)}×", f"{number(g['value'], '.1f', lang)}×"
+        return f"≤ {fmt(g['limit'], 's', lang)}", fmt(g["value"], "s", lang)
+    if g["unit"] == "× cost":
+        return f"≤ {number(g['limit'], 'g', lang)}×", f"{number(g['value'], '.2f', lang)}×"
+    return f"≥ {number(g['limit'], 'g', lang)}×", f"{number(g['value'], '.1f', lang)}×"
+
+
+def goal_line(g: dict[str, Any], lang: str = "en") -> str:
+    """``goal: <what> ≤ 300 µs: 212 µs, met`` in ``lang``."""
+    want, got = _want_got(g, lang)
     return say("bn_goal", lang, goal=goal_name(g, lang), want=want, got=got,
                state=say("bn_met" if g["met"] else "bn_not_met", lang))
 
@@ -182,12 +186,7 @@ def goals_section(goals: list[dict[str, Any]], lang: str = "en") -> list[str]:
     out = [say("br_goals", lang), "", *_head("bh_goals", "--- ---: ---: ---", lang)]
     for g in goals:
         met = say("bs_yes" if g["met"] else "bs_no", lang)
-        if g["unit"] == "s":
-            want, got = f"≤ {fmt(g['limit'], 's', lang)}", fmt(g["value"], "s", lang)
-        elif g["unit"] == "× cost":
-            want, got = f"≤ {number(g['limit'], 'g', lang)}×", f"{number(g['value'], '.2f', lang)}×"
-        else:
-            want, got = f"≥ {number(g['limit'], 'g', lang)}×", f"{number(g['value'], '.1f', lang)}×"
+        want, got = _want_got(g, lang)
         out.append(f"| {goal_name(g, lang)} | {want} | {got} | {met} |")
     out.append("")
     for g in goals:
