@@ -52,6 +52,7 @@ WORDS = {
                   "J": "Дж", "rad/s": "рад/с", "rad/s²": "рад/с²", "kg·m²": "кг·м²", "m": "м", "m/s": "м/с",
                   "m/s²": "м/с²", "m/s^2": "м/с²", "mm": "мм", "s": "с"},
         "labels": {"F_bal": "F_ур", "M_bal": "M_ур", "M_pr": "M_пр", "I_pr": "I_пр"},
+        "points": {"p_v": "p", "p_a": "π"},  # the poles as a Russian course names them
     },
 }
 
@@ -165,11 +166,17 @@ def _language(scene: Scene, language: str | None) -> str:
     return lang if lang in WORDS else "ru"
 
 
+#: The page's type for each of the sheets' fonts (``[sheet] font``, ``--font``): the GOST one
+#: first where it asks for it, the browser taking DejaVu Sans for a letter osifont lacks (ё, э).
+FAMILIES = {"dejavu": '"DejaVu Sans", Arial, sans-serif', "gost": 'osifont, "DejaVu Sans", Arial, sans-serif'}
+
+
 def page(scene: Scene | str | Path, *, language: str | None = None, frames: int = FRAMES,
-         phi_deg: float | None = None) -> str:
-    """The whole page as text."""
+         phi_deg: float | None = None, font: str | None = None) -> str:
+    """The whole page as text (its type ``font``, None: the scene's ``[sheet] font``)."""
     sc = scene if isinstance(scene, Scene) else load_scene(scene)
     lang = _language(sc, language)
+    family = FAMILIES[sc.sheet_for(language=lang, font=font).font]
     data = lesson(sc, phi_deg=phi_deg, frames=frames, language=lang)
     words = WORDS[lang]
     esc = {k: html.escape(v) for k, v in words.items() if isinstance(v, str)}
@@ -179,7 +186,8 @@ def page(scene: Scene | str | Path, *, language: str | None = None, frames: int 
             f'<meta name="viewport" content="width=device-width, initial-scale=1">'
             f'<meta http-equiv="Content-Security-Policy" content="default-src \'none\'; '
             f'style-src \'unsafe-inline\'; script-src \'unsafe-inline\'; img-src data:">'
-            f"<title>{html.escape(data['title'])}</title><style>{_CSS}</style></head>\n<body>\n{body}\n"
+            f"<title>{html.escape(data['title'])}</title><style>{_CSS.replace(FAMILIES['dejavu'], family)}</style>"
+            f"</head>\n<body>\n{body}\n"
             f'<script id="lesson" type="application/json">{_script_json(data)}</script>\n'
             f'<script id="words" type="application/json">{_script_json(words)}</script>\n'
             f"<script>{script}</script>\n</body></html>\n")
@@ -240,11 +248,14 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--language", choices=tuple(WORDS), help="overrides [sheet] language")
     p.add_argument("--frames", type=int, default=FRAMES, help=f"positions per turn in the cycle (default {FRAMES})")
     p.add_argument("--phi", type=float, metavar="DEG", help="the position built step by step (default the first)")
+    p.add_argument("--font", choices=tuple(FAMILIES),
+                   help="overrides [sheet] font: gost is osifont, a GOST 2.304 type B font (apt-get install fonts-osifont)")
     p.set_defaults(func=_command)
 
 
 def _command(args: argparse.Namespace) -> int:
-    text = page(args.scene, language=args.language, frames=args.frames, phi_deg=args.phi)
+    text = page(args.scene, language=args.language, frames=args.frames, phi_deg=args.phi,
+                font=getattr(args, "font", None))
     atomic_write(args.output, text)
     print(args.output)
     return 0

@@ -20,6 +20,7 @@
   const fixed = (x, digits) => x.toFixed(digits).replace(".", T.decimal);
   const lab = (s) => String(s).replace(/\b[FMI]_(bal|pr)\b/g, (m) => T.labels[m] || m).replace(/Phi/g, "Φ");
   const unit = (u) => T.units[u] || u;
+  const pt = (nm) => (T.points || {})[nm] || nm;  // a plan's pole as the page's language names it (p, π)
   function fit(svg, boxes, pad) {
     let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
     for (const [x, y] of boxes) { x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, -y); y1 = Math.max(y1, -y); }
@@ -163,7 +164,7 @@
     }
     for (const g of spots(named, 1.5 * u)) {
       el(svg, "text", {x: f3(g.p[0] + 1.8 * u), y: f3(-g.p[1] + 4.2 * u), "font-size": f3(4 * u),
-        class: "label" + (g.hi ? " hi" : "")}, g.names.join(", "));
+        class: "label" + (g.hi ? " hi" : "")}, g.names.map(pt).join(", "));
     }
     if (mistake) {
       for (const nm in mistake.moved) {
@@ -290,7 +291,7 @@
         g.names.join(", "));
     }
     el(svg, "circle", {cx: "0", cy: "0", r: f3(1.2 * u), class: "pt"});
-    el(svg, "text", {x: f3(-6 * u), y: f3(5 * u), "font-size": f3(4.5 * u), class: "label"}, pole);
+    el(svg, "text", {x: f3(-6 * u), y: f3(5 * u), "font-size": f3(4.5 * u), class: "label"}, pt(pole));
     scaleBar(svg, box, mu, u, un);
   }
   function interp(xs, ys, x) {

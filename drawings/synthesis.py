@@ -313,7 +313,7 @@ def _rows(ds: DesignSolution, lang: str) -> list[tuple[str, str, str, str]]:
         rows.append(("ϑmax" if not ru else "ϑmax (угол давления)", given, "—", deg(math.pi / 2 - g)))
     given = deg(t.gamma_min) if t.gamma_min is not None else "—"
     rows.append(("γmin", given, "—", deg(g)))
-    rows.append(("Grashof / полный оборот" if ru else "full turn, one branch",
+    rows.append(("условие Грасгофа / полный оборот" if ru else "full turn, one branch",
                  "—", "—", "да" if ru else "yes"))
     if d.model == "three_positions":
         assert t.positions is not None

@@ -14,7 +14,6 @@ import html
 import json
 import math
 import sys
-import tempfile
 from pathlib import Path
 from typing import Any
 
@@ -72,13 +71,15 @@ def register(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--jobs", type=int, default=1, metavar="N", help="variants made in N processes (default 1)")
     p.add_argument("--language", choices=("ru", "en"), default="ru",
                    help="of the handouts and the reference sheets (default ru)")
+    p.add_argument("--font", choices=("dejavu", "gost"),
+                   help="overrides [sheet] font: gost is osifont, a GOST 2.304 type B font (apt-get install fonts-osifont)")
     p.add_argument("--no-sheets", action="store_true", help="no reference sheets (files, keys, forms only)")
     p.add_argument("--quiet", action="store_true", help="no progress lines")
     p.set_defaults(func=run)
     return p
 
 
-def make(row: Any, sheets: bool, language: str | None = None) -> tuple[Any, dict[str, bytes]]:
+def make(row: Any, sheets: bool, language: str | None = None, font: str | None = None) -> tuple[Any, dict[str, bytes]]:
     """One variant: built (:func:`plans.group.build.build`) and its reference sheets drawn,
     nothing written: (built, {path in its folder: bytes})."""
     from plans.group.build import build
@@ -90,36 +91,38 @@ def make(row: Any, sheets: bool, language: str | None = None) -> tuple[Any, dict
     files["key.json"] = (json.dumps(got.key, ensure_ascii=False, indent=1, sort_keys=False) + "\n").encode("utf-8")
     if sheets and got.kind:
         try:
-            files.update(reference(got, language))
+            files.update(reference(got, language, font))
         except PlansError as exc:
             got.error = Said("dv_reference_sheets", error=one_line(exc)).text(run_language())
             return got, {}
     return got, files
 
 
-def reference(got: Any, language: str | None = None) -> dict[str, bytes]:
-    """The variant's sheets as PDF, drawn from its file laid in a scratch folder (in
-    ``language``; None: the file's own)."""
+def reference(got: Any, language: str | None = None, font: str | None = None) -> dict[str, bytes]:
+    """The variant's sheets as PDF, drawn from its file read in memory under the path it
+    will have in the variant's folder (a warning names that file, the same in every run;
+    in ``language``, None: the file's own; in ``font``, None: the file's own)."""
     import importlib
 
     from drawings.paper.export import render
-    from plans.kinds import KINDS
+    from plans.io import loads_toml
+    from plans.kinds import KINDS, READERS
 
     names = [(got.key["file"], got.kind)]
     if "scene" in got.key:  # a synthesis: its construction and its scene's sheets
         names.append((got.key["scene"], "linkage"))
     out: dict[str, bytes] = {}
-    with tempfile.TemporaryDirectory(prefix="plans-variant-") as tmp:
-        for name, kind in names:
-            src = Path(tmp) / name
-            src.write_text(got.files[name], encoding="utf-8")  # guard: a temporary folder
-            drawing = importlib.import_module(KINDS[kind][1]).draw(str(src), language=language)
-            rendered = render(drawing.sheets, Path("reference"), Path(name).stem, ["pdf"])
-            out.update({str(p): data for p, data in rendered.items()})
+    for name, kind in names:
+        path = str(got.row.template.parent / got.row.variant / name)
+        module, function = READERS[kind].split(":")
+        source = getattr(importlib.import_module(module), function)(loads_toml(got.files[name], path), path)
+        drawing = importlib.import_module(KINDS[kind][1]).draw(source, language=language, font=font)
+        rendered = render(drawing.sheets, Path("reference"), Path(name).stem, ["pdf"])
+        out.update({str(p): data for p, data in rendered.items()})
     return out
 
 
-def _make_star(args: tuple[Any, bool, str | None]) -> tuple[Any, dict[str, bytes]]:
+def _make_star(args: tuple[Any, bool, str | None, str | None]) -> tuple[Any, dict[str, bytes]]:
     return make(*args)
 
 
@@ -139,7 +142,12 @@ def run(args: argparse.Namespace) -> int:
         raise InputError(Said("gg_jobs_jobs", jobs=args.jobs), file=str(table), field="--jobs")
     rows = read_table(table)
     roster = read_roster(args.students, {r.variant for r in rows}) if args.students else []
-    work = [(r, not args.no_sheets, args.language) for r in rows]
+    font = getattr(args, "font", None)
+    if font:
+        from drawings.paper.fonts import require
+
+        require(font, str(table), "--font")  # before any variant is made
+    work = [(r, not args.no_sheets, args.language, font) for r in rows]
     if args.jobs > 1 and len(rows) > 1:
         from concurrent.futures import ProcessPoolExecutor
 
@@ -176,7 +184,7 @@ def run(args: argparse.Namespace) -> int:
             if got is None:
                 continue
             stem = _stem(st)
-            pages[hand / f"{stem}.pdf"] = handout_pdf(st, got, args.language)
+            pages[hand / f"{stem}.pdf"] = handout_pdf(st, got, args.language, font or "dejavu")
         write_all(pages)
         if not args.quiet:
             print(say("vr_handouts", run_language(), folder=hand, n=len(pages)))
@@ -193,8 +201,11 @@ def _stem(st: dict[str, str]) -> str:
 # --------------------------------------------------------------------------- the handout
 
 
-def handout_svg(st: dict[str, str], got: Any, lang: str) -> str:
-    """One A4 page: who, which variant, the scheme (a linkage), the data row, what to hand in."""
+def handout_svg(st: dict[str, str], got: Any, lang: str, font: str = "dejavu") -> str:
+    """One A4 page: who, which variant, the scheme (a linkage), the data row, what to hand in;
+    its words in ``font`` ("gost": osifont, DejaVu Sans where osifont lacks a letter)."""
+    from drawings.paper.fonts import FONT_FAMILY, pieces
+
     t = _TEXT[lang]
     w, h = 210.0, 297.0
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{w}mm" height="{h}mm" viewBox="0 0 {w:g} {h:g}" '
@@ -204,7 +215,9 @@ def handout_svg(st: dict[str, str], got: Any, lang: str) -> str:
 
     def text(x: float, y: float, s: str, size: float = 4.0, bold: bool = False) -> None:
         weight = ' font-weight="bold"' if bold else ""
-        out.append(f'<text x="{x:.2f}" y="{y:.2f}" font-size="{size:g}"{weight}>{html.escape(s)}</text>')
+        runs = "".join(f'<tspan font-family="{fam or FONT_FAMILY}">{html.escape(p)}</tspan>' if font != "dejavu"
+                       else html.escape(p) for p, fam in pieces(s, font))
+        out.append(f'<text x="{x:.2f}" y="{y:.2f}" font-size="{size:g}"{weight}>{runs}</text>')
 
     text(18, 24, t["task"], 6.0, True)
     text(18, 34, f"{t['student']}: {st['name']}", 4.5)
@@ -306,7 +319,7 @@ def _sketch(got: Any) -> str:
             'stroke="black" stroke-width="0.3" stroke-dasharray="1,1"/>')
 
 
-def handout_pdf(st: dict[str, str], got: Any, lang: str) -> bytes:
+def handout_pdf(st: dict[str, str], got: Any, lang: str, font: str = "dejavu") -> bytes:
     from drawings.paper.export import pdf_bytes
 
-    return pdf_bytes(handout_svg(st, got, lang).encode("utf-8"), title=f"{st['name']}, {got.row.variant}")
+    return pdf_bytes(handout_svg(st, got, lang, font).encode("utf-8"), title=f"{st['name']}, {got.row.variant}")

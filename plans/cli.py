@@ -182,24 +182,25 @@ def _solve(args: argparse.Namespace) -> int:
     refuse_input(args.json, args.scene)
     scene = load_scene(args.scene)
     sol = solve_scene(scene)
+    from plans.language import choose
+
+    lang = choose(getattr(args, "language", None), scene.raw)
     if getattr(args, "csv", None):
         from plans.cycle.results import cycle_csv
 
-        text = cycle_csv(sol.cycle) if sol.cycle is not None else ""
+        text = cycle_csv(sol.cycle, lang) if sol.cycle is not None else ""
         if args.csv == "-":
             sys.stdout.write(text)
             return 0
         atomic_write(args.csv, text)
     if args.json == "-":
-        write_json(sol, sys.stdout.write)
+        write_json(sol, sys.stdout.write, lang)
         return 0
     if args.json:
         with atomic_file(args.json) as fh:
-            write_json(sol, lambda text: fh.write(text.encode("utf-8")))
+            write_json(sol, lambda text: fh.write(text.encode("utf-8")), lang)
     if not args.quiet:
-        from plans.language import choose
-
-        print(table(sol, protocol=args.protocol, lang=choose(getattr(args, "language", None), scene.raw)))
+        print(table(sol, protocol=args.protocol, lang=lang))
     return 0
 
 
@@ -210,7 +211,7 @@ def run(args: argparse.Namespace) -> int:
     are renamed into place only when it has returned, none over an input."""
     from plans.guard import Run
 
-    set_run(getattr(args, "language", None), _input_of(args))
+    outer = set_run(getattr(args, "language", None), _input_of(args))
     try:
         with Run():
             return int(args.func(args))
@@ -228,7 +229,7 @@ def run(args: argparse.Namespace) -> int:
     except KeyboardInterrupt:
         return 130
     finally:
-        set_run(None, None)  # a library call after this run follows its own scene's language
+        set_run(*outer)  # the caller's run again (none: a library call follows its own scene's language)
 
 
 def _input_of(args: argparse.Namespace) -> str | None:
@@ -267,14 +268,16 @@ def main(argv: Sequence[str] | None = None,
     """Parse and run one command; ``parser`` builds the parser (the renderer's CLI passes its
     own, with ``draw`` added)."""
     argv = sys.argv[1:] if argv is None else list(argv)
-    set_run(_asked_language(argv), next((a for a in argv if a.endswith(".toml")), None))
+    outer = set_run(_asked_language(argv), next((a for a in argv if a.endswith(".toml")), None))
     try:
         args = (parser or build_parser)(argv).parse_args(argv)
     except KeyboardInterrupt:
+        set_run(*outer)
         return 130
     except SystemExit:  # --help, or a usage error said: a library call after it follows its own scene
-        set_run(None, None)
+        set_run(*outer)
         raise
+    set_run(*outer)
     return run(args)
 
 

@@ -19,10 +19,13 @@ from typing import Any
 _RUN: dict[str, str | None] = {"asked": None, "path": None, "lang": None}
 
 
-def set_run(asked: str | None, path: str | None) -> None:
-    """The run's ``--language`` and input file (:func:`run_language`)."""
+def set_run(asked: str | None, path: str | None) -> tuple[str | None, str | None]:
+    """The run's ``--language`` and input file (:func:`run_language`); gives the ones before,
+    for a command run inside another (``plans bench`` times ``plans check``) to hand back."""
+    before = (_RUN["asked"], _RUN["path"])
     _RUN.update(asked=asked, path=path, lang=None)
     _WARNED.clear()
+    return before
 
 
 #: The warnings this run has written (a scene read twice warns once).
@@ -218,6 +221,8 @@ class ConstructionError(PlansError):
         parts = []
         if self.group:
             group = self.group.replace("class III ", Said("x_class_iii").text(lang), 1)
+            if group == "loop equations":  # the second solver's "group": every loop at once
+                group = Said("nw_loop_equations").text(lang)
             parts.append(Said("x_at_group", group=group).text(lang))
         if self.point:
             parts.append(Said("x_at_point", point=self.point).text(lang))

@@ -102,7 +102,7 @@ UNITS_RU: dict[str, str] = {
     "N": "Н", "N m": "Н·м", "N·m": "Н·м", "N*m": "Н·м", "mm": "мм", "cm": "см", "m": "м", "J": "Дж", "W": "Вт",
     "kg": "кг", "kg m^2": "кг·м²", "kg·m^2": "кг·м²", "kg*m^2": "кг·м²", "kg·m²": "кг·м²", "%": "%",
     "unit": "ед.", "s": "с", "rpm": "об/мин", "mm/m": "мм/м", "mm/(m/s)": "мм/(м/с)", "mm/(m/s²)": "мм/(м/с²)",
-    "mm/(m/s^2)": "мм/(м/с²)", "mm/N": "мм/Н", "mm/unit": "мм/ед.",
+    "mm/(m/s^2)": "мм/(м/с²)", "mm/N": "мм/Н", "mm/unit": "мм/ед.", "ms": "мс", "µs": "мкс", "ns": "нс",
 }
 
 
@@ -246,6 +246,10 @@ TERMS: dict[str, tuple[str, str]] = {
                         "  {of} плоскость z = {z:.6g} м: m·r = {mr:.6g} кг·м ({m:.6g} кг на {r:.6g} м), "
                         "под углом {a:.4g}° к кривошипу 1"),
     "b_note": ("note: {t}", "примечание: {t}"),
+    "b_note_one_plane": ("{order}: one counterweight leaves a moment of {m:.6g} N*m; give two planes",  # order: b_<kind>
+                         "{order}: один противовес оставляет момент {m:.6g} Н·м; задайте две плоскости"),
+    "b_json_angles": ("degrees from the vertical (crank 1 at top dead centre) in the direction of rotation",
+                      "градусы от вертикали (кривошип 1 в верхней мёртвой точке) по направлению вращения"),
     "b_note_against": (
         "first-order reciprocating force or moment has a part turning against the crank: a counterweight on "
         "the crankshaft cannot take it (it only moves it to the other plane); balancing shafts can",
@@ -286,6 +290,12 @@ TERMS: dict[str, tuple[str, str]] = {
     "k_against": ("against", "против вращения кривошипа"),
     "y_plans": ("Plans over the cycle", "Планы за цикл"),
     "y_positions": ("Positions over the cycle", "Положения за цикл"),
+    "t_json_angles": ("rad, counter-clockwise positive; phi_deg in degrees",
+                      "рад, положительные против часовой стрелки; phi_deg в градусах"),
+    "y_csv_table": ("table", "таблица"),  # the headings of plans solve --csv
+    "y_csv_quantity": ("quantity", "величина"),
+    "y_csv_label": ("label", "обозначение"),
+    "y_csv_unit": ("unit", "ед."),
     # ---- the cycle: kinematic diagrams, machine dynamics, the flywheel (plans solve)
     "y_analogues": ("Velocity analogues (plans for ω1 = 1, μ = {mu:.4g} mm/m)",
                     "Аналоги скоростей (планы при ω1 = 1, μ = {mu:.4g} мм/м)"),
@@ -407,8 +417,9 @@ TERMS: dict[str, tuple[str, str]] = {
 _SYMBOLS = ((r"\bp_a(?![A-Z_])", "π"), (r"\bp_v(?![A-Z_])", "p"), (r"\bomega_?(?=\w)", "ω"), (r"\beps_?(?=\w)", "ε"),
             (r"(?<![A-Za-z])Phi(?=\w)", "Φ"), (r"\bmu\b", "μ"), (r"\^2\b", "²"), (r"(?<![A-Za-z])([FM])_bal\b", r"\1_ур"),
             (r"(?<![A-Za-z])([FM])f(?=\d)", r"\1_тр"),
-            (r"\brad/s", "рад/с"), (r"(?<![\w/])m/s", "м/с"), (r"\bmm\b", "мм"), (r"\bN·m\b", "Н·м"),
+            (r"\brad/s", "рад/с"), (r"(?<![\w/])m/s", "м/с"), (r"\bmm\b", "мм"), (r"\bMPa\b", "МПа"), (r"\bN·m\b", "Н·м"),
             (r"(?<=\d )N\b", "Н"), (r"\bN\b(?= )", "Н"), (r"\binitial link\b", "начальное звено"),
+            (r"\bclass-III ([\w-]+) group\b", r"группа III класса \1"), (r"(?<=, )deg\b", "°"),
             (r"\b(RRR|RRP|RPR|PRP|RPP|PRR|PPR) group\b", r"группа \1"), (r"\bgroup\b", "группа"))
 
 

@@ -194,6 +194,7 @@ CONSTRUCTION_ERRORS: dict[str, tuple[str, str]] = {
         "группа здесь сходит со своей ветви (оси поводков сходятся около одной точки)"),
     "nw_loop_equations_have": ("the loop equations have no solution near the previous position (largest residual {v:.3g} at joint {jn})",
         "уравнения замкнутости не имеют решения вблизи предыдущего положения (наибольшая невязка {v:.3g} в паре {jn})"),
+    "nw_loop_equations": ("loop equations", "уравнения замкнутости"),  # Newton's "group": all the loops at once
     "nw_jacobian_loop_equations": ("the Jacobian of the loop equations is singular (cond = {v:.3g}): the mechanism locks here",
         "якобиан уравнений замкнутости вырожден (число обусловленности {v:.3g}): механизм здесь заклинивается"),
     "nw_jacobian_loop_equations2": ("the Jacobian of the loop equations is singular: the mechanism locks here",

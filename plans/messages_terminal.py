@@ -29,12 +29,29 @@ TERMINAL: dict[str, tuple[str, str]] = {
     "gb_gears": ("gears", "зубчатые передачи"),
     "gb_cam": ("cam", "кулачок"),
     "gb_cycle": ("cycle", "динамика"),
+    "gb_engine": ("engine", "уравновешивание"),
+    "gb_synthesis": ("synthesis", "синтез"),
+    "gb_check": ("check", "проверка"),
     "gb_at": ("{what} at {phis}°", "{what} при {phis}°"),
     # ---- the workbench page: the balancing load's rows
     "wb_bal_moment": ("{sym}, its moment about the pivot", "{sym}, её момент относительно опоры"),
     "wb_bal_exact": ("{sym}: lever against the exact value, %", "{sym}: рычаг относительно точного значения, %"),
     "wb_bal_drawn": ("{sym}: lever against kinetostatics on the drawing, %",
                      "{sym}: рычаг относительно кинетостатики по чертежу, %"),
+    # ---- plans check --template: the blank check file's comments
+    "cf_head": ("# A blank check file: type in what the student wrote; leave \"\" where nothing is written.\n"
+                "# measured: segments measured on the student's plans, mm; values: SI units\n"
+                "# (lengths with their unit: \"65 mm\").  Check it with: plans check THIS_FILE",
+                "# Пустой файл проверки: впишите то, что записал студент; оставьте \"\", где ничего не записано.\n"
+                "# measured — отрезки, измеренные на планах студента, мм; values — величины в СИ\n"
+                "# (длины с единицей: \"65 mm\").  Проверка: plans check ЭТОТ_ФАЙЛ"),
+    "cf_scales": ("# the student's scales: {{ mu = mm per unit }} or {{ K = unit per mm }}",
+                  "# масштабы студента: {{ mu = мм на единицу }} или {{ K = единиц на мм }}"),
+    # ---- plans design: the heading of the scene it writes
+    "d_scene_head": ("# Designed by plans design from {name} ({mechanism}): the lengths are the design's,\n"
+                     "# the crank speed, positions, masses and loads the task's.\n",
+                     "# Синтезировано командой plans design по {name} ({mechanism}): длины — найденные синтезом,\n"
+                     "# частота вращения кривошипа, положения, массы и нагрузки — из задания.\n"),
     # ---- plans bench (its lines on the terminal; the goals' names are the bench's own)
     "bn_goal": ("goal: {goal} {want}: {got}, {state}", "цель: {goal} {want}: {got}, {state}"),
     "bn_met": ("met", "достигнута"),

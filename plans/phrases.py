@@ -282,12 +282,14 @@ class Phrase:
 
 
 def _terminal() -> None:
-    """The renderer's and the group's terminal lines (:mod:`plans.messages_terminal`), read
-    the first time one is written."""
+    """The renderer's, the group's and the bench's terminal lines (:mod:`plans.messages_terminal`,
+    :mod:`plans.messages_bench`), read the first time one is written."""
+    from plans.messages_bench import BENCH
     from plans.messages_terminal import TERMINAL
 
     TERMS.update(TERMINAL)
     PHRASES.update(TERMINAL)
+    PHRASES.update(BENCH)
 
 
 def phrase(key: str, **args: Any) -> Phrase:

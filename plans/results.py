@@ -45,12 +45,13 @@ def _xy(z: complex) -> list[float]:
     return [float(z.real), float(z.imag)]
 
 
-def to_json(sol: Solution, steps: bool = True) -> dict[str, Any]:
+def to_json(sol: Solution, steps: bool = True, lang: str = "en") -> dict[str, Any]:
     """The whole result as one dict (``plans solve --json``); :func:`write_json` writes the
     same text position by position.  ``steps=False`` leaves out the construction protocol's
-    text (most of the time taken), for a page that draws the plans and reads no protocol."""
-    out = head_json(sol)
-    out["positions"] = list(_positions(sol, steps))
+    text (most of the time taken), for a page that draws the plans and reads no protocol.
+    Its keys are the program's; its sentences (the steps, the tables' titles) in ``lang``."""
+    out = head_json(sol, lang)
+    out["positions"] = list(_positions(sol, steps, lang))
     return out
 
 
@@ -58,13 +59,15 @@ def to_json(sol: Solution, steps: bool = True) -> dict[str, Any]:
 _POSITIONS = "\x00positions"
 
 
-def head_json(sol: Solution) -> dict[str, Any]:
+def head_json(sol: Solution, lang: str = "en") -> dict[str, Any]:
     scene = sol.scene
+    from plans.language import TERMS
+
     out: dict[str, Any] = {
-        "title": scene.title,
+        "title": scene.title if lang == "en" else scene.title_in(lang),
         "scene": scene.path,
         "units": {"length": "m", "velocity": "m/s", "acceleration": "m/s^2", "force": "N",
-                  "plan": "mm", "angles": "rad, counter-clockwise positive; phi_deg in degrees"},
+                  "plan": "mm", "angles": TERMS["t_json_angles"][lang == "ru"]},
         "fij": scene.fij,
         "outputs": sorted(scene.outputs),
         "structure": sol.structure.to_json(),
@@ -75,23 +78,23 @@ def head_json(sol: Solution) -> dict[str, Any]:
     if sol.cycle is not None:
         from plans.cycle.results import cycle_json
 
-        out.update(cycle_json(sol.cycle))
+        out.update(cycle_json(sol.cycle, lang))
     if sol.efficiency is not None:
         out["efficiency"] = sol.efficiency
     return out
 
 
-def _positions(sol: Solution, steps: bool = True) -> Iterator[dict[str, Any]]:
+def _positions(sol: Solution, steps: bool = True, lang: str = "en") -> Iterator[dict[str, Any]]:
     forces: list[dict] | None = None
     if sol.forces is not None:
         from plans.forces.lever import force_json
 
         forces = force_json(sol.forces[1])
     for k in range(sol.kinematics.n):
-        yield position_json(sol, k, None if forces is None else forces[k], steps)
+        yield position_json(sol, k, None if forces is None else forces[k], steps, lang)
 
 
-def position_json(sol: Solution, k: int, forces: dict | None, steps: bool = True) -> dict[str, Any]:
+def position_json(sol: Solution, k: int, forces: dict | None, steps: bool = True, lang: str = "en") -> dict[str, Any]:
     kin, scene = sol.kinematics, sol.scene
     pos: dict[str, Any] = {"phi_deg": float(kin.phi_deg[k]), "points": {}, "links": {}}
     for nm in kin.point_names():
@@ -135,11 +138,11 @@ def position_json(sol: Solution, k: int, forces: dict | None, steps: bool = True
 
         plans = (sol.plans[k].velocity, sol.plans[k].acceleration) if sol.plans else ()
         drawn = force_steps(sol.forces[0], sol.forces[1], k) if sol.forces is not None else ()
-        pos["steps"] = steps_json(plans, drawn)
+        pos["steps"] = steps_json(plans, drawn, lang)
     return pos
 
 
-def write_json(sol: Solution, write: Callable[[str], object]) -> None:
+def write_json(sol: Solution, write: Callable[[str], object], lang: str = "en") -> None:
     """Write ``dumps(to_json(sol))`` in pieces, one position at a time: the text is the same
     to the byte, and memory holds one position's JSON, not the whole run's (3600 positions
     of a V-engine are over 100 MB of text)."""
@@ -147,10 +150,10 @@ def write_json(sol: Solution, write: Callable[[str], object]) -> None:
 
     from plans.io import dumps
 
-    before, after = dumps(head_json(sol)).split(json.dumps(_POSITIONS))
+    before, after = dumps(head_json(sol, lang)).split(json.dumps(_POSITIONS))
     write(before)
     opening = "[\n    "
-    for pos in _positions(sol):
+    for pos in _positions(sol, lang=lang):
         write(opening + dumps(pos)[:-1].replace("\n", "\n    "))  # nested two levels deep
         opening = ",\n    "
     write("[]" if opening == "[\n    " else "\n  ]")

@@ -16,7 +16,8 @@ SAMPLES = Path(__file__).resolve().parent.parent / "samples"
 #: Scenes whose output is still printed in English in part (none: every sample is scanned).
 _ENGLISH_PARTS: set[str] = set()
 
-_SCENES = sorted([*SAMPLES.glob("*.toml"), *SAMPLES.glob("projects/*.toml")])
+_SCENES = sorted([*SAMPLES.glob("*.toml"), *SAMPLES.glob("projects/*.toml"), *SAMPLES.glob("class3/*.toml"),
+                  *SAMPLES.glob("centres/*.toml"), *SAMPLES.glob("flywheel/*.toml")])
 _RUNS = ([("solve", p, ["--protocol"]) for p in _SCENES]
          + [("gears", p, []) for p in sorted(SAMPLES.glob("gears/*.toml"))]
          + [("cam", p, []) for p in sorted(SAMPLES.glob("cams/*.toml"))]
@@ -73,6 +74,7 @@ def _run(capsys, command: str, path: Path, extra: list[str], lang: str) -> str:
 def test_russian_output_has_no_latin_word(capsys, command, path, extra):
     text = _run(capsys, command, path, extra, "ru")
     assert text.strip()
+    text = re.sub(r"(?<== )[a-z]{2}(?=[.,;]?\s)", " ", text)  # a polygon's segment found: "F21^n = no."
     assert not _latin_words(text), (command, path.name, sorted(_latin_words(text))[:20])
     assert not re.search(r"\d\.\d", text), "a decimal point in Russian"
 

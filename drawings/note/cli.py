@@ -23,6 +23,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--format", choices=("docx", "pdf"), default=None,
                    help="docx (default) or pdf (through LibreOffice: soffice --headless)")
     p.add_argument("--dpi", type=float, default=200.0, help="the figures' resolution (default 200)")
+    p.add_argument("--font", choices=("dejavu", "gost"),
+                   help="overrides [sheet] font: gost is osifont, a GOST 2.304 type B font (apt-get install fonts-osifont)")
     p.set_defaults(func=run)
 
 
@@ -45,7 +47,7 @@ def run(args: argparse.Namespace) -> int:
         raise InputError(Said("nc_output_folder_file", output=args.output), file=args.files[0],
                          field="--output")
     lang = args.language or _language(args.files)
-    data = note_bytes(args.files, lang, args.dpi)
+    data = note_bytes(args.files, lang, args.dpi, getattr(args, "font", None))
     if fmt == "pdf":
         data = to_pdf(data)
     atomic_write(args.output, data)
@@ -53,8 +55,9 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def note_bytes(files: list[str], lang: str = "ru", dpi: float = 200.0) -> bytes:
-    """The note's DOCX bytes: the files read and solved, the content built, the figures drawn."""
+def note_bytes(files: list[str], lang: str = "ru", dpi: float = 200.0, font: str | None = None) -> bytes:
+    """The note's DOCX bytes: the files read and solved, the content built, the figures drawn
+    (their words in ``font``; None: each file's ``[sheet] font``)."""
     from plans.note.build import build
     from plans.note.source import read
 
@@ -62,7 +65,7 @@ def note_bytes(files: list[str], lang: str = "ru", dpi: float = 200.0) -> bytes:
     from .figures import Figures
 
     items = read(list(files))
-    return write_docx(build(items, lang), Figures(items, lang, dpi))
+    return write_docx(build(items, lang), Figures(items, lang, dpi, font))
 
 
 def soffice() -> str | None:

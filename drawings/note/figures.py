@@ -18,13 +18,16 @@ DPI = 200.0
 
 
 class Figures:
-    def __init__(self, items: list[Any], lang: str, dpi: float = DPI) -> None:
-        self.items, self.lang, self.dpi = items, lang, dpi
+    """The figures of the note's files in ``lang``, their words in ``font`` (None: each
+    file's ``[sheet] font``)."""
+
+    def __init__(self, items: list[Any], lang: str, dpi: float = DPI, font: str | None = None) -> None:
+        self.items, self.lang, self.dpi, self.font = items, lang, dpi, font
         self._panels: dict[tuple[int, str], list[Any]] = {}
 
     def panels(self, i: int, group: str) -> list[Any]:
         if (i, group) not in self._panels:
-            self._panels[(i, group)] = _build(self.items[i], group, self.lang)
+            self._panels[(i, group)] = _build(self.items[i], group, self.lang, self.font)
         return self._panels[(i, group)]
 
     def find(self, f: Figure) -> Any:
@@ -66,17 +69,25 @@ def _group(kind: str, panel: str) -> str:
 NOTE_PANELS = ("positions", "scheme", "velocity", "acceleration", "group", "crank", "lever")
 
 
-def _build(item: Any, group: str, lang: str) -> list[Any]:
+def _build(item: Any, group: str, lang: str, font: str | None = None) -> list[Any]:
     if item.kind == "gears":
         from drawings.gears import draw
 
-        return list(draw(item.path, language=lang).panels)
+        return list(draw(item.path, language=lang, font=font).panels)
     if item.kind == "cam":
         from drawings.cams import draw as draw_cam
 
-        return list(draw_cam(item.path, language=lang).panels)
+        return list(draw_cam(item.path, language=lang, font=font).panels)
     if item.kind != "linkage":
         return []
+    from drawings.paper.fonts import use
+
+    spec = item.solved.scene.sheet_for(language=lang, font=font)
+    with use(spec.font, item.path, "--font" if font else "sheet.font"):  # the panels laid out in it
+        return _linkage(item, group, lang, spec)
+
+
+def _linkage(item: Any, group: str, lang: str, spec: Any) -> list[Any]:
     cyc = item.solved.cycle
     if group == "diagrams":
         from drawings.cycle import diagram_panels
@@ -91,7 +102,6 @@ def _build(item: Any, group: str, lang: str) -> list[Any]:
 
     sol = item.solved
     scene = sol.scene
-    spec = scene.sheet_for(language=lang)
     phis = tuple(float(item.data["positions"][k]["phi_deg"]) for k in studied(item))
     spec = replace(spec, positions=phis, pins=(), panels=NOTE_PANELS)
     if sol.fit != fit_for(spec):  # drawn at the paper's fit, as plans draw draws them

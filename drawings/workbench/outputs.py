@@ -46,11 +46,12 @@ def design_json(text: str, name: str) -> bytes:
                       allow_nan=False, separators=(",", ":")).encode("utf-8")
 
 
-def demo_page(text: str, name: str) -> bytes:
+def demo_page(text: str, name: str, lang: str | None = None) -> bytes:
+    """``plans demo`` of the edited scene, in the workbench page's language (None: the scene's)."""
     from drawings.demo import page
     from plans.kinematics.placing import parse_scene
 
-    return page(parse_scene(text, name)).encode("utf-8")
+    return page(parse_scene(text, name), language=lang).encode("utf-8")
 
 
 def note_file(text: str, stem: str, lang: str) -> bytes:

@@ -257,9 +257,12 @@ class Workbench:
         text = await self.text(request)
         rel = request.query_params.get("path")
         where = self.path(rel, must_exist=False) if rel else self.root / "check.toml"
-        return Response(await run_in_threadpool(self._check, text, where), media_type="application/json")
+        lang, names = _language(request), request.query_params.get("names") == "1"
+        return Response(await run_in_threadpool(self._check, text, where, lang, names), media_type="application/json")
 
-    def _check(self, text: str, where: Path) -> bytes:
+    def _check(self, text: str, where: Path, lang: str = "en", names: bool = False) -> bytes:
+        """The report of ``plans check --json`` in the page's language; with ``names``, the
+        textbook's name of each quantity in it too (ω1 for omega_1 on a Russian page)."""
         from plans.check.checkfile import check_from_dict
         from plans.check.report import check
         from plans.io import loads_toml
@@ -272,7 +275,12 @@ class Workbench:
             if not target.is_relative_to(self.root):
                 raise Refused(403, Said("wr_refused_scene_scene", scene=scene), "scene")
         report = check(check_from_dict(data, str(where)))
-        return json.dumps(report.to_json(), ensure_ascii=False, allow_nan=False).encode("utf-8")
+        from plans.language import quantity_name
+
+        out = report.to_json(lang)
+        if names:
+            out["names"] = {it["quantity"]: quantity_name(it["quantity"], lang) for it in out.get("items", [])}
+        return json.dumps(out, ensure_ascii=False, allow_nan=False).encode("utf-8")
 
     async def template(self, request: Request) -> Response:
         """A blank check file for a scene of the folder (``plans check --template``), to sit
@@ -304,15 +312,14 @@ class Workbench:
         text = await self.text(request)
         name = self.source_name(request)
         stem = Path(name).stem.strip("<>") or "scene"
-        page = await run_in_threadpool(demo_page, text, name)
+        lang = request.query_params.get("language") and _language(request)
+        page = await run_in_threadpool(demo_page, text, name, lang)
         return Response(page, media_type="text/html; charset=utf-8",
                         headers={"Content-Disposition": f'attachment; filename="{stem}.html"'})
 
     async def note(self, request: Request) -> Response:
         """The explanatory note of the file (``plans note``), as DOCX."""
-        lang = request.query_params.get("language", "ru")
-        if lang not in ("ru", "en"):
-            raise Refused(400, Said("wr_language_lang_ru", lang=lang), "language")
+        lang = _language(request, "ru")
         text = await self.text(request)
         stem = Path(self.source_name(request)).stem.strip("<>") or "scene"
         data = await run_in_threadpool(note_file, text, stem, lang)
@@ -496,6 +503,14 @@ def _handler(fn: Any) -> Any:
             return _error(500, Said("wr_internal_error_name", name=type(exc).__name__, v=' '.join(str(exc).split())[:300]))
 
     return run
+
+
+def _language(request: Request, default: str = "en") -> str:
+    """The page's language a request names (``?language=ru``); a refusal for another."""
+    lang = request.query_params.get("language", default)
+    if lang not in ("ru", "en"):
+        raise Refused(400, Said("wr_language_lang_ru", lang=lang), "language")
+    return lang
 
 
 def hosts_for(host: str, port: int) -> set[str]:

@@ -44,7 +44,7 @@ import numpy as np
 
 from plans.accuracy import fuzz, newton, speed, vengine_goals
 from plans.accuracy.draftsman import DraftsmanModel, draftsman_errors
-from plans.accuracy.markdown import goal_line, markdown, summary_table
+from plans.accuracy.markdown import goal_line, goal_said, markdown, summary_table
 from plans.accuracy.oracles import (
     Case,
     Oracle,
@@ -64,6 +64,8 @@ from plans.errors import Said, run_language
 from plans.io import write_all
 from plans.kinematics import construction
 from plans.kinematics import exact as kinematics
+from plans.messages_bench import words
+from plans.phrases import Phrase, phrase
 from plans.scene.model import Scene
 
 if TYPE_CHECKING:  # mpmath is an optional dependency (the ``bench`` extra): imported where used
@@ -295,8 +297,10 @@ def run_bench(quick: bool = False, samples: Path | None = None, progress: Callab
     t_start = time.perf_counter()
     _log = progress or (lambda s: None)
 
-    def log(msg: str) -> None:
-        _log(f"[{time.perf_counter() - t_start:6.1f} s] {msg}")
+    lang = run_language()
+
+    def log(msg: Phrase | str) -> None:  # a line in the run's language (the bench's own words too)
+        _log(f"[{time.perf_counter() - t_start:6.1f} s] {words(msg, lang)}")
 
     samples = samples or Path(__file__).resolve().parents[2] / "samples"
     budget = budget if budget is not None else (0.02 if quick else 0.2)
@@ -305,20 +309,20 @@ def run_bench(quick: bool = False, samples: Path | None = None, progress: Callab
     cases = reference_cases()
     vcases = [c for c in sample_cases(samples) if c.name == "v_engine"] if quick else sample_cases(samples)
     for case in cases + vcases:
-        log(f"{case.name} ...")
+        log(phrase("bp_case", name=case.name))
         records += bench_case(case, sizes, budget, quick, log)
-    log("chain ...")
+    log(phrase("bp_chain"))
     records += bench_chain(tuple(chain_sizes or (QUICK_CHAIN_SIZES if quick else CHAIN_SIZES)), budget, log)
-    log("speed goals and peers ...")
+    log(phrase("bp_speed"))
     perf = speed.measure(samples, log, quick=quick)
     records += bench_peers(perf)
-    log("forces ...")
+    log(phrase("bp_forces"))
     records += bench_forces(cases + vcases, sizes, budget)
-    log("cycle ...")
+    log(phrase("bp_cycle"))
     from plans.accuracy import cycle_bench  # the cycle's dynamics and sheets
 
     records += cycle_bench.records(samples, quick)
-    log("draftsman Monte Carlo ...")
+    log(phrase("bp_draftsman"))
     mc = mc_samples or (400 if quick else 4000)
     model = model or DraftsmanModel()
     dm: dict[str, Any] = {"model": asdict(model), "samples": mc, "phi_deg": 45.0, "scenes": {}}
@@ -348,21 +352,21 @@ def run_bench(quick: bool = False, samples: Path | None = None, progress: Callab
                 draft_lines["hand drawing A1 (p95, shaper)"] = worst
         if sheets:
             dm["scenes"][case.name] = sheets
-    log("stability ...")
+    log(phrase("bp_stability"))
     stability = stability_records()
     stiff = stiff_load_records(samples)
-    log("performance goals ...")
+    log(phrase("bp_goals"))
     goals = vengine_goals.performance_goals(samples, budget)
     from plans.accuracy.synthesis_bench import synthesis_goals  # one design per model, proven
 
     goals += synthesis_goals(samples, budget)
-    warnings = [f"{r.method} on {r.scene} ({r.positions} positions, {r.param}): condition number "
-                f"{r.cond:.3g} > {newton.COND_WARN:.0e}" for r in records
+    # phrases: bench.json writes their English, the report and the terminal the run's language
+    warnings = [phrase("bw_cond", method=r.method, scene=r.scene, n=r.positions, param=r.param, cond=r.cond,
+                       limit=newton.COND_WARN) for r in records
                 if r.cond is not None and math.isfinite(r.cond) and r.cond > newton.COND_WARN]
-    warnings += [f"stability case '{row['case']}': Newton condition number {row['cond']:.3g}"
+    warnings += [phrase("bw_stability", case=row["case"], cond=row["cond"])
                  for row in stability if row.get("cond", 0) > newton.COND_WARN]
-    warnings += [f"performance goal not met: {g['goal']} (see the profile in bench.md)"
-                 for g in goals if not g["met"]]
+    warnings += [phrase("bw_goal", goal=goal_said(g)) for g in goals if not g["met"]]
     meta = {"quick": quick, "python": platform.python_version(), "numpy": np.__version__,
             "shapely": shapely.__version__, "machine": f"{platform.machine()}, {_cpus()} CPUs",
             "wall_s": time.perf_counter() - t_start, "sizes": list(sizes),
@@ -380,7 +384,7 @@ def write_outputs(result: dict[str, Any], out_dir: Path, json_path: str | None =
                   plots: Mapping[str, Callable[[dict[str, Any]], str]] | None = None) -> list[Path]:
     """Write bench.md, bench.json and each of ``plots`` (file name -> the result drawn; the
     renderer supplies bench.svg): all of them or none."""
-    files: dict[Path, str] = {out_dir / "bench.md": markdown(result)}
+    files: dict[Path, str] = {out_dir / "bench.md": markdown(result, run_language())}
     for name, draw in (plots or {}).items():
         files[out_dir / name] = draw(result)
     text = json.dumps(result, indent=1, sort_keys=True, default=_jsonable)
@@ -471,13 +475,13 @@ def run(args: argparse.Namespace) -> int:
     if not quiet:
         recs = [Record.from_json(r) for r in result["records"]]
         lang = run_language()
-        print(summary_table(recs))
+        print(summary_table(recs, lang))
         for g in result["goals"]:
             print(goal_line(g, lang))
         print(say("bn_speed", lang))
-        print("\n".join(speed.lines(result.get("performance", {}))))
+        print("\n".join(words(line, lang) for line in speed.lines(result.get("performance", {}), lang)))
         for w in result["warnings"]:
-            print(say("bn_warning", lang, w=w), file=err)
+            print(say("bn_warning", lang, w=words(w, lang)), file=err)
         print(say("bn_wrote", lang, paths=", ".join(str(p) for p in written)))
     return 0
 

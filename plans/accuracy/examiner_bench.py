@@ -22,6 +22,7 @@ from typing import Any
 import numpy as np
 
 from plans.accuracy.timing import Goal
+from plans.phrases import phrase
 
 NAMED_RATE = 0.95  # the planted cause named alone or first
 CLEAN_RATE = 0.99  # a clean submission gets no finding at all
@@ -128,8 +129,7 @@ def examiner_goals(samples: Path, quick: bool = False) -> list[Goal]:
     import shutil
 
     if not all((samples / f"{n}.toml").exists() for n in SCENES):
-        return [Goal("examiner", "the V-engine, shaper, six-bar and Whitworth samples are needed", float("nan"),
-                     None)]
+        return [Goal(phrase("bq_examiner_short"), phrase("bq_examiner_needed"), float("nan"), None)]
     # quick: two scenes, one submission per mistake (the rates are then indicative only)
     got = rates(samples, 1, 2, scenes=("shaper", "whitworth")) if quick else rates(samples, 6, 25)
     c = got["counts"]
@@ -137,19 +137,23 @@ def examiner_goals(samples: Path, quick: bool = False) -> list[Goal]:
     clean, ok = c.get("clean", 0), c.get("clean ok", 0)
     named_rate = named / shown if shown else 0.0
     clean_rate = ok / clean if clean else 0.0
-    kinds = ", ".join(f"{k} {a}/{b}" for k, (a, b) in got["by_kind"].items() if b)
-    where = "shaper and Whitworth" if quick else "4 scenes"
-    out = [Goal(f"planted mistake named first (≥ {NAMED_RATE:.0%}), {where}",
-                f"{named} of {shown} ({named_rate:.1%}; {c.get('invisible', 0)} slips moved nothing beyond the "
-                f"tolerance); {kinds}", NAMED_RATE / max(named_rate, 1e-9), named_rate >= NAMED_RATE),
-           Goal(f"clean submission with no finding (≥ {CLEAN_RATE:.0%})",
-                f"{ok} of {clean} ({clean_rate:.1%})", CLEAN_RATE / max(clean_rate, 1e-9), clean_rate >= CLEAN_RATE)]
+    from plans.language import CAUSES
+
+    rows = [(k, a, b) for k, (a, b) in got["by_kind"].items() if b]
+    kinds = phrase("bq_either", en=", ".join(f"{k} {a}/{b}" for k, a, b in rows),
+                   ru=", ".join(f"{CAUSES[k][1] if k in CAUSES else k} {a}/{b}" for k, a, b in rows))
+    where = phrase("bq_where_quick" if quick else "bq_where_full")
+    out = [Goal(phrase("bq_named", rate=NAMED_RATE, where=where),
+                phrase("bq_named_got", named=named, shown=shown, rate=named_rate, invisible=c.get("invisible", 0),
+                       kinds=kinds), NAMED_RATE / max(named_rate, 1e-9), named_rate >= NAMED_RATE),
+           Goal(phrase("bq_clean", rate=CLEAN_RATE), phrase("bq_clean_got", ok=ok, clean=clean, rate=clean_rate),
+                CLEAN_RATE / max(clean_rate, 1e-9), clean_rate >= CLEAN_RATE)]
     one, folder = _one_submission(samples)
     try:
-        out.append(Goal(f"one submission, two positions, diagnosed (≤ {ONE_SUBMISSION_S} s)", f"{one:.3f} s",
+        out.append(Goal(phrase("bq_one_submission", bound=ONE_SUBMISSION_S), phrase("bq_seconds3", t=one),
                         one / ONE_SUBMISSION_S, one <= ONE_SUBMISSION_S))
         many = _folder(samples, folder)
-        out.append(Goal(f"a folder of 30 submissions checked (≤ {FOLDER_S:g} s)", f"{many:.2f} s", many / FOLDER_S,
+        out.append(Goal(phrase("bq_folder", bound=FOLDER_S), phrase("bq_seconds2", t=many), many / FOLDER_S,
                         many <= FOLDER_S))
     finally:
         shutil.rmtree(folder, ignore_errors=True)

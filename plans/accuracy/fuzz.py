@@ -383,11 +383,16 @@ class Summary:
 
 def fuzz(n: int, seed: int = 0, draw_every: int = 50, keep: Path | None = None,
          progress: Callable[[str], None] | None = None, samples: Sequence[Sample] | None = None) -> Summary:
-    """Run ``n`` fuzzed cases over every sample; distinct failures are kept in ``keep``."""
+    """Run ``n`` fuzzed cases over every sample; distinct failures are kept in ``keep``; the
+    progress lines in the run's language."""
+    from plans.errors import run_language
+    from plans.phrases import say
+
+    lang = run_language()
     rng = random.Random(seed)
     pool = list(samples) if samples is not None else load_samples()
     if not pool:
-        raise SystemExit("plans bench --fuzz: no samples to fuzz")
+        raise SystemExit(say("bf_no_samples", lang))
     # a check file costs ten linkage cases: fuzzed a third as often, so the run covers more
     by_kind: dict[str, list[Sample]] = {}
     for s in pool:
@@ -425,20 +430,23 @@ def fuzz(n: int, seed: int = 0, draw_every: int = 50, keep: Path | None = None,
                         (keep / name).write_bytes(raw)
                         (keep / (name + ".txt")).write_text(f"{sample.rel}\n{res.why}\n", encoding="utf-8")
                     if progress:
-                        progress(f"case {i}: {sample.rel}: {res.why}")
+                        progress(say("bf_case", lang, i=i, sample=sample.rel, why=res.why))
             if progress and (i + 1) % 1000 == 0:
-                progress(f"{i + 1} cases, {summary.accepted} accepted, {summary.refused} refused, "
-                         f"{len(summary.failures)} distinct failures, {time.perf_counter() - t0:.0f} s")
+                progress(say("bf_progress", lang, n=i + 1, accepted=summary.accepted, refused=summary.refused,
+                             failures=len(summary.failures), t=time.perf_counter() - t0))
     return summary
 
 
-def report(summary: Summary, seed: int) -> str:
-    lines = [f"fuzz: {summary.cases} cases (seed {seed}): {summary.accepted} accepted, {summary.refused} refused "
-             f"in one line, {summary.cases - summary.accepted - summary.refused} broke the promise "
-             f"({summary.foreign} foreign exceptions, {summary.nonfinite} non-finite outputs, "
-             f"{len(summary.failures)} distinct)"]
+def report(summary: Summary, seed: int, lang: str = "en") -> str:
+    from plans.group.gradebook import heading
+    from plans.phrases import say
+
+    lines = [say("bf_report", lang, n=summary.cases, seed=seed, accepted=summary.accepted, refused=summary.refused,
+                 broke=summary.cases - summary.accepted - summary.refused, foreign=summary.foreign,
+                 nonfinite=summary.nonfinite, distinct=len(summary.failures))]
     if summary.kinds:
-        lines.append("  by kind: " + ", ".join(f"{k} {n}" for k, n in sorted(summary.kinds.items())))
+        lines.append(say("bf_by_kind", lang, kinds=", ".join(f"{heading(k, lang)} {n}"
+                                                             for k, n in sorted(summary.kinds.items()))))
     lines += [f"  {name}: {reason}" for reason, name in summary.failures.items()]
     return "\n".join(lines)
 
@@ -462,7 +470,9 @@ def run(args: argparse.Namespace) -> int:
     keep = Path(args.fuzz_keep) if getattr(args, "fuzz_keep", None) else None
     seed = int(getattr(args, "fuzz_seed", 0))
     summary = fuzz(n, seed=seed, keep=keep, progress=lambda s: print(s, file=sys.stderr, flush=True))
-    print(report(summary, seed))
+    from plans.errors import run_language
+
+    print(report(summary, seed, run_language()))
     return 0 if not summary.failures else 1
 
 

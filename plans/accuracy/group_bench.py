@@ -17,6 +17,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 from plans.accuracy.timing import Goal
+from plans.phrases import phrase
 
 VARIANTS_S = 60.0  # 30 variants, sheets included, on 2 cores with --jobs 2
 CHECK_S = 5.0  # 30 submissions checked, the gradebook written
@@ -73,23 +74,22 @@ def _check(course: Path, subs: Path) -> float:
 
 def group_goals(samples: Path) -> list[Goal]:
     if not (samples / "group" / "group.csv").exists():
-        return [Goal("group", "samples/group is needed", float("nan"), None)]
+        return [Goal(phrase("bq_group_short"), phrase("bq_group_needed"), float("nan"), None)]
     if not COMMAND:
-        return [Goal("group", "skipped: the renderer is not installed (plans bench of the drawings package)",
-                     math.nan, None)]
+        return [Goal(phrase("bq_group_short"), phrase("bq_no_renderer"), math.nan, None)]
     with tempfile.TemporaryDirectory(prefix="plans-group-bench-") as tmp:
         root = Path(tmp)
         table = _table(samples, root)
         made, complaint = _variants(table, root / "course")
-        out = [Goal(f"a group of 30 variants (files, keys, forms, reference sheets), --jobs 2 (≤ {VARIANTS_S:g} s)",
-                    f"{made:.1f} s" + (f" ({complaint})" if complaint else ""), made / VARIANTS_S,
-                    made <= VARIANTS_S and not complaint)]
+        out = [Goal(phrase("bq_variants", bound=VARIANTS_S),
+                    phrase("bq_variants_got", t=made, complaint=f" ({complaint})" if complaint else ""),
+                    made / VARIANTS_S, made <= VARIANTS_S and not complaint)]
         if complaint:
             return out
         subs = root / "subs"
         subs.mkdir()
         took = _check(root / "course", subs)
-        out.append(Goal(f"30 submissions checked into the gradebook (≤ {CHECK_S:g} s)", f"{took:.2f} s",
+        out.append(Goal(phrase("bq_gradebook", bound=CHECK_S), phrase("bq_seconds2", t=took),
                         took / CHECK_S, took <= CHECK_S))
     return out
 

@@ -32,11 +32,13 @@ from plans.accuracy.timing import (
     least_paired,
     least_time,
     median_time,
+    took,
     us,
 )
 from plans.kinematics import exact
 from plans.kinematics.placing import load_scene
 from plans.kinematics.structure import analyse
+from plans.phrases import Phrase, number, phrase, say
 from plans.scene.model import Scene
 
 #: Exact kinematics at 360 positions: at most this many times the numpy floor ...
@@ -93,8 +95,8 @@ def kinematics_goals(cases: list[tuple[str, Scene]], peer_runs: list[peers.PeerR
         if fl is not None:  # the least of short batches turn about: the load only ever adds
             t_ours, t_floor = least_paired(ours, functools.partial(fl, phis), KINEMATICS_TURNS)
             r = t_ours / t_floor
-            out.append(Goal(f"exact kinematics, 360 positions, {name}: within {FLOOR_RATIO}× of the numpy floor",
-                            f"{us(t_ours / 360)} per position, floor {us(t_floor / 360)}, {r:.2f}×",
+            out.append(Goal(phrase("bq_floor", name=name, ratio=FLOOR_RATIO),
+                            phrase("bq_floor_got", ours=took(t_ours / 360), floor=took(t_floor / 360), r=r),
                             r / FLOOR_RATIO, r <= FLOOR_RATIO))
         pr = by.get(("pylinkage + numba", name))
         if pr is not None and math.isfinite(pr.time_per_position):
@@ -102,33 +104,31 @@ def kinematics_goals(cases: list[tuple[str, Scene]], peer_runs: list[peers.PeerR
                 t_peer, t_ours = least_paired(pr.runner, ours, KINEMATICS_TURNS)
                 pr.time_per_position = t_peer / 360
             speed = pr.time_per_position / (t_ours / 360)
-            out.append(Goal(f"exact kinematics, 360 positions, {name}: ≥ {PEER_SPEEDUP:g}× ahead of pylinkage + numba",
-                            f"pylinkage + numba {us(pr.time_per_position)} per position, ours {us(t_ours / 360)}: "
-                            f"{speed:.2f}× ahead", PEER_SPEEDUP / speed, speed >= PEER_SPEEDUP))
+            out.append(Goal(phrase("bq_peer", name=name, speedup=PEER_SPEEDUP),
+                            phrase("bq_peer_got", peer=took(pr.time_per_position), ours=took(t_ours / 360), speed=speed),
+                            PEER_SPEEDUP / speed, speed >= PEER_SPEEDUP))
             e = pr.errors.get("r", math.nan)
-            out.append(Goal(f"positions, {name}: agree with pylinkage to {POSITIONS_AGREE:g}",
-                            f"largest difference {e:.2g} of the crank (v {pr.errors.get('v', math.nan):.2g}, "
-                            f"a {pr.errors.get('a', math.nan):.2g})", e / POSITIONS_AGREE, e <= POSITIONS_AGREE))
+            out.append(Goal(phrase("bq_agree", name=name, tol=POSITIONS_AGREE),
+                            phrase("bq_agree_got", e=e, v=pr.errors.get("v", math.nan), a=pr.errors.get("a", math.nan)),
+                            e / POSITIONS_AGREE, e <= POSITIONS_AGREE))
         else:
-            why = pr.note if pr is not None else (skipped[0] if skipped else "skipped: no run")
-            out.append(Goal(f"exact kinematics, 360 positions, {name}: ≥ {PEER_SPEEDUP:g}× ahead of pylinkage + numba",
-                            why, math.nan, None))
+            why = pr.note if pr is not None else (skipped[0] if skipped else phrase("bq_no_run"))
+            out.append(Goal(phrase("bq_peer", name=name, speedup=PEER_SPEEDUP), why, math.nan, None))
         bound = ONE_POSITION.get(name)
         one = functools.partial(exact.solve, sc, [45.0], order=2)
         step = by.get(("pylinkage step", name))
-        extra = ""
+        extra: Phrase | str = ""
         ahead = True
         if step is not None and step.runner is not None:  # ours and pylinkage's step turn about
             step.time_per_position, t1 = least_paired(step.runner, one, ONE_POSITION_TURNS)
         else:
             t1 = least_time(one, ONE_POSITION_TURNS)
         if step is not None and math.isfinite(step.time_per_position):
-            extra = f"; pylinkage's step {us(step.time_per_position)} (positions only), least of " \
-                    f"{ONE_POSITION_TURNS} turns each"
+            extra = phrase("bq_one_step", t=took(step.time_per_position), turns=ONE_POSITION_TURNS)
             ahead = t1 <= step.time_per_position
         if bound is not None:
-            out.append(Goal(f"one position, {name}: ≤ {us(bound)} and ahead of pylinkage's step",
-                            f"{us(t1)} (positions, v, a){extra}", t1 / bound, t1 <= bound and ahead))
+            out.append(Goal(phrase("bq_one", name=name, bound=took(bound)), phrase("bq_one_got", t=took(t1), extra=extra),
+                            t1 / bound, t1 <= bound and ahead))
     return out
 
 
@@ -149,9 +149,9 @@ def structure_goal() -> list[Goal]:
 
     t100, t200 = once(CHAIN_DYADS // 2), once(CHAIN_DYADS)
     growth = t200 / t100
-    return [Goal(f"chain of {CHAIN_DYADS} dyads, one position, structure analysis included: ≤ {us(CHAIN_ONE_POSITION)}",
-                 f"{us(t200)}; {us(t200 / CHAIN_DYADS)} per dyad (×{growth:.2f} from {CHAIN_DYADS // 2} to "
-                 f"{CHAIN_DYADS} dyads: linear is ×2)", t200 / CHAIN_ONE_POSITION, t200 <= CHAIN_ONE_POSITION)]
+    return [Goal(phrase("bq_chain", n=CHAIN_DYADS, bound=took(CHAIN_ONE_POSITION)),
+                 phrase("bq_chain_got", t=took(t200), per=took(t200 / CHAIN_DYADS), growth=growth, half=CHAIN_DYADS // 2,
+                        n=CHAIN_DYADS), t200 / CHAIN_ONE_POSITION, t200 <= CHAIN_ONE_POSITION)]
 
 
 def forces_goal(cases: list[tuple[str, Scene]]) -> list[Goal]:
@@ -171,9 +171,9 @@ def forces_goal(cases: list[tuple[str, Scene]]) -> list[Goal]:
         both, alone = least_paired(both_fn, functools.partial(exact.solve, sc, phis, order=2), FORCES_TURNS)
         t = max(both - alone, 0.0)
         tl = median_time(functools.partial(parse_loads, sc))
-        out.append(Goal(f"forces and lever, 360 positions, {name}: ≤ {us(FORCES_360)}",
-                        f"{us(t)} (loads read in {us(tl)}), least of {FORCES_TURNS} turns with the solve alone",
-                        t / FORCES_360, t <= FORCES_360))
+        out.append(Goal(phrase("bq_forces", name=name, bound=took(FORCES_360)),
+                        phrase("bq_forces_got", t=took(t), tl=took(tl), turns=FORCES_TURNS), t / FORCES_360,
+                        t <= FORCES_360))
     return out
 
 
@@ -217,36 +217,27 @@ def start_up_goals(samples: Path, reps: int = START_REPS[1]) -> list[Goal]:
 
     floor_s, floor_cpu, _ = t["floor"]
     stretch = max(1.0, judged("floor") / START_FLOOR)
-    numpy_alone = f"python importing numpy alone: {floor_s:.3f} s"
-    scaled = (f"judged on processor time where less than wall; bound ×{stretch:.2f}: numpy's floor over "
-              f"{START_FLOOR:g} s" if stretch > 1 else "judged on processor time where less than wall")
+    scaled = (phrase("bq_scaled", stretch=stretch, floor=START_FLOOR) if stretch > 1 else phrase("bq_unscaled"))
     out = []
-    for key, what in (("help", f"plans --help starts in ≤ {HELP_UP:g} s (where numpy imports in ≤ "
-                               f"{START_FLOOR:g} s; else stretched alike)"),
-                      ("start", f"plans solve starts in ≤ {START_UP:g} s (where numpy imports in ≤ "
-                                f"{START_FLOOR:g} s; else stretched alike; launch to solving begun: "
-                                "interpreter, imports, scene read)"),
-                      ("solve", f"plans solve whole, slider_crank.toml with its table: ≤ numpy floor + "
-                                f"{SOLVE_BUDGET:g} s (stretched alike)")):
-        took, took_cpu, status = t[key]
+    for key, what in (("help", phrase("bq_help", bound=HELP_UP, floor=START_FLOOR)),
+                      ("start", phrase("bq_start", bound=START_UP, floor=START_FLOOR)),
+                      ("solve", phrase("bq_solve", budget=SOLVE_BUDGET))):
+        wall, cpu, status = t[key]
         if status != 0:
-            out.append(Goal(what, f"skipped: exit status {status}", math.nan, None))
+            out.append(Goal(what, phrase("bq_exit", status=status), math.nan, None))
         elif key == "solve":
             ours, bound = judged("solve") - judged("floor"), SOLVE_BUDGET * stretch
-            out.append(Goal(what, f"{took:.3f} s = {floor_s:.3f} s ({numpy_alone.split(':')[0]}) + {took - floor_s:.3f} s "
-                                  f"of our own (processor {took_cpu - floor_cpu:.3f} s of our own), least of {reps}; "
-                                  f"{scaled}", ours / bound, ours <= bound))
+            out.append(Goal(what, phrase("bq_solve_got", took=wall, floor=floor_s, own=wall - floor_s,
+                                         own_cpu=cpu - floor_cpu, reps=reps, scaled=scaled), ours / bound, ours <= bound))
         elif key == "start":
             base, base_cpu, _ = t["floor_start"]
             bound = START_UP * stretch
-            out.append(Goal(what, f"{took:.3f} s (processor {took_cpu:.3f} s), least of {reps} (python importing "
-                                  f"numpy alone, stopped the same way: {base:.3f} s, processor {base_cpu:.3f} s; "
-                                  f"{took - base:+.3f} s over it); {scaled}", judged(key) / bound,
-                            judged(key) <= bound))
+            out.append(Goal(what, phrase("bq_start_got", took=wall, cpu=cpu, reps=reps, base=base, base_cpu=base_cpu,
+                                         over=wall - base, scaled=scaled), judged(key) / bound, judged(key) <= bound))
         else:
             bound = HELP_UP * stretch
-            out.append(Goal(what, f"{took:.3f} s (processor {took_cpu:.3f} s), least of {reps} ({numpy_alone}, "
-                                  f"processor {floor_cpu:.3f} s); {scaled}", judged(key) / bound,
+            out.append(Goal(what, phrase("bq_help_got", took=wall, cpu=cpu, reps=reps, floor=floor_s,
+                                         floor_cpu=floor_cpu, scaled=scaled), judged(key) / bound,
                             judged(key) <= bound))
     return out
 
@@ -272,10 +263,9 @@ def sheet_goals(samples: Path, reps: int = 3) -> list[Goal]:
     scenes = [str(samples / "v_engine.toml"), str(samples / "v_engine_cycle.toml")]
     scenes = [s for s in scenes if Path(s).is_file()]
     if not scenes or not scenes[0].endswith("v_engine.toml"):
-        return [Goal("sheets", "skipped: samples/v_engine.toml missing", math.nan, None)]
+        return [Goal(phrase("bq_sheets"), phrase("bq_missing", path="samples/v_engine.toml"), math.nan, None)]
     if not SHEET_FIGURES:
-        return [Goal("sheets", "skipped: the renderer is not installed (plans bench of the drawings package)",
-                      math.nan, None)]
+        return [Goal(phrase("bq_sheets"), phrase("bq_no_renderer"), math.nan, None)]
     fig = SHEET_FIGURES[0](scenes, reps)
     sh = fig["sheets"]
     n = sh["sheets"]
@@ -290,30 +280,28 @@ def sheet_goals(samples: Path, reps: int = 3) -> list[Goal]:
         return wall, cpu, min(wall, cpu) if math.isfinite(cpu) else wall
 
     for key, name, bound in (("svg_s", "SVG", SHEET_SVG), ("pdf_s", "PDF", SHEET_PDF),
-                             ("png_s", "PNG at 150 dpi", SHEET_PNG)):
+                             ("png_s", phrase("bq_png"), SHEET_PNG)):
         ts = sh[key]
         wall, cpu, per = judged(key)
-        extra = f"; the sheets built (engine, panels, layout) in {sh['build_s'] / n:.3f} s per sheet" \
-            if key == "svg_s" else ""
-        out.append(Goal(f"V-engine, {n} {sh['format']} sheets: {name} ≤ {bound:g} s per sheet",
-                        f"{wall:.3f} s per sheet (processor {cpu:.3f} s, the least; slowest {max(ts):.3f} s), "
-                        f"medians of {reps}{extra}; load {load}", per / bound, per <= bound))
+        extra = phrase("bq_sheet_built", t=sh["build_s"] / n) if key == "svg_s" else ""
+        out.append(Goal(phrase("bq_sheet", n=n, size=sh["format"], name=name, bound=bound),
+                        phrase("bq_sheet_got", wall=wall, cpu=cpu, slowest=max(ts), reps=reps, extra=extra, load=load),
+                        per / bound, per <= bound))
     if sh.get("dxf_s"):  # the DXF of the same sheets: a bound of its own and the SVG's time × 5
         wall, cpu, per = judged("dxf_s")
         svg_per = judged("svg_s")[2]
         bound = min(SHEET_DXF, SHEET_DXF_PER_SVG * svg_per) if svg_per > 0 else SHEET_DXF
-        out.append(Goal(f"V-engine, {n} {sh['format']} sheets: DXF ≤ {SHEET_DXF:g} s per sheet and ≤ SVG × "
-                        f"{SHEET_DXF_PER_SVG:g}",
-                        f"{wall:.3f} s per sheet (processor {cpu:.3f} s, the least; slowest {max(sh['dxf_s']):.3f} s; "
-                        f"SVG × {per / svg_per if svg_per > 0 else math.nan:.2f}), medians of {reps}; load {load}",
+        out.append(Goal(phrase("bq_dxf", n=n, size=sh["format"], bound=SHEET_DXF, per_svg=SHEET_DXF_PER_SVG),
+                        phrase("bq_dxf_got", wall=wall, cpu=cpu, slowest=max(sh["dxf_s"]),
+                               svg=per / svg_per if svg_per > 0 else math.nan, reps=reps, load=load),
                         per / bound, per <= bound))
     d = fig.get("diagrams")
     if d is not None:
         wall, cpu = d["svg_s"], d.get("svg_cpu_s", math.nan)
         t = min(wall, cpu) if math.isfinite(cpu) else wall
-        out.append(Goal(f"cycle diagrams sheet (V-engine): SVG ≤ {DIAGRAMS_SVG:g} s",
-                        f"{wall:.3f} s (processor {cpu:.3f} s, the least), median of {reps} (engine, panels, "
-                        f"layout and SVG); load {load}", t / DIAGRAMS_SVG, t <= DIAGRAMS_SVG))
+        out.append(Goal(phrase("bq_diagrams", bound=DIAGRAMS_SVG),
+                        phrase("bq_diagrams_got", wall=wall, cpu=cpu, reps=reps, load=load), t / DIAGRAMS_SVG,
+                        t <= DIAGRAMS_SVG))
     return out
 
 
@@ -328,7 +316,6 @@ NOTE_BUILD = 3.0
 #: :func:`drawings.demo.page`, as ``plans demo`` builds it, and opened in headless Chromium).
 NOTE_FIGURES: list[Callable[[str, int], dict[str, float]]] = []
 PAGE_FIGURES: list[Callable[[str], dict[str, Any]]] = []
-_NO_RENDERER = "skipped: the renderer is not installed (plans bench of the drawings package)"
 
 
 def note_goals(samples: Path, reps: int = 3) -> list[Goal]:
@@ -336,20 +323,20 @@ def note_goals(samples: Path, reps: int = 3) -> list[Goal]:
     in this process by the renderer's public API (:data:`NOTE_FIGURES`)."""
     scene = samples / "projects" / "v_engine_project.toml"
     if not scene.is_file():
-        return [Goal("explanatory note", "skipped: samples/projects/v_engine_project.toml missing", math.nan, None)]
+        return [Goal(phrase("bq_note_short"), phrase("bq_missing", path="samples/projects/v_engine_project.toml"),
+                     math.nan, None)]
     if not NOTE_FIGURES:
-        return [Goal("explanatory note", _NO_RENDERER, math.nan, None)]
+        return [Goal(phrase("bq_note_short"), phrase("bq_no_renderer"), math.nan, None)]
     try:
         fig = NOTE_FIGURES[0](str(scene), reps)
     except Exception as exc:  # noqa: BLE001 - report, never break the benchmark
-        return [Goal("explanatory note", f"skipped: {type(exc).__name__}: {exc}", math.nan, None)]
+        return [Goal(phrase("bq_note_short"), phrase("bq_failed", error=f"{type(exc).__name__}: {exc}"), math.nan, None)]
     # one core builds the note: on an idle machine its wall and processor times agree, and on a
     # loaded one the wall time is stretched by the others' work, the processor time hardly
     wall, cpu = fig["seconds"], fig["cpu_seconds"]
     t = min(wall, cpu) if math.isfinite(cpu) else wall
-    return [Goal(f"V-engine project's explanatory note, 12 positions and its figures: DOCX ≤ {NOTE_BUILD:g} s",
-                 f"{t:.3f} s of processor time (wall {wall:.3f} s), best of {reps}; {fig['bytes'] / 1e6:.2f} MB",
-                 t / NOTE_BUILD, t <= NOTE_BUILD)]
+    return [Goal(phrase("bq_note", bound=NOTE_BUILD),
+                 phrase("bq_note_got", t=t, wall=wall, reps=reps, mb=fig["bytes"] / 1e6), t / NOTE_BUILD, t <= NOTE_BUILD)]
 
 
 #: The demonstration page of the V-engine, 72 positions a turn.
@@ -361,84 +348,88 @@ def page_goals(samples: Path) -> list[Goal]:
     in this process by the renderer's public API (:data:`PAGE_FIGURES`; the engine never
     imports it)."""
     if not PAGE_FIGURES:
-        return [Goal("demonstration page", _NO_RENDERER, math.nan, None)]
+        return [Goal(phrase("bq_page_short"), phrase("bq_no_renderer"), math.nan, None)]
     try:
         fig = PAGE_FIGURES[0](str(samples / "v_engine.toml"))
     except Exception as exc:  # noqa: BLE001 - report, never break the benchmark
-        return [Goal("demonstration page", f"skipped: {type(exc).__name__}: {exc}", math.nan, None)]
-    out = [Goal(f"V-engine demonstration page, 72 positions: ≤ {PAGE_BYTES / 1e6:g} MB", f"{fig['bytes'] / 1e6:.3f} MB",
+        return [Goal(phrase("bq_page_short"), phrase("bq_failed", error=f"{type(exc).__name__}: {exc}"), math.nan, None)]
+    out = [Goal(phrase("bq_page_size", bound=PAGE_BYTES / 1e6), phrase("bq_mb", mb=fig["bytes"] / 1e6),
                 fig["bytes"] / PAGE_BYTES, fig["bytes"] <= PAGE_BYTES),
-           Goal(f"the page built in ≤ {PAGE_BUILD:g} s", f"{fig['build_s']:.3f} s", fig["build_s"] / PAGE_BUILD,
-                fig["build_s"] <= PAGE_BUILD)]
+           Goal(phrase("bq_page_build", bound=PAGE_BUILD), phrase("bq_seconds3", t=fig["build_s"]),
+                fig["build_s"] / PAGE_BUILD, fig["build_s"] <= PAGE_BUILD)]
     first = fig.get("first_step_s")
     if first is None:
-        out.append(Goal(f"first step visible in headless Chromium in ≤ {PAGE_FIRST_STEP:g} s",
-                        "skipped: Chromium or Playwright not installed", math.nan, None))
+        out.append(Goal(phrase("bq_page_first", bound=PAGE_FIRST_STEP), phrase("bq_no_browser"), math.nan, None))
     else:
-        out.append(Goal(f"first step visible in headless Chromium in ≤ {PAGE_FIRST_STEP:g} s", f"{first:.3f} s",
+        out.append(Goal(phrase("bq_page_first", bound=PAGE_FIRST_STEP), phrase("bq_seconds3", t=first),
                         first / PAGE_FIRST_STEP, first <= PAGE_FIRST_STEP))
     return out
 
 
-def measure(samples: Path, log: Callable[[str], None] | None = None, with_peers: bool = True,
+def measure(samples: Path, log: Callable[[Phrase | str], None] | None = None, with_peers: bool = True,
             quick: bool = False) -> dict[str, Any]:
     """Every goal, and the peers' runs behind them (JSON-ready)."""
     log = log or (lambda s: None)
     cases = mechanisms(samples)
     runs = peers.run_peers(cases, log=log) if with_peers else []
-    log("goals: kinematics ...")
+    log(phrase("bp_g_kinematics"))
     goals = kinematics_goals(cases, runs)
-    log("goals: structure, forces, start-up ...")
+    log(phrase("bp_g_structure"))
     goals += structure_goal()
     goals += forces_goal(cases)
     goals += start_up_goals(samples, START_REPS[0] if quick else START_REPS[1])
-    log("goals: sheets ...")
+    log(phrase("bp_g_sheets"))
     goals += sheet_goals(samples, 3 if quick else 5)
-    log("goals: demonstration page ...")
+    log(phrase("bp_g_page"))
     goals += page_goals(samples)
-    log("goals: the examiner ...")
+    log(phrase("bp_g_examiner"))
     from plans.accuracy.examiner_bench import examiner_goals
 
     goals += examiner_goals(samples, quick)
-    log("goals: explanatory note ...")
+    log(phrase("bp_g_note"))
     goals += note_goals(samples, 1 if quick else 3)
-    log("goals: a group's course ...")
+    log(phrase("bp_g_group"))
     from plans.accuracy.group_bench import group_goals
 
-    log("goals: the workbench ...")
+    log(phrase("bp_g_workbench"))
     from plans.accuracy.workbench_bench import workbench_goals
 
     if quick:  # a minute of a whole group and a browser: the full bench measures them
-        goals += [Goal("a group's course", "skipped: measured by the full bench", math.nan, None),
-                  Goal("workbench", "skipped: measured by the full bench", math.nan, None)]
+        goals += [Goal(phrase("bq_group_short"), phrase("bq_full_bench"), math.nan, None),
+                  Goal(phrase("bq_workbench_short"), phrase("bq_full_bench"), math.nan, None)]
     else:
         goals += group_goals(samples) + workbench_goals(samples)
     return {"goals": [asdict(g) for g in goals],
             "peers": [{k: v for k, v in asdict(r).items() if k != "runner"} for r in runs]}
 
 
-def lines(result: dict[str, Any]) -> list[str]:
-    return [Goal(**g).line() for g in result.get("goals", [])]
+def lines(result: dict[str, Any], lang: str = "en") -> list[str]:
+    return [Goal(**g).line(lang) for g in result.get("goals", [])]
 
 
-def markdown(result: dict[str, Any]) -> str:
-    """The goals and the peers' runs as Markdown tables."""
-    out = ["| goal | measured | ratio | met |", "|---|---|---:|---|"]
+def markdown(result: dict[str, Any], lang: str = "en") -> str:
+    """The goals and the peers' runs as Markdown tables (in ``lang``: the goals' phrases and
+    the bench's words; a result read back from bench.json has the English alone)."""
+    from plans.messages_bench import words
+
+    def head(key: str, align: tuple[str, ...]) -> list[str]:
+        return ["| " + say(key, lang) + " |", "|" + "|".join(align) + "|"]
+
+    out = head("bh_speed", ("---", "---", "---:", "---"))
     for g in result.get("goals", []):
-        state = "yes" if g["met"] else "skipped" if g["met"] is None else "no"
-        r = "" if g["ratio"] is None or math.isnan(g["ratio"]) else f"{g['ratio']:.2f}"
-        out.append(f"| {g['goal']} | {g['measured']} | {r} | {state} |")
+        state = say("bs_yes" if g["met"] else "bs_skipped" if g["met"] is None else "bs_no", lang)
+        r = "" if g["ratio"] is None or math.isnan(g["ratio"]) else number(g["ratio"], ".2f", lang)
+        out.append(f"| {words(g['goal'], lang)} | {words(g['measured'], lang)} | {r} | {state} |")
     runs = result.get("peers", [])
     if runs:
-        out += ["", "| peer | mechanism | positions | per position | r | v | a | note |",
-                "|---|---|---:|---:|---:|---:|---:|---|"]
+        out += ["", *head("bh_peers", ("---", "---", "---:", "---:", "---:", "---:", "---:", "---"))]
         for r in runs:
             e = r.get("errors") or {}
             tp = r["time_per_position"]
-            out.append(f"| {r['peer']} | {r['mechanism']} | {r['positions']} | "
-                       f"{'' if tp is None or math.isnan(tp) else us(tp)} | "
-                       + " | ".join(f"{e[k]:.2g}" if k in e else "" for k in ("r", "v", "a"))
-                       + f" | {r['note']} |")
+            out.append(f"| {r['peer']} | {words(r['mechanism'], lang)} | {r['positions']} | "
+                       f"{'' if tp is None or math.isnan(tp) else took(tp).say(lang)} | "
+                       + " | ".join(number(e[k], ".2g", lang) if k in e else "" for k in ("r", "v", "a"))
+                       + f" | {words(r['note'], lang)} |")
     return "\n".join(out)
 
 

@@ -89,7 +89,7 @@ def stability_records() -> list[dict]:
             row["newton"] = total_error(solver_errors(scene, oracle, nr.point, nr.omega, nr.eps))
             row["cond"] = float(np.nanmax(nr.cond))
         except ConstructionError as exc:
-            row["error"] = str(exc)
+            row["error"] = exc  # bench.json writes its English, the report the run's language
         out.append(row)
 
     for off in (0.0, 1e-12, 1e-9, 1e-6, 1e-3):

@@ -16,18 +16,21 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from plans.phrases import Phrase, number, phrase, say
+
 
 @dataclass
 class Goal:
-    goal: str
-    measured: str
+    goal: Phrase | str  # a phrase of plans.messages_bench (bench.json keeps its English)
+    measured: Phrase | str
     ratio: float  # measured over the goal's bound (≤ 1 met), or the speed-up for "ahead" goals
     met: bool | None  # None: not measured (the reason in ``measured``)
 
-    def line(self) -> str:
-        state = "met" if self.met else "skipped" if self.met is None else "NOT met"
-        r = "" if math.isnan(self.ratio) else f" [{self.ratio:.2f}]"
-        return f"{state:8s} {self.goal}: {self.measured}{r}"
+    def line(self, lang: str = "en") -> str:
+        state = say("bs_met" if self.met else "bs_skipped" if self.met is None else "bs_not_met", lang)
+        r = "" if math.isnan(self.ratio) else f" [{number(self.ratio, '.2f', lang)}]"
+        width = 8 if lang == "en" else 11  # the states' column: "NOT met", "не достигнута"
+        return say("br_goal_line", lang, state=state.ljust(width), goal=self.goal, measured=self.measured, ratio=r)
 
 
 def median_time(fn: Callable[[], Any], reps: int = 7, least: float = 2e-3) -> float:
@@ -108,6 +111,11 @@ def least_time(fn: Callable[[], Any], reps: int = 41, batch: float = 3e-4) -> fl
 
 def us(t: float) -> str:
     return f"{t * 1e6:.1f} µs" if t < 1e-3 else f"{t * 1e3:.2f} ms" if t < 1 else f"{t:.2f} s"
+
+
+def took(t: float) -> Phrase:
+    """A time as :func:`us` writes it, in either language (a goal's field)."""
+    return phrase("bu_us", v=t * 1e6) if t < 1e-3 else phrase("bu_ms", v=t * 1e3) if t < 1 else phrase("bu_s", v=t)
 
 
 def goal_record(key: str, what: str, limit: float, unit: str, value: float) -> dict[str, Any]:

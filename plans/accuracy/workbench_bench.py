@@ -16,6 +16,7 @@ from pathlib import Path
 from typing import Any
 
 from plans.accuracy.timing import Goal
+from plans.phrases import phrase
 
 #: The renderer's timer of the workbench: (scene path) -> figures.
 FIGURES: list[Callable[[Path], dict[str, Any]]] = []
@@ -28,24 +29,23 @@ START_S = 1.0  # ``plans serve`` to its first page
 def workbench_goals(samples: Path) -> list[Goal]:
     scene = samples / "four_bar.toml"
     if not FIGURES:
-        return [Goal("workbench", "skipped: the renderer is not installed (plans bench of the drawings package)",
-                     math.nan, None)]
+        return [Goal(phrase("bq_workbench_short"), phrase("bq_no_renderer"), math.nan, None)]
     try:
         fig = FIGURES[0](scene.resolve())
     except Exception as exc:  # noqa: BLE001 - report, never break the benchmark
-        return [Goal("workbench", f"skipped: {type(exc).__name__}: {exc}", math.nan, None)]
+        return [Goal(phrase("bq_workbench_short"), phrase("bq_failed", error=f"{type(exc).__name__}: {exc}"),
+                     math.nan, None)]
     n = fig["positions"]
-    out = [Goal(f"workbench edit round trip, {n} positions: the server's share ≤ {SERVER_SHARE_S * 1000:g} ms",
-                f"{fig['server_s'] * 1000:.1f} ms (processor time {fig['server_cpu_s'] * 1000:.1f} ms; "
-                f"with loopback HTTP {fig['loopback_s'] * 1000:.1f} ms; "
-                f"{fig['answer_bytes'] / 1e3:.0f} kB of JSON)",
+    out = [Goal(phrase("bq_server", n=n, bound=SERVER_SHARE_S * 1000),
+                phrase("bq_server_got", t=fig["server_s"] * 1000, cpu=fig["server_cpu_s"] * 1000,
+                       http=fig["loopback_s"] * 1000, kb=fig["answer_bytes"] / 1e3),
                 fig["server_s"] / SERVER_SHARE_S, fig["server_s"] <= SERVER_SHARE_S)]
     page = fig.get("page_s")
-    what = f"workbench edit round trip, {n} positions: new plans drawn in the page in ≤ {ROUND_TRIP_S * 1000:g} ms"
+    what = phrase("bq_round_trip", n=n, bound=ROUND_TRIP_S * 1000)
     if page is None:
-        out.append(Goal(what, "skipped: Chromium or Playwright not installed", math.nan, None))
+        out.append(Goal(what, phrase("bq_no_browser"), math.nan, None))
     else:
-        out.append(Goal(what, f"{page * 1000:.1f} ms", page / ROUND_TRIP_S, page <= ROUND_TRIP_S))
-    out.append(Goal(f"plans serve to its first page in ≤ {START_S:g} s", f"{fig['start_s']:.3f} s",
+        out.append(Goal(what, phrase("bq_ms", t=page * 1000), page / ROUND_TRIP_S, page <= ROUND_TRIP_S))
+    out.append(Goal(phrase("bq_serve", bound=START_S), phrase("bq_seconds3", t=fig["start_s"]),
                     fig["start_s"] / START_S, fig["start_s"] <= START_S))
     return out

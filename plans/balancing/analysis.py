@@ -186,7 +186,11 @@ class Balance:
         """Rotating + first + second order turned moment at crank angle α (N·m)."""
         return sum(self.moments[k].at(alpha) for k in KINDS)
 
-    def to_json(self) -> dict[str, Any]:
+    def to_json(self, lang: str = "en") -> dict[str, Any]:
+        """The balance as JSON: the program's keys, its sentences (the angles' rule, the
+        notes) in ``lang``."""
+        from plans.language import TERMS
+
         e = self.engine
         banks, combined = self.banks.to_json()
         return {
@@ -197,15 +201,14 @@ class Balance:
                        "bank_deg": [c.bank_deg for c in e.cylinders],
                        "z": [c.z for c in e.cylinders]},
             "units": {"force": "N", "moment": "N*m", "length": "m", "mass": "kg",
-                      "angles": "degrees from the vertical (crank 1 at top dead centre) in the "
-                                "direction of rotation"},
+                      "angles": TERMS["b_json_angles"][lang == "ru"]},
             "unit_forces": self.P0,
             "phase_diagrams": {"first_order": [_deg(c.crank) for c in e.cylinders],
                                "second_order": [_deg(2 * c.crank) for c in e.cylinders]},
             "forces": {k: self.forces[k].to_json() for k in KINDS},
             "moments": {k: self.moments[k].to_json() for k in KINDS},
             "counterweights": [c.to_json() for c in self.counterweights],
-            "notes": list(self.notes),
+            "notes": [_note(n, lang) for n in self.notes],
             "banks": banks,
             "banks_combined": combined,
         }
@@ -301,7 +304,7 @@ def _counterweights(engine: Engine, forces: dict[str, Resultant], moments: dict[
         T = M.forward / w2  # kg·m·m about the reference plane (turned moment)
         ws, note = _solve_planes(engine, S, T, max(F._ref, M._ref / max(engine.arm_unit, 1e-300)) / w2)
         if note:
-            notes.append(f"{kind.replace('_', '-')}: {note}")
+            notes.append(f"{kind.replace('_', '-')}: {note}")  # written in a language by _note
         out += [Counterweight(kind, z, abs(U), engine.cw_radius, math.atan2(U.imag, U.real)) for z, U in ws]
     if forces["second_order"].amplitude > 0 or moments["second_order"].amplitude > 0:
         notes.append("second-order reciprocating force or moment turns at twice the crank speed: no "
@@ -376,6 +379,14 @@ def _note(text: str, lang: str) -> str:
     for key in ("b_note_against", "b_note_second"):
         if text == TERMS[key][0]:
             return TERMS[key][1]
+    import re
+
+    got = re.fullmatch(r"(rotating|first-order|second-order): one counterweight leaves a moment of (\S+) N\*m; "
+                       r"give two planes", text)
+    if got:  # a number of the analysis in the sentence of _solve_planes
+        from plans.phrases import say
+
+        return say("b_note_one_plane", lang, order=say("b_" + got[1].replace("-", "_"), lang), m=float(got[2]))
     return text
 
 

@@ -23,8 +23,8 @@ def _balance(args: argparse.Namespace) -> int:
 
     es = solve_engine(args.engine)
     b = es.balance
-    data = b.to_json()
     lang = file_language(getattr(args, "language", None), args.engine)
+    data = b.to_json(lang)
     text = report(b, lang)
     chk = es.exact
     if chk is not None:

@@ -47,7 +47,10 @@ def question_names(scene: Scene, scene_ref: str, phis: tuple[float, ...]) -> dic
 
     kin = solve(scene, order=2)
     mv, ma = default_scales(kin)
-    data = {"format": 1, "scene": scene_ref, "scales": {"velocity": {"mu": mv}, "acceleration": {"mu": ma}},
+    # read as a form beside the scene names it (the written form, beside its target, names it by
+    # scene_ref); an inline scene (a variant not yet on disk) as it is
+    beside = Path(scene.path).name if scene.path and isinstance(scene_ref, str) else scene_ref
+    data = {"format": 1, "scene": beside, "scales": {"velocity": {"mu": mv}, "acceleration": {"mu": ma}},
             "positions": [{"phi_deg": p, "values": {f"omega_{scene.driver.link}": 1.0}} for p in phis]}
     cf = check_from_dict(data, str(Path(scene.path or "scene.toml").with_suffix(".form.toml")))
     ctx = Context(cf)
@@ -82,18 +85,17 @@ def _phis(scene: Scene, phis: tuple[float, ...] | None) -> tuple[float, ...]:
     return tuple(phis) if phis else tuple(scene.driver.phis_deg)
 
 
-def template_toml(scene: Scene, scene_ref: str, phis: tuple[float, ...] | None = None) -> str:
-    """The blank check file of a scene (see the module docstring)."""
+def template_toml(scene: Scene, scene_ref: str, phis: tuple[float, ...] | None = None, lang: str = "en") -> str:
+    """The blank check file of a scene (see the module docstring), its comments in ``lang``."""
     phis = _phis(scene, phis)
     names = question_names(scene, scene_ref, phis)
     def q(x: str) -> str:
         return json.dumps(x, ensure_ascii=False)
 
-    lines = ["# A blank check file: type in what the student wrote; leave \"\" where nothing is written.",
-             "# measured: segments measured on the student's plans, mm; values: SI units",
-             "# (lengths with their unit: \"65 mm\").  Check it with: plans check THIS_FILE",
-             "format = 1", 'student = ""', f"scene = {q(scene_ref)}", "",
-             "[scales]  # the student's scales: { mu = mm per unit } or { K = unit per mm }",
+    from plans.phrases import say
+
+    lines = [say("cf_head", lang), "format = 1", 'student = ""', f"scene = {q(scene_ref)}", "",
+             "[scales]  " + say("cf_scales", lang),
              "length = { mu = 1000 }", 'velocity = { mu = "" }', 'acceleration = { mu = "" }']
     if any("F_bal" in v for _, v in names.values()):
         lines.append('force = { mu = "" }')
@@ -235,7 +237,9 @@ def run_template(args: argparse.Namespace) -> int:
                 raise InputError(Said("cf_student_columns_students", students=args.students), field="--students")
             text = template_csv(scene, ref, phis, args.students)
         else:
-            text = template_toml(scene, ref, phis)
+            from plans.errors import run_language
+
+            text = template_toml(scene, ref, phis, run_language())
         return put_form(text, target, scene_path, args.quiet)
     except PlansError as exc:
         from plans.guard import abandon

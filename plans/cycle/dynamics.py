@@ -39,6 +39,7 @@ from plans.forces.loads import Loads, apply_loads, parse_loads
 from plans.kinematics.construction import nice_scale
 from plans.kinematics.exact import Kinematics, solve
 from plans.kinematics.structure import Structure, analyse
+from plans.language import TERMS
 from plans.scene.model import Scene
 from plans.tolerances import EXACT_ZERO_REL
 
@@ -47,8 +48,7 @@ from .spec import DynamicsSpec, dynamics_spec
 
 R = NDArray[np.float64]
 
-SIGN_RULE = ("M_pr is the power of the loads over |ω1|: positive where they drive the crank, "
-             "negative where they resist it (the driving moment is not among them)")
+SIGN_RULE = TERMS["y_sign_rule"][0].strip()  # in both languages in the catalogue (the table's line)
 
 _POLES = (10.0, 12.0, 15.0, 20.0, 25.0, 30.0, 40.0, 50.0, 60.0, 80.0, 100.0, 120.0, 150.0, 200.0)
 

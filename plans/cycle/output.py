@@ -23,6 +23,8 @@ from typing import Any
 
 import numpy as np
 
+from plans.language import TERMS
+
 from .dynamics import SIGN_RULE, Dynamics, Row
 from .table import CycleTable, TableRow
 
@@ -36,7 +38,7 @@ def _rows(rows: tuple[Row, ...], n: int) -> list[dict[str, Any]]:
             for r in rows]
 
 
-def dynamics_json(d: Dynamics) -> dict[str, Any]:
+def dynamics_json(d: Dynamics, lang: str = "en") -> dict[str, Any]:
     n = len(d.spec.phi_deg)  # the table's positions (the closing 360° is the first again)
     t, f = d.table, d.flywheel
     return {
@@ -52,7 +54,7 @@ def dynamics_json(d: Dynamics) -> dict[str, Any]:
         "cycle_deg": d.spec.cycle_deg,
         "M_driving": d.M_driving,
         "M_driving_exact": d.M_driving_exact,
-        "sign_rule": SIGN_RULE,
+        "sign_rule": SIGN_RULE if lang != "ru" else TERMS["y_sign_rule"][1].strip(),
         "A_c": _l(d.A_c[:n]),
         "A_d": _l(d.A_d[:n]),
         "dT": _l(d.dT[:n]),

@@ -60,15 +60,16 @@ def diagrams_json(d: Diagrams) -> dict[str, Any]:
             "nodes_deg": _l(d.nodes_deg), "diagrams": out}
 
 
-def cycle_json(cr: CycleResult) -> dict[str, Any]:
-    """Top-level JSON blocks: ``cycle`` (tables), ``dynamics``, ``diagrams``."""
+def cycle_json(cr: CycleResult, lang: str = "en") -> dict[str, Any]:
+    """Top-level JSON blocks: ``cycle`` (tables, their titles and labels in ``lang``),
+    ``dynamics``, ``diagrams``."""
     out: dict[str, Any] = {}
     if cr.tables:
-        out["cycle"] = {"tables": [t.to_json() for t in cr.tables]}
+        out["cycle"] = {"tables": [t.to_json(lang) for t in cr.tables]}
     if cr.dynamics is not None:
         from .output import dynamics_json
 
-        out["dynamics"] = dynamics_json(cr.dynamics)
+        out["dynamics"] = dynamics_json(cr.dynamics, lang)
     if cr.diagrams is not None:
         out["diagrams"] = diagrams_json(cr.diagrams)
     return out
@@ -104,5 +105,5 @@ def _comma(text: str, lang: str) -> str:
     return re.sub(r"(\d)\.(\d)", r"\1,\2", text)
 
 
-def cycle_csv(cr: CycleResult) -> str:
-    return csv_text(cr.tables)
+def cycle_csv(cr: CycleResult, lang: str = "en") -> str:
+    return csv_text(cr.tables, lang)

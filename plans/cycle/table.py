@@ -45,9 +45,27 @@ class CycleTable:
                 return r
         raise KeyError(key)
 
-    def to_json(self) -> dict[str, Any]:
-        return {"title": self.title, "phi_deg": list(self.phi_deg),
-                "rows": [{"key": r.key, "label": r.label, "unit": r.unit, "values": list(r.values)}
+    def title_in(self, lang: str) -> str:
+        """The table's title in ``lang``."""
+        if self.said is not None:
+            return str(self.said.say(lang))
+        if lang != "ru":
+            return self.title
+        from plans.language import TERMS
+
+        return {en: ru for en, ru in (TERMS["y_plans"], TERMS["y_positions"])}.get(self.title, self.title)
+
+    def to_json(self, lang: str = "en") -> dict[str, Any]:
+        """The table as JSON: its keys and units as the program names them, its title and
+        labels in ``lang`` (the textbook's symbols in Russian)."""
+        if lang != "ru":
+            return {"title": self.title, "phi_deg": list(self.phi_deg),
+                    "rows": [{"key": r.key, "label": r.label, "unit": r.unit, "values": list(r.values)}
+                             for r in self.rows]}
+        from plans.language import symbols
+
+        return {"title": self.title_in(lang), "phi_deg": list(self.phi_deg),
+                "rows": [{"key": r.key, "label": symbols(r.label, lang), "unit": r.unit, "values": list(r.values)}
                          for r in self.rows]}
 
 
@@ -113,12 +131,7 @@ def text(table: CycleTable, columns: int = 7, lang: str = "en") -> str:
     from plans.language import TERMS, symbols
 
     ru = lang == "ru"
-    if ru:
-        known = {en: r for en, r in (TERMS["y_plans"], TERMS["y_positions"])}
-    if table.said is not None:
-        lines = [table.said.say(lang)]
-    else:
-        lines = [known.get(table.title, table.title) if ru else table.title]
+    lines = [table.title_in(lang)]
     n = len(table.phi_deg)
     heads = [f"{r.label}, {r.unit}" if r.unit else r.label for r in table.rows]
     if ru:
@@ -141,15 +154,22 @@ def _comma(cell: str, ru: bool) -> str:
     return cell.replace(".", ",") if ru else cell
 
 
-def csv_text(tables: Sequence[CycleTable]) -> str:
-    """One CSV: a header of crank angles per table, then one line per quantity."""
+def csv_text(tables: Sequence[CycleTable], lang: str = "en") -> str:
+    """One CSV: a header of crank angles per table, then one line per quantity; in ``lang``
+    (in Russian: the headings, the textbook's symbols and units, a decimal comma; the keys as
+    the program names them)."""
     import csv  # loaded by ``--csv`` alone
 
+    from plans.language import TERMS, UNITS_RU, symbols
+
+    ru = lang == "ru"
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     for t in tables:
-        w.writerow(["table", t.title])
-        w.writerow(["quantity", "label", "unit"] + [f"{p:.10g}" for p in t.phi_deg])
+        w.writerow([TERMS["y_csv_table"][ru], t.title_in(lang)])
+        w.writerow([TERMS[k][ru] for k in ("y_csv_quantity", "y_csv_label", "y_csv_unit")]
+                   + [_comma(f"{p:.10g}", ru) for p in t.phi_deg])
         for r in t.rows:
-            w.writerow([r.key, r.label, r.unit] + ["" if v is None else repr(float(v)) for v in r.values])
+            label, unit = (symbols(r.label, lang), UNITS_RU.get(r.unit, r.unit)) if ru else (r.label, r.unit)
+            w.writerow([r.key, label, unit] + ["" if v is None else _comma(repr(float(v)), ru) for v in r.values])
     return buf.getvalue()

@@ -22,6 +22,7 @@ from plans.errors import Figures, InputError, PlansError, Said
 from plans.kinematics.exact import Kinematics, solve
 from plans.kinematics.plan import Plan, Step
 from plans.kinematics.scales import ratio_scale
+from plans.language import symbols
 from plans.phrases import LANGUAGES
 from plans.results import Solution, solve_scene
 from plans.scene.model import Scene
@@ -202,7 +203,7 @@ def _steps(sol: Solution, k: int, lang: str, mu_l: float) -> tuple[list[dict], l
         panels.append(panel)
         reveal = _reveal(panel, plan_steps) if panel is not None else []
         for n, s in enumerate(plan_steps):
-            steps.append({"panel": panel["id"], "text": s.say(lang),
+            steps.append({"panel": panel["id"], "text": symbols(s.say(lang), lang) if lang == "ru" else s.say(lang),
                           "op": s.op, **reveal[n],
                           "scheme": _scheme_marks(scene, s, panel["kind"]), "links": links or []})
             if arms and arms[n]:

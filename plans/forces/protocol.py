@@ -185,16 +185,23 @@ def force_steps(fa: ForceAnalysis, lv: LeverAnalysis, k: int) -> tuple[ForceStep
     return tuple(out)
 
 
-def steps_json(plans: tuple[Plan | None, ...], forces: tuple[ForceStep, ...]) -> list[dict]:
-    """``positions[i].steps``: every step of the plans, the polygons and the lever, in order."""
+def steps_json(plans: tuple[Plan | None, ...], forces: tuple[ForceStep, ...], lang: str = "en") -> list[dict]:
+    """``positions[i].steps``: every step of the plans, the polygons and the lever, in order;
+    the operations as the program names them, the sentences in ``lang`` (in Russian with the
+    textbook's symbols, as ``plans solve --protocol`` writes them)."""
+    from plans.language import symbols
+
+    def text(step: Step) -> str:
+        return symbols(step.say(lang), lang) if lang == "ru" else step.text
+
     out = []
     for plan in plans:
         if plan is None:
             continue
-        out += [{"plan": plan.kind, "op": s.op, "inputs": list(s.inputs), "output": s.output, "text": s.text}
+        out += [{"plan": plan.kind, "op": s.op, "inputs": list(s.inputs), "output": s.output, "text": text(s)}
                 for s in plan.steps]
     out += [{"plan": f.plan, "op": f.step.op, "inputs": list(f.step.inputs), "output": f.step.output,
-             "text": f.step.text} for f in forces]
+             "text": text(f.step)} for f in forces]
     return out
 
 

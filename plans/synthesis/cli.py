@@ -36,9 +36,9 @@ def _deg360(x: float, nd: int) -> float:
     return 0.0 if y >= 360.0 - 1e-5 else y  # a hair short of a full turn is 0°
 
 
-def results(d: Design, scene: str) -> dict[str, Any]:
+def results(d: Design, scene: str, lang: str = "en") -> dict[str, Any]:
     """The JSON document (lengths in the file's unit, angles in degrees; keys that do not
-    apply to the model are absent)."""
+    apply to the model are absent; its sentence, the choice made, in ``lang``)."""
     t = d.task
     u = t.scale
     m = d.measured[0]
@@ -87,7 +87,7 @@ def results(d: Design, scene: str) -> dict[str, Any]:
     if d.choice:
         from .design import choice_text
 
-        out["choice"] = choice_text(d.choice)
+        out["choice"] = choice_text(d.choice, lang)
     out["scene"] = scene
     return out
 
@@ -165,10 +165,13 @@ def _run(args: argparse.Namespace) -> int:
         from plans.errors import OutputError
 
         raise OutputError(Said("sc_output_scene_json", output=args.output))
+    from plans.language import file_language
+
+    lang = file_language(getattr(args, "language", None), args.task)
     d = solve_task(args.task).design
-    text = scene_text(d)
+    text = scene_text(d, lang)
     check_scene(text, args.task)
-    res = results(d, args.output if args.output else text)
+    res = results(d, args.output if args.output else text, lang)
     files: dict[Path, str] = {}
     if args.output:
         files[Path(args.output)] = text
@@ -178,7 +181,5 @@ def _run(args: argparse.Namespace) -> int:
     if args.json == "-":
         sys.stdout.write(dumps(res))
         return 0
-    from plans.language import file_language
-
-    print(summary(d, res, file_language(getattr(args, "language", None), args.task)))
+    print(summary(d, res, lang))
     return 0

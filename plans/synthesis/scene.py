@@ -148,11 +148,12 @@ def scene_dict(d: Design) -> dict[str, Any]:
     return out
 
 
-def scene_text(d: Design) -> str:
+def scene_text(d: Design, lang: str = "en") -> str:
+    """The designed scene as TOML, its heading comment in ``lang``."""
     t = d.task
     import os
 
+    from plans.phrases import say
+
     name = " ".join(os.path.basename(t.path).split())
-    head = (f"# Designed by plans design from {name} ({t.mechanism}): the lengths are the design's,\n"
-            "# the crank speed, positions, masses and loads the task's.\n")
-    return head + dumps(scene_dict(d))
+    return say("d_scene_head", lang, name=name, mechanism=t.mechanism) + dumps(scene_dict(d))

@@ -32,7 +32,7 @@ export function sheets(fmt) {
     (s, blob) => s + (blob.type === "application/zip" ? "-" + fmt + ".zip" : "." + fmt));
 }
 
-export function demo() { return fetched("/api/demo", t("building"), (s) => s + ".html"); }
+export function demo() { return fetched("/api/demo?language=" + L.lang, t("building"), (s) => s + ".html"); }
 
 export async function note() {
   if (await fetched("/api/note?language=" + L.lang, t("writing_note"), (s) => s + ".docx")) {

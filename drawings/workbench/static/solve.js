@@ -134,7 +134,7 @@ async function complete(seq, text) {
 
 function designSummary(D) {
   const parts = [];
-  for (const k in D.lengths || {}) parts.push(k + " = " + num(D.lengths[k]));
+  for (const k in D.lengths || {}) parts.push((t("lengths")[k] || k) + " = " + num(D.lengths[k]));
   if (D.K_measured !== undefined) parts.push("K = " + num(D.K_measured));
   if (D.stroke_measured !== undefined) parts.push("H = " + num(D.stroke_measured));
   if (D.swing_measured_deg !== undefined) parts.push("ψ = " + num(D.swing_measured_deg) + "°");

@@ -5,11 +5,13 @@
 // its one-line error beside the row just used.
 import {$, S, h} from "./dom.js";
 import {change} from "./solve.js";
-import {t} from "./words.js";
+import {L, t} from "./words.js";
 
 const OUTPUTS = ["positions", "velocity_plan", "acceleration_plan", "force_polygons", "lever"];
 const number = (s) => Number(String(s).replace(",", ".").trim());
 const isNum = (s) => String(s).trim() !== "" && isFinite(number(s));
+// a number of the file as the page's language writes it (a decimal comma on a Russian page)
+const shown = (x) => (L.lang === "ru" ? String(x).replace(".", ",") : String(x));
 const label = (name) => t(name === "guide" ? "guide_of" : name) || name;
 
 export function structure(f) {
@@ -42,7 +44,7 @@ export function structure(f) {
   part(box, t("s_links"));
   for (const id of Object.keys(links)) {
     const lk = links[id], axis = Array.isArray(lk.axis) ? lk.axis.join("–") : "";
-    item(box, id + (lk.name ? " " + lk.name : "") + ": " + axis + (lk.length !== undefined ? ", " + lk.length : ""),
+    item(box, id + (lk.name ? " " + lk.name : "") + ": " + axis + (lk.length !== undefined ? ", " + shown(lk.length) : ""),
       removeLink(id), "link-" + id);
   }
   let next = 1;
@@ -63,7 +65,7 @@ export function structure(f) {
   for (const id of Object.keys(links)) {
     const lp = links[id].points && typeof links[id].points === "object" ? links[id].points : {};
     for (const nm of Object.keys(lp)) {
-      const p = lp[nm], how = Object.keys(p || {}).map((k) => k + " " + p[k]).join(", ");
+      const p = lp[nm], how = Object.keys(p || {}).map((k) => (t(k) || k) + " " + shown(p[k])).join(", ");
       item(box, id + ": " + nm + " (" + how + ")", {delete: [["links", id, "points", nm]]}, "lpoint-" + id + "-" + nm);
     }
   }

@@ -28,6 +28,7 @@ export const WORDS = {
     set_driver: "set", guide_of: "guide", at: "at", empty_first: "fill in every field",
     new_scene: "New mechanism (empty)", new_tip: "an empty scene: build it link by link",
     id: "number", kind: "kind", links: "links", point: "point", sign: "±1", undo_tip: "take back the last change",
+    file_name: "file name", ratio: "ratio", lengths: {},
     taken: "the number is taken (remove that link first)", ms: "ms"},
   ru: {gallery: "галерея", workbench: "верстак", save: "Сохранить", page: "Страница", check: "Проверка…",
     page_tip: "демонстрационная страница (plans demo)", check_tip: "пустой файл проверки для этой схемы: введите цифры студента",
@@ -59,6 +60,10 @@ export const WORDS = {
     resisting: "сопротивления", set_driver: "задать", guide_of: "направляющая", at: "в",
     empty_first: "заполните все поля", new_scene: "Новый механизм (пустой)", new_tip: "пустая схема: соберите её звено за звеном",
     id: "номер", kind: "вид", links: "звенья", point: "точка", sign: "±1", undo_tip: "отменить последнее изменение",
+    file_name: "имя файла", ratio: "доля длины",
+    lengths: {crank: "кривошип", coupler: "шатун", rocker: "коромысло", frame: "стойка", rod: "шатун",
+      offset: "эксцентриситет", centre_distance: "межосевое расстояние", guide_height: "высота направляющей",
+      coulisse: "кулиса"},
     taken: "номер занят (сначала удалите то звено)", ms: "мс"},
 };
 
@@ -75,6 +80,7 @@ export function translate() {
   document.documentElement.lang = L.lang;
   for (const e of document.querySelectorAll("[data-t]")) e.textContent = t(e.dataset.t);
   for (const e of document.querySelectorAll("[data-t-title]")) e.title = t(e.dataset.tTitle);
+  for (const e of document.querySelectorAll("[data-t-aria]")) e.setAttribute("aria-label", t(e.dataset.tAria));
   document.getElementById("lang").textContent = L.lang === "ru" ? "EN" : "RU";
 }
 
