@@ -19,6 +19,7 @@ from drawings.paper.common import Placer, arrow, dot, fmt
 from drawings.paper.fonts import choose, drawing
 from drawings.paper.i18n import lookup
 from drawings.paper.i18n import tr as words
+from drawings.paper.panel_frame import ruled_grid
 from drawings.paper.sheet import Sheet, SheetSpec, compose, sheet_spec
 from drawings.paper.text import layout
 from plans.errors import InputError, Said
@@ -224,15 +225,8 @@ def _grid(rows: Sequence[Sequence[str]], pid: str) -> Recording:
     for w in widths:
         xs.append(xs[-1] + w)
     rh = size * 1.75
-    H = rh * len(rows)
     rec = Recording()
-    rec.begin(f"{pid}-grid", "grid")
-    rec.polygon([(0, 0), (xs[-1], 0), (xs[-1], H), (0, H)], Style(width=0.5, cls="grid"))
-    for i in range(1, len(rows)):
-        rec.line((0, i * rh), (xs[-1], i * rh), Style(width=0.5 if i == 1 else 0.18, cls="grid"))
-    for x in xs[1:-1]:
-        rec.line((x, 0), (x, H), Style(width=0.18, cls="grid"))
-    rec.end()
+    ruled_grid(rec, pid, xs, len(rows), rh)
     for j, r in enumerate(rows):
         for i, t in enumerate(r):
             anchor, x = ("start", xs[i] + 1.5) if i == 0 else ("middle", (xs[i] + xs[i + 1]) / 2)

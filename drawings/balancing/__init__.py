@@ -20,6 +20,7 @@ from drawings.paper.backend import CENTRE_LINE, HAIR, MAIN, Recording, Style
 from drawings.paper.common import Placer, arrow, degrees360, dot, fmt
 from drawings.paper.fonts import choose, drawing, metrics
 from drawings.paper.i18n import lookup
+from drawings.paper.panel_frame import ruled_grid
 from drawings.paper.sheet import Sheet, SheetSpec, compose, fits_empty, sheet_spec, usable
 from drawings.paper.text import column_edges, layout
 from plans.balancing.analysis import KINDS, Balance, Polygon, Resultant
@@ -342,16 +343,8 @@ def grid_recording(pid: str, header: Sequence[str], rows: Sequence[Sequence[str]
     xe = column_edges([list(header)] + [list(r) for r in rows], size)
     rh = size * 1.75
     n = len(rows) + 1
-    H = n * rh
     rec = Recording()
-    rec.begin(f"{pid}-grid", "grid")
-    rec.polygon([(0, 0), (xe[-1], 0), (xe[-1], H), (0, H)], Style(width=0.5, cls="grid"))
-    for i in range(1, n):
-        rec.line((0, i * rh), (xe[-1], i * rh), Style(width=0.5 if i in (1, n - 1) and n > 2 else 0.18,
-                                                          cls="grid"))
-    for x in xe[1:-1]:
-        rec.line((x, 0), (x, H), Style(width=0.18, cls="grid"))
-    rec.end()
+    ruled_grid(rec, pid, xe, n, rh, thick_rows=(1, n - 1) if n > 2 else ())  # the sums' row ruled too
     rec.begin(f"{pid}-cells", "cells")
     for j, cells in enumerate([list(header)] + [list(r) for r in rows]):
         yc = j * rh + rh / 2

@@ -15,7 +15,7 @@ import numpy as np
 
 from drawings.paper.backend import FILLED, HAIR, MAIN, PAPER, THIN, Recording, Style
 from drawings.paper.common import arrow, fmt
-from drawings.paper.panel_frame import SMALL_SIZE, Panel, finish
+from drawings.paper.panel_frame import SMALL_SIZE, Panel, finish, ruled_grid
 from drawings.paper.text import column_edges, layout
 
 EXACT = Style(width=0.2, stroke="#777", dash=(1.5, 0.8), cls="exact")
@@ -121,15 +121,8 @@ def wide_table(pid: str, title: str, header: Sequence[str], rows: Sequence[Seque
     edges = column_edges([list(header)] + [list(r) for r in rows], size)
     rh = size * 1.75
     n = len(rows) + 1
-    Ht = n * rh
     rec = Recording()
-    rec.begin(f"{pid}-grid", "grid")
-    rec.polygon([(0, 0), (edges[-1], 0), (edges[-1], Ht), (0, Ht)], Style(width=0.5, cls="grid"))
-    for i in range(1, n):
-        rec.line((0, i * rh), (edges[-1], i * rh), Style(width=0.5 if i == 1 else 0.18, cls="grid"))
-    for x in edges[1:-1]:
-        rec.line((x, 0), (x, Ht), Style(width=0.5 if x == edges[1] else 0.18, cls="grid"))
-    rec.end()
+    ruled_grid(rec, pid, edges, n, rh, thick_column=1)  # the quantities' names ruled off
     rec.begin(f"{pid}-cells", "cells")
     for j, cells in enumerate([list(header)] + [list(r) for r in rows]):
         yc = j * rh + rh / 2

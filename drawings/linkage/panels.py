@@ -23,7 +23,7 @@ from drawings.linkage.scheme import (  # noqa: F401
     scheme_panel,
     strokes_over_cycle,
 )
-from drawings.paper.backend import FILLED, HAIR, Prim, Recording, Style
+from drawings.paper.backend import FILLED, HAIR, Prim, Recording
 from drawings.paper.common import angle, fmt, ident, phi_tag
 from drawings.paper.i18n import tr
 
@@ -39,6 +39,7 @@ from drawings.paper.panel_frame import (  # noqa: F401
     auto_length_scale,
     finish,
     ratio_text,
+    ruled_grid,
     scale_text,
 )
 from drawings.paper.text import layout, point_label
@@ -117,15 +118,7 @@ def table_panel(rows: Sequence, lang: str, scale_style: str, phi: float, pid: st
     x_edges = [0.0]
     for w in widths:
         x_edges.append(x_edges[-1] + w)
-    n = len(body) + 1
-    H = n * rh
-    rec.begin(f"{pid}-grid", "grid")
-    rec.polygon([(0, 0), (x_edges[-1], 0), (x_edges[-1], H), (0, H)], Style(width=0.5, cls="grid"))
-    for i in range(1, n):
-        rec.line((0, i * rh), (x_edges[-1], i * rh), Style(width=0.5 if i == 1 else 0.18, cls="grid"))
-    for x in x_edges[1:-1]:
-        rec.line((x, 0), (x, H), Style(width=0.18, cls="grid"))
-    rec.end()
+    ruled_grid(rec, pid, x_edges, len(body) + 1, rh)
     rec.begin(f"{pid}-cells", "cells")
     for i, t in enumerate(header):
         lab = layout(t, (x_edges[i] + x_edges[i + 1]) / 2, rh / 2, size, "middle", "middle")

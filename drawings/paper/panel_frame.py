@@ -4,9 +4,10 @@ scale it is drawn at, as the course writes scales.  Every sheet's panels are the
 
 from __future__ import annotations
 
+from collections.abc import Container, Sequence
 from dataclasses import dataclass
 
-from drawings.paper.backend import Prim, Recording
+from drawings.paper.backend import Prim, Recording, Style
 from drawings.paper.common import fmt
 from drawings.paper.i18n import tr
 from drawings.paper.text import layout
@@ -125,3 +126,20 @@ def auto_length_scale(size_m: float, target_mm: float = 230.0) -> float:
         if size_m * 1000.0 * r <= target_mm:
             return 1000.0 * r
     return 1000.0 * STANDARD_RATIOS[-1]
+
+
+def ruled_grid(rec: Recording, pid: str, edges: Sequence[float], rows: int, row_height: float, *,
+               thick_rows: Container[int] = (1,), thick_column: int | None = None) -> None:
+    """A table's rules (the group ``{pid}-grid``): its box, a rule between rows, drawn main
+    under the header (and under ``thick_rows``, counted from the top), and between columns,
+    main after column ``thick_column``; thin elsewhere."""
+    W, H = edges[-1], rows * row_height
+    rec.begin(f"{pid}-grid", "grid")
+    rec.polygon([(0, 0), (W, 0), (W, H), (0, H)], Style(width=0.5, cls="grid"))
+    for i in range(1, rows):
+        rec.line((0, i * row_height), (W, i * row_height), Style(width=0.5 if i in thick_rows else 0.18, cls="grid"))
+    for x in edges[1:-1]:
+        main = thick_column is not None and x == edges[thick_column]
+        rec.line((x, 0), (x, H), Style(width=0.5 if main else 0.18, cls="grid"))
+    rec.end()
+
