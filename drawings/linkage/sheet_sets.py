@@ -272,22 +272,25 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
                 chosen, mu, sheets = i, mu_i, bigger
         return chosen, mu, sheets
 
-    def mixed(at: Any, parts: list, best: tuple[int, float | None, list], lay: Any, scaled: bool = False) -> list:
+    def mixed(at: Any, parts: list, best: tuple[int, float | None, list], lay: Any, scaled: bool = False,
+              part_at: Any = None) -> list:
         """The sheets ``best`` (every part at the solution ``best[0]``, the length scale
         ``best[1]``) with each part's fit then raised in turn (:func:`drawings.linkage.mixing.ascend`),
         and with ``scaled`` each part's length scale after: ``at(i)(mu)`` the panels of
-        solution ``i`` at the length scale ``mu``."""
+        solution ``i`` at the length scale ``mu``, ``part_at(i, mu, j)`` those of part ``j`` alone
+        (default: all of them)."""
         start, mu, sheets = best
         if len(parts) < 2 or full(sheets, (W, H)):
             return sheets
-        def ids(key: tuple[int, Any]) -> dict[str, Panel]:
-            return {p.pid: p for p in at(key[0])(key[1])}
+        def ids(key: tuple[int, Any, int]) -> dict[str, Panel]:
+            i, m, j = key
+            return {p.pid: p for p in (at(i)(m) if part_at is None else part_at(i, m, j))}
 
         by_id = memo(ids)
         base = at(OWN)(mu)
 
         def lay_fits(fits: tuple[int, ...]) -> list:
-            return lay(swapped(base, parts, [(i, mu) for i in fits], by_id))
+            return lay(swapped(base, parts, [(i, mu, j) for j, i in enumerate(fits)], by_id))
 
         def done(s: list) -> bool:
             return full(s, (W, H))
@@ -305,8 +308,8 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
             return [u for u in ups if u > m * (1 + 1e-9)]
 
         def lay_scales(ms: tuple[int, ...]) -> list:
-            return lay(swapped(base, parts, [(i, mu if m == OWN else above(mu)[m]) for i, m in zip(fits, ms, strict=True)],
-                               by_id))
+            return lay(swapped(base, parts, [(i, mu if m == OWN else above(mu)[m], j)
+                                             for j, (i, m) in enumerate(zip(fits, ms, strict=True))], by_id))
 
         scales, sheets = ascend((OWN,) * len(parts), len(above(mu)), lay_scales, improves, done, more, sheets)
         lengths = [mu if m == OWN else above(mu)[m] for m in scales]
@@ -315,10 +318,10 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
             """The groups and the initial link cut free at a larger standard scale than the
             mechanism of their position (a free body drawn larger, as a draftsman may)."""
             keys = []
-            for i, m, mu_j in zip(fits, ms, lengths, strict=True):
+            for j, (i, m, mu_j) in enumerate(zip(fits, ms, lengths, strict=True)):
                 if m >= len(above(mu_j)):
                     raise TooBig("no larger standard scale")
-                keys.append((i, mu_j if m == OWN else (mu_j, above(mu_j)[m])))
+                keys.append((i, mu_j if m == OWN else (mu_j, above(mu_j)[m]), j))
             return lay(swapped(base, parts, keys, by_id))
 
         def worth(a: list, b: list) -> bool:  # a free body at another scale than its mechanism: for a real gain
@@ -360,7 +363,13 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
         best = fullest(grow(dyn_at(OWN), base_l, lay, own), lambda i: grow(dyn_at(i), base_l, lay, own))
         # each position's groups, polygons and lever at its own longer scales
         dyn_parts = [by_phi(float(sol.kinematics.phi_deg[k])) for k in forces]
-        out.extend(mixed(dyn_at, dyn_parts, best, lay, scaled=True))
+        alone = [{kind: [x for x in ks if x == k] if isinstance(ks, list) else ks for kind, ks in dyn_sel.items()}
+                 for k in forces]  # each position's selection, its panels built alone
+
+        def part_at(i: int, mu: Any, j: int) -> list[Panel]:
+            return builders(i)[0](alone[j], None, *(mu if isinstance(mu, tuple) else (mu,)))[0]
+
+        out.extend(mixed(dyn_at, dyn_parts, best, lay, scaled=True, part_at=part_at))
     for i, sh in enumerate(out):
         sh.number, sh.count = i + 1, len(out)
         sh.prims = []
