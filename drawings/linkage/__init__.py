@@ -66,13 +66,15 @@ def _fitting_positions(sol: Solution, mu: float, lang: str, bold: list[int], str
 
 
 def build_panels(sol: Solution, spec: SheetSpec, sel: dict[str, Any] | None = None,
-                 mu_positions: float | None = None, mu_l: float | None = None) -> tuple[list[Panel], float]:
+                 mu_positions: float | None = None, mu_l: float | None = None,
+                 mu_bodies: float | None = None) -> tuple[list[Panel], float]:
     """Every panel the scene asks for, in the order they go on the sheet: the plan of
     positions, then position by position its scheme, plans, forces, lever and table.
     ``sel`` (kind -> positions, :func:`drawings.linkage.sheet_sets.selection`) says which positions
     each kind shows (default: the ``positions`` set's); ``mu_positions`` the plan of
     positions' scale (default: the largest standard one that fits two fifths of the sheet),
-    ``mu_l`` the schemes' and groups' (default: the file's, else about 230 mm across on A1)."""
+    ``mu_l`` the schemes' and groups' (default: the file's, else about 230 mm across on A1),
+    ``mu_bodies`` the groups' and the initial link's cut free, where larger than the scheme's."""
     from drawings.linkage.sheet_sets import selection
 
     metrics()  # fail early, with the font's name, if it is missing
@@ -88,7 +90,7 @@ def build_panels(sol: Solution, spec: SheetSpec, sel: dict[str, Any] | None = No
     plans_at: dict[int, Any] = dict(enumerate(sol.plans))
     at = {kind: set(ks) for kind, ks in sel.items() if kind not in ("positions", "legend", "bold")}
     kforces = sorted(at.get("forces", set()) | at.get("lever", set()) | at.get("table", set()))
-    forces = _force_panels(sol, spec, kforces, plans_at, mu_l, at) if (
+    forces = _force_panels(sol, spec, kforces, plans_at, mu_bodies or mu_l, at) if (
         kforces and (scene.wants("force_polygons") or scene.wants("lever"))) else {}
     panels: list[Panel] = []
     if sel.get("positions"):  # the plan of positions at the largest standard scale that fits 2/5 of the sheet
@@ -225,7 +227,7 @@ def _draw(sol: Solution, spec: SheetSpec) -> Drawing:
         strokes = strokes_over_cycle(sol)
 
         def builders(s: Solution) -> tuple[Any, Any]:
-            return (lambda sel, mp, ml: build_panels(s, spec, sel, mp, ml),
+            return (lambda sel, mp, ml, mb=None: build_panels(s, spec, sel, mp, ml, mb),
                     lambda mu, bold: positions_panel(s, mu, spec.language, bold, strokes, spec.trace))
 
         from drawings.linkage.larger import longer, may_grow

@@ -40,6 +40,9 @@ from plans.solution import Solution
 
 #: A scene with at least this many positions is drawn as the course's sheet set by default.
 COURSE_FROM = 12
+#: How much fuller (of the field) the least full sheet must get for a position's free bodies to
+#: be drawn at a larger scale than its mechanism.
+BODIES_GAIN = 0.02
 #: The kinds ``panels = { ... }`` names at positions, as :mod:`plans.scene.sheet` reads them.
 #: The kinematics sheet's order: the method's (positions, then velocity, then acceleration).
 ORDER = ("positions", "scheme", "centres", "velocity", "acceleration", "table")
@@ -83,7 +86,8 @@ def selection(sol: Solution, spec: SheetSpec, set_name: str) -> dict[str, Any]:
     positions`` when given), schemes at the positions studied in detail; in the ``course``
     set the velocity plans at every position, the forces at the positions studied in detail,
     the lever and the mechanism where the forces are, the acceleration plans at those and the
-    studied positions, no tables.  ``panels = { ... }`` overrides
+    studied positions, the instant centres (where the scene asks for them) at the studied
+    positions, no tables.  ``panels = { ... }`` overrides
     a kind, ``panels = [...]`` (kinds) leaves out the kinds it does not list."""
     scene, kin = sol.scene, sol.kinematics
     every = list(range(kin.n))
@@ -95,7 +99,8 @@ def selection(sol: Solution, spec: SheetSpec, set_name: str) -> dict[str, Any]:
     if set_name == "course":  # the mechanism drawn alone only on the kinetostatics sheet
         kinetic = scene.wants("force_polygons") or scene.wants("lever")
         sel = {"velocity": every, "acceleration": studied, "forces": studied, "lever": studied,
-               "scheme": studied if kinetic else [], "table": [], "centres": []}
+               "scheme": studied if kinetic else [], "table": [],
+               "centres": studied if scene.wants("instant_centres") else []}
     else:
         ks = every if spec.positions is None else studied
         schemes = ks if spec.positions is not None or not overlay else ks[:2]
@@ -198,7 +203,7 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
             if first:
                 return [positions(mu, kin_sel["bold"]) if p.kind == "positions" else p for p in first]
             panels, _ = build(kin_sel, mu, None)  # the plans of one kind together, in position order
-            panels = sorted(panels, key=lambda p: ORDER.index(p.kind) if p.kind in ORDER else len(ORDER))
+            panels = sorted(panels, key=_order)
             legend = [p for p in panels if p.kind == "legend"]
             rest = [p for p in panels if p.kind != "legend"]
             first.extend(rest + list(diagrams) + legend)
@@ -206,12 +211,13 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
 
         return kinematic
 
-    def grow(make, start: float | None, lay, own: bool) -> tuple[list[Panel], list]:
-        """The panels at the largest standard scale from ``start`` up that keeps as few sheets."""
+    def grow(make, start: float | None, lay, own: bool) -> tuple[float | None, list]:
+        """The largest standard scale from ``start`` up that keeps as few sheets, and the
+        sheets of ``make``'s panels at it."""
         panels = make(start)
         sheets = lay(panels)
         if own or start is None:
-            return panels, sheets
+            return start, sheets
         for r in reversed(STANDARD_RATIOS):
             mu = 1000.0 * r
             if mu <= start * (1 + 1e-9):
@@ -222,42 +228,117 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
             laid = lay(bigger)
             if len(laid) > len(sheets):
                 break
-            panels, sheets = bigger, laid
-        return panels, sheets
+            start, sheets = mu, laid
+        return start, sheets
 
     own = bool(scene.scales.get("length"))
     base_pos = _base_positions_scale(sol, spec) if sel["positions"] else None
     def lay_flat(ps: list[Panel]) -> list:
         return _flat(ps, spec, scene.path)
 
-    from drawings.linkage.larger import better, full, once_each
+    from drawings.linkage.larger import better, full, once_each, score
+    from drawings.linkage.mixing import OWN, ascend, by_phi, memo, swapped
     from drawings.paper.sheet import TooBig
 
     W, H = spec.size
     made = once_each(larger)  # each longer solution's builders, once, when first needed
 
+    def builders(i: int) -> Any:
+        return (build, positions) if i == OWN else made(i)
+
     def shown(sheets: list) -> float:
         """The plan of positions' scale on ``sheets`` (0 without one)."""
         return max((p.scale or 0.0 for sh in sheets for p, _, _ in getattr(sh, "placed", sh) if p.kind == "positions"), default=0.0)
 
-    def fullest(sheets: list, lay_at: Any) -> list:
-        """Of ``sheets`` and the same sheet drawn at each longer solution, the best (as few
-        sheets, fuller, the plan of positions no smaller), tried in order while not yet full."""
+    def improves(a: list, b: list) -> bool:
+        """``b`` beats ``a`` (as few sheets, fuller) with the plan of positions no smaller."""
+        return better(a, b, (W, H)) and shown(b) >= shown(a) * (1 - 1e-9)
+
+    def fullest(grown: tuple[float | None, list], lay_at: Any) -> tuple[int, float | None, list]:
+        """Of the sheets ``grown`` (the sheet's own solution: its length scale and sheets) and the
+        same sheet drawn at each longer solution (``lay_at(i)``, likewise), the best, with its
+        index (:data:`OWN`: ``grown``), tried in order while not yet full."""
+        chosen, (mu, sheets) = OWN, grown
         for i in range(len(larger)):
             if full(sheets, (W, H)):
                 break
             try:
-                bigger = lay_at(made(i))
+                mu_i, bigger = lay_at(i)
             except TooBig:  # a panel too long for an empty sheet: no longer ones either
                 break
             if len(bigger) > len(sheets):  # longer still would not take fewer
                 break
-            if better(sheets, bigger, (W, H)) and shown(bigger) >= shown(sheets) * (1 - 1e-9):
-                sheets = bigger
-        return sheets
+            if improves(sheets, bigger):
+                chosen, mu, sheets = i, mu_i, bigger
+        return chosen, mu, sheets
 
-    _, kin_sheets = grow(kinematics(build, positions), base_pos, lay_flat, own)
-    kin_sheets = fullest(kin_sheets, lambda b: grow(kinematics(*b), base_pos, lay_flat, own)[1])
+    def mixed(at: Any, parts: list, best: tuple[int, float | None, list], lay: Any, scaled: bool = False,
+              part_at: Any = None) -> list:
+        """The sheets ``best`` (every part at the solution ``best[0]``, the length scale
+        ``best[1]``) with each part's fit then raised in turn (:func:`drawings.linkage.mixing.ascend`),
+        and with ``scaled`` each part's length scale after: ``at(i)(mu)`` the panels of
+        solution ``i`` at the length scale ``mu``, ``part_at(i, mu, j)`` those of part ``j`` alone
+        (default: all of them)."""
+        start, mu, sheets = best
+        if len(parts) < 2 or full(sheets, (W, H)):
+            return sheets
+        def ids(key: tuple[int, Any, int]) -> dict[str, Panel]:
+            i, m, j = key
+            return {p.pid: p for p in (at(i)(m) if part_at is None else part_at(i, m, j))}
+
+        by_id = memo(ids)
+        base = at(OWN)(mu)
+
+        def lay_fits(fits: tuple[int, ...]) -> list:
+            return lay(swapped(base, parts, [(i, mu, j) for j, i in enumerate(fits)], by_id))
+
+        def done(s: list) -> bool:
+            return full(s, (W, H))
+
+        def more(a: list, b: list) -> bool:
+            return len(b) > len(a)
+
+        fits, sheets = ascend((start,) * len(parts), len(larger), lay_fits, improves, done, more, sheets) \
+            if larger else ((start,) * len(parts), sheets)
+        if not scaled or own or mu is None:
+            return sheets
+        ups = [1000.0 * r for r in reversed(STANDARD_RATIOS)]
+
+        def above(m: float) -> list[float]:
+            return [u for u in ups if u > m * (1 + 1e-9)]
+
+        def lay_scales(ms: tuple[int, ...]) -> list:
+            return lay(swapped(base, parts, [(i, mu if m == OWN else above(mu)[m], j)
+                                             for j, (i, m) in enumerate(zip(fits, ms, strict=True))], by_id))
+
+        scales, sheets = ascend((OWN,) * len(parts), len(above(mu)), lay_scales, improves, done, more, sheets)
+        lengths = [mu if m == OWN else above(mu)[m] for m in scales]
+
+        def lay_bodies(ms: tuple[int, ...]) -> list:
+            """The groups and the initial link cut free at a larger standard scale than the
+            mechanism of their position (a free body drawn larger, as a draftsman may)."""
+            keys = []
+            for j, (i, m, mu_j) in enumerate(zip(fits, ms, lengths, strict=True)):
+                if m >= len(above(mu_j)):
+                    raise TooBig("no larger standard scale")
+                keys.append((i, mu_j if m == OWN else (mu_j, above(mu_j)[m]), j))
+            return lay(swapped(base, parts, keys, by_id))
+
+        def worth(a: list, b: list) -> bool:  # a free body at another scale than its mechanism: for a real gain
+            return improves(a, b) and score(b, (W, H))[1] >= score(a, (W, H))[1] + BODIES_GAIN
+
+        return ascend((OWN,) * len(parts), len(ups), lay_bodies, worth, done, more, sheets)[1]
+
+    def kin_of(i: int) -> Any:
+        return memo(kinematics(*builders(i)))
+
+    kin_at = memo(kin_of)
+    best = fullest(grow(kin_at(OWN), base_pos, lay_flat, own), lambda i: grow(kin_at(i), base_pos, lay_flat, own))
+    # the velocity and the acceleration plans each at its own longer scale (one part with a
+    # table of readings: it reads both kinds at their scales)
+    kin_parts = [lambda p: p.kind in ("velocity", "acceleration", "table")] if kin_sel["table"] else [
+        lambda p: p.kind == "velocity", lambda p: p.kind == "acceleration"]
+    kin_sheets = mixed(kin_at, kin_parts, best, lay_flat)
     out: list[Sheet] = []
     named = dataclasses.replace(spec, subtitle=spec.subtitle or tr("kinematics_sheet", spec.language))
     for placed in kin_sheets:
@@ -267,19 +348,40 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
         sub = dataclasses.replace(spec, pins=(), subtitle=spec.subtitle or tr("kinetostatics_sheet", spec.language))
 
         def kinetic(build: Any) -> Any:
-            return lambda mu: build(dyn_sel, None, mu)[0]
+            """``mu`` -> the panels: the mechanism and its free bodies at μl = ``mu``, or
+            at ``mu = (μl, μl of the free bodies)``."""
+            return lambda mu: build(dyn_sel, None, *(mu if isinstance(mu, tuple) else (mu,)))[0]
 
         def lay(ps: list[Panel]) -> list:
             return compose(ps, sub, None, scene.path, nums) if ps else []
 
         base_l = _base_length_scale(sol, spec)
-        _, dyn_sheets = grow(kinetic(build), base_l, lay, own)
-        out.extend(fullest(dyn_sheets, lambda b: grow(kinetic(b[0]), base_l, lay, own)[1]))
+        def dyn_of(i: int) -> Any:
+            return memo(kinetic(builders(i)[0]))
+
+        dyn_at = memo(dyn_of)
+        best = fullest(grow(dyn_at(OWN), base_l, lay, own), lambda i: grow(dyn_at(i), base_l, lay, own))
+        # each position's groups, polygons and lever at its own longer scales
+        dyn_parts = [by_phi(float(sol.kinematics.phi_deg[k])) for k in forces]
+        alone = [{kind: [x for x in ks if x == k] if isinstance(ks, list) else ks for kind, ks in dyn_sel.items()}
+                 for k in forces]  # each position's selection, its panels built alone
+
+        def part_at(i: int, mu: Any, j: int) -> list[Panel]:
+            return builders(i)[0](alone[j], None, *(mu if isinstance(mu, tuple) else (mu,)))[0]
+
+        out.extend(mixed(dyn_at, dyn_parts, best, lay, scaled=True, part_at=part_at))
     for i, sh in enumerate(out):
         sh.number, sh.count = i + 1, len(out)
         sh.prims = []
         sh.render()
     return out
+
+
+def _order(p: Panel) -> int:
+    """A panel's place in the kinematics sheet's order (:data:`ORDER`): the instant centres'
+    circle diagram and table of velocities with their scheme."""
+    kind = "centres" if p.kind == "circle-diagram" or p.pid.startswith("centre-table") else p.kind
+    return ORDER.index(kind) if kind in ORDER else len(ORDER)
 
 
 def _base_positions_scale(sol: Solution, spec: SheetSpec) -> float:
