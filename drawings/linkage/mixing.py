@@ -15,6 +15,7 @@ from collections.abc import Callable, Hashable, Sequence
 from typing import Any, TypeVar
 
 from drawings.paper.panel_frame import Panel
+from plans.tolerances import SAME_ANGLE_DEG
 
 T = TypeVar("T")
 K = TypeVar("K", bound=Hashable)
@@ -71,4 +72,4 @@ def memo(make: Callable[[K], T]) -> Callable[[K], T]:
 
 def by_phi(phi: float) -> Callable[[Any], bool]:
     """Whether a panel is drawn at the crank angle ``phi``."""
-    return lambda p: p.phi is not None and abs(p.phi - phi) < 1e-9
+    return lambda p: p.phi is not None and abs(p.phi - phi) < SAME_ANGLE_DEG

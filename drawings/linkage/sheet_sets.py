@@ -37,6 +37,7 @@ from drawings.paper.sheet import (
 )
 from plans.errors import InputError, Said
 from plans.solution import Solution
+from plans.tolerances import SAME_ANGLE_DEG
 
 #: A scene with at least this many positions is drawn as the course's sheet set by default.
 COURSE_FROM = 12
@@ -71,7 +72,7 @@ def _studied(sol: Solution, spec: SheetSpec) -> list[int]:
         return list(range(min(2, kin.n)))
     out = []
     for phi in spec.positions:
-        hits = [k for k in range(kin.n) if abs(float(kin.phi_deg[k]) - phi) < 1e-9]
+        hits = [k for k in range(kin.n) if abs(float(kin.phi_deg[k]) - phi) < SAME_ANGLE_DEG]
         if not hits:
             raise InputError(Said("ss_crank_angle_phi", phi=phi, v=[float(x) for x in kin.phi_deg]), file=sol.scene.path, field="sheet.positions")
         out.append(hits[0])

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from drawings.paper.panel_frame import Panel
+from drawings.paper.panel_frame import SLACK_MM, Panel
 from drawings.paper.text import layout
 
 Box = tuple[float, float, float, float]
@@ -115,7 +115,7 @@ def place_block(block: Block, area: Box, taken: Sequence[Box], prev: Box | None,
         return None
     X, Y = spots[:, 0], spots[:, 1]
     if prev is not None:
-        ok = (Y >= prev[1] - 1e-9) & ((Y + block.height > prev[3] + 1e-9) | (X >= prev[2] + gap - 1e-9))
+        ok = (Y >= prev[1] - SLACK_MM) & ((Y + block.height > prev[3] + SLACK_MM) | (X >= prev[2] + gap - SLACK_MM))
         X, Y = X[ok], Y[ok]
         if not len(X):
             return None
@@ -128,7 +128,7 @@ def spread(blocks: list[tuple[Block, float, float]], area: Box, stays: Sequence[
     """Share a sheet's spare height between its bands of blocks: every block's top moves away
     from the area's top by one factor f (1 ≤ f ≤ ``most``), so nothing new overlaps."""
     top = area[1]
-    free = [(b, x, y) for b, x, y in blocks if y > top + 1e-9]
+    free = [(b, x, y) for b, x, y in blocks if y > top + SLACK_MM]
     if not free:
         return blocks
 
@@ -136,20 +136,20 @@ def spread(blocks: list[tuple[Block, float, float]], area: Box, stays: Sequence[
         for b, x, y in free:
             y2 = top + (y - top) * f
             box = (x, y2, x + b.width, y2 + b.height)
-            if box[3] > area[3] + 1e-9:
+            if box[3] > area[3] + SLACK_MM:
                 return False
             for s in stays:
-                if box[0] < s[2] + gap - 1e-9 and s[0] < box[2] + gap - 1e-9 and \
-                        box[1] < s[3] + gap - 1e-9 and s[1] < box[3] + gap - 1e-9:
+                if box[0] < s[2] + gap - SLACK_MM and s[0] < box[2] + gap - SLACK_MM and \
+                        box[1] < s[3] + gap - SLACK_MM and s[1] < box[3] + gap - SLACK_MM:
                     return False
         return True
 
     f = most
     while f > 1.0 and not ok(f):
         f = max(1.0, f - 0.02)
-    if f <= 1.0 + 1e-9:
+    if f <= 1.0 + SLACK_MM:
         return blocks
-    return [(b, x, y if y <= top + 1e-9 else top + (y - top) * f) for b, x, y in blocks]
+    return [(b, x, y if y <= top + SLACK_MM else top + (y - top) * f) for b, x, y in blocks]
 
 
 def widths(area_w: float, panels: Sequence[Panel]) -> list[float]:
@@ -159,7 +159,7 @@ def widths(area_w: float, panels: Sequence[Panel]) -> list[float]:
     out: list[float] = []
     for f in (1.0, 0.75, 2 / 3, 0.6, 0.5, 0.4, 1 / 3, 0.25):
         w = max(widest, area_w * f)
-        if w <= area_w + 1e-9 and all(abs(w - o) > 1.0 for o in out):
+        if w <= area_w + SLACK_MM and all(abs(w - o) > 1.0 for o in out):
             out.append(w)
     return out or [area_w]
 

@@ -8,7 +8,7 @@ from collections.abc import Callable, Iterable, Sequence
 
 import shapely
 
-from drawings.paper.panel_frame import Panel
+from drawings.paper.panel_frame import SLACK_MM, Panel
 from drawings.paper.sheet import Sheet, SheetSpec, compose, fits_empty, title_box, usable
 
 
@@ -39,7 +39,7 @@ def fullest_on_one_sheet(groups: Iterable[Iterable[Sequence[Panel]]], spec: Shee
             sheets = compose(panels, spec, scale(panels), path)
             if len(sheets) == 1:
                 part = drawn_part(sheets[0])
-                if best is None or part > best[0] + 1e-9:
+                if best is None or part > best[0] + SLACK_MM:
                     best = (part, list(panels), sheets)
         if best is not None:
             return best[1], best[2]

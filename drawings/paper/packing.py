@@ -18,7 +18,7 @@ from functools import partial
 import numpy as np
 
 from drawings.paper.blocks import Block, heading, pack_block, place_block
-from drawings.paper.panel_frame import Panel
+from drawings.paper.panel_frame import SLACK_MM, Panel
 
 Box = tuple[float, float, float, float]
 Spots = Callable[[float, float, Box, Sequence[Box]], np.ndarray]
@@ -46,13 +46,13 @@ def free_spots(gap: float) -> Spots:
         T = np.asarray(taken, dtype=float).reshape(-1, 4)
         xs = _unique(np.concatenate([[area[0], area[2] - w], T[:, 2] + gap, T[:, 0] - gap - w]))
         ys = _unique(np.concatenate([[area[1], area[3] - h], T[:, 3] + gap, T[:, 1] - gap - h]))
-        xs = xs[(xs >= area[0] - 1e-9) & (xs + w <= area[2] + 1e-9)]
-        ys = ys[(ys >= area[1] - 1e-9) & (ys + h <= area[3] + 1e-9)]
+        xs = xs[(xs >= area[0] - SLACK_MM) & (xs + w <= area[2] + SLACK_MM)]
+        ys = ys[(ys >= area[1] - SLACK_MM) & (ys + h <= area[3] + SLACK_MM)]
         if not len(xs) or not len(ys):
             return np.zeros((0, 2))
         X, Y = (a.ravel() for a in np.meshgrid(xs, ys))
         if len(T):
-            g = gap - 1e-9
+            g = gap - SLACK_MM
             hit = ((X[:, None] < T[None, :, 2] + g) & (T[None, :, 0] - g < X[:, None] + w)
                    & (Y[:, None] < T[None, :, 3] + g) & (T[None, :, 1] - g < Y[:, None] + h)).any(axis=1)
             X, Y = X[~hit], Y[~hit]
@@ -97,7 +97,7 @@ def shapes(panels: Sequence[Panel], area_w: float, limit: Callable[[float], floa
     ws: list[float] = []
     for w in [area_w * f for f in FRACTIONS] + list(extra):
         w = min(max(widest, w), max(widest, one_row))
-        if w <= area_w + 1e-9 and all(abs(w - o) > 1.0 for o in ws):
+        if w <= area_w + SLACK_MM and all(abs(w - o) > 1.0 for o in ws):
             ws.append(w)
     whole: list[Block] = []
     reading: list[Block] = []  # the shapes that keep the reading order
@@ -188,7 +188,7 @@ def _part(flow: Flow, rest: list[Panel], n: int, area: Box, taken: Sequence[Box]
         tries: list[tuple[float, float, Box | None]] = []
         for f in FRACTIONS:
             w = full * f
-            h = area[3] - y0 if x0 + w <= tb[0] - gap + 1e-9 else tb[1] - gap - y0
+            h = area[3] - y0 if x0 + w <= tb[0] - gap + SLACK_MM else tb[1] - gap - y0
             tries.append((w, h, None))
         if tb[0] - gap > x0 + MIN_BAND and tb[1] - gap > y0 + MIN_BAND:  # the whole room, round the title block
             tries.append((full, area[3] - y0, (tb[0] - gap / 2 - x0, tb[1] - gap / 2 - y0, full, area[3] - y0)))

@@ -17,6 +17,9 @@ SCALE_SIZE = 3.5
 LABEL_SIZE = 3.5
 SMALL_SIZE = 2.5
 PAD = 2.0
+#: Millimetres of paper that count as none when placed boxes and sizes are compared: the
+#: round-off of summed panel sizes, far below a pencil line (0.18 mm).
+SLACK_MM = 1e-9
 
 
 @dataclass(frozen=True, slots=True)

@@ -16,7 +16,7 @@ from drawings.paper.blocks import Frame, frame_of, spread
 from drawings.paper.fonts import use
 from drawings.paper.i18n import tr
 from drawings.paper.packing import blocks_of, free_spots, place_blocks, place_note
-from drawings.paper.panel_frame import Panel
+from drawings.paper.panel_frame import SLACK_MM, Panel
 from drawings.paper.svg import SvgBackend, document
 from drawings.paper.text import layout, wrap
 from plans.errors import InputError, Said
@@ -257,7 +257,7 @@ def _cell_lines(text: str, width: float, height: float, size: float) -> list[tup
         return [(text, size)]
     sz = size
     words = text.replace("-", "- ")  # a double-barrelled name may break after its hyphen
-    while sz >= 1.8 - 1e-9:
+    while sz >= 1.8 - SLACK_MM:
         lines = [ln.replace("- ", "-") for ln in wrap(words, width, sz)]
         if len(lines) * sz * 1.2 <= height - 0.6 and all(
                 layout(ln, 0, 0, sz).box[2] - layout(ln, 0, 0, sz).box[0] <= width for ln in lines):
@@ -350,7 +350,7 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str | None = "
     aw, ah = area[2] - area[0], area[3] - area[1]
 
     def limit(w: float) -> float:  # a block beside the title block may run the full height
-        return ah if w <= aw - TB_W - GAP + 1e-9 else ah - TB_H - GAP
+        return ah if w <= aw - TB_W - GAP + SLACK_MM else ah - TB_H - GAP
 
     spots = free_spots(GAP)
     blks = blocks_of(groups, area, spec.language, numbers or {}, limit, GAP, spots, _SINGLE,
