@@ -20,7 +20,7 @@ from drawings.paper.fonts import choose, drawing
 from drawings.paper.i18n import lookup
 from drawings.paper.i18n import tr as words
 from drawings.paper.panel_frame import ruled_grid
-from drawings.paper.sheet import Sheet, SheetSpec, compose, sheet_spec
+from drawings.paper.sheet import Sheet, SheetSpec, compose, fits_empty, sheet_spec
 from drawings.paper.text import layout
 from plans.errors import InputError, Said
 from plans.gears.meshing import Meshing
@@ -548,23 +548,27 @@ def draw(source: GearsSolution | GearFile | str | Path, *, format: str | None = 
 
     # the meshings and the train on one sheet, the train as large as that leaves room for
     least = magnification(sol, spec) if sol.plan is not None else 1.0
-    found = fullest_on_one_sheet(([[*mesh, *trains[f]]] for f in fs if f >= least), spec, gf.path, scale)
+    from drawings.paper.merge import merged
+
     groups: list[tuple[list[Panel], str]] = []
-    if found is not None:
-        groups.append((found[0], scale(found[0])))
-        sheets = found[1]
-    else:  # a sheet of the meshings, then the train's as large as its own sheet holds
+    sheets: list[Sheet] = []
+    for f in fs if mesh else ():  # largest first: the train laid out alone, moved on as one piece
+        if f < least or not trains[f] or not all(fits_empty(p, spec.format, spec.orientation) for p in trains[f]):
+            continue
+        sets = [(mesh, mesh_scale), (trains[f], scale(trains[f]))]
+        laid = merged([s for g, t in sets for s in compose(g, spec, t, gf.path)])
+        if len(laid) == 1:
+            groups, sheets = sets, laid
+            break
+    if not sheets:  # a sheet of the meshings, then the train's as large as its own sheet holds
         if mesh:
             groups.append((mesh, mesh_scale))
         alone = fullest_on_one_sheet(([trains[f]] for f in fs if trains[f] and f >= least), spec, gf.path, scale)
         train = alone[0] if alone is not None else trains[fs[-1]]
         if train:
             groups.append((train, scale(train)))
-        sheets = []
         for panels, text in groups:
             sheets.extend(compose(panels, spec, text, gf.path))
-        from drawings.paper.merge import merged
-
         sheets = merged(sheets)  # the train on the meshing sheet where it fits; one numbering
     panels_all = tuple(p for g, _ in groups for p in g)
     return GearDrawing(gf, sol, mg, spec, panels_all, tuple(sheets))

@@ -70,7 +70,8 @@ def test_plans_draw_solves_each_file_once(path, monkeypatch):
     sheets = importlib.import_module(KINDS[kind][1])
     # the layout on the sheets solves nothing: not timed here
     monkeypatch.setattr(sheets, "compose", lambda panels, *a, **kw: [SimpleNamespace(
-        panels=panels, number=1, count=1, prims=[], render=lambda: None)])
+        panels=panels, number=1, count=1, prims=[], render=lambda: None, width=841.0, height=594.0,
+        title_box=(656.0, 534.0, 836.0, 589.0), placed=[])])
     monkeypatch.setattr("drawings.paper.merge.merged", lambda laid, *a, **kw: list(laid))
     d = drawings.draw(str(path))
     assert d.panels and len(made) == 1

@@ -21,7 +21,7 @@ from drawings.paper.common import Placer, arrow, degrees360, dot, fmt
 from drawings.paper.fonts import choose, drawing, metrics
 from drawings.paper.i18n import lookup
 from drawings.paper.panel_frame import ruled_grid
-from drawings.paper.sheet import Sheet, SheetSpec, compose, fits_empty, sheet_spec, usable
+from drawings.paper.sheet import Sheet, SheetSpec, compose, fits_empty, sheet_spec
 from drawings.paper.text import column_edges, layout
 from plans.balancing.analysis import KINDS, Balance, Polygon, Resultant
 from plans.balancing.engine import Engine
@@ -130,12 +130,9 @@ SIZES = (1.1, 1.25, 1.4, 1.5, 1.75, 2.0, 2.25, 2.5)
 
 def _emptiest(sheets: Sequence[Sheet]) -> float:
     """The part drawn of the emptiest sheet (its panels' boxes over its field less the title block)."""
-    parts = []
-    for sh in sheets:
-        a, tb = usable(sh.width, sh.height), sh.title_box
-        field = (a[2] - a[0]) * (a[3] - a[1]) - (tb[2] - tb[0]) * (tb[3] - tb[1])
-        parts.append(sum(p.width * p.height for p, _, _ in sh.placed) / field)
-    return min(parts)
+    from drawings.paper.fill import panels_part
+
+    return min(map(panels_part, sheets))
 
 
 def build_panels(es: EngineSolution, lang: str, size: float = 1.0) -> list[Panel]:

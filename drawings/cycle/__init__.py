@@ -30,6 +30,7 @@ from drawings.cycle.dynamics_diagrams import (
 from drawings.cycle.words import UNITS, tr
 from drawings.paper.backend import Recording
 from drawings.paper.common import fmt
+from drawings.paper.fill import panels_part
 from drawings.paper.panel_frame import Panel
 from drawings.paper.sheet import Sheet, SheetSpec, compose
 from plans.cycle import spline
@@ -270,7 +271,7 @@ def _key(sheets: Sequence[Sheet], axis: float) -> tuple[int, bool, float, float,
     then none of them more than a third empty; then the longer axis; then its emptiest sheet's
     part drawn (to 0.1 %), then all of them."""
     parts = [_used(sh) for sh in sheets]
-    return -len(sheets), min(map(_drawn, sheets)) >= 2 / 3, axis, round(min(parts), 3), sum(parts)
+    return -len(sheets), min(map(panels_part, sheets)) >= 2 / 3, axis, round(min(parts), 3), sum(parts)
 
 
 def fitting_diagrams(sol: Solution, dg: Diagrams, spec: SheetSpec) -> list[Panel]:
@@ -287,16 +288,6 @@ def fitting_diagrams(sol: Solution, dg: Diagrams, spec: SheetSpec) -> list[Panel
             break
         panels = diagram_panels(smaller, spec.language, spec.first_position)
     return panels
-
-
-def _drawn(sheet: Sheet) -> float:
-    """The part of a sheet's field (inside the frame, less the title block) its panels cover."""
-    from drawings.paper.sheet import usable
-
-    a = usable(sheet.width, sheet.height)
-    tb = sheet.title_box
-    return sum(p.width * p.height for p, _, _ in sheet.placed) / (
-        (a[2] - a[0]) * (a[3] - a[1]) - (tb[2] - tb[0]) * (tb[3] - tb[1]))
 
 
 def _used(sheet: Sheet) -> float:

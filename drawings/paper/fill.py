@@ -21,6 +21,14 @@ def drawn_part(sheet: Sheet) -> float:
     return float(shapely.union_all(boxes).intersection(field).area / field.area)
 
 
+def panels_part(sheet: Sheet) -> float:
+    """The part of a sheet's field (inside the frame, less the title block) its panels cover:
+    the sum of their boxes, as placed panels never overlap (cheaper than :func:`drawn_part`)."""
+    a, tb = usable(sheet.width, sheet.height), sheet.title_box
+    return sum(p.width * p.height for p, _, _ in sheet.placed) / (
+        (a[2] - a[0]) * (a[3] - a[1]) - (tb[2] - tb[0]) * (tb[3] - tb[1]))
+
+
 def fullest_on_one_sheet(groups: Iterable[Iterable[Sequence[Panel]]], spec: SheetSpec, path: str,
                          scale: Callable[[Sequence[Panel]], str | None]
                          ) -> tuple[list[Panel], list[Sheet]] | None:
