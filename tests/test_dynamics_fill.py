@@ -17,10 +17,6 @@ SAMPLES = sorted(p for folder in ("flywheel", "engines", "projects") for p in (R
 
 #: What these sheets cannot reach yet, and why.
 SHORT = {
-    "inline4": "its polygons are collinear vectors beside fixed tables: at the next larger round scale "
-               "the sheet overflows",
-    "seed002_four_cylinder_two_stroke": "the next larger polygons take a second sheet",
-    "v6_90": "two sheets: its banks' polygons do not fit one, the second holds the rest",
     "turning_moment": "its kinematics sheet holds the plan of positions of a one-link machine alone",
     "v_engine_project": "its kinematics sheet of acceleration plans and kinematic diagrams and its "
                         "kinetostatics sheet (the linkage's sheets)",

@@ -12,6 +12,7 @@ import cmath
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from functools import partial
 from pathlib import Path
 
 from drawings.balancing.balancing_paper import engine_paper, polygon_scale
@@ -20,8 +21,8 @@ from drawings.paper.backend import CENTRE_LINE, HAIR, MAIN, Recording, Style
 from drawings.paper.common import Placer, arrow, degrees360, dot, fmt
 from drawings.paper.fonts import choose, drawing, metrics
 from drawings.paper.i18n import lookup
-from drawings.paper.panel_frame import ruled_grid
-from drawings.paper.sheet import Sheet, SheetSpec, compose, fits_empty, sheet_spec
+from drawings.paper.panel_frame import auto_length_scale, ratio_text, ruled_grid
+from drawings.paper.sheet import Sheet, SheetSpec, compose, sheet_spec
 from drawings.paper.text import column_edges, layout
 from plans.balancing.analysis import KINDS, Balance, Polygon, Resultant
 from plans.balancing.engine import Engine
@@ -30,6 +31,7 @@ from plans.balancing.solution import EngineSolution, solve_engine
 
 _W: dict[str, tuple[str, str]] = {
     "shaft": ("Схема коленчатого вала", "Crankshaft"),
+    "scale": ("М", "Scale"),
     "phase1": ("Фазовая диаграмма I порядка", "Phase diagram, first order"),
     "phase2": ("Фазовая диаграмма II порядка", "Phase diagram, second order"),
     "force-rotating": ("Силы инерции вращающихся масс", "Inertia forces of the rotating masses"),
@@ -109,30 +111,43 @@ def draw(source: EngineSolution | Engine | str | Path, *, format: str | None = N
     choose(spec.font, engine.path, font)
     metrics()
     b = es.balance
-    panels = build_panels(es, spec.language)
-    sheets = compose(panels, spec, "", engine.path)
     if spec.format in GROWN:  # where an A1 sheet has room: the figures larger, at round scales
-        for size in SIZES:
-            bigger = build_panels(es, spec.language, size)
-            if not all(fits_empty(p, spec.format, spec.orientation) for p in bigger):
-                break
-            laid = compose(bigger, spec, "", engine.path)
-            if len(laid) <= len(sheets) and _emptiest(laid) > _emptiest(sheets):
-                panels, sheets = bigger, laid
+        panels, sheets = _grown(es, spec)
+    else:
+        panels = build_panels(es, spec.language)
+        sheets = compose(panels, spec, "", engine.path)
     return BalancingDrawing(engine, b, spec, tuple(panels), tuple(sheets))
 
 
 #: The formats whose balancing sheets take larger figures where they have room, and the sizes
 #: tried (times the A1 ones: the polygons' round scales, the phase diagrams, the crankshaft).
 GROWN = ("A1", "A2")
-SIZES = (1.1, 1.25, 1.4, 1.5, 1.75, 2.0, 2.25, 2.5)
+SIZES = (1.0, 1.1, 1.25, 1.4, 1.5, 1.75, 2.0, 2.25, 2.5)
+#: The diagrams over a turn: their heights (times the A1 ones, the lowest first) and μ_α, °/mm.
+TURNS = tuple((h, d) for d in (2.0, 1.0) for h in (0.5, 0.75, 1.0, 1.5, 2.0, 2.5, 3.0, 4.0))
 
 
-def _emptiest(sheets: Sequence[Sheet]) -> float:
-    """The part drawn of the emptiest sheet (its panels' boxes over its field less the title block)."""
-    from drawings.paper.fill import panels_part
+def _grown(es: EngineSolution, spec: SheetSpec) -> tuple[list[Panel], list[Sheet]]:
+    """The panels at the sizes that keep the fewest sheets and leave the emptiest least empty
+    (:mod:`drawings.balancing.balancing_growth`)."""
+    from drawings.balancing.balancing_banks import bank_panels
+    from drawings.balancing.balancing_growth import Group, fullest
+    from drawings.balancing.balancing_turn import turn_panels
 
-    return min(map(panels_part, sheets))
+    b, e, lang = es.balance, es.engine, spec.language
+    groups = [Group(lambda s: [shaft_panel(e, lang, s)], SIZES),
+              Group(lambda s: [phase_panel(e, 1, lang, s), phase_panel(e, 2, lang, s)], SIZES)]
+    for res in (b.forces, b.moments):
+        groups += [Group(partial(_one_polygon, res[kind], lang), SIZES) for kind in KINDS]
+    groups += [Group(lambda s: bank_panels(b, lang, s), SIZES),
+               Group(lambda t: turn_panels(b, es.exact, lang, *t), TURNS, joint=False),
+               Group(lambda _: [results_panel(b, es.exact, lang)], (1.0,)),
+               Group(lambda s: [counterweights_panel(b, lang, s)], SIZES)]
+    return fullest(groups, spec, e.path)
+
+
+def _one_polygon(R: Resultant, lang: str, size: float) -> list[Panel]:
+    return [polygon_panel(R, lang, size)]
 
 
 def build_panels(es: EngineSolution, lang: str, size: float = 1.0) -> list[Panel]:
@@ -145,8 +160,10 @@ def build_panels(es: EngineSolution, lang: str, size: float = 1.0) -> list[Panel
             R = res[kind]
             panels.append(polygon_panel(R, lang, size))
     from drawings.balancing.balancing_banks import bank_panels
+    from drawings.balancing.balancing_turn import turn_panels
 
     panels += bank_panels(b, lang, size)
+    panels += turn_panels(b, es.exact, lang, size)
     panels.append(results_panel(b, es.exact, lang))
     panels.append(counterweights_panel(b, lang, size))
     return panels
@@ -160,8 +177,8 @@ def shaft_panel(e: Engine, lang: str, size: float = 1.0) -> Panel:
     plane at its z, the cylinder numbers, the reference plane and the arms l_i."""
     zs = [c.z for c in e.cylinders] + [e.reference_z]
     span = max(max(zs) - min(zs), e.r)
-    s_z = 260.0 * size / span  # mm per m along the shaft
-    s_r = 30.0 * size / e.r  # mm per m of crank radius
+    # mm per m: one drawing scale (GOST 2.302), the shaft within 260 mm and a throw's 2r within 70
+    s_z = s_r = min(auto_length_scale(span, 260.0 * size), auto_length_scale(2 * e.r, 70.0 * size))
     # cylinder 1 on the left, whichever way z runs
     sign = 1.0 if e.cylinders[0].z <= e.cylinders[-1].z else -1.0
     z0 = min(zs) if sign > 0 else max(zs)
@@ -194,7 +211,8 @@ def shaft_panel(e: Engine, lang: str, size: float = 1.0) -> Panel:
                  "note", f"shaft-arm-{c.number}")
     note = f"r = {fmt(e.r * 1000, 4, lang)} мм, λ = {fmt(e.lam, 3, lang)}, ω = {fmt(e.omega, 4, lang)} рад/с" \
         if lang == "ru" else f"r = {fmt(e.r * 1000, 4)} mm, λ = {fmt(e.lam, 3)}, ω = {fmt(e.omega, 4)} rad/s"
-    return finish("shaft", "scheme", None, rec, _t("shaft", lang), note)
+    return finish("shaft", "scheme", None, rec, _t("shaft", lang), f"{_t('scale', lang)} {ratio_text(s_z, lang)}",
+                  note)
 
 
 def phase_panel(e: Engine, order: int, lang: str, size: float = 1.0) -> Panel:

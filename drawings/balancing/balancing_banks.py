@@ -78,7 +78,7 @@ def _panel(quantity: str, kind: str, polys: list[tuple[Bank, BankPolygon]], L: L
     placer = Placer()
     paths = [_path(p) for _, p in polys]
     extent = max(max(abs(a - c) for a in pts for c in pts) for pts in paths)
-    s = polygon_scale(extent, size) / 2.0  # the bank polygons are drawn at half the polygon panels' size
+    s = polygon_scale(extent, size / 2.0)  # the bank polygons at about half the polygon panels' size, round too
     sym = ("r" if quantity == "force" else "m") + f"_{ROMAN[k]}"
     unit = _w("N*m" if quantity == "moment" else "N", lang)
     x_off = 0.0
