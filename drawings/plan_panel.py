@@ -46,7 +46,7 @@ def on_paper(plan: Plan, margin: float
     return T, Recording(), Placer(), xy, (min(xs) - margin, min(ys) - margin, max(xs) + margin, max(ys) + margin)
 
 
-def plan_panel(plan: Plan, lang: str, scale_style: str, pid: str | None = None) -> Panel:
+def plan_panel(plan: Plan, lang: str, scale_style: str, pid: str | None = None, note: str | None = None) -> Panel:
     """A velocity or acceleration plan at true size (plan mm): pole, vectors, points, lines."""
     from plans.scene.notation import pole_label
 
@@ -129,7 +129,7 @@ def plan_panel(plan: Plan, lang: str, scale_style: str, pid: str | None = None) 
     quantity = "velocity" if kind == "velocity" else "acceleration"
     title = f"{tr(kind, lang)}, φ = {angle(plan.phi_deg, lang)}°"
     return finish(pid, kind, plan.phi_deg, rec, title, scale_text(quantity, plan.scale, scale_style, lang),
-                  quantity=quantity, scale=plan.scale)
+                  note, quantity=quantity, scale=plan.scale)
 
 
 _LINE_WORDS_RU = ((re.compile(r"guide of link (\w+)"), r"напр. звена \1"),

@@ -17,7 +17,6 @@ SAMPLES = sorted(p for folder in ("flywheel", "engines", "projects") for p in (R
 
 #: What these sheets cannot reach yet, and why.
 SHORT = {
-    "turning_moment": "its kinematics sheet holds the plan of positions of a one-link machine alone",
     "v_engine_project": "its kinematics sheet of acceleration plans and kinematic diagrams and its "
                         "kinetostatics sheet (the linkage's sheets)",
 }

@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from drawings.cycle.cycle_plot import EXACT, GRAPH, Axes, number, plot_panel, wide_table
+from drawings.cycle.cycle_plot import EXACT, GRAPH, Axes, loc, number, plot_panel, wide_table
 from drawings.cycle.dynamics_diagrams import (
     a_panel,
     fly_table,
@@ -148,12 +148,14 @@ def table_panels(tables: Sequence[CycleTable], lang: str, prefix: str,
     return out
 
 
-def analogue_plans(plans: Sequence, lang: str, style: str) -> list[Panel]:
+def analogue_plans(plans: Sequence, lang: str, style: str, mu: float) -> list[Panel]:
     """The plans of velocity analogues at the table's positions (``Solution.analogue_plans``:
-    velocity plans at μ_v = μ/|ω1|, each segment the analogue v/ω1 at μ, mm per m), drawn."""
+    velocity plans at μ_v = μ/|ω1|, each segment the analogue v/ω1 at μ, mm per m, the round
+    scale written under the velocity one), drawn."""
     from drawings.plan_panel import plan_panel
 
-    return [plan_panel(p, lang, style, pid=f"analogue-{k + 1}") for k, p in enumerate(plans)]
+    note = loc(f"{tr('analogues', lang)}: μ = {fmt(mu, 4, lang)} mm/m (ω_1 = 1)", lang)
+    return [plan_panel(p, lang, style, pid=f"analogue-{k + 1}", note=note) for k, p in enumerate(plans)]
 
 
 def dynamics_panels(d: Dynamics, tables: Sequence[CycleTable], lang: str, analogues: Sequence = (),
@@ -163,7 +165,7 @@ def dynamics_panels(d: Dynamics, tables: Sequence[CycleTable], lang: str, analog
     ω(φ) and indicator diagrams' against their A1 ones."""
     titles = [f"{tr('analogues', lang)}, μ = {fmt(d.scales.analogue, 4, lang)} mm/m (ω_1 = 1)",
               tr("Ipr", lang), f"{tr('Mpr', lang)}; {tr('sign', lang)}", tr("energy", lang)]
-    plans = analogue_plans(analogues, lang, d.scene.scale_style)  # none where the first sheet has the plans
+    plans = analogue_plans(analogues, lang, d.scene.scale_style, d.scales.analogue)  # none where the first sheet has them
     return ([m_panel(d, lang, first), a_panel(d, lang, first), t_panel(d, lang, first),
              i_panel(d, lang, first), w_panel(d, lang, first, w_size), omega_panel(d, lang, first, size),
              fly_table(d, lang)]
@@ -195,7 +197,11 @@ def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_te
     if cr is not None and cr.dynamics is not None:
         sub = dataclasses.replace(spec, subtitle=tr("dynamics", lang), pins=())
         tabs = cr.tables[-4:]  # the dynamics' own: analogues, I_pr, M_pr, work and energy
-        analogues = () if scene.wants("velocity_plan") else sol.analogue_plans()  # else on the first sheet
+        analogues: Sequence = () if scene.wants("velocity_plan") else sol.analogue_plans()  # else on the first sheet
+        if analogues and spec.format in _GROWN:
+            beside = analogue_plans(analogues, lang, scene.scale_style, cr.dynamics.scales.analogue)
+            sheets, analogues = _plans_beside_positions(sheets, beside,
+                                                        analogues, lay, scene.path)
         panels = fitting_dynamics(sol, cr.dynamics, tabs, sub, analogues)
         flat = lay is not None  # the course's set: its sheets laid flat
 
@@ -220,6 +226,24 @@ def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_te
         sh.prims = []
         sh.render()
     return out
+
+
+def _plans_beside_positions(sheets: list[Sheet], panels: list[Panel], analogues: Sequence, lay,
+                            path: str) -> tuple[list[Sheet], Sequence]:
+    """The plans of velocity analogues on the drawing's last sheet, beside the plan of
+    positions, where that sheet holds no position's blocks and keeps them on one sheet (the
+    kinematics sheet a course draws), laid out as the drawing lays it (``lay``, else
+    :func:`compose`); then none are left for the dynamics sheet."""
+    if not sheets:
+        return sheets, analogues
+    own = [p for p, _, _ in sheets[-1].placed]
+    if any(p.phi is not None for p in own):
+        return sheets, analogues
+    spec = sheets[-1].spec
+    laid = lay(own + panels, spec) if lay is not None else compose(own + panels, spec, None, path)
+    if len(laid) > 1:
+        return sheets, analogues
+    return sheets[:-1] + laid, ()
 
 
 #: The formats whose dynamics sheets take longer φ axes and taller diagrams where they have room.
