@@ -99,17 +99,36 @@ def test_the_turn_diagrams_share_one_alpha_axis():
 
 @pytest.mark.parametrize("path", ENGINES, ids=[p.stem for p in ENGINES])
 def test_every_scale_on_a_balancing_sheet_is_round(path):
-    """μ of the polygons (mm per unit), of the diagrams over a turn (N or N·m per mm) and μ_α
-    are 1, 2, 2.5, 4 or 5 × 10^k; the crankshaft at a GOST 2.302 scale, written."""
+    """μ of the polygons (mm per unit), of the diagrams over a turn (N or N·m per mm), μ_α and
+    the counterweights' μ_mr are 1, 2, 2.5, 4 or 5 × 10^k; the crankshaft at a GOST 2.302
+    scale, written."""
     d = draw(path, language="en")
     texts = [p.label.plain for sh in d.sheets for pan, _, _ in sh.placed for p in pan.prims
              if p.op == "text" and p.label is not None]
     found = 0
     for t in texts:
-        for m in re.finditer(r"μ[A-Za-zα]? = ([0-9]+(?:\.[0-9]+)?)", t):
+        for m in re.finditer(r"μ[A-Za-zα]* = ([0-9]+(?:\.[0-9]+)?)", t):
             v = float(m.group(1))
             mant = v / 10 ** math.floor(math.log10(v))
             assert any(math.isclose(mant, r, rel_tol=1e-9) for r in ROUND), t
             found += 1
     assert found >= 6
     assert any(re.fullmatch(r"Scale (1:(1|2|2\.5|4|5|10|15|20|25|40|50)|(2|2\.5|4|5|10):1)", t) for t in texts)
+
+
+def test_v6_first_order_counterweights_read_back_at_their_written_scale():
+    """Two counterweights take the V6's first-order moment (a circle turning with the crank):
+    each √3 m_j r l_c over the planes' spacing, drawn as m·r at the end view's written μ_mr."""
+    path = ROOT / "samples" / "engines" / "v6_90.toml"
+    data = read_toml(path)
+    d = draw(path, language="en")
+    panel = next(p for p in d.panels if p.pid == "counterweights")
+    k = _number(_text(panel, "counterweights-scale"), "μmr")
+    first = [i for i, c in enumerate(d.balance.counterweights) if c.of == "first_order"]
+    assert len(first) == 2
+    expected = math.sqrt(3) * data["m_rec"] * data["r"] * 1e-3 * 0.1 / 0.2
+    for i in first:
+        j = next(n for n, p in enumerate(panel.prims) if p.op == "begin" and p.eid == f"cw-{i}")
+        start = panel.prims[j + 1].pts[0]
+        tip = panel.prims[j + 2].pts[0]
+        assert math.dist(start, tip) * k == pytest.approx(expected, abs=0.01 * k)  # to 0.01 mm

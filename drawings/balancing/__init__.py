@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from functools import partial
 from pathlib import Path
 
-from drawings.balancing.balancing_paper import engine_paper, polygon_scale
+from drawings.balancing.balancing_paper import diagram_scale, engine_paper, polygon_scale
 from drawings.linkage.panels import LABEL_SIZE, SMALL_SIZE, VECTOR_STYLES, Panel, finish
 from drawings.paper.backend import CENTRE_LINE, HAIR, MAIN, Recording, Style
 from drawings.paper.common import Placer, arrow, degrees360, dot, fmt
@@ -54,6 +54,7 @@ _W: dict[str, tuple[str, str]] = {
     "for": ("Для", "For"),
     "plane": ("Плоскость z, м", "Plane z, m"),
     "mr": ("m·r, кг·м", "m·r, kg·m"),
+    "kgm_mm": ("кг·м/мм", "kg·m/mm"),
     "mass": ("m, кг", "m, kg"),
     "radius": ("r, м", "r, m"),
     "angle": ("Угол, °", "Angle, °"),
@@ -163,7 +164,7 @@ def build_panels(es: EngineSolution, lang: str, size: float = 1.0) -> list[Panel
     from drawings.balancing.balancing_turn import turn_panels
 
     panels += bank_panels(b, lang, size)
-    panels += turn_panels(b, es.exact, lang, size)
+    panels += turn_panels(b, es.exact, lang, *TURNS[0])  # the lowest: they fit an A3 sheet
     panels.append(results_panel(b, es.exact, lang))
     panels.append(counterweights_panel(b, lang, size))
     return panels
@@ -430,17 +431,18 @@ def counterweights_panel(b: Balance, lang: str, size: float = 1.0) -> Panel:
     if not rows:
         return grid_panel("counterweights", _t("cw", lang), head, [[_t("none", lang), "—", "—", "—", "—", "—"]],
                           _cw_note(b, lang))
-    # an end view: crank 1 up, each counterweight's m·r as a vector at its angle
+    # an end view: crank 1 up, each counterweight's m·r as a vector at its angle, at a round scale
     rec = Recording()
     placer = Placer()
-    Rr = 22.0 * size
+    big = max(c.mass_radius for c in b.counterweights)
+    k_mr = diagram_scale(big, 22.0 * size)  # kg·m per mm
+    Rr = big / k_mr
     rec.circle((0.0, 0.0), Rr, HAIR, "cw-circle")
     rec.line((0.0, 0.0), (0.0, -Rr), Style(width=0.7), "cw-crank1")
     placer.add_line([(0.0, 0.0), (0.0, -Rr)])
     rec.text(placer.place("1", (0.0, -Rr), LABEL_SIZE, prefer=(0.0, -1.0), gap=0.8), "label", "cw-crank1-label")
-    big = max(c.mass_radius for c in b.counterweights)
     for k, c in enumerate(b.counterweights):
-        tip = engine_paper(cmath.exp(1j * c.angle) * (Rr * c.mass_radius / big), 1.0)
+        tip = engine_paper(cmath.exp(1j * c.angle) * c.mass_radius, 1.0 / k_mr)
         style = CLOSING if c.of == "rotating" else Style(width=0.5, stroke="#1f4e9c")
         arrow(rec, (0.0, 0.0), tip, style, f"cw-{k}", "vector counterweight")
         placer.add_line([(0.0, 0.0), tip])
@@ -451,7 +453,8 @@ def counterweights_panel(b: Balance, lang: str, size: float = 1.0) -> Panel:
     y0 = rec.bbox()[1]
     bx = tab.bbox()
     rec.prims.extend(tab.moved(x0 - bx[0], y0 - bx[1]).prims)
-    return finish("counterweights", "table", None, rec, _t("cw", lang), _cw_note(b, lang))
+    scale = f"μ_{{mr}} = {fmt(k_mr, 4, lang)} {_t('kgm_mm', lang)}"
+    return finish("counterweights", "table", None, rec, _t("cw", lang), scale, _cw_note(b, lang))
 
 
 def _cw_note(b: Balance, lang: str) -> str | None:
