@@ -127,13 +127,14 @@ def spread(blocks: list[tuple[Block, float, float]], area: Box, stays: Sequence[
            most: float = 1.5) -> list[tuple[Block, float, float]]:
     """Share a sheet's spare height between its bands of blocks: every block's top moves away
     from the area's top by one factor f (1 ≤ f ≤ ``most``), so nothing new overlaps and no
-    block moves more than ``gap`` further from the one above it (a wider empty band between two
-    positions reads as a sheet half drawn: the spare height stays below the last block)."""
+    position's block (a framed one) moves more than ``gap`` further from the one above it (a
+    wider empty band between two positions reads as a sheet half drawn: the spare height stays
+    below the last block)."""
     top = area[1]
     free = [(b, x, y) for b, x, y in blocks if y > top + SLACK_MM]
     if not free:
         return blocks
-    most = min([most] + [1.0 + gap / (y - top) for _, _, y in free])
+    most = min([most] + [1.0 + gap / (y - top) for b, _, y in free if b.framed])
 
     def ok(f: float) -> bool:
         for b, x, y in free:
