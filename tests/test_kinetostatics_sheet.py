@@ -134,3 +134,21 @@ def test_the_reactions_read_off_the_drawn_polygons_are_the_solved_ones(kinetic):
                 assert abs(L - F * p.scale) <= 0.01, (name, p.pid, label, L / p.scale, F)
                 checked += 1
     assert checked >= 4, (name, checked)
+
+
+def test_the_scale_cell_is_the_mechanism_s_even_under_a_larger_free_body():
+    """A free body drawn at 2:1, larger on the sheet than the two schemes at 1:1 beside it, does
+    not make the sheet's scale 2:1; nor does a dead centre's strip at 2:1 wider than the other
+    position's scheme when the 1:1 schemes cover more; without a scheme the largest panel's."""
+    from drawings.paper.panel_frame import Panel
+    from drawings.paper.sheet import sheet_scale
+
+    def panel(kind: str, w: float, h: float, mu: float) -> tuple[Panel, float, float]:
+        return Panel(f"{kind}-{w}", kind, 0.0, (), w, h, quantity="length", scale=mu), 0.0, 0.0
+
+    body = panel("group", 500.0, 200.0, 2000.0)
+    schemes = [panel("scheme", 400.0, 90.0, 1000.0), panel("scheme", 300.0, 100.0, 1000.0)]
+    strip = panel("scheme", 760.0, 45.0, 2000.0)
+    assert sheet_scale([body, *schemes], "en") == "1:1"
+    assert sheet_scale([body, strip, *schemes], "en") == "1:1"  # 34 200 mm² at 2:1 against 66 000
+    assert sheet_scale([body, panel("crank", 100.0, 100.0, 1000.0)], "en") == "2:1"
