@@ -20,6 +20,7 @@ import dataclasses
 from collections.abc import Sequence
 from typing import Any
 
+from drawings.linkage.kinetic_scales import kinetic_layout, lever_apart
 from drawings.linkage.panels import STANDARD_RATIOS, Panel
 from drawings.paper.blocks import pack_block
 from drawings.paper.i18n import tr
@@ -41,9 +42,6 @@ from plans.tolerances import SAME_ANGLE_DEG
 
 #: A scene with at least this many positions is drawn as the course's sheet set by default.
 COURSE_FROM = 12
-#: How much fuller (of the field) the least full sheet must get for a position's free bodies to
-#: be drawn at a larger scale than its mechanism.
-BODIES_GAIN = 0.02
 #: The kinds ``panels = { ... }`` names at positions, as :mod:`plans.scene.sheet` reads them.
 #: The kinematics sheet's order: the method's (positions, then velocity, then acceleration).
 ORDER = ("positions", "scheme", "centres", "velocity", "acceleration", "table")
@@ -237,8 +235,8 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
     def lay_flat(ps: list[Panel]) -> list:
         return _flat(ps, spec, scene.path)
 
-    from drawings.linkage.larger import better, full, once_each, score
-    from drawings.linkage.mixing import OWN, ascend, by_phi, memo, swapped
+    from drawings.linkage.larger import better, full, once_each
+    from drawings.linkage.mixing import OWN, ascend, memo, swapped
     from drawings.paper.sheet import TooBig
 
     W, H = spec.size
@@ -273,19 +271,16 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
                 chosen, mu, sheets = i, mu_i, bigger
         return chosen, mu, sheets
 
-    def mixed(at: Any, parts: list, best: tuple[int, float | None, list], lay: Any, scaled: bool = False,
-              part_at: Any = None) -> list:
+    def mixed(at: Any, parts: list, best: tuple[int, float | None, list], lay: Any) -> list:
         """The sheets ``best`` (every part at the solution ``best[0]``, the length scale
-        ``best[1]``) with each part's fit then raised in turn (:func:`drawings.linkage.mixing.ascend`),
-        and with ``scaled`` each part's length scale after: ``at(i)(mu)`` the panels of
-        solution ``i`` at the length scale ``mu``, ``part_at(i, mu, j)`` those of part ``j`` alone
-        (default: all of them)."""
+        ``best[1]``) with each part's fit then raised in turn (:func:`drawings.linkage.mixing.ascend`):
+        ``at(i)(mu)`` the panels of solution ``i`` at the length scale ``mu``."""
         start, mu, sheets = best
         if len(parts) < 2 or full(sheets, (W, H)):
             return sheets
         def ids(key: tuple[int, Any, int]) -> dict[str, Panel]:
-            i, m, j = key
-            return {p.pid: p for p in (at(i)(m) if part_at is None else part_at(i, m, j))}
+            i, m, _ = key
+            return {p.pid: p for p in at(i)(m)}
 
         by_id = memo(ids)
         base = at(OWN)(mu)
@@ -299,36 +294,8 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
         def more(a: list, b: list) -> bool:
             return len(b) > len(a)
 
-        fits, sheets = ascend((start,) * len(parts), len(larger), lay_fits, improves, done, more, sheets) \
-            if larger else ((start,) * len(parts), sheets)
-        if not scaled or own or mu is None:
-            return sheets
-        ups = [1000.0 * r for r in reversed(STANDARD_RATIOS)]
-
-        def above(m: float) -> list[float]:
-            return [u for u in ups if u > m * (1 + 1e-9)]
-
-        def lay_scales(ms: tuple[int, ...]) -> list:
-            return lay(swapped(base, parts, [(i, mu if m == OWN else above(mu)[m], j)
-                                             for j, (i, m) in enumerate(zip(fits, ms, strict=True))], by_id))
-
-        scales, sheets = ascend((OWN,) * len(parts), len(above(mu)), lay_scales, improves, done, more, sheets)
-        lengths = [mu if m == OWN else above(mu)[m] for m in scales]
-
-        def lay_bodies(ms: tuple[int, ...]) -> list:
-            """The groups and the initial link cut free at a larger standard scale than the
-            mechanism of their position (a free body drawn larger, as a draftsman may)."""
-            keys = []
-            for j, (i, m, mu_j) in enumerate(zip(fits, ms, lengths, strict=True)):
-                if m >= len(above(mu_j)):
-                    raise TooBig("no larger standard scale")
-                keys.append((i, mu_j if m == OWN else (mu_j, above(mu_j)[m]), j))
-            return lay(swapped(base, parts, keys, by_id))
-
-        def worth(a: list, b: list) -> bool:  # a free body at another scale than its mechanism: for a real gain
-            return improves(a, b) and score(b, (W, H))[1] >= score(a, (W, H))[1] + BODIES_GAIN
-
-        return ascend((OWN,) * len(parts), len(ups), lay_bodies, worth, done, more, sheets)[1]
+        return ascend((start,) * len(parts), len(larger), lay_fits, improves, done, more, sheets)[1] \
+            if larger else sheets
 
     def kin_of(i: int) -> Any:
         return memo(kinematics(*builders(i)))
@@ -361,16 +328,28 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
             return memo(kinetic(builders(i)[0]))
 
         dyn_at = memo(dyn_of)
-        best = fullest(grow(dyn_at(OWN), base_l, lay, own), lambda i: grow(dyn_at(i), base_l, lay, own))
-        # each position's groups, polygons and lever at its own longer scales
-        dyn_parts = [by_phi(float(sol.kinematics.phi_deg[k])) for k in forces]
+        # one standard scale for the mechanism at every position (the largest that keeps the
+        # sheets as few), one for the free bodies; each position's polygons and lever longer
+        mu, _ = grow(dyn_at(OWN), base_l, lay, own)
+        assert mu is not None
+        # each position's free bodies with their polygons, and its lever, at a fit of their own
+        # (a lever as tall as the sheet leaves the polygons room to grow all the same)
+        dyn_parts = [part for k in forces for part in lever_apart(float(sol.kinematics.phi_deg[k]))]
         alone = [{kind: [x for x in ks if x == k] if isinstance(ks, list) else ks for kind, ks in dyn_sel.items()}
                  for k in forces]  # each position's selection, its panels built alone
 
-        def part_at(i: int, mu: Any, j: int) -> list[Panel]:
-            return builders(i)[0](alone[j], None, *(mu if isinstance(mu, tuple) else (mu,)))[0]
+        def part_at(key: tuple[int, tuple[float, float], int]) -> dict[str, Panel]:
+            i, scales, j = key
+            return {p.pid: p for p in builders(i)[0](alone[j], None, *scales)[0]}
 
-        out.extend(mixed(dyn_at, dyn_parts, best, lay, scaled=True, part_at=part_at))
+        by_id = memo(part_at)
+
+        def lay_at(fits: tuple[int, ...], mu_l: float, mu_b: float) -> list:
+            base = dyn_at(OWN)((mu_l, mu_b))
+            keys = [(i, (mu_l, mu_b), j // 2) for j, i in enumerate(fits)]
+            return lay(swapped(base, dyn_parts, keys, by_id))
+
+        out.extend(kinetic_layout(lay_at, len(forces), len(larger), mu, STANDARD_RATIOS, own, (W, H)))
     for i, sh in enumerate(out):
         sh.number, sh.count = i + 1, len(out)
         sh.prims = []

@@ -126,11 +126,15 @@ def place_block(block: Block, area: Box, taken: Sequence[Box], prev: Box | None,
 def spread(blocks: list[tuple[Block, float, float]], area: Box, stays: Sequence[Box], gap: float,
            most: float = 1.5) -> list[tuple[Block, float, float]]:
     """Share a sheet's spare height between its bands of blocks: every block's top moves away
-    from the area's top by one factor f (1 ≤ f ≤ ``most``), so nothing new overlaps."""
+    from the area's top by one factor f (1 ≤ f ≤ ``most``), so nothing new overlaps and no
+    position's block (a framed one) moves more than ``gap`` further from the one above it (a
+    wider empty band between two positions reads as a sheet half drawn: the spare height stays
+    below the last block)."""
     top = area[1]
     free = [(b, x, y) for b, x, y in blocks if y > top + SLACK_MM]
     if not free:
         return blocks
+    most = min([most] + [1.0 + gap / (y - top) for b, _, y in free if b.framed])
 
     def ok(f: float) -> bool:
         for b, x, y in free:

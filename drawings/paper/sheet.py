@@ -239,14 +239,27 @@ def _title_block(rec: Recording, sh: Sheet) -> None:
 
 def sheet_scale(placed: Sequence[tuple[Panel, float, float]], lang: str) -> str:
     """The "Scale" cell as GOST 2.104 fills it: the scale (GOST 2.302) of the sheet's main
-    image, its largest panel drawn at a length scale (the others say "M 1:4" under their
-    titles); a dash where nothing on the sheet is drawn at a length scale (plans, tables)."""
+    image (the others say "M 1:4" under their titles): the mechanism's (its schemes' and plan
+    of positions', the scale they cover most of the sheet at) where the sheet draws it, else
+    its largest panel's drawn at a length scale (free bodies drawn larger than the mechanism
+    beside it do not make the sheet's scale theirs); a dash where nothing on the sheet is
+    drawn at a length scale (plans, tables)."""
     from drawings.paper.panel_frame import ratio_text
 
     drawn = [(p.width * p.height, p.scale) for p, _, _ in placed if p.quantity == "length" and p.scale]
     if not drawn:
         return "—"
+    mechanism: dict[float, float] = {}
+    for p, _, _ in placed:
+        if p.kind in MECHANISM_KINDS and p.quantity == "length" and p.scale:
+            mechanism[p.scale] = mechanism.get(p.scale, 0.0) + p.width * p.height
+    if mechanism:
+        return ratio_text(max(mechanism.items(), key=lambda t: (t[1], t[0]))[0], lang)
     return ratio_text(max(drawn, key=lambda t: t[0])[1], lang)
+
+
+#: The panels that draw the mechanism itself: the sheet's main image where there are any.
+MECHANISM_KINDS = ("positions", "scheme")
 
 
 def _cell_lines(text: str, width: float, height: float, size: float) -> list[tuple[str, float]]:

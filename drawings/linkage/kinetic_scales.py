@@ -1,0 +1,89 @@
+"""The kinetostatics sheet's scales: one standard scale (GOST 2.302) for the mechanism at
+every position, one for the free bodies (the groups and the initial link cut free) at every
+position, and each position's polygons and lever at the longest round scale the sheet has
+room for.
+
+A draftsman draws the positions of one sheet alike: a dead centre's scheme (a thin strip) at
+the scale of the other position's, not at twice it, and its free bodies at the scale of the
+other's.  The free bodies may be drawn larger than the mechanism (a standard scale or two
+above it) when the sheet gets clearly fuller so; the polygons and the lever grow by the
+longer solutions (:mod:`drawings.linkage.larger`), position by position
+(:func:`drawings.linkage.mixing.ascend`).  Of every choice tried, the one that keeps the
+fewest sheets and leaves the least of them empty is drawn.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from functools import partial
+from typing import Any
+
+from drawings.linkage.larger import better, full, score
+from drawings.linkage.mixing import OWN, ascend, by_phi
+
+#: Standard scales above the mechanism's tried for the free bodies.
+BODIES_RISE = 2
+#: How much fuller (of the field) the least full sheet must get for the free bodies to be
+#: drawn at a larger scale than the mechanism.
+BODIES_GAIN = 0.02
+
+
+def lever_apart(phi: float) -> tuple[Callable[[Any], bool], Callable[[Any], bool]]:
+    """The two parts of a position's panels on the kinetostatics sheet whose fits rise apart:
+    its free bodies with their polygons, and its lever."""
+    at = by_phi(phi)
+    return (lambda p: at(p) and p.kind != "lever"), (lambda p: at(p) and p.kind == "lever")
+
+
+def above(mu: float, ratios: Sequence[float]) -> list[float]:
+    """The standard length scales (μl, mm per m: 1000 × a GOST 2.302 ratio) larger than
+    ``mu``, smallest first."""
+    return sorted(1000.0 * r for r in ratios if 1000.0 * r > mu * (1 + 1e-9))
+
+
+def kinetic_layout(lay_at: Callable[[tuple[int, ...], float, float], list], positions: int, fits: int,
+                   mu: float, ratios: Sequence[float], own: bool, size: tuple[float, float]) -> list:
+    """The kinetostatics sheets: ``lay_at(fits, μl, μl of the free bodies)`` lays them out with
+    the free bodies and polygons of position ``j`` at the longer solution ``fits[2j]`` and its
+    lever at ``fits[2j + 1]`` (:data:`OWN`: the sheet's own), the mechanism at ``mu`` (the
+    largest standard scale that keeps the sheets as few) and the free bodies at ``mu`` or a
+    standard scale or two above it (with ``own``, the file's length scale, at it).  The fits
+    rise position by position, then (while the sheets are not full) part by part: each ascent
+    is greedy, and either may stop short of the other.  ``fits``: the longer solutions."""
+    from drawings.paper.sheet import TooBig
+
+    laid: dict[tuple[tuple[int, ...], float], list] = {}
+
+    def at(mb: float, together: bool, f: tuple[int, ...]) -> list:
+        key = (tuple(x for x in f for _ in (0, 1)) if together else f, mb)
+        if key not in laid:
+            laid[key] = lay_at(key[0], mu, mb)
+        return laid[key]
+
+    def done(s: list) -> bool:
+        return full(s, size)
+
+    def more(a: list, b: list) -> bool:
+        return len(b) > len(a)
+
+    def improves(a: list, b: list) -> bool:
+        return better(a, b, size)
+
+    best: list | None = None
+    for mb in [mu] + ([] if own else above(mu, ratios)[:BODIES_RISE]):
+        for together in (True, False):
+            n = positions if together else 2 * positions
+            try:
+                _, got = ascend((OWN,) * n, fits, partial(at, mb, together), improves, done, more)
+            except TooBig:  # a free body too big for an empty sheet: none larger either
+                assert best is not None
+                return best
+            if best is None or mb == mu and improves(best, got):
+                best = got
+            elif improves(best, got) and (len(got) < len(best) or
+                                          score(got, size)[1] >= score(best, size)[1] + BODIES_GAIN):
+                best = got  # free bodies larger than the mechanism: for a real gain
+            if done(best):
+                return best
+    assert best is not None
+    return best
