@@ -193,3 +193,40 @@ def test_left_out_where_the_sheet_says_so():
         data["sheet"] = sheet
         d = drawings.draw(scene_from_dict(data, str(SAMPLES / "four_bar.toml")))
         assert not any(p.pid.startswith("diagram") for sh in d.sheets for p, _, _ in sh.placed), sheet
+
+
+@pytest.mark.parametrize("name, kind", [("triad_press", "slider"), ("triad_crusher", "rocker"),
+                                        ("triad_rocking_block", "rocker")])
+def test_a_triads_output_is_its_leash_on_the_frame_stopped_at_its_extremes(name, kind):
+    """A class III scene's output is its triad's leash on the frame (a press's ram, a crusher's
+    swing link, the rocking block): its diagrams are drawn, and its extremes, found by
+    bisection, are where the second solver (Newton on the loop equations, apart from the
+    engine's) finds it stopped, at the largest and least of its coordinate over a revolution
+    every half degree; the working stroke the slower."""
+    from plans.accuracy.newton import seed_from
+    from plans.accuracy.newton import solve as newton
+    from plans.kinematics.extreme import output_of
+
+    sol = plans.solve(SAMPLES / "class3" / f"{name}.toml")
+    out = output_of(sol.scene)
+    assert (out.kind, out.link) == (kind, 5)
+    assert sol.output_diagrams() is not None
+    st = sol.strokes()[0]
+    assert st.working_span > 180.0  # K > 1
+    seed = seed_from(sol.kinematics, 0)
+    assert float(sol.kinematics.phi_deg[0]) == 0.0
+
+    def coordinate(phis):
+        got = newton(sol.scene, phis, seed=seed, order=1)
+        r0, theta = got.pose[5]
+        v0, omega = got.rates[5][:2]
+        if kind == "rocker":
+            return np.unwrap(theta), omega
+        u = np.conj(out.joint.guide.direction)
+        return (r0 * u).real, (v0 * u).real
+
+    c, rate = coordinate(np.arange(0.0, 360.0, 0.5))
+    c_ext, rate_ext = coordinate(np.array([0.0, st.working_deg, st.idle_deg]))
+    assert np.max(np.abs(rate_ext[1:])) < 1e-6 * np.max(np.abs(rate))
+    lo, hi = sorted(c_ext[1:])
+    assert lo <= np.min(c) + 1e-9 * np.ptp(c) and hi >= np.max(c) - 1e-9 * np.ptp(c)

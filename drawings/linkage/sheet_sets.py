@@ -423,7 +423,7 @@ def _with_optional(kin_layout: Callable[[list[Panel]], list], diagrams: list[Pan
         laid = kin_layout(diagrams + list(extra))
         got = score(laid, size)
         if got[0] == -1 and got[1] >= FULL and drawn():
-            return laid  # one sheet two thirds full: no layout without them takes fewer or is fuller than that
+            return laid  # one sheet two thirds full passes whatever the sheets without them are
         if bare is None:
             bare = kin_layout(diagrams)
         was = score(bare, size)
