@@ -108,9 +108,15 @@ class Solution:
         the analogues) this one's, solved once for both."""
         if fit == self.fit:
             return self
-        other = Solution(self.scene, fit)
-        other._common = self._common
-        return other
+        self._common.setdefault(("at fit", self.fit), self)
+
+        def make() -> Solution:
+            other = Solution(self.scene, fit)
+            other._common = self._common
+            return other
+
+        got: Solution = self._shared(("at fit", float(fit)), make)  # one Solution per fit, however often asked
+        return got
 
     def _part(self, key: Any, make: Callable[[], Any]) -> Any:
         """A part at this fit, made once; a construction without an answer names the scene's file."""
@@ -271,22 +277,39 @@ class Solution:
         for the scene's; made once per length (None unless asked for)."""
         if not self.scene.wants("diagrams"):
             return None
-        from dataclasses import replace as with_length
-
-        from plans.cycle.diagrams import diagrams
         from plans.cycle.spec import diagrams_spec
 
-        return self._shared(("diagrams", length_mm), lambda: diagrams(
-            self.scene, with_length(diagrams_spec(self.scene), length_mm=length_mm)))
+        return self._shared(("diagrams", length_mm), lambda: self._diagrams_of(
+            replace(diagrams_spec(self.scene), length_mm=length_mm)))
+
+    def output_diagrams(self, length_mm: float = 240.0) -> Diagrams | None:
+        """The output's kinematic diagrams a course's kinematics sheet draws by default
+        (:func:`plans.cycle.spec.output_diagrams_spec`) at a φ axis of ``length_mm``; made
+        once per length (None where the scene has no slider or rocker on the frame)."""
+        def make() -> Diagrams | None:
+            from plans.cycle.spec import output_diagrams_spec
+
+            spec = output_diagrams_spec(self.scene, length_mm)
+            return None if spec is None else self._diagrams_of(spec)
+
+        return self._shared(("output diagrams", length_mm), make)
 
     @property
     def diagrams(self) -> Diagrams | None:
         """Kinematic diagrams by graphical differentiation (None unless asked for)."""
         if not self.scene.wants("diagrams"):
             return None
-        from plans.cycle.diagrams import diagrams
+        from plans.cycle.spec import diagrams_spec
 
-        return self._shared("diagrams", lambda: diagrams(self.scene))
+        return self._shared("diagrams", lambda: self._diagrams_of(diagrams_spec(self.scene)))
+
+    def _diagrams_of(self, spec: Any) -> Diagrams:
+        """The diagrams of ``spec`` drawn off the exact motion over its grid, solved once for
+        every φ axis, pole and scale (:func:`plans.cycle.diagrams.motion_key`) and every fit."""
+        from plans.cycle.diagrams import diagrams, exact_motions, motion_key
+
+        exact = self._shared(("diagram motions", *motion_key(spec)), lambda: exact_motions(self.scene, spec))
+        return diagrams(self.scene, spec, exact)
 
     def solve_all(self) -> Solution:
         """Every part the scene asks for, now, in the order of the method (the first part

@@ -26,8 +26,21 @@ def four_bar():
     return draw(SAMPLES / "four_bar.toml")
 
 
-def test_plans_drawn_larger_where_the_sheet_has_room(four_bar):
-    """The four-bar's kinematics sheet at the A1 lengths is left 0.47 empty: its velocity plans
+@pytest.fixture(scope="module")
+def four_bar_plans_alone():
+    """The four-bar's sheets without the output's kinematic diagrams (``panels = { diagrams =
+    false }``): a kinematics sheet of the plan of positions and the plans alone."""
+    from plans.io import read_toml
+    from plans.kinematics.placing import scene_from_dict
+
+    data = read_toml(SAMPLES / "four_bar.toml")
+    data["sheet"] = {"panels": {"diagrams": False}}
+    return draw(scene_from_dict(data, str(SAMPLES / "four_bar.toml")))
+
+
+def test_plans_drawn_larger_where_the_sheet_has_room(four_bar_plans_alone):
+    """The four-bar's kinematics sheet of the plans alone (no diagrams: they take this room by
+    default, tests/test_output_diagrams.py) at the A1 lengths is left 0.47 empty: its velocity plans
     are drawn at a larger round scale than the engine's A1 one, every one written on its panel
     and the one its known vector p_v a is drawn at (v_A = ω1·l_OA from the scene, not the plan)."""
     sol = plans.solve(SAMPLES / "four_bar.toml")  # the A1 lengths
@@ -36,7 +49,7 @@ def test_plans_drawn_larger_where_the_sheet_has_room(four_bar):
     crank = scene.links[scene.driver.link]
     v_a = abs(scene.driver.omega) * abs(crank.points[crank.axis[1]] - crank.points[crank.axis[0]])
     grown = 0
-    for sh in four_bar.sheets:
+    for sh in four_bar_plans_alone.sheets:
         root = ET.fromstring(sh.svg())
         for p, _, _ in sh.placed:
             if p.kind != "velocity":

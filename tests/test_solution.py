@@ -236,6 +236,7 @@ def test_plans_draw_solves_each_scene_once(path, monkeypatch):
         getattr(sol, part)
     sol.revolution()
     sol.strokes()  # the output's extreme positions on the plan of positions
+    sol.output_diagrams()  # the output's kinematic diagrams at one φ axis: every other axis reads its exact grid
     if not scene.wants("velocity_plan"):
         sol.analogue_plans()
     solves.clear()

@@ -233,8 +233,12 @@ def _draw(sol: Solution, spec: SheetSpec) -> Drawing:
         from drawings.linkage.larger import longer, may_grow
 
         larger = [lambda t=t: builders(t()) for t in longer(sol)] if may_grow(sol, spec) else []
-        sheets = course_sheets(sol, spec, *builders(sol), diagrams, larger)
-        panels = [p for sh in sheets for p, _, _ in sh.placed if p not in diagrams]  # the linkage's
+        offered: list[list[Panel]] = [diagrams]  # every diagram panel the sheets may have taken
+        optional = [] if diagrams or not _output_diagrams_wanted(sol, spec) else [
+            lambda axis=axis: _output_diagrams(sol, spec, axis, offered) for axis in OUTPUT_AXES_MM]
+        sheets = course_sheets(sol, spec, *builders(sol), diagrams, larger, optional)
+        theirs = {id(p) for ps in offered for p in ps}
+        panels = [p for sh in sheets for p, _, _ in sh.placed if id(p) not in theirs]  # the linkage's
         if sc.wants("dynamics"):  # the dynamics' sheets follow
             from drawings.cycle import extend
             from drawings.linkage.sheet_sets import flat_sheets
@@ -252,6 +256,32 @@ def _draw(sol: Solution, spec: SheetSpec) -> Drawing:
 
         sheets = extend(sol, spec, sheets, None)
     return Drawing(sc, spec, tuple(panels), tuple(sheets), mu_l)
+
+
+#: The φ axes (mm) the output's kinematic diagrams are tried at on the course's kinematics
+#: sheet, longest first (:func:`drawings.linkage.sheet_sets.course_sheets`).
+OUTPUT_AXES_MM = (240.0, 200.0, 160.0, 120.0)
+
+
+def _output_diagrams_wanted(sol: Solution, spec: SheetSpec) -> bool:
+    """The course's kinematics sheet draws the output's diagrams by default: unless the scene
+    has ``[diagrams]`` of its own, or leaves them out (``panels = { diagrams = false }``, or a
+    ``panels = [...]`` list without "diagrams")."""
+    if sol.scene.wants("diagrams") or not dict(spec.choice).get("diagrams", True):
+        return False
+    return spec.panels is None or "diagrams" in spec.panels
+
+
+def _output_diagrams(sol: Solution, spec: SheetSpec, axis: float, offered: list[list[Panel]]) -> list[Panel] | None:
+    """The output's kinematic diagrams' panels at a φ axis of ``axis`` mm (kept in ``offered``);
+    None where the scene has no output to draw."""
+    from drawings.cycle import diagram_panels
+
+    dg = sol.output_diagrams(axis)
+    if dg is None:
+        return None
+    offered.append(diagram_panels(dg, spec.language, spec.first_position))
+    return offered[-1]
 
 
 def _fuller_blocks(sol: Solution, spec: SheetSpec, nums: dict[float, int], panels: list[Panel],

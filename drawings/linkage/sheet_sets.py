@@ -17,7 +17,7 @@ sheets stay as few, so an A1 sheet is not left half empty.
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import Any
 
 from drawings.linkage.kinetic_scales import kinetic_layout, lever_apart
@@ -171,14 +171,19 @@ def flat_sheets(panels: Sequence[Panel], spec: SheetSpec, path: str = "<scene>")
 
 
 def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
-                  diagrams: Sequence[Panel] = (), larger: Sequence[Any] = ()) -> list[Sheet]:
+                  diagrams: Sequence[Panel] = (), larger: Sequence[Any] = (),
+                  optional: Sequence[Callable[[], Sequence[Panel] | None]] = ()) -> list[Sheet]:
     """The kinematics sheet(s), then the kinetostatics sheet(s).  ``build(sel, mu_positions,
     mu_l)`` makes the panels of a selection (:func:`drawings.linkage.build_panels`),
     ``positions(mu, bold)`` the plan of positions at μl = ``mu``; ``diagrams`` (the kinematic
     diagrams) go on the kinematics sheet after the plans.  ``larger``: thunks giving the
     (build, positions) of the scene solved with longer plans (:mod:`drawings.linkage.larger`),
     tried in turn for each of the two sheets: the one that keeps as few sheets and leaves the
-    least of them empty is drawn."""
+    least of them empty is drawn.  ``optional``: thunks of panels (the output's kinematic
+    diagrams at φ axes from the longest) the kinematics sheet takes after the plans, the first
+    whose panels fit an empty sheet and, laid out with the rest, add no sheet and leave none
+    emptier than two thirds or than it is without them (a thunk giving None ends the search);
+    the kinetostatics sheet is laid out once whatever they are."""
     from drawings.paper.sheet import fits_empty
 
     sel = selection(sol, spec, "course")
@@ -194,21 +199,34 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
                    centres=[k for k in sel["centres"] if k in forces], table=[k for k in sel["table"] if k in forces],
                    positions=False, legend=False, bold=[])
 
-    def kinematics(build: Any, positions: Any) -> Any:
-        first: list[Panel] = []
+    #: per solution (its index): the length scale its kinematics panels were first built at,
+    #: those panels but the legend, the legend; built once whatever diagrams are tried with them
+    built: dict[int, tuple[float | None, list[Panel], list[Panel]]] = {}
+
+    def kinematics(i: int, dia: Sequence[Panel]) -> Any:
+        build, positions = builders(i)
 
         def kinematic(mu: float | None) -> list[Panel]:
             """The kinematics sheet's panels, the plan of positions at ``mu`` (the others drawn once)."""
-            if first:
-                return [positions(mu, kin_sel["bold"]) if p.kind == "positions" else p for p in first]
-            panels, _ = build(kin_sel, mu, None)  # the plans of one kind together, in position order
-            panels = sorted(panels, key=_order)
-            legend = [p for p in panels if p.kind == "legend"]
-            rest = [p for p in panels if p.kind != "legend"]
-            first.extend(rest + list(diagrams) + legend)
-            return first
+            if i not in built:
+                panels, _ = build(kin_sel, mu, None)  # the plans of one kind together, in position order
+                panels = sorted(panels, key=_order)
+                built[i] = (mu, [p for p in panels if p.kind != "legend"], [p for p in panels if p.kind == "legend"])
+            mu0, rest, legend = built[i]
+            first = rest + list(dia) + legend
+            if mu == mu0:
+                return first
+            return [positions_at(i, mu) if p.kind == "positions" else p for p in first]
 
         return kinematic
+
+    drawn_at: dict[tuple[int, float | None], Panel] = {}
+
+    def positions_at(i: int, mu: float | None) -> Panel:
+        """The plan of positions of solution ``i`` at μl = ``mu``, drawn once."""
+        if (i, mu) not in drawn_at:
+            drawn_at[i, mu] = builders(i)[1](mu, kin_sel["bold"])
+        return drawn_at[i, mu]
 
     def grow(make, start: float | None, lay, own: bool) -> tuple[float | None, list]:
         """The largest standard scale from ``start`` up that keeps as few sheets, and the
@@ -297,16 +315,22 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
         return ascend((start,) * len(parts), len(larger), lay_fits, improves, done, more, sheets)[1] \
             if larger else sheets
 
-    def kin_of(i: int) -> Any:
-        return memo(kinematics(*builders(i)))
-
-    kin_at = memo(kin_of)
-    best = fullest(grow(kin_at(OWN), base_pos, lay_flat, own), lambda i: grow(kin_at(i), base_pos, lay_flat, own))
     # the velocity and the acceleration plans each at its own longer scale (one part with a
     # table of readings: it reads both kinds at their scales)
     kin_parts = [lambda p: p.kind in ("velocity", "acceleration", "table")] if kin_sel["table"] else [
         lambda p: p.kind == "velocity", lambda p: p.kind == "acceleration"]
-    kin_sheets = mixed(kin_at, kin_parts, best, lay_flat)
+
+    def kin_layout(dia: Sequence[Panel]) -> list:
+        """The kinematics sheet(s) with ``dia`` after the plans, at their fullest."""
+        def kin_of(i: int) -> Any:
+            return memo(kinematics(i, dia))
+
+        kin_at = memo(kin_of)
+        best = fullest(grow(kin_at(OWN), base_pos, lay_flat, own), lambda i: grow(kin_at(i), base_pos, lay_flat, own))
+        return mixed(kin_at, kin_parts, best, lay_flat)
+
+    kin_sheets = kin_layout(diagrams) if not optional else _with_optional(
+        kin_layout, list(diagrams), optional, spec, lambda: bool(built[OWN][1] or built[OWN][2]))
     out: list[Sheet] = []
     named = dataclasses.replace(spec, subtitle=spec.subtitle or tr("kinematics_sheet", spec.language))
     for placed in kin_sheets:
@@ -355,6 +379,36 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
         sh.prims = []
         sh.render()
     return out
+
+
+def _with_optional(kin_layout: Callable[[list[Panel]], list], diagrams: list[Panel],
+                   optional: Sequence[Callable[[], Sequence[Panel] | None]], spec: SheetSpec,
+                   drawn: Callable[[], bool]) -> list:
+    """The kinematics sheets with the first of ``optional`` that keeps them as few and none
+    emptier than :data:`drawings.linkage.larger.FULL` or than they are without it (see
+    :func:`course_sheets`), else without any.  ``drawn()``: whether the sheets have panels of
+    their own (read once one layout is made); one full sheet needs no layout without them."""
+    from drawings.linkage.larger import FULL, score
+    from drawings.paper.sheet import fits_empty
+
+    size = spec.size
+    bare: list | None = None
+    for make in optional:
+        extra = make()
+        if extra is None:
+            break
+        if not all(fits_empty(p, spec.format, spec.orientation) for p in extra):
+            continue
+        laid = kin_layout(diagrams + list(extra))
+        got = score(laid, size)
+        if got[0] == -1 and got[1] >= FULL and drawn():
+            return laid  # one sheet two thirds full passes whatever the sheets without them are
+        if bare is None:
+            bare = kin_layout(diagrams)
+        was = score(bare, size)
+        if got[0] >= was[0] and got[1] >= min(was[1], FULL):
+            return laid
+    return kin_layout(diagrams) if bare is None else bare
 
 
 def _order(p: Panel) -> int:

@@ -143,18 +143,48 @@ def _differentiate(phi: R, y: R, method: str, periodic_slope: float) -> tuple[R,
     return phi, d
 
 
-def diagrams(scene: Scene, spec: DiagramsSpec | None = None) -> Diagrams:
-    """s, v, a diagrams of every subject of ``[diagrams]``."""
+@dataclass(frozen=True, slots=True)
+class Motions:
+    """The exact motion (s, v, a and the unit of s) of every subject of a diagrams' spec over
+    its dense grid of crank angles: what no φ axis, pole or scale changes."""
+
+    dense_deg: R  # EXACT_PER_STEP samples per interval, the closing node last
+    motions: tuple[tuple[R, R, R, str], ...]  # in the order of the subjects (points, then links)
+
+
+def motion_key(spec: DiagramsSpec) -> tuple[object, ...]:
+    """What :func:`exact_motions` reads of ``spec``: diagrams of equal keys share one."""
+    return spec.points, spec.links, spec.phi_deg, spec.s_from
+
+
+def _subjects(spec: DiagramsSpec) -> list[tuple[str, bool]]:
+    return [(p, False) for p in spec.points] + [(str(k), True) for k in spec.links]
+
+
+def exact_motions(scene: Scene, spec: DiagramsSpec) -> Motions:
+    """The exact analysis (to accelerations) over the dense grid of ``spec``'s revolution, and
+    every subject's s, v, a read off it."""
+    n = len(spec.phi_deg)
+    phi0 = spec.phi_deg[0]
+    dense = phi0 + 360.0 * np.arange(n * EXACT_PER_STEP + 1) / (n * EXACT_PER_STEP)
+    kin = solve(scene, dense, order=2)
+    w = abs(scene.driver.omega)
+    return Motions(dense, tuple(_motion(scene, kin, s, is_link, w, spec.s_from) for s, is_link in _subjects(spec)))
+
+
+def diagrams(scene: Scene, spec: DiagramsSpec | None = None, exact: Motions | None = None) -> Diagrams:
+    """s, v, a diagrams of every subject of ``[diagrams]`` (or of ``spec``), drawn off
+    ``exact`` (:func:`exact_motions` of a spec of the same :func:`motion_key`; default: solved
+    here)."""
     spec = spec or diagrams_spec(scene)
     w = abs(scene.driver.omega)
     n = len(spec.phi_deg)
     phi0 = spec.phi_deg[0]
     nodes = phi0 + 360.0 * np.arange(n + 1) / n
-    dense = phi0 + 360.0 * np.arange(n * EXACT_PER_STEP + 1) / (n * EXACT_PER_STEP)
-    kin = solve(scene, np.concatenate([dense]), order=2)
+    exact = exact or exact_motions(scene, spec)
+    dense, motions = exact.dense_deg, list(exact.motions)
     mu_phi = spec.length_mm / (2 * math.pi)
-    subjects = [(p, False) for p in spec.points] + [(str(k), True) for k in spec.links]
-    motions = [_motion(scene, kin, s, is_link, w, spec.s_from) for s, is_link in subjects]
+    subjects = _subjects(spec)
     # one pole per differentiation for the sheet (H1 for v, H2 for a): what the fastest subject needs
     H1, H2 = spec.pole_mm, spec.pole_mm
     if H1 is None or H2 is None:

@@ -225,3 +225,22 @@ def check_table(scene: Scene, key: str) -> None:
     """``[dynamics]`` or ``[diagrams]`` given where the scene does not ask for it: its keys
     checked all the same (a misspelt key fails as it would where it is used)."""
     _table(scene, key, _DYN_KEYS if key == "dynamics" else _DIA_KEYS)
+
+
+def output_diagrams_spec(scene: Scene, length_mm: float = 240.0) -> DiagramsSpec | None:
+    """The kinematic diagrams a course's kinematics sheet draws when the scene has no
+    ``[diagrams]`` of its own: s, v, a of the output (:func:`plans.kinematics.extreme.output_of`,
+    a slider's pin, or a rocker's angle φ, ω, ε), by chords, over the 12 positions of a
+    revolution from the driver's first angle; None where the scene has no such output or its
+    crank stands still."""
+    from plans.kinematics.extreme import output_of
+
+    if scene.driver.omega == 0:
+        return None
+    try:
+        out = output_of(scene)
+    except InputError:
+        return None  # no slider or rocker on the frame: no output to draw
+    pts, links = ((out.point,), ()) if out.kind == "slider" else ((), (out.link,))
+    return DiagramsSpec(pts, links, QUANTITIES, _positions(scene, {}, "diagrams", equal=True), "chords", None,
+                        length_mm)

@@ -119,8 +119,10 @@ def _on_frame(scene: Scene, lid: int) -> Output | None:
 
 
 def output_of(scene: Scene, field: str = "driver.extreme_of") -> Output:
-    """The output the scene names (``[driver] extreme_of``) or the last group's."""
-    from plans.kinematics.structure import Group, analyse
+    """The output the scene names (``[driver] extreme_of``) or the last group's: of a dyad its
+    second link or its first, of a triad its third leash, second, first or its base link (a
+    press's ram, a crusher's swing link), the first on the frame."""
+    from plans.kinematics.structure import Group, TriadGroup, analyse
 
     d = scene.raw.get("driver", {})
     want = d.get("extreme_of") if isinstance(d, dict) else None
@@ -140,9 +142,13 @@ def output_of(scene: Scene, field: str = "driver.extreme_of") -> Output:
         return (sliders or outs)[0]
     st = analyse(scene)
     for g in reversed(st.groups):
-        if not isinstance(g, Group):
+        if isinstance(g, Group):
+            lids: tuple[int, ...] = (g.links[1], g.links[0])
+        elif isinstance(g, TriadGroup):
+            lids = tuple(reversed(g.links))
+        else:
             continue
-        for lid in (g.links[1], g.links[0]):
+        for lid in lids:
             o = _on_frame(scene, lid)
             if o is not None:
                 return o
@@ -278,9 +284,10 @@ def _crank_angle(scene: Scene, A: complex) -> float:
 
 
 def _closed_form(scene: Scene, out: Output, near: float, lo: float, hi: float) -> float | None:
-    """The extreme in closed form when the output's group hangs on the crank; None otherwise
-    (or when no candidate falls in the bracket the samples give)."""
-    from plans.kinematics.structure import analyse
+    """The extreme in closed form when the output's group, a dyad, hangs on the crank; None
+    otherwise (a triad's output is bisected; or when no candidate falls in the bracket the
+    samples give)."""
+    from plans.kinematics.structure import Group, analyse
 
     d = scene.driver
     O = scene.frame_points[d.pivot]
@@ -288,7 +295,7 @@ def _closed_form(scene: Scene, out: Output, near: float, lo: float, hi: float) -
     pin = crank.axis[1]
     r = abs(crank.points[pin] - crank.points[d.pivot])
     group = next((g for g in analyse(scene).groups if out.link in getattr(g, "links", ())), None)
-    if group is None or set(group.known) != {d.link, scene.frame} or len(group.joints) != 3:
+    if not isinstance(group, Group) or set(group.known) != {d.link, scene.frame} or len(group.joints) != 3:
         return None
     j1, j2, j3 = group.joints
     if j1.point != pin or j1.kind != "R":

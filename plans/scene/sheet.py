@@ -20,7 +20,7 @@ SHEET_FORMATS = ("A1", "A2", "A3", "A4")
 
 
 PANEL_KINDS = ("positions", "scheme", "velocity", "acceleration", "table", "group", "crank", "lever", "legend",
-               "centres")
+               "centres", "diagrams")
 _KEYS = {"format", "orientation", "language", "title", "designation", "subtitle", "author",
          "checked_by", "approved_by", "group", "organization", "date", "first_sheet", "total_sheets",
          "panels", "positions", "trace", "pins", "set"}
@@ -30,7 +30,7 @@ SHEET_SETS = ("course", "positions")
 #: What ``panels = { ... }`` may choose: the kinds drawn at chosen positions (a list of position
 #: numbers, "all" or "none") and the drawing-wide ones (true or false).
 PANEL_CHOICE_AT = ("scheme", "velocity", "acceleration", "forces", "lever", "table", "centres")
-PANEL_CHOICE_WHOLE = ("positions", "legend")
+PANEL_CHOICE_WHOLE = ("positions", "legend", "diagrams")  # diagrams: the course's default ones of the output
 _KEYS |= {"acceleration_pole"}  # the notation, read with the scales (plans.scene.notation)
 _KEYS |= {"first_position"}  # the number of the first position on every panel (1 or 0)
 #: The sheets' fonts: "dejavu" (DejaVu Sans) or "gost" (osifont, a GOST 2.304 type B font, with
