@@ -7,10 +7,9 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-import shapely
 
 from drawings import draw
-from drawings.paper.sheet import title_box, usable
+from drawings.paper.fill import drawn_part
 
 ROOT = Path(__file__).resolve().parents[1]
 KINDS = ("gears", "cams", "synthesis")
@@ -28,21 +27,13 @@ NOT_TWO_THIRDS: dict[str, str] = {
 }
 
 
-def covered(sheet) -> float:
-    """The union of the placed panels' boxes over the field: the frame's inside less the title
-    block (computed here from the sheet's size, not taken from the layout)."""
-    field = shapely.box(*usable(sheet.width, sheet.height)).difference(shapely.box(*title_box(sheet.width, sheet.height)))
-    boxes = [shapely.box(x, y, x + p.width, y + p.height) for p, x, y in sheet.placed]
-    return shapely.union_all(boxes).intersection(field).area / field.area
-
-
 @pytest.mark.parametrize("path", SAMPLES, ids=lambda p: f"{p.parent.name}-{p.stem}")
 def test_a1_sheet_at_least_two_thirds_drawn(path, request):
     key = f"{path.parent.name}/{path.stem}"
     if key in NOT_TWO_THIRDS:
         request.applymarker(pytest.mark.xfail(reason=NOT_TWO_THIRDS[key], strict=True))
     d = draw(path, format="A1")
-    fills = [covered(sh) for sh in d.sheets]
+    fills = [drawn_part(sh) for sh in d.sheets]
     assert all(sh.width == 841 and sh.height == 594 for sh in d.sheets)
     assert min(fills) >= 2 / 3, [round(f, 3) for f in fills]
 
