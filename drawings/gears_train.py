@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from dataclasses import dataclass
 
 from drawings.linkage.panels import Panel, finish
 from drawings.paper.backend import MAIN, PAPER, THICK, THIN, Recording, Style
@@ -17,6 +18,7 @@ from drawings.paper.panel_frame import ruled_grid
 from drawings.paper.sheet import SheetSpec
 from drawings.paper.text import layout
 from plans.gears.solve import GearSolution
+from plans.kinematics.scales import is_round, round_down, round_scale, round_up
 from plans.language import SHEET_WORDS
 
 AXIS = Style(stroke="#000", width=0.25, dash=(8.0, 1.5, 1.0, 1.5), cls="axis")
@@ -178,9 +180,10 @@ def scheme_panel(sol: GearSolution, lang: str, f: float = 1.0) -> Panel:
                   f"μ_l = {fmt(plan.mu_l * f, 4, lang)} {'мм/м' if lang == 'ru' else 'mm/m'}")
 
 
-def velocity_panel(sol: GearSolution, lang: str, f: float = 1.0) -> Panel:
+def velocity_panel(sol: GearSolution, lang: str, f: float = 1.0, g: float = 1.0) -> Panel:
     """The plan of linear velocities beside the scheme (its heights the scheme's), each
-    shaft's line through its known points; ``f`` magnifies the engine's plan (μ × f)."""
+    shaft's line through its known points; ``f`` magnifies the engine's plan (μ_l and μ_v × f),
+    ``g`` its velocities once more (μ_v × f·g: its own round scale)."""
     plan = sol.plan
     assert plan is not None
     rec = Recording()
@@ -191,9 +194,9 @@ def velocity_panel(sol: GearSolution, lang: str, f: float = 1.0) -> Panel:
     rec.line((0.0, -y0), (0.0, -y1), AXIS, "radial-line")
     done: set[str] = set()
     for n, ln in plan.lines.items():
-        pts = [(nm, (q[0] * f, q[1] * f)) for nm, q in ln.points]
+        pts = [(nm, (q[0] * f * g, q[1] * f)) for nm, q in ln.points]
         if len({round(p[1], 6) for _, p in pts}) < 2:
-            pts.append(("", (ln.p1[0] * f, ln.p1[1] * f)))
+            pts.append(("", (ln.p1[0] * f * g, ln.p1[1] * f)))
         lo = min(pts, key=lambda t: t[1][1])[1]
         hi = max(pts, key=lambda t: t[1][1])[1]
         rec.line(PAPER.z(complex(*lo)), PAPER.z(complex(*hi)), MAIN, f"line-{n}")
@@ -208,19 +211,20 @@ def velocity_panel(sol: GearSolution, lang: str, f: float = 1.0) -> Panel:
                 arrow(rec, (0.0, -vy), (vx, -vy), THIN, f"v-{name}", "vector")
             dot(rec, (vx, -vy), 0.6, f"pt-{name}")
             rec.text(placer.place(name, (vx, -vy), SMALL + 0.5, (1.0, -0.5)), "label", f"label-{name}")
-    txt = f"μ_v = {fmt(plan.mu_v * f, 4, lang)} {'мм/(м/с)' if lang == 'ru' else 'mm/(m/s)'}"
+    txt = f"μ_v = {fmt(plan.mu_v * f * g, 4, lang)} {'мм/(м/с)' if lang == 'ru' else 'mm/(m/s)'}"
     return finish("velocity-plan", "velocity-plan", None, rec, tr("vplan", lang), txt)
 
 
-def rays_panel(sol: GearSolution, lang: str, f: float = 1.0) -> Panel:
+def rays_panel(sol: GearSolution, lang: str, f: float = 1.0, g: float = 1.0) -> Panel:
     """The plan of angular velocities: rays from the pole O_ω parallel to the shafts' lines cut
-    the reference line at h; ``f`` magnifies it (h and the intercepts; μ_ω × f)."""
+    the reference line at h; ``f`` magnifies it (h and the intercepts; μ_ω × f), ``g`` the
+    intercepts alone, as a plan of velocities drawn at μ_v × g turns its lines (μ_ω × f·g)."""
     plan = sol.plan
     assert plan is not None
     rec = Recording()
     placer = Placer()
     h = plan.h * f
-    xs = [ln.intercept * f for ln in plan.lines.values()] + [0.0]
+    xs = [ln.intercept * f * g for ln in plan.lines.values()] + [0.0]
     lo, hi = min(xs) - 10.0, max(xs) + 10.0
     rec.line(PAPER(lo, h), PAPER(hi, h), MAIN, "reference-line")
     dot(rec, (0.0, 0.0), 0.8, "pole")
@@ -228,14 +232,14 @@ def rays_panel(sol: GearSolution, lang: str, f: float = 1.0) -> Panel:
     rec.line((0.0, 0.0), PAPER(0.0, h + 4.0), AXIS, "pole-normal")
     placer.add_line([PAPER(lo, h), PAPER(hi, h)])
     for n, ln in plan.lines.items():
-        rec.line((0.0, 0.0), (ln.intercept * f, -h), THIN, f"ray-{n}")
-        placer.add_line([(0.0, 0.0), (ln.intercept * f, -h)])
-        dot(rec, (ln.intercept * f, -h), 0.6, f"omega-{n}")
+        rec.line((0.0, 0.0), (ln.intercept * f * g, -h), THIN, f"ray-{n}")
+        placer.add_line([(0.0, 0.0), (ln.intercept * f * g, -h)])
+        dot(rec, (ln.intercept * f * g, -h), 0.6, f"omega-{n}")
     for n, ln in plan.lines.items():
-        rec.text(placer.place(f"ω_{n}", (ln.intercept * f, -h), SMALL + 0.5, (0.0, -1.0)), "label",
+        rec.text(placer.place(f"ω_{n}", (ln.intercept * f * g, -h), SMALL + 0.5, (0.0, -1.0)), "label",
                  f"label-omega-{n}")
     rec.text(layout(f"h = {fmt(h, 3, lang)}", 2.0, -h / 2, SMALL, "start", "middle"), "note", "pole-distance")
-    txt = f"μ_ω = {fmt(plan.mu_omega * f, 4, lang)} {'мм/(рад/с)' if lang == 'ru' else 'mm/(rad/s)'}"
+    txt = f"μ_ω = {fmt(plan.mu_omega * f * g, 4, lang)} {'мм/(рад/с)' if lang == 'ru' else 'mm/(rad/s)'}"
     return finish("ray-diagram", "ray-diagram", None, rec, tr("rays", lang), txt)
 
 
@@ -259,28 +263,91 @@ def synthesis_panel(sol: GearSolution, lang: str) -> Panel:
 
 
 def magnifications(sol: GearSolution) -> list[float]:
-    """How much larger than the engine's plan the train's scheme and velocity plan may be
-    drawn, largest first: the factors of 10, 5, 4, 2.5, 2 that keep μ_l and μ_v round, and 1.
-    The plan of angular velocities keeps its h: μ_ω = h·μ_v/μ_l does not change."""
-    from plans.kinematics.scales import is_round
-
+    """How much larger than the engine's plan the train's scheme (and the heights of its plan of
+    velocities) may be drawn, largest first: the factors of 10, 5, 4, 2.5, 2 that keep μ_l
+    round, and 1.  The velocities take their own round scale (:func:`train_scales`)."""
     plan = sol.plan
     assert plan is not None
-    return [f for f in (10.0, 5.0, 4.0, 2.5, 2.0) if is_round(plan.mu_l * f) and is_round(plan.mu_v * f)] + [1.0]
+    return [f for f in (10.0, 5.0, 4.0, 2.5, 2.0) if is_round(plan.mu_l * f)] + [1.0]
 
 
-def magnification(sol: GearSolution, spec: SheetSpec) -> float:
-    """The largest of :func:`magnifications` that keeps the scheme and the plan within half the
-    sheet's height and the plan within 0.3 of its width (1, the engine's plan, fits any)."""
+def extent(sol: GearSolution) -> tuple[float, float]:
+    """The scheme's height (every gear's working circle about its axis) and the plan's widest
+    velocity at the engine's scales, mm."""
     plan = sol.plan
     assert plan is not None
     gears = sol.file.gears
     ys = [pt[1] for ln in plan.lines.values() for _, pt in ln.points]
     for p in sol.pairs:
-        for w in p.wheels:  # the scheme: every gear's working circle about its axis
+        for w in p.wheels:
             y, r = plan.axes[gears[w.name].shaft] * plan.mu_l, w.working * plan.mu_l
             ys += [y - r, y + r]
     tall = (max(ys) - min(ys)) if ys else 1.0
     wide = max([abs(pt[0]) for ln in plan.lines.values() for _, pt in ln.points] + [1.0])
+    return tall, wide
+
+
+def magnification(sol: GearSolution, spec: SheetSpec) -> float:
+    """The largest of :func:`magnifications` that keeps the scheme and the plan within half the
+    sheet's height and the plan within 0.3 of its width (1, the engine's plan, fits any)."""
+    tall, wide = extent(sol)
     W, H = spec.size
     return next(f for f in magnifications(sol) if f == 1.0 or (tall * f <= 0.5 * H and wide * f <= 0.3 * W))
+
+
+@dataclass(frozen=True)
+class TrainScales:
+    """The train's drawings each at its own round scale, as factors of the engine's plan: the
+    scheme and the plan's heights μ_l × f, the plan's velocities μ_v × f·g, the plan of angular
+    velocities μ_ω × q·g (its rays parallel to the plan's lines: h × q, intercepts × q·g)."""
+
+    f: float
+    g: float
+    q: float
+
+
+def train_scales(sol: GearSolution, f: float) -> list[TrainScales]:
+    """The plans of velocities worth drawing beside the scheme at magnification ``f``, the
+    shortest first: μ_v round, from the round scale just below the engine's × f up to a plan
+    1.2 times as wide as the scheme is tall (three at most); each with the plan of angular
+    velocities at the least round μ_ω that keeps its pole as far from the reference line as
+    the engine's (h = μ_ω μ_l/μ_v), and at the largest that draws it within the plan of
+    velocities' width and the scheme's height (as wide as the two side by side, about)."""
+    plan = sol.plan
+    assert plan is not None
+    tall, wide = extent(sol)
+    mus: list[float] = []
+    mu = round_down(plan.mu_v * f)
+    while len(mus) < 3 and (not mus or wide * mu / plan.mu_v <= 1.2 * tall * f):
+        mus.append(mu)
+        mu = round_up(mu * 1.01)  # the next round scale
+    xs = [ln.intercept for ln in plan.lines.values()] + [0.0]
+    spread = (max(xs) - min(xs)) / plan.mu_omega  # rad/s from the least ω (or 0) to the largest
+    out = []
+    for mu_v in mus:
+        g = mu_v / (plan.mu_v * f)
+        # the pole no nearer the reference line than the engine's h: h = μ_ω μ_l / μ_v
+        least = round_up(plan.h * mu_v / (plan.mu_l * f))
+        wider = round_scale(spread, wide * mu_v / plan.mu_v + tall * f)
+        for mu_w in dict.fromkeys((least, max(least, wider))):
+            out.append(TrainScales(f, g, mu_w / (plan.mu_omega * g)))
+    return out
+
+
+def train_figures(sol: GearSolution, lang: str, s: TrainScales) -> list[Panel]:
+    """The train's figures at the scales ``s``: its scheme, plan of velocities beside it and
+    plan of angular velocities (none without a plan)."""
+    if sol.plan is None:
+        return []
+    return [scheme_panel(sol, lang, s.f), velocity_panel(sol, lang, s.f, s.g), rays_panel(sol, lang, s.q, s.g)]
+
+
+def train_tables(sol: GearSolution, lang: str) -> list[Panel]:
+    """The train's tables: the speeds (by Willis and off the plan), the 2K-H synthesis."""
+    return ([speeds_panel(sol, lang)] if sol.plan is not None else []) + \
+        ([synthesis_panel(sol, lang)] if sol.synthesis is not None else [])
+
+
+def train_panels(sol: GearSolution, lang: str, s: TrainScales) -> list[Panel]:
+    """The train's figures and tables."""
+    return train_figures(sol, lang, s) + train_tables(sol, lang)

@@ -17,11 +17,6 @@ SAMPLES = sorted(p for k in KINDS for p in (ROOT / "samples" / k).glob("*.toml")
 
 #: What an A1 sheet of these kinds still leaves more than a third empty, and why.
 NOT_TWO_THIRDS: dict[str, str] = {
-    "gears/planetary_2kh": "two meshings at 10:1 with their sliding diagrams (0.45 of the first sheet) leave no room "
-                           "for the train at twice the engine's plan; its own sheet at 2× is 0.19 drawn, at the next "
-                           "round factor (4×) the scheme is taller than the sheet",
-    "gears/seed_train": "the meshing at 5:1 (7 teeth a wheel, as the engine draws them), its specific sliding, the "
-                        "table and the train at 2× on one sheet: 0.60 drawn",
     "cams/flat_face_poly345": "at A1 (its file asks for A2, drawn over 0.76 of it) the next standard scale of the "
                               "profile, 4:1, leaves no room beside it for the 360 mm φ axis: 0.665 drawn",
 }

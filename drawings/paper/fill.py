@@ -17,10 +17,13 @@ def drawn_part(sheet: Sheet) -> float:
     sheet's size) its panels' boxes cover: the union of the boxes, so a box's overlap or its
     part outside the field is not counted twice.  Every fill measure of the sheets and the
     tests is this one."""
-    W, H = sheet.width, sheet.height
+    return boxes_part(sheet.width, sheet.height, [(x, y, x + p.width, y + p.height) for p, x, y in sheet.placed])
+
+
+def boxes_part(W: float, H: float, boxes: Iterable[tuple[float, float, float, float]]) -> float:
+    """The part of a W × H sheet's field the union of ``boxes`` (x0, y0, x1, y1) covers."""
     field = shapely.box(*usable(W, H)).difference(shapely.box(*title_box(W, H)))
-    boxes = [shapely.box(x, y, x + p.width, y + p.height) for p, x, y in sheet.placed]
-    return float(shapely.union_all(boxes).intersection(field).area / field.area)
+    return float(shapely.union_all([shapely.box(*b) for b in boxes]).intersection(field).area / field.area)
 
 
 def panels_part(sheet: Sheet) -> float:

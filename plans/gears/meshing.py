@@ -47,11 +47,7 @@ class Meshing:
     p_b: float  # drawn base pitch
     construction: tuple[tuple[complex, complex], ...]  # (T_k on the base circle, laid-off point)
     window: float  # half-width of the drawn field around P
-    reach: float = 0.0  # its half-height (the window where 0)
-
-    @property
-    def half_height(self) -> float:
-        return self.reach or self.window
+    rows: tuple[float, float] | None = None  # its bottom and top (y up) where a field was asked for
 
     @property
     def b1b2(self) -> float:
@@ -213,14 +209,25 @@ def _outline(w: Wheel, m: float, alpha: float, k: float, centre: complex, axis: 
     return tuple(pts)
 
 
-def teeth_to_fill(centre: complex, radius: float, axis: float, z: int, half_w: float, half_h: float) -> int:
+def field_rows(centres: tuple[complex, complex], reach: tuple[float, float], half_h: float) -> tuple[float, float]:
+    """The bottom and top (y up, paper mm) of a field 2·``half_h`` high about P, moved up or
+    down as far as it takes to show no empty band beyond the wheels (centres on x = 0 and the
+    largest radii ``reach``, plus 12 mm), where they are that high."""
+    lo = min(c.imag - r for c, r in zip(centres, reach, strict=True)) - 12.0
+    hi = max(c.imag + r for c, r in zip(centres, reach, strict=True)) + 12.0
+    top = min(half_h, hi)
+    bottom = max(top - 2.0 * half_h, lo)
+    return bottom, bottom + 2.0 * half_h
+
+
+def teeth_to_fill(centre: complex, radius: float, axis: float, z: int, half_w: float, rows: tuple[float, float]) -> int:
     """How many teeth either side of the one on ``axis`` reach every point of the circle of
-    ``radius`` (the tip circle, paper mm) inside the field |x| ≤ half_w, |y| ≤ half_h about P:
-    the greatest turn from the axis to such a point, in pitches, one more for the tooth that
+    ``radius`` (the tip circle, paper mm) inside the field |x| ≤ half_w, ``rows`` in y: the
+    greatest turn from the axis to such a point, in pitches, one more for the tooth that
     crosses the field's edge (the whole wheel where that is all of it)."""
     t = np.linspace(-math.pi, math.pi, 1441)
     pts = centre + radius * np.exp(1j * (axis + t))
-    inside = (np.abs(pts.real) <= half_w) & (np.abs(pts.imag) <= half_h)
+    inside = (np.abs(pts.real) <= half_w) & (pts.imag >= rows[0]) & (pts.imag <= rows[1])
     turn = float(np.max(np.abs(t[inside]))) if inside.any() else 0.0
     return min(math.ceil(turn * z / (2 * math.pi)) + 1, z // 2 + 1)
 
@@ -246,10 +253,12 @@ def meshing(p: Pair, teeth: int = 3, field: tuple[float, float] | None = None) -
     else:
         ax2 = -math.pi / 2 - half_angle(w2.working, w2.thickness, w2.pitch, alpha, w2.base)
         s2 = w2.thickness / (2 * w2.pitch) + inv(alpha)
+    far = tuple(max(w.tip, w.root) * 1e3 * k for w in (w1, w2))
+    rows = None if field is None else field_rows((O1, O2), (far[0], far[1]), field[1])
     drawn = []
-    for w, O, ax in ((w1, O1, ax1), (w2, O2, ax2)):
+    for w, O, ax, R in ((w1, O1, ax1, far[0]), (w2, O2, ax2, far[1])):
         radii = {key: getattr(w, key) * 1e3 * k for key in ("pitch", "base", "tip", "root", "working")}
-        n = teeth if field is None else max(teeth, teeth_to_fill(O, max(radii["tip"], radii["root"]), ax, w.z, *field))
+        n = teeth if field is None or rows is None else max(teeth, teeth_to_fill(O, R, ax, w.z, field[0], rows))
         drawn.append(DrawnWheel(w.name, O, radii, _outline(w, m, alpha, k, O, ax, n), n))
     # N1, N2: where the flanks through P were unrolled from (their tangent points)
     tw = math.tan(p.alpha_w)
@@ -281,8 +290,8 @@ def meshing(p: Pair, teeth: int = 3, field: tuple[float, float] | None = None) -
     pts, T, _ = rolled_points(rb1, th, start=ax1 + s1, sign=-1.0)
     cons = tuple((complex(O1 + t), complex(O1 + q)) for t, q in zip(T, pts, strict=True))
     least = max(2.6 * math.pi * m * 1e3 * k, abs(N2 - N1) / 2 + 25.0)
-    window, reach = (least, 0.0) if field is None else (max(field[0], least), field[1])
-    return Meshing(p, k, (drawn[0], drawn[1]), complex(N1), complex(N2), B1, B2, pb, cons, window, reach)
+    window = least if field is None else max(field[0], least)
+    return Meshing(p, k, (drawn[0], drawn[1]), complex(N1), complex(N2), B1, B2, pb, cons, window, rows)
 
 
 def drawn_contact_ratios(sol) -> dict[tuple[str, str], float]:
