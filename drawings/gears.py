@@ -24,6 +24,7 @@ from drawings.gears_train import (
     unit_word,
 )
 from drawings.linkage.panels import Panel, finish, ratio_text
+from drawings.paper.fill import drawn_part
 from drawings.paper.fonts import choose, drawing
 from drawings.paper.sheet import Sheet, SheetSpec, compose, sheet_spec
 from plans.errors import InputError, Said
@@ -87,6 +88,32 @@ def results_panel(sol: GearSolution, lang: str) -> Panel:
     return finish("results", "table", None, rec, tr("results", lang))
 
 
+#: The drawn part of a sheet the layout aims at (every A1 sheet of the samples reaches it)
+TWO_THIRDS = 2.0 / 3.0
+
+
+def train_alone(sol: GearSolution, lang: str, spec: SheetSpec, path: str, table: list[Panel]
+                ) -> tuple[list[Panel], list[Sheet]]:
+    """The train (and ``table``) on a sheet of its own, as large as the sheet holds: its scheme
+    at the largest round magnification (from the least that keeps it within half the sheet),
+    each with its plans of velocities at the round scales worth drawing, the fullest of the
+    largest that keeps one sheet; else the least, on as many sheets as it takes."""
+    from drawings.paper.fill import fullest_on_one_sheet
+
+    f = magnification(sol, spec) if sol.plan is not None else 1.0
+    fs = [g for g in (magnifications(sol) if sol.plan is not None else [1.0]) if g >= f]
+    groups = [[train_panels(sol, lang, s) + table for s in
+               (train_scales(sol, g) if sol.plan is not None else [TrainScales(g, 1.0, 1.0)])] for g in fs]
+    made = {id(t[0]): g for g, ts in zip(fs, groups, strict=True) for t in ts}
+
+    def scale(panels: Sequence[Panel]) -> str:
+        return ratio_text(sol.plan.mu_l * made[id(panels[0])]) if sol.plan is not None else ""
+
+    alone = fullest_on_one_sheet(groups, spec, path, scale)
+    least = groups[-1][0]
+    return alone if alone is not None else (least, compose(least, spec, scale(least), path))
+
+
 @drawing
 def draw(source: GearsSolution | GearFile | str | Path, *, format: str | None = None,
          orientation: str | None = None, language: str | None = None, font: str | None = None) -> GearDrawing:
@@ -99,25 +126,11 @@ def draw(source: GearsSolution | GearFile | str | Path, *, format: str | None = 
                       format=format, orientation=orientation, language=language, font=font)
     choose(spec.font, gf.path, font)
     lang = spec.language
-    from drawings.paper.fill import fullest_on_one_sheet
-
     if not gs.meshings and not sol.pairs and sol.plan is None and sol.synthesis is None:
         raise InputError(Said("dg_nothing_draw_meshes"), file=gf.path, field="meshes")
-    fs = magnifications(sol) if sol.plan is not None else [1.0]
     f = magnification(sol, spec) if sol.plan is not None else 1.0
     if not gs.meshings:  # the train alone, as large as its sheet holds
-        table = [results_panel(sol, lang)] if sol.pairs else []
-        groups = [[train_panels(sol, lang, s) + table for s in
-                   (train_scales(sol, g) if sol.plan is not None else [TrainScales(g, 1.0, 1.0)])]
-                  for g in fs if g >= f]
-        made = {id(t[0]): g for g, ts in zip((g for g in fs if g >= f), groups, strict=True) for t in ts}
-
-        def scale(panels: Sequence[Panel]) -> str:
-            return ratio_text(sol.plan.mu_l * made[id(panels[0])]) if sol.plan is not None else ""
-
-        alone = fullest_on_one_sheet(groups, spec, gf.path, scale)
-        least = groups[-1][0]
-        panels, sheets = alone if alone is not None else (least, compose(least, spec, scale(least), gf.path))
+        panels, sheets = train_alone(sol, lang, spec, gf.path, [results_panel(sol, lang)] if sol.pairs else [])
         return GearDrawing(gf, sol, None, spec, tuple(panels), tuple(sheets))
     # a sheet for each meshing drawn: its field as large as the sheet holds, its specific
     # sliding beside it, the pairs' table on the first; the train (laid out alone, moved on as
@@ -137,6 +150,12 @@ def draw(source: GearsSolution | GearFile | str | Path, *, format: str | None = 
                for j in range(len(search) if blocks else 1) for blk in trains]
     pick = max(range(len(options)), key=lambda k: (round(min(options[k]), 9), -k))
     j, t = divmod(pick, len(trains)) if blocks else (-1, -1)
+    own: tuple[list[Panel], list[Sheet]] = ([], [])
+    if blocks and min(options[pick]) < TWO_THIRDS:  # or the train on a sheet of its own
+        panels, sheets = train_alone(sol, lang, spec, gf.path, [])
+        if min([search[i][0].best(None)[1] for i in range(len(search))] + [drawn_part(sh) for sh in sheets]) > \
+                min(options[pick]):
+            j, own = -1, (panels, sheets)
     out: list[Sheet] = []
     every: list[Panel] = []
     for i in range(len(search)):
@@ -144,6 +163,8 @@ def draw(source: GearsSolution | GearFile | str | Path, *, format: str | None = 
         drawn, sheets = search[i][i == j].lay_out(gs, i, lang, block)
         every += [drawn] + search[i][i == j].rest + (list(block.panels) if block is not None else [])
         out += sheets
+    every += own[0]
+    out += own[1]
     for n, sh in enumerate(out):
         sh.number, sh.count = n + 1, len(out)
         sh.prims = []
