@@ -1,7 +1,9 @@
-"""The gear sheets: the meshing of one pair (profiles, circles, line of action, the active
-part, the contact ratio read off the drawing, the zones of single and double contact) and
-the train (its unfolded scheme, the velocity plan of linear velocities and the ray diagram
-of angular velocities), from :mod:`plans.gears`."""
+"""The gear sheets of a gear file: a sheet per drawn pair, its meshing
+(:mod:`drawings.gears_meshing`) over a field as large as the sheet holds, its specific sliding
+(:mod:`drawings.gears_sliding`) and the pairs' table; the train (:mod:`drawings.gears_train`:
+its unfolded scheme, plan of linear velocities and plan of angular velocities, each at its own
+round scale, the speeds) moved onto one of them or on a sheet of its own
+(:mod:`drawings.gears_layout`), from :mod:`plans.gears`."""
 
 from __future__ import annotations
 
