@@ -14,6 +14,7 @@ import pytest
 
 from drawings.linkage import draw
 from drawings.paper.export import save
+from drawings.paper.fill import drawn_part
 
 ROOT = Path(__file__).resolve().parents[1]
 SAMPLES = sorted((ROOT / "samples").glob("*.toml"))
@@ -228,24 +229,12 @@ def test_dxf_holds_the_svgs_shapes_in_every_sample(drawn):
         assert differences(svg_shapes(sh.svg()), dxf_tags_shapes(sh.dxf())[0]) == [], sh.number
 
 
-def _drawn_part(sheet) -> float:
-    """The drawn part of a sheet's field (inside the frame, less the title block): the union
-    of its panels' boxes over the field's area."""
-    import shapely
-
-    from drawings.paper.sheet import usable
-
-    field = shapely.box(*usable(sheet.width, sheet.height)).difference(shapely.box(*sheet.title_box))
-    boxes = [shapely.box(x, y, x + p.width, y + p.height) for p, x, y in sheet.placed]
-    return shapely.union_all(boxes).intersection(field).area / field.area
-
-
 def test_a1_sheets_are_not_left_empty(drawn):
     """Every A1 sheet of every sample has panels over at least 0.35 of its field (the plans,
     polygons and levers drawn at longer round scales where a sheet has room; the block layout
     once left half-empty last sheets of 0.11 to 0.25)."""
     _, d, _ = drawn
-    fills = [_drawn_part(sh) for sh in d.sheets]
+    fills = [drawn_part(sh) for sh in d.sheets]
     assert min(fills) >= 0.35, [round(f, 2) for f in fills]
 
 
@@ -261,7 +250,7 @@ def test_no_a1_sheet_is_more_than_a_third_empty(drawn, request):
     path, d, _ = drawn
     if path.stem in NOT_TWO_THIRDS:
         request.applymarker(pytest.mark.xfail(reason="a sheet still more than a third empty", strict=True))
-    fills = [_drawn_part(sh) for sh in d.sheets]
+    fills = [drawn_part(sh) for sh in d.sheets]
     assert min(fills) >= 2 / 3, [round(f, 2) for f in fills]
 
 
@@ -287,7 +276,7 @@ def test_no_a1_sheet_of_a_class3_or_centres_linkage_is_more_than_a_third_empty(p
         boxes = [shapely.box(*b) for b in sh.panel_boxes().values()]
         assert not [(a, b) for a, b in itertools.combinations(boxes, 2) if a.intersects(b)]
         assert all(shapely.box(*sh.frame_box).contains(b) for b in boxes)
-    fills = [_drawn_part(sh) for sh in d.sheets]
+    fills = [drawn_part(sh) for sh in d.sheets]
     assert min(fills) >= 2 / 3, [round(f, 2) for f in fills]
 
 

@@ -529,15 +529,24 @@ def test_ring_tip_bad_input_names_the_key(edit, field):
 @pytest.mark.parametrize("language", ["ru", "en"])
 def test_meshing_panels_draw_nothing_outside_their_field(language):
     # An internal pair's N2 lies far beyond the field: an arrow at the edge names it instead.
-    from drawings.gears import meshing_panel
+    # At the least field and at one as large as an A1 sheet holds, every line, circle and
+    # polygon but the field's own frame lies inside that frame.
+    from drawings.gears_meshing import meshing_panel
 
     pairs = solve_gears(load_gears(SEED)).drawn_pairs() + solve_gears(load_gears(PLANETARY)).drawn_pairs()
     for p in pairs:
-        panel = meshing_panel(meshing(p), language)
-        for prim in panel.prims:
-            if prim.pts and prim.label is None:
-                xs, ys = zip(*prim.pts, strict=True)
-                assert -1e-6 <= min(xs) and max(xs) <= panel.width + 1e-6, prim.eid
-                assert -1e-6 <= min(ys) and max(ys) <= panel.height + 1e-6, prim.eid
-    labels = [pr.label.plain for pr in panel.prims if pr.label is not None]
+        for field in (None, (380.0, 250.0)):
+            panel = meshing_panel(meshing(p, 3, field), language)
+            frame = next(q for q in panel.prims if q.eid == "field")
+            fx, fy = zip(*frame.pts, strict=True)
+            for prim in panel.prims:
+                if prim.pts and prim.label is None and prim.eid != "field":
+                    xs, ys = zip(*prim.pts, strict=True)
+                    assert min(fx) - 1e-6 <= min(xs) and max(xs) <= max(fx) + 1e-6, prim.eid
+                    assert min(fy) - 1e-6 <= min(ys) and max(ys) <= max(fy) + 1e-6, prim.eid
+            if field is not None:  # the field asked for, as wide and as high as asked
+                assert max(fx) - min(fx) == pytest.approx(2 * field[0]) and max(fy) - min(fy) == pytest.approx(2 * field[1])
+            else:
+                least = panel
+    labels = [pr.label.plain for pr in least.prims if pr.label is not None]
     assert any(t.startswith("N2:") or t.startswith("N_2:") for t in labels), labels

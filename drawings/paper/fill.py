@@ -13,20 +13,22 @@ from drawings.paper.sheet import Sheet, SheetSpec, compose, fits_empty, title_bo
 
 
 def drawn_part(sheet: Sheet) -> float:
-    """The part of a sheet's field (inside the frame, less the title block) its panels' boxes
-    cover."""
-    W, H = sheet.width, sheet.height
+    """The part of a sheet's field (inside the frame, less the title block, both from the
+    sheet's size) its panels' boxes cover: the union of the boxes, so a box's overlap or its
+    part outside the field is not counted twice.  Every fill measure of the sheets and the
+    tests is this one."""
+    return boxes_part(sheet.width, sheet.height, [(x, y, x + p.width, y + p.height) for p, x, y in sheet.placed])
+
+
+def boxes_part(W: float, H: float, boxes: Iterable[tuple[float, float, float, float]]) -> float:
+    """The part of a W × H sheet's field the union of ``boxes`` (x0, y0, x1, y1) covers."""
     field = shapely.box(*usable(W, H)).difference(shapely.box(*title_box(W, H)))
-    boxes = [shapely.box(x, y, x + p.width, y + p.height) for p, x, y in sheet.placed]
-    return float(shapely.union_all(boxes).intersection(field).area / field.area)
+    return float(shapely.union_all([shapely.box(*b) for b in boxes]).intersection(field).area / field.area)
 
 
 def panels_part(sheet: Sheet) -> float:
-    """The part of a sheet's field (inside the frame, less the title block) its panels cover:
-    the sum of their boxes, as placed panels never overlap (cheaper than :func:`drawn_part`)."""
-    a, tb = usable(sheet.width, sheet.height), sheet.title_box
-    return sum(p.width * p.height for p, _, _ in sheet.placed) / (
-        (a[2] - a[0]) * (a[3] - a[1]) - (tb[2] - tb[0]) * (tb[3] - tb[1]))
+    """The part of a sheet's field its panels cover (:func:`drawn_part`, by its older name)."""
+    return drawn_part(sheet)
 
 
 def fullest_on_one_sheet(groups: Iterable[Iterable[Sequence[Panel]]], spec: SheetSpec, path: str,
@@ -37,7 +39,8 @@ def fullest_on_one_sheet(groups: Iterable[Iterable[Sequence[Panel]]], spec: Shee
     out; None when no candidate does.  ``scale`` writes the title block's Scale cell."""
     W, H = spec.size
     x0, y0, x1, y1 = usable(W, H)
-    room = (x1 - x0) * (y1 - y0) - (title_box(W, H)[2] - title_box(W, H)[0]) * (title_box(W, H)[3] - title_box(W, H)[1])
+    t0, s0, t1, s1 = title_box(W, H)
+    room = (x1 - x0) * (y1 - y0) - (t1 - t0) * (s1 - s0)
     for group in groups:
         best: tuple[float, list[Panel], list[Sheet]] | None = None
         for panels in group:

@@ -27,6 +27,20 @@ def _taken(sh: Sheet) -> list[Box]:
     return [sh.title_box] + [(x, y, x + p.width, y + p.height) for p, x, y in sh.placed] + [f.box for f in sh.frames]
 
 
+def moved_onto(prev: Sheet, sh: Sheet) -> tuple[float, float] | None:
+    """Where :func:`merged` moves ``sh``'s panels, as laid out, onto ``prev``'s free room (the
+    uppermost free spot, then the leftmost): the shift, or None where they do not fit (or
+    ``sh`` has none, or a continued block's notch)."""
+    if not sh.placed or any(f.notch is not None for f in sh.frames):
+        return None
+    x0, y0, x1, y1 = _extent(sh)
+    spots = free_spots(GAP)(x1 - x0, y1 - y0, usable(prev.width, prev.height), _taken(prev))
+    if not len(spots):
+        return None
+    i = min(range(len(spots)), key=lambda k: (round(float(spots[k][1]), 6), float(spots[k][0])))
+    return float(spots[i][0]) - x0, float(spots[i][1]) - y0
+
+
 def merged(sheets: Sequence[Sheet], scale_texts: Sequence[str | None] | None = None) -> list[Sheet]:
     """``sheets`` with each one's panels moved onto the sheet before it where they fit there as
     laid out (the uppermost free spot, then the leftmost); renumbered.  ``scale_texts``: each
@@ -35,18 +49,14 @@ def merged(sheets: Sequence[Sheet], scale_texts: Sequence[str | None] | None = N
     out: list[Sheet] = []
     out_texts: list[list[str | None]] = []
     for sh, text in zip(sheets, texts, strict=True):
-        if out and sh.placed and not any(f.notch is not None for f in sh.frames):
-            prev = out[-1]
-            x0, y0, x1, y1 = _extent(sh)
-            spots = free_spots(GAP)(x1 - x0, y1 - y0, usable(prev.width, prev.height), _taken(prev))
-            if len(spots):
-                i = min(range(len(spots)), key=lambda k: (round(float(spots[k][1]), 6), float(spots[k][0])))
-                dx, dy = float(spots[i][0]) - x0, float(spots[i][1]) - y0
-                prev.placed.extend((p, x + dx, y + dy) for p, x, y in sh.placed)
-                prev.frames.extend(dataclasses.replace(f, box=(f.box[0] + dx, f.box[1] + dy, f.box[2] + dx,
-                                                               f.box[3] + dy)) for f in sh.frames)
-                out_texts[-1].append(text)
-                continue
+        shift = moved_onto(out[-1], sh) if out else None
+        if shift is not None:
+            prev, (dx, dy) = out[-1], shift
+            prev.placed.extend((p, x + dx, y + dy) for p, x, y in sh.placed)
+            prev.frames.extend(dataclasses.replace(f, box=(f.box[0] + dx, f.box[1] + dy, f.box[2] + dx,
+                                                           f.box[3] + dy)) for f in sh.frames)
+            out_texts[-1].append(text)
+            continue
         out.append(sh)
         out_texts.append([text])
     for n, (sh, ts) in enumerate(zip(out, out_texts, strict=True)):

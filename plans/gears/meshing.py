@@ -46,7 +46,8 @@ class Meshing:
     B2: complex  # gear 1's tip circle on N1N2
     p_b: float  # drawn base pitch
     construction: tuple[tuple[complex, complex], ...]  # (T_k on the base circle, laid-off point)
-    window: float  # half-size of the drawn field around P
+    window: float  # half-width of the drawn field around P
+    rows: tuple[float, float] | None = None  # its bottom and top (y up) where a field was asked for
 
     @property
     def b1b2(self) -> float:
@@ -175,9 +176,10 @@ def _as_spaces(w: Wheel, m: float) -> Wheel:
 
 def _outline(w: Wheel, m: float, alpha: float, k: float, centre: complex, axis: float,
              teeth: int) -> tuple[complex, ...]:
-    """The teeth j = −teeth..teeth about the tooth centred on ``axis`` (paper angle, y up);
-    for a ring, its spaces about the space centred on ``axis``, the fillets at the ring's root
-    drawn as the rounded corners of the spaces."""
+    """The teeth j = −teeth..teeth about the tooth centred on ``axis`` (paper angle, y up), the
+    whole wheel, closed, where that is all of its teeth; for a ring, its spaces about the space
+    centred on ``axis``, the fillets at the ring's root drawn as the rounded corners of the
+    spaces."""
     ring = w.internal
     if ring:
         w = _as_spaces(w, m)
@@ -194,18 +196,48 @@ def _outline(w: Wheel, m: float, alpha: float, k: float, centre: complex, axis: 
     step = 2 * math.pi / w.z
     a_foot = float(np.angle(flank[0]))
     root = rf * np.exp(1j * np.linspace(a_foot, step - a_foot, 9)[1:-1])  # the root arc to the next tooth
+    whole = 2 * teeth + 1 >= w.z
+    js = range(-(w.z // 2), w.z - w.z // 2) if whole else range(-teeth, teeth + 1)
     pts: list[complex] = []
-    for j in range(-teeth, teeth + 1):
+    for j in js:
         rot = np.exp(1j * (axis + j * step))
         pts.extend((centre + tooth * rot).tolist())
-        if j < teeth:
+        if whole or j < teeth:
             pts.extend((centre + root * rot).tolist())
+    if whole:  # back to the first tooth's first point
+        pts.append(pts[0])
     return tuple(pts)
 
 
-def meshing(p: Pair, teeth: int = 3) -> Meshing:
+def field_rows(centres: tuple[complex, complex], reach: tuple[float, float], half_h: float) -> tuple[float, float]:
+    """The bottom and top (y up, paper mm) of a field 2·``half_h`` high about P, moved up or
+    down as far as it takes to show no empty band beyond the wheels (centres on x = 0 and the
+    largest radii ``reach``, plus 12 mm), where they are that high."""
+    lo = min(c.imag - r for c, r in zip(centres, reach, strict=True)) - 12.0
+    hi = max(c.imag + r for c, r in zip(centres, reach, strict=True)) + 12.0
+    top = min(half_h, hi)
+    bottom = max(top - 2.0 * half_h, lo)
+    return bottom, bottom + 2.0 * half_h
+
+
+def teeth_to_fill(centre: complex, radius: float, axis: float, z: int, half_w: float, rows: tuple[float, float]) -> int:
+    """How many teeth either side of the one on ``axis`` reach every point of the circle of
+    ``radius`` (the tip circle, paper mm) inside the field |x| ≤ half_w, ``rows`` in y: the
+    greatest turn from the axis to such a point, in pitches, one more for the tooth that
+    crosses the field's edge (the whole wheel where that is all of it)."""
+    t = np.linspace(-math.pi, math.pi, 1441)
+    pts = centre + radius * np.exp(1j * (axis + t))
+    inside = (np.abs(pts.real) <= half_w) & (pts.imag >= rows[0]) & (pts.imag <= rows[1])
+    turn = float(np.max(np.abs(t[inside]))) if inside.any() else 0.0
+    return min(math.ceil(turn * z / (2 * math.pi)) + 1, z // 2 + 1)
+
+
+def meshing(p: Pair, teeth: int = 3, field: tuple[float, float] | None = None) -> Meshing:
     """The construction of a pair: external (O2 above P) or internal (the ring's centre O2
-    below P, beyond O1; the flank through P is then a flank of a ring space)."""
+    below P, beyond O1; the flank through P is then a flank of a ring space).  ``field``, the
+    drawn field's half-width and half-height about P (paper mm), draws as many teeth of each
+    wheel as it shows (at least ``teeth`` either side); else the field is the least that shows
+    ``teeth`` teeth and the line of action."""
     w1, w2 = p.wheels
     tooth = max(abs(w.tip - w.root) for w in p.wheels) * 1e3
     k = enlargement(tooth)
@@ -221,10 +253,13 @@ def meshing(p: Pair, teeth: int = 3) -> Meshing:
     else:
         ax2 = -math.pi / 2 - half_angle(w2.working, w2.thickness, w2.pitch, alpha, w2.base)
         s2 = w2.thickness / (2 * w2.pitch) + inv(alpha)
+    far = tuple(max(w.tip, w.root) * 1e3 * k for w in (w1, w2))
+    rows = None if field is None else field_rows((O1, O2), (far[0], far[1]), field[1])
     drawn = []
-    for w, O, ax in ((w1, O1, ax1), (w2, O2, ax2)):
+    for w, O, ax, R in ((w1, O1, ax1, far[0]), (w2, O2, ax2, far[1])):
         radii = {key: getattr(w, key) * 1e3 * k for key in ("pitch", "base", "tip", "root", "working")}
-        drawn.append(DrawnWheel(w.name, O, radii, _outline(w, m, alpha, k, O, ax, teeth), teeth))
+        n = teeth if field is None or rows is None else max(teeth, teeth_to_fill(O, R, ax, w.z, field[0], rows))
+        drawn.append(DrawnWheel(w.name, O, radii, _outline(w, m, alpha, k, O, ax, n), n))
     # N1, N2: where the flanks through P were unrolled from (their tangent points)
     tw = math.tan(p.alpha_w)
     s1 = w1.thickness / (2 * w1.pitch) + inv(alpha)
@@ -254,8 +289,9 @@ def meshing(p: Pair, teeth: int = 3) -> Meshing:
     th = np.linspace(0.0, tha, 7)[1:]
     pts, T, _ = rolled_points(rb1, th, start=ax1 + s1, sign=-1.0)
     cons = tuple((complex(O1 + t), complex(O1 + q)) for t, q in zip(T, pts, strict=True))
-    window = max(2.6 * math.pi * m * 1e3 * k, abs(N2 - N1) / 2 + 25.0)
-    return Meshing(p, k, (drawn[0], drawn[1]), complex(N1), complex(N2), B1, B2, pb, cons, window)
+    least = max(2.6 * math.pi * m * 1e3 * k, abs(N2 - N1) / 2 + 25.0)
+    window = least if field is None else max(field[0], least)
+    return Meshing(p, k, (drawn[0], drawn[1]), complex(N1), complex(N2), B1, B2, pb, cons, window, rows)
 
 
 def drawn_contact_ratios(sol) -> dict[tuple[str, str], float]:

@@ -21,6 +21,7 @@ class GearsSolution:
 
     def __init__(self, file: GearFile) -> None:
         self.file = file
+        self._fields: dict[tuple[int, tuple[float, float]], Meshing] = {}
 
     def __repr__(self) -> str:
         return f"GearsSolution({self.file.path!r})"
@@ -34,6 +35,14 @@ class GearsSolution:
     def meshings(self) -> tuple[Meshing, ...]:
         """The construction of each pair the meshing sheet draws (:meth:`GearSolution.drawn_pairs`)."""
         return tuple(meshing(p) for p in self.solution.drawn_pairs())
+
+    def meshing_in(self, index: int, field: tuple[float, float]) -> Meshing:
+        """The ``index``-th drawn pair's construction over a field of that half-width and
+        half-height about P (paper mm), as many teeth drawn as it shows; kept per field."""
+        key = (index, field)
+        if key not in self._fields:
+            self._fields[key] = meshing(self.solution.drawn_pairs()[index], 3, field)
+        return self._fields[key]
 
 
 def solve_file(source: GearFile | str | Path) -> GearsSolution:
