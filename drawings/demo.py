@@ -162,8 +162,7 @@ def _language(scene: Scene, language: str | None) -> str:
         if language not in WORDS:
             raise InputError(Said("dd_one_language", v=', '.join(WORDS), language=language), field="--language")
         return language
-    lang = scene.sheet.language  # the scene's [sheet], validated with it
-    return lang if lang in WORDS else "ru"
+    return scene.sheet.language  # the scene's [sheet], else the locale's; validated with it
 
 
 #: The page's type for each of the sheets' fonts (``[sheet] font``, ``--font``): the GOST one

@@ -515,7 +515,9 @@ def draw(source: GearsSolution | GearFile | str | Path, *, format: str | None = 
     gs = source if isinstance(source, GearsSolution) else solve_file(source)
     gf = gs.file
     sol = gs.solution
-    spec = sheet_spec(gf.raw, gf.path, gf.title or tr("title", "ru" if language != "en" else "en"),
+    from plans.language import choose as run_language
+
+    spec = sheet_spec(gf.raw, gf.path, gf.title or tr("title", run_language(language, gf.raw)),
                       format=format, orientation=orientation, language=language, font=font)
     choose(spec.font, gf.path, font)
     lang = spec.language

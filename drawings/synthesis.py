@@ -512,7 +512,9 @@ def draw(source: DesignSolution | Task | str | Path, *, format: str | None = Non
     t = ds.task
     d = ds.design
     raw = t.raw if "sheet" in t.raw else {"sheet": t.task.get("sheet", {})}
-    lang = language or raw.get("sheet", {}).get("language", "ru")
+    from plans.language import choose as run_language
+
+    lang = run_language(language, raw)
     title = t.raw.get("title", t.title)
     if isinstance(title, dict):
         title = title.get(lang) or t.title

@@ -11,6 +11,10 @@ import shapely
 
 from drawings import draw
 from drawings.paper.sheet import title_box, usable
+from tests.locales import in_russian
+
+#: The sheets these tests measure were drawn in Russian, the default before it followed the locale.
+draw = in_russian(draw)
 
 ROOT = Path(__file__).resolve().parents[1]
 KINDS = ("gears", "cams", "synthesis")
