@@ -51,7 +51,7 @@ WORDS = {
         "units": {"mm/(m/s)": "мм/(м/с)", "mm/(m/s²)": "мм/(м/с²)", "mm/N": "мм/Н", "N": "Н", "N·m": "Н·м",
                   "J": "Дж", "rad/s": "рад/с", "rad/s²": "рад/с²", "kg·m²": "кг·м²", "m": "м", "m/s": "м/с",
                   "m/s²": "м/с²", "m/s^2": "м/с²", "mm": "мм", "s": "с"},
-        "labels": {"F_bal": "F_ур", "M_bal": "M_ур", "M_pr": "M_пр", "I_pr": "I_пр"},
+        "labels": {"F_bal": "F_ур", "M_bal": "M_ур", "M_pr": "M_пр", "I_pr": "I_пр", "Ff": "F_тр", "Mf": "M_тр"},
         "points": {"p_v": "p", "p_a": "π"},  # the poles as a Russian course names them
     },
 }
@@ -179,7 +179,8 @@ def page(scene: Scene | str | Path, *, language: str | None = None, frames: int 
     data = lesson(sc, phi_deg=phi_deg, frames=frames, language=lang)
     words = WORDS[lang]
     esc = {k: html.escape(v) for k, v in words.items() if isinstance(v, str)}
-    body = _BODY.format(title=html.escape(data["title"]), phi=f"{data['phi_deg']:g}", **esc)
+    phi = f"{data['phi_deg']:g}".replace(".", words["decimal"])
+    body = _BODY.format(title=html.escape(data["title"]), phi=phi, **esc)
     script = resources.files("drawings").joinpath("demo_page.js").read_text(encoding="utf-8")
     return (f'<!DOCTYPE html>\n<html lang="{lang}"><head><meta charset="utf-8">'
             f'<meta name="viewport" content="width=device-width, initial-scale=1">'

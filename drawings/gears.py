@@ -209,7 +209,7 @@ def meshing_panel(mg: Meshing, lang: str) -> Panel:
     rec.polygon([PAPER(-W, yhi), PAPER(W, yhi), PAPER(W, ylo), PAPER(-W, ylo)], Style(stroke="#999", width=0.18, cls="field"), "field")
     g1, g2 = p.gears
     title = f"{tr('meshing', lang)} {g1}–{g2}"
-    return finish(f"meshing-{g1}-{g2}", "meshing", None, rec, title, f"M {ratio_text(mg.k * 1000.0)}")
+    return finish(f"meshing-{g1}-{g2}", "meshing", None, rec, title, f"M {ratio_text(mg.k * 1000.0, lang)}")
 
 
 def _grid(rows: Sequence[Sequence[str]], pid: str) -> Recording:
@@ -530,12 +530,12 @@ def draw(source: GearsSolution | GearFile | str | Path, *, format: str | None = 
         mesh += [meshing_panel(one, lang), sliding_panel(one, lang)]
     if drawings:
         mesh.append(results_panel(sol, lang))
-    mesh_scale = "; ".join(dict.fromkeys(ratio_text(one.k * 1000.0) for one in drawings))
+    mesh_scale = "; ".join(dict.fromkeys(ratio_text(one.k * 1000.0, lang) for one in drawings))
     mg = drawings[0] if drawings else None
     fs = magnifications(sol) if sol.plan is not None else [1.0]
 
     def train_scale(f: float) -> str:
-        return ratio_text(sol.plan.mu_l * f) if sol.plan is not None else ""
+        return ratio_text(sol.plan.mu_l * f, lang) if sol.plan is not None else ""
 
     if not mesh and not _train(sol, lang, 1.0, True):
         raise InputError(Said("dg_nothing_draw_meshes"),

@@ -360,5 +360,12 @@ def csv_text(kinds: list[str], groups: dict[str, list[dict[str, Any]]], lang: st
     w.writerow([heading(h, lang) for h in header])
     for _, rs in sorted(groups.items()):
         for r in rs:
-            w.writerow(["" if r[h] is None else r[h] for h in header])
+            w.writerow([_cell(r[h], lang) for h in header])
     return buf.getvalue()
+
+
+def _cell(v: Any, lang: str) -> Any:
+    """A gradebook CSV's cell: a score with a decimal comma in Russian (as the check's CSV)."""
+    if v is None:
+        return ""
+    return str(v).replace(".", ",") if lang == "ru" and isinstance(v, float) else v
