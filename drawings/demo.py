@@ -179,7 +179,7 @@ def page(scene: Scene | str | Path, *, language: str | None = None, frames: int 
     data = lesson(sc, phi_deg=phi_deg, frames=frames, language=lang)
     words = WORDS[lang]
     esc = {k: html.escape(v) for k, v in words.items() if isinstance(v, str)}
-    phi = f"{data['phi_deg']:g}".replace(".", words["decimal"])
+    phi = f"{data['phi_deg']:g}".replace(".", str(words["decimal"]))
     body = _BODY.format(title=html.escape(data["title"]), phi=phi, **esc)
     script = resources.files("drawings").joinpath("demo_page.js").read_text(encoding="utf-8")
     return (f'<!DOCTYPE html>\n<html lang="{lang}"><head><meta charset="utf-8">'
