@@ -20,6 +20,7 @@ import re
 import shutil
 import tomllib
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -97,6 +98,10 @@ def english_leaks(text: str, own: list[str] = ()) -> list[str]:  # type: ignore[
     return sorted(set(re.findall(r"\S*[А-Яа-яЁё]\S*", _without(text, list(own)))))
 
 
+#: A polygon's segment found, named by its two letters ("F21^n = no."): a symbol, not a word.
+_SEGMENT_FOUND = re.compile(r"(?<== )[a-z]{2}(?=[.,;]?\s)")
+
+
 def leaks(text: str, lang: str, own: list[str] = ()) -> list[str]:  # type: ignore[assignment]
     return russian_leaks(text, own) if lang == "ru" else english_leaks(text, own)
 
@@ -160,32 +165,35 @@ def _sheet_words(path: Path) -> dict[str, tuple[set[str], str, str]]:
         larger.may_grow = keep
 
 
-@pytest.fixture(scope="module")
-def sheet_words() -> dict[Path, dict[str, tuple[set[str], str, str]]]:
-    """Every drawable sample's words, in both languages: drawn in two processes (the samples are
-    independent; CI's machine has two cores), the longest first."""
+#: The samples' sheets being drawn (:func:`_drawn_meanwhile`), by path.
+_DRAWING: dict[Path, Any] = {}
+
+
+@pytest.fixture(scope="module", autouse=True)
+def _drawn_meanwhile(request):
+    """The sheets of every sample a selected test reads, both languages, drawn in two other
+    processes while this module's other tests run (the samples are independent; CI's machine
+    has two cores), the longest first; the sheets' tests, last in the module, read them."""
     import multiprocessing
     import os
     from concurrent.futures import ProcessPoolExecutor
 
-    order = sorted(DRAWABLE, key=lambda p: -p.stat().st_size)
-    workers = min(2, os.cpu_count() or 1)
-    if workers < 2:
-        return {p: _sheet_words(p) for p in order}
-    with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("fork")) as pool:
-        return dict(zip(order, pool.map(_sheet_words, order), strict=True))
+    wanted = {item.callspec.params["path"] for item in request.session.items
+              if getattr(item, "originalname", "") == "test_every_sheet_of_every_sample_in_one_language"}
+    if (os.cpu_count() or 1) < 2 or not wanted:
+        yield  # drawn here, when read
+        return
+    pool = ProcessPoolExecutor(2, mp_context=multiprocessing.get_context("fork"))
+    try:
+        _DRAWING.update({p: pool.submit(_sheet_words, p) for p in sorted(wanted, key=lambda p: -p.stat().st_size)})
+        yield
+    finally:
+        pool.shutdown(wait=True, cancel_futures=True)
+        _DRAWING.clear()
 
 
-@pytest.mark.parametrize(("path", "lang"), [(p, lang) for p in DRAWABLE for lang in LANGS],
-                         ids=[f"{p.parent.name}-{p.stem}-{lang}" for p in DRAWABLE for lang in LANGS])
-def test_every_sheet_of_every_sample_in_one_language(sheet_words, path, lang):
-    """Every word of every sheet in the run's language (the DXF's too, one sample of each kind)."""
-    langs, svg, dxf = sheet_words[path][lang]
-    own = own_words(path)
-    assert langs == {lang}
-    assert svg.strip() and not leaks(svg, lang, own), (path.name, leaks(svg, lang, own)[:20])
-    if path.stem in DXF_SAMPLES:
-        assert dxf.strip() and not leaks(dxf, lang, own), (path.name, "dxf", leaks(dxf, lang, own)[:20])
+def sheet_words(path: Path) -> dict[str, tuple[set[str], str, str]]:
+    return _DRAWING[path].result() if path in _DRAWING else _sheet_words(path)
 
 
 def test_sheets_and_terminal_follow_the_locale_when_nothing_is_asked(tmp_path, monkeypatch, capsys):
@@ -259,7 +267,7 @@ def test_solve_json_and_csv_of_every_scene(tmp_path, capsys, path):
         capsys.readouterr()
         data = json.loads(j.read_text(encoding="utf-8"))
         said = "\n".join(_strings(data, _SENTENCES if lang == "ru" else None))
-        said = _without_keys(said, data)
+        said = _SEGMENT_FOUND.sub(" ", _without_keys(said, data))
         assert not leaks(said, lang, own), (path.name, lang, "json", leaks(said, lang, own)[:20])
         if c.exists():  # a scene with tables over the positions
             table = c.read_text(encoding="utf-8")
@@ -376,10 +384,8 @@ _SEEN = """() => {
 }"""
 
 
-#: What the page names in the reader's own terms: the keys of the keyboard ("Home / End"), a
-#: polygon's segment found ("F21^n = no.").
+#: What the page names in the reader's own terms: the keys of the keyboard ("Home / End").
 _KEYS_NAMED = re.compile(r"\b(?:Home|End)\b")
-_SEGMENT_FOUND = re.compile(r"(?<== )[a-z]{2}(?=[.,;]?\s)")
 #: A class-III scene whose page's script stops before it is ready (a fault of the page, not of
 #: its words): its words are not read.
 _PAGE_FAILS = {"triad_press"}
@@ -505,3 +511,18 @@ def test_variants_files_handouts_and_gradebook_in_one_language(table, tmp_path, 
     assert "Иванов L03" in cells and not leaks(cells, lang, own), leaks(cells, lang, own)[:20]
     rows = marks.read_text(encoding="utf-8")
     assert not leaks(rows, lang, own), leaks(rows, lang, own)[:20]
+
+
+# --------------------------------------------------------------------------- the sheets, drawn meanwhile
+
+
+@pytest.mark.parametrize(("path", "lang"), [(p, lang) for p in DRAWABLE for lang in LANGS],
+                         ids=[f"{p.parent.name}-{p.stem}-{lang}" for p in DRAWABLE for lang in LANGS])
+def test_every_sheet_of_every_sample_in_one_language(path, lang):
+    """Every word of every sheet in the run's language (the DXF's too, one sample of each kind)."""
+    langs, svg, dxf = sheet_words(path)[lang]
+    own = own_words(path)
+    assert langs == {lang}
+    assert svg.strip() and not leaks(svg, lang, own), (path.name, leaks(svg, lang, own)[:20])
+    if path.stem in DXF_SAMPLES:
+        assert dxf.strip() and not leaks(dxf, lang, own), (path.name, "dxf", leaks(dxf, lang, own)[:20])
