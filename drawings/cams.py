@@ -242,7 +242,7 @@ def diagram_panel(cs: CamSolution, lang: str, g: float = 1.0) -> Panel:
     _text(rec, "B0", *P(0, 0), LABEL, "end", "bottom")
     _text(rec, "s", *P(0, float(np.max(Yd)) * 1.1), LABEL, "start", "bottom")
     _text(rec, "ds/dφ", *P(xmax, 0), SMALL, "end", "bottom")
-    note = f"μ_l = {fmt(mu * cam.scale, 4, lang)} {_unit('mm', lang)}/{_unit(cam.unit, lang)} ({ratio_text(mu)})"
+    note = f"μ_l = {fmt(mu * cam.scale, 4, lang)} {_unit('mm', lang)}/{_unit(cam.unit, lang)} ({ratio_text(mu, lang)})"
     return finish("ds-s", "cam-diagram", None, rec, _w("diagram", lang), note=note)
 
 
@@ -288,7 +288,7 @@ def rocker_panel(cs: CamSolution, lang: str, g: float = 1.0) -> Panel:
             continue
         rec.circle(P(c), 0.8, Style(stroke=None, width=0, fill=st), f"centre-{name}")
         _text(rec, _centre_name(name, lang), P(c)[0] + 1.5, P(c)[1] + 1.5, LABEL, "start", "top")
-    note = f"{ratio_text(mu)}; AD = (1 − r)·AB, r = ω_2/ω_1; ∠(OD, ⟂AB) = α"  # 1 the cam, 2 the rocker
+    note = f"{ratio_text(mu, lang)}; AD = (1 − r)·AB, r = ω_2/ω_1; ∠(OD, ⟂AB) = α"  # 1 the cam, 2 the rocker
     return finish("rocker", "cam-diagram", None, rec, _w("rocker", lang), note=note)
 
 
@@ -360,8 +360,8 @@ def profile_panel(cs: CamSolution, lang: str, target: float = 180.0, mu: float |
         for j in np.flatnonzero(bad):
             rec.circle(P(pr.actual[j]), 0.5, Style(stroke=None, width=0, fill="#c00000"), f"undercut-{j}")
     _phases_and_omega(rec, cam, pr, mu)
-    note = (f"{ratio_text(mu)}; {len(q)} положений, повёрнутых на −φ" if lang == "ru" else
-            f"{ratio_text(mu)}; {len(q)} positions turned by −φ")
+    note = (f"{ratio_text(mu, lang)}; {len(q)} положений, повёрнутых на −φ" if lang == "ru" else
+            f"{ratio_text(mu, lang)}; {len(q)} positions turned by −φ")
     return finish("profile", "cam-profile", None, rec, _w("profile", lang), note=note, quantity="length",
                   scale=mu)
 
@@ -530,7 +530,7 @@ def build_panels(cs: CamSolution, spec: SheetSpec) -> list[Panel]:
                 yield [profile, motion, *t, results]
 
     found = fullest_on_one_sheet((candidates(mu) for mu in sorted(mus, reverse=True)), spec, cam.path,
-                                 lambda ps: ratio_text(ps[0].scale or 1000.0))
+                                 lambda ps: ratio_text(ps[0].scale or 1000.0, spec.language))
     return found[0] if found is not None else at_a1
 
 
@@ -545,5 +545,5 @@ def draw(source: CamSolution | Cam | str | Path, *, format: str | None = None, o
                       font=font)
     choose(spec.font, cam.path, font)
     panels = build_panels(cs, spec)
-    sheets = compose(panels, spec, ratio_text(panels[0].scale or 1000.0), cam.path)
+    sheets = compose(panels, spec, ratio_text(panels[0].scale or 1000.0, spec.language), cam.path)
     return Drawing(cam, spec, tuple(panels), tuple(sheets))

@@ -305,7 +305,9 @@ def add_sheet_options(check_parser: argparse.ArgumentParser) -> argparse.Argumen
                               help="also write the marked sheet and the 1:1 overlay of each file here")
     check_parser.add_argument("--sheet-format", default="svg", metavar="svg,pdf,png,dxf",
                               help="formats of the sheets (default svg)")
-    check_parser.add_argument("--sheet-language", choices=("ru", "en"), default="ru")
+    check_parser.add_argument("--sheet-language", choices=("ru", "en"),
+                              help="of the marked sheets (default: the report's, --language else the scene's "
+                                   "[sheet] language else the locale's)")
     inner = check_parser.get_default("func")
 
     def run_with_sheets(args: argparse.Namespace) -> int:
@@ -326,7 +328,10 @@ def add_sheet_options(check_parser: argparse.ArgumentParser) -> argparse.Argumen
             stale: list[Path] = []  # the old sheets of the file being checked
 
             def extra(report: Report, target: Path) -> dict[Path, bytes]:
-                files = render_check_sheets(report, folder, target.stem, formats, language=args.sheet_language)
+                from plans.check.report import report_language
+
+                lang = args.sheet_language or report_language(args, report)
+                files = render_check_sheets(report, folder, target.stem, formats, language=lang)
                 staged, old = plan_sheets(folder, files, target)
                 stale[:] = old
                 return staged

@@ -51,7 +51,7 @@ WORDS = {
         "units": {"mm/(m/s)": "мм/(м/с)", "mm/(m/s²)": "мм/(м/с²)", "mm/N": "мм/Н", "N": "Н", "N·m": "Н·м",
                   "J": "Дж", "rad/s": "рад/с", "rad/s²": "рад/с²", "kg·m²": "кг·м²", "m": "м", "m/s": "м/с",
                   "m/s²": "м/с²", "m/s^2": "м/с²", "mm": "мм", "s": "с"},
-        "labels": {"F_bal": "F_ур", "M_bal": "M_ур", "M_pr": "M_пр", "I_pr": "I_пр"},
+        "labels": {"F_bal": "F_ур", "M_bal": "M_ур", "M_pr": "M_пр", "I_pr": "I_пр", "Ff": "F_тр", "Mf": "M_тр"},
         "points": {"p_v": "p", "p_a": "π"},  # the poles as a Russian course names them
     },
 }
@@ -162,8 +162,7 @@ def _language(scene: Scene, language: str | None) -> str:
         if language not in WORDS:
             raise InputError(Said("dd_one_language", v=', '.join(WORDS), language=language), field="--language")
         return language
-    lang = scene.sheet.language  # the scene's [sheet], validated with it
-    return lang if lang in WORDS else "ru"
+    return scene.sheet.language  # the scene's [sheet], else the locale's; validated with it
 
 
 #: The page's type for each of the sheets' fonts (``[sheet] font``, ``--font``): the GOST one
@@ -180,7 +179,8 @@ def page(scene: Scene | str | Path, *, language: str | None = None, frames: int 
     data = lesson(sc, phi_deg=phi_deg, frames=frames, language=lang)
     words = WORDS[lang]
     esc = {k: html.escape(v) for k, v in words.items() if isinstance(v, str)}
-    body = _BODY.format(title=html.escape(data["title"]), phi=f"{data['phi_deg']:g}", **esc)
+    phi = f"{data['phi_deg']:g}".replace(".", str(words["decimal"]))
+    body = _BODY.format(title=html.escape(data["title"]), phi=phi, **esc)
     script = resources.files("drawings").joinpath("demo_page.js").read_text(encoding="utf-8")
     return (f'<!DOCTYPE html>\n<html lang="{lang}"><head><meta charset="utf-8">'
             f'<meta name="viewport" content="width=device-width, initial-scale=1">'

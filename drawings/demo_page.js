@@ -18,7 +18,8 @@
   // numbers and words as the page's language writes them (decimal comma, F_ур, Н)
   const nf = (x, digits) => String(Number(x.toPrecision(digits))).replace(".", T.decimal);
   const fixed = (x, digits) => x.toFixed(digits).replace(".", T.decimal);
-  const lab = (s) => String(s).replace(/\b[FMI]_(bal|pr)\b/g, (m) => T.labels[m] || m).replace(/Phi/g, "Φ");
+  const lab = (s) => String(s).replace(/\b[FMI]_(bal|pr)\b/g, (m) => T.labels[m] || m)
+    .replace(/\b([FM])f(?=\d)/g, (m) => T.labels[m] || m).replace(/Phi/g, "Φ");  // Ff56: a pair's friction
   const unit = (u) => T.units[u] || u;
   const pt = (nm) => (T.points || {})[nm] || nm;  // a plan's pole as the page's language names it (p, π)
   function fit(svg, boxes, pad) {

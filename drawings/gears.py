@@ -109,7 +109,7 @@ def train_alone(sol: GearSolution, lang: str, spec: SheetSpec, path: str, table:
     made = {id(t[0]): g for g, ts in zip(fs, groups, strict=True) for t in ts}
 
     def scale(panels: Sequence[Panel]) -> str:
-        return ratio_text(sol.plan.mu_l * made[id(panels[0])]) if sol.plan is not None else ""
+        return ratio_text(sol.plan.mu_l * made[id(panels[0])], lang) if sol.plan is not None else ""
 
     alone = fullest_on_one_sheet(groups, spec, path, scale)
     least = groups[-1][0]
@@ -121,10 +121,12 @@ def draw(source: GearsSolution | GearFile | str | Path, *, format: str | None = 
          orientation: str | None = None, language: str | None = None, font: str | None = None) -> GearDrawing:
     """The meshing sheet (when the file has an external pair) and the train sheet (when it
     gives speeds): of a solved gear file (``plans.solve``), or of a file or its path, solved here."""
+    from plans.language import choose as run_language
+
     gs = source if isinstance(source, GearsSolution) else solve_file(source)
     gf = gs.file
     sol = gs.solution
-    spec = sheet_spec(gf.raw, gf.path, gf.title or tr("title", "ru" if language != "en" else "en"),
+    spec = sheet_spec(gf.raw, gf.path, gf.title or tr("title", run_language(language, gf.raw)),
                       format=format, orientation=orientation, language=language, font=font)
     choose(spec.font, gf.path, font)
     lang = spec.language

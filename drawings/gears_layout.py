@@ -44,7 +44,7 @@ def train_blocks(sol: GearSolution, lang: str, f: float, spec: SheetSpec, path: 
     if sol.plan is None:
         return []
     out: list[TrainBlock] = []
-    text = ratio_text(sol.plan.mu_l * f)
+    text = ratio_text(sol.plan.mu_l * f, lang)
     for scales in train_scales(sol, f):
         panels = train_figures(sol, lang, scales)
         seen: set[tuple] = set()
@@ -149,7 +149,7 @@ class FieldSearch:
         """The meshing drawn over the fullest field whose drawing keeps one sheet (the least
         field, on as many sheets as it takes, where none does), the train moved on."""
         later = [block.sheet] if block is not None else []
-        scale = ratio_text(self.mg.k * 1000.0)
+        scale = ratio_text(self.mg.k * 1000.0, lang)
         for _, field in self.candidates(block):
             drawn = meshing_panel(gs.meshing_in(i, field), lang)
             laid = compose([drawn] + self.rest, self.spec, scale, self.path)

@@ -152,4 +152,4 @@ def meshing_panel(mg: Meshing, lang: str) -> Panel:
     rec.polygon([PAPER(-W, yhi), PAPER(W, yhi), PAPER(W, ylo), PAPER(-W, ylo)], Style(stroke="#999", width=0.18, cls="field"), "field")
     g1, g2 = p.gears
     title = f"{tr('meshing', lang)} {g1}–{g2}"
-    return finish(f"meshing-{g1}-{g2}", "meshing", None, rec, title, f"M {ratio_text(mg.k * 1000.0)}")
+    return finish(f"meshing-{g1}-{g2}", "meshing", None, rec, title, f"M {ratio_text(mg.k * 1000.0, lang)}")

@@ -216,7 +216,7 @@ def construction_panel(ds: DesignSolution, lang: str, target: float, mu: float |
             rec.line(P(0j), P(A), CONSTRUCT, f"given-crank-{k}")
             rec.line(P(d.points["D"]), P(B), CONSTRUCT, f"given-rocker-{k}")
             _text(rec, str(k), (P(B)[0] + 1.2, P(B)[1] - 1.2), SMALL, valign="bottom")
-    note = f"{ratio_text(mu)}; " + ("штрих — положение γmin" if lang == "ru" else "dashed red: the position of γmin")
+    note = f"{ratio_text(mu, lang)}; " + ("штрих — положение γmin" if lang == "ru" else "dashed red: the position of γmin")
     return finish("construction", "synthesis-construction", None, rec, _w("construction", lang), note=note,
                   quantity="length", scale=mu)
 
@@ -491,7 +491,7 @@ def _largest(ds: DesignSolution, spec: SheetSpec) -> list[Panel]:
                     yield [c, table, motion, gamma]
 
     found = fullest_on_one_sheet((candidates(mu) for mu in mus), spec, ds.task.path,
-                                 lambda ps: ratio_text(ps[0].scale or 1000.0))
+                                 lambda ps: ratio_text(ps[0].scale or 1000.0, lang))
     if found is not None:
         return found[0]
     wide = (x1 - x0) > (y1 - y0)
@@ -512,7 +512,9 @@ def draw(source: DesignSolution | Task | str | Path, *, format: str | None = Non
     t = ds.task
     d = ds.design
     raw = t.raw if "sheet" in t.raw else {"sheet": t.task.get("sheet", {})}
-    lang = language or raw.get("sheet", {}).get("language", "ru")
+    from plans.language import choose as run_language
+
+    lang = run_language(language, raw)
     title = t.raw.get("title", t.title)
     if isinstance(title, dict):
         title = title.get(lang) or t.title
@@ -520,5 +522,5 @@ def draw(source: DesignSolution | Task | str | Path, *, format: str | None = Non
                       font=font)
     choose(spec.font, t.path, font)
     panels = build_panels(ds, spec)
-    sheets = compose(panels, spec, ratio_text(panels[0].scale or 1000.0), t.path)
+    sheets = compose(panels, spec, ratio_text(panels[0].scale or 1000.0, spec.language), t.path)
     return Drawing(d, spec, tuple(panels), tuple(sheets))

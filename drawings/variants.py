@@ -69,8 +69,8 @@ def register(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("-o", "--output", required=True, metavar="DIR", help="the group's folder")
     p.add_argument("--students", metavar="ROSTER.csv", help="roster: name, group, variant; writes DIR/handouts/")
     p.add_argument("--jobs", type=int, default=1, metavar="N", help="variants made in N processes (default 1)")
-    p.add_argument("--language", choices=("ru", "en"), default="ru",
-                   help="of the handouts and the reference sheets (default ru)")
+    p.add_argument("--language", choices=("ru", "en"),
+                   help="of the handouts, the files' comments and the reference sheets (default: the locale's)")
     p.add_argument("--font", choices=("dejavu", "gost"),
                    help="overrides [sheet] font: gost is osifont, a GOST 2.304 type B font (apt-get install fonts-osifont)")
     p.add_argument("--no-sheets", action="store_true", help="no reference sheets (files, keys, forms only)")
@@ -84,7 +84,7 @@ def make(row: Any, sheets: bool, language: str | None = None, font: str | None =
     nothing written: (built, {path in its folder: bytes})."""
     from plans.group.build import build
 
-    got = build(row)
+    got = build(row, language)
     files: dict[str, bytes] = {n: t.encode("utf-8") for n, t in got.files.items()}
     if got.error:
         return got, {}
@@ -147,7 +147,8 @@ def run(args: argparse.Namespace) -> int:
         from drawings.paper.fonts import require
 
         require(font, str(table), "--font")  # before any variant is made
-    work = [(r, not args.no_sheets, args.language, font) for r in rows]
+    lang = args.language or run_language()  # one language for every variant, its files and sheets
+    work = [(r, not args.no_sheets, lang, font) for r in rows]
     if args.jobs > 1 and len(rows) > 1:
         from concurrent.futures import ProcessPoolExecutor
 
@@ -160,7 +161,6 @@ def run(args: argparse.Namespace) -> int:
     for got, files in results:
         if got.error:
             bad += 1
-            lang = run_language()
             print(error_prefix(lang) + Said("dv_variant_error", variant=got.row.variant, where=field_name(got.row.where, lang),
                                             error=got.error).text(lang), file=sys.stderr)
             continue
@@ -173,7 +173,7 @@ def run(args: argparse.Namespace) -> int:
         if not args.quiet:
             from plans.group.gradebook import heading
 
-            print(say("vr_made", run_language(), folder=folder, kind=heading(got.kind, run_language()),
+            print(say("vr_made", lang, folder=folder, kind=heading(got.kind, lang),
                       n=sum(len(v) for v in got.key["values"].values())))
     if roster:
         hand = out / "handouts"
@@ -184,10 +184,10 @@ def run(args: argparse.Namespace) -> int:
             if got is None:
                 continue
             stem = _stem(st)
-            pages[hand / f"{stem}.pdf"] = handout_pdf(st, got, args.language, font or "dejavu")
+            pages[hand / f"{stem}.pdf"] = handout_pdf(st, got, lang, font or "dejavu")
         write_all(pages)
         if not args.quiet:
-            print(say("vr_handouts", run_language(), folder=hand, n=len(pages)))
+            print(say("vr_handouts", lang, folder=hand, n=len(pages)))
     return 2 if bad else 0
 
 

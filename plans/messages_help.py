@@ -143,8 +143,8 @@ HELP_RU: dict[str, str] = {
         "файлы сцен, зубчатых передач, кулачков, двигателей (TOML)",
     "the document to write":
         "записываемый документ",
-    "the note's language (default: the first file's [sheet] language, else ru)":
-        "язык записки (по умолчанию — [sheet] language первого файла, иначе ru)",
+    "the note's language (default: the first file's [sheet] language, else the locale's)":
+        "язык записки (по умолчанию — [sheet] language первого файла, иначе язык локали)",
     "docx (default) or pdf (through LibreOffice: soffice --headless)":
         "docx (по умолчанию) или pdf (через LibreOffice: soffice --headless)",
     "the figures' resolution (default 200)":
@@ -159,8 +159,10 @@ HELP_RU: dict[str, str] = {
         "список группы: name, group, variant; пишет DIR/handouts/",
     "variants made in N processes (default 1)":
         "делать варианты в N процессах (по умолчанию 1)",
-    "of the handouts and the reference sheets (default ru)":
-        "заданий и эталонных листов (по умолчанию ru)",
+    "of the handouts, the files' comments and the reference sheets (default: the locale's)":
+        "заданий, комментариев в файлах и эталонных листов (по умолчанию — язык локали)",
+    "of the marked sheets (default: the report's, --language else the scene's [sheet] language else the locale's)":
+        "размеченных листов (по умолчанию — язык отчёта: --language, иначе [sheet] language сцены, иначе язык локали)",
     "no reference sheets (files, keys, forms only)":
         "без эталонных листов (только файлы, ключи, формы)",
     "no progress lines":

@@ -47,6 +47,15 @@ TERMINAL: dict[str, tuple[str, str]] = {
                 "# (длины с единицей: \"65 mm\").  Проверка: plans check ЭТОТ_ФАЙЛ"),
     "cf_scales": ("# the student's scales: {{ mu = mm per unit }} or {{ K = unit per mm }}",
                   "# масштабы студента: {{ mu = мм на единицу }} или {{ K = единиц на мм }}"),
+    # ---- the blank check file of a gears, cam, engine or synthesis sheet (plans variants, plans check --template)
+    "cf_head_sheet": ("# A blank check file: type in what the student wrote; leave \"\" where nothing is written.\n"
+                      "# Lengths in the file's unit (mm), angles in degrees.  Check it with: plans check THIS_FILE",
+                      "# Пустой файл проверки: впишите то, что записал студент; оставьте \"\", где ничего не записано.\n"
+                      "# Длины — в единицах файла (мм), углы — в градусах.  Проверка: plans check ЭТОТ_ФАЙЛ"),
+    "cf_scales_polygons": ("# the student's polygons: mm per unit vector",
+                           "# масштаб многоугольников студента: мм на единичный вектор"),
+    "cf_scales_drawing": ("# the student's drawing: mm on the sheet per mm of the part",
+                          "# масштаб чертежа студента: мм на листе на мм детали"),
     # ---- plans design: the heading of the scene it writes
     "d_scene_head": ("# Designed by plans design from {name} ({mechanism}): the lengths are the design's,\n"
                      "# the crank speed, positions, masses and loads the task's.\n",

@@ -12,6 +12,7 @@ import pytest
 from plans.errors import InputError
 from plans.kinematics.placing import load_scene
 from plans.solution import solve
+from tests.locales import in_russian
 
 ROOT = Path(__file__).resolve().parents[1]
 SAMPLES = ROOT / "samples"
@@ -96,7 +97,7 @@ def test_one_numbering_on_the_plans_the_plan_of_positions_and_the_cycle(tmp_path
     text = (SAMPLES / "dynamics_slider_crank.toml").read_text(encoding="utf-8")
     text += '\n[sheet]\nset = "positions"\n' + ("first_position = 0\n" if first == 0 else "")  # headed blocks
     scene.write_text(text, encoding="utf-8")
-    d = draw(scene)
+    d = in_russian(draw)(scene)
     panels = {p.pid: p for p in _all_panels(d)}
     n = len(d.scene.driver.phis_deg)
     want = [str(k + first) for k in range(n)]
@@ -122,7 +123,7 @@ def test_energy_mass_diagram_readable_every_point_numbered():
     at GOST's 2.5 mm."""
     from drawings.linkage import draw
 
-    d = draw(SAMPLES / "dynamics_slider_crank.toml")
+    d = in_russian(draw)(SAMPLES / "dynamics_slider_crank.toml")
     w = next(p for p in _all_panels(d) if p.pid == "dyn-W")
     curve = next(q for q in w.prims if q.eid == "dyn-W-curve")
     xs = [x for x, _ in curve.pts]
@@ -149,7 +150,7 @@ def test_letters_at_least_gost_2_5_mm_on_the_other_kinds(path):
     from tests.test_drawings_samples import gost_letters
 
     kind, _ = read_kind(str(SAMPLES / path))
-    d = importlib.import_module(KINDS[kind][1]).draw(str(SAMPLES / path))
+    d = in_russian(importlib.import_module(KINDS[kind][1]).draw)(str(SAMPLES / path))
     for sh in d.sheets:
         assert gost_letters(sh.svg()) == [], (path, sh.number)
 

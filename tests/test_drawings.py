@@ -29,6 +29,10 @@ from plans.kinematics.exact import solve
 from plans.kinematics.placing import load_scene
 from plans.kinematics.plan import ConstructionLine, Plan, PlanPoint, Segment
 from plans.solution import Solution
+from tests.locales import in_russian
+
+#: The sheets these tests measure were drawn in Russian, the default before it followed the locale.
+draw = in_russian(draw)
 
 ROOT = Path(__file__).resolve().parents[1]
 V_ENGINE = ROOT / "samples" / "v_engine.toml"

@@ -20,11 +20,13 @@ from plans.errors import InputError
 from plans.kinematics.exact import solve
 from plans.kinematics.placing import load_scene
 from plans.solution import Solution
+from tests.locales import in_russian
 
 
 def draw(source, **kw):
-    """The block layout these tests are about: ``[sheet] set = "positions"``."""
-    return draw_set(source, sheet_set="positions", **kw)
+    """The block layout these tests are about: ``[sheet] set = "positions"``, on Russian sheets
+    unless the file or the test says otherwise (the default follows the locale: pinned)."""
+    return in_russian(draw_set)(source, sheet_set="positions", **kw)
 
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -15,6 +15,10 @@ import pytest
 from drawings.linkage import draw
 from drawings.paper.export import save
 from drawings.paper.fill import drawn_part
+from tests.locales import in_russian
+
+#: The sheets these tests measure were drawn in Russian, the default before it followed the locale.
+draw = in_russian(draw)
 
 ROOT = Path(__file__).resolve().parents[1]
 SAMPLES = sorted((ROOT / "samples").glob("*.toml"))

@@ -15,6 +15,7 @@ from pathlib import Path
 import pytest
 
 from tests.dxf_sheets import differences, dxf_shapes, dxf_tags_shapes, svg_shapes
+from tests.locales import in_russian
 
 ezdxf = pytest.importorskip("ezdxf")
 
@@ -35,7 +36,7 @@ def _draw(path: Path):
     from plans.kinds import KINDS, read_kind
 
     kind, _ = read_kind(path)
-    return importlib.import_module(KINDS[kind][1]).draw(path).sheets
+    return in_russian(importlib.import_module(KINDS[kind][1]).draw)(path).sheets  # Russian, as measured
 
 
 @pytest.fixture(scope="module")

@@ -185,7 +185,7 @@ def test_a_variant_that_cannot_be_built_is_named_and_the_others_made(tmp_path: P
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "variant A2 (t.csv, row 3)" in err[0]
     shutil.rmtree(out)
-    assert main(["variants", str(tmp_path / "t.csv"), "-o", str(out), "--quiet"]) == 2  # Russian, the default
+    assert main(["variants", str(tmp_path / "t.csv"), "-o", str(out), "--quiet", "--language", "ru"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith("plans: ошибка: вариант A2 (t.csv, строка 3): группа RRP"), err
     assert sorted(p.name for p in out.iterdir()) == ["A1", "A3"]
@@ -199,7 +199,7 @@ def test_bad_tables_are_one_line(tmp_path: Path, capsys: pytest.CaptureFixture) 
     assert main(["variants", str(tmp_path / "t.csv"), "-o", str(tmp_path / "out"), "--quiet", "--language", "en"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "z2" in err[0] and "row 2" in err[0]
-    assert main(["variants", str(tmp_path / "t.csv"), "-o", str(tmp_path / "out"), "--quiet"]) == 2  # Russian
+    assert main(["variants", str(tmp_path / "t.csv"), "-o", str(tmp_path / "out"), "--quiet", "--language", "ru"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "z2" in err[0] and "строка 2" in err[0] and err[0].startswith("plans: ошибка: ")
     (tmp_path / "u.csv").write_text("name,m\nB1,4\n", encoding="utf-8")

@@ -14,8 +14,12 @@ import shapely
 import plans
 from drawings import draw
 from plans.kinematics.scales import is_round
+from tests.locales import in_russian
 from tests.test_drawings import _stated_scale, _vectors
 from tests.test_sheet_fit import assert_clear
+
+#: The sheets these tests measure were drawn in Russian, the default before it followed the locale.
+draw = in_russian(draw)
 
 ROOT = Path(__file__).resolve().parents[1]
 SAMPLES = ROOT / "samples"

@@ -14,6 +14,10 @@ from drawings.paper.sheet import usable
 from plans.kinematics.placing import load_scene
 from plans.kinematics.scales import is_round
 from plans.solution import solve
+from tests.locales import in_russian
+
+#: The sheets these tests measure were drawn in Russian, the default before it followed the locale.
+draw = in_russian(draw)
 
 ROOT = Path(__file__).resolve().parents[1]
 SAMPLES = sorted((ROOT / "samples").glob("*.toml"))

@@ -12,6 +12,10 @@ from drawings.linkage import draw
 from drawings.paper.sheet import usable
 from plans.errors import InputError
 from plans.scene.sheet import read_sheet
+from tests.locales import in_russian
+
+#: The sheets these tests measure were drawn in Russian, the default before it followed the locale.
+draw = in_russian(draw)
 
 ROOT = Path(__file__).resolve().parents[1]
 SAMPLES = ROOT / "samples"

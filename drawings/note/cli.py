@@ -19,7 +19,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("files", nargs="+", metavar="FILE", help="scene, gears, cam, engine files (TOML)")
     p.add_argument("-o", "--output", required=True, metavar="NOTE.docx", help="the document to write")
     p.add_argument("--language", choices=("ru", "en"), default=None,
-                   help="the note's language (default: the first file's [sheet] language, else ru)")
+                   help="the note's language (default: the first file's [sheet] language, else the locale's)")
     p.add_argument("--format", choices=("docx", "pdf"), default=None,
                    help="docx (default) or pdf (through LibreOffice: soffice --headless)")
     p.add_argument("--dpi", type=float, default=200.0, help="the figures' resolution (default 200)")
@@ -30,10 +30,9 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def _language(files: list[str]) -> str:
     from plans.io import read_toml
+    from plans.language import choose
 
-    sheet = read_toml(files[0]).get("sheet")
-    lang = sheet.get("language") if isinstance(sheet, dict) else None
-    return lang if lang in ("ru", "en") else "ru"
+    return choose(None, read_toml(files[0]))
 
 
 def run(args: argparse.Namespace) -> int:
@@ -55,9 +54,10 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def note_bytes(files: list[str], lang: str = "ru", dpi: float = 200.0, font: str | None = None) -> bytes:
-    """The note's DOCX bytes: the files read and solved, the content built, the figures drawn
-    (their words in ``font``; None: each file's ``[sheet] font``)."""
+def note_bytes(files: list[str], lang: str | None = None, dpi: float = 200.0, font: str | None = None) -> bytes:
+    """The note's DOCX bytes in ``lang`` (None: the first file's ``[sheet] language``, else
+    the locale's): the files read and solved, the content built, the figures drawn (their
+    words in ``font``; None: each file's ``[sheet] font``)."""
     from plans.note.build import build
     from plans.note.source import read
 
@@ -65,6 +65,7 @@ def note_bytes(files: list[str], lang: str = "ru", dpi: float = 200.0, font: str
     from .figures import Figures
 
     items = read(list(files))
+    lang = lang or _language(list(files))
     return write_docx(build(items, lang), Figures(items, lang, dpi, font))
 
 

@@ -54,7 +54,7 @@ def demo_page(text: str, name: str, lang: str | None = None) -> bytes:
     return page(parse_scene(text, name), language=lang).encode("utf-8")
 
 
-def note_file(text: str, stem: str, lang: str) -> bytes:
+def note_file(text: str, stem: str, lang: str | None) -> bytes:
     """``plans note`` of one file: solved as its own command solves it, in a temporary folder
     (the note reads files by their paths)."""
     import tempfile

@@ -319,7 +319,7 @@ class Workbench:
 
     async def note(self, request: Request) -> Response:
         """The explanatory note of the file (``plans note``), as DOCX."""
-        lang = _language(request, "ru")
+        lang = request.query_params.get("language") and _language(request)  # none: the file's, else the locale's
         text = await self.text(request)
         stem = Path(self.source_name(request)).stem.strip("<>") or "scene"
         data = await run_in_threadpool(note_file, text, stem, lang)

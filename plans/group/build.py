@@ -148,9 +148,14 @@ def fill(template: str, row: Row) -> str:
     return PLACEHOLDER.sub(lambda m: row.variant if m.group(1) == "variant" else row.data[m.group(1)], template)
 
 
-def build(row: Row) -> Built:
-    """Make one variant in memory: its file, key and blank form; a variant that cannot be
-    made (cannot be assembled, a mesh that jams, ...) comes back with ``error``."""
+def build(row: Row, lang: str | None = None) -> Built:
+    """Make one variant in memory: its file, key and blank form (their comments in ``lang``,
+    None: the run's); a variant that cannot be made (cannot be assembled, a mesh that jams,
+    ...) comes back with ``error``."""
+    if lang is None:
+        from plans.errors import run_language
+
+        lang = run_language()
     out = Built(row)
     try:
         from plans.io import loads_toml
@@ -171,10 +176,10 @@ def build(row: Row) -> Built:
         if out.kind == "synthesis":  # designed into its scene: the scene's figures and the design's
             from plans.group.sheets import synthesis_values
 
-            scene_text, syn = synthesis_values(data, path)
+            scene_text, syn = synthesis_values(data, path, lang)
             out.files["scene.toml"] = scene_text
             values, scales = linkage_key(loads_toml(scene_text, path), str(Path(path).with_name("scene.toml")))
-            out.files["synthesis.check.toml"] = _synthesis_form(name, syn, row.variant)
+            out.files["synthesis.check.toml"] = _synthesis_form(name, syn, row.variant, lang)
             values = {**{q: {"0": v} for q, v in syn.items()}, **values}
         else:
             values, scales = key_values(out.kind, data, path)
@@ -185,11 +190,11 @@ def build(row: Row) -> Built:
             out.key["scales"] = scales
         if out.kind in ("linkage", "synthesis"):
             scene_values = {q: v for q, v in values.items() if q not in syn}
-            out.files["check.toml"] = linkage_form("scene.toml", scene_values, row.variant, "F_bal" in values)
+            out.files["check.toml"] = linkage_form("scene.toml", scene_values, row.variant, "F_bal" in values, lang)
         elif out.kind in ("gears", "cam", "engine"):
             from plans.group.sheets import blank
 
-            out.files["check.toml"] = blank(out.kind, name, values, row.variant)
+            out.files["check.toml"] = blank(out.kind, name, values, row.variant, lang)
     except PlansError as exc:
         out.error = one_line(exc)
     except (ValueError, ArithmeticError) as exc:  # a geometry the solvers refuse
@@ -207,25 +212,26 @@ def key_values(kind: str, data: dict[str, Any], path: str
     return linkage_key(data, path)
 
 
-def _synthesis_form(name: str, values: dict[str, float], variant: str) -> str:
+def _synthesis_form(name: str, values: dict[str, float], variant: str, lang: str) -> str:
     from plans.group.sheets import blank
 
-    return blank("synthesis", name, {q: {"0": v} for q, v in values.items()}, variant)
+    return blank("synthesis", name, {q: {"0": v} for q, v in values.items()}, variant, lang)
 
 
-def linkage_form(scene_ref: str, values: dict[str, dict[str, float]], variant: str, force: bool) -> str:
+def linkage_form(scene_ref: str, values: dict[str, dict[str, float]], variant: str, force: bool,
+                 lang: str = "en") -> str:
     """The blank check file of a linkage variant: the form ``plans check --template`` writes
-    (every figure of the key a value to write), with the group and the variant."""
+    (every figure of the key a value to write, its comments in ``lang``), with the group and the variant."""
     import json
+
+    from plans.phrases import say
 
     def q(x: str) -> str:
         return json.dumps(x, ensure_ascii=False)
 
-    lines = ["# A blank check file: type in what the student wrote; leave \"\" where nothing is written.",
-             "# measured: segments measured on the student's plans, mm; values: SI units",
-             "# (lengths with their unit: \"65 mm\").  Check it with: plans check THIS_FILE",
+    lines = [say("cf_head", lang),
              "format = 1", 'student = ""', 'group = ""', f"variant = {q(variant)}", f"scene = {q(scene_ref)}", "",
-             "[scales]  # the student's scales: { mu = mm per unit } or { K = unit per mm }",
+             "[scales]  " + say("cf_scales", lang),
              "length = { mu = 1000 }", 'velocity = { mu = "" }', 'acceleration = { mu = "" }']
     if force:
         lines.append('force = { mu = "" }')

@@ -40,7 +40,9 @@ def _template(args: argparse.Namespace) -> int | None:
 
     target = Path(args.output) if args.output else None
     ref = str(src.resolve()) if target is None else scene_reference(src, target)
-    text = blank(kind, ref, sheet_key(kind, data, str(src)), "")
+    from plans.errors import run_language
+
+    text = blank(kind, ref, sheet_key(kind, data, str(src)), "", run_language())
     from plans.check.forms import put_form
 
     return put_form(text, target, src, args.quiet)

@@ -56,12 +56,19 @@ def heading(column: str, lang: str) -> str:
 def _at(what: str, phis: list[float], lang: str) -> str:
     """``coriolis_reversed at 30,60°``; in Russian the teacher's words for the cause."""
     from plans.errors import Figures
-    from plans.language import CAUSES
     from plans.phrases import say
 
     if lang == "ru":
-        return say("gb_at", lang, what=CAUSES[what][1] if what in CAUSES else what, phis=Figures(phis).written(lang))
+        return say("gb_at", lang, what=_cause(what, lang), phis=Figures(phis).written(lang))
     return say("gb_at", lang, what=what, phis=",".join(f"{p:g}" for p in phis))
+
+
+def _cause(kind: str, lang: str) -> str:
+    """A cause's kind as the gradebook names it: the rubric's key in English, the teacher's
+    words in Russian."""
+    from plans.language import CAUSES
+
+    return CAUSES[kind][1] if lang == "ru" and kind in CAUSES else kind
 
 
 @dataclass
@@ -137,7 +144,7 @@ def _sheet_of(path: Path) -> Sheet | None:
             sh.report, sh.text, sh.row = dumps(rep.to_json()), table(rep, lang) + "\n", summary_row(str(path), rep, lang=lang)
             full = (rep.diagnosis.rubric.get("full", 100.0) if rep.diagnosis is not None else 100.0) or 100.0
             sh.score = 100.0 * (rep.mark if rep.mark is not None else full) / full
-            sh.causes = [_at(c.kind, c.positions, lang) if c.positions else c.kind for c in rep.causes]
+            sh.causes = [_at(c.kind, c.positions, lang) if c.positions else _cause(c.kind, lang) for c in rep.causes]
             sh.unexplained = list(dict.fromkeys(_at(i.quantity, [i.phi_deg], lang) for i in rep.unexplained))
             sh.findings = dict(Counter(f.kind for f in rep.findings_left))
         else:
@@ -149,7 +156,7 @@ def _sheet_of(path: Path) -> Sheet | None:
             sh.report, sh.text, sh.row = (dumps(srep.to_json()), sheet_table(srep, lang) + "\n",
                                           sheet_row(str(path), srep, lang))
             sh.score = 100.0 * srep.mark / (srep.full or 100.0)
-            sh.causes = [c.kind for c in srep.causes]
+            sh.causes = [_cause(c.kind, lang) for c in srep.causes]
             sh.unexplained = list(dict.fromkeys(i.quantity for i in srep.unexplained))
     except PlansError as exc:
         sh.error = one_line(exc)
@@ -353,5 +360,12 @@ def csv_text(kinds: list[str], groups: dict[str, list[dict[str, Any]]], lang: st
     w.writerow([heading(h, lang) for h in header])
     for _, rs in sorted(groups.items()):
         for r in rs:
-            w.writerow(["" if r[h] is None else r[h] for h in header])
+            w.writerow([_cell(r[h], lang) for h in header])
     return buf.getvalue()
+
+
+def _cell(v: Any, lang: str) -> Any:
+    """A gradebook CSV's cell: a score with a decimal comma in Russian (as the check's CSV)."""
+    if v is None:
+        return ""
+    return str(v).replace(".", ",") if lang == "ru" and isinstance(v, float) else v

@@ -162,8 +162,8 @@ def _engine_how(q: str) -> str:
     return "drawn"
 
 
-def synthesis_values(data: dict[str, Any], path: str) -> tuple[str, dict[str, float]]:
-    """A synthesis task designed: the scene's text and the design's figures (lengths
+def synthesis_values(data: dict[str, Any], path: str, lang: str = "en") -> tuple[str, dict[str, float]]:
+    """A synthesis task designed: the scene's text (its heading in ``lang``) and the design's figures (lengths
     ``l_<name>`` in the file's unit, ``theta`` in degrees, ``K``, the stroke ``H`` or the
     swing ``psi`` in degrees, ``gamma_min`` in degrees, as measured back on the design)."""
     from plans.synthesis.cli import check_scene, results
@@ -172,7 +172,7 @@ def synthesis_values(data: dict[str, Any], path: str) -> tuple[str, dict[str, fl
     from plans.synthesis.solution import solve_task
 
     d = solve_task(task_from_dict(data, path)).design
-    text = scene_text(d)
+    text = scene_text(d, lang)
     check_scene(text, path)
     res = results(d, "scene.toml")
     out = {f"l_{k}": float(v) for k, v in res["lengths"].items() if v}
@@ -219,20 +219,22 @@ def _round(v: float) -> float:
     return float(f"{v:.9g}")
 
 
-def blank(kind: str, file_ref: str, key: dict[str, dict[str, float]], variant: str) -> str:
-    """The blank check file of a gears or cam sheet (the form ``plans check --template`` writes)."""
+def blank(kind: str, file_ref: str, key: dict[str, dict[str, float]], variant: str, lang: str = "en") -> str:
+    """The blank check file of a gears or cam sheet (the form ``plans check --template`` writes),
+    its comments in ``lang``."""
     import json
+
+    from plans.phrases import say
 
     def q(x: str) -> str:
         return json.dumps(x, ensure_ascii=False)
 
-    lines = ["# A blank check file: type in what the student wrote; leave \"\" where nothing is written.",
-             "# Lengths in the file's unit (mm), angles in degrees.  Check it with: plans check THIS_FILE",
+    lines = [say("cf_head_sheet", lang),
              "format = 1", 'student = ""', 'group = ""', f"variant = {q(variant)}", f"{kind} = {q(file_ref)}", ""]
     if kind == "engine":
-        lines += ["[scales]  # the student's polygons: mm per unit vector", "length = { mu = 50 }"]
+        lines += ["[scales]  " + say("cf_scales_polygons", lang), "length = { mu = 50 }"]
     else:
-        lines += ["[scales]  # the student's drawing: mm on the sheet per mm of the part", "length = { mu = 1 }"]
+        lines += ["[scales]  " + say("cf_scales_drawing", lang), "length = { mu = 1 }"]
     phis = sorted({float(p) for vals in key.values() for p in vals})
     for phi in phis:
         lines += ["", "[[positions]]", f"phi_deg = {phi:g}", "", "[positions.values]"]

@@ -18,8 +18,14 @@ from .source import HOOKS, Item, read
 from .words import say, w
 
 
-def note(paths: list[str], lang: str = "ru") -> Note:
-    """Read and solve the files, then build their note."""
+def note(paths: list[str], lang: str | None = None) -> Note:
+    """Read and solve the files, then build their note in ``lang`` (None: the first file's
+    ``[sheet] language``, else the locale's)."""
+    if lang is None:
+        from plans.io import read_toml
+        from plans.language import choose
+
+        lang = choose(None, read_toml(paths[0]))
     return build(read(paths), lang)
 
 

@@ -33,7 +33,7 @@ class SheetSpec:
         [sheet]
         format = "A1"                 # A1 | A2 | A3 | A4  (CLI --sheet overrides)
         orientation = "landscape"     # or "portrait"
-        language = "ru"               # or "en"
+        language = "ru"               # or "en"; default: the locale's (Russian for ru_*)
         title = "Механизм V-образного двигателя"   # name field (default: the scene's title);
                                       # or one per language: { ru = "...", en = "..." }
         designation = "ТММ.КП.07.00.00"

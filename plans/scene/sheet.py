@@ -76,7 +76,11 @@ def read_sheet(raw: dict[str, Any], path: str, default_title: str = "", **overri
         raise InputError(Said("sh_landscape_portrait_ori", ori=ori), file=path,
                          field="sheet.orientation")
     out["orientation"] = ori
-    lang = override.get("language") or data.get("language", "ru")
+    lang = override.get("language") or data.get("language")
+    if lang is None and "language" not in data:  # neither asked for nor the file's: the locale's, as the terminal's
+        from plans.language import locale_language
+
+        lang = locale_language()
     if lang not in ("ru", "en"):
         raise InputError(Said("sh_ru_en_lang", lang=lang), file=path, field="sheet.language")
     out["language"] = lang
@@ -217,10 +221,11 @@ def check_sheet(raw: dict[str, Any], path: str) -> None:
 
 
 def _language(raw: dict) -> str:
-    """The sheet's language as the file gives it (its title is the scene's in that language)."""
-    sheet = raw.get("sheet")
-    lang = sheet.get("language") if isinstance(sheet, dict) else None
-    return lang if lang in ("ru", "en") else "ru"
+    """The sheet's language as the file gives it, else the locale's (its title is the scene's
+    in that language)."""
+    from plans.language import choose
+
+    return choose(None, raw)
 
 
 def __getattr__(name: str) -> Any:

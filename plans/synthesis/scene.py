@@ -156,4 +156,6 @@ def scene_text(d: Design, lang: str = "en") -> str:
     from plans.phrases import say
 
     name = " ".join(os.path.basename(t.path).split())
-    return say("d_scene_head", lang, name=name, mechanism=t.mechanism) + dumps(scene_dict(d))
+    # the task's key as written in English; in Russian the mechanism's name (as plans design says it)
+    mechanism = say(f"dm_{t.mechanism}", lang) if lang == "ru" else t.mechanism
+    return say("d_scene_head", lang, name=name, mechanism=mechanism) + dumps(scene_dict(d))
