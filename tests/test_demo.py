@@ -322,6 +322,58 @@ def test_every_sample_page_opens_without_errors(browser, tmp_path):
         assert requests == [f.as_uri()], p.stem
 
 
+#: The class-III scenes (a triad: Assur's special point S gives its plans).
+TRIADS = sorted((SAMPLES / "class3").glob("*.toml"))
+
+
+def _joint(pg, name: str) -> complex:
+    """A joint's centre on the step-by-step scheme as drawn (y up, as the lesson's)."""
+    return complex(float(pg.get_attribute(f"#scheme-joint-{name}", "cx")),
+                   -float(pg.get_attribute(f"#scheme-joint-{name}", "cy")))
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+@pytest.mark.parametrize("path", TRIADS, ids=[p.stem for p in TRIADS])
+def test_class3_page_steps_through_every_step_mistake_and_the_cycle(browser, tmp_path, path, lang):
+    f = tmp_path / f"{path.stem}.{lang}.html"
+    f.write_text(page(path, frames=12, language=lang), encoding="utf-8")
+    pg, errors, requests = _open(browser, f)
+    n = pg.evaluate("plansDemo.steps")
+    assert n > 20  # the plans by Assur's point, the group's polygon, the crank, the lever
+    # Assur's point S, the first point of the velocity plan after a: on the scheme, highlighted,
+    # where the axes AD and BE of the leashes drawn there meet (the drawn joints' own geometry)
+    pg.click("#next")
+    assert "Assur" in pg.inner_text("#step-text") or "Ассура" in pg.inner_text("#step-text")
+    assert "hi" in pg.get_attribute("#scheme-joint-S", "class")
+    a, d, b, e = (_joint(pg, nm) for nm in "ADBE")
+    u, w = d - a, e - b
+    s = a + u * ((b - a).real * w.imag - (b - a).imag * w.real) / (u.real * w.imag - u.imag * w.real)
+    assert abs(_joint(pg, "S") - s) <= 0.05 * abs(d - a)
+    pg.keyboard.press("Home")
+    texts, drawn = [], 0
+    for k in range(n):
+        texts.append(pg.inner_text("#step-text"))
+        assert pg.inner_text("#counter") == f"{k + 1} / {n}"
+        drawn = max(drawn, pg.locator("#panel [data-seg]").count())
+        if k < n - 1:
+            pg.click("#next")
+    assert pg.is_disabled("#next") and all(x.strip() for x in texts) and drawn > 0
+    boxes = pg.locator("#mistakes input")
+    assert boxes.count() >= 2
+    for k in range(boxes.count()):
+        boxes.nth(k).check()
+        assert pg.inner_text("#mistake-text").strip()
+        boxes.nth(k).uncheck()
+    pg.click("#mode-cycle")
+    pg.fill("#phi", "5")
+    pg.dispatch_event("#phi", "input")
+    assert pg.locator("#cyc-scheme [id^='cyc-scheme-joint-']").count() >= 6
+    assert pg.locator("#cyc-vel line").count() > 0 and pg.locator("#cyc-acc line").count() > 0
+    pg.close()
+    assert errors == []
+    assert requests == [f.as_uri()]
+
+
 def test_cycle_page_carries_the_diagrams_and_dynamics_with_the_graphical_nodes():
     from plans.cycle.diagrams import diagrams
     from plans.cycle.dynamics import dynamics

@@ -386,17 +386,12 @@ _SEEN = """() => {
 
 #: What the page names in the reader's own terms: the keys of the keyboard ("Home / End").
 _KEYS_NAMED = re.compile(r"\b(?:Home|End)\b")
-#: A class-III scene whose page's script stops before it is ready (a fault of the page, not of
-#: its words): its words are not read.
-_PAGE_FAILS = {"triad_press"}
 
 
 @pytest.mark.parametrize("path", SCENES, ids=[f"{p.parent.name}-{p.stem}" for p in SCENES])
 def test_demo_page_of_every_scene_as_a_browser_shows_it(browser, tmp_path, path):
     from drawings.demo import page
 
-    if path.stem in _PAGE_FAILS:
-        pytest.xfail("the page's script fails on this class-III scene before it is ready")
     own = own_words(path)
     for lang in LANGS:
         f = tmp_path / f"{lang}.html"

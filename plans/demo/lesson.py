@@ -83,7 +83,10 @@ def _scheme(scene: Scene, kin: Kinematics, mu_l: float) -> dict[str, Any]:
             pad = 0.15 * (hi - lo) + 0.02 * (abs(lo) + abs(hi)) + 1e-9
             a, b = g.origin + (lo - pad) * d, g.origin + (hi + pad) * d
             guides.append({"from": page_xy(a * mu_l), "to": page_xy(b * mu_l), "point": jt.point})
-    return {"mu_l": mu_l, "points": points, "frame_points": sorted(scene.frame_points),
+    # The frame's pivots: a frame point on no link (a guide's "through" point, G of a press's
+    # ram) is no pivot and has no track; its guide is drawn, it gets no ground mark.
+    pivots = sorted(nm for nm in scene.frame_points if nm in points)
+    return {"mu_l": mu_l, "points": points, "frame_points": pivots,
             "links": links, "sliders": sliders, "guides": guides, "frame": scene.frame}
 
 
@@ -97,6 +100,34 @@ def _plan_images(kin: Kinematics, names: list[str], order: int, mu: float) -> di
         if z is None:
             continue
         out[nm.lower()] = [page_xy(w * mu) for w in z]
+    return out
+
+
+#: S farther than this many times its group's size from the group's pairs is not drawn on the
+#: scheme (the axes nearly parallel would shrink the mechanism to a dot); the sheets' rule.
+ASSUR_REACH = 2.5
+
+
+def _assur_points(kin: Kinematics, k: int, mu_l: float) -> list[dict[str, Any]]:
+    """Assur's special point S of each class-III group at position k, as the sheets mark it:
+    its name, where it is on the page, and the two leashes' axes from the outer pairs extended
+    to S (or the leash itself where S lies on it); a point too far to draw is left out."""
+    from plans.kinematics.triad_plans import PAIRS, special_point_of
+
+    triads = kin.structure.triads()
+    out = []
+    for n, g in enumerate(triads):
+        S_all, choice, Qs, Ps = special_point_of(kin, g)
+        S = complex(S_all[k])
+        Q = [complex(x[k]) for x in Qs]
+        P = [complex(x[k]) for x in Ps]
+        centre = sum(Q + P) / 6
+        extent = max(abs(z - centre) for z in Q + P)
+        if not math.isfinite(S.real + S.imag) or abs(S - centre) > ASSUR_REACH * extent:
+            continue
+        axes = [(Q[x], S if abs(S - Q[x]) >= abs(P[x] - Q[x]) else P[x]) for x in PAIRS[int(choice[k])]]
+        out.append({"name": "S" if len(triads) == 1 else "S" + "′" * n, "xy": page_xy(S * mu_l),
+                    "axes": [{"from": page_xy(a * mu_l), "to": page_xy(b * mu_l)} for a, b in axes]})
     return out
 
 
@@ -161,10 +192,13 @@ def _reveal(panel: dict[str, Any], steps: list[Step]) -> list[dict[str, Any]]:
     return out
 
 
-def _scheme_marks(scene: Scene, step: Step, plan: str) -> list[str]:
-    """Scheme points a step is about: the plan's lower-case images name them."""
+def _scheme_marks(scene: Scene, step: Step, plan: str, assur: tuple[str, ...] = ()) -> list[str]:
+    """Scheme points a step is about: the plan's lower-case images name them (Assur's point S
+    of a class-III group by its image s on the velocity and acceleration plans)."""
     names = {nm.lower(): nm for lid in scene.links for nm in scene.links[lid].points}
     names.update({nm.lower(): nm for nm in scene.frame_points})
+    if plan in ("velocity", "acceleration"):
+        names.update({nm.lower(): nm for nm in assur if nm.lower() not in names})
     out = []
     for word in (step.output, *step.inputs):
         if word in names and names[word] not in out:
@@ -191,7 +225,7 @@ def _arms(arms: tuple[Arm, ...], mu_l: float) -> list[dict[str, Any]]:
              "at": page_xy(a.at * mu_l)} for a in arms if abs(a.foot - a.about) * mu_l >= ARM_MM]
 
 
-def _steps(sol: Solution, k: int, lang: str, mu_l: float) -> tuple[list[dict], list[dict]]:
+def _steps(sol: Solution, k: int, lang: str, mu_l: float, assur: tuple[str, ...] = ()) -> tuple[list[dict], list[dict]]:
     scene = sol.scene
     panels: list[dict] = []
     steps: list[dict] = []
@@ -205,7 +239,7 @@ def _steps(sol: Solution, k: int, lang: str, mu_l: float) -> tuple[list[dict], l
         for n, s in enumerate(plan_steps):
             steps.append({"panel": panel["id"], "text": symbols(s.say(lang), lang) if lang == "ru" else s.say(lang),
                           "op": s.op, **reveal[n],
-                          "scheme": _scheme_marks(scene, s, panel["kind"]), "links": links or []})
+                          "scheme": _scheme_marks(scene, s, panel["kind"], assur), "links": links or []})
             if arms and arms[n]:
                 steps[-1]["arms"] = _arms(arms[n], mu_l)
 
@@ -286,10 +320,16 @@ def lesson(scene: Scene, *, phi_deg: float | None = None, frames: int = FRAMES,
         from plans.demo.cycle_forces import cycle_forces
 
         cycle["forces"] = cycle_forces(*forces)
-    panels, steps = _steps(sol, k, language, mu_l)
     at = solve(scene, [float(sol.kinematics.phi_deg[k])], order=order, structure=sol.structure)
     scheme = _scheme(scene, at, mu_l)
     scheme["guides"] = cycle["scheme"]["guides"]  # a guide is drawn over the whole stroke
+    # a class-III group's Assur point S on the step-by-step scheme, its leashes' axes extended
+    # to it thin and dashed as a guide is (the plans' first point s is its image)
+    assur = [s for s in _assur_points(at, 0, mu_l) if s["name"] not in scheme["points"]]
+    for s in assur:
+        scheme["points"][s["name"]] = [s["xy"]]
+        scheme["guides"] = scheme["guides"] + [{**ax, "point": s["name"]} for ax in s["axes"]]
+    panels, steps = _steps(sol, k, language, mu_l, tuple(s["name"] for s in assur))
     return {
         "title": scene.title_in(language) if language == "ru" else scene.title,
         "phi_deg": float(sol.kinematics.phi_deg[k]),
