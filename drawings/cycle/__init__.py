@@ -248,9 +248,9 @@ def _plans_beside_positions(sheets: list[Sheet], panels: list[Panel], analogues:
 
 #: The formats whose dynamics sheets take longer φ axes and taller diagrams where they have room.
 _GROWN = ("A1", "A2")
-#: The φ axes tried (mm over the working cycle: a course sheet's is 180 to 360 mm long, each
-#: position's step a round number of mm) and the diagrams' heights (times the A1 ones).
-_AXES = (180.0, 240.0, 300.0, 360.0)
+#: The φ scales tried (mm per degree, round ones: a course writes μ_φ = 1 mm/°) and the
+#: diagrams' heights (times the A1 ones).
+_PER_DEG = (0.25, 0.4, 0.5, 1.0)
 _HEIGHTS = (1.0, 1.25, 1.5, 2.0, 2.5)
 
 
@@ -273,7 +273,7 @@ def _fuller_dynamics(sol: Solution, base: Sequence[Panel], spec: SheetSpec, lay,
     ind = cache(lambda size: indicator_panels(d, lang, size))
     fixed = [p for p in base if p.pid == "dyn-flywheel"]
     rest = [p for p in base if p.kind != "dynamics" and p.pid != "dyn-flywheel"]  # tables, plans
-    for length in _AXES:
+    for length in _axes(d.spec.cycle_deg):
         fewest = None
         for h in _HEIGHTS:
             dh = sol.dynamics_drawn(length / per_360, h)
@@ -288,6 +288,13 @@ def _fuller_dynamics(sol: Solution, base: Sequence[Panel], spec: SheetSpec, lay,
             if _key(sheets, length) > key:
                 best, key = sheets, _key(sheets, length)
     return best
+
+
+def _axes(cycle_deg: float) -> list[float]:
+    """The φ axes tried (mm over the working cycle) at round scales in mm/°: a course sheet's
+    is 180 mm to 360 mm long (to 540 mm over a four-stroke engine's two turns)."""
+    top = 360.0 * (1.5 if cycle_deg == 720 else 1.0)
+    return [cycle_deg * r for r in _PER_DEG if 180.0 <= cycle_deg * r <= top]
 
 
 def _key(sheets: Sequence[Sheet], axis: float) -> tuple[int, bool, float, float, float]:
