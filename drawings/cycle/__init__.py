@@ -16,6 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
+from drawings.cycle.column import column_fits, phi_column
 from drawings.cycle.cycle_plot import EXACT, GRAPH, Axes, loc, number, plot_panel, wide_table
 from drawings.cycle.dynamics_diagrams import (
     a_panel,
@@ -206,6 +207,9 @@ def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_te
         flat = lay is not None  # the course's set: its sheets laid flat
 
         def laid_out(ps: list[Panel], sp: SheetSpec) -> list[Sheet]:
+            from drawings.paper.sheet import fits_empty
+
+            ps = phi_column(ps, lambda p: fits_empty(p, sp.format, sp.orientation))  # one φ column
             return lay(ps, sp) if lay is not None else compose(ps, sp, scale_text, scene.path)
         laid = laid_out(panels, sub)
         if spec.format in _GROWN:
@@ -273,20 +277,27 @@ def _fuller_dynamics(sol: Solution, base: Sequence[Panel], spec: SheetSpec, lay,
     ind = cache(lambda size: indicator_panels(d, lang, size))
     fixed = [p for p in base if p.pid == "dyn-flywheel"]
     rest = [p for p in base if p.kind != "dynamics" and p.pid != "dyn-flywheel"]  # tables, plans
+    def fits(p: Panel) -> bool:
+        return fits_empty(p, spec.format, spec.orientation)
+
     for length in _axes(d.spec.cycle_deg):
         fewest = None
         for h in _HEIGHTS:
             dh = sol.dynamics_drawn(length / per_360, h)
-            panels = ([f(dh, lang, first) for f in (m_panel, a_panel, t_panel, i_panel)]
-                      + [wit(min(h, 2.0)), omega_panel(dh, lang, first, h)] + fixed + ind(h) + rest)
-            if not all(fits_empty(p, spec.format, spec.orientation) for p in panels):
+            column = [f(dh, lang, first) for f in (m_panel, a_panel, t_panel, i_panel)] + [omega_panel(dh, lang, first, h)]
+            if not all(map(fits, column)) or not column_fits(column, fits):  # all in one φ column
                 break
-            sheets = lay(panels, spec)
-            if fewest is not None and len(sheets) > fewest:
-                break
-            fewest = len(sheets) if fewest is None else fewest
-            if _key(sheets, length) > key:
-                best, key = sheets, _key(sheets, length)
+            # the energy–mass and indicator diagrams beside the column, as large again where there is room
+            for side in [h] + [x for x in _HEIGHTS if x > h]:
+                panels = column[:4] + [wit(min(side, 2.0)), column[4]] + fixed + ind(side) + rest
+                if not all(map(fits, panels)):
+                    break
+                sheets = lay(panels, spec)
+                if fewest is not None and len(sheets) > fewest:
+                    break
+                fewest = len(sheets) if fewest is None else fewest
+                if _key(sheets, length) > key:
+                    best, key = sheets, _key(sheets, length)
     return best
 
 
