@@ -55,12 +55,17 @@ def _round(x: float) -> bool:
     return any(math.isclose(x, m * 10.0**e, rel_tol=1e-12) for m in ROUND)
 
 
-@pytest.mark.parametrize("name", SAMPLES)
-def test_the_phi_diagrams_share_one_axis_at_a_round_written_scale(name):
-    path = ROOT / "samples" / name
-    prims = _column(path)
+@pytest.fixture(scope="module", params=SAMPLES)
+def drawn(request):
+    """The sample's drawn column (primitives on the paper) and its solved dynamics."""
+    path = ROOT / "samples" / request.param
     d = solve(load_scene(path)).dynamics
     assert d is not None
+    return _column(path), d
+
+
+def test_the_phi_diagrams_share_one_axis_at_a_round_written_scale(drawn):
+    prims, d = drawn
     axes = {pid: _axis(prims, pid) for pid in PHI_PANELS}
     (x0, _), tip = axes["dyn-M"]
     for pid, ((x, _), t) in axes.items():
@@ -73,12 +78,8 @@ def test_the_phi_diagrams_share_one_axis_at_a_round_written_scale(name):
     assert curve[-1][0] - x0 == pytest.approx(d.spec.cycle_deg * per_deg, rel=1e-12)
 
 
-@pytest.mark.parametrize("name", SAMPLES)
-def test_an_ordinate_read_back_at_the_written_scales_is_the_solved_value(name):
-    path = ROOT / "samples" / name
-    prims = _column(path)
-    d = solve(load_scene(path)).dynamics
-    assert d is not None
+def test_an_ordinate_read_back_at_the_written_scales_is_the_solved_value(drawn):
+    prims, d = drawn
     per_deg = _scale(_text(prims, "dyn-M-scale"), "μφ", "mm/°")
     mu_M = _scale(_text(prims, "dyn-M-scale"), "μM", "mm/(N·m)")
     mu_A = _scale(_text(prims, "dyn-A-scale"), "μA", "mm/J")
