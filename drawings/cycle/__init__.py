@@ -16,6 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
+from drawings.cycle.column import column_fits, phi_column
 from drawings.cycle.cycle_plot import EXACT, GRAPH, Axes, loc, number, plot_panel, wide_table
 from drawings.cycle.dynamics_diagrams import (
     a_panel,
@@ -206,6 +207,9 @@ def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_te
         flat = lay is not None  # the course's set: its sheets laid flat
 
         def laid_out(ps: list[Panel], sp: SheetSpec) -> list[Sheet]:
+            from drawings.paper.sheet import fits_empty
+
+            ps = phi_column(ps, lambda p: fits_empty(p, sp.format, sp.orientation))  # one φ column
             return lay(ps, sp) if lay is not None else compose(ps, sp, scale_text, scene.path)
         laid = laid_out(panels, sub)
         if spec.format in _GROWN:
@@ -248,9 +252,9 @@ def _plans_beside_positions(sheets: list[Sheet], panels: list[Panel], analogues:
 
 #: The formats whose dynamics sheets take longer φ axes and taller diagrams where they have room.
 _GROWN = ("A1", "A2")
-#: The φ axes tried (mm over the working cycle: a course sheet's is 180 to 360 mm long, each
-#: position's step a round number of mm) and the diagrams' heights (times the A1 ones).
-_AXES = (180.0, 240.0, 300.0, 360.0)
+#: The φ scales tried (mm per degree, round ones: a course writes μ_φ = 1 mm/°) and the
+#: diagrams' heights (times the A1 ones).
+_PER_DEG = (0.25, 0.4, 0.5, 1.0)
 _HEIGHTS = (1.0, 1.25, 1.5, 2.0, 2.5)
 
 
@@ -273,21 +277,35 @@ def _fuller_dynamics(sol: Solution, base: Sequence[Panel], spec: SheetSpec, lay,
     ind = cache(lambda size: indicator_panels(d, lang, size))
     fixed = [p for p in base if p.pid == "dyn-flywheel"]
     rest = [p for p in base if p.kind != "dynamics" and p.pid != "dyn-flywheel"]  # tables, plans
-    for length in _AXES:
+    def fits(p: Panel) -> bool:
+        return fits_empty(p, spec.format, spec.orientation)
+
+    for length in _axes(d.spec.cycle_deg):
         fewest = None
         for h in _HEIGHTS:
             dh = sol.dynamics_drawn(length / per_360, h)
-            panels = ([f(dh, lang, first) for f in (m_panel, a_panel, t_panel, i_panel)]
-                      + [wit(min(h, 2.0)), omega_panel(dh, lang, first, h)] + fixed + ind(h) + rest)
-            if not all(fits_empty(p, spec.format, spec.orientation) for p in panels):
+            column = [f(dh, lang, first) for f in (m_panel, a_panel, t_panel, i_panel)] + [omega_panel(dh, lang, first, h)]
+            if not all(map(fits, column)) or not column_fits(column, fits):  # all in one φ column
                 break
-            sheets = lay(panels, spec)
-            if fewest is not None and len(sheets) > fewest:
-                break
-            fewest = len(sheets) if fewest is None else fewest
-            if _key(sheets, length) > key:
-                best, key = sheets, _key(sheets, length)
+            # the energy–mass and indicator diagrams beside the column, as large again where there is room
+            for side in [h] + [x for x in _HEIGHTS if x > h]:
+                panels = column[:4] + [wit(min(side, 2.0)), column[4]] + fixed + ind(side) + rest
+                if not all(map(fits, panels)):
+                    break
+                sheets = lay(panels, spec)
+                if fewest is not None and len(sheets) > fewest:
+                    break
+                fewest = len(sheets) if fewest is None else fewest
+                if _key(sheets, length) > key:
+                    best, key = sheets, _key(sheets, length)
     return best
+
+
+def _axes(cycle_deg: float) -> list[float]:
+    """The φ axes tried (mm over the working cycle) at round scales in mm/°: a course sheet's
+    is 180 mm to 360 mm long (to 540 mm over a four-stroke engine's two turns)."""
+    top = 360.0 * (1.5 if cycle_deg == 720 else 1.0)
+    return [cycle_deg * r for r in _PER_DEG if 180.0 <= cycle_deg * r <= top]
 
 
 def _key(sheets: Sequence[Sheet], axis: float) -> tuple[int, bool, float, float, float]:

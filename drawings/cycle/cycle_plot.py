@@ -93,9 +93,31 @@ class Axes:
         self.rec.end()
 
 
+def phi_axis(mu_phi: float, cycle_deg: float) -> tuple[float, float | None]:
+    """The φ axis of a diagram at ``mu_phi`` (mm per rad) over ``cycle_deg``: its length in mm
+    and the scale in mm per degree where that is a round one (1 mm/°, 0.5 mm/°: the unit the
+    course writes), else None; the length then the round scale times the cycle exactly."""
+    from plans.kinematics.scales import round_scale
+    from plans.tolerances import ROUND_OFF_REL
+
+    per_deg = mu_phi * math.pi / 180.0
+    r = round_scale(1.0, per_deg) if per_deg > 0 else 0.0  # the round μ nearest below
+    if r > 0 and abs(r - per_deg) <= ROUND_OFF_REL * per_deg:
+        return r * cycle_deg, r
+    return math.radians(cycle_deg) * mu_phi, None
+
+
+def phi_scale(mu_phi: float, cycle_deg: float, lang: str) -> str:
+    """μ_φ as the scale line writes it: in mm/° where that is round, else in mm/rad."""
+    per_deg = phi_axis(mu_phi, cycle_deg)[1]
+    if per_deg is not None:
+        return f"μ_φ = {fmt(per_deg, 4, lang)} mm/°"
+    return f"μ_φ = {fmt(mu_phi, 4, lang)} mm/rad"
+
+
 #: Units and symbols of the scale lines in Russian (longest first).
 _RU = (("mm/mm", "мм/мм"), ("mm/MPa", "мм/МПа"), ("mm/(m/s^2)", "мм/(м/с²)"), ("mm/(rad/s^2)", "мм/(рад/с²)"), ("mm/(m/s)", "мм/(м/с)"),
-       ("mm/(rad/s)", "мм/(рад/с)"), ("mm/(N·m)", "мм/(Н·м)"), ("mm/(kg·m²)", "мм/(кг·м²)"), ("mm/rad", "мм/рад"),
+       ("mm/(rad/s)", "мм/(рад/с)"), ("mm/(N·m)", "мм/(Н·м)"), ("mm/(kg·m²)", "мм/(кг·м²)"), ("mm/rad", "мм/рад"), ("mm/°", "мм/°"),
        ("mm/J", "мм/Дж"), ("mm/m", "мм/м"), ("kg·m²", "кг·м²"), ("rad/s", "рад/с"), ("N·m", "Н·м"),
        (" mm", " мм"), ("I_fw", "I_м"), ("A_d", "A_д"), ("A_c", "A_с"), ("M_d", "M_д"), ("(exact", "(точно"))
 
@@ -141,4 +163,4 @@ def number(v: float | None, lang: str, sig: int = 4) -> str:
     return fmt(v, sig, lang) if abs(v) < 1e5 else f"{v:.3e}".replace(".", "," if lang == "ru" else ".")
 
 
-__all__ = ["Axes", "EXACT", "GRAPH", "MAIN", "plot_panel", "wide_table", "number"]
+__all__ = ["Axes", "phi_axis", "phi_scale", "EXACT", "GRAPH", "MAIN", "plot_panel", "wide_table", "number"]

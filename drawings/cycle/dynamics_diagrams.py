@@ -8,7 +8,16 @@ import math
 
 import numpy as np
 
-from drawings.cycle.cycle_plot import EXACT, GRAPH, Axes, number, plot_panel, wide_table
+from drawings.cycle.cycle_plot import (
+    EXACT,
+    GRAPH,
+    Axes,
+    number,
+    phi_axis,
+    phi_scale,
+    plot_panel,
+    wide_table,
+)
 from drawings.cycle.words import tr
 from drawings.paper.backend import HAIR, MAIN, THIN, Recording, Style
 from drawings.paper.common import fmt
@@ -26,7 +35,7 @@ def m_panel(d: Dynamics, lang: str, first: int = 1) -> Panel:
     rad = np.radians(t.phi_deg - t.phi_deg[0])
     xs_s, ys_s = spline.sample(rad, t.M_pr, spline.slopes(rad, t.M_pr), 8)
     ye = d.exact.M_pr * s.M
-    L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
+    L = phi_axis(s.phi, d.spec.cycle_deg)[0]  # the whole working cycle, at μ_φ as written
     ax.frame(L, float(min(ye.min(), t.M_pr.min() * s.M)), float(max(ye.max(), t.M_pr.max() * s.M)), "M_пр" if lang == "ru" else "M_pr")
     ax.positions(t.phi_deg[:-1])
     ax.curve(ax.x(d.exact.phi_deg), ye, EXACT)
@@ -40,7 +49,7 @@ def m_panel(d: Dynamics, lang: str, first: int = 1) -> Panel:
     ax.pole(s.H, means * s.M)
     ax.hline(-d.M_driving * s.M, 0.0, L, Style(width=0.35, dash=(4, 1.5)), f"−M_д = {fmt(-d.M_driving, 4, lang)}"
              if lang == "ru" else f"−M_d = {fmt(-d.M_driving, 4, lang)}")
-    scale = f"μ_M = {fmt(s.M, 4, lang)} mm/(N·m); μ_φ = {fmt(s.phi, 4, lang)} mm/rad; H = {fmt(s.H, 3, lang)} mm"
+    scale = f"μ_M = {fmt(s.M, 4, lang)} mm/(N·m); {phi_scale(s.phi, d.spec.cycle_deg, lang)}; H = {fmt(s.H, 3, lang)} mm"
     return plot_panel("dyn-M", "dynamics", tr("M", lang), rec, scale, tr("sign", lang), lang=lang)
 
 
@@ -49,7 +58,7 @@ def a_panel(d: Dynamics, lang: str, first: int = 1) -> Panel:
     t = d.table
     rec = Recording()
     ax = Axes(rec, "dyn-A", s.phi, float(t.phi_deg[0]), lang, first)
-    L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
+    L = phi_axis(s.phi, d.spec.cycle_deg)[0]  # the whole working cycle, at μ_φ as written
     ya = np.concatenate([d.A_c, d.A_d]) * s.A
     ax.frame(L, float(ya.min()), float(ya.max()), "A")
     ax.positions(t.phi_deg[:-1])
@@ -63,7 +72,9 @@ def a_panel(d: Dynamics, lang: str, first: int = 1) -> Panel:
     end_c = "A_c" if lang != "ru" else "A_с"
     rec.text(layout(end_c, L + 1.5, -d.A_c[-1] * s.A, 2.5, "start", "middle"), "note")
     rec.text(layout("A_д" if lang == "ru" else "A_d", L + 1.5, -d.A_d[-1] * s.A, 2.5, "start", "middle"), "note")
-    scale = f"μ_A = μ_M·μ_φ/H = {fmt(s.A, 4, lang)} mm/J"
+    # μ_φ written in mm/° enters the formula times 180/π (mm/rad)
+    per_deg = phi_axis(s.phi, d.spec.cycle_deg)[1] is not None
+    scale = f"μ_A = {'(180/π)·' if per_deg else ''}μ_M·μ_φ/H = {fmt(s.A, 4, lang)} mm/J"
     return plot_panel("dyn-A", "dynamics", tr("A", lang), rec, scale, tr("exact_thin", lang), lang=lang)
 
 
@@ -72,7 +83,7 @@ def t_panel(d: Dynamics, lang: str, first: int = 1) -> Panel:
     t = d.table
     rec = Recording()
     ax = Axes(rec, "dyn-T", s.phi, float(t.phi_deg[0]), lang, first)
-    L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
+    L = phi_axis(s.phi, d.spec.cycle_deg)[0]  # the whole working cycle, at μ_φ as written
     ye = d.dT_exact * s.A
     ax.frame(L, float(min(ye.min(), d.dT.min() * s.A)), float(max(ye.max(), d.dT.max() * s.A)), "ΔT")
     ax.positions(t.phi_deg[:-1])
@@ -91,7 +102,7 @@ def i_panel(d: Dynamics, lang: str, first: int = 1) -> Panel:
     t = d.table
     rec = Recording()
     ax = Axes(rec, "dyn-I", s.phi, float(t.phi_deg[0]), lang, first)
-    L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
+    L = phi_axis(s.phi, d.spec.cycle_deg)[0]  # the whole working cycle, at μ_φ as written
     ye = d.exact.I_pr * s.I
     ax.frame(L, 0.0, float(ye.max()), "I_пр" if lang == "ru" else "I_pr")
     ax.positions(t.phi_deg[:-1])
@@ -176,7 +187,7 @@ def omega_panel(d: Dynamics, lang: str, first: int = 1, size: float = 1.0) -> Pa
     fw = d.flywheel
     rec = Recording()
     ax = Axes(rec, "dyn-w", s.phi, float(d.exact.phi_deg[0]), lang, first)
-    L = math.radians(d.spec.cycle_deg) * s.phi  # the whole working cycle
+    L = phi_axis(s.phi, d.spec.cycle_deg)[0]  # the whole working cycle, at μ_φ as written
     span = max(float(np.ptp(d.omega)), float(np.ptp(d.omega_exact)), 1e-300)
     mu_w = round_scale(span, 40.0 * size)
     y_g = (d.omega - fw.omega_mean) * mu_w
