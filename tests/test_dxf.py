@@ -252,7 +252,8 @@ def test_draw_writes_one_dxf_per_sheet_beside_the_other_formats(tmp_path, capsys
 def _run(code: str) -> str:
     import os
 
-    env = {**os.environ, "PYTHONHASHSEED": "7"}  # another process, other hashes: the same bytes
+    # another process, other hashes: the same bytes; Russian, as the sheets it is compared with
+    env = {**os.environ, "PYTHONHASHSEED": "7", "LC_ALL": "ru_RU.UTF-8"}
     got = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, timeout=300,
                          env=env)
     assert got.returncode == 0, got.stderr
