@@ -101,7 +101,10 @@ def test_the_energy_mass_diagram_is_drawn_smaller_on_a4():
     from drawings.paper.sheet import fits_empty
 
     scene = load_scene(ROOT / "samples" / "single_four_stroke.toml")
-    spec = scene.sheet_for(format="A4")
+    from tests.locales import locale
+
+    with locale("ru_RU.UTF-8"):  # the scales read back in the Russian words they were written in
+        spec = scene.sheet_for(format="A4")
     sol = solve(scene, fit=spec.fit)
     d = sol.cycle.dynamics
     assert not fits_empty(w_panel(d, "ru"), "A4", spec.orientation)
