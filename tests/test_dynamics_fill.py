@@ -7,10 +7,9 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-import shapely
 
 import drawings
-from drawings.paper.sheet import usable
+from drawings.paper.fill import drawn_part
 from tests.locales import in_russian
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -21,12 +20,6 @@ SHORT = {
     "v_engine_project": "its kinematics sheet of acceleration plans and kinematic diagrams and its "
                         "kinetostatics sheet (the linkage's sheets)",
 }
-
-
-def drawn_part(sheet) -> float:
-    field = shapely.box(*usable(sheet.width, sheet.height)).difference(shapely.box(*sheet.title_box))
-    boxes = [shapely.box(x, y, x + p.width, y + p.height) for p, x, y in sheet.placed]
-    return shapely.union_all(boxes).intersection(field).area / field.area
 
 
 @pytest.mark.parametrize("path", SAMPLES, ids=[p.stem for p in SAMPLES])

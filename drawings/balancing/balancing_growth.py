@@ -15,7 +15,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from drawings.paper.fill import panels_part
+from drawings.paper.fill import drawn_part
 from drawings.paper.panel_frame import Panel
 from drawings.paper.sheet import Sheet, SheetSpec, compose, fits_empty
 
@@ -90,4 +90,4 @@ def _shapes(panels: Sequence[Panel]) -> tuple[tuple[float, float], ...]:
 
 def _key(sheets: Sequence[Sheet]) -> tuple[int, float]:
     """Fewer sheets first, then the emptiest one's part drawn."""
-    return -len(sheets), min(map(panels_part, sheets))
+    return -len(sheets), min(map(drawn_part, sheets))

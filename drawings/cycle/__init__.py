@@ -31,7 +31,7 @@ from drawings.cycle.dynamics_diagrams import (
 from drawings.cycle.words import UNITS, tr
 from drawings.paper.backend import Recording
 from drawings.paper.common import fmt
-from drawings.paper.fill import panels_part
+from drawings.paper.fill import drawn_part
 from drawings.paper.panel_frame import Panel
 from drawings.paper.sheet import Sheet, SheetSpec, compose
 from plans.cycle import spline
@@ -313,7 +313,7 @@ def _key(sheets: Sequence[Sheet], axis: float) -> tuple[int, bool, float, float,
     then none of them more than a third empty; then the longer axis; then its emptiest sheet's
     part drawn (to 0.1 %), then all of them."""
     parts = [_used(sh) for sh in sheets]
-    return -len(sheets), min(map(panels_part, sheets)) >= 2 / 3, axis, round(min(parts), 3), sum(parts)
+    return -len(sheets), min(map(drawn_part, sheets)) >= 2 / 3, axis, round(min(parts), 3), sum(parts)
 
 
 def fitting_diagrams(sol: Solution, dg: Diagrams, spec: SheetSpec) -> list[Panel]:

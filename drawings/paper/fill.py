@@ -26,11 +26,6 @@ def boxes_part(W: float, H: float, boxes: Iterable[tuple[float, float, float, fl
     return float(shapely.union_all([shapely.box(*b) for b in boxes]).intersection(field).area / field.area)
 
 
-def panels_part(sheet: Sheet) -> float:
-    """The part of a sheet's field its panels cover (:func:`drawn_part`, by its older name)."""
-    return drawn_part(sheet)
-
-
 def fullest_on_one_sheet(groups: Iterable[Iterable[Sequence[Panel]]], spec: SheetSpec, path: str,
                          scale: Callable[[Sequence[Panel]], str | None]
                          ) -> tuple[list[Panel], list[Sheet]] | None:
