@@ -220,23 +220,29 @@ def _draw(sol: Solution, spec: SheetSpec) -> Drawing:
     sc = sol.scene
     if set_of(sol, spec) == "course":
         diagrams = []
+        own_axis = None  # the φ axis of the scene's own diagrams, where its file leaves it to the sheet
         if sc.wants("diagrams") and sol.cycle is not None and sol.cycle.diagrams is not None:
             from drawings.cycle import fitting_diagrams
 
             diagrams = fitting_diagrams(sol, sol.cycle.diagrams, spec)
+            if "length_mm" not in sc.raw.get("diagrams", {}):
+                own_axis = sol.cycle.diagrams.spec.length_mm
         strokes = strokes_over_cycle(sol)
 
         def builders(s: Solution) -> tuple[Any, Any]:
             return (lambda sel, mp, ml, mb=None: build_panels(s, spec, sel, mp, ml, mb),
                     lambda mu, bold: positions_panel(s, mu, spec.language, bold, strokes, spec.trace))
 
-        from drawings.linkage.larger import longer, may_grow
+        from drawings.linkage.larger import FORMATS, longer, longest_of, may_grow
 
         larger = [lambda t=t: builders(t()) for t in longer(sol)] if may_grow(sol, spec) else []
+        longest = [lambda t=t: builders(t()) for t in longest_of(sol)] if larger else []
         offered: list[list[Panel]] = [diagrams]  # every diagram panel the sheets may have taken
         optional = [] if diagrams or not _output_diagrams_wanted(sol, spec) else [
             lambda axis=axis: _output_diagrams(sol, spec, axis, offered) for axis in OUTPUT_AXES_MM]
-        sheets = course_sheets(sol, spec, *builders(sol), diagrams, larger, optional)
+        axes = [] if own_axis is None or spec.format not in FORMATS else [
+            lambda axis=axis: _diagrams_at(sol, spec, axis, offered) for axis in DIAGRAM_AXES_MM if axis > own_axis]
+        sheets = course_sheets(sol, spec, *builders(sol), diagrams, larger, optional, longest, axes)
         theirs = {id(p) for ps in offered for p in ps}
         panels = [p for sh in sheets for p, _, _ in sh.placed if id(p) not in theirs]  # the linkage's
         if sc.wants("dynamics"):  # the dynamics' sheets follow
@@ -261,6 +267,22 @@ def _draw(sol: Solution, spec: SheetSpec) -> Drawing:
 #: The φ axes (mm) the output's kinematic diagrams are tried at on the course's kinematics
 #: sheet, longest first (:func:`drawings.linkage.sheet_sets.course_sheets`).
 OUTPUT_AXES_MM = (240.0, 200.0, 160.0, 120.0)
+
+
+#: The longer φ axes (mm) the scene's own kinematic diagrams are tried at, shortest first, on an
+#: A1 or A2 course kinematics sheet with room for them when its file gives none: 24 mm apart (a
+#: whole number of mm between 12 or 24 positions), up to 1 mm per degree.
+DIAGRAM_AXES_MM = (264.0, 288.0, 312.0, 336.0, 360.0)
+
+
+def _diagrams_at(sol: Solution, spec: SheetSpec, axis: float, offered: list[list[Panel]]) -> list[Panel]:
+    """The scene's kinematic diagrams' panels at a φ axis of ``axis`` mm (kept in ``offered``)."""
+    from drawings.cycle import diagram_panels
+
+    dg = sol.diagrams_drawn(axis)
+    assert dg is not None, "a scene with kinematic diagrams"
+    offered.append(diagram_panels(dg, spec.language, spec.first_position))
+    return offered[-1]
 
 
 def _output_diagrams_wanted(sol: Solution, spec: SheetSpec) -> bool:

@@ -25,6 +25,9 @@ T = TypeVar("T")
 #: round values); at most twice the A1 lengths (a known vector of 200 mm), not plans blown up
 #: to the sheet.
 STEPS = (1.25, 1.6, 2.0)
+#: One step further for the course's kinematics sheet (its few acceleration plans beside the
+#: kinematic diagrams), within :data:`plans.solution.MAX_FIT`.
+KINEMATIC_STEP = 2.5
 #: The formats whose sheets are grown (a course's A1, and A2).
 FORMATS = ("A1", "A2")
 #: A layout whose every sheet is this full is left as it is.
@@ -48,6 +51,15 @@ def longer(sol: Solution) -> list[Callable[[], Solution]]:
 
     fits = [sol.fit * s for s in STEPS if sol.fit * s <= MAX_FIT + 1e-12]
     return [partial(sol.at_fit, f) for f in fits]
+
+
+def longest_of(sol: Solution) -> list[Callable[[], Solution]]:
+    """The thunk of ``sol`` at :data:`KINEMATIC_STEP` times its fit (at most ``MAX_FIT``),
+    where that is longer than :func:`longer`'s longest."""
+    from functools import partial
+
+    fit = min(MAX_FIT, sol.fit * KINEMATIC_STEP)
+    return [partial(sol.at_fit, fit)] if fit > sol.fit * STEPS[-1] else []
 
 
 def once_each(thunks: Sequence[Callable[[], T]]) -> Callable[[int], T]:

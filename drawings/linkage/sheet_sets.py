@@ -20,9 +20,10 @@ import dataclasses
 from collections.abc import Callable, Sequence
 from typing import Any
 
+import numpy as np
+
 from drawings.linkage.kinetic_scales import kinetic_layout, lever_apart
 from drawings.linkage.panels import STANDARD_RATIOS, Panel
-from drawings.paper.blocks import pack_block
 from drawings.paper.i18n import tr
 from drawings.paper.packing import free_spots
 from drawings.paper.sheet import (
@@ -144,23 +145,89 @@ def selection(sol: Solution, spec: SheetSpec, set_name: str) -> dict[str, Any]:
 
 def _flat(panels: Sequence[Panel], spec: SheetSpec, path: str = "<scene>") -> list[list[tuple[Panel, float, float]]]:
     """Panels in order, each where it keeps the sheet's skyline lowest, clear of the title
-    block; what one sheet cannot hold goes on the next."""
+    block; what one sheet cannot hold goes on the next.  Each subject's kinematic diagrams
+    go as one column (:func:`_columns`) unless that takes another sheet; a column the sheet
+    has no room for leaves there as many of its diagrams from the top as fit, the rest a
+    column on the next sheet."""
+    for p in panels:
+        check_fits(p, spec, path)
+    units = _columns(panels)
+    together = _packed(units, spec)
+    if len(units) == len(panels):
+        return together
+    apart = _packed([[p] for p in panels], spec)
+    return together if len(together) <= len(apart) else apart
+
+
+def _packed(units: list[list[Panel]], spec: SheetSpec) -> list[list[tuple[Panel, float, float]]]:
+    """The sheets of :func:`_flat`: each unit (panels one under another, :func:`_stacked`) where
+    it keeps the skyline lowest, or as many of its panels from the top as fit there."""
     W, H = spec.size
     area = usable(W, H)
     aw, ah = area[2] - area[0], area[3] - area[1]
-    notch = (W - MARGIN - TB_W - GAP - area[0], H - MARGIN - TB_H - GAP - area[1], aw, ah)
+    notch = (W - MARGIN - TB_W - GAP - area[0], H - MARGIN - TB_H - GAP - area[1])
     spots = free_spots(GAP)
-    for p in panels:
-        check_fits(p, spec, path)
     out: list[list[tuple[Panel, float, float]]] = []
-    rest = list(panels)
+    rest = units
     while rest:
-        blk, left = pack_block(rest, aw, ah, GAP, spots, "", notch)
-        if not blk.panels:  # pragma: no cover - every panel fits an empty sheet (checked before)
-            raise ValueError(f"panel {rest[0].pid} does not fit an empty {spec.format} sheet")
-        out.append([(p, area[0] + x, area[1] + y) for p, x, y in blk.panels])
+        taken = [(notch[0] + GAP, notch[1] + GAP, aw + GAP, ah + GAP)]  # kept clear of the title block
+        placed: list[tuple[Panel, float, float]] = []
+        left: list[list[Panel]] = []
+        for unit in rest:
+            for k in range(len(unit), 0, -1):
+                laid, w, h = _stacked(unit[:k])
+                free = spots(w, h, (0.0, 0.0, aw, ah), taken)
+                if len(free):
+                    X, Y = free[:, 0], free[:, 1]
+                    i = int(np.lexsort((X, Y, Y + h + 0.05 * X))[0])
+                    x, y = float(X[i]), float(Y[i])
+                    taken.append((x, y, x + w, y + h))
+                    placed += [(p, area[0] + x + dx, area[1] + y + dy) for p, dx, dy in laid]
+                    if k < len(unit):
+                        left.append(unit[k:])
+                    break
+            else:
+                left.append(unit)
+        if not placed:  # pragma: no cover - every panel fits an empty sheet (checked before)
+            raise ValueError(f"panel {rest[0][0].pid} does not fit an empty {spec.format} sheet")
+        out.append(placed)
         rest = left
     return out
+
+
+def _columns(panels: Sequence[Panel]) -> list[list[Panel]]:
+    """``panels`` in order, each alone but for the kinematic diagrams: those of one subject
+    (s, v, a of a point; φ, ω, ε of a link) together in the first one's place, in the order
+    they are derived (the graphical differentiation runs down the column)."""
+    subject: dict[str, list[Panel]] = {}
+    out: list[list[Panel]] = []
+    for p in panels:
+        if p.kind == "diagram" and p.pid.startswith("diagram-") and "_" in p.pid:
+            key = p.pid.split("_", 1)[1]
+            if key in subject:
+                subject[key].append(p)
+                continue
+            subject[key] = [p]
+            out.append(subject[key])
+        else:
+            out.append([p])
+    return out
+
+
+def _stacked(ps: Sequence[Panel]) -> tuple[list[tuple[Panel, float, float]], float, float]:
+    """Panels one under another, GAP apart; kinematic diagrams moved sideways so that their
+    φ axes start on one vertical (a vertical through a position crosses each diagram there).
+    Returns each panel with its offset, and the width and height of the whole."""
+    if len(ps) == 1:
+        return [(ps[0], 0.0, 0.0)], ps[0].width, ps[0].height
+    from drawings.cycle.column import axis_origin
+
+    left = max(axis_origin(p)[0] for p in ps)
+    laid, y = [], 0.0
+    for p in ps:
+        laid.append((p, left - axis_origin(p)[0], y))
+        y += p.height + GAP
+    return laid, max(dx + p.width for p, dx, _ in laid), y - GAP
 
 
 def flat_sheets(panels: Sequence[Panel], spec: SheetSpec, path: str = "<scene>") -> list[Sheet]:
@@ -172,7 +239,9 @@ def flat_sheets(panels: Sequence[Panel], spec: SheetSpec, path: str = "<scene>")
 
 def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
                   diagrams: Sequence[Panel] = (), larger: Sequence[Any] = (),
-                  optional: Sequence[Callable[[], Sequence[Panel] | None]] = ()) -> list[Sheet]:
+                  optional: Sequence[Callable[[], Sequence[Panel] | None]] = (),
+                  longest: Sequence[Any] = (),
+                  axes: Sequence[Callable[[], Sequence[Panel]]] = ()) -> list[Sheet]:
     """The kinematics sheet(s), then the kinetostatics sheet(s).  ``build(sel, mu_positions,
     mu_l)`` makes the panels of a selection (:func:`drawings.linkage.build_panels`),
     ``positions(mu, bold)`` the plan of positions at μl = ``mu``; ``diagrams`` (the kinematic
@@ -183,7 +252,10 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
     diagrams at φ axes from the longest) the kinematics sheet takes after the plans, the first
     whose panels fit an empty sheet and, laid out with the rest, add no sheet and leave none
     emptier than two thirds or than it is without them (a thunk giving None ends the search);
-    the kinetostatics sheet is laid out once whatever they are."""
+    the kinetostatics sheet is laid out once whatever they are.  ``longest``: thunks like
+    ``larger``'s, longer still, that only the kinematics sheet tries (after ``larger``'s).
+    ``axes``: thunks of ``diagrams`` at longer φ axes, shortest first, that a kinematics sheet
+    not yet full tries in turn (:func:`_longest_axis`)."""
     from drawings.paper.sheet import fits_empty
 
     sel = selection(sol, spec, "course")
@@ -258,7 +330,8 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
     from drawings.paper.sheet import TooBig
 
     W, H = spec.size
-    made = once_each(larger)  # each longer solution's builders, once, when first needed
+    made = once_each(list(larger) + list(longest))  # each longer solution's builders, once, when first needed
+    kin_fits = len(larger) + len(longest)  # the longer solutions the kinematics sheet tries
 
     def builders(i: int) -> Any:
         return (build, positions) if i == OWN else made(i)
@@ -276,7 +349,7 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
         same sheet drawn at each longer solution (``lay_at(i)``, likewise), the best, with its
         index (:data:`OWN`: ``grown``), tried in order while not yet full."""
         chosen, (mu, sheets) = OWN, grown
-        for i in range(len(larger)):
+        for i in range(kin_fits):
             if full(sheets, (W, H)):
                 break
             try:
@@ -312,8 +385,8 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
         def more(a: list, b: list) -> bool:
             return len(b) > len(a)
 
-        return ascend((start,) * len(parts), len(larger), lay_fits, improves, done, more, sheets)[1] \
-            if larger else sheets
+        return ascend((start,) * len(parts), kin_fits, lay_fits, improves, done, more, sheets)[1] \
+            if kin_fits else sheets
 
     # the velocity and the acceleration plans each at its own longer scale (one part with a
     # table of readings: it reads both kinds at their scales)
@@ -329,8 +402,11 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
         best = fullest(grow(kin_at(OWN), base_pos, lay_flat, own), lambda i: grow(kin_at(i), base_pos, lay_flat, own))
         return mixed(kin_at, kin_parts, best, lay_flat)
 
-    kin_sheets = kin_layout(diagrams) if not optional else _with_optional(
-        kin_layout, list(diagrams), optional, spec, lambda: bool(built[OWN][1] or built[OWN][2]))
+    if optional:
+        kin_sheets = _with_optional(kin_layout, list(diagrams), optional, spec,
+                                    lambda: bool(built[OWN][1] or built[OWN][2]))
+    else:
+        kin_sheets = _longest_axis(kin_layout, list(diagrams), axes, spec, shown)
     out: list[Sheet] = []
     named = dataclasses.replace(spec, subtitle=spec.subtitle or tr("kinematics_sheet", spec.language))
     for placed in kin_sheets:
@@ -409,6 +485,33 @@ def _with_optional(kin_layout: Callable[[list[Panel]], list], diagrams: list[Pan
         if got[0] >= was[0] and got[1] >= min(was[1], FULL):
             return laid
     return kin_layout(diagrams) if bare is None else bare
+
+
+def _longest_axis(kin_layout: Callable[[list[Panel]], list], diagrams: list[Panel],
+                  axes: Sequence[Callable[[], Sequence[Panel]]], spec: SheetSpec,
+                  shown: Callable[[list], float]) -> list:
+    """The kinematics sheets with the kinematic diagrams at the longest of ``axes`` (longer φ
+    axes, shortest first) reached while the sheets are not yet full and each longer axis keeps
+    them as few, none emptier than :data:`drawings.linkage.larger.FULL` or than they are at
+    the axis before, and the plan of positions (its scale: ``shown``) no smaller; else with
+    ``diagrams``."""
+    from drawings.linkage.larger import FULL, score
+    from drawings.paper.sheet import fits_empty
+
+    laid = kin_layout(diagrams)
+    for make in axes:
+        was = score(laid, spec.size)
+        if was[1] >= FULL:
+            break
+        longer = list(make())
+        if not all(fits_empty(p, spec.format, spec.orientation) for p in longer):
+            break
+        trial = kin_layout(longer)
+        got = score(trial, spec.size)
+        if got[0] < was[0] or got[1] < min(was[1], FULL) or shown(trial) < shown(laid):
+            break
+        laid = trial
+    return laid
 
 
 def _order(p: Panel) -> int:
