@@ -26,6 +26,7 @@ from drawings.linkage.kinetic_scales import kinetic_layout, lever_apart
 from drawings.linkage.panels import STANDARD_RATIOS, Panel
 from drawings.paper.i18n import tr
 from drawings.paper.packing import free_spots
+from drawings.paper.panel_frame import SLACK_MM
 from drawings.paper.sheet import (
     GAP,
     MARGIN,
@@ -173,15 +174,25 @@ def _packed(units: list[list[Panel]], spec: SheetSpec) -> list[list[tuple[Panel,
         taken = [(notch[0] + GAP, notch[1] + GAP, aw + GAP, ah + GAP)]  # kept clear of the title block
         placed: list[tuple[Panel, float, float]] = []
         left: list[list[Panel]] = []
+        tops: list[float] = []  # where the columns on this sheet start
         for unit in rest:
             for k in range(len(unit), 0, -1):
                 laid, w, h = _stacked(unit[:k])
                 free = spots(w, h, (0.0, 0.0, aw, ah), taken)
                 if len(free):
                     X, Y = free[:, 0], free[:, 1]
-                    i = int(np.lexsort((X, Y, Y + h + 0.05 * X))[0])
+                    cost = Y + h + 0.05 * X
+                    i = int(np.lexsort((X, Y, cost))[0])
+                    if k > 1 and tops:  # a column beside another starts level with it, if nearly as low
+                        level = (np.abs(Y[:, None] - np.asarray(tops)[None, :]).min(axis=1) < SLACK_MM) & (
+                            cost <= cost[i] + 2 * GAP)
+                        if level.any():
+                            j = np.flatnonzero(level)
+                            i = int(j[np.lexsort((X[j], cost[j]))[0]])
                     x, y = float(X[i]), float(Y[i])
                     taken.append((x, y, x + w, y + h))
+                    if k > 1:
+                        tops.append(y)
                     placed += [(p, area[0] + x + dx, area[1] + y + dy) for p, dx, dy in laid]
                     if k < len(unit):
                         left.append(unit[k:])
