@@ -9,9 +9,10 @@ block per position holding all its panels.  ``[sheet] panels = { velocity = "all
 acceleration = [1, 4], forces = [4] }`` picks the positions of each kind in either set.
 
 Panels go in the order the method builds them: positions, velocity, acceleration, forces,
-lever, diagrams.  The sizes the layout chooses itself (the plan of positions' scale, the
-mechanism's and the groups' on the kinetostatics sheet) grow by standard scales while the
-sheets stay as few, so an A1 sheet is not left half empty.
+lever, diagrams, a point's kinematic diagrams one under another.  The sizes the layout
+chooses itself (the plan of positions' scale, the mechanism's and the groups' on the
+kinetostatics sheet, the kinematic diagrams' φ axis) grow by standard scales while the sheets
+stay as few, so an A1 sheet is not left half empty.
 """
 
 from __future__ import annotations
@@ -154,7 +155,7 @@ def _flat(panels: Sequence[Panel], spec: SheetSpec, path: str = "<scene>") -> li
         check_fits(p, spec, path)
     units = _columns(panels)
     together = _packed(units, spec)
-    if len(units) == len(panels):
+    if len(units) == len(panels) or len(together) == 1:  # no column, or none costs a sheet
         return together
     apart = _packed([[p] for p in panels], spec)
     return together if len(together) <= len(apart) else apart
