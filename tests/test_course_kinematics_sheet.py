@@ -20,8 +20,12 @@ KINEMATIC = {"positions", "velocity", "acceleration", "diagram", "cycle-table", 
 
 
 @pytest.fixture(scope="module")
-def kinematics_sheets():
-    d = in_russian(drawings.draw)(PROJECT)
+def kinematics_sheets(tmp_path_factory):
+    text = PROJECT.read_text(encoding="utf-8")
+    assert ', "dynamics"]' in text
+    path = tmp_path_factory.mktemp("project") / PROJECT.name  # its linkage's sheets only: no dynamics
+    path.write_text(text.replace(', "dynamics"]', "]"), encoding="utf-8")
+    d = in_russian(drawings.draw)(path)
     sheets = [sh for sh in d.sheets if not any(p.pid.startswith("dyn-") for p, _, _ in sh.placed)
               and {p.kind for p, _, _ in sh.placed} <= KINEMATIC]
     assert len(sheets) == 2  # the plan of positions with the velocity plans; the acceleration plans
