@@ -11,7 +11,7 @@ import pytest
 import shapely
 
 from drawings.paper.blocks import HEAD, INSET, Block, frame_of, pack_block
-from drawings.paper.packing import free_spots
+from drawings.paper.packing import MIN_STEP, free_spots
 from drawings.paper.panel_frame import Panel
 from drawings.paper.sheet import GAP
 from tests.locales import in_russian
@@ -69,9 +69,9 @@ def v_engine():
 
 def test_v_engine_blocks_run_round_the_plan_of_positions_and_the_title_block(v_engine):
     """v_engine on A1: a position's border goes round the plan of positions (the block runs on
-    under it) and round the title block; what is not the position's (the plan, the legend, the
-    title block) lies outside every border, at least half a GAP from it, and the legend shares
-    the plan of positions' sheet."""
+    under it) and round the title block, stepping down beside it by a visible step; what is not
+    the position's (the plan, the legend, the title block) lies outside every border, at least
+    half a GAP from it, and the legend shares the plan of positions' sheet."""
     rounds = {"plan": 0, "title": 0}
     for n, sh in enumerate(v_engine.sheets):
         outside = [shapely.box(*sh.title_box)] + [
@@ -85,6 +85,8 @@ def test_v_engine_blocks_run_round_the_plan_of_positions_and_the_title_block(v_e
             plan = [shapely.box(x, y, x + p.width, y + p.height) for p, x, y in sh.placed if p.kind == "positions"]
             rounds["plan"] += any(hull.contains(b) for b in plan)
             rounds["title"] += hull.intersection(shapely.box(*sh.title_box)).area > 1.0
+            if f.notch is not None:  # a step down beside the title block, not a slip of the pen
+                assert f.box[3] - f.notch[1] >= MIN_STEP
             for p, x, y in sh.placed:
                 if p.phi == f.phi:
                     assert border.buffer(1e-6).contains(shapely.box(x, y, x + p.width, y + p.height)), (n, p.pid)

@@ -25,6 +25,8 @@ Spots = Callable[[float, float, Box, Sequence[Box]], np.ndarray]
 
 #: A band of a sheet lower than this (mm) is not worth starting a part of a block in.
 MIN_BAND = 40.0
+#: The least step (mm) of a border going round the title block's corner worth drawing.
+MIN_STEP = 10.0
 #: Fractions of the sheet's width a block is packed into.
 FRACTIONS = (1.0, 0.9, 0.8, 0.75, 2 / 3, 0.6, 0.55, 0.5, 0.45, 0.4, 0.35, 1 / 3, 0.3, 0.25)
 
@@ -248,23 +250,33 @@ def round_corners(item: Whole, area: Box, taken: Sequence[Box], prev: Box | None
     """A position's block packed whole into a room left on a sheet, its border running round
     the title block's corner (and round the plan of positions above-left of it, ``lone``:
     :func:`_rooms`) where the block's rectangles find no room: the block that leaves room
-    for a ``note`` (w, h: the legend still to go on this sheet), then keeps the reading
-    order, then ends highest (the least area of equals), or None where no room holds all
-    its panels."""
+    for a ``note`` (w, h: the legend still to go on this sheet), then has no step in its
+    border lower than :data:`MIN_STEP`, then keeps the reading order (else moves least of
+    it: the panels it leaves out, earlier), then ends highest (the least area of equals),
+    or None where no room holds all its panels."""
     if not item.panels:
         return None
     tb = taken[0]
+    reading = list(item.panels)
     best = None
     for x0, y0, lead in _rooms(area, taken, prev, gap, note, lone):
         w, h = area[2] - x0, area[3] - y0
         notch = (tb[0] - gap / 2 - x0, tb[1] - gap / 2 - y0, w, h)
-        for order in _orders(item.panels):
-            blk, left = pack_block(order, w, h, gap, spots, item.title, notch, lead)
+        # the reading order; then it with the panels it leaves out moved earlier; then the others
+        tries = [(0, reading)]
+        first, out = pack_block(reading, w, h, gap, spots, item.title, notch, lead)
+        if out:
+            rest = [p for p in reading if p not in out]
+            tries += [(1, rest[:k] + out + rest[k:]) for k in range(1, len(rest))]
+        tries += [(2, o) for o in _orders(reading)[1:]]
+        for rank, order in tries:
+            blk, left = (first, out) if rank == 0 else pack_block(order, w, h, gap, spots, item.title, notch, lead)
             if left or (lead is not None and blk.lead is None):  # all under the lead's right: the room beside it
                 continue
             crowded = note is not None and not len(spots(*note, area, [*taken, *blk.boxes(x0, y0)]))
-            cost = (crowded, order is not item.panels and list(order) != list(item.panels),  # reading order first
-                    y0 + blk.height, blk.width * blk.height)
+            # a border stepping down a few mm beside the title block reads as a slip of the pen
+            step = blk.notch is not None and blk.height - blk.notch[1] < MIN_STEP
+            cost = (crowded, step, rank, y0 + blk.height, blk.width * blk.height)
             if best is None or cost < best[0]:
                 best = (cost, blk, x0, y0)
     return None if best is None else (best[1], best[2], best[3])
