@@ -6,7 +6,9 @@ first; each into a range of widths, bottom-left on a skyline); every shape that 
 beats in both width and height is kept, so the sheet can take the one that fits the room
 left on it (beside the plan of positions, under the previous block).  Blocks go in angle
 order: each one where it keeps the sheet's skyline lowest, never above the previous one,
-else on the next sheet.
+else (where the sheet asks for it) packed into the whole room left, its border running round
+the title block's corner and the plan of positions (:func:`round_corners`), else on the next
+sheet.
 """
 
 from __future__ import annotations
