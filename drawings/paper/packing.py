@@ -297,9 +297,9 @@ def place_blocks(blks: list[Whole | Flow], taken: list[list[Box]], area: Box, ga
     shape and spot that keep the current sheet's skyline lowest (a shape that leaves room
     for the next block wins), else (with ``corners``) round the corners of the room left
     (:func:`round_corners`, leaving room for the ``note`` to come where no earlier sheet
-    has it), else on the next
-    sheet; a block that fits no room left on a sheet with much of it free flows over it and
-    the next in parts.  Returns the blocks per sheet and every sheet's taken boxes."""
+    has it), else on the next sheet; a block that fits no room left on a sheet with much of
+    it free flows over it and the next in parts.  Returns the blocks per sheet and every
+    sheet's taken boxes (a block's as the rectangles inside its border)."""
     tks = [list(t) for t in taken]
     out: list[list[tuple[Block, float, float]]] = [[] for _ in tks]
     tb = tks[0][0]
