@@ -156,7 +156,7 @@ def test_component_vectors_are_distinguishable(v_svgs):
 def test_scales_written_as_the_course_writes_them(v_svgs):
     root = _sheet_with(v_svgs, "velocity-45")
     # a Russian sheet: μ in units per millimetre, as the course writes it (plans.scene.notation)
-    assert _text(root.find(f".//{SVG}text[@id='velocity-45-scale']")).startswith("μv = 0,2 (м/с)/мм")
+    assert _text(root.find(f".//{SVG}text[@id='velocity-45-scale']")).startswith("μv = 0,1 (м/с)/мм")  # its plan drawn long: the sheet has room
     assert "M 1:1" in _text(root.find(f".//{SVG}text[@id='scheme-45-scale']"))
 
 
@@ -169,8 +169,8 @@ def test_k_style_scales(tmp_path):
     d = draw(p)
     root = _sheet_with([ET.fromstring(sh.svg()) for sh in d.sheets], "velocity-45")
     t = _text(root.find(f".//{SVG}text[@id='velocity-45-scale']"))
-    assert t.startswith("Kv = 0.2 (m/s)/mm")
-    assert _stated_scale(root, "velocity-45") == pytest.approx(1 / 0.2)
+    assert t.startswith("Kv = 0.1 (m/s)/mm")
+    assert _stated_scale(root, "velocity-45") == pytest.approx(1 / 0.1)
 
 
 # --------------------------------------------------------------------------- the sheet

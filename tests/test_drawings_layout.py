@@ -94,11 +94,6 @@ def _where(d) -> dict[float, set[int]]:
     return out
 
 
-def _inside(box, outer) -> bool:
-    return outer[0] - 1e-6 <= box[0] and outer[1] - 1e-6 <= box[1] and box[2] <= outer[2] + 1e-6 \
-        and box[3] <= outer[3] + 1e-6
-
-
 @pytest.mark.parametrize("name", TWELVE)
 def test_each_position_one_bordered_block_on_one_sheet_in_angle_order(drawings, name):
     """A1: a position's panels all on one sheet inside its own border, under a heading that
@@ -112,19 +107,19 @@ def test_each_position_one_bordered_block_on_one_sheet_in_angle_order(drawings, 
     assert firsts == sorted(firsts)
     assert d.sheets[0].placed[0][0].kind == "positions"
     for sh in d.sheets:
-        frames = {f.phi: f for f in sh.frames}
+        borders = {f.phi: shapely.Polygon(f.outline()) for f in sh.frames}  # round corners, as drawn
         for p, x, y in sh.placed:
+            box = shapely.box(x, y, x + p.width, y + p.height)
             if p.phi is None:
-                assert not any(_inside((x, y, x + p.width, y + p.height), f.box) for f in sh.frames), p.pid
+                assert all(b.intersection(box).area < 1e-6 for b in borders.values()), p.pid
                 continue
-            f = frames[p.phi]
-            assert _inside((x, y, x + p.width, y + p.height), f.box), p.pid
-            assert not any(_inside((x, y, x + p.width, y + p.height), g.box) for g in sh.frames if g is not f)
+            assert borders[p.phi].buffer(1e-6).contains(box), p.pid
+            assert all(b.intersection(box).area < 1e-6 for phi, b in borders.items() if phi != p.phi)
         for f in sh.frames:
             k = sorted(where).index(f.phi) + 1  # numbered from 1 ([sheet] first_position)
             assert f.heading.startswith(f"Положение {k}, φ = "), f.heading
         for a, b in itertools.combinations(sh.frames, 2):
-            assert shapely.box(*a.box).distance(shapely.box(*b.box)) >= GAP - 1e-6
+            assert borders[a.phi].distance(borders[b.phi]) >= GAP - 1e-6
         tops = [f.box[1] for f in sorted(sh.frames, key=lambda f: f.phi)]
         assert tops == sorted(tops)  # a later position never starts above an earlier one
 

@@ -255,7 +255,7 @@ def _draw(sol: Solution, spec: SheetSpec) -> Drawing:
         return Drawing(sc, spec, tuple(panels), tuple(sheets), mu_l)
     panels, mu_l = build_panels(sol, spec)
     nums = {float(phi): n for phi, n in zip(sc.driver.phis_deg, numbers(sol, spec), strict=True)}
-    sheets = compose(panels, spec, None, sc.path, nums)  # each sheet's scale: its main image's
+    sheets = compose(panels, spec, None, sc.path, nums, corners=True)  # each sheet's scale: its main image's
     panels, sheets = _fuller_blocks(sol, spec, nums, panels, sheets)
     if sc.wants("diagrams") or sc.wants("dynamics"):  # the cycle's sheets follow
         from drawings.cycle import extend
@@ -311,13 +311,13 @@ def _fuller_blocks(sol: Solution, spec: SheetSpec, nums: dict[float, int], panel
     """Each sheet of the block layout redrawn at longer plans where it has room for them
     (:mod:`drawings.linkage.larger`): its own panels, at the fullest longer solution that still
     holds them on one sheet.  Returns the panels drawn and the sheets."""
-    from drawings.linkage.larger import FULL, fill, longer, may_grow, once_each
+    from drawings.linkage.larger import BLOCK_STEPS, FULL, fill, longer, may_grow, once_each
     from drawings.paper.sheet import TooBig
 
     if not may_grow(sol, spec) or spec.pins:
         return panels, sheets
     size = spec.size
-    makers = longer(sol)
+    makers = longer(sol, BLOCK_STEPS)
 
     def panels_of(make: Callable[[], Solution]) -> Callable[[], dict[str, Panel]]:
         return lambda: {p.pid: p for p in build_panels(make(), spec)[0]}
@@ -336,7 +336,7 @@ def _fuller_blocks(sol: Solution, spec: SheetSpec, nums: dict[float, int], panel
             if any(pid not in more for pid in ids):
                 break
             try:
-                laid = compose([more[pid] for pid in ids], spec, None, sol.scene.path, nums)
+                laid = compose([more[pid] for pid in ids], spec, None, sol.scene.path, nums, corners=True)
             except TooBig:  # a panel too long for an empty sheet: no longer ones either
                 break
             if len(laid) > 1:  # longer still would not fit one sheet either

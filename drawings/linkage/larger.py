@@ -28,6 +28,10 @@ STEPS = (1.25, 1.6, 2.0)
 #: One step further for the course's kinematics sheet (its few acceleration plans beside the
 #: kinematic diagrams), within :data:`plans.solution.MAX_FIT`.
 KINEMATIC_STEP = 2.5
+#: The fits a sheet of the block layout tries (:func:`drawings.linkage._fuller_blocks`), on to
+#: MAX_FIT: a position's block alone on its sheet, its border running round the title block,
+#: has room for plans longer than twice the A1 lengths.
+BLOCK_STEPS = (*STEPS, 2.2, 2.5)
 #: The formats whose sheets are grown (a course's A1, and A2).
 FORMATS = ("A1", "A2")
 #: A layout whose every sheet is this full is left as it is.
@@ -44,12 +48,13 @@ def may_grow(sol: Solution, spec: Any) -> bool:
             and not all(any(k in sc for k in keys) for keys in _FIXED))
 
 
-def longer(sol: Solution) -> list[Callable[[], Solution]]:
-    """Thunks of ``sol`` at each longer fit, in order (:meth:`Solution.at_fit`: only the plans,
-    polygons and lever are made again, at their longer scales)."""
+def longer(sol: Solution, steps: Sequence[float] = STEPS) -> list[Callable[[], Solution]]:
+    """Thunks of ``sol`` at each longer fit (``steps`` times its own, up to MAX_FIT), in order
+    (:meth:`Solution.at_fit`: only the plans, polygons and lever are made again, at their
+    longer scales)."""
     from functools import partial
 
-    fits = [sol.fit * s for s in STEPS if sol.fit * s <= MAX_FIT + 1e-12]
+    fits = [sol.fit * s for s in steps if sol.fit * s <= MAX_FIT + 1e-12]
     return [partial(sol.at_fit, f) for f in fits]
 
 

@@ -31,14 +31,22 @@ class Frame:
     box: Box
     heading: str
     notch: Box | None = None  # the corner the border goes round (the title block's)
+    lead: Box | None = None  # the top-left corner it goes round (the plan of positions')
 
     def outline(self) -> list[tuple[float, float]]:
-        """The border: the box, less the notch at its bottom-right corner."""
+        """The border: the box, less the notch at its bottom-right corner and the lead at its
+        top-left one."""
         x0, y0, x1, y1 = self.box
-        if self.notch is None:
-            return [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
-        nx, ny = self.notch[0], self.notch[1]
-        return [(x0, y0), (x1, y0), (x1, ny), (nx, ny), (nx, y1), (x0, y1)]
+        right = [(x1, y0), (x1, y1)] if self.notch is None else [
+            (x1, y0), (x1, self.notch[1]), (self.notch[0], self.notch[1]), (self.notch[0], y1)]
+        left = [(x0, y1), (x0, y0)] if self.lead is None else [
+            (x0, y1), (x0, self.lead[3]), (self.lead[2], self.lead[3]), (self.lead[2], y0)]
+        return right + left
+
+    @property
+    def head_x(self) -> float:
+        """Where the heading starts: the top edge's left end."""
+        return self.box[0] if self.lead is None else self.lead[2]
 
 
 @dataclass(slots=True)
@@ -51,10 +59,25 @@ class Block:
     phi: float | None
     heading: str = ""
     notch: Box | None = None  # block coordinates: the corner kept clear (the title block)
+    lead: Box | None = None  # block coordinates: the top-left corner kept clear (the plan of positions)
 
     @property
     def framed(self) -> bool:
         return bool(self.heading)
+
+    def boxes(self, x: float, y: float) -> list[Box]:
+        """The rectangles the block covers at (x, y): its box less the notch and the lead, in
+        bands from the top."""
+        w, h = self.width, self.height
+        n, ld = self.notch, self.lead
+        ys = sorted({0.0, h} | ({n[1]} if n else set()) | ({ld[3]} if ld else set()))
+        out: list[Box] = []
+        for a, b in zip(ys[:-1], ys[1:], strict=True):
+            x0 = ld[2] if ld is not None and b <= ld[3] + SLACK_MM else 0.0
+            x1 = n[0] if n is not None and a >= n[1] - SLACK_MM else w
+            if b - a > SLACK_MM and x1 - x0 > SLACK_MM:
+                out.append((x + x0, y + a, x + x1, y + b))
+        return out
 
 
 def heading(phi: float, number: int | None, lang: str, part: int = 0) -> str:
@@ -70,10 +93,12 @@ def heading(phi: float, number: int | None, lang: str, part: int = 0) -> str:
 
 
 def pack_block(panels: Sequence[Panel], width: float, height: float, gap: float,
-               free_spots, title: str = "", notch: Box | None = None) -> tuple[Block, list[Panel]]:
+               free_spots, title: str = "", notch: Box | None = None,
+               lead: Box | None = None) -> tuple[Block, list[Panel]]:
     """Panels in reading order inside a ``width`` × ``height`` block, each where it keeps the
     block's skyline lowest; returns the block (shrunk to its content) and what did not fit.
-    ``notch`` (block coordinates, reaching the bottom-right corner) is kept clear."""
+    ``notch`` (block coordinates, reaching the bottom-right corner) and ``lead`` (from the
+    top-left corner; the heading starts right of it) are kept clear."""
     framed = bool(title)
     top = HEAD if framed else 0.0
     inset = INSET if framed else 0.0
@@ -81,6 +106,8 @@ def pack_block(panels: Sequence[Panel], width: float, height: float, gap: float,
     taken: list[Box] = []
     if notch is not None:  # panels keep GAP from the notch's border, as from a panel
         taken.append((notch[0] - inset + gap, notch[1] - inset + gap, width + gap, height + gap))
+    if lead is not None:  # and the inset from the border round the lead
+        taken.append((-gap, -gap, lead[2] + inset - gap, lead[3] + inset - gap))
     placed: list[tuple[Panel, float, float]] = []
     rest: list[Panel] = []
     for p in panels:
@@ -98,12 +125,14 @@ def pack_block(panels: Sequence[Panel], width: float, height: float, gap: float,
     boxes = [(x, y, x + p.width, y + p.height) for p, x, y in placed]
     w = max(b[2] for b in boxes) + inset
     h = max(b[3] for b in boxes) + inset
+    # the content runs under the lead: the heading starts right of it
+    kept = None if lead is None or not any(b[0] < lead[2] for b in boxes) else (0.0, 0.0, lead[2], lead[3])
     if framed:
-        w = max(w, layout(title, 0, 0, HEAD_SIZE).box[2] + 2 * inset)
+        w = max(w, (kept[2] if kept is not None else 0.0) + layout(title, 0, 0, HEAD_SIZE).box[2] + 2 * inset)
     cut = None
     if notch is not None and w > notch[0] and h > notch[1]:  # the content runs round the corner
         cut = (notch[0], notch[1], w, h)
-    return Block(placed, w, h, placed[0][0].phi, title, cut), rest
+    return Block(placed, w, h, placed[0][0].phi, title, cut, kept), rest
 
 
 def place_block(block: Block, area: Box, taken: Sequence[Box], prev: Box | None, free_spots,
@@ -170,6 +199,7 @@ def widths(area_w: float, panels: Sequence[Panel]) -> list[float]:
 
 def frame_of(block: Block, x: float, y: float) -> Frame:
     assert block.phi is not None
-    n = block.notch
+    n, ld = block.notch, block.lead
     notch = None if n is None else (x + n[0], y + n[1], x + n[2], y + n[3])
-    return Frame(block.phi, (x, y, x + block.width, y + block.height), block.heading, notch)
+    lead = None if ld is None else (x + ld[0], y + ld[1], x + ld[2], y + ld[3])
+    return Frame(block.phi, (x, y, x + block.width, y + block.height), block.heading, notch, lead)

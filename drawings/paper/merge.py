@@ -30,8 +30,8 @@ def _taken(sh: Sheet) -> list[Box]:
 def moved_onto(prev: Sheet, sh: Sheet) -> tuple[float, float] | None:
     """Where :func:`merged` moves ``sh``'s panels, as laid out, onto ``prev``'s free room (the
     uppermost free spot, then the leftmost): the shift, or None where they do not fit (or
-    ``sh`` has none, or a continued block's notch)."""
-    if not sh.placed or any(f.notch is not None for f in sh.frames):
+    ``sh`` has none, or a block's border runs round a corner)."""
+    if not sh.placed or any(f.notch is not None or f.lead is not None for f in sh.frames):
         return None
     x0, y0, x1, y1 = _extent(sh)
     spots = free_spots(GAP)(x1 - x0, y1 - y0, usable(prev.width, prev.height), _taken(prev))

@@ -6,7 +6,9 @@ first; each into a range of widths, bottom-left on a skyline); every shape that 
 beats in both width and height is kept, so the sheet can take the one that fits the room
 left on it (beside the plan of positions, under the previous block).  Blocks go in angle
 order: each one where it keeps the sheet's skyline lowest, never above the previous one,
-else on the next sheet.
+else (where the sheet asks for it) packed into the whole room left, its border running round
+the title block's corner and the plan of positions (:func:`round_corners`), else on the next
+sheet.
 """
 
 from __future__ import annotations
@@ -25,6 +27,8 @@ Spots = Callable[[float, float, Box, Sequence[Box]], np.ndarray]
 
 #: A band of a sheet lower than this (mm) is not worth starting a part of a block in.
 MIN_BAND = 40.0
+#: The least step (mm) of a border going round the title block's corner worth drawing.
+MIN_STEP = 10.0
 #: Fractions of the sheet's width a block is packed into.
 FRACTIONS = (1.0, 0.9, 0.8, 0.75, 2 / 3, 0.6, 0.55, 0.5, 0.45, 0.4, 0.35, 1 / 3, 0.3, 0.25)
 
@@ -140,6 +144,8 @@ class Whole:
 
     shapes: list[Block]
     flow: Flow | None
+    panels: tuple[Panel, ...] = ()  # in reading order, for a block packed round corners
+    title: str = ""
 
 
 #: A sheet with more of its area free than this takes the first part of a block that does
@@ -149,10 +155,11 @@ FREE_TO_FLOW = 0.3
 
 def blocks_of(groups: list[list[Panel]], area: Box, lang: str, numbers: dict[float, int],
               limit: Callable[[float], float], gap: float, spots: Spots,
-              single: Sequence[str], keep_whole: bool = True) -> list[Whole | Flow]:
+              single: Sequence[str], keep_whole: bool = True, tb: Box | None = None) -> list[Whole | Flow]:
     """Each group as a block in every shape worth trying, or as a :class:`Flow` when it
     cannot fit one sheet; drawing-wide panels (``single`` kinds) stand alone.  With
-    ``keep_whole`` a block that fits one sheet never flows."""
+    ``keep_whole`` a block that fits one sheet never flows: not even one that fits it only
+    round the title block ``tb`` (no shapes then: :func:`round_corners` places it)."""
     aw = area[2] - area[0]
     # room beside a drawing-wide panel (the plan of positions) is a width worth trying
     extra = [aw - p.width - gap for grp in groups for p in grp if p.kind in single and p.width < aw]
@@ -164,7 +171,11 @@ def blocks_of(groups: list[list[Panel]], area: Box, lang: str, numbers: dict[flo
             continue
         found, left = shapes(grp, aw, limit, gap, spots, heading(phi, numbers.get(phi), lang), extra)
         flow = Flow(tuple(grp), partial(heading, phi, numbers.get(phi), lang))
-        out.append(flow if left else Whole(found, None if keep_whole or len(grp) == 1 else flow))
+        whole = Whole([] if left else found, None if keep_whole or len(grp) == 1 else flow, tuple(grp),
+                      flow.titles(0))
+        if left and keep_whole and tb is not None and round_corners(whole, area, [tb], None, gap, spots):
+            left = []  # whole on a sheet of its own, round the title block
+        out.append(flow if left else whole)
     return out
 
 
@@ -206,6 +217,73 @@ def _part(flow: Flow, rest: list[Panel], n: int, area: Box, taken: Sequence[Box]
     return best[1], best[2], best[3], best[4]
 
 
+def _rooms(area: Box, taken: Sequence[Box], prev: Box | None, gap: float,
+           note: tuple[float, float] | None = None, lone: bool = False) -> list[tuple[float, float, Box | None]]:
+    """The rooms left on a sheet that reach its bottom-right corner (round the title block),
+    as (x0, y0, lead): the band below everything on it, the room right of the previous block,
+    and, where the previous block is a ``lone`` panel (the plan of positions) at the left
+    edge, the room from its top down the sheet's whole width with that panel kept clear in
+    the room's top-left corner (``lead``, in the room's coordinates, the border ``gap``/2
+    from the panel), there with room for a ``note`` (w, h: the legend) under it or without."""
+    tb, others = taken[0], taken[1:]
+
+    def clear(room: Box, but: Box | None = None) -> bool:
+        return not any(t != but and t[0] < room[2] - SLACK_MM and room[0] < t[2] - SLACK_MM
+                       and t[1] < room[3] - SLACK_MM and room[1] < t[3] - SLACK_MM for t in others)
+
+    out: list[tuple[float, float, Box | None]] = [
+        (area[0], area[1] if not others else max(t[3] for t in others) + gap, None)]
+    if prev is not None:
+        if clear((prev[2] + gap, prev[1], area[2], area[3])):
+            out.append((prev[2] + gap, prev[1], None))
+        if lone and prev[0] <= area[0] + SLACK_MM and clear((area[0], prev[1], area[2], area[3]), prev):
+            lead = (0.0, 0.0, prev[2] + gap / 2 - area[0], prev[3] + gap / 2 - prev[1])
+            out.append((area[0], prev[1], lead))
+            if note is not None:  # room for the legend under the plan of positions, gap from the border
+                out.append((area[0], prev[1], (0.0, 0.0, max(lead[2], note[0] + gap),
+                                               prev[3] + 2 * gap + note[1] - prev[1])))
+    return [(x0, y0, lead) for x0, y0, lead in out
+            if tb[0] - gap > x0 + MIN_BAND and tb[1] - gap > y0 + MIN_BAND]
+
+
+def round_corners(item: Whole, area: Box, taken: Sequence[Box], prev: Box | None, gap: float,
+                  spots: Spots, note: tuple[float, float] | None = None,
+                  lone: bool = False) -> tuple[Block, float, float] | None:
+    """A position's block packed whole into a room left on a sheet, its border running round
+    the title block's corner (and round the plan of positions above-left of it, ``lone``:
+    :func:`_rooms`) where the block's rectangles find no room: the block that leaves room
+    for a ``note`` (w, h: the legend still to go on this sheet), then has no step in its
+    border lower than :data:`MIN_STEP`, then keeps the reading order (else moves least of
+    it: the panels it leaves out, earlier), then ends highest (the least area of equals),
+    or None where no room holds all its panels."""
+    if not item.panels:
+        return None
+    tb = taken[0]
+    reading = list(item.panels)
+    best = None
+    for x0, y0, lead in _rooms(area, taken, prev, gap, note, lone):
+        w, h = area[2] - x0, area[3] - y0
+        notch = (tb[0] - gap / 2 - x0, tb[1] - gap / 2 - y0, w, h)
+        # the reading order; then it with the panels it leaves out moved earlier; then the others
+        tries = [(0, reading)]
+        first, out = pack_block(reading, w, h, gap, spots, item.title, notch, lead)
+        if out:
+            rest = [p for p in reading if p not in out]
+            tries += [(1, rest[:k] + out + rest[k:]) for k in range(1, len(rest))]
+        tries += [(2, o) for o in _orders(reading)[1:]]
+        for rank, order in tries:
+            blk, left = (first, out) if rank == 0 else pack_block(order, w, h, gap, spots, item.title, notch, lead)
+            if left or (lead is not None and blk.lead is None):  # all under the lead's right: the room beside it
+                continue
+            crowded = note is not None and not len(spots(*note, area, [*taken, *blk.boxes(x0, y0)]))
+            # a border stepping down a few mm beside the title block reads as a slip of the pen
+            step = blk.notch is not None and blk.height - blk.notch[1] < MIN_STEP
+            cost = (crowded, step, rank, y0 + blk.height, blk.width * blk.height)
+            if best is None or cost < best[0]:
+                best = (cost, blk, x0, y0)
+    return None if best is None else (best[1], best[2], best[3])
+
+
 def _free(area: Box, taken: Sequence[Box]) -> float:
     """The fraction of a sheet's area no box covers (the boxes do not overlap)."""
     whole = (area[2] - area[0]) * (area[3] - area[1])
@@ -213,12 +291,15 @@ def _free(area: Box, taken: Sequence[Box]) -> float:
 
 
 def place_blocks(blks: list[Whole | Flow], taken: list[list[Box]], area: Box, gap: float,
-                 spots: Spots) -> tuple[list[list[tuple[Block, float, float]]], list[list[Box]]]:
+                 spots: Spots, note: tuple[float, float] | None = None, corners: bool = False
+                 ) -> tuple[list[list[tuple[Block, float, float]]], list[list[Box]]]:
     """Blocks one after another on the sheets (pinned panels already there): each in the
     shape and spot that keep the current sheet's skyline lowest (a shape that leaves room
-    for the next block wins), else on the next sheet; a block that fits no room left on a
-    sheet with much of it free flows over it and the next in parts.  Returns the blocks per
-    sheet and every sheet's taken boxes."""
+    for the next block wins), else (with ``corners``) round the corners of the room left
+    (:func:`round_corners`, leaving room for the ``note`` to come where no earlier sheet
+    has it), else on the next sheet; a block that fits no room left on a sheet with much of
+    it free flows over it and the next in parts.  Returns the blocks per sheet and every
+    sheet's taken boxes (a block's as the rectangles inside its border)."""
     tks = [list(t) for t in taken]
     out: list[list[tuple[Block, float, float]]] = [[] for _ in tks]
     tb = tks[0][0]
@@ -259,6 +340,7 @@ def place_blocks(blks: list[Whole | Flow], taken: list[list[Box]], area: Box, ga
         after_item = blks[n + 1] if n + 1 < len(blks) else None
         after = after_item.shapes if isinstance(after_item, Whole) else []
         flowed = False
+        rounded = None
         while True:
             best = None
             for b in options:
@@ -272,8 +354,14 @@ def place_blocks(blks: list[Whole | Flow], taken: list[list[Box]], area: Box, ga
                     best = (cost, b, spot)
             if best is not None:
                 break
+            if corners:
+                housed = note is None or any(len(spots(*note, area, t)) for t in tks[:cur])
+                lone = bool(out[cur]) and not out[cur][-1][0].framed  # after the plan of positions
+                rounded = round_corners(item, area, tks[cur], prev, gap, spots, None if housed else note, lone)
+                if rounded is not None:
+                    break
             if not out[cur] and len(tks[cur]) == 1:  # pragma: no cover - blocks fit an empty sheet
-                raise ValueError(f"a block of {options[0].width:.0f}×{options[0].height:.0f} mm does not fit")
+                raise ValueError(f"a block of {len(item.panels) or 1} panels does not fit")
             if item.flow is not None and _free(area, tks[cur]) > FREE_TO_FLOW:
                 flow(item.flow)
                 flowed = True
@@ -281,12 +369,14 @@ def place_blocks(blks: list[Whole | Flow], taken: list[list[Box]], area: Box, ga
             next_sheet()
         if flowed:
             continue
-        assert best is not None
-        _, b, spot = best
-        box = (spot[0], spot[1], spot[0] + b.width, spot[1] + b.height)
-        tks[cur].append(box)
+        if best is None:
+            assert rounded is not None
+            b, spot = rounded[0], (rounded[1], rounded[2])
+        else:
+            _, b, spot = best
+        tks[cur].extend(b.boxes(*spot))
         out[cur].append((b, spot[0], spot[1]))
-        prev = box
+        prev = (spot[0], spot[1], spot[0] + b.width, spot[1] + b.height)
     while len(out) > 1 and not out[-1] and len(tks[-1]) == 1:
         out.pop()
         tks.pop()

@@ -138,7 +138,7 @@ def _frames(rec: Recording, sh: Sheet) -> None:
         tag = f"{f.phi:.6g}".replace("-", "m")
         rec.begin(f"block-{tag}", "block")
         rec.polygon(f.outline(), Style(width=0.35, cls="block"), f"block-{tag}-border")
-        rec.text(layout(f.heading, x0 + INSET, y0 + HEAD / 2 + 1.0, HEAD_SIZE, "start", "middle"),
+        rec.text(layout(f.heading, f.head_x + INSET, y0 + HEAD / 2 + 1.0, HEAD_SIZE, "start", "middle"),
                  "heading", f"block-{tag}-heading")
         rec.end()
 
@@ -306,7 +306,7 @@ def _overlaps(a: Sequence[float], b: Sequence[float]) -> bool:
 
 
 def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str | None = "",
-            path: str = "<scene>", numbers: dict[float, int] | None = None) -> list[Sheet]:
+            path: str = "<scene>", numbers: dict[float, int] | None = None, corners: bool = False) -> list[Sheet]:
     """Place panels on sheets of ``spec.format`` (pins first), as a course lays them out.
 
     The drawing-wide panels (plan of positions) come first; then one bordered block per
@@ -317,8 +317,9 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str | None = "
     order).  A position too big for one sheet flows over the sheets in
     parts ("continued").  The legend goes where there is room once the blocks are down,
     above the title block where it can; spare height is shared out between the bands of
-    blocks.  ``scale_text`` fills the title block's Scale cell; None: each sheet's own
-    (:func:`sheet_scale`).
+    blocks.  With ``corners`` a block that finds no room as a rectangle may run round the
+    title block and the plan of positions (:func:`.packing.round_corners`).  ``scale_text``
+    fills the title block's Scale cell; None: each sheet's own (:func:`sheet_scale`).
     """
     W, H = spec.size
     area = usable(W, H)
@@ -367,8 +368,9 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str | None = "
 
     spots = free_spots(GAP)
     blks = blocks_of(groups, area, spec.language, numbers or {}, limit, GAP, spots, _SINGLE,
-                     keep_whole=spec.format in _WHOLE_POSITIONS)
-    best, tks = place_blocks(blks, taken, area, GAP, spots)
+                     keep_whole=spec.format in _WHOLE_POSITIONS, tb=tb if corners else None)
+    note = None if legend is None else (legend.width, legend.height)
+    best, tks = place_blocks(blks, taken, area, GAP, spots, note, corners)
     if legend is not None:
         s, x, y = place_note(legend.width, legend.height, area, tks, GAP, spots)
         while len(best) <= s:
