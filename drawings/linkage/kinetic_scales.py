@@ -7,9 +7,9 @@ A draftsman draws the positions of one sheet alike: a dead centre's scheme (a th
 the scale of the other position's, not at twice it, and its free bodies at the scale of the
 other's.  The free bodies may be drawn larger than the mechanism (a standard scale or two
 above it) when the sheet gets clearly fuller so; the polygons and the lever grow by the
-longer solutions (:mod:`drawings.linkage.larger`), position by position
-(:func:`drawings.linkage.mixing.ascend`).  Of every choice tried, the one that keeps the
-fewest sheets and leaves the least of them empty is drawn.
+longer solutions (:mod:`drawings.linkage.larger`), position by position, each step raising
+the part that makes the sheets fullest (:func:`steepest`).  Of every choice tried, the one
+that keeps the fewest sheets and leaves the least of them empty is drawn.
 """
 
 from __future__ import annotations
@@ -19,7 +19,7 @@ from functools import partial
 from typing import Any
 
 from drawings.linkage.larger import better, full, score
-from drawings.linkage.mixing import OWN, ascend, by_phi
+from drawings.linkage.mixing import OWN, by_phi
 
 #: Standard scales above the mechanism's tried for the free bodies.
 BODIES_RISE = 2
@@ -41,6 +41,38 @@ def above(mu: float, ratios: Sequence[float]) -> list[float]:
     return sorted(1000.0 * r for r in ratios if 1000.0 * r > mu * (1 + 1e-9))
 
 
+def steepest(start: Sequence[int], options: int, lay: Callable[[tuple[int, ...]], list],
+             improves: Callable[[list, list], bool], done: Callable[[list], bool],
+             rank: Callable[[list], Any]) -> tuple[tuple[int, ...], list]:
+    """The choice of a fit per part (indices ``OWN``..``options - 1``, larger is longer) found by
+    steepest ascent from ``start``: each round every part's every longer fit is laid out (a part's
+    stops at the first that takes more sheets or that ``lay`` refuses as too big) and the best by
+    ``rank`` of those that ``improves`` the layout is taken, until none does or it is ``done``.
+    Raising the parts in a fixed order instead lets the first take the room a later one would
+    fill better (two positions sharing a sheet)."""
+    from drawings.paper.sheet import TooBig
+
+    choice = tuple(start)
+    best = lay(choice)
+    while not done(best):
+        top: tuple[tuple[int, ...], list] | None = None
+        for j in range(len(choice)):
+            for i in range(choice[j] + 1, options):
+                trial = choice[:j] + (i,) + choice[j + 1:]
+                try:
+                    got = lay(trial)
+                except TooBig:
+                    break
+                if len(got) > len(best):
+                    break
+                if improves(best, got) and (top is None or rank(got) > rank(top[1])):
+                    top = (trial, got)
+        if top is None:
+            break
+        choice, best = top
+    return choice, best
+
+
 def kinetic_layout(lay_at: Callable[[tuple[int, ...], float, float], list], positions: int, fits: int,
                    mu: float, ratios: Sequence[float], own: bool, size: tuple[float, float]) -> list:
     """The kinetostatics sheets: ``lay_at(fits, μl, μl of the free bodies)`` lays them out with
@@ -49,7 +81,7 @@ def kinetic_layout(lay_at: Callable[[tuple[int, ...], float, float], list], posi
     largest standard scale that keeps the sheets as few) and the free bodies at ``mu`` or a
     standard scale or two above it (with ``own``, the file's length scale, at it).  The fits
     rise position by position, then (while the sheets are not full) part by part: each ascent
-    is greedy, and either may stop short of the other.  ``fits``: the longer solutions."""
+    is a steepest one (:func:`steepest`), and either may stop short of the other.  ``fits``: the longer solutions."""
     from drawings.paper.sheet import TooBig
 
     laid: dict[tuple[tuple[int, ...], float], list] = {}
@@ -63,9 +95,6 @@ def kinetic_layout(lay_at: Callable[[tuple[int, ...], float, float], list], posi
     def done(s: list) -> bool:
         return full(s, size)
 
-    def more(a: list, b: list) -> bool:
-        return len(b) > len(a)
-
     def improves(a: list, b: list) -> bool:
         return better(a, b, size)
 
@@ -74,7 +103,8 @@ def kinetic_layout(lay_at: Callable[[tuple[int, ...], float, float], list], posi
         for together in (True, False):
             n = positions if together else 2 * positions
             try:
-                _, got = ascend((OWN,) * n, fits, partial(at, mb, together), improves, done, more)
+                _, got = steepest((OWN,) * n, fits, partial(at, mb, together), improves, done,
+                                  lambda s: score(s, size))
             except TooBig:  # a free body too big for an empty sheet: none larger either
                 assert best is not None
                 return best

@@ -140,6 +140,8 @@ class Whole:
 
     shapes: list[Block]
     flow: Flow | None
+    panels: tuple[Panel, ...] = ()  # its panels and heading, packed again round the title block
+    title: str = ""
 
 
 #: A sheet with more of its area free than this takes the first part of a block that does
@@ -164,7 +166,8 @@ def blocks_of(groups: list[list[Panel]], area: Box, lang: str, numbers: dict[flo
             continue
         found, left = shapes(grp, aw, limit, gap, spots, heading(phi, numbers.get(phi), lang), extra)
         flow = Flow(tuple(grp), partial(heading, phi, numbers.get(phi), lang))
-        out.append(flow if left else Whole(found, None if keep_whole or len(grp) == 1 else flow))
+        out.append(flow if left else Whole(found, None if keep_whole or len(grp) == 1 else flow, tuple(grp),
+                                           heading(phi, numbers.get(phi), lang)))
     return out
 
 
@@ -206,6 +209,25 @@ def _part(flow: Flow, rest: list[Panel], n: int, area: Box, taken: Sequence[Box]
     return best[1], best[2], best[3], best[4]
 
 
+def round_corner(item: Whole, area: Box, taken: Sequence[Box], gap: float,
+                 spots: Spots) -> tuple[Block, float, float] | None:
+    """The block of ``item`` packed into all the room below everything on a sheet (``taken``:
+    the title block first), its border going round the title block's corner (an L), and where
+    it goes; None when that room does not hold it whole in any order (:func:`_orders`)."""
+    tb, others = taken[0], taken[1:]
+    x0 = area[0]
+    y0 = max(t[3] for t in others) + gap if others else area[1]
+    if tb[1] - gap < y0 + MIN_BAND or tb[0] - gap < x0 + MIN_BAND:
+        return None
+    w, h = area[2] - x0, area[3] - y0
+    notch = (tb[0] - gap / 2 - x0, tb[1] - gap / 2 - y0, w, h)
+    for order in _orders(item.panels):  # the reading order where it holds them all
+        blk, left = pack_block(order, w, h, gap, spots, item.title, notch)
+        if not left:
+            return blk, x0, y0
+    return None
+
+
 def _free(area: Box, taken: Sequence[Box]) -> float:
     """The fraction of a sheet's area no box covers (the boxes do not overlap)."""
     whole = (area[2] - area[0]) * (area[3] - area[1])
@@ -213,12 +235,14 @@ def _free(area: Box, taken: Sequence[Box]) -> float:
 
 
 def place_blocks(blks: list[Whole | Flow], taken: list[list[Box]], area: Box, gap: float,
-                 spots: Spots) -> tuple[list[list[tuple[Block, float, float]]], list[list[Box]]]:
+                 spots: Spots, corner: bool = False
+                 ) -> tuple[list[list[tuple[Block, float, float]]], list[list[Box]]]:
     """Blocks one after another on the sheets (pinned panels already there): each in the
     shape and spot that keep the current sheet's skyline lowest (a shape that leaves room
-    for the next block wins), else on the next sheet; a block that fits no room left on a
-    sheet with much of it free flows over it and the next in parts.  Returns the blocks per
-    sheet and every sheet's taken boxes."""
+    for the next block wins), else (with ``corner``) in all the room below the rest going
+    round the title block's corner (:func:`round_corner`), else on the next sheet; a block
+    that fits no room left on a sheet with much of it free flows over it and the next in
+    parts.  Returns the blocks per sheet and every sheet's taken boxes."""
     tks = [list(t) for t in taken]
     out: list[list[tuple[Block, float, float]]] = [[] for _ in tks]
     tb = tks[0][0]
@@ -271,6 +295,10 @@ def place_blocks(blks: list[Whole | Flow], taken: list[list[Box]], area: Box, ga
                 if best is None or cost < best[0]:
                     best = (cost, b, spot)
             if best is not None:
+                break
+            got = round_corner(item, area, tks[cur], gap, spots) if corner and item.panels else None
+            if got is not None:
+                best = ((False, 0.0, 0.0, 0.0, 0.0), got[0], (got[1], got[2]))
                 break
             if not out[cur] and len(tks[cur]) == 1:  # pragma: no cover - blocks fit an empty sheet
                 raise ValueError(f"a block of {options[0].width:.0f}×{options[0].height:.0f} mm does not fit")

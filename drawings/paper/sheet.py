@@ -306,7 +306,7 @@ def _overlaps(a: Sequence[float], b: Sequence[float]) -> bool:
 
 
 def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str | None = "",
-            path: str = "<scene>", numbers: dict[float, int] | None = None) -> list[Sheet]:
+            path: str = "<scene>", numbers: dict[float, int] | None = None, corner: bool = False) -> list[Sheet]:
     """Place panels on sheets of ``spec.format`` (pins first), as a course lays them out.
 
     The drawing-wide panels (plan of positions) come first; then one bordered block per
@@ -368,7 +368,7 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str | None = "
     spots = free_spots(GAP)
     blks = blocks_of(groups, area, spec.language, numbers or {}, limit, GAP, spots, _SINGLE,
                      keep_whole=spec.format in _WHOLE_POSITIONS)
-    best, tks = place_blocks(blks, taken, area, GAP, spots)
+    best, tks = place_blocks(blks, taken, area, GAP, spots, corner)
     if legend is not None:
         s, x, y = place_note(legend.width, legend.height, area, tks, GAP, spots)
         while len(best) <= s:
