@@ -17,7 +17,7 @@ from plans import solve
 
 ROOT = Path(__file__).resolve().parents[1]
 #: Samples whose kinetostatics sheet shows a dead centre beside another position, and one
-#: with friction over two sheets.
+#: with friction (its two positions sharing a sheet at a smaller scale).
 NAMES = ["slider_crank", "scotch_yoke", "offset_slider_crank", "shaper_friction"]
 
 
@@ -152,3 +152,40 @@ def test_the_scale_cell_is_the_mechanism_s_even_under_a_larger_free_body():
     assert sheet_scale([body, *schemes], "en") == "1:1"
     assert sheet_scale([body, strip, *schemes], "en") == "1:1"  # 34 200 mm² at 2:1 against 66 000
     assert sheet_scale([body, panel("crank", 100.0, 100.0, 1000.0)], "en") == "2:1"
+
+
+def test_two_positions_share_a_sheet_at_a_scale_at_most_twice_smaller():
+    """The mechanism's scale is lowered (standard scales only, to no less than half the one its
+    size asks for) when that takes fewer kinetostatics sheets, the largest such scale kept; a
+    layout already one sheet is not made smaller, and none below half is tried."""
+    from drawings.linkage.kinetic_scales import fewest
+    from drawings.linkage.panels import STANDARD_RATIOS
+
+    tried: list[float] = []
+
+    def lay_at(limit: float):
+        def sheets(mu: float) -> list[int]:
+            tried.append(mu)
+            return [1] if mu <= limit else [1, 2]
+        return sheets
+
+    assert fewest(lay_at(300.0), 500.0, STANDARD_RATIOS) == 250.0  # 1:2 -> 1:4, not 1:2.5
+    assert fewest(lay_at(400.0), 500.0, STANDARD_RATIOS) == 400.0  # 1:2.5 already one sheet
+    tried.clear()
+    assert fewest(lay_at(200.0), 500.0, STANDARD_RATIOS) == 500.0  # 1:5 is below half of 1:2
+    assert min(tried) == 250.0
+    tried.clear()
+    assert fewest(lay_at(1000.0), 500.0, STANDARD_RATIOS) == 500.0 and tried == [500.0]
+
+
+def test_the_friction_shaper_s_two_positions_share_one_kinetostatics_sheet():
+    """The shaper with friction: its two positions, each leaving an A1 sheet of its own half
+    empty at 1:2, share one at 1:4, that sheet at least two thirds drawn."""
+    from drawings.paper.fill import drawn_part
+
+    d = draw(solve(str(ROOT / "samples" / "shaper_friction.toml")))
+    sheets = [sh for sh in d.sheets if any(p.kind == "group" for p, _, _ in sh.placed)]
+    assert len(sheets) == 1
+    assert {p.phi for p, _, _ in sheets[0].placed if p.kind == "scheme"} == {30.0, 180.0}
+    assert {p.scale for p, _, _ in sheets[0].placed if p.kind == "scheme"} == {250.0}
+    assert drawn_part(sheets[0]) >= 2 / 3

@@ -23,6 +23,9 @@ from drawings.linkage.mixing import OWN, by_phi
 
 #: Standard scales above the mechanism's tried for the free bodies.
 BODIES_RISE = 2
+#: The smallest part of the scale the mechanism's size asks for that it is drawn at to keep
+#: its positions on fewer sheets (1:4 for 1:2).
+SHRINK = 0.5
 #: How much fuller (of the field) the least full sheet must get for the free bodies to be
 #: drawn at a larger scale than the mechanism.
 BODIES_GAIN = 0.02
@@ -39,6 +42,23 @@ def above(mu: float, ratios: Sequence[float]) -> list[float]:
     """The standard length scales (μl, mm per m: 1000 × a GOST 2.302 ratio) larger than
     ``mu``, smallest first."""
     return sorted(1000.0 * r for r in ratios if 1000.0 * r > mu * (1 + 1e-9))
+
+
+def fewest(lay_at: Callable[[float], list], mu: float, ratios: Sequence[float]) -> float:
+    """The largest standard length scale from ``mu`` down to :data:`SHRINK` of it at which the
+    kinetostatics take the fewest sheets (``lay_at(μl)``: the sheets with the mechanism and the
+    free bodies at μl): two positions that each leave a sheet half empty share one, drawn a
+    standard scale or two smaller, as a department would draw them."""
+    least = len(lay_at(mu))
+    best = mu
+    if least <= 1:
+        return mu
+    for s in sorted((1000.0 * r for r in ratios if mu * SHRINK * (1 - 1e-9) <= 1000.0 * r < mu * (1 - 1e-9)),
+                    reverse=True):
+        n = len(lay_at(s))
+        if n < least:
+            best, least = s, n
+    return best
 
 
 def steepest(start: Sequence[int], options: int, lay: Callable[[tuple[int, ...]], list],

@@ -20,7 +20,7 @@ import dataclasses
 from collections.abc import Callable, Sequence
 from typing import Any
 
-from drawings.linkage.kinetic_scales import kinetic_layout, lever_apart
+from drawings.linkage.kinetic_scales import fewest, kinetic_layout, lever_apart
 from drawings.linkage.panels import STANDARD_RATIOS, Panel
 from drawings.paper.blocks import pack_block
 from drawings.paper.i18n import tr
@@ -353,7 +353,9 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
 
         dyn_at = memo(dyn_of)
         # one standard scale for the mechanism at every position (the largest that keeps the
-        # sheets as few), one for the free bodies; each position's polygons and lever longer
+        # sheets fewest), one for the free bodies; each position's polygons and lever longer
+        if not own:
+            base_l = fewest(lambda m: lay(dyn_at(OWN)(m)), base_l, STANDARD_RATIOS)
         mu, _ = grow(dyn_at(OWN), base_l, lay, own)
         assert mu is not None
         # each position's free bodies with their polygons, and its lever, at a fit of their own
