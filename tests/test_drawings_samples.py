@@ -245,7 +245,7 @@ def test_a1_sheets_are_not_left_empty(drawn):
 #: Samples with an A1 sheet still more than a third empty: kinematics sheets whose plans at the
 #: next round scale (twice as long for a plan at 1·10^k) would take another sheet or shrink the
 #: plan of positions, kinetostatics sheets whose blocks cannot grow to the next standard scale.
-NOT_TWO_THIRDS = {"slider_crank", "v_engine"}
+NOT_TWO_THIRDS = {"v_engine"}
 
 
 def test_no_a1_sheet_is_more_than_a_third_empty(drawn, request):

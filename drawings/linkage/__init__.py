@@ -230,13 +230,15 @@ def _draw(sol: Solution, spec: SheetSpec) -> Drawing:
             return (lambda sel, mp, ml, mb=None: build_panels(s, spec, sel, mp, ml, mb),
                     lambda mu, bold: positions_panel(s, mu, spec.language, bold, strokes, spec.trace))
 
-        from drawings.linkage.larger import longer, may_grow
+        from drawings.linkage.larger import KINETIC_STEPS, longer, may_grow
 
-        larger = [lambda t=t: builders(t()) for t in longer(sol)] if may_grow(sol, spec) else []
+        grows = may_grow(sol, spec)
+        larger = [lambda t=t: builders(t()) for t in longer(sol)] if grows else []
+        longest = [lambda t=t: builders(t()) for t in longer(sol, KINETIC_STEPS)] if grows else []
         offered: list[list[Panel]] = [diagrams]  # every diagram panel the sheets may have taken
         optional = [] if diagrams or not _output_diagrams_wanted(sol, spec) else [
             lambda axis=axis: _output_diagrams(sol, spec, axis, offered) for axis in OUTPUT_AXES_MM]
-        sheets = course_sheets(sol, spec, *builders(sol), diagrams, larger, optional)
+        sheets = course_sheets(sol, spec, *builders(sol), diagrams, larger, optional, longest)
         theirs = {id(p) for ps in offered for p in ps}
         panels = [p for sh in sheets for p, _, _ in sh.placed if id(p) not in theirs]  # the linkage's
         if sc.wants("dynamics"):  # the dynamics' sheets follow

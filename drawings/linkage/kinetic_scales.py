@@ -94,16 +94,18 @@ def steepest(start: Sequence[int], options: int, lay: Callable[[tuple[int, ...]]
 
 
 def kinetic_layout(lay_at: Callable[[tuple[int, ...], float, float], list], positions: int, fits: int,
-                   mu: float, ratios: Sequence[float], own: bool, size: tuple[float, float]) -> list:
+                   mu: float, ratios: Sequence[float], own: bool, size: tuple[float, float],
+                   last: int = 0) -> list:
     """The kinetostatics sheets: ``lay_at(fits, μl, μl of the free bodies)`` lays them out with
     the free bodies and polygons of position ``j`` at the longer solution ``fits[2j]`` and its
     lever at ``fits[2j + 1]`` (:data:`OWN`: the sheet's own), the mechanism at ``mu`` (the
     largest standard scale that keeps the sheets as few) and the free bodies at ``mu`` or a
     standard scale or two above it (with ``own``, the file's length scale, at it).  The fits
     rise position by position, then (while the sheets are not full) part by part: each ascent
-    is a steepest one (:func:`steepest`), and either may stop short of the other.  ``fits``: the longer solutions."""
-    from drawings.paper.sheet import TooBig
-
+    is a steepest one (:func:`steepest`), and either may stop short of the other.  ``fits``:
+    the longer solutions; ``last``: longer ones still, tried only when the sheets are not yet
+    full without them (the polygons drawn as long as that only where nothing else fills the
+    sheet)."""
     laid: dict[tuple[tuple[int, ...], float], list] = {}
 
     def at(mb: float, together: bool, f: tuple[int, ...]) -> list:
@@ -112,28 +114,51 @@ def kinetic_layout(lay_at: Callable[[tuple[int, ...], float, float], list], posi
             laid[key] = lay_at(key[0], mu, mb)
         return laid[key]
 
+    first, mb, choice = _search(at, positions, fits, mu, ratios, own, size)
+    if not last or full(first, size):
+        return first
+    # the longest fits from where the search stopped, part by part at its free bodies' scale
+    start = choice if len(choice) == 2 * positions else tuple(x for x in choice for _ in (0, 1))
+    _, second = steepest(start, fits + last, partial(at, mb, False), partial(better, size=size),
+                         partial(full, size=size), lambda s: score(s, size))
+    return second if better(first, second, size) else first
+
+
+def _search(at: Callable[[float, bool, tuple[int, ...]], list], positions: int, fits: int, mu: float,
+            ratios: Sequence[float], own: bool, size: tuple[float, float]
+            ) -> tuple[list, float, tuple[int, ...]]:
+    """The best layout :func:`kinetic_layout` finds with ``fits`` longer solutions (``at(μl of
+    the free bodies, together, fits)``: the sheets, a fit per position or per part), with its
+    free bodies' scale and its fits."""
+    from drawings.paper.sheet import TooBig
+
     def done(s: list) -> bool:
         return full(s, size)
 
     def improves(a: list, b: list) -> bool:
         return better(a, b, size)
 
-    best: list | None = None
+    best: tuple[list, float, tuple[int, ...]] | None = None
     for mb in [mu] + ([] if own else above(mu, ratios)[:BODIES_RISE]):
+        try:
+            if best is not None and len(at(mb, True, (OWN,) * positions)) > len(best[0]):
+                break  # more sheets at the sheet's own fits: longer ones take no fewer
+        except TooBig:
+            break
         for together in (True, False):
             n = positions if together else 2 * positions
             try:
-                _, got = steepest((OWN,) * n, fits, partial(at, mb, together), improves, done,
-                                  lambda s: score(s, size))
+                choice, got = steepest((OWN,) * n, fits, partial(at, mb, together), improves, done,
+                                       lambda s: score(s, size))
             except TooBig:  # a free body too big for an empty sheet: none larger either
                 assert best is not None
                 return best
-            if best is None or mb == mu and improves(best, got):
-                best = got
-            elif improves(best, got) and (len(got) < len(best) or
-                                          score(got, size)[1] >= score(best, size)[1] + BODIES_GAIN):
-                best = got  # free bodies larger than the mechanism: for a real gain
-            if done(best):
+            if best is None or mb == best[1] and improves(best[0], got):
+                best = (got, mb, choice)
+            elif improves(best[0], got) and (len(got) < len(best[0]) or
+                                             score(got, size)[1] >= score(best[0], size)[1] + BODIES_GAIN):
+                best = (got, mb, choice)  # free bodies larger than before: for a real gain
+            if done(best[0]):
                 return best
     assert best is not None
     return best

@@ -25,6 +25,10 @@ T = TypeVar("T")
 #: round values); at most twice the A1 lengths (a known vector of 200 mm), not plans blown up
 #: to the sheet.
 STEPS = (1.25, 1.6, 2.0)
+#: The fits tried on the kinetostatics sheet after :data:`STEPS`: its force polygons and lever
+#: (one or two positions on a sheet, not twelve plans) may be drawn up to
+#: :data:`plans.solution.MAX_FIT` times the A1 lengths.
+KINETIC_STEPS = (2.5,)
 #: The formats whose sheets are grown (a course's A1, and A2).
 FORMATS = ("A1", "A2")
 #: A layout whose every sheet is this full is left as it is.
@@ -41,12 +45,13 @@ def may_grow(sol: Solution, spec: Any) -> bool:
             and not all(any(k in sc for k in keys) for keys in _FIXED))
 
 
-def longer(sol: Solution) -> list[Callable[[], Solution]]:
-    """Thunks of ``sol`` at each longer fit, in order (:meth:`Solution.at_fit`: only the plans,
-    polygons and lever are made again, at their longer scales)."""
+def longer(sol: Solution, steps: Sequence[float] = STEPS) -> list[Callable[[], Solution]]:
+    """Thunks of ``sol`` at each longer fit (``steps`` × its own), in order
+    (:meth:`Solution.at_fit`: only the plans, polygons and lever are made again, at their
+    longer scales)."""
     from functools import partial
 
-    fits = [sol.fit * s for s in STEPS if sol.fit * s <= MAX_FIT + 1e-12]
+    fits = [sol.fit * s for s in steps if sol.fit * s <= MAX_FIT + 1e-12]
     return [partial(sol.at_fit, f) for f in fits]
 
 

@@ -172,7 +172,8 @@ def flat_sheets(panels: Sequence[Panel], spec: SheetSpec, path: str = "<scene>")
 
 def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
                   diagrams: Sequence[Panel] = (), larger: Sequence[Any] = (),
-                  optional: Sequence[Callable[[], Sequence[Panel] | None]] = ()) -> list[Sheet]:
+                  optional: Sequence[Callable[[], Sequence[Panel] | None]] = (),
+                  longest: Sequence[Any] = ()) -> list[Sheet]:
     """The kinematics sheet(s), then the kinetostatics sheet(s).  ``build(sel, mu_positions,
     mu_l)`` makes the panels of a selection (:func:`drawings.linkage.build_panels`),
     ``positions(mu, bold)`` the plan of positions at μl = ``mu``; ``diagrams`` (the kinematic
@@ -183,7 +184,8 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
     diagrams at φ axes from the longest) the kinematics sheet takes after the plans, the first
     whose panels fit an empty sheet and, laid out with the rest, add no sheet and leave none
     emptier than two thirds or than it is without them (a thunk giving None ends the search);
-    the kinetostatics sheet is laid out once whatever they are."""
+    the kinetostatics sheet is laid out once whatever they are.  ``longest``: thunks like
+    ``larger``'s, of longer solutions still, tried after them on the kinetostatics sheet only."""
     from drawings.paper.sheet import fits_empty
 
     sel = selection(sol, spec, "course")
@@ -366,7 +368,13 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
 
         def part_at(key: tuple[int, tuple[float, float], int]) -> dict[str, Panel]:
             i, scales, j = key
-            return {p.pid: p for p in builders(i)[0](alone[j], None, *scales)[0]}
+            return {p.pid: p for p in dyn_builders(i)[0](alone[j], None, *scales)[0]}
+
+        made_longest = once_each(longest)
+
+        def dyn_builders(i: int) -> Any:
+            """Solution ``i``'s builders: ``larger``'s, then ``longest``'s."""
+            return builders(i) if i < len(larger) else made_longest(i - len(larger))
 
         by_id = memo(part_at)
 
@@ -375,7 +383,8 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
             keys = [(i, (mu_l, mu_b), j // 2) for j, i in enumerate(fits)]
             return lay(swapped(base, dyn_parts, keys, by_id))
 
-        out.extend(kinetic_layout(lay_at, len(forces), len(larger), mu, STANDARD_RATIOS, own, (W, H)))
+        out.extend(kinetic_layout(lay_at, len(forces), len(larger), mu, STANDARD_RATIOS, own, (W, H),
+                                  len(longest)))
     for i, sh in enumerate(out):
         sh.number, sh.count = i + 1, len(out)
         sh.prims = []
