@@ -11,7 +11,8 @@ acceleration = [1, 4], forces = [4] }`` picks the positions of each kind in eith
 Panels go in the order the method builds them: positions, velocity, acceleration, forces,
 lever, diagrams.  The sizes the layout chooses itself (the plan of positions' scale, the
 mechanism's and the groups' on the kinetostatics sheet) grow by standard scales while the
-sheets stay as few, so an A1 sheet is not left half empty.
+sheets stay as few, so an A1 sheet is not left half empty (the kinetostatics' mechanism is
+first drawn a standard scale or two smaller where its positions then share fewer sheets).
 """
 
 from __future__ import annotations
@@ -366,15 +367,15 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
         alone = [{kind: [x for x in ks if x == k] if isinstance(ks, list) else ks for kind, ks in dyn_sel.items()}
                  for k in forces]  # each position's selection, its panels built alone
 
-        def part_at(key: tuple[int, tuple[float, float], int]) -> dict[str, Panel]:
-            i, scales, j = key
-            return {p.pid: p for p in dyn_builders(i)[0](alone[j], None, *scales)[0]}
-
         made_longest = once_each(longest)
 
         def dyn_builders(i: int) -> Any:
             """Solution ``i``'s builders: ``larger``'s, then ``longest``'s."""
             return builders(i) if i < len(larger) else made_longest(i - len(larger))
+
+        def part_at(key: tuple[int, tuple[float, float], int]) -> dict[str, Panel]:
+            i, scales, j = key
+            return {p.pid: p for p in dyn_builders(i)[0](alone[j], None, *scales)[0]}
 
         by_id = memo(part_at)
 
