@@ -229,6 +229,32 @@ def test_random_panels_pack_without_overlap(seed, fmt):
     assert used / (len(sheets) * free) > (0.4 if fmt == "A1" else 0.3)
 
 
+def test_a_block_runs_round_the_title_blocks_corner_rather_than_take_another_sheet():
+    """A position too tall for the room above the title block and too wide for the column
+    beside it: with ``corner`` it takes all the room below the previous one, its border an L
+    round the title block (its panels inside the border, clear of the title block), where
+    without it goes on a second sheet."""
+    spec = sheet_spec({"sheet": {"format": "A1"}}, "x.toml")
+    W, H = spec.size
+    a = usable(W, H)
+    aw = a[2] - a[0]
+    panels = [_fake("top", 0.0, aw - 20, 130), _fake("wide", 30.0, aw - 20, 200), _fake("under", 30.0, 500, 150)]
+    assert len(compose(panels, spec)) == 2
+    sheets = compose(panels, spec, corners=True)
+    assert len(sheets) == 1
+    sh = sheets[0]
+    _check_sheet(sh)
+    framed = {f.phi: f for f in sh.frames}
+    tb = shapely.box(*sh.title_box)
+    border = shapely.Polygon(framed[30.0].outline())
+    assert framed[30.0].notch is not None and framed[0.0].notch is None
+    assert border.buffer(-1e-6).disjoint(tb)  # the border goes round the title block
+    assert border.area < shapely.box(*framed[30.0].box).area  # an L, not the whole box
+    for pid in ("wide", "under"):
+        assert border.contains(shapely.box(*sh.panel_boxes()[pid])), pid
+    assert sh.panel_boxes()["under"][3] > sh.title_box[1]  # beside the title block, below its top
+
+
 def test_legend_sits_above_the_title_block(drawings):
     sh = drawings["slider_crank"].sheets[0]
     box = sh.panel_boxes()["legend"]

@@ -242,39 +242,26 @@ def test_a1_sheets_are_not_left_empty(drawn):
     assert min(fills) >= 0.35, [round(f, 2) for f in fills]
 
 
-#: Samples with an A1 sheet still more than a third empty: kinematics sheets whose plans at the
-#: next round scale (twice as long for a plan at 1·10^k) would take another sheet or shrink the
-#: plan of positions, kinetostatics sheets whose blocks cannot grow to the next standard scale.
-NOT_TWO_THIRDS = {"shaper_friction", "slider_crank"}
-
-
-def test_no_a1_sheet_is_more_than_a_third_empty(drawn, request):
+def test_no_a1_sheet_is_more_than_a_third_empty(drawn):
     """Every A1 sheet of a sample drawn over at least two thirds of its field (inside the
     frame, less the title block)."""
-    path, d, _ = drawn
-    if path.stem in NOT_TWO_THIRDS:
-        request.applymarker(pytest.mark.xfail(reason="a sheet still more than a third empty", strict=True))
+    _, d, _ = drawn
     fills = [drawn_part(sh) for sh in d.sheets]
     assert min(fills) >= 2 / 3, [round(f, 2) for f in fills]
 
 
 #: The class III and instant-centre linkages (samples/class3, samples/centres) drawn on A1.
 LINKAGES = sorted((ROOT / "samples").glob("class3/*.toml")) + sorted((ROOT / "samples").glob("centres/*.toml"))
-#: Those with an A1 sheet still more than a third empty (as :data:`NOT_TWO_THIRDS`).
-LINKAGES_NOT_TWO_THIRDS: set[str] = set()
 
 
 @pytest.mark.parametrize("path", LINKAGES, ids=[f"{p.parent.name}/{p.stem}" for p in LINKAGES])
-def test_no_a1_sheet_of_a_class3_or_centres_linkage_is_more_than_a_third_empty(path, request):
+def test_no_a1_sheet_of_a_class3_or_centres_linkage_is_more_than_a_third_empty(path):
     """The same two thirds on every A1 sheet of the linkages in the samples' subfolders, their
     panels clear of each other and inside the frame."""
     import itertools
 
     import shapely
 
-    name = f"{path.parent.name}/{path.stem}"
-    if name in LINKAGES_NOT_TWO_THIRDS:
-        request.applymarker(pytest.mark.xfail(reason="a sheet still more than a third empty", strict=True))
     d = draw(path, format="A1")
     for sh in d.sheets:
         boxes = [shapely.box(*b) for b in sh.panel_boxes().values()]

@@ -15,17 +15,9 @@ from tests.locales import in_russian
 ROOT = Path(__file__).resolve().parents[1]
 SAMPLES = sorted(p for folder in ("flywheel", "engines", "projects") for p in (ROOT / "samples" / folder).glob("*.toml"))
 
-#: What these sheets cannot reach yet, and why.
-SHORT = {
-    "v_engine_project": "its kinematics sheet of acceleration plans and kinematic diagrams and its "
-                        "kinetostatics sheet (the linkage's sheets)",
-}
-
 
 @pytest.mark.parametrize("path", SAMPLES, ids=[p.stem for p in SAMPLES])
-def test_no_a1_sheet_of_a_subfolder_sample_is_more_than_a_third_empty(path, request):
-    if path.stem in SHORT:
-        request.applymarker(pytest.mark.xfail(reason=SHORT[path.stem], strict=True))
+def test_no_a1_sheet_of_a_subfolder_sample_is_more_than_a_third_empty(path):
     d = in_russian(drawings.draw)(path)  # the figures measured on Russian sheets
     sheets = d.sheets
     assert all(sh.spec.format == "A1" for sh in sheets)

@@ -17,7 +17,7 @@ from plans import solve
 
 ROOT = Path(__file__).resolve().parents[1]
 #: Samples whose kinetostatics sheet shows a dead centre beside another position, and one
-#: with friction over two sheets.
+#: with friction (its two positions sharing a sheet at a smaller scale).
 NAMES = ["slider_crank", "scotch_yoke", "offset_slider_crank", "shaper_friction"]
 
 
@@ -152,3 +152,94 @@ def test_the_scale_cell_is_the_mechanism_s_even_under_a_larger_free_body():
     assert sheet_scale([body, *schemes], "en") == "1:1"
     assert sheet_scale([body, strip, *schemes], "en") == "1:1"  # 34 200 mm² at 2:1 against 66 000
     assert sheet_scale([body, panel("crank", 100.0, 100.0, 1000.0)], "en") == "2:1"
+
+
+def test_two_positions_share_a_sheet_at_a_scale_at_most_twice_smaller():
+    """The mechanism's scale is lowered (standard scales only, to no less than half the one its
+    size asks for) when that takes fewer kinetostatics sheets, the largest such scale kept; a
+    layout already one sheet is not made smaller, and none below half is tried."""
+    from drawings.linkage.kinetic_scales import fewest
+    from drawings.linkage.panels import STANDARD_RATIOS
+
+    tried: list[float] = []
+
+    def lay_at(limit: float):
+        def sheets(mu: float) -> list[int]:
+            tried.append(mu)
+            return [1] if mu <= limit else [1, 2]
+        return sheets
+
+    assert fewest(lay_at(300.0), 500.0, STANDARD_RATIOS) == 250.0  # 1:2 -> 1:4, not 1:2.5
+    assert fewest(lay_at(400.0), 500.0, STANDARD_RATIOS) == 400.0  # 1:2.5 already one sheet
+    tried.clear()
+    assert fewest(lay_at(200.0), 500.0, STANDARD_RATIOS) == 500.0  # 1:5 is below half of 1:2
+    assert min(tried) == 250.0
+    tried.clear()
+    assert fewest(lay_at(1000.0), 500.0, STANDARD_RATIOS) == 500.0 and tried == [500.0]
+
+
+def test_the_friction_shaper_s_two_positions_share_one_kinetostatics_sheet():
+    """The shaper with friction: its two positions, each leaving an A1 sheet of its own half
+    empty at 1:2, share one at 1:4, that sheet at least two thirds drawn."""
+    from drawings.paper.fill import drawn_part
+
+    d = draw(solve(str(ROOT / "samples" / "shaper_friction.toml")))
+    sheets = [sh for sh in d.sheets if any(p.kind == "group" for p, _, _ in sh.placed)]
+    assert len(sheets) == 1
+    assert {p.phi for p, _, _ in sheets[0].placed if p.kind == "scheme"} == {30.0, 180.0}
+    assert {p.scale for p, _, _ in sheets[0].placed if p.kind == "scheme"} == {250.0}
+    assert drawn_part(sheets[0]) >= 2 / 3
+
+
+def _laid(part: float):
+    """A one-sheet A1 layout covering ``part`` of the field (one panel at the field's top left)."""
+    from types import SimpleNamespace
+
+    from drawings.paper.sheet import title_box, usable
+
+    x0, y0, x1, y1 = usable(841.0, 594.0)
+    t0, t1, _, _ = title_box(841.0, 594.0)
+    field = (x1 - x0) * (y1 - y0) - (x1 - t0) * (y1 - t1)  # the title block's corner of the field
+    assert t1 > y0 + part * field / (x1 - x0)  # the panel clear of the title block
+    return [[(SimpleNamespace(width=x1 - x0, height=part * field / (x1 - x0)), x0, y0)]]
+
+
+def test_the_longest_polygons_only_where_the_sheet_is_not_full_without_them():
+    """The fits past the plans' (``last``) are laid out only when the sheet is not two thirds
+    drawn without them, and then taken where they fill it more."""
+    from drawings.linkage.kinetic_scales import kinetic_layout
+    from drawings.linkage.larger import fill
+
+    asked: list[tuple[int, ...]] = []
+
+    def lay_at(base: float):
+        def lay(fits, mu, mb):  # a position's free bodies, then its lever, each longer fills more
+            asked.append(fits)
+            return _laid(base + 0.04 * (fits[0] + 1) + 0.02 * (fits[1] + 1))
+        return lay
+
+    got = kinetic_layout(lay_at(0.4), 1, 3, 1000.0, (1.0,), True, (841.0, 594.0), last=1)
+    assert math.isclose(fill(got[0], (841.0, 594.0)), 0.4 + 0.04 * 4 + 0.02 * 4, rel_tol=1e-9)
+    asked.clear()
+    got = kinetic_layout(lay_at(0.5), 1, 3, 1000.0, (1.0,), True, (841.0, 594.0), last=1)
+    assert fill(got[0], (841.0, 594.0)) >= 2 / 3
+    assert asked and all(max(f) < 3 for f in asked)  # full without the last fit: never tried
+
+
+def test_the_fits_rise_where_the_sheet_gains_most_first():
+    """Two positions sharing a sheet: the position whose longer polygons fill it more rises
+    first, rather than the first position taking the room the second fills better."""
+    from drawings.linkage.kinetic_scales import steepest
+    from drawings.linkage.larger import better, fill, score
+
+    size = (841.0, 594.0)
+
+    def lay(fits):  # the first position gains 0.01 a step, the second 0.05; both risen: no room
+        if min(fits) >= 0:
+            return _laid(0.3) + _laid(0.3)
+        return _laid(0.5 + 0.01 * (fits[0] + 1) + 0.05 * (fits[1] + 1))
+
+    choice, got = steepest((-1, -1), 3, lay, lambda a, b: better(a, b, size),
+                           lambda s: score(s, size)[1] >= 2 / 3, lambda s: score(s, size))
+    assert choice == (-1, 2)
+    assert math.isclose(fill(got[0], size), 0.65, rel_tol=1e-9)

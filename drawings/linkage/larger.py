@@ -25,8 +25,9 @@ T = TypeVar("T")
 #: round values); at most twice the A1 lengths (a known vector of 200 mm), not plans blown up
 #: to the sheet.
 STEPS = (1.25, 1.6, 2.0)
-#: One step further for the course's kinematics sheet (its few acceleration plans beside the
-#: kinematic diagrams), within :data:`plans.solution.MAX_FIT`.
+#: One step further for the course's sheets (the kinematics sheet's few acceleration plans
+#: beside the kinematic diagrams, the kinetostatics sheet's polygons and lever of one or two
+#: positions), within :data:`plans.solution.MAX_FIT`.
 KINEMATIC_STEP = 2.5
 #: The fits a sheet of the block layout tries (:func:`drawings.linkage._fuller_blocks`), on to
 #: MAX_FIT: a position's block alone on its sheet, its border running round the title block,

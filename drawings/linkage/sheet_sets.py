@@ -12,7 +12,8 @@ Panels go in the order the method builds them: positions, velocity, acceleration
 lever, diagrams, a point's kinematic diagrams one under another.  The sizes the layout
 chooses itself (the plan of positions' scale, the mechanism's and the groups' on the
 kinetostatics sheet, the kinematic diagrams' φ axis) grow by standard scales while the sheets
-stay as few, so an A1 sheet is not left half empty.
+stay as few, so an A1 sheet is not left half empty (the kinetostatics' mechanism is first
+drawn a standard scale or two smaller where its positions then share fewer sheets).
 """
 
 from __future__ import annotations
@@ -23,7 +24,7 @@ from typing import Any
 
 import numpy as np
 
-from drawings.linkage.kinetic_scales import kinetic_layout, lever_apart
+from drawings.linkage.kinetic_scales import fewest, kinetic_layout, lever_apart
 from drawings.linkage.panels import STANDARD_RATIOS, Panel
 from drawings.paper.i18n import tr
 from drawings.paper.packing import free_spots
@@ -265,7 +266,8 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
     whose panels fit an empty sheet and, laid out with the rest, add no sheet and leave none
     emptier than two thirds or than it is without them (a thunk giving None ends the search);
     the kinetostatics sheet is laid out once whatever they are.  ``longest``: thunks like
-    ``larger``'s, longer still, that only the kinematics sheet tries (after ``larger``'s).
+    ``larger``'s, longer still, tried after them while a sheet is not full (the kinematics
+    sheet's few acceleration plans, the kinetostatics sheet's polygons and lever).
     ``axes``: thunks of ``diagrams`` at longer φ axes, shortest first, that a kinematics sheet
     not yet full tries in turn (:func:`_longest_axis`)."""
     from drawings.paper.sheet import fits_empty
@@ -433,7 +435,7 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
             return lambda mu: build(dyn_sel, None, *(mu if isinstance(mu, tuple) else (mu,)))[0]
 
         def lay(ps: list[Panel]) -> list:
-            return compose(ps, sub, None, scene.path, nums) if ps else []
+            return compose(ps, sub, None, scene.path, nums, corners=True) if ps else []
 
         base_l = _base_length_scale(sol, spec)
         def dyn_of(i: int) -> Any:
@@ -441,7 +443,9 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
 
         dyn_at = memo(dyn_of)
         # one standard scale for the mechanism at every position (the largest that keeps the
-        # sheets as few), one for the free bodies; each position's polygons and lever longer
+        # sheets fewest), one for the free bodies; each position's polygons and lever longer
+        if not own:
+            base_l = fewest(lambda m: lay(dyn_at(OWN)(m)), base_l, STANDARD_RATIOS)
         mu, _ = grow(dyn_at(OWN), base_l, lay, own)
         assert mu is not None
         # each position's free bodies with their polygons, and its lever, at a fit of their own
@@ -461,7 +465,8 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
             keys = [(i, (mu_l, mu_b), j // 2) for j, i in enumerate(fits)]
             return lay(swapped(base, dyn_parts, keys, by_id))
 
-        out.extend(kinetic_layout(lay_at, len(forces), len(larger), mu, STANDARD_RATIOS, own, (W, H)))
+        out.extend(kinetic_layout(lay_at, len(forces), len(larger), mu, STANDARD_RATIOS, own, (W, H),
+                                  len(longest)))
     for i, sh in enumerate(out):
         sh.number, sh.count = i + 1, len(out)
         sh.prims = []
