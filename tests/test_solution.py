@@ -211,13 +211,15 @@ def test_plans_draw_solves_each_scene_once(path, monkeypatch):
             render=lambda: None)])  # (all in one corner: a sheet with room, so the longer fit is tried)
     grows = []
     may_grow = larger.may_grow
-    monkeypatch.setattr(larger, "STEPS", (2.0,))  # one longer fit tried (each costs the panels drawn again)
+    # one longer fit tried (each costs the panels drawn again), and the course's sheets' last one
+    monkeypatch.setattr(larger, "STEPS", (2.0,))
+    monkeypatch.setattr(larger, "BLOCK_STEPS", (2.0,))
     monkeypatch.setattr(larger, "may_grow", lambda sol, spec: grows.append(may_grow(sol, spec)) or grows[-1])
     d = linkage.draw(scene)
     assert d.sheets and d.panels
     fits = [sol.fit for sol in solutions]
     if any(grows):  # the longer plans tried (tests/test_sheet_fill.py): the same Solution at each longer fit
-        longer = [fits[0] * s for s in larger.STEPS if fits[0] * s <= solution.MAX_FIT]
+        longer = [min(fits[0] * s, solution.MAX_FIT) for s in (*larger.STEPS, larger.KINEMATIC_STEP)]
         assert fits[1:] == longer[:len(fits) - 1], fits  # in order, until one stops the search
         assert all(sol._common is solutions[0]._common for sol in solutions)
     else:

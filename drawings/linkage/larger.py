@@ -49,12 +49,13 @@ def may_grow(sol: Solution, spec: Any) -> bool:
             and not all(any(k in sc for k in keys) for keys in _FIXED))
 
 
-def longer(sol: Solution, steps: Sequence[float] = STEPS) -> list[Callable[[], Solution]]:
-    """Thunks of ``sol`` at each longer fit (``steps`` times its own, up to MAX_FIT), in order
-    (:meth:`Solution.at_fit`: only the plans, polygons and lever are made again, at their
-    longer scales)."""
+def longer(sol: Solution, steps: Sequence[float] | None = None) -> list[Callable[[], Solution]]:
+    """Thunks of ``sol`` at each longer fit (``steps`` times its own, default :data:`STEPS`, up
+    to MAX_FIT), in order (:meth:`Solution.at_fit`: only the plans, polygons and lever are made
+    again, at their longer scales)."""
     from functools import partial
 
+    steps = STEPS if steps is None else steps
     fits = [sol.fit * s for s in steps if sol.fit * s <= MAX_FIT + 1e-12]
     return [partial(sol.at_fit, f) for f in fits]
 
