@@ -19,18 +19,9 @@ ROOT = Path(__file__).resolve().parents[1]
 KINDS = ("gears", "cams", "synthesis")
 SAMPLES = sorted(p for k in KINDS for p in (ROOT / "samples" / k).glob("*.toml"))
 
-#: What an A1 sheet of these kinds still leaves more than a third empty, and why.
-NOT_TWO_THIRDS: dict[str, str] = {
-    "cams/flat_face_poly345": "at A1 (its file asks for A2, drawn over 0.76 of it) the next standard scale of the "
-                              "profile, 4:1, leaves no room beside it for the 360 mm φ axis: 0.665 drawn",
-}
-
 
 @pytest.mark.parametrize("path", SAMPLES, ids=lambda p: f"{p.parent.name}-{p.stem}")
-def test_a1_sheet_at_least_two_thirds_drawn(path, request):
-    key = f"{path.parent.name}/{path.stem}"
-    if key in NOT_TWO_THIRDS:
-        request.applymarker(pytest.mark.xfail(reason=NOT_TWO_THIRDS[key], strict=True))
+def test_a1_sheet_at_least_two_thirds_drawn(path):
     d = draw(path, format="A1")
     fills = [drawn_part(sh) for sh in d.sheets]
     assert all(sh.width == 841 and sh.height == 594 for sh in d.sheets)
