@@ -114,28 +114,42 @@ def _text(rec: Recording, s: str, x: float, y: float, size: float = SMALL, ancho
     rec.text(layout(s, x, y, size, anchor, valign), "label", eid)
 
 
-def motion_panel(cs: CamSolution, lang: str, g: float = 1.0, tall: float = 1.0, over: bool = False) -> Panel:
+def motion_scales(cs: CamSolution, g: float = 1.0, tall: float = 1.0, lift: float = 1.0) -> tuple[float, float, float]:
+    """The motion diagrams' scales: μ_a′ (mm per unit/rad², round) and the pole distances H1,
+    H2 (mm, usual ones) integrating it to ds/dφ and s.  ``tall`` lengthens the ordinates,
+    ``lift`` the s diagram's further (a shorter H2)."""
+    f, _ = _lift(cs.cam)
+    mo = cs.motion
+    h = g * tall  # the ordinates' size
+    x_of = PHI_LENGTH * g / (2 * math.pi)  # k_φ, mm per rad
+    a_max = float(np.max(np.abs(mo.s2))) * f or 1.0
+    v_max = float(np.max(np.abs(mo.s1))) * f or 1.0
+    s_max = float(np.max(mo.s)) * f or 1.0
+    k_a = round_down(32.0 * h / a_max, ROUND)  # a round scale: 1, 2, 2.5, 4, 5 × 10ⁿ
+    # poles: the shortest usual H (10 mm at least) that keeps ds/dφ within 30h mm, s within 50h mm
+    H1 = pole_distance(k_a * x_of * v_max / (30.0 * h))
+    k_v = integral_scale(k_a, x_of, H1)
+    H2 = pole_distance(k_v * x_of * s_max / (50.0 * h * lift))
+    return k_a, H1, H2
+
+
+def motion_panel(cs: CamSolution, lang: str, g: float = 1.0, tall: float = 1.0, over: bool = False,
+                 lift: float = 1.0) -> Panel:
     """s, ds/dφ and d²s/dφ² against φ: a(φ) exact, integrated twice by mid-ordinates and a
     pole (the chains, thick), the exact curves beside them (dashed), one diagram under the
     other as tall as its curves.  ``g`` sizes the φ axis to the sheet (1 mm per degree on A1);
-    ``tall`` lengthens the ordinates where it has room; each diagram's scales are written
-    beyond its axis's end, or with ``over`` above the axis's end where the curve lies on the
-    axis there (a dwell), leaving the room beyond it to the rest of the sheet."""
+    ``tall`` and ``lift`` lengthen the ordinates where there is room (:func:`motion_scales`);
+    each diagram's scales are written beyond its axis's end, or with ``over`` above the
+    axis's end where the curve lies on the axis there (a dwell), leaving the room beyond it
+    to the rest of the sheet."""
     cam = cs.cam
     f, unit = _lift(cam)
     ig: Integration = cs.integration
     mo = cs.motion
     length = PHI_LENGTH * g
-    h = g * tall  # the ordinates' size
     x_of = length / (2 * math.pi)  # k_φ, mm per rad
-    a_max = float(np.max(np.abs(mo.s2))) * f or 1.0
-    v_max = float(np.max(np.abs(mo.s1))) * f or 1.0
-    s_max = float(np.max(mo.s)) * f or 1.0
-    k_a = round_down(32.0 * h / a_max, ROUND)  # a round scale: 1, 2, 2.5, 4, 5 × 10ⁿ
-    # poles: the shortest usual H (10 mm at least) that keeps ds/dφ within 26 mm, s within 40 mm
-    H1 = pole_distance(k_a * x_of * v_max / (30.0 * h))
+    k_a, H1, H2 = motion_scales(cs, g, tall, lift)
     k_v = integral_scale(k_a, x_of, H1)
-    H2 = pole_distance(k_v * x_of * s_max / (50.0 * h))
     k_s = integral_scale(k_v, x_of, H2)
     rec = Recording()
     # each diagram as tall as its curves at its scale: the axes one under the other, ROW_GAP
@@ -511,8 +525,7 @@ def build_panels(cs: CamSolution, spec: SheetSpec) -> list[Panel]:
     scale it does, then the ds/dφ–s diagram at larger scales and the diagrams' ordinates
     longer (the φ axis keeps its length) as far as they cover more of the sheet."""
     from drawings.linkage.panels import STANDARD_RATIOS
-    from drawings.paper.fill import fullest_on_one_sheet
-    from drawings.paper.panel_frame import SLACK_MM
+    from drawings.paper.fill import fullest_of_chains
 
     lang = spec.language
     W, H = spec.size
@@ -535,22 +548,31 @@ def build_panels(cs: CamSolution, spec: SheetSpec) -> list[Panel]:
     at_a1 = [first, motion_panel(cs, lang, g), *third(g), results]
     base = first.scale or 1000.0
     mus = [r * 1000.0 for r in STANDARD_RATIOS if base / 2.0 - 1e-9 <= r * 1000.0 <= 4.0 * base + 1e-9]
-    motions: list[Panel] = []  # the ordinates' round scales from the largest, each set once
-    for over in (False, True):  # the scales beyond the axes, then over their ends where they may be
-        for tenths in range(40, 9, -1):  # the scales and poles are round: many ordinates repeat
-            m = motion_panel(cs, lang, g, tenths / 10.0, over)
-            if not motions or m.height < motions[-1].height - SLACK_MM or m.width < motions[-1].width - SLACK_MM:
-                motions.append(m)
-    thirds = [third(g * size) for size in (3.0, 2.5, 2.0, 1.5, 1.0)]
+    # the motion diagrams: their scales beyond the axes, then over their ends where they may
+    # be; the ordinates from the longest, s's pole shorter still; round scales and usual poles
+    # make many the same size: each size once
+    sizes: dict[tuple[float, float, float], tuple[float, float]] = {}
+    for tenths in range(40, 9, -1):
+        for lift in (1.5, 1.25, 1.0):
+            sizes.setdefault(motion_scales(cs, g, tenths / 10.0, lift), (tenths / 10.0, lift))
+    motions: dict[tuple[int, int], Panel] = {}
+    chains: list[list[Panel]] = []  # of each placing of the scales, from the shortest diagrams
+    for over in (False, True):
+        chain = []
+        for tall, lift in sizes.values():
+            m = motion_panel(cs, lang, g, tall, over, lift)
+            if (round(m.width), round(m.height)) not in motions:
+                motions[(round(m.width), round(m.height))] = m
+                chain.append(m)
+        chains.append(sorted(chain, key=lambda m: (m.height, m.width)))
+    thirds = [third(g * size) for size in (1.0, 1.5, 2.0)]
 
-    def candidates(mu: float):
+    def candidates(mu: float) -> list[list[list[Panel]]]:
         profile = profile_panel(cs, lang, target, mu)
-        for motion in motions:
-            for t in thirds:
-                yield [profile, motion, *t, results]
+        return [[[profile, m, *t, results] for m in chain] for t in thirds for chain in chains]
 
-    found = fullest_on_one_sheet((candidates(mu) for mu in sorted(mus, reverse=True)), spec, cam.path,
-                                 lambda ps: ratio_text(ps[0].scale or 1000.0, spec.language))
+    found = fullest_of_chains((candidates(mu) for mu in sorted(mus, reverse=True)), spec, cam.path,
+                              lambda ps: ratio_text(ps[0].scale or 1000.0, spec.language))
     return found[0] if found is not None else at_a1
 
 
