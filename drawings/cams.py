@@ -67,11 +67,6 @@ class Drawing:
     sheets: tuple[Sheet, ...]
 
 
-def nice(x: float) -> float:
-    """The largest 1, 2, 2.5, 5 × 10ⁿ not above x (x > 0)."""
-    return round_down(x, DIVISIONS)
-
-
 def drawing_scale(size_m: float, target_mm: float) -> float:
     """The largest standard drawing scale (GOST 2.302), paper mm per m, drawing ``size_m``
     within ``target_mm``."""
@@ -522,8 +517,9 @@ def results_panel(cs: CamSolution, lang: str) -> Panel:
 def build_panels(cs: CamSolution, spec: SheetSpec) -> list[Panel]:
     """The profile, the motion diagrams, the base radius's diagram and the results: at the A1
     lengths, or larger where one sheet holds them all: the profile at the largest standard
-    scale it does, then the ds/dφ–s diagram at larger scales and the diagrams' ordinates
-    longer (the φ axis keeps its length) as far as they cover more of the sheet."""
+    scale it does, then, of the motion diagrams' round scales and usual poles (the φ axis
+    keeps its length, their scales written beyond the axes or over a dwell at their ends) and
+    the third diagram's scales, those covering most of the sheet."""
     from drawings.linkage.panels import STANDARD_RATIOS
     from drawings.paper.fill import fullest_of_chains
 
