@@ -32,7 +32,7 @@ from plans.cams.analysis import Profile
 from plans.cams.graphical import Integration, integral_scale
 from plans.cams.model import Cam
 from plans.cams.solution import CamSolution, solve_cam
-from plans.kinematics.scales import DIVISIONS, round_down, round_up
+from plans.kinematics.scales import DIVISIONS, ROUND, round_down, round_up
 
 EXACT = Style(width=0.25, stroke="#1f5fbf", dash=(2.0, 1.0))
 AXIS = CENTRE_LINE
@@ -41,6 +41,7 @@ WARN = Style(width=0.7, stroke="#c00000")
 SMALL = 2.5
 LABEL = 3.5
 PHI_LENGTH = 360.0  # mm for the whole turn on the motion diagrams of an A1 sheet (1 mm per degree)
+ROW_GAP = 10.0  # mm between one motion diagram's lowest point and the next one's ordinate label
 
 WORDS = {
     "motion": ("Диаграммы движения толкателя (графическое интегрирование)",
@@ -64,11 +65,6 @@ class Drawing:
     spec: SheetSpec
     panels: tuple[Panel, ...]
     sheets: tuple[Sheet, ...]
-
-
-def nice(x: float) -> float:
-    """The largest 1, 2, 2.5, 5 × 10ⁿ not above x (x > 0)."""
-    return round_down(x, DIVISIONS)
 
 
 def drawing_scale(size_m: float, target_mm: float) -> float:
@@ -113,39 +109,63 @@ def _text(rec: Recording, s: str, x: float, y: float, size: float = SMALL, ancho
     rec.text(layout(s, x, y, size, anchor, valign), "label", eid)
 
 
-def motion_panel(cs: CamSolution, lang: str, g: float = 1.0, tall: float = 1.0) -> Panel:
+def motion_scales(cs: CamSolution, g: float = 1.0, tall: float = 1.0, lift: float = 1.0) -> tuple[float, float, float]:
+    """The motion diagrams' scales: μ_a′ (mm per unit/rad², round) and the pole distances H1,
+    H2 (mm, usual ones) integrating it to ds/dφ and s.  ``tall`` lengthens the ordinates,
+    ``lift`` the s diagram's further (a shorter H2)."""
+    f, _ = _lift(cs.cam)
+    mo = cs.motion
+    h = g * tall  # the ordinates' size
+    x_of = PHI_LENGTH * g / (2 * math.pi)  # k_φ, mm per rad
+    a_max = float(np.max(np.abs(mo.s2))) * f or 1.0
+    v_max = float(np.max(np.abs(mo.s1))) * f or 1.0
+    s_max = float(np.max(mo.s)) * f or 1.0
+    k_a = round_down(32.0 * h / a_max, ROUND)  # a round scale: 1, 2, 2.5, 4, 5 × 10ⁿ
+    # poles: the shortest usual H (10 mm at least) that keeps ds/dφ within 30h mm, s within 50h mm
+    H1 = pole_distance(k_a * x_of * v_max / (30.0 * h))
+    k_v = integral_scale(k_a, x_of, H1)
+    H2 = pole_distance(k_v * x_of * s_max / (50.0 * h * lift))
+    return k_a, H1, H2
+
+
+def motion_panel(cs: CamSolution, lang: str, g: float = 1.0, tall: float = 1.0, over: bool = False,
+                 lift: float = 1.0) -> Panel:
     """s, ds/dφ and d²s/dφ² against φ: a(φ) exact, integrated twice by mid-ordinates and a
-    pole (the chains, thick), the exact curves beside them (dashed).  ``g`` sizes the φ axis
-    to the sheet (1 mm per degree on A1); ``tall`` lengthens the ordinates where it has room."""
+    pole (the chains, thick), the exact curves beside them (dashed), one diagram under the
+    other as tall as its curves.  ``g`` sizes the φ axis to the sheet (1 mm per degree on A1);
+    ``tall`` and ``lift`` lengthen the ordinates where there is room (:func:`motion_scales`);
+    each diagram's scales are written beyond its axis's end, or with ``over`` above the
+    axis's end where the curve lies on the axis there (a dwell), leaving the room beyond it
+    to the rest of the sheet."""
     cam = cs.cam
     f, unit = _lift(cam)
     ig: Integration = cs.integration
     mo = cs.motion
     length = PHI_LENGTH * g
-    h = g * tall  # the ordinates' size
     x_of = length / (2 * math.pi)  # k_φ, mm per rad
-    a_max = float(np.max(np.abs(mo.s2))) * f or 1.0
-    v_max = float(np.max(np.abs(mo.s1))) * f or 1.0
-    s_max = float(np.max(mo.s)) * f or 1.0
-    k_a = nice(32.0 * h / a_max)
-    # poles: the shortest usual H (10 mm at least) that keeps ds/dφ within 26 mm, s within 40 mm
-    H1 = pole_distance(k_a * x_of * v_max / (30.0 * h))
+    k_a, H1, H2 = motion_scales(cs, g, tall, lift)
     k_v = integral_scale(k_a, x_of, H1)
-    H2 = pole_distance(k_v * x_of * s_max / (50.0 * h))
     k_s = integral_scale(k_v, x_of, H2)
     rec = Recording()
-    y_v, y_a = 70.0 * h + 10, 145.0 * h + 20
-    rows = [("s", k_s, mo.s * f, ig.s_nodes * f, None, 0.0),
-            ("ds/dφ", k_v, mo.s1 * f, ig.v_nodes * f, None, y_v),
-            ("d²s/dφ²", k_a, mo.s2 * f, None, ig.a_mid * f, y_a)]
+    # each diagram as tall as its curves at its scale: the axes one under the other, ROW_GAP
+    # between one diagram's lowest point and the next one's ordinate label
+    reach = [(k * max(float(np.max(e)), 0.0 if c is None else float(np.max(c)), 0.0 if m is None else float(np.max(m))),
+              k * max(-float(np.min(e)), 0.0 if c is None else -float(np.min(c)), 0.0 if m is None else -float(np.min(m)), 0.0))
+             for k, e, c, m in ((k_s, mo.s * f, ig.s_nodes * f, None), (k_v, mo.s1 * f, ig.v_nodes * f, None),
+                                (k_a, mo.s2 * f, None, ig.a_mid * f))]
+    y_v = reach[0][1] + ROW_GAP + reach[1][0] + 6.0
+    y_a = y_v + reach[1][1] + ROW_GAP + reach[2][0] + 6.0
+    bottom = y_a + reach[2][1] + 2.0
+    rows = [("s", k_s, mo.s * f, ig.s_nodes * f, None, 0.0, reach[0]),
+            ("ds/dφ", k_v, mo.s1 * f, ig.v_nodes * f, None, y_v, reach[1]),
+            ("d²s/dφ²", k_a, mo.s2 * f, None, ig.a_mid * f, y_a, reach[2])]
     X = cs.turn * x_of
     nodes_x = ig.nodes * x_of
-    for name, k, exact, chain, mid, y0 in rows:
+    for name, k, exact, chain, mid, y0, (up, down) in rows:
         tag = {"s": "s", "ds/dφ": "ds", "d²s/dφ²": "d2s"}[name]  # ids: plain ASCII
         rec.line((-4, y0), (length + 6, y0), THIN, f"axis-{tag}")
-        half = 34.0 * h if name != "s" else 0.0
-        top = min(y0 - k * float(np.max(exact)) - 2, y0 - 34.0 * h)
-        rec.line((0, y0 + half), (0, top), THIN)
+        top = y0 - up - 6.0
+        rec.line((0, y0 + down + 2.0 if down > 0 else y0), (0, top), THIN)
         _text(rec, name, 1.5, top, LABEL, "start", "top")
         _text(rec, "φ", length + 7, y0, LABEL)
         for xn in nodes_x:
@@ -166,12 +186,15 @@ def motion_panel(cs: CamSolution, lang: str, g: float = 1.0, tall: float = 1.0) 
         rad, sec = ("рад", "с") if lang == "ru" else ("rad", "s")
         sub, per, phys = {"s": ("s", U, None), "ds/dφ": ("v", f"{U}/{rad}", ("v", f"{U}/{sec}", 1)),
                           "d²s/dφ²": ("a", f"{U}/{rad}²", ("a", f"{U}/{sec}²", 2))}[name]
-        _text(rec, f"μ_{sub}′ = {fmt(k, 4, lang)} {mm}/({per})" if name != "s" else
-              f"μ_s = {fmt(k, 4, lang)} {mm}/{per}", length + 7, y0 - 7, SMALL)
+        said = [f"μ_{sub}′ = {fmt(k, 4, lang)} {mm}/({per})" if name != "s" else f"μ_s = {fmt(k, 4, lang)} {mm}/{per}"]
         if phys is not None:
             # v = ω·ds/dφ, a = ω²·d²s/dφ²: the same curve read at μ′/ω and μ″/ω²
-            _text(rec, f"μ_{phys[0]} = {fmt(k / cam.omega ** phys[2], 4, lang)} {mm}/({phys[1]})",
-                  length + 7, y0 - 3.5, SMALL)
+            said.append(f"μ_{phys[0]} = {fmt(k / cam.omega ** phys[2], 4, lang)} {mm}/({phys[1]})")
+        wide = max(layout(t, 0, 0, SMALL).box[2] for t in said) + 2.0
+        flat = over and all(bool(np.all(k * v[x >= length - wide] < 1.5)) for x, v in
+                            ((X, exact), (nodes_x, chain), (nodes_x[1:], mid)) if v is not None)
+        for t, dy in zip(said, (7.0, 3.5), strict=False):
+            _text(rec, t, *((length, y0 - dy - 1.0) if flat else (length + 7, y0 - dy)), SMALL, "end" if flat else "start")
     # the poles and their rays: integrand's mid-ordinate projected on the axis, ray from P
     for (k, mids, y0, H, tag) in ((k_a, ig.a_mid * f, y_a, H1, "1"), (k_v, ig.v_mid * f, y_v, H2, "2")):
         P = (-H, y0)
@@ -183,8 +206,8 @@ def motion_panel(cs: CamSolution, lang: str, g: float = 1.0, tall: float = 1.0) 
     # the phase boundaries and their angles
     for ph in cam.phases:
         xb = ph.start * x_of
-        rec.line((xb, -2), (xb, y_a + 34 * h + 2), Style(width=0.13, stroke="#888", dash=(1.0, 1.0)))
-        _text(rec, f"{math.degrees(ph.angle):g}°", xb + ph.angle * x_of / 2, y_a + 34 * h + 5, SMALL, "middle")
+        rec.line((xb, -2), (xb, bottom), Style(width=0.13, stroke="#888", dash=(1.0, 1.0)))
+        _text(rec, f"{math.degrees(ph.angle):g}°", xb + ph.angle * x_of / 2, bottom + 3, SMALL, "middle")
     err = cs.integration_error * f
     mm = _unit("mm", lang)
     note = (f"μ_φ = {fmt(x_of * math.pi / 180, 4, lang)} {mm}/°; μ′ = μ·μ_φ/H; "
@@ -494,10 +517,11 @@ def results_panel(cs: CamSolution, lang: str) -> Panel:
 def build_panels(cs: CamSolution, spec: SheetSpec) -> list[Panel]:
     """The profile, the motion diagrams, the base radius's diagram and the results: at the A1
     lengths, or larger where one sheet holds them all: the profile at the largest standard
-    scale it does, then the ds/dφ–s diagram at larger scales and the diagrams' ordinates
-    longer (the φ axis keeps its length) as far as they cover more of the sheet."""
+    scale it does, then, of the motion diagrams' round scales and usual poles (the φ axis
+    keeps its length, their scales written beyond the axes or over a dwell at their ends) and
+    the third diagram's scales, those covering most of the sheet."""
     from drawings.linkage.panels import STANDARD_RATIOS
-    from drawings.paper.fill import fullest_on_one_sheet
+    from drawings.paper.fill import fullest_of_chains
 
     lang = spec.language
     W, H = spec.size
@@ -520,17 +544,31 @@ def build_panels(cs: CamSolution, spec: SheetSpec) -> list[Panel]:
     at_a1 = [first, motion_panel(cs, lang, g), *third(g), results]
     base = first.scale or 1000.0
     mus = [r * 1000.0 for r in STANDARD_RATIOS if base / 2.0 - 1e-9 <= r * 1000.0 <= 4.0 * base + 1e-9]
-    motions = [motion_panel(cs, lang, g, tall) for tall in (2.0, 1.5, 1.0)]
-    thirds = [third(g * size) for size in (2.0, 1.5, 1.0)]
+    # the motion diagrams: their scales beyond the axes, then over their ends where they may
+    # be; the ordinates from the longest, s's pole shorter still; round scales and usual poles
+    # make many the same size: each size once
+    sizes: dict[tuple[float, float, float], tuple[float, float]] = {}
+    for tenths in range(40, 9, -1):
+        for lift in (1.5, 1.25, 1.0):
+            sizes.setdefault(motion_scales(cs, g, tenths / 10.0, lift), (tenths / 10.0, lift))
+    motions: dict[tuple[int, int], Panel] = {}
+    chains: list[list[Panel]] = []  # of each placing of the scales, from the shortest diagrams
+    for over in (False, True):
+        chain = []
+        for tall, lift in sizes.values():
+            m = motion_panel(cs, lang, g, tall, over, lift)
+            if (round(m.width), round(m.height)) not in motions:
+                motions[(round(m.width), round(m.height))] = m
+                chain.append(m)
+        chains.append(sorted(chain, key=lambda m: (m.height, m.width)))
+    thirds = [third(g * size) for size in (1.0, 1.5, 2.0)]
 
-    def candidates(mu: float):
+    def candidates(mu: float) -> list[list[list[Panel]]]:
         profile = profile_panel(cs, lang, target, mu)
-        for motion in motions:
-            for t in thirds:
-                yield [profile, motion, *t, results]
+        return [[[profile, m, *t, results] for m in chain] for t in thirds for chain in chains]
 
-    found = fullest_on_one_sheet((candidates(mu) for mu in sorted(mus, reverse=True)), spec, cam.path,
-                                 lambda ps: ratio_text(ps[0].scale or 1000.0, spec.language))
+    found = fullest_of_chains((candidates(mu) for mu in sorted(mus, reverse=True)), spec, cam.path,
+                              lambda ps: ratio_text(ps[0].scale or 1000.0, spec.language))
     return found[0] if found is not None else at_a1
 
 

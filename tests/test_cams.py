@@ -464,3 +464,24 @@ def test_cam_command_reports_the_roller_base_radius(tmp_path):
     res = json.loads(out.read_text(encoding="utf-8"))
     assert res["min_base_radius_roller"] > res["min_base_radius"]
     assert res["best_base_radius_roller"] >= res["best_base_radius"]
+
+
+@pytest.mark.parametrize("fmt", ["A1", None], ids=["A1", "own"])
+@pytest.mark.parametrize("path", CAM_SAMPLES, ids=lambda p: p.stem)
+def test_motion_diagrams_stacked_and_their_scales_off_the_curves(path, fmt):
+    """s, ds/dφ and d²s/dφ² stand one under the other with a label's room between them (no
+    empty band the size of a diagram), and each diagram's scales are written where no curve
+    of the panel passes."""
+    from drawings.cams import draw
+
+    motion = next(p for p in draw(path, format=fmt, language="ru").panels if p.pid == "motion")
+    curves = {q.eid: q.pts for q in motion.prims if q.op == "polyline" and q.eid}
+    rows = [[y for eid, pts in curves.items() if eid.endswith(f"-{tag}") or (tag == "d2s" and eid == "mid-ordinates")
+             for _, y in pts] for tag in ("s", "ds", "d2s")]
+    for upper, lower in zip(rows, rows[1:], strict=False):
+        assert 0.0 < min(lower) - max(upper) < 25.0  # paper y grows downward
+    lines = [shapely.LineString(pts) for pts in curves.values()]
+    scales = [q for q in motion.prims if q.op == "text" and q.label.plain.startswith("μ") and ";" not in q.label.plain]
+    assert len(scales) == 5
+    for q in scales:
+        assert not any(ln.intersects(shapely.box(*q.label.box)) for ln in lines), q.label.plain
