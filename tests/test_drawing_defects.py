@@ -193,3 +193,25 @@ def test_overlapping_trajectories_never_share_bare_numbers(name, crowded):
     assert "A" in bare and not bare & crowded  # the crank pin's numbers stand bare
     lettered = [lab.plain for pt, lab in marks if pt in crowded]
     assert lettered and all(re.fullmatch(r"([A-Z]\d+)(, [A-Z]\d+)*", t) for t in lettered), lettered
+
+
+@pytest.mark.parametrize("path", sorted(str(p.relative_to(SAMPLES)) for sub in ("gears", "cams", "engines")
+                                        for p in (SAMPLES / sub).glob("*.toml")))
+def test_title_block_in_the_sheets_language(path):
+    """A Russian sheet's title block has no English word in it: the title is the file's
+    Russian one of its title per language."""
+    import importlib
+
+    from plans.kinds import KINDS, read_kind
+
+    kind, _ = read_kind(str(SAMPLES / path))
+    draw = importlib.import_module(KINDS[kind][1]).draw
+
+    def title_block(lang: str) -> str:
+        d = draw(str(SAMPLES / path), language=lang)
+        return " ".join(q.label.plain for sh in d.sheets for q in sh.prims
+                        if q.op == "text" and q.label is not None and q.eid.startswith("tb-"))
+
+    ru = title_block("ru")
+    assert not re.findall(r"[A-Za-z]{3,}", ru), ru  # "2K-H", "V6" are a train's and an engine's symbols
+    assert re.search(r"[А-Яа-я]{3,}", ru)
