@@ -304,14 +304,17 @@ def _bad(tmp_path, capsys, change) -> str:
 
 
 def _to_toml(d: dict) -> str:
+    def value(v) -> str:  # JSON's numbers, strings and arrays are TOML's; a table is written inline
+        return "{ " + ", ".join(f"{k} = {value(x)}" for k, x in v.items()) + " }" if isinstance(v, dict) else json.dumps(v)
+
     lines = []
     for k, v in d.items():
         if k in ("phases", "sheet"):
             continue
-        lines.append(f"{k} = {json.dumps(v)}")
+        lines.append(f"{k} = {value(v)}")
     for ph in d.get("phases", []):
         lines.append("[[phases]]")
-        lines += [f"{k} = {json.dumps(v)}" for k, v in ph.items()]
+        lines += [f"{k} = {value(v)}" for k, v in ph.items()]
     return "\n".join(lines) + "\n"
 
 

@@ -387,3 +387,31 @@ def test_every_kind_of_group_in_equilibrium_with_friction_and_the_lever_agrees(s
     big = np.max(np.abs(fa.balancing))
     assert np.max(np.abs(lv.signed(lv.by_lever) - fa.balancing)) <= 1e-9 * big
     assert np.max(np.abs(lv.signed(lv.by_power) - fa.balancing)) <= 1e-9 * big
+
+
+@pytest.mark.parametrize(("stem", "size"), [("shaper_friction", 1.0), ("v_engine_friction", 1.0),
+                                            ("shaper_friction", 0.7)])
+def test_efficiency_diagram_drawn_at_a_round_scale(stem, size):
+    """μ_η, the paper's millimetres between the axis and the line η = 1, is round (1, 2, 2.5, 4,
+    5 × 10^k) as every scale of the sheet, also on a smaller sheet's fit; the curve's dots
+    lie at η·μ_η and its label states that μ."""
+    from drawings.linkage.friction_marks import efficiency_panels
+    from plans.forces.friction import efficiency_json
+    from plans.kinematics.scales import is_round
+
+    _, _, fa, _ = _solved(stem)
+    eta_panel = efficiency_panels(efficiency_json(fa), fa, "ru", size)[0]
+    prims = list(eta_panel.prims)
+    start = next(i for i, q in enumerate(prims) if q.op == "begin" and q.eid == "friction-eta-xaxis")
+    axis = next(q for q in prims[start:] if q.op == "line")  # the φ axis, η = 0
+    labels = [q for q in prims if q.op == "text" and q.label.plain == "η = 1"]
+    one = next(q for q in prims if q.op == "line" and q.pts[0][1] == pytest.approx(labels[0].label.runs[0].y, abs=2))
+    mu = abs(one.pts[0][1] - axis.pts[0][1])
+    assert is_round(mu), mu
+    eta = np.asarray(fa.friction.efficiency, float)
+    eta = np.append(eta, eta[0])  # the turn closed back to its first position
+    dots = [q.pts[0][1] for q in eta_panel.prims if q.op == "circle" and q.r == 0.5]
+    ok = eta[np.isfinite(eta)]
+    assert np.allclose(sorted(axis.pts[0][1] - np.asarray(dots)), sorted(ok * mu), atol=1e-9)
+    scale = next(q.label.plain for q in eta_panel.prims if q.op == "text" and q.label.plain.startswith("μη"))
+    assert float(scale.split("=")[1].split()[0].replace(",", ".")) == pytest.approx(mu, rel=1e-3)

@@ -9,6 +9,7 @@ from typing import Any
 
 from drawings.paper.backend import Recording, Style, Transform
 from drawings.paper.common import Placer, fmt
+from plans.kinematics.scales import round_down
 
 CIRCLE = Style(width=0.25, stroke="#6a3d9a", dash=(1.2, 0.8), cls="friction-circle")
 TANGENT = Style(width=0.3, stroke="#6a3d9a", dash=(5.0, 1.0, 1.0, 1.0), cls="friction-line")
@@ -120,7 +121,8 @@ def efficiency_panels(eff: dict[str, Any] | None, fa: Any, lang: str, size: floa
     mu_phi = 180.0 * size / (2 * math.pi)  # the turn 180 mm long on A1
     finite = eta[np.isfinite(eta)]
     big = float(np.max(np.abs(finite))) if finite.size else 1.0
-    mu_eta = min(50.0, 60.0 / max(big, 1e-9)) * size
+    # mm per unit of η: round (1, 2, 2.5, 4, 5 × 10^k) as every scale of the sheet, the curve within 60 mm
+    mu_eta = round_down(min(50.0, 60.0 / max(big, 1e-9)) * size)
     ax = Axes(rec, "friction-eta", mu_phi, float(phis[0]), lang)
     lo = float(min(finite.min(), 0.0)) * mu_eta if finite.size else 0.0
     hi = float(max(finite.max(), 1.0)) * mu_eta if finite.size else mu_eta

@@ -40,6 +40,7 @@ from typing import Any
 from plans.errors import Said
 from plans.io import loads_toml, read_toml
 from plans.reader import LENGTH_LIMIT, NUMBER_LIMIT, Reader, check_keys, reduce_deg, show
+from plans.scene.sheet import own_title
 from plans.tolerances import SAME_LAYOUT
 from plans.units import LENGTH_UNITS, rpm_to_rad_s
 
@@ -147,7 +148,7 @@ def engine_from_dict(data: dict[str, Any], path: str = "<engine>") -> Engine:
 
     check_top(data, path, "engine", TOP_KEYS)
     unit = rd.choice(data, "unit", "", LENGTH_UNITS, default="mm")
-    title = data.get("title", Path(path).stem)
+    title = own_title(data.get("title", Path(path).stem))
     if not isinstance(title, str):
         raise rd.fail("title", Said("gm_string"))
     if "r" not in data:

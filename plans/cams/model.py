@@ -32,6 +32,7 @@ from typing import Any
 from plans.errors import InputError, Said
 from plans.io import read_toml
 from plans.reader import Reader, check_keys, show
+from plans.scene.sheet import own_title
 from plans.units import LENGTH_UNITS, rpm_to_rad_s
 
 from .laws import LAWS, Law, table_law
@@ -185,7 +186,7 @@ def cam_from_dict(data: dict[str, Any], path: str) -> Cam:
     h = max(p.lift0 + max(p.stroke, 0.0) for p in phases)
     if osc and h >= math.pi / 2:
         raise InputError(Said("cm_swing_must_stay"), file=path, field="phases")
-    title = data.get("title", Path(path).stem)
+    title = own_title(data.get("title", Path(path).stem))
     if not isinstance(title, str):
         raise InputError(Said("cm_string", got=show(title)), file=path, field="title")
     return Cam(path, title, unit, follower, r0, offset, roller, flat, arm,

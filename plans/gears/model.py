@@ -53,6 +53,7 @@ from typing import Any
 from plans.errors import InputError, Said
 from plans.io import read_toml
 from plans.reader import LENGTH_FLOOR, LENGTH_LIMIT, Reader, check_keys, show
+from plans.scene.sheet import own_title
 from plans.tolerances import ROUND_OFF_REL
 from plans.units import LENGTH_UNITS
 
@@ -196,7 +197,7 @@ def parse_gears(data: dict[str, Any], path: str) -> GearFile:
         raise InputError(Said("gm_one", v=', '.join(repr(r) for r in SHIFT_RULES), got=show(rule)),
                          file=path, field="shift_rule")
     ring_tip = _ring_tip(data, path, "ring_tip", "trimmed")
-    title = data.get("title", "")
+    title = own_title(data.get("title", ""))
     if not isinstance(title, str):
         raise InputError(Said("gm_string"), file=path, field="title")
     gears = _gears(data, path, m, k, ring_tip)

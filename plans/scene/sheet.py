@@ -168,8 +168,22 @@ def read_sheet(raw: dict[str, Any], path: str, default_title: str = "", **overri
             raise InputError(Said("e_choice", options=", ".join(repr(f) for f in SHEET_FONTS), got=show(font),
                                   hint=hint), file=path, field="--font" if override.get("font") else "sheet.font")
         out["font"] = font
+    own = raw.get("title")
+    if isinstance(own, dict) and is_titles(own):  # the file's title in the sheet's language
+        out.setdefault("title", own.get(lang, own.get("en", own.get("ru"))))
     out.setdefault("title", default_title)
     return out
+
+
+def is_titles(t: Any) -> bool:
+    """True for a title per language: ``{ ru = "...", en = "..." }`` (one of them at least)."""
+    return isinstance(t, dict) and bool(t) and all(k in ("ru", "en") and isinstance(v, str) for k, v in t.items())
+
+
+def own_title(t: Any) -> Any:
+    """A file's top-level title as the terminal says it: the English one of a title per
+    language (the Russian where it alone is given), else the value as read (checked by its reader)."""
+    return t.get("en", t.get("ru")) if is_titles(t) else t
 
 
 def _panel_choice(v: dict[str, Any], path: str) -> tuple[tuple[str, Any], ...]:
