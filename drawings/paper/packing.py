@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from functools import partial
+from functools import cache, partial
 
 import numpy as np
 
@@ -42,6 +42,7 @@ def _unique(a: np.ndarray) -> np.ndarray:
     return a[keep]
 
 
+@cache  # one rule per gap: the packings made with it are kept by it (blocks.pack_block)
 def free_spots(gap: float) -> Spots:
     """The free top-left corners of a w × h box among ``taken`` (k×2, may be empty): where
     the box touches the area's edges or sits ``gap`` from a box already there."""
@@ -54,7 +55,7 @@ def free_spots(gap: float) -> Spots:
         ys = ys[(ys >= area[1] - SLACK_MM) & (ys + h <= area[3] + SLACK_MM)]
         if not len(xs) or not len(ys):
             return np.zeros((0, 2))
-        X, Y = (a.ravel() for a in np.meshgrid(xs, ys))
+        X, Y = np.tile(xs, len(ys)), np.repeat(ys, len(xs))  # np.meshgrid's order, without its cost
         if len(T):
             g = gap - SLACK_MM
             hit = ((X[:, None] < T[None, :, 2] + g) & (T[None, :, 0] - g < X[:, None] + w)
