@@ -74,7 +74,11 @@ def _once(make: Callable[..., Panel]) -> Callable[..., Panel]:
     from drawings.paper.fonts import current
 
     def key(a: Any) -> Any:
-        return a if a is None or isinstance(a, (str, int, float)) else ("id", id(a))
+        if a is None or isinstance(a, (str, int, float)):
+            return a
+        if isinstance(a, tuple) and all(isinstance(x, (str, int, float)) for x in a):
+            return ("tuple", *a)  # a table's part
+        return ("id", id(a))
 
     @wraps(make)
     def once(*args: Any) -> Panel:
@@ -221,6 +225,7 @@ def group_panel(scene, kin, gf, k: int, mu_l: float, lang: str, style: str, fric
     return finish(pid, "group", phi, rec, title, sc, quantity="length", scale=mu_l)
 
 
+@_once
 def crank_panel(scene, kin, fa, k: int, mu_l: float, lang: str, style: str) -> Panel:
     """The initial link with the reactions of the groups, its own loads, the balancing
     load and the frame's reaction (appendix 6)."""
@@ -454,6 +459,7 @@ class _Row:
         self.relative = abs(value - exact) / den if den > 0 else 0.0
 
 
+@_once
 def forces_table(polys, lang: str, style: str, phi: float, part: tuple[int, int, int] | None = None) -> Panel:
     """Every polygon vector: segment, mm, μF, value read to the ruler, exact, difference."""
     rows = []

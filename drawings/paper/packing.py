@@ -57,10 +57,13 @@ def free_spots(gap: float) -> Spots:
             return np.zeros((0, 2))
         X, Y = np.tile(xs, len(ys)), np.repeat(ys, len(xs))  # np.meshgrid's order, without its cost
         if len(T):
+            # a corner (x, y) is taken where a box overlaps the box's columns at x and its rows
+            # at y: each compared once per column and per row, not once per corner
             g = gap - SLACK_MM
-            hit = ((X[:, None] < T[None, :, 2] + g) & (T[None, :, 0] - g < X[:, None] + w)
-                   & (Y[:, None] < T[None, :, 3] + g) & (T[None, :, 1] - g < Y[:, None] + h)).any(axis=1)
-            X, Y = X[~hit], Y[~hit]
+            hx = (xs[:, None] < T[None, :, 2] + g) & (T[None, :, 0] - g < xs[:, None] + w)
+            hy = (ys[:, None] < T[None, :, 3] + g) & (T[None, :, 1] - g < ys[:, None] + h)
+            free = ~(hy[:, None, :] & hx[None, :, :]).any(axis=2).ravel()
+            X, Y = X[free], Y[free]
         return np.stack([X, Y], axis=1)
 
     return spots
