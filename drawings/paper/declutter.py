@@ -51,8 +51,7 @@ def clip_segments(S: np.ndarray, bx: np.ndarray) -> tuple[np.ndarray, np.ndarray
     ok = np.ones((k, len(S)), dtype=bool)
     with np.errstate(divide="ignore", invalid="ignore"):
         for p, q in ((-dx, sx - x0), (dx, x1 - sx), (-dy, sy - y0), (dy, y1 - sy)):
-            p = np.broadcast_to(p, t0.shape)
-            r = q / p
+            r = q / p  # p: one per segment, broadcast over the boxes by each operation
             ok &= ~((p == 0) & (q < 0))
             t0 = np.where(p < 0, np.maximum(t0, r), t0)
             t1 = np.where(p > 0, np.minimum(t1, r), t1)
