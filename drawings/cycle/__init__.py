@@ -196,7 +196,7 @@ def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_te
     extra: list[Sheet] = []
     if cr is not None and cr.diagrams is not None and diagrams:
         sub = dataclasses.replace(spec, subtitle=tr("diagrams", lang), pins=())
-        extra += compose(fitting_diagrams(sol, cr.diagrams, spec), sub, scale_text, scene.path)
+        extra += compose(fitting_diagrams(sol, cr.diagrams, spec), sub, scale_text, scene.path, render=False)
     if cr is not None and cr.dynamics is not None:
         sub = dataclasses.replace(spec, subtitle=tr("dynamics", lang), pins=())
         tabs = cr.tables[-4:]  # the dynamics' own: analogues, I_pr, M_pr, work and energy
@@ -212,7 +212,7 @@ def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_te
             from drawings.paper.sheet import fits_empty
 
             ps = phi_column(ps, lambda p: fits_empty(p, sp.format, sp.orientation))  # one φ column
-            return lay(ps, sp) if lay is not None else compose(ps, sp, scale_text, scene.path)
+            return lay(ps, sp) if lay is not None else compose(ps, sp, scale_text, scene.path, render=False)
         laid = laid_out(panels, sub)
         if spec.format in _GROWN:
             laid = _fuller_dynamics(sol, panels, sub, laid_out, laid)
@@ -227,7 +227,7 @@ def extend(sol: Solution | Scene, spec: SheetSpec, sheets: list[Sheet], scale_te
                     break
         extra += laid
     out = list(sheets) + extra
-    for i, sh in enumerate(out):
+    for i, sh in enumerate(out):  # drawn here, numbered (the candidates laid out above are not)
         sh.number, sh.count = i + 1, len(out)
         sh.prims = []
         sh.render()
@@ -246,7 +246,7 @@ def _plans_beside_positions(sheets: list[Sheet], panels: list[Panel], analogues:
     if any(p.phi is not None for p in own):
         return sheets, analogues
     spec = sheets[-1].spec
-    laid = lay(own + panels, spec) if lay is not None else compose(own + panels, spec, None, path)
+    laid = lay(own + panels, spec) if lay is not None else compose(own + panels, spec, None, path, render=False)
     if len(laid) > 1:
         return sheets, analogues
     return sheets[:-1] + laid, ()

@@ -336,7 +336,8 @@ def _fuller_blocks(sol: Solution, spec: SheetSpec, nums: dict[float, int], panel
             if any(pid not in more for pid in ids):
                 break
             try:
-                laid = compose([more[pid] for pid in ids], spec, None, sol.scene.path, nums, corners=True)
+                laid = compose([more[pid] for pid in ids], spec, None, sol.scene.path, nums, corners=True,
+                               render=False)  # drawn below once kept
             except TooBig:  # a panel too long for an empty sheet: no longer ones either
                 break
             if len(laid) > 1:  # longer still would not fit one sheet either

@@ -10,7 +10,8 @@ from __future__ import annotations
 import cmath
 import math
 import re
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
+from functools import wraps
 from typing import Any
 
 import numpy as np
@@ -59,6 +60,37 @@ from drawings.paper.text import point_label
 from plans.kinematics.plan import Plan
 from plans.kinematics.scales import fit
 from plans.units import DUST
+
+_MADE: dict[tuple, tuple[tuple, Panel]] = {}
+_MADE_MOST = 4000
+
+
+def _once(make: Callable[..., Panel]) -> Callable[..., Panel]:
+    """``make`` drawing each panel once: the layout searches build a position's panels again
+    at every fit the other parts try, its plans and solution the same objects.  The key: the
+    numbers and words as they are, any other argument (a plan, a solution: not changed once
+    solved) by identity (the entry holds it, so no identity is reused while it is kept), and
+    the font the labels are measured in."""
+    from drawings.paper.fonts import current
+
+    def key(a: Any) -> Any:
+        if a is None or isinstance(a, (str, int, float)):
+            return a
+        if isinstance(a, tuple) and all(isinstance(x, (str, int, float)) for x in a):
+            return ("tuple", *a)  # a table's part
+        return ("id", id(a))
+
+    @wraps(make)
+    def once(*args: Any) -> Panel:
+        k = (make.__name__, current(), *map(key, args))
+        hit = _MADE.get(k)
+        if hit is None:
+            if len(_MADE) >= _MADE_MOST:
+                _MADE.clear()
+            hit = _MADE[k] = (args, make(*args))
+        return hit[1]
+
+    return once
 
 
 def build(sol, spec, ks: Sequence[int], plans_at: dict[int, Any], mu_l: float) -> dict:
@@ -110,6 +142,7 @@ def build(sol, spec, ks: Sequence[int], plans_at: dict[int, Any], mu_l: float) -
     return out
 
 
+@_once
 def group_panel(scene, kin, gf, k: int, mu_l: float, lang: str, style: str, friction: Any = None) -> Panel:
     """The group cut free (appendices 4–5): loads at their points, the unknown reactions
     at the outer pairs (τ and n components at a revolute), arms h of the moment equations."""
@@ -192,6 +225,7 @@ def group_panel(scene, kin, gf, k: int, mu_l: float, lang: str, style: str, fric
     return finish(pid, "group", phi, rec, title, sc, quantity="length", scale=mu_l)
 
 
+@_once
 def crank_panel(scene, kin, fa, k: int, mu_l: float, lang: str, style: str) -> Panel:
     """The initial link with the reactions of the groups, its own loads, the balancing
     load and the frame's reaction (appendix 6)."""
@@ -235,6 +269,7 @@ def crank_panel(scene, kin, fa, k: int, mu_l: float, lang: str, style: str) -> P
 # --------------------------------------------------------------------------- polygons and lever
 
 
+@_once
 def polygon_panel(plan: Plan, lang: str, style: str, pid: str, title: str) -> Panel:
     """A force polygon head to tail (plan mm, true size): known forces black, the closing
     reactions red, the two construction lines that closed it thin; every vector labelled."""
@@ -308,6 +343,7 @@ def _collinear_overlap(a: Pt, b: Pt, c: Pt, d: Pt) -> bool:
     return min(L, t[1]) - max(0.0, t[0]) > 0.5
 
 
+@_once
 def lever_panel(sol, k: int, vplan: Plan | None, lang: str, style: str) -> Panel:
     """The velocity plan turned 90° as a rigid lever about the pole, every force at the image of
     its point parallel to itself, the arms h from the pole, and the balancing force."""
@@ -423,6 +459,7 @@ class _Row:
         self.relative = abs(value - exact) / den if den > 0 else 0.0
 
 
+@_once
 def forces_table(polys, lang: str, style: str, phi: float, part: tuple[int, int, int] | None = None) -> Panel:
     """Every polygon vector: segment, mm, μF, value read to the ruler, exact, difference."""
     rows = []

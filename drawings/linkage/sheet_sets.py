@@ -435,7 +435,7 @@ def course_sheets(sol: Solution, spec: SheetSpec, build: Any, positions: Any,
             return lambda mu: build(dyn_sel, None, *(mu if isinstance(mu, tuple) else (mu,)))[0]
 
         def lay(ps: list[Panel]) -> list:
-            return compose(ps, sub, None, scene.path, nums, corners=True) if ps else []
+            return compose(ps, sub, None, scene.path, nums, corners=True, render=False) if ps else []
 
         base_l = _base_length_scale(sol, spec)
         def dyn_of(i: int) -> Any:

@@ -92,9 +92,35 @@ def heading(phi: float, number: int | None, lang: str, part: int = 0) -> str:
     return text
 
 
+#: The blocks packed so far, by what determines them: the panels (each by identity; the
+#: entry holds them, so no identity is reused while it is kept), the room, the spots' rule
+#: and the heading in the font it is measured in.  The layout searches pack one position's
+#: panels into the same widths again for every fit the other positions try.
+_PACKED: dict[tuple, tuple[tuple[Panel, ...], Block, tuple[Panel, ...]]] = {}
+_PACKED_MOST = 20000
+
+
 def pack_block(panels: Sequence[Panel], width: float, height: float, gap: float,
                free_spots, title: str = "", notch: Box | None = None,
                lead: Box | None = None) -> tuple[Block, list[Panel]]:
+    """:func:`_pack_block`, each packing made once (a fresh block returned every time)."""
+    from drawings.paper.fonts import current
+
+    key = (tuple(id(p) for p in panels), width, height, gap, free_spots, title, notch, lead, current())
+    hit = _PACKED.get(key)
+    if hit is None:
+        if len(_PACKED) >= _PACKED_MOST:
+            _PACKED.clear()
+        made, left = _pack_block(panels, width, height, gap, free_spots, title, notch, lead)
+        hit = _PACKED[key] = (tuple(panels), made, tuple(left))
+    _, blk, rest = hit
+    return (Block(list(blk.panels), blk.width, blk.height, blk.phi, blk.heading, blk.notch, blk.lead),
+            list(rest))
+
+
+def _pack_block(panels: Sequence[Panel], width: float, height: float, gap: float,
+                free_spots, title: str = "", notch: Box | None = None,
+                lead: Box | None = None) -> tuple[Block, list[Panel]]:
     """Panels in reading order inside a ``width`` × ``height`` block, each where it keeps the
     block's skyline lowest; returns the block (shrunk to its content) and what did not fit.
     ``notch`` (block coordinates, reaching the bottom-right corner) and ``lead`` (from the

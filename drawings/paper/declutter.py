@@ -51,19 +51,26 @@ def clip_segments(S: np.ndarray, bx: np.ndarray) -> tuple[np.ndarray, np.ndarray
     ok = np.ones((k, len(S)), dtype=bool)
     with np.errstate(divide="ignore", invalid="ignore"):
         for p, q in ((-dx, sx - x0), (dx, x1 - sx), (-dy, sy - y0), (dy, y1 - sy)):
-            p = np.broadcast_to(p, t0.shape)
-            r = q / p
+            r = q / p  # p: one per segment, broadcast over the boxes by each operation
             ok &= ~((p == 0) & (q < 0))
             t0 = np.where(p < 0, np.maximum(t0, r), t0)
             t1 = np.where(p > 0, np.minimum(t1, r), t1)
     return ok & (t1 > t0), t0, t1
 
 
-def _crossed(S: np.ndarray, bx: np.ndarray) -> np.ndarray:
-    """For candidate boxes bx (k×4): does any segment of S run through the box (Liang–Barsky)?"""
+def _crossed(S: np.ndarray, bx: np.ndarray, ext: np.ndarray | None = None) -> np.ndarray:
+    """For candidate boxes bx (k×4): does any segment of S run through the box (Liang–Barsky)?
+    ``ext``: the segments' extents (min x, min y, max x, max y; m×4), to clip only those that
+    reach the candidates' region (one wholly beside every box crosses none: the clip's
+    rounding keeps it out too)."""
     k = len(bx)
     if not len(S) or not k:
         return np.zeros(k, dtype=bool)
+    if ext is not None:
+        S = S[(ext[:, 0] <= bx[:, 2].max()) & (ext[:, 2] >= bx[:, 0].min())
+              & (ext[:, 1] <= bx[:, 3].max()) & (ext[:, 3] >= bx[:, 1].min())]
+        if not len(S):
+            return np.zeros(k, dtype=bool)
     return np.asarray(clip_segments(S, bx)[0].any(axis=1))
 
 
@@ -92,6 +99,7 @@ def declutter(prims: list[Prim]) -> list[Prim]:
     if not idx:
         return prims
     out = list(prims)
+    ext = np.concatenate([np.minimum(S[:, :2], S[:, 2:]), np.maximum(S[:, :2], S[:, 2:])], axis=1)
     boxes = np.array([list(p.label.box) for p in (prims[i] for i in idx) if p.label is not None], dtype=float)
     ang = 2 * np.pi * np.arange(16) / 16
     cx, cy = np.cos(ang), np.sin(ang)
@@ -102,13 +110,13 @@ def declutter(prims: list[Prim]) -> list[Prim]:
         others = np.delete(boxes, j, axis=0)
         if b[2] - b[0] <= 2 * g or b[3] - b[1] <= 2 * g:
             continue
-        if not _crossed(S, inner)[0] and not _clash(others, b[None, :])[0]:
+        if not _crossed(S, inner, ext)[0] and not _clash(others, b[None, :])[0]:
             continue
         for r in RINGS:
             dx, dy = r * cx, r * cy
             cand = np.stack([b[0] + g + dx, b[1] + g + dy, b[2] - g + dx, b[3] - g + dy], axis=1)
             full = np.stack([b[0] + dx, b[1] + dy, b[2] + dx, b[3] + dy], axis=1)
-            free = ~_crossed(S, cand) & ~_clash(others, full)
+            free = ~_crossed(S, cand, ext) & ~_clash(others, full)
             if free.any():
                 m = int(np.argmax(free))
                 out[i] = _moved(prims[i], float(dx[m]), float(dy[m]))

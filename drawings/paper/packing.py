@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from functools import partial
+from functools import cache, partial
 
 import numpy as np
 
@@ -42,6 +42,7 @@ def _unique(a: np.ndarray) -> np.ndarray:
     return a[keep]
 
 
+@cache  # one rule per gap: the packings made with it are kept by it (blocks.pack_block)
 def free_spots(gap: float) -> Spots:
     """The free top-left corners of a w × h box among ``taken`` (k×2, may be empty): where
     the box touches the area's edges or sits ``gap`` from a box already there."""
@@ -54,12 +55,15 @@ def free_spots(gap: float) -> Spots:
         ys = ys[(ys >= area[1] - SLACK_MM) & (ys + h <= area[3] + SLACK_MM)]
         if not len(xs) or not len(ys):
             return np.zeros((0, 2))
-        X, Y = (a.ravel() for a in np.meshgrid(xs, ys))
+        X, Y = np.tile(xs, len(ys)), np.repeat(ys, len(xs))  # np.meshgrid's order, without its cost
         if len(T):
+            # a corner (x, y) is taken where a box overlaps the box's columns at x and its rows
+            # at y: each compared once per column and per row, not once per corner
             g = gap - SLACK_MM
-            hit = ((X[:, None] < T[None, :, 2] + g) & (T[None, :, 0] - g < X[:, None] + w)
-                   & (Y[:, None] < T[None, :, 3] + g) & (T[None, :, 1] - g < Y[:, None] + h)).any(axis=1)
-            X, Y = X[~hit], Y[~hit]
+            hx = (xs[:, None] < T[None, :, 2] + g) & (T[None, :, 0] - g < xs[:, None] + w)
+            hy = (ys[:, None] < T[None, :, 3] + g) & (T[None, :, 1] - g < ys[:, None] + h)
+            free = ~(hy[:, None, :] & hx[None, :, :]).any(axis=2).ravel()
+            X, Y = X[free], Y[free]
         return np.stack([X, Y], axis=1)
 
     return spots

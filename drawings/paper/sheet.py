@@ -306,7 +306,8 @@ def _overlaps(a: Sequence[float], b: Sequence[float]) -> bool:
 
 
 def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str | None = "",
-            path: str = "<scene>", numbers: dict[float, int] | None = None, corners: bool = False) -> list[Sheet]:
+            path: str = "<scene>", numbers: dict[float, int] | None = None, corners: bool = False,
+            render: bool = True) -> list[Sheet]:
     """Place panels on sheets of ``spec.format`` (pins first), as a course lays them out.
 
     The drawing-wide panels (plan of positions) come first; then one bordered block per
@@ -320,6 +321,8 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str | None = "
     blocks.  With ``corners`` a block that finds no room as a rectangle may run round the
     title block and the plan of positions (:func:`.packing.round_corners`).  ``scale_text``
     fills the title block's Scale cell; None: each sheet's own (:func:`sheet_scale`).
+    Without ``render`` the sheets are left undrawn (no primitives: ``svg`` draws them): a
+    layout search that only measures its candidates draws the one it keeps once.
     """
     W, H = spec.size
     area = usable(W, H)
@@ -394,7 +397,8 @@ def compose(panels: Sequence[Panel], spec: SheetSpec, scale_text: str | None = "
                 frames.append(frame_of(b, bx, by))
         placed.sort(key=lambda t: order[t[0].pid])
         sh = Sheet(spec, n + 1, len(best), W, H, placed, scale_text, frames=frames)
-        sh.render()
+        if render:
+            sh.render()
         out.append(sh)
     return out
 
