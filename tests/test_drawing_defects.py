@@ -215,25 +215,3 @@ def test_title_block_in_the_sheets_language(path):
     ru = title_block("ru")
     assert not re.findall(r"[A-Za-z]{3,}", ru), ru  # "2K-H", "V6" are a train's and an engine's symbols
     assert re.search(r"[А-Яа-я]{3,}", ru)
-
-
-def test_a_table_split_in_parts_says_that_it_continues():
-    """A cycle table of 24 positions drawn in two parts of 12 columns: the second part's title
-    is the first's followed by "(продолжение)", so no two tables of the sheet share one title."""
-    from drawings.linkage import draw
-
-    d = in_russian(draw)(SAMPLES / "v_engine_cycle.toml")
-    parts: dict[str, dict[int, str]] = {}
-    for p in _all_panels(d):
-        m = re.fullmatch(r"(.+-table-\d+)-(\d+)", p.pid)
-        if m:
-            title = next(q.label.plain for q in p.prims if q.op == "text" and q.eid == f"{p.pid}-title")
-            parts.setdefault(m.group(1), {})[int(m.group(2))] = title
-    split = {t: ps for t, ps in parts.items() if len(ps) > 1}
-    assert len(split) >= 3  # the ordinates, the reduced moments and the energies at 24 positions
-    for ps in split.values():
-        first = ps[1]
-        assert "продолжение" not in first
-        assert all(ps[j] == f"{first} (продолжение)" for j in ps if j > 1), ps
-    titles = [t for ps in parts.values() for t in ps.values()]
-    assert len(titles) == len(set(titles))

@@ -145,9 +145,7 @@ def table_panels(tables: Sequence[CycleTable], lang: str, prefix: str,
                 unit = f", {u}" if u and u != "1" else ""
                 label = re.sub(r"_pr\b", "_пр", r.label) if lang == "ru" else r.label  # I_пр, M_пр
                 rows.append([f"{label}{unit}"] + [number(c, lang, 4) for c in cells])
-            # a table's later parts say that they continue it: one table, not two of one name
-            part = title if j == 0 else f"{title} {tr('continued', lang)}"
-            out.append(wide_table(f"{prefix}-table-{i + 1}-{j + 1}", part, head, rows, lang))
+            out.append(wide_table(f"{prefix}-table-{i + 1}-{j + 1}", title, head, rows, lang))
     return out
 
 

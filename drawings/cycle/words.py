@@ -37,7 +37,6 @@ WORDS: dict[str, tuple[str, str]] = {
     "Mpr": ("Приведённый момент сил, Н·м", "Reduced moment of forces, N·m"),
     "plans": ("Планы по положениям", "Plans over the positions"),
     "ordinates": ("Ординаты диаграмм по положениям:", "Ordinates of the diagrams over the positions:"),
-    "continued": ("(продолжение)", "(continued)"),
     "energy": ("Работы и кинетическая энергия, Дж", "Work and kinetic energy, J"),
     "with_graphical": ("с маховиком по Виттенбауэру", "with the Wittenbauer flywheel"),
     "with_exact": ("с точным маховиком", "with the exact flywheel"),
